@@ -1,0 +1,100 @@
+namespace Machina;
+
+/// <summary>A 3×3 rotation matrix, row-major (M01 is row 0, column 1). Its columns are the axes of the rotated frame.</summary>
+public readonly record struct RotationMatrix
+{
+    /// <summary>Row 0.</summary>
+    public double M00 { get; init; }
+    /// <summary>Row 0.</summary>
+    public double M01 { get; init; }
+    /// <summary>Row 0.</summary>
+    public double M02 { get; init; }
+    /// <summary>Row 1.</summary>
+    public double M10 { get; init; }
+    /// <summary>Row 1.</summary>
+    public double M11 { get; init; }
+    /// <summary>Row 1.</summary>
+    public double M12 { get; init; }
+    /// <summary>Row 2.</summary>
+    public double M20 { get; init; }
+    /// <summary>Row 2.</summary>
+    public double M21 { get; init; }
+    /// <summary>Row 2.</summary>
+    public double M22 { get; init; }
+
+    /// <summary>
+    /// A rotation matrix from nine values in row order. The values are made orthonormal by keeping the first column's direction
+    /// and the plane of the first two columns; a degenerate matrix is refused.
+    /// </summary>
+    public static RotationMatrix FromRows(double m00, double m01, double m02, double m10, double m11, double m12, double m20, double m21, double m22)
+    {
+        Rotation r = Rotation.FromAxes(new Vector(m00, m10, m20), new Vector(m01, m11, m21));
+        return r.ToMatrix();
+    }
+
+    internal static RotationMatrix FromColumnsUnchecked(Vector x, Vector y, Vector z) => new()
+    {
+        M00 = x.X, M10 = x.Y, M20 = x.Z,
+        M01 = y.X, M11 = y.Y, M21 = y.Z,
+        M02 = z.X, M12 = z.Y, M22 = z.Z,
+    };
+
+    /// <summary>First column: the frame's X axis.</summary>
+    public Vector XAxis => new(M00, M10, M20);
+
+    /// <summary>Second column: the frame's Y axis.</summary>
+    public Vector YAxis => new(M01, M11, M21);
+
+    /// <summary>Third column: the frame's Z axis.</summary>
+    public Vector ZAxis => new(M02, M12, M22);
+
+    /// <summary>The quaternion of this matrix (Shepperd's method: numerically stable for every rotation).</summary>
+    public Rotation ToRotation()
+    {
+        double trace = M00 + M11 + M22;
+        double w, x, y, z;
+        if (trace > 0)
+        {
+            double s = 2 * Math.Sqrt(trace + 1);
+            w = 0.25 * s; x = (M21 - M12) / s; y = (M02 - M20) / s; z = (M10 - M01) / s;
+        }
+        else if (M00 > M11 && M00 > M22)
+        {
+            double s = 2 * Math.Sqrt(1 + M00 - M11 - M22);
+            w = (M21 - M12) / s; x = 0.25 * s; y = (M01 + M10) / s; z = (M02 + M20) / s;
+        }
+        else if (M11 > M22)
+        {
+            double s = 2 * Math.Sqrt(1 + M11 - M00 - M22);
+            w = (M02 - M20) / s; x = (M01 + M10) / s; y = 0.25 * s; z = (M12 + M21) / s;
+        }
+        else
+        {
+            double s = 2 * Math.Sqrt(1 + M22 - M00 - M11);
+            w = (M10 - M01) / s; x = (M02 + M20) / s; y = (M12 + M21) / s; z = 0.25 * s;
+        }
+        return Rotation.FromQuaternion(w, x, y, z);
+    }
+
+    /// <summary>Intrinsic Z-Y′-X″ Euler angles in degrees; at pitch ±90° (gimbal lock) roll is set to 0 and yaw carries the whole turn.</summary>
+    public YawPitchRoll ToYawPitchRoll()
+    {
+        const double eps = 1e-9;
+        if (M20 <= -1 + eps)
+        {
+            return new YawPitchRoll(0, 90, Math.Atan2(M12, M02) * Angles.ToDegrees);
+        }
+        if (M20 >= 1 - eps)
+        {
+            return new YawPitchRoll(0, -90, Math.Atan2(-M12, -M02) * Angles.ToDegrees);
+        }
+        double roll = Math.Atan2(M21, M22);
+        double pitch = Math.Atan2(-M20, Math.Sqrt(M00 * M00 + M10 * M10));
+        double yaw = Math.Atan2(M10, M00);
+        return new YawPitchRoll(roll * Angles.ToDegrees, pitch * Angles.ToDegrees, yaw * Angles.ToDegrees);
+    }
+
+    /// <summary>Text such as <c>RotationMatrix[[1, 0, 0], [0, 1, 0], [0, 0, 1]]</c> (3 decimals).</summary>
+    public override string ToString() =>
+        $"RotationMatrix[[{Num.F(M00, 3)}, {Num.F(M01, 3)}, {Num.F(M02, 3)}], [{Num.F(M10, 3)}, {Num.F(M11, 3)}, {Num.F(M12, 3)}], [{Num.F(M20, 3)}, {Num.F(M21, 3)}, {Num.F(M22, 3)}]]";
+}

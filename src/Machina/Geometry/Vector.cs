@@ -1,0 +1,104 @@
+namespace Machina;
+
+/// <summary>
+/// A direction or position in space, in millimetres. Every value is valid; <c>default</c> is the zero vector.
+/// </summary>
+/// <param name="X">X component (mm).</param>
+/// <param name="Y">Y component (mm).</param>
+/// <param name="Z">Z component (mm).</param>
+public readonly record struct Vector(double X, double Y, double Z)
+{
+    /// <summary>The zero vector (0, 0, 0).</summary>
+    public static Vector Zero => default;
+
+    /// <summary>The world X axis (1, 0, 0).</summary>
+    public static Vector XAxis => new(1, 0, 0);
+
+    /// <summary>The world Y axis (0, 1, 0).</summary>
+    public static Vector YAxis => new(0, 1, 0);
+
+    /// <summary>The world Z axis (0, 0, 1).</summary>
+    public static Vector ZAxis => new(0, 0, 1);
+
+    /// <summary>Length of the vector.</summary>
+    public double Length => Math.Sqrt(X * X + Y * Y + Z * Z);
+
+    /// <summary>Squared length of the vector (cheaper than <see cref="Length"/>).</summary>
+    public double SquaredLength => X * X + Y * Y + Z * Z;
+
+    /// <summary>True when every component is a finite number.</summary>
+    public bool IsFinite => double.IsFinite(X) && double.IsFinite(Y) && double.IsFinite(Z);
+
+    /// <summary>True when the length is below 1e-6.</summary>
+    public bool IsZero => SquaredLength < 1e-12;
+
+    /// <summary>A vector of length 1 in the same direction. Throws when the vector is (almost) zero.</summary>
+    public Vector Normalized()
+    {
+        double length = Length;
+        if (!(length >= 1e-9) || !double.IsFinite(length))
+        {
+            throw new ArgumentException($"Cannot normalise the vector {this}: it has no direction (length {Num.G(length)}).");
+        }
+        return new Vector(X / length, Y / length, Z / length);
+    }
+
+    /// <summary>Dot product.</summary>
+    public static double Dot(Vector a, Vector b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+
+    /// <summary>Right-handed cross product a × b.</summary>
+    public static Vector Cross(Vector a, Vector b) =>
+        new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+
+    /// <summary>Distance between two points.</summary>
+    public static double Distance(Vector a, Vector b) => (a - b).Length;
+
+    /// <summary>Angle between two vectors in degrees (0 when either is zero).</summary>
+    public static double AngleBetween(Vector a, Vector b)
+    {
+        double la = a.Length, lb = b.Length;
+        if (la < 1e-12 || lb < 1e-12)
+        {
+            return 0;
+        }
+        double c = Math.Clamp(Dot(a, b) / (la * lb), -1, 1);
+        return Math.Acos(c) * Angles.ToDegrees;
+    }
+
+    /// <summary>Sum of two vectors.</summary>
+    public static Vector operator +(Vector a, Vector b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z);
+
+    /// <summary>Difference of two vectors.</summary>
+    public static Vector operator -(Vector a, Vector b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z);
+
+    /// <summary>Opposite vector.</summary>
+    public static Vector operator -(Vector a) => new(-a.X, -a.Y, -a.Z);
+
+    /// <summary>Vector scaled by a number.</summary>
+    public static Vector operator *(Vector a, double s) => new(a.X * s, a.Y * s, a.Z * s);
+
+    /// <summary>Vector scaled by a number.</summary>
+    public static Vector operator *(double s, Vector a) => new(a.X * s, a.Y * s, a.Z * s);
+
+    /// <summary>Vector divided by a number.</summary>
+    public static Vector operator /(Vector a, double s) => new(a.X / s, a.Y / s, a.Z / s);
+
+    /// <summary>True when every component differs by less than <paramref name="tolerance"/>.</summary>
+    public bool IsSimilar(Vector other, double tolerance = 1e-6) =>
+        Math.Abs(X - other.X) < tolerance && Math.Abs(Y - other.Y) < tolerance && Math.Abs(Z - other.Z) < tolerance;
+
+    /// <summary>Text such as <c>[400, 300, 500]</c> (3 decimals).</summary>
+    public override string ToString() => $"[{Num.F(X, 3)}, {Num.F(Y, 3)}, {Num.F(Z, 3)}]";
+
+    /// <summary>Compact text such as <c>[400,300,500]</c> (3 decimals, no spaces).</summary>
+    public string ToArrayString() => $"[{Num.F(X, 3)},{Num.F(Y, 3)},{Num.F(Z, 3)}]";
+
+    internal Vector RequireFinite(string name)
+    {
+        if (!IsFinite)
+        {
+            throw new ArgumentException($"{name} must contain finite numbers, but it was ({Num.R(X)}, {Num.R(Y)}, {Num.R(Z)}).", name);
+        }
+        return this;
+    }
+}

@@ -1,0 +1,38 @@
+namespace Machina;
+
+/// <summary>
+/// Intrinsic Z-Y′-X″ (Tait–Bryan) Euler angles in degrees: yaw about Z, then pitch about the new Y, then roll about the new X;
+/// R = Rz(yaw)·Ry(pitch)·Rx(roll). KUKA's A, B, C are (yaw, pitch, roll). Constructor order is (roll, pitch, yaw) as in the original.
+/// </summary>
+/// <param name="XAngle">Roll: rotation about X, degrees.</param>
+/// <param name="YAngle">Pitch: rotation about Y, degrees.</param>
+/// <param name="ZAngle">Yaw: rotation about Z, degrees.</param>
+public readonly record struct YawPitchRoll(double XAngle, double YAngle, double ZAngle)
+{
+    /// <summary>Rotation about X (degrees), applied last.</summary>
+    public double Roll => XAngle;
+
+    /// <summary>Rotation about Y (degrees).</summary>
+    public double Pitch => YAngle;
+
+    /// <summary>Rotation about Z (degrees), applied first.</summary>
+    public double Yaw => ZAngle;
+
+    /// <summary>The rotation these angles describe: qz(yaw)·qy(pitch)·qx(roll).</summary>
+    public Rotation ToRotation()
+    {
+        Num.Finite(XAngle, nameof(XAngle));
+        Num.Finite(YAngle, nameof(YAngle));
+        Num.Finite(ZAngle, nameof(ZAngle));
+        double hx = XAngle * Angles.ToRadians / 2, hy = YAngle * Angles.ToRadians / 2, hz = ZAngle * Angles.ToRadians / 2;
+        double cx = Math.Cos(hx), sx = Math.Sin(hx), cy = Math.Cos(hy), sy = Math.Sin(hy), cz = Math.Cos(hz), sz = Math.Sin(hz);
+        return Rotation.FromQuaternion(
+            cx * cy * cz + sx * sy * sz,
+            sx * cy * cz - cx * sy * sz,
+            cx * sy * cz + sx * cy * sz,
+            cx * cy * sz - sx * sy * cz);
+    }
+
+    /// <summary>Text such as <c>EulerZYX[Z:30, Y:20, X:10]</c> (6 decimals).</summary>
+    public override string ToString() => $"EulerZYX[Z:{Num.F(ZAngle, 6)}, Y:{Num.F(YAngle, 6)}, X:{Num.F(XAngle, 6)}]";
+}
