@@ -1,0 +1,65 @@
+namespace Machina;
+
+/// <summary>Rotates the tool around its tip: to an orientation (<c>RotateTo</c>) or by an angle around an axis (<c>Rotate</c>).</summary>
+public sealed record ActionRotation : RobotAction
+{
+    /// <summary>Creates a rotation from a rotation value.</summary>
+    public ActionRotation(Rotation rotation, bool relative)
+    {
+        Rotation = rotation;
+        Relative = relative;
+        Request = rotation.ToAxisAngle();
+    }
+
+    /// <summary>Creates a relative or absolute rotation of <paramref name="angleDegrees"/> around <paramref name="axis"/> (right-hand rule).</summary>
+    public ActionRotation(Vector axis, double angleDegrees, bool relative)
+    {
+        axis.RequireFinite(nameof(axis));
+        Num.Finite(angleDegrees, "angle");
+        if (axis.IsZero)
+        {
+            throw new ArgumentException("The rotation axis cannot be (0, 0, 0); give a direction such as (0, 0, 1).", nameof(axis));
+        }
+        Rotation = Rotation.FromAxisAngle(axis, angleDegrees);
+        Relative = relative;
+        Request = new AxisAngle(axis.Normalized(), angleDegrees);
+    }
+
+    /// <summary>The rotation (relative) or the new orientation (absolute).</summary>
+    public Rotation Rotation { get; }
+
+    /// <summary>True to rotate by <see cref="Rotation"/>, false to rotate to it.</summary>
+    public bool Relative { get; }
+
+    /// <summary>The axis (unit length) and angle (degrees, as the user gave it) of the rotation.</summary>
+    public AxisAngle Request { get; }
+
+    /// <inheritdoc/>
+    public override bool IsRelative => Relative;
+
+    /// <inheritdoc/>
+    public override ActionType Type => ActionType.Rotation;
+
+    /// <inheritdoc/>
+    public override string ToInstruction()
+    {
+        if (Relative)
+        {
+            return InstructionText.Call("Rotate", Request.Axis.X, Request.Axis.Y, Request.Axis.Z, Request.Angle);
+        }
+        Vector x = Rotation.XAxis, y = Rotation.YAxis;
+        return InstructionText.Call("RotateTo", x.X, x.Y, x.Z, y.X, y.Y, y.Z);
+    }
+
+    /// <inheritdoc/>
+    public override string Describe() => Relative
+        ? $"Rotate {Num.G(Request.Angle)} deg around {Request.Axis}"
+        : $"Rotate to {Rotation.ToOrientationString()}";
+
+    /// <summary>Equal when both are relative or both absolute and the rotations agree within 1e-9 degrees.</summary>
+    public bool Equals(ActionRotation? other) =>
+        other is not null && Relative == other.Relative && Rotation.IsSimilar(other.Rotation, 1e-9);
+
+    /// <inheritdoc/>
+    public override int GetHashCode() => HashCode.Combine(Type, Relative);
+}

@@ -1,0 +1,41 @@
+namespace Machina;
+
+/// <summary>
+/// One platform-agnostic instruction for a robot ("move 10 mm up", "set speed to 100"). Actions are immutable;
+/// a robot gives each one an <see cref="Id"/> when it is issued. Two actions are equal when they say the same thing,
+/// whatever their ids.
+/// </summary>
+public abstract record RobotAction
+{
+    /// <summary>The id the robot gave this action when it was issued (1, 2, 3, …), or −1 before that.</summary>
+    public int Id { get; internal set; } = -1;
+
+    /// <summary>The kind of action.</summary>
+    public abstract ActionType Type { get; }
+
+    /// <summary>True when the action is relative to the current state (<c>Move</c>), false when absolute (<c>MoveTo</c>) or neither.</summary>
+    public virtual bool IsRelative => false;
+
+    /// <summary>The instruction text that creates this action, e.g. <c>MoveTo(400,300,500);</c>; <c>Robot.Do</c> reads it back.</summary>
+    public abstract string ToInstruction();
+
+    /// <summary>A sentence describing the action for people, e.g. <c>Move to [400, 300, 500] mm</c>.</summary>
+    public abstract string Describe();
+
+    /// <summary>Same as <see cref="Describe"/>.</summary>
+    public sealed override string ToString() => Describe();
+
+    /// <summary>Compares what two actions say, ignoring their ids.</summary>
+    public virtual bool Equals(RobotAction? other) => other is not null && EqualityContract == other.EqualityContract;
+
+    /// <summary>Hash of what the action says, ignoring its id.</summary>
+    public override int GetHashCode() => EqualityContract.GetHashCode();
+
+    /// <summary>A copy of this action that has not been issued yet.</summary>
+    internal RobotAction CloneUnissued()
+    {
+        var copy = this with { };
+        copy.Id = -1;
+        return copy;
+    }
+}

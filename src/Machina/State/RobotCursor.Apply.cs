@@ -1,0 +1,134 @@
+namespace Machina;
+
+internal sealed partial class RobotCursor
+{
+    /// <summary>Applies an action, or explains why it cannot be applied; on refusal nothing changes.</summary>
+    /// <returns>Null on success, else the reason for refusing, in plain words.</returns>
+    internal string? TryApply(RobotAction action)
+    {
+        string? refusal = action switch
+        {
+            ActionTranslation a => ApplyTranslation(a),
+            ActionRotation a => ApplyRotation(a),
+            ActionTransformation a => ApplyTransformation(a),
+            ActionAxes a => ApplyAxes(a),
+            ActionArcMotion a => ApplyArc(a),
+            ActionSpeed a => SetNonNegative(ref Speed, a.Relative ? Speed + a.Speed : a.Speed, "speed", "mm/s", strictlyPositive: true),
+            ActionAcceleration a => SetNonNegative(ref Acceleration, a.Relative ? Acceleration + a.Acceleration : a.Acceleration, "acceleration", "mm/s^2", false),
+            ActionPrecision a => SetNonNegative(ref Precision, a.Relative ? Precision + a.Precision : a.Precision, "precision", "mm", false),
+            ActionExtrusionRate a => SetNonNegative(ref ExtrusionRate, a.Relative ? ExtrusionRate + a.Rate : a.Rate, "extrusion rate", "mm/mm", false),
+            ActionMotionMode a => Set(ref MotionType, a.MotionType),
+            ActionCoordinates a => Set(ref ReferenceCS, a.ReferenceCS),
+            ActionPushPop a => a.Push ? PushSettings() : PopSettings(),
+            ActionTemperature a => ApplyTemperature(a),
+            ActionExtrusion a => Set(ref IsExtruding, a.Extrude),
+            ActionExternalAxis a => ApplyExternalAxis(a),
+            ActionArmAngle a => ApplyArmAngle(a),
+            ActionDefineTool a => DefineTool(a),
+            ActionAttachTool a => AttachTool(a),
+            ActionDetachTool a => DetachTool(a),
+            ActionIODigital a => SetOutput(DigitalOutputs, a.IsToolPin, a.PinName, a.On),
+            ActionIOAnalog a => SetOutput(AnalogOutputs, a.IsToolPin, a.PinName, a.Value),
+            ActionWait or ActionMessage or ActionComment or ActionCustomCode or ActionInitialization => null,
+            _ => $"Machina does not know how to apply a {action.GetType().Name}.",
+        };
+        if (refusal is null)
+        {
+            LastAction = action;
+        }
+        return refusal;
+    }
+
+    private static string? Set<T>(ref T field, T value)
+    {
+        field = value;
+        return null;
+    }
+
+    private static string? SetNonNegative(ref double field, double value, string what, string unit, bool strictlyPositive)
+    {
+        if (strictlyPositive ? !(value > 0) : !(value >= 0))
+        {
+            return $"the {what} would become {Num.G(value)} {unit}; it must be {(strictlyPositive ? "greater than 0" : "0 or more")}.";
+        }
+        field = value;
+        return null;
+    }
+
+    private string? PushSettings()
+    {
+        if (SettingsStack.Count >= MaxSettingsDepth)
+        {
+            return $"more than {MaxSettingsDepth} PushSettings without a PopSettings; is a PopSettings missing?";
+        }
+        SettingsStack.Push(CurrentSettings);
+        return null;
+    }
+
+    private string? PopSettings()
+    {
+        if (SettingsStack.Count == 0)
+        {
+            return "there are no saved settings to restore; every PopSettings needs an earlier PushSettings.";
+        }
+        SettingsBeforeLastPop = CurrentSettings;
+        ApplySettings(SettingsStack.Pop());
+        return null;
+    }
+
+    private string? ApplyTemperature(ActionTemperature a)
+    {
+        int part = (int)a.Part;
+        double value = a.Relative ? Temperatures[part] + a.Temperature : a.Temperature;
+        if (value < 0)
+        {
+            return $"the {a.Part} temperature would become {Num.G(value)} C; it cannot be below 0 C.";
+        }
+        Temperatures[part] = value;
+        return null;
+    }
+
+    private string? ApplyExternalAxis(ActionExternalAxis a)
+    {
+        bool cartesian = a.Target != ExternalAxesTarget.Joint;
+        bool joint = a.Target != ExternalAxesTarget.Cartesian;
+        if (a.Relative)
+        {
+            if (cartesian && ExternalAxesCartesian?[a.AxisNumber] is null)
+            {
+                return $"cartesian external axis {a.AxisNumber} has no value yet to change; use ExternalAxisTo first.";
+            }
+            if (joint && ExternalAxesJoints?[a.AxisNumber] is null)
+            {
+                return $"joint external axis {a.AxisNumber} has no value yet to change; use ExternalAxisTo first.";
+            }
+        }
+        if (cartesian)
+        {
+            ExternalAxes set = ExternalAxesCartesian ?? ExternalAxes.None;
+            ExternalAxesCartesian = set.With(a.AxisNumber, a.Relative ? set[a.AxisNumber]!.Value + a.Value : a.Value);
+        }
+        if (joint)
+        {
+            ExternalAxes set = ExternalAxesJoints ?? ExternalAxes.None;
+            ExternalAxesJoints = set.With(a.AxisNumber, a.Relative ? set[a.AxisNumber]!.Value + a.Value : a.Value);
+        }
+        return null;
+    }
+
+    private string? ApplyArmAngle(ActionArmAngle a)
+    {
+        if (a.Relative && ArmAngle is null)
+        {
+            return "the arm angle has no value yet to change; use ArmAngleTo first.";
+        }
+        ArmAngle = a.Relative ? ArmAngle!.Value + a.Angle : a.Angle;
+        return null;
+    }
+
+    private static string? SetOutput<T>(Dictionary<string, T> outputs, bool toolPin, string pin, T value)
+    {
+        outputs[toolPin ? "tool:" + pin : pin] = value;
+        return null;
+    }
+}

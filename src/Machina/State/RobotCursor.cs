@@ -1,0 +1,123 @@
+namespace Machina;
+
+/// <summary>
+/// The full state of a robot as a sequence of actions changes it. Mutable and allocation-free per action so that
+/// millions of actions stay cheap; <see cref="Snapshot"/> makes the immutable <see cref="RobotState"/> that users see.
+/// </summary>
+internal sealed partial class RobotCursor
+{
+    /// <summary>Deepest allowed nesting of PushSettings.</summary>
+    internal const int MaxSettingsDepth = 1024;
+
+    internal Vector? Position;
+    internal Vector? PrevPosition;
+    internal Rotation? Rotation;
+    internal Rotation? PrevRotation;
+    internal Joints? Axes;
+    internal Joints? PrevAxes;
+    internal double Speed;
+    internal double Acceleration;
+    internal double Precision;
+    internal MotionType MotionType;
+    internal ReferenceCS ReferenceCS;
+    internal Tool? Tool;
+    internal readonly Dictionary<string, Tool> Tools = new(StringComparer.Ordinal);
+    internal ExternalAxes? ExternalAxesCartesian;
+    internal ExternalAxes? ExternalAxesJoints;
+    internal double? ArmAngle;
+    internal readonly Dictionary<string, bool> DigitalOutputs = new(StringComparer.Ordinal);
+    internal readonly Dictionary<string, double> AnalogOutputs = new(StringComparer.Ordinal);
+    internal readonly double[] Temperatures = new double[3];
+    internal bool IsExtruding;
+    internal double ExtrusionRate;
+    internal double ExtrudedLength;
+    internal double PrevExtrudedLength;
+    internal readonly Stack<Settings> SettingsStack = new();
+    /// <summary>The settings in force just before the last PopSettings (a compiler re-emits what changed).</summary>
+    internal Settings? SettingsBeforeLastPop;
+    /// <summary>After an arc: the world position of its through point.</summary>
+    internal Vector? ArcThrough;
+    /// <summary>After an arc: the orientation at its through point.</summary>
+    internal Rotation? ArcThroughRotation;
+    /// <summary>Length of the tool-tip path of the last motion, mm (arc length for arcs), or null when unknown.</summary>
+    internal double? LastPathLength;
+    internal RobotAction? LastAction;
+
+    /// <summary>Receives warnings about actions that were applied but may surprise the user; may be null.</summary>
+    internal Action<RobotAction, string>? Warn;
+
+    /// <summary>A cursor in Machina's initial state: position unknown, tool pointing down, 20 mm/s, 30 mm/s², 5 mm, linear, world.</summary>
+    internal RobotCursor() => Reset();
+
+    /// <summary>The settings currently in force.</summary>
+    internal Settings CurrentSettings => new(Speed, Acceleration, Precision, MotionType, ReferenceCS, ExtrusionRate);
+
+    /// <summary>Puts the cursor back in the initial state.</summary>
+    internal void Reset()
+    {
+        Position = PrevPosition = null;
+        Rotation = PrevRotation = Machina.Rotation.FlippedAroundY;
+        Axes = PrevAxes = null;
+        ApplySettings(Settings.Default);
+        Tool = null;
+        Tools.Clear();
+        ExternalAxesCartesian = ExternalAxesJoints = null;
+        ArmAngle = null;
+        DigitalOutputs.Clear();
+        AnalogOutputs.Clear();
+        Array.Clear(Temperatures);
+        IsExtruding = false;
+        ExtrudedLength = PrevExtrudedLength = 0;
+        SettingsStack.Clear();
+        SettingsBeforeLastPop = null;
+        ArcThrough = null;
+        ArcThroughRotation = null;
+        LastPathLength = null;
+        LastAction = null;
+    }
+
+    /// <summary>Makes this cursor an exact copy of <paramref name="other"/> (the warning sink is kept).</summary>
+    internal void CopyFrom(RobotCursor other)
+    {
+        Position = other.Position; PrevPosition = other.PrevPosition;
+        Rotation = other.Rotation; PrevRotation = other.PrevRotation;
+        Axes = other.Axes; PrevAxes = other.PrevAxes;
+        ApplySettings(other.CurrentSettings);
+        Tool = other.Tool;
+        Tools.Clear();
+        foreach (var kv in other.Tools) { Tools[kv.Key] = kv.Value; }
+        ExternalAxesCartesian = other.ExternalAxesCartesian; ExternalAxesJoints = other.ExternalAxesJoints;
+        ArmAngle = other.ArmAngle;
+        DigitalOutputs.Clear();
+        foreach (var kv in other.DigitalOutputs) { DigitalOutputs[kv.Key] = kv.Value; }
+        AnalogOutputs.Clear();
+        foreach (var kv in other.AnalogOutputs) { AnalogOutputs[kv.Key] = kv.Value; }
+        Array.Copy(other.Temperatures, Temperatures, Temperatures.Length);
+        IsExtruding = other.IsExtruding;
+        ExtrudedLength = other.ExtrudedLength; PrevExtrudedLength = other.PrevExtrudedLength;
+        SettingsStack.Clear();
+        foreach (var s in other.SettingsStack.Reverse()) { SettingsStack.Push(s); }
+        SettingsBeforeLastPop = other.SettingsBeforeLastPop;
+        ArcThrough = other.ArcThrough; ArcThroughRotation = other.ArcThroughRotation;
+        LastPathLength = other.LastPathLength;
+        LastAction = other.LastAction;
+    }
+
+    private void ApplySettings(Settings s)
+    {
+        Speed = s.Speed;
+        Acceleration = s.Acceleration;
+        Precision = s.Precision;
+        MotionType = s.MotionType;
+        ReferenceCS = s.ReferenceCS;
+        ExtrusionRate = s.ExtrusionRate;
+    }
+
+    /// <summary>An immutable copy of the whole state.</summary>
+    internal RobotState Snapshot() => new(this);
+
+    /// <summary>Debug text: motion type, position, rotation, joints, acceleration, speed, precision and tool.</summary>
+    public override string ToString() =>
+        $"{MotionType} p{Position?.ToString() ?? "null"} r{Rotation?.ToQuaternionString() ?? "null"} j{Axes?.ToString() ?? "null"} " +
+        $"a{Num.G(Acceleration)} v{Num.G(Speed)} p{Num.G(Precision)}{(Tool is null ? "" : " t" + Tool.Name)}";
+}

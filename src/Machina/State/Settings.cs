@@ -1,0 +1,18 @@
+namespace Machina;
+
+/// <summary>The motion settings that <c>PushSettings</c> saves and <c>PopSettings</c> restores.</summary>
+/// <param name="Speed">Speed, mm/s.</param>
+/// <param name="Acceleration">Acceleration, mm/s².</param>
+/// <param name="Precision">Blend radius, mm.</param>
+/// <param name="MotionType">Linear or joint motion.</param>
+/// <param name="ReferenceCS">Frame of relative actions.</param>
+/// <param name="ExtrusionRate">Extrusion rate, mm of filament per mm of travel.</param>
+public readonly record struct Settings(double Speed, double Acceleration, double Precision, MotionType MotionType, ReferenceCS ReferenceCS, double ExtrusionRate)
+{
+    /// <summary>The settings of a new robot: 20 mm/s, 30 mm/s², 5 mm, linear, world, no extrusion.</summary>
+    public static Settings Default => new(20, 30, 5, MotionType.Linear, ReferenceCS.World, 0);
+
+    /// <summary>Text such as <c>World Linear 20-30-5 0</c>.</summary>
+    public override string ToString() =>
+        $"{ReferenceCS} {MotionType} {Num.G(Speed)}-{Num.G(Acceleration)}-{Num.G(Precision)} {Num.G(ExtrusionRate)}";
+}

@@ -1,0 +1,62 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>Builds instruction texts (<c>Name(arg,arg);</c>) with lossless invariant numbers and escaped strings.</summary>
+internal static class InstructionText
+{
+    /// <summary>A string argument in double quotes, with <c>\</c>, <c>"</c>, and control characters escaped.</summary>
+    internal static string Quote(string value)
+    {
+        var sb = new StringBuilder(value.Length + 2);
+        sb.Append('"');
+        foreach (char c in value)
+        {
+            switch (c)
+            {
+                case '"': sb.Append("\\\""); break;
+                case '\\': sb.Append("\\\\"); break;
+                case '\n': sb.Append("\\n"); break;
+                case '\r': sb.Append("\\r"); break;
+                case '\t': sb.Append("\\t"); break;
+                default:
+                    if (char.IsControl(c))
+                    {
+                        sb.Append("\\u").Append(((int)c).ToString("x4", Num.Inv));
+                    }
+                    else
+                    {
+                        sb.Append(c);
+                    }
+                    break;
+            }
+        }
+        sb.Append('"');
+        return sb.ToString();
+    }
+
+    /// <summary>Boolean argument as the original wrote it: <c>True</c> or <c>False</c>.</summary>
+    internal static string Bool(bool value) => value ? "True" : "False";
+
+    /// <summary><c>Name(n1,n2,…);</c> with lossless numbers.</summary>
+    internal static string Call(string name, params ReadOnlySpan<double> values)
+    {
+        var sb = new StringBuilder(name.Length + 2 + values.Length * 8);
+        sb.Append(name).Append('(');
+        for (int i = 0; i < values.Length; i++)
+        {
+            if (i > 0)
+            {
+                sb.Append(',');
+            }
+            sb.Append(Num.R(values[i]));
+        }
+        return sb.Append(");").ToString();
+    }
+
+    /// <summary><c>Name(a,b,…);</c> from already formatted arguments.</summary>
+    internal static string CallRaw(string name, params ReadOnlySpan<string> args) => name + "(" + string.Join(',', args.ToArray()) + ");";
+
+    /// <summary>"Increase" or "Decrease" depending on the sign, as used by relative descriptions.</summary>
+    internal static string Change(double value) => value < 0 ? "Decrease" : "Increase";
+}
