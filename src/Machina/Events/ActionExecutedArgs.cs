@@ -1,0 +1,35 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>Payload of <c>Robot.ActionExecuted</c>: the controller reported an action as done.</summary>
+public sealed class ActionExecutedArgs : MachinaEventArgs
+{
+    /// <summary>Creates the payload.</summary>
+    public ActionExecutedArgs(RobotAction lastAction, int pendingExecutionOnDevice, int pendingExecutionTotal, RobotState state) : base(state)
+    {
+        LastAction = lastAction ?? throw new ArgumentNullException(nameof(lastAction));
+        PendingExecutionOnDevice = pendingExecutionOnDevice;
+        PendingExecutionTotal = pendingExecutionTotal;
+    }
+
+    /// <summary>The action that was executed.</summary>
+    public RobotAction LastAction { get; }
+
+    /// <summary>Actions sent to the controller and not executed yet.</summary>
+    public int PendingExecutionOnDevice { get; }
+
+    /// <summary>All issued actions not executed yet (sent or still waiting).</summary>
+    public int PendingExecutionTotal { get; }
+
+    /// <inheritdoc/>
+    public override string ToJsonString()
+    {
+        var sb = new StringBuilder(240);
+        AppendHead(sb, "action-executed", LastAction);
+        sb.Append(",\"pendDev\":").Append(Num.I(PendingExecutionOnDevice))
+          .Append(",\"pendTot\":").Append(Num.I(PendingExecutionTotal)).Append(',');
+        AppendPose(sb);
+        return sb.Append('}').ToString();
+    }
+}

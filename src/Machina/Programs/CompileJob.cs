@@ -1,0 +1,66 @@
+namespace Machina;
+
+/// <summary>Everything a compiler needs: the program name, the actions in order, the options, and a place for warnings.</summary>
+internal sealed class CompileJob
+{
+    private readonly List<ProgramWarning> _warnings = [];
+
+    internal CompileJob(string programName, IReadOnlyList<RobotAction> actions, CompileOptions options, Func<RobotCursor>? newCursor = null)
+    {
+        ProgramName = programName;
+        Actions = actions;
+        Options = options;
+        _newCursor = newCursor ?? (() => new RobotCursor());
+    }
+
+    private readonly Func<RobotCursor> _newCursor;
+
+    /// <summary>Program name, safe for robot languages.</summary>
+    internal string ProgramName { get; }
+
+    /// <summary>The actions, in issue order.</summary>
+    internal IReadOnlyList<RobotAction> Actions { get; }
+
+    /// <summary>Compile options.</summary>
+    internal CompileOptions Options { get; }
+
+    /// <summary>Warnings collected so far.</summary>
+    internal IReadOnlyList<ProgramWarning> Warnings => _warnings;
+
+    /// <summary>Records that <paramref name="action"/> could not be expressed exactly.</summary>
+    internal void Warn(RobotAction action, string message) => _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), message));
+
+    /// <summary>A cursor in the robot's initial state, to replay the actions on.</summary>
+    internal RobotCursor NewCursor() => _newCursor();
+
+    /// <summary>
+    /// Replays every action on a fresh cursor and calls <paramref name="emit"/> with the action and the state after it.
+    /// An action the cursor refuses (impossible for actions issued through a robot) is reported as a warning and skipped.
+    /// </summary>
+    internal void Replay(Action<RobotAction, RobotCursor> emit)
+    {
+        RobotCursor cursor = NewCursor();
+        foreach (RobotAction action in Actions)
+        {
+            string? refusal = cursor.TryApply(action);
+            if (refusal is not null)
+            {
+                Warn(action, "skipped: " + refusal);
+                continue;
+            }
+            emit(action, cursor);
+        }
+    }
+
+    /// <summary>A robot name made safe as a program identifier: letters, digits and '_', starting with a letter or '_'.</summary>
+    internal static string SafeProgramName(string? name)
+    {
+        if (string.IsNullOrWhiteSpace(name))
+        {
+            return "Machina";
+        }
+        var chars = name.Trim().Select(c => char.IsAsciiLetterOrDigit(c) || c == '_' ? c : '_').ToArray();
+        string safe = new(chars);
+        return char.IsAsciiDigit(safe[0]) ? "_" + safe : safe;
+    }
+}

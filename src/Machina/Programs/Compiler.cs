@@ -1,0 +1,30 @@
+namespace Machina;
+
+/// <summary>
+/// Turns a list of issued actions into a program in one device language. A compiler is a fold: it replays the actions on
+/// a fresh cursor and writes code from the state after each action, so relative actions become absolute targets.
+/// </summary>
+internal abstract class Compiler
+{
+    /// <summary>The language this compiler writes.</summary>
+    internal abstract RobotType Brand { get; }
+
+    /// <summary>What starts a comment in this language.</summary>
+    internal abstract string CommentPrefix { get; }
+
+    /// <summary>Compiles the job into a program; never throws for actions the device cannot express (they become comments and warnings).</summary>
+    internal abstract RobotProgram Compile(CompileJob job);
+
+    /// <summary>Our short header: program name, library version, a safety notice, and the date only when asked.</summary>
+    internal IEnumerable<string> Header(CompileJob job)
+    {
+        string cc = CommentPrefix;
+        yield return $"{cc} Program \"{job.ProgramName}\" written by {LibraryInfo.NameAndVersion} for {Brand}.";
+        if (job.Options.Timestamp is DateTimeOffset when)
+        {
+            yield return $"{cc} Created {when.ToString("yyyy-MM-dd HH:mm:ss zzz", Num.Inv)}.";
+        }
+        yield return $"{cc} Safety: this program moves a machine that can hurt people. Check it in simulation first,";
+        yield return $"{cc} run it at reduced speed, keep clear of the working area and keep the emergency stop in reach.";
+    }
+}

@@ -1,0 +1,13 @@
+namespace Machina;
+
+/// <summary>Finds the compiler for a device language.</summary>
+internal static class Compilers
+{
+    /// <summary>The compiler for <paramref name="brand"/>.</summary>
+    internal static Compiler For(RobotType brand) => brand switch
+    {
+        RobotType.HUMAN => new HumanCompiler(),
+        RobotType.MACHINA => new MachinaCompiler(),
+        _ => throw new NotSupportedException($"Compiling to {brand} is not available yet."),
+    };
+}

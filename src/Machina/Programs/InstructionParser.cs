@@ -1,0 +1,244 @@
+namespace Machina;
+
+/// <summary>
+/// Reads Machina instruction text: statements like <c>MoveTo(400, 300, 500);</c>, any number per line, separated by
+/// semicolons or line breaks, with <c>//</c> comments and double-quoted strings (<c>\"</c>, <c>\\</c>, <c>\n</c> escapes).
+/// </summary>
+internal sealed class InstructionParser
+{
+    private readonly string _text;
+    private readonly InstructionArgs _args = new();
+    private int _pos;
+    private int _line = 1;
+    private int _lineStart;
+
+    internal InstructionParser(string text) => _text = text ?? throw new ArgumentNullException(nameof(text));
+
+    private int Column => _pos - _lineStart + 1;
+
+    /// <summary>The next action, or null at the end of the text.</summary>
+    /// <exception cref="InstructionParseException">The text is malformed, or a value is not acceptable.</exception>
+    internal RobotAction? Next()
+    {
+        SkipSeparators();
+        if (_pos >= _text.Length)
+        {
+            return null;
+        }
+        int line = _line, column = Column;
+        int nameStart = _pos;
+        while (_pos < _text.Length && (char.IsAsciiLetterOrDigit(_text[_pos]) || _text[_pos] == '_'))
+        {
+            _pos++;
+        }
+        if (_pos == nameStart || !char.IsAsciiLetter(_text[nameStart]))
+        {
+            throw Error(line, column, $"expected an instruction such as MoveTo(400, 300, 500), but found '{Describe(_text[nameStart])}'.");
+        }
+        string name = _text.Substring(nameStart, _pos - nameStart);
+        InstructionCatalog.Overload[] overloads = Resolve(name, line, column);
+        SkipSpaces();
+        if (_pos >= _text.Length || _text[_pos] != '(')
+        {
+            throw Error(_line, Column, $"expected '(' after {name}.");
+        }
+        _pos++;
+        _args.Begin(_text, name, line, column);
+        ReadArguments(name);
+        SkipSpaces();
+        if (_pos < _text.Length && _text[_pos] == ';')
+        {
+            _pos++;
+        }
+        return Create(overloads, line, column);
+    }
+
+    private InstructionCatalog.Overload[] Resolve(string name, int line, int column)
+    {
+        InstructionCatalog.Overload[]? overloads = InstructionCatalog.Find(name);
+        if (overloads is not null)
+        {
+            return overloads;
+        }
+        string? proper = InstructionCatalog.ProperName(name);
+        throw Error(line, column, proper is not null
+            ? $"unknown instruction \"{name}\"; did you mean \"{proper}\"? Instruction names are case-sensitive."
+            : $"unknown instruction \"{name}\".");
+    }
+
+    private RobotAction Create(InstructionCatalog.Overload[] overloads, int line, int column)
+    {
+        int count = _args.Count;
+        foreach (InstructionCatalog.Overload overload in overloads)
+        {
+            if (count >= overload.MinArgs && count <= overload.MaxArgs)
+            {
+                try
+                {
+                    return overload.Create(_args);
+                }
+                catch (ArgumentException ex)
+                {
+                    throw Error(line, column, $"{_args.Name}: {FirstSentence(ex.Message)}");
+                }
+            }
+        }
+        string usages = string.Join(" or ", overloads.Select(o => o.Usage));
+        throw Error(line, column, $"{_args.Name} was given {count} argument{(count == 1 ? "" : "s")}; use it as {usages}.");
+    }
+
+    private static string FirstSentence(string message)
+    {
+        int paren = message.IndexOf(" (Parameter '", StringComparison.Ordinal);
+        return paren > 0 ? message[..paren] : message;
+    }
+
+    private void ReadArguments(string name)
+    {
+        SkipWhitespace();
+        if (_pos < _text.Length && _text[_pos] == ')')
+        {
+            _pos++;
+            return;
+        }
+        while (true)
+        {
+            SkipWhitespace();
+            if (_pos >= _text.Length)
+            {
+                throw Error(_line, Column, $"{name}( is not closed with ')'.");
+            }
+            var arg = new InstructionArgs.Arg { Line = _line, Column = Column };
+            if (_text[_pos] == '"')
+            {
+                ReadString(ref arg);
+            }
+            else
+            {
+                ReadBare(ref arg, name);
+            }
+            _args.Add(arg);
+            SkipWhitespace();
+            if (_pos >= _text.Length)
+            {
+                throw Error(_line, Column, $"{name}( is not closed with ')'.");
+            }
+            char c = _text[_pos++];
+            if (c == ')')
+            {
+                return;
+            }
+            if (c != ',')
+            {
+                throw Error(_line, Column - 1, $"expected ',' or ')' in {name}(...), but found '{Describe(c)}'.");
+            }
+        }
+    }
+
+    private void ReadString(ref InstructionArgs.Arg arg)
+    {
+        int start = ++_pos;
+        while (_pos < _text.Length)
+        {
+            char c = _text[_pos];
+            if (c == '\\' && _pos + 1 < _text.Length)
+            {
+                _pos += 2;
+                continue;
+            }
+            if (c == '"')
+            {
+                arg.Quoted = true;
+                arg.Start = start;
+                arg.Length = _pos - start;
+                arg.Text = InstructionArgs.Unescape(_text.AsSpan(start, _pos - start));
+                _pos++;
+                return;
+            }
+            if (c == '\n')
+            {
+                break;
+            }
+            _pos++;
+        }
+        throw Error(arg.Line, arg.Column, "this text is not closed with a double quote (\"); write a quote inside text as \\\".");
+    }
+
+    private void ReadBare(ref InstructionArgs.Arg arg, string name)
+    {
+        int start = _pos;
+        while (_pos < _text.Length)
+        {
+            char c = _text[_pos];
+            if (c == ',' || c == ')' || c == '\n' || c == '(' || c == ';' || c == '"')
+            {
+                break;
+            }
+            _pos++;
+        }
+        int end = _pos;
+        while (end > start && char.IsWhiteSpace(_text[end - 1]))
+        {
+            end--;
+        }
+        if (end == start)
+        {
+            throw Error(arg.Line, arg.Column, $"a value is missing in {name}(...).");
+        }
+        arg.Start = start;
+        arg.Length = end - start;
+    }
+
+    private void SkipSpaces()
+    {
+        while (_pos < _text.Length && (_text[_pos] == ' ' || _text[_pos] == '\t'))
+        {
+            _pos++;
+        }
+    }
+
+    private void SkipWhitespace()
+    {
+        while (_pos < _text.Length && char.IsWhiteSpace(_text[_pos]))
+        {
+            Advance();
+        }
+    }
+
+    private void SkipSeparators()
+    {
+        while (_pos < _text.Length)
+        {
+            char c = _text[_pos];
+            if (char.IsWhiteSpace(c) || c == ';' || c == '\uFEFF')
+            {
+                Advance();
+            }
+            else if (c == '/' && _pos + 1 < _text.Length && _text[_pos + 1] == '/')
+            {
+                while (_pos < _text.Length && _text[_pos] != '\n')
+                {
+                    _pos++;
+                }
+            }
+            else
+            {
+                return;
+            }
+        }
+    }
+
+    private void Advance()
+    {
+        if (_text[_pos] == '\n')
+        {
+            _line++;
+            _lineStart = _pos + 1;
+        }
+        _pos++;
+    }
+
+    private static string Describe(char c) => char.IsControl(c) ? $"\\u{(int)c:x4}" : c.ToString();
+
+    private static InstructionParseException Error(int line, int column, string problem) => new(line, column, problem);
+}

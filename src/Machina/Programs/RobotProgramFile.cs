@@ -1,0 +1,48 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>One file of a compiled program, e.g. <c>HelloRobot.mod</c>: its name, extension, text encoding and lines.</summary>
+public sealed class RobotProgramFile
+{
+    internal RobotProgramFile(string name, string extension, Encoding encoding, string commentPrefix, IReadOnlyList<string> lines)
+    {
+        Name = name;
+        Extension = extension;
+        Encoding = encoding;
+        CommentPrefix = commentPrefix;
+        Lines = lines;
+    }
+
+    /// <summary>File name without extension.</summary>
+    public string Name { get; }
+
+    /// <summary>Extension without the dot, e.g. "mod".</summary>
+    public string Extension { get; }
+
+    /// <summary>File name with extension.</summary>
+    public string FileName => Name + "." + Extension;
+
+    /// <summary>Text encoding used when saving: ASCII for robot controllers, UTF-8 with BOM for listings.</summary>
+    public Encoding Encoding { get; }
+
+    /// <summary>What starts a comment line in this file's language, e.g. "!" for RAPID.</summary>
+    public string CommentPrefix { get; }
+
+    /// <summary>The lines of code, without line endings.</summary>
+    public IReadOnlyList<string> Lines { get; }
+
+    /// <summary>The whole file as text, each line ended by <paramref name="newLine"/> (default "\n").</summary>
+    public string ToText(string newLine = "\n")
+    {
+        var sb = new StringBuilder();
+        foreach (string line in Lines)
+        {
+            sb.Append(line).Append(newLine);
+        }
+        return sb.ToString();
+    }
+
+    /// <summary>Text such as <c>Robot Program File "HelloRobot.mod" with 40 lines of code.</c>.</summary>
+    public override string ToString() => $"Robot Program File \"{FileName}\" with {Lines.Count} lines of code.";
+}

@@ -1,0 +1,110 @@
+namespace Machina;
+
+public sealed partial class Robot
+{
+    /// <summary>Moves the tool tip by an offset in mm (in the world frame, or the tool's frame after <c>Coordinates("Local")</c>).</summary>
+    public bool Move(Vector direction) => Issue(new ActionTranslation(direction, true));
+
+    /// <summary>Moves the tool tip by (x, y, z) mm.</summary>
+    public bool Move(double incX, double incY, double incZ = 0) => Issue(new ActionTranslation(new Vector(incX, incY, incZ), true));
+
+    /// <summary>Moves the tool tip to a position in mm, keeping its orientation.</summary>
+    public bool MoveTo(Vector position) => Issue(new ActionTranslation(position, false));
+
+    /// <summary>Moves the tool tip to (x, y, z) mm, keeping its orientation.</summary>
+    public bool MoveTo(double x, double y, double z) => Issue(new ActionTranslation(new Vector(x, y, z), false));
+
+    /// <summary>Rotates the tool around its tip by a rotation.</summary>
+    public bool Rotate(Rotation rotation) => Issue(new ActionRotation(rotation, true));
+
+    /// <summary>Rotates the tool around its tip by <paramref name="angleDegrees"/> around an axis (right-hand rule).</summary>
+    public bool Rotate(Vector axis, double angleDegrees) => Issue(new ActionRotation(axis, angleDegrees, true));
+
+    /// <summary>Rotates the tool around its tip by <paramref name="angleDegrees"/> around the axis (x, y, z).</summary>
+    public bool Rotate(double rotVecX, double rotVecY, double rotVecZ, double angleDegrees) =>
+        Issue(new ActionRotation(new Vector(rotVecX, rotVecY, rotVecZ), angleDegrees, true));
+
+    /// <summary>Turns the tool to an orientation, keeping its tip in place.</summary>
+    public bool RotateTo(Rotation rotation) => Issue(new ActionRotation(rotation, false));
+
+    /// <summary>Turns the tool to an orientation, keeping its tip in place.</summary>
+    public bool RotateTo(Orientation orientation) => Issue(new ActionRotation(orientation.Rotation, false));
+
+    /// <summary>Turns the tool so that its X and Y axes point along the given directions.</summary>
+    public bool RotateTo(Vector xAxis, Vector yAxis) => Issue(new ActionRotation(Rotation.FromAxes(xAxis, yAxis), false));
+
+    /// <summary>Turns the tool so that its X axis is (x0, x1, x2) and its Y axis is (y0, y1, y2).</summary>
+    public bool RotateTo(double x0, double x1, double x2, double y0, double y1, double y2) =>
+        Issue(new ActionRotation(Rotation.FromAxes(new Vector(x0, x1, x2), new Vector(y0, y1, y2)), false));
+
+    /// <summary>Moves by an offset (mm), then rotates.</summary>
+    public bool Transform(Vector direction, Rotation rotation) => Issue(new ActionTransformation(direction, rotation, true, true));
+
+    /// <summary>Rotates, then moves by an offset (mm); the difference shows in the tool's frame.</summary>
+    public bool Transform(Rotation rotation, Vector direction) => Issue(new ActionTransformation(direction, rotation, true, false));
+
+    /// <summary>Moves to a position (mm) and orientation in one motion.</summary>
+    public bool TransformTo(Vector position, Rotation orientation) => Issue(new ActionTransformation(position, orientation, false, true));
+
+    /// <summary>Moves to a position (mm) and orientation in one motion.</summary>
+    public bool TransformTo(Rotation orientation, Vector position) => Issue(new ActionTransformation(position, orientation, false, false));
+
+    /// <summary>Moves the tool tip to (x, y, z) mm with its X axis along (x0, x1, x2) and Y axis along (y0, y1, y2).</summary>
+    public bool TransformTo(double x, double y, double z, double x0, double x1, double x2, double y0, double y1, double y2) =>
+        Issue(new ActionTransformation(new Vector(x, y, z), Rotation.FromAxes(new Vector(x0, x1, x2), new Vector(y0, y1, y2)), false, true));
+
+    /// <summary>Moves along a circular arc through a point to an end point, both given as offsets (mm) from the current position.</summary>
+    public bool ArcMotion(Vector through, Vector end) =>
+        Issue(new ActionArcMotion(new Plane(through, Rotation.Identity), new Plane(end, Rotation.Identity), true, true));
+
+    /// <summary>Moves along a circular arc through (tx, ty, tz) to (ex, ey, ez), both offsets in mm from the current position.</summary>
+    public bool ArcMotion(double throughX, double throughY, double throughZ, double endX, double endY, double endZ) =>
+        ArcMotion(new Vector(throughX, throughY, throughZ), new Vector(endX, endY, endZ));
+
+    /// <summary>Moves along a circular arc through a point to an end point (mm), keeping the tool orientation.</summary>
+    public bool ArcMotionTo(Vector through, Vector end) =>
+        Issue(new ActionArcMotion(new Plane(through, Rotation.Identity), new Plane(end, Rotation.Identity), false, true));
+
+    /// <summary>Moves along a circular arc through (tx, ty, tz) to (ex, ey, ez) mm, keeping the tool orientation.</summary>
+    public bool ArcMotionTo(double throughX, double throughY, double throughZ, double endX, double endY, double endZ) =>
+        ArcMotionTo(new Vector(throughX, throughY, throughZ), new Vector(endX, endY, endZ));
+
+    /// <summary>Moves along a circular arc through one frame to another, turning the tool to each frame's orientation.</summary>
+    public bool ArcMotionTo(Plane through, Plane end) => Issue(new ActionArcMotion(through, end, false, false));
+
+    /// <summary>Turns the joints by the given amounts, degrees.</summary>
+    public bool Axes(Joints increments) => Issue(new ActionAxes(increments, true));
+
+    /// <summary>Turns the joints by the given amounts, degrees.</summary>
+    public bool Axes(double incJ1, double incJ2, double incJ3, double incJ4, double incJ5, double incJ6) =>
+        Issue(new ActionAxes(new Joints(incJ1, incJ2, incJ3, incJ4, incJ5, incJ6), true));
+
+    /// <summary>Turns the joints to the given angles, degrees.</summary>
+    public bool AxesTo(Joints joints) => Issue(new ActionAxes(joints, false));
+
+    /// <summary>Turns the joints to the given angles, degrees.</summary>
+    public bool AxesTo(double j1, double j2, double j3, double j4, double j5, double j6) =>
+        Issue(new ActionAxes(new Joints(j1, j2, j3, j4, j5, j6), false));
+
+    /// <summary>Changes external axis 1..6 (track or positioner) by an amount, mm or degrees.</summary>
+    public bool ExternalAxis(int axisNumber, double increment, ExternalAxesTarget target = ExternalAxesTarget.All) =>
+        Issue(new ActionExternalAxis(axisNumber, increment, target, true));
+
+    /// <summary>Changes external axis 1..6 by an amount; <paramref name="target"/> is "All", "Cartesian" or "Joint".</summary>
+    public bool ExternalAxis(int axisNumber, double increment, string target) =>
+        ExternalAxis(axisNumber, increment, EnumText.Parse<ExternalAxesTarget>(target, "external axes target"));
+
+    /// <summary>Sets external axis 1..6 (track or positioner) to a value, mm or degrees.</summary>
+    public bool ExternalAxisTo(int axisNumber, double value, ExternalAxesTarget target = ExternalAxesTarget.All) =>
+        Issue(new ActionExternalAxis(axisNumber, value, target, false));
+
+    /// <summary>Sets external axis 1..6 to a value; <paramref name="target"/> is "All", "Cartesian" or "Joint".</summary>
+    public bool ExternalAxisTo(int axisNumber, double value, string target) =>
+        ExternalAxisTo(axisNumber, value, EnumText.Parse<ExternalAxesTarget>(target, "external axes target"));
+
+    /// <summary>Changes the arm angle of a 7-axis arm, degrees.</summary>
+    public bool ArmAngle(double increment) => Issue(new ActionArmAngle(increment, true));
+
+    /// <summary>Sets the arm angle of a 7-axis arm, degrees.</summary>
+    public bool ArmAngleTo(double angle) => Issue(new ActionArmAngle(angle, false));
+}

@@ -1,0 +1,114 @@
+namespace Machina;
+
+public sealed partial class Robot
+{
+    private RobotCursor? _programStart;
+
+    /// <summary>
+    /// Reads one or more instructions, e.g. <c>"MoveTo(400,300,500); Wait(1000);"</c>, and issues them in order. Either all
+    /// of them are issued or, if any is malformed or cannot be applied, none is.
+    /// </summary>
+    /// <returns>True (kept for programs written for the original Machina).</returns>
+    /// <exception cref="InstructionParseException">The text is malformed.</exception>
+    /// <exception cref="ActionRefusedException">An instruction cannot be applied to the robot's state.</exception>
+    public bool Do(string instructions)
+    {
+        IReadOnlyList<RobotAction> actions = Instructions.Parse(instructions ?? throw new ArgumentNullException(nameof(instructions)));
+        if (actions.Count > 1)
+        {
+            DryRun(actions);
+        }
+        foreach (RobotAction action in actions)
+        {
+            Issue(action);
+        }
+        return true;
+    }
+
+    /// <summary>Checks that every action would apply in sequence, on a copy of the state, so that a later failure issues nothing.</summary>
+    private void DryRun(IReadOnlyList<RobotAction> actions)
+    {
+        var trial = new RobotCursor();
+        lock (_issueCursor)
+        {
+            trial.CopyFrom(_issueCursor);
+        }
+        foreach (RobotAction action in actions)
+        {
+            if (trial.TryApply(action) is string refusal)
+            {
+                throw new ActionRefusedException(action, refusal);
+            }
+        }
+    }
+
+    /// <summary>Compiles every action issued so far (offline) into a program in this robot's language. Compiling does not change the robot: compiling twice gives the same program.</summary>
+    /// <param name="inlineTargets">Write targets inside motion instructions (true) or as declared variables (false).</param>
+    /// <param name="humanComments">Add a description of each action as a comment.</param>
+    public RobotProgram Compile(bool inlineTargets = true, bool humanComments = true) =>
+        Compile(Brand, new CompileOptions { InlineTargets = inlineTargets, HumanComments = humanComments });
+
+    /// <summary>Compiles every action issued so far into a program in <paramref name="language"/> (any brand, not only this robot's).</summary>
+    public RobotProgram Compile(RobotType language, CompileOptions? options = null)
+    {
+        if (_online is not null)
+        {
+            throw new InvalidOperationException("Compile works in offline mode; this robot is streaming its actions to a controller.");
+        }
+        RobotAction[] actions;
+        RobotCursor start = new();
+        lock (_issueCursor)
+        {
+            actions = [.. _programActions];
+            if (_programStart is not null)
+            {
+                start.CopyFrom(_programStart);
+            }
+        }
+        var job = new CompileJob(CompileJob.SafeProgramName(Name), actions, options ?? CompileOptions.Default, () =>
+        {
+            var cursor = new RobotCursor();
+            cursor.CopyFrom(start);
+            return cursor;
+        });
+        return Compilers.For(EnumText.RequireDefined(language, nameof(language))).Compile(job);
+    }
+
+    /// <summary>The actions issued so far that the next <c>Compile()</c> will contain.</summary>
+    public IReadOnlyList<RobotAction> GetProgramActions()
+    {
+        lock (_issueCursor)
+        {
+            return [.. _programActions];
+        }
+    }
+
+    /// <summary>Starts a new program: the actions issued so far are forgotten, and the next program starts from the current state.</summary>
+    public void ClearProgram()
+    {
+        lock (_issueCursor)
+        {
+            _programStart ??= new RobotCursor();
+            _programStart.CopyFrom(_issueCursor);
+            _programActions.Clear();
+        }
+    }
+
+    /// <summary>Saves a compiled program's files into a folder named after the program inside <paramref name="folderPath"/> (e.g. <c>HelloRobot_Program</c>).</summary>
+    /// <returns>True when every file was written.</returns>
+    public bool SaveProgram(RobotProgram program, string folderPath)
+    {
+        ArgumentNullException.ThrowIfNull(program);
+        string folder = Path.Combine(folderPath, CompileJob.SafeProgramName(program.Name + "_Program"));
+        try
+        {
+            program.SaveToFolder(folder);
+            return true;
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        {
+            Logger.Error($"Could not save the program to \"{folder}\": {ex.Message}");
+            return false;
+        }
+    }
+}

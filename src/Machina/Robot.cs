@@ -1,0 +1,145 @@
+namespace Machina;
+
+/// <summary>
+/// A robot you program with simple verbs: <c>MoveTo</c>, <c>Rotate</c>, <c>SpeedTo</c>, <c>Wait</c>… Each verb creates an
+/// action that is checked against the robot's current state and then kept for <c>Compile()</c> (offline) or streamed
+/// to the controller (online). Verbs ending in <c>To</c> are absolute; the others are relative to the current state.
+/// Distances are in millimetres, angles in degrees, speeds in mm/s, times in milliseconds.
+/// </summary>
+public sealed partial class Robot
+{
+    private readonly RobotCursor _issueCursor;
+    private readonly List<RobotAction> _programActions = [];
+    private int _nextId = 1;
+
+    private Robot(string name, RobotType brand)
+    {
+        Name = name;
+        Brand = brand;
+        Logger = new RobotLogger(name);
+        _issueCursor = new RobotCursor { Warn = (action, message) => Logger.Warning($"{action.ToInstruction()} {message}") };
+    }
+
+    /// <summary>The library's version.</summary>
+    public static string Version => LibraryInfo.Version;
+
+    /// <summary>The robot's name; it is also the name of compiled programs.</summary>
+    public string Name { get; }
+
+    /// <summary>The kind of device this robot is, which selects the language it compiles to.</summary>
+    public RobotType Brand { get; }
+
+    /// <summary>This robot's log.</summary>
+    public RobotLogger Logger { get; }
+
+    /// <summary>Raised after each action is accepted, with the state it leads to. Raised on the thread that issued the action.</summary>
+    public event EventHandler<ActionIssuedArgs>? ActionIssued;
+
+    /// <summary>A robot named "Machina" that compiles to a human-readable listing.</summary>
+    public static Robot Create() => new("Machina", RobotType.HUMAN);
+
+    /// <summary>A robot with a name (starting with a letter) and a brand.</summary>
+    public static Robot Create(string name, RobotType brand)
+    {
+        ValidateName(name);
+        return new Robot(name, EnumText.RequireDefined(brand, nameof(brand)));
+    }
+
+    /// <summary>A robot with a name (starting with a letter) and a brand given as text: "ABB", "UR", "KUKA", "ZMORPH", "MARLIN", "HUMAN" or "MACHINA" (any letter case).</summary>
+    public static Robot Create(string name, string brand)
+    {
+        ValidateName(name);
+        return new Robot(name, EnumText.Parse<RobotType>(brand, "robot brand"));
+    }
+
+    private static void ValidateName(string? name)
+    {
+        if (string.IsNullOrWhiteSpace(name) || !char.IsLetter(name[0]))
+        {
+            throw new ArgumentException($"\"{name}\" is not a valid robot name: it must start with a letter.", nameof(name));
+        }
+    }
+
+    /// <summary>True when this robot is of the brand named (any letter case).</summary>
+    public bool IsBrand(string brand) => string.Equals(Brand.ToString(), brand, StringComparison.OrdinalIgnoreCase);
+
+    /// <summary>True when this robot is of the given brand.</summary>
+    public bool IsBrand(RobotType brand) => Brand == brand;
+
+    /// <summary>Text such as <c>Robot["HelloRobot", ABB]</c>.</summary>
+    public override string ToString() => $"Robot[\"{Name}\", {Brand}]";
+
+    /// <summary>
+    /// Issues an action built by hand. It is checked against the current state; if it cannot be applied an exception explains
+    /// why and nothing changes. An action that was already issued is issued again as a copy.
+    /// </summary>
+    /// <returns>True (kept for programs written for the original Machina).</returns>
+    /// <exception cref="ActionRefusedException">The action does not make sense in the current state.</exception>
+    public bool Issue(RobotAction action)
+    {
+        ArgumentNullException.ThrowIfNull(action);
+        lock (_issueCursor)
+        {
+            if (action.Id != -1)
+            {
+                action = action.CloneUnissued();
+            }
+            string? refusal = _issueCursor.TryApply(action);
+            if (refusal is not null)
+            {
+                Logger.Warning($"Refused {action.ToInstruction()} {refusal}");
+                throw new ActionRefusedException(action, refusal);
+            }
+            action.Id = _nextId++;
+            Dispatch(action);
+        }
+        if (Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative)
+        {
+            Logger.Verbose(StateReport());
+        }
+        var handler = ActionIssued;
+        if (handler is not null)
+        {
+            RaiseSafely(handler, new ActionIssuedArgs(action, _issueCursor.Snapshot()));
+        }
+        return true;
+    }
+
+    /// <summary>Sends an issued action on: to the stream when online, to the program otherwise.</summary>
+    private void Dispatch(RobotAction action)
+    {
+        if (_online is not null)
+        {
+            _online.Enqueue(action);
+        }
+        else
+        {
+            _programActions.Add(action);
+        }
+    }
+
+    private string StateReport() => _issueCursor.LastAction switch
+    {
+        ActionTranslation or ActionArcMotion => $"TCP position at {_issueCursor.Position}",
+        ActionRotation => $"TCP orientation at {_issueCursor.Rotation?.ToOrientationString()}",
+        ActionTransformation => $"TCP transform at {_issueCursor.Position} {_issueCursor.Rotation?.ToOrientationString()}",
+        ActionAxes => $"Axes at {_issueCursor.Axes}",
+        _ => $"Settings: {_issueCursor.CurrentSettings}",
+    };
+
+    /// <summary>Raises an event; an exception thrown by a subscriber is logged and never stops the robot.</summary>
+    internal void RaiseSafely<T>(EventHandler<T> handler, T args)
+    {
+        foreach (EventHandler<T> subscriber in handler.GetInvocationList().Cast<EventHandler<T>>())
+        {
+            try
+            {
+                subscriber(this, args);
+            }
+            catch (Exception ex)
+            {
+                Logger.Error($"An event handler threw {ex.GetType().Name}: {ex.Message}");
+            }
+        }
+    }
+}
