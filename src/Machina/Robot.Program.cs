@@ -49,7 +49,20 @@ public sealed partial class Robot
         Compile(Brand, new CompileOptions { InlineTargets = inlineTargets, HumanComments = humanComments });
 
     /// <summary>Compiles every action issued so far into a program in <paramref name="language"/> (any brand, not only this robot's).</summary>
-    public RobotProgram Compile(RobotType language, CompileOptions? options = null)
+    public RobotProgram Compile(RobotType language, CompileOptions? options = null) =>
+        Compilers.For(EnumText.RequireDefined(language, nameof(language))).Compile(CreateCompileJob(options));
+
+    /// <summary>
+    /// Compiles straight into files in <paramref name="folderPath"/> without building the program text in memory (for very long
+    /// toolpaths). Uses this robot's language unless <paramref name="language"/> is given. Returns the paths written.
+    /// </summary>
+    public IReadOnlyList<string> CompileToFolder(string folderPath, RobotType? language = null, CompileOptions? options = null)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(folderPath);
+        return Compilers.For(EnumText.RequireDefined(language ?? Brand, nameof(language))).CompileToFolder(CreateCompileJob(options), folderPath);
+    }
+
+    private CompileJob CreateCompileJob(CompileOptions? options)
     {
         if (_online is not null)
         {
@@ -65,13 +78,12 @@ public sealed partial class Robot
                 start.CopyFrom(_programStart);
             }
         }
-        var job = new CompileJob(CompileJob.SafeProgramName(Name), actions, options ?? CompileOptions.Default, () =>
+        return new CompileJob(CompileJob.SafeProgramName(Name), actions, options ?? CompileOptions.Default, () =>
         {
             var cursor = new RobotCursor();
             cursor.CopyFrom(start);
             return cursor;
         });
-        return Compilers.For(EnumText.RequireDefined(language, nameof(language))).Compile(job);
     }
 
     /// <summary>The actions issued so far that the next <c>Compile()</c> will contain.</summary>

@@ -12,8 +12,27 @@ internal abstract class Compiler
     /// <summary>What starts a comment in this language.</summary>
     internal abstract string CommentPrefix { get; }
 
-    /// <summary>Compiles the job into a program; never throws for actions the device cannot express (they become comments and warnings).</summary>
-    internal abstract RobotProgram Compile(CompileJob job);
+    /// <summary>
+    /// Writes the program's files into <paramref name="output"/>, opening each file with <c>output.OpenFile</c> and adding its
+    /// lines in order. Never throws for actions the device cannot express: they become comments and warnings (<c>job.Warn</c>).
+    /// </summary>
+    internal abstract void Emit(CompileJob job, ProgramOutput output);
+
+    /// <summary>Compiles the job into an in-memory program.</summary>
+    internal RobotProgram Compile(CompileJob job)
+    {
+        using var output = new MemoryProgramOutput();
+        Emit(job, output);
+        return output.ToProgram(job.ProgramName, Brand, job.Warnings);
+    }
+
+    /// <summary>Compiles the job straight into files in <paramref name="folder"/>; returns their paths.</summary>
+    internal IReadOnlyList<string> CompileToFolder(CompileJob job, string folder, string newLine = "\n")
+    {
+        using var output = new FolderProgramOutput(folder, newLine);
+        Emit(job, output);
+        return output.Paths;
+    }
 
     /// <summary>Our short header: program name, library version, a safety notice, and the date only when asked.</summary>
     internal IEnumerable<string> Header(CompileJob job)

@@ -7,14 +7,12 @@ internal sealed class HumanCompiler : Compiler
 
     internal override string CommentPrefix => "//";
 
-    internal override RobotProgram Compile(CompileJob job)
+    internal override void Emit(CompileJob job, ProgramOutput output)
     {
-        var lines = new List<string>(job.Actions.Count + 8);
-        lines.AddRange(Header(job));
-        lines.Add("");
+        LineSink file = output.OpenFile(job.ProgramName, "txt", RobotProgram.Utf8Bom, CommentPrefix);
+        file.AddRange(Header(job));
+        file.Add("");
         int index = 0;
-        job.Replay((action, _) => lines.Add($"[{index++}] {action.Describe()}"));
-        var file = new RobotProgramFile(job.ProgramName, "txt", RobotProgram.Utf8Bom, CommentPrefix, lines);
-        return new RobotProgram(job.ProgramName, Brand, [file], job.Warnings);
+        job.Replay((action, _) => file.Add($"[{index++}] {action.Describe()}"));
     }
 }

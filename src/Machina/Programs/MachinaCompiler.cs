@@ -7,13 +7,11 @@ internal sealed class MachinaCompiler : Compiler
 
     internal override string CommentPrefix => "//";
 
-    internal override RobotProgram Compile(CompileJob job)
+    internal override void Emit(CompileJob job, ProgramOutput output)
     {
-        var lines = new List<string>(job.Actions.Count + 8);
-        lines.AddRange(Header(job));
-        lines.Add("");
-        job.Replay((action, _) => lines.Add(action.ToInstruction()));
-        var file = new RobotProgramFile(job.ProgramName, "machina", RobotProgram.Utf8Bom, CommentPrefix, lines);
-        return new RobotProgram(job.ProgramName, Brand, [file], job.Warnings);
+        LineSink file = output.OpenFile(job.ProgramName, "machina", RobotProgram.Utf8Bom, CommentPrefix);
+        file.AddRange(Header(job));
+        file.Add("");
+        job.Replay((action, _) => file.Add(action.ToInstruction()));
     }
 }

@@ -1,0 +1,35 @@
+namespace Machina;
+
+/// <summary>Receives the lines of one program file as a compiler writes them: kept in memory or written straight to disk.</summary>
+internal abstract class LineSink
+{
+    /// <summary>Adds one line (without line ending).</summary>
+    internal abstract void Add(string line);
+
+    /// <summary>Adds several lines.</summary>
+    internal void AddRange(IEnumerable<string> lines)
+    {
+        foreach (string line in lines)
+        {
+            Add(line);
+        }
+    }
+}
+
+/// <summary>Keeps lines in a list.</summary>
+internal sealed class ListLineSink : LineSink
+{
+    internal List<string> Lines { get; } = [];
+
+    internal override void Add(string line) => Lines.Add(line);
+}
+
+/// <summary>Writes lines to a text writer as they come.</summary>
+internal sealed class WriterLineSink(TextWriter writer, string newLine) : LineSink
+{
+    internal override void Add(string line)
+    {
+        writer.Write(line);
+        writer.Write(newLine);
+    }
+}
