@@ -85,3 +85,20 @@ public class HelloRobotTests
             lines);
     }
 }
+
+public class ReferenceProgramTests
+{
+    [Theory]
+    [InlineData("HelloRobot")]
+    [InlineData("SquarePushPop")]
+    [InlineData("Rotations")]
+    [InlineData("JointsToolsIO")]
+    [InlineData("Print3D")]
+    public void ReferenceProgram_MachinaListing_RoundTripsThroughTheParser(string name)
+    {
+        var bot = Machina.Tests.Support.ReferencePrograms.Issue(name, RobotType.MACHINA);
+        var text = bot.Compile().Files[0].ToText();
+
+        Assert.Equal(bot.GetProgramActions(), Instructions.Parse(text));
+    }
+}
