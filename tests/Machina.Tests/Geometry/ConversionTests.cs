@@ -67,6 +67,23 @@ public class ConversionTests
     }
 
     [Fact]
+    public void AxisAngle_ShortButNonZeroAxis_StillRotates()
+    {
+        Oracle.SameRotation(Rotation.FromAxisAngle(Vector.XAxis, 90), new AxisAngle(new Vector(1e-7, 0, 0), 90).ToRotation(), 1e-9);
+        Assert.Throws<ArgumentException>(() => new AxisAngle(new Vector(1e-12, 0, 0), 90).ToRotation());
+        Assert.Throws<ArgumentException>(() => new AxisAngle(Vector.XAxis, double.NaN).ToRotation());
+    }
+
+    [Fact]
+    public void RotationVector_FullTurn_IsIdentity()
+    {
+        Rotation r = new RotationVector(0, 0, 360).ToRotation();
+        Oracle.SameRotation(Rotation.Identity, r, 1e-12);
+        Assert.Equal(0, r.ToRotationVector().Angle, 12);
+        Oracle.SameRotation(Rotation.FromAxisAngle(Vector.ZAxis, -90), new RotationVector(0, 0, 270).ToRotation(), 1e-12);
+    }
+
+    [Fact]
     public void AxisAngle_NegativeAndLargeAngles_SameRotationAsEquivalent()
     {
         Oracle.SameRotation(new AxisAngle(-Vector.ZAxis, 90).ToRotation(), new AxisAngle(Vector.ZAxis, -90).ToRotation(), 1e-12);
