@@ -32,7 +32,7 @@ public class JointsTests
     [Fact]
     public void ToString_ThreeDecimalsInvariant_Exact()
     {
-        Assert.Equal("[0, 0, 0, 0, 90, 0]", default(Joints).With(j5: 90).ToString());
+        Assert.Equal("[0, 0, 0, 0, 90, 0]", (default(Joints) with { J5 = 90 }).ToString());
         Assert.Equal("[0.123, -1.5, 0, 100, -0.001, 2.5]", Oracle.UnderGerman(() => new Joints(0.12345, -1.5, -0.0, 100, -0.0012, 2.5).ToString()));
     }
 
@@ -47,9 +47,4 @@ public class JointsTests
         Assert.False((a with { J3 = double.NaN }).IsFinite);
         Assert.Throws<ArgumentException>(() => (a with { J3 = double.PositiveInfinity }).RequireFinite("joints"));
     }
-}
-
-internal static class JointsTestExtensions
-{
-    internal static Joints With(this Joints j, double j5) => j with { J5 = j5 };
 }
