@@ -6,7 +6,7 @@ namespace Machina;
 public readonly record struct AxisAngle(Vector Axis, double Angle)
 {
     /// <summary>The rotation this axis and angle describe.</summary>
-    public Rotation ToRotation() => Angle == 0 || Axis.IsZero ? Rotation.Identity : Rotation.FromAxisAngle(Axis, Angle);
+    public Rotation ToRotation() => Angle == 0 || Axis == Vector.Zero ? Rotation.Identity : Rotation.FromAxisAngle(Axis, Angle);
 
     /// <summary>Text such as <c>AxisAngle[0, 1, 0, 90]</c> (3 decimals).</summary>
     public override string ToString() => $"AxisAngle[{Num.F(Axis.X, 3)}, {Num.F(Axis.Y, 3)}, {Num.F(Axis.Z, 3)}, {Num.F(Angle, 3)}]";

@@ -79,18 +79,19 @@ public readonly record struct RotationMatrix
     /// <summary>Intrinsic Z-Y′-X″ Euler angles in degrees; at pitch ±90° (gimbal lock) roll is set to 0 and yaw carries the whole turn.</summary>
     public YawPitchRoll ToYawPitchRoll()
     {
-        const double eps = 1e-9;
-        if (M20 <= -1 + eps)
+        // cos(pitch) from the first column; only an exact lock (to ~1e-12 rad) takes the roll = 0 branch.
+        double cosPitch = Math.Sqrt(M00 * M00 + M10 * M10);
+        if (cosPitch < 1e-12)
         {
-            return new YawPitchRoll(0, 90, Math.Atan2(M12, M02) * Angles.ToDegrees);
+            return M20 < 0
+                ? new YawPitchRoll(0, 90, Math.Atan2(M12, M02) * Angles.ToDegrees)
+                : new YawPitchRoll(0, -90, Math.Atan2(-M12, -M02) * Angles.ToDegrees);
         }
-        if (M20 >= 1 - eps)
-        {
-            return new YawPitchRoll(0, -90, Math.Atan2(-M12, -M02) * Angles.ToDegrees);
-        }
-        double roll = Math.Atan2(M21, M22);
-        double pitch = Math.Atan2(-M20, Math.Sqrt(M00 * M00 + M10 * M10));
         double yaw = Math.Atan2(M10, M00);
+        double pitch = Math.Atan2(-M20, cosPitch);
+        // Roll from Rz(−yaw)·R (its second row is [0, cos roll, −sin roll]), so that yaw and roll stay consistent near the lock.
+        double sy = Math.Sin(yaw), cy = Math.Cos(yaw);
+        double roll = Math.Atan2(sy * M02 - cy * M12, cy * M11 - sy * M01);
         return new YawPitchRoll(roll * Angles.ToDegrees, pitch * Angles.ToDegrees, yaw * Angles.ToDegrees);
     }
 

@@ -36,6 +36,11 @@ public readonly record struct Vector(double X, double Y, double Z)
     public Vector Normalized()
     {
         double length = Length;
+        if (double.IsPositiveInfinity(length) && IsFinite)
+        {
+            // Finite but huge components overflow the squared length: scale down first.
+            return (this / Math.Max(Math.Abs(X), Math.Max(Math.Abs(Y), Math.Abs(Z)))).Normalized();
+        }
         if (!(length >= 1e-9) || !double.IsFinite(length))
         {
             throw new ArgumentException($"Cannot normalise the vector {this}: it has no direction (length {Num.G(length)}).");
