@@ -236,3 +236,44 @@ internal static class PoseAssertCore
         Assert.True((actual.Value.ZAxis - zAxis).Length < 1e-9, $"Z axis was {actual.Value.ZAxis}");
     }
 }
+
+public class RobotConcurrencyTests
+{
+    [Fact]
+    public void ActionIssued_TwoThreadsIssuing_EachPayloadShowsItsOwnAction()
+    {
+        var bot = Robot.Create("Busy", RobotType.ABB);
+        bot.MoveTo(0, 0, 0);
+        var mismatches = 0;
+        bot.ActionIssued += (_, e) =>
+        {
+            if (e.State.LastAction is not { } last || last.Id != e.LastAction.Id)
+            {
+                Interlocked.Increment(ref mismatches);
+            }
+        };
+
+        Parallel.For(0, 2, _ =>
+        {
+            for (int i = 0; i < 2000; i++)
+            {
+                bot.Move(1, 0, 0);
+            }
+        });
+
+        Assert.Equal(0, mismatches);
+        Assert.Equal(new Point(4000, 0, 0), bot.GetCurrentPosition());
+        Assert.Equal(Enumerable.Range(1, 4001), bot.GetProgramActions().Select(a => a.Id));
+    }
+
+    [Fact]
+    public void Temperature_TypedPartOverload_IsRelative()
+    {
+        var bot = Robot.Create("Printer", RobotType.MARLIN);
+        bot.TemperatureTo(50, RobotPartType.Chamber);
+        bot.Temperature(5, RobotPartType.Chamber, false);
+
+        Assert.Equal(55, bot.GetCurrentState().ChamberTemperature);
+        Assert.Equal(new ActionTemperature(5, RobotPartType.Chamber, false, true), bot.GetProgramActions()[1]);
+    }
+}
