@@ -142,3 +142,27 @@ public class RobotCreateTests
         Assert.Empty(logB);
     }
 }
+
+public class EnumTextTests
+{
+    [Theory]
+    [InlineData("Linear, Joint")]
+    [InlineData("Linear,Linear")]
+    [InlineData("0")]
+    [InlineData("-1")]
+    [InlineData("Lin")]
+    public void MotionMode_CombinedOrPartialNames_AreRefused(string text)
+    {
+        var bot = Robot.Create("Bot", RobotType.ABB);
+
+        Assert.Throws<ArgumentException>(() => bot.MotionMode(text));
+        Assert.Throws<InstructionParseException>(() => Instructions.Parse($"MotionMode(\"{text}\")"));
+        Assert.Empty(bot.GetProgramActions());
+    }
+
+    [Fact]
+    public void Create_CombinedBrandNames_AreRefused()
+    {
+        Assert.Throws<ArgumentException>(() => Robot.Create("Bot", "ABB, UR"));
+    }
+}
