@@ -78,6 +78,9 @@ public sealed partial class Robot
     public bool Issue(RobotAction action)
     {
         ArgumentNullException.ThrowIfNull(action);
+        string? report;
+        EventHandler<ActionIssuedArgs>? handler;
+        RobotState? snapshot;
         lock (_issueCursor)
         {
             if (action.Id != -1)
@@ -92,15 +95,19 @@ public sealed partial class Robot
             }
             action.Id = _nextId++;
             Dispatch(action);
+            // Report and snapshot are taken under the lock so that they describe exactly this action's result,
+            // even when another thread issues the next action before the handlers run.
+            report = Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative ? StateReport() : null;
+            handler = ActionIssued;
+            snapshot = handler is null ? null : _issueCursor.Snapshot();
         }
-        if (Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative)
+        if (report is not null)
         {
-            Logger.Verbose(StateReport());
+            Logger.Verbose(report);
         }
-        var handler = ActionIssued;
-        if (handler is not null)
+        if (handler is not null && snapshot is not null)
         {
-            RaiseSafely(handler, new ActionIssuedArgs(action, _issueCursor.Snapshot()));
+            RaiseSafely(handler, new ActionIssuedArgs(action, snapshot));
         }
         return true;
     }
