@@ -2,7 +2,7 @@ namespace Machina;
 
 /// <summary>
 /// KUKA Status and Turn of a Cartesian point (KRL <c>S</c> and <c>T</c>). Status bit 0: wrist point behind axis 1 (overhead area);
-/// bit 1: A3 at or beyond the stretched-arm angle (wrist point in front of the lower arm); bit 2: A5 ≤ 0.
+/// bit 1: A3 at or beyond the stretched-arm angle φ (wrist point in front of the lower arm); bit 2: A5 &lt; 0 (hand flip).
 /// Turn bit n (0..5) is set when axis n+1 is negative.
 /// </summary>
 /// <param name="Status">Status bits 0..7.</param>
@@ -15,7 +15,7 @@ public readonly record struct KukaConfiguration(int Status, int Turn)
         ArgumentNullException.ThrowIfNull(model);
         joints.RequireFinite(nameof(joints));
         ArmConfiguration c = model.Kinematics.ConfigurationOf(joints);
-        int status = (c.ShoulderBack ? 1 : 0) | (c.ElbowDown ? 0 : 2) | (joints.J5 <= 0 ? 4 : 0);
+        int status = (c.ShoulderBack ? 1 : 0) | (c.ElbowDown ? 0 : 2) | (joints.J5 < 0 ? 4 : 0);
         int turn = 0;
         for (int i = 0; i < Joints.Count; i++)
         {

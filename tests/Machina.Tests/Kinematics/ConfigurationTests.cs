@@ -18,6 +18,7 @@ public class ConfigurationTests
 
     [Theory]
     [InlineData(0, -90, 90, 0, 45, 0, "S 'B010' T 'B000010'")]
+    [InlineData(0, -90, 90, 0, 0, 0, "S 'B010' T 'B000010'")] // home: A5 = 0 is not a hand flip
     [InlineData(-10, -90, 90, 0, -45, -20, "S 'B110' T 'B110011'")]
     [InlineData(0, -90, -20, 0, 45, 0, "S 'B001' T 'B000110'")] // forearm folded back over the top: A3 below the stretched angle (elbow bit cleared) and wrist point behind A1 (x ≈ −151 mm)
     public void KukaConfiguration_KnownJoints_GivesStatusAndTurn(double a1, double a2, double a3, double a4, double a5, double a6, string expected)
