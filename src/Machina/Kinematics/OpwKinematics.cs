@@ -60,11 +60,11 @@ public sealed class OpwKinematics : IKinematics, ISolver
 
     /// <summary>Wrist rotation (canonical: X along the forearm/tool axis) from the flange rotation, per brand.</summary>
     private Affine WristFromFlange(in Affine f) =>
-        // ABB tool0 is the wrist frame turned +90° about Y (tool Z along the forearm); KUKA FLANGE is the wrist frame itself.
-        _kuka ? f : new Affine(f.R02, f.R01, -f.R00, f.R12, f.R11, -f.R10, f.R22, f.R21, -f.R20, f.Px, f.Py, f.Pz);
+        // ABB tool0 and KUKA FLANGE are both the wrist frame turned +90° about Y: Z out of the flange, X down at the home pose.
+        new(f.R02, f.R01, -f.R00, f.R12, f.R11, -f.R10, f.R22, f.R21, -f.R20, f.Px, f.Py, f.Pz);
 
     private Affine FlangeFromWrist(in Affine w) =>
-        _kuka ? w : new Affine(-w.R02, w.R01, w.R00, -w.R12, w.R11, w.R10, -w.R22, w.R21, w.R20, w.Px, w.Py, w.Pz);
+        new(-w.R02, w.R01, w.R00, -w.R12, w.R11, w.R10, -w.R22, w.R21, w.R20, w.Px, w.Py, w.Pz);
 
     /// <inheritdoc/>
     public Pose Forward(Joints joints)

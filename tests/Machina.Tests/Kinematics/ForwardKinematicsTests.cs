@@ -61,9 +61,10 @@ public class ForwardKinematicsTests
     [Fact]
     public void Forward_Kr6R900Home_FlangeAlongX()
     {
-        // KUKA home {A1 0, A2 -90, A3 90, A4 0, A5 0, A6 0}: x = a1 + c3 + c4 = 525, z = c1 + c2 − a2 = 890.
+        // KUKA home {A1 0, A2 -90, A3 90, A4 0, A5 0, A6 0}: x = a1 + c3 + c4 = 525, z = c1 + c2 − a2 = 890; FLANGE Z forward,
+        // i.e. KRL A 0, B 90, C 0.
         Pose p = RobotModels.Get("KR 6 R900 sixx").Kinematics.Forward(new Joints(0, -90, 90, 0, 0, 0));
-        AssertPose(new Pose(525, 0, 890, Rotation.Identity), p);
+        AssertPose(new Pose(525, 0, 890, Rotation.FromYawPitchRoll(0, 90, 0)), p);
     }
 
     [Theory]
@@ -84,13 +85,14 @@ public class ForwardKinematicsTests
         }
         else
         {
-            // Home {0,-90,90,0,0,0}: FLANGE X forward (tool direction), Z up.
-            AssertPose(new Pose(reach, 0, height, Rotation.Identity), kin.Forward(new Joints(0, -90, 90, 0, 0, 0)));
-            AssertPose(new Pose(a1 + c3, 0, height - c4, Rotation.FromAxisAngle(Vector.YAxis, 90)), kin.Forward(new Joints(0, -90, 90, 0, 90, 0)));
+            // Home {0,-90,90,0,0,0}: FLANGE Z out of the flange (forward), X down: KRL A 0, B 90, C 0.
+            AssertPose(new Pose(reach, 0, height, AbbHome), kin.Forward(new Joints(0, -90, 90, 0, 0, 0)));
+            // A5 +90°: flange points down, KRL A 180, B 0, C 180.
+            AssertPose(new Pose(a1 + c3, 0, height - c4, Rotation.FromYawPitchRoll(180, 0, 180)), kin.Forward(new Joints(0, -90, 90, 0, 90, 0)));
             // A1 +90° turns clockwise seen from above (towards −Y); A2 = 0 is the lower arm horizontal; A3 = 0 ⇒ forearm in line.
-            AssertPose(new Pose(0, -(a1 + c2 + c3 + c4), c1 - a2, Rotation.FromAxisAngle(Vector.ZAxis, -90)), kin.Forward(new Joints(90, 0, 0, 0, 0, 0)));
-            // A4 and A6 are left-handed about the tool axis: A6 = +30 turns the flange −30° about its X.
-            AssertPose(new Pose(reach, 0, height, Rotation.FromAxisAngle(Vector.XAxis, -30)), kin.Forward(new Joints(0, -90, 90, 0, 0, 30)));
+            AssertPose(new Pose(0, -(a1 + c2 + c3 + c4), c1 - a2, Rotation.FromAxisAngle(Vector.ZAxis, -90) * AbbHome), kin.Forward(new Joints(90, 0, 0, 0, 0, 0)));
+            // A4 and A6 are left-handed about the tool axis: A6 = +30 turns the flange −30° about its own Z.
+            AssertPose(new Pose(reach, 0, height, AbbHome * Rotation.FromAxisAngle(Vector.ZAxis, -30)), kin.Forward(new Joints(0, -90, 90, 0, 0, 30)));
         }
     }
 
