@@ -75,10 +75,17 @@ public sealed class OpwKinematics : IKinematics, ISolver
         return FlangeFromWrist(ForwardCanonical(t)).ToPose();
     }
 
+    /// <summary>Horizontal distance of the wrist centre in front of axis 1 (in the axis-1 frame; negative = behind).</summary>
+    private double Reach(ReadOnlySpan<double> t)
+    {
+        double phi = t[1] + t[2];
+        return _p.A1 + _p.C2 * Math.Sin(t[1]) + _p.C3 * Math.Cos(phi) + _e * Math.Sin(phi);
+    }
+
     private Affine ForwardCanonical(ReadOnlySpan<double> t)
     {
         double phi = t[1] + t[2];
-        double s = _p.A1 + _p.C2 * Math.Sin(t[1]) + _p.C3 * Math.Cos(phi) + _e * Math.Sin(phi);
+        double s = Reach(t);
         double z = _p.C1 + _p.C2 * Math.Cos(t[1]) - _p.C3 * Math.Sin(phi) + _e * Math.Cos(phi);
         double c1 = Math.Cos(t[0]), s1 = Math.Sin(t[0]);
         Affine r = Affine.RotZ(c1, s1) * Affine.RotY(Math.Cos(phi), Math.Sin(phi)) * Affine.RotX(Math.Cos(t[3]), Math.Sin(t[3]))
@@ -107,8 +114,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
     {
         Span<double> t = stackalloc double[6];
         ToCanonical(joints, t);
-        double phi = t[1] + t[2];
-        double s = _p.A1 + _p.C2 * Math.Sin(t[1]) + _p.C3 * Math.Cos(phi) + _e * Math.Sin(phi);
+        double s = Reach(t);
         return new ArmConfiguration(s < 0, Math.Cos(t[2] - _psi) < 0, Math.Sin(t[4]) < 0);
     }
 
@@ -116,8 +122,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
     {
         Span<double> t = stackalloc double[6];
         ToCanonical(joints, t);
-        double phi = t[1] + t[2];
-        double s = _p.A1 + _p.C2 * Math.Sin(t[1]) + _p.C3 * Math.Cos(phi) + _e * Math.Sin(phi);
+        double s = Reach(t);
         double wrist = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(t[4])))) * Angles.ToDegrees;
         double elbow = Math.Asin(Math.Min(1, Math.Abs(Math.Cos(t[2] - _psi)))) * Angles.ToDegrees;
         return new SingularityMeasure(wrist, elbow, Math.Abs(s));
