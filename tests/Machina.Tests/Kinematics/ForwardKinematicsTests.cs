@@ -68,6 +68,20 @@ public class ForwardKinematicsTests
     }
 
     [Theory]
+    [InlineData("IRB 120", 0, 0, 0, 0, 90, 0, 302, 0, 558, 0, 180, 0)]             // tool0 down: x = c3, z = c1 + c2 + 70 − c4
+    [InlineData("IRB 140", 90, 0, 0, 0, 0, 0, 0, 515, 712, 90, 90, 0)]              // turned left: y = 70 + 380 + 65, z = 352 + 360
+    [InlineData("KR 6 R900 sixx", 0, -90, 90, 0, 90, 0, 445, 0, 810, 180, 0, 180)]  // FLANGE down (KRL A 180, B 0, C 180)
+    [InlineData("KR 16", 0, -90, 90, 0, 0, 0, 1088, 0, 1390, 0, 90, 0)]              // home: 260 + 670 + 158, 675 + 680 + 35
+    [InlineData("UR5e", 0, 0, 0, 0, 0, 0, -817.2, -232.9, 62.8, 0, 0, 90)]          // a2 + a3, −(d4 + d6), d1 − d5; Z along −Y
+    [InlineData("UR10", 0, -90, 0, -90, 0, 0, 0, -256.141, 1427.3, 180, 0, -90)]    // upright: d1 − a2 − a3 + d5
+    public void Forward_ExplicitReferencePoses_MatchHandValues(string name, double j1, double j2, double j3, double j4, double j5, double j6,
+        double x, double y, double z, double yaw, double pitch, double roll)
+    {
+        Pose p = RobotModels.Get(name).Kinematics.Forward(new Joints(j1, j2, j3, j4, j5, j6));
+        AssertPose(new Pose(x, y, z, Rotation.FromYawPitchRoll(yaw, pitch, roll)), p);
+    }
+
+    [Theory]
     [MemberData(nameof(Opw))]
     public void Forward_OpwReferencePoses_MatchGeometry(string name, double a1, double a2, double c1, double c2, double c3, double c4)
     {
