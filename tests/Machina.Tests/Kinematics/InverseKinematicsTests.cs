@@ -26,22 +26,27 @@ public class InverseKinematicsTests
             Joints source = RandomJoints(model, random);
             Pose pose = kin.Forward(source);
             int n = kin.Inverse(pose, buffer);
-            Assert.True(n >= 1, $"{name}: no solution for FK({source}) = {pose}");
+            if (n < 1)
+            {
+                Assert.Fail($"{name}: no solution for FK({source}) = {pose}");
+            }
             bool foundSource = false;
             for (int i = 0; i < n; i++)
             {
                 Joints j = buffer[i];
-                Assert.True(model.IsWithinLimits(j), $"{name}: solution {j} outside limits");
                 Pose back = kin.Forward(j);
-                Assert.True(back.IsSimilar(pose, 1e-6, 1e-6), $"{name}: FK({j}) = {back}, expected {pose}");
+                if (!model.IsWithinLimits(j) || !back.IsSimilar(pose, 1e-6, 1e-6))
+                {
+                    Assert.Fail($"{name}: solution {j} (within limits: {model.IsWithinLimits(j)}) gives FK {back}, expected {pose}");
+                }
                 foundSource |= AngularlyEqual(j, source);
                 checkedSolutions++;
             }
-            Assert.True(foundSource, $"{name}: the original joints {source} are not among the {n} solutions");
             Joints? closest = kin.Closest(pose, source);
-            Assert.NotNull(closest);
-            Assert.True(closest.Value.IsSimilar(source, 1e-6), $"{name}: closest {closest} differs from {source}");
-            Assert.Equal(kin.ConfigurationOf(source), kin.ConfigurationOf(closest.Value));
+            if (!foundSource || closest is null || !closest.Value.IsSimilar(source, 1e-6) || kin.ConfigurationOf(source) != kin.ConfigurationOf(closest.Value))
+            {
+                Assert.Fail($"{name}: original joints {source} found among the {n} solutions: {foundSource}; closest: {closest}");
+            }
         }
         Assert.True(checkedSolutions >= 200);
     }
