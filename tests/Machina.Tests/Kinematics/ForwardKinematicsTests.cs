@@ -96,6 +96,8 @@ public class ForwardKinematicsTests
             AssertPose(new Pose(a1 + c3, 0, height - c4, Rotation.FlippedAroundY), kin.Forward(new Joints(0, 0, 0, 0, 90, 0)));
             // Axis 1 at +90° (turns to +Y), lower arm forward horizontal, forearm horizontal.
             AssertPose(new Pose(0, a1 + c2 + c3 + c4, c1 - a2, Rotation.FromAxisAngle(Vector.ZAxis, 90) * AbbHome), kin.Forward(new Joints(90, 90, -90, 0, 0, 0)));
+            // Axis 4 is right-handed about the forearm (+X): J4 = +30 turns the flange +30° about world X.
+            AssertPose(new Pose(reach, 0, height, Rotation.FromAxisAngle(Vector.XAxis, 30) * AbbHome), kin.Forward(new Joints(0, 0, 0, 30, 0, 0)));
         }
         else
         {
@@ -105,6 +107,8 @@ public class ForwardKinematicsTests
             AssertPose(new Pose(a1 + c3, 0, height - c4, Rotation.FromYawPitchRoll(180, 0, 180)), kin.Forward(new Joints(0, -90, 90, 0, 90, 0)));
             // A1 +90° turns clockwise seen from above (towards −Y); A2 = 0 is the lower arm horizontal; A3 = 0 ⇒ forearm in line.
             AssertPose(new Pose(0, -(a1 + c2 + c3 + c4), c1 - a2, Rotation.FromAxisAngle(Vector.ZAxis, -90) * AbbHome), kin.Forward(new Joints(90, 0, 0, 0, 0, 0)));
+            // A4 is left-handed about the forearm: A4 = +30 turns the flange −30° about world X.
+            AssertPose(new Pose(reach, 0, height, Rotation.FromAxisAngle(Vector.XAxis, -30) * AbbHome), kin.Forward(new Joints(0, -90, 90, 30, 0, 0)));
             // A4 and A6 are left-handed about the tool axis: A6 = +30 turns the flange −30° about its own Z.
             AssertPose(new Pose(reach, 0, height, AbbHome * Rotation.FromAxisAngle(Vector.ZAxis, -30)), kin.Forward(new Joints(0, -90, 90, 0, 0, 30)));
         }
