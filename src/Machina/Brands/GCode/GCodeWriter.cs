@@ -232,7 +232,7 @@ internal sealed class GCodeWriter
         double sent = before - _extrusionOrigin;
         if (e > _flavor.ExtrusionResetLimit && sent > 0)
         {
-            _file.Add("; Homing extrusion length after " + Fixed5(sent) + " mm (" + Num.G(_flavor.ExtrusionResetLimit) + " mm limit)");
+            _file.Add("; Homing extrusion length after " + FixedPoint.Format(sent, 5) + " mm (" + Num.G(_flavor.ExtrusionResetLimit) + " mm limit)");
             _file.Add("G92 E0.0000");
             _extrusionOrigin = before;
             e = after - _extrusionOrigin;
@@ -249,28 +249,28 @@ internal sealed class GCodeWriter
             _feed = feed;
         }
         StringBuilder sb = _sb.Clear();
-        sb.Append(code).Append(" X").Append(Num.F(point.X, 3)).Append(" Y").Append(Num.F(point.Y, 3)).Append(" Z").Append(Num.F(point.Z, 3));
+        FixedPoint.Append(sb.Append(code).Append(" X"), point.X, 3);
+        FixedPoint.Append(sb.Append(" Y"), point.Y, 3);
+        FixedPoint.Append(sb.Append(" Z"), point.Z, 3);
         if (arcCenterOffset is Vector ij)
         {
-            sb.Append(" I").Append(Num.F(ij.X, 3)).Append(" J").Append(Num.F(ij.Y, 3));
+            FixedPoint.Append(sb.Append(" I"), ij.X, 3);
+            FixedPoint.Append(sb.Append(" J"), ij.Y, 3);
         }
         if (e is double extruder)
         {
-            sb.Append(" E").Append(Fixed5(extruder));
+            FixedPoint.Append(sb.Append(" E"), extruder, 5);
         }
         if (_flavor.FeedOnMotionLine && feed != _feed)
         {
-            sb.Append(" F").Append(Num.F(feed, 3));
+            FixedPoint.Append(sb.Append(" F"), feed, 3);
             _feed = feed;
         }
-        if (action is null)
+        if (action is not null && _human)
         {
-            _file.Add(sb.ToString());
+            sb.Append("  ; [").Append(GCodeText.Comment(action.Describe())).Append(']');
         }
-        else
-        {
-            Code(sb.ToString(), action);
-        }
+        _file.Add(sb.ToString());
     }
 
     private void EmitOutput(RobotAction action, string pin, bool toolPin, string value)
@@ -339,9 +339,6 @@ internal sealed class GCodeWriter
             Warning(action, "a 3D printer cannot turn its tool; the change of orientation is ignored.");
         }
     }
-
-    // Five decimals in fixed-point form: G-code has no exponent notation.
-    private static string Fixed5(double value) => Num.Clean(Math.Round(value, 5)).ToString("0.#####", Num.Inv);
 
     private void Code(string line, RobotAction action)
     {

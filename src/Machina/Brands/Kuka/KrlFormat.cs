@@ -9,10 +9,10 @@ namespace Machina;
 internal static class KrlFormat
 {
     /// <summary>mm and degrees: 3 decimals.</summary>
-    internal static string Mm(double value) => Fixed(value, 3, "0.###");
+    internal static string Mm(double value) => FixedPoint.Format(value, 3);
 
     /// <summary>m/s, m/s² and seconds: 6 decimals.</summary>
-    internal static string Fine(double value) => Fixed(value, 6, "0.######");
+    internal static string Fine(double value) => FixedPoint.Format(value, 6);
 
     /// <summary>Speed in mm/s as KRL's <c>$VEL.CP</c> value in m/s.</summary>
     internal static string SpeedMetresPerSecond(double mmPerSecond) => Fine(mmPerSecond / 1000);
@@ -22,9 +22,6 @@ internal static class KrlFormat
 
     /// <summary>Milliseconds as KRL's <c>WAIT SEC</c> value in seconds.</summary>
     internal static string Seconds(double milliseconds) => Fine(milliseconds / 1000);
-
-    // Rounded like Num.F (midpoint to even), but printed in fixed-point form: KRL has no use for "1E-06".
-    private static string Fixed(double value, int decimals, string format) => Num.Clean(Math.Round(value, decimals)).ToString(format, Num.Inv);
 
     /// <summary>
     /// KUKA's A, B, C of an orientation: intrinsic Z-Y′-X″ Euler angles in degrees, A about Z, B about the new Y (in [−90°, 90°]),
@@ -37,18 +34,23 @@ internal static class KrlFormat
     }
 
     /// <summary>An angle in degrees with 3 decimals; −180 is written as 180 (the same angle).</summary>
-    internal static string Angle(double degrees)
-    {
-        string text = Mm(degrees);
-        return text == "-180" ? "180" : text;
-    }
+    internal static string Angle(double degrees) => AppendAngle(new StringBuilder(12), degrees).ToString();
+
+    private static StringBuilder AppendAngle(StringBuilder sb, double degrees) =>
+        FixedPoint.Append(sb, Math.Round(degrees * 1000) == -180_000 ? 180 : degrees, 3);
+
+    private static StringBuilder AppendMm(StringBuilder sb, double value) => FixedPoint.Append(sb, value, 3);
 
     /// <summary>Appends <c>X …, Y …, Z …, A …, B …, C …</c> and <c>, E1 …</c> for each external axis that has a value.</summary>
     internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external)
     {
         (double a, double b, double c) = Abc(rotation);
-        sb.Append("X ").Append(Mm(position.X)).Append(", Y ").Append(Mm(position.Y)).Append(", Z ").Append(Mm(position.Z))
-          .Append(", A ").Append(Angle(a)).Append(", B ").Append(Angle(b)).Append(", C ").Append(Angle(c));
+        AppendMm(sb.Append("X "), position.X);
+        AppendMm(sb.Append(", Y "), position.Y);
+        AppendMm(sb.Append(", Z "), position.Z);
+        AppendAngle(sb.Append(", A "), a);
+        AppendAngle(sb.Append(", B "), b);
+        AppendAngle(sb.Append(", C "), c);
         AppendExternal(sb, external);
     }
 
@@ -57,7 +59,8 @@ internal static class KrlFormat
     {
         for (int i = 0; i < Joints.Count; i++)
         {
-            sb.Append(i == 0 ? "A" : ", A").Append(AxisDigits[i]).Append(' ').Append(Mm(joints[i]));
+            sb.Append(i == 0 ? "A" : ", A").Append(AxisDigits[i]).Append(' ');
+            AppendMm(sb, joints[i]);
         }
         AppendExternal(sb, external);
     }
@@ -74,7 +77,7 @@ internal static class KrlFormat
         {
             if (ext[i] is double v)
             {
-                sb.Append(", E").Append(AxisDigits[i - 1]).Append(' ').Append(Mm(v));
+                AppendMm(sb.Append(", E").Append(AxisDigits[i - 1]).Append(' '), v);
             }
         }
     }

@@ -18,7 +18,8 @@ internal sealed class KrlWriter
     private readonly ProgramOutput _output;
     private readonly bool _human;
     private readonly bool _inline;
-    private readonly StringBuilder _sb = new(160);
+    private readonly StringBuilder _line = new(160);
+    private readonly StringBuilder _declaration = new(160);
     private LineSink _src = null!;
     private LineSink? _dat;
     private int _targetCount;
@@ -273,8 +274,9 @@ internal sealed class KrlWriter
         {
             WarnPtpSpeedOnce(action);
         }
-        string target = PoseTarget(position, rotation, c.ExternalAxesCartesian);
-        Code((ptp ? "PTP " : "LIN ") + target + Approximation(ptp, c.Precision), action);
+        StringBuilder line = BeginLine().Append(ptp ? "PTP " : "LIN ");
+        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian);
+        EndLine(line.Append(Approximation(ptp, c.Precision)), action);
     }
 
     private void EmitArc(RobotAction action, RobotCursor c)
@@ -284,9 +286,10 @@ internal sealed class KrlWriter
             Error(action, "the arc's points are not known, so no motion can be written.");
             return;
         }
-        string aux = PoseTarget(through, c.ArcThroughRotation ?? endRotation, c.ExternalAxesCartesian);
-        string target = PoseTarget(end, endRotation, c.ExternalAxesCartesian);
-        Code("CIRC " + aux + ", " + target + Approximation(false, c.Precision), action);
+        StringBuilder line = BeginLine().Append("CIRC ");
+        AppendPoseTarget(line, through, c.ArcThroughRotation ?? endRotation, c.ExternalAxesCartesian);
+        AppendPoseTarget(line.Append(", "), end, endRotation, c.ExternalAxesCartesian);
+        EndLine(line.Append(Approximation(false, c.Precision)), action);
     }
 
     private void EmitAxes(RobotAction action, RobotCursor c)
@@ -299,9 +302,10 @@ internal sealed class KrlWriter
         WarnPtpSpeedOnce(action);
         ExternalAxes? external = c.ExternalAxesJoints;
         string type = KrlFormat.HasExternal(external) ? "E6AXIS" : "AXIS";
-        StringBuilder sb = StartTarget(type);
-        KrlFormat.AppendAxes(sb, joints, external);
-        Code("PTP " + EndTarget(type) + Approximation(true, c.Precision), action);
+        StringBuilder line = BeginLine().Append("PTP ");
+        KrlFormat.AppendAxes(BeginTarget(line, type), joints, external);
+        EndTarget(line);
+        EndLine(line.Append(Approximation(true, c.Precision)), action);
     }
 
     private void EmitAttach(RobotAction action, RobotCursor c)
@@ -358,42 +362,46 @@ internal sealed class KrlWriter
 
     private static string Approximation(bool ptp, double precision) => precision > 0 ? (ptp ? " C_PTP" : " C_DIS") : "";
 
-    private string PoseTarget(Vector position, Rotation rotation, ExternalAxes? external)
+    private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external)
     {
-        StringBuilder sb = StartTarget("E6POS");
-        KrlFormat.AppendPose(sb, position, rotation, external);
-        return EndTarget("E6POS");
+        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, rotation, external);
+        EndTarget(line);
     }
 
-    private StringBuilder StartTarget(string type)
+    /// <summary>Where a target's values go: straight into the line (inline), or into a declaration for the .dat file.</summary>
+    private StringBuilder BeginTarget(StringBuilder line, string type)
     {
-        _sb.Clear();
         if (_inline)
         {
-            _sb.Append('{').Append(type).Append(": ");
+            return line.Append('{').Append(type).Append(": ");
         }
-        else
-        {
-            _sb.Append("DECL ").Append(type).Append(" target").Append(Num.I(++_targetCount)).Append("={");
-        }
-        return _sb;
+        FixedPoint.Append(_declaration.Clear().Append("DECL ").Append(type).Append(" target"), ++_targetCount, 0);
+        return _declaration.Append("={");
     }
 
-    private string EndTarget(string type)
+    private void EndTarget(StringBuilder line)
     {
-        _sb.Append('}');
         if (_inline)
         {
-            return _sb.ToString();
+            line.Append('}');
+            return;
         }
-        _dat!.Add(_sb.ToString());
-        return "target" + Num.I(_targetCount);
+        _dat!.Add(_declaration.Append('}').ToString());
+        FixedPoint.Append(line.Append("target"), _targetCount, 0);
     }
 
-    private void Code(string line, RobotAction action)
+    private StringBuilder BeginLine() => _line.Clear().Append(Indent);
+
+    private void EndLine(StringBuilder line, RobotAction action)
     {
-        _src.Add(_human ? Indent + line + "  ; [" + KrlText.Comment(action.Describe()) + "]" : Indent + line);
+        if (_human)
+        {
+            line.Append("  ; [").Append(KrlText.Comment(action.Describe())).Append(']');
+        }
+        _src.Add(line.ToString());
     }
+
+    private void Code(string code, RobotAction action) => EndLine(BeginLine().Append(code), action);
 
     private void NoCode(RobotAction action)
     {
