@@ -1,4 +1,5 @@
 using System.Globalization;
+using Machina.Tests.Brands.Kuka;
 using Machina.Tests.Support;
 
 namespace Machina.Tests.Brands.GCode;
@@ -29,17 +30,23 @@ public class GCodeCompilerTests
         Assert.Equal(["G21", "G90", "M82", "G92 E0", ""], marlin.SkipWhile(l => l.StartsWith(';')).Skip(1));
     }
 
-    [Fact]
-    public void Compile_ZMorphExtrusionPastTenMillimetres_HomesTheExtruderAsTheSpecExample()
+    /// <summary>Spec 14.3's example: extrusion rate 0.6, then extruded moves of 10, 10 and 20 mm.</summary>
+    private static Robot ExtrudeTenTenTwenty(RobotType brand)
     {
-        // Spec 14.3: rate 0.6, moves of 10, 10 and 20 mm.
-        var bot = NewBot(RobotType.ZMORPH);
+        var bot = NewBot(brand);
         bot.MoveTo(0, 0, 1);
         bot.ExtrusionRateTo(0.6);
         bot.Extrude();
         bot.Move(10, 0, 0);
         bot.Move(10, 0, 0);
         bot.Move(20, 0, 0);
+        return bot;
+    }
+
+    [Fact]
+    public void Compile_ZMorphExtrusionPastTenMillimetres_HomesTheExtruderAsTheSpecExample()
+    {
+        Robot bot = ExtrudeTenTenTwenty(RobotType.ZMORPH);
 
         Assert.Equal(
             [
@@ -59,13 +66,7 @@ public class GCodeCompilerTests
     [Fact]
     public void Compile_MarlinExtrusion_AccumulatesAbsoluteE()
     {
-        var bot = NewBot(RobotType.MARLIN);
-        bot.MoveTo(0, 0, 1);
-        bot.ExtrusionRateTo(0.6);
-        bot.Extrude();
-        bot.Move(10, 0, 0);
-        bot.Move(10, 0, 0);
-        bot.Move(20, 0, 0);
+        Robot bot = ExtrudeTenTenTwenty(RobotType.MARLIN);
         bot.Extrude(false);
         bot.Move(0, 3, 4);
         bot.Extrude();
@@ -330,11 +331,7 @@ public class GCodeCompilerTests
     }
 
     [Theory]
-    [InlineData("HelloRobot")]
-    [InlineData("SquarePushPop")]
-    [InlineData("Rotations")]
-    [InlineData("JointsToolsIO")]
-    [InlineData("Print3D")]
+    [MemberData(nameof(KrlGoldenTests.ReferenceProgramNames), MemberType = typeof(KrlGoldenTests))]
     public void Compile_ReferencePrograms_NoTrailingSpacesAndAsciiOnly(string name)
     {
         foreach (RobotType brand in new[] { RobotType.ZMORPH, RobotType.MARLIN })

@@ -321,11 +321,7 @@ public class KrlCompilerTests
     }
 
     [Theory]
-    [InlineData("HelloRobot")]
-    [InlineData("SquarePushPop")]
-    [InlineData("Rotations")]
-    [InlineData("JointsToolsIO")]
-    [InlineData("Print3D")]
+    [MemberData(nameof(KrlGoldenTests.ReferenceProgramNames), MemberType = typeof(KrlGoldenTests))]
     public void Compile_ReferencePrograms_NoTrailingSpacesAndAsciiOnly(string name)
     {
         Robot bot = ReferencePrograms.Issue(name, RobotType.KUKA);

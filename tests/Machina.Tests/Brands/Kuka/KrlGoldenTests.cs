@@ -4,12 +4,11 @@ namespace Machina.Tests.Brands.Kuka;
 
 public class KrlGoldenTests
 {
+    /// <summary>The names of the reference programs, for theories.</summary>
+    public static TheoryData<string> ReferenceProgramNames => new(ReferencePrograms.All.Keys);
+
     [Theory]
-    [InlineData("HelloRobot")]
-    [InlineData("SquarePushPop")]
-    [InlineData("Rotations")]
-    [InlineData("JointsToolsIO")]
-    [InlineData("Print3D")]
+    [MemberData(nameof(ReferenceProgramNames))]
     public void Compile_ReferenceProgram_MatchesGoldenFile(string name)
     {
         RobotProgram program = ReferencePrograms.Issue(name, RobotType.KUKA).Compile();
