@@ -334,4 +334,35 @@ public class KrlCompilerTests
             }
         }
     }
+
+    [Fact]
+    public void CompileToFolder_DeclaredTargets_WritesTheSameSrcAndDatAsInMemory()
+    {
+        Robot bot = ReferencePrograms.Issue("HelloRobot", RobotType.KUKA);
+        var options = new CompileOptions { InlineTargets = false };
+        string folder = Path.Combine(Path.GetTempPath(), "machina-krl-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            IReadOnlyList<string> paths = bot.CompileToFolder(folder, RobotType.KUKA, options);
+            RobotProgram program = bot.Compile(RobotType.KUKA, options);
+
+            Assert.Equal(["HelloRobot.src", "HelloRobot.dat"], paths.Select(Path.GetFileName));
+            Assert.Equal(program.Files[0].ToText(), File.ReadAllText(paths[0]));
+            Assert.Equal(program.Files[1].ToText(), File.ReadAllText(paths[1]));
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void Compile_HelloRobot_WarnsAboutTheMessageAndThePtpSpeed()
+    {
+        RobotProgram program = ReferencePrograms.Issue("HelloRobot", RobotType.KUKA).Compile();
+
+        Assert.Equal([1, 7], program.Warnings.Select(w => w.ActionId));
+        Assert.Equal("Message(\"Hello Robot!\");", program.Warnings[0].Instruction);
+        Assert.StartsWith("joint (PTP) motions", program.Warnings[1].Message, StringComparison.Ordinal);
+    }
 }
