@@ -8,6 +8,9 @@ internal static class Compilers
     {
         RobotType.HUMAN => new HumanCompiler(),
         RobotType.MACHINA => new MachinaCompiler(),
+        RobotType.KUKA => new KrlCompiler(),
+        RobotType.ZMORPH => new GCodeCompiler(GCodeFlavor.ZMorph),
+        RobotType.MARLIN => new GCodeCompiler(GCodeFlavor.Marlin),
         _ => throw new NotSupportedException($"Compiling to {brand} is not available yet."),
     };
 }
