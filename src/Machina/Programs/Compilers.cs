@@ -8,6 +8,8 @@ internal static class Compilers
     {
         RobotType.HUMAN => new HumanCompiler(),
         RobotType.MACHINA => new MachinaCompiler(),
+        RobotType.ABB => new RapidCompiler(),
+        RobotType.UR => new UrScriptCompiler(),
         _ => throw new NotSupportedException($"Compiling to {brand} is not available yet."),
     };
 }
