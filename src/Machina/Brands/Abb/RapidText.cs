@@ -18,15 +18,7 @@ internal static class RapidText
     internal const string NoAxis = "9E9";
 
     /// <summary>Appends <paramref name="value"/> rounded to <paramref name="decimals"/> (midpoint to even), invariant, −0 as 0.</summary>
-    internal static StringBuilder Num(this StringBuilder sb, double value, int decimals)
-    {
-        double v = Math.Round(value, decimals);
-        if (v == 0)
-        {
-            v = 0;
-        }
-        return sb.Append(Machina.Num.Inv, $"{v:G15}");
-    }
+    internal static StringBuilder Num(this StringBuilder sb, double value, int decimals) => sb.AppendFixed(value, decimals);
 
     /// <summary>Appends <c>[x, y, z]</c> in mm with 3 decimals.</summary>
     internal static StringBuilder Position(this StringBuilder sb, Vector p) =>

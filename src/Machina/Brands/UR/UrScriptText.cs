@@ -21,15 +21,7 @@ internal static class UrScriptText
     };
 
     /// <summary>Appends <paramref name="value"/> rounded to 6 decimals (midpoint to even), invariant, −0 as 0.</summary>
-    internal static StringBuilder Num6(this StringBuilder sb, double value)
-    {
-        double v = Math.Round(value, 6);
-        if (v == 0)
-        {
-            v = 0;
-        }
-        return sb.Append(Num.Inv, $"{v:G15}");
-    }
+    internal static StringBuilder Num6(this StringBuilder sb, double value) => sb.AppendFixed(value, 6);
 
     /// <summary>Appends a pose <c>p[x,y,z,rx,ry,rz]</c>: millimetres to metres, rotation to a rotation vector in radians.</summary>
     internal static StringBuilder Pose(this StringBuilder sb, Vector position, Rotation rotation)
