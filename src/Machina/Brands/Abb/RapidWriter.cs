@@ -128,7 +128,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 WriteSignal(action, io.PinName, "SetDO ", io.On ? "1" : "0");
                 break;
             case ActionIOAnalog io:
-                WriteSignal(action, io.PinName, "SetAO ", Num.G(io.Value));
+                WriteSignal(action, io.PinName, "SetAO ", new StringBuilder(16).AppendFixed(io.Value, 6).ToString());
                 break;
             case ActionCustomCode { IsDeclaration: false } code:
                 Code(action, Indent + code.Statement);
