@@ -17,7 +17,14 @@ internal sealed class RapidNames
         "VIEWONLY", "WHILE", "WITH", "XOR",
         // Names this compiler or the controller already gives a meaning.
         "main", "tool0", "wobj0", "load0", "fine", "vmax",
+        "v5", "v10", "v20", "v30", "v40", "v50", "v60", "v80", "v100", "v150", "v200", "v300", "v400", "v500", "v600", "v800",
+        "v1000", "v1500", "v2000", "v2500", "v3000", "v4000", "v5000", "v6000", "v7000",
+        "z0", "z1", "z5", "z10", "z15", "z20", "z30", "z40", "z50", "z60", "z80", "z100", "z150", "z200",
     };
+
+    /// <summary>True for names of the form <c>target«digits»</c>, which declared targets use.</summary>
+    internal static bool LooksLikeTarget(string name) =>
+        name.StartsWith("target", StringComparison.OrdinalIgnoreCase) && name.Length > 6 && name.AsSpan(6).IndexOfAnyExceptInRange('0', '9') < 0;
 
     private readonly HashSet<string> _used = new(Reserved, StringComparer.OrdinalIgnoreCase);
 
@@ -37,12 +44,6 @@ internal sealed class RapidNames
         }
         return !Reserved.Contains(name);
     }
-
-    /// <summary>Marks a name as taken (e.g. a generated speed name).</summary>
-    internal void Reserve(string name) => _used.Add(name);
-
-    /// <summary>True when the name is already taken.</summary>
-    internal bool IsTaken(string name) => _used.Contains(name);
 
     /// <summary>
     /// A free, valid identifier as close as possible to <paramref name="wanted"/>: invalid characters become '_', a letter

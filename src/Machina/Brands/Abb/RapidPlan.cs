@@ -16,7 +16,8 @@ internal sealed class RapidPlan
     private readonly List<double> _zones = [];
     private readonly List<Tool> _tools = [];
     private double _lastSpeed = double.NaN, _lastZone = double.NaN;
-    private string _lastSpeedName = "", _lastZoneName = "";
+    private string _lastSpeedName = "", _lastZoneName = "", _lastToolName = "";
+    private Tool? _lastTool;
 
     /// <summary>Identifiers in use in the module.</summary>
     internal RapidNames Names { get; } = new();
@@ -37,7 +38,7 @@ internal sealed class RapidPlan
     internal static RapidPlan Collect(CompileJob job)
     {
         var plan = new RapidPlan();
-        plan.ModuleName = plan.Names.Claim(job.ProgramName, "M");
+        plan.ModuleName = plan.Names.Claim(RapidNames.LooksLikeTarget(job.ProgramName) ? "M_" + job.ProgramName : job.ProgramName, "M");
         RobotCursor cursor = job.NewCursor();
         if (cursor.Tool is Tool startTool)
         {
@@ -115,9 +116,7 @@ internal sealed class RapidPlan
         var toolLines = new List<string>(_tools.Count);
         foreach (Tool tool in _tools)
         {
-            bool looksGenerated = tool.Name.StartsWith("target", StringComparison.OrdinalIgnoreCase)
-                && tool.Name.Length > 6 && tool.Name.AsSpan(6).IndexOfAnyExceptInRange('0', '9') < 0;
-            string name = Names.Claim(looksGenerated ? "tool_" + tool.Name : tool.Name, "tool_");
+            string name = Names.Claim(RapidNames.LooksLikeTarget(tool.Name) ? "tool_" + tool.Name : tool.Name, "tool_");
             _toolNames[tool] = name;
             toolLines.Add($"  PERS tooldata {name} := {RapidText.ToolData(tool)};");
         }
@@ -134,9 +133,7 @@ internal sealed class RapidPlan
         }
         if (Math.Abs(zone - Math.Round(zone)) < 0.001 && Array.IndexOf(PredefinedZones, (int)Math.Round(zone)) >= 0)
         {
-            string name = "z" + Num.I((long)Math.Round(zone));
-            Names.Reserve(name);
-            return name;
+            return "z" + Num.I((long)Math.Round(zone));
         }
         predefined = false;
         return Names.Claim("zone" + NameNumber(zone), "zone");
@@ -167,5 +164,20 @@ internal sealed class RapidPlan
     }
 
     /// <summary>The tooldata name for the tool in use (<c>Tool0</c>, the flange, when none).</summary>
-    internal string ToolName(Tool? tool) => tool is null ? "Tool0" : _toolNames[tool];
+    internal string ToolName(Tool? tool)
+    {
+        if (tool is null)
+        {
+            return "Tool0";
+        }
+        if (!ReferenceEquals(tool, _lastTool))
+        {
+            _lastTool = tool;
+            _lastToolName = _toolNames[tool];
+        }
+        return _lastToolName;
+    }
+
+    /// <summary>The declared name of a tool, or null when no motion uses it (it is then not declared).</summary>
+    internal string? DeclaredToolName(Tool tool) => _toolNames.TryGetValue(tool, out string? name) ? name : null;
 }

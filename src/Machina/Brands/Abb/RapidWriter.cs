@@ -203,12 +203,13 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
 
     private void WriteAttach(RobotAction action, Tool tool)
     {
-        string name = plan.ToolName(tool);
-        if (name != tool.Name)
+        string? declared = plan.DeclaredToolName(tool);
+        string name = declared ?? tool.Name;
+        if (declared is not null && declared != tool.Name)
         {
-            job.Warn(action, $"tool \"{tool.Name}\" is declared as \"{name}\" in RAPID (its name is taken, reserved or too long).");
+            job.Warn(action, $"tool \"{tool.Name}\" is declared as \"{declared}\" in RAPID (its name is taken, reserved or too long).");
         }
-        if (tool.Weight < RapidText.MinToolMass)
+        if (declared is not null && tool.Weight < RapidText.MinToolMass)
         {
             job.Warn(action, $"RAPID needs a tool mass above 0; tool \"{tool.Name}\" is declared with {Num.G(RapidText.MinToolMass)} kg.");
         }

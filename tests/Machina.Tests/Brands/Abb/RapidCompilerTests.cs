@@ -264,6 +264,15 @@ public class RapidCompilerTests
     }
 
     [Fact]
+    public void Emit_ToolAttachedButNeverMoved_IsNotDeclared()
+    {
+        RobotProgram p = Compile(bot => { bot.DefineTool("pen", 0, 0, 100, 1, 0, 0, 0, 1, 0, 0, 0, 0, 5); bot.AttachTool("pen"); });
+        Assert.Empty(Declarations(p));
+        Assert.Equal(["    ! Tool \"pen\" defined", "    ! Tool \"pen\" attached"], MainLines(p));
+        Assert.Empty(p.Warnings);
+    }
+
+    [Fact]
     public void Emit_NamedSignals_WriteSetDOAndSetAO()
     {
         RobotProgram p = Compile(bot => { bot.WriteDigital("DO_1", true); bot.WriteAnalog("AO_speed", 0.25); bot.WriteDigital("DO_2", false, true); });
@@ -323,6 +332,18 @@ public class RapidCompilerTests
         RobotProgram p = Compile(Start, name: "Main");
         Assert.Equal("MODULE Main_2", p.GetFile("mod")!.Lines[0]);
         Assert.Equal("Main.mod", p.GetFile("mod")!.FileName);
+    }
+
+    [Theory]
+    [InlineData("target1", "MODULE M_target1")]
+    [InlineData("Z5", "MODULE Z5_2")]
+    [InlineData("vel20", "MODULE vel20")]
+    public void Emit_ProgramNamedLikeGeneratedOrPredefinedData_GetsDistinctModuleName(string robotName, string expected)
+    {
+        RobotProgram p = Compile(Start, new CompileOptions { HumanComments = false, InlineTargets = false }, robotName);
+        Assert.Equal(expected, p.GetFile("mod")!.Lines[0]);
+        Assert.Contains(Declarations(p), l => l.StartsWith("  CONST speeddata vel20", StringComparison.Ordinal));
+        Assert.Equal(2, Declarations(p).Count);
     }
 
     [Fact]
