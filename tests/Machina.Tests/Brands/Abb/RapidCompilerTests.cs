@@ -354,6 +354,21 @@ public class RapidCompilerTests
     }
 
     [Fact]
+    public void Emit_ProgramStartingWithToolAndAcceleration_DeclaresToolAndSetsLimit()
+    {
+        var bot = Robot.Create("Demo", RobotType.ABB);
+        bot.DefineTool("pen", 0, 0, 100, 1, 0, 0, 0, 1, 0, 1, 0, 0, 50);
+        bot.AttachTool("pen");
+        bot.AccelerationTo(1200);
+        bot.ClearProgram();
+        bot.MoveTo(100, 100, 100);
+        RobotProgram p = bot.Compile(RobotType.ABB, Plain);
+        Assert.Equal("  PERS tooldata pen := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,50],[1,0,0,0],0,0,0]];", Declarations(p)[0]);
+        Assert.Contains("    WorldAccLim \\On := 1.2;", p.GetFile("mod")!.Lines);
+        Assert.EndsWith(", vel20, z5, pen\\WObj:=WObj0;", MainLines(p)[0]);
+    }
+
+    [Fact]
     public void Compile_Twice_GivesIdenticalOutput()
     {
         var bot = Support.ReferencePrograms.Issue("JointsToolsIO", RobotType.ABB);

@@ -198,6 +198,26 @@ public class UrScriptCompilerTests
     }
 
     [Fact]
+    public void Emit_ProgramStartingWithAttachedTool_SetsTcpAndPayloadFirst()
+    {
+        var bot = Robot.Create("Demo", RobotType.UR);
+        bot.DefineTool("pen", 0, 0, 100, 1, 0, 0, 0, 1, 0, 1, 0, 0, 50);
+        bot.AttachTool("pen");
+        bot.ClearProgram();
+        bot.MoveTo(100, 100, 100);
+        Assert.Equal(
+            ["  set_tcp(p[0,0,0.1,0,0,0])", "  set_payload(1, [0,0,0.05])", "  movep(p[0.1,0.1,0.1,0,3.141593,0], a=0.03, v=0.02, r=0.005)"],
+            Body(bot.Compile(RobotType.UR, Plain)));
+    }
+
+    [Fact]
+    public void Emit_EmptyProgram_IsAnEmptyFunction()
+    {
+        var lines = Compile(_ => { }).GetFile("script")!.Lines.ToList();
+        Assert.Equal(["def Demo():", "", "", "end", "", "Demo()"], lines.Skip(lines.IndexOf("def Demo():")));
+    }
+
+    [Fact]
     public void Compile_Twice_GivesIdenticalOutput()
     {
         var bot = Support.ReferencePrograms.Issue("JointsToolsIO", RobotType.UR);
