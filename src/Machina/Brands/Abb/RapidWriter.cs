@@ -80,7 +80,11 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor);
                 Code(action, MoveTail(cursor));
                 break;
-            case ActionArcMotion:
+            case ActionArcMotion arc:
+                if (ArcOrientation.ThroughIsIgnored(arc, cursor))
+                {
+                    job.Warn(action, "MoveC turns the tool evenly from the start to the end orientation; the orientation asked for at the through point is not used.");
+                }
                 _sb.Clear().Append(Indent).Append("MoveC ");
                 RobTargetOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor);
                 _sb.Append(", ");

@@ -75,7 +75,11 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
                 Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint).ToString());
                 break;
-            case ActionArcMotion:
+            case ActionArcMotion arc:
+                if (ArcOrientation.ThroughIsIgnored(arc, cursor))
+                {
+                    job.Warn(action, "movec turns the tool evenly from the start to the end orientation; the orientation asked for at the through point is not used.");
+                }
                 _sb.Clear().Append(Indent).Append("movec(");
                 PoseOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
                 _sb.Append(", ");

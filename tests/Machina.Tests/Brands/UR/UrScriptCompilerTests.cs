@@ -64,6 +64,26 @@ public class UrScriptCompilerTests
     }
 
     [Fact]
+    public void Emit_ArcWithThroughOrientationOffTheEvenTurn_Warns()
+    {
+        var down = Rotation.FlippedAroundY;
+        var tilted = Rotation.FromAxisAngle(0, 1, 0, 30) * down;
+        RobotProgram even = Compile(bot =>
+        {
+            Start(bot);
+            bot.ArcMotionTo(new Plane(new Vector(450, 350, 500), Rotation.FromAxisAngle(0, 1, 0, 15) * down), new Plane(new Vector(500, 300, 500), tilted));
+        });
+        RobotProgram odd = Compile(bot =>
+        {
+            Start(bot);
+            bot.ArcMotionTo(new Plane(new Vector(450, 350, 500), Rotation.FromAxisAngle(1, 0, 0, 40) * down), new Plane(new Vector(500, 300, 500), tilted));
+        });
+        Assert.Empty(even.Warnings);
+        Assert.Contains("through point", Assert.Single(odd.Warnings).Message);
+        Assert.StartsWith("  movec(p[0.45,0.35,0.5,", Body(odd)[1]);
+    }
+
+    [Fact]
     public void Emit_DeclaredTargets_AreNumberedWithoutGaps()
     {
         RobotProgram p = Compile(bot => { bot.Message("go"); Start(bot); bot.Wait(10); bot.ArcMotion(50, 50, 0, 100, 0, 0); bot.AxesTo(0, 0, 0, 0, 90, 0); },
