@@ -155,7 +155,7 @@ public class UrScriptCompilerTests
              "  # NOT SUPPORTED ON UR: Set tool analog IO 0 to 0.5"],
             Body(p));
         Assert.Equal(6, p.Warnings.Count);
-        Assert.Contains("0 to 7", p.Warnings[0].Message);
+        Assert.Equal("#1 WriteDigital(8,True); UR robots have standard digital outputs 0 to 7; output 8 does not exist.", p.Warnings[0].ToString());
         Assert.Contains("no analog outputs", p.Warnings[5].Message);
     }
 
