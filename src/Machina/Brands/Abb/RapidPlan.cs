@@ -2,7 +2,7 @@ namespace Machina;
 
 /// <summary>
 /// What a RAPID module must declare before <c>PROC main()</c>, gathered in a first pass over the actions: the speeds and zones
-/// that motions use, the tools that are attached, custom declarations, and whether IO signals are set. Names are unique
+/// that motions use, the tools that motions use, custom declarations, and whether IO signals are set. Names are unique
 /// (speeds and zones are keyed by the rounded value that is written, so two speeds that print the same share one name).
 /// </summary>
 internal sealed class RapidPlan
