@@ -70,8 +70,10 @@ public sealed partial class Robot
         }
         RobotAction[] actions;
         RobotCursor start = new();
+        RobotModel? model;
         lock (_issueCursor)
         {
+            model = _issueCursor.Model;
             actions = [.. _programActions];
             if (_programStart is not null)
             {
@@ -83,7 +85,7 @@ public sealed partial class Robot
             var cursor = new RobotCursor();
             cursor.CopyFrom(start);
             return cursor;
-        });
+        }) { Model = model };
     }
 
     /// <summary>The actions issued so far that the next <c>Compile()</c> will contain.</summary>

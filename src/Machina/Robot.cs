@@ -94,6 +94,10 @@ public sealed partial class Robot
                 throw new ActionRefusedException(action, refusal);
             }
             action.Id = _nextId++;
+            if (_issueCursor.LastIssues.Count > 0)
+            {
+                RecordIssues(action, _issueCursor.LastIssues);
+            }
             Dispatch(action);
             // Report and snapshot are taken under the lock so that they describe exactly this action's result,
             // even when another thread issues the next action before the handlers run.

@@ -30,8 +30,23 @@ internal sealed class CompileJob
     /// <summary>Records that <paramref name="action"/> could not be expressed exactly.</summary>
     internal void Warn(RobotAction action, string message) => _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), message));
 
-    /// <summary>A cursor in the robot's initial state, to replay the actions on.</summary>
-    internal RobotCursor NewCursor() => _newCursor();
+    /// <summary>Records a kinematic pre-flight issue of <paramref name="action"/>.</summary>
+    internal void Warn(RobotAction action, KinematicIssue issue) =>
+        _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind });
+
+    /// <summary>The robot's arm model, or null; with a model the replayed cursors know joints and pose together.</summary>
+    internal RobotModel? Model { get; init; }
+
+    private bool _kinematicsReported;
+
+    /// <summary>A cursor in the robot's initial state, to replay the actions on (carrying the model, never strict).</summary>
+    internal RobotCursor NewCursor()
+    {
+        RobotCursor cursor = _newCursor();
+        cursor.Model = Model;
+        cursor.Strict = false;
+        return cursor;
+    }
 
     /// <summary>
     /// Replays every action on a fresh cursor and calls <paramref name="emit"/> with the action and the state after it.
@@ -40,6 +55,8 @@ internal sealed class CompileJob
     internal void Replay(Action<RobotAction, RobotCursor> emit)
     {
         RobotCursor cursor = NewCursor();
+        bool reportIssues = !_kinematicsReported;
+        _kinematicsReported = true;
         foreach (RobotAction action in Actions)
         {
             string? refusal = cursor.TryApply(action);
@@ -47,6 +64,13 @@ internal sealed class CompileJob
             {
                 Warn(action, "skipped: " + refusal);
                 continue;
+            }
+            if (reportIssues)
+            {
+                foreach (KinematicIssue issue in cursor.LastIssues)
+                {
+                    Warn(action, issue);
+                }
             }
             emit(action, cursor);
         }

@@ -7,6 +7,19 @@ internal sealed partial class RobotCursor
     internal string? TryApply(RobotAction action)
     {
         _applying = action;
+        if (Model is RobotModel model)
+        {
+            LastIssues = NoIssues;
+            if (IsMotion(action))
+            {
+                string? result = ApplyWithModel(action, model);
+                if (result is null)
+                {
+                    LastAction = action;
+                }
+                return result;
+            }
+        }
         string? refusal = action switch
         {
             ActionTranslation a => ApplyTranslation(a),

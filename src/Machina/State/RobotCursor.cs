@@ -101,6 +101,9 @@ internal sealed partial class RobotCursor
         ArcThrough = other.ArcThrough; ArcThroughRotation = other.ArcThroughRotation;
         LastPathLength = other.LastPathLength;
         LastAction = other.LastAction;
+        Model = other.Model;
+        Strict = other.Strict;
+        LastIssues = other.LastIssues;
     }
 
     private void ApplySettings(Settings s)

@@ -51,9 +51,17 @@ internal static class RapidText
         return sb.Append(']');
     }
 
-    /// <summary>Appends a robtarget: position, orientation, configuration <c>[0,0,0,0]</c> (the controller chooses), external axes.</summary>
-    internal static StringBuilder RobTarget(this StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? axes, double? armAngle) =>
-        sb.Append('[').Position(position).Append(", ").Quaternion(rotation).Append(", [0,0,0,0], ").ExternalAxes(axes, armAngle).Append(']');
+    /// <summary>
+    /// Appends a robtarget: position, orientation, configuration (<paramref name="conf"/> when the joints are known from a robot model,
+    /// else <c>[0,0,0,0]</c> and the controller chooses), external axes.
+    /// </summary>
+    internal static StringBuilder RobTarget(this StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? axes, double? armAngle, AbbConfiguration? conf = null) =>
+        sb.Append('[').Position(position).Append(", ").Quaternion(rotation).Append(", ").Append(conf is AbbConfiguration c ? c.ToRapid() : "[0,0,0,0]").Append(", ")
+          .ExternalAxes(axes, armAngle).Append(']');
+
+    /// <summary>The confdata of the cursor's joints when an ABB model is set and the joints are known, else null.</summary>
+    internal static AbbConfiguration? Conf(RobotModel? model, RobotCursor cursor) =>
+        model is { Brand: "ABB" } && cursor.Axes is Joints j ? AbbConfiguration.From(model, j) : null;
 
     /// <summary>Appends a jointtarget: six joint angles in degrees (3 decimals) and the external axes.</summary>
     internal static StringBuilder JointTarget(this StringBuilder sb, Joints j, ExternalAxes? axes) =>

@@ -31,11 +31,11 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
             switch (action)
             {
                 case ActionTranslation or ActionRotation or ActionTransformation:
-                    DeclareRobTarget(count++, cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                    DeclareRobTarget(count++, cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
                     break;
                 case ActionArcMotion:
-                    DeclareRobTarget(count++, cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor);
-                    DeclareRobTarget(count++, cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                    DeclareRobTarget(count++, cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor, false);
+                    DeclareRobTarget(count++, cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
                     break;
                 case ActionAxes:
                     _sb.Clear().Append("  CONST jointtarget target").Append(count++).Append(" := ")
@@ -47,10 +47,10 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         return count;
     }
 
-    private void DeclareRobTarget(int n, Vector position, Rotation rotation, RobotCursor cursor)
+    private void DeclareRobTarget(int n, Vector position, Rotation rotation, RobotCursor cursor, bool end)
     {
         _sb.Clear().Append("  CONST robtarget target").Append(n).Append(" := ")
-           .RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle).Append(';');
+           .RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null).Append(';');
         sink.Add(_sb.ToString());
     }
 
@@ -77,7 +77,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         {
             case ActionTranslation or ActionRotation or ActionTransformation:
                 _sb.Clear().Append(Indent).Append(cursor.MotionType == MotionType.Joint ? "MoveJ " : "MoveL ");
-                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
                 Code(action, MoveTail(cursor));
                 break;
             case ActionArcMotion arc:
@@ -86,9 +86,9 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                     job.Warn(action, "MoveC turns the tool evenly from the start to the end orientation; the orientation asked for at the through point is not used.");
                 }
                 _sb.Clear().Append(Indent).Append("MoveC ");
-                RobTargetOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor);
+                RobTargetOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor, false);
                 _sb.Append(", ");
-                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
                 Code(action, MoveTail(cursor));
                 break;
             case ActionAxes:
@@ -156,11 +156,12 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         }
     }
 
-    private void RobTargetOrName(Vector position, Rotation rotation, RobotCursor cursor)
+    /// <summary>The target inline or by name; <paramref name="end"/>: the motion's end point, whose confdata is known with a model.</summary>
+    private void RobTargetOrName(Vector position, Rotation rotation, RobotCursor cursor, bool end)
     {
         if (_inline)
         {
-            _sb.RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle);
+            _sb.RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
         }
         else
         {

@@ -41,8 +41,11 @@ internal static class KrlFormat
 
     private static StringBuilder AppendMm(StringBuilder sb, double value) => FixedPoint.Append(sb, value, 3);
 
-    /// <summary>Appends <c>X …, Y …, Z …, A …, B …, C …</c> and <c>, E1 …</c> for each external axis that has a value.</summary>
-    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external)
+    /// <summary>
+    /// Appends <c>X …, Y …, Z …, A …, B …, C …</c>, then <c>, S 'B…', T 'B…'</c> when <paramref name="config"/> is given (joints known
+    /// from a robot model), and <c>, E1 …</c> for each external axis that has a value.
+    /// </summary>
+    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
         (double a, double b, double c) = Abc(rotation);
         AppendMm(sb.Append("X "), position.X);
@@ -51,6 +54,10 @@ internal static class KrlFormat
         AppendAngle(sb.Append(", A "), a);
         AppendAngle(sb.Append(", B "), b);
         AppendAngle(sb.Append(", C "), c);
+        if (config is KukaConfiguration st)
+        {
+            sb.Append(", S ").Append(st.StatusText).Append(", T ").Append(st.TurnText);
+        }
         AppendExternal(sb, external);
     }
 

@@ -275,7 +275,7 @@ internal sealed class KrlWriter
             WarnPtpSpeedOnce(action);
         }
         StringBuilder line = BeginLine().Append(ptp ? "PTP " : "LIN ");
-        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian);
+        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian, StatusTurn(c));
         EndLine(line.Append(Approximation(ptp, c.Precision)), action);
     }
 
@@ -288,7 +288,7 @@ internal sealed class KrlWriter
         }
         StringBuilder line = BeginLine().Append("CIRC ");
         AppendPoseTarget(line, through, c.ArcThroughRotation ?? endRotation, c.ExternalAxesCartesian);
-        AppendPoseTarget(line.Append(", "), end, endRotation, c.ExternalAxesCartesian);
+        AppendPoseTarget(line.Append(", "), end, endRotation, c.ExternalAxesCartesian, StatusTurn(c));
         EndLine(line.Append(Approximation(false, c.Precision)), action);
     }
 
@@ -362,9 +362,13 @@ internal sealed class KrlWriter
 
     private static string Approximation(bool ptp, double precision) => precision > 0 ? (ptp ? " C_PTP" : " C_DIS") : "";
 
-    private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external)
+    /// <summary>Status and Turn of the cursor's joints when a KUKA model is set and the joints are known, else null.</summary>
+    private KukaConfiguration? StatusTurn(RobotCursor c) =>
+        _job.Model is { Brand: "KUKA" } model && c.Axes is Joints j ? KukaConfiguration.From(model, j) : null;
+
+    private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
-        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, rotation, external);
+        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, rotation, external, config);
         EndTarget(line);
     }
 

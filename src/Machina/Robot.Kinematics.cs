@@ -1,0 +1,145 @@
+namespace Machina;
+
+public sealed partial class Robot
+{
+    private readonly List<ProgramWarning> _warnings = [];
+
+    /// <summary>
+    /// A robot with a name, a brand and the model of its arm, e.g. <c>Robot.Create("Bot", "UR", "UR5e")</c>. With a model the robot
+    /// knows joints and pose together and checks every motion (see <see cref="SetModel(RobotModel?)"/>).
+    /// </summary>
+    /// <exception cref="ArgumentException">Unknown brand or model, or the model is of another brand.</exception>
+    public static Robot Create(string name, string brand, string model)
+    {
+        Robot robot = Create(name, brand);
+        robot.SetModel(model);
+        return robot;
+    }
+
+    /// <summary>A robot with a name, a brand and the model of its arm (built-in or your own <see cref="RobotModel"/>).</summary>
+    /// <exception cref="ArgumentException">The model is of another brand.</exception>
+    public static Robot Create(string name, RobotType brand, RobotModel model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        Robot robot = Create(name, brand);
+        robot.SetModel(model);
+        return robot;
+    }
+
+    /// <summary>Every built-in robot model (the same list as <see cref="RobotModels.All"/>).</summary>
+    public static IReadOnlyList<RobotModel> Models => RobotModels.All;
+
+    /// <summary>The model of this robot's arm, or null when none was chosen (then Machina does no kinematics).</summary>
+    public RobotModel? Model
+    {
+        get
+        {
+            lock (_issueCursor)
+            {
+                return _issueCursor.Model;
+            }
+        }
+    }
+
+    /// <summary>Chooses the built-in model with this name (e.g. "IRB 120", "UR5e", "KR 6 R700 sixx"); see <see cref="SetModel(RobotModel?)"/>.</summary>
+    /// <exception cref="ArgumentException">There is no such model (the message suggests close names) or it is of another brand.</exception>
+    public void SetModel(string model)
+    {
+        ArgumentNullException.ThrowIfNull(model);
+        SetModel(RobotModels.Get(model));
+    }
+
+    /// <summary>
+    /// Chooses the model of this robot's arm (null: none). Allowed only while the robot's position and joints are still unknown,
+    /// i.e. before the first motion, so the whole program is computed with one model.
+    /// </summary>
+    /// <exception cref="ArgumentException">The model is of another brand than this robot.</exception>
+    /// <exception cref="InvalidOperationException">A motion was already issued.</exception>
+    public void SetModel(RobotModel? model)
+    {
+        if (model is not null)
+        {
+            CheckModelBrand(model);
+        }
+        lock (_issueCursor)
+        {
+            if (_issueCursor.Position is not null || _issueCursor.Axes is not null)
+            {
+                throw new InvalidOperationException(
+                    "The robot model can only be chosen before the first motion (while the position and joints are unknown); " +
+                    "create the robot with its model, or call SetModel before any MoveTo, TransformTo or AxesTo.");
+            }
+            _issueCursor.Model = model;
+        }
+    }
+
+    private void CheckModelBrand(RobotModel model)
+    {
+        string? brand = Brand switch
+        {
+            RobotType.ABB => "ABB",
+            RobotType.UR => "UR",
+            RobotType.KUKA => "KUKA",
+            RobotType.ZMORPH or RobotType.MARLIN => throw new ArgumentException(
+                $"A {Brand} robot is a 3D printer; arm models such as {model} do not apply to it.", nameof(model)),
+            _ => null,
+        };
+        if (brand is not null && !string.Equals(brand, model.Brand, StringComparison.Ordinal))
+        {
+            throw new ArgumentException($"The model {model} is a {model.Brand} arm, but this robot's brand is {Brand}.", nameof(model));
+        }
+    }
+
+    /// <summary>
+    /// Strict mode (only with a model): a motion that fails any kinematic check (unreachable, joint limit, singularity, configuration
+    /// flip, joint speed) is refused with an <see cref="ActionRefusedException"/> instead of being issued with a warning.
+    /// </summary>
+    public void StrictMode(bool strict)
+    {
+        lock (_issueCursor)
+        {
+            _issueCursor.Strict = strict;
+        }
+    }
+
+    /// <summary>True when strict mode is on (see <see cref="StrictMode"/>).</summary>
+    public bool IsStrict
+    {
+        get
+        {
+            lock (_issueCursor)
+            {
+                return _issueCursor.Strict;
+            }
+        }
+    }
+
+    /// <summary>The kinematic warnings of the actions issued so far, in order, each with the action's id and the check's kind.</summary>
+    public IReadOnlyList<ProgramWarning> GetWarnings()
+    {
+        lock (_issueCursor)
+        {
+            return [.. _warnings];
+        }
+    }
+
+    /// <summary>Forgets the warnings collected so far.</summary>
+    public void ClearWarnings()
+    {
+        lock (_issueCursor)
+        {
+            _warnings.Clear();
+        }
+    }
+
+    /// <summary>Keeps and logs the kinematic issues of an action just issued (called under the issue lock).</summary>
+    private void RecordIssues(RobotAction action, IReadOnlyList<KinematicIssue> issues)
+    {
+        foreach (KinematicIssue issue in issues)
+        {
+            var warning = new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind };
+            _warnings.Add(warning);
+            Logger.Warning(warning.ToString());
+        }
+    }
+}

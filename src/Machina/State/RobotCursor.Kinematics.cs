@@ -1,0 +1,118 @@
+namespace Machina;
+
+internal sealed partial class RobotCursor
+{
+    private static readonly KinematicIssue[] NoIssues = [];
+
+    /// <summary>The arm's model; when set, joints and pose are kept in step and every motion is checked. Null: no kinematics at all.</summary>
+    internal RobotModel? Model;
+
+    /// <summary>When true (and a model is set), a motion with any kinematic issue is refused instead of warned about.</summary>
+    internal bool Strict;
+
+    /// <summary>The kinematic issues found for the last applied motion (always empty without a model).</summary>
+    internal IReadOnlyList<KinematicIssue> LastIssues = NoIssues;
+
+    /// <summary>The joint values used as reference when a Cartesian target is solved and the previous joints are unknown: all zero.</summary>
+    internal static readonly Joints ReferenceJoints = new(0, 0, 0, 0, 0, 0);
+
+    private static bool IsMotion(RobotAction action) =>
+        action is ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion;
+
+    /// <summary>The motion fields a motion action changes, saved so that a strict refusal can restore them.</summary>
+    private readonly record struct MotionFields(
+        Vector? Position, Vector? PrevPosition, Rotation? Rotation, Rotation? PrevRotation, Joints? Axes, Joints? PrevAxes,
+        double? LastPathLength, Vector? ArcThrough, Rotation? ArcThroughRotation, double ExtrudedLength, double PrevExtrudedLength);
+
+    private MotionFields SaveMotion() => new(Position, PrevPosition, Rotation, PrevRotation, Axes, PrevAxes,
+        LastPathLength, ArcThrough, ArcThroughRotation, ExtrudedLength, PrevExtrudedLength);
+
+    private void RestoreMotion(in MotionFields m)
+    {
+        Position = m.Position; PrevPosition = m.PrevPosition;
+        Rotation = m.Rotation; PrevRotation = m.PrevRotation;
+        Axes = m.Axes; PrevAxes = m.PrevAxes;
+        LastPathLength = m.LastPathLength;
+        ArcThrough = m.ArcThrough; ArcThroughRotation = m.ArcThroughRotation;
+        ExtrudedLength = m.ExtrudedLength; PrevExtrudedLength = m.PrevExtrudedLength;
+    }
+
+    /// <summary>
+    /// Applies a motion when a model is set: the plain motion first, then the missing half of the state (pose from joints or joints
+    /// from pose) and the pre-flight checks. In strict mode any issue restores the saved fields and becomes the refusal.
+    /// </summary>
+    private string? ApplyWithModel(RobotAction action, RobotModel model)
+    {
+        MotionFields saved = SaveMotion();
+        string? refusal = ApplyMotion(action);
+        if (refusal is not null)
+        {
+            return refusal;
+        }
+        IReadOnlyList<KinematicIssue> issues = action is ActionAxes ? SyncFromJoints(model) : SyncFromPose(model, action);
+        if (Strict && issues.Count > 0)
+        {
+            RestoreMotion(saved);
+            return "strict mode: " + string.Join(" ", issues.Select(i => i.ToString()));
+        }
+        LastIssues = issues;
+        return null;
+    }
+
+    private string? ApplyMotion(RobotAction action) => action switch
+    {
+        ActionTranslation a => ApplyTranslation(a),
+        ActionRotation a => ApplyRotation(a),
+        ActionTransformation a => ApplyTransformation(a),
+        ActionAxes a => ApplyAxes(a),
+        ActionArcMotion a => ApplyArc(a),
+        _ => null,
+    };
+
+    /// <summary>After AxesTo/Axes: the pose is the forward kinematics of the joints with the attached tool applied.</summary>
+    private IReadOnlyList<KinematicIssue> SyncFromJoints(RobotModel model)
+    {
+        Joints target = Axes!.Value;
+        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, target, KinematicMotion.Joint, Speed);
+        Pose tcp = TcpOf(model.Kinematics.Forward(target));
+        Position = tcp.Position;
+        Rotation = tcp.Rotation;
+        return issues;
+    }
+
+    /// <summary>
+    /// After a Cartesian motion: the joints are the inverse kinematics of the flange pose (TCP pose × tool⁻¹), the solution closest to
+    /// the previous joints (or to all-zero joints when they are unknown). Unreachable: the pose is kept and the joints become unknown.
+    /// </summary>
+    private IReadOnlyList<KinematicIssue> SyncFromPose(RobotModel model, RobotAction action)
+    {
+        Pose flange = FlangePose(Position!.Value, Rotation!.Value);
+        bool linear = action is not ActionArcMotion && MotionType == MotionType.Linear;
+        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed);
+        if (action is ActionArcMotion && ArcThrough is Vector through)
+        {
+            IReadOnlyList<KinematicIssue> viaIssues = KinematicChecks.Check(model, null, FlangePose(through, ArcThroughRotation ?? Rotation!.Value), KinematicMotion.Joint, Speed);
+            if (viaIssues.Count > 0)
+            {
+                issues = [.. issues, .. viaIssues.Select(i => i with { Reason = "through point: " + i.Reason })];
+            }
+        }
+        Axes = model.Kinematics.Closest(flange, PrevAxes ?? ReferenceJoints);
+        return issues;
+    }
+
+    /// <summary>The TCP pose for a flange pose, with the attached tool (if any).</summary>
+    private Pose TcpOf(Pose flange) =>
+        Tool is null ? flange : new Pose(flange.Position + flange.Rotation * Tool.TcpPosition, flange.Rotation * Tool.TcpOrientation);
+
+    /// <summary>The flange pose for a TCP pose, with the attached tool (if any).</summary>
+    private Pose FlangePose(Vector tcpPosition, Rotation tcpRotation)
+    {
+        if (Tool is null)
+        {
+            return new Pose(tcpPosition, tcpRotation);
+        }
+        (Vector p, Rotation r) = FlangeOf(tcpPosition, tcpRotation, Tool);
+        return new Pose(p, r);
+    }
+}
