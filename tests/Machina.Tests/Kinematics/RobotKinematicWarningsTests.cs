@@ -1,0 +1,131 @@
+namespace Machina.Tests.Kinematics;
+
+public class RobotKinematicWarningsTests
+{
+    private static readonly RobotModel Irb120 = RobotModels.Get("IRB 120");
+
+    private static List<KinematicIssueKind?> Kinds(IEnumerable<ProgramWarning> warnings) => warnings.Select(w => w.Kind).ToList();
+
+    [Fact]
+    public void AxesTo_BeyondLimit_JointLimitWarningWithActionId()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 95, 0, 30, 0);
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal(KinematicIssueKind.JointLimit, w.Kind);
+        Assert.Equal(1, w.ActionId);
+        Assert.Equal("#1 AxesTo(0,0,95,0,30,0); JointLimit: the target joints [0, 0, 95, 0, 30, 0] are beyond the limits (joint 3 at 95°, allowed -110° to 70°).", w.ToString());
+    }
+
+    [Theory]
+    [InlineData("IRB 120", 0, 0, 0, 0, 1, 0, KinematicIssueKind.WristSingularity)]
+    [InlineData("IRB 120", 0, 30, -76.5, 0, 30, 0, KinematicIssueKind.ElbowSingularity)]
+    [InlineData("IRB 1200-7/0.7", 0, 0, -83.17, 0, 30, 0, KinematicIssueKind.ShoulderSingularity)]
+    public void AxesTo_NearSingularity_Warns(string model, double j1, double j2, double j3, double j4, double j5, double j6, KinematicIssueKind kind)
+    {
+        Robot bot = Robot.Create("Bot", "ABB", model);
+        bot.AxesTo(j1, j2, j3, j4, j5, j6);
+        Assert.Contains(kind, Kinds(bot.GetWarnings()));
+    }
+
+    [Fact]
+    public void LinearMoveThroughStraightWrist_WarnsFlipAndWrist()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 20, 0);
+        Pose target = Irb120.Kinematics.Forward(new Joints(0, 0, 0, 0, -20, 0));
+        bot.TransformTo(target.Position, target.Rotation);
+        var kinds = Kinds(bot.GetWarnings());
+        Assert.Contains(KinematicIssueKind.ConfigurationFlip, kinds);
+        Assert.Contains(KinematicIssueKind.WristSingularity, kinds);
+        Assert.All(bot.GetWarnings(), w => Assert.Equal(2, w.ActionId));
+    }
+
+    [Fact]
+    public void JointMotionToSameTarget_NoFlipWarning()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 1200-5/0.9");
+        bot.AxesTo(0, 0, 0, 0, 30, 0);
+        bot.MotionMode("joint");
+        Pose target = bot.Model!.Kinematics.Forward(new Joints(0, 20, 0, 0, 30, 0));
+        bot.TransformTo(target.Position, target.Rotation);
+        Assert.Empty(bot.GetWarnings());
+    }
+
+    [Fact]
+    public void FastLineOnSlowModel_JointSpeedWarning()
+    {
+        RobotModel slow = RobotModel.FromOpw("slow", "ABB", Irb120.Opw!.Value, Irb120.MinJoints, Irb120.MaxJoints, new Joints(1, 1, 1, 1, 1, 1));
+        Robot bot = Robot.Create("Bot", RobotType.ABB, slow);
+        bot.AxesTo(0, 10, 10, 0, 45, 0);
+        bot.SpeedTo(500);
+        bot.Move(0, 100, 0);
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal(KinematicIssueKind.JointSpeed, w.Kind);
+        Assert.Equal(3, w.ActionId);
+        Assert.Contains("above its maximum of 1°/s", w.Message);
+    }
+
+    [Fact]
+    public void Compile_WithModel_ReplaysSameWarnings()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 1, 0);
+        bot.MoveTo(2000, 0, 300);
+        bot.Wait(100);
+        IReadOnlyList<ProgramWarning> issued = bot.GetWarnings();
+        Assert.Equal([KinematicIssueKind.WristSingularity, KinematicIssueKind.Unreachable], Kinds(issued));
+        foreach (RobotType language in new[] { RobotType.ABB, RobotType.HUMAN })
+        {
+            RobotProgram program = bot.Compile(language);
+            Assert.Equal(issued, program.Warnings.Where(w => w.Kind is not null).ToList());
+        }
+        bot.ClearWarnings();
+        Assert.Empty(bot.GetWarnings());
+    }
+
+    [Fact]
+    public void StrictMode_Unreachable_RefusedStateAndIdsUnchanged()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.StrictMode(true);
+        Assert.True(bot.IsStrict);
+        bot.AxesTo(0, 10, 10, 0, 45, 0);
+        RobotState before = bot.GetCurrentState();
+        var ex = Assert.Throws<ActionRefusedException>(() => bot.MoveTo(2000, 0, 300));
+        Assert.StartsWith("strict mode: Unreachable: the target", ex.Reason);
+        Assert.Equal((Point?)before.Position, bot.GetCurrentPosition());
+        Assert.Equal(before.Axes, bot.GetCurrentAxes());
+        Assert.Empty(bot.GetWarnings());
+        Assert.Single(bot.GetProgramActions());
+        bot.Move(0, 0, 10);
+        Assert.Equal(2, bot.GetProgramActions()[1].Id);
+        Assert.Equal(before.Position!.Value.Z + 10, bot.GetCurrentPosition()!.Value.Z, 9);
+    }
+
+    [Fact]
+    public void StrictMode_JointLimitAndSingularity_Refused()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.StrictMode(true);
+        Assert.Throws<ActionRefusedException>(() => bot.AxesTo(0, 0, 95, 0, 30, 0));
+        var ex = Assert.Throws<ActionRefusedException>(() => bot.AxesTo(0, 0, 0, 0, 1, 0));
+        Assert.Contains("WristSingularity", ex.Reason);
+        Assert.Null(bot.GetCurrentAxes());
+        Assert.Null(bot.GetCurrentPosition());
+        Assert.Empty(bot.GetProgramActions());
+        bot.StrictMode(false);
+        bot.AxesTo(0, 0, 0, 0, 1, 0);
+        Assert.Equal(1, bot.GetProgramActions()[0].Id);
+    }
+
+    [Fact]
+    public void StrictMode_DoWithRefusedStatement_IssuesNothing()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.StrictMode(true);
+        bot.AxesTo(0, 10, 10, 0, 45, 0);
+        Assert.Throws<ActionRefusedException>(() => bot.Do("Move(0,0,10); MoveTo(2000,0,300); Wait(10);"));
+        Assert.Single(bot.GetProgramActions());
+    }
+}
