@@ -27,8 +27,16 @@ public static class KinematicChecks
     private const int MaxSamples = 2000;
 
     /// <summary>Checks a motion to a flange pose. <paramref name="previous"/> is the joint state before the motion (null when unknown).</summary>
-    public static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond)
+    public static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond) =>
+        Check(model, previous, target, motion, speedMmPerSecond, out _);
+
+    /// <summary>
+    /// As the public overload, and also gives the joint solution it checked: closest to <paramref name="previous"/>, or the first one within
+    /// the limits when previous is null (null when the target cannot be reached within the limits).
+    /// </summary>
+    internal static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond, out Joints? solution)
     {
+        solution = null;
         ArgumentNullException.ThrowIfNull(model);
         target.Position.RequireFinite(nameof(target));
         var issues = new List<KinematicIssue>();
@@ -43,6 +51,7 @@ public static class KinematicChecks
             return issues;
         }
         Joints? chosen = previous is Joints p ? kin.Closest(target, p) : FirstWithinLimits(kin, target);
+        solution = chosen;
         if (chosen is null)
         {
             issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"every way to reach {target.Position} needs a joint beyond its limits ({Violation(model, raw[0])})."));
@@ -104,14 +113,13 @@ public static class KinematicChecks
             double t = (double)i / steps;
             var pose = new Pose(from.Position + (target.Position - from.Position) * t, Slerp(from.Rotation, target.Rotation, t));
             Joints? next = kin.Closest(pose, last);
-            string where = $"{Num.F(t * 100, 0)}% along the line, at {pose.Position}";
             if (next is null)
             {
                 Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
                 Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
                 bool reachable = solver.SolveRaw(Affine.FromPose(pose), raw, cfg) > 0;
                 Add(issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
-                    reachable ? $"the line needs a joint beyond its limits {where}." : $"the line leaves the reach of the {model} {where}.");
+                    reachable ? $"the line needs a joint beyond its limits {Where(t, pose)}." : $"the line leaves the reach of the {model} {Where(t, pose)}.");
                 return;
             }
             Joints j = next.Value;
@@ -128,9 +136,13 @@ public static class KinematicChecks
             }
             if (jump > FlipJumpDegrees || kin.ConfigurationOf(j) != startConfig)
             {
-                Add(issues, KinematicIssueKind.ConfigurationFlip, $"the arm would have to change configuration {where} (a joint jumps {Num.F(jump, 1)}°).");
+                Add(issues, KinematicIssueKind.ConfigurationFlip, $"the arm would have to change configuration {Where(t, pose)} (a joint jumps {Num.F(jump, 1)}°).");
             }
-            CheckSingularities(solver.Measure(j), where, issues);
+            SingularityMeasure measure = solver.Measure(j);
+            if (IsNearSingularity(measure))
+            {
+                CheckSingularities(measure, Where(t, pose), issues);
+            }
             last = j;
         }
         if (worstRatio > 1 && model.MaxJointSpeeds is Joints limits)
@@ -139,6 +151,12 @@ public static class KinematicChecks
                 $"at {Num.F(speed, 1)} mm/s joint {worstJoint + 1} would need {Num.F(worstRatio * limits[worstJoint], 0)}°/s, above its maximum of {Num.F(limits[worstJoint], 0)}°/s.");
         }
     }
+
+    /// <summary>Where a sample of a line is, for messages (built only when there is something to report).</summary>
+    private static string Where(double t, Pose pose) => $"{Num.F(t * 100, 0)}% along the line, at {pose.Position}";
+
+    private static bool IsNearSingularity(SingularityMeasure m) =>
+        m.WristDegrees < WristSingularityDegrees || m.ElbowDegrees < ElbowSingularityDegrees || m.ShoulderMm < ShoulderSingularityMm;
 
     private static void CheckSingularities(SingularityMeasure m, string where, List<KinematicIssue> issues)
     {

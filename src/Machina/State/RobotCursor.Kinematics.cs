@@ -88,7 +88,7 @@ internal sealed partial class RobotCursor
     {
         Pose flange = FlangePose(Position!.Value, Rotation!.Value);
         bool linear = action is not ActionArcMotion && MotionType == MotionType.Linear;
-        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed);
+        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed, out Joints? solution);
         if (action is ActionArcMotion && ArcThrough is Vector through)
         {
             IReadOnlyList<KinematicIssue> viaIssues = KinematicChecks.Check(model, null, FlangePose(through, ArcThroughRotation ?? Rotation!.Value), KinematicMotion.Joint, Speed);
@@ -97,7 +97,8 @@ internal sealed partial class RobotCursor
                 issues = [.. issues, .. viaIssues.Select(i => i with { Reason = "through point: " + i.Reason })];
             }
         }
-        Axes = model.Kinematics.Closest(flange, PrevAxes ?? ReferenceJoints);
+        // With known previous joints the checks already solved for the closest solution; otherwise take the one closest to all-zero joints.
+        Axes = PrevAxes is null ? model.Kinematics.Closest(flange, ReferenceJoints) : solution;
         return issues;
     }
 
