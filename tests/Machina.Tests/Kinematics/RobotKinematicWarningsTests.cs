@@ -128,4 +128,17 @@ public class RobotKinematicWarningsTests
         Assert.Throws<ActionRefusedException>(() => bot.Do("Move(0,0,10); MoveTo(2000,0,300); Wait(10);"));
         Assert.Single(bot.GetProgramActions());
     }
+
+    [Fact]
+    public void ArcThroughUnreachablePoint_WarnsThroughPoint()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 10, 10, 0, 45, 0);
+        Vector start = bot.GetCurrentPosition()!.Value;
+        bot.ArcMotionTo(new Vector(2000, 0, start.Z), new Vector(start.X, start.Y + 20, start.Z));
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal(KinematicIssueKind.Unreachable, w.Kind);
+        Assert.StartsWith("Unreachable: through point: the target [2000, 0, ", w.Message);
+        Assert.NotNull(bot.GetCurrentAxes());
+    }
 }
