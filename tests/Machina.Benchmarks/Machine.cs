@@ -1,0 +1,59 @@
+using System.Diagnostics;
+using System.Runtime.InteropServices;
+
+namespace Machina.Benchmarks;
+
+/// <summary>What the numbers were measured on: CPU, cores, runtime, OS, commit.</summary>
+internal sealed record Machine(string Cpu, int Cores, string Runtime, string Os, string Commit, bool ServerGc, string Configuration)
+{
+    public static Machine Current() => new(
+        CpuModel(),
+        Environment.ProcessorCount,
+        RuntimeInformation.FrameworkDescription,
+        RuntimeInformation.OSDescription,
+        GitCommit(),
+        System.Runtime.GCSettings.IsServerGC,
+#if DEBUG
+        "Debug");
+#else
+        "Release");
+#endif
+
+    public override string ToString() =>
+        $"CPU: {Cpu}, {Cores} cores | {Runtime} | {Os} | {(ServerGc ? "server" : "workstation")} GC | {Configuration} | commit {Commit}";
+
+    private static string CpuModel()
+    {
+        try
+        {
+            string? line = File.ReadLines("/proc/cpuinfo").FirstOrDefault(l => l.StartsWith("model name", StringComparison.Ordinal));
+            return line is null ? RuntimeInformation.ProcessArchitecture.ToString() : line[(line.IndexOf(':') + 1)..].Trim();
+        }
+        catch (IOException)
+        {
+            return RuntimeInformation.ProcessArchitecture.ToString();
+        }
+    }
+
+    private static string GitCommit()
+    {
+        try
+        {
+            using var git = Process.Start(new ProcessStartInfo("git", "rev-parse --short HEAD")
+            {
+                RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false,
+            });
+            if (git is null)
+            {
+                return "unknown";
+            }
+            string output = git.StandardOutput.ReadToEnd().Trim();
+            git.WaitForExit(5000);
+            return git.ExitCode == 0 && output.Length > 0 ? output : "unknown";
+        }
+        catch (Exception ex) when (ex is System.ComponentModel.Win32Exception or InvalidOperationException)
+        {
+            return "unknown";
+        }
+    }
+}
