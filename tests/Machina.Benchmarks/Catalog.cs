@@ -10,6 +10,8 @@ internal static class Catalog
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: false)));
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: true)));
         scenarios.Add(new ParseScenario(workloads));
+        scenarios.Add(new ActionTextScenario(workloads, describe: false));
+        scenarios.Add(new ActionTextScenario(workloads, describe: true));
         return scenarios;
     }
 }

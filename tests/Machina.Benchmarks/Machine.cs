@@ -6,6 +6,19 @@ namespace Machina.Benchmarks;
 /// <summary>What the numbers were measured on: CPU, cores, runtime, OS, commit.</summary>
 internal sealed record Machine(string Cpu, int Cores, string Runtime, string Os, string Commit, bool ServerGc, string Configuration)
 {
+    /// <summary>The load average over the last minute (other programs competing for the cores), or null when unknown.</summary>
+    public static string LoadAverage()
+    {
+        try
+        {
+            return File.ReadAllText("/proc/loadavg").Split(' ')[0];
+        }
+        catch (IOException)
+        {
+            return "unknown";
+        }
+    }
+
     public static Machine Current() => new(
         CpuModel(),
         Environment.ProcessorCount,

@@ -11,6 +11,8 @@ internal sealed record Measurement
     public double MedianSeconds { get; init; }
     public double MinSeconds { get; init; }
     public double MaxSeconds { get; init; }
+    /// <summary>Processor time of the whole process during the median run (all threads, GC included); less sensitive to a busy machine than wall time.</summary>
+    public double CpuSeconds { get; init; }
     public long AllocatedBytes { get; init; }
     public long RetainedBytes { get; init; }
     public Target? Target { get; init; }

@@ -53,12 +53,13 @@ var runner = new Runner(warmups, runs, message =>
 
 if (options.Json)
 {
-    Console.WriteLine(System.Text.Json.JsonSerializer.Serialize(new { table = "machine", machine.Cpu, machine.Cores, machine.Runtime, machine.Os, machine.Commit, machine.ServerGc, machine.Configuration, runs, warmups }));
+    Console.WriteLine(System.Text.Json.JsonSerializer.Serialize(new { table = "machine", machine.Cpu, machine.Cores, machine.Runtime, machine.Os, machine.Commit, machine.ServerGc, machine.Configuration, runs, warmups, loadAverage = Machine.LoadAverage() }));
 }
 else
 {
     Console.WriteLine($"Machina benchmarks - {machine}");
-    Console.WriteLine($"Median of {runs} run(s) after {warmups} warm-up(s); ratio = measured / target per unit (<= 1.00 meets the target).");
+    Console.WriteLine($"Median of {runs} run(s) after {warmups} warm-up(s); load average {Machine.LoadAverage()} at start.");
+    Console.WriteLine("ratio = median time per unit / target time per unit (<= 1.00 meets it); cpu = processor time of all threads during the run.");
     Console.WriteLine();
 }
 
@@ -107,7 +108,7 @@ if (!options.Json)
     int missed = results.Count(r => r.Status == "missed");
     int unavailable = results.Count(r => r.Status == "not available");
     int errors = results.Count(r => r.Status == "error");
-    Console.WriteLine($"{met} met, {missed} missed, {unavailable} not available, {errors} errors; total {Report.Time(total.Elapsed.TotalSeconds)}.");
+    Console.WriteLine($"{met} met, {missed} missed, {unavailable} not available, {errors} errors; total {Report.Time(total.Elapsed.TotalSeconds)}; load average {Machine.LoadAverage()} at the end.");
 }
 return results.Any(r => r.Status == "error") ? 1 : 0;
 

@@ -1,4 +1,5 @@
 using System.Diagnostics;
+using System.Runtime.CompilerServices;
 
 namespace Machina.Benchmarks;
 
@@ -38,24 +39,11 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             progress($"{scenario.Name} x {size:N0}: warm-up {i + 1}/{warmups}");
             work();
         }
-        var seconds = new List<double>();
-        var allocated = new List<long>();
-        var retained = new List<long>();
+        var samples = new List<Sample>();
         for (int i = 0; i < runs; i++)
         {
             progress($"{scenario.Name} x {size:N0}: run {i + 1}/{runs}");
-            long baseline = FullCollect();
-            long threadBefore = GC.GetAllocatedBytesForCurrentThread();
-            long totalBefore = GC.GetTotalAllocatedBytes(precise: true);
-            long start = Stopwatch.GetTimestamp();
-            object? result = work();
-            TimeSpan elapsed = Stopwatch.GetElapsedTime(start);
-            long threadAfter = GC.GetAllocatedBytesForCurrentThread();
-            long totalAfter = GC.GetTotalAllocatedBytes(precise: true);
-            seconds.Add(elapsed.TotalSeconds);
-            allocated.Add(scenario.MultiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore);
-            retained.Add(Math.Max(0, FullCollect() - baseline));
-            GC.KeepAlive(result);
+            samples.Add(RunOnce(work, scenario.MultiThreaded));
         }
         var status = "info";
         var measurement = new Measurement
@@ -65,11 +53,12 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             Unit = scenario.Unit,
             Size = size,
             Runs = runs,
-            MedianSeconds = Median(seconds),
-            MinSeconds = seconds.Min(),
-            MaxSeconds = seconds.Max(),
-            AllocatedBytes = Median(allocated),
-            RetainedBytes = Median(retained),
+            MedianSeconds = Median(samples.Select(s => s.Seconds)),
+            MinSeconds = samples.Min(s => s.Seconds),
+            MaxSeconds = samples.Max(s => s.Seconds),
+            CpuSeconds = Median(samples.Select(s => s.CpuSeconds)),
+            AllocatedBytes = Median(samples.Select(s => s.Allocated)),
+            RetainedBytes = Median(samples.Select(s => s.Retained)),
             Target = scenario.Target,
         };
         if (measurement.TimeRatio is double timeRatio)
@@ -79,6 +68,28 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         return measurement with { Status = status };
     }
 
+    /// <summary>One timed run. Kept out of line so that the result cannot stay reachable from the caller's frame afterwards.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static Sample RunOnce(Func<object?> work, bool multiThreaded)
+    {
+        long baseline = FullCollect();
+        TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
+        long threadBefore = GC.GetAllocatedBytesForCurrentThread();
+        long totalBefore = GC.GetTotalAllocatedBytes(precise: true);
+        long start = Stopwatch.GetTimestamp();
+        object? result = work();
+        TimeSpan elapsed = Stopwatch.GetElapsedTime(start);
+        long threadAfter = GC.GetAllocatedBytesForCurrentThread();
+        long totalAfter = GC.GetTotalAllocatedBytes(precise: true);
+        TimeSpan cpuAfter = Process.GetCurrentProcess().TotalProcessorTime;
+        long retained = Math.Max(0, FullCollect() - baseline);
+        GC.KeepAlive(result);
+        return new Sample(elapsed.TotalSeconds, (cpuAfter - cpuBefore).TotalSeconds,
+            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained);
+    }
+
+    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained);
+
     private static long FullCollect()
     {
         GC.Collect(GC.MaxGeneration, GCCollectionMode.Forced, blocking: true, compacting: true);
@@ -87,7 +98,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         return GC.GetTotalMemory(forceFullCollection: false);
     }
 
-    private static T Median<T>(List<T> values)
+    private static T Median<T>(IEnumerable<T> values)
     {
         var sorted = values.Order().ToList();
         return sorted[sorted.Count / 2];

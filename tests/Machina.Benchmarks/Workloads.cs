@@ -29,7 +29,6 @@ internal sealed class Workloads
     {
         if (!_toolpaths.TryGetValue(moves, out Robot? bot))
         {
-            _toolpaths.Clear();
             bot = IssueToolpath("ABB", moves);
             _toolpaths[moves] = bot;
         }
@@ -44,7 +43,6 @@ internal sealed class Workloads
     {
         if (!_texts.TryGetValue(lines, out string? text))
         {
-            _texts.Clear();
             var builder = new System.Text.StringBuilder(lines * 24);
             var random = new Random(6);
             for (int i = 0; i < lines; i++)
