@@ -13,6 +13,11 @@ internal sealed record Measurement
     public double MaxSeconds { get; init; }
     /// <summary>Processor time of the whole process during the median run (all threads, GC included); less sensitive to a busy machine than wall time.</summary>
     public double CpuSeconds { get; init; }
+    /// <summary>Garbage collections of generations 0/1/2 during the median run, e.g. "12/3/1".</summary>
+    public string Collections { get; init; } = "";
+
+    /// <summary>Time the program was paused by the garbage collector during the median run.</summary>
+    public double GcPauseSeconds { get; init; }
     public long AllocatedBytes { get; init; }
     public long RetainedBytes { get; init; }
     public Target? Target { get; init; }

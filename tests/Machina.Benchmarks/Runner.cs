@@ -57,6 +57,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             MinSeconds = samples.Min(s => s.Seconds),
             MaxSeconds = samples.Max(s => s.Seconds),
             CpuSeconds = Median(samples.Select(s => s.CpuSeconds)),
+            Collections = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).Collections,
+            GcPauseSeconds = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).GcPauseSeconds,
             AllocatedBytes = Median(samples.Select(s => s.Allocated)),
             RetainedBytes = Median(samples.Select(s => s.Retained)),
             Target = scenario.Target,
@@ -73,6 +75,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
     private static Sample RunOnce(Func<object?> work, bool multiThreaded)
     {
         long baseline = FullCollect();
+        int gen0 = GC.CollectionCount(0), gen1 = GC.CollectionCount(1), gen2 = GC.CollectionCount(2);
+        TimeSpan pauseBefore = GC.GetTotalPauseDuration();
         TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
         long threadBefore = GC.GetAllocatedBytesForCurrentThread();
         long totalBefore = GC.GetTotalAllocatedBytes(precise: true);
@@ -82,13 +86,15 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         long threadAfter = GC.GetAllocatedBytesForCurrentThread();
         long totalAfter = GC.GetTotalAllocatedBytes(precise: true);
         TimeSpan cpuAfter = Process.GetCurrentProcess().TotalProcessorTime;
+        var collections = $"{GC.CollectionCount(0) - gen0}/{GC.CollectionCount(1) - gen1}/{GC.CollectionCount(2) - gen2}";
+        double pause = (GC.GetTotalPauseDuration() - pauseBefore).TotalSeconds;
         long retained = Math.Max(0, FullCollect() - baseline);
         GC.KeepAlive(result);
         return new Sample(elapsed.TotalSeconds, (cpuAfter - cpuBefore).TotalSeconds,
-            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained);
+            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, collections, pause);
     }
 
-    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained);
+    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, string Collections, double GcPauseSeconds);
 
     private static long FullCollect()
     {
