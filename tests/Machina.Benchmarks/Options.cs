@@ -10,7 +10,7 @@ internal sealed record Options
           --scenario NAME   run only scenarios named NAME or starting with NAME- (repeatable, or comma-separated):
                             issue, compile (compile-abb, compile-ur, ...), folder (folder-abb, ...), parse, stream, ik
           --size N          run at N units instead of each scenario's target size (no scaling table)
-          --scaling         add the scaling table (10^4, 10^5, 10^6) even with --size or --scenario
+          --scaling         add the scaling table (10^4, 10^5, 10^6) even with --size or --quick
           --no-scaling      skip the scaling table
           --runs N          measured runs per scenario (median is reported; default 3)
           --warmup N        warm-up runs before measuring (default 1)

@@ -53,7 +53,11 @@ var runner = new Runner(warmups, runs, message =>
 
 if (options.Json)
 {
-    Console.WriteLine(System.Text.Json.JsonSerializer.Serialize(new { table = "machine", machine.Cpu, machine.Cores, machine.Runtime, machine.Os, machine.Commit, machine.ServerGc, machine.Configuration, runs, warmups, loadAverage = Machine.LoadAverage() }));
+    Console.WriteLine(System.Text.Json.JsonSerializer.Serialize(new
+    {
+        table = "machine", cpu = machine.Cpu, cores = machine.Cores, runtime = machine.Runtime, os = machine.Os, commit = machine.Commit,
+        serverGc = machine.ServerGc, configuration = machine.Configuration, runs, warmups, loadAverage = Machine.LoadAverage(),
+    }, Report.JsonOptions));
 }
 else
 {

@@ -38,8 +38,11 @@ internal static class Report
             ["allocationRatio"] = m.AllocationRatio,
             ["note"] = m.Note,
         };
-        return JsonSerializer.Serialize(record);
+        return JsonSerializer.Serialize(record, JsonOptions);
     }
+
+    /// <summary>Compact JSON that keeps characters such as &lt; readable.</summary>
+    public static readonly JsonSerializerOptions JsonOptions = new() { Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
 
     /// <summary>The results table: one row per scenario at its size, with the ratio to the target (at most 1 means met).</summary>
     public static string Results(IReadOnlyList<Measurement> rows)
