@@ -6,6 +6,9 @@ namespace Machina.Benchmarks;
 /// <summary>Times a scenario: warm-up runs, then measured runs with a full collection before each; reports the median.</summary>
 internal sealed class Runner(int warmups, int runs, Action<string> progress)
 {
+    private const double MinWarmupSeconds = 0.5;
+    private const int MaxWarmups = 50;
+
     public Measurement Run(Scenario scenario, int size)
     {
         if (scenario.Unavailable() is string why)
@@ -34,9 +37,12 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
     {
         progress($"{scenario.Name} x {size:N0}: preparing");
         Func<object?> work = scenario.Prepare(size);
-        for (int i = 0; i < warmups; i++)
+        // At least the requested warm-ups, and at least MinWarmupSeconds of them (up to MaxWarmups) so that small sizes also
+        // run fully optimised code: the JIT recompiles hot methods after about 30 calls and a short delay.
+        long warmupStart = Stopwatch.GetTimestamp();
+        for (int i = 0; i < warmups || (i > 0 && i < MaxWarmups && Stopwatch.GetElapsedTime(warmupStart).TotalSeconds < MinWarmupSeconds); i++)
         {
-            progress($"{scenario.Name} x {size:N0}: warm-up {i + 1}/{warmups}");
+            progress($"{scenario.Name} x {size:N0}: warm-up {i + 1}");
             work();
         }
         var samples = new List<Sample>();
