@@ -19,7 +19,11 @@ internal sealed record Measurement
     /// <summary>Time the program was paused by the garbage collector during the median run.</summary>
     public double GcPauseSeconds { get; init; }
     public long AllocatedBytes { get; init; }
+    /// <summary>Memory still reachable after the run, the result included (e.g. the compiled program), over the heap before it.</summary>
     public long RetainedBytes { get; init; }
+
+    /// <summary>The largest heap size seen during the run (sampled every 5 ms), over the heap before it.</summary>
+    public long PeakBytes { get; init; }
     public Target? Target { get; init; }
 
     /// <summary>"met", "missed", "info" (no target), "not available" or "error".</summary>

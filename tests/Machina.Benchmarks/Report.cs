@@ -31,6 +31,7 @@ internal static class Report
             ["allocatedBytes"] = m.AllocatedBytes,
             ["allocatedBytesPerUnit"] = m.BytesPerUnit,
             ["retainedBytes"] = m.RetainedBytes,
+            ["peakBytes"] = m.PeakBytes,
             ["target"] = m.Target?.Text,
             ["targetNsPerUnit"] = m.Target?.NanosecondsPerUnit,
             ["targetBytesPerUnit"] = m.Target?.BytesPerUnit,
@@ -47,12 +48,12 @@ internal static class Report
     /// <summary>The results table: one row per scenario at its size, with the ratio to the target (at most 1 means met).</summary>
     public static string Results(IReadOnlyList<Measurement> rows)
     {
-        string[] header = ["scenario", "size", "median", "min", "cpu", "gc pause", "gc 0/1/2", "per unit", "rate /s", "alloc/unit", "retained", "target", "ratio", "status"];
+        string[] header = ["scenario", "size", "median", "min", "cpu", "gc pause", "gc 0/1/2", "per unit", "rate /s", "alloc/unit", "peak heap", "retained", "target", "ratio", "status"];
         var lines = rows.Select(m => m.Runs == 0
-            ? new[] { m.Scenario, Count(m.Size), "-", "-", "-", "-", "-", "-", "-", "-", "-", m.Target?.Text ?? "-", "-", $"{m.Status}: {m.Note}" }
+            ? new[] { m.Scenario, Count(m.Size), "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", m.Target?.Text ?? "-", "-", $"{m.Status}: {m.Note}" }
             : [
                 m.Scenario, Count(m.Size), Time(m.MedianSeconds), Time(m.MinSeconds), Time(m.CpuSeconds), Time(m.GcPauseSeconds), m.Collections, Time(m.NanosecondsPerUnit / 1e9), Count(m.UnitsPerSecond),
-                Bytes(m.BytesPerUnit), Bytes(m.RetainedBytes), m.Target?.Text ?? "-", Ratio(m), m.Status,
+                Bytes(m.BytesPerUnit), Bytes(m.PeakBytes), Bytes(m.RetainedBytes), m.Target?.Text ?? "-", Ratio(m), m.Status,
             ]).ToList();
         return Table(header, lines);
     }

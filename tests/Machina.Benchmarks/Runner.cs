@@ -67,6 +67,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             GcPauseSeconds = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).GcPauseSeconds,
             AllocatedBytes = Median(samples.Select(s => s.Allocated)),
             RetainedBytes = Median(samples.Select(s => s.Retained)),
+            PeakBytes = Median(samples.Select(s => s.Peak)),
             Target = scenario.Target,
         };
         if (measurement.TimeRatio is double timeRatio)
@@ -87,7 +88,13 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         long threadBefore = GC.GetAllocatedBytesForCurrentThread();
         long totalBefore = GC.GetTotalAllocatedBytes(precise: true);
         long start = Stopwatch.GetTimestamp();
-        object? result = work();
+        object? result;
+        long peak;
+        using (var sampler = new PeakMemory(TimeSpan.FromMilliseconds(5)))
+        {
+            result = work();
+            peak = sampler.Peak;
+        }
         TimeSpan elapsed = Stopwatch.GetElapsedTime(start);
         long threadAfter = GC.GetAllocatedBytesForCurrentThread();
         long totalAfter = GC.GetTotalAllocatedBytes(precise: true);
@@ -97,10 +104,10 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         long retained = Math.Max(0, FullCollect() - baseline);
         GC.KeepAlive(result);
         return new Sample(elapsed.TotalSeconds, (cpuAfter - cpuBefore).TotalSeconds,
-            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, collections, pause);
+            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, Math.Max(0, peak - baseline), collections, pause);
     }
 
-    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, string Collections, double GcPauseSeconds);
+    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds);
 
     private static long FullCollect()
     {
