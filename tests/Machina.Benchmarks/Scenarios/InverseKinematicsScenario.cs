@@ -17,7 +17,7 @@ internal sealed class InverseKinematicsScenario(string name, string model, Joint
 
     public override IReadOnlyList<int> ScalingSizes => [];
 
-    public override Target Target { get; } = Target.Microseconds(5, "<= 5 us per pose");
+    public override Target Target => Catalog.IkTarget;
 
     public override Func<object?> Prepare(int size)
     {

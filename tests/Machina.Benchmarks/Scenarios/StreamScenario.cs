@@ -22,7 +22,7 @@ internal sealed class StreamScenario(bool wideWindow) : Scenario
 
     public override IReadOnlyList<int> ScalingSizes => [10_000, 100_000];
 
-    public override Target Target { get; } = Target.PerSecond(20_000, ">= 20,000 actions/s acknowledged");
+    public override Target Target => Catalog.StreamTarget;
 
     public override bool MultiThreaded => true;
 
