@@ -29,7 +29,14 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         }
         finally
         {
-            scenario.Cleanup();
+            try
+            {
+                scenario.Cleanup();
+            }
+            catch (Exception ex)
+            {
+                Console.Error.WriteLine($"{scenario.Name}: cleaning up failed: {ex.GetType().Name}: {ex.Message}");
+            }
         }
     }
 
