@@ -64,6 +64,10 @@ else
     Console.WriteLine($"Machina benchmarks - {machine}");
     Console.WriteLine($"Median of {runs} run(s) after {warmups} warm-up(s); load average {Machine.LoadAverage()} at start.");
     Console.WriteLine("ratio = median time per unit / target time per unit (<= 1.00 meets it); cpu = processor time of all threads during the run.");
+    if (quick)
+    {
+        Console.WriteLine("Quick mode: one run of 10^4 units checks that every scenario works; its timings are indicative only.");
+    }
     Console.WriteLine();
 }
 
