@@ -2,17 +2,11 @@ namespace Machina;
 
 public sealed partial class Robot
 {
-    /// <summary>The cursor the getters read: the state after the last issued action.</summary>
-    private RobotCursor StateCursor => _issueCursor;
+    /// <summary>The cursor the getters read: the state after the last issued action (offline) or executed action (online).</summary>
+    private RobotCursor StateCursor => _session?.ExecutionCursor ?? _issueCursor;
 
-    /// <summary>A snapshot of the whole state after the last issued action.</summary>
-    public RobotState GetCurrentState()
-    {
-        lock (_issueCursor)
-        {
-            return StateCursor.Snapshot();
-        }
-    }
+    /// <summary>A snapshot of the whole state after the last issued action (offline) or the last executed action (online).</summary>
+    public RobotState GetCurrentState() => _session is null ? GetIssuedState() : GetExecutedState();
 
     /// <summary>Tool tip position in mm after the last issued action, or null when unknown (before the first absolute move, or after a joint move).</summary>
     public Point? GetCurrentPosition() => StateCursor.Position is Vector v ? v : null;

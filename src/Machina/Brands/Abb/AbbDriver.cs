@@ -1,0 +1,232 @@
+namespace Machina;
+
+/// <summary>
+/// Host side of the ABB link: a TCP client to the RAPID driver (requests out, acknowledgements and the handshake in) and,
+/// when the controller runs the monitor task, a second client on port + 1 that receives live poses (<c>$24</c>).
+/// </summary>
+internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
+{
+    /// <summary>Oldest RAPID driver version this host works with.</summary>
+    internal static readonly Version MinimumDriverVersion = new(1, 4, 0);
+
+    private readonly RobotLogger _log;
+    private readonly AbbDriverFraming _framing = new();
+    private readonly Queue<int> _awaiting = new();
+    private readonly AbbRequest[] _requests = new AbbRequest[AbbActionTranslator.MaxRequests];
+    private readonly double[] _values = new double[AbbDriverMessage.MaxValues];
+    private readonly TaskCompletionSource<DeviceHandshake> _handshake = new(TaskCreationOptions.RunContinuationsAsynchronously);
+    private byte[] _encoded = new byte[1024];
+    private TcpLink? _link;
+    private TcpLink? _monitor;
+    private IDeviceListener? _listener;
+    private int _failed;
+
+    // Handshake parts ($20..$23), filled by the receive loop.
+    private string? _version;
+    private Vector? _position;
+    private Rotation? _rotation;
+    private Joints? _axes;
+    private ExternalAxes? _externalAxes;
+    private bool _hasExternalAxes;
+
+    /// <summary>Creates a driver that logs to the robot's log.</summary>
+    internal AbbDriver(RobotLogger log) => _log = log;
+
+    /// <inheritdoc/>
+    public string RemoteAddress => _link?.RemoteAddress ?? "";
+
+    /// <summary>True when the monitor connection (live poses) is open.</summary>
+    internal bool HasMonitor => _monitor is not null;
+
+    /// <inheritdoc/>
+    public async Task<DeviceHandshake> ConnectAsync(string host, int port, IDeviceListener listener, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        long start = TimeProvider.System.GetTimestamp();
+        _listener = listener;
+        _link = await TcpLink.ConnectAsync(host, port, timeout, cancellationToken).ConfigureAwait(false);
+        _link.Start(this);
+        TimeSpan left = timeout - TimeProvider.System.GetElapsedTime(start);
+        DeviceHandshake handshake;
+        try
+        {
+            handshake = await _handshake.Task.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, cancellationToken).ConfigureAwait(false);
+        }
+        catch (TimeoutException)
+        {
+            throw new MachinaException(
+                $"The controller at {host}:{port} accepted the connection but did not send its handshake within {Num.G(timeout.TotalSeconds)} s; is the Machina driver running there?");
+        }
+        CheckVersion(handshake.Version);
+        await ConnectMonitorAsync(host, port + 1, cancellationToken).ConfigureAwait(false);
+        return handshake;
+    }
+
+    private async Task ConnectMonitorAsync(string host, int port, CancellationToken cancellationToken)
+    {
+        try
+        {
+            _monitor = await TcpLink.ConnectAsync(host, port, TimeSpan.FromSeconds(2), cancellationToken).ConfigureAwait(false);
+            _monitor.Start(new MonitorReceiver(this));
+        }
+        catch (MachinaException)
+        {
+            _log.Info("Real-time monitoring is not available on this controller (no monitor task on the next port); there will be no motion updates.");
+        }
+    }
+
+    private void CheckVersion(string text)
+    {
+        if (!Version.TryParse(text, out Version? version))
+        {
+            _log.Warning($"The controller reported driver version \"{text}\", which Machina cannot read.");
+        }
+        else if (version < MinimumDriverVersion || version.Major != MinimumDriverVersion.Major)
+        {
+            _log.Warning($"The driver on the controller is version {text}; this Machina works with {MinimumDriverVersion.Major}.x from {MinimumDriverVersion}. Update the driver module.");
+        }
+    }
+
+    /// <inheritdoc/>
+    public bool Send(RobotAction action, RobotCursor releaseState)
+    {
+        TcpLink link = _link ?? throw new InvalidOperationException("the link is not open");
+        int wireId = WireId(action.Id);
+        int count = AbbActionTranslator.Translate(action, releaseState, wireId, _requests);
+        if (count == 0)
+        {
+            return false;
+        }
+        int length = 0;
+        bool acknowledged = false;
+        for (int i = 0; i < count; i++)
+        {
+            AbbRequest request = _requests[i];
+            if (_encoded.Length - length < request.MaxEncodedLength)
+            {
+                Array.Resize(ref _encoded, Math.Max(_encoded.Length * 2, length + request.MaxEncodedLength));
+            }
+            length += request.EncodeTo(_encoded.AsSpan(length));
+            acknowledged |= request.Id == wireId;
+        }
+        if (acknowledged)
+        {
+            lock (_awaiting)
+            {
+                _awaiting.Enqueue(action.Id);
+            }
+        }
+        link.Post(_encoded.AsSpan(0, length));
+        return acknowledged;
+    }
+
+    /// <summary>The id sent on the wire: RAPID reads ids as 32-bit floats, so they wrap below 2^23 (fix of bug A10).</summary>
+    internal static int WireId(int actionId) => ((actionId - 1) % AbbRequest.MaxId) + 1;
+
+    /// <inheritdoc/>
+    public void OnReceived(ReadOnlySpan<byte> data)
+    {
+        if (!_framing.Feed(data, this, static (driver, message) => driver.OnMessage(message)))
+        {
+            Fail(new AbbProtocolException("The controller sent a message longer than Machina's protocol allows.", null));
+        }
+    }
+
+    /// <inheritdoc/>
+    public void OnClosed(Exception? error) => Fail(error is null
+        ? new MachinaException("The controller closed the connection.")
+        : new MachinaException($"The connection to the controller failed: {error.Message}", error));
+
+    private bool OnMessage(ReadOnlySpan<byte> message)
+    {
+        if (Volatile.Read(ref _failed) != 0)
+        {
+            return false;
+        }
+        switch (message[0])
+        {
+            case (byte)'@':
+                if (!AbbDriverMessage.TryReadAcknowledgement(message, out int id))
+                {
+                    return Garbage(message);
+                }
+                if (id > 0)
+                {
+                    Acknowledge(id);
+                }
+                return true;
+            case (byte)'$' when message.Length > 1 && message[1] == (byte)'@':
+                _log.Debug($"Information reply from the controller: {AbbDriverMessage.Text(message)}");
+                return true;
+            case (byte)'$':
+                return AbbDriverMessage.TryReadData(message, out int code, _values, out int count)
+                    ? OnData(code, _values.AsSpan(0, count), message)
+                    : Garbage(message);
+            case >= (byte)'0' and <= (byte)'9':
+                return true; // acknowledgement of a request sent without id
+            default:
+                return Garbage(message);
+        }
+    }
+
+    private void Acknowledge(int wireId)
+    {
+        int actionId = wireId;
+        lock (_awaiting)
+        {
+            int index = 0, found = -1;
+            foreach (int awaiting in _awaiting)
+            {
+                if (WireId(awaiting) == wireId)
+                {
+                    found = index;
+                    break;
+                }
+                index++;
+            }
+            for (int i = 0; i <= found; i++)
+            {
+                actionId = _awaiting.Dequeue();
+            }
+        }
+        _listener?.OnAcknowledged(actionId);
+    }
+
+    private bool Garbage(ReadOnlySpan<byte> message)
+    {
+        string text = AbbDriverMessage.Text(message);
+        Fail(new AbbProtocolException($"The controller sent \"{Shorten(text)}\", which is not part of Machina's protocol.", text));
+        return false;
+    }
+
+    private static string Shorten(string text) => text.Length <= 60 ? text : text[..60] + "…";
+
+    private void Fail(MachinaException error)
+    {
+        if (Interlocked.Exchange(ref _failed, 1) != 0)
+        {
+            return;
+        }
+        if (!_handshake.Task.IsCompleted)
+        {
+            _handshake.TrySetException(error);
+        }
+        else
+        {
+            _listener?.OnFault(error);
+        }
+    }
+
+    /// <inheritdoc/>
+    public async ValueTask DisposeAsync()
+    {
+        Interlocked.Exchange(ref _failed, 1);
+        if (_monitor is not null)
+        {
+            await _monitor.DisposeAsync().ConfigureAwait(false);
+        }
+        if (_link is not null)
+        {
+            await _link.DisposeAsync().ConfigureAwait(false);
+        }
+    }
+}

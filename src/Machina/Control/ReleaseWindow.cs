@@ -1,0 +1,40 @@
+namespace Machina;
+
+/// <summary>
+/// The release policy of the paper: whenever fewer than <see cref="PendingCount"/> released actions are still unexecuted on
+/// the controller, the next block of up to <see cref="BlockSize"/> buffered actions is released. The defaults (8 and 3)
+/// keep at most 10 actions on the controller and refill when 2 or fewer are left, the window of the original Machina.
+/// </summary>
+internal sealed class ReleaseWindow
+{
+    /// <summary>Default block size.</summary>
+    internal const int DefaultBlockSize = 8;
+
+    /// <summary>Default pending count.</summary>
+    internal const int DefaultPendingCount = 3;
+
+    private int _blockSize = DefaultBlockSize;
+    private int _pendingCount = DefaultPendingCount;
+
+    /// <summary>How many actions one release hands to the controller at most (1 or more).</summary>
+    internal int BlockSize
+    {
+        get => Volatile.Read(ref _blockSize);
+        set => Volatile.Write(ref _blockSize, RequirePositive(value, "block size", "blockSize"));
+    }
+
+    /// <summary>A block is released when fewer than this many released actions are unexecuted (1 or more).</summary>
+    internal int PendingCount
+    {
+        get => Volatile.Read(ref _pendingCount);
+        set => Volatile.Write(ref _pendingCount, RequirePositive(value, "pending count", "pendingCount"));
+    }
+
+    /// <summary>How many actions to release now, given how many are unexecuted on the device and how many wait in the buffer.</summary>
+    internal int NextBlock(int unexecuted, int buffered) =>
+        unexecuted < PendingCount ? Math.Min(BlockSize, buffered) : 0;
+
+    private static int RequirePositive(int value, string what, string parameter) => value >= 1
+        ? value
+        : throw new ArgumentOutOfRangeException(parameter, value, $"The {what} must be 1 or more; {value} was given.");
+}
