@@ -2,79 +2,77 @@ namespace Machina;
 
 internal sealed partial class AbbDriver
 {
-    private bool OnData(int code, ReadOnlySpan<double> v, ReadOnlySpan<byte> message)
+    /// <summary>Handles a data message: the four handshake parts, or a live pose.</summary>
+    private void OnData(in AbbMessage message)
     {
-        switch ((AbbResponseCode)code)
+        switch ((AbbResponseCode)message.Code)
         {
-            case AbbResponseCode.Version when v.Length == 3:
-                _version = $"{Num.G(v[0])}.{Num.G(v[1])}.{Num.G(v[2])}";
+            case AbbResponseCode.Version:
+                _version = message.ToVersion();
                 break;
-            case AbbResponseCode.Pose when v.Length == 7:
-                _position = new Vector(v[0], v[1], v[2]);
-                _rotation = Rotation.FromQuaternion(v[3], v[4], v[5], v[6]);
+            case AbbResponseCode.Pose:
+                AbbPose pose = message.ToPose();
+                _position = pose.Position;
+                _rotation = pose.Rotation;
                 break;
-            case AbbResponseCode.Joints when v.Length == 6:
-                _axes = new Joints(v[0], v[1], v[2], v[3], v[4], v[5]);
+            case AbbResponseCode.Joints:
+                _axes = message.ToJoints();
                 break;
-            case AbbResponseCode.ExternalAxes when v.Length == 6:
-                _externalAxes = AbbDriverMessage.Axes(v);
+            case AbbResponseCode.ExternalAxes:
+                ExternalAxes axes = message.ToExternalAxes();
+                _externalAxes = axes.IsEmpty ? null : axes;
                 _hasExternalAxes = true;
                 break;
-            case AbbResponseCode.FullPose when v.Length == 19:
-                _listener?.OnMotion(FullPose(v));
-                return true;
-            case AbbResponseCode.Version or AbbResponseCode.Pose or AbbResponseCode.Joints or AbbResponseCode.ExternalAxes or AbbResponseCode.FullPose:
-                return Garbage(message);
+            case AbbResponseCode.FullPose:
+                _listener?.OnMotion(Sample(message.ToMonitorUpdate()));
+                return;
             default:
-                _log.Debug($"Ignored data message from the controller: {AbbDriverMessage.Text(message)}");
-                return true;
+                _log.Debug($"Ignored data message from the controller: {message}");
+                return;
         }
-        if (!_handshake.Task.IsCompleted && _version is not null && _position is not null && _axes is not null && _hasExternalAxes)
+        if (!_handshake.Task.IsCompleted && _version is AbbDriverVersion version && _position is not null && _axes is not null && _hasExternalAxes)
         {
-            _handshake.TrySetResult(new DeviceHandshake(_version, _position, _rotation, _axes, _externalAxes));
+            _handshake.TrySetResult(new DeviceHandshake(version.ToString(), _position, _rotation, _axes, _externalAxes));
         }
-        return true;
     }
 
-    private static MotionSample FullPose(ReadOnlySpan<double> v) => new(
-        new Vector(v[0], v[1], v[2]),
-        Rotation.FromQuaternion(v[3], v[4], v[5], v[6]),
-        new Joints(v[7], v[8], v[9], v[10], v[11], v[12]),
-        AbbDriverMessage.Axes(v[13..]));
+    private static MotionSample Sample(AbbMonitorUpdate update) =>
+        new(update.Position, update.Rotation, update.Joints, update.ExternalAxes.IsEmpty ? null : update.ExternalAxes);
 
     /// <summary>Reads the monitor connection: live poses (<c>$24</c>). A failing monitor is logged; it never stops streaming.</summary>
     private sealed class MonitorReceiver(AbbDriver driver) : ILinkReceiver
     {
-        private readonly AbbDriverFraming _framing = new();
-        private readonly double[] _values = new double[AbbDriverMessage.MaxValues];
+        private readonly AbbMessageReader _reader = new();
         private bool _stopped;
 
         public void OnReceived(ReadOnlySpan<byte> data)
         {
-            if (!_stopped && !_framing.Feed(data, this, static (self, message) => self.OnMessage(message)))
+            if (_stopped)
             {
-                Stop("a message longer than the protocol allows");
+                return;
+            }
+            _reader.Append(data);
+            try
+            {
+                while (!_stopped && Volatile.Read(ref driver._failed) == 0 && _reader.TryRead(out AbbMessage message))
+                {
+                    if (message.Kind == AbbMessageKind.Data && message.Code == (int)AbbResponseCode.FullPose)
+                    {
+                        driver._listener?.OnMotion(Sample(message.ToMonitorUpdate()));
+                    }
+                    else
+                    {
+                        Stop($"it sent \"{message}\"");
+                    }
+                }
+            }
+            catch (AbbProtocolException ex)
+            {
+                Stop(ex.Message);
             }
         }
 
-        public void OnClosed(Exception? error) => Stop(error is null ? "the controller closed it" : error.Message);
-
-        private bool OnMessage(ReadOnlySpan<byte> message)
-        {
-            if (_stopped || Volatile.Read(ref driver._failed) != 0)
-            {
-                return false;
-            }
-            if (message[0] == (byte)'$' &&
-                AbbDriverMessage.TryReadData(message, out int code, _values, out int count) &&
-                code == (int)AbbResponseCode.FullPose && count == 19)
-            {
-                driver._listener?.OnMotion(FullPose(_values.AsSpan(0, 19)));
-                return true;
-            }
-            Stop($"it sent \"{AbbDriverMessage.Text(message)}\"");
-            return false;
-        }
+        public void OnClosed(Exception? error) => Stop(error is null ? "the controller closed the monitor connection" : error.Message);
 
         private void Stop(string why)
         {

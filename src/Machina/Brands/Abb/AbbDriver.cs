@@ -6,14 +6,10 @@ namespace Machina;
 /// </summary>
 internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
 {
-    /// <summary>Oldest RAPID driver version this host works with.</summary>
-    internal static readonly Version MinimumDriverVersion = new(1, 4, 0);
-
     private readonly RobotLogger _log;
-    private readonly AbbDriverFraming _framing = new();
+    private readonly AbbMessageReader _reader = new();
     private readonly Queue<int> _awaiting = new();
     private readonly AbbRequest[] _requests = new AbbRequest[AbbActionTranslator.MaxRequests];
-    private readonly double[] _values = new double[AbbDriverMessage.MaxValues];
     private readonly TaskCompletionSource<DeviceHandshake> _handshake = new(TaskCreationOptions.RunContinuationsAsynchronously);
     private byte[] _encoded = new byte[1024];
     private TcpLink? _link;
@@ -22,7 +18,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     private int _failed;
 
     // Handshake parts ($20..$23), filled by the receive loop.
-    private string? _version;
+    private AbbDriverVersion? _version;
     private Vector? _position;
     private Rotation? _rotation;
     private Joints? _axes;
@@ -56,7 +52,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
             throw new MachinaException(
                 $"The controller at {host}:{port} accepted the connection but did not send its handshake within {Num.G(timeout.TotalSeconds)} s; is the Machina driver running there?");
         }
-        CheckVersion(handshake.Version);
+        CheckVersion(_version!.Value);
         await ConnectMonitorAsync(host, port + 1, cancellationToken).ConfigureAwait(false);
         return handshake;
     }
@@ -74,15 +70,11 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
         }
     }
 
-    private void CheckVersion(string text)
+    private void CheckVersion(AbbDriverVersion version)
     {
-        if (!Version.TryParse(text, out Version? version))
+        if (!version.IsSupported)
         {
-            _log.Warning($"The controller reported driver version \"{text}\", which Machina cannot read.");
-        }
-        else if (version < MinimumDriverVersion || version.Major != MinimumDriverVersion.Major)
-        {
-            _log.Warning($"The driver on the controller is version {text}; this Machina works with {MinimumDriverVersion.Major}.x from {MinimumDriverVersion}. Update the driver module.");
+            _log.Warning($"The driver on the controller is version {version}; this Machina needs {AbbDriverVersion.MinimumSupported.Major}.x from {AbbDriverVersion.MinimumSupported}. Load the driver from GetDeviceDriverModules.");
         }
     }
 
@@ -125,9 +117,21 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     /// <inheritdoc/>
     public void OnReceived(ReadOnlySpan<byte> data)
     {
-        if (!_framing.Feed(data, this, static (driver, message) => driver.OnMessage(message)))
+        if (Volatile.Read(ref _failed) != 0)
         {
-            Fail(new AbbProtocolException("The controller sent a message longer than Machina's protocol allows.", null));
+            return;
+        }
+        _reader.Append(data);
+        try
+        {
+            while (Volatile.Read(ref _failed) == 0 && _reader.TryRead(out AbbMessage message))
+            {
+                OnMessage(message);
+            }
+        }
+        catch (AbbProtocolException ex)
+        {
+            Fail(ex);
         }
     }
 
@@ -136,35 +140,19 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
         ? new MachinaException("The controller closed the connection.")
         : new MachinaException($"The connection to the controller failed: {error.Message}", error));
 
-    private bool OnMessage(ReadOnlySpan<byte> message)
+    private void OnMessage(in AbbMessage message)
     {
-        if (Volatile.Read(ref _failed) != 0)
+        switch (message.Kind)
         {
-            return false;
-        }
-        switch (message[0])
-        {
-            case (byte)'@':
-                if (!AbbDriverMessage.TryReadAcknowledgement(message, out int id))
-                {
-                    return Garbage(message);
-                }
-                if (id > 0)
-                {
-                    Acknowledge(id);
-                }
-                return true;
-            case (byte)'$' when message.Length > 1 && message[1] == (byte)'@':
-                _log.Debug($"Information reply from the controller: {AbbDriverMessage.Text(message)}");
-                return true;
-            case (byte)'$':
-                return AbbDriverMessage.TryReadData(message, out int code, _values, out int count)
-                    ? OnData(code, _values.AsSpan(0, count), message)
-                    : Garbage(message);
-            case >= (byte)'0' and <= (byte)'9':
-                return true; // acknowledgement of a request sent without id
+            case AbbMessageKind.Acknowledgement when message.Id > 0:
+                Acknowledge(message.Id);
+                break;
+            case AbbMessageKind.Data:
+                OnData(message);
+                break;
             default:
-                return Garbage(message);
+                _log.Debug($"Ignored from the controller: {message}");
+                break;
         }
     }
 
@@ -190,15 +178,6 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
         }
         _listener?.OnAcknowledged(actionId);
     }
-
-    private bool Garbage(ReadOnlySpan<byte> message)
-    {
-        string text = AbbDriverMessage.Text(message);
-        Fail(new AbbProtocolException($"The controller sent \"{Shorten(text)}\", which is not part of Machina's protocol.", text));
-        return false;
-    }
-
-    private static string Shorten(string text) => text.Length <= 60 ? text : text[..60] + "…";
 
     private void Fail(MachinaException error)
     {
