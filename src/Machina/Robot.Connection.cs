@@ -257,6 +257,9 @@ public sealed partial class Robot
         return OnlineDrivers.Modules(Brand, parameters);
     }
 
+    /// <summary>Completes once every online event queued so far was raised (tests).</summary>
+    internal Task FlushEventsAsync() => _session?.FlushEventsAsync() ?? Task.CompletedTask;
+
     private OnlineSession RequireSession(string what) => _session
         ?? throw new InvalidOperationException($"Cannot {what} while the robot is offline; call ControlMode(\"online\") first.");
 }

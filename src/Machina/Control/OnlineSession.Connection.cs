@@ -133,6 +133,7 @@ internal sealed partial class OnlineSession
     private void Detach(MachinaException reason)
     {
         _link = null;
+        _credit = 0;
         _watchdog?.Dispose();
         _watchdog = null;
         if (_inFlight.Count > 0)

@@ -20,6 +20,7 @@ internal sealed partial class OnlineSession : IActionStream
     private readonly RobotCursor _execution = new();
     private RobotCursor? _motion;
     private TaskCompletionSource? _completion;
+    private int _credit;
 
     /// <summary>Creates the session of a robot; the issue cursor is the robot's, locked by it while issuing.</summary>
     internal OnlineSession(Robot robot, RobotCursor issueCursor, ReleaseWindow window, Func<IDeviceDriver> driverFactory, TimeProvider time)
@@ -148,7 +149,7 @@ internal sealed partial class OnlineSession : IActionStream
         while (true)
         {
             ExecuteUnacknowledgedHead();
-            int block = _window.NextBlock(_inFlight.Count, _buffer.Count);
+            int block = _window.Take(_inFlight.Count, _buffer.Count, ref _credit);
             if (block == 0)
             {
                 break;
@@ -227,6 +228,14 @@ internal sealed partial class OnlineSession : IActionStream
             _events.PostSignal(_completion, null);
             _completion = null;
         }
+    }
+
+    /// <summary>Completes once every event queued so far was raised.</summary>
+    internal Task FlushEventsAsync()
+    {
+        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        _events.PostSignal(done, null);
+        return done.Task;
     }
 
     /// <summary>Stops raising events once the queued ones are raised (when the robot goes back offline).</summary>

@@ -1,9 +1,10 @@
 namespace Machina;
 
 /// <summary>
-/// The release policy of the paper: whenever fewer than <see cref="PendingCount"/> released actions are still unexecuted on
-/// the controller, the next block of up to <see cref="BlockSize"/> buffered actions is released. The defaults (8 and 3)
-/// keep at most 10 actions on the controller and refill when 2 or fewer are left, the window of the original Machina.
+/// The release policy of the paper: when the last block is used up and fewer than <see cref="PendingCount"/> released actions are
+/// still unexecuted on the controller, a new block of <see cref="BlockSize"/> actions opens; buffered actions are released until the block is
+/// used up (actions issued later join the open block at once). The defaults (8 and 3) keep at most 10 actions on the
+/// controller and refill when 2 or fewer are left: the window of the original Machina.
 /// </summary>
 internal sealed class ReleaseWindow
 {
@@ -30,9 +31,18 @@ internal sealed class ReleaseWindow
         set => Volatile.Write(ref _pendingCount, RequirePositive(value, "pending count", "pendingCount"));
     }
 
-    /// <summary>How many actions to release now, given how many are unexecuted on the device and how many wait in the buffer.</summary>
-    internal int NextBlock(int unexecuted, int buffered) =>
-        unexecuted < PendingCount ? Math.Min(BlockSize, buffered) : 0;
+    /// <summary>
+    /// How many actions to release now, given how many are unexecuted on the device and how many wait in the buffer;
+    /// <paramref name="credit"/> is what is left of the open block (kept by the caller, 0 at first) and is used up.
+    /// </summary>
+    internal int Take(int unexecuted, int buffered, ref int credit)
+    {
+        int blockSize = BlockSize;
+        credit = credit == 0 && unexecuted < PendingCount ? blockSize : Math.Min(credit, blockSize);
+        int count = Math.Min(credit, buffered);
+        credit -= count;
+        return count;
+    }
 
     private static int RequirePositive(int value, string what, string parameter) => value >= 1
         ? value
