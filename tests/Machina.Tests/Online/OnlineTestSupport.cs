@@ -1,0 +1,51 @@
+using Machina.Simulation;
+
+namespace Machina.Tests.Online;
+
+/// <summary>Starts virtual ABB controllers on loopback and connects robots to them, with bounded waits only.</summary>
+internal static class OnlineTestSupport
+{
+    internal static readonly TimeSpan Limit = TimeSpan.FromSeconds(15);
+
+    internal static async Task<VirtualAbbController> StartControllerAsync(VirtualAbbControllerOptions? options = null)
+    {
+        var controller = new VirtualAbbController(options ?? new VirtualAbbControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        return controller;
+    }
+
+    internal static async Task<Robot> ConnectAsync(VirtualAbbController controller, Action<Robot>? configure = null)
+    {
+        var bot = Robot.Create("HelloRobot", "ABB");
+        bot.ControlMode("online");
+        configure?.Invoke(bot);
+        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
+        return bot;
+    }
+
+    /// <summary>Waits for a condition that another thread makes true, checking every few milliseconds, at most <see cref="Timeout"/>.</summary>
+    internal static async Task EventuallyAsync(Func<bool> condition, string what)
+    {
+        long start = TimeProvider.System.GetTimestamp();
+        while (!condition())
+        {
+            if (TimeProvider.System.GetElapsedTime(start) > Limit)
+            {
+                Assert.Fail($"Timed out waiting for {what}.");
+            }
+            await Task.Delay(5);
+        }
+    }
+
+    /// <summary>The paper's Hello Robot program (Code Sample 1).</summary>
+    internal static void IssueHelloRobot(Robot bot)
+    {
+        bot.Message("Hello Robot!");
+        bot.SpeedTo(100);
+        bot.MoveTo(400, 300, 500);
+        bot.Rotate(0, 1, 0, -90);
+        bot.Move(0, 0, 250);
+        bot.Wait(2000);
+        bot.AxesTo(0, 0, 0, 0, 90, 0);
+    }
+}
