@@ -4,9 +4,10 @@ using System.Threading.Channels;
 namespace Machina;
 
 /// <summary>
-/// One TCP connection with a receive loop and a send loop. Senders append bytes to an outbox (no I/O, never blocks);
-/// the send loop writes everything gathered since its last write in one call, so streaming many small requests costs few
-/// system calls and no allocation per request. Disposing cancels both loops and closes the socket.
+/// One TCP connection with a receive loop and a send loop. A sender's bytes go straight into the socket when nothing is
+/// queued (a non-blocking send); otherwise they wait in an outbox that the send loop writes in one call. Streaming many
+/// small requests thus costs no allocation per request and never blocks the caller. Disposing cancels both loops and
+/// closes the socket.
 /// </summary>
 internal sealed class TcpLink : IAsyncDisposable
 {
@@ -22,6 +23,7 @@ internal sealed class TcpLink : IAsyncDisposable
     private readonly object _outboxGate = new();
     private byte[] _outbox = new byte[4096];
     private int _outboxLength;
+    private bool _loopWriting;
     private byte[] _writing = new byte[4096];
     private Task _receiveLoop = Task.CompletedTask;
     private Task _sendLoop = Task.CompletedTask;
@@ -46,6 +48,7 @@ internal sealed class TcpLink : IAsyncDisposable
         try
         {
             await socket.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);
+            socket.Blocking = false; // Post never waits; the loops use asynchronous calls
             return new TcpLink(socket, $"{host}:{port}");
         }
         catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
@@ -73,11 +76,30 @@ internal sealed class TcpLink : IAsyncDisposable
         _sendLoop = Task.Run(SendLoopAsync);
     }
 
-    /// <summary>Queues bytes for sending (copied; returns at once).</summary>
+    /// <summary>
+    /// Sends bytes without ever blocking: when nothing is queued they go straight to the socket's buffer (a non-blocking
+    /// send), otherwise, or for what did not fit, they are copied to the outbox for the send loop.
+    /// </summary>
     internal void Post(ReadOnlySpan<byte> bytes)
     {
         lock (_outboxGate)
         {
+            if (_outboxLength == 0 && !_loopWriting && Volatile.Read(ref _disposed) == 0)
+            {
+                int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
+                if (error is SocketError.Success or SocketError.WouldBlock && sent >= 0)
+                {
+                    bytes = bytes[sent..];
+                }
+                if (bytes.IsEmpty)
+                {
+                    return;
+                }
+                if (error is not (SocketError.Success or SocketError.WouldBlock))
+                {
+                    // Let the send loop meet (and report) the failure.
+                }
+            }
             if (_outboxLength + bytes.Length > _outbox.Length)
             {
                 Array.Resize(ref _outbox, Math.Max(_outbox.Length * 2, _outboxLength + bytes.Length));
@@ -102,10 +124,19 @@ internal sealed class TcpLink : IAsyncDisposable
                     (_outbox, _writing) = (_writing, _outbox);
                     length = _outboxLength;
                     _outboxLength = 0;
+                    _loopWriting = length > 0;
                 }
                 if (length > 0)
                 {
                     await _socket.SendAsync(_writing.AsMemory(0, length), SocketFlags.None, stop).ConfigureAwait(false);
+                    lock (_outboxGate)
+                    {
+                        _loopWriting = false;
+                    }
+                    if (_outboxLength > 0)
+                    {
+                        _doorbell.Writer.TryWrite(true);
+                    }
                 }
             }
         }
