@@ -110,8 +110,14 @@ internal sealed partial class OnlineSession : IActionStream
         }
     }
 
-    /// <summary>The execution cursor, read by the robot's getters (online they report the executed state, as the original did).</summary>
-    internal RobotCursor ExecutionCursor => _execution;
+    /// <summary>Reads the execution cursor under the lock (online the robot's getters report the executed state, as the original did).</summary>
+    internal T ReadExecution<T>(Func<RobotCursor, T> read)
+    {
+        lock (_gate)
+        {
+            return read(_execution);
+        }
+    }
 
     /// <summary>Completes once every issued action was executed and its events raised; fails when the link fails first.</summary>
     internal Task WaitForCompletionAsync(CancellationToken cancellationToken)
