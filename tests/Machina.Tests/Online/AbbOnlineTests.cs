@@ -265,3 +265,44 @@ public class AbbOnlineTests
         }
     }
 }
+
+public class AbbOnlineWireTests
+{
+    [Fact]
+    public async Task Stream_SettingsToolsIOAndAxes_ExactRequestsOneAcknowledgementEach()
+    {
+        await using var controller = await OnlineTestSupport.StartControllerAsync();
+        Robot bot = await OnlineTestSupport.ConnectAsync(controller);
+        var executed = new ConcurrentQueue<int>();
+        bot.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+
+        bot.AccelerationTo(500);                                                         // 1
+        bot.PushSettings();                                                              // 2 nothing to send
+        bot.SpeedTo(50);                                                                 // 3
+        bot.PrecisionTo(2);                                                              // 4
+        bot.PopSettings();                                                               // 5 speed and zone restored
+        bot.DefineTool("pen", new Vector(0, 0, 100), Rotation.FromQuaternion(1, 0, 0, 0), 0.5, new Vector(0, 0, 50)); // 6
+        bot.AttachTool("pen");                                                           // 7
+        bot.WriteDigital("DO_15", true);                                                 // 8
+        bot.WriteAnalog("AO_1", 0.5);                                                    // 9
+        bot.ExternalAxisTo(1, 1800);                                                     // 10 both target sets
+        bot.CustomCode("103 0.05");                                                      // 11
+        bot.DetachTool();                                                                // 12
+        bot.MotionMode("joint");                                                         // 13 nothing to send
+        bot.MoveTo(400, 0, 400);                                                         // 14
+        await bot.WaitForCompletionAsync().WaitAsync(OnlineTestSupport.Limit);
+
+        Assert.Equal(
+            ["@1 13 0.5;", "@3 4 50;", "@4 5 2;", "@0 4 20;", "@5 5 5;", "@7 8 0 0 100 1 0 0 0 0.5 0 0 50;", "@8 10 \"DO_15\" 1;",
+             "@9 11 \"AO_1\" 0.5;", "@0 15 1800 9E9 9E9 9E9 9E9 9E9;", "@10 16 1800 9E9 9E9 9E9 9E9 9E9;", "@11 103 0.05;", "@12 9;",
+             "@14 2 400 0 400 0 0 1 0;"],
+            controller.ReceivedRequests);
+        Assert.Equal(Enumerable.Range(1, 14), executed);
+        Assert.Equal(1800, bot.GetExecutedState().ExternalAxesJoints!.Value[1]);
+        Assert.Equal(new Vector(400, 0, 400), controller.State.Position);
+        Assert.True(controller.State.DigitalOutputs["DO_15"]);
+        Assert.Equal(0.5, controller.State.AnalogOutputs["AO_1"]);
+        Assert.Equal(20, controller.State.Speed);
+        Assert.Empty(controller.Errors);
+    }
+}
