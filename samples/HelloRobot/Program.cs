@@ -51,13 +51,7 @@ try
     await bot.ConnectAsync(host, port);
     Console.WriteLine($"Connected to {bot.GetIP()}; the robot is at {bot.GetCurrentPosition()} with axes {bot.GetCurrentAxes()}.");
 
-    bot.Message("Hello Robot!");
-    bot.SpeedTo(100);
-    bot.MoveTo(400, 300, 500);
-    bot.Rotate(0, 1, 0, -90);
-    bot.Move(0, 0, 250);
-    bot.Wait(2000);
-    bot.AxesTo(0, 0, 0, 0, 90, 0);
+    HelloRobot(bot);
 
     using var timeout = new CancellationTokenSource(TimeSpan.FromMinutes(2));
     await bot.WaitForCompletionAsync(timeout.Token);
@@ -80,13 +74,7 @@ finally
 
 // The same actions, compiled offline for every brand this build knows.
 var offline = Robot.Create("HelloRobot", "ABB");
-offline.Message("Hello Robot!");
-offline.SpeedTo(100);
-offline.MoveTo(400, 300, 500);
-offline.Rotate(0, 1, 0, -90);
-offline.Move(0, 0, 250);
-offline.Wait(2000);
-offline.AxesTo(0, 0, 0, 0, 90, 0);
+HelloRobot(offline);
 foreach (RobotType language in new[] { RobotType.ABB, RobotType.UR, RobotType.KUKA, RobotType.HUMAN })
 {
     try
@@ -106,3 +94,15 @@ foreach (RobotType language in new[] { RobotType.ABB, RobotType.UR, RobotType.KU
     }
 }
 return 0;
+
+// The paper's Code Sample 1.
+static void HelloRobot(Robot bot)
+{
+    bot.Message("Hello Robot!");
+    bot.SpeedTo(100);
+    bot.MoveTo(400, 300, 500);
+    bot.Rotate(0, 1, 0, -90);
+    bot.Move(0, 0, 250);
+    bot.Wait(2000);
+    bot.AxesTo(0, 0, 0, 0, 90, 0);
+}

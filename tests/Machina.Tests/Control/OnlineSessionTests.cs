@@ -110,13 +110,7 @@ public class OnlineSessionTests
         bot.ActionReleased += (_, e) => log.Add($"R{e.LastAction.Id}:{e.PendingRelease}");
         bot.ActionExecuted += (_, e) => { log.Add($"E{e.LastAction.Id}:{e.PendingExecutionOnDevice}/{e.PendingExecutionTotal}"); executed.Add(e); };
 
-        bot.Message("Hello Robot!");
-        bot.SpeedTo(100);
-        bot.MoveTo(400, 300, 500);
-        bot.Rotate(0, 1, 0, -90);
-        bot.Move(0, 0, 250);
-        bot.Wait(2000);
-        bot.AxesTo(0, 0, 0, 0, 90, 0);
+        Support.ReferencePrograms.HelloRobot(bot);
         for (int id = 1; id <= 7; id++)
         {
             driver.Ack(id);

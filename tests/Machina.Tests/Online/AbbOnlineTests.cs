@@ -1,5 +1,6 @@
 using System.Collections.Concurrent;
 using Machina.Simulation;
+using Machina.Tests.Support;
 using static Machina.Tests.Online.OnlineTestSupport;
 
 namespace Machina.Tests.Online;
@@ -19,7 +20,7 @@ public class AbbOnlineTests
         // Figure 5 of the paper: the issue cursor is ahead, execution follows.
         Assert.Equal(new Vector(374, 0, 630), bot.GetExecutedState().Position);
         controller.StopAnswering();
-        IssueHelloRobot(bot);
+        ReferencePrograms.HelloRobot(bot);
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), bot.GetIssuedState().Axes);
         Assert.Equal(new Vector(374, 0, 630), bot.GetExecutedState().Position);
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), bot.GetReleasedState().Axes);
@@ -304,5 +305,28 @@ public class AbbOnlineWireTests
         Assert.Equal(0.5, controller.State.AnalogOutputs["AO_1"]);
         Assert.Equal(20, controller.State.Speed);
         Assert.Empty(controller.Errors);
+    }
+}
+
+public class AbbOnlineReferenceProgramTests
+{
+    public static TheoryData<string> Programs => new(ReferencePrograms.All.Keys);
+
+    [Theory]
+    [MemberData(nameof(Programs))]
+    public async Task ReferenceProgram_StreamedOnline_EveryActionExecutedOnceInOrder(string name)
+    {
+        await using var controller = await OnlineTestSupport.StartControllerAsync();
+        Robot bot = await OnlineTestSupport.ConnectAsync(controller);
+        var executed = new ConcurrentQueue<int>();
+        bot.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+
+        ReferencePrograms.All[name](bot);
+        int issued = bot.GetIssuedState().LastAction!.Id;
+        await bot.WaitForCompletionAsync().WaitAsync(OnlineTestSupport.Limit);
+
+        Assert.Equal(Enumerable.Range(1, issued), executed);
+        Assert.Empty(bot.GetPendingActions());
+        await bot.DisconnectAsync();
     }
 }

@@ -36,16 +36,4 @@ internal static class OnlineTestSupport
             await Task.Delay(5);
         }
     }
-
-    /// <summary>The paper's Hello Robot program (Code Sample 1).</summary>
-    internal static void IssueHelloRobot(Robot bot)
-    {
-        bot.Message("Hello Robot!");
-        bot.SpeedTo(100);
-        bot.MoveTo(400, 300, 500);
-        bot.Rotate(0, 1, 0, -90);
-        bot.Move(0, 0, 250);
-        bot.Wait(2000);
-        bot.AxesTo(0, 0, 0, 0, 90, 0);
-    }
 }
