@@ -37,22 +37,37 @@ try
     await bot.ConnectAsync(host, port);
 
     var finished = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-    int squares = 0, started = 0;
+    int squares = 0, started = 0, lastOfSquare = 0;
     bool stopRequested = false;
+    var gate = new object();   // makes "issue a square" and "remember its last id" one step
 
     void Square()
     {
-        started++;
-        bot.Move(50, 0, 0);
-        bot.Move(0, 50, 0);
-        bot.Move(-50, 0, 0);
-        bot.Move(0, -50, 0);
+        lock (gate)
+        {
+            started++;
+            bot.Move(50, 0, 0);
+            bot.Move(0, 50, 0);
+            bot.Move(-50, 0, 0);
+            bot.Move(0, -50, 0);
+            lastOfSquare = bot.GetIssuedState().LastAction!.Id;
+        }
     }
 
     // Raised on the robot's event thread; issuing from here is allowed.
     bot.ActionExecuted += (_, e) =>
     {
-        if (e.PendingExecutionTotal != 0 || finished.Task.IsCompleted)
+        lock (gate)
+        {
+            OnExecuted(e);
+        }
+    };
+
+    void OnExecuted(ActionExecutedArgs e)
+    {
+        // Nothing pending after the last action of the square. (A fast controller may also finish an earlier move of the
+        // square before the next one is issued; checking the id keeps that from starting a second square.)
+        if (e.PendingExecutionTotal != 0 || e.LastAction.Id != lastOfSquare || finished.Task.IsCompleted)
         {
             return;
         }
@@ -67,7 +82,8 @@ try
             return;
         }
         Square();
-    };
+    }
+
     bot.ConnectionLost += (_, e) => finished.TrySetException(e.Error);
 
     if (!Console.IsInputRedirected)
@@ -80,8 +96,12 @@ try
         });
     }
 
-    bot.SpeedTo(100);
-    bot.MoveTo(400, 0, 400);   // squares start here; executing it triggers the first square
+    lock (gate)
+    {
+        bot.SpeedTo(100);
+        bot.MoveTo(400, 0, 400);   // squares start here; executing it triggers the first square
+        lastOfSquare = bot.GetIssuedState().LastAction!.Id;
+    }
 
     await finished.Task.WaitAsync(TimeSpan.FromMinutes(10));
     await bot.WaitForCompletionAsync();

@@ -133,8 +133,8 @@ internal sealed partial class OnlineSession : IActionStream
             }
             else if (_link is null)
             {
-                throw new MachinaException(
-                    $"{_buffer.Count + _inFlight.Count} actions wait to be executed but the robot is not connected; call Connect first.");
+                return Task.FromException(new MachinaException(
+                    $"{_buffer.Count + _inFlight.Count} actions wait to be executed but the robot is not connected; call Connect first."));
             }
             else
             {

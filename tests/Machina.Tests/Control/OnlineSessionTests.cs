@@ -274,16 +274,30 @@ public class OnlineSessionTests
         var driver = new FakeDriver(autoAcknowledge: true);
         var bot = OnlineRobot.Create(driver);
         var done = new TaskCompletionSource();
-        int loops = 0;
+        var gate = new object();
+        int loops = 0, lastOfBatch = 0;
+        void Batch()
+        {
+            lock (gate)
+            {
+                IssueMoves(bot, 4);
+                lastOfBatch = bot.GetIssuedState().LastAction!.Id;
+            }
+        }
         bot.ActionExecuted += (_, e) =>
         {
-            if (e.PendingExecutionTotal == 0)
+            // Nothing pending after the last action of a batch (an earlier one may also find nothing pending when the
+            // controller is faster than the issuing loop). The gate makes the batch and its last id one step.
+            lock (gate)
             {
-                if (++loops == 5) { done.TrySetResult(); return; }
-                IssueMoves(bot, 4);
+                if (e.PendingExecutionTotal == 0 && e.LastAction.Id == lastOfBatch)
+                {
+                    if (++loops == 5) { done.TrySetResult(); return; }
+                    Batch();
+                }
             }
         };
-        IssueMoves(bot, 4);
+        Batch();
         await done.Task.WaitAsync(OnlineRobot.Timeout);
         Assert.Equal(Enumerable.Range(1, 20), driver.Sent.Select(a => a.Id));
     }
@@ -308,6 +322,34 @@ public class OnlineSessionTests
         Assert.Empty(bot.GetProgramActions());
         Assert.Equal(new Vector(300, 0, 500), bot.GetExecutedState().Position);
         Assert.Equal(100_000, bot.GetExecutedState().LastAction!.Id);
+    }
+
+    [Fact]
+    public async Task Disconnect_WithActionsOnTheDevice_KeepsThemPendingAndFailsTheWaiter()
+    {
+        var driver = new FakeDriver();
+        var bot = OnlineRobot.Create(driver);
+        IssueMoves(bot, 5);
+        driver.Ack(1);
+        Task wait = bot.WaitForCompletionAsync();
+
+        await bot.DisconnectAsync();
+
+        var error = await Assert.ThrowsAsync<MachinaException>(() => wait.WaitAsync(OnlineRobot.Timeout));
+        Assert.Contains("disconnected", error.Message, StringComparison.Ordinal);
+        Assert.True(driver.Disposed);
+        Assert.Equal([2, 3, 4, 5], bot.GetPendingActions().Select(a => a.Id));
+        await Assert.ThrowsAsync<MachinaException>(() => bot.WaitForCompletionAsync());
+        Assert.True(bot.ControlMode("offline"));
+    }
+
+    [Fact]
+    public void ControlMode_WhileConnected_Throws()
+    {
+        var bot = OnlineRobot.Create(new FakeDriver());
+        var ex = Assert.Throws<InvalidOperationException>(() => bot.ControlMode("offline"));
+        Assert.Contains("Disconnect", ex.Message, StringComparison.Ordinal);
+        Assert.Throws<InvalidOperationException>(() => bot.Connect("127.0.0.1", 7000));
     }
 
     [Fact]

@@ -53,15 +53,15 @@ public class AbbOnlineTests
     {
         await using var controller = await StartControllerAsync();
         Robot bot = await ConnectAsync(controller, b => { b.BlockSize = 4; b.PendingCount = 2; });
-        bot.MoveTo(400, 0, 400);
         controller.StopAnswering();
+        bot.MoveTo(400, 0, 400);
         for (int i = 0; i < 39; i++)
         {
             bot.Move(i % 2 == 0 ? 10 : -10, 0, 0);
         }
         await EventuallyAsync(() => controller.RequestsReceived >= 4, "the first block");
         Assert.Equal(4, controller.RequestsReceived);     // one block, then the window is closed
-        Assert.Equal(36, bot.GetPendingActions().Count - 4);
+        Assert.Equal(40, bot.GetPendingActions().Count);
 
         controller.ResumeAnswering();
         await bot.WaitForCompletionAsync().WaitAsync(Limit);
@@ -269,6 +269,40 @@ public class AbbOnlineTests
 
 public class AbbOnlineWireTests
 {
+    [Fact]
+    public async Task Connect_Handshake_PoseJointsAndExternalAxesInEveryCursorAndMotionUpdates()
+    {
+        await using var controller = await OnlineTestSupport.StartControllerAsync(new VirtualAbbControllerOptions
+        {
+            InstantExecution = true,
+            InitialPosition = new Vector(500, -20, 600),
+            InitialJoints = new Joints(10, 20, 30, 40, 50, 60),
+            InitialExternalAxes = new ExternalAxes(1800, null, -45.5),
+        });
+        var bot = Robot.Create("Handshake", "ABB");
+        bot.ControlMode("online");
+        var motion = new TaskCompletionSource<MotionUpdateArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        bot.MotionUpdate += (_, e) => motion.TrySetResult(e);
+        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+
+        foreach (RobotState s in new[] { bot.GetIssuedState(), bot.GetReleasedState(), bot.GetExecutedState() })
+        {
+            Assert.Equal(new Vector(500, -20, 600), s.Position);
+            Assert.Equal(new Joints(10, 20, 30, 40, 50, 60), s.Axes);
+            Assert.Equal(new ExternalAxes(1800, null, -45.5), s.ExternalAxesCartesian);
+            Assert.Equal(new ExternalAxes(1800, null, -45.5), s.ExternalAxesJoints);
+        }
+        Assert.Equal(new Vector(500, -20, 600), (Vector)bot.GetCurrentPosition()!.Value);
+        MotionUpdateArgs update = await motion.Task.WaitAsync(OnlineTestSupport.Limit);
+        Assert.Equal(new Joints(10, 20, 30, 40, 50, 60), update.Axes);
+        Assert.Equal(new ExternalAxes(1800, null, -45.5), update.ExternalAxes);
+        Assert.StartsWith("{\"event\":\"motion-update\",\"pos\":[500,-20,600]", update.ToJsonString(), StringComparison.Ordinal);
+        Assert.Contains("\"extax\":[1800,null,-45.5,null,null,null]", update.ToJsonString(), StringComparison.Ordinal);
+        await bot.DisconnectAsync();
+        Assert.False(bot.IsConnected);
+        Assert.Equal("", bot.GetIP());
+    }
+
     [Fact]
     public async Task Stream_SettingsToolsIOAndAxes_ExactRequestsOneAcknowledgementEach()
     {
