@@ -88,6 +88,11 @@ public sealed partial class Robot
                 _session = null;
                 _online = null;
             }
+            int dropped = old?.GetPendingActions().Count ?? 0;
+            if (dropped > 0)
+            {
+                Logger.Warning($"Going offline dropped {dropped} actions that were not executed by the controller.");
+            }
             _ = old?.CloseAsync();
         }
         _controlType = mode;
