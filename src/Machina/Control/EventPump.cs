@@ -11,6 +11,7 @@ internal sealed class EventPump
     private readonly Channel<Item> _queue = Channel.CreateUnbounded<Item>(new UnboundedChannelOptions { SingleReader = true });
     private readonly Action<MachinaEventArgs> _raise;
     private readonly Task _loop;
+    private int _raisingThread = -1;
 
     /// <summary>Starts the loop; <paramref name="raise"/> delivers one event to its subscribers and must not throw.</summary>
     internal EventPump(Action<MachinaEventArgs> raise)
@@ -18,6 +19,9 @@ internal sealed class EventPump
         _raise = raise;
         _loop = Task.Run(RunAsync);
     }
+
+    /// <summary>True when called from inside an event handler run by this pump.</summary>
+    internal bool IsRaisingOnCurrentThread => Volatile.Read(ref _raisingThread) == Environment.CurrentManagedThreadId;
 
     /// <summary>Queues an event.</summary>
     internal void Post(MachinaEventArgs args) => _queue.Writer.TryWrite(new Item(args, null, null));
@@ -38,7 +42,9 @@ internal sealed class EventPump
         {
             if (item.Args is not null)
             {
+                Volatile.Write(ref _raisingThread, Environment.CurrentManagedThreadId);
                 _raise(item.Args);
+                Volatile.Write(ref _raisingThread, -1);
             }
             else if (item.Error is null)
             {

@@ -122,6 +122,11 @@ internal sealed partial class OnlineSession : IActionStream
     /// <summary>Completes once every issued action was executed and its events raised; fails when the link fails first.</summary>
     internal Task WaitForCompletionAsync(CancellationToken cancellationToken)
     {
+        if (_events.IsRaisingOnCurrentThread)
+        {
+            return Task.FromException(new InvalidOperationException(
+                "WaitForCompletion cannot be called from an event handler: the completion is reported on the same thread. Await it elsewhere."));
+        }
         Task task;
         lock (_gate)
         {

@@ -344,6 +344,19 @@ public class OnlineSessionTests
     }
 
     [Fact]
+    public async Task WaitForCompletion_FromAnEventHandler_FailsInsteadOfDeadlocking()
+    {
+        var driver = new FakeDriver(autoAcknowledge: true);
+        var bot = OnlineRobot.Create(driver);
+        var seen = new TaskCompletionSource<Exception?>();
+        bot.ActionExecuted += (_, _) => seen.TrySetResult(bot.WaitForCompletionAsync().Exception?.InnerException);
+        bot.Move(0, 0, 10);
+        Exception? error = await seen.Task.WaitAsync(OnlineRobot.Timeout);
+        Assert.IsType<InvalidOperationException>(error);
+        Assert.Contains("event handler", error!.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void ControlMode_WhileConnected_Throws()
     {
         var bot = OnlineRobot.Create(new FakeDriver());
