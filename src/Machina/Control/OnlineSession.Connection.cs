@@ -123,7 +123,7 @@ internal sealed partial class OnlineSession
             {
                 return;
             }
-            Detach(new MachinaException("The robot was disconnected before every action was executed."));
+            Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
         }
         await link.Driver.DisposeAsync().ConfigureAwait(false);
         _robot.Logger.Info($"Disconnected from {_robot.Brand} robot \"{_robot.Name}\".");
@@ -211,7 +211,7 @@ internal sealed partial class OnlineSession
             }
             if (found < 0)
             {
-                fault = new MachinaException(
+                fault = new RobotConnectionException(
                     $"The controller acknowledged action {id}, which is not waiting for execution (never sent, or already executed).", $"@{id}");
             }
             else
@@ -287,7 +287,7 @@ internal sealed partial class OnlineSession
             TimeSpan silent = _time.GetElapsedTime(_lastProgress);
             if (silent > timeout + TimeSpan.FromMilliseconds(expected))
             {
-                fault = new MachinaException(
+                fault = new RobotConnectionException(
                     $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {_inFlight.Count} actions wait for execution.");
             }
         }

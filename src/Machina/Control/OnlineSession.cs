@@ -138,7 +138,7 @@ internal sealed partial class OnlineSession : IActionStream
             }
             else if (_link is null)
             {
-                return Task.FromException(new MachinaException(
+                return Task.FromException(new RobotConnectionException(
                     $"{_buffer.Count + _inFlight.Count} actions wait to be executed but the robot is not connected; call Connect first."));
             }
             else

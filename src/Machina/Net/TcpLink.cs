@@ -54,12 +54,12 @@ internal sealed class TcpLink : IAsyncDisposable
         catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
         {
             socket.Dispose();
-            throw new MachinaException($"Could not connect to {host}:{port} within {Num.G(timeout.TotalSeconds)} s; is the driver running there?");
+            throw new RobotConnectionException($"Could not connect to {host}:{port} within {Num.G(timeout.TotalSeconds)} s; is the driver running there?");
         }
         catch (SocketException ex)
         {
             socket.Dispose();
-            throw new MachinaException($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
+            throw new RobotConnectionException($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
         }
         catch
         {

@@ -183,7 +183,7 @@ public class OnlineSessionTests
 
         driver.Ack(badId);
 
-        var ex = await Assert.ThrowsAsync<MachinaException>(() => wait.WaitAsync(OnlineRobot.Timeout));
+        var ex = await Assert.ThrowsAsync<RobotConnectionException>(() => wait.WaitAsync(OnlineRobot.Timeout));
         Assert.Contains($"acknowledged action {badId}", ex.Message, StringComparison.Ordinal);
         Assert.Equal($"@{badId}", ex.ReceivedText);
         OnlineRobot.Flush(bot);
@@ -335,11 +335,11 @@ public class OnlineSessionTests
 
         await bot.DisconnectAsync();
 
-        var error = await Assert.ThrowsAsync<MachinaException>(() => wait.WaitAsync(OnlineRobot.Timeout));
+        var error = await Assert.ThrowsAsync<RobotConnectionException>(() => wait.WaitAsync(OnlineRobot.Timeout));
         Assert.Contains("disconnected", error.Message, StringComparison.Ordinal);
         Assert.True(driver.Disposed);
         Assert.Equal([2, 3, 4, 5], bot.GetPendingActions().Select(a => a.Id));
-        await Assert.ThrowsAsync<MachinaException>(() => bot.WaitForCompletionAsync());
+        await Assert.ThrowsAsync<RobotConnectionException>(() => bot.WaitForCompletionAsync());
         Assert.True(bot.ControlMode("offline"));
     }
 

@@ -135,7 +135,7 @@ public class AbbOnlineTests
         controller.ResumeAnswering();
 
         ConnectionLostArgs args = await lost.Task.WaitAsync(Limit);
-        var error = await Assert.ThrowsAsync<MachinaException>(() => wait.WaitAsync(Limit));
+        var error = await Assert.ThrowsAsync<RobotConnectionException>(() => wait.WaitAsync(Limit));
         Assert.Contains("closed the connection", error.Message, StringComparison.Ordinal);
         Assert.False(bot.IsConnected);
         await bot.FlushEventsAsync().WaitAsync(Limit);
@@ -222,7 +222,7 @@ public class AbbOnlineTests
 
         ConnectionLostArgs args = await lost.Task.WaitAsync(Limit);
         Assert.Contains("stopped answering", args.Error.Message, StringComparison.Ordinal);
-        await Assert.ThrowsAsync<MachinaException>(() => wait.WaitAsync(Limit));
+        await Assert.ThrowsAsync<RobotConnectionException>(() => wait.WaitAsync(Limit));
         Assert.Equal([2, 3], bot.GetPendingActions().Select(a => a.Id));
         controller.ResumeAnswering();
     }
@@ -237,7 +237,7 @@ public class AbbOnlineTests
         var bot = Robot.Create("Nobody", "ABB");
         bot.ControlMode("online");
 
-        var error = await Assert.ThrowsAsync<MachinaException>(() => bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit));
+        var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit));
         Assert.Contains($"127.0.0.1:{port}", error.Message, StringComparison.Ordinal);
         Assert.False(bot.IsConnected);
     }
@@ -255,7 +255,7 @@ public class AbbOnlineTests
             bot.ControlMode("online");
             bot.ConnectTimeout = TimeSpan.FromMilliseconds(300);
 
-            var error = await Assert.ThrowsAsync<MachinaException>(() => bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit));
+            var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit));
             Assert.Contains("did not send its handshake", error.Message, StringComparison.Ordinal);
             Assert.False(bot.IsConnected);
             (await accepted.WaitAsync(Limit)).Dispose();

@@ -49,7 +49,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
         }
         catch (TimeoutException)
         {
-            throw new MachinaException(
+            throw new RobotConnectionException(
                 $"The controller at {host}:{port} accepted the connection but did not send its handshake within {Num.G(timeout.TotalSeconds)} s; is the Machina driver running there?");
         }
         CheckVersion(_version!.Value);
@@ -137,8 +137,8 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
 
     /// <inheritdoc/>
     public void OnClosed(Exception? error) => Fail(error is null
-        ? new MachinaException("The controller closed the connection.")
-        : new MachinaException($"The connection to the controller failed: {error.Message}", error));
+        ? new RobotConnectionException("The controller closed the connection.")
+        : new RobotConnectionException($"The connection to the controller failed: {error.Message}", error));
 
     private void OnMessage(in AbbMessage message)
     {
