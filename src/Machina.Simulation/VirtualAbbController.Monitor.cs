@@ -14,7 +14,7 @@ public sealed partial class VirtualAbbController
             {
                 client = await _monitorListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
             }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException)
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
             {
                 return;
             }

@@ -145,7 +145,7 @@ public sealed partial class VirtualAbbController : IAsyncDisposable
             {
                 client = await _driverListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
             }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException)
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
             {
                 return;
             }
