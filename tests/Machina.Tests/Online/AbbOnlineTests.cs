@@ -141,6 +141,8 @@ public class AbbOnlineTests
         await bot.FlushEventsAsync().WaitAsync(Limit);
         Assert.Equal([1, 2, 3], executed);
         Assert.Equal(Enumerable.Range(4, 17), args.PendingActions.Select(a => a.Id));
+        Assert.StartsWith("{\"event\":\"connection-lost\",\"error\":\"The controller closed the connection.\",\"pending\":17,\"pos\":[400,0,420]",
+            args.ToJsonString(), StringComparison.Ordinal);
         Assert.Equal(Enumerable.Range(4, 17), bot.GetPendingActions().Select(a => a.Id));
         Assert.Equal(new Vector(400, 0, 420), bot.GetExecutedState().Position);
 
@@ -240,6 +242,31 @@ public class AbbOnlineTests
         var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit));
         Assert.Contains($"127.0.0.1:{port}", error.Message, StringComparison.Ordinal);
         Assert.False(bot.IsConnected);
+    }
+
+    [Fact]
+    public async Task ConnectAsync_CancelledWhileWaitingForHandshake_ThrowsAndStaysDisconnected()
+    {
+        var listener = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
+        listener.Start();
+        try
+        {
+            int port = ((System.Net.IPEndPoint)listener.LocalEndpoint).Port;
+            Task<System.Net.Sockets.TcpClient> accepted = listener.AcceptTcpClientAsync();
+            var bot = Robot.Create("Cancelled", "ABB");
+            bot.ControlMode("online");
+            using var cancel = new CancellationTokenSource();
+            Task connecting = bot.ConnectAsync("127.0.0.1", port, cancel.Token);
+            using var client = await accepted.WaitAsync(Limit);
+            await cancel.CancelAsync();
+
+            await Assert.ThrowsAnyAsync<OperationCanceledException>(() => connecting.WaitAsync(Limit));
+            Assert.False(bot.IsConnected);
+        }
+        finally
+        {
+            listener.Stop();
+        }
     }
 
     [Fact]
