@@ -247,50 +247,30 @@ public class AbbOnlineTests
     [Fact]
     public async Task ConnectAsync_CancelledWhileWaitingForHandshake_ThrowsAndStaysDisconnected()
     {
-        var listener = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
-        listener.Start();
-        try
-        {
-            int port = ((System.Net.IPEndPoint)listener.LocalEndpoint).Port;
-            Task<System.Net.Sockets.TcpClient> accepted = listener.AcceptTcpClientAsync();
-            var bot = Robot.Create("Cancelled", "ABB");
-            bot.ControlMode("online");
-            using var cancel = new CancellationTokenSource();
-            Task connecting = bot.ConnectAsync("127.0.0.1", port, cancel.Token);
-            using var client = await accepted.WaitAsync(Limit);
-            await cancel.CancelAsync();
+        await using var server = SilentServer.Start();
+        var bot = Robot.Create("Cancelled", "ABB");
+        bot.ControlMode("online");
+        using var cancel = new CancellationTokenSource();
+        Task connecting = bot.ConnectAsync("127.0.0.1", server.Port, cancel.Token);
+        await server.Accepted.WaitAsync(Limit);
+        await cancel.CancelAsync();
 
-            await Assert.ThrowsAnyAsync<OperationCanceledException>(() => connecting.WaitAsync(Limit));
-            Assert.False(bot.IsConnected);
-        }
-        finally
-        {
-            listener.Stop();
-        }
+        await Assert.ThrowsAnyAsync<OperationCanceledException>(() => connecting.WaitAsync(Limit));
+        Assert.False(bot.IsConnected);
     }
 
     [Fact]
     public async Task Connect_NoHandshake_TimesOut()
     {
-        var listener = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
-        listener.Start();
-        try
-        {
-            int port = ((System.Net.IPEndPoint)listener.LocalEndpoint).Port;
-            Task<System.Net.Sockets.TcpClient> accepted = listener.AcceptTcpClientAsync();
-            var bot = Robot.Create("Silent", "ABB");
-            bot.ControlMode("online");
-            bot.ConnectTimeout = TimeSpan.FromMilliseconds(300);
+        await using var server = SilentServer.Start();
+        var bot = Robot.Create("Silent", "ABB");
+        bot.ControlMode("online");
+        bot.ConnectTimeout = TimeSpan.FromMilliseconds(300);
 
-            var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit));
-            Assert.Contains("did not send its handshake", error.Message, StringComparison.Ordinal);
-            Assert.False(bot.IsConnected);
-            (await accepted.WaitAsync(Limit)).Dispose();
-        }
-        finally
-        {
-            listener.Stop();
-        }
+        var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.ConnectAsync("127.0.0.1", server.Port).WaitAsync(Limit));
+        Assert.Contains("did not send its handshake", error.Message, StringComparison.Ordinal);
+        Assert.False(bot.IsConnected);
+        await server.Accepted.WaitAsync(Limit);
     }
 }
 

@@ -37,3 +37,41 @@ internal static class OnlineTestSupport
         }
     }
 }
+
+/// <summary>A loopback server that accepts one client and never says anything (a controller without the driver).</summary>
+internal sealed class SilentServer : IAsyncDisposable
+{
+    private readonly System.Net.Sockets.TcpListener _listener;
+
+    private SilentServer(System.Net.Sockets.TcpListener listener)
+    {
+        _listener = listener;
+        Port = ((System.Net.IPEndPoint)listener.LocalEndpoint).Port;
+        Accepted = listener.AcceptTcpClientAsync();
+    }
+
+    internal int Port { get; }
+
+    /// <summary>Completes when the client connected.</summary>
+    internal Task<System.Net.Sockets.TcpClient> Accepted { get; }
+
+    internal static SilentServer Start()
+    {
+        var listener = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
+        listener.Start();
+        return new SilentServer(listener);
+    }
+
+    public async ValueTask DisposeAsync()
+    {
+        _listener.Stop();
+        try
+        {
+            (await Accepted).Dispose();
+        }
+        catch (Exception ex) when (ex is System.Net.Sockets.SocketException or ObjectDisposedException or OperationCanceledException)
+        {
+            // Nobody connected.
+        }
+    }
+}
