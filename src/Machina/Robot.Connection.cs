@@ -254,7 +254,8 @@ public sealed partial class Robot
 
     /// <summary>
     /// The driver files to load on the controller, by file name, with the connection placeholders filled in.
-    /// Needs "HOSTNAME" (the controller address the driver listens on) and "PORT" (a number; the monitor uses PORT + 1).
+    /// Needs "HOSTNAME" (the controller address the driver listens on) and "PORT" (a number; the monitor uses PORT + 1);
+    /// "MONITOR_RATE" (motion updates per second, default 50) is optional. Works in any control mode.
     /// </summary>
     public IReadOnlyDictionary<string, string> GetDeviceDriverModules(IReadOnlyDictionary<string, string> parameters)
     {
