@@ -38,6 +38,11 @@ try
     bot.ActionReleased += (_, e) => Console.WriteLine($"  released  #{e.LastAction.Id} ({e.PendingRelease} waiting to be sent)");
     bot.ActionExecuted += (_, e) => Console.WriteLine(
         $"  executed  #{e.LastAction.Id} -> position {e.Position?.ToString() ?? "unknown"}, axes {e.Axes?.ToString() ?? "unknown"} ({e.PendingExecutionTotal} left)");
+    bot.ConnectionLost += (_, e) => Console.WriteLine($"  connection lost: {e.Error.Message}");
+
+    await bot.ConnectAsync(host, port);
+    Console.WriteLine($"Connected to {bot.GetIP()}; the robot is at {bot.GetCurrentPosition()} with axes {bot.GetCurrentAxes()}.");
+    // Live poses from the controller's monitor (printed at most every 0.4 s).
     bot.MotionUpdate += (_, e) =>
     {
         if (Stopwatch.GetElapsedTime(lastMotion).TotalMilliseconds >= 400)
@@ -46,10 +51,6 @@ try
             Console.WriteLine($"  moving... tool at {e.Position}");
         }
     };
-    bot.ConnectionLost += (_, e) => Console.WriteLine($"  connection lost: {e.Error.Message}");
-
-    await bot.ConnectAsync(host, port);
-    Console.WriteLine($"Connected to {bot.GetIP()}; the robot is at {bot.GetCurrentPosition()} with axes {bot.GetCurrentAxes()}.");
 
     HelloRobot(bot);
 
