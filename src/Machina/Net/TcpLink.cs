@@ -86,19 +86,24 @@ internal sealed class TcpLink : IAsyncDisposable
         {
             if (_outboxLength == 0 && !_loopWriting && Volatile.Read(ref _disposed) == 0)
             {
-                int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
-                if (error is SocketError.Success or SocketError.WouldBlock && sent >= 0)
+                try
                 {
-                    bytes = bytes[sent..];
+                    int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
+                    if (error is SocketError.Success or SocketError.WouldBlock && sent > 0)
+                    {
+                        bytes = bytes[sent..];
+                    }
+                }
+                catch (ObjectDisposedException)
+                {
+                    // Closing: the bytes are dropped with the link, whose loops report the end.
+                    return;
                 }
                 if (bytes.IsEmpty)
                 {
                     return;
                 }
-                if (error is not (SocketError.Success or SocketError.WouldBlock))
-                {
-                    // Let the send loop meet (and report) the failure.
-                }
+                // Not sent (buffer full or an error): the send loop writes it or meets and reports the failure.
             }
             if (_outboxLength + bytes.Length > _outbox.Length)
             {
