@@ -189,7 +189,8 @@ MODULE Machina_Driver
             RETURN;
         ENDIF
         IF NOT StrToVal(token, value) THEN
-            Complain "received corrupt value " + token;
+            TPWrite token;
+            Complain "received corrupt value";
             corrupt := TRUE;
         ELSEIF field = -1 THEN
             parsing.id := value;
@@ -314,7 +315,7 @@ MODULE Machina_Driver
         CASE 16:
             cursorJoints.extax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
         CASE 17:
-            TPWrite "Machina custom action request", \Num:=r.p1;
+            TPWrite "Machina custom action request" \Num:=r.p1;
         CASE 18:
             cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7]]];
         CASE 19:
@@ -345,7 +346,8 @@ MODULE Machina_Driver
         Acknowledge r;
     ERROR
         IF ERRNO = ERR_ALIASIO_DEF OR ERRNO = ERR_NO_ALIASIO_DEF THEN
-            TPWrite "Machina: could not find signal " + r.s1;
+            TPWrite "Machina: could not find signal";
+            TPWrite r.s1;
             IF USE_STRICT THEN
                 EXIT;
             ENDIF

@@ -3,17 +3,18 @@ namespace Machina;
 /// <summary>
 /// Base type for failures of the link to a robot or of the robot controller itself
 /// (unexpected data, lost connection, refused instruction). Carries what was received, when known.
+/// Abstract: each failure has its own sealed type (for example <see cref="AbbProtocolException"/>).
 /// </summary>
-public class MachinaException : Exception
+public abstract class MachinaException : Exception
 {
     /// <summary>Creates an exception with a message for the user.</summary>
-    public MachinaException(string message) : base(message) { }
+    protected MachinaException(string message) : base(message) { }
 
     /// <summary>Creates an exception with a message and the underlying cause.</summary>
-    public MachinaException(string message, Exception? innerException) : base(message, innerException) { }
+    protected MachinaException(string message, Exception? innerException) : base(message, innerException) { }
 
     /// <summary>Creates an exception with a message and the text received from the controller that caused it.</summary>
-    public MachinaException(string message, string? receivedText, Exception? innerException = null) : base(message, innerException)
+    protected MachinaException(string message, string? receivedText, Exception? innerException = null) : base(message, innerException)
     {
         ReceivedText = receivedText;
     }
