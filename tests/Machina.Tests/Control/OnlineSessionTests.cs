@@ -212,7 +212,7 @@ public class OnlineSessionTests
         IssueMoves(bot, 11);
         first.Ack(1);
         first.Ack(2);
-        first.Listener!.OnFault(new MachinaException("socket closed"));
+        first.Listener!.OnFault(new RobotConnectionException("socket closed"));
         Assert.False(bot.IsConnected);
         Assert.Equal(10, bot.GetPendingActions().Count);
 

@@ -9,7 +9,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     private readonly RobotLogger _log;
     private readonly AbbMessageReader _reader = new();
     private readonly Queue<int> _awaiting = new();
-    private readonly AbbRequest[] _requests = new AbbRequest[AbbActionTranslator.MaxRequests];
+    private readonly List<AbbRequest> _requests = new(4);
     private readonly TaskCompletionSource<DeviceHandshake> _handshake = new(TaskCreationOptions.RunContinuationsAsynchronously);
     private byte[] _encoded = new byte[1024];
     private TcpLink? _link;
@@ -83,16 +83,16 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     {
         TcpLink link = _link ?? throw new InvalidOperationException("the link is not open");
         int wireId = WireId(action.Id);
-        int count = AbbActionTranslator.Translate(action, releaseState, wireId, _requests);
+        _requests.Clear();
+        int count = AbbActionEncoder.Encode(wireId == action.Id ? action : WithId(action, wireId), releaseState, _requests);
         if (count == 0)
         {
             return false;
         }
         int length = 0;
         bool acknowledged = false;
-        for (int i = 0; i < count; i++)
+        foreach (AbbRequest request in _requests)
         {
-            AbbRequest request = _requests[i];
             if (_encoded.Length - length < request.MaxEncodedLength)
             {
                 Array.Resize(ref _encoded, Math.Max(_encoded.Length * 2, length + request.MaxEncodedLength));
@@ -109,6 +109,14 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
         }
         link.Post(_encoded.AsSpan(0, length));
         return acknowledged;
+    }
+
+    /// <summary>A copy of an action carrying the id to send (only for ids beyond what RAPID reads exactly).</summary>
+    private static RobotAction WithId(RobotAction action, int wireId)
+    {
+        RobotAction copy = action.CloneUnissued();
+        copy.Id = wireId;
+        return copy;
     }
 
     /// <summary>The id sent on the wire: RAPID reads ids as 32-bit floats, so they wrap below 2^23 (fix of bug A10).</summary>
