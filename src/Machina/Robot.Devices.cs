@@ -57,6 +57,10 @@ public sealed partial class Robot
     public bool TemperatureTo(double temperature, string devicePart, bool waitToReachTemp = true) =>
         Issue(new ActionTemperature(temperature, EnumText.Parse<RobotPartType>(devicePart, "printer part"), waitToReachTemp, false));
 
+    /// <summary>Changes the temperature of a 3D printer part by an amount, °C.</summary>
+    public bool Temperature(double temperature, RobotPartType devicePart, bool waitToReachTemp = true) =>
+        Issue(new ActionTemperature(temperature, devicePart, waitToReachTemp, true));
+
     /// <summary>Sets the temperature of a 3D printer part, °C.</summary>
     public bool TemperatureTo(double temperature, RobotPartType devicePart, bool waitToReachTemp = true) =>
         Issue(new ActionTemperature(temperature, devicePart, waitToReachTemp, false));

@@ -8,6 +8,11 @@ internal static class Compilers
     {
         RobotType.HUMAN => new HumanCompiler(),
         RobotType.MACHINA => new MachinaCompiler(),
-        _ => throw new NotSupportedException($"Compiling to {brand} is not available yet."),
+        RobotType.ABB => new RapidCompiler(),
+        RobotType.UR => new UrScriptCompiler(),
+        RobotType.KUKA => new KrlCompiler(),
+        RobotType.ZMORPH => new GCodeCompiler(GCodeFlavor.ZMorph),
+        RobotType.MARLIN => new GCodeCompiler(GCodeFlavor.Marlin),
+        _ => throw new ArgumentOutOfRangeException(nameof(brand), brand, "Unknown robot language."),
     };
 }

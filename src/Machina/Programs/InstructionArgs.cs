@@ -47,12 +47,15 @@ internal sealed class InstructionArgs
 
     private ReadOnlySpan<char> Raw(int i) => _source.AsSpan(_args[i].Start, _args[i].Length);
 
+    private ReadOnlySpan<char> Value(int i) => _args[i].Quoted ? _args[i].Text.AsSpan() : Raw(i);
+
     private InstructionParseException Error(int i, string problem) => new(_args[i].Line, _args[i].Column, problem);
 
     /// <summary>Argument <paramref name="i"/> as a number.</summary>
     internal double D(int i)
     {
-        if (!_args[i].Quoted && double.TryParse(Raw(i), NumberStyles.Float, CultureInfo.InvariantCulture, out double v) && double.IsFinite(v))
+        // Quoted numbers ("12.5") are accepted because the original stripped quotes from every argument.
+        if (double.TryParse(Value(i), NumberStyles.Float, CultureInfo.InvariantCulture, out double v) && double.IsFinite(v))
         {
             return v;
         }
@@ -62,7 +65,7 @@ internal sealed class InstructionArgs
     /// <summary>Argument <paramref name="i"/> as a whole number.</summary>
     internal long L(int i)
     {
-        if (!_args[i].Quoted && long.TryParse(Raw(i), NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out long v))
+        if (long.TryParse(Value(i), NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out long v))
         {
             return v;
         }
@@ -83,7 +86,7 @@ internal sealed class InstructionArgs
         {
             return fallback;
         }
-        ReadOnlySpan<char> s = _args[i].Quoted ? _args[i].Text.AsSpan() : Raw(i);
+        ReadOnlySpan<char> s = Value(i);
         if (s.Equals("true", StringComparison.OrdinalIgnoreCase))
         {
             return true;

@@ -141,7 +141,7 @@ internal sealed class InstructionParser
         while (_pos < _text.Length)
         {
             char c = _text[_pos];
-            if (c == '\\' && _pos + 1 < _text.Length)
+            if (c == '\\' && _pos + 1 < _text.Length && _text[_pos + 1] != '\n')
             {
                 _pos += 2;
                 continue;

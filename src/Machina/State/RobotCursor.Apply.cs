@@ -6,6 +6,7 @@ internal sealed partial class RobotCursor
     /// <returns>Null on success, else the reason for refusing, in plain words.</returns>
     internal string? TryApply(RobotAction action)
     {
+        _applying = action;
         string? refusal = action switch
         {
             ActionTranslation a => ApplyTranslation(a),
@@ -38,6 +39,9 @@ internal sealed partial class RobotCursor
         }
         return refusal;
     }
+
+    /// <summary>The action being applied, so that warnings raised while applying it name it (not the previous one).</summary>
+    private RobotAction? _applying;
 
     private static string? Set<T>(ref T field, T value)
     {

@@ -164,9 +164,9 @@ internal sealed partial class RobotCursor
         {
             ExtrudedLength += ExtrusionRate * length;
         }
-        else if (LastAction is not null && Warn is not null)
+        else if (_applying is not null && Warn is not null)
         {
-            Warn(LastAction, "the extruded length could not be computed because the path length of this motion is unknown.");
+            Warn(_applying, "the extruded length could not be computed because the path length of this motion is unknown.");
         }
     }
 }

@@ -13,7 +13,7 @@ internal static class EnumText
         throw new ArgumentException($"\"{text}\" is not a valid {what}; use one of: {string.Join(", ", Enum.GetNames<T>())}.");
     }
 
-    /// <summary>Parses a name case-insensitively; numbers are refused.</summary>
+    /// <summary>Parses a single member name case-insensitively; numbers and comma lists are refused.</summary>
     internal static bool TryParse<T>(string? text, out T value) where T : struct, Enum
     {
         value = default;
@@ -22,7 +22,8 @@ internal static class EnumText
             return false;
         }
         string trimmed = text.Trim();
-        if (char.IsDigit(trimmed[0]) || trimmed[0] == '-' || trimmed[0] == '+')
+        // Numbers and comma lists ("Linear, Joint", which .NET would OR together) name no single member.
+        if (char.IsDigit(trimmed[0]) || trimmed[0] == '-' || trimmed[0] == '+' || trimmed.Contains(','))
         {
             return false;
         }

@@ -24,6 +24,6 @@ internal static class IOPin
     internal static bool TryNumber(string pin, out int number) =>
         int.TryParse(pin, System.Globalization.NumberStyles.None, Num.Inv, out number);
 
-    /// <summary>The pin as instruction text: the number, or the name in quotes.</summary>
-    internal static string Text(string pin) => TryNumber(pin, out int n) ? Num.I(n) : "\"" + pin + "\"";
+    /// <summary>The pin as instruction text: the number as written (so "02" stays "02" and parses back the same), or the name in quotes.</summary>
+    internal static string Text(string pin) => TryNumber(pin, out _) ? pin : "\"" + pin + "\"";
 }

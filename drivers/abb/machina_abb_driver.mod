@@ -1,0 +1,389 @@
+MODULE Machina_Driver
+    ! Machina driver for ABB IRC5 controllers (motion task T_ROB1).
+    ! A TCP server: reads requests "@id code "text" p1 ... pN;", executes them in order and answers "@id code;"
+    ! after each one. Protocol: docs/protocol-abb.md in the Machina repository. Placeholders are filled by Machina.
+
+    CONST string DRIVER_VERSION_MAJOR := "1";
+    CONST string DRIVER_VERSION_MINOR := "5";
+    CONST string DRIVER_VERSION_PATCH := "0";
+
+    PERS string SERVER_IP := "{{HOSTNAME}}";
+    CONST num SERVER_PORT := {{PORT}};
+    PERS bool USE_STRICT := TRUE;
+    PERS bool isMachinaDriverAvailable := TRUE;
+    PERS num monitorUpdateInterval := {{MONITOR_INTERVAL}};
+    PERS tooldata cursorTool := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];
+    PERS wobjdata cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
+
+    ! Longest wait of a socket call (a RobotWare 5 compatible "forever").
+    CONST num WAIT_MAX := 8388608;
+    CONST num BUFFER_SIZE := 1000;
+    ! Stop reading while fewer free slots remain: one 80-character chunk holds at most 16 requests.
+    CONST num READ_MARGIN := 20;
+
+    RECORD MachinaRequest
+        num id;
+        num code;
+        string s1;
+        num p1;
+        num p2;
+        num p3;
+        num p4;
+        num p5;
+        num p6;
+        num p7;
+        num p8;
+        num p9;
+        num p10;
+        num p11;
+    ENDRECORD
+
+    VAR MachinaRequest requests{BUFFER_SIZE};
+    VAR num readIndex := 1;
+    VAR num writeIndex := 1;
+    VAR num requestCount := 0;
+
+    ! Parser state, kept between socket reads so a request may be split anywhere.
+    VAR MachinaRequest parsing;
+    VAR num parsedParams{11};
+    VAR string token := "";
+    VAR num field := 0;
+    VAR bool inText := FALSE;
+    VAR bool corrupt := FALSE;
+
+    VAR socketdev serverSocket;
+    VAR socketdev clientSocket;
+    VAR bool clientConnected := FALSE;
+
+    VAR robtarget cursorTarget;
+    VAR jointtarget cursorJoints;
+    VAR speeddata cursorSpeed;
+    VAR zonedata cursorZone;
+    VAR signaldo outDigital;
+    VAR signalao outAnalog;
+
+    PROC Main()
+        TPErase;
+        TPWrite "Machina driver " + DRIVER_VERSION_MAJOR + "." + DRIVER_VERSION_MINOR + "." + DRIVER_VERSION_PATCH;
+        ConfJ \Off;
+        ConfL \Off;
+        CirPathMode \PathFrame;
+        InitializeState;
+        ServerStart;
+        WHILE TRUE DO
+            IF requestCount = 0 THEN
+                ReadRequests;
+            ENDIF
+            WHILE requestCount > 0 DO
+                ExecuteNext;
+            ENDWHILE
+        ENDWHILE
+    ENDPROC
+
+    PROC InitializeState()
+        readIndex := 1;
+        writeIndex := 1;
+        requestCount := 0;
+        ResetParser;
+        cursorTool := tool0;
+        cursorWObj := wobj0;
+        cursorTarget := CRobT(\Tool:=tool0 \WObj:=wobj0);
+        cursorJoints := CJointT();
+        cursorSpeed := v20;
+        cursorZone := z5;
+        isMachinaDriverAvailable := TRUE;
+    ENDPROC
+
+    PROC ServerStart()
+        SocketClose serverSocket;
+        SocketClose clientSocket;
+        SocketCreate serverSocket;
+        SocketBind serverSocket, SERVER_IP, SERVER_PORT;
+        SocketListen serverSocket;
+        TPWrite "Machina driver waiting for a client on " + SERVER_IP + ":" + NumToStr(SERVER_PORT, 0);
+        SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
+        clientConnected := TRUE;
+        TPWrite "Machina client connected";
+        ResetParser;
+        SendHandshake;
+    ERROR
+        IF ERRNO = ERR_SOCK_TIMEOUT THEN
+            RETRY;
+        ENDIF
+        RAISE;
+    ENDPROC
+
+    PROC SendHandshake()
+        VAR robtarget flange;
+        VAR jointtarget joints;
+        flange := CRobT(\Tool:=tool0 \WObj:=wobj0);
+        joints := CJointT();
+        SocketSend clientSocket \Str:="$20 " + DRIVER_VERSION_MAJOR + " " + DRIVER_VERSION_MINOR + " " + DRIVER_VERSION_PATCH + ";";
+        SocketSend clientSocket \Str:="$21 " + NumToStr(flange.trans.x, 3) + " " + NumToStr(flange.trans.y, 3) + " " + NumToStr(flange.trans.z, 3) + " ";
+        SocketSend clientSocket \Str:=NumToStr(flange.rot.q1, 4) + " " + NumToStr(flange.rot.q2, 4) + " " + NumToStr(flange.rot.q3, 4) + " " + NumToStr(flange.rot.q4, 4) + ";";
+        SocketSend clientSocket \Str:="$22 " + NumToStr(joints.robax.rax_1, 3) + " " + NumToStr(joints.robax.rax_2, 3) + " " + NumToStr(joints.robax.rax_3, 3) + " ";
+        SocketSend clientSocket \Str:=NumToStr(joints.robax.rax_4, 3) + " " + NumToStr(joints.robax.rax_5, 3) + " " + NumToStr(joints.robax.rax_6, 3) + ";";
+        SocketSend clientSocket \Str:="$23 " + AxisText(flange.extax.eax_a) + " " + AxisText(flange.extax.eax_b) + " " + AxisText(flange.extax.eax_c) + " ";
+        SocketSend clientSocket \Str:=AxisText(flange.extax.eax_d) + " " + AxisText(flange.extax.eax_e) + " " + AxisText(flange.extax.eax_f) + ";";
+    ENDPROC
+
+    FUNC string AxisText(num value)
+        IF value >= 9E9 THEN
+            RETURN "9E9";
+        ENDIF
+        RETURN NumToStr(value, 3);
+    ENDFUNC
+
+    ! Reads socket chunks until at least one complete request is buffered (or the buffer is nearly full).
+    PROC ReadRequests()
+        VAR string chunk;
+        WHILE requestCount = 0 DO
+            SocketReceive clientSocket \Str:=chunk \Time:=WAIT_MAX;
+            ParseChunk chunk;
+        ENDWHILE
+    ERROR
+        IF ERRNO = ERR_SOCK_TIMEOUT THEN
+            RETRY;
+        ELSEIF ERRNO = ERR_SOCK_CLOSED THEN
+            clientConnected := FALSE;
+            TPWrite "Machina client disconnected";
+            ServerStart;
+            RETRY;
+        ENDIF
+        RAISE;
+    ENDPROC
+
+    ! Feeds every character of a chunk to the parser; a request may start in one chunk and end in another.
+    PROC ParseChunk(string chunk)
+        VAR string c;
+        FOR i FROM 1 TO StrLen(chunk) DO
+            c := StrPart(chunk, i, 1);
+            IF inText THEN
+                IF c = """" THEN
+                    inText := FALSE;
+                    parsing.s1 := token;
+                    token := "";
+                ELSEIF StrLen(token) < 80 THEN
+                    token := token + c;
+                ENDIF
+            ELSEIF c = ";" THEN
+                FinishToken;
+                FinishRequest;
+            ELSEIF c = " " OR c = "\09" OR c = "\0A" OR c = "\0D" THEN
+                FinishToken;
+            ELSEIF c = """" THEN
+                FinishToken;
+                inText := TRUE;
+            ELSEIF c = "@" AND field = 0 AND token = "" THEN
+                field := -1;
+            ELSEIF StrLen(token) < 80 THEN
+                token := token + c;
+            ENDIF
+        ENDFOR
+    ENDPROC
+
+    ! Stores the token just read: id (after @), then code, then numeric parameters p1..p11.
+    PROC FinishToken()
+        VAR num value;
+        IF token = "" THEN
+            RETURN;
+        ENDIF
+        IF NOT StrToVal(token, value) THEN
+            TPWrite token;
+            Complain "received corrupt value";
+            corrupt := TRUE;
+        ELSEIF field = -1 THEN
+            parsing.id := value;
+            field := 0;
+        ELSEIF field = 0 THEN
+            parsing.code := value;
+            field := 1;
+        ELSEIF field <= 11 THEN
+            parsedParams{field} := value;
+            field := field + 1;
+        ELSE
+            Complain "more than 11 parameters";
+            corrupt := TRUE;
+        ENDIF
+        token := "";
+    ENDPROC
+
+    PROC FinishRequest()
+        IF field >= 1 AND NOT corrupt AND NOT inText THEN
+            parsing.p1 := parsedParams{1};
+            parsing.p2 := parsedParams{2};
+            parsing.p3 := parsedParams{3};
+            parsing.p4 := parsedParams{4};
+            parsing.p5 := parsedParams{5};
+            parsing.p6 := parsedParams{6};
+            parsing.p7 := parsedParams{7};
+            parsing.p8 := parsedParams{8};
+            parsing.p9 := parsedParams{9};
+            parsing.p10 := parsedParams{10};
+            parsing.p11 := parsedParams{11};
+            IF requestCount >= BUFFER_SIZE THEN
+                Complain "request buffer full";
+            ELSE
+                requests{writeIndex} := parsing;
+                writeIndex := writeIndex MOD BUFFER_SIZE + 1;
+                requestCount := requestCount + 1;
+            ENDIF
+        ELSEIF field <> 0 OR corrupt THEN
+            Complain "received corrupt request";
+        ENDIF
+        ResetParser;
+    ENDPROC
+
+    PROC ResetParser()
+        parsing := [0, 0, "", 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+        FOR i FROM 1 TO 11 DO
+            parsedParams{i} := 0;
+        ENDFOR
+        token := "";
+        field := 0;
+        inText := FALSE;
+        corrupt := FALSE;
+    ENDPROC
+
+    ! Reports a protocol problem on the pendant; in strict mode the program stops (the host sees no more acks).
+    PROC Complain(string message)
+        TPWrite "Machina: " + message;
+        IF USE_STRICT THEN
+            EXIT;
+        ENDIF
+    ENDPROC
+
+    PROC ExecuteNext()
+        VAR MachinaRequest r;
+        r := requests{readIndex};
+        readIndex := readIndex MOD BUFFER_SIZE + 1;
+        requestCount := requestCount - 1;
+        TEST r.code
+        CASE 1:
+            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            MoveL cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
+        CASE 2:
+            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            MoveJ cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
+        CASE 3:
+            cursorJoints.robax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
+            MoveAbsJ cursorJoints, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
+        CASE 4:
+            cursorSpeed := [r.p1, OrDefault(r.p2, r.p1), OrDefault(r.p3, r.p1), OrDefault(r.p4, r.p1)];
+        CASE 5:
+            IF r.p1 = 0 THEN
+                cursorZone := fine;
+            ELSE
+                cursorZone := [FALSE, r.p1, OrDefault(r.p2, 1.5 * r.p1), OrDefault(r.p3, 1.5 * r.p1), OrDefault(r.p4, 0.1 * r.p1), OrDefault(r.p5, 1.5 * r.p1), OrDefault(r.p6, 0.1 * r.p1)];
+            ENDIF
+        CASE 6:
+            WaitTime r.p1;
+        CASE 7:
+            TPWrite r.s1;
+        CASE 8:
+            cursorTool := [TRUE, [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7]], [OrDefault(r.p8, 1), [OrDefault(r.p9, 0.5 * r.p1), OrDefault(r.p10, 0.5 * r.p2), OrDefault(r.p11, 0.5 * r.p3)], [1, 0, 0, 0], 0, 0, 0]];
+        CASE 9:
+            cursorTool := tool0;
+        CASE 10:
+            AliasIO r.s1, outDigital;
+            IF r.p1 = 0 THEN
+                SetDO outDigital, 0;
+            ELSE
+                SetDO outDigital, 1;
+            ENDIF
+        CASE 11:
+            AliasIO r.s1, outAnalog;
+            SetAO outAnalog, r.p1;
+        CASE 12:
+            cursorTarget.extax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
+            cursorJoints.extax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
+        CASE 13:
+            ! Acceleration in m/s2 (the host converts from mm/s2).
+            IF r.p1 > 0 THEN
+                WorldAccLim \On:=r.p1;
+            ELSE
+                WorldAccLim \Off;
+            ENDIF
+        CASE 14:
+            IF r.p1 = 0 THEN
+                SingArea \Off;
+            ELSE
+                SingArea \Wrist;
+            ENDIF
+        CASE 15:
+            cursorTarget.extax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
+        CASE 16:
+            cursorJoints.extax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
+        CASE 17:
+            TPWrite "Machina custom action request" \Num:=r.p1;
+        CASE 18:
+            cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7]]];
+        CASE 19:
+            cursorWObj := wobj0;
+        CASE 30:
+            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            MoveC [[r.p8, r.p9, r.p10], [1, 0, 0, 0], [0, 0, 0, 0], cursorTarget.extax], cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
+        CASE 100:
+            Acknowledge r;
+            SocketClose clientSocket;
+            SocketClose serverSocket;
+            isMachinaDriverAvailable := FALSE;
+            TPWrite "Machina driver stopped by the host";
+            EXIT;
+        CASE 101:
+            IF r.p1 = 2 THEN
+                SendIfConnected "$@" + NumToStr(r.id, 0) + " 101 2 " + SERVER_IP + " " + NumToStr(SERVER_PORT, 0) + ";";
+            ELSE
+                SendIfConnected "$@" + NumToStr(r.id, 0) + " 101 1 " + DRIVER_VERSION_MAJOR + "." + DRIVER_VERSION_MINOR + "." + DRIVER_VERSION_PATCH + ";";
+            ENDIF
+        CASE 103:
+            IF r.p1 > 0 THEN
+                monitorUpdateInterval := r.p1;
+            ENDIF
+        DEFAULT:
+            TPWrite "Machina: don't understand action code " + NumToStr(r.code, 0);
+        ENDTEST
+        Acknowledge r;
+    ERROR
+        IF ERRNO = ERR_ALIASIO_DEF OR ERRNO = ERR_NO_ALIASIO_DEF THEN
+            TPWrite "Machina: could not find signal";
+            TPWrite r.s1;
+            IF USE_STRICT THEN
+                EXIT;
+            ENDIF
+            STOP;
+        ENDIF
+        RAISE;
+    ENDPROC
+
+    FUNC num OrDefault(num value, num fallback)
+        IF value = 0 THEN
+            RETURN fallback;
+        ENDIF
+        RETURN value;
+    ENDFUNC
+
+    ! Acknowledges once per request, after it returned: "@id code;" or "code;" for id 0.
+    PROC Acknowledge(MachinaRequest r)
+        IF r.id = 0 THEN
+            SendIfConnected NumToStr(r.code, 0) + ";";
+        ELSE
+            SendIfConnected "@" + NumToStr(r.id, 0) + " " + NumToStr(r.code, 0) + ";";
+        ENDIF
+    ENDPROC
+
+    PROC SendIfConnected(string message)
+        IF NOT clientConnected THEN
+            RETURN;
+        ENDIF
+        SocketSend clientSocket \Str:=message;
+    ERROR
+        IF ERRNO = ERR_SOCK_CLOSED THEN
+            clientConnected := FALSE;
+            TPWrite "Machina: acknowledgement lost, client disconnected";
+            TRYNEXT;
+        ENDIF
+        TPWrite "Machina: could not send an acknowledgement";
+        TRYNEXT;
+    ENDPROC
+ENDMODULE

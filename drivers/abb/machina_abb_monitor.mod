@@ -1,0 +1,75 @@
+MODULE Machina_Monitor
+    ! Machina monitor for ABB IRC5 controllers (second task T_MACHINA_MONITOR, needs option 623-1 Multitasking).
+    ! A TCP server on the driver port + 1 that reports the robot state every monitorUpdateInterval seconds as
+    ! "$24 x y z q1 q2 q3 q4>" "j1 ... j6>" "e1 ... e6;". Placeholders are filled by Machina.
+
+    PERS string SERVER_IP := "{{HOSTNAME}}";
+    CONST num MONITOR_PORT := {{PORT}};
+    PERS bool USE_STRICT := TRUE;
+    PERS bool isMachinaDriverAvailable := TRUE;
+    PERS num monitorUpdateInterval := {{MONITOR_INTERVAL}};
+    PERS tooldata cursorTool := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];
+    PERS wobjdata cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
+
+    CONST num WAIT_MAX := 8388608;
+
+    VAR socketdev serverSocket;
+    VAR socketdev clientSocket;
+
+    PROC Main()
+        IF NOT isMachinaDriverAvailable THEN
+            TPWrite "Machina monitor: the Machina driver is not loaded";
+            EXIT;
+        ENDIF
+        ServerStart;
+        WHILE TRUE DO
+            Report;
+            WaitTime monitorUpdateInterval;
+        ENDWHILE
+    ENDPROC
+
+    PROC ServerStart()
+        SocketClose serverSocket;
+        SocketClose clientSocket;
+        SocketCreate serverSocket;
+        SocketBind serverSocket, SERVER_IP, MONITOR_PORT;
+        SocketListen serverSocket;
+        SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
+    ERROR
+        IF ERRNO = ERR_SOCK_TIMEOUT THEN
+            RETRY;
+        ENDIF
+        RAISE;
+    ENDPROC
+
+    ! Pose and joints are read together so they match: the TCP of the driver's current tool in its work object.
+    PROC Report()
+        VAR jointtarget joints;
+        VAR robtarget pose;
+        joints := CJointT();
+        pose := CalcRobT(joints, cursorTool \WObj:=cursorWObj);
+        SocketSend clientSocket \Str:="$24 " + NumToStr(pose.trans.x, 3) + " " + NumToStr(pose.trans.y, 3) + " " + NumToStr(pose.trans.z, 3) + " ";
+        SocketSend clientSocket \Str:=NumToStr(pose.rot.q1, 4) + " " + NumToStr(pose.rot.q2, 4) + " " + NumToStr(pose.rot.q3, 4) + " " + NumToStr(pose.rot.q4, 4) + ">";
+        SocketSend clientSocket \Str:=NumToStr(joints.robax.rax_1, 3) + " " + NumToStr(joints.robax.rax_2, 3) + " " + NumToStr(joints.robax.rax_3, 3) + " ";
+        SocketSend clientSocket \Str:=NumToStr(joints.robax.rax_4, 3) + " " + NumToStr(joints.robax.rax_5, 3) + " " + NumToStr(joints.robax.rax_6, 3) + ">";
+        SocketSend clientSocket \Str:=AxisText(joints.extax.eax_a) + " " + AxisText(joints.extax.eax_b) + " " + AxisText(joints.extax.eax_c) + " ";
+        SocketSend clientSocket \Str:=AxisText(joints.extax.eax_d) + " " + AxisText(joints.extax.eax_e) + " " + AxisText(joints.extax.eax_f) + ";";
+    ERROR
+        IF ERRNO = ERR_SOCK_CLOSED THEN
+            ServerStart;
+            RETURN;
+        ENDIF
+        TPWrite "Machina monitor: something went wrong";
+        IF USE_STRICT THEN
+            EXIT;
+        ENDIF
+        STOP;
+    ENDPROC
+
+    FUNC string AxisText(num value)
+        IF value >= 9E9 THEN
+            RETURN "9E9";
+        ENDIF
+        RETURN NumToStr(value, 3);
+    ENDFUNC
+ENDMODULE

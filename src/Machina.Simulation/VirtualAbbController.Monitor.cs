@@ -1,0 +1,50 @@
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Simulation;
+
+public sealed partial class VirtualAbbController
+{
+    private async Task AcceptMonitorClientsAsync(CancellationToken token)
+    {
+        while (!token.IsCancellationRequested)
+        {
+            TcpClient client;
+            try
+            {
+                client = await _monitorListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
+            {
+                return;
+            }
+            using (client)
+            {
+                client.NoDelay = true;
+                await ReportAsync(client.GetStream(), token).ConfigureAwait(false);
+            }
+        }
+    }
+
+    /// <summary>Sends <c>$24</c> reports in three chunks, like the RAPID monitor, until the client leaves or the controller stops.</summary>
+    private async Task ReportAsync(NetworkStream stream, CancellationToken token)
+    {
+        try
+        {
+            while (true)
+            {
+                var state = State;
+                var (pose, joints, axes) = AbbMessageFormat.MonitorChunks(state.Position, state.Rotation, state.Joints, state.ExternalAxesCartesian);
+                await stream.WriteAsync(Encoding.ASCII.GetBytes(pose), token).ConfigureAwait(false);
+                await stream.WriteAsync(Encoding.ASCII.GetBytes(joints), token).ConfigureAwait(false);
+                await stream.WriteAsync(Encoding.ASCII.GetBytes(axes), token).ConfigureAwait(false);
+                Interlocked.Increment(ref _monitorReportsSent);
+                await Task.Delay(MonitorPeriod, _time, token).ConfigureAwait(false);
+            }
+        }
+        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
+        {
+            // Client gone or stopping: wait for the next client.
+        }
+    }
+}

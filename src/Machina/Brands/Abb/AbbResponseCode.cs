@@ -1,0 +1,11 @@
+namespace Machina;
+
+/// <summary>Codes of data messages (<c>$code …;</c>) sent by the RAPID driver and monitor to the host (spec online §6.4).</summary>
+internal enum AbbResponseCode
+{
+    Version = 20,
+    Pose = 21,
+    Joints = 22,
+    ExternalAxes = 23,
+    FullPose = 24,
+}

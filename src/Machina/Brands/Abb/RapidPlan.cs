@@ -1,0 +1,183 @@
+namespace Machina;
+
+/// <summary>
+/// What a RAPID module must declare before <c>PROC main()</c>, gathered in a first pass over the actions: the speeds and zones
+/// that motions use, the tools that motions use, custom declarations, and whether IO signals are set. Names are unique
+/// (speeds and zones are keyed by the rounded value that is written, so two speeds that print the same share one name).
+/// </summary>
+internal sealed class RapidPlan
+{
+    private static readonly int[] PredefinedZones = [1, 5, 10, 15, 20, 30, 40, 50, 60, 80, 100, 150, 200];
+
+    private readonly Dictionary<double, string> _speedNames = [];
+    private readonly Dictionary<double, string> _zoneNames = [];
+    private readonly Dictionary<Tool, string> _toolNames = [];
+    private readonly List<double> _speeds = [];
+    private readonly List<double> _zones = [];
+    private readonly List<Tool> _tools = [];
+    private double _lastSpeed = double.NaN, _lastZone = double.NaN;
+    private string _lastSpeedName = "", _lastZoneName = "", _lastToolName = "";
+    private Tool? _lastTool;
+
+    /// <summary>Identifiers in use in the module.</summary>
+    internal RapidNames Names { get; } = new();
+
+    /// <summary>Module name: the program name made a valid RAPID identifier.</summary>
+    internal string ModuleName { get; private set; } = "";
+
+    /// <summary>Custom declaration statements, in order.</summary>
+    internal List<string> CustomDeclarations { get; } = [];
+
+    /// <summary>True when the program sets IO signals.</summary>
+    internal bool UsesIO { get; private set; }
+
+    /// <summary>Declaration lines for speeds, zones and tools.</summary>
+    internal List<string> DataLines { get; } = [];
+
+    /// <summary>Runs the first pass: replays the actions (refused ones are skipped; the writing pass reports them).</summary>
+    internal static RapidPlan Collect(CompileJob job)
+    {
+        var plan = new RapidPlan();
+        plan.ModuleName = plan.Names.Claim(RapidNames.LooksLikeTarget(job.ProgramName) ? "M_" + job.ProgramName : job.ProgramName, "M");
+        RobotCursor cursor = job.NewCursor();
+        if (cursor.Tool is Tool startTool)
+        {
+            plan.AddTool(startTool);
+        }
+        foreach (RobotAction action in job.Actions)
+        {
+            if (cursor.TryApply(action) is null)
+            {
+                plan.Observe(action, cursor);
+            }
+        }
+        plan.Finish();
+        return plan;
+    }
+
+    private void Observe(RobotAction action, RobotCursor cursor)
+    {
+        switch (action)
+        {
+            case ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion:
+                AddOnce(_speeds, _speedNames, Math.Round(cursor.Speed, 3));
+                AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3));
+                if (cursor.Tool is Tool tool)
+                {
+                    AddTool(tool);
+                }
+                break;
+            case ActionCustomCode { IsDeclaration: true } code:
+                CustomDeclarations.Add(code.Statement);
+                break;
+            case ActionIODigital or ActionIOAnalog:
+                UsesIO = true;
+                break;
+        }
+    }
+
+    private void AddTool(Tool tool)
+    {
+        if (!_toolNames.ContainsKey(tool))
+        {
+            _toolNames[tool] = "";
+            _tools.Add(tool);
+        }
+    }
+
+    private static void AddOnce(List<double> values, Dictionary<double, string> seen, double value)
+    {
+        if ((values.Count == 0 || values[^1] != value) && seen.TryAdd(value, ""))
+        {
+            values.Add(value);
+        }
+    }
+
+    /// <summary>A number for a generated name: fixed-point, up to 3 decimals, '.' as '_' (100 → "100", 2.5 → "2_5").</summary>
+    private static string NameNumber(double value) => value.ToString("0.###", Num.Inv).Replace('.', '_');
+
+    private void Finish()
+    {
+        foreach (double zone in _zones)
+        {
+            _zoneNames[zone] = ZoneName(zone, out bool predefined);
+            if (!predefined)
+            {
+                DataLines.Add($"  CONST zonedata {_zoneNames[zone]} := {RapidText.ZoneData(zone)};");
+            }
+        }
+        var speedLines = new List<string>(_speeds.Count);
+        foreach (double speed in _speeds)
+        {
+            string name = Names.Claim("vel" + NameNumber(speed), "vel");
+            _speedNames[speed] = name;
+            speedLines.Add($"  CONST speeddata {name} := {RapidText.SpeedData(speed)};");
+        }
+        var toolLines = new List<string>(_tools.Count);
+        foreach (Tool tool in _tools)
+        {
+            string name = Names.Claim(RapidNames.LooksLikeTarget(tool.Name) ? "tool_" + tool.Name : tool.Name, "tool_");
+            _toolNames[tool] = name;
+            toolLines.Add($"  PERS tooldata {name} := {RapidText.ToolData(tool)};");
+        }
+        DataLines.InsertRange(0, speedLines);
+        DataLines.InsertRange(0, toolLines);
+    }
+
+    private string ZoneName(double zone, out bool predefined)
+    {
+        predefined = true;
+        if (zone < 0.001)
+        {
+            return "fine";
+        }
+        if (Math.Abs(zone - Math.Round(zone)) < 0.001 && Array.IndexOf(PredefinedZones, (int)Math.Round(zone)) >= 0)
+        {
+            return "z" + Num.I((long)Math.Round(zone));
+        }
+        predefined = false;
+        return Names.Claim("zone" + NameNumber(zone), "zone");
+    }
+
+    /// <summary>The speeddata name for the cursor's speed.</summary>
+    internal string SpeedName(double speed)
+    {
+        double key = Math.Round(speed, 3);
+        if (key != _lastSpeed)
+        {
+            _lastSpeed = key;
+            _lastSpeedName = _speedNames[key];
+        }
+        return _lastSpeedName;
+    }
+
+    /// <summary>The zonedata name for the cursor's precision (<c>fine</c> for 0).</summary>
+    internal string ZoneName(double precision)
+    {
+        double key = Math.Round(precision, 3);
+        if (key != _lastZone)
+        {
+            _lastZone = key;
+            _lastZoneName = _zoneNames[key];
+        }
+        return _lastZoneName;
+    }
+
+    /// <summary>The tooldata name for the tool in use (<c>Tool0</c>, the flange, when none).</summary>
+    internal string ToolName(Tool? tool)
+    {
+        if (tool is null)
+        {
+            return "Tool0";
+        }
+        if (!ReferenceEquals(tool, _lastTool))
+        {
+            _lastTool = tool;
+            _lastToolName = _toolNames[tool];
+        }
+        return _lastToolName;
+    }
+
+    /// <summary>The declared name of a tool, or null when no motion uses it (it is then not declared).</summary>
+    internal string? DeclaredToolName(Tool tool) => _toolNames.TryGetValue(tool, out string? name) ? name : null;
+}

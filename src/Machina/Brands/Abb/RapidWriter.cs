@@ -1,0 +1,257 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// Writes the RAPID lines of each action from the cursor state after it: motions with inline or declared targets, settings
+/// that RAPID needs as instructions (WorldAccLim), messages, waits, IO, comments, and comment lines plus warnings for
+/// what an ABB robot cannot do.
+/// </summary>
+internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
+{
+    private const string Indent = "    ";
+    private const double MinWorldAcc = 0.1;
+
+    private readonly StringBuilder _sb = new(256);
+    private readonly bool _inline = job.Options.InlineTargets;
+    private readonly bool _human = job.Options.HumanComments;
+    private int _target;
+
+    /// <summary>Second pass (declared targets only): one <c>CONST robtarget|jointtarget targetN</c> per target; returns how many.</summary>
+    internal int DeclareTargets()
+    {
+        RobotCursor cursor = job.NewCursor();
+        int count = 0;
+        foreach (RobotAction action in job.Actions)
+        {
+            if (cursor.TryApply(action) is not null)
+            {
+                continue;
+            }
+            switch (action)
+            {
+                case ActionTranslation or ActionRotation or ActionTransformation:
+                    DeclareRobTarget(count++, cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                    break;
+                case ActionArcMotion:
+                    DeclareRobTarget(count++, cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor);
+                    DeclareRobTarget(count++, cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                    break;
+                case ActionAxes:
+                    _sb.Clear().Append("  CONST jointtarget target").Append(count++).Append(" := ")
+                       .JointTarget(cursor.Axes!.Value, cursor.ExternalAxesJoints).Append(';');
+                    sink.Add(_sb.ToString());
+                    break;
+            }
+        }
+        return count;
+    }
+
+    private void DeclareRobTarget(int n, Vector position, Rotation rotation, RobotCursor cursor)
+    {
+        _sb.Clear().Append("  CONST robtarget target").Append(n).Append(" := ")
+           .RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle).Append(';');
+        sink.Add(_sb.ToString());
+    }
+
+    /// <summary>
+    /// The acceleration limit at the start of main, so that no limit left by an earlier program stays in force:
+    /// off for Machina's built-in default (the controller's own acceleration), else the start state's value.
+    /// </summary>
+    internal string StartAcceleration()
+    {
+        double acc = job.NewCursor().Acceleration;
+        if (acc == Settings.Default.Acceleration || acc < 0.001)
+        {
+            return Indent + "WorldAccLim \\Off;";
+        }
+        return Indent + "WorldAccLim \\On := " + Num.F(Math.Max(acc / 1000, MinWorldAcc), 6) + ";";
+    }
+
+    /// <summary>Final pass: the instruction lines of every action, in order (refused actions are reported as warnings).</summary>
+    internal void WriteInstructions() => job.Replay(Write);
+
+    private void Write(RobotAction action, RobotCursor cursor)
+    {
+        switch (action)
+        {
+            case ActionTranslation or ActionRotation or ActionTransformation:
+                _sb.Clear().Append(Indent).Append(cursor.MotionType == MotionType.Joint ? "MoveJ " : "MoveL ");
+                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                Code(action, MoveTail(cursor));
+                break;
+            case ActionArcMotion arc:
+                if (ArcOrientation.ThroughIsIgnored(arc, cursor))
+                {
+                    job.Warn(action, "MoveC turns the tool evenly from the start to the end orientation; the orientation asked for at the through point is not used.");
+                }
+                _sb.Clear().Append(Indent).Append("MoveC ");
+                RobTargetOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor);
+                _sb.Append(", ");
+                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor);
+                Code(action, MoveTail(cursor));
+                break;
+            case ActionAxes:
+                _sb.Clear().Append(Indent).Append("MoveAbsJ ");
+                if (_inline)
+                {
+                    _sb.JointTarget(cursor.Axes!.Value, cursor.ExternalAxesJoints);
+                }
+                else
+                {
+                    _sb.Append("target").Append(_target++);
+                }
+                Code(action, MoveTail(cursor));
+                break;
+            case ActionAcceleration:
+                Code(action, AccelerationLine(action, cursor.Acceleration));
+                break;
+            case ActionPushPop { Push: false } when cursor.SettingsBeforeLastPop is Settings before
+                                                   && Math.Abs(before.Acceleration - cursor.Acceleration) >= 0.001:
+                Code(action, AccelerationLine(action, cursor.Acceleration));
+                break;
+            case ActionMessage m:
+                WriteMessage(m);
+                break;
+            case ActionWait w:
+                Code(action, Indent + "WaitTime " + Num.G(w.Millis / 1000.0) + ";");
+                break;
+            case ActionComment c:
+                sink.Add(Indent + "! " + RapidText.CommentText(c.Comment));
+                break;
+            case ActionDefineTool d:
+                Code(action, Indent + "! Tool \"" + d.Tool.Name + "\" defined");
+                break;
+            case ActionAttachTool:
+                WriteAttach(action, cursor.Tool!);
+                break;
+            case ActionDetachTool:
+                Code(action, Indent + "! All tools detached");
+                break;
+            case ActionIODigital io:
+                WriteSignal(action, io.PinName, "SetDO ", io.On ? "1" : "0");
+                break;
+            case ActionIOAnalog io:
+                WriteSignal(action, io.PinName, "SetAO ", new StringBuilder(16).AppendFixed(io.Value, 6).ToString());
+                break;
+            case ActionCustomCode { IsDeclaration: false } code:
+                Code(action, Indent + code.Statement);
+                break;
+            case ActionTemperature:
+                Unsupported(action, "an ABB robot has no heaters to control; the temperature was not set.");
+                break;
+            case ActionExtrusion or ActionExtrusionRate:
+                Unsupported(action, "an ABB robot has no extruder; use CustomCode or IO to drive one.");
+                break;
+            case ActionInitialization:
+                sink.Add(Indent + "! " + action.Describe() + " (nothing to do on an ABB robot)");
+                break;
+            case ActionExternalAxis or ActionArmAngle:
+                WarnArmAngleConflict(action, cursor);
+                NoCode(action);
+                break;
+            default:
+                NoCode(action);
+                break;
+        }
+    }
+
+    private void RobTargetOrName(Vector position, Rotation rotation, RobotCursor cursor)
+    {
+        if (_inline)
+        {
+            _sb.RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle);
+        }
+        else
+        {
+            _sb.Append("target").Append(_target++);
+        }
+    }
+
+    private string MoveTail(RobotCursor cursor) =>
+        _sb.Append(", ").Append(plan.SpeedName(cursor.Speed)).Append(", ").Append(plan.ZoneName(cursor.Precision))
+           .Append(", ").Append(plan.ToolName(cursor.Tool)).Append("\\WObj:=WObj0;").ToString();
+
+    private string AccelerationLine(RobotAction action, double acceleration)
+    {
+        if (acceleration < 0.001)
+        {
+            return Indent + "WorldAccLim \\Off;";
+        }
+        double perSecond = acceleration / 1000;
+        if (Math.Round(perSecond, 6) < MinWorldAcc)
+        {
+            job.Warn(action, $"ABB controllers accept world acceleration limits from {Num.G(MinWorldAcc)} m/s^2 (100 mm/s^2); " +
+                             $"{Num.G(acceleration)} mm/s^2 was raised to that minimum.");
+            perSecond = MinWorldAcc;
+        }
+        return Indent + "WorldAccLim \\On := " + Num.F(perSecond, 6) + ";";
+    }
+
+    private void WriteMessage(ActionMessage m)
+    {
+        List<string> literals = RapidText.StringLiterals(m.Message, out bool split, out bool changed);
+        if (split)
+        {
+            job.Warn(m, $"RAPID strings hold at most {RapidText.MaxStringLength} characters; the message was split over several TPWrite lines.");
+        }
+        if (changed)
+        {
+            job.Warn(m, "characters that are not printable ASCII were replaced by '?' in the message.");
+        }
+        foreach (string literal in literals)
+        {
+            Code(m, Indent + "TPWrite " + literal + ";");
+        }
+    }
+
+    private void WriteAttach(RobotAction action, Tool tool)
+    {
+        string? declared = plan.DeclaredToolName(tool);
+        string name = declared ?? tool.Name;
+        if (declared is not null && declared != tool.Name)
+        {
+            job.Warn(action, $"tool \"{tool.Name}\" is declared as \"{declared}\" in RAPID (its name is taken, reserved or too long).");
+        }
+        if (declared is not null && tool.Weight < RapidText.MinToolMass)
+        {
+            job.Warn(action, $"RAPID needs a tool mass above 0; tool \"{tool.Name}\" is declared with {Num.G(RapidText.MinToolMass)} kg.");
+        }
+        Code(action, Indent + "! Tool \"" + name + "\" attached");
+    }
+
+    private void WriteSignal(RobotAction action, string pin, string instruction, string value)
+    {
+        if (!RapidNames.IsValid(pin))
+        {
+            Unsupported(action, $"\"{pin}\" is not a RAPID signal name; ABB signals are named in the controller's IO configuration (e.g. DO_1).");
+            return;
+        }
+        Code(action, Indent + instruction + pin + ", " + value + ";");
+    }
+
+    private void WarnArmAngleConflict(RobotAction action, RobotCursor cursor)
+    {
+        if (cursor.ArmAngle is not null && cursor.ExternalAxesCartesian?[1] is not null)
+        {
+            job.Warn(action, "the arm angle and cartesian external axis 1 share the same robtarget field (eax_a); the arm angle is written.");
+        }
+    }
+
+    private void Unsupported(RobotAction action, string reason)
+    {
+        job.Warn(action, reason);
+        sink.Add(Indent + "! NOT SUPPORTED ON ABB: " + RapidText.CommentText(action.Describe()));
+    }
+
+    private void Code(RobotAction action, string line) =>
+        sink.Add(_human ? line + "  ! [" + RapidText.CommentText(action.Describe()) + "]" : line);
+
+    private void NoCode(RobotAction action)
+    {
+        if (_human)
+        {
+            sink.Add(Indent + "! [" + RapidText.CommentText(action.Describe()) + "]");
+        }
+    }
+}

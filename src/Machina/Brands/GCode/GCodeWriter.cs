@@ -1,0 +1,373 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// Writes one G-code file from the state after each action (never re-deriving it). Keeps only what the printer is known to
+/// hold: the feed rate last sent and the filament length at the last extruder reset (<c>G92 E0</c>).
+/// </summary>
+internal sealed class GCodeWriter
+{
+    /// <summary>Largest distance, mm, between an arc and the straight segments that replace it.</summary>
+    internal const double ArcTolerance = 0.01;
+
+    private readonly GCodeCompiler _compiler;
+    private readonly GCodeFlavor _flavor;
+    private readonly CompileJob _job;
+    private readonly ProgramOutput _output;
+    private readonly bool _human;
+    private readonly StringBuilder _sb = new(96);
+    private LineSink _file = null!;
+    private double _extrusionOrigin;
+    private double _feed = double.NaN;
+
+    internal GCodeWriter(GCodeCompiler compiler, CompileJob job, ProgramOutput output)
+    {
+        _compiler = compiler;
+        _flavor = compiler.Flavor;
+        _job = job;
+        _output = output;
+        _human = job.Options.HumanComments;
+    }
+
+    /// <summary>Writes the whole file.</summary>
+    internal void Write()
+    {
+        // The preamble sets the extruder position to 0 at the filament length the program starts with.
+        _extrusionOrigin = _job.NewCursor().ExtrudedLength;
+        _file = _output.OpenFile(_job.ProgramName, "gcode", RobotProgram.Ascii, _compiler.CommentPrefix);
+        _file.AddRange(_compiler.Header(_job));
+        _file.Add("");
+        _file.AddRange(_flavor.Preamble);
+        IReadOnlyList<RobotAction> actions = _job.Actions;
+        for (int i = 0; i < actions.Count; i++)
+        {
+            if (actions[i] is ActionCustomCode { IsDeclaration: true } custom)
+            {
+                _file.Add(custom.Statement);
+            }
+        }
+        _file.Add("");
+        _job.Replay(EmitAction);
+    }
+
+    private void EmitAction(RobotAction action, RobotCursor c)
+    {
+        switch (action)
+        {
+            case ActionSpeed:
+                if (_flavor.FeedOnMotionLine)
+                {
+                    NoCode(action);
+                }
+                else
+                {
+                    _feed = c.Speed * 60;
+                    Code("G1 F" + Num.F(_feed, 3), action);
+                }
+                break;
+            case ActionAcceleration:
+                EmitAcceleration(action, c.Acceleration);
+                break;
+            case ActionPushPop { Push: false }:
+                EmitRestoredSettings(action, c);
+                break;
+            case ActionTranslation or ActionTransformation:
+                EmitLinear(action, c);
+                break;
+            case ActionArcMotion:
+                EmitArc(action, c);
+                break;
+            case ActionWait wait:
+                Code("G4 P" + Num.I(wait.Millis), action);
+                break;
+            case ActionMessage message:
+                Code(_flavor.MessageLine(GCodeText.Message(message.Message)), action);
+                break;
+            case ActionComment comment:
+                _file.Add("; " + GCodeText.Comment(comment.Comment));
+                break;
+            case ActionCustomCode custom:
+                if (custom.IsDeclaration)
+                {
+                    NoCode(action);
+                }
+                else
+                {
+                    Code(custom.Statement, action);
+                }
+                break;
+            case ActionIODigital digital:
+                EmitOutput(action, digital.PinName, digital.IsToolPin, digital.On ? _flavor.DigitalOnValue : "0");
+                break;
+            case ActionIOAnalog analog:
+                EmitAnalog(action, analog);
+                break;
+            case ActionTemperature temperature:
+                EmitTemperature(action, temperature, c);
+                break;
+            case ActionInitialization init:
+                EmitSequence(action, init.Initialize, c);
+                break;
+            case ActionMotionMode { MotionType: MotionType.Joint }:
+                NotApplicable(action, "a 3D printer always moves in straight lines; joint motion does not apply.");
+                break;
+            case ActionPushPop or ActionMotionMode or ActionCoordinates or ActionExtrusion or ActionExtrusionRate or ActionDefineTool:
+                NoCode(action);
+                break;
+            case ActionRotation:
+                NotApplicable(action, "a 3D printer cannot turn its tool.");
+                break;
+            case ActionAxes:
+                NotApplicable(action, "a 3D printer has no robot joints to move.");
+                break;
+            case ActionPrecision:
+                NotApplicable(action, "a 3D printer follows its path exactly and has no blend radius.");
+                break;
+            case ActionAttachTool or ActionDetachTool:
+                NotApplicable(action, "a 3D printer has no tool frame; motions keep the tool-tip positions Machina computed.");
+                break;
+            case ActionExternalAxis or ActionArmAngle:
+                NotApplicable(action, "a 3D printer has no external axes or arm angle.");
+                break;
+            default:
+                NotApplicable(action, "the G-code compiler does not know this action.");
+                break;
+        }
+    }
+
+    private void EmitAcceleration(RobotAction action, double acceleration)
+    {
+        if (!_flavor.SupportsAcceleration)
+        {
+            NotApplicable(action, "this printer's acceleration is set in its firmware.");
+        }
+        else if (acceleration == 0)
+        {
+            Error(action, "acceleration 0 means the device's default, which G-code cannot restore; the printer keeps its current acceleration.");
+        }
+        else
+        {
+            string a = Num.F(acceleration, 3);
+            Code("M204 P" + a + " T" + a, action);
+        }
+    }
+
+    private void EmitRestoredSettings(RobotAction action, RobotCursor c)
+    {
+        bool wrote = false;
+        if (c.SettingsBeforeLastPop is Settings before)
+        {
+            if (before.Speed != c.Speed && !_flavor.FeedOnMotionLine)
+            {
+                _feed = c.Speed * 60;
+                Code("G1 F" + Num.F(_feed, 3), action);
+                wrote = true;
+            }
+            if (before.Acceleration != c.Acceleration && _flavor.SupportsAcceleration)
+            {
+                EmitAcceleration(action, c.Acceleration);
+                wrote = true;
+            }
+        }
+        if (!wrote)
+        {
+            NoCode(action);
+        }
+    }
+
+    private void EmitLinear(RobotAction action, RobotCursor c)
+    {
+        if (c.Position is not Vector position)
+        {
+            Error(action, "the target position is not known, so no motion can be written.");
+            return;
+        }
+        WarnIfTurned(action, c);
+        bool extrude = c.IsExtruding;
+        if (extrude && c.LastPathLength is null)
+        {
+            Warning(action, "this motion does not extrude: its length is unknown because the position before it was unknown.");
+            extrude = false;
+        }
+        double? e = extrude ? ExtruderPosition(c.PrevExtrudedLength, c.ExtrudedLength) : null;
+        Motion(extrude ? "G1" : _flavor.TravelCode, position, e, c.Speed, action);
+    }
+
+    private void EmitArc(RobotAction action, RobotCursor c)
+    {
+        if (c.PrevPosition is not Vector start || c.Position is not Vector end || c.ArcThrough is not Vector through
+            || !GCodeArc.TryCreate(start, through, end, out GCodeArc arc))
+        {
+            Error(action, "the arc's points are not known or do not define a circle, so no motion can be written.");
+            return;
+        }
+        WarnIfTurned(action, c);
+        bool extrude = c.IsExtruding;
+        string code = extrude ? "G1" : _flavor.TravelCode;
+        double before = c.PrevExtrudedLength, total = c.ExtrudedLength - before;
+        Vector normal = arc.Normal;
+        if (_flavor.SupportsArcs && Math.Abs(normal.Z) > 1 - 1e-9 && Math.Abs(end.Z - start.Z) < 1e-9)
+        {
+            // Seen from above, counter-clockwise is G3 and clockwise G2; I and J locate the centre from the start.
+            double? e = extrude ? ExtruderPosition(before, c.ExtrudedLength) : null;
+            Vector toCenter = arc.Center - start;
+            Motion(normal.Z > 0 ? "G3" : "G2", end, e, c.Speed, action, toCenter);
+            return;
+        }
+        int segments = arc.SegmentCount(ArcTolerance);
+        for (int k = 1; k <= segments; k++)
+        {
+            double fraction = (double)k / segments;
+            Vector point = k == segments ? end : arc.PointAt(fraction);
+            double? e = extrude ? ExtruderPosition(before + total * (k - 1) / segments, before + total * fraction) : null;
+            Motion(code, point, e, c.Speed, k == segments ? action : null);
+        }
+    }
+
+    /// <summary>The E value for a motion that brings the filament length from <paramref name="before"/> to <paramref name="after"/>, resetting the extruder first when the flavour asks.</summary>
+    private double ExtruderPosition(double before, double after)
+    {
+        double e = after - _extrusionOrigin;
+        double sent = before - _extrusionOrigin;
+        if (e > _flavor.ExtrusionResetLimit && sent > 0)
+        {
+            _file.Add("; Homing extrusion length after " + FixedPoint.Format(sent, 5) + " mm (" + Num.G(_flavor.ExtrusionResetLimit) + " mm limit)");
+            _file.Add("G92 E0.0000");
+            _extrusionOrigin = before;
+            e = after - _extrusionOrigin;
+        }
+        return e;
+    }
+
+    private void Motion(string code, Vector point, double? e, double speed, RobotAction? action, Vector? arcCenterOffset = null)
+    {
+        double feed = speed * 60;
+        if (!_flavor.FeedOnMotionLine && feed != _feed)
+        {
+            _file.Add("G1 F" + Num.F(feed, 3));
+            _feed = feed;
+        }
+        StringBuilder sb = _sb.Clear();
+        FixedPoint.Append(sb.Append(code).Append(" X"), point.X, 3);
+        FixedPoint.Append(sb.Append(" Y"), point.Y, 3);
+        FixedPoint.Append(sb.Append(" Z"), point.Z, 3);
+        if (arcCenterOffset is Vector ij)
+        {
+            FixedPoint.Append(sb.Append(" I"), ij.X, 3);
+            FixedPoint.Append(sb.Append(" J"), ij.Y, 3);
+        }
+        if (e is double extruder)
+        {
+            FixedPoint.Append(sb.Append(" E"), extruder, 5);
+        }
+        if (_flavor.FeedOnMotionLine && feed != _feed)
+        {
+            FixedPoint.Append(sb.Append(" F"), feed, 3);
+            _feed = feed;
+        }
+        if (action is not null && _human)
+        {
+            sb.Append("  ; [").Append(GCodeText.Comment(action.Describe())).Append(']');
+        }
+        _file.Add(sb.ToString());
+    }
+
+    private void EmitOutput(RobotAction action, string pin, bool toolPin, string value)
+    {
+        if (toolPin)
+        {
+            Error(action, "a 3D printer has no separate tool outputs.");
+        }
+        else if (!IOPin.TryNumber(pin, out int number))
+        {
+            Error(action, $"G-code addresses outputs by pin number, and \"{pin}\" is not a number.");
+        }
+        else
+        {
+            Code("M42 P" + Num.I(number) + " S" + value, action);
+        }
+    }
+
+    private void EmitAnalog(RobotAction action, ActionIOAnalog analog)
+    {
+        if (analog.Value < 0 || analog.Value > 255)
+        {
+            Error(action, $"printer outputs take values from 0 to 255, and {Num.G(analog.Value)} is outside that range.");
+            return;
+        }
+        double rounded = Math.Round(analog.Value, MidpointRounding.AwayFromZero);
+        if (rounded != analog.Value && !analog.IsToolPin && analog.IsDigit)
+        {
+            Warning(action, $"printer outputs take whole values from 0 to 255; {Num.G(analog.Value)} is rounded to {Num.G(rounded)}.");
+        }
+        EmitOutput(action, analog.PinName, analog.IsToolPin, Num.G(rounded));
+    }
+
+    private void EmitTemperature(RobotAction action, ActionTemperature temperature, RobotCursor c)
+    {
+        string code = temperature.Part switch
+        {
+            RobotPartType.Extruder => temperature.Wait ? "M109" : "M104",
+            RobotPartType.Bed => temperature.Wait ? "M190" : "M140",
+            _ => temperature.Wait ? "M191" : "M141",
+        };
+        Code(code + " S" + Num.F(c.Temperatures[(int)temperature.Part], 0), action);
+    }
+
+    private void EmitSequence(RobotAction action, bool start, RobotCursor c)
+    {
+        _file.AddRange(start ? _flavor.StartSequence : _flavor.EndSequence);
+        if (start || _flavor.EndResetsExtruder)
+        {
+            _extrusionOrigin = c.ExtrudedLength;
+        }
+        // The sequences may change the feed rate; send it again before the next motion.
+        _feed = double.NaN;
+        if (start && !_flavor.FeedOnMotionLine)
+        {
+            _feed = c.Speed * 60;
+            _file.Add("G1 F" + Num.F(_feed, 3));
+        }
+        NoCode(action);
+    }
+
+    private void WarnIfTurned(RobotAction action, RobotCursor c)
+    {
+        if (c.PrevRotation is Rotation before && c.Rotation is Rotation after && !after.IsSimilar(before, 1e-6))
+        {
+            Warning(action, "a 3D printer cannot turn its tool; the change of orientation is ignored.");
+        }
+    }
+
+    private void Code(string line, RobotAction action)
+    {
+        _file.Add(_human ? line + "  ; [" + GCodeText.Comment(action.Describe()) + "]" : line);
+    }
+
+    private void NoCode(RobotAction action)
+    {
+        if (_human)
+        {
+            _file.Add("; [" + GCodeText.Comment(action.Describe()) + "]");
+        }
+    }
+
+    private void Warning(RobotAction action, string reason)
+    {
+        _job.Warn(action, reason);
+        _file.Add("; WARNING: " + reason);
+    }
+
+    private void NotApplicable(RobotAction action, string reason)
+    {
+        _job.Warn(action, reason);
+        Code("; ACTION \"" + GCodeText.Comment(action.Describe()) + "\" NOT APPLICABLE TO THIS DEVICE", action);
+    }
+
+    private void Error(RobotAction action, string reason)
+    {
+        _job.Warn(action, reason);
+        Code("; ERROR on \"" + GCodeText.Comment(action.Describe()) + "\": " + reason, action);
+    }
+}

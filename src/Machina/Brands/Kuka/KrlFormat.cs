@@ -1,0 +1,96 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// Machina values in KRL units and text: positions in mm, orientations as A, B, C Euler angles in degrees, speeds in m/s,
+/// accelerations in m/s², times in seconds. Numbers are invariant, rounded, never in exponent form and never "-0".
+/// </summary>
+internal static class KrlFormat
+{
+    /// <summary>mm and degrees: 3 decimals.</summary>
+    internal static string Mm(double value) => FixedPoint.Format(value, 3);
+
+    /// <summary>m/s, m/s² and seconds: 6 decimals.</summary>
+    internal static string Fine(double value) => FixedPoint.Format(value, 6);
+
+    /// <summary>Speed in mm/s as KRL's <c>$VEL.CP</c> value in m/s.</summary>
+    internal static string SpeedMetresPerSecond(double mmPerSecond) => Fine(mmPerSecond / 1000);
+
+    /// <summary>Acceleration in mm/s² as KRL's <c>$ACC.CP</c> value in m/s².</summary>
+    internal static string AccelerationMetresPerSecond2(double mmPerSecond2) => Fine(mmPerSecond2 / 1000);
+
+    /// <summary>Milliseconds as KRL's <c>WAIT SEC</c> value in seconds.</summary>
+    internal static string Seconds(double milliseconds) => Fine(milliseconds / 1000);
+
+    /// <summary>
+    /// KUKA's A, B, C of an orientation: intrinsic Z-Y′-X″ Euler angles in degrees, A about Z, B about the new Y (in [−90°, 90°]),
+    /// C about the new X. Machina's and KUKA's frames agree (tool direction = Z), so no extra turn is applied.
+    /// </summary>
+    internal static (double A, double B, double C) Abc(Rotation rotation)
+    {
+        YawPitchRoll ypr = rotation.ToYawPitchRoll();
+        return (ypr.Yaw, ypr.Pitch, ypr.Roll);
+    }
+
+    /// <summary>An angle in degrees with 3 decimals; −180 is written as 180 (the same angle).</summary>
+    internal static string Angle(double degrees) => AppendAngle(new StringBuilder(12), degrees).ToString();
+
+    private static StringBuilder AppendAngle(StringBuilder sb, double degrees) =>
+        FixedPoint.Append(sb, Math.Round(degrees * 1000) == -180_000 ? 180 : degrees, 3);
+
+    private static StringBuilder AppendMm(StringBuilder sb, double value) => FixedPoint.Append(sb, value, 3);
+
+    /// <summary>Appends <c>X …, Y …, Z …, A …, B …, C …</c> and <c>, E1 …</c> for each external axis that has a value.</summary>
+    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external)
+    {
+        (double a, double b, double c) = Abc(rotation);
+        AppendMm(sb.Append("X "), position.X);
+        AppendMm(sb.Append(", Y "), position.Y);
+        AppendMm(sb.Append(", Z "), position.Z);
+        AppendAngle(sb.Append(", A "), a);
+        AppendAngle(sb.Append(", B "), b);
+        AppendAngle(sb.Append(", C "), c);
+        AppendExternal(sb, external);
+    }
+
+    /// <summary>Appends <c>A1 …, A2 …, …, A6 …</c> (degrees, as given) and <c>, E1 …</c> for each external axis that has a value.</summary>
+    internal static void AppendAxes(StringBuilder sb, Joints joints, ExternalAxes? external)
+    {
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            sb.Append(i == 0 ? "A" : ", A").Append(AxisDigits[i]).Append(' ');
+            AppendMm(sb, joints[i]);
+        }
+        AppendExternal(sb, external);
+    }
+
+    private static readonly char[] AxisDigits = ['1', '2', '3', '4', '5', '6'];
+
+    private static void AppendExternal(StringBuilder sb, ExternalAxes? external)
+    {
+        if (external is not ExternalAxes ext)
+        {
+            return;
+        }
+        for (int i = 1; i <= ExternalAxes.Count; i++)
+        {
+            if (ext[i] is double v)
+            {
+                AppendMm(sb.Append(", E").Append(AxisDigits[i - 1]).Append(' '), v);
+            }
+        }
+    }
+
+    /// <summary>True when at least one external axis has a value.</summary>
+    internal static bool HasExternal(ExternalAxes? external) => external is ExternalAxes e && !e.IsEmpty;
+
+    /// <summary>A tool as a KRL FRAME: <c>{X …, Y …, Z …, A …, B …, C …}</c>, the tool tip and tip frame relative to the flange.</summary>
+    internal static string ToolFrame(Tool tool)
+    {
+        var sb = new StringBuilder(64);
+        sb.Append('{');
+        AppendPose(sb, tool.TcpPosition, tool.TcpOrientation, null);
+        return sb.Append('}').ToString();
+    }
+}

@@ -1,0 +1,425 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// Writes one KRL program from the state after each action (never re-deriving it): the <c>.src</c> file, and the <c>.dat</c> file
+/// when targets are declared instead of inline. One writer per compile; it keeps only small per-program counters.
+/// </summary>
+internal sealed class KrlWriter
+{
+    private const string Indent = "  ";
+
+    /// <summary>Variable that keeps the controller's default CP acceleration, for Machina's "acceleration 0 = controller default".</summary>
+    internal const string AccDefaultVariable = "machina_acc_cp";
+
+    private readonly Compiler _compiler;
+    private readonly CompileJob _job;
+    private readonly ProgramOutput _output;
+    private readonly bool _human;
+    private readonly bool _inline;
+    private readonly StringBuilder _line = new(160);
+    private readonly StringBuilder _declaration = new(160);
+    private LineSink _src = null!;
+    private LineSink? _dat;
+    private int _targetCount;
+    private bool _ptpSpeedWarned;
+    private bool _usesAccDefault;
+
+    internal KrlWriter(Compiler compiler, CompileJob job, ProgramOutput output)
+    {
+        _compiler = compiler;
+        _job = job;
+        _output = output;
+        _human = job.Options.HumanComments;
+        _inline = job.Options.InlineTargets;
+    }
+
+    /// <summary>Writes the whole program.</summary>
+    internal void Write()
+    {
+        string module = KrlText.ModuleName(_job.ProgramName);
+        RobotCursor start = _job.NewCursor();
+        _usesAccDefault = start.Acceleration == 0 || ContainsAcceleration(_job.Actions);
+        _src = _output.OpenFile(module, "src", RobotProgram.Ascii, _compiler.CommentPrefix);
+        if (!_inline)
+        {
+            _dat = _output.OpenFile(module, "dat", RobotProgram.Ascii, _compiler.CommentPrefix);
+            WriteDatStart(module);
+        }
+        WriteSrcStart(module, start);
+        _job.Replay(EmitAction);
+        _src.Add("");
+        _src.Add("END");
+        if (_dat is not null)
+        {
+            _dat.Add("");
+            _dat.Add("ENDDAT");
+        }
+    }
+
+    private static bool ContainsAcceleration(IReadOnlyList<RobotAction> actions)
+    {
+        for (int i = 0; i < actions.Count; i++)
+        {
+            if (actions[i] is ActionAcceleration)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void WriteHeader(LineSink file, string module)
+    {
+        file.AddRange(_compiler.Header(_job));
+        if (module != _job.ProgramName)
+        {
+            file.Add($"; KRL module name \"{module}\": the program name \"{_job.ProgramName}\" adapted to KRL's naming rules (24 characters, no keywords).");
+        }
+    }
+
+    private void WriteDatStart(string module)
+    {
+        LineSink dat = _dat!;
+        dat.Add("&ACCESS RVP");
+        dat.Add("&REL 1");
+        dat.Add("DEFDAT " + module);
+        WriteHeader(dat, module);
+        dat.Add("");
+    }
+
+    private void WriteSrcStart(string module, RobotCursor start)
+    {
+        LineSink src = _src;
+        src.Add("&ACCESS RVP");
+        src.Add("&REL 1");
+        src.Add(@"&PARAM TEMPLATE = C:\KRC\Roboter\Template\vorgabe");
+        src.Add("&PARAM EDITMASK = *");
+        src.Add("DEF " + module + "( )");
+        WriteHeader(src, module);
+        src.Add("");
+
+        bool declared = false;
+        IReadOnlyList<RobotAction> actions = _job.Actions;
+        for (int i = 0; i < actions.Count; i++)
+        {
+            if (actions[i] is ActionCustomCode { IsDeclaration: true } custom)
+            {
+                src.Add(Indent + custom.Statement);
+                declared = true;
+            }
+        }
+        if (_usesAccDefault)
+        {
+            src.Add(Indent + "DECL REAL " + AccDefaultVariable);
+            declared = true;
+        }
+        if (declared)
+        {
+            src.Add("");
+        }
+
+        src.Add(";FOLD INI");
+        src.Add("  ;FOLD BASISTECH INI");
+        src.Add("    GLOBAL INTERRUPT DECL 3 WHEN $STOPMESS==TRUE DO IR_STOPM ( )");
+        src.Add("    INTERRUPT ON 3");
+        src.Add("    BAS (#INITMOV,0 )");
+        src.Add("  ;ENDFOLD (BASISTECH INI)");
+        src.Add(";ENDFOLD (INI)");
+        src.Add("");
+        if (_human)
+        {
+            src.Add(Indent + "; BCO run on the spot, then Machina's starting frames and settings");
+        }
+        src.Add(Indent + "PTP $AXIS_ACT");
+        if (_usesAccDefault)
+        {
+            src.Add(Indent + AccDefaultVariable + " = $ACC.CP");
+        }
+        src.Add(Indent + "$BASE = $NULLFRAME");
+        src.Add(Indent + "$TOOL = " + (start.Tool is Tool tool ? KrlFormat.ToolFrame(tool) : "$NULLFRAME"));
+        src.Add(Indent + "$ADVANCE = 3");
+        src.Add(Indent + VelocityLine(start.Speed));
+        src.Add(Indent + AccelerationLine(start.Acceleration));
+        src.Add(Indent + PrecisionLine(start.Precision));
+        src.Add("");
+    }
+
+    private static string VelocityLine(double speed) => "$VEL.CP = " + KrlFormat.SpeedMetresPerSecond(speed);
+
+    private static string AccelerationLine(double acceleration) =>
+        "$ACC.CP = " + (acceleration == 0 ? AccDefaultVariable : KrlFormat.AccelerationMetresPerSecond2(acceleration));
+
+    private static string PrecisionLine(double precision) => "$APO.CDIS = " + KrlFormat.Mm(precision);
+
+    private void EmitAction(RobotAction action, RobotCursor c)
+    {
+        switch (action)
+        {
+            case ActionSpeed:
+                Code(VelocityLine(c.Speed), action);
+                break;
+            case ActionAcceleration:
+                Code(AccelerationLine(c.Acceleration), action);
+                break;
+            case ActionPrecision:
+                Code(PrecisionLine(c.Precision), action);
+                break;
+            case ActionPushPop { Push: false }:
+                EmitRestoredSettings(action, c);
+                break;
+            case ActionTranslation or ActionRotation or ActionTransformation:
+                EmitCartesian(action, c);
+                break;
+            case ActionArcMotion:
+                EmitArc(action, c);
+                break;
+            case ActionAxes:
+                EmitAxes(action, c);
+                break;
+            case ActionWait wait:
+                Code("WAIT SEC " + KrlFormat.Seconds(wait.Millis), action);
+                break;
+            case ActionMessage message:
+                _job.Warn(action, "KRL has no plain instruction to show a message; it is written as a comment.");
+                Code("; MESSAGE: " + KrlText.Comment(message.Message), action);
+                break;
+            case ActionComment comment:
+                _src.Add(Indent + "; " + KrlText.Comment(comment.Comment));
+                break;
+            case ActionCustomCode custom:
+                if (custom.IsDeclaration)
+                {
+                    NoCode(action);
+                }
+                else
+                {
+                    Code(custom.Statement, action);
+                }
+                break;
+            case ActionAttachTool:
+                EmitAttach(action, c);
+                break;
+            case ActionDetachTool:
+                Code("$TOOL = $NULLFRAME", action);
+                break;
+            case ActionIODigital digital:
+                EmitOutput(action, digital.PinName, digital.IsToolPin, digital.On ? "TRUE" : "FALSE", "$OUT", 4096);
+                break;
+            case ActionIOAnalog analog:
+                if (analog.Value < -1 || analog.Value > 1)
+                {
+                    Error(action, $"KRL analog outputs take values from -1 to 1, and {Num.G(analog.Value)} is outside that range.");
+                }
+                else
+                {
+                    EmitOutput(action, analog.PinName, analog.IsToolPin, KrlFormat.Fine(analog.Value), "$ANOUT", 32);
+                }
+                break;
+            case ActionDefineTool or ActionExternalAxis or ActionMotionMode or ActionCoordinates or ActionPushPop:
+                NoCode(action);
+                break;
+            case ActionArmAngle:
+                NotApplicable(action, "KUKA arms of this kind have no arm angle to set.");
+                break;
+            case ActionTemperature or ActionExtrusion or ActionExtrusionRate:
+                NotApplicable(action, "a KUKA arm has no extruder or heated parts; this is for 3D printers.");
+                break;
+            case ActionInitialization:
+                NotApplicable(action, "a KUKA program needs no start-up or shut-down sequence; this is for 3D printers.");
+                break;
+            default:
+                NotApplicable(action, "the KUKA compiler does not know this action.");
+                break;
+        }
+    }
+
+    private void EmitRestoredSettings(RobotAction action, RobotCursor c)
+    {
+        bool wrote = false;
+        if (c.SettingsBeforeLastPop is Settings before)
+        {
+            if (before.Speed != c.Speed)
+            {
+                Code(VelocityLine(c.Speed), action);
+                wrote = true;
+            }
+            if (before.Acceleration != c.Acceleration)
+            {
+                Code(AccelerationLine(c.Acceleration), action);
+                wrote = true;
+            }
+            if (before.Precision != c.Precision)
+            {
+                Code(PrecisionLine(c.Precision), action);
+                wrote = true;
+            }
+        }
+        if (!wrote)
+        {
+            NoCode(action);
+        }
+    }
+
+    private void EmitCartesian(RobotAction action, RobotCursor c)
+    {
+        if (c.Position is not Vector position || c.Rotation is not Rotation rotation)
+        {
+            Error(action, "the target pose is not known, so no motion can be written.");
+            return;
+        }
+        bool ptp = c.MotionType == MotionType.Joint;
+        if (ptp)
+        {
+            WarnPtpSpeedOnce(action);
+        }
+        StringBuilder line = BeginLine().Append(ptp ? "PTP " : "LIN ");
+        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian);
+        EndLine(line.Append(Approximation(ptp, c.Precision)), action);
+    }
+
+    private void EmitArc(RobotAction action, RobotCursor c)
+    {
+        if (c.Position is not Vector end || c.Rotation is not Rotation endRotation || c.ArcThrough is not Vector through)
+        {
+            Error(action, "the arc's points are not known, so no motion can be written.");
+            return;
+        }
+        StringBuilder line = BeginLine().Append("CIRC ");
+        AppendPoseTarget(line, through, c.ArcThroughRotation ?? endRotation, c.ExternalAxesCartesian);
+        AppendPoseTarget(line.Append(", "), end, endRotation, c.ExternalAxesCartesian);
+        EndLine(line.Append(Approximation(false, c.Precision)), action);
+    }
+
+    private void EmitAxes(RobotAction action, RobotCursor c)
+    {
+        if (c.Axes is not Joints joints)
+        {
+            Error(action, "the joint target is not known, so no motion can be written.");
+            return;
+        }
+        WarnPtpSpeedOnce(action);
+        ExternalAxes? external = c.ExternalAxesJoints;
+        string type = KrlFormat.HasExternal(external) ? "E6AXIS" : "AXIS";
+        StringBuilder line = BeginLine().Append("PTP ");
+        KrlFormat.AppendAxes(BeginTarget(line, type), joints, external);
+        EndTarget(line);
+        EndLine(line.Append(Approximation(true, c.Precision)), action);
+    }
+
+    private void EmitAttach(RobotAction action, RobotCursor c)
+    {
+        if (c.Tool is not Tool tool)
+        {
+            Error(action, "no tool is attached after this action.");
+            return;
+        }
+        _job.Warn(action, $"the weight and centre of gravity of tool \"{tool.Name}\" are not sent; set its load data on the controller.");
+        _src.Add(Indent + $"; WARNING: set the load data (weight {Num.G(tool.Weight)} kg) of tool \"{tool.Name}\" on the controller.");
+        Code("$TOOL = " + KrlFormat.ToolFrame(tool), action);
+    }
+
+    private void EmitOutput(RobotAction action, string pin, bool toolPin, string value, string array, int count)
+    {
+        if (IOPin.TryNumber(pin, out int number))
+        {
+            if (toolPin)
+            {
+                Error(action, $"KUKA controllers have no separate tool outputs; declare a SIGNAL for it in $config.dat and use its name.");
+            }
+            else if (number < 1 || number > count)
+            {
+                Error(action, $"{array} outputs are numbered 1 to {Num.I(count)}, so output {Num.I(number)} does not exist.");
+            }
+            else
+            {
+                Code(array + "[" + Num.I(number) + "] = " + value, action);
+            }
+        }
+        else if (KrlText.IsValidName(pin))
+        {
+            // A named output is a SIGNAL declared on the controller (in $config.dat), e.g. SIGNAL DO_Gripper $OUT[5].
+            Code(pin + " = " + value, action);
+        }
+        else
+        {
+            Error(action, $"\"{pin}\" is neither an output number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
+        }
+    }
+
+    private void WarnPtpSpeedOnce(RobotAction action)
+    {
+        if (_ptpSpeedWarned)
+        {
+            return;
+        }
+        _ptpSpeedWarned = true;
+        const string reason = "joint (PTP) motions run at the controller's axis speeds ($VEL_AXIS, set by BAS #INITMOV); the Machina speed sets $VEL.CP for LIN and CIRC motions only.";
+        _job.Warn(action, reason);
+        _src.Add(Indent + "; WARNING: " + reason);
+    }
+
+    private static string Approximation(bool ptp, double precision) => precision > 0 ? (ptp ? " C_PTP" : " C_DIS") : "";
+
+    private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external)
+    {
+        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, rotation, external);
+        EndTarget(line);
+    }
+
+    /// <summary>Where a target's values go: straight into the line (inline), or into a declaration for the .dat file.</summary>
+    private StringBuilder BeginTarget(StringBuilder line, string type)
+    {
+        if (_inline)
+        {
+            return line.Append('{').Append(type).Append(": ");
+        }
+        FixedPoint.Append(_declaration.Clear().Append("DECL ").Append(type).Append(" target"), ++_targetCount, 0);
+        return _declaration.Append("={");
+    }
+
+    private void EndTarget(StringBuilder line)
+    {
+        if (_inline)
+        {
+            line.Append('}');
+            return;
+        }
+        _dat!.Add(_declaration.Append('}').ToString());
+        FixedPoint.Append(line.Append("target"), _targetCount, 0);
+    }
+
+    private StringBuilder BeginLine() => _line.Clear().Append(Indent);
+
+    private void EndLine(StringBuilder line, RobotAction action)
+    {
+        if (_human)
+        {
+            line.Append("  ; [").Append(KrlText.Comment(action.Describe())).Append(']');
+        }
+        _src.Add(line.ToString());
+    }
+
+    private void Code(string code, RobotAction action) => EndLine(BeginLine().Append(code), action);
+
+    private void NoCode(RobotAction action)
+    {
+        if (_human)
+        {
+            _src.Add(Indent + "; [" + KrlText.Comment(action.Describe()) + "]");
+        }
+    }
+
+    private void NotApplicable(RobotAction action, string reason)
+    {
+        _job.Warn(action, reason);
+        Code("; ACTION \"" + KrlText.Comment(action.Describe()) + "\" NOT APPLICABLE TO THIS DEVICE", action);
+    }
+
+    private void Error(RobotAction action, string reason)
+    {
+        _job.Warn(action, reason);
+        Code("; ERROR on \"" + KrlText.Comment(action.Describe()) + "\": " + reason, action);
+    }
+}

@@ -1,0 +1,48 @@
+namespace Machina;
+
+/// <summary>
+/// Writes URScript for Universal Robots: one <c>.script</c> file defining a function that holds the program (custom
+/// declarations, optional target variables, one or more lines per action), followed by a call to that function.
+/// </summary>
+internal sealed class UrScriptCompiler : Compiler
+{
+    internal override RobotType Brand => RobotType.UR;
+
+    internal override string CommentPrefix => "#";
+
+    internal override void Emit(CompileJob job, ProgramOutput output)
+    {
+        string function = UrScriptText.FunctionName(job.ProgramName);
+        LineSink script = output.OpenFile(job.ProgramName, "script", RobotProgram.Ascii, CommentPrefix);
+        script.AddRange(Header(job));
+        script.Add("");
+        script.Add("def " + function + "():");
+        script.Add("");
+
+        bool anyDeclaration = false;
+        foreach (RobotAction action in job.Actions)
+        {
+            if (action is ActionCustomCode { IsDeclaration: true } code)
+            {
+                script.Add("  " + code.Statement);
+                anyDeclaration = true;
+            }
+        }
+        if (anyDeclaration)
+        {
+            script.Add("");
+        }
+
+        var writer = new UrScriptWriter(job, script);
+        if (!job.Options.InlineTargets && writer.DeclareTargets() > 0)
+        {
+            script.Add("");
+        }
+        writer.WriteStartTool();
+        writer.WriteInstructions();
+        script.Add("");
+        script.Add("end");
+        script.Add("");
+        script.Add(function + "()");
+    }
+}

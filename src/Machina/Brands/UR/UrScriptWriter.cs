@@ -1,0 +1,222 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// Writes the URScript lines of each action from the cursor state after it: motions with inline or variable targets,
+/// tool changes (TCP and payload), messages, waits, IO, comments, and comment lines plus warnings for what a UR robot cannot do.
+/// </summary>
+internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
+{
+    private const string Indent = "  ";
+    private const int StandardDigitalOutputs = 8;
+    private const int ToolDigitalOutputs = 2;
+    private const int StandardAnalogOutputs = 2;
+
+    private readonly StringBuilder _sb = new(256);
+    private readonly bool _inline = job.Options.InlineTargets;
+    private readonly bool _human = job.Options.HumanComments;
+    private int _target;
+
+    /// <summary>Second pass (variable targets only): one <c>targetN=…</c> per target, numbered 0, 1, 2… ; returns how many.</summary>
+    internal int DeclareTargets()
+    {
+        RobotCursor cursor = job.NewCursor();
+        int count = 0;
+        foreach (RobotAction action in job.Actions)
+        {
+            if (cursor.TryApply(action) is not null)
+            {
+                continue;
+            }
+            switch (action)
+            {
+                case ActionTranslation or ActionRotation or ActionTransformation:
+                    Declare(count++).Pose(cursor.Position!.Value, cursor.Rotation!.Value);
+                    break;
+                case ActionArcMotion:
+                    Declare(count++).Pose(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
+                    sink.Add(_sb.ToString());
+                    Declare(count++).Pose(cursor.Position!.Value, cursor.Rotation!.Value);
+                    break;
+                case ActionAxes:
+                    Declare(count++).JointList(cursor.Axes!.Value);
+                    break;
+                default:
+                    continue;
+            }
+            sink.Add(_sb.ToString());
+        }
+        return count;
+    }
+
+    private StringBuilder Declare(int n) => _sb.Clear().Append(Indent).Append("target").Append(n).Append('=');
+
+    /// <summary>When the program starts with a tool already attached, sets its TCP and payload first.</summary>
+    internal void WriteStartTool()
+    {
+        if (job.NewCursor().Tool is Tool tool)
+        {
+            sink.Add(UrScriptText.SetTcp(tool));
+            sink.Add(UrScriptText.SetPayload(tool));
+        }
+    }
+
+    /// <summary>Final pass: the instruction lines of every action, in order (refused actions are reported as warnings).</summary>
+    internal void WriteInstructions() => job.Replay(Write);
+
+    private void Write(RobotAction action, RobotCursor cursor)
+    {
+        switch (action)
+        {
+            case ActionTranslation or ActionRotation or ActionTransformation:
+                bool joint = cursor.MotionType == MotionType.Joint;
+                _sb.Clear().Append(Indent).Append(joint ? "movej(" : "movep(");
+                PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
+                Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint).ToString());
+                break;
+            case ActionArcMotion arc:
+                if (ArcOrientation.ThroughIsIgnored(arc, cursor))
+                {
+                    job.Warn(action, "movec turns the tool evenly from the start to the end orientation; the orientation asked for at the through point is not used.");
+                }
+                _sb.Clear().Append(Indent).Append("movec(");
+                PoseOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
+                _sb.Append(", ");
+                PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
+                Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: false).ToString());
+                break;
+            case ActionAxes:
+                _sb.Clear().Append(Indent).Append("movej(");
+                if (_inline)
+                {
+                    _sb.JointList(cursor.Axes!.Value);
+                }
+                else
+                {
+                    _sb.Append("target").Append(_target++);
+                }
+                Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true).ToString());
+                break;
+            case ActionMessage m:
+                string literal = UrScriptText.StringLiteral(m.Message, out bool changed);
+                if (changed)
+                {
+                    job.Warn(m, "URScript strings cannot hold quotes, backslashes, line breaks or non-ASCII characters; they were replaced (\" by ', \\ by /, line breaks by spaces, others by ?).");
+                }
+                Code(action, Indent + "popup(" + literal + ", title=\"Machina Message\", warning=False, error=False)");
+                break;
+            case ActionWait w:
+                Code(action, Indent + "sleep(" + Num.G(w.Millis / 1000.0) + ")");
+                break;
+            case ActionComment c:
+                sink.Add(Indent + "# " + UrScriptText.CommentText(c.Comment));
+                break;
+            case ActionDefineTool d:
+                Code(action, Indent + "# Tool \"" + d.Tool.Name + "\" defined");
+                break;
+            case ActionAttachTool or ActionDetachTool:
+                Code(action, UrScriptText.SetTcp(cursor.Tool));
+                Code(action, UrScriptText.SetPayload(cursor.Tool));
+                break;
+            case ActionIODigital io:
+                WriteDigital(io);
+                break;
+            case ActionIOAnalog io:
+                WriteAnalog(io);
+                break;
+            case ActionCustomCode { IsDeclaration: false } code:
+                Code(action, Indent + code.Statement);
+                break;
+            case ActionTemperature:
+                Unsupported(action, "a UR robot has no heaters to control; the temperature was not set.");
+                break;
+            case ActionExtrusion or ActionExtrusionRate:
+                Unsupported(action, "a UR robot has no extruder; use CustomCode or IO to drive one.");
+                break;
+            case ActionExternalAxis:
+                Unsupported(action, "URScript programs here drive the six arm joints only; external axes are not written.");
+                break;
+            case ActionArmAngle:
+                Unsupported(action, "UR arms have six joints and no arm angle (it exists only on 7-axis robots).");
+                break;
+            case ActionInitialization:
+                sink.Add(Indent + "# " + action.Describe() + " (nothing to do on a UR robot)");
+                break;
+            default:
+                NoCode(action);
+                break;
+        }
+    }
+
+    private void PoseOrName(Vector position, Rotation rotation)
+    {
+        if (_inline)
+        {
+            _sb.Pose(position, rotation);
+        }
+        else
+        {
+            _sb.Append("target").Append(_target++);
+        }
+    }
+
+    private void WriteDigital(ActionIODigital io)
+    {
+        int count = io.IsToolPin ? ToolDigitalOutputs : StandardDigitalOutputs;
+        if (PinProblem(io.PinName, count, io.IsToolPin, "digital") is string problem)
+        {
+            Unsupported(io, problem);
+            return;
+        }
+        string function = io.IsToolPin ? "set_tool_digital_out(" : "set_standard_digital_out(";
+        Code(io, Indent + function + Num.I(io.PinNumber) + ", " + (io.On ? "True" : "False") + ")");
+    }
+
+    private void WriteAnalog(ActionIOAnalog io)
+    {
+        if (io.IsToolPin)
+        {
+            Unsupported(io, "the UR tool flange has no analog outputs (only analog inputs).");
+            return;
+        }
+        if (PinProblem(io.PinName, StandardAnalogOutputs, false, "analog") is string problem)
+        {
+            Unsupported(io, problem);
+            return;
+        }
+        if (io.Value < 0 || io.Value > 1)
+        {
+            Unsupported(io, $"UR analog outputs take a value from 0 to 1 (a fraction of the output's current or voltage range), not {Num.G(io.Value)}.");
+            return;
+        }
+        Code(io, Indent + "set_standard_analog_out(" + Num.I(io.PinNumber) + ", " + Num.F(io.Value, 3) + ")");
+    }
+
+    private static string? PinProblem(string pin, int count, bool tool, string kind)
+    {
+        string where = tool ? "tool " : "standard ";
+        if (!IOPin.TryNumber(pin, out int n))
+        {
+            return $"UR {kind} outputs are numbered; \"{pin}\" is not a number (use 0 to {count - 1}).";
+        }
+        return n < count ? null : $"UR robots have {where}{kind} outputs 0 to {count - 1}; output {n} does not exist.";
+    }
+
+    private void Unsupported(RobotAction action, string reason)
+    {
+        job.Warn(action, reason);
+        sink.Add(Indent + "# NOT SUPPORTED ON UR: " + UrScriptText.CommentText(action.Describe()));
+    }
+
+    private void Code(RobotAction action, string line) =>
+        sink.Add(_human ? line + "  # [" + UrScriptText.CommentText(action.Describe()) + "]" : line);
+
+    private void NoCode(RobotAction action)
+    {
+        if (_human)
+        {
+            sink.Add(Indent + "# [" + UrScriptText.CommentText(action.Describe()) + "]");
+        }
+    }
+}

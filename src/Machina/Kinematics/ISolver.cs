@@ -1,0 +1,17 @@
+namespace Machina;
+
+/// <summary>Closeness of a joint set to the three classic singularities (internal measure used by the checks).</summary>
+/// <param name="WristDegrees">How far axis 5 is from the straight wrist (0° or 180°), in degrees.</param>
+/// <param name="ElbowDegrees">How far the elbow is from fully stretched or fully folded, in degrees.</param>
+/// <param name="ShoulderMm">How far the wrist point is from the axis-1 singular line/cylinder, in mm.</param>
+internal readonly record struct SingularityMeasure(double WristDegrees, double ElbowDegrees, double ShoulderMm);
+
+/// <summary>The raw analytical solver of one family: every solution, ignoring joint limits.</summary>
+internal interface ISolver
+{
+    /// <summary>All geometric solutions (at most 8), brand joints in degrees wrapped to (−180°, 180°], with their configuration.</summary>
+    int SolveRaw(in Affine flange, Span<Joints> joints, Span<ArmConfiguration> configurations);
+
+    /// <summary>Closeness to singularities of a joint set.</summary>
+    SingularityMeasure Measure(Joints joints);
+}

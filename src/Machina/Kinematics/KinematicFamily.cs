@@ -1,0 +1,11 @@
+namespace Machina;
+
+/// <summary>The kind of arm geometry, which decides the inverse-kinematics solver.</summary>
+public enum KinematicFamily
+{
+    /// <summary>Ortho-parallel arm with a spherical wrist (ABB, KUKA): seven OPW lengths.</summary>
+    Opw,
+
+    /// <summary>Universal Robots layout (offset wrist): six DH lengths.</summary>
+    UniversalRobots,
+}

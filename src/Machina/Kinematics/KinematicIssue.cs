@@ -1,0 +1,45 @@
+namespace Machina;
+
+/// <summary>What kind of problem a pre-flight kinematic check found.</summary>
+public enum KinematicIssueKind
+{
+    /// <summary>The target (or a point on the way) is out of the arm's reach.</summary>
+    Unreachable,
+
+    /// <summary>Reaching the target (or a point on the way) needs a joint beyond its limits.</summary>
+    JointLimit,
+
+    /// <summary>Axis 5 is (nearly) straight, so axes 4 and 6 line up and can spin fast.</summary>
+    WristSingularity,
+
+    /// <summary>The wrist point is (nearly) on axis 1's singular line, so axis 1 can spin fast.</summary>
+    ShoulderSingularity,
+
+    /// <summary>The arm is (nearly) fully stretched or folded at the elbow.</summary>
+    ElbowSingularity,
+
+    /// <summary>A straight-line move would need the arm to change shoulder, elbow or wrist configuration, which it cannot do on a line.</summary>
+    ConfigurationFlip,
+
+    /// <summary>At the requested speed a joint would have to move faster than its maximum speed.</summary>
+    JointSpeed,
+}
+
+/// <summary>How the robot moves to the target, for the checks.</summary>
+public enum KinematicMotion
+{
+    /// <summary>Straight line of the flange (MoveL, LIN, movel).</summary>
+    Linear,
+
+    /// <summary>Joint interpolation (MoveJ, PTP, movej): the path is not a line.</summary>
+    Joint,
+}
+
+/// <summary>One problem found by <see cref="KinematicChecks"/>, with a sentence a non-expert can read.</summary>
+/// <param name="Kind">The kind of problem.</param>
+/// <param name="Reason">Human explanation, e.g. which joint and by how much.</param>
+public sealed record KinematicIssue(KinematicIssueKind Kind, string Reason)
+{
+    /// <summary>Text such as <c>JointLimit: joint 3 would be at 95° (limit 70°)</c>.</summary>
+    public override string ToString() => $"{Kind}: {Reason}";
+}

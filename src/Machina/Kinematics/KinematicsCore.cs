@@ -1,0 +1,142 @@
+namespace Machina;
+
+/// <summary>Shared, family-independent parts of inverse kinematics: joint limits, ±360° turns, nearest solution.</summary>
+internal static class KinematicsCore
+{
+    internal const int MaxSolutions = 8;
+
+    /// <summary>Moves each joint to the turn (θ + k·360°) within the limits that is closest to <paramref name="reference"/>; false when a joint has none.</summary>
+    internal static bool FitLimits(RobotModel model, Joints joints, Joints reference, out Joints fitted)
+    {
+        Span<double> v = stackalloc double[Joints.Count];
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            double min = model.MinJoints[i], max = model.MaxJoints[i], ref0 = reference[i];
+            double value = joints[i];
+            // Nearest turn to the reference, then step into the range if needed.
+            double k = Math.Round((ref0 - value) / 360.0);
+            double best = double.NaN, bestDistance = double.PositiveInfinity;
+            for (double d = k - 1; d <= k + 1; d++)
+            {
+                double candidate = value + 360.0 * d;
+                if (candidate >= min - 1e-9 && candidate <= max + 1e-9)
+                {
+                    double distance = Math.Abs(candidate - ref0);
+                    if (distance < bestDistance)
+                    {
+                        best = candidate; bestDistance = distance;
+                    }
+                }
+            }
+            if (double.IsNaN(best))
+            {
+                // Wide ranges (beyond ±540°) or a reference far away: search the whole range.
+                double start = value + 360.0 * Math.Ceiling((min - 1e-9 - value) / 360.0);
+                for (double candidate = start; candidate <= max + 1e-9; candidate += 360.0)
+                {
+                    double distance = Math.Abs(candidate - ref0);
+                    if (distance < bestDistance)
+                    {
+                        best = candidate; bestDistance = distance;
+                    }
+                }
+                if (double.IsNaN(best))
+                {
+                    fitted = default;
+                    return false;
+                }
+            }
+            v[i] = Math.Clamp(best, min, max);
+        }
+        fitted = Joints.FromArray(v);
+        return true;
+    }
+
+    internal static int Inverse(ISolver solver, RobotModel model, Pose flange, Span<Joints> solutions)
+    {
+        Span<Joints> raw = stackalloc Joints[MaxSolutions];
+        Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
+        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int count = 0;
+        for (int i = 0; i < n && count < solutions.Length; i++)
+        {
+            if (FitLimits(model, raw[i], default, out Joints fitted))
+            {
+                solutions[count++] = fitted;
+            }
+        }
+        return count;
+    }
+
+    internal static IReadOnlyList<Joints> InverseList(ISolver solver, RobotModel model, Pose flange)
+    {
+        Span<Joints> buffer = stackalloc Joints[MaxSolutions];
+        int n = Inverse(solver, model, flange, buffer);
+        return buffer[..n].ToArray();
+    }
+
+    internal static Joints? Closest(ISolver solver, RobotModel model, Pose flange, Joints current)
+    {
+        current.RequireFinite(nameof(current));
+        Span<Joints> raw = stackalloc Joints[MaxSolutions];
+        Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
+        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        Joints? best = null;
+        double bestCost = double.PositiveInfinity;
+        for (int i = 0; i < n; i++)
+        {
+            if (!FitLimits(model, raw[i], current, out Joints fitted))
+            {
+                continue;
+            }
+            double maxDelta = 0, sum = 0;
+            for (int j = 0; j < Joints.Count; j++)
+            {
+                double d = Math.Abs(fitted[j] - current[j]);
+                maxDelta = Math.Max(maxDelta, d);
+                sum += d;
+            }
+            double cost = maxDelta + 1e-3 * sum;
+            if (cost < bestCost)
+            {
+                bestCost = cost; best = fitted;
+            }
+        }
+        return best;
+    }
+
+    internal static Joints? Solve(ISolver solver, RobotModel model, Pose flange, ArmConfiguration configuration)
+    {
+        Span<Joints> raw = stackalloc Joints[MaxSolutions];
+        Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
+        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        for (int i = 0; i < n; i++)
+        {
+            if (configs[i] == configuration && FitLimits(model, raw[i], default, out Joints fitted))
+            {
+                return fitted;
+            }
+        }
+        return null;
+    }
+
+    internal static bool IsWithinLimits(RobotModel model, Joints joints)
+    {
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            if (!(joints[i] >= model.MinJoints[i] - 1e-9 && joints[i] <= model.MaxJoints[i] + 1e-9))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// <summary>Wraps radians to degrees in (−180°, 180°].</summary>
+    internal static double WrapDegrees(double radians)
+    {
+        double d = radians * Angles.ToDegrees;
+        d = Math.IEEERemainder(d, 360.0);
+        return d <= -180.0 ? d + 360.0 : d;
+    }
+}

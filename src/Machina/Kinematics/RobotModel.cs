@@ -1,0 +1,112 @@
+namespace Machina;
+
+/// <summary>
+/// An immutable description of one robot arm: its name, brand, geometry, joint limits and (where published) maximum joint speeds,
+/// with the public documents the numbers come from. Use <see cref="RobotModels"/> for the built-in catalogue or
+/// <see cref="FromOpw"/> / <see cref="FromUniversalRobotsDh"/> to define your own.
+/// </summary>
+public sealed class RobotModel
+{
+    private RobotModel(string name, string brand, KinematicFamily family, Joints min, Joints max, Joints? maxSpeeds, string source)
+    {
+        Name = name;
+        Brand = brand;
+        Family = family;
+        MinJoints = min;
+        MaxJoints = max;
+        MaxJointSpeeds = maxSpeeds;
+        Source = source;
+        Kinematics = null!;
+    }
+
+    /// <summary>Model name, e.g. <c>IRB 120</c> or <c>UR5e</c>.</summary>
+    public string Name { get; }
+
+    /// <summary>Brand whose joint conventions apply: <c>ABB</c>, <c>KUKA</c> or <c>UR</c>.</summary>
+    public string Brand { get; }
+
+    /// <summary>Geometry family (which solver is used).</summary>
+    public KinematicFamily Family { get; }
+
+    /// <summary>The OPW lengths (mm) for <see cref="KinematicFamily.Opw"/> models, otherwise null.</summary>
+    public OpwParameters? Opw { get; private init; }
+
+    /// <summary>The UR DH lengths (mm) for <see cref="KinematicFamily.UniversalRobots"/> models, otherwise null.</summary>
+    public UniversalRobotsDh? UniversalRobotsDh { get; private init; }
+
+    /// <summary>Lowest allowed value of each joint, degrees.</summary>
+    public Joints MinJoints { get; }
+
+    /// <summary>Highest allowed value of each joint, degrees.</summary>
+    public Joints MaxJoints { get; }
+
+    /// <summary>Maximum speed of each joint in degrees per second, or null when not published.</summary>
+    public Joints? MaxJointSpeeds { get; }
+
+    /// <summary>The public documents the numbers come from.</summary>
+    public string Source { get; }
+
+    /// <summary>Forward and inverse kinematics for this model.</summary>
+    public IKinematics Kinematics { get; private set; }
+
+    /// <summary>
+    /// A user-defined ABB or KUKA style arm from its seven OPW lengths (mm) and joint limits (degrees). Joint values then follow
+    /// that brand's conventions (see docs/kinematics.md).
+    /// </summary>
+    public static RobotModel FromOpw(string name, string brand, OpwParameters parameters, Joints minJoints, Joints maxJoints, Joints? maxJointSpeeds = null, string source = "user defined")
+    {
+        string b = CheckCommon(name, brand, minJoints, maxJoints, maxJointSpeeds, source);
+        if (b != "ABB" && b != "KUKA")
+        {
+            throw new ArgumentException($"OPW models follow ABB or KUKA joint conventions; brand must be \"ABB\" or \"KUKA\", not \"{brand}\".", nameof(brand));
+        }
+        parameters.Validate();
+        var model = new RobotModel(name, b, KinematicFamily.Opw, minJoints, maxJoints, maxJointSpeeds, source) { Opw = parameters };
+        model.Kinematics = new OpwKinematics(model, parameters, b == "KUKA");
+        return model;
+    }
+
+    /// <summary>A user-defined Universal Robots style arm from its DH lengths (mm, UR signs) and joint limits (degrees).</summary>
+    public static RobotModel FromUniversalRobotsDh(string name, UniversalRobotsDh parameters, Joints minJoints, Joints maxJoints, Joints? maxJointSpeeds = null, string source = "user defined")
+    {
+        CheckCommon(name, "UR", minJoints, maxJoints, maxJointSpeeds, source);
+        parameters.Validate();
+        var model = new RobotModel(name, "UR", KinematicFamily.UniversalRobots, minJoints, maxJoints, maxJointSpeeds, source) { UniversalRobotsDh = parameters };
+        model.Kinematics = new UniversalRobotsKinematics(model, parameters);
+        return model;
+    }
+
+    private static string CheckCommon(string name, string brand, Joints min, Joints max, Joints? speeds, string source)
+    {
+        if (string.IsNullOrWhiteSpace(name))
+        {
+            throw new ArgumentException("A robot model needs a name.", nameof(name));
+        }
+        ArgumentNullException.ThrowIfNull(brand);
+        ArgumentNullException.ThrowIfNull(source);
+        min.RequireFinite(nameof(min));
+        max.RequireFinite(nameof(max));
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            if (!(min[i] < max[i]))
+            {
+                throw new ArgumentException($"Joint {i + 1} of \"{name}\": the minimum ({Num.G(min[i])}°) must be below the maximum ({Num.G(max[i])}°).");
+            }
+            if (speeds is Joints s && !(s[i] > 0 && double.IsFinite(s[i])))
+            {
+                throw new ArgumentException($"Joint {i + 1} of \"{name}\": the maximum speed must be a positive number of degrees per second, not {Num.G(s[i])}.");
+            }
+        }
+        return brand.Trim().ToUpperInvariant() switch
+        {
+            "UNIVERSALROBOTS" or "UNIVERSAL ROBOTS" => "UR",
+            var b => b,
+        };
+    }
+
+    /// <summary>True when every joint is within this model's limits.</summary>
+    public bool IsWithinLimits(Joints joints) => KinematicsCore.IsWithinLimits(this, joints);
+
+    /// <summary>Text such as <c>ABB IRB 120</c>.</summary>
+    public override string ToString() => $"{Brand} {Name}";
+}

@@ -1,0 +1,128 @@
+namespace Machina;
+
+/// <summary>
+/// Kinematics of Universal Robots arms (six revolute joints, offset wrist) from UR's published DH table, with an analytical inverse
+/// that returns all eight solutions. Poses are the controller's tool0 flange in its "base" frame; joints are in degrees.
+/// </summary>
+public sealed class UniversalRobotsKinematics : IKinematics, ISolver
+{
+    private const double HalfPi = Math.PI / 2;
+    private readonly UniversalRobotsDh _dh;
+
+    internal UniversalRobotsKinematics(RobotModel model, UniversalRobotsDh dh)
+    {
+        Model = model;
+        _dh = dh;
+    }
+
+    /// <inheritdoc/>
+    public RobotModel Model { get; }
+
+    /// <summary>The DH lengths of this arm, in mm.</summary>
+    public UniversalRobotsDh Parameters => _dh;
+
+    /// <inheritdoc/>
+    public Pose Forward(Joints joints)
+    {
+        joints.RequireFinite(nameof(joints));
+        return ForwardAffine(joints).ToPose();
+    }
+
+    private Affine ForwardAffine(Joints j)
+    {
+        const double r = Angles.ToRadians;
+        return Affine.Dh(j.J1 * r, _dh.D1, 0, 0, 1)
+            * Affine.Dh(j.J2 * r, 0, _dh.A2, 1, 0)
+            * Affine.Dh(j.J3 * r, 0, _dh.A3, 1, 0)
+            * Affine.Dh(j.J4 * r, _dh.D4, 0, 0, 1)
+            * Affine.Dh(j.J5 * r, _dh.D5, 0, 0, -1)
+            * Affine.Dh(j.J6 * r, _dh.D6, 0, 1, 0);
+    }
+
+    /// <inheritdoc/>
+    public int Inverse(Pose flange, Span<Joints> solutions) => KinematicsCore.Inverse(this, Model, flange, solutions);
+
+    /// <inheritdoc/>
+    public IReadOnlyList<Joints> Inverse(Pose flange) => KinematicsCore.InverseList(this, Model, flange);
+
+    /// <inheritdoc/>
+    public Joints? Closest(Pose flange, Joints current) => KinematicsCore.Closest(this, Model, flange, current);
+
+    /// <inheritdoc/>
+    public Joints? Solve(Pose flange, ArmConfiguration configuration) => KinematicsCore.Solve(this, Model, flange, configuration);
+
+    /// <inheritdoc/>
+    public bool IsWithinLimits(Joints joints) => KinematicsCore.IsWithinLimits(Model, joints);
+
+    /// <inheritdoc/>
+    public ArmConfiguration ConfigurationOf(Joints joints)
+    {
+        Affine t = ForwardAffine(joints);
+        double px = t.Px - _dh.D6 * t.R02, py = t.Py - _dh.D6 * t.R12;
+        double delta = joints.J1 * Angles.ToRadians - Math.Atan2(py, px) - HalfPi;
+        return new ArmConfiguration(Math.Sin(delta) < 0, Math.Sin(joints.J3 * Angles.ToRadians) > 0, Math.Sin(joints.J5 * Angles.ToRadians) < 0);
+    }
+
+    SingularityMeasure ISolver.Measure(Joints joints)
+    {
+        Affine t = ForwardAffine(joints);
+        double px = t.Px - _dh.D6 * t.R02, py = t.Py - _dh.D6 * t.R12;
+        double wrist = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(joints.J5 * Angles.ToRadians)))) * Angles.ToDegrees;
+        double elbow = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(joints.J3 * Angles.ToRadians)))) * Angles.ToDegrees;
+        double shoulder = Math.Abs(Math.Sqrt(px * px + py * py) - Math.Abs(_dh.D4));
+        return new SingularityMeasure(wrist, elbow, shoulder);
+    }
+
+    int ISolver.SolveRaw(in Affine t, Span<Joints> joints, Span<ArmConfiguration> configurations)
+    {
+        double d1 = _dh.D1, a2 = _dh.A2, a3 = _dh.A3, d4 = _dh.D4, d5 = _dh.D5, d6 = _dh.D6;
+        double px = t.Px - d6 * t.R02, py = t.Py - d6 * t.R12;
+        double r = Math.Sqrt(px * px + py * py);
+        if (!(r >= Math.Abs(d4) - 1e-9) || r == 0)
+        {
+            return 0;
+        }
+        double phi1 = Math.Atan2(py, px), phi2 = Math.Acos(Math.Clamp(d4 / r, -1, 1));
+        int count = 0;
+        for (int shoulder = 0; shoulder < 2; shoulder++)
+        {
+            double t1 = phi1 + (shoulder == 0 ? phi2 : -phi2) + HalfPi;
+            double c1 = Math.Cos(t1), s1 = Math.Sin(t1);
+            double c5 = (t.Px * s1 - t.Py * c1 - d4) / d6;
+            if (c5 > 1 + 1e-12 || c5 < -1 - 1e-12)
+            {
+                continue;
+            }
+            double t5Abs = Math.Acos(Math.Clamp(c5, -1, 1));
+            for (int wrist = 0; wrist < 2; wrist++)
+            {
+                double t5 = wrist == 0 ? t5Abs : -t5Abs;
+                double s5 = Math.Sin(t5);
+                double t6 = Math.Abs(s5) < 1e-12
+                    ? 0
+                    : Math.Atan2((-t.R01 * s1 + t.R11 * c1) / s5, (t.R00 * s1 - t.R10 * c1) / s5);
+                // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
+                Affine t14 = Affine.Dh(t1, d1, 0, 0, 1).InverseRigid() * t
+                    * Affine.Dh(t6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(t5, d5, 0, 0, -1).InverseRigid();
+                double x = t14.Px, y = t14.Py;
+                double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
+                if (c3 > 1 + 1e-12 || c3 < -1 - 1e-12)
+                {
+                    continue;
+                }
+                double t3Abs = Math.Acos(Math.Clamp(c3, -1, 1));
+                for (int elbow = 0; elbow < 2; elbow++)
+                {
+                    double t3 = elbow == 0 ? -t3Abs : t3Abs;
+                    double t2 = Math.Atan2(y, x) - Math.Atan2(a3 * Math.Sin(t3), a2 + a3 * Math.Cos(t3));
+                    double t4 = Math.Atan2(t14.R10, t14.R00) - t2 - t3;
+                    joints[count] = new Joints(
+                        KinematicsCore.WrapDegrees(t1), KinematicsCore.WrapDegrees(t2), KinematicsCore.WrapDegrees(t3),
+                        KinematicsCore.WrapDegrees(t4), KinematicsCore.WrapDegrees(t5), KinematicsCore.WrapDegrees(t6));
+                    configurations[count++] = new ArmConfiguration(shoulder == 1, elbow == 1, wrist == 1);
+                }
+            }
+        }
+        return count;
+    }
+}

@@ -1,0 +1,38 @@
+MODULE Print3D
+
+! Program "Print3D" written by Machina 0.1.0 for ABB.
+! Safety: this program moves a machine that can hurt people. Check it in simulation first,
+! run it at reduced speed, keep clear of the working area and keep the emergency stop in reach.
+
+  CONST speeddata vel30 := [30,30,30,30];
+
+  PROC main()
+    ConfJ \Off;
+    ConfL \Off;
+    WorldAccLim \Off;
+
+    ! Initialize this device. (nothing to do on an ABB robot)
+    ! NOT SUPPORTED ON ABB: Set Bed temperature to 60 C
+    ! NOT SUPPORTED ON ABB: Set Extruder temperature to 210 C and wait
+    ! NOT SUPPORTED ON ABB: Set Bed temperature to 60 C and wait
+    ! [Set motion speed to 30 mm/s or deg/s]
+    MoveL [[50, 50, 0.3], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move to [50, 50, 0.3] mm]
+    ! NOT SUPPORTED ON ABB: Set extrusion rate to 0.05 mm/mm
+    ! NOT SUPPORTED ON ABB: Turn extrusion on
+    MoveL [[70, 50, 0.3], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [20, 0, 0] mm]
+    MoveL [[70, 70, 0.3], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, 20, 0] mm]
+    MoveL [[50, 70, 0.3], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [-20, 0, 0] mm]
+    MoveL [[50, 50, 0.3], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, -20, 0] mm]
+    MoveL [[50, 50, 0.5], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, 0, 0.2] mm]
+    MoveL [[70, 50, 0.5], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [20, 0, 0] mm]
+    MoveL [[70, 70, 0.5], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, 20, 0] mm]
+    MoveL [[50, 70, 0.5], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [-20, 0, 0] mm]
+    MoveL [[50, 50, 0.5], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, -20, 0] mm]
+    MoveL [[50, 50, 0.7], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, 0, 0.2] mm]
+    ! NOT SUPPORTED ON ABB: Turn extrusion off
+    MoveL [[50, 50, 10.7], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel30, z5, Tool0\WObj:=WObj0;  ! [Move [0, 0, 10] mm]
+    ! Terminate this device. (nothing to do on an ABB robot)
+
+  ENDPROC
+
+ENDMODULE

@@ -1,0 +1,182 @@
+namespace Machina.Tests.Kinematics;
+
+public class InverseKinematicsTests
+{
+    public static TheoryData<string> ModelNames()
+    {
+        var data = new TheoryData<string>();
+        foreach (RobotModel m in RobotModels.All)
+        {
+            data.Add(m.Name);
+        }
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(ModelNames))]
+    public void Inverse_RandomReachablePoses_RoundTripWithinLimits(string name)
+    {
+        RobotModel model = RobotModels.Get(name);
+        IKinematics kin = model.Kinematics;
+        var random = new Random(1234);
+        Span<Joints> buffer = stackalloc Joints[8];
+        int checkedSolutions = 0;
+        for (int trial = 0; trial < 200; trial++)
+        {
+            Joints source = RandomJoints(model, random);
+            Pose pose = kin.Forward(source);
+            int n = kin.Inverse(pose, buffer);
+            if (n < 1)
+            {
+                Assert.Fail($"{name}: no solution for FK({source}) = {pose}");
+            }
+            bool foundSource = false;
+            for (int i = 0; i < n; i++)
+            {
+                Joints j = buffer[i];
+                Pose back = kin.Forward(j);
+                if (!model.IsWithinLimits(j) || !back.IsSimilar(pose, 1e-6, 1e-6))
+                {
+                    Assert.Fail($"{name}: solution {j} (within limits: {model.IsWithinLimits(j)}) gives FK {back}, expected {pose}");
+                }
+                foundSource |= AngularlyEqual(j, source);
+                checkedSolutions++;
+            }
+            Joints? closest = kin.Closest(pose, source);
+            if (!foundSource || closest is null || !closest.Value.IsSimilar(source, 1e-6) || kin.ConfigurationOf(source) != kin.ConfigurationOf(closest.Value))
+            {
+                Assert.Fail($"{name}: original joints {source} found among the {n} solutions: {foundSource}; closest: {closest}");
+            }
+        }
+        Assert.True(checkedSolutions >= 200);
+    }
+
+    [Theory]
+    [MemberData(nameof(ModelNames))]
+    public void Inverse_GenericPoseWithWideLimits_ReturnsEightDistinctSolutions(string name)
+    {
+        RobotModel model = RobotModels.Get(name);
+        RobotModel wide = model.Family == KinematicFamily.Opw
+            ? RobotModel.FromOpw("wide", model.Brand, model.Opw!.Value, Wide(-1), Wide(1))
+            : RobotModel.FromUniversalRobotsDh("wide", model.UniversalRobotsDh!.Value, Wide(-1), Wide(1));
+        // Poses well inside the workspace, away from singularities; at least one must give all eight solutions.
+        Joints[] seeds = model.Family == KinematicFamily.Opw
+            ? (model.Brand == "KUKA"
+                ? [new(20, -100, 130, 30, 40, 50), new(20, -120, 150, 30, 40, 50), new(20, -90, 150, 30, 40, 50)]
+                : [new(20, -20, 40, 30, 40, 50), new(20, -40, 60, 30, 40, 50), new(20, -20, 60, 30, 40, 50)])
+            : [new(20, -70, 60, -80, 40, 50), new(20, -100, 120, -80, 40, 50), new(20, -120, 140, -60, 40, 50), new(20, -60, 130, -60, 40, 50)];
+        Pose pose = default;
+        IReadOnlyList<Joints> all = [];
+        foreach (Joints seed in seeds)
+        {
+            pose = wide.Kinematics.Forward(seed);
+            all = wide.Kinematics.Inverse(pose);
+            if (all.Count == 8)
+            {
+                break;
+            }
+        }
+        Assert.True(all.Count == 8, $"{all.Count} solutions: {string.Join(" ", all)}");
+        var configs = all.Select(wide.Kinematics.ConfigurationOf).Distinct().ToList();
+        Assert.Equal(8, configs.Count);
+        foreach (ArmConfiguration c in configs)
+        {
+            Joints? j = wide.Kinematics.Solve(pose, c);
+            Assert.NotNull(j);
+            Assert.Equal(c, wide.Kinematics.ConfigurationOf(j.Value));
+            Assert.True(wide.Kinematics.Forward(j.Value).IsSimilar(pose, 1e-6, 1e-6));
+        }
+    }
+
+    [Theory]
+    [InlineData("IRB 120")]
+    [InlineData("KR 6 R900 sixx")]
+    [InlineData("UR5e")]
+    public void Inverse_FarAwayPose_ReturnsNoSolution(string name)
+    {
+        IKinematics kin = RobotModels.Get(name).Kinematics;
+        var pose = new Pose(5000, 0, 500, Rotation.FlippedAroundY);
+        Assert.Empty(kin.Inverse(pose));
+        Assert.Null(kin.Closest(pose, default));
+        Assert.Equal(0, kin.Inverse(pose, stackalloc Joints[8]));
+    }
+
+    [Fact]
+    public void Inverse_WristSingularPose_ReturnsSolutionsThatRoundTrip()
+    {
+        IKinematics kin = RobotModels.Get("IRB 120").Kinematics;
+        Pose pose = kin.Forward(new Joints(10, 20, -10, 0, 0, 30)); // J5 = 0: axes 4 and 6 aligned
+        IReadOnlyList<Joints> all = kin.Inverse(pose);
+        Assert.NotEmpty(all);
+        foreach (Joints j in all)
+        {
+            Assert.True(kin.Forward(j).IsSimilar(pose, 1e-6, 1e-6), $"{j}");
+        }
+        // J4 + J6 carries the whole turn when the wrist is straight.
+        Assert.Contains(all, j => Math.Abs(j.J5) < 1e-6 && Math.Abs(j.J4 + j.J6 - 30) < 1e-6);
+    }
+
+    [Fact]
+    public void Inverse_ShoulderSingularPose_ReturnsSolutionsThatRoundTrip()
+    {
+        // Wrist centre straight above axis 1: J2 tilts the arm back until the centre sits on the axis.
+        IKinematics kin = RobotModels.Get("IRB 1200-7/0.7").Kinematics;
+        // IRB 1200-7/0.7: a1 = 0; with J3 = -90 + atan(42/351) the forearm points up, so the wrist centre is on axis 1 at J2 = 0.
+        double j3 = -90 + Math.Atan2(42, 351) * Angles.ToDegrees;
+        Pose pose = kin.Forward(new Joints(0, 0, j3, 0, 30, 0));
+        IReadOnlyList<Joints> all = kin.Inverse(pose);
+        Assert.NotEmpty(all);
+        foreach (Joints j in all)
+        {
+            Assert.True(kin.Forward(j).IsSimilar(pose, 1e-6, 1e-6), $"{j}");
+        }
+    }
+
+    [Fact]
+    public void Inverse_SolutionsBeyond180_UseTheTurnWithinLimits()
+    {
+        // KR 120 R2500 pro: A2 range is -140..-5, so the wrapped value must stay negative; UR J6 ±360.
+        RobotModel kr = RobotModels.Get("KR 120 R2500 pro");
+        Joints source = new(0, -100, 100, 0, 60, 0);
+        Pose pose = kr.Kinematics.Forward(source);
+        Assert.Contains(kr.Kinematics.Inverse(pose), j => j.IsSimilar(source, 1e-6));
+
+        RobotModel ur = RobotModels.Get("UR5");
+        Joints wound = new(10, -80, 70, -60, 50, 300);
+        Joints? closest = ur.Kinematics.Closest(ur.Kinematics.Forward(wound), wound);
+        Assert.NotNull(closest);
+        Assert.Equal(300, closest.Value.J6, 6);
+    }
+
+    private static Joints Wide(double sign) => new(sign * 360, sign * 360, sign * 360, sign * 360, sign * 360, sign * 360);
+
+    private static Joints RandomJoints(RobotModel model, Random random)
+    {
+        Span<double> v = stackalloc double[6];
+        for (int i = 0; i < 6; i++)
+        {
+            double min = model.MinJoints[i], max = model.MaxJoints[i];
+            // Stay within ±180° around the middle so the value is the unique representative picked by Closest, and away from J5 = 0.
+            double lo = Math.Max(min, -179), hi = Math.Min(max, 179);
+            v[i] = lo + (hi - lo) * random.NextDouble();
+        }
+        if (Math.Abs(v[4]) < 1)
+        {
+            v[4] = 5;
+        }
+        return Joints.FromArray(v);
+    }
+
+    private static bool AngularlyEqual(Joints a, Joints b)
+    {
+        for (int i = 0; i < 6; i++)
+        {
+            double d = Math.IEEERemainder(a[i] - b[i], 360);
+            if (Math.Abs(d) > 1e-6)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+}

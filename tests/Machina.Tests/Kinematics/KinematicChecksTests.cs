@@ -1,0 +1,102 @@
+namespace Machina.Tests.Kinematics;
+
+public class KinematicChecksTests
+{
+    private static readonly RobotModel Irb120 = RobotModels.Get("IRB 120");
+
+    private static List<KinematicIssueKind> Kinds(IReadOnlyList<KinematicIssue> issues) => issues.Select(i => i.Kind).ToList();
+
+    [Fact]
+    public void Check_FarPose_Unreachable()
+    {
+        var issues = KinematicChecks.Check(Irb120, null, new Pose(2000, 0, 300, Rotation.FlippedAroundY), KinematicMotion.Joint, 100);
+        Assert.Equal([KinematicIssueKind.Unreachable], Kinds(issues));
+        Assert.Contains("out of reach", issues[0].Reason);
+    }
+
+    [Fact]
+    public void Check_JointsBeyondLimits_JointLimitNamesTheJoint()
+    {
+        var issues = KinematicChecks.Check(Irb120, null, new Joints(0, 0, 95, 0, 30, 0), KinematicMotion.Joint, 100);
+        Assert.Equal([KinematicIssueKind.JointLimit], Kinds(issues));
+        Assert.Contains("joint 3 at 95°, allowed -110° to 70°", issues[0].Reason);
+    }
+
+    [Fact]
+    public void Check_PoseOnlyReachableBeyondLimits_JointLimit()
+    {
+        RobotModel narrow = RobotModel.FromOpw("narrow", "ABB", Irb120.Opw!.Value, new Joints(-10, -110, -110, -160, -120, -400), new Joints(10, 110, 70, 160, 120, 400));
+        Pose target = Irb120.Kinematics.Forward(new Joints(45, 0, 0, 0, 30, 0));
+        Assert.Equal([KinematicIssueKind.JointLimit], Kinds(KinematicChecks.Check(narrow, null, target, KinematicMotion.Joint, 100)));
+    }
+
+    [Fact]
+    public void Check_StraightWrist_WristSingularity()
+    {
+        Assert.Equal([KinematicIssueKind.WristSingularity], Kinds(KinematicChecks.Check(Irb120, null, new Joints(0, 0, 0, 0, 1, 0), KinematicMotion.Joint, 100)));
+    }
+
+    [Fact]
+    public void Check_StretchedElbow_ElbowSingularity()
+    {
+        // Stretched when J3 = atan(70/302) − 90° = −76.95° (J2 = 30° keeps the wrist away from axis 1).
+        Assert.Equal([KinematicIssueKind.ElbowSingularity], Kinds(KinematicChecks.Check(Irb120, null, new Joints(0, 30, -76.5, 0, 30, 0), KinematicMotion.Joint, 100)));
+    }
+
+    [Fact]
+    public void Check_WristCentreOnAxis1_ShoulderSingularity()
+    {
+        RobotModel m = RobotModels.Get("IRB 1200-7/0.7");
+        double j3 = -90 + Math.Atan2(42, 351) * Angles.ToDegrees;
+        Assert.Contains(KinematicIssueKind.ShoulderSingularity, Kinds(KinematicChecks.Check(m, null, new Joints(0, 0, j3, 0, 30, 0), KinematicMotion.Joint, 100)));
+    }
+
+    [Fact]
+    public void Check_ShortLineInsideWorkspace_NoIssue()
+    {
+        Joints start = new(0, 10, 10, 0, 45, 0);
+        Pose from = Irb120.Kinematics.Forward(start);
+        var to = new Pose(from.Position + new Vector(0, 50, -30), from.Rotation);
+        Assert.Empty(KinematicChecks.Check(Irb120, start, to, KinematicMotion.Linear, 100));
+    }
+
+    [Fact]
+    public void Check_LineToOtherWristConfiguration_ConfigurationFlip()
+    {
+        // Same pose, wrist flipped (IRB 1200: axis 4 allows ±270°): a straight line cannot get there.
+        RobotModel m = RobotModels.Get("IRB 1200-5/0.9");
+        var issues = KinematicChecks.Check(m, new Joints(0, 0, 0, 0, 30, 0), new Joints(0, 0, 0, 180, -30, 180), KinematicMotion.Linear, 100);
+        Assert.Contains(KinematicIssueKind.ConfigurationFlip, Kinds(issues));
+        Assert.DoesNotContain(KinematicIssueKind.ConfigurationFlip, Kinds(KinematicChecks.Check(m, new Joints(0, 0, 0, 0, 30, 0), new Joints(0, 0, 0, 180, -30, 180), KinematicMotion.Joint, 100)));
+    }
+
+    [Fact]
+    public void Check_LineThroughStraightWrist_WristSingularityAndFlip()
+    {
+        var issues = KinematicChecks.Check(Irb120, new Joints(0, 0, 0, 0, 20, 0), new Joints(0, 0, 0, 0, -20, 0), KinematicMotion.Linear, 100);
+        Assert.Contains(KinematicIssueKind.WristSingularity, Kinds(issues));
+        Assert.Contains(KinematicIssueKind.ConfigurationFlip, Kinds(issues));
+    }
+
+    [Fact]
+    public void Check_FastLineOnSlowModel_JointSpeed()
+    {
+        RobotModel slow = RobotModel.FromOpw("slow", "ABB", Irb120.Opw!.Value, Irb120.MinJoints, Irb120.MaxJoints, new Joints(1, 1, 1, 1, 1, 1));
+        Joints start = new(0, 10, 10, 0, 45, 0);
+        Pose from = slow.Kinematics.Forward(start);
+        var to = new Pose(from.Position + new Vector(0, 100, 0), from.Rotation);
+        var issues = KinematicChecks.Check(slow, start, to, KinematicMotion.Linear, 500);
+        Assert.Equal([KinematicIssueKind.JointSpeed], Kinds(issues));
+        Assert.Contains("above its maximum of 1°/s", issues[0].Reason);
+        Assert.Empty(KinematicChecks.Check(Irb120, start, to, KinematicMotion.Linear, 500));
+    }
+
+    [Fact]
+    public void Check_LineLeavingReach_Unreachable()
+    {
+        Joints start = new(0, 10, 10, 0, 45, 0);
+        Pose from = Irb120.Kinematics.Forward(start);
+        var to = new Pose(from.Position + new Vector(2000, 0, 0), from.Rotation);
+        Assert.Equal([KinematicIssueKind.Unreachable], Kinds(KinematicChecks.Check(Irb120, start, to, KinematicMotion.Linear, 100)));
+    }
+}
