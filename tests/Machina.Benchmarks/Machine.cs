@@ -19,6 +19,22 @@ internal sealed record Machine(string Cpu, int Cores, string Runtime, string Os,
         }
     }
 
+    /// <summary>Minor page faults of this process so far (Linux, from /proc/self/stat), or 0 when unknown.</summary>
+    public static long MinorPageFaults()
+    {
+        try
+        {
+            string stat = File.ReadAllText("/proc/self/stat");
+            // Fields after the command name (which is in parentheses and may contain spaces); minflt is field 10.
+            string[] fields = stat[(stat.LastIndexOf(')') + 2)..].Split(' ');
+            return long.TryParse(fields[7], System.Globalization.NumberStyles.Integer, System.Globalization.CultureInfo.InvariantCulture, out long value) ? value : 0;
+        }
+        catch (IOException)
+        {
+            return 0;
+        }
+    }
+
     public static Machine Current() => new(
         CpuModel(),
         Environment.ProcessorCount,

@@ -18,6 +18,9 @@ internal sealed record Measurement
 
     /// <summary>Time the program was paused by the garbage collector during the median run.</summary>
     public double GcPauseSeconds { get; init; }
+
+    /// <summary>Minor page faults of the process during the median run (first touches of fresh memory); 0 where unknown.</summary>
+    public long PageFaults { get; init; }
     public long AllocatedBytes { get; init; }
     /// <summary>Memory still reachable after the run, the result included (e.g. the compiled program), over the heap before it.</summary>
     public long RetainedBytes { get; init; }

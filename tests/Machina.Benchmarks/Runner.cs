@@ -72,6 +72,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             CpuSeconds = Median(samples.Select(s => s.CpuSeconds)),
             Collections = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).Collections,
             GcPauseSeconds = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).GcPauseSeconds,
+            PageFaults = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).PageFaults,
             AllocatedBytes = Median(samples.Select(s => s.Allocated)),
             RetainedBytes = Median(samples.Select(s => s.Retained)),
             PeakBytes = Median(samples.Select(s => s.Peak)),
@@ -94,6 +95,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
         long threadBefore = GC.GetAllocatedBytesForCurrentThread();
         long totalBefore = GC.GetTotalAllocatedBytes(precise: true);
+        long faultsBefore = Machine.MinorPageFaults();
         long start = Stopwatch.GetTimestamp();
         object? result;
         long peak;
@@ -103,6 +105,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             peak = sampler.Peak;
         }
         TimeSpan elapsed = Stopwatch.GetElapsedTime(start);
+        long faults = Machine.MinorPageFaults() - faultsBefore;
         long threadAfter = GC.GetAllocatedBytesForCurrentThread();
         long totalAfter = GC.GetTotalAllocatedBytes(precise: true);
         TimeSpan cpuAfter = Process.GetCurrentProcess().TotalProcessorTime;
@@ -111,10 +114,10 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         long retained = Math.Max(0, FullCollect() - baseline);
         GC.KeepAlive(result);
         return new Sample(elapsed.TotalSeconds, (cpuAfter - cpuBefore).TotalSeconds,
-            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, Math.Max(0, peak - baseline), collections, pause);
+            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, Math.Max(0, peak - baseline), collections, pause, faults);
     }
 
-    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds);
+    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds, long PageFaults);
 
     private static long FullCollect()
     {
