@@ -2,25 +2,270 @@ namespace Machina;
 
 public sealed partial class Robot
 {
-    private IActionStream? _online = null;
+    private readonly ReleaseWindow _window = new();
+    private IActionStream? _online;
+    private OnlineSession? _session;
     private ControlType _controlType = ControlType.Offline;
+
+    /// <summary>Makes the link to a controller; tests replace it with a fake.</summary>
+    internal Func<IDeviceDriver>? DriverFactory { get; set; }
+
+    /// <summary>Clock used for the response timeout; tests may replace it.</summary>
+    internal TimeProvider Time { get; set; } = TimeProvider.System;
+
+    /// <summary>
+    /// Raised after each action is sent to the controller. Online events (this one, <see cref="ActionExecuted"/>,
+    /// <see cref="MotionUpdate"/>, <see cref="ConnectionLost"/> and, online, <see cref="ActionIssued"/>) are raised one at
+    /// a time, in order, on a background thread of this robot; a handler may issue new actions.
+    /// </summary>
+    public event EventHandler<ActionReleasedArgs>? ActionReleased;
+
+    /// <summary>Raised after the controller reports an action as executed, with the state after it and the pending counts.</summary>
+    public event EventHandler<ActionExecutedArgs>? ActionExecuted;
+
+    /// <summary>Raised when the controller reports where the robot is while it moves (ABB: its monitor task).</summary>
+    public event EventHandler<MotionUpdateArgs>? MotionUpdate;
+
+    /// <summary>Raised when the link to the controller fails; the actions not confirmed as executed are kept and listed.</summary>
+    public event EventHandler<ConnectionLostArgs>? ConnectionLost;
+
+    internal bool HasReleasedHandlers => ActionReleased is not null;
+    internal bool HasExecutedHandlers => ActionExecuted is not null;
+    internal bool HasMotionHandlers => MotionUpdate is not null;
+    internal bool HasConnectionLostHandlers => ConnectionLost is not null;
+
+    /// <summary>Delivers an online event to its subscribers (called by the event loop; never throws).</summary>
+    internal void RaiseOnline(MachinaEventArgs args)
+    {
+        switch (args)
+        {
+            case ActionIssuedArgs a when ActionIssued is { } h: RaiseSafely(h, a); break;
+            case ActionReleasedArgs a when ActionReleased is { } h: RaiseSafely(h, a); break;
+            case ActionExecutedArgs a when ActionExecuted is { } h: RaiseSafely(h, a); break;
+            case MotionUpdateArgs a when MotionUpdate is { } h: RaiseSafely(h, a); break;
+            case ConnectionLostArgs a when ConnectionLost is { } h: RaiseSafely(h, a); break;
+        }
+    }
 
     /// <summary>How this robot receives its actions: offline (compiled into a program, the default) or online (streamed).</summary>
     public ControlType GetControlMode() => _controlType;
 
-    /// <summary>Chooses offline (actions are compiled) or online (actions are streamed to a controller).</summary>
+    /// <summary>
+    /// Chooses offline (actions are compiled) or online (actions are streamed to a controller after <see cref="Connect(string, int)"/>).
+    /// Online control is available for ABB robots. Disconnect before changing the mode of a connected robot.
+    /// </summary>
     /// <returns>True when the mode is set.</returns>
     public bool ControlMode(ControlType mode)
     {
         mode = EnumText.RequireDefined(mode, nameof(mode));
-        if (mode != ControlType.Offline)
+        if (mode == ControlType.Stream)
         {
-            throw new NotSupportedException("Online control is not available in this build yet.");
+            mode = ControlType.Online;
+        }
+        if (mode == _controlType)
+        {
+            return true;
+        }
+        if (_session is { IsConnected: true })
+        {
+            throw new InvalidOperationException("The robot is connected; call Disconnect before changing its control mode.");
+        }
+        if (mode == ControlType.Online)
+        {
+            Func<IDeviceDriver> factory = DriverFactory ?? OnlineDrivers.For(this);
+            lock (_issueCursor)
+            {
+                _session = new OnlineSession(this, _issueCursor, _window, factory, Time);
+                _online = _session;
+            }
+        }
+        else
+        {
+            OnlineSession? old;
+            lock (_issueCursor)
+            {
+                old = _session;
+                _session = null;
+                _online = null;
+            }
+            int dropped = old?.GetPendingActions().Count ?? 0;
+            if (dropped > 0)
+            {
+                Logger.Warning($"Going offline dropped {dropped} actions that were not executed by the controller.");
+            }
+            _ = old?.CloseAsync();
         }
         _controlType = mode;
         return true;
     }
 
-    /// <summary>Chooses "offline" or "online" (any letter case).</summary>
+    /// <summary>Chooses "offline" or "online" ("stream" is an old name of online), any letter case.</summary>
     public bool ControlMode(string mode) => ControlMode(EnumText.Parse<ControlType>(mode, "control mode"));
+
+    /// <summary>Who starts the driver on the controller. Only <see cref="ConnectionType.User"/> is available: load and start the driver yourself.</summary>
+    /// <returns>True for User; false (with a warning in the log) for Machina.</returns>
+    public bool ConnectionManager(ConnectionType type)
+    {
+        if (EnumText.RequireDefined(type, nameof(type)) == ConnectionType.User)
+        {
+            return true;
+        }
+        Logger.Warning("Machina cannot load the driver on the controller itself in this version; load it with GetDeviceDriverModules and connect as User.");
+        return false;
+    }
+
+    /// <summary>Same as <see cref="ConnectionManager(ConnectionType)"/> with "user" or "machina" (any letter case).</summary>
+    public bool ConnectionManager(string type) => ConnectionManager(EnumText.Parse<ConnectionType>(type, "connection type"));
+
+    /// <summary>How long <see cref="Connect(string, int)"/> waits for the controller and its handshake (default 5 s).</summary>
+    public TimeSpan ConnectTimeout { get; set; } = TimeSpan.FromSeconds(5);
+
+    /// <summary>
+    /// How long the controller may stay silent, beyond the time the current action should take at its programmed speed,
+    /// before the connection is declared lost (default 30 s; <see cref="Timeout.InfiniteTimeSpan"/> turns the check off).
+    /// Takes effect at the next connection.
+    /// </summary>
+    public TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
+
+    /// <summary>True while connected to a controller.</summary>
+    public bool IsConnected => _session?.IsConnected ?? false;
+
+    /// <summary>Connects to the driver running on a controller at <paramref name="host"/>:<paramref name="port"/> and waits for its handshake.</summary>
+    /// <returns>True once connected.</returns>
+    /// <exception cref="MachinaException">The controller could not be reached or did not answer as expected.</exception>
+    public bool Connect(string host, int port)
+    {
+        ConnectAsync(host, port).GetAwaiter().GetResult();
+        return true;
+    }
+
+    /// <summary>Connects to a driver on this computer (such as RobotStudio's virtual controller) at 127.0.0.1:7000.</summary>
+    public bool Connect() => Connect("127.0.0.1", 7000);
+
+    /// <summary>
+    /// Connects to the driver on a controller and waits for its handshake (at most <see cref="ConnectTimeout"/>). The robot's
+    /// reported pose, joints and external axes become the state of every cursor; actions issued before are then streamed.
+    /// </summary>
+    /// <exception cref="MachinaException">The controller could not be reached or did not answer as expected.</exception>
+    public Task ConnectAsync(string host, int port, CancellationToken cancellationToken = default)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(host);
+        ArgumentOutOfRangeException.ThrowIfNegativeOrZero(port);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(port, 65535);
+        OnlineSession session = RequireSession("connect");
+        session.ResponseTimeout = ResponseTimeout;
+        return session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);
+    }
+
+    /// <summary>Closes the connection. Actions sent but not confirmed as executed are kept as pending (the robot may still run them).</summary>
+    /// <returns>True (kept for programs written for the original Machina).</returns>
+    public bool Disconnect()
+    {
+        DisconnectAsync().GetAwaiter().GetResult();
+        return true;
+    }
+
+    /// <summary>Closes the connection (see <see cref="Disconnect"/>).</summary>
+    public Task DisconnectAsync() => _session?.DisconnectAsync() ?? Task.CompletedTask;
+
+    /// <summary>Waits until every issued action was executed by the controller and its events were raised.</summary>
+    /// <exception cref="MachinaException">The connection was lost (or closed) before that.</exception>
+    public Task WaitForCompletionAsync(CancellationToken cancellationToken = default) =>
+        RequireSession("wait for completion").WaitForCompletionAsync(cancellationToken);
+
+    /// <summary>Waits until every issued action was executed, at most <paramref name="timeout"/>.</summary>
+    /// <returns>True when everything was executed, false on timeout.</returns>
+    /// <exception cref="MachinaException">The connection was lost before that.</exception>
+    public bool WaitForCompletion(TimeSpan timeout)
+    {
+        try
+        {
+            WaitForCompletionAsync().WaitAsync(timeout).GetAwaiter().GetResult();
+            return true;
+        }
+        catch (TimeoutException)
+        {
+            return false;
+        }
+    }
+
+    /// <summary>
+    /// Sets the release window the way the original Machina did: stream until <paramref name="maxActionsOnController"/>
+    /// actions wait on the controller, then refill when <paramref name="minActionOnController"/> or fewer are left
+    /// (BlockSize = max − min, PendingCount = min + 1). Defaults: 2 and 10. Can be called at any time.
+    /// </summary>
+    public bool StreamConfiguration(int minActionOnController, int maxActionsOnController)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegative(minActionOnController);
+        if (maxActionsOnController <= minActionOnController)
+        {
+            throw new ArgumentOutOfRangeException(nameof(maxActionsOnController), maxActionsOnController,
+                $"The maximum number of actions on the controller must be greater than the minimum ({minActionOnController}).");
+        }
+        _window.BlockSize = maxActionsOnController - minActionOnController;
+        _window.PendingCount = minActionOnController + 1;
+        return true;
+    }
+
+    /// <summary>How many actions are sent to the controller at once (1 or more; default 8). Can be changed at any time.</summary>
+    public int BlockSize
+    {
+        get => _window.BlockSize;
+        set => _window.BlockSize = value;
+    }
+
+    /// <summary>
+    /// A new block is sent when fewer than this many sent actions are still unexecuted on the controller (1 or more; default 3,
+    /// so at most 10 actions wait on the controller). Can be changed at any time.
+    /// </summary>
+    public int PendingCount
+    {
+        get => _window.PendingCount;
+        set => _window.PendingCount = value;
+    }
+
+    /// <summary>Issued actions not executed yet, oldest first (sent but unconfirmed ones first). Empty offline.</summary>
+    public IReadOnlyList<RobotAction> GetPendingActions() => _session?.GetPendingActions() ?? [];
+
+    /// <summary>Cancels every issued action not sent to the controller yet; the robot's state goes back to the last sent action.</summary>
+    /// <returns>How many actions were cancelled.</returns>
+    public int ClearPendingActions() => _session?.ClearPendingActions() ?? 0;
+
+    /// <summary>"host:port" of the connected controller, or an empty string.</summary>
+    public string GetIP() => _session?.RemoteAddress ?? "";
+
+    /// <summary>State after the last action sent to the controller (online), or after the last issued action (offline).</summary>
+    public RobotState GetReleasedState() => _session?.Snapshots().Released ?? GetIssuedState();
+
+    /// <summary>State after the last action the controller executed (online), or after the last issued action (offline).</summary>
+    public RobotState GetExecutedState() => _session?.Snapshots().Executed ?? GetIssuedState();
+
+    /// <summary>Where the controller last reported the robot to be while moving, or null when it has not reported yet.</summary>
+    public RobotState? GetMotionState() => _session?.Snapshots().Motion;
+
+    /// <summary>State after the last issued action.</summary>
+    public RobotState GetIssuedState()
+    {
+        lock (_issueCursor)
+        {
+            return _issueCursor.Snapshot();
+        }
+    }
+
+    /// <summary>
+    /// The driver files to load on the controller, by file name, with the connection placeholders filled in.
+    /// Needs "HOSTNAME" (the controller address the driver listens on) and "PORT" (a number; the monitor uses PORT + 1);
+    /// "MONITOR_RATE" (motion updates per second, default 50) is optional. Works in any control mode.
+    /// </summary>
+    public IReadOnlyDictionary<string, string> GetDeviceDriverModules(IReadOnlyDictionary<string, string> parameters)
+    {
+        ArgumentNullException.ThrowIfNull(parameters);
+        return OnlineDrivers.Modules(Brand, parameters);
+    }
+
+    /// <summary>Completes once every online event queued so far was raised (tests).</summary>
+    internal Task FlushEventsAsync() => _session?.FlushEventsAsync() ?? Task.CompletedTask;
+
+    private OnlineSession RequireSession(string what) => _session
+        ?? throw new InvalidOperationException($"Cannot {what} while the robot is offline; call ControlMode(\"online\") first.");
 }

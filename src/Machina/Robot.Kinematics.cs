@@ -54,7 +54,7 @@ public sealed partial class Robot
     /// i.e. before the first motion, so the whole program is computed with one model.
     /// </summary>
     /// <exception cref="ArgumentException">The model is of another brand than this robot.</exception>
-    /// <exception cref="InvalidOperationException">A motion was already issued.</exception>
+    /// <exception cref="InvalidOperationException">A motion was already issued, or the robot is connected (choose the model before connecting).</exception>
     public void SetModel(RobotModel? model)
     {
         if (model is not null)
@@ -63,6 +63,10 @@ public sealed partial class Robot
         }
         lock (_issueCursor)
         {
+            if (_online is not null)
+            {
+                throw new InvalidOperationException("The robot model must be chosen before connecting to the controller (the stream keeps its own copy of the state).");
+            }
             if (_issueCursor.Position is not null || _issueCursor.Axes is not null)
             {
                 throw new InvalidOperationException(

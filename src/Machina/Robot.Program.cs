@@ -32,6 +32,7 @@ public sealed partial class Robot
         lock (_issueCursor)
         {
             trial.CopyFrom(_issueCursor);
+            trial.Strict = _issueCursor.Strict;
         }
         foreach (RobotAction action in actions)
         {

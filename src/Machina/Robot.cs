@@ -32,7 +32,7 @@ public sealed partial class Robot
     /// <summary>This robot's log.</summary>
     public RobotLogger Logger { get; }
 
-    /// <summary>Raised after each action is accepted, with the state it leads to. Raised on the thread that issued the action.</summary>
+    /// <summary>Raised after each action is accepted, with the state it leads to. Offline it is raised on the thread that issued the action; online, on the robot's event thread (see <see cref="ActionReleased"/>).</summary>
     public event EventHandler<ActionIssuedArgs>? ActionIssued;
 
     /// <summary>A robot named "Machina" that compiles to a human-readable listing.</summary>
@@ -79,8 +79,7 @@ public sealed partial class Robot
     {
         ArgumentNullException.ThrowIfNull(action);
         string? report;
-        EventHandler<ActionIssuedArgs>? handler;
-        RobotState? snapshot;
+        ActionIssuedArgs? issued = null;
         lock (_issueCursor)
         {
             if (action.Id != -1)
@@ -98,35 +97,33 @@ public sealed partial class Robot
             {
                 RecordIssues(action, _issueCursor.LastIssues);
             }
-            Dispatch(action);
             // Report and snapshot are taken under the lock so that they describe exactly this action's result,
             // even when another thread issues the next action before the handlers run.
             report = Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative ? StateReport() : null;
-            handler = ActionIssued;
-            snapshot = handler is null ? null : _issueCursor.Snapshot();
+            if (ActionIssued is not null)
+            {
+                issued = new ActionIssuedArgs(action, _issueCursor.Snapshot());
+            }
+            if (_online is not null)
+            {
+                // Online, the stream raises ActionIssued on its event loop, before any later event about this action.
+                _online.Enqueue(action, issued);
+                issued = null;
+            }
+            else
+            {
+                _programActions.Add(action);
+            }
         }
         if (report is not null)
         {
             Logger.Verbose(report);
         }
-        if (handler is not null && snapshot is not null)
+        if (issued is not null && ActionIssued is { } handler)
         {
-            RaiseSafely(handler, new ActionIssuedArgs(action, snapshot));
+            RaiseSafely(handler, issued);
         }
         return true;
-    }
-
-    /// <summary>Sends an issued action on: to the stream when online, to the program otherwise.</summary>
-    private void Dispatch(RobotAction action)
-    {
-        if (_online is not null)
-        {
-            _online.Enqueue(action);
-        }
-        else
-        {
-            _programActions.Add(action);
-        }
     }
 
     private string StateReport() => _issueCursor.LastAction switch

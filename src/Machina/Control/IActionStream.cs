@@ -3,6 +3,10 @@ namespace Machina;
 /// <summary>Where issued actions go when the robot is online: the release buffer of a connection.</summary>
 internal interface IActionStream
 {
-    /// <summary>Takes an action that was just issued (already applied to the issue cursor and given its id).</summary>
-    void Enqueue(RobotAction action);
+    /// <summary>
+    /// Takes an action that was just issued (already applied to the issue cursor and given its id). Called while the issue
+    /// cursor is locked, so actions arrive in id order. <paramref name="issued"/> is the ActionIssued payload to raise, or
+    /// null when nobody listens; the stream raises it before any later event about the same action.
+    /// </summary>
+    void Enqueue(RobotAction action, ActionIssuedArgs? issued);
 }

@@ -66,27 +66,8 @@ public abstract class MachinaEventArgs : EventArgs
         sb.Append(",\"conf\":null");
     }
 
-    /// <summary>Appends a JSON string literal.</summary>
-    private protected static void AppendJsonString(StringBuilder sb, string text)
-    {
-        sb.Append('"');
-        foreach (char c in text)
-        {
-            switch (c)
-            {
-                case '"': sb.Append("\\\""); break;
-                case '\\': sb.Append("\\\\"); break;
-                case '\n': sb.Append("\\n"); break;
-                case '\r': sb.Append("\\r"); break;
-                case '\t': sb.Append("\\t"); break;
-                default:
-                    if (c < ' ') { sb.Append("\\u").Append(((int)c).ToString("x4", Num.Inv)); }
-                    else { sb.Append(c); }
-                    break;
-            }
-        }
-        sb.Append('"');
-    }
+    /// <summary>Appends a JSON string literal (the instruction quoting escapes exactly what JSON requires).</summary>
+    private protected static void AppendJsonString(StringBuilder sb, string text) => sb.Append(InstructionText.Quote(text));
 
     /// <summary>Appends <c>"event":"name","last":"instruction","id":n</c>.</summary>
     private protected static void AppendHead(StringBuilder sb, string eventName, RobotAction action)

@@ -16,10 +16,10 @@ internal abstract class LineSink
     }
 }
 
-/// <summary>Keeps lines in a list.</summary>
+/// <summary>Keeps lines in memory, packed into large blocks (see <see cref="PackedLines"/>).</summary>
 internal sealed class ListLineSink : LineSink
 {
-    internal List<string> Lines { get; } = [];
+    internal PackedLines Lines { get; } = new();
 
     internal override void Add(string line) => Lines.Add(line);
 }

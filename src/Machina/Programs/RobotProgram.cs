@@ -63,11 +63,7 @@ public sealed class RobotProgram
             using (var stream = new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.None))
             using (var writer = new StreamWriter(stream, file.Encoding))
             {
-                foreach (string line in file.Lines)
-                {
-                    writer.Write(line);
-                    writer.Write(newLine);
-                }
+                file.WriteTo(writer, newLine);
             }
             written.Add(path);
         }

@@ -35,12 +35,33 @@ public sealed class RobotProgramFile
     /// <summary>The whole file as text, each line ended by <paramref name="newLine"/> (default "\n").</summary>
     public string ToText(string newLine = "\n")
     {
+        if (Lines is PackedLines packed)
+        {
+            var text = new StringBuilder((int)Math.Min(int.MaxValue, packed.CharacterCount + (long)packed.Count * newLine.Length));
+            packed.AppendTo(text, newLine);
+            return text.ToString();
+        }
         var sb = new StringBuilder();
         foreach (string line in Lines)
         {
             sb.Append(line).Append(newLine);
         }
         return sb.ToString();
+    }
+
+    /// <summary>Writes the lines, each ended by <paramref name="newLine"/>.</summary>
+    internal void WriteTo(TextWriter writer, string newLine)
+    {
+        if (Lines is PackedLines packed)
+        {
+            packed.WriteTo(writer, newLine);
+            return;
+        }
+        foreach (string line in Lines)
+        {
+            writer.Write(line);
+            writer.Write(newLine);
+        }
     }
 
     /// <summary>Text such as <c>Robot Program File "HelloRobot.mod" with 40 lines of code.</c>.</summary>

@@ -76,7 +76,7 @@ internal sealed partial class RobotCursor
         LastAction = null;
     }
 
-    /// <summary>Makes this cursor an exact copy of <paramref name="other"/> (the warning sink is kept).</summary>
+    /// <summary>Makes this cursor an exact copy of <paramref name="other"/>, model included (its warning sink and strictness are kept).</summary>
     internal void CopyFrom(RobotCursor other)
     {
         Position = other.Position; PrevPosition = other.PrevPosition;
@@ -102,7 +102,6 @@ internal sealed partial class RobotCursor
         LastPathLength = other.LastPathLength;
         LastAction = other.LastAction;
         Model = other.Model;
-        Strict = other.Strict;
         LastIssues = other.LastIssues;
     }
 

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -39,19 +40,22 @@ internal static class InstructionText
     internal static string Bool(bool value) => value ? "True" : "False";
 
     /// <summary><c>Name(n1,n2,…);</c> with lossless numbers.</summary>
+    /// <remarks>Formats into a stack buffer so that only the final string is allocated (compiling a million moves calls this a million times).</remarks>
     internal static string Call(string name, params ReadOnlySpan<double> values)
     {
-        var sb = new StringBuilder(name.Length + 2 + values.Length * 8);
-        sb.Append(name).Append('(');
+        var text = new DefaultInterpolatedStringHandler(0, 0, Num.Inv, stackalloc char[256]);
+        text.AppendLiteral(name);
+        text.AppendLiteral("(");
         for (int i = 0; i < values.Length; i++)
         {
             if (i > 0)
             {
-                sb.Append(',');
+                text.AppendLiteral(",");
             }
-            sb.Append(Num.R(values[i]));
+            text.AppendFormatted(Num.Clean(values[i]), "R");
         }
-        return sb.Append(");").ToString();
+        text.AppendLiteral(");");
+        return text.ToStringAndClear();
     }
 
     /// <summary><c>Name(a,b,…);</c> from already formatted arguments.</summary>

@@ -98,7 +98,8 @@ public class VirtualAbbControllerTests
         controller.ResumeAnswering();
         var acks = await client.ReadMessagesAsync(10);
         Assert.Equal(Enumerable.Range(1, 10), acks.Select(a => a.Id));
-        Assert.InRange(controller.MaxUnacknowledged, 3, 4);
+        // At most the buffer, the request being executed and one request parsed from the socket before the buffer check.
+        Assert.InRange(controller.MaxUnacknowledged, 3, 5);
     }
 
     [Fact]

@@ -1,0 +1,61 @@
+using System.Threading.Channels;
+
+namespace Machina;
+
+/// <summary>
+/// Raises a connection's events one at a time, in the order they happened, on one background loop: the link's own loops
+/// never run user code, a slow handler never delays the robot, and a handler may issue actions without deadlocks.
+/// </summary>
+internal sealed class EventPump
+{
+    private readonly Channel<Item> _queue = Channel.CreateUnbounded<Item>(new UnboundedChannelOptions { SingleReader = true });
+    private readonly Action<MachinaEventArgs> _raise;
+    private readonly Task _loop;
+    private int _raisingThread = -1;
+
+    /// <summary>Starts the loop; <paramref name="raise"/> delivers one event to its subscribers and must not throw.</summary>
+    internal EventPump(Action<MachinaEventArgs> raise)
+    {
+        _raise = raise;
+        _loop = Task.Run(RunAsync);
+    }
+
+    /// <summary>True when called from inside an event handler run by this pump.</summary>
+    internal bool IsRaisingOnCurrentThread => Volatile.Read(ref _raisingThread) == Environment.CurrentManagedThreadId;
+
+    /// <summary>Queues an event.</summary>
+    internal void Post(MachinaEventArgs args) => _queue.Writer.TryWrite(new Item(args, null, null));
+
+    /// <summary>Completes (or fails, when <paramref name="error"/> is set) a waiting task after every event queued so far was raised.</summary>
+    internal void PostSignal(TaskCompletionSource signal, Exception? error) => _queue.Writer.TryWrite(new Item(null, signal, error));
+
+    /// <summary>Raises what is queued, then stops the loop.</summary>
+    internal Task StopAsync()
+    {
+        _queue.Writer.TryComplete();
+        return _loop;
+    }
+
+    private async Task RunAsync()
+    {
+        await foreach (Item item in _queue.Reader.ReadAllAsync().ConfigureAwait(false))
+        {
+            if (item.Args is not null)
+            {
+                Volatile.Write(ref _raisingThread, Environment.CurrentManagedThreadId);
+                _raise(item.Args);
+                Volatile.Write(ref _raisingThread, -1);
+            }
+            else if (item.Error is null)
+            {
+                item.Signal!.TrySetResult();
+            }
+            else
+            {
+                item.Signal!.TrySetException(item.Error);
+            }
+        }
+    }
+
+    private readonly record struct Item(MachinaEventArgs? Args, TaskCompletionSource? Signal, Exception? Error);
+}

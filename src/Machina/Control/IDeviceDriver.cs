@@ -1,0 +1,34 @@
+namespace Machina;
+
+/// <summary>
+/// The link to the program running on a controller: opens the connection, turns released actions into wire requests and
+/// reports acknowledgements, live poses and faults to an <see cref="IDeviceListener"/>.
+/// </summary>
+internal interface IDeviceDriver : IAsyncDisposable
+{
+    /// <summary>"host:port" of the controller once connected, else empty.</summary>
+    string RemoteAddress { get; }
+
+    /// <summary>Opens the connection and waits for the controller's handshake; throws <see cref="MachinaException"/> on failure.</summary>
+    Task<DeviceHandshake> ConnectAsync(string host, int port, IDeviceListener listener, TimeSpan timeout, CancellationToken cancellationToken);
+
+    /// <summary>
+    /// Encodes a released action with the release cursor's state after it and queues the bytes for sending. Returns true when
+    /// the controller will acknowledge the action, false when it produced nothing to send (it then counts as executed as
+    /// soon as everything released before it is executed). Called under the session lock: it must not block.
+    /// </summary>
+    bool Send(RobotAction action, RobotCursor releaseState);
+}
+
+/// <summary>Receives what a device driver hears from its controller. Calls may come from the driver's receive loops.</summary>
+internal interface IDeviceListener
+{
+    /// <summary>The controller finished the action with this id.</summary>
+    void OnAcknowledged(int id);
+
+    /// <summary>The controller reported where the robot is now.</summary>
+    void OnMotion(in MotionSample sample);
+
+    /// <summary>The link failed (closed socket, garbage, protocol violation); the driver stops after this call.</summary>
+    void OnFault(MachinaException error);
+}

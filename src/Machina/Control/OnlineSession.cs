@@ -1,0 +1,254 @@
+namespace Machina;
+
+/// <summary>
+/// The online half of a robot: the FIFO buffer of issued actions, the release policy, the Release, Execution and Motion
+/// cursors, and the events. One lock (<c>_gate</c>) guards all of it; user code never runs under it (events go through an
+/// <see cref="EventPump"/>). Lock order: the robot's issue cursor first, then <c>_gate</c>.
+/// </summary>
+internal sealed partial class OnlineSession : IActionStream
+{
+    private readonly Robot _robot;
+    private readonly RobotCursor _issue;
+    private readonly ReleaseWindow _window;
+    private readonly Func<IDeviceDriver> _driverFactory;
+    private readonly TimeProvider _time;
+    private readonly EventPump _events;
+    private readonly object _gate = new();
+    private readonly Queue<RobotAction> _buffer = new();
+    private readonly Queue<InFlight> _inFlight = new();
+    private readonly RobotCursor _release = new();
+    private readonly RobotCursor _execution = new();
+    private RobotCursor? _motion;
+    private TaskCompletionSource? _completion;
+    private int _credit;
+
+    /// <summary>Creates the session of a robot; the issue cursor is the robot's, locked by it while issuing.</summary>
+    internal OnlineSession(Robot robot, RobotCursor issueCursor, ReleaseWindow window, Func<IDeviceDriver> driverFactory, TimeProvider time)
+    {
+        _robot = robot;
+        _issue = issueCursor;
+        _window = window;
+        _driverFactory = driverFactory;
+        _time = time;
+        _events = new EventPump(robot.RaiseOnline);
+        _release.CopyFrom(issueCursor);
+        _execution.CopyFrom(issueCursor);
+    }
+
+    /// <summary>How long the controller may stay silent beyond the expected duration of the action it works on.</summary>
+    internal TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
+
+    /// <summary>A released action waiting for execution; <c>Acked</c> when the controller will acknowledge it.</summary>
+    private readonly record struct InFlight(RobotAction Action, bool Acked, double ExpectedMs);
+
+    /// <inheritdoc/>
+    public void Enqueue(RobotAction action, ActionIssuedArgs? issued)
+    {
+        lock (_gate)
+        {
+            if (issued is not null)
+            {
+                _events.Post(issued);
+            }
+            _buffer.Enqueue(action);
+            ReleaseReady();
+        }
+    }
+
+    /// <summary>Actions issued and not executed yet, oldest first: first those sent to the controller, then those waiting.</summary>
+    internal IReadOnlyList<RobotAction> GetPendingActions()
+    {
+        lock (_gate)
+        {
+            return PendingList();
+        }
+    }
+
+    private List<RobotAction> PendingList()
+    {
+        var list = new List<RobotAction>(_inFlight.Count + _buffer.Count);
+        foreach (InFlight f in _inFlight)
+        {
+            list.Add(f.Action);
+        }
+        list.AddRange(_buffer);
+        return list;
+    }
+
+    /// <summary>Numbers of actions waiting to be released and released but not executed.</summary>
+    internal (int Buffered, int OnDevice) PendingCounts()
+    {
+        lock (_gate)
+        {
+            return (_buffer.Count, _inFlight.Count);
+        }
+    }
+
+    /// <summary>Drops every action not released yet; the issue cursor goes back to the state after the last released action.</summary>
+    /// <returns>How many actions were dropped.</returns>
+    internal int ClearPendingActions()
+    {
+        lock (_issue)
+        {
+            lock (_gate)
+            {
+                int count = _buffer.Count;
+                _buffer.Clear();
+                _issue.CopyFrom(_release);
+                CheckCompletion();
+                return count;
+            }
+        }
+    }
+
+    /// <summary>Snapshots of the release, execution and motion cursors (motion is null before the first live pose).</summary>
+    internal (RobotState Released, RobotState Executed, RobotState? Motion) Snapshots()
+    {
+        lock (_gate)
+        {
+            return (_release.Snapshot(), _execution.Snapshot(), _motion?.Snapshot());
+        }
+    }
+
+    /// <summary>Reads the execution cursor under the lock (online the robot's getters report the executed state, as the original did).</summary>
+    internal T ReadExecution<T>(Func<RobotCursor, T> read)
+    {
+        lock (_gate)
+        {
+            return read(_execution);
+        }
+    }
+
+    /// <summary>Completes once every issued action was executed and its events raised; fails when the link fails first.</summary>
+    internal Task WaitForCompletionAsync(CancellationToken cancellationToken)
+    {
+        if (_events.IsRaisingOnCurrentThread)
+        {
+            return Task.FromException(new InvalidOperationException(
+                "WaitForCompletion cannot be called from an event handler: the completion is reported on the same thread. Await it elsewhere."));
+        }
+        Task task;
+        lock (_gate)
+        {
+            if (_buffer.Count == 0 && _inFlight.Count == 0)
+            {
+                var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+                _events.PostSignal(done, null);
+                task = done.Task;
+            }
+            else if (_link is null)
+            {
+                return Task.FromException(new RobotConnectionException(
+                    $"{_buffer.Count + _inFlight.Count} actions wait to be executed but the robot is not connected; call Connect first."));
+            }
+            else
+            {
+                _completion ??= new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+                task = _completion.Task;
+            }
+        }
+        return task.WaitAsync(cancellationToken);
+    }
+
+    /// <summary>Releases blocks while the window allows; executes released actions that nothing acknowledges once they are next.</summary>
+    private void ReleaseReady()
+    {
+        if (_link is not { IsReady: true } link)
+        {
+            return;
+        }
+        while (true)
+        {
+            ExecuteUnacknowledgedHead();
+            int block = _window.Take(_inFlight.Count, _buffer.Count, ref _credit);
+            if (block == 0)
+            {
+                break;
+            }
+            for (int i = 0; i < block; i++)
+            {
+                ReleaseOne(link, _buffer.Dequeue());
+            }
+        }
+        CheckCompletion();
+    }
+
+    private void ReleaseOne(Connection link, RobotAction action)
+    {
+        string? refusal = _release.TryApply(action);
+        if (refusal is not null)
+        {
+            // Cannot happen while the cursors agree; never send something the controller cannot do.
+            _robot.Logger.Error($"Could not release {action.ToInstruction()}: {refusal} It was dropped.");
+            return;
+        }
+        bool acknowledged;
+        try
+        {
+            acknowledged = link.Driver.Send(action, _release);
+        }
+        catch (Exception ex) when (ex is NotSupportedException or ArgumentException or InvalidOperationException)
+        {
+            _robot.Logger.Warning($"{action.ToInstruction()} cannot be streamed to this controller ({ex.Message}); it was skipped.");
+            acknowledged = false;
+        }
+        if (_inFlight.Count == 0)
+        {
+            _lastProgress = _time.GetTimestamp();
+        }
+        _inFlight.Enqueue(new InFlight(action, acknowledged, ExpectedMilliseconds(action, _release)));
+        if (_robot.HasReleasedHandlers)
+        {
+            _events.Post(new ActionReleasedArgs(action, _buffer.Count, _release.Snapshot()));
+        }
+    }
+
+    /// <summary>How long the controller should take for an action at the programmed speed, ms (0 for settings).</summary>
+    private static double ExpectedMilliseconds(RobotAction action, RobotCursor after) => action switch
+    {
+        ActionWait w => w.Millis,
+        _ when after.LastPathLength is double length && after.Speed > 0 => 1000 * length / after.Speed,
+        _ => 0,
+    };
+
+    private void ExecuteUnacknowledgedHead()
+    {
+        while (_inFlight.TryPeek(out InFlight head) && !head.Acked)
+        {
+            Execute(_inFlight.Dequeue());
+        }
+    }
+
+    private void Execute(InFlight entry)
+    {
+        string? refusal = _execution.TryApply(entry.Action);
+        if (refusal is not null)
+        {
+            _robot.Logger.Error($"The execution state could not follow {entry.Action.ToInstruction()}: {refusal}");
+        }
+        if (_robot.HasExecutedHandlers)
+        {
+            _events.Post(new ActionExecutedArgs(entry.Action, _inFlight.Count, _inFlight.Count + _buffer.Count, _execution.Snapshot()));
+        }
+    }
+
+    private void CheckCompletion()
+    {
+        if (_completion is not null && _buffer.Count == 0 && _inFlight.Count == 0)
+        {
+            _events.PostSignal(_completion, null);
+            _completion = null;
+        }
+    }
+
+    /// <summary>Completes once every event queued so far was raised.</summary>
+    internal Task FlushEventsAsync()
+    {
+        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        _events.PostSignal(done, null);
+        return done.Task;
+    }
+
+    /// <summary>Stops raising events once the queued ones are raised (when the robot goes back offline).</summary>
+    internal Task CloseAsync() => _events.StopAsync();
+}

@@ -1,0 +1,222 @@
+using System.Net.Sockets;
+using System.Threading.Channels;
+
+namespace Machina;
+
+/// <summary>
+/// One TCP connection with a receive loop and a send loop. A sender's bytes go straight into the socket when nothing is
+/// queued (a non-blocking send); otherwise they wait in an outbox that the send loop writes in one call. Streaming many
+/// small requests thus costs no allocation per request and never blocks the caller. Disposing cancels both loops and
+/// closes the socket.
+/// </summary>
+internal sealed class TcpLink : IAsyncDisposable
+{
+    private const int ReceiveBufferSize = 16 * 1024;
+
+    private readonly Socket _socket;
+    private readonly CancellationTokenSource _stop = new();
+    private readonly Channel<bool> _doorbell = Channel.CreateBounded<bool>(new BoundedChannelOptions(1)
+    {
+        FullMode = BoundedChannelFullMode.DropWrite,
+        SingleReader = true,
+    });
+    private readonly object _outboxGate = new();
+    private byte[] _outbox = new byte[4096];
+    private int _outboxLength;
+    private bool _loopWriting;
+    private byte[] _writing = new byte[4096];
+    private Task _receiveLoop = Task.CompletedTask;
+    private Task _sendLoop = Task.CompletedTask;
+    private ILinkReceiver? _receiver;
+    private int _disposed;
+
+    private TcpLink(Socket socket, string remoteAddress)
+    {
+        _socket = socket;
+        RemoteAddress = remoteAddress;
+    }
+
+    /// <summary>"host:port" of the other end.</summary>
+    internal string RemoteAddress { get; }
+
+    /// <summary>Connects within <paramref name="timeout"/>; throws <see cref="MachinaException"/> when the host cannot be reached.</summary>
+    internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true };
+        using var timer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        timer.CancelAfter(timeout);
+        try
+        {
+            await socket.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);
+            socket.Blocking = false; // Post never waits; the loops use asynchronous calls
+            return new TcpLink(socket, $"{host}:{port}");
+        }
+        catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
+        {
+            socket.Dispose();
+            throw new RobotConnectionException($"Could not connect to {host}:{port} within {Num.G(timeout.TotalSeconds)} s; is the driver running there?");
+        }
+        catch (SocketException ex)
+        {
+            socket.Dispose();
+            throw new RobotConnectionException($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
+        }
+        catch
+        {
+            socket.Dispose();
+            throw;
+        }
+    }
+
+    /// <summary>Starts the receive and send loops.</summary>
+    internal void Start(ILinkReceiver receiver)
+    {
+        _receiver = receiver;
+        _receiveLoop = Task.Run(ReceiveLoopAsync);
+        _sendLoop = Task.Run(SendLoopAsync);
+    }
+
+    /// <summary>
+    /// Sends bytes without ever blocking: when nothing is queued they go straight to the socket's buffer (a non-blocking
+    /// send), otherwise, or for what did not fit, they are copied to the outbox for the send loop.
+    /// </summary>
+    internal void Post(ReadOnlySpan<byte> bytes)
+    {
+        lock (_outboxGate)
+        {
+            if (_outboxLength == 0 && !_loopWriting && Volatile.Read(ref _disposed) == 0)
+            {
+                try
+                {
+                    int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
+                    if (error is SocketError.Success or SocketError.WouldBlock && sent > 0)
+                    {
+                        bytes = bytes[sent..];
+                    }
+                }
+                catch (ObjectDisposedException)
+                {
+                    // Closing: the bytes are dropped with the link, whose loops report the end.
+                    return;
+                }
+                if (bytes.IsEmpty)
+                {
+                    return;
+                }
+                // Not sent (buffer full or an error): the send loop writes it or meets and reports the failure.
+            }
+            if (_outboxLength + bytes.Length > _outbox.Length)
+            {
+                Array.Resize(ref _outbox, Math.Max(_outbox.Length * 2, _outboxLength + bytes.Length));
+            }
+            bytes.CopyTo(_outbox.AsSpan(_outboxLength));
+            _outboxLength += bytes.Length;
+        }
+        _doorbell.Writer.TryWrite(true);
+    }
+
+    private async Task SendLoopAsync()
+    {
+        CancellationToken stop = _stop.Token;
+        try
+        {
+            while (await _doorbell.Reader.WaitToReadAsync(stop).ConfigureAwait(false))
+            {
+                _doorbell.Reader.TryRead(out _);
+                int length;
+                lock (_outboxGate)
+                {
+                    (_outbox, _writing) = (_writing, _outbox);
+                    length = _outboxLength;
+                    _outboxLength = 0;
+                    _loopWriting = length > 0;
+                }
+                if (length > 0)
+                {
+                    await _socket.SendAsync(_writing.AsMemory(0, length), SocketFlags.None, stop).ConfigureAwait(false);
+                    lock (_outboxGate)
+                    {
+                        _loopWriting = false;
+                    }
+                    if (_outboxLength > 0)
+                    {
+                        _doorbell.Writer.TryWrite(true);
+                    }
+                }
+            }
+        }
+        catch (OperationCanceledException) when (stop.IsCancellationRequested)
+        {
+        }
+        catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)
+        {
+            Closed(ex);
+        }
+    }
+
+    private async Task ReceiveLoopAsync()
+    {
+        CancellationToken stop = _stop.Token;
+        byte[] buffer = new byte[ReceiveBufferSize];
+        try
+        {
+            while (true)
+            {
+                int n = await _socket.ReceiveAsync(buffer.AsMemory(), SocketFlags.None, stop).ConfigureAwait(false);
+                if (n == 0)
+                {
+                    Closed(null);
+                    return;
+                }
+                if (stop.IsCancellationRequested)
+                {
+                    return;
+                }
+                _receiver!.OnReceived(buffer.AsSpan(0, n));
+            }
+        }
+        catch (OperationCanceledException) when (stop.IsCancellationRequested)
+        {
+        }
+        catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)
+        {
+            Closed(ex);
+        }
+    }
+
+    private void Closed(Exception? error)
+    {
+        if (Volatile.Read(ref _disposed) == 0)
+        {
+            _receiver?.OnClosed(error);
+        }
+    }
+
+    /// <summary>Stops both loops and closes the socket; pending outgoing bytes are dropped.</summary>
+    public async ValueTask DisposeAsync()
+    {
+        if (Interlocked.Exchange(ref _disposed, 1) != 0)
+        {
+            return;
+        }
+        await _stop.CancelAsync().ConfigureAwait(false);
+        _doorbell.Writer.TryComplete();
+        try
+        {
+            _socket.Shutdown(SocketShutdown.Both);
+        }
+        catch (SocketException)
+        {
+        }
+        _socket.Dispose();
+        try
+        {
+            await Task.WhenAll(_receiveLoop, _sendLoop).ConfigureAwait(false);
+        }
+        catch (Exception)
+        {
+            // The loops report their own failures; closing must not throw.
+        }
+        _stop.Dispose();
+    }
+}

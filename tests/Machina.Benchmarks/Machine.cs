@@ -1,0 +1,88 @@
+using System.Diagnostics;
+using System.Runtime.InteropServices;
+
+namespace Machina.Benchmarks;
+
+/// <summary>What the numbers were measured on: CPU, cores, runtime, OS, commit.</summary>
+internal sealed record Machine(string Cpu, int Cores, string Runtime, string Os, string Commit, bool ServerGc, string Configuration)
+{
+    /// <summary>The load average over the last minute (other programs competing for the cores), or null when unknown.</summary>
+    public static string LoadAverage()
+    {
+        try
+        {
+            return File.ReadAllText("/proc/loadavg").Split(' ')[0];
+        }
+        catch (IOException)
+        {
+            return "unknown";
+        }
+    }
+
+    /// <summary>Minor page faults of this process so far (Linux, from /proc/self/stat), or 0 when unknown.</summary>
+    public static long MinorPageFaults()
+    {
+        try
+        {
+            string stat = File.ReadAllText("/proc/self/stat");
+            // Fields after the command name (which is in parentheses and may contain spaces); minflt is field 10.
+            string[] fields = stat[(stat.LastIndexOf(')') + 2)..].Split(' ');
+            return long.TryParse(fields[7], System.Globalization.NumberStyles.Integer, System.Globalization.CultureInfo.InvariantCulture, out long value) ? value : 0;
+        }
+        catch (IOException)
+        {
+            return 0;
+        }
+    }
+
+    public static Machine Current() => new(
+        CpuModel(),
+        Environment.ProcessorCount,
+        RuntimeInformation.FrameworkDescription,
+        RuntimeInformation.OSDescription,
+        GitCommit(),
+        System.Runtime.GCSettings.IsServerGC,
+#if DEBUG
+        "Debug");
+#else
+        "Release");
+#endif
+
+    public override string ToString() =>
+        $"CPU: {Cpu}, {Cores} cores | {Runtime} | {Os} | {(ServerGc ? "server" : "workstation")} GC | {Configuration} | commit {Commit}";
+
+    private static string CpuModel()
+    {
+        try
+        {
+            string? line = File.ReadLines("/proc/cpuinfo").FirstOrDefault(l => l.StartsWith("model name", StringComparison.Ordinal));
+            return line is null ? RuntimeInformation.ProcessArchitecture.ToString() : line[(line.IndexOf(':') + 1)..].Trim();
+        }
+        catch (IOException)
+        {
+            return RuntimeInformation.ProcessArchitecture.ToString();
+        }
+    }
+
+    private static string GitCommit()
+    {
+        try
+        {
+            using var git = Process.Start(new ProcessStartInfo("git", "rev-parse --short HEAD")
+            {
+                RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false,
+            });
+            if (git is null)
+            {
+                return "unknown";
+            }
+            string output = git.StandardOutput.ReadToEnd().Trim();
+            git.WaitForExit(5000);
+            return git.ExitCode == 0 && output.Length > 0 ? output : "unknown";
+        }
+        catch (Exception ex) when (ex is System.ComponentModel.Win32Exception or InvalidOperationException)
+        {
+            return "unknown";
+        }
+    }
+}

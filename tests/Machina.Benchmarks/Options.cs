@@ -1,0 +1,82 @@
+using System.Globalization;
+
+namespace Machina.Benchmarks;
+
+/// <summary>Command-line options of the benchmark harness.</summary>
+internal sealed record Options
+{
+    public const string Usage = """
+        Usage: dotnet run -c Release --project tests/Machina.Benchmarks -- [options]
+          --scenario NAME   run only scenarios named NAME or starting with NAME- (repeatable, or comma-separated):
+                            issue, compile (compile-abb, compile-ur, ...), folder (folder-abb, ...), parse, stream, ik
+          --size N          run at N units instead of each scenario's target size (no scaling table)
+          --scaling         add the scaling table (10^4, 10^5, 10^6) even with --size or --quick
+          --no-scaling      skip the scaling table
+          --runs N          measured runs per scenario (median is reported; default 3)
+          --warmup N        warm-up runs before measuring (default 1)
+          --quick           small sizes (10^4) and 1 run, to check that everything works
+          --json            one JSON object per line instead of tables
+          --list            list the scenarios and exit
+          --help            this text
+        """;
+
+    public List<string> Scenarios { get; init; } = [];
+    public int? Size { get; init; }
+    public bool? Scaling { get; init; }
+    public int Runs { get; init; } = 3;
+    public int Warmups { get; init; } = 1;
+    public bool Quick { get; init; }
+    public bool Json { get; init; }
+    public bool List { get; init; }
+    public bool Help { get; init; }
+
+    /// <summary>Reads the arguments; throws <see cref="ArgumentException"/> with a readable message on a bad one.</summary>
+    public static Options Parse(string[] args)
+    {
+        var options = new Options();
+        for (int i = 0; i < args.Length; i++)
+        {
+            string arg = args[i];
+            options = arg switch
+            {
+                "--scenario" or "-s" => options with { Scenarios = [.. options.Scenarios, .. Value(args, ref i).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)] },
+                "--size" or "-n" => options with { Size = Positive(args, ref i) },
+                "--runs" => options with { Runs = Positive(args, ref i) },
+                "--warmup" => options with { Warmups = NonNegative(args, ref i) },
+                "--scaling" => options with { Scaling = true },
+                "--no-scaling" => options with { Scaling = false },
+                "--quick" => options with { Quick = true },
+                "--json" => options with { Json = true },
+                "--list" => options with { List = true },
+                "--help" or "-h" or "-?" => options with { Help = true },
+                _ => throw new ArgumentException($"Unknown option \"{arg}\"."),
+            };
+        }
+        return options;
+    }
+
+    /// <summary>True when the scenario was asked for (all are, when none is named).</summary>
+    public bool Selects(Scenario scenario) => Scenarios.Count == 0 || Scenarios.Any(s =>
+        scenario.Name.Equals(s, StringComparison.OrdinalIgnoreCase) || scenario.Name.StartsWith(s + "-", StringComparison.OrdinalIgnoreCase));
+
+    private static string Value(string[] args, ref int i) =>
+        i + 1 < args.Length ? args[++i] : throw new ArgumentException($"Option {args[i]} needs a value.");
+
+    private static int Positive(string[] args, ref int i)
+    {
+        string name = args[i];
+        int value = NonNegative(args, ref i);
+        return value > 0 ? value : throw new ArgumentException($"Option {name} needs a number greater than 0.");
+    }
+
+    private static int NonNegative(string[] args, ref int i)
+    {
+        string name = args[i];
+        string text = Value(args, ref i).Replace("_", "");
+        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) && value >= 0 && value <= int.MaxValue && value == Math.Floor(value))
+        {
+            return (int)value;
+        }
+        throw new ArgumentException($"Option {name} needs a whole number, not \"{text}\".");
+    }
+}

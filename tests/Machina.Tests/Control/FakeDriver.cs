@@ -1,0 +1,83 @@
+using System.Collections.Concurrent;
+using System.Threading.Channels;
+
+namespace Machina.Tests.Control;
+
+/// <summary>A device driver without a network: records what is sent; the test (or an auto-acknowledging loop) answers.</summary>
+internal sealed class FakeDriver : IDeviceDriver
+{
+    private readonly Channel<int>? _autoAcks;
+    private readonly Task _autoLoop = Task.CompletedTask;
+
+    /// <summary>Creates the fake; with <paramref name="autoAcknowledge"/> every acknowledged action is acknowledged from a background loop.</summary>
+    internal FakeDriver(bool autoAcknowledge = false)
+    {
+        if (autoAcknowledge)
+        {
+            _autoAcks = Channel.CreateUnbounded<int>();
+            _autoLoop = Task.Run(async () =>
+            {
+                await foreach (int id in _autoAcks.Reader.ReadAllAsync())
+                {
+                    Listener!.OnAcknowledged(id);
+                }
+            });
+        }
+    }
+
+    internal DeviceHandshake Handshake { get; set; } =
+        new("1.5.0", new Vector(300, 0, 500), Rotation.FlippedAroundY, new Joints(0, 0, 0, 0, 90, 0), null);
+
+    internal IDeviceListener? Listener { get; private set; }
+
+    /// <summary>Actions sent, in order.</summary>
+    internal ConcurrentQueue<RobotAction> Sent { get; } = new();
+
+    /// <summary>Sent and not acknowledged by the test yet (only actions that expect an acknowledgement).</summary>
+    internal int Unacknowledged => _unacked;
+
+    /// <summary>Largest number of sent actions waiting for acknowledgement at once.</summary>
+    internal int MaxUnacknowledged { get; private set; }
+
+    /// <summary>Actions that produce nothing to send (like MotionMode on ABB).</summary>
+    internal Func<RobotAction, bool> Acknowledges { get; set; } = a => a is not (ActionMotionMode or ActionComment or ActionDefineTool);
+
+    internal bool Disposed { get; private set; }
+
+    private int _unacked;
+
+    public string RemoteAddress => "fake:1";
+
+    public Task<DeviceHandshake> ConnectAsync(string host, int port, IDeviceListener listener, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        Listener = listener;
+        return Task.FromResult(Handshake);
+    }
+
+    public bool Send(RobotAction action, RobotCursor releaseState)
+    {
+        Sent.Enqueue(action);
+        bool acked = Acknowledges(action);
+        if (acked)
+        {
+            int now = Interlocked.Increment(ref _unacked);
+            MaxUnacknowledged = Math.Max(MaxUnacknowledged, now);
+            _autoAcks?.Writer.TryWrite(action.Id);
+        }
+        return acked;
+    }
+
+    /// <summary>Acknowledges an id as the controller would.</summary>
+    internal void Ack(int id)
+    {
+        Interlocked.Decrement(ref _unacked);
+        Listener!.OnAcknowledged(id);
+    }
+
+    public async ValueTask DisposeAsync()
+    {
+        Disposed = true;
+        _autoAcks?.Writer.TryComplete();
+        await _autoLoop;
+    }
+}

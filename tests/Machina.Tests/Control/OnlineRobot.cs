@@ -1,0 +1,23 @@
+namespace Machina.Tests.Control;
+
+/// <summary>Helpers to put a robot online against a fake driver.</summary>
+internal static class OnlineRobot
+{
+    internal static readonly TimeSpan Timeout = TimeSpan.FromSeconds(10);
+
+    /// <summary>An ABB robot in online mode whose connections use <paramref name="driver"/>; connected when asked.</summary>
+    internal static Robot Create(FakeDriver driver, bool connect = true)
+    {
+        var bot = Robot.Create("Online", "ABB");
+        bot.DriverFactory = () => driver;
+        bot.ControlMode("online");
+        if (connect)
+        {
+            bot.Connect("127.0.0.1", 7000);
+        }
+        return bot;
+    }
+
+    /// <summary>Waits (bounded) until the robot's event loop has raised everything queued so far.</summary>
+    internal static void Flush(Robot bot) => bot.FlushEventsAsync().WaitAsync(Timeout).GetAwaiter().GetResult();
+}

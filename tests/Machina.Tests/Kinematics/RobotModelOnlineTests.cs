@@ -1,0 +1,30 @@
+using Machina.Tests.Control;
+
+namespace Machina.Tests.Kinematics;
+
+public class RobotModelOnlineTests
+{
+    [Fact]
+    public async Task Online_WithModel_RelativeMoveAfterAxesToStreamsAndWarns()
+    {
+        var driver = new FakeDriver(autoAcknowledge: true);
+        Robot bot = Robot.Create("Online", "ABB", "IRB 120");
+        bot.DriverFactory = () => driver;
+        bot.ControlMode("online");
+        bot.Connect("127.0.0.1", 7000);
+        try
+        {
+            var ex = Assert.Throws<InvalidOperationException>(() => bot.SetModel("IRB 140"));
+            Assert.Contains("before connecting", ex.Message);
+            bot.AxesTo(0, 0, 0, 0, 1, 0);
+            bot.Move(0, 0, -10);
+            Assert.Equal(["AxesTo(0,0,0,0,1,0);", "Move(0,0,-10);"], driver.Sent.Select(a => a.ToInstruction()));
+            ProgramWarning w = Assert.Single(bot.GetWarnings(), x => x.ActionId == 1);
+            Assert.Equal(KinematicIssueKind.WristSingularity, w.Kind);
+        }
+        finally
+        {
+            await bot.DisconnectAsync().WaitAsync(OnlineRobot.Timeout);
+        }
+    }
+}

@@ -1,0 +1,74 @@
+using System.Text;
+
+namespace Machina.Tests.Programs;
+
+public class PackedLinesTests
+{
+    private static List<string> SampleLines()
+    {
+        // Lengths from 0 to 300 characters, enough lines to fill several blocks (1 K, 2 K, 4 K … characters).
+        var lines = new List<string>();
+        for (int i = 0; i < 3000; i++)
+        {
+            lines.Add(i % 97 == 0 ? "" : new string((char)('a' + i % 26), i % 301) + i.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        }
+        return lines;
+    }
+
+    [Fact]
+    public void Add_ManyLinesAcrossBlocks_ReadsBackEachLineInOrder()
+    {
+        List<string> expected = SampleLines();
+        var packed = new PackedLines();
+        foreach (string line in expected)
+        {
+            packed.Add(line);
+        }
+        Assert.Equal(expected.Count, packed.Count);
+        Assert.Equal(expected, packed);
+        Assert.Equal(expected[1234], packed[1234]);
+        Assert.Equal("", packed[0]);
+        Assert.Equal(expected.Sum(l => (long)l.Length), packed.CharacterCount);
+    }
+
+    [Fact]
+    public void Add_LineLongerThanLargestBlock_IsKeptWhole()
+    {
+        var packed = new PackedLines();
+        string huge = new('x', (1 << 20) + 5);
+        packed.Add("before");
+        packed.Add(huge);
+        packed.Add("after");
+        Assert.Equal(["before", huge, "after"], packed);
+    }
+
+    [Fact]
+    public void WriteTo_AndAppendTo_GiveEachLineWithTheNewLine()
+    {
+        var packed = new PackedLines();
+        packed.Add("MoveL p1;");
+        packed.Add("");
+        packed.Add("! done");
+        var writer = new StringWriter();
+        packed.WriteTo(writer, "\r\n");
+        var text = new StringBuilder();
+        packed.AppendTo(text, "\n");
+        Assert.Equal("MoveL p1;\r\n\r\n! done\r\n", writer.ToString());
+        Assert.Equal("MoveL p1;\n\n! done\n", text.ToString());
+    }
+
+    [Fact]
+    public void Compile_LongProgram_TextEqualsLinesJoined()
+    {
+        var bot = Robot.Create("Packed", "MACHINA");
+        bot.MoveTo(300, 0, 500);
+        for (int i = 0; i < 2000; i++)
+        {
+            bot.Move(i % 2 == 0 ? 1.5 : -1.5, 0, 0);
+        }
+        RobotProgramFile file = bot.Compile().Files[0];
+        Assert.Equal(string.Concat(file.Lines.Select(l => l + "\n")), file.ToText());
+        Assert.Equal("Move(-1.5,0,0);", file.Lines[^1]);
+        Assert.Equal(file.Lines.Count, file.ToText().Count(c => c == '\n'));
+    }
+}
