@@ -76,6 +76,22 @@ internal sealed class CompileJob
         }
     }
 
+    /// <summary>
+    /// The actions with the cursor state after each, for extra passes (e.g. declaring targets) that must not report
+    /// refusals a second time: refused actions are skipped silently. The cursor is the same object at every step.
+    /// </summary>
+    internal IEnumerable<(RobotAction Action, RobotCursor Cursor)> Applied()
+    {
+        RobotCursor cursor = NewCursor();
+        foreach (RobotAction action in Actions)
+        {
+            if (cursor.TryApply(action) is null)
+            {
+                yield return (action, cursor);
+            }
+        }
+    }
+
     /// <summary>A robot name made safe as a program identifier: letters, digits and '_', starting with a letter or '_'.</summary>
     internal static string SafeProgramName(string? name)
     {

@@ -39,17 +39,13 @@ internal sealed class RapidPlan
     {
         var plan = new RapidPlan();
         plan.ModuleName = plan.Names.Claim(RapidNames.LooksLikeTarget(job.ProgramName) ? "M_" + job.ProgramName : job.ProgramName, "M");
-        RobotCursor cursor = job.NewCursor();
-        if (cursor.Tool is Tool startTool)
+        if (job.NewCursor().Tool is Tool startTool)
         {
             plan.AddTool(startTool);
         }
-        foreach (RobotAction action in job.Actions)
+        foreach ((RobotAction action, RobotCursor cursor) in job.Applied())
         {
-            if (cursor.TryApply(action) is null)
-            {
-                plan.Observe(action, cursor);
-            }
+            plan.Observe(action, cursor);
         }
         plan.Finish();
         return plan;

@@ -20,14 +20,9 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     /// <summary>Second pass (declared targets only): one <c>CONST robtarget|jointtarget targetN</c> per target; returns how many.</summary>
     internal int DeclareTargets()
     {
-        RobotCursor cursor = job.NewCursor();
         int count = 0;
-        foreach (RobotAction action in job.Actions)
+        foreach ((RobotAction action, RobotCursor cursor) in job.Applied())
         {
-            if (cursor.TryApply(action) is not null)
-            {
-                continue;
-            }
             switch (action)
             {
                 case ActionTranslation or ActionRotation or ActionTransformation:

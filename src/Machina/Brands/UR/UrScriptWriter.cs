@@ -21,14 +21,9 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     /// <summary>Second pass (variable targets only): one <c>targetN=…</c> per target, numbered 0, 1, 2… ; returns how many.</summary>
     internal int DeclareTargets()
     {
-        RobotCursor cursor = job.NewCursor();
         int count = 0;
-        foreach (RobotAction action in job.Actions)
+        foreach ((RobotAction action, RobotCursor cursor) in job.Applied())
         {
-            if (cursor.TryApply(action) is not null)
-            {
-                continue;
-            }
             switch (action)
             {
                 case ActionTranslation or ActionRotation or ActionTransformation:
