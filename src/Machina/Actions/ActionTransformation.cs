@@ -41,8 +41,8 @@ public sealed record ActionTransformation : RobotAction
         if (Relative)
         {
             AxisAngle aa = Rotation.ToAxisAngle();
-            string call = InstructionText.Call("Transform", t.X, t.Y, t.Z, aa.Axis.X, aa.Axis.Y, aa.Axis.Z, aa.Angle);
-            return TranslationFirst ? call : call[..^2] + ",False);";
+            return InstructionText.Call("Transform", null, [t.X, t.Y, t.Z, aa.Axis.X, aa.Axis.Y, aa.Axis.Z, aa.Angle],
+                TranslationFirst ? null : InstructionText.Bool(false));
         }
         Vector x = Rotation.XAxis, y = Rotation.YAxis;
         return InstructionText.Call("TransformTo", t.X, t.Y, t.Z, x.X, x.Y, x.Z, y.X, y.Y, y.Z);

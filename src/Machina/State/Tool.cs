@@ -71,7 +71,7 @@ public sealed class Tool : IEquatable<Tool>
     public string ToDefineInstruction()
     {
         Vector t = TcpPosition, x = TcpOrientation.XAxis, y = TcpOrientation.YAxis, c = CenterOfGravity;
-        return "DefineTool(" + InstructionText.Quote(Name) + "," + InstructionText.Call("", t.X, t.Y, t.Z, x.X, x.Y, x.Z, y.X, y.Y, y.Z, Weight, c.X, c.Y, c.Z)[1..];
+        return InstructionText.Call("DefineTool", InstructionText.Quote(Name), [t.X, t.Y, t.Z, x.X, x.Y, x.Z, y.X, y.Y, y.Z, Weight, c.X, c.Y, c.Z], null);
     }
 
     /// <summary>Text such as <c>Tool["pen", Tip[0,0,50], Orientation[[1, 0, 0], [0, 1, 0], [0, 0, 1]], 1 kg]</c>.</summary>

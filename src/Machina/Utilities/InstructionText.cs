@@ -40,26 +40,44 @@ internal static class InstructionText
     internal static string Bool(bool value) => value ? "True" : "False";
 
     /// <summary><c>Name(n1,n2,…);</c> with lossless numbers.</summary>
+    internal static string Call(string name, params ReadOnlySpan<double> values) => Call(name, null, values, null);
+
+    /// <summary>
+    /// <c>Name(first,n1,n2,…,last);</c>: lossless numbers between optional already-formatted arguments
+    /// (a quoted name before them, a flag or target after them).
+    /// </summary>
     /// <remarks>Formats into a stack buffer so that only the final string is allocated (compiling a million moves calls this a million times).</remarks>
-    internal static string Call(string name, params ReadOnlySpan<double> values)
+    internal static string Call(string name, string? first, ReadOnlySpan<double> values, string? last)
     {
         var text = new DefaultInterpolatedStringHandler(0, 0, Num.Inv, stackalloc char[256]);
         text.AppendLiteral(name);
         text.AppendLiteral("(");
-        for (int i = 0; i < values.Length; i++)
+        bool separate = false;
+        if (first is not null)
         {
-            if (i > 0)
+            text.AppendLiteral(first);
+            separate = true;
+        }
+        foreach (double value in values)
+        {
+            if (separate)
             {
                 text.AppendLiteral(",");
             }
-            text.AppendFormatted(Num.Clean(values[i]), "R");
+            text.AppendFormatted(Num.Clean(value), "R");
+            separate = true;
+        }
+        if (last is not null)
+        {
+            if (separate)
+            {
+                text.AppendLiteral(",");
+            }
+            text.AppendLiteral(last);
         }
         text.AppendLiteral(");");
         return text.ToStringAndClear();
     }
-
-    /// <summary><c>Name(a,b,…);</c> from already formatted arguments.</summary>
-    internal static string CallRaw(string name, params ReadOnlySpan<string> args) => name + "(" + string.Join(',', args.ToArray()) + ");";
 
     /// <summary>"Increase" or "Decrease" depending on the sign, as used by relative descriptions.</summary>
     internal static string Change(double value) => value < 0 ? "Decrease" : "Increase";
