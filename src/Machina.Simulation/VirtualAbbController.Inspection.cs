@@ -12,7 +12,7 @@ public sealed partial class VirtualAbbController
     /// <summary>How many driver clients have connected (and received the handshake) so far.</summary>
     public int ConnectionCount => Volatile.Read(ref _connectionCount);
 
-    /// <summary>How many well-formed requests have been read from the driver socket.</summary>
+    /// <summary>How many well-formed requests have been read from the driver socket; a request is counted just before it enters the buffer, so it may still be on its way there.</summary>
     public int RequestsReceived => Volatile.Read(ref _requestsReceived);
 
     /// <summary>How many requests have been executed (acknowledged or, with no client, ack lost).</summary>

@@ -91,28 +91,49 @@ public class AbbOnlineTests
     [Fact]
     public async Task MotionUpdates_ArriveBetweenAcknowledgements()
     {
-        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { SpeedFactor = 4, MonitorPeriod = TimeSpan.FromMilliseconds(10) });
-        Robot bot = await ConnectAsync(controller);
+        // The controller's clock moves only when the test says so, one monitor period at a time, and each step waits
+        // until the host has seen the report it caused: the order of events is then the same on every machine.
+        var clock = new ManualClock();
+        var period = TimeSpan.FromMilliseconds(10);
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { MonitorPeriod = period, TimeProvider = clock });
         var log = new ConcurrentQueue<(string Kind, int Id, Vector? Position)>();
-        bot.ActionExecuted += (_, e) => log.Enqueue(("E", e.LastAction.Id, e.Position));
-        bot.MotionUpdate += (_, e) => log.Enqueue(("M", 0, e.Position));
+        int updates = 0;
+        Robot bot = await ConnectAsync(controller, b =>
+        {
+            b.ActionExecuted += (_, e) => log.Enqueue(("E", e.LastAction.Id, e.Position));
+            b.MotionUpdate += (_, e) =>
+            {
+                log.Enqueue(("M", 0, e.Position));
+                Interlocked.Increment(ref updates);
+            };
+        });
         bot.SpeedTo(200);
         bot.MoveTo(400, 0, 500);
         bot.Move(100, 0, 0);
         bot.Move(0, 100, 0);
-        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        Task done = bot.WaitForCompletionAsync();
+        for (int step = 0; step < 500 && !done.IsCompleted; step++)
+        {
+            await EventuallyAsync(() => clock.HasTimerDueIn(period), "the monitor to wait for its next report");
+            await EventuallyAsync(() => Volatile.Read(ref updates) == controller.MonitorReportsSent, "the host to see every report");
+            clock.Advance(period);
+        }
+        await done.WaitAsync(Limit);
+        await bot.FlushEventsAsync().WaitAsync(Limit);
 
         var events = log.ToList();
         int e3 = events.FindIndex(x => x is ("E", 3, _));
         int e4 = events.FindIndex(x => x is ("E", 4, _));
         Assert.True(e3 >= 0 && e4 > e3);
         var between = events.Skip(e3 + 1).Take(e4 - e3 - 1).ToList();
-        Assert.NotEmpty(between);
         Assert.All(between, x => Assert.Equal("M", x.Kind));
-        // While moving from (500, 0, 500) to (500, 100, 500) the live pose is on that segment.
-        Vector mid = between[between.Count / 2].Position!.Value;
-        Assert.Equal(500, mid.X, 1);
-        Assert.InRange(mid.Y, -0.5, 100.5);
+        // 100 mm at 200 mm/s is 0.5 s, so 50 periods: the moving robot is reported on the segment from (500, 0, 500)
+        // to (500, 100, 500), 2 mm further each period. The reports sent in the same clock step as an acknowledgement
+        // travel on another socket and may arrive on either side of it, hence the range.
+        var moving = between.Select(x => x.Position!.Value).Where(p => p.Y is > 1e-9 and < 100 - 1e-9).ToList();
+        Assert.InRange(moving.Count, 49, 50);
+        Assert.All(moving, p => Assert.Equal((500.0, 500.0), (Math.Round(p.X, 9), Math.Round(p.Z, 9))));
+        Assert.All(moving.Zip(moving.Skip(1)), pair => Assert.Equal(2.0, pair.Second.Y - pair.First.Y, 6));
         Assert.NotNull(bot.GetMotionState());
     }
 
@@ -213,7 +234,13 @@ public class AbbOnlineTests
     public async Task Fault_ControllerStopsAnswering_TimesOutAndReports()
     {
         await using var controller = await StartControllerAsync();
-        Robot bot = await ConnectAsync(controller, b => b.ResponseTimeout = TimeSpan.FromMilliseconds(300));
+        // The host's clock moves only when the test says so: no answer can be "late" by accident on a slow machine.
+        var hostClock = new ManualClock();
+        Robot bot = await ConnectAsync(controller, b =>
+        {
+            b.ResponseTimeout = TimeSpan.FromSeconds(1);
+            b.Time = hostClock;
+        });
         var lost = new TaskCompletionSource<ConnectionLostArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
         bot.ConnectionLost += (_, e) => lost.TrySetResult(e);
         bot.MoveTo(400, 0, 400);
@@ -222,6 +249,11 @@ public class AbbOnlineTests
         bot.Move(0, 0, 10);
         bot.Move(0, 0, 10);
         Task wait = bot.WaitForCompletionAsync();
+        await EventuallyAsync(() => controller.BufferedRequestCount == 2, "both moves to reach the controller");
+        hostClock.Advance(TimeSpan.FromSeconds(0.9));
+        Assert.False(lost.Task.IsCompleted);
+        Assert.True(bot.IsConnected);
+        hostClock.Advance(TimeSpan.FromSeconds(60));
 
         ConnectionLostArgs args = await lost.Task.WaitAsync(Limit);
         Assert.Contains("stopped answering", args.Error.Message, StringComparison.Ordinal);

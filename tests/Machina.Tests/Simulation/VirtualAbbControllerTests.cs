@@ -1,4 +1,5 @@
 using Machina.Simulation;
+using Machina.Tests.Support;
 using System.Net.Sockets;
 
 namespace Machina.Tests.Simulation;
@@ -105,22 +106,31 @@ public class VirtualAbbControllerTests
     [Fact]
     public async Task Motion_WithSpeedFactor_TakesTimeAndMovesThroughIntermediatePoses()
     {
-        // 100 mm at 10 mm/s = 10 s of robot time; factor 20 → 0.5 s.
+        // 100 mm at 10 mm/s = 10 s of robot time; factor 20 → 0.5 s on the controller's clock, which the test moves.
+        var clock = new ManualClock();
         await using var controller = new VirtualAbbController(new VirtualAbbControllerOptions
         {
             InitialPosition = new Vector(0, 0, 0),
             InitialRotation = Rotation.Identity,
             SpeedFactor = 20,
+            TimeProvider = clock,
         });
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
         await client.ReadMessagesAsync(4);
         await client.SendAsync("@1 4 10;@2 1 100 0 0 1 0 0 0;");
         Assert.Equal(1, (await client.ReadMessagesAsync(1))[0].Id);
-        var started = DateTime.UtcNow;
-        await RawAbbClient.WaitUntilAsync(() => controller.State.Position.X is > 0 and < 100, "the robot is part-way");
+        await RawAbbClient.WaitUntilAsync(() => clock.HasTimerDueIn(TimeSpan.FromSeconds(0.5)), "the move to start");
+
+        clock.Advance(TimeSpan.FromSeconds(0.2));
+        Assert.Equal(new Vector(40, 0, 0), controller.State.Position);
+        Assert.Equal(1, controller.AcknowledgementsSent);
+        clock.Advance(TimeSpan.FromSeconds(0.2));
+        Assert.Equal(new Vector(80, 0, 0), controller.State.Position);
+        Assert.Equal(1, controller.AcknowledgementsSent);
+        clock.Advance(TimeSpan.FromSeconds(0.1));
+
         Assert.Equal(2, (await client.ReadMessagesAsync(1))[0].Id);
-        Assert.True(DateTime.UtcNow - started > TimeSpan.FromMilliseconds(200));
         Assert.Equal(new Vector(100, 0, 0), controller.State.Position);
     }
 
@@ -184,8 +194,8 @@ public class VirtualAbbControllerTests
         await client.ReadMessagesAsync(4);
         controller.StopAnswering();
         await client.SendAsync("@1 4 10;");
-        await RawAbbClient.WaitUntilAsync(() => controller.RequestsReceived == 1, "the request is received");
-        Assert.Equal((0, 1), (controller.AcknowledgementsSent, controller.BufferedRequestCount));
+        await RawAbbClient.WaitUntilAsync(() => controller.BufferedRequestCount == 1, "the request is buffered");
+        Assert.Equal((0, 1), (controller.AcknowledgementsSent, controller.RequestsReceived));
         controller.ResumeAnswering();
         Assert.Equal(1, (await client.ReadMessagesAsync(1))[0].Id);
     }

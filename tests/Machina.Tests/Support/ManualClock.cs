@@ -1,0 +1,118 @@
+namespace Machina.Tests.Support;
+
+/// <summary>
+/// A clock that only moves when a test calls <see cref="Advance"/>: delays and timers built on it fire then, on the
+/// calling thread, in time order. It makes motion, monitor and timeout tests independent of machine speed.
+/// </summary>
+internal sealed class ManualClock : TimeProvider
+{
+    private static readonly DateTimeOffset Epoch = new(2026, 1, 1, 0, 0, 0, TimeSpan.Zero);
+
+    private readonly object _gate = new();
+    private readonly List<ManualTimer> _timers = [];
+    private long _now;
+
+    /// <summary>Clock ticks are <see cref="TimeSpan"/> ticks.</summary>
+    public override long TimestampFrequency => TimeSpan.TicksPerSecond;
+
+    /// <summary>Time since the clock was made.</summary>
+    internal TimeSpan Elapsed => TimeSpan.FromTicks(GetTimestamp());
+
+    public override long GetTimestamp()
+    {
+        lock (_gate)
+        {
+            return _now;
+        }
+    }
+
+    public override DateTimeOffset GetUtcNow() => Epoch + Elapsed;
+
+    public override ITimer CreateTimer(TimerCallback callback, object? state, TimeSpan dueTime, TimeSpan period)
+    {
+        var timer = new ManualTimer(this, callback, state);
+        timer.Change(dueTime, period);
+        return timer;
+    }
+
+    /// <summary>True when some timer is set to fire exactly <paramref name="dueIn"/> from now.</summary>
+    internal bool HasTimerDueIn(TimeSpan dueIn)
+    {
+        lock (_gate)
+        {
+            return _timers.Any(t => t.DueAt == _now + dueIn.Ticks);
+        }
+    }
+
+    /// <summary>Moves the clock forward, firing every timer that falls due on the way, earliest first.</summary>
+    internal void Advance(TimeSpan by)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(by, TimeSpan.Zero);
+        long target;
+        lock (_gate)
+        {
+            target = _now + by.Ticks;
+        }
+        while (true)
+        {
+            ManualTimer? next;
+            lock (_gate)
+            {
+                next = _timers.Where(t => t.DueAt <= target).MinBy(t => t.DueAt);
+                if (next is null)
+                {
+                    _now = target;
+                    return;
+                }
+                _now = Math.Max(_now, next.DueAt);
+                if (next.PeriodTicks > 0)
+                {
+                    next.DueAt += next.PeriodTicks;
+                }
+                else
+                {
+                    _timers.Remove(next);
+                }
+            }
+            next.Fire();
+        }
+    }
+
+    private void Schedule(ManualTimer timer, TimeSpan dueTime, TimeSpan period)
+    {
+        lock (_gate)
+        {
+            _timers.Remove(timer);
+            if (dueTime == Timeout.InfiniteTimeSpan)
+            {
+                return;
+            }
+            timer.DueAt = _now + Math.Max(0, dueTime.Ticks);
+            timer.PeriodTicks = period == Timeout.InfiniteTimeSpan ? 0 : Math.Max(1, period.Ticks);
+            _timers.Add(timer);
+        }
+    }
+
+    private sealed class ManualTimer(ManualClock clock, TimerCallback callback, object? state) : ITimer
+    {
+        internal long DueAt { get; set; }
+
+        internal long PeriodTicks { get; set; }
+
+        internal void Fire() => callback(state);
+
+        public bool Change(TimeSpan dueTime, TimeSpan period)
+        {
+            clock.Schedule(this, dueTime, period);
+            return true;
+        }
+
+        public void Dispose() => clock.Schedule(this, Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
+
+        public ValueTask DisposeAsync()
+        {
+            Dispose();
+            return ValueTask.CompletedTask;
+        }
+    }
+}
