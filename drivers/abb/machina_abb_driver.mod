@@ -4,7 +4,7 @@ MODULE Machina_Driver
     ! after each one. Protocol: docs/protocol-abb.md in the Machina repository. Placeholders are filled by Machina.
 
     CONST string DRIVER_VERSION_MAJOR := "1";
-    CONST string DRIVER_VERSION_MINOR := "5";
+    CONST string DRIVER_VERSION_MINOR := "6";
     CONST string DRIVER_VERSION_PATCH := "0";
 
     PERS string SERVER_IP := "{{HOSTNAME}}";
@@ -54,6 +54,11 @@ MODULE Machina_Driver
     VAR socketdev serverSocket;
     VAR socketdev clientSocket;
     VAR bool clientConnected := FALSE;
+
+    ! Progress reported in the handshake ($25), so that a reconnecting host sends nothing twice: the id of the last request
+    ! executed and of the last one received (0 until then). Plain VARs: they start again at 0 when the program restarts.
+    VAR num lastExecutedId := 0;
+    VAR num lastReceivedId := 0;
 
     VAR robtarget cursorTarget;
     VAR jointtarget cursorJoints;
@@ -125,6 +130,7 @@ MODULE Machina_Driver
         SocketSend clientSocket \Str:=NumToStr(joints.robax.rax_4, 3) + " " + NumToStr(joints.robax.rax_5, 3) + " " + NumToStr(joints.robax.rax_6, 3) + ";";
         SocketSend clientSocket \Str:="$23 " + AxisText(flange.extax.eax_a) + " " + AxisText(flange.extax.eax_b) + " " + AxisText(flange.extax.eax_c) + " ";
         SocketSend clientSocket \Str:=AxisText(flange.extax.eax_d) + " " + AxisText(flange.extax.eax_e) + " " + AxisText(flange.extax.eax_f) + ";";
+        SocketSend clientSocket \Str:="$25 " + NumToStr(lastExecutedId, 0) + " " + NumToStr(lastReceivedId, 0) + ";";
     ENDPROC
 
     FUNC string AxisText(num value)
@@ -227,6 +233,9 @@ MODULE Machina_Driver
                 requests{writeIndex} := parsing;
                 writeIndex := writeIndex MOD BUFFER_SIZE + 1;
                 requestCount := requestCount + 1;
+                IF parsing.id > 0 THEN
+                    lastReceivedId := parsing.id;
+                ENDIF
             ENDIF
         ELSEIF field <> 0 OR corrupt THEN
             Complain "received corrupt request";
@@ -365,6 +374,9 @@ MODULE Machina_Driver
 
     ! Acknowledges once per request, after it returned: "@id code;" or "code;" for id 0.
     PROC Acknowledge(MachinaRequest r)
+        IF r.id > 0 THEN
+            lastExecutedId := r.id;
+        ENDIF
         IF r.id = 0 THEN
             SendIfConnected NumToStr(r.code, 0) + ";";
         ELSE

@@ -1,3 +1,5 @@
+using System.Net.Sockets;
+using System.Text;
 using System.Globalization;
 
 namespace Machina.Simulation;
@@ -22,7 +24,7 @@ public sealed partial class VirtualAbbController
                 {
                     await SendToClientAsync(InformationReply(request), token).ConfigureAwait(false);
                 }
-                if (await SendToClientAsync(AbbMessageFormat.Acknowledgement(request.Id, request.Code), token).ConfigureAwait(false))
+                if (await AcknowledgeAsync(request, token).ConfigureAwait(false))
                 {
                     Interlocked.Increment(ref _acknowledgementsSent);
                     CountTowardsClose();
@@ -31,6 +33,7 @@ public sealed partial class VirtualAbbController
                 {
                     Pendant("acknowledgement lost, client disconnected");
                 }
+                CountTowardsPause();
                 if (request.Code == (int)AbbInstructionCode.StopExecution)
                 {
                     // The driver program ends: no more clients.
@@ -43,6 +46,42 @@ public sealed partial class VirtualAbbController
         catch (OperationCanceledException)
         {
             // Stopping.
+        }
+    }
+
+    /// <summary>
+    /// Marks the request executed and acknowledges it to the current client, under the send lock: a handshake reports as
+    /// executed exactly the requests whose acknowledgement went to an earlier client (or was lost).
+    /// </summary>
+    private async Task<bool> AcknowledgeAsync(AbbRequest request, CancellationToken token)
+    {
+        byte[] bytes = Encoding.ASCII.GetBytes(AbbMessageFormat.Acknowledgement(request.Id, request.Code));
+        await _sendLock.WaitAsync(token).ConfigureAwait(false);
+        try
+        {
+            if (request.Id > 0)
+            {
+                _lastExecutedId = request.Id;
+            }
+            NetworkStream? stream;
+            lock (_gate)
+            {
+                stream = _clientStream;
+            }
+            if (stream is null)
+            {
+                return false;
+            }
+            await stream.WriteAsync(bytes, token).ConfigureAwait(false);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
+        {
+            return false;
+        }
+        finally
+        {
+            _sendLock.Release();
         }
     }
 

@@ -5,6 +5,7 @@ public sealed partial class VirtualAbbController
     private readonly Lock _pauseGate = new();
     private TaskCompletionSource? _paused;
     private int _closeAfterAcknowledgements = -1;
+    private int _answerBudget = -1;
 
     /// <summary>Fault injection: close the driver connection right after <paramref name="acknowledgements"/> more acknowledgements (0 = now).</summary>
     public void CloseConnectionAfter(int acknowledgements)
@@ -18,7 +19,7 @@ public sealed partial class VirtualAbbController
         Volatile.Write(ref _closeAfterAcknowledgements, acknowledgements);
     }
 
-    /// <summary>Fault injection: stop executing and acknowledging (requests are still read into the buffer) until <see cref="ResumeAnswering"/>.</summary>
+    /// <summary>Fault injection: stop executing and acknowledging (requests are still read into the buffer) until <see cref="ResumeAnswering()"/>.</summary>
     public void StopAnswering()
     {
         lock (_pauseGate)
@@ -37,6 +38,27 @@ public sealed partial class VirtualAbbController
             _paused = null;
         }
         paused?.TrySetResult();
+    }
+
+    /// <summary>
+    /// Fault injection: ends <see cref="StopAnswering"/> for exactly <paramref name="requests"/> more requests, then stops
+    /// answering again (the rest stay buffered), like a robot halted part-way through what it was sent.
+    /// </summary>
+    public void ResumeAnswering(int requests)
+    {
+        ArgumentOutOfRangeException.ThrowIfNegativeOrZero(requests);
+        Volatile.Write(ref _answerBudget, requests);
+        ResumeAnswering();
+    }
+
+    /// <summary>Counts one executed request towards a pending <see cref="ResumeAnswering(int)"/>.</summary>
+    private void CountTowardsPause()
+    {
+        int left = Volatile.Read(ref _answerBudget);
+        if (left > 0 && Interlocked.CompareExchange(ref _answerBudget, left - 1, left) == left && left == 1)
+        {
+            StopAnswering();
+        }
     }
 
     /// <summary>Fault injection: send any text on the driver socket (for example garbage); false when no client is connected.</summary>

@@ -4,6 +4,8 @@ public sealed partial class VirtualAbbController
 {
     private int _connectionCount;
     private int _requestsReceived;
+    private int _lastExecutedId;
+    private int _lastReceivedId;
     private int _requestsExecuted;
     private int _acknowledgementsSent;
     private int _maxUnacknowledged;

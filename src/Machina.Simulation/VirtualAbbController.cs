@@ -177,6 +177,7 @@ public sealed partial class VirtualAbbController : IAsyncDisposable
                 AbbMessageFormat.Pose(state.Position, state.Rotation),
                 AbbMessageFormat.Joints(state.Joints),
                 AbbMessageFormat.ExternalAxes(state.ExternalAxesCartesian),
+                version.Major == 1 && version.Minor >= 6 ? AbbMessageFormat.Progress(_lastExecutedId, Volatile.Read(ref _lastReceivedId)) : "",
             })
             {
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(message), token).ConfigureAwait(false);
@@ -261,6 +262,10 @@ public sealed partial class VirtualAbbController : IAsyncDisposable
         while (unacknowledged > (seen = Volatile.Read(ref _maxUnacknowledged))
             && Interlocked.CompareExchange(ref _maxUnacknowledged, unacknowledged, seen) != seen)
         {
+        }
+        if (request.Id > 0)
+        {
+            Volatile.Write(ref _lastReceivedId, request.Id);
         }
         await _buffer.Writer.WriteAsync(request, token).ConfigureAwait(false);
         return true;

@@ -30,8 +30,8 @@ public sealed record VirtualAbbControllerOptions
     /// <summary>How many received requests are kept in <see cref="VirtualAbbController.ReceivedRequests"/> (oldest dropped). 0 keeps none. Default 10 000.</summary>
     public int RequestLogCapacity { get; init; } = 10_000;
 
-    /// <summary>Driver version sent in the handshake. Default 1.5.0, the version of Machina's RAPID driver.</summary>
-    public Version DriverVersion { get; init; } = new(1, 5, 0);
+    /// <summary>Driver version sent in the handshake. Default 1.6.0, the version of Machina's RAPID driver; below 1.6 the handshake has no progress (<c>$25</c>).</summary>
+    public Version DriverVersion { get; init; } = new(1, 6, 0);
 
     /// <summary>Clock used for motion timing and monitor reports. Default: the system clock.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;

@@ -145,6 +145,8 @@ public sealed partial class Robot
     /// <summary>
     /// Connects to the driver on a controller and waits for its handshake (at most <see cref="ConnectTimeout"/>). The robot's
     /// reported pose, joints and external axes become the state of every cursor; actions issued before are then streamed.
+    /// After a lost connection, a driver that reports its progress (Machina's, from 1.6) lets the robot resume exactly: actions
+    /// it ran count as executed, actions it holds are awaited, only the rest is sent, and nothing runs twice.
     /// </summary>
     /// <exception cref="MachinaException">The controller could not be reached or did not answer as expected.</exception>
     public Task ConnectAsync(string host, int port, CancellationToken cancellationToken = default)

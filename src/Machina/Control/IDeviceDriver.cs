@@ -18,6 +18,15 @@ internal interface IDeviceDriver : IAsyncDisposable
     /// soon as everything released before it is executed). Called under the session lock: it must not block.
     /// </summary>
     bool Send(RobotAction action, RobotCursor releaseState);
+
+    /// <summary>The id the controller knows an action by (the ids of <see cref="DeviceProgress"/>).</summary>
+    int WireId(int actionId);
+
+    /// <summary>
+    /// Expects the acknowledgement of an action that an earlier connection sent and the controller still holds (it is not
+    /// sent again). Called under the session lock, in release order, before anything new is sent.
+    /// </summary>
+    void Adopt(int actionId);
 }
 
 /// <summary>Receives what a device driver hears from its controller. Calls may come from the driver's receive loops.</summary>

@@ -14,8 +14,10 @@ internal sealed partial class OnlineSession
     internal string RemoteAddress => Volatile.Read(ref _link)?.Driver.RemoteAddress ?? "";
 
     /// <summary>
-    /// Connects, takes the controller's pose as the state of every cursor, and starts releasing the buffered actions
-    /// (their targets are recomputed from that pose; any that no longer apply are dropped with a warning).
+    /// Connects and starts releasing the buffered actions. A controller that reports its progress and knows the actions an
+    /// earlier connection sent resumes exactly where it is (nothing is sent twice, targets are unchanged, see
+    /// <see cref="Resume"/>); otherwise the controller's pose becomes the state of every cursor and the buffered actions'
+    /// targets are recomputed from it (any that no longer apply are dropped with a warning).
     /// </summary>
     internal async Task ConnectAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
     {
@@ -54,22 +56,32 @@ internal sealed partial class OnlineSession
         }
 
         MachinaException? earlyFault;
+        string? refusal;
         lock (_issue)
         {
             lock (_gate)
             {
                 _connecting = false;
-                InitialiseCursors(handshake);
-                _link = link;
-                link.IsReady = true;
-                _lastProgress = _time.GetTimestamp();
-                StartWatchdog(link);
+                refusal = Resume(handshake, driver);
                 earlyFault = link.EarlyFault;
-                if (earlyFault is null)
+                if (refusal is null)
                 {
-                    ReleaseReady();
+                    _link = link;
+                    link.IsReady = true;
+                    _lastProgress = _time.GetTimestamp();
+                    StartWatchdog(link);
+                    earlyFault ??= AcknowledgeEarly(link);
+                    if (earlyFault is null)
+                    {
+                        ReleaseReady();
+                    }
                 }
             }
+        }
+        if (refusal is not null)
+        {
+            await driver.DisposeAsync().ConfigureAwait(false);
+            throw new RobotConnectionException(refusal);
         }
         _robot.Logger.Info($"Connected to {_robot.Brand} robot \"{_robot.Name}\" on {driver.RemoteAddress} (driver {handshake.Version}).");
         if (earlyFault is not null)
@@ -112,7 +124,7 @@ internal sealed partial class OnlineSession
         }
     }
 
-    /// <summary>Closes the link. Actions sent but not confirmed go back to the front of the buffer (the robot may still run them).</summary>
+    /// <summary>Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.</summary>
     internal async Task DisconnectAsync()
     {
         Connection? link;
@@ -129,29 +141,16 @@ internal sealed partial class OnlineSession
         _robot.Logger.Info($"Disconnected from {_robot.Brand} robot \"{_robot.Name}\".");
     }
 
-    /// <summary>Forgets the current link (under the lock): requeues unconfirmed actions, rewinds the release cursor, fails waiters.</summary>
+    /// <summary>
+    /// Forgets the current link (under the lock) and fails waiters. Actions sent but not confirmed stay in flight: whether
+    /// the controller ran them is only known when it reports its progress at the next connection.
+    /// </summary>
     private void Detach(MachinaException reason)
     {
         _link = null;
         _credit = 0;
         _watchdog?.Dispose();
         _watchdog = null;
-        if (_inFlight.Count > 0)
-        {
-            var keep = new List<RobotAction>(_inFlight.Count + _buffer.Count);
-            foreach (InFlight f in _inFlight)
-            {
-                keep.Add(f.Action);
-            }
-            keep.AddRange(_buffer);
-            _inFlight.Clear();
-            _buffer.Clear();
-            foreach (RobotAction a in keep)
-            {
-                _buffer.Enqueue(a);
-            }
-        }
-        _release.CopyFrom(_execution);
         if (_completion is not null)
         {
             _events.PostSignal(_completion, reason);
@@ -192,42 +191,47 @@ internal sealed partial class OnlineSession
 
     private void OnAcknowledged(Connection link, int id)
     {
-        MachinaException? fault = null;
+        MachinaException? fault;
         lock (_gate)
         {
             if (!ReferenceEquals(_link, link))
             {
                 return;
             }
-            int index = 0, found = -1;
-            foreach (InFlight f in _inFlight)
-            {
-                if (f.Acked && f.Action.Id == id)
-                {
-                    found = index;
-                    break;
-                }
-                index++;
-            }
-            if (found < 0)
-            {
-                fault = new RobotConnectionException(
-                    $"The controller acknowledged action {id}, which is not waiting for execution (never sent, or already executed).", $"@{id}");
-            }
-            else
-            {
-                for (int i = 0; i <= found; i++)
-                {
-                    Execute(_inFlight.Dequeue());
-                }
-                _lastProgress = _time.GetTimestamp();
-                ReleaseReady();
-            }
+            fault = Acknowledge(id);
         }
         if (fault is not null)
         {
             Fault(link, fault);
         }
+    }
+
+    /// <summary>Executes the acknowledged action and everything released before it (under the lock); a fault for an unknown id.</summary>
+    private MachinaException? Acknowledge(int id)
+    {
+        int index = 0, found = -1;
+        foreach (InFlight f in _inFlight)
+        {
+            if (f.Acked && f.Action.Id == id)
+            {
+                found = index;
+                break;
+            }
+            index++;
+        }
+        if (found < 0)
+        {
+            return new RobotConnectionException(
+                $"The controller acknowledged action {id}, which is not waiting for execution (never sent, or already executed).", $"@{id}");
+        }
+        for (int i = 0; i <= found; i++)
+        {
+            Execute(_inFlight.Dequeue());
+        }
+        _lastAcknowledgedId = id;
+        _lastProgress = _time.GetTimestamp();
+        ReleaseReady();
+        return null;
     }
 
     private void OnMotion(Connection link, in MotionSample sample)
@@ -308,7 +312,21 @@ internal sealed partial class OnlineSession
         /// <summary>A fault reported before the connection became current.</summary>
         internal MachinaException? EarlyFault { get; private set; }
 
-        public void OnAcknowledged(int id) => session.OnAcknowledged(this, id);
+        /// <summary>Acknowledgements that arrived before the connection became current (controller ids), in order.</summary>
+        internal List<int>? Early { get; set; }
+
+        public void OnAcknowledged(int id)
+        {
+            lock (session._gate)
+            {
+                if (!IsReady)
+                {
+                    (Early ??= []).Add(id);
+                    return;
+                }
+            }
+            session.OnAcknowledged(this, id);
+        }
 
         public void OnMotion(in MotionSample sample) => session.OnMotion(this, sample);
 

@@ -67,6 +67,17 @@ internal sealed class FakeDriver : IDeviceDriver
         return acked;
     }
 
+    /// <summary>Ids of actions an earlier connection sent that this one was told the controller still holds.</summary>
+    internal ConcurrentQueue<int> Adopted { get; } = new();
+
+    public int WireId(int actionId) => actionId;
+
+    public void Adopt(int actionId)
+    {
+        Adopted.Enqueue(actionId);
+        Interlocked.Increment(ref _unacked);
+    }
+
     /// <summary>Acknowledges an id as the controller would.</summary>
     internal void Ack(int id)
     {

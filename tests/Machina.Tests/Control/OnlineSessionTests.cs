@@ -227,6 +227,57 @@ public class OnlineSessionTests
     }
 
     [Fact]
+    public async Task Reconnect_ProgressReported_ExecutedCountHeldAdoptedRestResentWithUnchangedTargets()
+    {
+        var first = new FakeDriver();
+        var second = new FakeDriver();
+        var drivers = new Queue<FakeDriver>([first, second]);
+        var bot = Robot.Create("Resume", "ABB");
+        bot.DriverFactory = () => drivers.Dequeue();
+        bot.ControlMode("online");
+        bot.Connect("127.0.0.1", 7000);
+        var executed = new List<int>();
+        bot.ActionExecuted += (_, e) => executed.Add(e.LastAction.Id);
+        bot.MoveTo(400, 0, 400);
+        IssueMoves(bot, 11);
+        int released = first.Sent.Count;
+        Assert.True(released >= 6);
+        first.Ack(1);
+        first.Ack(2);
+        first.Listener!.OnFault(new RobotConnectionException("socket closed"));
+
+        // The controller ran up to 4 and still holds 5 and 6; where it says the robot is does not move the program.
+        second.Handshake = second.Handshake with { Version = "1.6.0", Position = new Vector(999, 0, 0), Progress = new DeviceProgress(4, 6) };
+        bot.Connect("127.0.0.1", 7000);
+        OnlineRobot.Flush(bot);
+        Assert.Equal([1, 2, 3, 4], executed);
+        Assert.Equal(new Vector(410, 0, 400), bot.GetExecutedState().Position); // MoveTo, +10, -10, +10
+        Assert.Equal([5, 6], second.Adopted);
+        Assert.Equal(Enumerable.Range(7, 6), second.Sent.Select(a => a.Id));
+        Assert.Equal(new Vector(410, 0, 400), bot.GetReleasedState().Position); // then -10, +10 held
+
+        for (int id = 5; id <= 12; id++)
+        {
+            second.Ack(id);
+        }
+        await bot.WaitForCompletionAsync().WaitAsync(OnlineRobot.Timeout);
+        Assert.Equal(Enumerable.Range(1, 12), executed);
+        Assert.Equal(new Vector(410, 0, 400), bot.GetExecutedState().Position);
+    }
+
+    [Fact]
+    public void Connect_ControllerBusyWithUnknownRequests_RefusedAndDisconnected()
+    {
+        var driver = new FakeDriver { Handshake = new FakeDriver().Handshake with { Version = "1.6.0", Progress = new DeviceProgress(3, 7) } };
+        var bot = OnlineRobot.Create(driver, connect: false);
+
+        var error = Assert.Throws<RobotConnectionException>(() => bot.Connect("127.0.0.1", 7000));
+        Assert.Contains("last executed 3, last received 7", error.Message, StringComparison.Ordinal);
+        Assert.False(bot.IsConnected);
+        Assert.True(driver.Disposed);
+    }
+
+    [Fact]
     public async Task ClearPendingActions_DropsUnreleasedAndRewindsIssueState()
     {
         var driver = new FakeDriver();

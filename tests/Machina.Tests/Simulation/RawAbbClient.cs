@@ -29,6 +29,9 @@ internal sealed class RawAbbClient : IDisposable
 
     public Task SendAsync(string text) => _client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(text)).AsTask();
 
+    /// <summary>Reads the five handshake messages of a 1.6 driver: version, pose, joints, external axes, progress.</summary>
+    public Task<List<AbbMessage>> ReadHandshakeAsync() => ReadMessagesAsync(5);
+
     /// <summary>Reads until <paramref name="count"/> messages have arrived (throws on timeout).</summary>
     public async Task<List<AbbMessage>> ReadMessagesAsync(int count)
     {

@@ -30,9 +30,9 @@ public class VirtualAbbControllerTests
         });
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        var messages = await client.ReadMessagesAsync(4);
+        var messages = await client.ReadHandshakeAsync();
         Assert.Equal(
-            "$20 1 5 0;$21 300 -20.5 400 1 0 0 0;$22 1 2 3 4 5 6;$23 1.800E+03 9.000E+09 9.000E+09 9.000E+09 9.000E+09 9.000E+09;",
+            "$20 1 6 0;$21 300 -20.5 400 1 0 0 0;$22 1 2 3 4 5 6;$23 1.800E+03 9.000E+09 9.000E+09 9.000E+09 9.000E+09 9.000E+09;$25 0 0;",
             client.RawText);
         Assert.True(messages[0].ToVersion().IsSupported);
         Assert.Equal(new ExternalAxes(1800), messages[3].ToExternalAxes());
@@ -44,7 +44,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await client.SendAsync("@1 4 100;@2 5 0;@3 1 400 0 500 0 0 1 0;@4 3 0 0 0 0 9");
         await client.SendAsync("0 0;@0 15 1800 9E9 9E9 9E9 9E9 9E9;@5 7 \"Hello\";@6 99;");
         var acks = await client.ReadMessagesAsync(7);
@@ -66,7 +66,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await client.SendAsync("@1 8 0 0 100 1 0 0 0 0 0 0 50;@2 10 \"DO_1\" 1;@3 11 \"AO_1\" 0.5;@4 13 0.03;@5 16 5 9E9 9E9 9E9 9E9 9E9;@6 18 300 0 300 1 0 0 0;@7 14 1;@8 103 0.05;");
         await client.ReadMessagesAsync(8);
         var s = controller.State;
@@ -90,7 +90,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant with { BufferCapacity = 3 });
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         controller.StopAnswering();
         await client.SendAsync(string.Concat(Enumerable.Range(1, 10).Select(i => $"@{i} 4 {i};")));
         await RawAbbClient.WaitUntilAsync(() => controller.BufferedRequestCount == 3, "the buffer is full");
@@ -117,7 +117,7 @@ public class VirtualAbbControllerTests
         });
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await client.SendAsync("@1 4 10;@2 1 100 0 0 1 0 0 0;");
         Assert.Equal(1, (await client.ReadMessagesAsync(1))[0].Id);
         await RawAbbClient.WaitUntilAsync(() => clock.HasTimerDueIn(TimeSpan.FromSeconds(0.5)), "the move to start");
@@ -159,13 +159,13 @@ public class VirtualAbbControllerTests
         await controller.StartAsync();
         using (var client = await RawAbbClient.ConnectAsync(controller.Port))
         {
-            await client.ReadMessagesAsync(4);
+            await client.ReadHandshakeAsync();
             controller.CloseConnectionAfter(2);
             await client.SendAsync("@1 4 10;@2 4 20;@3 4 30;");
             Assert.Equal("@1 4;@2 4;", await client.ReadToEndAsync());
         }
         using var second = await RawAbbClient.ConnectAsync(controller.Port);
-        Assert.Equal(20, (await second.ReadMessagesAsync(4))[0].Code);
+        Assert.Equal(20, (await second.ReadHandshakeAsync())[0].Code);
         Assert.Equal(2, controller.ConnectionCount);
         await RawAbbClient.WaitUntilAsync(() => controller.RequestsExecuted == 3, "the buffered request is executed");
         Assert.Equal(30, controller.State.Speed);
@@ -177,7 +177,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         Assert.True(await controller.SendAcknowledgementAsync(4242, 1));
         Assert.Equal(new AbbAcknowledgement(4242, 1), (await client.ReadMessagesAsync(1))[0].ToAcknowledgement());
         Assert.True(await controller.SendRawAsync("#!garbage;"));
@@ -191,7 +191,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         controller.StopAnswering();
         await client.SendAsync("@1 4 10;");
         await RawAbbClient.WaitUntilAsync(() => controller.BufferedRequestCount == 1, "the request is buffered");
@@ -206,7 +206,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await client.SendAsync("@1 4 fast;");
         Assert.Equal("", await client.ReadToEndAsync());
         Assert.Equal(["received corrupt parameter \"fast\""], controller.Errors);
@@ -218,7 +218,7 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await client.SendAsync("@9 100;");
         Assert.Equal("@9 100;", await client.ReadToEndAsync());
         await Assert.ThrowsAnyAsync<SocketException>(async () => (await RawAbbClient.ConnectAsync(controller.Port)).Dispose());
@@ -230,10 +230,10 @@ public class VirtualAbbControllerTests
         await using var controller = new VirtualAbbController(Instant);
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await client.SendAsync("@3 101 1;");
         var messages = await client.ReadMessagesAsync(2);
-        Assert.Equal((AbbMessageKind.Information, "1 1.5.0"), (messages[0].Kind, messages[0].Text));
+        Assert.Equal((AbbMessageKind.Information, "1 1.6.0"), (messages[0].Kind, messages[0].Text));
         Assert.Equal(new AbbAcknowledgement(3, 101), messages[1].ToAcknowledgement());
     }
 
@@ -244,7 +244,7 @@ public class VirtualAbbControllerTests
         await controller.StartAsync();
         using var client = await RawAbbClient.ConnectAsync(controller.Port);
         using var monitor = await RawAbbClient.ConnectAsync(controller.MonitorPort);
-        await client.ReadMessagesAsync(4);
+        await client.ReadHandshakeAsync();
         await monitor.ReadMessagesAsync(1);
         controller.StopAnswering();
         await client.SendAsync("@1 4 10;");

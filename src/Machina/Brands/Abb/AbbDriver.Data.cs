@@ -23,6 +23,9 @@ internal sealed partial class AbbDriver
                 _externalAxes = axes.IsEmpty ? null : axes;
                 _hasExternalAxes = true;
                 break;
+            case AbbResponseCode.Progress:
+                _progress = message.ToProgress();
+                break;
             case AbbResponseCode.FullPose:
                 _listener?.OnMotion(Sample(message.ToMonitorUpdate()));
                 return;
@@ -30,9 +33,10 @@ internal sealed partial class AbbDriver
                 _log.Debug($"Ignored data message from the controller: {message}");
                 return;
         }
-        if (!_handshake.Task.IsCompleted && _version is AbbDriverVersion version && _position is not null && _axes is not null && _hasExternalAxes)
+        if (!_handshake.Task.IsCompleted && _version is AbbDriverVersion version && _position is not null && _axes is not null && _hasExternalAxes
+            && (_progress is not null || !version.ReportsProgress))
         {
-            _handshake.TrySetResult(new DeviceHandshake(version.ToString(), _position, _rotation, _axes, _externalAxes));
+            _handshake.TrySetResult(new DeviceHandshake(version.ToString(), _position, _rotation, _axes, _externalAxes, _progress));
         }
     }
 

@@ -17,13 +17,14 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     private IDeviceListener? _listener;
     private int _failed;
 
-    // Handshake parts ($20..$23), filled by the receive loop.
+    // Handshake parts ($20..$23, and $25 from driver 1.6), filled by the receive loop.
     private AbbDriverVersion? _version;
     private Vector? _position;
     private Rotation? _rotation;
     private Joints? _axes;
     private ExternalAxes? _externalAxes;
     private bool _hasExternalAxes;
+    private DeviceProgress? _progress;
 
     /// <summary>Creates a driver that logs to the robot's log.</summary>
     internal AbbDriver(RobotLogger log) => _log = log;
@@ -121,6 +122,18 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
 
     /// <summary>The id sent on the wire: RAPID reads ids as 32-bit floats, so they wrap below 2^23 (fix of bug A10).</summary>
     internal static int WireId(int actionId) => ((actionId - 1) % AbbRequest.MaxId) + 1;
+
+    /// <inheritdoc/>
+    int IDeviceDriver.WireId(int actionId) => WireId(actionId);
+
+    /// <inheritdoc/>
+    public void Adopt(int actionId)
+    {
+        lock (_awaiting)
+        {
+            _awaiting.Enqueue(actionId);
+        }
+    }
 
     /// <inheritdoc/>
     public void OnReceived(ReadOnlySpan<byte> data)

@@ -76,6 +76,13 @@ internal readonly struct AbbMessage
         return Axes(0);
     }
 
+    /// <summary>The driver's progress of a <c>$25</c> message: ids of the last request executed and the last one received.</summary>
+    public DeviceProgress ToProgress()
+    {
+        Expect(AbbMessageKind.Data, AbbResponseCode.Progress, 2);
+        return new DeviceProgress(Integer(0), Integer(1));
+    }
+
     /// <summary>The monitor report of a <c>$24</c> message.</summary>
     public AbbMonitorUpdate ToMonitorUpdate()
     {

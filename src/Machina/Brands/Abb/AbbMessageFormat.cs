@@ -9,7 +9,10 @@ namespace Machina;
 internal static class AbbMessageFormat
 {
     /// <summary>The version our RAPID driver module declares (protocol 1.4, with the fixes listed in docs/protocol-abb.md).</summary>
-    public static AbbDriverVersion DriverVersion => new(1, 5, 0);
+    public static AbbDriverVersion DriverVersion => new(1, 6, 0);
+
+    /// <summary>The first driver version whose handshake ends with <c>$25</c> (its progress).</summary>
+    public static AbbDriverVersion FirstWithProgress => new(1, 6, 0);
 
     /// <summary><c>@id code;</c>, or <c>code;</c> when the request had id 0.</summary>
     public static string Acknowledgement(int id, int code) =>
@@ -26,6 +29,10 @@ internal static class AbbMessageFormat
 
     /// <summary><c>$23 e1 … e6;</c> in exponent notation, unset axes as 9E9.</summary>
     public static string ExternalAxes(ExternalAxes axes) => "$23 " + AxisValues(axes) + ";";
+
+    /// <summary><c>$25 lastExecutedId lastReceivedId;</c>: where the driver is in the request stream (0 when nothing yet).</summary>
+    public static string Progress(int lastExecutedId, int lastReceivedId) =>
+        "$25 " + lastExecutedId.ToString(CultureInfo.InvariantCulture) + " " + lastReceivedId.ToString(CultureInfo.InvariantCulture) + ";";
 
     /// <summary>The three chunks of a monitor report: <c>$24 pose&gt;</c>, <c>joints&gt;</c>, <c>axes;</c>.</summary>
     public static (string Pose, string Joints, string Axes) MonitorChunks(Vector position, Rotation rotation, Joints joints, ExternalAxes axes) =>

@@ -8,4 +8,7 @@ internal enum AbbResponseCode
     Joints = 22,
     ExternalAxes = 23,
     FullPose = 24,
+
+    /// <summary>Handshake, driver 1.6 on: <c>$25 lastExecutedId lastReceivedId;</c>, so a reconnecting host sends nothing twice.</summary>
+    Progress = 25,
 }

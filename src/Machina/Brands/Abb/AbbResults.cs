@@ -12,6 +12,9 @@ internal readonly record struct AbbDriverVersion(int Major, int Minor, int Patch
     /// <summary>True when the host can talk to this driver: same major version, minor at least the minimum (fix of bug A5).</summary>
     public bool IsSupported => Major == MinimumSupported.Major && Minor >= MinimumSupported.Minor;
 
+    /// <summary>True when the handshake of this driver ends with its progress (<c>$25</c>, from 1.6).</summary>
+    public bool ReportsProgress => Major == 1 && Minor >= 6;
+
     /// <inheritdoc/>
     public override string ToString() => $"{Major}.{Minor}.{Patch}";
 }

@@ -31,6 +31,20 @@ public class AbbDriverModulesTests
     }
 
     [Fact]
+    public void DriverModule_VersionAndProgress_MatchWhatTheHostExpects()
+    {
+        string driver = AbbDriverModules.Create("127.0.0.1", 7000)["machina_abb_driver.mod"];
+        var version = AbbMessageFormat.DriverVersion;
+        Assert.Contains($"CONST string DRIVER_VERSION_MAJOR := \"{version.Major}\";", driver, StringComparison.Ordinal);
+        Assert.Contains($"CONST string DRIVER_VERSION_MINOR := \"{version.Minor}\";", driver, StringComparison.Ordinal);
+        Assert.Contains($"CONST string DRIVER_VERSION_PATCH := \"{version.Patch}\";", driver, StringComparison.Ordinal);
+        Assert.True(version.ReportsProgress);
+        Assert.Contains("SocketSend clientSocket \\Str:=\"$25 \" + NumToStr(lastExecutedId, 0) + \" \" + NumToStr(lastReceivedId, 0) + \";\";", driver, StringComparison.Ordinal);
+        Assert.Contains("lastExecutedId := r.id;", driver, StringComparison.Ordinal);
+        Assert.Contains("lastReceivedId := parsing.id;", driver, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void DriverModule_EveryInstructionCode_HasACase()
     {
         string driver = AbbDriverModules.Create("127.0.0.1", 7000)["machina_abb_driver.mod"];

@@ -20,6 +20,19 @@ public class AbbMessageReaderTests
     }
 
     [Fact]
+    public void TryRead_Progress_DecodesLastExecutedAndLastReceivedIds()
+    {
+        var messages = ReadAll("$20 1 6 0;$25 17 23;$25 0 0;");
+        Assert.True(messages[0].ToVersion().ReportsProgress);
+        Assert.False(new AbbDriverVersion(1, 5, 0).ReportsProgress);
+        Assert.Equal(new DeviceProgress(17, 23), messages[1].ToProgress());
+        Assert.True(messages[1].ToProgress().IsBusy);
+        Assert.True(messages[2].ToProgress().IsFresh);
+        Assert.Equal("$25 17 23;", AbbMessageFormat.Progress(17, 23));
+        Assert.Throws<AbbProtocolException>(() => ReadAll("$25 17;")[0].ToProgress());
+    }
+
+    [Fact]
     public void TryRead_EverySplitPoint_GivesSameMessages()
     {
         string stream = Handshake + "@1 1;@2 4;15;$24 1 2 3 1 0 0 0>4 5 6 7 8 9>9E9 9E9 9E9 9E9 9E9 9E9;";
