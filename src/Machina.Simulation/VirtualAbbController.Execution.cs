@@ -1,5 +1,3 @@
-using System.Net.Sockets;
-using System.Text;
 using System.Globalization;
 
 namespace Machina.Simulation;
@@ -24,7 +22,9 @@ public sealed partial class VirtualAbbController
                 {
                     await SendToClientAsync(InformationReply(request), token).ConfigureAwait(false);
                 }
-                if (await AcknowledgeAsync(request, token).ConfigureAwait(false))
+                // Marked executed under the send lock: a handshake reports as executed exactly the requests whose
+                // acknowledgement went to an earlier client (or was lost).
+                if (await SendToClientAsync(AbbMessageFormat.Acknowledgement(request.Id, request.Code), token, executedId: request.Id).ConfigureAwait(false))
                 {
                     Interlocked.Increment(ref _acknowledgementsSent);
                     CountTowardsClose();
@@ -46,42 +46,6 @@ public sealed partial class VirtualAbbController
         catch (OperationCanceledException)
         {
             // Stopping.
-        }
-    }
-
-    /// <summary>
-    /// Marks the request executed and acknowledges it to the current client, under the send lock: a handshake reports as
-    /// executed exactly the requests whose acknowledgement went to an earlier client (or was lost).
-    /// </summary>
-    private async Task<bool> AcknowledgeAsync(AbbRequest request, CancellationToken token)
-    {
-        byte[] bytes = Encoding.ASCII.GetBytes(AbbMessageFormat.Acknowledgement(request.Id, request.Code));
-        await _sendLock.WaitAsync(token).ConfigureAwait(false);
-        try
-        {
-            if (request.Id > 0)
-            {
-                _lastExecutedId = request.Id;
-            }
-            NetworkStream? stream;
-            lock (_gate)
-            {
-                stream = _clientStream;
-            }
-            if (stream is null)
-            {
-                return false;
-            }
-            await stream.WriteAsync(bytes, token).ConfigureAwait(false);
-            return true;
-        }
-        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
-        {
-            return false;
-        }
-        finally
-        {
-            _sendLock.Release();
         }
     }
 

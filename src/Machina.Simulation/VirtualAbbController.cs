@@ -288,12 +288,17 @@ public sealed partial class VirtualAbbController : IAsyncDisposable
         client?.Dispose();
     }
 
-    private async Task<bool> SendToClientAsync(string text, CancellationToken token)
+    /// <summary>Writes to the current client, if any; a positive <paramref name="executedId"/> is recorded as the last executed request first, under the same lock.</summary>
+    private async Task<bool> SendToClientAsync(string text, CancellationToken token, int executedId = 0)
     {
         byte[] bytes = Encoding.ASCII.GetBytes(text);
         await _sendLock.WaitAsync(token).ConfigureAwait(false);
         try
         {
+            if (executedId > 0)
+            {
+                _lastExecutedId = executedId;
+            }
             NetworkStream? stream;
             lock (_gate)
             {

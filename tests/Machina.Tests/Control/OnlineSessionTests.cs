@@ -10,6 +10,22 @@ public class OnlineSessionTests
         }
     }
 
+    /// <summary>A robot online through a first fake driver (the next connection uses <paramref name="next"/>), with MoveTo(400, 0, 400) and 11 moves issued.</summary>
+    private static (Robot Bot, FakeDriver First, List<int> Executed) ConnectAndIssueTwelve(FakeDriver next)
+    {
+        var first = new FakeDriver();
+        var drivers = new Queue<FakeDriver>([first, next]);
+        var bot = Robot.Create("Again", "ABB");
+        bot.DriverFactory = () => drivers.Dequeue();
+        bot.ControlMode("online");
+        bot.Connect("127.0.0.1", 7000);
+        var executed = new List<int>();
+        bot.ActionExecuted += (_, e) => executed.Add(e.LastAction.Id);
+        bot.MoveTo(400, 0, 400);
+        IssueMoves(bot, 11);
+        return (bot, first, executed);
+    }
+
     [Fact]
     public void Connect_Handshake_InitialisesEveryCursor()
     {
@@ -199,17 +215,8 @@ public class OnlineSessionTests
     [Fact]
     public async Task Reconnect_AfterFault_ResendsPendingAndExecutesEachActionOnce()
     {
-        var first = new FakeDriver();
         var second = new FakeDriver(autoAcknowledge: true);
-        var drivers = new Queue<FakeDriver>([first, second]);
-        var bot = Robot.Create("Again", "ABB");
-        bot.DriverFactory = () => drivers.Dequeue();
-        bot.ControlMode("online");
-        bot.Connect("127.0.0.1", 7000);
-        var executed = new List<int>();
-        bot.ActionExecuted += (_, e) => executed.Add(e.LastAction.Id);
-        bot.MoveTo(400, 0, 400);
-        IssueMoves(bot, 11);
+        var (bot, first, executed) = ConnectAndIssueTwelve(second);
         first.Ack(1);
         first.Ack(2);
         first.Listener!.OnFault(new RobotConnectionException("socket closed"));
@@ -229,17 +236,8 @@ public class OnlineSessionTests
     [Fact]
     public async Task Reconnect_ProgressReported_ExecutedCountHeldAdoptedRestResentWithUnchangedTargets()
     {
-        var first = new FakeDriver();
         var second = new FakeDriver();
-        var drivers = new Queue<FakeDriver>([first, second]);
-        var bot = Robot.Create("Resume", "ABB");
-        bot.DriverFactory = () => drivers.Dequeue();
-        bot.ControlMode("online");
-        bot.Connect("127.0.0.1", 7000);
-        var executed = new List<int>();
-        bot.ActionExecuted += (_, e) => executed.Add(e.LastAction.Id);
-        bot.MoveTo(400, 0, 400);
-        IssueMoves(bot, 11);
+        var (bot, first, executed) = ConnectAndIssueTwelve(second);
         int released = first.Sent.Count;
         Assert.True(released >= 6);
         first.Ack(1);

@@ -41,16 +41,7 @@ public class AbbReconnectTests
     public async Task Reconnect_ControllerRanTheRestWhileDisconnected_CountsThemExecutedAndKeepsTargets()
     {
         await using var controller = await StartControllerAsync();
-        var (bot, executed, lost) = await ConnectWatchedAsync(controller);
-        int released = await IssueTwentyWhilePausedAsync(bot, controller);
-        controller.CloseConnectionAfter(3);
-        controller.ResumeAnswering();
-        await lost.Task.WaitAsync(Limit);
-        await EventuallyAsync(() => controller.RequestsExecuted == released, "the controller to run what it holds, acknowledgements lost");
-
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
-        await bot.WaitForCompletionAsync().WaitAsync(Limit);
-        await bot.FlushEventsAsync().WaitAsync(Limit);
+        var (bot, executed, _) = await RunWhileDisconnectedAndReconnectAsync(controller);
 
         // Before driver 1.6 these actions ran twice and the rest of the program was shifted by their motion.
         AssertEachOnce(controller, executed);
@@ -61,16 +52,7 @@ public class AbbReconnectTests
     public async Task Reconnect_DriverWithoutProgress_SendsUnconfirmedAgainFromTheReportedPose()
     {
         await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, DriverVersion = new Version(1, 5, 0) });
-        var (bot, executed, lost) = await ConnectWatchedAsync(controller);
-        int released = await IssueTwentyWhilePausedAsync(bot, controller);
-        controller.CloseConnectionAfter(3);
-        controller.ResumeAnswering();
-        await lost.Task.WaitAsync(Limit);
-        await EventuallyAsync(() => controller.RequestsExecuted == released, "the controller to run what it holds, acknowledgements lost");
-
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
-        await bot.WaitForCompletionAsync().WaitAsync(Limit);
-        await bot.FlushEventsAsync().WaitAsync(Limit);
+        var (bot, executed, released) = await RunWhileDisconnectedAndReconnectAsync(controller);
 
         // The documented limit of old drivers: the host cannot know what ran, so it sends it again.
         int ranTwice = released - 3;
@@ -104,6 +86,25 @@ public class AbbReconnectTests
         Assert.Equal([1, 2], executed);
         Assert.Equal(2, controller.RequestsExecuted);
         Assert.Equal(new Vector(400, 0, 410), controller.State.Position);
+    }
+
+    /// <summary>
+    /// Issues twenty moves, loses the connection after three acknowledgements while the controller runs every request it
+    /// holds (their acknowledgements are lost), reconnects and waits for the end. Returns how many requests it held.
+    /// </summary>
+    private static async Task<(Robot Bot, ConcurrentQueue<int> Executed, int Released)> RunWhileDisconnectedAndReconnectAsync(VirtualAbbController controller)
+    {
+        var (bot, executed, lost) = await ConnectWatchedAsync(controller);
+        int released = await IssueTwentyWhilePausedAsync(bot, controller);
+        controller.CloseConnectionAfter(3);
+        controller.ResumeAnswering();
+        await lost.Task.WaitAsync(Limit);
+        await EventuallyAsync(() => controller.RequestsExecuted == released, "the controller to run what it holds, acknowledgements lost");
+
+        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+        return (bot, executed, released);
     }
 
     private static async Task<(Robot Bot, ConcurrentQueue<int> Executed, TaskCompletionSource<ConnectionLostArgs> Lost)> ConnectWatchedAsync(VirtualAbbController controller)
