@@ -3,30 +3,12 @@
 // robot running Machina's RAPID driver (see Robot.GetDeviceDriverModules).
 using System.Diagnostics;
 using Machina;
-using Machina.Simulation;
 
-string? host = null;
-int port = 7000;
-for (int i = 0; i < args.Length; i++)
+await using SampleController? controller = await SampleController.OpenAsync(
+    args, "HelloRobot [--host <controller address> --port <driver port>]", speedFactor: 4);
+if (controller is null)
 {
-    switch (args[i])
-    {
-        case "--host" when i + 1 < args.Length: host = args[++i]; break;
-        case "--port" when i + 1 < args.Length && int.TryParse(args[i + 1], out int p): port = p; i++; break;
-        default:
-            Console.Error.WriteLine("Usage: HelloRobot [--host <controller address> --port <driver port>]");
-            return 2;
-    }
-}
-
-VirtualAbbController? simulator = null;
-if (host is null)
-{
-    simulator = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = 4 });
-    await simulator.StartAsync();
-    host = "127.0.0.1";
-    port = simulator.Port;
-    Console.WriteLine($"Started a virtual ABB controller on {host}:{port} (4x faster than real time).");
+    return 2;
 }
 
 try
@@ -40,7 +22,7 @@ try
         $"  executed  #{e.LastAction.Id} -> position {e.Position?.ToString() ?? "unknown"}, axes {e.Axes?.ToString() ?? "unknown"} ({e.PendingExecutionTotal} left)");
     bot.ConnectionLost += (_, e) => Console.WriteLine($"  connection lost: {e.Error.Message}");
 
-    await bot.ConnectAsync(host, port);
+    await bot.ConnectAsync(controller.Host, controller.Port);
     Console.WriteLine($"Connected to {bot.GetIP()}; the robot is at {bot.GetCurrentPosition()} with axes {bot.GetCurrentAxes()}.");
     // Live poses from the controller's monitor (printed at most every 0.4 s).
     bot.MotionUpdate += (_, e) =>
@@ -64,13 +46,6 @@ catch (MachinaException ex)
 {
     Console.Error.WriteLine($"The robot link failed: {ex.Message}");
     return 1;
-}
-finally
-{
-    if (simulator is not null)
-    {
-        await simulator.DisposeAsync();
-    }
 }
 
 // The same actions, compiled offline for every brand this build knows.

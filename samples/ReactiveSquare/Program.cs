@@ -2,39 +2,21 @@
 // Runs against a virtual ABB controller by default (or --host/--port for a real one) and stops cleanly after
 // --loops squares (default 3) or when a key is pressed.
 using Machina;
-using Machina.Simulation;
 
-string? host = null;
-int port = 7000;
 int loops = 3;
-for (int i = 0; i < args.Length; i++)
+await using SampleController? controller = await SampleController.OpenAsync(
+    args, "ReactiveSquare [--loops <squares>] [--host <controller address> --port <driver port>]", speedFactor: 8,
+    (name, value) => name == "--loops" && int.TryParse(value, out loops) && loops > 0);
+if (controller is null)
 {
-    switch (args[i])
-    {
-        case "--host" when i + 1 < args.Length: host = args[++i]; break;
-        case "--port" when i + 1 < args.Length && int.TryParse(args[i + 1], out int p): port = p; i++; break;
-        case "--loops" when i + 1 < args.Length && int.TryParse(args[i + 1], out int n) && n > 0: loops = n; i++; break;
-        default:
-            Console.Error.WriteLine("Usage: ReactiveSquare [--loops <squares>] [--host <controller address> --port <driver port>]");
-            return 2;
-    }
-}
-
-VirtualAbbController? simulator = null;
-if (host is null)
-{
-    simulator = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = 8 });
-    await simulator.StartAsync();
-    host = "127.0.0.1";
-    port = simulator.Port;
-    Console.WriteLine($"Started a virtual ABB controller on {host}:{port} (8x faster than real time).");
+    return 2;
 }
 
 try
 {
     var bot = Robot.Create("ReactiveSquare", "ABB");
     bot.ControlMode("online");
-    await bot.ConnectAsync(host, port);
+    await bot.ConnectAsync(controller.Host, controller.Port);
 
     var finished = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
     int squares = 0, started = 0, lastOfSquare = 0;
@@ -113,11 +95,4 @@ catch (MachinaException ex)
 {
     Console.Error.WriteLine($"The robot link failed: {ex.Message}");
     return 1;
-}
-finally
-{
-    if (simulator is not null)
-    {
-        await simulator.DisposeAsync();
-    }
 }
