@@ -130,4 +130,18 @@ public class CompilerEdgeCaseTests
 
         Assert.Contains(Lines(p, extension), l => l.TrimStart() == "; a b c d");
     }
+
+    [Theory]
+    [InlineData(RobotType.MARLIN, "M117 a+b,c[d] e")]
+    [InlineData(RobotType.ZMORPH, "M70 P1000 (a+b,c[d] e)")]
+    public void GCode_MessageWithStarSemicolonParenthesesOrLineBreak_IsMadeSafeWithAWarning(RobotType brand, string expected)
+    {
+        RobotProgram p = Compile(brand, b => { b.Message("a*b;c(d)\ne"); b.Message("plain text"); });
+
+        List<string> gcode = Lines(p, "gcode");
+        Assert.Contains(expected, gcode);
+        ProgramWarning warning = Assert.Single(p.Warnings);
+        Assert.Equal("Message(\"a*b;c(d)\\ne\");", warning.Instruction);
+        Assert.StartsWith("G-code messages cannot hold", warning.Message, StringComparison.Ordinal);
+    }
 }

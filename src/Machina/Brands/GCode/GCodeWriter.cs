@@ -86,7 +86,12 @@ internal sealed class GCodeWriter
                 Code("G4 P" + Num.I(wait.Millis), action);
                 break;
             case ActionMessage message:
-                Code(_flavor.MessageLine(GCodeText.Message(message.Message)), action);
+                string text = GCodeText.Message(message.Message);
+                if (text != message.Message)
+                {
+                    _job.Warn(action, "G-code messages cannot hold line breaks, control characters, ';', '(', ')' or '*'; they were replaced (';' by ',', brackets for parentheses, '*' by '+', others by spaces).");
+                }
+                Code(_flavor.MessageLine(text), action);
                 break;
             case ActionComment comment:
                 _file.Add("; " + GCodeText.Comment(comment.Comment));
