@@ -112,6 +112,8 @@ public class CompilerEdgeCaseTests
     [Theory]
     [InlineData("target1", "M_target1")]
     [InlineData("machina_acc_cp", "M_machina_acc_cp")]
+    [InlineData("BAS", "M_BAS")]
+    [InlineData("ir_stopm", "M_ir_stopm")]
     public void Krl_ProgramNamedLikeAGeneratedVariable_GetsAnotherModuleName(string robotName, string module)
     {
         RobotProgram p = Compile(RobotType.KUKA, b => { b.AccelerationTo(0); b.MoveTo(300, 0, 300); }, new CompileOptions { InlineTargets = false }, robotName);
@@ -143,5 +145,28 @@ public class CompilerEdgeCaseTests
         ProgramWarning warning = Assert.Single(p.Warnings);
         Assert.Equal("Message(\"a*b;c(d)\\ne\");", warning.Instruction);
         Assert.StartsWith("G-code messages cannot hold", warning.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Rapid_NamesOfDataTypesAndInstructions_AreNotUsedForModulesOrTools()
+    {
+        RobotProgram p = Compile(RobotType.ABB, b =>
+        {
+            b.DefineTool("MoveL", new Vector(0, 0, 100), Rotation.Identity);
+            b.AttachTool("MoveL");
+            b.MoveTo(300, 0, 300);
+            b.DefineTool("tooldata", new Vector(0, 0, 50), Rotation.Identity);
+            b.AttachTool("tooldata");
+            b.MoveTo(300, 0, 200);
+            b.WriteDigital("SetDO", true);
+        }, name: "TPWrite");
+
+        List<string> mod = Lines(p, "mod");
+        Assert.Equal("MODULE TPWrite_2", mod[0]);
+        Assert.Contains("  PERS tooldata MoveL_2 := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,50],[1,0,0,0],0,0,0]];", mod);
+        Assert.Contains("  PERS tooldata tooldata_2 := [TRUE,[[0,0,50],[1,0,0,0]],[1,[0,0,25],[1,0,0,0],0,0,0]];", mod);
+        Assert.Contains(mod, l => l.StartsWith("    MoveL ", StringComparison.Ordinal) && l.EndsWith(", MoveL_2\\WObj:=WObj0;", StringComparison.Ordinal));
+        Assert.DoesNotContain(mod, l => l.Contains("SetDO SetDO", StringComparison.Ordinal));
+        Assert.Contains(p.Warnings, w => w.Instruction == "WriteDigital(\"SetDO\",True);");
     }
 }
