@@ -169,4 +169,40 @@ public class CompilerEdgeCaseTests
         Assert.DoesNotContain(mod, l => l.Contains("SetDO SetDO", StringComparison.Ordinal));
         Assert.Contains(p.Warnings, w => w.Instruction == "WriteDigital(\"SetDO\",True);");
     }
+
+    [Theory]
+    [InlineData(RobotType.ABB)]
+    [InlineData(RobotType.UR)]
+    [InlineData(RobotType.MARLIN)]
+    [InlineData(RobotType.HUMAN)]
+    public void VeryLongRobotName_GivesAFileNameThatCanBeSaved(RobotType brand)
+    {
+        RobotProgram p = Compile(brand, b => b.MoveTo(300, 0, 300), name: new string('a', 300));
+        string folder = Path.Combine(Path.GetTempPath(), "machina-longname-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            IReadOnlyList<string> paths = p.SaveToFolder(folder);
+
+            Assert.Equal(new string('a', 100), p.Name);
+            Assert.All(p.Files, f => Assert.Equal(new string('a', 100), f.Name));
+            Assert.All(paths, path => Assert.True(File.Exists(path)));
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    [Theory]
+    [InlineData("CON", "CON_")]
+    [InlineData("nul", "nul_")]
+    [InlineData("Com1", "Com1_")]
+    [InlineData("Console", "Console")]
+    public void WindowsDeviceName_IsNotUsedAsAFileName(string robotName, string programName)
+    {
+        RobotProgram p = Compile(RobotType.ABB, b => b.MoveTo(300, 0, 300), name: robotName);
+
+        Assert.Equal(programName, p.Name);
+        Assert.Equal([programName + ".pgf", programName + ".mod"], p.Files.Select(f => f.FileName));
+    }
 }
