@@ -92,7 +92,20 @@ internal sealed class CompileJob
         }
     }
 
-    /// <summary>A robot name made safe as a program identifier: letters, digits and '_', starting with a letter or '_'.</summary>
+    /// <summary>Longest program name: it is also the file name, which file systems limit (255 bytes on most).</summary>
+    internal const int MaxProgramNameLength = 100;
+
+    // Names Windows reserves for devices, whatever the extension: a file "CON.mod" cannot be created there.
+    private static readonly HashSet<string> WindowsDeviceNames = new(StringComparer.OrdinalIgnoreCase)
+    {
+        "CON", "PRN", "AUX", "NUL", "COM0", "COM1", "COM2", "COM3", "COM4", "COM5", "COM6", "COM7", "COM8", "COM9",
+        "LPT0", "LPT1", "LPT2", "LPT3", "LPT4", "LPT5", "LPT6", "LPT7", "LPT8", "LPT9",
+    };
+
+    /// <summary>
+    /// A robot name made safe as a program identifier and file name: letters, digits and '_', starting with a letter or '_',
+    /// at most <see cref="MaxProgramNameLength"/> characters, '_' appended to a Windows device name (CON, NUL, COM1, …).
+    /// </summary>
     internal static string SafeProgramName(string? name)
     {
         if (string.IsNullOrWhiteSpace(name))
@@ -101,6 +114,11 @@ internal sealed class CompileJob
         }
         var chars = name.Trim().Select(c => char.IsAsciiLetterOrDigit(c) || c == '_' ? c : '_').ToArray();
         string safe = new(chars);
-        return char.IsAsciiDigit(safe[0]) ? "_" + safe : safe;
+        safe = char.IsAsciiDigit(safe[0]) ? "_" + safe : safe;
+        if (safe.Length > MaxProgramNameLength)
+        {
+            safe = safe[..MaxProgramNameLength];
+        }
+        return WindowsDeviceNames.Contains(safe) ? safe + "_" : safe;
     }
 }

@@ -1,6 +1,6 @@
 namespace Machina;
 
-/// <summary>Writes a numbered, human-readable listing of the actions (<c>.txt</c>).</summary>
+/// <summary>Writes a numbered, human-readable listing of the actions (<c>.txt</c>), one line each (line breaks in texts become spaces).</summary>
 internal sealed class HumanCompiler : Compiler
 {
     internal override RobotType Brand => RobotType.HUMAN;
@@ -13,6 +13,6 @@ internal sealed class HumanCompiler : Compiler
         file.AddRange(Header(job));
         file.Add("");
         int index = 0;
-        job.Replay((action, _) => file.Add($"[{index++}] {action.Describe()}"));
+        job.Replay((action, _) => file.Add($"[{index++}] {ProgramText.OneLine(action.Describe())}"));
     }
 }

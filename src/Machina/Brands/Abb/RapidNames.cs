@@ -4,7 +4,8 @@ namespace Machina;
 
 /// <summary>
 /// Valid RAPID identifiers: an ASCII letter first, then letters, digits or '_', at most 32 characters, not a reserved word
-/// and not a name the controller or this compiler already uses. RAPID names ignore case.
+/// and not a name the controller or this compiler already uses (predefined data, the data types and instructions it
+/// writes). RAPID names ignore case.
 /// </summary>
 internal sealed class RapidNames
 {
@@ -20,6 +21,10 @@ internal sealed class RapidNames
         "v5", "v10", "v20", "v30", "v40", "v50", "v60", "v80", "v100", "v150", "v200", "v300", "v400", "v500", "v600", "v800",
         "v1000", "v1500", "v2000", "v2500", "v3000", "v4000", "v5000", "v6000", "v7000",
         "z0", "z1", "z5", "z10", "z15", "z20", "z30", "z40", "z50", "z60", "z80", "z100", "z150", "z200",
+        // Data types and instructions this compiler writes: a module-level name like these would hide them.
+        "num", "bool", "string", "pos", "orient", "pose", "confdata", "extjoint", "robtarget", "jointtarget", "robjoint",
+        "speeddata", "zonedata", "tooldata", "loaddata", "wobjdata", "signaldo", "signalao",
+        "MoveL", "MoveJ", "MoveC", "MoveAbsJ", "WaitTime", "TPWrite", "SetDO", "SetAO", "ConfJ", "ConfL", "WorldAccLim",
     };
 
     /// <summary>True for names of the form <c>target«digits»</c>, which declared targets use.</summary>

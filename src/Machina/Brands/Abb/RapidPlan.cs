@@ -19,6 +19,12 @@ internal sealed class RapidPlan
     private string _lastSpeedName = "", _lastZoneName = "", _lastToolName = "";
     private Tool? _lastTool;
 
+    /// <summary>The smallest speed written, mm/s: speeds are written with 3 decimals, and a speeddata of 0 cannot move.</summary>
+    internal const double MinSpeed = 0.001;
+
+    /// <summary>A speed as written in speeddata: rounded to 3 decimals, at least <see cref="MinSpeed"/>.</summary>
+    private static double SpeedKey(double speed) => Math.Max(Math.Round(speed, 3), MinSpeed);
+
     /// <summary>Identifiers in use in the module.</summary>
     internal RapidNames Names { get; } = new();
 
@@ -56,7 +62,7 @@ internal sealed class RapidPlan
         switch (action)
         {
             case ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion:
-                AddOnce(_speeds, _speedNames, Math.Round(cursor.Speed, 3));
+                AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed));
                 AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3));
                 if (cursor.Tool is Tool tool)
                 {
@@ -138,7 +144,7 @@ internal sealed class RapidPlan
     /// <summary>The speeddata name for the cursor's speed.</summary>
     internal string SpeedName(double speed)
     {
-        double key = Math.Round(speed, 3);
+        double key = SpeedKey(speed);
         if (key != _lastSpeed)
         {
             _lastSpeed = key;

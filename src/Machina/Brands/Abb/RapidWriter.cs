@@ -105,11 +105,15 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                                                    && Math.Abs(before.Acceleration - cursor.Acceleration) >= 0.001:
                 Code(action, AccelerationLine(action, cursor.Acceleration));
                 break;
+            case ActionSpeed when Math.Round(cursor.Speed, 3) < RapidPlan.MinSpeed:
+                job.Warn(action, $"RAPID speeddata is written with 3 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {Num.G(RapidPlan.MinSpeed)} mm/s.");
+                NoCode(action);
+                break;
             case ActionMessage m:
                 WriteMessage(m);
                 break;
             case ActionWait w:
-                Code(action, Indent + "WaitTime " + Num.G(w.Millis / 1000.0) + ";");
+                Code(action, Indent + "WaitTime " + ProgramText.Seconds(w.Millis) + ";");
                 break;
             case ActionComment c:
                 sink.Add(Indent + "! " + RapidText.CommentText(c.Comment));

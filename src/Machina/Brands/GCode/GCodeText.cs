@@ -5,10 +5,11 @@ namespace Machina;
 /// <summary>Makes user text safe inside G-code lines: it can neither end a comment early nor start a new command.</summary>
 internal static class GCodeText
 {
-    /// <summary>Text for a <c>;</c> comment: line breaks and other control characters become spaces.</summary>
+    /// <summary>Text for a <c>;</c> comment: line breaks (also Unicode line separators) and other control characters become spaces.</summary>
     internal static string Comment(string text) => Replace(text, message: false);
 
-    /// <summary>Text for a message shown by the printer: as <see cref="Comment"/>, and ';' becomes ',' and parentheses become brackets, since they would start a comment.</summary>
+    /// <summary>Text for a message shown by the printer: as <see cref="Comment"/>, ';' becomes ',' and parentheses become brackets, since they would start a comment, and '*' becomes '+', since Marlin cuts a
+    /// message at the first '*' (where a line checksum starts).</summary>
     internal static string Message(string text) => Replace(text, message: true);
 
     private static string Replace(string text, bool message)
@@ -17,7 +18,7 @@ internal static class GCodeText
         for (int i = 0; i < text.Length; i++)
         {
             char c = text[i];
-            char safe = char.IsControl(c) ? ' ' : !message ? c : c switch { ';' => ',', '(' => '[', ')' => ']', _ => c };
+            char safe = ProgramText.BreaksLine(c) ? ' ' : !message ? c : c switch { ';' => ',', '(' => '[', ')' => ']', '*' => '+', _ => c };
             if (safe != c && sb is null)
             {
                 sb = new StringBuilder(text.Length);

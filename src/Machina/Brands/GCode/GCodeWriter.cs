@@ -56,6 +56,10 @@ internal sealed class GCodeWriter
         switch (action)
         {
             case ActionSpeed:
+                if (Math.Round(c.Speed * 60, 3) < MinRate)
+                {
+                    Warning(action, $"feed rates are written in mm/min with 3 decimals; {Num.G(c.Speed)} mm/s would be F0 and was raised to F{FixedPoint.Format(MinRate, 3)}.");
+                }
                 if (_flavor.FeedOnMotionLine)
                 {
                     NoCode(action);
@@ -63,7 +67,7 @@ internal sealed class GCodeWriter
                 else
                 {
                     _feed = c.Speed * 60;
-                    Code("G1 F" + Num.F(_feed, 3), action);
+                    Code("G1 F" + Rate(_feed), action);
                 }
                 break;
             case ActionAcceleration:
@@ -82,7 +86,12 @@ internal sealed class GCodeWriter
                 Code("G4 P" + Num.I(wait.Millis), action);
                 break;
             case ActionMessage message:
-                Code(_flavor.MessageLine(GCodeText.Message(message.Message)), action);
+                string text = GCodeText.Message(message.Message);
+                if (text != message.Message)
+                {
+                    _job.Warn(action, "G-code messages cannot hold line breaks, control characters, ';', '(', ')' or '*'; they were replaced (';' by ',', brackets for parentheses, '*' by '+', others by spaces).");
+                }
+                Code(_flavor.MessageLine(text), action);
                 break;
             case ActionComment comment:
                 _file.Add("; " + GCodeText.Comment(comment.Comment));
@@ -148,7 +157,11 @@ internal sealed class GCodeWriter
         }
         else
         {
-            string a = Num.F(acceleration, 3);
+            if (Math.Round(acceleration, 3) < MinRate)
+            {
+                Warning(action, $"accelerations are written in mm/s^2 with 3 decimals; {Num.G(acceleration)} mm/s^2 would be 0 and was raised to {FixedPoint.Format(MinRate, 3)}.");
+            }
+            string a = Rate(acceleration);
             Code("M204 P" + a + " T" + a, action);
         }
     }
@@ -161,7 +174,7 @@ internal sealed class GCodeWriter
             if (before.Speed != c.Speed && !_flavor.FeedOnMotionLine)
             {
                 _feed = c.Speed * 60;
-                Code("G1 F" + Num.F(_feed, 3), action);
+                Code("G1 F" + Rate(_feed), action);
                 wrote = true;
             }
             if (before.Acceleration != c.Acceleration && _flavor.SupportsAcceleration)
@@ -245,7 +258,7 @@ internal sealed class GCodeWriter
         double feed = speed * 60;
         if (!_flavor.FeedOnMotionLine && feed != _feed)
         {
-            _file.Add("G1 F" + Num.F(feed, 3));
+            _file.Add("G1 F" + Rate(feed));
             _feed = feed;
         }
         StringBuilder sb = _sb.Clear();
@@ -263,7 +276,7 @@ internal sealed class GCodeWriter
         }
         if (_flavor.FeedOnMotionLine && feed != _feed)
         {
-            FixedPoint.Append(sb.Append(" F"), feed, 3);
+            sb.Append(" F").Append(Rate(feed));
             _feed = feed;
         }
         if (action is not null && _human)
@@ -272,6 +285,12 @@ internal sealed class GCodeWriter
         }
         _file.Add(sb.ToString());
     }
+
+    /// <summary>The smallest feed rate (mm/min) or acceleration (mm/s²) written: a value above 0 that would print as 0 is raised to it.</summary>
+    internal const double MinRate = 0.001;
+
+    /// <summary>A feed rate or acceleration (above 0) with 3 decimals, at least <see cref="MinRate"/>, never in exponent form.</summary>
+    private static string Rate(double value) => FixedPoint.Format(Math.Max(Math.Round(value, 3), MinRate), 3);
 
     private void EmitOutput(RobotAction action, string pin, bool toolPin, string value)
     {
@@ -312,7 +331,7 @@ internal sealed class GCodeWriter
             RobotPartType.Bed => temperature.Wait ? "M190" : "M140",
             _ => temperature.Wait ? "M191" : "M141",
         };
-        Code(code + " S" + Num.F(c.Temperatures[(int)temperature.Part], 0), action);
+        Code(code + " S" + FixedPoint.Format(c.Temperatures[(int)temperature.Part], 0), action);
     }
 
     private void EmitSequence(RobotAction action, bool start, RobotCursor c)
@@ -327,7 +346,7 @@ internal sealed class GCodeWriter
         if (start && !_flavor.FeedOnMotionLine)
         {
             _feed = c.Speed * 60;
-            _file.Add("G1 F" + Num.F(_feed, 3));
+            _file.Add("G1 F" + Rate(_feed));
         }
         NoCode(action);
     }

@@ -14,14 +14,20 @@ internal static class KrlFormat
     /// <summary>m/s, m/s² and seconds: 6 decimals.</summary>
     internal static string Fine(double value) => FixedPoint.Format(value, 6);
 
-    /// <summary>Speed in mm/s as KRL's <c>$VEL.CP</c> value in m/s.</summary>
-    internal static string SpeedMetresPerSecond(double mmPerSecond) => Fine(mmPerSecond / 1000);
+    /// <summary>The smallest speed (m/s) or acceleration (m/s²) written: a value above 0 that would print as 0 is raised to it.</summary>
+    internal const double MinRate = 0.000001;
 
-    /// <summary>Acceleration in mm/s² as KRL's <c>$ACC.CP</c> value in m/s².</summary>
-    internal static string AccelerationMetresPerSecond2(double mmPerSecond2) => Fine(mmPerSecond2 / 1000);
+    /// <summary>True when a speed or acceleration above 0 (mm/s, mm/s²) would print as 0 in m/s or m/s² with 6 decimals.</summary>
+    internal static bool RoundsToZero(double perMm) => perMm > 0 && Math.Round(perMm / 1000, 6) < MinRate;
 
-    /// <summary>Milliseconds as KRL's <c>WAIT SEC</c> value in seconds.</summary>
-    internal static string Seconds(double milliseconds) => Fine(milliseconds / 1000);
+    /// <summary>Speed in mm/s as KRL's <c>$VEL.CP</c> value in m/s (at least <see cref="MinRate"/>).</summary>
+    internal static string SpeedMetresPerSecond(double mmPerSecond) => Fine(Math.Max(Math.Round(mmPerSecond / 1000, 6), MinRate));
+
+    /// <summary>Acceleration in mm/s² (above 0) as KRL's <c>$ACC.CP</c> value in m/s² (at least <see cref="MinRate"/>).</summary>
+    internal static string AccelerationMetresPerSecond2(double mmPerSecond2) => Fine(Math.Max(Math.Round(mmPerSecond2 / 1000, 6), MinRate));
+
+    /// <summary>Milliseconds as KRL's <c>WAIT SEC</c> value in seconds, exact and never in exponent form.</summary>
+    internal static string Seconds(long milliseconds) => ProgramText.Seconds(milliseconds);
 
     /// <summary>
     /// KUKA's A, B, C of an orientation: intrinsic Z-Y′-X″ Euler angles in degrees, A about Z, B about the new Y (in [−90°, 90°]),

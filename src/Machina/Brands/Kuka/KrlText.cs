@@ -38,7 +38,8 @@ internal static class KrlText
     }
 
     /// <summary>
-    /// The module name for a program: the safe program name, prefixed with "M_" when it is a KRL keyword and cut to 24 characters.
+    /// The module name for a program: the safe program name, prefixed with "M_" when it is a KRL keyword or a name this compiler
+    /// declares or calls itself (<c>target«digits»</c>, the acceleration variable, <c>BAS</c>, <c>IR_STOPM</c>), and cut to 24 characters.
     /// The module (DEF) name and the file name must be the same in KRL.
     /// </summary>
     internal static string ModuleName(string programName)
@@ -49,34 +50,21 @@ internal static class KrlText
             sb.Append(char.IsAsciiLetterOrDigit(c) || c == '_' ? c : '_');
         }
         string name = sb.Length == 0 ? "Machina" : sb.ToString();
-        if (char.IsAsciiDigit(name[0]) || Keywords.Contains(name))
+        if (char.IsAsciiDigit(name[0]) || Keywords.Contains(name) || IsGeneratedName(name))
         {
             name = "M_" + name;
         }
         return name.Length > MaxNameLength ? name[..MaxNameLength] : name;
     }
 
-    /// <summary>Text for a comment: line breaks and other control characters become spaces, so the comment cannot end early.</summary>
-    internal static string Comment(string text)
-    {
-        bool clean = true;
-        foreach (char c in text)
-        {
-            if (char.IsControl(c))
-            {
-                clean = false;
-                break;
-            }
-        }
-        if (clean)
-        {
-            return text;
-        }
-        var sb = new StringBuilder(text.Length);
-        foreach (char c in text)
-        {
-            sb.Append(char.IsControl(c) ? ' ' : c);
-        }
-        return sb.ToString();
-    }
+    /// <summary>True for names the KRL writer declares: <c>target«digits»</c> and the acceleration variable (KRL names ignore case).</summary>
+    private static bool IsGeneratedName(string name) =>
+        RapidNames.LooksLikeTarget(name) || string.Equals(name, KrlWriter.AccDefaultVariable, StringComparison.OrdinalIgnoreCase)
+        || SystemRoutines.Contains(name);
+
+    // Routines of the KUKA system software that every program calls in its INI fold; a module with one of these names would call itself.
+    private static readonly HashSet<string> SystemRoutines = new(StringComparer.OrdinalIgnoreCase) { "BAS", "IR_STOPM" };
+
+    /// <summary>Text for a comment: line breaks (also Unicode line separators) and other control characters become spaces, so the comment cannot end early.</summary>
+    internal static string Comment(string text) => ProgramText.OneLine(text);
 }

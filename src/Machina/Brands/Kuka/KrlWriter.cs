@@ -158,9 +158,11 @@ internal sealed class KrlWriter
         switch (action)
         {
             case ActionSpeed:
+                WarnIfRaised(action, c.Speed, "speed", "mm/s", "m/s");
                 Code(VelocityLine(c.Speed), action);
                 break;
             case ActionAcceleration:
+                WarnIfRaised(action, c.Acceleration, "acceleration", "mm/s^2", "m/s^2");
                 Code(AccelerationLine(c.Acceleration), action);
                 break;
             case ActionPrecision:
@@ -232,6 +234,14 @@ internal sealed class KrlWriter
             default:
                 NotApplicable(action, "the KUKA compiler does not know this action.");
                 break;
+        }
+    }
+
+    private void WarnIfRaised(RobotAction action, double value, string what, string unit, string krlUnit)
+    {
+        if (KrlFormat.RoundsToZero(value))
+        {
+            _job.Warn(action, $"KRL {what}s are written in {krlUnit} with 6 decimals; {Num.G(value)} {unit} would be 0 and was raised to {FixedPoint.Format(KrlFormat.MinRate, 6)} {krlUnit}.");
         }
     }
 

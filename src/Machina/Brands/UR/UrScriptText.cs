@@ -36,18 +36,25 @@ internal static class UrScriptText
         sb.Append('[').Num6(j.J1 * Rad).Append(',').Num6(j.J2 * Rad).Append(',').Num6(j.J3 * Rad).Append(',')
           .Num6(j.J4 * Rad).Append(',').Num6(j.J5 * Rad).Append(',').Num6(j.J6 * Rad).Append(']');
 
+    /// <summary>The smallest speed or acceleration written (6 decimals): a value that would print as 0 is raised to it.</summary>
+    internal const double MinRate = 0.000001;
+
+    /// <summary>True when a linear speed or acceleration (mm/s or mm/s²) above 0 would print as 0 in m/s or m/s².</summary>
+    internal static bool RoundsToZero(double perMm) => perMm > 0 && Math.Round(perMm * Mm, 6) < MinRate;
+
     /// <summary>
     /// Appends <c>, a=…, v=…, r=…</c>: linear motions in m/s² and m/s, joint motions in rad/s² and rad/s; blend radius in m.
-    /// An acceleration of 0 leaves <c>a</c> out so that the controller uses its default (never <c>a=0</c>).
+    /// An acceleration of 0 leaves <c>a</c> out so that the controller uses its default (never <c>a=0</c>); a speed or
+    /// acceleration above 0 is written as at least <see cref="MinRate"/>, never as 0.
     /// </summary>
     internal static StringBuilder MotionParameters(this StringBuilder sb, double acceleration, double speed, double precision, bool joint)
     {
         double factor = joint ? Rad : Mm;
-        if (Math.Round(acceleration * factor, 6) > 0)
+        if (acceleration > 0)
         {
-            sb.Append(", a=").Num6(acceleration * factor);
+            sb.Append(", a=").Num6(Math.Max(Math.Round(acceleration * factor, 6), MinRate));
         }
-        return sb.Append(", v=").Num6(speed * factor).Append(", r=").Num6(precision * Mm).Append(')');
+        return sb.Append(", v=").Num6(Math.Max(Math.Round(speed * factor, 6), MinRate)).Append(", r=").Num6(precision * Mm).Append(')');
     }
 
     /// <summary>Appends <c>set_tcp(p[…])</c> for a tool (or the bare flange when null).</summary>

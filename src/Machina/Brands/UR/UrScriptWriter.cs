@@ -93,6 +93,14 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 }
                 Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true).ToString());
                 break;
+            case ActionSpeed when UrScriptText.RoundsToZero(cursor.Speed):
+                job.Warn(action, $"URScript speeds are written in m/s with 6 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {FixedPoint.Format(UrScriptText.MinRate, 6)} m/s.");
+                NoCode(action);
+                break;
+            case ActionAcceleration when UrScriptText.RoundsToZero(cursor.Acceleration):
+                job.Warn(action, $"URScript accelerations are written in m/s^2 with 6 decimals; {Num.G(cursor.Acceleration)} mm/s^2 would be 0 and was raised to {FixedPoint.Format(UrScriptText.MinRate, 6)} m/s^2.");
+                NoCode(action);
+                break;
             case ActionMessage m:
                 string literal = UrScriptText.StringLiteral(m.Message, out bool changed);
                 if (changed)
@@ -102,7 +110,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 Code(action, Indent + "popup(" + literal + ", title=\"Machina Message\", warning=False, error=False)");
                 break;
             case ActionWait w:
-                Code(action, Indent + "sleep(" + Num.G(w.Millis / 1000.0) + ")");
+                Code(action, Indent + "sleep(" + ProgramText.Seconds(w.Millis) + ")");
                 break;
             case ActionComment c:
                 sink.Add(Indent + "# " + UrScriptText.CommentText(c.Comment));
