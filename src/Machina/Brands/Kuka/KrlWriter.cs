@@ -40,7 +40,7 @@ internal sealed class KrlWriter
     {
         string module = KrlText.ModuleName(_job.ProgramName);
         RobotCursor start = _job.NewCursor();
-        _usesAccDefault = start.Acceleration == 0 || ContainsAcceleration(_job.Actions);
+        _usesAccDefault = ContainsAcceleration(_job.Actions);
         _src = _output.OpenFile(module, "src", RobotProgram.Ascii, _compiler.CommentPrefix);
         if (!_inline)
         {
@@ -141,7 +141,10 @@ internal sealed class KrlWriter
         src.Add(Indent + "$TOOL = " + (start.Tool is Tool tool ? KrlFormat.ToolFrame(tool) : "$NULLFRAME"));
         src.Add(Indent + "$ADVANCE = 3");
         src.Add(Indent + VelocityLine(start.Speed));
-        src.Add(Indent + AccelerationLine(start.Acceleration));
+        if (!IsControllerAcceleration(start.Acceleration))
+        {
+            src.Add(Indent + AccelerationLine(start.Acceleration));
+        }
         src.Add(Indent + PrecisionLine(start.Precision));
         src.Add("");
     }
@@ -149,7 +152,13 @@ internal sealed class KrlWriter
     private static string VelocityLine(double speed) => "$VEL.CP = " + KrlFormat.SpeedMetresPerSecond(speed);
 
     private static string AccelerationLine(double acceleration) =>
-        "$ACC.CP = " + (acceleration == 0 ? AccDefaultVariable : KrlFormat.AccelerationMetresPerSecond2(acceleration));
+        "$ACC.CP = " + (IsControllerAcceleration(acceleration) ? AccDefaultVariable : KrlFormat.AccelerationMetresPerSecond2(acceleration));
+
+    /// <summary>
+    /// 0 and Machina's built-in default (30 mm/s², which the original wrote as a crawling 0.03 m/s², spec bug 34) mean the
+    /// controller's own acceleration, the value BAS (#INITMOV) sets, as on ABB (WorldAccLim \Off) and UR (no a=).
+    /// </summary>
+    private static bool IsControllerAcceleration(double acceleration) => acceleration == 0 || acceleration == Settings.Default.Acceleration;
 
     private static string PrecisionLine(double precision) => "$APO.CDIS = " + KrlFormat.Mm(precision);
 

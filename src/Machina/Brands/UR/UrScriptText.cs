@@ -44,13 +44,14 @@ internal static class UrScriptText
 
     /// <summary>
     /// Appends <c>, a=…, v=…, r=…</c>: linear motions in m/s² and m/s, joint motions in rad/s² and rad/s; blend radius in m.
-    /// An acceleration of 0 leaves <c>a</c> out so that the controller uses its default (never <c>a=0</c>); a speed or
-    /// acceleration above 0 is written as at least <see cref="MinRate"/>, never as 0.
+    /// An acceleration of 0 or Machina's built-in default (30 mm/s², which the original wrote as a crawling 0.03 m/s², spec
+    /// bug 34) leaves <c>a</c> out, so the controller uses its own (never <c>a=0</c>); a speed or acceleration above 0 is
+    /// written as at least <see cref="MinRate"/>, never as 0.
     /// </summary>
     internal static StringBuilder MotionParameters(this StringBuilder sb, double acceleration, double speed, double precision, bool joint)
     {
         double factor = joint ? Rad : Mm;
-        if (acceleration > 0)
+        if (acceleration > 0 && acceleration != Settings.Default.Acceleration)
         {
             sb.Append(", a=").Num6(Math.Max(Math.Round(acceleration * factor, 6), MinRate));
         }

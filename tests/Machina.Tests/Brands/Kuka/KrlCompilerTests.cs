@@ -38,7 +38,8 @@ public class KrlCompilerTests
         Assert.Equal("DEF Test( )", lines[4]);
         int bco = lines.ToList().IndexOf("  PTP $AXIS_ACT");
         Assert.True(bco > 0);
-        Assert.Equal(["  $BASE = $NULLFRAME", "  $TOOL = $NULLFRAME", "  $ADVANCE = 3", "  $VEL.CP = 0.02", "  $ACC.CP = 0.03", "  $APO.CDIS = 5"],
+        // The built-in acceleration (30 mm/s²) is left to the controller (BAS sets it), not written as a crawling 0.03 m/s².
+        Assert.Equal(["  $BASE = $NULLFRAME", "  $TOOL = $NULLFRAME", "  $ADVANCE = 3", "  $VEL.CP = 0.02", "  $APO.CDIS = 5", ""],
             lines.Skip(bco + 1).Take(6));
         Assert.Equal("END", lines[^1]);
     }
@@ -211,7 +212,7 @@ public class KrlCompilerTests
         bot.PopSettings();
 
         Assert.Equal(
-            ["  $VEL.CP = 0.3", "  $ACC.CP = 0.8", "  $APO.CDIS = 0", "  $VEL.CP = 0.02", "  $ACC.CP = 0.03", "  $APO.CDIS = 5"],
+            ["  $VEL.CP = 0.3", "  $ACC.CP = 0.8", "  $APO.CDIS = 0", "  $VEL.CP = 0.02", "  $ACC.CP = machina_acc_cp", "  $APO.CDIS = 5"],
             Body(bot));
     }
 

@@ -39,7 +39,7 @@ public class UrScriptCompilerTests
     [Fact]
     public void Emit_LinearMove_WritesMovepInMetresAndRadians()
     {
-        Assert.Equal(["  movep(p[0.4,0.3,0.5,0,3.141593,0], a=0.03, v=0.02, r=0.005)"], Body(Compile(Start)));
+        Assert.Equal(["  movep(p[0.4,0.3,0.5,0,3.141593,0], v=0.02, r=0.005)"], Body(Compile(Start)));
     }
 
     [Fact]
@@ -57,10 +57,18 @@ public class UrScriptCompilerTests
     }
 
     [Fact]
+    public void Emit_BuiltInAcceleration_LeftToTheControllerOtherValuesWritten()
+    {
+        // 30 mm/s² is Machina's default; written as a=0.03 it made the original's programs crawl (spec bug 34).
+        var body = Body(Compile(bot => { bot.AccelerationTo(500); Start(bot); bot.AccelerationTo(30); bot.Move(0, 0, 10); }));
+        Assert.Equal(["  movep(p[0.4,0.3,0.5,0,3.141593,0], a=0.5, v=0.02, r=0.005)", "  movep(p[0.4,0.3,0.51,0,3.141593,0], v=0.02, r=0.005)"], body);
+    }
+
+    [Fact]
     public void Emit_ArcMotion_WritesMovecThroughAndEnd()
     {
         var body = Body(Compile(bot => { Start(bot); bot.ArcMotion(50, 50, 0, 100, 0, 0); }));
-        Assert.Equal("  movec(p[0.45,0.35,0.5,0,3.141593,0], p[0.5,0.3,0.5,0,3.141593,0], a=0.03, v=0.02, r=0.005)", body[1]);
+        Assert.Equal("  movec(p[0.45,0.35,0.5,0,3.141593,0], p[0.5,0.3,0.5,0,3.141593,0], v=0.02, r=0.005)", body[1]);
     }
 
     [Fact]
@@ -95,10 +103,10 @@ public class UrScriptCompilerTests
              "  target3=[0,0,0,0,1.570796,0]",
              "",
              "  popup(\"go\", title=\"Machina Message\", warning=False, error=False)",
-             "  movep(target0, a=0.03, v=0.02, r=0.005)",
+             "  movep(target0, v=0.02, r=0.005)",
              "  sleep(0.01)",
-             "  movec(target1, target2, a=0.03, v=0.02, r=0.005)",
-             "  movej(target3, a=0.523599, v=0.349066, r=0.005)"],
+             "  movec(target1, target2, v=0.02, r=0.005)",
+             "  movej(target3, v=0.349066, r=0.005)"],
             Body(p));
     }
 
@@ -226,7 +234,7 @@ public class UrScriptCompilerTests
         bot.ClearProgram();
         bot.MoveTo(100, 100, 100);
         Assert.Equal(
-            ["  set_tcp(p[0,0,0.1,0,0,0])", "  set_payload(1, [0,0,0.05])", "  movep(p[0.1,0.1,0.1,0,3.141593,0], a=0.03, v=0.02, r=0.005)"],
+            ["  set_tcp(p[0,0,0.1,0,0,0])", "  set_payload(1, [0,0,0.05])", "  movep(p[0.1,0.1,0.1,0,3.141593,0], v=0.02, r=0.005)"],
             Body(bot.Compile(RobotType.UR, Plain)));
     }
 
@@ -254,7 +262,7 @@ public class UrScriptCompilerTests
         {
             CultureInfo.CurrentCulture = new CultureInfo("de-DE");
             var body = Body(Compile(bot => { bot.SpeedTo(12.5); bot.MoveTo(0.5, 1.25, 2); bot.WriteAnalog(0, 0.75); bot.Wait(250); }));
-            Assert.Equal(["  movep(p[0.0005,0.00125,0.002,0,3.141593,0], a=0.03, v=0.0125, r=0.005)", "  set_standard_analog_out(0, 0.75)", "  sleep(0.25)"], body);
+            Assert.Equal(["  movep(p[0.0005,0.00125,0.002,0,3.141593,0], v=0.0125, r=0.005)", "  set_standard_analog_out(0, 0.75)", "  sleep(0.25)"], body);
         }
         finally
         {
