@@ -116,6 +116,42 @@ public class InverseKinematicsTests
         Assert.Contains(all, j => Math.Abs(j.J5) < 1e-6 && Math.Abs(j.J4 + j.J6 - 30) < 1e-6);
     }
 
+    [Theory]
+    [MemberData(nameof(ModelNames))]
+    public void Inverse_AtAndNearTheWristSingularity_EverySolutionRoundTrips(string name)
+    {
+        // Axis 5 exactly straight, or a hair away from it: axes 4 and 6 must still be solved consistently with each other.
+        RobotModel model = RobotModels.Get(name);
+        IKinematics kin = model.Kinematics;
+        var random = new Random(99);
+        double[] wrist = [0, 1e-12, -3e-10, 1e-8, 2e-6, -1e-4, 180];
+        int solutions = 0;
+        for (int trial = 0; trial < 60; trial++)
+        {
+            Joints r = RandomJoints(model, random);
+            double j5 = wrist[trial % wrist.Length];
+            if (j5 > model.MaxJoints.J5)
+            {
+                continue;
+            }
+            var source = new Joints(r.J1, r.J2, r.J3, r.J4, j5, r.J6);
+            Pose pose = kin.Forward(source);
+            IReadOnlyList<Joints> all = kin.Inverse(pose);
+            Assert.NotEmpty(all);
+            foreach (Joints j in all)
+            {
+                Pose back = kin.Forward(j);
+                double mm = Vector.Distance(back.Position, pose.Position), deg = back.Rotation.AngleTo(pose.Rotation);
+                Assert.True(mm < 1e-6 && deg < 1e-6, $"{name}: FK({source}) = {pose}; solution {j} is off by {mm:E2} mm and {deg:E2}°");
+                solutions++;
+            }
+            Joints? closest = kin.Closest(pose, source);
+            Assert.NotNull(closest);
+            Assert.True(kin.Forward(closest.Value).IsSimilar(pose, 1e-6, 1e-6), $"{name}: closest {closest} to {source}");
+        }
+        Assert.True(solutions >= 50, $"{solutions} solutions checked");
+    }
+
     [Fact]
     public void Inverse_ShoulderSingularPose_ReturnsSolutionsThatRoundTrip()
     {
