@@ -44,7 +44,7 @@ public static class KinematicChecks
         var solver = (ISolver)kin;
         Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(target), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(target), previous ?? default, raw, configs);
         if (n == 0)
         {
             issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {target.Position} is out of reach of the {model}."));
@@ -117,7 +117,7 @@ public static class KinematicChecks
             {
                 Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
                 Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-                bool reachable = solver.SolveRaw(Affine.FromPose(pose), raw, cfg) > 0;
+                bool reachable = solver.SolveRaw(Affine.FromPose(pose), last, raw, cfg) > 0;
                 Add(issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
                     reachable ? $"the line needs a joint beyond its limits {Where(t, pose)}." : $"the line leaves the reach of the {model} {Where(t, pose)}.");
                 return;

@@ -56,7 +56,7 @@ internal static class KinematicsCore
     {
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(flange), default, raw, configs);
         int count = 0;
         for (int i = 0; i < n && count < solutions.Length; i++)
         {
@@ -80,7 +80,7 @@ internal static class KinematicsCore
         current.RequireFinite(nameof(current));
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(flange), current, raw, configs);
         Joints? best = null;
         double bestCost = double.PositiveInfinity;
         for (int i = 0; i < n; i++)
@@ -109,7 +109,7 @@ internal static class KinematicsCore
     {
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(flange), default, raw, configs);
         for (int i = 0; i < n; i++)
         {
             if (configs[i] == configuration && FitLimits(model, raw[i], default, out Joints fitted))

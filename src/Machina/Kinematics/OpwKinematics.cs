@@ -128,8 +128,11 @@ public sealed class OpwKinematics : IKinematics, ISolver
         return new SingularityMeasure(wrist, elbow, Math.Abs(s));
     }
 
-    int ISolver.SolveRaw(in Affine flange, Span<Joints> joints, Span<ArmConfiguration> configurations)
+    int ISolver.SolveRaw(in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
+        Span<double> r = stackalloc double[6];
+        ToCanonical(reference, r);
+        double r4 = r[3], r6 = r[5];
         Affine w = WristFromFlange(flange);
         double cx = w.Px - _p.C4 * w.R00, cy = w.Py - _p.C4 * w.R10, cz = w.Pz - _p.C4 * w.R20;
         double rho2 = cx * cx + cy * cy - _p.B * _p.B;
@@ -172,9 +175,17 @@ public sealed class OpwKinematics : IKinematics, ISolver
                 double t5 = Math.Atan2(s5, n00);
                 // Near a straight wrist θ4 alone is ill-conditioned; θ6 is then taken from what θ4 and θ5 leave,
                 // Rx(θ6) = Ry(−θ5)·Rx(−θ4)·M, so the pair always reproduces the rotation (row 1 does not depend on θ5).
-                double t4 = s5 > 1e-12 ? Math.Atan2(n10, -n20) : 0;
+                bool straight = s5 <= 1e-12;
+                double t4 = straight ? r4 : Math.Atan2(n10, -n20);
                 double c4 = Math.Cos(t4), s4 = Math.Sin(t4);
                 double t6 = Math.Atan2(-(c4 * n12 + s4 * n22), c4 * n11 + s4 * n21);
+                if (straight)
+                {
+                    // Only θ4 + θ6 (θ5 = 0) or θ6 − θ4 (θ5 = 180°) is fixed: share the change from the reference equally between the two axes.
+                    double half = Math.IEEERemainder(t6 - r6, 2 * Math.PI) / 2;
+                    t4 += n00 > 0 ? half : -half;
+                    t6 -= half;
+                }
                 bool back = shoulder == 1, down = elbow == 1;
                 joints[count] = FromCanonical(t1, t2, t3, t4, t5, t6);
                 configurations[count++] = new ArmConfiguration(back, down, false);

@@ -73,7 +73,7 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         return new SingularityMeasure(wrist, elbow, shoulder);
     }
 
-    int ISolver.SolveRaw(in Affine t, Span<Joints> joints, Span<ArmConfiguration> configurations)
+    int ISolver.SolveRaw(in Affine t, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
         double d1 = _dh.D1, a2 = _dh.A2, a3 = _dh.A3, d4 = _dh.D4, d5 = _dh.D5, d6 = _dh.D6;
         double px = t.Px - d6 * t.R02, py = t.Py - d6 * t.R12;
@@ -97,7 +97,8 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
             {
                 double t5 = wrist == 0 ? t5Abs : -t5Abs;
                 double sign = wrist == 0 ? 1 : -1;
-                double t6 = s5Abs < 1e-12 ? 0 : Math.Atan2(-uy * sign, ux * sign);
+                // Straight wrist: θ6 is free (axes 2, 3 and 4 make up for it); keep the reference's.
+                double t6 = s5Abs < 1e-12 ? reference.J6 * Angles.ToRadians : Math.Atan2(-uy * sign, ux * sign);
                 // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
                 Affine t14 = Affine.Dh(t1, d1, 0, 0, 1).InverseRigid() * t
                     * Affine.Dh(t6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(t5, d5, 0, 0, -1).InverseRigid();

@@ -152,6 +152,23 @@ public class InverseKinematicsTests
         Assert.True(solutions >= 50, $"{solutions} solutions checked");
     }
 
+    [Theory]
+    [InlineData("IRB 120", 0, 0, 0, 60, 0, -60)]
+    [InlineData("IRB 2600-20/1.65", 30, 10, -20, -150, 0, 100)]
+    [InlineData("KR 6 R700 sixx", 0, -90, 90, 60, 0, -60)]
+    [InlineData("KR 16", 20, -80, 100, -120, 0, 30)]
+    [InlineData("UR5", 0, -90, 90, 60, 0, -60)]
+    [InlineData("UR10e", 30, -120, 100, -200, 180, 250)]
+    public void Closest_AtAStraightWrist_KeepsTheCurrentJoints(string name, double j1, double j2, double j3, double j4, double j5, double j6)
+    {
+        // With axis 5 straight, axes 4 and 6 can share the turn in infinitely many ways; the current joints are one of them and the nearest.
+        IKinematics kin = RobotModels.Get(name).Kinematics;
+        var current = new Joints(j1, j2, j3, j4, j5, j6);
+        Joints? closest = kin.Closest(kin.Forward(current), current);
+        Assert.NotNull(closest);
+        Assert.True(closest.Value.IsSimilar(current, 1e-6), $"{name}: closest to {current} is {closest}");
+    }
+
     [Fact]
     public void Inverse_ShoulderSingularPose_ReturnsSolutionsThatRoundTrip()
     {

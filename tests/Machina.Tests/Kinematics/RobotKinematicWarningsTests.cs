@@ -41,6 +41,22 @@ public class RobotKinematicWarningsTests
         Assert.All(bot.GetWarnings(), w => Assert.Equal(2, w.ActionId));
     }
 
+    [Theory]
+    [InlineData("ABB", "IRB 120", 0, 0, 0)]
+    [InlineData("KUKA", "KR 6 R700 sixx", 0, -90, 90)]
+    public void TurnAboutTheToolAxisWithAStraightWrist_SharedByAxes4And6WithoutFlip(string brand, string model, double j1, double j2, double j3)
+    {
+        // Axis 5 straight, axis 4 at 60°: turning the flange 10° about its own axis is a 10° change of A4 + A6. The nearest joints share
+        // it (65°, −55°); axis 4 must not snap to 0° (a 60° jump reported as a configuration flip).
+        Robot bot = Robot.Create("Bot", brand, model);
+        bot.AxesTo(j1, j2, j3, 60, 0, -60);
+        Pose target = bot.Model!.Kinematics.Forward(new Joints(j1, j2, j3, 60, 0, -50));
+        bot.TransformTo(target.Position, target.Rotation);
+        Assert.Equal([KinematicIssueKind.WristSingularity], Kinds(bot.GetWarnings().Where(w => w.ActionId == 2)));
+        Joints after = bot.GetCurrentAxes()!.Value;
+        Assert.True(after.IsSimilar(new Joints(j1, j2, j3, 65, 0, -55), 1e-6), $"joints after the turn: {after}");
+    }
+
     [Fact]
     public void JointMotionToSameTarget_NoFlipWarning()
     {
