@@ -58,6 +58,37 @@ public class RobotKinematicWarningsTests
     }
 
     [Fact]
+    public void WarningsWithATool_NameTheToolTipPositionTheUserGave()
+    {
+        // The checks work on the flange, but the sentence must quote the TCP positions of the program, not flange coordinates.
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.DefineTool("pen", new Vector(0, 50, 100), Rotation.FromAxisAngle(new Vector(1, 0, 0), 30));
+        bot.AxesTo(0, 0, 0, 0, 90, 0);
+        bot.AttachTool("pen");
+        bot.MoveTo(2000, 0, 300);
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal("#4 MoveTo(2000,0,300); Unreachable: the target [2000, 0, 300] is out of reach of the ABB IRB 120.", w.ToString());
+    }
+
+    [Fact]
+    public void TurnAboutTheToolTip_LineChecksFollowTheTipNotTheFlangeChord()
+    {
+        // The controller keeps the tool tip still while turning; the flange swings on an arc. The sampled path is the tip's, so every
+        // place quoted is the tip's fixed position, and a pure turn has no length (no joint-speed estimate from the flange's chord).
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.DefineTool("pen", new Vector(0, 0, 150), Rotation.Identity);
+        bot.AxesTo(0, 10, 10, 0, 20, 0);
+        bot.AttachTool("pen");
+        Vector tip = bot.GetCurrentPosition()!.Value;
+        bot.SpeedTo(1000);
+        bot.Rotate(new Vector(0, 1, 0), -40);
+        ProgramWarning w = Assert.Single(bot.GetWarnings(), x => x.ActionId == 5 && x.Kind == KinematicIssueKind.WristSingularity);
+        Assert.EndsWith($"along the line, at {tip}; axes 4 and 6 may spin fast.", w.Message, StringComparison.Ordinal);
+        Assert.DoesNotContain(bot.GetWarnings(), x => x.Kind == KinematicIssueKind.JointSpeed);
+        Assert.True(Vector.Distance(tip, bot.GetCurrentPosition()!.Value) < 1e-9);
+    }
+
+    [Fact]
     public void JointMotionToSameTarget_NoFlipWarning()
     {
         Robot bot = Robot.Create("Bot", "ABB", "IRB 1200-5/0.9");
