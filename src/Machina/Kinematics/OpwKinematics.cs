@@ -141,7 +141,8 @@ public sealed class OpwKinematics : IKinematics, ISolver
             return 0;
         }
         double sFront = Math.Sqrt(rho2);
-        double baseAngle = Math.Atan2(cy, cx);
+        // Wrist centre on axis 1 (shoulder singularity, b = 0): axis 1 is free and atan2 would only see rounding noise; keep the reference's.
+        double baseAngle = cx * cx + cy * cy < 1e-18 ? r[0] : Math.Atan2(cy, cx);
         double c2 = _p.C2, k = _k;
         int count = 0;
         for (int shoulder = 0; shoulder < 2; shoulder++)

@@ -185,6 +185,25 @@ public class InverseKinematicsTests
         }
     }
 
+    [Theory]
+    [InlineData("ABB", 30, 10, 30, 20)]
+    [InlineData("ABB", -60, 0, 45, 0)]
+    [InlineData("KUKA", -30, -10, 30, -20)]
+    public void Closest_WristCentreOnAxis1_KeepsTheCurrentAxis1(string brand, double j1, double j4, double j5, double j6)
+    {
+        // IRB 1200-7/0.7 geometry (a1 = 0, c2 = 350, c3 = 351, a2 = −42): lower arm 20° forward, elbow bent so that the wrist centre is
+        // on axis 1. Axis 1 is then free; the nearest solution keeps the current value instead of one picked by rounding noise.
+        RobotModel model = RobotModel.FromOpw("on axis 1", brand, RobotModels.Get("IRB 1200-7/0.7").Opw!.Value, Wide(-1), Wide(1));
+        double psi = Math.Atan2(42, 351), k = Math.Sqrt(351.0 * 351 + 42 * 42), t2 = 20 * Angles.ToRadians;
+        double t3 = (psi - Math.Acos(-350 * Math.Sin(t2) / k) - t2) * Angles.ToDegrees; // ABB axis 3
+        var current = brand == "KUKA" ? new Joints(j1, 20 - 90, t3 + 90, j4, j5, j6) : new Joints(j1, 20, t3, j4, j5, j6);
+        Pose pose = model.Kinematics.Forward(current);
+        Joints? closest = model.Kinematics.Closest(pose, current);
+        Assert.NotNull(closest);
+        Assert.True(closest.Value.IsSimilar(current, 1e-6), $"closest to {current} is {closest}");
+        Assert.All(model.Kinematics.Inverse(pose), j => Assert.True(model.Kinematics.Forward(j).IsSimilar(pose, 1e-6, 1e-6), $"{j}"));
+    }
+
     [Fact]
     public void Inverse_SolutionsBeyond180_UseTheTurnWithinLimits()
     {
