@@ -60,12 +60,25 @@ internal static class KinematicsCore
         int count = 0;
         for (int i = 0; i < n && count < solutions.Length; i++)
         {
-            if (FitLimits(model, raw[i], default, out Joints fitted))
+            // Where two branches meet (straight wrist, stretched elbow, wrist centre on axis 1) they give the same joints: list them once.
+            if (FitLimits(model, raw[i], default, out Joints fitted) && !Contains(solutions[..count], fitted))
             {
                 solutions[count++] = fitted;
             }
         }
         return count;
+    }
+
+    private static bool Contains(ReadOnlySpan<Joints> list, Joints joints)
+    {
+        foreach (Joints j in list)
+        {
+            if (j.IsSimilar(joints, 1e-4))
+            {
+                return true;
+            }
+        }
+        return false;
     }
 
     internal static IReadOnlyList<Joints> InverseList(ISolver solver, RobotModel model, Pose flange)

@@ -204,6 +204,27 @@ public class InverseKinematicsTests
         Assert.All(model.Kinematics.Inverse(pose), j => Assert.True(model.Kinematics.Forward(j).IsSimilar(pose, 1e-6, 1e-6), $"{j}"));
     }
 
+    [Theory]
+    [InlineData("UR5", 0, -90, 90, 60, 0, -60, 6)] // straight wrist: its two wrist branches coincide (the other shoulder has 4)
+    [InlineData("UR10e", 30, -100, 0, -80, 40, 10, 2)] // stretched elbow: elbow branches coincide; with the other wrist the arm is too short
+    [InlineData("IRB 120", 0, 0, -76.95, 0, 30, 0, 1)] // stretched elbow (J3 = −90° + atan(70/302)); only one shoulder/wrist within limits
+    public void Inverse_WhereBranchesCoincide_ReturnsEachSolutionOnce(string name, double j1, double j2, double j3, double j4, double j5, double j6, int expected)
+    {
+        RobotModel model = RobotModels.Get(name);
+        double stretched = name == "IRB 120" ? -90 + Math.Atan2(70, 302) * Angles.ToDegrees : j3;
+        Pose pose = model.Kinematics.Forward(new Joints(j1, j2, stretched, j4, j5, j6));
+        IReadOnlyList<Joints> all = model.Kinematics.Inverse(pose);
+        Assert.True(all.Count == expected, $"{all.Count} solutions: {string.Join(" ", all)}");
+        for (int a = 0; a < all.Count; a++)
+        {
+            Assert.True(model.Kinematics.Forward(all[a]).IsSimilar(pose, 1e-6, 1e-6), $"{all[a]}");
+            for (int b = a + 1; b < all.Count; b++)
+            {
+                Assert.False(all[a].IsSimilar(all[b], 1e-4), $"solution {all[a]} listed twice");
+            }
+        }
+    }
+
     [Fact]
     public void Inverse_SolutionsBeyond180_UseTheTurnWithinLimits()
     {
