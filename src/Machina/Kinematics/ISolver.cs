@@ -9,8 +9,11 @@ internal readonly record struct SingularityMeasure(double WristDegrees, double E
 /// <summary>The raw analytical solver of one family: every solution, ignoring joint limits.</summary>
 internal interface ISolver
 {
-    /// <summary>All geometric solutions (at most 8), brand joints in degrees wrapped to (−180°, 180°], with their configuration.</summary>
-    int SolveRaw(in Affine flange, Span<Joints> joints, Span<ArmConfiguration> configurations);
+    /// <summary>
+    /// All geometric solutions (at most 8), brand joints in degrees wrapped to (−180°, 180°], with their configuration. At an exactly
+    /// straight wrist, where axes 4 and 6 (UR: 6) are not determined by the pose, the free value is taken nearest to <paramref name="reference"/>.
+    /// </summary>
+    int SolveRaw(in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations);
 
     /// <summary>Closeness to singularities of a joint set.</summary>
     SingularityMeasure Measure(Joints joints);

@@ -28,13 +28,14 @@ public static class KinematicChecks
 
     /// <summary>Checks a motion to a flange pose. <paramref name="previous"/> is the joint state before the motion (null when unknown).</summary>
     public static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond) =>
-        Check(model, previous, target, motion, speedMmPerSecond, out _);
+        Check(model, previous, target, motion, speedMmPerSecond, Pose.Identity, out _);
 
     /// <summary>
     /// As the public overload, and also gives the joint solution it checked: closest to <paramref name="previous"/>, or the first one within
-    /// the limits when previous is null (null when the target cannot be reached within the limits).
+    /// the limits when previous is null (null when the target cannot be reached within the limits). Positions in the sentences are those of
+    /// <paramref name="tool"/> on the flange (the TCP the program speaks of; identity for the flange itself).
     /// </summary>
-    internal static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond, out Joints? solution)
+    internal static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond, Pose tool, out Joints? solution)
     {
         solution = null;
         ArgumentNullException.ThrowIfNull(model);
@@ -44,22 +45,22 @@ public static class KinematicChecks
         var solver = (ISolver)kin;
         Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(target), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(target), previous ?? default, raw, configs);
         if (n == 0)
         {
-            issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {target.Position} is out of reach of the {model}."));
+            issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {Shown(target, tool)} is out of reach of the {model}."));
             return issues;
         }
         Joints? chosen = previous is Joints p ? kin.Closest(target, p) : FirstWithinLimits(kin, target);
         solution = chosen;
         if (chosen is null)
         {
-            issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"every way to reach {target.Position} needs a joint beyond its limits ({Violation(model, raw[0])})."));
+            issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"every way to reach {Shown(target, tool)} needs a joint beyond its limits ({Violation(model, raw[0])})."));
             return issues;
         }
         if (motion == KinematicMotion.Linear && previous is Joints start)
         {
-            CheckLine(model, start, target, chosen.Value, speedMmPerSecond, issues);
+            CheckLine(model, start, target, chosen.Value, speedMmPerSecond, tool, issues);
         }
         CheckSingularities(solver.Measure(chosen.Value), "at the target", issues);
         return issues;
@@ -78,7 +79,7 @@ public static class KinematicChecks
         }
         if (motion == KinematicMotion.Linear && previous is Joints start)
         {
-            CheckLine(model, start, model.Kinematics.Forward(target), target, speedMmPerSecond, issues);
+            CheckLine(model, start, model.Kinematics.Forward(target), target, speedMmPerSecond, Pose.Identity, issues);
         }
         CheckSingularities(((ISolver)model.Kinematics).Measure(target), "at the target", issues);
         return issues;
@@ -90,13 +91,15 @@ public static class KinematicChecks
         return kin.Inverse(target, s) > 0 ? s[0] : null;
     }
 
-    private static void CheckLine(RobotModel model, Joints start, Pose target, Joints end, double speed, List<KinematicIssue> issues)
+    private static void CheckLine(RobotModel model, Joints start, Pose target, Joints end, double speed, Pose tool, List<KinematicIssue> issues)
     {
         IKinematics kin = model.Kinematics;
         var solver = (ISolver)kin;
-        Pose from = kin.Forward(start);
-        double length = Vector.Distance(from.Position, target.Position);
-        double turn = from.Rotation.AngleTo(target.Rotation);
+        // The controller moves the tool tip on the straight line (the flange swings around it when the tool turns): sample the tip's
+        // line and solve for the flange of each sample; the speed is the tip's.
+        Pose from = kin.Forward(start) * tool, to = target * tool, toTool = tool.Inverse();
+        double length = Vector.Distance(from.Position, to.Position);
+        double turn = from.Rotation.AngleTo(to.Rotation);
         int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(length / LinearStepMm, turn / LinearStepDegrees)), 1, MaxSamples);
         ArmConfiguration startConfig = kin.ConfigurationOf(start);
         if (kin.ConfigurationOf(end) != startConfig)
@@ -111,15 +114,15 @@ public static class KinematicChecks
         for (int i = 1; i <= steps; i++)
         {
             double t = (double)i / steps;
-            var pose = new Pose(from.Position + (target.Position - from.Position) * t, Slerp(from.Rotation, target.Rotation, t));
+            Pose pose = new Pose(from.Position + (to.Position - from.Position) * t, Slerp(from.Rotation, to.Rotation, t)) * toTool;
             Joints? next = kin.Closest(pose, last);
             if (next is null)
             {
                 Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
                 Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-                bool reachable = solver.SolveRaw(Affine.FromPose(pose), raw, cfg) > 0;
+                bool reachable = solver.SolveRaw(Affine.FromPose(pose), last, raw, cfg) > 0;
                 Add(issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
-                    reachable ? $"the line needs a joint beyond its limits {Where(t, pose)}." : $"the line leaves the reach of the {model} {Where(t, pose)}.");
+                    reachable ? $"the line needs a joint beyond its limits {Where(t, pose, tool)}." : $"the line leaves the reach of the {model} {Where(t, pose, tool)}.");
                 return;
             }
             Joints j = next.Value;
@@ -136,12 +139,12 @@ public static class KinematicChecks
             }
             if (jump > FlipJumpDegrees || kin.ConfigurationOf(j) != startConfig)
             {
-                Add(issues, KinematicIssueKind.ConfigurationFlip, $"the arm would have to change configuration {Where(t, pose)} (a joint jumps {Num.F(jump, 1)}°).");
+                Add(issues, KinematicIssueKind.ConfigurationFlip, $"the arm would have to change configuration {Where(t, pose, tool)} (a joint jumps {Num.F(jump, 1)}°).");
             }
             SingularityMeasure measure = solver.Measure(j);
             if (IsNearSingularity(measure))
             {
-                CheckSingularities(measure, Where(t, pose), issues);
+                CheckSingularities(measure, Where(t, pose, tool), issues);
             }
             last = j;
         }
@@ -153,7 +156,10 @@ public static class KinematicChecks
     }
 
     /// <summary>Where a sample of a line is, for messages (built only when there is something to report).</summary>
-    private static string Where(double t, Pose pose) => $"{Num.F(t * 100, 0)}% along the line, at {pose.Position}";
+    private static string Where(double t, Pose pose, Pose tool) => $"{Num.F(t * 100, 0)}% along the line, at {Shown(pose, tool)}";
+
+    /// <summary>The position quoted in messages: the tool tip for a flange pose.</summary>
+    private static Vector Shown(Pose flange, Pose tool) => (flange * tool).Position;
 
     private static bool IsNearSingularity(SingularityMeasure m) =>
         m.WristDegrees < WristSingularityDegrees || m.ElbowDegrees < ElbowSingularityDegrees || m.ShoulderMm < ShoulderSingularityMm;

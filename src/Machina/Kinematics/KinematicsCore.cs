@@ -56,16 +56,29 @@ internal static class KinematicsCore
     {
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(flange), default, raw, configs);
         int count = 0;
         for (int i = 0; i < n && count < solutions.Length; i++)
         {
-            if (FitLimits(model, raw[i], default, out Joints fitted))
+            // Where two branches meet (straight wrist, stretched elbow, wrist centre on axis 1) they give the same joints: list them once.
+            if (FitLimits(model, raw[i], default, out Joints fitted) && !Contains(solutions[..count], fitted))
             {
                 solutions[count++] = fitted;
             }
         }
         return count;
+    }
+
+    private static bool Contains(ReadOnlySpan<Joints> list, Joints joints)
+    {
+        foreach (Joints j in list)
+        {
+            if (j.IsSimilar(joints, 1e-4))
+            {
+                return true;
+            }
+        }
+        return false;
     }
 
     internal static IReadOnlyList<Joints> InverseList(ISolver solver, RobotModel model, Pose flange)
@@ -80,7 +93,7 @@ internal static class KinematicsCore
         current.RequireFinite(nameof(current));
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(flange), current, raw, configs);
         Joints? best = null;
         double bestCost = double.PositiveInfinity;
         for (int i = 0; i < n; i++)
@@ -109,7 +122,7 @@ internal static class KinematicsCore
     {
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), raw, configs);
+        int n = solver.SolveRaw(Affine.FromPose(flange), default, raw, configs);
         for (int i = 0; i < n; i++)
         {
             if (configs[i] == configuration && FitLimits(model, raw[i], default, out Joints fitted))

@@ -128,8 +128,11 @@ public sealed class OpwKinematics : IKinematics, ISolver
         return new SingularityMeasure(wrist, elbow, Math.Abs(s));
     }
 
-    int ISolver.SolveRaw(in Affine flange, Span<Joints> joints, Span<ArmConfiguration> configurations)
+    int ISolver.SolveRaw(in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
+        Span<double> r = stackalloc double[6];
+        ToCanonical(reference, r);
+        double r4 = r[3], r6 = r[5];
         Affine w = WristFromFlange(flange);
         double cx = w.Px - _p.C4 * w.R00, cy = w.Py - _p.C4 * w.R10, cz = w.Pz - _p.C4 * w.R20;
         double rho2 = cx * cx + cy * cy - _p.B * _p.B;
@@ -138,7 +141,8 @@ public sealed class OpwKinematics : IKinematics, ISolver
             return 0;
         }
         double sFront = Math.Sqrt(rho2);
-        double baseAngle = Math.Atan2(cy, cx);
+        // Wrist centre on axis 1 (shoulder singularity, b = 0): axis 1 is free and atan2 would only see rounding noise; keep the reference's.
+        double baseAngle = cx * cx + cy * cy < 1e-18 ? r[0] : Math.Atan2(cy, cx);
         double c2 = _p.C2, k = _k;
         int count = 0;
         for (int shoulder = 0; shoulder < 2; shoulder++)
@@ -165,23 +169,23 @@ public sealed class OpwKinematics : IKinematics, ISolver
                 double t2 = Math.Atan2(a * u - b * v, a * v + b * u);
                 double phi = t2 + t3, cp = Math.Cos(phi), sp = Math.Sin(phi);
                 // M = Ry(−φ)·Rz(−θ1)·W = Rx(θ4)·Ry(θ5)·Rx(θ6)
-                double n00 = cp * m00 - sp * m20, n01 = cp * m01 - sp * m21, n02 = cp * m02 - sp * m22;
-                double n10 = m10, n11 = m11, n20 = sp * m00 + cp * m20, n21 = sp * m01 + cp * m21;
+                double n00 = cp * m00 - sp * m20;
+                double n10 = m10, n11 = m11, n12 = m12;
+                double n20 = sp * m00 + cp * m20, n21 = sp * m01 + cp * m21, n22 = sp * m02 + cp * m22;
                 double s5 = Math.Sqrt(n10 * n10 + n20 * n20);
-                double t4, t5, t6;
-                if (s5 > 1e-12)
+                double t5 = Math.Atan2(s5, n00);
+                // Near a straight wrist θ4 alone is ill-conditioned; θ6 is then taken from what θ4 and θ5 leave,
+                // Rx(θ6) = Ry(−θ5)·Rx(−θ4)·M, so the pair always reproduces the rotation (row 1 does not depend on θ5).
+                bool straight = s5 <= 1e-12;
+                double t4 = straight ? r4 : Math.Atan2(n10, -n20);
+                double c4 = Math.Cos(t4), s4 = Math.Sin(t4);
+                double t6 = Math.Atan2(-(c4 * n12 + s4 * n22), c4 * n11 + s4 * n21);
+                if (straight)
                 {
-                    t5 = Math.Atan2(s5, n00);
-                    t4 = Math.Atan2(n10, -n20);
-                    t6 = Math.Atan2(n01, n02);
-                }
-                else if (n00 > 0)
-                {
-                    t4 = 0; t5 = 0; t6 = Math.Atan2(n21, n11);
-                }
-                else
-                {
-                    t4 = 0; t5 = Math.PI; t6 = Math.Atan2(-n21, n11);
+                    // Only θ4 + θ6 (θ5 = 0) or θ6 − θ4 (θ5 = 180°) is fixed: share the change from the reference equally between the two axes.
+                    double half = Math.IEEERemainder(t6 - r6, 2 * Math.PI) / 2;
+                    t4 += n00 > 0 ? half : -half;
+                    t6 -= half;
                 }
                 bool back = shoulder == 1, down = elbow == 1;
                 joints[count] = FromCanonical(t1, t2, t3, t4, t5, t6);

@@ -73,7 +73,7 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         return new SingularityMeasure(wrist, elbow, shoulder);
     }
 
-    int ISolver.SolveRaw(in Affine t, Span<Joints> joints, Span<ArmConfiguration> configurations)
+    int ISolver.SolveRaw(in Affine t, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
         double d1 = _dh.D1, a2 = _dh.A2, a3 = _dh.A3, d4 = _dh.D4, d5 = _dh.D5, d6 = _dh.D6;
         double px = t.Px - d6 * t.R02, py = t.Py - d6 * t.R12;
@@ -88,19 +88,17 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         {
             double t1 = phi1 + (shoulder == 0 ? phi2 : -phi2) + HalfPi;
             double c1 = Math.Cos(t1), s1 = Math.Sin(t1);
-            double c5 = (t.Px * s1 - t.Py * c1 - d4) / d6;
-            if (c5 > 1 + 1e-12 || c5 < -1 - 1e-12)
-            {
-                continue;
-            }
-            double t5Abs = Math.Acos(Math.Clamp(c5, -1, 1));
+            // The unit vector (s1, −c1, 0) seen from the flange is (s5·cos θ6, −s5·sin θ6, cos θ5). Taking θ5 with atan2 from it (rather
+            // than acos of the flange position, which equals cos θ5 exactly) keeps full precision near the straight wrist θ5 = 0.
+            double ux = t.R00 * s1 - t.R10 * c1, uy = t.R01 * s1 - t.R11 * c1, c5 = t.R02 * s1 - t.R12 * c1;
+            double s5Abs = Math.Sqrt(ux * ux + uy * uy);
+            double t5Abs = Math.Atan2(s5Abs, c5);
             for (int wrist = 0; wrist < 2; wrist++)
             {
                 double t5 = wrist == 0 ? t5Abs : -t5Abs;
-                double s5 = Math.Sin(t5);
-                double t6 = Math.Abs(s5) < 1e-12
-                    ? 0
-                    : Math.Atan2((-t.R01 * s1 + t.R11 * c1) / s5, (t.R00 * s1 - t.R10 * c1) / s5);
+                double sign = wrist == 0 ? 1 : -1;
+                // Straight wrist: θ6 is free (axes 2, 3 and 4 make up for it); keep the reference's.
+                double t6 = s5Abs < 1e-12 ? reference.J6 * Angles.ToRadians : Math.Atan2(-uy * sign, ux * sign);
                 // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
                 Affine t14 = Affine.Dh(t1, d1, 0, 0, 1).InverseRigid() * t
                     * Affine.Dh(t6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(t5, d5, 0, 0, -1).InverseRigid();

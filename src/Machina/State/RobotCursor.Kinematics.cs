@@ -88,10 +88,11 @@ internal sealed partial class RobotCursor
     {
         Pose flange = FlangePose(Position!.Value, Rotation!.Value);
         bool linear = action is not ActionArcMotion && MotionType == MotionType.Linear;
-        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed, out Joints? solution);
+        Pose tool = Tool is null ? Pose.Identity : new Pose(Tool.TcpPosition, Tool.TcpOrientation);
+        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed, tool, out Joints? solution);
         if (action is ActionArcMotion && ArcThrough is Vector through)
         {
-            IReadOnlyList<KinematicIssue> viaIssues = KinematicChecks.Check(model, null, FlangePose(through, ArcThroughRotation ?? Rotation!.Value), KinematicMotion.Joint, Speed);
+            IReadOnlyList<KinematicIssue> viaIssues = KinematicChecks.Check(model, null, FlangePose(through, ArcThroughRotation ?? Rotation!.Value), KinematicMotion.Joint, Speed, tool, out _);
             if (viaIssues.Count > 0)
             {
                 issues = [.. issues, .. viaIssues.Select(i => i with { Reason = "through point: " + i.Reason })];

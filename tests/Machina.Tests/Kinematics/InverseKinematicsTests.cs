@@ -116,6 +116,59 @@ public class InverseKinematicsTests
         Assert.Contains(all, j => Math.Abs(j.J5) < 1e-6 && Math.Abs(j.J4 + j.J6 - 30) < 1e-6);
     }
 
+    [Theory]
+    [MemberData(nameof(ModelNames))]
+    public void Inverse_AtAndNearTheWristSingularity_EverySolutionRoundTrips(string name)
+    {
+        // Axis 5 exactly straight, or a hair away from it: axes 4 and 6 must still be solved consistently with each other.
+        RobotModel model = RobotModels.Get(name);
+        IKinematics kin = model.Kinematics;
+        var random = new Random(99);
+        double[] wrist = [0, 1e-12, -3e-10, 1e-8, 2e-6, -1e-4, 180];
+        int solutions = 0;
+        for (int trial = 0; trial < 60; trial++)
+        {
+            Joints r = RandomJoints(model, random);
+            double j5 = wrist[trial % wrist.Length];
+            if (j5 > model.MaxJoints.J5)
+            {
+                continue;
+            }
+            var source = new Joints(r.J1, r.J2, r.J3, r.J4, j5, r.J6);
+            Pose pose = kin.Forward(source);
+            IReadOnlyList<Joints> all = kin.Inverse(pose);
+            Assert.NotEmpty(all);
+            foreach (Joints j in all)
+            {
+                Pose back = kin.Forward(j);
+                double mm = Vector.Distance(back.Position, pose.Position), deg = back.Rotation.AngleTo(pose.Rotation);
+                Assert.True(mm < 1e-6 && deg < 1e-6, $"{name}: FK({source}) = {pose}; solution {j} is off by {mm:E2} mm and {deg:E2}°");
+                solutions++;
+            }
+            Joints? closest = kin.Closest(pose, source);
+            Assert.NotNull(closest);
+            Assert.True(kin.Forward(closest.Value).IsSimilar(pose, 1e-6, 1e-6), $"{name}: closest {closest} to {source}");
+        }
+        Assert.True(solutions >= 50, $"{solutions} solutions checked");
+    }
+
+    [Theory]
+    [InlineData("IRB 120", 0, 0, 0, 60, 0, -60)]
+    [InlineData("IRB 2600-20/1.65", 30, 10, -20, -150, 0, 100)]
+    [InlineData("KR 6 R700 sixx", 0, -90, 90, 60, 0, -60)]
+    [InlineData("KR 16", 20, -80, 100, -120, 0, 30)]
+    [InlineData("UR5", 0, -90, 90, 60, 0, -60)]
+    [InlineData("UR10e", 30, -120, 100, -200, 180, 250)]
+    public void Closest_AtAStraightWrist_KeepsTheCurrentJoints(string name, double j1, double j2, double j3, double j4, double j5, double j6)
+    {
+        // With axis 5 straight, axes 4 and 6 can share the turn in infinitely many ways; the current joints are one of them and the nearest.
+        IKinematics kin = RobotModels.Get(name).Kinematics;
+        var current = new Joints(j1, j2, j3, j4, j5, j6);
+        Joints? closest = kin.Closest(kin.Forward(current), current);
+        Assert.NotNull(closest);
+        Assert.True(closest.Value.IsSimilar(current, 1e-6), $"{name}: closest to {current} is {closest}");
+    }
+
     [Fact]
     public void Inverse_ShoulderSingularPose_ReturnsSolutionsThatRoundTrip()
     {
@@ -129,6 +182,46 @@ public class InverseKinematicsTests
         foreach (Joints j in all)
         {
             Assert.True(kin.Forward(j).IsSimilar(pose, 1e-6, 1e-6), $"{j}");
+        }
+    }
+
+    [Theory]
+    [InlineData("ABB", 30, 10, 30, 20)]
+    [InlineData("ABB", -60, 0, 45, 0)]
+    [InlineData("KUKA", -30, -10, 30, -20)]
+    public void Closest_WristCentreOnAxis1_KeepsTheCurrentAxis1(string brand, double j1, double j4, double j5, double j6)
+    {
+        // IRB 1200-7/0.7 geometry (a1 = 0, c2 = 350, c3 = 351, a2 = −42): lower arm 20° forward, elbow bent so that the wrist centre is
+        // on axis 1. Axis 1 is then free; the nearest solution keeps the current value instead of one picked by rounding noise.
+        RobotModel model = RobotModel.FromOpw("on axis 1", brand, RobotModels.Get("IRB 1200-7/0.7").Opw!.Value, Wide(-1), Wide(1));
+        double psi = Math.Atan2(42, 351), k = Math.Sqrt(351.0 * 351 + 42 * 42), t2 = 20 * Angles.ToRadians;
+        double t3 = (psi - Math.Acos(-350 * Math.Sin(t2) / k) - t2) * Angles.ToDegrees; // ABB axis 3
+        var current = brand == "KUKA" ? new Joints(j1, 20 - 90, t3 + 90, j4, j5, j6) : new Joints(j1, 20, t3, j4, j5, j6);
+        Pose pose = model.Kinematics.Forward(current);
+        Joints? closest = model.Kinematics.Closest(pose, current);
+        Assert.NotNull(closest);
+        Assert.True(closest.Value.IsSimilar(current, 1e-6), $"closest to {current} is {closest}");
+        Assert.All(model.Kinematics.Inverse(pose), j => Assert.True(model.Kinematics.Forward(j).IsSimilar(pose, 1e-6, 1e-6), $"{j}"));
+    }
+
+    [Theory]
+    [InlineData("UR5", 0, -90, 90, 60, 0, -60, 6)] // straight wrist: its two wrist branches coincide (the other shoulder has 4)
+    [InlineData("UR10e", 30, -100, 0, -80, 40, 10, 2)] // stretched elbow: elbow branches coincide; with the other wrist the arm is too short
+    [InlineData("IRB 120", 0, 0, -76.95, 0, 30, 0, 1)] // stretched elbow (J3 = −90° + atan(70/302)); only one shoulder/wrist within limits
+    public void Inverse_WhereBranchesCoincide_ReturnsEachSolutionOnce(string name, double j1, double j2, double j3, double j4, double j5, double j6, int expected)
+    {
+        RobotModel model = RobotModels.Get(name);
+        double stretched = name == "IRB 120" ? -90 + Math.Atan2(70, 302) * Angles.ToDegrees : j3;
+        Pose pose = model.Kinematics.Forward(new Joints(j1, j2, stretched, j4, j5, j6));
+        IReadOnlyList<Joints> all = model.Kinematics.Inverse(pose);
+        Assert.True(all.Count == expected, $"{all.Count} solutions: {string.Join(" ", all)}");
+        for (int a = 0; a < all.Count; a++)
+        {
+            Assert.True(model.Kinematics.Forward(all[a]).IsSimilar(pose, 1e-6, 1e-6), $"{all[a]}");
+            for (int b = a + 1; b < all.Count; b++)
+            {
+                Assert.False(all[a].IsSimilar(all[b], 1e-4), $"solution {all[a]} listed twice");
+            }
         }
     }
 

@@ -41,6 +41,53 @@ public class RobotKinematicWarningsTests
         Assert.All(bot.GetWarnings(), w => Assert.Equal(2, w.ActionId));
     }
 
+    [Theory]
+    [InlineData("ABB", "IRB 120", 0, 0, 0)]
+    [InlineData("KUKA", "KR 6 R700 sixx", 0, -90, 90)]
+    public void TurnAboutTheToolAxisWithAStraightWrist_SharedByAxes4And6WithoutFlip(string brand, string model, double j1, double j2, double j3)
+    {
+        // Axis 5 straight, axis 4 at 60°: turning the flange 10° about its own axis is a 10° change of A4 + A6. The nearest joints share
+        // it (65°, −55°); axis 4 must not snap to 0° (a 60° jump reported as a configuration flip).
+        Robot bot = Robot.Create("Bot", brand, model);
+        bot.AxesTo(j1, j2, j3, 60, 0, -60);
+        Pose target = bot.Model!.Kinematics.Forward(new Joints(j1, j2, j3, 60, 0, -50));
+        bot.TransformTo(target.Position, target.Rotation);
+        Assert.Equal([KinematicIssueKind.WristSingularity], Kinds(bot.GetWarnings().Where(w => w.ActionId == 2)));
+        Joints after = bot.GetCurrentAxes()!.Value;
+        Assert.True(after.IsSimilar(new Joints(j1, j2, j3, 65, 0, -55), 1e-6), $"joints after the turn: {after}");
+    }
+
+    [Fact]
+    public void WarningsWithATool_NameTheToolTipPositionTheUserGave()
+    {
+        // The checks work on the flange, but the sentence must quote the TCP positions of the program, not flange coordinates.
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.DefineTool("pen", new Vector(0, 50, 100), Rotation.FromAxisAngle(new Vector(1, 0, 0), 30));
+        bot.AxesTo(0, 0, 0, 0, 90, 0);
+        bot.AttachTool("pen");
+        bot.MoveTo(2000, 0, 300);
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal("#4 MoveTo(2000,0,300); Unreachable: the target [2000, 0, 300] is out of reach of the ABB IRB 120.", w.ToString());
+    }
+
+    [Fact]
+    public void TurnAboutTheToolTip_LineChecksFollowTheTipNotTheFlangeChord()
+    {
+        // The controller keeps the tool tip still while turning; the flange swings on an arc. The sampled path is the tip's, so every
+        // place quoted is the tip's fixed position, and a pure turn has no length (no joint-speed estimate from the flange's chord).
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.DefineTool("pen", new Vector(0, 0, 150), Rotation.Identity);
+        bot.AxesTo(0, 10, 10, 0, 20, 0);
+        bot.AttachTool("pen");
+        Vector tip = bot.GetCurrentPosition()!.Value;
+        bot.SpeedTo(1000);
+        bot.Rotate(new Vector(0, 1, 0), -40);
+        ProgramWarning w = Assert.Single(bot.GetWarnings(), x => x.ActionId == 5 && x.Kind == KinematicIssueKind.WristSingularity);
+        Assert.EndsWith($"along the line, at {tip}; axes 4 and 6 may spin fast.", w.Message, StringComparison.Ordinal);
+        Assert.DoesNotContain(bot.GetWarnings(), x => x.Kind == KinematicIssueKind.JointSpeed);
+        Assert.True(Vector.Distance(tip, bot.GetCurrentPosition()!.Value) < 1e-9);
+    }
+
     [Fact]
     public void JointMotionToSameTarget_NoFlipWarning()
     {
