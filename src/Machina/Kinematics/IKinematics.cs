@@ -22,6 +22,12 @@ public interface IKinematics
     IReadOnlyList<Joints> Inverse(Pose flange);
 
     /// <summary>
+    /// Like <see cref="Inverse(Pose)"/>, plus the other turns: every ±360° variant of each joint that stays within the limits
+    /// (axes with a range over 360°, such as ABB axis 6 at ±400° or every UR axis at ±360°, reach one pose several ways).
+    /// </summary>
+    IReadOnlyList<Joints> InverseAllTurns(Pose flange) => KinematicsCore.WithEveryTurn(Model, Inverse(flange));
+
+    /// <summary>
     /// The solution nearest to <paramref name="current"/> joints (largest single-joint change is minimised; each joint takes the ±360°
     /// turn that is closest), or null when the pose cannot be reached within the limits.
     /// </summary>

@@ -133,6 +133,34 @@ internal static class KinematicsCore
         return null;
     }
 
+    /// <summary>Each solution with every combination of ±360° turns of its joints that stays within the model's limits.</summary>
+    internal static IReadOnlyList<Joints> WithEveryTurn(RobotModel model, IReadOnlyList<Joints> solutions)
+    {
+        var all = new List<Joints>();
+        var values = new double[6];
+        foreach (Joints solution in solutions)
+        {
+            AddTurns(model, solution, 0, values, all);
+        }
+        return all;
+    }
+
+    private static void AddTurns(RobotModel model, Joints solution, int axis, double[] values, List<Joints> all)
+    {
+        if (axis == 6)
+        {
+            all.Add(Joints.FromArray(values));
+            return;
+        }
+        double value = solution[axis];
+        double lowest = Math.Ceiling((model.MinJoints[axis] - value) / 360), highest = Math.Floor((model.MaxJoints[axis] - value) / 360);
+        for (double k = lowest; k <= highest; k++)
+        {
+            values[axis] = k == 0 ? value : value + 360 * k;
+            AddTurns(model, solution, axis + 1, values, all);
+        }
+    }
+
     internal static bool IsWithinLimits(RobotModel model, Joints joints)
     {
         for (int i = 0; i < Joints.Count; i++)

@@ -12,6 +12,40 @@ public class InverseKinematicsTests
         return data;
     }
 
+    [Fact]
+    public void InverseAllTurns_Irb120_AddsTheOtherTurnsOfAxisSix()
+    {
+        RobotModel model = RobotModels.Get("IRB 120");
+        Pose pose = model.Kinematics.Forward(new Joints(10, 20, -30, 40, 50, 30));
+        var plain = model.Kinematics.Inverse(pose);
+        var all = model.Kinematics.InverseAllTurns(pose);
+
+        // Only axis 6 (±400°) has room for another turn: 30° is also -330° and 390°.
+        Assert.Contains(new Joints(10, 20, -30, 40, 50, 30), all.Select(j => Round(j)));
+        Assert.Contains(new Joints(10, 20, -30, 40, 50, -330), all.Select(j => Round(j)));
+        Assert.Contains(new Joints(10, 20, -30, 40, 50, 390), all.Select(j => Round(j)));
+        Assert.Equal(plain.Sum(j => j.J6 is >= -40 and <= 40 ? 3 : 2), all.Count);
+        Assert.All(all, j => Assert.True(model.IsWithinLimits(j) && model.Kinematics.Forward(j).IsSimilar(pose, 1e-6, 1e-6)));
+        Assert.Equal(all.Count, all.Distinct().Count());
+    }
+
+    [Fact]
+    public void InverseAllTurns_Ur5_EveryAxisHasTwoTurns()
+    {
+        RobotModel model = RobotModels.Get("UR5");
+        Pose pose = model.Kinematics.Forward(new Joints(10, -80, 70, -60, -90, 30));
+        var plain = model.Kinematics.Inverse(pose);
+        var all = model.Kinematics.InverseAllTurns(pose);
+
+        Assert.Equal(8, plain.Count);
+        Assert.Equal(8 * 64, all.Count); // ±360° on each of the six axes: two values per joint
+        Assert.Contains(new Joints(10 - 360, -80, 70 - 360, -60, -90, 30 - 360), all.Select(j => Round(j)));
+        Assert.All(all, j => Assert.True(model.IsWithinLimits(j) && model.Kinematics.Forward(j).IsSimilar(pose, 1e-6, 1e-6)));
+    }
+
+    private static Joints Round(Joints j) =>
+        new(Math.Round(j.J1, 6), Math.Round(j.J2, 6), Math.Round(j.J3, 6), Math.Round(j.J4, 6), Math.Round(j.J5, 6), Math.Round(j.J6, 6));
+
     [Theory]
     [MemberData(nameof(ModelNames))]
     public void Inverse_RandomReachablePoses_RoundTripWithinLimits(string name)
