@@ -1,0 +1,38 @@
+namespace Machina.Tests.Geometry;
+
+/// <summary>Non-normalised input with finite but huge components must not overflow into a wrong rotation.</summary>
+public class HugeInputTests
+{
+    [Fact]
+    public void FromAxisAngle_HugeAxis_GivesTheSameRotationAsTheUnitAxis()
+    {
+        Rotation r = Rotation.FromAxisAngle(new Vector(1e200, 0, 0), 90);
+
+        Oracle.SameRotation(Rotation.FromAxisAngle(Vector.XAxis, 90), r, 1e-12);
+        Assert.Equal(Math.Sqrt(0.5), r.W, 15);
+        Assert.Equal(Math.Sqrt(0.5), r.X, 15);
+    }
+
+    [Fact]
+    public void FromQuaternion_HugeComponents_IsScaledToUnitLength()
+    {
+        Rotation r = Rotation.FromQuaternion(1e200, 1e200, 0, 0);
+
+        Assert.Equal(Math.Sqrt(0.5), r.W, 15);
+        Assert.Equal(Math.Sqrt(0.5), r.X, 15);
+        Assert.Equal(0, r.Y);
+        Assert.Equal(0, r.Z);
+        Assert.Equal(1, Rotation.FromQuaternion(double.MaxValue, 0, 0, 0).W);
+    }
+
+    [Fact]
+    public void Robot_RotateAboutHugeAxis_TurnsTheTool()
+    {
+        var bot = Robot.Create("Bot", RobotType.ABB);
+        bot.MoveTo(0, 0, 0);
+
+        bot.Rotate(0, 0, 1e300, 90);
+
+        Oracle.SameRotation(Rotation.FromAxisAngle(Vector.ZAxis, 90) * Rotation.FlippedAroundY, bot.GetCurrentRotation()!.Value, 1e-12);
+    }
+}
