@@ -8,7 +8,7 @@ public sealed record ActionRotation : RobotAction
     {
         Rotation = rotation;
         Relative = relative;
-        Request = rotation.ToAxisAngle();
+        Request = rotation.ToAxisAngle().WithUnitAxis();
     }
 
     /// <summary>Creates a relative or absolute rotation of <paramref name="angleDegrees"/> around <paramref name="axis"/> (right-hand rule).</summary>
