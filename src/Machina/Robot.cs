@@ -82,17 +82,29 @@ public sealed partial class Robot
         ActionIssuedArgs? issued = null;
         lock (_issueCursor)
         {
-            if (action.Id != -1)
+            // The id is claimed atomically before applying, so that an object issued by two robots at once is never shared.
+            if (!action.TryClaimId(_nextId))
             {
                 action = action.CloneUnissued();
+                action.Id = _nextId;
             }
-            string? refusal = _issueCursor.TryApply(action);
+            string? refusal;
+            try
+            {
+                refusal = _issueCursor.TryApply(action);
+            }
+            catch
+            {
+                action.Id = -1;
+                throw;
+            }
             if (refusal is not null)
             {
+                action.Id = -1;
                 Logger.Warning($"Refused {action.ToInstruction()} {refusal}");
                 throw new ActionRefusedException(action, refusal);
             }
-            action.Id = _nextId++;
+            _nextId++;
             if (_issueCursor.LastIssues.Count > 0)
             {
                 RecordIssues(action, _issueCursor.LastIssues);
