@@ -51,3 +51,75 @@ public class SharedActionTests
         Assert.Same(move, bot.GetProgramActions()[1]);
     }
 }
+
+/// <summary>A multi-statement Do is one unit even when other threads issue at the same time.</summary>
+public class DoConcurrencyTests
+{
+    [Fact]
+    public void DoFromTwoThreads_KeepsEachTextsStatementsTogether()
+    {
+        const int rounds = 3000;
+        var bot = Robot.Create("Bot", RobotType.ABB);
+        using var start = new Barrier(2);
+        Thread[] threads = [.. new[] { "Wait(1); Wait(2); Wait(3);", "Wait(7); Wait(8); Wait(9);" }.Select(text => new Thread(() =>
+        {
+            start.SignalAndWait();
+            for (int i = 0; i < rounds; i++)
+            {
+                bot.Do(text);
+            }
+        }))];
+        foreach (Thread t in threads)
+        {
+            t.Start();
+        }
+        foreach (Thread t in threads)
+        {
+            t.Join();
+        }
+
+        long[] waits = [.. bot.GetProgramActions().Cast<ActionWait>().Select(w => w.Millis)];
+        Assert.Equal(6 * rounds, waits.Length);
+        int broken = Enumerable.Range(0, 2 * rounds).Count(k => waits[3 * k + 1] != waits[3 * k] + 1 || waits[3 * k + 2] != waits[3 * k] + 2);
+        Assert.Equal(0, broken);
+    }
+
+    [Fact]
+    public void DoWhoseLaterStatementBecomesImpossible_IsRefusedWholeEvenUnderContention()
+    {
+        // Two threads each pop twice from a stack that only holds enough for some of them: every Do is all or nothing.
+        var bot = Robot.Create("Bot", RobotType.ABB);
+        for (int i = 0; i < 1000; i++)
+        {
+            bot.PushSettings();
+        }
+        int issued = 0;
+        using var start = new Barrier(2);
+        Thread[] threads = [.. Enumerable.Range(0, 2).Select(_ => new Thread(() =>
+        {
+            start.SignalAndWait();
+            for (int i = 0; i < 400; i++)
+            {
+                try
+                {
+                    bot.Do("PopSettings(); PopSettings();");
+                    Interlocked.Increment(ref issued);
+                }
+                catch (ActionRefusedException)
+                {
+                }
+            }
+        }))];
+        foreach (Thread t in threads)
+        {
+            t.Start();
+        }
+        foreach (Thread t in threads)
+        {
+            t.Join();
+        }
+
+        Assert.Equal(1000 + 2 * issued, bot.GetProgramActions().Count);
+        Assert.Equal(1000 - 2 * issued, bot.GetCurrentState().SettingsDepth);
+    }
+}
