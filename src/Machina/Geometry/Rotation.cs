@@ -127,7 +127,7 @@ public readonly struct Rotation : IEquatable<Rotation>
     {
         rotationVectorDegrees.RequireFinite(nameof(rotationVectorDegrees));
         double angle = rotationVectorDegrees.Length;
-        return angle < 1e-12 ? Identity : FromAxisAngle(rotationVectorDegrees / angle, angle);
+        return angle == 0 ? Identity : FromAxisAngle(rotationVectorDegrees / angle, angle);
     }
 
     /// <summary>A rotation from intrinsic Z-Y′-X″ Euler angles in degrees: first yaw about Z, then pitch about the new Y, then roll about the new X.</summary>
@@ -202,7 +202,7 @@ public readonly struct Rotation : IEquatable<Rotation>
             w = -w; x = -x; y = -y; z = -z;
         }
         double s = Math.Sqrt(x * x + y * y + z * z);
-        if (s < 1e-15)
+        if (s == 0)
         {
             return new AxisAngle(Vector.Zero, 0);
         }
