@@ -35,4 +35,20 @@ public class HugeInputTests
 
         Oracle.SameRotation(Rotation.FromAxisAngle(Vector.ZAxis, 90) * Rotation.FlippedAroundY, bot.GetCurrentRotation()!.Value, 1e-12);
     }
+
+    [Fact]
+    public void AngleBetween_HugeVectors_IsTheAngleNotNaN()
+    {
+        Assert.Equal(90, Vector.AngleBetween(new Vector(1e200, 0, 0), new Vector(0, 1e300, 0)), 12);
+        Assert.Equal(45, Vector.AngleBetween(new Vector(double.MaxValue, 0, 0), new Vector(double.MaxValue, double.MaxValue, 0)), 12);
+    }
+
+    [Fact]
+    public void AngleBetween_TinyAngle_IsNotRoundedToZero()
+    {
+        double expected = Math.Atan(1e-10) * 180 / Math.PI;
+
+        Assert.Equal(expected, Vector.AngleBetween(Vector.XAxis, new Vector(1, 1e-10, 0)), expected * 1e-9);
+        Assert.Equal(180 - expected, Vector.AngleBetween(Vector.XAxis, new Vector(-1, 1e-10, 0)), 1e-12);
+    }
 }
