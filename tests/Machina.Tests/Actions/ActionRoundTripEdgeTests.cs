@@ -1,3 +1,5 @@
+using Machina.Tests.Geometry;
+
 namespace Machina.Tests.Actions;
 
 /// <summary>Round trip ToInstruction → Instructions.Parse for the edge cases the general round-trip tests do not reach.</summary>
@@ -48,5 +50,30 @@ public class ActionRoundTripEdgeTests
         Assert.Equal(action.GetHashCode(), parsed.GetHashCode());
         Assert.NotEqual<RobotAction>(new ActionTransformation(new Vector(1, 2, 3), Rotation.Identity, true, false),
             new ActionTransformation(new Vector(1, 2, 3), Rotation.Identity, true, true));
+    }
+}
+
+/// <summary>Short but non-zero rotation axes are directions, as in Rotation.FromAxisAngle.</summary>
+public class ShortAxisTests
+{
+    [Fact]
+    public void Rotate_AboutAShortAxis_TurnsLikeTheUnitAxis()
+    {
+        var bot = Robot.Create("Bot", RobotType.ABB);
+        bot.MoveTo(0, 0, 0);
+
+        bot.Rotate(1e-7, 0, 0, 90);
+
+        Oracle.SameRotation(Rotation.FromAxisAngle(Vector.XAxis, 90) * Rotation.FlippedAroundY, bot.GetCurrentRotation()!.Value, 1e-12);
+        Assert.Equal("Rotate(1,0,0,90);", bot.GetProgramActions()[^1].ToInstruction());
+    }
+
+    [Fact]
+    public void Rotate_AboutAZeroAxis_IsRefusedNamingTheAxis()
+    {
+        var ex = Assert.Throws<ArgumentException>(() => new ActionRotation(new Vector(0, 1e-10, 0), 90, true));
+
+        Assert.Equal("axis", ex.ParamName);
+        Assert.StartsWith("The rotation axis (0, 1E-10, 0) has no direction; give one such as (0, 0, 1).", ex.Message, StringComparison.Ordinal);
     }
 }
