@@ -100,10 +100,13 @@ public sealed partial class Robot
     }
 
     /// <summary>Saves a compiled program's files into a folder named after the program inside <paramref name="folderPath"/> (e.g. <c>HelloRobot_Program</c>).</summary>
-    /// <returns>True when every file was written.</returns>
+    /// <returns>True when every file was written; false (with a logged error) when the disk refused.</returns>
+    /// <exception cref="ArgumentException"><paramref name="folderPath"/> is null, empty or blank.</exception>
     public bool SaveProgram(RobotProgram program, string folderPath)
     {
         ArgumentNullException.ThrowIfNull(program);
+        // An empty path would silently write into the process's current directory.
+        ArgumentException.ThrowIfNullOrWhiteSpace(folderPath);
         string folder = Path.Combine(folderPath, CompileJob.SafeProgramName(program.Name + "_Program"));
         try
         {
