@@ -23,9 +23,11 @@ public static class Instructions
     public static IReadOnlyList<RobotAction> ParseFile(string path) => Parse(File.ReadAllText(path));
 
     /// <summary>Reads actions one by one, for very long programs; parsing stops at the first problem.</summary>
-    public static IEnumerable<RobotAction> Enumerate(string text)
+    /// <exception cref="ArgumentNullException"><paramref name="text"/> is null (thrown at once, not when enumerating).</exception>
+    public static IEnumerable<RobotAction> Enumerate(string text) => Read(new InstructionParser(text));
+
+    private static IEnumerable<RobotAction> Read(InstructionParser parser)
     {
-        var parser = new InstructionParser(text);
         while (parser.Next() is RobotAction action)
         {
             yield return action;

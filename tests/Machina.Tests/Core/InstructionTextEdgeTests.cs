@@ -38,3 +38,16 @@ public class InstructionTextEdgeTests
         Assert.Equal("A", ((ActionMessage)Instructions.Parse("Message(\"\\u0041\")")[0]).Message);
     }
 }
+
+/// <summary>Argument checks of the Instructions entry points happen at the call.</summary>
+public class InstructionsArgumentTests
+{
+    [Fact]
+    public void Enumerate_NullText_ThrowsAtTheCall()
+    {
+        var ex = Assert.Throws<ArgumentNullException>(() => Instructions.Enumerate(null!));
+
+        Assert.Equal("text", ex.ParamName);
+        Assert.Throws<ArgumentNullException>(() => Instructions.Parse(null!));
+    }
+}
