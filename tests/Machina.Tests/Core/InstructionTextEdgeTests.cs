@@ -50,4 +50,13 @@ public class InstructionsArgumentTests
         Assert.Equal("text", ex.ParamName);
         Assert.Throws<ArgumentNullException>(() => Instructions.Parse(null!));
     }
+
+    [Fact]
+    public void Enumerate_Twice_ReadsTheWholeTextEachTime()
+    {
+        IEnumerable<RobotAction> actions = Instructions.Enumerate("Wait(1); Wait(2);");
+
+        Assert.Equal(2, actions.Count());
+        Assert.Equal(["Wait(1);", "Wait(2);"], actions.Select(a => a.ToInstruction()));
+    }
 }
