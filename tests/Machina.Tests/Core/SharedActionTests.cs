@@ -122,4 +122,19 @@ public class DoConcurrencyTests
         Assert.Equal(1000 + 2 * issued, bot.GetProgramActions().Count);
         Assert.Equal(1000 - 2 * issued, bot.GetCurrentState().SettingsDepth);
     }
+
+    [Fact]
+    public void DoWithSeveralStatements_RaisesOneEventPerStatementWithItsOwnSnapshot()
+    {
+        var bot = Robot.Create("Bot", RobotType.ABB);
+        var events = new List<ActionIssuedArgs>();
+        bot.ActionIssued += (_, e) => events.Add(e);
+
+        bot.Do("MoveTo(1, 2, 3); Move(10, 0, 0); SpeedTo(50);");
+
+        Assert.Equal([1, 2, 3], events.Select(e => e.LastAction.Id));
+        Assert.Equal([new Vector(1, 2, 3), new Vector(11, 2, 3), new Vector(11, 2, 3)], events.Select(e => e.State.Position!.Value));
+        Assert.Equal([20.0, 20.0, 50.0], events.Select(e => e.State.Speed));
+        Assert.Same(bot.GetProgramActions()[1], events[1].LastAction);
+    }
 }
