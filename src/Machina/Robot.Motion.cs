@@ -72,6 +72,19 @@ public sealed partial class Robot
     /// <summary>Moves along a circular arc through one frame to another, turning the tool to each frame's orientation.</summary>
     public bool ArcMotionTo(Plane through, Plane end) => Issue(new ActionArcMotion(through, end, false, false));
 
+    /// <summary>
+    /// Moves along a circular arc through one frame to another, given as 18 numbers: the through frame's origin (mm), X axis and
+    /// Y axis, then the end frame's origin (mm), X axis and Y axis. The tool turns to each frame's orientation.
+    /// </summary>
+    public bool ArcMotionTo(
+        double throughX, double throughY, double throughZ, double throughXAxisX, double throughXAxisY, double throughXAxisZ,
+        double throughYAxisX, double throughYAxisY, double throughYAxisZ,
+        double endX, double endY, double endZ, double endXAxisX, double endXAxisY, double endXAxisZ,
+        double endYAxisX, double endYAxisY, double endYAxisZ) =>
+        ArcMotionTo(
+            new Plane(throughX, throughY, throughZ, throughXAxisX, throughXAxisY, throughXAxisZ, throughYAxisX, throughYAxisY, throughYAxisZ),
+            new Plane(endX, endY, endZ, endXAxisX, endXAxisY, endXAxisZ, endYAxisX, endYAxisY, endYAxisZ));
+
     /// <summary>Turns the joints by the given amounts, degrees.</summary>
     public bool Axes(Joints increments) => Issue(new ActionAxes(increments, true));
 

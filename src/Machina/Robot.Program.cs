@@ -14,26 +14,16 @@ public sealed partial class Robot
     public bool Do(string instructions)
     {
         IReadOnlyList<RobotAction> actions = Instructions.Parse(instructions ?? throw new ArgumentNullException(nameof(instructions)));
-        if (actions.Count > 1)
-        {
-            DryRun(actions);
-        }
-        foreach (RobotAction action in actions)
-        {
-            Issue(action);
-        }
+        IssueAll(actions);
         return true;
     }
 
-    /// <summary>Checks that every action would apply in sequence, on a copy of the state, so that a later failure issues nothing.</summary>
+    /// <summary>Checks that every action would apply in sequence, on a copy of the state, so that a later failure issues nothing. The caller holds the lock.</summary>
     private void DryRun(IReadOnlyList<RobotAction> actions)
     {
         var trial = new RobotCursor();
-        lock (_issueCursor)
-        {
-            trial.CopyFrom(_issueCursor);
-            trial.Strict = _issueCursor.Strict;
-        }
+        trial.CopyFrom(_issueCursor);
+        trial.Strict = _issueCursor.Strict;
         foreach (RobotAction action in actions)
         {
             if (trial.TryApply(action) is string refusal)
@@ -110,10 +100,13 @@ public sealed partial class Robot
     }
 
     /// <summary>Saves a compiled program's files into a folder named after the program inside <paramref name="folderPath"/> (e.g. <c>HelloRobot_Program</c>).</summary>
-    /// <returns>True when every file was written.</returns>
+    /// <returns>True when every file was written; false (with a logged error) when the disk refused.</returns>
+    /// <exception cref="ArgumentException"><paramref name="folderPath"/> is null, empty or blank.</exception>
     public bool SaveProgram(RobotProgram program, string folderPath)
     {
         ArgumentNullException.ThrowIfNull(program);
+        // An empty path would silently write into the process's current directory.
+        ArgumentException.ThrowIfNullOrWhiteSpace(folderPath);
         string folder = Path.Combine(folderPath, CompileJob.SafeProgramName(program.Name + "_Program"));
         try
         {

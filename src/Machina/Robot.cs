@@ -78,52 +78,86 @@ public sealed partial class Robot
     public bool Issue(RobotAction action)
     {
         ArgumentNullException.ThrowIfNull(action);
-        string? report;
-        ActionIssuedArgs? issued = null;
+        IssueAll([action]);
+        return true;
+    }
+
+    /// <summary>
+    /// Issues actions in order under one lock, so that no other thread's action comes between them; with more than one, every
+    /// action is first checked on a copy of the state, so that either all are issued or none. Events are raised after the lock.
+    /// </summary>
+    private void IssueAll(IReadOnlyList<RobotAction> actions)
+    {
+        var raised = new List<(string? Report, ActionIssuedArgs? Issued)>(actions.Count);
         lock (_issueCursor)
         {
-            if (action.Id != -1)
+            if (actions.Count > 1)
             {
-                action = action.CloneUnissued();
+                DryRun(actions);
             }
-            string? refusal = _issueCursor.TryApply(action);
-            if (refusal is not null)
+            foreach (RobotAction action in actions)
             {
-                Logger.Warning($"Refused {action.ToInstruction()} {refusal}");
-                throw new ActionRefusedException(action, refusal);
-            }
-            action.Id = _nextId++;
-            if (_issueCursor.LastIssues.Count > 0)
-            {
-                RecordIssues(action, _issueCursor.LastIssues);
-            }
-            // Report and snapshot are taken under the lock so that they describe exactly this action's result,
-            // even when another thread issues the next action before the handlers run.
-            report = Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative ? StateReport() : null;
-            if (ActionIssued is not null)
-            {
-                issued = new ActionIssuedArgs(action, _issueCursor.Snapshot());
-            }
-            if (_online is not null)
-            {
-                // Online, the stream raises ActionIssued on its event loop, before any later event about this action.
-                _online.Enqueue(action, issued);
-                issued = null;
-            }
-            else
-            {
-                _programActions.Add(action);
+                raised.Add(IssueLocked(action));
             }
         }
-        if (report is not null)
+        foreach ((string? report, ActionIssuedArgs? issued) in raised)
         {
-            Logger.Verbose(report);
+            if (report is not null)
+            {
+                Logger.Verbose(report);
+            }
+            if (issued is not null && ActionIssued is { } handler)
+            {
+                RaiseSafely(handler, issued);
+            }
         }
-        if (issued is not null && ActionIssued is { } handler)
+    }
+
+    /// <summary>Applies and records one action; the caller holds the lock. Returns the log report and the event to raise.</summary>
+    private (string? Report, ActionIssuedArgs? Issued) IssueLocked(RobotAction action)
+    {
+        // The id is claimed atomically before applying, so that an object issued by two robots at once is never shared.
+        if (!action.TryClaimId(_nextId))
         {
-            RaiseSafely(handler, issued);
+            action = action.CloneUnissued();
+            action.Id = _nextId;
         }
-        return true;
+        string? refusal;
+        try
+        {
+            refusal = _issueCursor.TryApply(action);
+        }
+        catch
+        {
+            action.Id = -1;
+            throw;
+        }
+        if (refusal is not null)
+        {
+            action.Id = -1;
+            Logger.Warning($"Refused {action.ToInstruction()} {refusal}");
+            throw new ActionRefusedException(action, refusal);
+        }
+        _nextId++;
+        if (_issueCursor.LastIssues.Count > 0)
+        {
+            RecordIssues(action, _issueCursor.LastIssues);
+        }
+        // Report and snapshot are taken under the lock so that they describe exactly this action's result,
+        // even when another thread issues the next action before the handlers run.
+        string? report = Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative ? StateReport() : null;
+        ActionIssuedArgs? issued = ActionIssued is not null ? new ActionIssuedArgs(action, _issueCursor.Snapshot()) : null;
+        if (_online is not null)
+        {
+            // Online, the stream raises ActionIssued on its event loop, before any later event about this action.
+            _online.Enqueue(action, issued);
+            issued = null;
+        }
+        else
+        {
+            _programActions.Add(action);
+        }
+        return (report, issued);
     }
 
     private string StateReport() => _issueCursor.LastAction switch

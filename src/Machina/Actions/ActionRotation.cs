@@ -8,7 +8,7 @@ public sealed record ActionRotation : RobotAction
     {
         Rotation = rotation;
         Relative = relative;
-        Request = rotation.ToAxisAngle();
+        Request = rotation.ToAxisAngle().WithUnitAxis();
     }
 
     /// <summary>Creates a relative or absolute rotation of <paramref name="angleDegrees"/> around <paramref name="axis"/> (right-hand rule).</summary>
@@ -16,9 +16,10 @@ public sealed record ActionRotation : RobotAction
     {
         axis.RequireFinite(nameof(axis));
         Num.Finite(angleDegrees, "angle");
-        if (axis.IsZero)
+        if (axis.Length < 1e-9)
         {
-            throw new ArgumentException("The rotation axis cannot be (0, 0, 0); give a direction such as (0, 0, 1).", nameof(axis));
+            // The same limit as Rotation.FromAxisAngle: any longer axis, however short, gives a direction.
+            throw new ArgumentException($"The rotation axis ({Num.R(axis.X)}, {Num.R(axis.Y)}, {Num.R(axis.Z)}) has no direction; give one such as (0, 0, 1).", nameof(axis));
         }
         Rotation = Rotation.FromAxisAngle(axis, angleDegrees);
         Relative = relative;

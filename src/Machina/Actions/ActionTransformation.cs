@@ -40,7 +40,7 @@ public sealed record ActionTransformation : RobotAction
         Vector t = Translation;
         if (Relative)
         {
-            AxisAngle aa = Rotation.ToAxisAngle();
+            AxisAngle aa = Rotation.ToAxisAngle().WithUnitAxis();
             return InstructionText.Call("Transform", null, [t.X, t.Y, t.Z, aa.Axis.X, aa.Axis.Y, aa.Axis.Z, aa.Angle],
                 TranslationFirst ? null : InstructionText.Bool(false));
         }
@@ -55,15 +55,15 @@ public sealed record ActionTransformation : RobotAction
         {
             return $"Transform: move to {Translation} mm and rotate to {Rotation.ToOrientationString()}";
         }
-        AxisAngle aa = Rotation.ToAxisAngle();
+        AxisAngle aa = Rotation.ToAxisAngle().WithUnitAxis();
         string move = $"move {Translation} mm";
         string rotate = $"rotate {Num.G(aa.Angle)} deg around {aa.Axis}";
         return TranslationFirst ? $"Transform: {move} and {rotate}" : $"Transform: {rotate} and {move}";
     }
 
-    /// <summary>Equal when the flags and translation agree exactly and the rotations within 1e-9 degrees.</summary>
+    /// <summary>Equal when the translation agrees exactly, the rotations within 1e-9 degrees, and the flags (the order only for relative ones).</summary>
     public bool Equals(ActionTransformation? other) =>
-        other is not null && Relative == other.Relative && TranslationFirst == other.TranslationFirst
+        other is not null && Relative == other.Relative && (TranslationFirst == other.TranslationFirst || !Relative)
         && Translation == other.Translation && Rotation.IsSimilar(other.Rotation, 1e-9);
 
     /// <inheritdoc/>

@@ -8,7 +8,9 @@ namespace Machina;
 public abstract record RobotAction
 {
     /// <summary>The id the robot gave this action when it was issued (1, 2, 3, …), or −1 before that.</summary>
-    public int Id { get; internal set; } = -1;
+    public int Id { get => _id; internal set => _id = value; }
+
+    private int _id = -1;
 
     /// <summary>The kind of action.</summary>
     public abstract ActionType Type { get; }
@@ -30,6 +32,12 @@ public abstract record RobotAction
 
     /// <summary>Hash of what the action says, ignoring its id.</summary>
     public override int GetHashCode() => EqualityContract.GetHashCode();
+
+    /// <summary>
+    /// Gives this unissued action <paramref name="id"/>, atomically: false when it already has one (another robot may be issuing
+    /// the same object on another thread at this moment).
+    /// </summary>
+    internal bool TryClaimId(int id) => Interlocked.CompareExchange(ref _id, id, -1) == -1;
 
     /// <summary>A copy of this action that has not been issued yet.</summary>
     internal RobotAction CloneUnissued()

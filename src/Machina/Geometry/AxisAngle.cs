@@ -8,6 +8,9 @@ public readonly record struct AxisAngle(Vector Axis, double Angle)
     /// <summary>The rotation this axis and angle describe.</summary>
     public Rotation ToRotation() => Angle == 0 || Axis == Vector.Zero ? Rotation.Identity : Rotation.FromAxisAngle(Axis, Angle);
 
+    /// <summary>The same rotation with a unit axis: the identity's zero axis becomes Z (an instruction cannot name a zero axis).</summary>
+    internal AxisAngle WithUnitAxis() => Axis == Vector.Zero ? new AxisAngle(Vector.ZAxis, 0) : this;
+
     /// <summary>Text such as <c>AxisAngle[0, 1, 0, 90]</c> (3 decimals).</summary>
     public override string ToString() => $"AxisAngle[{Num.F(Axis.X, 3)}, {Num.F(Axis.Y, 3)}, {Num.F(Axis.Z, 3)}, {Num.F(Angle, 3)}]";
 }

@@ -17,9 +17,12 @@ public readonly struct ExternalAxes : IEquatable<ExternalAxes>
         _a1 = Filter(a1); _a2 = Filter(a2); _a3 = Filter(a3); _a4 = Filter(a4); _a5 = Filter(a5); _a6 = Filter(a6);
     }
 
+    /// <summary>ABB's "no axis" marker: values from 9 000 000 000 up mean that the axis is unset.</summary>
+    internal const double Unset = 9e9;
+
     private static double? Filter(double? v)
     {
-        if (v is null || v.Value >= 9e9)
+        if (v is null || v.Value >= Unset)
         {
             return null;
         }

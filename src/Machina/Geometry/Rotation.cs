@@ -51,6 +51,12 @@ public readonly struct Rotation : IEquatable<Rotation>
             return Identity;
         }
         double length = axis.Length;
+        if (double.IsPositiveInfinity(length))
+        {
+            // Finite but huge components overflow the squared length: only the direction matters.
+            axis = axis.Normalized();
+            length = 1;
+        }
         if (length < 1e-9)
         {
             throw new ArgumentException($"The rotation axis {axis} has no direction; give a non-zero axis.", nameof(axis));
@@ -71,6 +77,13 @@ public readonly struct Rotation : IEquatable<Rotation>
             throw new ArgumentException("Quaternion components must be finite numbers.");
         }
         double n = Math.Sqrt(w * w + x * x + y * y + z * z);
+        if (double.IsPositiveInfinity(n))
+        {
+            // Finite but huge components overflow the squared length: scale them down first.
+            double scale = Math.Max(Math.Max(Math.Abs(w), Math.Abs(x)), Math.Max(Math.Abs(y), Math.Abs(z)));
+            w /= scale; x /= scale; y /= scale; z /= scale;
+            n = Math.Sqrt(w * w + x * x + y * y + z * z);
+        }
         if (n < 1e-9)
         {
             throw new ArgumentException("A zero quaternion does not describe a rotation.");
@@ -114,7 +127,7 @@ public readonly struct Rotation : IEquatable<Rotation>
     {
         rotationVectorDegrees.RequireFinite(nameof(rotationVectorDegrees));
         double angle = rotationVectorDegrees.Length;
-        return angle < 1e-12 ? Identity : FromAxisAngle(rotationVectorDegrees / angle, angle);
+        return angle == 0 ? Identity : FromAxisAngle(rotationVectorDegrees / angle, angle);
     }
 
     /// <summary>A rotation from intrinsic Z-Y′-X″ Euler angles in degrees: first yaw about Z, then pitch about the new Y, then roll about the new X.</summary>
@@ -189,7 +202,7 @@ public readonly struct Rotation : IEquatable<Rotation>
             w = -w; x = -x; y = -y; z = -z;
         }
         double s = Math.Sqrt(x * x + y * y + z * z);
-        if (s < 1e-15)
+        if (s == 0)
         {
             return new AxisAngle(Vector.Zero, 0);
         }

@@ -48,9 +48,36 @@ public readonly record struct RotationMatrix
     /// <summary>Third column: the frame's Z axis.</summary>
     public Vector ZAxis => new(M02, M12, M22);
 
+    /// <summary>
+    /// True when the columns are perpendicular unit vectors forming a right-handed frame (within 1e-6), as in every matrix
+    /// Machina makes. <c>default</c> (all zeros) and matrices filled in by hand may not be.
+    /// </summary>
+    public bool IsRotation
+    {
+        get
+        {
+            const double tol = 1e-6;
+            Vector x = XAxis, y = YAxis, z = ZAxis;
+            return Math.Abs(x.SquaredLength - 1) < tol && Math.Abs(y.SquaredLength - 1) < tol && Math.Abs(z.SquaredLength - 1) < tol
+                && Math.Abs(Vector.Dot(x, y)) < tol && Math.Abs(Vector.Dot(y, z)) < tol && Math.Abs(Vector.Dot(z, x)) < tol
+                && Vector.Dot(Vector.Cross(x, y), z) > 0;
+        }
+    }
+
+    private void RequireRotation()
+    {
+        if (!IsRotation)
+        {
+            throw new InvalidOperationException(
+                $"{this} is not a rotation matrix: its columns must be perpendicular unit vectors of a right-handed frame. Build it with RotationMatrix.FromRows.");
+        }
+    }
+
     /// <summary>The quaternion of this matrix (Shepperd's method: numerically stable for every rotation).</summary>
+    /// <exception cref="InvalidOperationException">The matrix is not a rotation (see <see cref="IsRotation"/>).</exception>
     public Rotation ToRotation()
     {
+        RequireRotation();
         double trace = M00 + M11 + M22;
         double w, x, y, z;
         if (trace > 0)
@@ -77,8 +104,10 @@ public readonly record struct RotationMatrix
     }
 
     /// <summary>Intrinsic Z-Y′-X″ Euler angles in degrees; at pitch ±90° (gimbal lock) roll is set to 0 and yaw carries the whole turn.</summary>
+    /// <exception cref="InvalidOperationException">The matrix is not a rotation (see <see cref="IsRotation"/>).</exception>
     public YawPitchRoll ToYawPitchRoll()
     {
+        RequireRotation();
         // cos(pitch) from the first column; only an exact lock (to ~1e-12 rad) takes the roll = 0 branch.
         double cosPitch = Math.Sqrt(M00 * M00 + M10 * M10);
         if (cosPitch < 1e-12)

@@ -66,9 +66,14 @@ public readonly record struct Vector(double X, double Y, double Z)
         {
             return 0;
         }
-        double c = Math.Clamp(Dot(a, b) / (la * lb), -1, 1);
-        return Math.Acos(c) * Angles.ToDegrees;
+        // atan2 of |a × b| and a · b keeps tiny and near-180° angles exact (acos of the cosine loses them); scaling
+        // each vector by its largest component first keeps huge components from overflowing.
+        a = a.ScaledToUnitMax();
+        b = b.ScaledToUnitMax();
+        return Math.Atan2(Cross(a, b).Length, Dot(a, b)) * Angles.ToDegrees;
     }
+
+    private Vector ScaledToUnitMax() => this / Math.Max(Math.Abs(X), Math.Max(Math.Abs(Y), Math.Abs(Z)));
 
     /// <summary>Sum of two vectors.</summary>
     public static Vector operator +(Vector a, Vector b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z);

@@ -138,7 +138,7 @@ internal sealed class InstructionArgs
                 case 'n': sb.Append('\n'); break;
                 case 'r': sb.Append('\r'); break;
                 case 't': sb.Append('\t'); break;
-                case 'u' when k + 4 < body.Length && int.TryParse(body.Slice(k + 1, 4), NumberStyles.HexNumber, CultureInfo.InvariantCulture, out int code):
+                case 'u' when k + 4 < body.Length && int.TryParse(body.Slice(k + 1, 4), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out int code):
                     sb.Append((char)code);
                     k += 4;
                     break;

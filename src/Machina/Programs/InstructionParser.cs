@@ -2,7 +2,7 @@ namespace Machina;
 
 /// <summary>
 /// Reads Machina instruction text: statements like <c>MoveTo(400, 300, 500);</c>, any number per line, separated by
-/// semicolons or line breaks, with <c>//</c> comments and double-quoted strings (<c>\"</c>, <c>\\</c>, <c>\n</c> escapes).
+/// semicolons or line breaks, with <c>//</c> comments (also between arguments) and double-quoted strings (<c>\"</c>, <c>\\</c>, <c>\n</c> escapes).
 /// </summary>
 internal sealed class InstructionParser
 {
@@ -95,7 +95,7 @@ internal sealed class InstructionParser
 
     private void ReadArguments(string name)
     {
-        SkipWhitespace();
+        SkipGaps();
         if (_pos < _text.Length && _text[_pos] == ')')
         {
             _pos++;
@@ -103,7 +103,7 @@ internal sealed class InstructionParser
         }
         while (true)
         {
-            SkipWhitespace();
+            SkipGaps();
             if (_pos >= _text.Length)
             {
                 throw Error(_line, Column, $"{name}( is not closed with ')'.");
@@ -118,7 +118,7 @@ internal sealed class InstructionParser
                 ReadBare(ref arg, name);
             }
             _args.Add(arg);
-            SkipWhitespace();
+            SkipGaps();
             if (_pos >= _text.Length)
             {
                 throw Error(_line, Column, $"{name}( is not closed with ')'.");
@@ -174,6 +174,11 @@ internal sealed class InstructionParser
             {
                 break;
             }
+            if (IsCommentStart(_pos) && (_pos == start || char.IsWhiteSpace(_text[_pos - 1])))
+            {
+                // "1 // note" ends the value; "http://host" stays text.
+                break;
+            }
             _pos++;
         }
         int end = _pos;
@@ -197,11 +202,33 @@ internal sealed class InstructionParser
         }
     }
 
-    private void SkipWhitespace()
+    /// <summary>Skips white space, line breaks and <c>//</c> comments between the arguments of a statement.</summary>
+    private void SkipGaps()
     {
-        while (_pos < _text.Length && char.IsWhiteSpace(_text[_pos]))
+        while (_pos < _text.Length)
         {
-            Advance();
+            if (char.IsWhiteSpace(_text[_pos]))
+            {
+                Advance();
+            }
+            else if (IsCommentStart(_pos))
+            {
+                SkipComment();
+            }
+            else
+            {
+                return;
+            }
+        }
+    }
+
+    private bool IsCommentStart(int pos) => _text[pos] == '/' && pos + 1 < _text.Length && _text[pos + 1] == '/';
+
+    private void SkipComment()
+    {
+        while (_pos < _text.Length && _text[_pos] != '\n')
+        {
+            _pos++;
         }
     }
 
@@ -214,12 +241,9 @@ internal sealed class InstructionParser
             {
                 Advance();
             }
-            else if (c == '/' && _pos + 1 < _text.Length && _text[_pos + 1] == '/')
+            else if (IsCommentStart(_pos))
             {
-                while (_pos < _text.Length && _text[_pos] != '\n')
-                {
-                    _pos++;
-                }
+                SkipComment();
             }
             else
             {

@@ -23,7 +23,15 @@ public static class Instructions
     public static IReadOnlyList<RobotAction> ParseFile(string path) => Parse(File.ReadAllText(path));
 
     /// <summary>Reads actions one by one, for very long programs; parsing stops at the first problem.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="text"/> is null (thrown at once, not when enumerating).</exception>
     public static IEnumerable<RobotAction> Enumerate(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        return Read(text);
+    }
+
+    /// <summary>Each enumeration reads the text from its start with a parser of its own.</summary>
+    private static IEnumerable<RobotAction> Read(string text)
     {
         var parser = new InstructionParser(text);
         while (parser.Next() is RobotAction action)

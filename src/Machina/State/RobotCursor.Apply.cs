@@ -64,6 +64,10 @@ internal sealed partial class RobotCursor
 
     private static string? SetNonNegative(ref double field, double value, string what, string unit, bool strictlyPositive)
     {
+        if (!double.IsFinite(value))
+        {
+            return $"the {what} would become too large to represent ({Num.G(field)} {unit} now).";
+        }
         if (strictlyPositive ? !(value > 0) : !(value >= 0))
         {
             return $"the {what} would become {Num.G(value)} {unit}; it must be {(strictlyPositive ? "greater than 0" : "0 or more")}.";
@@ -97,6 +101,10 @@ internal sealed partial class RobotCursor
     {
         int part = (int)a.Part;
         double value = a.Relative ? Temperatures[part] + a.Temperature : a.Temperature;
+        if (!double.IsFinite(value))
+        {
+            return $"the {a.Part} temperature would become too large to represent ({Num.G(Temperatures[part])} C now).";
+        }
         if (value < 0)
         {
             return $"the {a.Part} temperature would become {Num.G(value)} C; it cannot be below 0 C.";
@@ -120,24 +128,43 @@ internal sealed partial class RobotCursor
                 return $"joint external axis {a.AxisNumber} has no value yet to change; use ExternalAxisTo first.";
             }
         }
-        if (cartesian)
+        double? newCartesian = cartesian ? NewAxisValue(ExternalAxesCartesian, a) : null;
+        double? newJoint = joint ? NewAxisValue(ExternalAxesJoints, a) : null;
+        foreach (double? value in (ReadOnlySpan<double?>)[newCartesian, newJoint])
         {
-            ExternalAxes set = ExternalAxesCartesian ?? ExternalAxes.None;
-            ExternalAxesCartesian = set.With(a.AxisNumber, a.Relative ? set[a.AxisNumber]!.Value + a.Value : a.Value);
+            if (value is double v && !double.IsFinite(v))
+            {
+                return $"external axis {a.AxisNumber} would become too large to represent.";
+            }
+            if (value >= ExternalAxes.Unset)
+            {
+                // ExternalAxes reads such values as "unset"; storing one would silently lose the axis.
+                return $"external axis {a.AxisNumber} would become {Num.G(value.Value)}; values from {Num.G(ExternalAxes.Unset)} up mean \"no axis\" (ABB's 9E9).";
+            }
         }
-        if (joint)
+        if (newCartesian is double c)
         {
-            ExternalAxes set = ExternalAxesJoints ?? ExternalAxes.None;
-            ExternalAxesJoints = set.With(a.AxisNumber, a.Relative ? set[a.AxisNumber]!.Value + a.Value : a.Value);
+            ExternalAxesCartesian = (ExternalAxesCartesian ?? ExternalAxes.None).With(a.AxisNumber, c);
+        }
+        if (newJoint is double j)
+        {
+            ExternalAxesJoints = (ExternalAxesJoints ?? ExternalAxes.None).With(a.AxisNumber, j);
         }
         return null;
     }
+
+    private static double NewAxisValue(ExternalAxes? set, ActionExternalAxis a) =>
+        a.Relative ? set!.Value[a.AxisNumber]!.Value + a.Value : a.Value;
 
     private string? ApplyArmAngle(ActionArmAngle a)
     {
         if (a.Relative && ArmAngle is null)
         {
             return "the arm angle has no value yet to change; use ArmAngleTo first.";
+        }
+        if (a.Relative && !double.IsFinite(ArmAngle!.Value + a.Angle))
+        {
+            return $"the arm angle would become too large to represent ({Num.G(ArmAngle.Value)} degrees now).";
         }
         ArmAngle = a.Relative ? ArmAngle!.Value + a.Angle : a.Angle;
         return null;

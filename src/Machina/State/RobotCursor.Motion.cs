@@ -14,15 +14,13 @@ internal sealed partial class RobotCursor
                 return PoseUnknown + ".";
             }
             Vector offset = ReferenceCS == ReferenceCS.Local ? rot * a.Translation : a.Translation;
-            CommitCartesian(pos + offset, rot, offset.Length);
-            return null;
+            return CommitCartesian(pos + offset, rot, offset.Length);
         }
         if (Rotation is not Rotation current)
         {
             return "the tool orientation is not known (the last motion was a joint motion); use TransformTo to give both position and orientation.";
         }
-        CommitCartesian(a.Translation, current, LineLength(a.Translation));
-        return null;
+        return CommitCartesian(a.Translation, current, LineLength(a.Translation));
     }
 
     private string? ApplyRotation(ActionRotation a)
@@ -34,23 +32,20 @@ internal sealed partial class RobotCursor
                 return PoseUnknown + ".";
             }
             Rotation next = ReferenceCS == ReferenceCS.Local ? rot * a.Rotation : a.Rotation * rot;
-            CommitCartesian(pos, next, 0);
-            return null;
+            return CommitCartesian(pos, next, 0);
         }
         if (Position is not Vector position)
         {
             return "the tool position is not known yet; use MoveTo or TransformTo first (RotateTo only turns the tool around its tip).";
         }
-        CommitCartesian(position, a.Rotation, 0);
-        return null;
+        return CommitCartesian(position, a.Rotation, 0);
     }
 
     private string? ApplyTransformation(ActionTransformation a)
     {
         if (!a.Relative)
         {
-            CommitCartesian(a.Translation, a.Rotation, LineLength(a.Translation));
-            return null;
+            return CommitCartesian(a.Translation, a.Rotation, LineLength(a.Translation));
         }
         if (Position is not Vector pos || Rotation is not Rotation rot)
         {
@@ -73,8 +68,7 @@ internal sealed partial class RobotCursor
             newRot = rot * a.Rotation;
             newPos = pos + newRot * a.Translation;
         }
-        CommitCartesian(newPos, newRot, Vector.Distance(pos, newPos));
-        return null;
+        return CommitCartesian(newPos, newRot, Vector.Distance(pos, newPos));
     }
 
     private string? ApplyAxes(ActionAxes a)
@@ -87,6 +81,10 @@ internal sealed partial class RobotCursor
                 return "the joint angles are not known yet (the last motion was Cartesian); use AxesTo before relative Axes.";
             }
             target = current + a.Joints;
+            if (!target.IsFinite)
+            {
+                return $"the joint angles would become {target} degrees, too large to represent.";
+            }
         }
         else
         {
@@ -131,7 +129,14 @@ internal sealed partial class RobotCursor
         {
             return problem;
         }
-        CommitCartesian(end, endRot, length);
+        if (!through.IsFinite)
+        {
+            return $"the arc's through point would be at {through} mm, too far to represent.";
+        }
+        if (CommitCartesian(end, endRot, length) is string refusal)
+        {
+            return refusal;
+        }
         ArcThrough = through;
         ArcThroughRotation = throughRot;
         return null;
@@ -139,8 +144,17 @@ internal sealed partial class RobotCursor
 
     private double? LineLength(Vector target) => Position is Vector p ? Vector.Distance(p, target) : null;
 
-    private void CommitCartesian(Vector position, Rotation rotation, double? pathLength)
+    /// <summary>Makes a Cartesian motion the current pose, or refuses it (changing nothing) when a number would overflow.</summary>
+    private string? CommitCartesian(Vector position, Rotation rotation, double? pathLength)
     {
+        if (!position.IsFinite)
+        {
+            return $"the tool position would become {position} mm, too far to represent.";
+        }
+        if (IsExtruding && pathLength is double length && !double.IsFinite(ExtrudedLength + ExtrusionRate * length))
+        {
+            return $"the extruded length would become too large to represent (extrusion rate {Num.G(ExtrusionRate)} mm/mm over {Num.G(length)} mm).";
+        }
         PrevPosition = Position;
         PrevRotation = Rotation;
         PrevAxes = Axes;
@@ -151,6 +165,7 @@ internal sealed partial class RobotCursor
         ArcThrough = null;
         ArcThroughRotation = null;
         UpdateExtrusion(pathLength);
+        return null;
     }
 
     private void UpdateExtrusion(double? pathLength)

@@ -1,3 +1,5 @@
+using System.Collections.ObjectModel;
+
 namespace Machina;
 
 /// <summary>
@@ -16,9 +18,9 @@ public sealed class RobotState
         ArmAngle = c.ArmAngle;
         Settings = c.CurrentSettings;
         Tool = c.Tool;
-        DefinedTools = c.Tools.Count == 0 ? Empty<Tool>.Map : new Dictionary<string, Tool>(c.Tools);
-        DigitalOutputs = c.DigitalOutputs.Count == 0 ? Empty<bool>.Map : new Dictionary<string, bool>(c.DigitalOutputs);
-        AnalogOutputs = c.AnalogOutputs.Count == 0 ? Empty<double>.Map : new Dictionary<string, double>(c.AnalogOutputs);
+        DefinedTools = Freeze(c.Tools);
+        DigitalOutputs = Freeze(c.DigitalOutputs);
+        AnalogOutputs = Freeze(c.AnalogOutputs);
         ExtruderTemperature = c.Temperatures[(int)RobotPartType.Extruder];
         BedTemperature = c.Temperatures[(int)RobotPartType.Bed];
         ChamberTemperature = c.Temperatures[(int)RobotPartType.Chamber];
@@ -28,10 +30,9 @@ public sealed class RobotState
         LastAction = c.LastAction;
     }
 
-    private static class Empty<T>
-    {
-        internal static readonly IReadOnlyDictionary<string, T> Map = new Dictionary<string, T>();
-    }
+    /// <summary>A read-only copy: user code cannot cast it back to a dictionary and change the snapshot (or, for the shared empty map, every snapshot).</summary>
+    private static ReadOnlyDictionary<string, T> Freeze<T>(Dictionary<string, T> map) =>
+        map.Count == 0 ? ReadOnlyDictionary<string, T>.Empty : new ReadOnlyDictionary<string, T>(new Dictionary<string, T>(map, map.Comparer));
 
     /// <summary>Tool tip position in mm (world frame), or null when unknown.</summary>
     public Vector? Position { get; }

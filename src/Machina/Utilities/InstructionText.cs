@@ -6,13 +6,14 @@ namespace Machina;
 /// <summary>Builds instruction texts (<c>Name(arg,arg);</c>) with lossless invariant numbers and escaped strings.</summary>
 internal static class InstructionText
 {
-    /// <summary>A string argument in double quotes, with <c>\</c>, <c>"</c>, and control characters escaped.</summary>
+    /// <summary>A string argument in double quotes, with <c>\</c>, <c>"</c>, control characters and lone surrogates escaped.</summary>
     internal static string Quote(string value)
     {
         var sb = new StringBuilder(value.Length + 2);
         sb.Append('"');
-        foreach (char c in value)
+        for (int i = 0; i < value.Length; i++)
         {
+            char c = value[i];
             switch (c)
             {
                 case '"': sb.Append("\\\""); break;
@@ -21,7 +22,8 @@ internal static class InstructionText
                 case '\r': sb.Append("\\r"); break;
                 case '\t': sb.Append("\\t"); break;
                 default:
-                    if (char.IsControl(c))
+                    // Control characters and lone surrogate halves (which no file encoding can hold) are written as \uXXXX.
+                    if (char.IsControl(c) || (char.IsSurrogate(c) && !char.IsSurrogatePair(value, i) && !(i > 0 && char.IsSurrogatePair(value, i - 1))))
                     {
                         sb.Append("\\u").Append(((int)c).ToString("x4", Num.Inv));
                     }
