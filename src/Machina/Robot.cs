@@ -89,17 +89,30 @@ public sealed partial class Robot
     private void IssueAll(IReadOnlyList<RobotAction> actions)
     {
         var raised = new List<(string? Report, ActionIssuedArgs? Issued)>(actions.Count);
-        lock (_issueCursor)
+        try
         {
-            if (actions.Count > 1)
+            lock (_issueCursor)
             {
-                DryRun(actions);
-            }
-            foreach (RobotAction action in actions)
-            {
-                raised.Add(IssueLocked(action));
+                if (actions.Count > 1)
+                {
+                    DryRun(actions);
+                }
+                foreach (RobotAction action in actions)
+                {
+                    raised.Add(IssueLocked(action));
+                }
             }
         }
+        finally
+        {
+            // Even if an action failed after the dry run, the ones already issued are reported.
+            RaiseIssued(raised);
+        }
+    }
+
+    /// <summary>Logs the state reports and raises ActionIssued for issued actions, outside the lock.</summary>
+    private void RaiseIssued(List<(string? Report, ActionIssuedArgs? Issued)> raised)
+    {
         foreach ((string? report, ActionIssuedArgs? issued) in raised)
         {
             if (report is not null)

@@ -12,6 +12,11 @@ internal static class ArcGeometry
         Vector normal = Vector.Cross(a, b);
         double n2 = normal.SquaredLength;
         double scale = Math.Max(a.SquaredLength, b.SquaredLength);
+        if (!double.IsFinite(n2) || !double.IsFinite(scale * scale))
+        {
+            problem = "the arc is too large to compute (its points are more than about 1E+77 mm apart).";
+            return false;
+        }
         if (a.SquaredLength < 1e-12 || b.SquaredLength < 1e-12 || (end - through).SquaredLength < 1e-12 || n2 <= 1e-18 * scale * scale)
         {
             problem = "the start, through and end points of the arc are on one line or coincide, so they do not define a circle.";
@@ -26,6 +31,11 @@ internal static class ArcGeometry
         // The arc goes from start in the direction that meets "through" before "end".
         double sweep = angleThrough <= angleEnd ? angleEnd : angleEnd - 2 * Math.PI;
         length = Math.Abs(sweep) * radius;
+        if (!double.IsFinite(length))
+        {
+            problem = "the arc is too large to compute (its points are more than about 1E+77 mm apart).";
+            return false;
+        }
         return true;
     }
 
