@@ -6,7 +6,7 @@ internal static class OnlineDrivers
     /// <summary>A factory of links for a robot, or an exception when its brand cannot be controlled online yet.</summary>
     internal static Func<IDeviceDriver> For(Robot robot) => robot.Brand switch
     {
-        RobotType.ABB => () => new AbbDriver(robot.Logger),
+        RobotType.ABB => () => new AbbDriver(robot.Logger, robot.Time),
         RobotType.UR or RobotType.KUKA => throw new NotSupportedException(
             $"Online control of {robot.Brand} robots is not available in this version yet; only ABB robots can go online."),
         _ => throw new ArgumentException($"{robot.Brand} robots cannot be controlled online; only ABB, UR and KUKA robots can.", nameof(robot)),

@@ -40,11 +40,11 @@ internal sealed class TcpLink : IAsyncDisposable
     internal string RemoteAddress { get; }
 
     /// <summary>Connects within <paramref name="timeout"/>; throws <see cref="MachinaException"/> when the host cannot be reached.</summary>
-    internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
+    internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
     {
         var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true };
-        using var timer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
-        timer.CancelAfter(timeout);
+        using var deadline = new CancellationTokenSource(timeout, time);
+        using var timer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken, deadline.Token);
         try
         {
             await socket.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);

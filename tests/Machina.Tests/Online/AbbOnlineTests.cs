@@ -295,15 +295,23 @@ public class AbbOnlineTests
     [Fact]
     public async Task Connect_NoHandshake_TimesOut()
     {
+        // The robot's clock moves only when the test says so: a slow machine cannot turn this into a connect timeout.
         await using var server = SilentServer.Start();
+        var clock = new ManualClock();
         var bot = Robot.Create("Silent", "ABB");
         bot.ControlMode("online");
+        bot.Time = clock;
         bot.ConnectTimeout = TimeSpan.FromMilliseconds(300);
 
-        var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.ConnectAsync("127.0.0.1", server.Port).WaitAsync(Limit));
-        Assert.Contains("did not send its handshake", error.Message, StringComparison.Ordinal);
-        Assert.False(bot.IsConnected);
+        Task connecting = bot.ConnectAsync("127.0.0.1", server.Port);
         await server.Accepted.WaitAsync(Limit);
+        await EventuallyAsync(() => clock.TimersCreated == 2, "the robot to wait for the handshake (after the TCP connect)");
+        Assert.False(connecting.IsCompleted);
+        clock.Advance(TimeSpan.FromMilliseconds(300));
+
+        var error = await Assert.ThrowsAsync<RobotConnectionException>(() => connecting.WaitAsync(Limit));
+        Assert.Contains("did not send its handshake within 0.3 s", error.Message, StringComparison.Ordinal);
+        Assert.False(bot.IsConnected);
     }
 }
 

@@ -18,6 +18,7 @@ internal static class OnlineTestSupport
     {
         var bot = Robot.Create("HelloRobot", "ABB");
         bot.ControlMode("online");
+        bot.ConnectTimeout = Limit; // a loaded test machine may be slow to accept; no test is about this timeout
         configure?.Invoke(bot);
         await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
         return bot;

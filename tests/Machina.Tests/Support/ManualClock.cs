@@ -11,9 +11,13 @@ internal sealed class ManualClock : TimeProvider
     private readonly object _gate = new();
     private readonly List<ManualTimer> _timers = [];
     private long _now;
+    private int _timersCreated;
 
     /// <summary>Clock ticks are <see cref="TimeSpan"/> ticks.</summary>
     public override long TimestampFrequency => TimeSpan.TicksPerSecond;
+
+    /// <summary>How many timers (delays, timeouts) have been made on this clock so far.</summary>
+    internal int TimersCreated => Volatile.Read(ref _timersCreated);
 
     /// <summary>Time since the clock was made.</summary>
     internal TimeSpan Elapsed => TimeSpan.FromTicks(GetTimestamp());
@@ -30,6 +34,7 @@ internal sealed class ManualClock : TimeProvider
 
     public override ITimer CreateTimer(TimerCallback callback, object? state, TimeSpan dueTime, TimeSpan period)
     {
+        Interlocked.Increment(ref _timersCreated);
         var timer = new ManualTimer(this, callback, state);
         timer.Change(dueTime, period);
         return timer;

@@ -7,6 +7,7 @@ namespace Machina;
 internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
 {
     private readonly RobotLogger _log;
+    private readonly TimeProvider _time;
     private readonly AbbMessageReader _reader = new();
     private readonly Queue<int> _awaiting = new();
     private readonly List<AbbRequest> _requests = new(4);
@@ -26,8 +27,12 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     private bool _hasExternalAxes;
     private DeviceProgress? _progress;
 
-    /// <summary>Creates a driver that logs to the robot's log.</summary>
-    internal AbbDriver(RobotLogger log) => _log = log;
+    /// <summary>Creates a driver that logs to the robot's log and measures its timeouts with <paramref name="time"/>.</summary>
+    internal AbbDriver(RobotLogger log, TimeProvider time)
+    {
+        _log = log;
+        _time = time;
+    }
 
     /// <inheritdoc/>
     public string RemoteAddress => _link?.RemoteAddress ?? "";
@@ -38,15 +43,15 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     /// <inheritdoc/>
     public async Task<DeviceHandshake> ConnectAsync(string host, int port, IDeviceListener listener, TimeSpan timeout, CancellationToken cancellationToken)
     {
-        long start = TimeProvider.System.GetTimestamp();
+        long start = _time.GetTimestamp();
         _listener = listener;
-        _link = await TcpLink.ConnectAsync(host, port, timeout, cancellationToken).ConfigureAwait(false);
+        _link = await TcpLink.ConnectAsync(host, port, timeout, _time, cancellationToken).ConfigureAwait(false);
         _link.Start(this);
-        TimeSpan left = timeout - TimeProvider.System.GetElapsedTime(start);
+        TimeSpan left = timeout - _time.GetElapsedTime(start);
         DeviceHandshake handshake;
         try
         {
-            handshake = await _handshake.Task.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, cancellationToken).ConfigureAwait(false);
+            handshake = await _handshake.Task.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, _time, cancellationToken).ConfigureAwait(false);
         }
         catch (TimeoutException)
         {
@@ -62,7 +67,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     {
         try
         {
-            _monitor = await TcpLink.ConnectAsync(host, port, TimeSpan.FromSeconds(2), cancellationToken).ConfigureAwait(false);
+            _monitor = await TcpLink.ConnectAsync(host, port, TimeSpan.FromSeconds(2), _time, cancellationToken).ConfigureAwait(false);
             _monitor.Start(new MonitorReceiver(this));
         }
         catch (MachinaException)
