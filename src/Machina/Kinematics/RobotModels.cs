@@ -14,7 +14,7 @@ public static class RobotModels
     private static readonly RobotModel[] Models = Build();
 
     /// <summary>Every catalogued model.</summary>
-    public static IReadOnlyList<RobotModel> All => Models;
+    public static IReadOnlyList<RobotModel> All { get; } = Array.AsReadOnly(Models);
 
     /// <summary>The model with this name (case, spaces, dashes and slashes ignored), or null when there is none.</summary>
     public static RobotModel? Find(string name)

@@ -22,8 +22,9 @@ internal static class InstructionText
                 case '\r': sb.Append("\\r"); break;
                 case '\t': sb.Append("\\t"); break;
                 default:
-                    // Control characters and lone surrogate halves (which no file encoding can hold) are written as \uXXXX.
-                    if (char.IsControl(c) || (char.IsSurrogate(c) && !char.IsSurrogatePair(value, i) && !(i > 0 && char.IsSurrogatePair(value, i - 1))))
+                    // Control characters, Unicode line and paragraph separators (which editors show as line breaks) and lone
+                    // surrogate halves (which no file encoding can hold) are written as \uXXXX.
+                    if (char.IsControl(c) || c is '\u2028' or '\u2029' || (char.IsSurrogate(c) && !char.IsSurrogatePair(value, i) && !(i > 0 && char.IsSurrogatePair(value, i - 1))))
                     {
                         sb.Append("\\u").Append(((int)c).ToString("x4", Num.Inv));
                     }

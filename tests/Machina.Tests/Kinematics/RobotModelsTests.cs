@@ -3,6 +3,14 @@ namespace Machina.Tests.Kinematics;
 public class RobotModelsTests
 {
     [Fact]
+    public void Models_CannotBeChangedThroughACast()
+    {
+        var models = (IList<RobotModel>)Robot.Models;
+        Assert.Throws<NotSupportedException>(() => models[0] = models[1]);
+        Assert.Equal("IRB 120", Robot.Models.First(m => m.Brand == "ABB").Name);
+    }
+
+    [Fact]
     public void All_ContainsEveryRequiredModel()
     {
         string[] required = ["UR3", "UR5", "UR10", "UR3e", "UR5e", "UR10e", "UR16e", "UR20", "UR30", "IRB 120", "IRB 140", "IRB 1200-5/0.9", "IRB 1200-7/0.7",

@@ -16,4 +16,15 @@ public class QuoteTests
         Assert.Equal("Message(\"a\\ud83d b \\ude00 c 🤖\");", text);
         Assert.Equal(message, Assert.Single(Instructions.Parse(saved)));
     }
+
+    [Fact]
+    public void UnicodeLineSeparators_AreEscapedSoTheListingKeepsOneStatementPerLine()
+    {
+        var message = new ActionMessage("a\u2028b\u2029c");
+
+        string text = message.ToInstruction();
+
+        Assert.Equal("Message(\"a\\u2028b\\u2029c\");", text);
+        Assert.Equal(message, Assert.Single(Instructions.Parse(text)));
+    }
 }
