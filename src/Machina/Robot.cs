@@ -78,7 +78,12 @@ public sealed partial class Robot
     public bool Issue(RobotAction action)
     {
         ArgumentNullException.ThrowIfNull(action);
-        IssueAll([action]);
+        (string? Report, ActionIssuedArgs? Issued) result;
+        lock (_issueCursor)
+        {
+            result = IssueLocked(action);
+        }
+        RaiseIssued(result.Report, result.Issued);
         return true;
     }
 
@@ -115,14 +120,20 @@ public sealed partial class Robot
     {
         foreach ((string? report, ActionIssuedArgs? issued) in raised)
         {
-            if (report is not null)
-            {
-                Logger.Verbose(report);
-            }
-            if (issued is not null && ActionIssued is { } handler)
-            {
-                RaiseSafely(handler, issued);
-            }
+            RaiseIssued(report, issued);
+        }
+    }
+
+    /// <summary>Logs the state report and raises ActionIssued for one issued action, outside the lock.</summary>
+    private void RaiseIssued(string? report, ActionIssuedArgs? issued)
+    {
+        if (report is not null)
+        {
+            Logger.Verbose(report);
+        }
+        if (issued is not null && ActionIssued is { } handler)
+        {
+            RaiseSafely(handler, issued);
         }
     }
 
