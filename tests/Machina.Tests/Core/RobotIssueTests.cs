@@ -1,3 +1,4 @@
+using Machina.Tests.Support;
 using System.Globalization;
 
 namespace Machina.Tests.Core;
@@ -5,18 +6,6 @@ namespace Machina.Tests.Core;
 /// <summary>Issuing: ids, refusals that change nothing, Do atomicity, the ActionIssued payload and culture independence.</summary>
 public class RobotIssueTests
 {
-    private static void AssertSameState(RobotState expected, RobotState actual)
-    {
-        Assert.Equal(expected.Position, actual.Position);
-        Assert.Equal(expected.Rotation, actual.Rotation);
-        Assert.Equal(expected.Axes, actual.Axes);
-        Assert.Equal(expected.Settings, actual.Settings);
-        Assert.Equal(expected.Tool, actual.Tool);
-        Assert.Equal(expected.SettingsDepth, actual.SettingsDepth);
-        Assert.Equal(expected.ExtrudedLength, actual.ExtrudedLength);
-        Assert.Equal(expected.LastAction, actual.LastAction);
-    }
-
     [Fact]
     public void Issue_Refusals_LeaveStateAndIdCounterUnchanged()
     {
@@ -33,7 +22,7 @@ public class RobotIssueTests
         Assert.Throws<ArgumentException>(() => bot.MoveTo(double.NaN, 0, 0));
         Assert.Throws<ArgumentException>(() => bot.Rotate(0, 0, 0, 10));
 
-        AssertSameState(before, bot.GetCurrentState());
+        StateAssert.Same(before, bot.GetCurrentState());
         bot.Wait(1);
         Assert.Equal([1, 2, 3], bot.GetProgramActions().Select(a => a.Id));
     }
@@ -72,7 +61,7 @@ public class RobotIssueTests
         var ex = Assert.Throws<ActionRefusedException>(() => bot.Do("Move(1, 0, 0); SpeedTo(5); AttachTool(\"nope\");"));
 
         Assert.Equal(new ActionAttachTool("nope"), ex.Action);
-        AssertSameState(before, bot.GetCurrentState());
+        StateAssert.Same(before, bot.GetCurrentState());
         Assert.Empty(issued);
         Assert.Single(bot.GetProgramActions());
         bot.Wait(1);

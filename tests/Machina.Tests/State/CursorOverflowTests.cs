@@ -1,3 +1,5 @@
+using Machina.Tests.Support;
+
 namespace Machina.Tests.State;
 
 /// <summary>Relative actions whose result would overflow to infinity are refused, with nothing changed and no id used.</summary>
@@ -11,15 +13,7 @@ public class CursorOverflowTests
         var ex = Assert.Throws<ActionRefusedException>(act);
 
         Assert.Contains(reasonPart, ex.Reason, StringComparison.Ordinal);
-        RobotState after = bot.GetCurrentState();
-        Assert.Equal(before.Position, after.Position);
-        Assert.Equal(before.Axes, after.Axes);
-        Assert.Equal(before.Settings, after.Settings);
-        Assert.Equal(before.ArmAngle, after.ArmAngle);
-        Assert.Equal(before.ExternalAxesCartesian, after.ExternalAxesCartesian);
-        Assert.Equal(before.ExternalAxesJoints, after.ExternalAxesJoints);
-        Assert.Equal(before.BedTemperature, after.BedTemperature);
-        Assert.Equal(before.ExtrudedLength, after.ExtrudedLength);
+        StateAssert.Same(before, bot.GetCurrentState());
         Assert.Equal(count, bot.GetProgramActions().Count);
         bot.Wait(0);
         Assert.Equal(count + 1, bot.GetProgramActions()[^1].Id);
