@@ -18,6 +18,8 @@ public sealed partial class VirtualAbbController
                 }
                 await ExecuteAsync(request, token).ConfigureAwait(false);
                 Interlocked.Increment(ref _requestsExecuted);
+                // Before the acknowledgement goes out: whoever sees it also sees the pause it may start.
+                CountTowardsPause();
                 if (request.Code == (int)AbbInstructionCode.GetInfo)
                 {
                     await SendToClientAsync(InformationReply(request), token).ConfigureAwait(false);
@@ -33,7 +35,6 @@ public sealed partial class VirtualAbbController
                 {
                     Pendant("acknowledgement lost, client disconnected");
                 }
-                CountTowardsPause();
                 if (request.Code == (int)AbbInstructionCode.StopExecution)
                 {
                     // The driver program ends: no more clients.
