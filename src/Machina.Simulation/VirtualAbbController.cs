@@ -170,15 +170,19 @@ public sealed partial class VirtualAbbController : IAsyncDisposable
         try
         {
             VirtualAbbState state = State;
-            var version = _options.DriverVersion;
-            foreach (string message in new[]
+            var version = new AbbDriverVersion(_options.DriverVersion.Major, _options.DriverVersion.Minor, Math.Max(0, _options.DriverVersion.Build));
+            var handshake = new List<string>
             {
-                $"$20 {version.Major} {version.Minor} {Math.Max(0, version.Build)};",
+                AbbMessageFormat.Version(version),
                 AbbMessageFormat.Pose(state.Position, state.Rotation),
                 AbbMessageFormat.Joints(state.Joints),
                 AbbMessageFormat.ExternalAxes(state.ExternalAxesCartesian),
-                version.Major == 1 && version.Minor >= 6 ? AbbMessageFormat.Progress(_lastExecutedId, Volatile.Read(ref _lastReceivedId)) : "",
-            })
+            };
+            if (version.ReportsProgress)
+            {
+                handshake.Add(AbbMessageFormat.Progress(_lastExecutedId, Volatile.Read(ref _lastReceivedId)));
+            }
+            foreach (string message in handshake)
             {
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(message), token).ConfigureAwait(false);
             }

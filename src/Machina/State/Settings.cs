@@ -12,6 +12,12 @@ public readonly record struct Settings(double Speed, double Acceleration, double
     /// <summary>The settings of a new robot: 20 mm/s, 30 mm/s², 5 mm, linear, world, no extrusion.</summary>
     public static Settings Default => new(20, 30, 5, MotionType.Linear, ReferenceCS.World, 0);
 
+    /// <summary>
+    /// True for 0 and the built-in 30 mm/s²: compilers leave these to the controller's own acceleration (written as 0.03 m/s²
+    /// the built-in value made the original's UR programs crawl, spec bug 34).
+    /// </summary>
+    internal static bool MeansControllerAcceleration(double acceleration) => acceleration == 0 || acceleration == Default.Acceleration;
+
     /// <summary>Text such as <c>World Linear 20-30-5 0</c>.</summary>
     public override string ToString() =>
         $"{ReferenceCS} {MotionType} {Num.G(Speed)}-{Num.G(Acceleration)}-{Num.G(Precision)} {Num.G(ExtrusionRate)}";

@@ -108,10 +108,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
         }
         if (acknowledged)
         {
-            lock (_awaiting)
-            {
-                _awaiting.Enqueue(action.Id);
-            }
+            Adopt(action.Id);
         }
         link.Post(_encoded.AsSpan(0, length));
         return acknowledged;
@@ -132,6 +129,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     int IDeviceDriver.WireId(int actionId) => WireId(actionId);
 
     /// <inheritdoc/>
+    /// <remarks>Also how <see cref="Send"/> records an action it sent: its acknowledgement is awaited in order.</remarks>
     public void Adopt(int actionId)
     {
         lock (_awaiting)

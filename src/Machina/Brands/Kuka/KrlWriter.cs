@@ -141,7 +141,7 @@ internal sealed class KrlWriter
         src.Add(Indent + "$TOOL = " + (start.Tool is Tool tool ? KrlFormat.ToolFrame(tool) : "$NULLFRAME"));
         src.Add(Indent + "$ADVANCE = 3");
         src.Add(Indent + VelocityLine(start.Speed));
-        if (!IsControllerAcceleration(start.Acceleration))
+        if (!Settings.MeansControllerAcceleration(start.Acceleration))
         {
             src.Add(Indent + AccelerationLine(start.Acceleration));
         }
@@ -152,13 +152,7 @@ internal sealed class KrlWriter
     private static string VelocityLine(double speed) => "$VEL.CP = " + KrlFormat.SpeedMetresPerSecond(speed);
 
     private static string AccelerationLine(double acceleration) =>
-        "$ACC.CP = " + (IsControllerAcceleration(acceleration) ? AccDefaultVariable : KrlFormat.AccelerationMetresPerSecond2(acceleration));
-
-    /// <summary>
-    /// 0 and Machina's built-in default (30 mm/s², which the original wrote as a crawling 0.03 m/s², spec bug 34) mean the
-    /// controller's own acceleration, the value BAS (#INITMOV) sets, as on ABB (WorldAccLim \Off) and UR (no a=).
-    /// </summary>
-    private static bool IsControllerAcceleration(double acceleration) => acceleration == 0 || acceleration == Settings.Default.Acceleration;
+        "$ACC.CP = " + (Settings.MeansControllerAcceleration(acceleration) ? AccDefaultVariable : KrlFormat.AccelerationMetresPerSecond2(acceleration));
 
     private static string PrecisionLine(double precision) => "$APO.CDIS = " + KrlFormat.Mm(precision);
 

@@ -51,7 +51,7 @@ internal static class UrScriptText
     internal static StringBuilder MotionParameters(this StringBuilder sb, double acceleration, double speed, double precision, bool joint)
     {
         double factor = joint ? Rad : Mm;
-        if (acceleration > 0 && acceleration != Settings.Default.Acceleration)
+        if (!Settings.MeansControllerAcceleration(acceleration))
         {
             sb.Append(", a=").Num6(Math.Max(Math.Round(acceleration * factor, 6), MinRate));
         }
