@@ -33,6 +33,16 @@ public sealed partial class Robot
     internal bool HasExecutedHandlers => ActionExecuted is not null;
     internal bool HasMotionHandlers => MotionUpdate is not null;
     internal bool HasConnectionLostHandlers => ConnectionLost is not null;
+    internal bool HasStopHandlers => ControllerStopped is not null || ControllerResumed is not null;
+
+    /// <summary>
+    /// Raised when the controller stops on its own (a protective or emergency stop, reported by UR controllers): nothing more is
+    /// sent, waiting calls fail with <see cref="RobotStoppedException"/>, and nothing is lost. See <see cref="Resume"/>.
+    /// </summary>
+    public event EventHandler<ControllerStoppedArgs>? ControllerStopped;
+
+    /// <summary>Raised when a stopped controller runs again (after <see cref="Resume"/> or at its pendant); sending goes on.</summary>
+    public event EventHandler<ControllerStoppedArgs>? ControllerResumed;
 
     /// <summary>Delivers an online event to its subscribers (called by the event loop; never throws).</summary>
     internal void RaiseOnline(MachinaEventArgs args)
@@ -44,6 +54,8 @@ public sealed partial class Robot
             case ActionExecutedArgs a when ActionExecuted is { } h: RaiseSafely(h, a); break;
             case MotionUpdateArgs a when MotionUpdate is { } h: RaiseSafely(h, a); break;
             case ConnectionLostArgs a when ConnectionLost is { } h: RaiseSafely(h, a); break;
+            case ControllerStoppedArgs { IsStopped: true } a when ControllerStopped is { } h: RaiseSafely(h, a); break;
+            case ControllerStoppedArgs { IsStopped: false } a when ControllerResumed is { } h: RaiseSafely(h, a); break;
         }
     }
 
@@ -72,10 +84,11 @@ public sealed partial class Robot
         }
         if (mode == ControlType.Online)
         {
-            Func<IDeviceDriver> factory = DriverFactory ?? OnlineDrivers.For(this);
+            IOnlineBrand? brand = DriverFactory is null ? OnlineBrands.For(Brand) : OnlineBrands.TryFor(Brand);
+            Func<IDeviceDriver> factory = DriverFactory ?? CreateDriverFactory(brand!);
             lock (_issueCursor)
             {
-                _session = new OnlineSession(this, _issueCursor, _window, factory, Time);
+                _session = new OnlineSession(this, _issueCursor, _window, factory, brand, Time);
                 _online = _session;
             }
         }
@@ -127,8 +140,27 @@ public sealed partial class Robot
     /// </summary>
     public TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
 
-    /// <summary>True while connected to a controller.</summary>
+    /// <summary>True while connected to a controller (also while it is stopped).</summary>
     public bool IsConnected => _session?.IsConnected ?? false;
+
+    /// <summary>Where the link to the controller stands: disconnected, connecting, connected, or stopped by the controller.</summary>
+    public ConnectionState ConnectionState => _session?.State ?? ConnectionState.Disconnected;
+
+    /// <summary>
+    /// Asks a controller that stopped on its own (see <see cref="ControllerStopped"/>) to run again, once its cause is cleared,
+    /// and waits until it does. The actions it holds run once each; the rest are sent after them.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The robot is not stopped.</exception>
+    /// <exception cref="MachinaException">The controller refused or could not be reached.</exception>
+    public Task ResumeAsync(CancellationToken cancellationToken = default) => RequireSession("resume").ResumeAsync(cancellationToken);
+
+    /// <summary>Same as <see cref="ResumeAsync"/>, waiting for it.</summary>
+    /// <returns>True once the controller runs again.</returns>
+    public bool Resume()
+    {
+        ResumeAsync().GetAwaiter().GetResult();
+        return true;
+    }
 
     /// <summary>Connects to the driver running on a controller at <paramref name="host"/>:<paramref name="port"/> and waits for its handshake.</summary>
     /// <returns>True once connected.</returns>
@@ -262,11 +294,29 @@ public sealed partial class Robot
     public IReadOnlyDictionary<string, string> GetDeviceDriverModules(IReadOnlyDictionary<string, string> parameters)
     {
         ArgumentNullException.ThrowIfNull(parameters);
-        return OnlineDrivers.Modules(Brand, parameters);
+        return OnlineBrands.DriverModules(Brand, parameters);
     }
 
     /// <summary>Completes once every online event queued so far was raised (tests).</summary>
     internal Task FlushEventsAsync() => _session?.FlushEventsAsync() ?? Task.CompletedTask;
+
+    private Func<IDeviceDriver> CreateDriverFactory(IOnlineBrand brand) =>
+        () => brand.CreateDriver(new DeviceContext(Logger, Time, Name, Model, MotionUpdateRate));
+
+    /// <summary>
+    /// How many live pose reports per second the robot asks its controller for while connected (Hz, default 50), which set
+    /// how often <see cref="MotionUpdate"/> is raised. UR: the RTDE frequency (at most 125, or 500 on e-Series); KUKA: the
+    /// driver's report interval; ABB: set by MONITOR_RATE in the driver modules instead. Takes effect at the next connection.
+    /// </summary>
+    public double MotionUpdateRate
+    {
+        get => _motionUpdateRate;
+        set => _motionUpdateRate = value > 0 && value <= 1000
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(MotionUpdateRate), value, "The motion update rate must be more than 0 and at most 1000 reports per second.");
+    }
+
+    private double _motionUpdateRate = 50;
 
     private OnlineSession RequireSession(string what) => _session
         ?? throw new InvalidOperationException($"Cannot {what} while the robot is offline; call ControlMode(\"online\") first.");

@@ -146,7 +146,13 @@ public sealed partial class Robot
             action = action.CloneUnissued();
             action.Id = _nextId;
         }
-        string? refusal;
+        string? refusal = _online?.WhyCannotStream(action);
+        if (refusal is not null)
+        {
+            action.Id = -1;
+            Logger.Warning($"Refused {action.ToInstruction()}: {refusal}");
+            throw new ActionRefusedException(action, refusal);
+        }
         try
         {
             refusal = _issueCursor.TryApply(action);

@@ -9,4 +9,7 @@ internal interface IActionStream
     /// null when nobody listens; the stream raises it before any later event about the same action.
     /// </summary>
     void Enqueue(RobotAction action, ActionIssuedArgs? issued);
+
+    /// <summary>Why the controller's driver cannot run <paramref name="action"/>, or null; asked before the action changes anything.</summary>
+    string? WhyCannotStream(RobotAction action);
 }

@@ -27,6 +27,14 @@ internal interface IDeviceDriver : IAsyncDisposable
     /// sent again). Called under the session lock, in release order, before anything new is sent.
     /// </summary>
     void Adopt(int actionId);
+
+    /// <summary>
+    /// Asks a controller that stopped on its own (<see cref="IDeviceListener.OnStopped"/>) to run again, e.g. UR: unlock the
+    /// protective stop and play. Completes once it runs (the listener then gets <see cref="IDeviceListener.OnResumed"/>);
+    /// throws <see cref="MachinaException"/> when it cannot. Drivers that never report stops keep the default.
+    /// </summary>
+    Task ResumeAsync(CancellationToken cancellationToken) =>
+        Task.FromException(new NotSupportedException("This controller does not report stops, so there is nothing to resume."));
 }
 
 /// <summary>Receives what a device driver hears from its controller. Calls may come from the driver's receive loops.</summary>
@@ -37,6 +45,15 @@ internal interface IDeviceListener
 
     /// <summary>The controller reported where the robot is now.</summary>
     void OnMotion(in MotionSample sample);
+
+    /// <summary>
+    /// The controller stopped on its own (protective or emergency stop) and the link stays open: nothing more is sent until it
+    /// runs again. Actions it holds are neither lost nor sent twice.
+    /// </summary>
+    void OnStopped(MachinaException reason);
+
+    /// <summary>The controller runs again after <see cref="OnStopped"/> (cleared at its pendant, or by <see cref="IDeviceDriver.ResumeAsync"/>).</summary>
+    void OnResumed();
 
     /// <summary>The link failed (closed socket, garbage, protocol violation); the driver stops after this call.</summary>
     void OnFault(MachinaException error);

@@ -3,12 +3,31 @@ namespace Machina;
 internal sealed partial class OnlineSession
 {
     private Connection? _link;
-    private bool _connecting;
+    private ConnectionState _state = ConnectionState.Disconnected;
+    private MachinaException? _stopReason;
+    private MachinaException? _lastFault;
     private long _lastProgress;
     private ITimer? _watchdog;
 
-    /// <summary>True while a controller is connected.</summary>
-    internal bool IsConnected => Volatile.Read(ref _link) is not null;
+    /// <summary>
+    /// Where the link stands. Transitions (all under <c>_gate</c>): Disconnected → Connecting (<see cref="ConnectAsync"/>);
+    /// Connecting → Connected (handshake done, cursors set) or Disconnected (failed or refused); Connected → Stopped
+    /// (<see cref="IDeviceListener.OnStopped"/>) → Connected (<see cref="IDeviceListener.OnResumed"/>); Connected or Stopped →
+    /// Disconnected (<see cref="DisconnectAsync"/>, a fault, silence). Actions are released only while Connected.
+    /// </summary>
+    internal ConnectionState State
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _state;
+            }
+        }
+    }
+
+    /// <summary>True while a controller is linked (connected or stopped).</summary>
+    internal bool IsConnected => State is ConnectionState.Connected or ConnectionState.Stopped;
 
     /// <summary>"host:port" of the connected controller, or empty.</summary>
     internal string RemoteAddress => Volatile.Read(ref _link)?.Driver.RemoteAddress ?? "";
@@ -23,11 +42,11 @@ internal sealed partial class OnlineSession
     {
         lock (_gate)
         {
-            if (_link is not null || _connecting)
+            if (_state != ConnectionState.Disconnected)
             {
-                throw new InvalidOperationException("The robot is already connected (or connecting); call Disconnect first.");
+                throw new InvalidOperationException($"The robot is already {_state.ToString().ToLowerInvariant()}; call Disconnect first.");
             }
-            _connecting = true;
+            _state = ConnectionState.Connecting;
         }
         IDeviceDriver driver;
         Connection link;
@@ -50,7 +69,7 @@ internal sealed partial class OnlineSession
         {
             lock (_gate)
             {
-                _connecting = false;
+                _state = ConnectionState.Disconnected;
             }
             throw;
         }
@@ -61,11 +80,14 @@ internal sealed partial class OnlineSession
         {
             lock (_gate)
             {
-                _connecting = false;
+                _state = ConnectionState.Disconnected;
                 refusal = Resume(handshake, driver);
                 earlyFault = link.EarlyFault;
                 if (refusal is null)
                 {
+                    _state = ConnectionState.Connected;
+                    _stopReason = null;
+                    _lastFault = null;
                     _link = link;
                     link.IsReady = true;
                     _lastProgress = _time.GetTimestamp();
@@ -148,6 +170,8 @@ internal sealed partial class OnlineSession
     private void Detach(MachinaException reason)
     {
         _link = null;
+        _state = ConnectionState.Disconnected;
+        _stopReason = null;
         _credit = 0;
         _watchdog?.Dispose();
         _watchdog = null;
@@ -168,6 +192,7 @@ internal sealed partial class OnlineSession
                 return;
             }
             Detach(error);
+            _lastFault = error;
             _robot.Logger.Error($"Connection to \"{_robot.Name}\" lost: {error.Message}");
             if (_robot.HasConnectionLostHandlers)
             {
@@ -254,6 +279,70 @@ internal sealed partial class OnlineSession
         }
     }
 
+    /// <summary>The controller stopped on its own: nothing more is released, waiters fail with the reason, the link stays.</summary>
+    private void OnStopped(Connection link, MachinaException reason)
+    {
+        lock (_gate)
+        {
+            if (!ReferenceEquals(_link, link) || _state != ConnectionState.Connected)
+            {
+                return;
+            }
+            _state = ConnectionState.Stopped;
+            _stopReason = reason;
+            _credit = 0;
+            if (_completion is not null)
+            {
+                _events.PostSignal(_completion, reason);
+                _completion = null;
+            }
+            _robot.Logger.Error($"\"{_robot.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
+            if (_robot.HasStopHandlers)
+            {
+                _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
+            }
+        }
+    }
+
+    /// <summary>The controller runs again after a stop: releasing resumes where it was.</summary>
+    private void OnResumed(Connection link)
+    {
+        lock (_gate)
+        {
+            if (!ReferenceEquals(_link, link) || _state != ConnectionState.Stopped)
+            {
+                return;
+            }
+            _state = ConnectionState.Connected;
+            _stopReason = null;
+            _lastProgress = _time.GetTimestamp();
+            _robot.Logger.Info($"\"{_robot.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
+            if (_robot.HasStopHandlers)
+            {
+                _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
+            }
+            ReleaseReady();
+        }
+    }
+
+    /// <summary>Asks a stopped controller to run again (through its driver) and waits until it does.</summary>
+    internal async Task ResumeAsync(CancellationToken cancellationToken)
+    {
+        Connection link;
+        lock (_gate)
+        {
+            if (_state != ConnectionState.Stopped || _link is null)
+            {
+                throw new InvalidOperationException(_state == ConnectionState.Connected
+                    ? "The robot is running; there is nothing to resume."
+                    : "The robot is not connected; call Connect (a reconnection resumes exactly where the controller is).");
+            }
+            link = _link;
+        }
+        await link.Driver.ResumeAsync(cancellationToken).ConfigureAwait(false);
+        OnResumed(link);
+    }
+
     private void StartWatchdog(Connection link)
     {
         TimeSpan timeout = ResponseTimeout;
@@ -283,7 +372,7 @@ internal sealed partial class OnlineSession
                     break;
                 }
             }
-            if (expected < 0)
+            if (expected < 0 || _state == ConnectionState.Stopped)
             {
                 _lastProgress = _time.GetTimestamp();
                 return;
@@ -329,6 +418,10 @@ internal sealed partial class OnlineSession
         }
 
         public void OnMotion(in MotionSample sample) => session.OnMotion(this, sample);
+
+        public void OnStopped(MachinaException reason) => session.OnStopped(this, reason);
+
+        public void OnResumed() => session.OnResumed(this);
 
         public void OnFault(MachinaException error)
         {

@@ -11,6 +11,7 @@ internal sealed partial class OnlineSession : IActionStream
     private readonly RobotCursor _issue;
     private readonly ReleaseWindow _window;
     private readonly Func<IDeviceDriver> _driverFactory;
+    private readonly IOnlineBrand? _brand;
     private readonly TimeProvider _time;
     private readonly EventPump _events;
     private readonly object _gate = new();
@@ -23,8 +24,9 @@ internal sealed partial class OnlineSession : IActionStream
     private int _credit;
 
     /// <summary>Creates the session of a robot; the issue cursor is the robot's, locked by it while issuing.</summary>
-    internal OnlineSession(Robot robot, RobotCursor issueCursor, ReleaseWindow window, Func<IDeviceDriver> driverFactory, TimeProvider time)
+    internal OnlineSession(Robot robot, RobotCursor issueCursor, ReleaseWindow window, Func<IDeviceDriver> driverFactory, IOnlineBrand? brand, TimeProvider time)
     {
+        _brand = brand;
         _robot = robot;
         _issue = issueCursor;
         _window = window;
@@ -54,6 +56,9 @@ internal sealed partial class OnlineSession : IActionStream
             ReleaseReady();
         }
     }
+
+    /// <inheritdoc/>
+    public string? WhyCannotStream(RobotAction action) => _brand?.WhyCannotStream(action);
 
     /// <summary>Actions issued and not executed yet, oldest first: first those sent to the controller, then those waiting.</summary>
     internal IReadOnlyList<RobotAction> GetPendingActions()
@@ -136,10 +141,16 @@ internal sealed partial class OnlineSession : IActionStream
                 _events.PostSignal(done, null);
                 task = done.Task;
             }
+            else if (_state == ConnectionState.Stopped)
+            {
+                return Task.FromException(_stopReason!);
+            }
             else if (_link is null)
             {
-                return Task.FromException(new RobotConnectionException(
-                    $"{_buffer.Count + _inFlight.Count} actions wait to be executed but the robot is not connected; call Connect first."));
+                int waiting = _buffer.Count + _inFlight.Count;
+                return Task.FromException(_lastFault is { } fault
+                    ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {waiting} actions wait to be executed; connect again to resume.", fault)
+                    : new RobotConnectionException($"{waiting} actions wait to be executed but the robot is not connected; call Connect first."));
             }
             else
             {
@@ -153,7 +164,7 @@ internal sealed partial class OnlineSession : IActionStream
     /// <summary>Releases blocks while the window allows; executes released actions that nothing acknowledges once they are next.</summary>
     private void ReleaseReady()
     {
-        if (_link is not { IsReady: true } link)
+        if (_state != ConnectionState.Connected || _link is not { IsReady: true } link)
         {
             return;
         }

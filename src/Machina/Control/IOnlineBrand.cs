@@ -1,0 +1,32 @@
+namespace Machina;
+
+/// <summary>
+/// One brand's online support, everything <see cref="OnlineSession"/> needs to know about it: how to make a link to its
+/// controller, which actions its driver can run, and its controller-side driver files. A brand implements this once, in
+/// its own folder (<c>Brands/&lt;Brand&gt;/Online/</c>), and registers it in <see cref="OnlineBrands"/>.
+/// </summary>
+internal interface IOnlineBrand
+{
+    /// <summary>The brand this support is for.</summary>
+    RobotType Brand { get; }
+
+    /// <summary>A new, unconnected link to a controller of this brand (one per connection).</summary>
+    IDeviceDriver CreateDriver(DeviceContext context);
+
+    /// <summary>
+    /// Why this brand's driver cannot run <paramref name="action"/> (a sentence naming the action), or null when it can.
+    /// Called when the action is issued online, before it changes anything, so that nothing unsendable is ever accepted.
+    /// </summary>
+    string? WhyCannotStream(RobotAction action);
+
+    /// <summary>The controller-side driver files by file name, with the connection parameters (HOSTNAME, PORT…) filled in.</summary>
+    IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters);
+}
+
+/// <summary>What a device driver gets from its robot: where to log, which clock to use, and the robot's settings.</summary>
+/// <param name="Logger">The robot's log.</param>
+/// <param name="Time">The robot's clock (tests drive it by hand).</param>
+/// <param name="RobotName">The robot's name, for messages.</param>
+/// <param name="Model">The robot's arm model, or null when it has none.</param>
+/// <param name="MotionUpdateRate">How many live pose reports per second to ask the controller for (Hz).</param>
+internal sealed record DeviceContext(RobotLogger Logger, TimeProvider Time, string RobotName, RobotModel? Model, double MotionUpdateRate);
