@@ -10,13 +10,18 @@ public sealed partial class Robot
     /// <summary>Makes the link to a controller; tests replace it with a fake.</summary>
     internal Func<IDeviceDriver>? DriverFactory { get; set; }
 
+    /// <summary>Replaces the brand's online support (what it refuses to stream); tests only.</summary>
+    internal IOnlineBrand? OnlineBrandOverride { get; set; }
+
     /// <summary>Clock used for the response timeout; tests may replace it.</summary>
     internal TimeProvider Time { get; set; } = TimeProvider.System;
 
     /// <summary>
     /// Raised after each action is sent to the controller. Online events (this one, <see cref="ActionExecuted"/>,
-    /// <see cref="MotionUpdate"/>, <see cref="ConnectionLost"/> and, online, <see cref="ActionIssued"/>) are raised one at
-    /// a time, in order, on a background thread of this robot; a handler may issue new actions.
+    /// <see cref="MotionUpdate"/>, <see cref="ConnectionLost"/>, <see cref="ControllerStopped"/>, <see cref="ControllerResumed"/>
+    /// and, online, <see cref="ActionIssued"/>) are raised one at a time, in order, by this robot's event loop: on a thread-pool
+    /// thread (not always the same one), never on the thread that issued the action. A handler may issue new actions. After
+    /// going offline or disposing the robot, no handler runs any more.
     /// </summary>
     public event EventHandler<ActionReleasedArgs>? ActionReleased;
 
@@ -29,11 +34,6 @@ public sealed partial class Robot
     /// <summary>Raised when the link to the controller fails; the actions not confirmed as executed are kept and listed.</summary>
     public event EventHandler<ConnectionLostArgs>? ConnectionLost;
 
-    internal bool HasReleasedHandlers => ActionReleased is not null;
-    internal bool HasExecutedHandlers => ActionExecuted is not null;
-    internal bool HasMotionHandlers => MotionUpdate is not null;
-    internal bool HasConnectionLostHandlers => ConnectionLost is not null;
-    internal bool HasStopHandlers => ControllerStopped is not null || ControllerResumed is not null;
 
     /// <summary>
     /// Raised when the controller stops on its own (a protective or emergency stop, reported by UR controllers): nothing more is
@@ -44,8 +44,26 @@ public sealed partial class Robot
     /// <summary>Raised when a stopped controller runs again (after <see cref="Resume"/> or at its pendant); sending goes on.</summary>
     public event EventHandler<ControllerStoppedArgs>? ControllerResumed;
 
+    bool IOnlineHost.IsListening(OnlineEvent kind) => kind switch
+    {
+        OnlineEvent.Released => ActionReleased is not null,
+        OnlineEvent.Executed => ActionExecuted is not null,
+        OnlineEvent.Motion => MotionUpdate is not null,
+        OnlineEvent.ConnectionLost => ConnectionLost is not null,
+        OnlineEvent.StopChanged => ControllerStopped is not null || ControllerResumed is not null,
+        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Unknown online event."),
+    };
+
+    void IOnlineHost.WithIssueCursor(Action<RobotCursor> change)
+    {
+        lock (_issueLock)
+        {
+            change(_issueCursor);
+        }
+    }
+
     /// <summary>Delivers an online event to its subscribers (called by the event loop; never throws).</summary>
-    internal void RaiseOnline(MachinaEventArgs args)
+    void IOnlineHost.Raise(MachinaEventArgs args)
     {
         switch (args)
         {
@@ -84,9 +102,10 @@ public sealed partial class Robot
         }
         if (mode == ControlType.Online)
         {
-            IOnlineBrand? brand = DriverFactory is null ? OnlineBrands.For(Brand) : OnlineBrands.TryFor(Brand);
+            ThrowIfDisposed("go online");
+            IOnlineBrand? brand = OnlineBrandOverride ?? (DriverFactory is null ? OnlineBrands.For(Brand) : OnlineBrands.TryFor(Brand));
             Func<IDeviceDriver> factory = DriverFactory ?? CreateDriverFactory(brand!);
-            lock (_issueCursor)
+            lock (_issueLock)
             {
                 _session = new OnlineSession(this, _issueCursor, _window, factory, brand, Time);
                 _online = _session;
@@ -95,7 +114,7 @@ public sealed partial class Robot
         else
         {
             OnlineSession? old;
-            lock (_issueCursor)
+            lock (_issueLock)
             {
                 old = _session;
                 _session = null;
@@ -106,7 +125,8 @@ public sealed partial class Robot
             {
                 Logger.Warning($"Going offline dropped {dropped} actions that were not executed by the controller.");
             }
-            _ = old?.CloseAsync();
+            // Events that already happened are still raised, before this returns: no handler runs after going offline.
+            old?.CloseAsync(raiseQueued: true).GetAwaiter().GetResult();
         }
         _controlType = mode;
         return true;
@@ -186,6 +206,7 @@ public sealed partial class Robot
         ArgumentException.ThrowIfNullOrWhiteSpace(host);
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(port);
         ArgumentOutOfRangeException.ThrowIfGreaterThan(port, 65535);
+        ThrowIfDisposed("connect");
         OnlineSession session = RequireSession("connect");
         session.ResponseTimeout = ResponseTimeout;
         return session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);
@@ -280,7 +301,7 @@ public sealed partial class Robot
     /// <summary>State after the last issued action.</summary>
     public RobotState GetIssuedState()
     {
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             return _issueCursor.Snapshot();
         }

@@ -34,7 +34,7 @@ public sealed partial class Robot
     {
         get
         {
-            lock (_issueCursor)
+            lock (_issueLock)
             {
                 return _issueCursor.Model;
             }
@@ -61,7 +61,7 @@ public sealed partial class Robot
         {
             CheckModelBrand(model);
         }
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             if (_online is not null)
             {
@@ -100,7 +100,7 @@ public sealed partial class Robot
     /// </summary>
     public void StrictMode(bool strict)
     {
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             _issueCursor.Strict = strict;
         }
@@ -111,7 +111,7 @@ public sealed partial class Robot
     {
         get
         {
-            lock (_issueCursor)
+            lock (_issueLock)
             {
                 return _issueCursor.Strict;
             }
@@ -121,7 +121,7 @@ public sealed partial class Robot
     /// <summary>The kinematic warnings of the actions issued so far, in order, each with the action's id and the check's kind.</summary>
     public IReadOnlyList<ProgramWarning> GetWarnings()
     {
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             return [.. _warnings];
         }
@@ -130,7 +130,7 @@ public sealed partial class Robot
     /// <summary>Forgets the warnings collected so far.</summary>
     public void ClearWarnings()
     {
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             _warnings.Clear();
         }

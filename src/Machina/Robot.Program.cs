@@ -62,7 +62,7 @@ public sealed partial class Robot
         RobotAction[] actions;
         RobotCursor start = new();
         RobotModel? model;
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             model = _issueCursor.Model;
             actions = [.. _programActions];
@@ -82,7 +82,7 @@ public sealed partial class Robot
     /// <summary>The actions issued so far that the next <c>Compile()</c> will contain.</summary>
     public IReadOnlyList<RobotAction> GetProgramActions()
     {
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             return [.. _programActions];
         }
@@ -91,7 +91,7 @@ public sealed partial class Robot
     /// <summary>Starts a new program: the actions issued so far are forgotten, and the next program starts from the current state.</summary>
     public void ClearProgram()
     {
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             _programStart ??= new RobotCursor();
             _programStart.CopyFrom(_issueCursor);

@@ -9,7 +9,7 @@ public sealed partial class Robot
         {
             return session.ReadExecution(read);
         }
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             return read(_issueCursor);
         }

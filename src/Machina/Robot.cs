@@ -6,8 +6,10 @@ namespace Machina;
 /// to the controller (online). Verbs ending in <c>To</c> are absolute; the others are relative to the current state.
 /// Distances are in millimetres, angles in degrees, speeds in mm/s, times in milliseconds.
 /// </summary>
-public sealed partial class Robot
+public sealed partial class Robot : IOnlineHost
 {
+    /// <summary>Guards the issue cursor and the program list; taken before any lock of the online session (see <see cref="IOnlineHost"/>).</summary>
+    private readonly object _issueLock = new();
     private readonly RobotCursor _issueCursor;
     private readonly List<RobotAction> _programActions = [];
     private int _nextId = 1;
@@ -79,7 +81,7 @@ public sealed partial class Robot
     {
         ArgumentNullException.ThrowIfNull(action);
         (string? Report, ActionIssuedArgs? Issued) result;
-        lock (_issueCursor)
+        lock (_issueLock)
         {
             result = IssueLocked(action);
         }
@@ -96,7 +98,7 @@ public sealed partial class Robot
         var raised = new List<(string? Report, ActionIssuedArgs? Issued)>(actions.Count);
         try
         {
-            lock (_issueCursor)
+            lock (_issueLock)
             {
                 if (actions.Count > 1)
                 {

@@ -12,6 +12,7 @@ internal sealed class EventPump
     private readonly Action<MachinaEventArgs> _raise;
     private readonly Task _loop;
     private int _raisingThread = -1;
+    private volatile bool _dropping;
 
     /// <summary>Starts the loop; <paramref name="raise"/> delivers one event to its subscribers and must not throw.</summary>
     internal EventPump(Action<MachinaEventArgs> raise)
@@ -29,18 +30,27 @@ internal sealed class EventPump
     /// <summary>Completes (or fails, when <paramref name="error"/> is set) a waiting task after every event queued so far was raised.</summary>
     internal void PostSignal(TaskCompletionSource signal, Exception? error) => _queue.Writer.TryWrite(new Item(null, signal, error));
 
-    /// <summary>Raises what is queued, then stops the loop.</summary>
-    internal Task StopAsync()
+    /// <summary>
+    /// Stops the loop after raising what is queued (<paramref name="raiseQueued"/>) or after the handler running now (the
+    /// queued events are dropped and waiting tasks are cancelled). Completes when no handler of this pump runs any more; called
+    /// from inside a handler it cannot wait for that and completes at once.
+    /// </summary>
+    internal Task StopAsync(bool raiseQueued)
     {
+        _dropping |= !raiseQueued;
         _queue.Writer.TryComplete();
-        return _loop;
+        return IsRaisingOnCurrentThread ? Task.CompletedTask : _loop;
     }
 
     private async Task RunAsync()
     {
         await foreach (Item item in _queue.Reader.ReadAllAsync().ConfigureAwait(false))
         {
-            if (item.Args is not null)
+            if (_dropping)
+            {
+                item.Signal?.TrySetCanceled();
+            }
+            else if (item.Args is not null)
             {
                 Volatile.Write(ref _raisingThread, Environment.CurrentManagedThreadId);
                 _raise(item.Args);

@@ -74,14 +74,14 @@ internal sealed partial class OnlineSession
             throw;
         }
 
-        MachinaException? earlyFault;
-        string? refusal;
-        lock (_issue)
+        MachinaException? earlyFault = null;
+        string? refusal = null;
+        _host.WithIssueCursor(issue =>
         {
             lock (_gate)
             {
                 _state = ConnectionState.Disconnected;
-                refusal = Resume(handshake, driver);
+                refusal = Resume(handshake, driver, issue);
                 earlyFault = link.EarlyFault;
                 if (refusal is null)
                 {
@@ -99,49 +99,36 @@ internal sealed partial class OnlineSession
                     }
                 }
             }
-        }
+        });
         if (refusal is not null)
         {
             await driver.DisposeAsync().ConfigureAwait(false);
             throw new RobotConnectionException(refusal);
         }
-        _robot.Logger.Info($"Connected to {_robot.Brand} robot \"{_robot.Name}\" on {driver.RemoteAddress} (driver {handshake.Version}).");
+        _host.Logger.Info($"Connected to {_host.Brand} robot \"{_host.Name}\" on {driver.RemoteAddress} (driver {handshake.Version}).");
         if (earlyFault is not null)
         {
             Fault(link, earlyFault);
         }
     }
 
-    private void InitialiseCursors(DeviceHandshake handshake)
+    private void InitialiseCursors(DeviceHandshake handshake, RobotCursor issue)
     {
-        _execution.Reset();
-        if (handshake.Position is Vector position)
-        {
-            _execution.Position = _execution.PrevPosition = position;
-        }
-        if (handshake.Rotation is Rotation rotation)
-        {
-            _execution.Rotation = _execution.PrevRotation = rotation;
-        }
-        if (handshake.Axes is Joints axes)
-        {
-            _execution.Axes = _execution.PrevAxes = axes;
-        }
-        _execution.ExternalAxesCartesian = _execution.ExternalAxesJoints = handshake.ExternalAxes;
+        _execution.ResetToReported(handshake.Position, handshake.Rotation, handshake.Axes, handshake.ExternalAxes);
         _release.CopyFrom(_execution);
-        _issue.CopyFrom(_execution);
+        issue.CopyFrom(_execution);
         int count = _buffer.Count;
         for (int i = 0; i < count; i++)
         {
             RobotAction action = _buffer.Dequeue();
-            string? refusal = _issue.TryApply(action);
+            string? refusal = issue.TryApply(action);
             if (refusal is null)
             {
                 _buffer.Enqueue(action);
             }
             else
             {
-                _robot.Logger.Warning($"Dropped the waiting action {action.ToInstruction()} (id {action.Id}): {refusal}");
+                _host.Logger.Warning($"Dropped the waiting action {action.ToInstruction()} (id {action.Id}): {refusal}");
             }
         }
     }
@@ -160,7 +147,7 @@ internal sealed partial class OnlineSession
             Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
         }
         await link.Driver.DisposeAsync().ConfigureAwait(false);
-        _robot.Logger.Info($"Disconnected from {_robot.Brand} robot \"{_robot.Name}\".");
+        _host.Logger.Info($"Disconnected from {_host.Brand} robot \"{_host.Name}\".");
     }
 
     /// <summary>
@@ -193,8 +180,8 @@ internal sealed partial class OnlineSession
             }
             Detach(error);
             _lastFault = error;
-            _robot.Logger.Error($"Connection to \"{_robot.Name}\" lost: {error.Message}");
-            if (_robot.HasConnectionLostHandlers)
+            _host.Logger.Error($"Connection to \"{_host.Name}\" lost: {error.Message}");
+            if (_host.IsListening(OnlineEvent.ConnectionLost))
             {
                 _events.Post(new ConnectionLostArgs(error, PendingList(), _execution.Snapshot()));
             }
@@ -210,7 +197,7 @@ internal sealed partial class OnlineSession
         }
         catch (Exception ex)
         {
-            _robot.Logger.Debug($"Closing the failed link threw {ex.GetType().Name}: {ex.Message}");
+            _host.Logger.Debug($"Closing the failed link threw {ex.GetType().Name}: {ex.Message}");
         }
     }
 
@@ -268,11 +255,8 @@ internal sealed partial class OnlineSession
                 return;
             }
             RobotCursor motion = _motion ??= new RobotCursor();
-            motion.Position = sample.Position;
-            motion.Rotation = sample.Rotation;
-            motion.Axes = sample.Axes;
-            motion.ExternalAxesCartesian = sample.ExternalAxes;
-            if (_robot.HasMotionHandlers)
+            motion.SetLivePose(sample.Position, sample.Rotation, sample.Axes, sample.ExternalAxes);
+            if (_host.IsListening(OnlineEvent.Motion))
             {
                 _events.Post(new MotionUpdateArgs(motion.Snapshot()));
             }
@@ -296,8 +280,8 @@ internal sealed partial class OnlineSession
                 _events.PostSignal(_completion, reason);
                 _completion = null;
             }
-            _robot.Logger.Error($"\"{_robot.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
-            if (_robot.HasStopHandlers)
+            _host.Logger.Error($"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
+            if (_host.IsListening(OnlineEvent.StopChanged))
             {
                 _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
             }
@@ -316,8 +300,8 @@ internal sealed partial class OnlineSession
             _state = ConnectionState.Connected;
             _stopReason = null;
             _lastProgress = _time.GetTimestamp();
-            _robot.Logger.Info($"\"{_robot.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
-            if (_robot.HasStopHandlers)
+            _host.Logger.Info($"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
+            if (_host.IsListening(OnlineEvent.StopChanged))
             {
                 _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
             }
@@ -378,7 +362,9 @@ internal sealed partial class OnlineSession
                 return;
             }
             TimeSpan silent = _time.GetElapsedTime(_lastProgress);
-            if (silent > timeout + TimeSpan.FromMilliseconds(expected))
+            // In milliseconds as doubles: an action expected to take longer than TimeSpan can hold (Wait(long.MaxValue), a
+            // huge move at a tiny speed) must never overflow on this timer thread.
+            if (silent.TotalMilliseconds > timeout.TotalMilliseconds + expected)
             {
                 fault = new RobotConnectionException(
                     $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {_inFlight.Count} actions wait for execution.");

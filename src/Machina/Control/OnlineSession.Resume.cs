@@ -19,7 +19,7 @@ internal sealed partial class OnlineSession
     /// controller's pose becomes every cursor's state and everything not confirmed is sent (again).</item>
     /// </list>
     /// </summary>
-    private string? Resume(DeviceHandshake handshake, IDeviceDriver driver)
+    private string? Resume(DeviceHandshake handshake, IDeviceDriver driver, RobotCursor issue)
     {
         DeviceProgress? progress = handshake.Progress;
         int executed = Unknown, held = Unknown;
@@ -41,14 +41,14 @@ internal sealed partial class OnlineSession
         }
         if (_inFlight.Count > 0)
         {
-            _robot.Logger.Warning(progress is null
+            _host.Logger.Warning(progress is null
                 ? $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {_inFlight.Count} actions sent "
                     + "before the connection was lost are sent again, and any the robot already ran will run twice."
                 : $"The controller does not know the {_inFlight.Count} actions sent before the connection was lost (a restarted driver or another "
                     + "controller): they are sent again, with targets recomputed from where the robot is.");
             RequeueInFlight();
         }
-        InitialiseCursors(handshake);
+        InitialiseCursors(handshake, issue);
         return null;
     }
 
@@ -96,11 +96,11 @@ internal sealed partial class OnlineSession
         }
         var resend = remaining.Skip(heldCount).Select(f => f.Action).ToList();
         PutBackInFront(resend);
-        _robot.Logger.Info($"Resumed where the controller is: {executedCount} actions ran while disconnected, {heldCount} are still on the controller, "
+        _host.Logger.Info($"Resumed where the controller is: {executedCount} actions ran while disconnected, {heldCount} are still on the controller, "
             + $"{resend.Count} are sent again.");
         if (heldCount == 0 && handshake.Position is Vector at && _execution.Position is Vector expected && Vector.Distance(at, expected) > 1)
         {
-            _robot.Logger.Warning($"The robot is at {at}, {Num.F(Vector.Distance(at, expected), 1)} mm from where its last action left it: "
+            _host.Logger.Warning($"The robot is at {at}, {Num.F(Vector.Distance(at, expected), 1)} mm from where its last action left it: "
                 + "it was moved while disconnected. The remaining actions keep their targets.");
         }
     }

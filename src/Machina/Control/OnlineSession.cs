@@ -2,13 +2,15 @@ namespace Machina;
 
 /// <summary>
 /// The online half of a robot: the FIFO buffer of issued actions, the release policy, the Release, Execution and Motion
-/// cursors, and the events. One lock (<c>_gate</c>) guards all of it; user code never runs under it (events go through an
-/// <see cref="EventPump"/>). Lock order: the robot's issue cursor first, then <c>_gate</c>.
+/// cursors, and the events. It holds no brand code: the brand's <see cref="IDeviceDriver"/> encodes and decodes, and its
+/// <see cref="IOnlineBrand"/> refuses what the driver cannot run. One lock (<c>_gate</c>) guards all of the session's state;
+/// user code never runs under it (events go through an <see cref="EventPump"/>). Lock order, everywhere: the robot's issue
+/// lock (<see cref="IOnlineHost.WithIssueCursor"/>, or the robot issuing an action) first, then <c>_gate</c>; a driver's
+/// loops call in without holding any lock of theirs.
 /// </summary>
 internal sealed partial class OnlineSession : IActionStream
 {
-    private readonly Robot _robot;
-    private readonly RobotCursor _issue;
+    private readonly IOnlineHost _host;
     private readonly ReleaseWindow _window;
     private readonly Func<IDeviceDriver> _driverFactory;
     private readonly IOnlineBrand? _brand;
@@ -23,18 +25,17 @@ internal sealed partial class OnlineSession : IActionStream
     private TaskCompletionSource? _completion;
     private int _credit;
 
-    /// <summary>Creates the session of a robot; the issue cursor is the robot's, locked by it while issuing.</summary>
-    internal OnlineSession(Robot robot, RobotCursor issueCursor, ReleaseWindow window, Func<IDeviceDriver> driverFactory, IOnlineBrand? brand, TimeProvider time)
+    /// <summary>Creates the session of a robot whose issued state is <paramref name="issued"/> (called under the robot's issue lock).</summary>
+    internal OnlineSession(IOnlineHost host, RobotCursor issued, ReleaseWindow window, Func<IDeviceDriver> driverFactory, IOnlineBrand? brand, TimeProvider time)
     {
         _brand = brand;
-        _robot = robot;
-        _issue = issueCursor;
+        _host = host;
         _window = window;
         _driverFactory = driverFactory;
         _time = time;
-        _events = new EventPump(robot.RaiseOnline);
-        _release.CopyFrom(issueCursor);
-        _execution.CopyFrom(issueCursor);
+        _events = new EventPump(host.Raise);
+        _release.CopyFrom(issued);
+        _execution.CopyFrom(issued);
     }
 
     /// <summary>How long the controller may stay silent beyond the expected duration of the action it works on.</summary>
@@ -93,17 +94,18 @@ internal sealed partial class OnlineSession : IActionStream
     /// <returns>How many actions were dropped.</returns>
     internal int ClearPendingActions()
     {
-        lock (_issue)
+        int count = 0;
+        _host.WithIssueCursor(issue =>
         {
             lock (_gate)
             {
-                int count = _buffer.Count;
+                count = _buffer.Count;
                 _buffer.Clear();
-                _issue.CopyFrom(_release);
+                issue.CopyFrom(_release);
                 CheckCompletion();
-                return count;
             }
-        }
+        });
+        return count;
     }
 
     /// <summary>Snapshots of the release, execution and motion cursors (motion is null before the first live pose).</summary>
@@ -178,20 +180,25 @@ internal sealed partial class OnlineSession : IActionStream
             }
             for (int i = 0; i < block; i++)
             {
-                ReleaseOne(link, _buffer.Dequeue());
+                if (!ReleaseOne(link, _buffer.Dequeue()))
+                {
+                    return;
+                }
             }
         }
         CheckCompletion();
     }
 
-    private void ReleaseOne(Connection link, RobotAction action)
+    /// <summary>Sends one action; false when the link failed doing so (then nothing more is released).</summary>
+    private bool ReleaseOne(Connection link, RobotAction action)
     {
+        // Neither failure below can happen while the cursors agree and the brand refuses at issue time what its driver cannot
+        // run; if one does, the action is never skipped silently: it goes back to the front of the buffer and the link is
+        // closed, with nothing after it sent.
         string? refusal = _release.TryApply(action);
         if (refusal is not null)
         {
-            // Cannot happen while the cursors agree; never send something the controller cannot do.
-            _robot.Logger.Error($"Could not release {action.ToInstruction()}: {refusal} It was dropped.");
-            return;
+            return FailRelease(link, action, $"the state sent so far does not allow it: {refusal}", null);
         }
         bool acknowledged;
         try
@@ -200,18 +207,26 @@ internal sealed partial class OnlineSession : IActionStream
         }
         catch (Exception ex) when (ex is NotSupportedException or ArgumentException or InvalidOperationException)
         {
-            _robot.Logger.Warning($"{action.ToInstruction()} cannot be streamed to this controller ({ex.Message}); it was skipped.");
-            acknowledged = false;
+            return FailRelease(link, action, $"it could not be encoded for the controller: {ex.Message}", ex);
         }
         if (_inFlight.Count == 0)
         {
             _lastProgress = _time.GetTimestamp();
         }
         _inFlight.Enqueue(new InFlight(action, acknowledged, ExpectedMilliseconds(action, _release)));
-        if (_robot.HasReleasedHandlers)
+        if (_host.IsListening(OnlineEvent.Released))
         {
             _events.Post(new ActionReleasedArgs(action, _buffer.Count, _release.Snapshot()));
         }
+        return true;
+    }
+
+    private bool FailRelease(Connection link, RobotAction action, string why, Exception? cause)
+    {
+        PutBackInFront([action]);
+        Fault(link, new RobotConnectionException(
+            $"{action.ToInstruction()} (id {action.Id}) was not sent: {why} Nothing after it was sent; remove it with ClearPendingActions.", cause));
+        return false;
     }
 
     /// <summary>How long the controller should take for an action at the programmed speed, ms (0 for settings).</summary>
@@ -235,9 +250,9 @@ internal sealed partial class OnlineSession : IActionStream
         string? refusal = _execution.TryApply(entry.Action);
         if (refusal is not null)
         {
-            _robot.Logger.Error($"The execution state could not follow {entry.Action.ToInstruction()}: {refusal}");
+            _host.Logger.Error($"The execution state could not follow {entry.Action.ToInstruction()}: {refusal}");
         }
-        if (_robot.HasExecutedHandlers)
+        if (_host.IsListening(OnlineEvent.Executed))
         {
             _events.Post(new ActionExecutedArgs(entry.Action, _inFlight.Count, _inFlight.Count + _buffer.Count, _execution.Snapshot()));
         }
@@ -260,6 +275,9 @@ internal sealed partial class OnlineSession : IActionStream
         return done.Task;
     }
 
-    /// <summary>Stops raising events once the queued ones are raised (when the robot goes back offline).</summary>
-    internal Task CloseAsync() => _events.StopAsync();
+    /// <summary>
+    /// Stops raising events: after those already queued (<paramref name="raiseQueued"/>, when the robot goes back offline) or
+    /// at once (when the robot is disposed). Completes when no handler runs any more (at once when called from a handler).
+    /// </summary>
+    internal Task CloseAsync(bool raiseQueued) => _events.StopAsync(raiseQueued);
 }

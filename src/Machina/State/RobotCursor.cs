@@ -9,39 +9,46 @@ internal sealed partial class RobotCursor
     /// <summary>Deepest allowed nesting of PushSettings.</summary>
     internal const int MaxSettingsDepth = 1024;
 
-    internal Vector? Position;
-    internal Vector? PrevPosition;
-    internal Rotation? Rotation;
-    internal Rotation? PrevRotation;
-    internal Joints? Axes;
-    internal Joints? PrevAxes;
-    internal double Speed;
-    internal double Acceleration;
-    internal double Precision;
-    internal MotionType MotionType;
-    internal ReferenceCS ReferenceCS;
-    internal Tool? Tool;
+    internal Vector? Position { get; private set; }
+    internal Vector? PrevPosition { get; private set; }
+    internal Rotation? Rotation { get; private set; }
+    internal Rotation? PrevRotation { get; private set; }
+    internal Joints? Axes { get; private set; }
+    internal Joints? PrevAxes { get; private set; }
+    private double _speed;
+    internal double Speed => _speed;
+    private double _acceleration;
+    internal double Acceleration => _acceleration;
+    private double _precision;
+    internal double Precision => _precision;
+    private MotionType _motionType;
+    internal MotionType MotionType => _motionType;
+    private ReferenceCS _referenceCS;
+    internal ReferenceCS ReferenceCS => _referenceCS;
+    internal Tool? Tool { get; private set; }
     internal readonly Dictionary<string, Tool> Tools = new(StringComparer.Ordinal);
-    internal ExternalAxes? ExternalAxesCartesian;
-    internal ExternalAxes? ExternalAxesJoints;
-    internal double? ArmAngle;
+    internal ExternalAxes? ExternalAxesCartesian { get; private set; }
+    internal ExternalAxes? ExternalAxesJoints { get; private set; }
+    internal double? ArmAngle { get; private set; }
     internal readonly Dictionary<string, bool> DigitalOutputs = new(StringComparer.Ordinal);
     internal readonly Dictionary<string, double> AnalogOutputs = new(StringComparer.Ordinal);
     internal readonly double[] Temperatures = new double[3];
-    internal bool IsExtruding;
-    internal double ExtrusionRate;
-    internal double ExtrudedLength;
-    internal double PrevExtrudedLength;
+    private bool _isExtruding;
+    internal bool IsExtruding => _isExtruding;
+    private double _extrusionRate;
+    internal double ExtrusionRate => _extrusionRate;
+    internal double ExtrudedLength { get; private set; }
+    internal double PrevExtrudedLength { get; private set; }
     internal readonly Stack<Settings> SettingsStack = new();
     /// <summary>The settings in force just before the last PopSettings (a compiler re-emits what changed).</summary>
-    internal Settings? SettingsBeforeLastPop;
+    internal Settings? SettingsBeforeLastPop { get; private set; }
     /// <summary>After an arc: the world position of its through point.</summary>
-    internal Vector? ArcThrough;
+    internal Vector? ArcThrough { get; private set; }
     /// <summary>After an arc: the orientation at its through point.</summary>
-    internal Rotation? ArcThroughRotation;
+    internal Rotation? ArcThroughRotation { get; private set; }
     /// <summary>Length of the tool-tip path of the last motion, mm (arc length for arcs), or null when unknown.</summary>
-    internal double? LastPathLength;
-    internal RobotAction? LastAction;
+    internal double? LastPathLength { get; private set; }
+    internal RobotAction? LastAction { get; private set; }
 
     /// <summary>Receives warnings about actions that were applied but may surprise the user; may be null.</summary>
     internal Action<RobotAction, string>? Warn;
@@ -66,7 +73,7 @@ internal sealed partial class RobotCursor
         DigitalOutputs.Clear();
         AnalogOutputs.Clear();
         Array.Clear(Temperatures);
-        IsExtruding = false;
+        _isExtruding = false;
         ExtrudedLength = PrevExtrudedLength = 0;
         SettingsStack.Clear();
         SettingsBeforeLastPop = null;
@@ -93,7 +100,7 @@ internal sealed partial class RobotCursor
         AnalogOutputs.Clear();
         foreach (var kv in other.AnalogOutputs) { AnalogOutputs[kv.Key] = kv.Value; }
         Array.Copy(other.Temperatures, Temperatures, Temperatures.Length);
-        IsExtruding = other.IsExtruding;
+        _isExtruding = other.IsExtruding;
         ExtrudedLength = other.ExtrudedLength; PrevExtrudedLength = other.PrevExtrudedLength;
         SettingsStack.Clear();
         foreach (var s in other.SettingsStack.Reverse()) { SettingsStack.Push(s); }
@@ -107,12 +114,12 @@ internal sealed partial class RobotCursor
 
     private void ApplySettings(Settings s)
     {
-        Speed = s.Speed;
-        Acceleration = s.Acceleration;
-        Precision = s.Precision;
-        MotionType = s.MotionType;
-        ReferenceCS = s.ReferenceCS;
-        ExtrusionRate = s.ExtrusionRate;
+        _speed = s.Speed;
+        _acceleration = s.Acceleration;
+        _precision = s.Precision;
+        _motionType = s.MotionType;
+        _referenceCS = s.ReferenceCS;
+        _extrusionRate = s.ExtrusionRate;
     }
 
     /// <summary>An immutable copy of the whole state.</summary>

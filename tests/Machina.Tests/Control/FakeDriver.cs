@@ -54,8 +54,28 @@ internal sealed class FakeDriver : IDeviceDriver
         return Task.FromResult(Handshake);
     }
 
+    /// <summary>Actions the fake cannot encode (Send throws NotSupportedException for them).</summary>
+    internal Func<RobotAction, bool> CannotEncode { get; set; } = _ => false;
+
+    /// <summary>What <see cref="ResumeAsync"/> does; by default it reports the controller running again.</summary>
+    internal Func<IDeviceListener, Task>? Resume { get; set; }
+
+    public Task ResumeAsync(CancellationToken cancellationToken)
+    {
+        if (Resume is null)
+        {
+            Listener!.OnResumed();
+            return Task.CompletedTask;
+        }
+        return Resume(Listener!);
+    }
+
     public bool Send(RobotAction action, RobotCursor releaseState)
     {
+        if (CannotEncode(action))
+        {
+            throw new NotSupportedException("the fake cannot encode it");
+        }
         Sent.Enqueue(action);
         bool acked = Acknowledges(action);
         if (acked)
