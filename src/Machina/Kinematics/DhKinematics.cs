@@ -219,9 +219,10 @@ public sealed class DhKinematics : IKinematics, ISolver
                 }
                 q[..3].CopyTo(arms.Slice(3 * armCount++, 3));
                 int before = count;
-                for (int w = -1; w < WristSeeds.Length && count - before < 2 && count < joints.Length; w++)
+                // The wrist reaches one rotation in two ways: start from the reference's wrist (first arm only), then from fixed starts.
+                for (int w = seed < 0 ? -1 : 0; w < WristSeeds.Length && count - before < 2 && count < joints.Length; w++)
                 {
-                    (seed < 0 && w < 0 ? r[3..] : w < 0 ? WristSeeds[0] : WristSeeds[w]).CopyTo(q[3..]);
+                    (w < 0 ? r[3..] : WristSeeds[w]).CopyTo(q[3..]);
                     arms.Slice(3 * (armCount - 1), 3).CopyTo(q);
                     if (ConvergeThree(true, flange, wrist, q) && Converge(flange, q))
                     {
