@@ -137,6 +137,31 @@ public class DhKinematicsTests
     }
 
     [Fact]
+    public void Robot_WithDhModel_KeepsJointsAndPoseInStepLikeTheCatalogueModel()
+    {
+        // The same program on an ABB robot with the IRB 120 as a DH table and with the catalogue's IRB 120 (OPW): same joints, same pose,
+        // same RAPID (confdata included).
+        RobotModel dh = RobotModel.FromDh("IRB 120 (DH)", "ABB", DhConvention.Standard,
+            [new(0, -90, 290), new(270, 0, 0, -90), new(70, -90, 0), new(0, 90, 302), new(0, -90, 0), new(0, 0, 72, 180)],
+            new Joints(-165, -110, -110, -160, -120, -400), new Joints(165, 110, 70, 160, 120, 400), new Joints(250, 250, 250, 320, 320, 420));
+        Robot withDh = Robot.Create("Bot", RobotType.ABB, dh), withOpw = Robot.Create("Bot", "ABB", "IRB 120");
+        foreach (Robot bot in new[] { withDh, withOpw })
+        {
+            bot.AxesTo(new Joints(10, 20, -10, 30, 40, 50));
+            bot.Move(0, 0, -50);
+            bot.TransformTo(new Vector(300, 100, 400), Rotation.FlippedAroundY);
+        }
+        Joints a = withDh.GetCurrentAxes()!.Value, b = withOpw.GetCurrentAxes()!.Value;
+        Assert.True(a.IsSimilar(b, 1e-6), $"{a} vs {b}");
+        Assert.True(Vector.Distance(withDh.GetCurrentPosition()!.Value, withOpw.GetCurrentPosition()!.Value) < 1e-6);
+        Assert.Equal(withOpw.GetWarnings().Count, withDh.GetWarnings().Count);
+        var options = new CompileOptions { HumanComments = false };
+        string[] rapidDh = withDh.Compile(RobotType.ABB, options).Files.SelectMany(f => f.Lines).ToArray();
+        string[] rapidOpw = withOpw.Compile(RobotType.ABB, options).Files.SelectMany(f => f.Lines).ToArray();
+        Assert.True(rapidOpw.SequenceEqual(rapidDh), string.Join("\n", rapidOpw.Zip(rapidDh).Where(p => p.First != p.Second).Select(p => $"{p.First} | {p.Second}")));
+    }
+
+    [Fact]
     public void FromDh_BadTable_ThrowsClearMessage()
     {
         DhJoint[] five = [new(0, 90, 0), new(1, 0, 0), new(1, 0, 0), new(0, 90, 1), new(0, -90, 0)];
