@@ -8,4 +8,7 @@ public enum KinematicFamily
 
     /// <summary>Universal Robots layout (offset wrist): six DH lengths.</summary>
     UniversalRobots,
+
+    /// <summary>Any six-joint serial arm described by a Denavit–Hartenberg table (<see cref="RobotModel.FromDh"/>); numerical inverse.</summary>
+    Dh,
 }

@@ -3,7 +3,7 @@ namespace Machina;
 /// <summary>
 /// An immutable description of one robot arm: its name, brand, geometry, joint limits and (where published) maximum joint speeds,
 /// with the public documents the numbers come from. Use <see cref="RobotModels"/> for the built-in catalogue or
-/// <see cref="FromOpw"/> / <see cref="FromUniversalRobotsDh"/> to define your own.
+/// <see cref="FromOpw"/> / <see cref="FromUniversalRobotsDh"/> / <see cref="FromDh"/> to define your own.
 /// </summary>
 public sealed class RobotModel
 {
@@ -73,6 +73,41 @@ public sealed class RobotModel
         parameters.Validate();
         var model = new RobotModel(name, "UR", KinematicFamily.UniversalRobots, minJoints, maxJoints, maxJointSpeeds, source) { UniversalRobotsDh = parameters };
         model.Kinematics = new UniversalRobotsKinematics(model, parameters);
+        return model;
+    }
+
+    /// <summary>
+    /// Any six-joint serial arm from its Denavit–Hartenberg table: six rows (lengths in mm, angles in degrees), standard or modified
+    /// convention, joint limits (degrees) and, optionally, maximum joint speeds (°/s) and where the flange sits in the last DH frame
+    /// (default: the last frame itself). Joint values are the table's θ minus each row's offset. The inverse is numerical (see
+    /// docs/kinematics.md): slower than the built-in OPW and UR solvers, and it lists the solutions it finds (up to eight).
+    /// </summary>
+    public static RobotModel FromDh(string name, string brand, DhConvention convention, IReadOnlyList<DhJoint> joints, Joints minJoints, Joints maxJoints,
+        Joints? maxJointSpeeds = null, Pose? flange = null, string source = "user defined")
+    {
+        string b = CheckCommon(name, brand, minJoints, maxJoints, maxJointSpeeds, source);
+        ArgumentNullException.ThrowIfNull(joints);
+        if (joints.Count != Joints.Count)
+        {
+            throw new ArgumentException($"A DH table for \"{name}\" needs exactly six rows, one per joint (got {joints.Count}).", nameof(joints));
+        }
+        if (!Enum.IsDefined(convention))
+        {
+            throw new ArgumentOutOfRangeException(nameof(convention), convention, "The DH convention is Standard or Modified.");
+        }
+        DhJoint[] table = [.. joints];
+        for (int i = 0; i < table.Length; i++)
+        {
+            DhJoint j = table[i];
+            if (!(double.IsFinite(j.A) && double.IsFinite(j.Alpha) && double.IsFinite(j.D) && double.IsFinite(j.ThetaOffset)))
+            {
+                throw new ArgumentException($"Row {i + 1} of the DH table of \"{name}\" has a value that is not a finite number.", nameof(joints));
+            }
+        }
+        Pose f = flange ?? Pose.Identity;
+        f.Position.RequireFinite(nameof(flange));
+        var model = new RobotModel(name, b, KinematicFamily.Dh, minJoints, maxJoints, maxJointSpeeds, source);
+        model.Kinematics = new DhKinematics(model, convention, table, f);
         return model;
     }
 

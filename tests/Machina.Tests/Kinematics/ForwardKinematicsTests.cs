@@ -13,8 +13,8 @@ public class ForwardKinematicsTests
     {
         { "IRB 120", 0, -70, 290, 270, 302, 72 },
         { "IRB 140", 70, 0, 352, 360, 380, 65 },
-        { "IRB 1200-5/0.9", 0, -42, 399, 448, 451, 82 },
-        { "IRB 1200-7/0.7", 0, -42, 399, 350, 351, 82 },
+        { "IRB 1200-5/0.9", 0, -42, 399.1, 448, 451, 82 },
+        { "IRB 1200-7/0.7", 0, -42, 399.1, 350, 351, 82 },
         { "IRB 2600-12/1.65", 150, -115, 445, 700, 795, 85 },
         { "IRB 2600-20/1.65", 150, -115, 445, 700, 795, 85 },
         { "IRB 4600-60/2.05", 175, -175, 495, 900, 960, 135 },
@@ -24,7 +24,7 @@ public class ForwardKinematicsTests
         { "KR 6 R700 sixx", 25, -35, 400, 315, 365, 80 },
         { "KR 6 R900 sixx", 25, -35, 400, 455, 420, 80 },
         { "KR 10 R1100 sixx", 25, -35, 400, 560, 515, 80 },
-        { "KR 16", 260, -35, 675, 680, 670, 158 },
+        { "KR 16-2", 260, 35, 675, 680, 670, 158 },
         { "KR 120 R2500 pro", 350, 41, 675, 1150, 1000, 215 },
     };
 
@@ -71,7 +71,7 @@ public class ForwardKinematicsTests
     [InlineData("IRB 120", 0, 0, 0, 0, 90, 0, 302, 0, 558, 0, 180, 0)]             // tool0 down: x = c3, z = c1 + c2 + 70 − c4
     [InlineData("IRB 140", 90, 0, 0, 0, 0, 0, 0, 515, 712, 90, 90, 0)]              // turned left: y = 70 + 380 + 65, z = 352 + 360
     [InlineData("KR 6 R900 sixx", 0, -90, 90, 0, 90, 0, 445, 0, 810, 180, 0, 180)]  // FLANGE down (KRL A 180, B 0, C 180)
-    [InlineData("KR 16", 0, -90, 90, 0, 0, 0, 1088, 0, 1390, 0, 90, 0)]              // home: 260 + 670 + 158, 675 + 680 + 35
+    [InlineData("KR 16-2", 0, -90, 90, 0, 0, 0, 1088, 0, 1320, 0, 90, 0)]            // home: 260 + 670 + 158, 675 + 680 − 35 (forearm below axis 3)
     [InlineData("UR5e", 0, 0, 0, 0, 0, 0, -817.2, -232.9, 62.8, 0, 0, 90)]          // a2 + a3, −(d4 + d6), d1 − d5; Z along −Y
     [InlineData("UR10", 0, -90, 0, -90, 0, 0, 0, -256.141, 1427.3, 180, 0, -90)]    // upright: d1 − a2 − a3 + d5
     public void Forward_ExplicitReferencePoses_MatchHandValues(string name, double j1, double j2, double j3, double j4, double j5, double j6,
