@@ -140,8 +140,7 @@ internal sealed class GCodeWriter
                 NotApplicable(action, "a 3D printer has no external axes or arm angle.");
                 break;
             default:
-                NotApplicable(action, "the G-code compiler does not know this action.");
-                break;
+                throw ActionKinds.Unhandled(action, "The G-code writer");
         }
     }
 

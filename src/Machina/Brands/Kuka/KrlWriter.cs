@@ -235,8 +235,7 @@ internal sealed class KrlWriter
                 NotApplicable(action, "a KUKA program needs no start-up or shut-down sequence; this is for 3D printers.");
                 break;
             default:
-                NotApplicable(action, "the KUKA compiler does not know this action.");
-                break;
+                throw ActionKinds.Unhandled(action, "The KRL writer");
         }
     }
 

@@ -146,9 +146,12 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
             case ActionInitialization:
                 sink.Add(Indent + "# " + action.Describe() + " (nothing to do on a UR robot)");
                 break;
-            default:
+            case ActionSpeed or ActionAcceleration or ActionPrecision or ActionMotionMode or ActionCoordinates or ActionPushPop or ActionCustomCode:
+                // Settings travel as the next motion's a, v and r arguments; declarations are written at the top.
                 NoCode(action);
                 break;
+            default:
+                throw ActionKinds.Unhandled(action, "The URScript writer");
         }
     }
 

@@ -3,9 +3,9 @@ namespace Machina;
 /// <summary>Typed constructors for each instruction, rounding values the way the original host did (spec online §6.2, §6.6).</summary>
 internal readonly partial struct AbbRequest
 {
-    private const int MillimetreDecimals = 3;
-    private const int QuaternionDecimals = 4;
-    private const int DegreeDecimals = 3;
+    private const int MillimetreDecimals = RapidFacts.MillimetreDecimals;
+    private const int QuaternionDecimals = RapidFacts.QuaternionDecimals;
+    private const int DegreeDecimals = RapidFacts.MillimetreDecimals;
     private const int KilogramDecimals = 3;
 
     /// <summary>Code 1 (MoveL) or 2 (MoveJ) to an absolute TCP pose: position in mm (3 decimals), quaternion W X Y Z (4 decimals).</summary>

@@ -69,8 +69,7 @@ internal readonly partial struct AbbRequest
     {
         if (value == UnusedAxis)
         {
-            "9E9"u8.CopyTo(destination);
-            return 3;
+            return System.Text.Encoding.ASCII.GetBytes(RapidFacts.UnusedAxisText, destination);
         }
         Num.Clean(value).TryFormat(destination, out int written, "G15", Num.Inv);
         return written;

@@ -66,9 +66,13 @@ internal static class AbbActionEncoder
             case ActionCustomCode { IsDeclaration: false } custom:
                 into.Add(AbbRequest.Custom(id, custom.Statement));
                 break;
-            default:
-                // Push, DefineTool, MotionMode, Coordinates, Comment, declarations, 3D-printing actions: nothing to stream.
+            case ActionPushPop or ActionDefineTool or ActionMotionMode or ActionCoordinates or ActionComment or ActionCustomCode
+                or ActionInitialization or ActionTemperature or ActionExtrusion or ActionExtrusionRate:
+                // Kept on the host side (Push, DefineTool, MotionMode, Coordinates: they change the next requests), comments and
+                // declarations, and 3D-printing actions with no meaning on an ABB arm: nothing to stream.
                 break;
+            default:
+                throw ActionKinds.Unhandled(action, "The ABB encoder");
         }
         return into.Count - before;
     }

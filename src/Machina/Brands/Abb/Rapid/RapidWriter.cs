@@ -149,9 +149,12 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 WarnArmAngleConflict(action, cursor);
                 NoCode(action);
                 break;
-            default:
+            case ActionSpeed or ActionPrecision or ActionMotionMode or ActionCoordinates or ActionPushPop or ActionCustomCode:
+                // Settings travel in the next motion's speeddata and zonedata; declarations are written at the top.
                 NoCode(action);
                 break;
+            default:
+                throw ActionKinds.Unhandled(action, "The RAPID writer");
         }
     }
 

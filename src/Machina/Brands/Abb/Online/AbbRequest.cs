@@ -16,10 +16,10 @@ internal readonly partial struct AbbRequest
     public const int MaxId = 8_388_608;
 
     /// <summary>Longest text parameter: a RAPID string holds at most 80 characters.</summary>
-    public const int MaxTextLength = 80;
+    public const int MaxTextLength = RapidFacts.MaxStringLength;
 
     /// <summary>The value RAPID uses for an external axis that is not in use; printed as <c>9E9</c>.</summary>
-    public const double UnusedAxis = 9e9;
+    public const double UnusedAxis = RapidFacts.UnusedAxis;
 
     private readonly Parameters _values;
 

@@ -9,24 +9,25 @@ namespace Machina;
 internal static class RapidText
 {
     /// <summary>RAPID's limit on the length of a string value (TPWrite shows at most this many characters).</summary>
-    internal const int MaxStringLength = 80;
+    internal const int MaxStringLength = RapidFacts.MaxStringLength;
+
+    private const int Mm = RapidFacts.MillimetreDecimals;
+    private const int Q = RapidFacts.QuaternionDecimals;
 
     /// <summary>RAPID's limit on the length of an identifier.</summary>
     internal const int MaxIdentifierLength = 32;
 
-    /// <summary>The value RAPID uses for an external axis that is not there.</summary>
-    internal const string NoAxis = "9E9";
 
     /// <summary>Appends <paramref name="value"/> rounded to <paramref name="decimals"/> (midpoint to even), invariant, −0 as 0.</summary>
     internal static StringBuilder Num(this StringBuilder sb, double value, int decimals) => sb.AppendFixed(value, decimals);
 
     /// <summary>Appends <c>[x, y, z]</c> in mm with 3 decimals.</summary>
     internal static StringBuilder Position(this StringBuilder sb, Vector p) =>
-        sb.Append('[').Num(p.X, 3).Append(", ").Num(p.Y, 3).Append(", ").Num(p.Z, 3).Append(']');
+        sb.Append('[').Num(p.X, Mm).Append(", ").Num(p.Y, Mm).Append(", ").Num(p.Z, Mm).Append(']');
 
     /// <summary>Appends the quaternion <c>[q1, q2, q3, q4]</c> (W first) with 4 decimals.</summary>
     internal static StringBuilder Quaternion(this StringBuilder sb, Rotation r) =>
-        sb.Append('[').Num(r.W, 4).Append(", ").Num(r.X, 4).Append(", ").Num(r.Y, 4).Append(", ").Num(r.Z, 4).Append(']');
+        sb.Append('[').Num(r.W, Q).Append(", ").Num(r.X, Q).Append(", ").Num(r.Y, Q).Append(", ").Num(r.Z, Q).Append(']');
 
     /// <summary>Appends six external-axis values with 3 decimals, <c>9E9</c> for axes without a value; <paramref name="first"/> overrides axis 1.</summary>
     internal static StringBuilder ExternalAxes(this StringBuilder sb, ExternalAxes? axes, double? first = null)
@@ -41,11 +42,11 @@ internal static class RapidText
             double? value = i == 1 && first is not null ? first : axes?[i];
             if (value is double v)
             {
-                sb.Num(v, 3);
+                sb.Num(v, Mm);
             }
             else
             {
-                sb.Append(NoAxis);
+                sb.Append(RapidFacts.UnusedAxisText);
             }
         }
         return sb.Append(']');
@@ -65,8 +66,8 @@ internal static class RapidText
 
     /// <summary>Appends a jointtarget: six joint angles in degrees (3 decimals) and the external axes.</summary>
     internal static StringBuilder JointTarget(this StringBuilder sb, Joints j, ExternalAxes? axes) =>
-        sb.Append("[[").Num(j.J1, 3).Append(", ").Num(j.J2, 3).Append(", ").Num(j.J3, 3).Append(", ").Num(j.J4, 3)
-          .Append(", ").Num(j.J5, 3).Append(", ").Num(j.J6, 3).Append("], ").ExternalAxes(axes).Append(']');
+        sb.Append("[[").Num(j.J1, Mm).Append(", ").Num(j.J2, Mm).Append(", ").Num(j.J3, Mm).Append(", ").Num(j.J4, Mm)
+          .Append(", ").Num(j.J5, Mm).Append(", ").Num(j.J6, Mm).Append("], ").ExternalAxes(axes).Append(']');
 
     /// <summary>
     /// tooldata: held by the robot, TCP frame (mm, quaternion), load (kg, centre of gravity in mm, principal axes, no inertia).
@@ -77,9 +78,9 @@ internal static class RapidText
         var sb = new StringBuilder(96);
         Vector t = tool.TcpPosition, c = tool.CenterOfGravity;
         Rotation q = tool.TcpOrientation;
-        sb.Append("[TRUE,[[").Num(t.X, 3).Append(',').Num(t.Y, 3).Append(',').Num(t.Z, 3).Append("],[")
-          .Num(q.W, 4).Append(',').Num(q.X, 4).Append(',').Num(q.Y, 4).Append(',').Num(q.Z, 4).Append("]],[")
-          .Num(Math.Max(tool.Weight, MinToolMass), 3).Append(",[").Num(c.X, 3).Append(',').Num(c.Y, 3).Append(',').Num(c.Z, 3)
+        sb.Append("[TRUE,[[").Num(t.X, Mm).Append(',').Num(t.Y, Mm).Append(',').Num(t.Z, Mm).Append("],[")
+          .Num(q.W, Q).Append(',').Num(q.X, Q).Append(',').Num(q.Y, Q).Append(',').Num(q.Z, Q).Append("]],[")
+          .Num(Math.Max(tool.Weight, MinToolMass), 3).Append(",[").Num(c.X, Mm).Append(',').Num(c.Y, Mm).Append(',').Num(c.Z, Mm)
           .Append("],[1,0,0,0],0,0,0]]");
         return sb.ToString();
     }
