@@ -39,7 +39,7 @@ public sealed partial class VirtualAbbController
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(joints), token).ConfigureAwait(false);
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(axes), token).ConfigureAwait(false);
                 Interlocked.Increment(ref _monitorReportsSent);
-                await Task.Delay(MonitorPeriod, _time, token).ConfigureAwait(false);
+                await Task.Delay(MonitorPeriod, Clock, token).ConfigureAwait(false);
             }
         }
         catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
