@@ -7,11 +7,19 @@ internal sealed class KukaOnline : IOnlineBrand
     public RobotType Brand => RobotType.KUKA;
 
     /// <inheritdoc/>
-    public IDeviceDriver CreateDriver(DeviceContext context) => throw new NotImplementedException();
+    public IDeviceDriver CreateDriver(DeviceContext context) => new KukaDriver(context);
 
     /// <inheritdoc/>
     public string? WhyCannotStream(RobotAction action) => KukaActionEncoder.WhyCannotStream(action);
 
     /// <inheritdoc/>
-    public IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters) => throw new NotImplementedException();
+    public IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters) =>
+        KukaDriverModules.Create(
+            DriverParameters.Require(parameters, "HOSTNAME"),
+            DriverParameters.Port(parameters),
+            Advance(DriverParameters.Number(parameters, "ADVANCE", KukaDriverModules.DefaultAdvance, "a whole number from 0 to 5")));
+
+    private static int Advance(double value) => value == Math.Floor(value) && value is >= 0 and <= 5
+        ? (int)value
+        : throw new ArgumentException($"ADVANCE must be a whole number from 0 to 5 (KRL's $ADVANCE), not {Num.G(value)}.", "parameters");
 }
