@@ -11,8 +11,6 @@ namespace Machina.Simulation;
 /// </summary>
 public sealed partial class VirtualAbbController : VirtualController<VirtualAbbState>
 {
-    private const int MaxPortAttempts = 50;
-
     /// <summary>Longest statement read before its ';': 11 numbers and a text of at most 80 characters each, as the RAPID driver reads them.</summary>
     internal const int MaxStatementLength = 14 * 82;
 
@@ -50,7 +48,7 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
 
     private protected override Task ListenAsync(CancellationToken token)
     {
-        (_driverListener, _monitorListener) = BindPortPair();
+        (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
         Run(AcceptDriverClientsAsync);
@@ -62,35 +60,6 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
     {
         _driverListener?.Stop();
         _monitorListener?.Stop();
-    }
-
-    /// <summary>Binds an OS-chosen port P on 127.0.0.1 for the driver and P + 1 for the monitor.</summary>
-    private static (TcpListener Driver, TcpListener Monitor) BindPortPair()
-    {
-        for (int attempt = 0; ; attempt++)
-        {
-            var driver = new TcpListener(IPAddress.Loopback, 0);
-            driver.Start();
-            int port = ((IPEndPoint)driver.LocalEndpoint).Port;
-            if (port < IPEndPoint.MaxPort)
-            {
-                var monitor = new TcpListener(IPAddress.Loopback, port + 1);
-                try
-                {
-                    monitor.Start();
-                    return (driver, monitor);
-                }
-                catch (SocketException) when (attempt < MaxPortAttempts)
-                {
-                    // P + 1 is taken: try another pair.
-                }
-            }
-            driver.Stop();
-            if (attempt >= MaxPortAttempts)
-            {
-                throw new InvalidOperationException("Could not find two free consecutive ports on 127.0.0.1.");
-            }
-        }
     }
 
     private async Task AcceptDriverClientsAsync(CancellationToken token)
