@@ -5,27 +5,6 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualAbbController
 {
-    private async Task AcceptMonitorClientsAsync(CancellationToken token)
-    {
-        while (!token.IsCancellationRequested)
-        {
-            TcpClient client;
-            try
-            {
-                client = await _monitorListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
-            {
-                return;
-            }
-            using (client)
-            {
-                client.NoDelay = true;
-                await ReportAsync(client.GetStream(), token).ConfigureAwait(false);
-            }
-        }
-    }
-
     /// <summary>Sends <c>$24</c> reports in three chunks, like the RAPID monitor, until the client leaves or the controller stops.</summary>
     private async Task ReportAsync(NetworkStream stream, CancellationToken token)
     {

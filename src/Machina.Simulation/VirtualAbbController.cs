@@ -51,8 +51,8 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
         (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
-        Run(AcceptDriverClientsAsync);
-        Run(AcceptMonitorClientsAsync);
+        Run(token => ServeDriverClientsAsync(_driverListener, GreetAsync, ReadRequestsAsync, token));
+        Run(token => ServeClientsAsync(_monitorListener, ReportAsync, token));
         return Task.CompletedTask;
     }
 
@@ -60,28 +60,6 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
     {
         _driverListener?.Stop();
         _monitorListener?.Stop();
-    }
-
-    private async Task AcceptDriverClientsAsync(CancellationToken token)
-    {
-        while (!token.IsCancellationRequested)
-        {
-            TcpClient client;
-            try
-            {
-                client = await _driverListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
-            {
-                return;
-            }
-            client.NoDelay = true;
-            if (await AttachClientAsync(client, GreetAsync, token).ConfigureAwait(false))
-            {
-                await ReadRequestsAsync(client.GetStream(), token).ConfigureAwait(false);
-                DropClient(client);
-            }
-        }
     }
 
     /// <summary>The handshake: version, pose, joints, external axes and, from driver 1.6, the progress (<c>$25</c>).</summary>

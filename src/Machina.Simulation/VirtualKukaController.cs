@@ -75,8 +75,9 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
         (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
-        Run(AcceptDriverClientsAsync);
-        Run(AcceptMonitorClientsAsync);
+        // Like the KRL driver: whatever the last client sent is in the ring before the next one gets the state.
+        Run(token => ServeDriverClientsAsync(_driverListener, GreetAsync, ReadBatchesAsync, token));
+        Run(token => ServeClientsAsync(_monitorListener, ServeMonitorAsync, token));
         return Task.CompletedTask;
     }
 
@@ -84,29 +85,6 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
     {
         _driverListener?.Stop();
         _monitorListener?.Stop();
-    }
-
-    private async Task AcceptDriverClientsAsync(CancellationToken token)
-    {
-        while (!token.IsCancellationRequested)
-        {
-            TcpClient client;
-            try
-            {
-                client = await _driverListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
-            {
-                return;
-            }
-            client.NoDelay = true;
-            // Like the KRL driver: whatever the last client sent is in the ring before the next one gets the state.
-            if (await AttachClientAsync(client, GreetAsync, token).ConfigureAwait(false))
-            {
-                await ReadBatchesAsync(client.GetStream(), token).ConfigureAwait(false);
-                DropClient(client);
-            }
-        }
     }
 
     /// <summary>The state on every connection: version, axes, pose and, from driver 2, the progress.</summary>
@@ -182,29 +160,14 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
         return true;
     }
 
-    private async Task AcceptMonitorClientsAsync(CancellationToken token)
+    /// <summary>One monitor client: its report intervals are read while pose reports go out, until it leaves.</summary>
+    private async Task ServeMonitorAsync(NetworkStream stream, CancellationToken token)
     {
-        while (!token.IsCancellationRequested)
-        {
-            TcpClient client;
-            try
-            {
-                client = await _monitorListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
-            {
-                return;
-            }
-            using (client)
-            {
-                client.NoDelay = true;
-                using var gone = CancellationTokenSource.CreateLinkedTokenSource(token);
-                Task rates = ReadMonitorRatesAsync(client.GetStream(), gone);
-                await ReportAsync(client.GetStream(), gone.Token).ConfigureAwait(false);
-                await gone.CancelAsync().ConfigureAwait(false);
-                await rates.ConfigureAwait(false);
-            }
-        }
+        using var gone = CancellationTokenSource.CreateLinkedTokenSource(token);
+        Task rates = ReadMonitorRatesAsync(stream, gone);
+        await ReportAsync(stream, gone.Token).ConfigureAwait(false);
+        await gone.CancelAsync().ConfigureAwait(false);
+        await rates.ConfigureAwait(false);
     }
 
     /// <summary>Reads <c>MON</c> elements (the report interval) until the client leaves, then stops the reports.</summary>
