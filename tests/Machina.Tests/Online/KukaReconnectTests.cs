@@ -39,6 +39,36 @@ public class KukaReconnectTests
     }
 
     [Fact]
+    public async Task Reconnect_ActionsHeldOnTheHostForAFullRing_SentAfterTheOnesTheControllerHolds()
+    {
+        await using var controller = await StartKukaAsync();
+        var (bot, executed, lost) = await ConnectKukaAsync(controller, b => { b.BlockSize = 150; b.PendingCount = 150; });
+        controller.StopAnswering();
+        bot.MoveTo(Start.X, Start.Y, Start.Z);
+        for (int i = 0; i < 149; i++)
+        {
+            bot.Move(0, i % 2 == 0 ? 10 : -10, 0);
+        }
+        await EventuallyAsync(() => controller.BufferedRequestCount == KukaProtocol.Capacity, "the ring to fill");
+        controller.CloseConnectionAfter(3);
+        controller.ResumeAnswering(3);
+        await lost.Task.WaitAsync(Limit);
+
+        // 97 actions wait in the ring, 50 never left the host.
+        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
+        controller.ResumeAnswering();
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+
+        Assert.Equal(Enumerable.Range(1, 150), executed);
+        Assert.Equal(Enumerable.Range(1, 150), ReceivedIds(controller));
+        Assert.Equal(150, controller.RequestsExecuted);
+        Assert.Equal(new Vector(400, 10, 400), controller.State.Position);
+        Assert.Empty(controller.Errors);
+        await bot.DisconnectAsync();
+    }
+
+    [Fact]
     public async Task Reconnect_ControllerRanTheRestWhileDisconnected_CountsThemExecutedAndKeepsTargets()
     {
         await using var controller = await StartKukaAsync();
