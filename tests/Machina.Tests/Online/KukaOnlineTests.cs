@@ -193,6 +193,24 @@ public class KukaOnlineTests
     }
 
     [Fact]
+    public async Task Send_LongMessageAndToolWeight_ShownCutAndToldInTheLog()
+    {
+        await using var controller = await StartKukaAsync();
+        var log = new ConcurrentQueue<LogEntry>();
+        var (bot, _, _) = await ConnectKukaAsync(controller, b => b.Logger.Logged += (_, e) => log.Enqueue(e));
+        bot.Message(new string('a', 70) + " and the rest is cut");
+        bot.DefineTool("gripper", 0, 0, 120, 1, 0, 0, 0, 1, 0, 2.5, 0, 0, 60);
+        bot.AttachTool("gripper");
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+
+        Assert.Contains(new string('a', 70) + " and the r", controller.PendantMessages);
+        Assert.Contains(log, e => e.Level == LogLevel.WARNING && e.Message.Contains("messages hold 80 characters", StringComparison.Ordinal));
+        Assert.Contains(log, e => e.Level == LogLevel.WARNING && e.Message.Contains("tool \"gripper\" are not sent", StringComparison.Ordinal));
+        Assert.Equal(new Pose(new Vector(0, 0, 120), Rotation.Identity), controller.State.Tool);
+        await bot.DisconnectAsync();
+    }
+
+    [Fact]
     public async Task MotionUpdateRate_ReachesTheMonitor_LivePosesFeedTheMotionCursor()
     {
         await using var controller = await StartKukaAsync(new VirtualKukaControllerOptions { SpeedFactor = 20 });
