@@ -1,3 +1,5 @@
+using System.Collections.Immutable;
+
 namespace Machina;
 
 /// <summary>
@@ -40,10 +42,10 @@ internal static class KukaProtocol
     public const string MonitorRate = "MON";
 
     /// <summary>Attribute names of a state or pose report: the axes in degrees, then the pose (mm, degrees).</summary>
-    public static readonly string[] AxisNames = ["A1", "A2", "A3", "A4", "A5", "A6"];
+    public static readonly ImmutableArray<string> AxisNames = ["A1", "A2", "A3", "A4", "A5", "A6"];
 
     /// <summary>Attribute names of the action parameters.</summary>
-    public static readonly string[] ValueNames = ["V1", "V2", "V3", "V4", "V5", "V6", "V7"];
+    public static readonly ImmutableArray<string> ValueNames = ["V1", "V2", "V3", "V4", "V5", "V6", "V7"];
 }
 
 /// <summary>What the KRL driver does with an action (<c>A/@T</c>); the parameters <c>V1</c>…<c>V7</c> are listed per code.</summary>
