@@ -1,11 +1,11 @@
-// The paper's "Hello Robot" (Code Sample 1), streamed online to an ABB controller.
-// With no arguments it starts a virtual ABB controller on this computer; with --host and --port it talks to a real
-// robot running Machina's RAPID driver (see Robot.GetDeviceDriverModules).
+// The paper's "Hello Robot" (Code Sample 1), streamed online to an ABB controller (or a KUKA one with --brand kuka).
+// With no host it starts a virtual controller on this computer; with --host and --port it talks to a real robot
+// running Machina's driver (see Robot.GetDeviceDriverModules).
 using System.Diagnostics;
 using Machina;
 
 await using SampleController? controller = await SampleController.OpenAsync(
-    args, "HelloRobot [--host <controller address> --port <driver port>]", speedFactor: 4);
+    args, "HelloRobot [--brand abb|kuka] [--host <controller address> --port <driver port>]", speedFactor: 4);
 if (controller is null)
 {
     return 2;
@@ -13,7 +13,7 @@ if (controller is null)
 
 try
 {
-    var bot = Robot.Create("HelloRobot", "ABB");
+    var bot = Robot.Create("HelloRobot", controller.Brand);
     bot.ControlMode("online");
     long lastMotion = 0;
     bot.ActionIssued += (_, e) => Console.WriteLine($"  issued    #{e.LastAction.Id} {e.LastAction}");

@@ -5,27 +5,6 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualAbbController
 {
-    private async Task AcceptMonitorClientsAsync(CancellationToken token)
-    {
-        while (!token.IsCancellationRequested)
-        {
-            TcpClient client;
-            try
-            {
-                client = await _monitorListener!.AcceptTcpClientAsync(token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
-            {
-                return;
-            }
-            using (client)
-            {
-                client.NoDelay = true;
-                await ReportAsync(client.GetStream(), token).ConfigureAwait(false);
-            }
-        }
-    }
-
     /// <summary>Sends <c>$24</c> reports in three chunks, like the RAPID monitor, until the client leaves or the controller stops.</summary>
     private async Task ReportAsync(NetworkStream stream, CancellationToken token)
     {
@@ -39,7 +18,7 @@ public sealed partial class VirtualAbbController
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(joints), token).ConfigureAwait(false);
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(axes), token).ConfigureAwait(false);
                 Interlocked.Increment(ref _monitorReportsSent);
-                await Task.Delay(MonitorPeriod, _time, token).ConfigureAwait(false);
+                await Task.Delay(MonitorPeriod, Clock, token).ConfigureAwait(false);
             }
         }
         catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)

@@ -1,10 +1,13 @@
 namespace Machina.Simulation;
 
-/// <summary>A motion in progress: the state it started from, the state it ends in, and when.</summary>
-internal sealed record VirtualMotion(VirtualAbbState From, VirtualAbbState To, long StartTimestamp, TimeSpan Duration)
+/// <summary>
+/// A motion in progress: the state it started from, the state it ends in, and when. A linear move interpolates the pose and,
+/// with a model, solves the joints at each point; a joint move interpolates the joints and, with a model, computes the pose.
+/// </summary>
+internal sealed record VirtualMotion(VirtualRobotState From, VirtualRobotState To, long StartTimestamp, TimeSpan Duration, bool InJointSpace, RobotModel? Model)
 {
     /// <summary>The state part-way through the motion at <paramref name="now"/> (a timestamp of the same clock).</summary>
-    public VirtualAbbState At(TimeProvider time, long now)
+    public VirtualRobotState At(TimeProvider time, long now)
     {
         double t = Duration <= TimeSpan.Zero ? 1 : time.GetElapsedTime(StartTimestamp, now) / Duration;
         if (t >= 1)
@@ -12,12 +15,20 @@ internal sealed record VirtualMotion(VirtualAbbState From, VirtualAbbState To, l
             return To;
         }
         t = Math.Max(0, t);
-        return To with
+        if (InJointSpace)
         {
-            Position = From.Position + (To.Position - From.Position) * t,
-            Rotation = Interpolate(From.Rotation, To.Rotation, t),
-            Joints = Lerp(From.Joints, To.Joints, t),
-        };
+            Joints joints = Lerp(From.Joints, To.Joints, t);
+            if (Model is not null)
+            {
+                Pose tcp = Model.Kinematics.Forward(joints) * (To.Tool ?? Pose.Identity);
+                return To with { Position = tcp.Position, Rotation = tcp.Rotation, Joints = joints };
+            }
+            return To with { Position = From.Position + (To.Position - From.Position) * t, Rotation = Interpolate(From.Rotation, To.Rotation, t), Joints = joints };
+        }
+        var position = From.Position + (To.Position - From.Position) * t;
+        var rotation = Interpolate(From.Rotation, To.Rotation, t);
+        Joints? solved = Model?.Kinematics.Closest(new Pose(position, rotation) * (To.Tool ?? Pose.Identity).Inverse(), From.Joints);
+        return To with { Position = position, Rotation = rotation, Joints = solved ?? Lerp(From.Joints, To.Joints, t) };
     }
 
     private static Joints Lerp(Joints a, Joints b, double t) => new(

@@ -51,7 +51,7 @@ public class AbbReconnectTests
     [Fact]
     public async Task Reconnect_DriverWithoutProgress_SendsUnconfirmedAgainFromTheReportedPose()
     {
-        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, DriverVersion = new Version(1, 5, 0) });
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, DriverVersion = new Version(1, 5, 0), Model = null });
         var (bot, executed, released) = await RunWhileDisconnectedAndReconnectAsync(controller);
 
         // The documented limit of old drivers: the host cannot know what ran, so it sends it again.

@@ -6,7 +6,9 @@ namespace Machina.Tests.Simulation;
 
 public class VirtualAbbControllerTests
 {
-    private static readonly VirtualAbbControllerOptions Instant = new() { InstantExecution = true };
+    // These tests check the protocol with raw values (poses outside an IRB 120's reach, joints that do not match the pose),
+    // so the controller keeps joints and pose apart; VirtualControllerCoreTests check the robot model.
+    private static readonly VirtualAbbControllerOptions Instant = new() { InstantExecution = true, Model = null };
 
     [Fact]
     public async Task StartAsync_OsChosenPorts_MonitorIsDriverPortPlusOne()
@@ -110,6 +112,7 @@ public class VirtualAbbControllerTests
         var clock = new ManualClock();
         await using var controller = new VirtualAbbController(new VirtualAbbControllerOptions
         {
+            Model = null,
             InitialPosition = new Vector(0, 0, 0),
             InitialRotation = Rotation.Identity,
             SpeedFactor = 20,

@@ -21,10 +21,13 @@ internal static class KrlFormat
     internal static bool RoundsToZero(double perMm) => perMm > 0 && Math.Round(perMm / 1000, 6) < MinRate;
 
     /// <summary>Speed in mm/s as KRL's <c>$VEL.CP</c> value in m/s (at least <see cref="MinRate"/>).</summary>
-    internal static string SpeedMetresPerSecond(double mmPerSecond) => Fine(Math.Max(Math.Round(mmPerSecond / 1000, 6), MinRate));
+    internal static string SpeedMetresPerSecond(double mmPerSecond) => Fine(PerMetre(mmPerSecond));
 
     /// <summary>Acceleration in mm/s² (above 0) as KRL's <c>$ACC.CP</c> value in m/s² (at least <see cref="MinRate"/>).</summary>
-    internal static string AccelerationMetresPerSecond2(double mmPerSecond2) => Fine(Math.Max(Math.Round(mmPerSecond2 / 1000, 6), MinRate));
+    internal static string AccelerationMetresPerSecond2(double mmPerSecond2) => Fine(PerMetre(mmPerSecond2));
+
+    /// <summary>A speed (mm/s) or acceleration (mm/s²) in m/s or m/s², rounded to 6 decimals and at least <see cref="MinRate"/>.</summary>
+    internal static double PerMetre(double perMm) => Math.Max(Math.Round(perMm / 1000, 6), MinRate);
 
     /// <summary>Milliseconds as KRL's <c>WAIT SEC</c> value in seconds, exact and never in exponent form.</summary>
     internal static string Seconds(long milliseconds) => ProgramText.Seconds(milliseconds);
@@ -42,8 +45,13 @@ internal static class KrlFormat
     /// <summary>An angle in degrees with 3 decimals; −180 is written as 180 (the same angle).</summary>
     internal static string Angle(double degrees) => AppendAngle(new StringBuilder(12), degrees).ToString();
 
-    private static StringBuilder AppendAngle(StringBuilder sb, double degrees) =>
-        FixedPoint.Append(sb, Math.Round(degrees * 1000) == -180_000 ? 180 : degrees, 3);
+    private static StringBuilder AppendAngle(StringBuilder sb, double degrees) => FixedPoint.Append(sb, Degrees(degrees), 3);
+
+    /// <summary>An angle with −180 (to 3 decimals) turned into 180, the same angle: how KRL programs and the online driver get it.</summary>
+    internal static double Degrees(double degrees) => Math.Round(degrees * 1000) == -180_000 ? 180 : degrees;
+
+    /// <summary>The rotation of KUKA's A, B, C (degrees): the inverse of <see cref="Abc"/>.</summary>
+    internal static Rotation FromAbc(double a, double b, double c) => Rotation.FromYawPitchRoll(a, b, c);
 
     private static StringBuilder AppendMm(StringBuilder sb, double value) => FixedPoint.Append(sb, value, 3);
 

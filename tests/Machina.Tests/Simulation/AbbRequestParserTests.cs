@@ -1,4 +1,6 @@
-namespace Machina.Tests.Brands.Abb;
+using Machina.Simulation;
+
+namespace Machina.Tests.Simulation;
 
 public class AbbRequestParserTests
 {

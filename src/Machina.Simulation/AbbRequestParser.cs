@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace Machina;
+namespace Machina.Simulation;
 
 /// <summary>
 /// Reads request statements the way the RAPID driver does (spec online §6.7): optional <c>@id</c>, a numeric code,

@@ -1,0 +1,84 @@
+namespace Machina.Simulation;
+
+public abstract partial class VirtualController<TState>
+{
+    private int _connectionCount;
+    private int _requestsReceived;
+    private int _lastExecutedId;
+    private int _lastReceivedId;
+    private int _requestsExecuted;
+    private int _acknowledgementsSent;
+    private int _maxUnacknowledged;
+
+    /// <summary>How many driver clients have connected (and received the handshake) so far.</summary>
+    public int ConnectionCount => Volatile.Read(ref _connectionCount);
+
+    /// <summary>How many well-formed requests have been read from the driver connection; a request is counted just before it enters the buffer, so it may still be on its way there.</summary>
+    public int RequestsReceived => Volatile.Read(ref _requestsReceived);
+
+    /// <summary>How many requests have been executed or refused (acknowledged or, with no client, ack lost).</summary>
+    public int RequestsExecuted => Volatile.Read(ref _requestsExecuted);
+
+    /// <summary>How many acknowledgements actually reached a client.</summary>
+    public int AcknowledgementsSent => Volatile.Read(ref _acknowledgementsSent);
+
+    /// <summary>The largest number of requests received but not yet executed seen at any moment: how far the host streamed ahead.</summary>
+    public int MaxUnacknowledged => Volatile.Read(ref _maxUnacknowledged);
+
+    /// <summary>Requests waiting in the instruction buffer right now (at most the options' <c>BufferCapacity</c>).</summary>
+    public int BufferedRequestCount => _buffer.Reader.Count;
+
+    /// <summary>The last received requests, as text (bounded by the options' <c>RequestLogCapacity</c>).</summary>
+    public IReadOnlyList<string> ReceivedRequests
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return [.. _requestLog];
+            }
+        }
+    }
+
+    /// <summary>Texts the driver would have shown on the teach pendant (messages, errors), the last 1000.</summary>
+    public IReadOnlyList<string> PendantMessages
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return [.. _pendant];
+            }
+        }
+    }
+
+    /// <summary>Malformed or refused requests, with the reason (the last 1000); the controller keeps serving after each.</summary>
+    public IReadOnlyList<string> Errors
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return [.. _errors];
+            }
+        }
+    }
+
+    /// <summary>The robot state now: part-way through the current motion, or the last target reached.</summary>
+    public TState State
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return _motion is null ? _state : (TState)_motion.At(Clock, Clock.GetTimestamp());
+            }
+        }
+    }
+
+    /// <summary>The wire id of the last request executed (0 when none); read it while greeting a client, under the send lock.</summary>
+    private protected int LastExecutedId => _lastExecutedId;
+
+    /// <summary>The wire id of the last request received (0 when none).</summary>
+    private protected int LastReceivedId => Volatile.Read(ref _lastReceivedId);
+}

@@ -1,0 +1,84 @@
+namespace Machina.Simulation;
+
+/// <summary>
+/// Settings every virtual controller shares: the robot it simulates, where that robot starts, how fast time runs and how
+/// much it keeps for inspection. Each brand's options derive from this record and set its own defaults.
+/// </summary>
+public abstract record VirtualControllerOptions
+{
+    /// <summary>
+    /// The simulated arm: its kinematics keep joints and pose consistent, and a target it cannot reach is refused. Null
+    /// keeps joints and pose as separate values (a joint move changes only the joints, a linear move only the pose).
+    /// </summary>
+    public RobotModel? Model { get; init; }
+
+    /// <summary>Joint angles (degrees) at start.</summary>
+    public Joints InitialJoints { get; init; }
+
+    /// <summary>
+    /// TCP position (mm) at start, or null for where <see cref="InitialJoints"/> put the flange. With a model, the joints
+    /// then start at the solution for this pose closest to <see cref="InitialJoints"/>.
+    /// </summary>
+    public Vector? InitialPosition { get; init; }
+
+    /// <summary>TCP orientation at start, or null for the orientation <see cref="InitialJoints"/> give (tool down without a model).</summary>
+    public Rotation? InitialRotation { get; init; }
+
+    /// <summary>How much faster than real time motions and waits run (10 = ten times faster). Default 1.</summary>
+    public double SpeedFactor { get; init; } = 1;
+
+    /// <summary>When true every instruction completes at once (for tests and benchmarks). Default false.</summary>
+    public bool InstantExecution { get; init; }
+
+    /// <summary>How many received requests wait for execution before the controller stops reading the socket. Default 1000.</summary>
+    public int BufferCapacity { get; init; } = 1000;
+
+    /// <summary>How many received requests are kept for inspection (oldest dropped). 0 keeps none. Default 10 000.</summary>
+    public int RequestLogCapacity { get; init; } = 10_000;
+
+    /// <summary>Clock used for motion timing and state reports. Default: the system clock.</summary>
+    public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
+
+    /// <summary>Throws <see cref="ArgumentException"/> naming the first setting that cannot work.</summary>
+    internal virtual void Validate()
+    {
+        if (!(SpeedFactor > 0) || !double.IsFinite(SpeedFactor))
+        {
+            throw new ArgumentException("SpeedFactor must be a positive number.", nameof(SpeedFactor));
+        }
+        if (BufferCapacity < 1)
+        {
+            throw new ArgumentException("BufferCapacity must be at least 1.", nameof(BufferCapacity));
+        }
+        if (RequestLogCapacity < 0)
+        {
+            throw new ArgumentException("RequestLogCapacity cannot be negative.", nameof(RequestLogCapacity));
+        }
+        ArgumentNullException.ThrowIfNull(TimeProvider);
+        if (InitialPosition is { IsFinite: false } || !InitialJoints.IsFinite)
+        {
+            throw new ArgumentException("The initial position and joints must be finite numbers.");
+        }
+    }
+
+    /// <summary>
+    /// The starting pose and joints: from the model when there is one (forward kinematics of <see cref="InitialJoints"/>, or
+    /// the closest solution for <see cref="InitialPosition"/>), otherwise the given values with <paramref name="fallback"/>.
+    /// </summary>
+    internal (Vector Position, Rotation Rotation, Joints Joints) StartingPoint(Pose fallback)
+    {
+        if (Model is null)
+        {
+            return (InitialPosition ?? fallback.Position, InitialRotation ?? fallback.Rotation, InitialJoints);
+        }
+        Pose flange = Model.Kinematics.Forward(InitialJoints);
+        if (InitialPosition is null && InitialRotation is null)
+        {
+            return (flange.Position, flange.Rotation, InitialJoints);
+        }
+        var pose = new Pose(InitialPosition ?? flange.Position, InitialRotation ?? flange.Rotation);
+        Joints joints = Model.Kinematics.Closest(pose, InitialJoints)
+            ?? throw new ArgumentException($"The {Model.Name} cannot reach the initial pose {pose}; give reachable initial values or no model.");
+        return (pose.Position, pose.Rotation, joints);
+    }
+}

@@ -1,0 +1,47 @@
+namespace Machina.Simulation;
+
+/// <summary>How a <see cref="VirtualKukaController"/> writes its acknowledgements to the socket (to test how the host reads them).</summary>
+public enum AcknowledgementWrites
+{
+    /// <summary>One write per acknowledgement.</summary>
+    Whole,
+
+    /// <summary>Each acknowledgement in two writes, cut inside the element.</summary>
+    Split,
+
+    /// <summary>Two acknowledgements in one write whenever a second action is waiting to run.</summary>
+    Joined,
+}
+
+/// <summary>Settings of a <see cref="VirtualKukaController"/>. Every property has a usable default.</summary>
+public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
+{
+    /// <summary>A KR 6 R900 sixx at (0, -90, 90, 0, 90, 0): upper arm up, forearm forward, tool pointing down.</summary>
+    public VirtualKukaControllerOptions()
+    {
+        Model = RobotModels.Get("KR 6 R900 sixx");
+        InitialJoints = new Joints(0, -90, 90, 0, 90, 0);
+    }
+
+    /// <summary>Time between two pose reports on the monitor port until the host asks for another. Default 20 ms (50 Hz).</summary>
+    public TimeSpan MonitorPeriod { get; init; } = TimeSpan.FromMilliseconds(20);
+
+    /// <summary>Driver version sent in the state (<c>VR</c>). Default 2.0, Machina's KRL driver; below 2 the state has no progress, like the original's 1.0.</summary>
+    public Version DriverVersion { get; init; } = new(2, 0);
+
+    /// <summary>How acknowledgements are written. Default: one write each.</summary>
+    public AcknowledgementWrites AcknowledgementWrites { get; init; } = AcknowledgementWrites.Whole;
+
+    /// <summary>Where the robot starts without a model: (455, 0, 935) with the tool pointing down.</summary>
+    internal static Pose DefaultStart => new(new Vector(455, 0, 935), Rotation.FlippedAroundY);
+
+    internal override void Validate()
+    {
+        base.Validate();
+        if (MonitorPeriod <= TimeSpan.Zero)
+        {
+            throw new ArgumentException("MonitorPeriod must be positive.", nameof(MonitorPeriod));
+        }
+        ArgumentNullException.ThrowIfNull(DriverVersion);
+    }
+}

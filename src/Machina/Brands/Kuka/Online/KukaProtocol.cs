@@ -1,0 +1,92 @@
+using System.Collections.Immutable;
+
+namespace Machina;
+
+/// <summary>
+/// The facts the host, Machina's KRL driver (drivers/kuka) and the virtual KUKA controller share: element and attribute names,
+/// the driver version and the size of the driver's action ring (docs/protocol-kuka.md).
+/// </summary>
+internal static class KukaProtocol
+{
+    /// <summary>Version of the KRL driver this Machina ships (<c>S/@VR</c>); 2.x reports its progress, 1.0 was the original's.</summary>
+    public const string DriverVersion = "2.0";
+
+    /// <summary>Slots of the driver's action ring: the host never has more actions sent and unacknowledged than this.</summary>
+    public const int Capacity = 100;
+
+    /// <summary>Longest message text the driver shows (KRL's message text is a CHAR[80]).</summary>
+    public const int MaxTextLength = 80;
+
+    /// <summary>Number of parameters of an action (<c>V1</c>…<c>V7</c>).</summary>
+    public const int ValueCount = 7;
+
+    /// <summary>Root of a batch of actions, host to driver: <c>&lt;DT&gt;&lt;DR&gt;&lt;A …/&gt;…&lt;/DR&gt;&lt;/DT&gt;</c>.</summary>
+    public const string Batch = "DT";
+
+    /// <summary>The list of actions inside a batch.</summary>
+    public const string Actions = "DR";
+
+    /// <summary>One action: attributes <c>ID</c>, <c>T</c>, <c>V1</c>…<c>V7</c>, <c>M</c>.</summary>
+    public const string Action = "A";
+
+    /// <summary>The driver's state, sent on every connection: version, axes, pose and progress.</summary>
+    public const string State = "S";
+
+    /// <summary>An acknowledgement: attribute <c>ID</c>, the action the driver executed.</summary>
+    public const string Acknowledgement = "R";
+
+    /// <summary>A live pose report on the monitor channel (driver port + 1).</summary>
+    public const string Pose = "P";
+
+    /// <summary>Host to monitor: how often to report, attribute <c>Ms</c> (milliseconds).</summary>
+    public const string MonitorRate = "MON";
+
+    /// <summary>Attribute names of a state or pose report: the axes in degrees, then the pose (mm, degrees).</summary>
+    public static readonly ImmutableArray<string> AxisNames = ["A1", "A2", "A3", "A4", "A5", "A6"];
+
+    /// <summary>Attribute names of the action parameters.</summary>
+    public static readonly ImmutableArray<string> ValueNames = ["V1", "V2", "V3", "V4", "V5", "V6", "V7"];
+}
+
+/// <summary>What the KRL driver does with an action (<c>A/@T</c>); the parameters <c>V1</c>…<c>V7</c> are listed per code.</summary>
+internal enum KukaActionCode
+{
+    /// <summary><c>LIN</c> to X, Y, Z (mm), A, B, C (degrees) in V1…V6.</summary>
+    Linear = 1,
+
+    /// <summary><c>PTP</c> to the Cartesian pose X, Y, Z, A, B, C in V1…V6.</summary>
+    JointToPose = 2,
+
+    /// <summary><c>PTP</c> to axes A1…A6 (degrees) in V1…V6.</summary>
+    JointToAxes = 3,
+
+    /// <summary><c>$VEL.CP</c> = V1 (m/s).</summary>
+    Speed = 4,
+
+    /// <summary><c>$ACC.CP</c> = V1 (m/s²), or the controller's default when V1 is 0.</summary>
+    Acceleration = 5,
+
+    /// <summary><c>$APO.CDIS</c> = V1 (mm); 0 stops exactly at each target.</summary>
+    Precision = 6,
+
+    /// <summary><c>WAIT SEC</c> V1 (seconds).</summary>
+    Wait = 7,
+
+    /// <summary>Shows the text <c>M</c> as a notification message.</summary>
+    Message = 8,
+
+    /// <summary><c>$TOOL</c> = the frame X, Y, Z, A, B, C in V1…V6.</summary>
+    AttachTool = 9,
+
+    /// <summary><c>$TOOL = $NULLFRAME</c>.</summary>
+    DetachTool = 10,
+
+    /// <summary><c>$OUT[V1]</c> = V2 (1 true, 0 false).</summary>
+    DigitalOutput = 11,
+
+    /// <summary><c>$ANOUT[V1]</c> = V2 (−1 to 1).</summary>
+    AnalogOutput = 12,
+
+    /// <summary>Speed V1 (m/s), acceleration V2 (m/s², 0 = default) and precision V3 (mm) at once: settings restored by a pop.</summary>
+    Settings = 13,
+}

@@ -1,0 +1,128 @@
+using System.Text;
+using System.Text.RegularExpressions;
+using System.Xml.Linq;
+
+namespace Machina.Tests.Online;
+
+/// <summary>The shipped KRL driver files (drivers/kuka): embedded, filled, and consistent with what the host sends and reads.</summary>
+public class KukaDriverModulesTests
+{
+    private static IReadOnlyDictionary<string, string> Files(string port = "54600", string? advance = null)
+    {
+        var parameters = new Dictionary<string, string> { ["HOSTNAME"] = "172.31.1.147", ["PORT"] = port };
+        if (advance is not null)
+        {
+            parameters["ADVANCE"] = advance;
+        }
+        return Robot.Create("Modules", "KUKA").GetDeviceDriverModules(parameters);
+    }
+
+    [Fact]
+    public void GetDeviceDriverModules_Kuka_SixFilesWithHostPortsAndAdvance()
+    {
+        var files = Files();
+        Assert.Equal(["machina_kuka_driver.dat", "machina_kuka_driver.src", "machina_kuka_monitor.dat", "machina_kuka_monitor.src", "machina_kuka_monitor.xml", "machina_kuka_server.xml"],
+            files.Keys.Order(StringComparer.Ordinal));
+        Assert.All(files.Values, text => Assert.DoesNotContain("{{", text, StringComparison.Ordinal));
+        XElement server = XElement.Parse(files["machina_kuka_server.xml"]);
+        Assert.Equal("172.31.1.147", server.Descendants("INTERNAL").Single().Element("IP")!.Value);
+        Assert.Equal("54600", server.Descendants("INTERNAL").Single().Element("PORT")!.Value);
+        Assert.Equal("Client", server.Descendants("EXTERNAL").Single().Element("TYPE")!.Value);
+        XElement monitor = XElement.Parse(files["machina_kuka_monitor.xml"]);
+        Assert.Equal("172.31.1.147", monitor.Descendants("INTERNAL").Single().Element("IP")!.Value);
+        Assert.Equal("54601", monitor.Descendants("INTERNAL").Single().Element("PORT")!.Value);
+        Assert.Contains("\n  $ADVANCE = 3\n", files["machina_kuka_driver.src"].ReplaceLineEndings("\n"), StringComparison.Ordinal);
+        Assert.Contains("\n  $ADVANCE = 0\n", Files(advance: "0")["machina_kuka_driver.src"].ReplaceLineEndings("\n"), StringComparison.Ordinal);
+    }
+
+    [Theory]
+    [InlineData("6", "ADVANCE must be a whole number from 0 to 5")]
+    [InlineData("1.5", "ADVANCE must be a whole number from 0 to 5")]
+    [InlineData("fast", "ADVANCE must be a whole number from 0 to 5")]
+    public void GetDeviceDriverModules_BadAdvance_Explains(string advance, string expected)
+    {
+        var error = Assert.Throws<ArgumentException>(() => Files(advance: advance));
+        Assert.Contains(expected, error.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void GetDeviceDriverModules_HostThatBreaksXmlOrLastPort_Refused()
+    {
+        Assert.Throws<ArgumentException>(() => KukaDriverModules.Create("a<b", 7000));
+        Assert.Throws<ArgumentOutOfRangeException>(() => KukaDriverModules.Create("10.0.0.1", 65534));
+    }
+
+    [Fact]
+    public void ServerXml_ReceiveElements_AreTheAttributesOfTheHostsBatches()
+    {
+        XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
+        var receive = Tags(server, "RECEIVE");
+        var sb = new StringBuilder();
+        KukaInstruction.AppendBatch(sb, [new KukaInstruction(1, KukaActionCode.Message, new KukaValues(), "x")]);
+        var reader = new KukaXmlReader();
+        reader.Append(Encoding.ASCII.GetBytes(sb.ToString()));
+        Assert.True(reader.TryRead(out KukaElement batch));
+        KukaElement action = batch.Children.Single().Children.Single();
+        Assert.Equal(action.Attributes.Select(a => $"{batch.Name}/{batch.Children[0].Name}/{action.Name}/@{a.Key}").Append("DT"), receive);
+        Assert.Equal("2", server.Descendants("ELEMENT").Single(e => e.Attribute("Tag")!.Value == "DT").Attribute("Set_Flag")!.Value);
+    }
+
+    [Fact]
+    public void ServerXml_SendElements_AreWhatTheHostReads()
+    {
+        XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
+        var expected = AttributePaths(KukaMessages.State(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity, 1, 2))
+            .Concat(AttributePaths(KukaMessages.Acknowledgement(3)));
+        Assert.Equal(expected, Tags(server, "SEND"));
+        XElement monitor = XElement.Parse(KukaDriverModules.Read("machina_kuka_monitor.xml"));
+        Assert.Equal(AttributePaths(KukaMessages.Pose(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity)), Tags(monitor, "SEND"));
+        Assert.Equal(AttributePaths(KukaMessages.MonitorRate(50)), Tags(monitor, "RECEIVE"));
+    }
+
+    [Fact]
+    public void ServerXml_Buffers_HoldTheLargestBatchAndTheWholeRing()
+    {
+        XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
+        int limit = int.Parse(server.Descendants("BUFFERING").Single().Attribute("Limit")!.Value, Num.Inv);
+        int bytes = int.Parse(server.Descendants("BUFFSIZE").Single().Attribute("Limit")!.Value, Num.Inv);
+        Assert.InRange(KukaProtocol.Capacity, 1, limit);
+        var worst = new KukaValues();
+        for (int i = 0; i < KukaProtocol.ValueCount; i++)
+        {
+            worst[i] = -123456.123456;
+        }
+        var sb = new StringBuilder();
+        KukaInstruction.AppendBatch(sb, Enumerable.Range(0, KukaProtocol.Capacity)
+            .Select(i => new KukaInstruction(int.MaxValue, KukaActionCode.Message, worst, new string('&', KukaProtocol.MaxTextLength))));
+        Assert.InRange(sb.Length, 1, Math.Min(bytes, KukaXmlReader.MaxElementLength));
+    }
+
+    [Fact]
+    public void DriverSrc_RingVersionAndActionCodes_MatchTheHost()
+    {
+        string src = KukaDriverModules.Read("machina_kuka_driver.src");
+        string dat = KukaDriverModules.Read("machina_kuka_driver.dat");
+        string ring = KukaProtocol.Capacity.ToString(Num.Inv);
+        Assert.Contains($"DECL INT slot_id[{ring}]", dat, StringComparison.Ordinal);
+        Assert.Contains($"DECL CHAR slot_text[{ring},{KukaProtocol.MaxTextLength}]", dat, StringComparison.Ordinal);
+        Assert.Equal(3, Regex.Matches(src, $"MOD {ring} \\+ 1|FOR i = 1 TO {ring}").Count);
+        Assert.Contains($"\"S/@VR\", \"{KukaProtocol.DriverVersion}\"", src, StringComparison.Ordinal);
+        var cases = Regex.Matches(src, @"^\s*CASE ([\d, ]+)$", RegexOptions.Multiline)
+            .SelectMany(m => m.Groups[1].Value.Split(',', StringSplitOptions.TrimEntries)).Select(int.Parse).ToHashSet();
+        Assert.All(Enum.GetValues<KukaActionCode>(), code => Assert.Contains((int)code, cases));
+        // The KRL compiler's conventions: the INI fold, the BCO run, $ADVANCE.
+        Assert.Contains("BAS (#INITMOV,0 )", src, StringComparison.Ordinal);
+        Assert.Contains("PTP $AXIS_ACT", src, StringComparison.Ordinal);
+    }
+
+    private static List<string> Tags(XElement config, string section) =>
+        [.. config.Element(section)!.Descendants("ELEMENT").Select(e => e.Attribute("Tag")!.Value)];
+
+    private static IEnumerable<string> AttributePaths(string xml)
+    {
+        var reader = new KukaXmlReader();
+        reader.Append(Encoding.ASCII.GetBytes(xml));
+        Assert.True(reader.TryRead(out KukaElement element));
+        return element.Attributes.Select(a => $"{element.Name}/@{a.Key}");
+    }
+}
