@@ -149,8 +149,8 @@ internal static class RunCommand
                 IReadOnlyList<RobotAction> sent = robot.GetPendingActions();
                 await robot.DisconnectAsync().ConfigureAwait(false);
                 string why = ex is OperationCanceledException ? "Stopped (Ctrl+C)" : "Stopped";
-                await context.Stderr.WriteLineAsync($"{why} after {Interlocked.Read(ref _executed)} of {issued} sent actions were executed; " +
-                    $"{cancelled} not sent were cancelled." + (sent.Count > 0
+                await context.Stderr.WriteLineAsync($"{why} after {Interlocked.Read(ref _executed)} of {issued} actions were executed; " +
+                    $"{cancelled} not sent yet were cancelled." + (sent.Count > 0
                         ? $" {sent.Count} were sent and the controller may still run them (first: {sent[0].ToInstruction()})."
                         : "")).ConfigureAwait(false);
                 throw;

@@ -97,17 +97,19 @@ public class OnlineCommandTests
     public async Task Run_CtrlC_StopsCleanlyAndSaysWhatWasSent()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(300, 0, 400);\nWait(60000);\n" + string.Concat(Enumerable.Repeat("Move(0, 0, 1);\n", 50)));
+        // 50 actions: the first 6 run at once (progress reaches 10%), then a wait of 10 minutes holds the rest.
+        cli.Write("p.machina", "MoveTo(300, 0, 400);\n" + string.Concat(Enumerable.Repeat("Move(0, 0, 1);\n", 5)) + "Wait(600000000);\n" +
+            string.Concat(Enumerable.Repeat("Move(0, 0, 1);\n", 43)));
         using var cancel = new CancellationTokenSource();
         var stdout = new WatchedWriter();
 
-        Task<CliResult> run = cli.RunAsync(["run", "p.machina", "--brand", "abb", "--sim"], "", cancel.Token, stdout);
-        await stdout.WaitForAsync("Streaming");
+        Task<CliResult> run = cli.RunAsync(["run", "p.machina", "--brand", "abb", "--sim", "--speed-factor", "1000"], "", cancel.Token, stdout);
+        await stdout.WaitForAsync(" 10%  5/50 actions");
         await cancel.CancelAsync();
         CliResult result = await run;
 
         Assert.Equal(130, result.Exit);
-        Assert.Contains("Stopped (Ctrl+C) after", result.Stderr, StringComparison.Ordinal);
+        Assert.Matches(@"^Stopped \(Ctrl\+C\) after [56] of \d+ actions were executed; \d+ not sent yet were cancelled\. [1-9]\d* were sent", result.Stderr);
         Assert.Contains("the controller may still run them", result.Stderr, StringComparison.Ordinal);
     }
 
