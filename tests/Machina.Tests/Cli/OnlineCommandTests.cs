@@ -146,6 +146,23 @@ public class OnlineCommandTests
     }
 
     [Fact]
+    public async Task Run_NoControllerListening_SaysTheLinkFailed()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", Program);
+        var listener = new TcpListener(IPAddress.Loopback, 0);
+        listener.Start();
+        int closed = ((IPEndPoint)listener.LocalEndpoint).Port;
+        listener.Stop();
+
+        CliResult result = await cli.RunAsync("run", "p.machina", "--brand", "abb", "--host", "127.0.0.1", "--port", closed.ToString(System.Globalization.CultureInfo.InvariantCulture));
+
+        Assert.Equal(1, result.Exit);
+        Assert.StartsWith("machina: error: the robot link failed: ", result.Stderr, StringComparison.Ordinal);
+        Assert.DoesNotContain("Connected.", result.Stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public async Task Sim_PortInUse_SaysSo()
     {
         using var cli = new CliRunner();
