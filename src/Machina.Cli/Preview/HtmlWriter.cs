@@ -50,7 +50,8 @@ internal static class HtmlWriter
         var present = path.Segments.Select(s => s.Kind).ToHashSet();
         foreach (SegmentKind kind in PreviewStyle.Kinds)
         {
-            (string name, string colour, string label) = PreviewStyle.Of(kind);
+            (string name, string colour, _) = PreviewStyle.Of(kind);
+            string label = PreviewStyle.Label(kind, path);
             string style = kind == SegmentKind.Joint ? "dashed" : kind == SegmentKind.Travel ? "dotted" : "solid";
             int count = path.Segments.Count(s => s.Kind == kind);
             html.Append(CultureInfo.InvariantCulture,

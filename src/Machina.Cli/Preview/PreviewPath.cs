@@ -57,7 +57,7 @@ internal sealed class PreviewPath
     /// </summary>
     internal static PreviewPath Build(ProgramReader reader, RobotModel? model, bool printer, CancellationToken cancellationToken)
     {
-        var path = new PreviewPath();
+        var path = new PreviewPath { JointsFollowTheArm = model is not null };
         var replay = new ProgramReplay(model);
         var problems = new List<string>();
         Vector? last = null;
@@ -81,7 +81,9 @@ internal sealed class PreviewPath
                         SegmentKind kind = KindOf(statement.Action, cursor, printer);
                         IReadOnlyList<Vector> points = statement.Action is ActionArcMotion && cursor.ArcThrough is Vector through
                             ? ArcPoints(from, through, target)
-                            : [from, target];
+                            : kind == SegmentKind.Joint && model is not null && cursor.PrevAxes is Joints a && cursor.Axes is Joints b
+                                ? JointPoints(model, cursor.Tool, a, b, from, target)
+                                : [from, target];
                         path.Segments.Add(new PathSegment(kind, statement.Line, points));
                         path.Targets.Add(target);
                     }
@@ -117,6 +119,31 @@ internal sealed class PreviewPath
             _ => cursor.MotionType == MotionType.Joint ? SegmentKind.Joint : SegmentKind.Linear,
         };
     }
+
+    /// <summary>Points per joint move drawn with a model.</summary>
+    internal const int JointSamples = 24;
+
+    /// <summary>
+    /// Where the tool tip goes during a joint move from joints <paramref name="a"/> to <paramref name="b"/>: the joints turn together
+    /// (interpolated linearly), and each step's tip is the forward kinematics with the tool. The ends are the exact targets.
+    /// </summary>
+    internal static IReadOnlyList<Vector> JointPoints(RobotModel model, Tool? tool, Joints a, Joints b, Vector from, Vector to)
+    {
+        var points = new List<Vector>(JointSamples + 1) { from };
+        for (int i = 1; i < JointSamples; i++)
+        {
+            double t = (double)i / JointSamples;
+            Pose flange = model.Kinematics.Forward(new Joints(
+                a.J1 + ((b.J1 - a.J1) * t), a.J2 + ((b.J2 - a.J2) * t), a.J3 + ((b.J3 - a.J3) * t),
+                a.J4 + ((b.J4 - a.J4) * t), a.J5 + ((b.J5 - a.J5) * t), a.J6 + ((b.J6 - a.J6) * t)));
+            points.Add(tool is null ? flange.Position : flange.Position + flange.Rotation.Rotate(tool.TcpPosition));
+        }
+        points.Add(to);
+        return points;
+    }
+
+    /// <summary>True when joint moves follow the arm's joints (a model was given), false when they are drawn straight.</summary>
+    internal bool JointsFollowTheArm { get; private set; }
 
     /// <summary>Points along the circle from <paramref name="start"/> through <paramref name="through"/> to <paramref name="end"/>, both ends exact.</summary>
     internal static IReadOnlyList<Vector> ArcPoints(Vector start, Vector through, Vector end)

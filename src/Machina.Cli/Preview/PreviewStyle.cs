@@ -23,6 +23,10 @@ internal static class PreviewStyle
         _ => ("other", "#000000", "other"),
     };
 
+    /// <summary>The legend text of a kind in <paramref name="path"/>: joint moves follow the arm when a model was given.</summary>
+    internal static string Label(SegmentKind kind, PreviewPath path) =>
+        kind == SegmentKind.Joint && path.JointsFollowTheArm ? "joint move (the tool path as the joints turn)" : Of(kind).Label;
+
     /// <summary>Every kind, in legend order.</summary>
     internal static readonly SegmentKind[] Kinds = [SegmentKind.Linear, SegmentKind.Joint, SegmentKind.Arc, SegmentKind.Travel, SegmentKind.Extrusion];
 }

@@ -164,7 +164,8 @@ internal static class SvgWriter
         foreach (SegmentKind kind in PreviewStyle.Kinds)
         {
             ty += 21;
-            (string name, string colour, string label) = PreviewStyle.Of(kind);
+            (string name, string colour, _) = PreviewStyle.Of(kind);
+            string label = PreviewStyle.Label(kind, path);
             string dash = kind == SegmentKind.Joint ? " stroke-dasharray=\"7 5\"" : kind == SegmentKind.Travel ? " stroke-dasharray=\"2 5\"" : "";
             string count = present.Contains(kind) ? $"  ({path.Segments.Count(s => s.Kind == kind)})" : "  (none)";
             svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" stroke=\"{colour}\" stroke-width=\"3\"{dash}/>");

@@ -111,6 +111,40 @@ public class PreviewCommandTests
     }
 
     [Fact]
+    public async Task Preview_JointMoveWithModel_FollowsTheArmsJoints()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", "MoveTo(300, 0, 400);\nMotionMode(\"joint\");\nMoveTo(250, 250, 300);\n");
+        Robot robot = Robot.Create("T", "ABB", "IRB 120");
+        robot.MoveTo(300, 0, 400);
+        Joints a = robot.GetIssuedState().Axes!.Value;
+        robot.MotionMode("joint");
+        robot.MoveTo(250, 250, 300);
+        Joints b = robot.GetIssuedState().Axes!.Value;
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--model", "IRB 120", "--out", "p.html");
+
+        Assert.Equal(0, result.Exit);
+        string html = File.ReadAllText(cli.PathOf("p.html"));
+        using JsonDocument data = JsonDocument.Parse(Regex.Match(html, "id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline).Groups[1].Value);
+        JsonElement joint = data.RootElement.GetProperty("segments").EnumerateArray().Single();
+        Assert.Equal("joint", joint.GetProperty("kind").GetString());
+        double[][] points = joint.GetProperty("points").EnumerateArray().Select(p => p.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
+        Assert.Equal(25, points.Length);
+        Assert.Equal([300, 0, 400], points[0]);
+        Assert.Equal([250, 250, 300], points[^1]);
+        // Half way, every joint is half way: the tip is the forward kinematics of the mean joints (no tool).
+        Vector middle = RobotModels.Get("IRB 120").Kinematics.Forward(new Joints(
+            (a.J1 + b.J1) / 2, (a.J2 + b.J2) / 2, (a.J3 + b.J3) / 2, (a.J4 + b.J4) / 2, (a.J5 + b.J5) / 2, (a.J6 + b.J6) / 2)).Position;
+        Assert.Equal(middle.X, points[12][0], 3);
+        Assert.Equal(middle.Y, points[12][1], 3);
+        Assert.Equal(middle.Z, points[12][2], 3);
+        // A joint move is not a straight line: the middle is off the chord.
+        Assert.True(Math.Abs(middle.Z - 350) > 1 || Math.Abs(middle.X - 275) > 1 || Math.Abs(middle.Y - 125) > 1);
+        Assert.Contains("joint move (the tool path as the joints turn)", html, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public async Task Preview_Printer_DrawsTravelAndExtrusion()
     {
         using var cli = new CliRunner();
