@@ -67,7 +67,7 @@ internal static class CompileCommand
     {
         var replay = new ProgramReplay(model);
         var actions = new List<RobotAction>();
-        var lines = new List<int>();
+        var places = new List<(int Line, int Column)>();
         var problems = new List<string>();
         int warnings = 0;
         foreach (ProgramStatement statement in reader.Read(context.Cancellation))
@@ -83,7 +83,7 @@ internal static class CompileCommand
                 warnings++;
             }
             actions.Add(statement.Action);
-            lines.Add(statement.Line);
+            places.Add((statement.Line, statement.Column));
         }
         var job = new CompileJob(reader.ProgramName, actions, options) { Model = model };
         IReadOnlyList<string> paths;
@@ -98,8 +98,8 @@ internal static class CompileCommand
         // Kinematic issues were reported while reading; what the brand cannot express is known only now.
         foreach (ProgramWarning warning in job.Warnings.Where(w => w.Kind is null))
         {
-            int line = warning.ActionId >= 1 && warning.ActionId <= lines.Count ? lines[warning.ActionId - 1] : 0;
-            context.Stderr.WriteLine($"{reader.DisplayName}:{line}: warning: {warning.Instruction} {warning.Message}");
+            (int line, int column) = warning.ActionId >= 1 && warning.ActionId <= places.Count ? places[warning.ActionId - 1] : (0, 0);
+            context.Stderr.WriteLine($"{reader.DisplayName}:{line}:{column}: warning: {warning.Instruction} {warning.Message}");
             warnings++;
         }
         return Task.FromResult(new CompileResult(paths, actions.Count, warnings));

@@ -60,7 +60,7 @@ internal static class PreviewCommand
         await context.Stdout.WriteLineAsync(CompileCommand.Display(full, context)).ConfigureAwait(false);
         foreach (PathWarning warning in preview.Warnings)
         {
-            await context.Stderr.WriteLineAsync($"{reader.DisplayName}:{warning.Line}: warning: {warning.Instruction} {warning.Message}").ConfigureAwait(false);
+            await context.Stderr.WriteLineAsync($"{reader.DisplayName}:{warning.Line}:{warning.Column}: warning: {warning.Instruction} {warning.Message}").ConfigureAwait(false);
         }
         if (preview.Targets.Count == 0)
         {

@@ -25,7 +25,7 @@ internal enum SegmentKind
 internal sealed record PathSegment(SegmentKind Kind, int Line, IReadOnlyList<Vector> Points);
 
 /// <summary>A problem to draw where it happens (<paramref name="At"/>, null when the position is not known yet): a kinematic issue or an instruction that could not be applied.</summary>
-internal sealed record PathWarning(Vector? At, int Line, string Instruction, string Message);
+internal sealed record PathWarning(Vector? At, int Line, int Column, string Instruction, string Message);
 
 /// <summary>The tool path of a program, as the robot's state follows it: what <c>machina preview</c> draws.</summary>
 internal sealed class PreviewPath
@@ -68,7 +68,7 @@ internal sealed class PreviewPath
             string? refusal = replay.Apply(statement.Action, problems);
             if (refusal is not null)
             {
-                path.Warnings.Add(new PathWarning(last, statement.Line, statement.Action.ToInstruction(), "not applied: " + refusal));
+                path.Warnings.Add(new PathWarning(last, statement.Line, statement.Column, statement.Action.ToInstruction(), "not applied: " + refusal));
                 continue;
             }
             Vector? now = cursor.Position;
@@ -96,7 +96,7 @@ internal sealed class PreviewPath
             last = now ?? last;
             foreach (string problem in problems)
             {
-                path.Warnings.Add(new PathWarning(now ?? last, statement.Line, statement.Action.ToInstruction(), problem));
+                path.Warnings.Add(new PathWarning(now ?? last, statement.Line, statement.Column, statement.Action.ToInstruction(), problem));
             }
         }
         return path;

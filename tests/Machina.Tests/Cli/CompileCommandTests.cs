@@ -154,7 +154,7 @@ public class CompileCommandTests
         CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "zmorph", "--out", "out");
 
         Assert.Equal(0, result.Exit);
-        Assert.Contains("p.machina:4: warning: Rotate(0,0,1,45);", result.Stderr, StringComparison.Ordinal);
+        Assert.Contains("p.machina:4:1: warning: Rotate(0,0,1,45);", result.Stderr, StringComparison.Ordinal);
         Assert.Contains("1 warning.", result.Stderr, StringComparison.Ordinal);
     }
 

@@ -98,7 +98,7 @@ public class PreviewCommandTests
         CliResult result = await cli.RunAsync("preview", "p.machina", "--model", "IRB 120", "--out", "p.svg");
 
         Assert.Equal(0, result.Exit);
-        Assert.Contains("p.machina:2: warning: MoveTo(900,0,400); Unreachable", result.Stderr, StringComparison.Ordinal);
+        Assert.Contains("p.machina:2:1: warning: MoveTo(900,0,400); Unreachable", result.Stderr, StringComparison.Ordinal);
         XDocument svg = XDocument.Load(cli.PathOf("p.svg"));
         XElement[] warnings = svg.Descendants(Svg + "g").Where(g => (string?)g.Attribute("class") == "warning").ToArray();
         Assert.Equal(3, warnings.Length); // once in each view
