@@ -94,7 +94,7 @@ internal static class RunCommand
     {
         private readonly SemaphoreSlim _window = new(Window, Window);
         private readonly TaskCompletionSource<MachinaException> _lost = new(TaskCreationOptions.RunContinuationsAsynchronously);
-        private readonly Dictionary<int, int> _lines = [];
+        private readonly Dictionary<RobotAction, int> _lines = new(ReferenceEqualityComparer.Instance);
         private readonly Lock _gate = new();
         private readonly ProgressReporter _progress = new(context, total);
         private long _executed;
@@ -163,17 +163,19 @@ internal static class RunCommand
             {
                 _issuingThread = Environment.CurrentManagedThreadId;
                 _issuing = statement;
+                // Known before issuing, so that even an action executed at once finds its line; a freshly read action is issued as itself.
+                _lines[statement.Action] = statement.Line;
             }
             try
             {
                 robot.Issue(statement.Action);
-                lock (_gate)
-                {
-                    _lines[statement.Action.Id] = statement.Line;
-                }
             }
             catch (ActionRefusedException ex)
             {
+                lock (_gate)
+                {
+                    _lines.Remove(statement.Action);
+                }
                 throw CliException.At(reader.DisplayName, statement.Line, statement.Column, $"{statement.Action.ToInstruction()} cannot be applied: {ex.Reason}");
             }
             finally
@@ -210,7 +212,7 @@ internal static class RunCommand
             int line;
             lock (_gate)
             {
-                _lines.Remove(e.LastAction.Id, out line);
+                _lines.Remove(e.LastAction, out line);
             }
             _window.Release();
             _progress.Update(executed, line);

@@ -29,7 +29,8 @@ public class OnlineCommandTests
 
         Assert.Equal(0, result.Exit);
         Assert.Contains("(7 actions)", result.Stdout, StringComparison.Ordinal);
-        Assert.Contains("100%  7/7 actions", result.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"(?m)^100%  7/7 actions  [\d.]+/s  line 7$", result.Stdout);
+        Assert.Matches(@"(?m)^ 14%  1/7 actions  [\d.]+/s  [\d:]+ left  line 1$", result.Stdout);
         Assert.Contains("Done: 7 actions executed.", result.Stdout, StringComparison.Ordinal);
         Assert.Contains("axes [0, 0, 0, 0, 90, 0]", result.Stdout, StringComparison.Ordinal);
     }
