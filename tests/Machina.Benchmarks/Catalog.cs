@@ -10,6 +10,7 @@ internal static class Catalog
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: false)));
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: true)));
         scenarios.Add(new ParseScenario(workloads));
+        scenarios.Add(new CliCompileScenario());
 #if MACHINA_ONLINE
         scenarios.Add(new StreamScenario(wideWindow: false));
         scenarios.Add(new StreamScenario(wideWindow: true));

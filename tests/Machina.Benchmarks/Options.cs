@@ -8,7 +8,7 @@ internal sealed record Options
     public const string Usage = """
         Usage: dotnet run -c Release --project tests/Machina.Benchmarks -- [options]
           --scenario NAME   run only scenarios named NAME or starting with NAME- (repeatable, or comma-separated):
-                            issue, compile (compile-abb, compile-ur, ...), folder (folder-abb, ...), parse, stream, ik
+                            issue, compile (compile-abb, compile-ur, ...), folder (folder-abb, ...), parse, cli-compile, stream, ik
           --size N          run at N units instead of each scenario's target size (no scaling table)
           --scaling         add the scaling table (10^4, 10^5, 10^6) even with --size or --quick
           --no-scaling      skip the scaling table

@@ -55,6 +55,20 @@ internal sealed class Workloads
         return text;
     }
 
+    /// <summary>Writes the same instruction program as <see cref="InstructionText"/> straight into a file, for sizes too large to hold as text.</summary>
+    public static void WriteInstructionFile(string path, int lines)
+    {
+        using var writer = new StreamWriter(path, append: false, new System.Text.UTF8Encoding(false), bufferSize: 1 << 16);
+        var random = new Random(6);
+        writer.Write(new ActionTranslation(new Vector(300, 0, 500), false).ToInstruction());
+        writer.Write('\n');
+        for (int i = 1; i < lines; i++)
+        {
+            writer.Write(Line(i, random));
+            writer.Write('\n');
+        }
+    }
+
     private static string Line(int i, Random random)
     {
         double R(double scale) => Math.Round((random.NextDouble() - 0.5) * scale, 3);

@@ -1,0 +1,239 @@
+using Machina.Cli.Programs;
+using Machina.Cli.Simulation;
+using Machina.Cli.Terminal;
+
+namespace Machina.Cli.Commands;
+
+/// <summary><c>machina run</c>: streams a program to a controller (or a virtual one) and shows its progress.</summary>
+internal static class RunCommand
+{
+    /// <summary>Most actions issued but not yet executed: the program is read only as fast as the robot works, so memory stays flat.</summary>
+    internal const int Window = 500;
+
+    internal static readonly CliCommand Command = new(
+        "run",
+        "Stream a program to a robot (or a virtual one) and watch it run",
+        $"""
+        Usage: machina run PROGRAM --brand abb|ur|kuka (--sim | --host H --port P) [options]
+
+        Streams PROGRAM, a text file of Machina instructions (- for standard input), to Machina's driver on the controller
+        and shows the progress: a bar with counts, rate and time left on a terminal, plain lines when redirected.
+        A file is read once first, so that a malformed line stops nothing: the robot moves only if the whole file reads well.
+        Ctrl+C stops cleanly: nothing more is sent, and the actions already sent to the controller are listed.
+        Online control in this build: {string.Join(", ", VirtualControllers.Available.Select(Brands.Name))}.
+
+        Options:
+          --brand B         the robot brand (abb, ur, kuka)
+          --sim             start a virtual controller on this computer and stream to it (no robot needed)
+          --host H          the controller's address (where Machina's driver runs), e.g. 192.168.125.1
+          --port P          the driver's port (default {SimCommand.DefaultPort})
+          --model M         the robot arm model, e.g. "IRB 120": motions are checked and problems printed
+          --speed-factor F  with --sim: how much faster than real time the virtual robot moves (default 1)
+          --name NAME       the program name (default: the file name)
+
+        SAFETY: a real robot moves. Try the program with --sim first, run it at reduced speed, keep clear of the
+        working area and keep the emergency stop in reach.
+
+        Examples:
+          machina run square.machina --brand abb --sim
+          machina run square.machina --brand abb --host 192.168.125.1 --port 7000
+        """,
+        Options: ["--brand", "--host", "--port", "--model", "--speed-factor", "--name"],
+        Flags: ["--sim"],
+        RunAsync);
+
+    private static async Task<int> RunAsync(CliArgs args, CliContext context)
+    {
+        string path = args.Single("a PROGRAM file (or - for standard input)");
+        RobotType brand = Brands.Parse(args.Required("--brand", "(abb, ur or kuka)"), Brands.All);
+        if (!Brands.IsArm(brand))
+        {
+            throw new UsageException($"{brand} programs cannot be streamed: only robot arms (abb, ur, kuka) are controlled online. Compile it: machina compile {path} --brand {Brands.Name(brand)}");
+        }
+        bool sim = args.Has("--sim");
+        string? host = args.Value("--host");
+        if (sim == (host is not null))
+        {
+            throw new UsageException("machina run needs either --sim (a virtual controller on this computer) or --host H --port P (a real controller), not " +
+                (sim ? "both." : "none of them.") + " See: machina run --help");
+        }
+        if (sim && args.HasValue("--port"))
+        {
+            throw new UsageException("--port goes with --host; with --sim the virtual controller picks a free port.");
+        }
+        if (!sim && args.HasValue("--speed-factor"))
+        {
+            throw new UsageException("--speed-factor is for the virtual controller (--sim); a real robot moves at the programmed speed.");
+        }
+        int port = args.Port("--port", SimCommand.DefaultPort);
+        RobotModel? model = Brands.Model(args.Value("--model"), brand);
+        double speed = args.Positive("--speed-factor", 1);
+        string? name = args.Value("--name");
+
+        long? total = null;
+        if (path != "-")
+        {
+            // Read the whole file once: a malformed line must stop the run before the robot moves, and the count gives the progress.
+            using ProgramReader check = ProgramReader.Open(path, context, name);
+            total = check.Read(context.Cancellation).LongCount();
+        }
+        if (!VirtualControllers.Available.Contains(brand))
+        {
+            throw VirtualControllers.NotInThisBuild(brand);
+        }
+        await using RunningController? controller = sim
+            ? await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model), context.Cancellation).ConfigureAwait(false)
+            : null;
+        using ProgramReader reader = ProgramReader.Open(path, context, name);
+        var run = new Streamer(reader, brand, model, total, context);
+        return await run.RunAsync(controller?.Host ?? host!, controller?.Port ?? port).ConfigureAwait(false);
+    }
+
+    /// <summary>One streamed run: the robot, its events and the counts.</summary>
+    private sealed class Streamer(ProgramReader reader, RobotType brand, RobotModel? model, long? total, CliContext context)
+    {
+        private readonly SemaphoreSlim _window = new(Window, Window);
+        private readonly TaskCompletionSource<MachinaException> _lost = new(TaskCreationOptions.RunContinuationsAsynchronously);
+        private readonly Dictionary<RobotAction, int> _lines = new(ReferenceEqualityComparer.Instance);
+        private readonly Lock _gate = new();
+        private readonly ProgressReporter _progress = new(context, total);
+        private long _executed;
+        private int _issuingThread;
+        private ProgramStatement _issuing;
+
+        internal async Task<int> RunAsync(string host, int port)
+        {
+            Robot robot = model is null ? Robot.Create(reader.ProgramName, brand) : Robot.Create(reader.ProgramName, brand, model);
+            robot.Logger.Level = LogLevel.WARNING;
+            robot.Logger.Logged += (_, e) => OnLog(e);
+            try
+            {
+                robot.ControlMode(ControlType.Online);
+            }
+            catch (NotSupportedException)
+            {
+                throw VirtualControllers.NotInThisBuild(brand);
+            }
+            robot.ActionExecuted += (_, e) => OnExecuted(e);
+            robot.ConnectionLost += (_, e) => _lost.TrySetResult(e.Error);
+            await context.Stdout.WriteLineAsync($"Connecting to the {brand} controller at {host}:{port}...").ConfigureAwait(false);
+            await robot.ConnectAsync(host, port, context.Cancellation).ConfigureAwait(false);
+            await context.Stdout.WriteLineAsync($"Connected. The robot is at {robot.GetCurrentPosition()?.ToString() ?? "an unknown position"}, " +
+                $"axes {robot.GetCurrentAxes()?.ToString() ?? "unknown"}. Streaming {reader.DisplayName}" +
+                (total is long t ? $" ({t} actions)" : "") + "...").ConfigureAwait(false);
+            long issued = 0;
+            try
+            {
+                foreach (ProgramStatement statement in reader.Read(context.Cancellation))
+                {
+                    await WaitForRoomAsync().ConfigureAwait(false);
+                    Issue(robot, statement);
+                    issued++;
+                }
+                Task done = robot.WaitForCompletionAsync(context.Cancellation);
+                await Task.WhenAny(done, _lost.Task).ConfigureAwait(false);
+                ThrowIfLost();
+                await done.ConfigureAwait(false);
+                _progress.Update(Interlocked.Read(ref _executed), 0);
+                _progress.Finish();
+                RobotState final = robot.GetExecutedState();
+                await context.Stdout.WriteLineAsync($"Done: {Interlocked.Read(ref _executed)} actions executed. The robot is at " +
+                    $"{final.Position?.ToString() ?? "an unknown position"}, axes {final.Axes?.ToString() ?? "unknown"}.").ConfigureAwait(false);
+                await robot.DisconnectAsync().ConfigureAwait(false);
+                return ExitCodes.Ok;
+            }
+            catch (Exception ex) when (ex is OperationCanceledException or CliException or MachinaException)
+            {
+                _progress.Finish();
+                int cancelled = robot.ClearPendingActions();
+                IReadOnlyList<RobotAction> sent = robot.GetPendingActions();
+                await robot.DisconnectAsync().ConfigureAwait(false);
+                string why = ex is OperationCanceledException ? "Stopped (Ctrl+C)" : "Stopped";
+                await context.Stderr.WriteLineAsync($"{why} after {Interlocked.Read(ref _executed)} of {issued} actions were executed; " +
+                    $"{cancelled} not sent yet were cancelled." + (sent.Count > 0
+                        ? $" {sent.Count} were sent and the controller may still run them (first: {sent[0].ToInstruction()})."
+                        : "")).ConfigureAwait(false);
+                throw;
+            }
+        }
+
+        private void Issue(Robot robot, ProgramStatement statement)
+        {
+            lock (_gate)
+            {
+                _issuingThread = Environment.CurrentManagedThreadId;
+                _issuing = statement;
+                // Known before issuing, so that even an action executed at once finds its line; a freshly read action is issued as itself.
+                _lines[statement.Action] = statement.Line;
+            }
+            try
+            {
+                robot.Issue(statement.Action);
+            }
+            catch (ActionRefusedException ex)
+            {
+                lock (_gate)
+                {
+                    _lines.Remove(statement.Action);
+                }
+                throw CliException.At(reader.DisplayName, statement.Line, statement.Column, $"{statement.Action.ToInstruction()} cannot be applied: {ex.Reason}");
+            }
+            finally
+            {
+                lock (_gate)
+                {
+                    _issuingThread = 0;
+                }
+            }
+        }
+
+        private async Task WaitForRoomAsync()
+        {
+            Task room = _window.WaitAsync(context.Cancellation);
+            if (!room.IsCompleted)
+            {
+                await Task.WhenAny(room, _lost.Task).ConfigureAwait(false);
+                ThrowIfLost();
+            }
+            await room.ConfigureAwait(false);
+        }
+
+        private void ThrowIfLost()
+        {
+            if (_lost.Task.IsCompletedSuccessfully)
+            {
+                throw new CliException($"The connection to the controller was lost: {_lost.Task.Result.Message}");
+            }
+        }
+
+        private void OnExecuted(ActionExecutedArgs e)
+        {
+            long executed = Interlocked.Increment(ref _executed);
+            int line;
+            lock (_gate)
+            {
+                _lines.Remove(e.LastAction, out line);
+            }
+            _window.Release();
+            _progress.Update(executed, line);
+        }
+
+        private void OnLog(LogEntry entry)
+        {
+            string where = "";
+            lock (_gate)
+            {
+                if (_issuingThread == Environment.CurrentManagedThreadId)
+                {
+                    where = $"{reader.DisplayName}:{_issuing.Line}:{_issuing.Column}: ";
+                }
+            }
+            // A refused action is reported once, as the error that stops the run.
+            if (entry.Message.StartsWith("Refused ", StringComparison.Ordinal))
+            {
+                return;
+            }
+            context.Stderr.WriteLine($"{where}{(entry.Level == LogLevel.ERROR ? "error" : "warning")}: {entry.Message}");
+        }
+    }
+}

@@ -1,0 +1,85 @@
+using System.Net;
+using Machina.Cli.Simulation;
+
+namespace Machina.Cli.Commands;
+
+/// <summary><c>machina sim</c>: a standalone virtual controller until Ctrl+C, logging what it receives.</summary>
+internal static class SimCommand
+{
+    /// <summary>The port the ABB driver listens on by default, and so the default here.</summary>
+    internal const int DefaultPort = 7000;
+
+    internal static readonly CliCommand Command = new(
+        "sim",
+        "Start a virtual robot controller to try any Machina host without a robot",
+        $"""
+        Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
+
+        Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
+        Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
+        definition, your own script. Every request it receives is printed, one line each.
+        Available in this build: {string.Join(", ", VirtualControllers.Available.Select(Brands.Name))}.
+
+        Options:
+          --port P          the port hosts connect to (default {DefaultPort}; ABB also uses P + 1 for its monitor; 0 picks a free one)
+          --bind ADDRESS    the address to listen on (default 127.0.0.1, this computer only; 0.0.0.0 for every network)
+          --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
+          --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
+          --quiet           do not print every request, only connections
+
+        Example:
+          machina sim abb --port 7000
+          (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
+        """,
+        Options: ["--port", "--bind", "--speed-factor", "--model"],
+        Flags: ["--quiet"],
+        RunAsync);
+
+    private static async Task<int> RunAsync(CliArgs args, CliContext context)
+    {
+        RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [RobotType.ABB, RobotType.UR, RobotType.KUKA], "sim");
+        int port = args.Port("--port", DefaultPort, allowZero: true);
+        string bindText = args.Value("--bind") ?? "127.0.0.1";
+        if (!IPAddress.TryParse(bindText, out IPAddress? bind))
+        {
+            throw new UsageException($"--bind needs an IP address of this computer such as 127.0.0.1 or 0.0.0.0, not \"{bindText}\".");
+        }
+        double speed = args.Positive("--speed-factor", 1);
+        RobotModel? model = Brands.Model(args.Value("--model"), brand);
+        bool quiet = args.Has("--quiet");
+
+        var gate = new Lock();
+        void Log(string line)
+        {
+            if (quiet && line.StartsWith("  #", StringComparison.Ordinal))
+            {
+                return;
+            }
+            lock (gate)
+            {
+                context.Stdout.WriteLine(line);
+                context.Stdout.Flush();
+            }
+        }
+
+        await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model), context.Cancellation).ConfigureAwait(false);
+        await using TcpRelay relay = TcpRelay.Start(bind, port, controller, Log);
+        string ports = string.Join(", ", controller.PortOffsets.Skip(1).Select(o => (relay.Port + o).ToString(System.Globalization.CultureInfo.InvariantCulture)));
+        Log($"Virtual {brand} controller listening on {bind}:{relay.Port}" + (ports.Length > 0 ? $" (monitor on {ports})" : "") +
+            $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
+        Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +
+            $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {relay.Port}");
+        context.Ready?.Invoke($"{bind}:{relay.Port}");
+        try
+        {
+            await Task.Delay(Timeout.Infinite, context.Cancellation).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException)
+        {
+        }
+        Log($"Stopping: {controller.Summary()}.");
+        return ExitCodes.Ok;
+    }
+
+    private static string Num(double value) => value.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture);
+}

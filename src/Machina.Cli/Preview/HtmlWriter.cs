@@ -1,0 +1,118 @@
+using System.Globalization;
+using System.Security;
+using System.Text;
+using System.Text.Json;
+
+namespace Machina.Cli.Preview;
+
+/// <summary>
+/// Writes a tool path as one self-contained HTML page with an interactive 3D view (a canvas and a small script, no network):
+/// the path data sits in a JSON block (<c>&lt;script type="application/json" id="machina-path"&gt;</c>) in millimetres.
+/// </summary>
+internal static class HtmlWriter
+{
+    /// <summary>The HTML text of <paramref name="path"/>.</summary>
+    internal static string Write(PreviewPath path, string title, string subtitle)
+    {
+        var html = new StringBuilder();
+        html.Append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
+        html.Append("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
+        html.Append(CultureInfo.InvariantCulture, $"<title>{Esc(title)}</title>\n");
+        html.Append("""
+            <style>
+            html,body{margin:0;height:100%;font-family:"Segoe UI",Helvetica,Arial,sans-serif;color:#2b2f36;background:#f6f7f9}
+            #app{display:flex;height:100%}
+            #stage{flex:1;position:relative;min-width:200px;margin:12px;border:1px solid #d0d4da;border-radius:6px;overflow:hidden;background:#fff}
+            #view{display:block;cursor:grab}
+            #tip{position:absolute;display:none;background:#2b2f36;color:#fff;font-size:12px;padding:4px 7px;border-radius:4px;pointer-events:none;max-width:420px}
+            #side{width:320px;padding:16px 16px 16px 4px;overflow:auto;font-size:13px}
+            h1{font-size:18px;margin:0 0 2px}
+            .sub{color:#5f6b7a;margin:0 0 12px}
+            button{font:inherit;padding:4px 10px;margin:0 4px 4px 0;border:1px solid #c3c8d0;background:#fff;border-radius:4px;cursor:pointer}
+            button:hover{background:#eef1f5}
+            .key{display:flex;align-items:center;margin:5px 0}
+            .swatch{width:34px;height:0;border-top:3px solid;margin-right:9px}
+            .dot{width:12px;height:12px;border-radius:50%;margin:0 20px 0 11px}
+            .none{color:#9aa2ad}
+            .warn{color:#c62828;margin:6px 0;word-wrap:break-word}
+            .help{color:#5f6b7a;font-size:12px;margin-top:14px}
+            </style>
+            </head>
+            <body>
+            <div id="app">
+            <div id="stage"><canvas id="view"></canvas><div id="tip"></div></div>
+            <div id="side">
+
+            """);
+        html.Append(CultureInfo.InvariantCulture, $"<h1>{Esc(title)}</h1>\n<p class=\"sub\">{Esc(subtitle)}</p>\n");
+        html.Append("<div><button id=\"v-3d\">3D</button><button id=\"v-top\">Top</button><button id=\"v-front\">Front</button><button id=\"v-side\">Side</button></div>\n");
+        html.Append("<h3>Legend</h3>\n");
+        var present = path.Segments.Select(s => s.Kind).ToHashSet();
+        foreach (SegmentKind kind in PreviewStyle.Kinds)
+        {
+            (string name, string colour, _) = PreviewStyle.Of(kind);
+            string label = PreviewStyle.Label(kind, path);
+            string style = kind == SegmentKind.Joint ? "dashed" : kind == SegmentKind.Travel ? "dotted" : "solid";
+            int count = path.Segments.Count(s => s.Kind == kind);
+            html.Append(CultureInfo.InvariantCulture,
+                $"<div class=\"key{(present.Contains(kind) ? "" : " none")}\"><span class=\"swatch\" style=\"border-top-color:{colour};border-top-style:{style}\"></span>{Esc(label)} ({(count == 0 ? "none" : count.ToString(CultureInfo.InvariantCulture))})</div>\n");
+        }
+        html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"background:{PreviewStyle.StartColour}\"></span>start {P(path.Start)}</div>\n");
+        html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"background:{PreviewStyle.EndColour};border-radius:0\"></span>end {P(path.End)}</div>\n");
+        html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"border:2px solid {PreviewStyle.WarningColour};width:9px;height:9px\"></span>warning, with its line ({path.Warnings.Count})</div>\n");
+        html.Append("<p id=\"grid\" class=\"help\"></p>\n");
+        if (path.Warnings.Count > 0)
+        {
+            html.Append("<h3>Warnings</h3>\n");
+            foreach (PathWarning warning in path.Warnings.Take(200))
+            {
+                html.Append(CultureInfo.InvariantCulture, $"<div class=\"warn\">line {warning.Line}: {Esc(warning.Instruction)} {Esc(warning.Message)}</div>\n");
+            }
+            if (path.Warnings.Count > 200)
+            {
+                html.Append(CultureInfo.InvariantCulture, $"<div class=\"warn\">… and {path.Warnings.Count - 200} more</div>\n");
+            }
+        }
+        html.Append("<p class=\"help\">Drag to turn the view, Shift+drag or right-drag to move it, scroll to zoom. Point at a target or a warning to read it. Units: mm.</p>\n");
+        html.Append("</div>\n</div>\n");
+        html.Append("<script type=\"application/json\" id=\"machina-path\">").Append(Json(path)).Append("</script>\n");
+        html.Append("<script>\n").Append(Script.Value).Append("</script>\n</body>\n</html>\n");
+        return html.ToString();
+    }
+
+    /// <summary>The path as JSON: segments (kind, line, points), targets, start, end, warnings and colours; coordinates in mm.</summary>
+    internal static string Json(PreviewPath path)
+    {
+        static double[] A(Vector v) => [Math.Round(v.X, 3), Math.Round(v.Y, 3), Math.Round(v.Z, 3)];
+        var colours = PreviewStyle.Kinds.ToDictionary(k => PreviewStyle.Of(k).Name, k => PreviewStyle.Of(k).Colour);
+        colours["start"] = PreviewStyle.StartColour;
+        colours["end"] = PreviewStyle.EndColour;
+        colours["warning"] = PreviewStyle.WarningColour;
+        var document = new
+        {
+            units = "mm",
+            segments = path.Segments.Select(s => new { kind = PreviewStyle.Of(s.Kind).Name, line = s.Line, points = s.Points.Select(A).ToArray() }),
+            targets = path.Targets.Select(A),
+            start = path.Start is Vector s0 ? A(s0) : null,
+            end = path.End is Vector e0 ? A(e0) : null,
+            warnings = path.Warnings.Select(w => new { at = w.At is Vector at ? A(at) : null, line = w.Line, instruction = w.Instruction, message = w.Message }),
+            colours,
+        };
+        // The default encoder escapes <, > and &, so the JSON cannot close its script element.
+        return JsonSerializer.Serialize(document);
+    }
+
+    private static readonly Lazy<string> Script = new(() =>
+    {
+        using Stream stream = typeof(HtmlWriter).Assembly.GetManifestResourceStream("Machina.Cli.Preview.preview3d.js")
+            ?? throw new InvalidOperationException("The 3D view script is missing from the machina tool.");
+        using var reader = new StreamReader(stream);
+        return reader.ReadToEnd();
+    });
+
+    private static string P(Vector? p) => p is Vector v
+        ? string.Create(CultureInfo.InvariantCulture, $"[{v.X:0.##}, {v.Y:0.##}, {v.Z:0.##}] mm")
+        : "unknown";
+
+    private static string Esc(string text) => SecurityElement.Escape(text);
+}

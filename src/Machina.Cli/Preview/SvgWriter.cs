@@ -1,0 +1,258 @@
+using System.Globalization;
+using System.Security;
+using System.Text;
+
+namespace Machina.Cli.Preview;
+
+/// <summary>
+/// Draws a tool path as one SVG picture with three views, as on an engineering drawing: top (X right, Y up), front (X right,
+/// Z up) and side (Y right, Z up), all at the same scale, with a grid, a scale bar, a legend and the warnings. Each view's
+/// drawing is in a group whose transform maps millimetres to the picture, so the points in the file are the program's own.
+/// </summary>
+internal static class SvgWriter
+{
+    private const double Width = 1200, Height = 900, Gap = 20, TitleHeight = 50, PanelPad = 34;
+    private const int MaxListedWarnings = 12;
+
+    private sealed record View(string Name, string Title, string Horizontal, string Vertical, Func<Vector, (double U, double V)> Project);
+
+    private static readonly View[] Views =
+    [
+        new("top", "Top view", "X", "Y", p => (p.X, p.Y)),
+        new("front", "Front view", "X", "Z", p => (p.X, p.Z)),
+        new("side", "Side view", "Y", "Z", p => (p.Y, p.Z)),
+    ];
+
+    /// <summary>The SVG text of <paramref name="path"/>, titled <paramref name="title"/>.</summary>
+    internal static string Write(PreviewPath path, string title, string subtitle)
+    {
+        var svg = new StringBuilder();
+        svg.Append(CultureInfo.InvariantCulture, $"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{Width}\" height=\"{Height}\" viewBox=\"0 0 {Width} {Height}\" font-family=\"Segoe UI, Helvetica, Arial, sans-serif\">\n");
+        svg.Append("<style>\n");
+        svg.Append(".panel{fill:#fff;stroke:#d0d4da}.grid{stroke:#eceff3;stroke-width:1;vector-effect:non-scaling-stroke}");
+        svg.Append(".axis{stroke:#b8bec8;stroke-width:1;vector-effect:non-scaling-stroke}");
+        svg.Append(".seg{fill:none;stroke-width:2.2;stroke-linejoin:round;stroke-linecap:round;vector-effect:non-scaling-stroke}");
+        foreach (SegmentKind kind in PreviewStyle.Kinds)
+        {
+            (string name, string colour, _) = PreviewStyle.Of(kind);
+            svg.Append(CultureInfo.InvariantCulture, $".{name}{{stroke:{colour}}}");
+        }
+        svg.Append(".joint{stroke-dasharray:7 5}.travel{stroke-dasharray:2 5;stroke-width:1.5}");
+        svg.Append(".target{fill:#fff;stroke:#5f6b7a;stroke-width:1;vector-effect:non-scaling-stroke}");
+        svg.Append("text{fill:#2b2f36;font-size:13px}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
+        svg.Append("\n</style>\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<rect width=\"{Width}\" height=\"{Height}\" fill=\"#f6f7f9\"/>\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{Gap}\" y=\"30\" class=\"title\">{Esc(title)}</text>\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{Gap}\" y=\"47\" class=\"sub\">{Esc(subtitle)}</text>\n");
+
+        double panelW = (Width - (3 * Gap)) / 2, panelH = (Height - TitleHeight - (3 * Gap)) / 2;
+        (double X, double Y)[] origins =
+        [
+            (Gap, TitleHeight + Gap),
+            (Gap, TitleHeight + (2 * Gap) + panelH),
+            (2 * Gap + panelW, TitleHeight + (2 * Gap) + panelH),
+        ];
+        (Vector min, Vector max) = path.Bounds() ?? (new Vector(-50, -50, -50), new Vector(50, 50, 50));
+        // One scale for the three views, so that the same length looks the same everywhere.
+        double plotW = panelW - (2 * PanelPad), plotH = panelH - (2 * PanelPad) - 10;
+        double Span(double a, double b) => Math.Max(b - a, 1) * 1.08;
+        double scale = new[]
+        {
+            plotW / Span(min.X, max.X), plotH / Span(min.Y, max.Y), plotH / Span(min.Z, max.Z), plotW / Span(min.Y, max.Y),
+        }.Min();
+        for (int i = 0; i < Views.Length; i++)
+        {
+            WriteView(svg, path, Views[i], origins[i].X, origins[i].Y, panelW, panelH, scale, min, max);
+        }
+        WriteLegend(svg, path, 2 * Gap + panelW, TitleHeight + Gap, panelW, panelH, min, max);
+        svg.Append("</svg>\n");
+        return svg.ToString();
+    }
+
+    private static void WriteView(StringBuilder svg, PreviewPath path, View view, double x, double y, double w, double h, double scale, Vector min, Vector max)
+    {
+        (double u0, double v0) = view.Project(min);
+        (double u1, double v1) = view.Project(max);
+        double mu = (u0 + u1) / 2, mv = (v0 + v1) / 2;
+        double cx = x + (w / 2), cy = y + 22 + ((h - 22) / 2);
+        (double X, double Y) Screen(Vector p)
+        {
+            (double u, double v) = view.Project(p);
+            return (cx + (scale * (u - mu)), cy - (scale * (v - mv)));
+        }
+        svg.Append(CultureInfo.InvariantCulture, $"<g id=\"view-{view.Name}\">\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<rect class=\"panel\" x=\"{F(x)}\" y=\"{F(y)}\" width=\"{F(w)}\" height=\"{F(h)}\" rx=\"6\"/>\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 12)}\" y=\"{F(y + 20)}\" font-weight=\"600\">{view.Title}</text>");
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 100)}\" y=\"{F(y + 20)}\" class=\"small\">{view.Horizontal} to the right, {view.Vertical} up (mm)</text>\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<clipPath id=\"clip-{view.Name}\"><rect x=\"{F(x + 1)}\" y=\"{F(y + 26)}\" width=\"{F(w - 2)}\" height=\"{F(h - 27)}\"/></clipPath>\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<g clip-path=\"url(#clip-{view.Name})\">\n");
+        // The drawing itself, in millimetres: screen = (cx, cy) + scale · (u − mu, −(v − mv)).
+        svg.Append(CultureInfo.InvariantCulture,
+            $"<g class=\"view\" data-view=\"{view.Name}\" data-axes=\"{view.Horizontal}{view.Vertical}\" transform=\"translate({F(cx)} {F(cy)}) scale({F6(scale)} {F6(-scale)}) translate({F(-mu)} {F(-mv)})\">\n");
+        double step = NiceStep(Math.Max(w, h) / scale / 10);
+        double halfU = w / 2 / scale, halfV = h / 2 / scale;
+        svg.Append("<g class=\"grid-lines\">");
+        for (double u = Math.Ceiling((mu - halfU) / step) * step; u <= mu + halfU; u += step)
+        {
+            svg.Append(CultureInfo.InvariantCulture, $"<line class=\"{(Math.Abs(u) < step / 1000 ? "axis" : "grid")}\" x1=\"{F(u)}\" y1=\"{F(mv - halfV)}\" x2=\"{F(u)}\" y2=\"{F(mv + halfV)}\"/>");
+        }
+        for (double v = Math.Ceiling((mv - halfV) / step) * step; v <= mv + halfV; v += step)
+        {
+            svg.Append(CultureInfo.InvariantCulture, $"<line class=\"{(Math.Abs(v) < step / 1000 ? "axis" : "grid")}\" x1=\"{F(mu - halfU)}\" y1=\"{F(v)}\" x2=\"{F(mu + halfU)}\" y2=\"{F(v)}\"/>");
+        }
+        svg.Append("</g>\n");
+        foreach ((SegmentKind kind, List<Vector> points) in Runs(path.Segments))
+        {
+            (string name, _, _) = PreviewStyle.Of(kind);
+            svg.Append(CultureInfo.InvariantCulture, $"<polyline class=\"seg {name}\" data-kind=\"{name}\" points=\"");
+            for (int i = 0; i < points.Count; i++)
+            {
+                (double u, double v) = view.Project(points[i]);
+                svg.Append(i == 0 ? "" : " ").Append(F(u)).Append(',').Append(F(v));
+            }
+            svg.Append("\"/>\n");
+        }
+        svg.Append("<g class=\"targets\">");
+        double r = 2.6 / scale;
+        foreach (Vector p in path.Targets)
+        {
+            (double u, double v) = view.Project(p);
+            svg.Append(CultureInfo.InvariantCulture, $"<circle class=\"target\" cx=\"{F(u)}\" cy=\"{F(v)}\" r=\"{F6(r)}\"/>");
+        }
+        svg.Append("</g>\n</g>\n");
+        // Markers in picture coordinates, so that their size and labels do not depend on the scale.
+        foreach (PathWarning warning in path.Warnings)
+        {
+            if (warning.At is Vector at)
+            {
+                (double sx, double sy) = Screen(at);
+                svg.Append(CultureInfo.InvariantCulture,
+                    $"<g class=\"warning\"><title>line {warning.Line}: {Esc(warning.Instruction)} {Esc(warning.Message)}</title>" +
+                    $"<circle cx=\"{F(sx)}\" cy=\"{F(sy)}\" r=\"7\" fill=\"none\" stroke=\"{PreviewStyle.WarningColour}\" stroke-width=\"2.5\"/>" +
+                    $"<text x=\"{F(sx + 8)}\" y=\"{F(sy - 8)}\" fill=\"{PreviewStyle.WarningColour}\" font-size=\"11\" font-weight=\"700\">!{warning.Line}</text></g>\n");
+            }
+        }
+        if (path.Start is Vector start)
+        {
+            (double sx, double sy) = Screen(start);
+            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"start\"><circle cx=\"{F(sx)}\" cy=\"{F(sy)}\" r=\"6.5\" fill=\"{PreviewStyle.StartColour}\" stroke=\"#fff\" stroke-width=\"2\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(sx + 9)}\" y=\"{F(sy + 16)}\" fill=\"{PreviewStyle.StartColour}\" font-size=\"12\" font-weight=\"700\">start</text></g>\n");
+        }
+        if (path.End is Vector end)
+        {
+            (double sx, double sy) = Screen(end);
+            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"end\"><rect x=\"{F(sx - 5.5)}\" y=\"{F(sy - 5.5)}\" width=\"11\" height=\"11\" fill=\"{PreviewStyle.EndColour}\" stroke=\"#fff\" stroke-width=\"2\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(sx + 9)}\" y=\"{F(sy - 8)}\" fill=\"{PreviewStyle.EndColour}\" font-size=\"12\" font-weight=\"700\">end</text></g>\n");
+        }
+        svg.Append("</g>\n");
+        // Scale bar, bottom left.
+        double barPx = step * scale;
+        double bx = x + 14, by = y + h - 14;
+        svg.Append(CultureInfo.InvariantCulture, $"<g class=\"scale-bar\"><line x1=\"{F(bx)}\" y1=\"{F(by)}\" x2=\"{F(bx + barPx)}\" y2=\"{F(by)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/>");
+        svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(bx)}\" y1=\"{F(by - 4)}\" x2=\"{F(bx)}\" y2=\"{F(by + 1)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/><line x1=\"{F(bx + barPx)}\" y1=\"{F(by - 4)}\" x2=\"{F(bx + barPx)}\" y2=\"{F(by + 1)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/>");
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(bx + barPx + 6)}\" y=\"{F(by + 4)}\" class=\"small\">{G(step)} mm (grid)</text></g>\n");
+        svg.Append("</g>\n");
+    }
+
+    private static void WriteLegend(StringBuilder svg, PreviewPath path, double x, double y, double w, double h, Vector min, Vector max)
+    {
+        svg.Append("<g id=\"legend\">\n");
+        svg.Append(CultureInfo.InvariantCulture, $"<rect class=\"panel\" x=\"{F(x)}\" y=\"{F(y)}\" width=\"{F(w)}\" height=\"{F(h)}\" rx=\"6\"/>\n");
+        double ty = y + 24;
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" font-weight=\"600\">Legend</text>\n");
+        var present = path.Segments.Select(s => s.Kind).ToHashSet();
+        foreach (SegmentKind kind in PreviewStyle.Kinds)
+        {
+            ty += 21;
+            (string name, string colour, _) = PreviewStyle.Of(kind);
+            string label = PreviewStyle.Label(kind, path);
+            string dash = kind == SegmentKind.Joint ? " stroke-dasharray=\"7 5\"" : kind == SegmentKind.Travel ? " stroke-dasharray=\"2 5\"" : "";
+            string count = present.Contains(kind) ? $"  ({path.Segments.Count(s => s.Kind == kind)})" : "  (none)";
+            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" stroke=\"{colour}\" stroke-width=\"3\"{dash}/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 62)}\" y=\"{F(ty)}\"{(present.Contains(kind) ? "" : " class=\"small\"")}>{Esc(label)}{count}</text>\n");
+        }
+        ty += 24;
+        svg.Append(CultureInfo.InvariantCulture, $"<circle cx=\"{F(x + 24)}\" cy=\"{F(ty - 4)}\" r=\"6\" fill=\"{PreviewStyle.StartColour}\"/><text x=\"{F(x + 40)}\" y=\"{F(ty)}\">start {P(path.Start)}</text>\n");
+        ty += 21;
+        svg.Append(CultureInfo.InvariantCulture, $"<rect x=\"{F(x + 19)}\" y=\"{F(ty - 9.5)}\" width=\"11\" height=\"11\" fill=\"{PreviewStyle.EndColour}\"/><text x=\"{F(x + 40)}\" y=\"{F(ty)}\">end {P(path.End)}</text>\n");
+        ty += 21;
+        svg.Append(CultureInfo.InvariantCulture, $"<circle cx=\"{F(x + 24)}\" cy=\"{F(ty - 4)}\" r=\"3\" fill=\"#fff\" stroke=\"#5f6b7a\"/><text x=\"{F(x + 40)}\" y=\"{F(ty)}\">target ({path.Targets.Count})</text>\n");
+        ty += 21;
+        svg.Append(CultureInfo.InvariantCulture, $"<circle cx=\"{F(x + 24)}\" cy=\"{F(ty - 4)}\" r=\"6\" fill=\"none\" stroke=\"{PreviewStyle.WarningColour}\" stroke-width=\"2.5\"/><text x=\"{F(x + 40)}\" y=\"{F(ty)}\">warning, with its line ({path.Warnings.Count})</text>\n");
+        ty += 24;
+        svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">Extent: X {G(min.X)} to {G(max.X)}, Y {G(min.Y)} to {G(max.Y)}, Z {G(min.Z)} to {G(max.Z)} mm</text>\n");
+        if (path.Warnings.Count > 0)
+        {
+            ty += 26;
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" font-weight=\"600\" fill=\"{PreviewStyle.WarningColour}\">Warnings</text>\n");
+            foreach (PathWarning warning in path.Warnings.Take(MaxListedWarnings))
+            {
+                ty += 17;
+                if (ty > y + h - 12)
+                {
+                    break;
+                }
+                string text = $"line {warning.Line}: {warning.Instruction} {warning.Message}";
+                svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">{Esc(Shorten(text, 88))}</text>\n");
+            }
+            if (path.Warnings.Count > MaxListedWarnings)
+            {
+                ty += 17;
+                svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">… and {path.Warnings.Count - MaxListedWarnings} more</text>\n");
+            }
+        }
+        svg.Append("</g>\n");
+    }
+
+    /// <summary>Consecutive segments of one kind that join up, as one polyline each.</summary>
+    internal static IEnumerable<(SegmentKind Kind, List<Vector> Points)> Runs(IReadOnlyList<PathSegment> segments)
+    {
+        List<Vector>? run = null;
+        SegmentKind kind = SegmentKind.Linear;
+        foreach (PathSegment segment in segments)
+        {
+            if (run is not null && segment.Kind == kind && run[^1] == segment.Points[0])
+            {
+                run.AddRange(segment.Points.Skip(1));
+                continue;
+            }
+            if (run is not null)
+            {
+                yield return (kind, run);
+            }
+            run = [.. segment.Points];
+            kind = segment.Kind;
+        }
+        if (run is not null)
+        {
+            yield return (kind, run);
+        }
+    }
+
+    /// <summary>1, 2 or 5 times a power of ten, at least <paramref name="rough"/>.</summary>
+    internal static double NiceStep(double rough)
+    {
+        double power = Math.Pow(10, Math.Floor(Math.Log10(Math.Max(rough, 1e-6))));
+        foreach (double m in new[] { 1.0, 2, 5, 10 })
+        {
+            if (m * power >= rough)
+            {
+                return m * power;
+            }
+        }
+        return 10 * power;
+    }
+
+    private static string Shorten(string text, int max) => text.Length <= max ? text : text[..(max - 1)] + "…";
+
+    private static string P(Vector? p) => p is Vector v ? $"[{G(v.X)}, {G(v.Y)}, {G(v.Z)}] mm" : "unknown";
+
+    /// <summary>A coordinate as written in the file: up to 3 decimals, invariant culture.</summary>
+    internal static string F(double value) => value.ToString("0.###", CultureInfo.InvariantCulture);
+
+    private static string F6(double value) => value.ToString("0.######", CultureInfo.InvariantCulture);
+
+    private static string G(double value) => value.ToString("0.##", CultureInfo.InvariantCulture);
+
+    private static string Esc(string text) => SecurityElement.Escape(text);
+}

@@ -1,0 +1,212 @@
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Cli.Simulation;
+
+/// <summary>
+/// Makes a virtual controller reachable at the address and port a user chose (<c>machina sim --bind --port</c>): listens there and
+/// passes bytes both ways to the controller on 127.0.0.1, and logs every request a host sends, one line each.
+/// </summary>
+internal sealed class TcpRelay : IAsyncDisposable
+{
+    private const int MaxPortAttempts = 50;
+    private readonly List<TcpListener> _listeners;
+    private readonly int _targetPort;
+    private readonly char _statementEnd;
+    private readonly Action<string> _log;
+    private readonly CancellationTokenSource _stopping = new();
+    private readonly List<Task> _tasks = [];
+    private readonly Lock _gate = new();
+    private readonly List<TcpClient> _clients = [];
+    private int _received;
+
+    private TcpRelay(List<TcpListener> listeners, int targetPort, char statementEnd, Action<string> log)
+    {
+        _listeners = listeners;
+        _targetPort = targetPort;
+        _statementEnd = statementEnd;
+        _log = log;
+        Port = ((IPEndPoint)listeners[0].LocalEndpoint).Port;
+    }
+
+    /// <summary>The first port listened on (the others follow at the controller's offsets).</summary>
+    internal int Port { get; }
+
+    /// <summary>How many requests hosts have sent so far.</summary>
+    internal int Received => Volatile.Read(ref _received);
+
+    /// <summary>
+    /// Listens on <paramref name="address"/> at <paramref name="port"/> (0: the system chooses) plus each of the controller's port
+    /// offsets, relaying to <paramref name="controller"/>. <paramref name="log"/> receives one line per event (thread-safe use is the caller's).
+    /// </summary>
+    /// <exception cref="CliException">The ports are taken or the address is not on this computer.</exception>
+    internal static TcpRelay Start(IPAddress address, int port, RunningController controller, Action<string> log)
+    {
+        List<TcpListener> listeners = Listen(address, port, controller.PortOffsets);
+        var relay = new TcpRelay(listeners, controller.Port, controller.StatementEnd, log);
+        for (int i = 0; i < listeners.Count; i++)
+        {
+            int offset = controller.PortOffsets[i];
+            string name = controller.PortNames[i];
+            TcpListener listener = listeners[i];
+            lock (relay._gate)
+            {
+                relay._tasks.Add(Task.Run(() => relay.AcceptAsync(listener, offset, name)));
+            }
+        }
+        return relay;
+    }
+
+    private static List<TcpListener> Listen(IPAddress address, int port, int[] offsets)
+    {
+        for (int attempt = 0; ; attempt++)
+        {
+            var listeners = new List<TcpListener>();
+            try
+            {
+                int first = port;
+                foreach (int offset in offsets)
+                {
+                    var listener = new TcpListener(address, first == 0 ? 0 : first + offset);
+                    listeners.Add(listener);
+                    listener.Start();
+                    if (first == 0)
+                    {
+                        first = ((IPEndPoint)listener.LocalEndpoint).Port;
+                    }
+                }
+                return listeners;
+            }
+            catch (SocketException ex)
+            {
+                listeners.ForEach(l => l.Stop());
+                if (port == 0 && attempt < MaxPortAttempts && ex.SocketErrorCode == SocketError.AddressAlreadyInUse)
+                {
+                    continue; // the system's port was free but the next one was not: try another pair
+                }
+                string ports = string.Join(" and ", offsets.Select(o => (port + o).ToString(System.Globalization.CultureInfo.InvariantCulture)));
+                throw new CliException(ex.SocketErrorCode == SocketError.AddressAlreadyInUse
+                    ? $"Port {ports} on {address} is already in use (another controller or program?); choose another with --port."
+                    : $"Cannot listen on {address} port {ports}: {ex.Message}. Use an address of this computer with --bind (127.0.0.1 by default).");
+            }
+        }
+    }
+
+    private async Task AcceptAsync(TcpListener listener, int offset, string name)
+    {
+        CancellationToken token = _stopping.Token;
+        while (!token.IsCancellationRequested)
+        {
+            TcpClient client;
+            try
+            {
+                client = await listener.AcceptTcpClientAsync(token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException)
+            {
+                return;
+            }
+            lock (_gate)
+            {
+                _clients.Add(client);
+                _tasks.Add(Task.Run(() => ServeAsync(client, offset, name, token)));
+            }
+        }
+    }
+
+    private async Task ServeAsync(TcpClient client, int offset, string what, CancellationToken token)
+    {
+        string who = client.Client.RemoteEndPoint?.ToString() ?? "a host";
+        using var upstream = new TcpClient { NoDelay = true };
+        try
+        {
+            client.NoDelay = true;
+            await upstream.ConnectAsync(IPAddress.Loopback, _targetPort + offset, token).ConfigureAwait(false);
+            _log($"{who} connected ({what})");
+            using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
+            Task toController = PumpAsync(client.GetStream(), upstream.GetStream(), log: offset == 0, both.Token);
+            Task toHost = PumpAsync(upstream.GetStream(), client.GetStream(), log: false, both.Token);
+            await Task.WhenAny(toController, toHost).ConfigureAwait(false);
+            await both.CancelAsync().ConfigureAwait(false);
+            await Task.WhenAll(toController, toHost).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
+        {
+        }
+        finally
+        {
+            client.Dispose();
+            lock (_gate)
+            {
+                _clients.Remove(client);
+            }
+        }
+        if (!token.IsCancellationRequested)
+        {
+            _log($"{who} disconnected ({what})");
+        }
+    }
+
+    private async Task PumpAsync(NetworkStream from, NetworkStream to, bool log, CancellationToken token)
+    {
+        var buffer = new byte[8192];
+        var statement = new StringBuilder();
+        try
+        {
+            while (true)
+            {
+                int n = await from.ReadAsync(buffer, token).ConfigureAwait(false);
+                if (n == 0)
+                {
+                    return;
+                }
+                await to.WriteAsync(buffer.AsMemory(0, n), token).ConfigureAwait(false);
+                if (log)
+                {
+                    LogStatements(buffer.AsSpan(0, n), statement);
+                }
+            }
+        }
+        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
+        {
+        }
+    }
+
+    private void LogStatements(ReadOnlySpan<byte> bytes, StringBuilder statement)
+    {
+        foreach (byte b in bytes)
+        {
+            char c = (char)b;
+            if (c == _statementEnd || c == '\n')
+            {
+                string text = statement.ToString().Trim();
+                statement.Clear();
+                if (text.Length > 0)
+                {
+                    int n = Interlocked.Increment(ref _received);
+                    _log($"  #{n} received {text}{(c == '\n' ? "" : c.ToString())}");
+                }
+            }
+            else if (!char.IsControl(c) || c == '\t')
+            {
+                statement.Append(c);
+            }
+        }
+    }
+
+    /// <summary>Stops listening and closes every relayed connection.</summary>
+    public async ValueTask DisposeAsync()
+    {
+        await _stopping.CancelAsync().ConfigureAwait(false);
+        _listeners.ForEach(l => l.Stop());
+        Task[] tasks;
+        lock (_gate)
+        {
+            _clients.ForEach(c => c.Dispose());
+            tasks = [.. _tasks];
+        }
+        await Task.WhenAll(tasks).ConfigureAwait(false);
+        _stopping.Dispose();
+    }
+}

@@ -1,0 +1,76 @@
+using Machina.Simulation;
+
+namespace Machina.Cli.Simulation;
+
+/// <summary>How a virtual controller started by the command line behaves.</summary>
+/// <param name="SpeedFactor">How much faster than real time it moves (1 = real time).</param>
+/// <param name="Model">The arm it moves like, or null (joints and pose then stay independent).</param>
+internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null);
+
+/// <summary>A virtual controller listening on 127.0.0.1, until disposed.</summary>
+internal sealed class RunningController(RobotType brand, int port, int[] ports, string[] portNames, char statementEnd, Func<ValueTask> stop, Func<string> summary) : IAsyncDisposable
+{
+    /// <summary>The brand whose driver it imitates.</summary>
+    internal RobotType Brand { get; } = brand;
+
+    /// <summary>Where a Machina host connects: always 127.0.0.1.</summary>
+    internal string Host => "127.0.0.1";
+
+    /// <summary>The port a Machina host connects to.</summary>
+    internal int Port { get; } = port;
+
+    /// <summary>Every port it listens on, as offsets from <see cref="Port"/> (ABB: 0 for the driver, 1 for the monitor).</summary>
+    internal int[] PortOffsets { get; } = ports;
+
+    /// <summary>What each port is for (ABB: "driver", "monitor"), in the order of <see cref="PortOffsets"/>.</summary>
+    internal string[] PortNames { get; } = portNames;
+
+    /// <summary>The character that ends one request of its protocol (ABB: ';'), for logging what it receives.</summary>
+    internal char StatementEnd { get; } = statementEnd;
+
+    /// <summary>What it did: requests received and executed.</summary>
+    internal string Summary() => summary();
+
+    /// <summary>Stops it and closes its connections.</summary>
+    public ValueTask DisposeAsync() => stop();
+}
+
+/// <summary>
+/// THE place where the command line starts virtual controllers, for <c>machina sim BRAND</c> and <c>machina run --sim</c>.
+/// Adding a brand is one line in <see cref="StartAsync"/> once its virtual controller exists in Machina.Simulation.
+/// </summary>
+internal static class VirtualControllers
+{
+    /// <summary>The brands that have a virtual controller in this build.</summary>
+    internal static readonly RobotType[] Available = [RobotType.ABB];
+
+    /// <summary>Starts a virtual controller of <paramref name="brand"/> on 127.0.0.1 (an OS-chosen port).</summary>
+    /// <exception cref="CliException">This build has no virtual controller for the brand.</exception>
+    internal static async Task<RunningController> StartAsync(RobotType brand, VirtualControllerOptions options, CancellationToken cancellationToken) => brand switch
+    {
+        RobotType.ABB => await StartAbbAsync(options, cancellationToken).ConfigureAwait(false),
+        // After the UR and KUKA virtual controllers are merged: RobotType.UR => await StartUrAsync(options, cancellationToken), …
+        RobotType.UR or RobotType.KUKA => throw NotInThisBuild(brand),
+        _ => throw new UsageException($"{brand} devices have no virtual controller: only robot arms (abb, ur, kuka) are controlled online."),
+    };
+
+    /// <summary>The error for an arm brand whose online control is still being built.</summary>
+    internal static CliException NotInThisBuild(RobotType brand) => new(
+        $"Online control of {brand} robots (and its virtual controller) is not available in this build yet; " +
+        $"only {string.Join(", ", Available.Select(b => b.ToString()))} is. Compile the program instead: machina compile PROGRAM --brand {Brands.Name(brand)}");
+
+    private static async Task<RunningController> StartAbbAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
+    {
+        var settings = new VirtualAbbControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
+        if (options.Model is RobotModel model)
+        {
+            var kinematics = new ModelKinematics(model);
+            (Vector position, Rotation rotation) = kinematics.Forward(settings.InitialJoints);
+            settings = settings with { Kinematics = kinematics, InitialPosition = position, InitialRotation = rotation };
+        }
+        var controller = new VirtualAbbController(settings);
+        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
+        return new RunningController(RobotType.ABB, controller.Port, [0, 1], ["driver", "monitor"], ';', controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} malformed");
+    }
+}

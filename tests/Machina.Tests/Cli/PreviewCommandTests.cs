@@ -1,0 +1,209 @@
+using System.Globalization;
+using System.Text.Json;
+using System.Text.RegularExpressions;
+using System.Xml.Linq;
+
+namespace Machina.Tests.Cli;
+
+public class PreviewCommandTests
+{
+    private const string Program = """
+        MoveTo(300, -100, 400);
+        Move(0, 0, -100);
+        Move(150, 0, 0);
+        MotionMode("joint");
+        MoveTo(450, 100, 300);
+        MotionMode("linear");
+        ArcMotionTo(375, 0, 360, 300, 100, 300);
+        Rotate(0, 0, 1, 10);
+        MoveTo(300, 100, 450);
+        """;
+
+    /// <summary>The program's targets, worked out by hand: the first absolute position, then each motion that moves the tip.</summary>
+    private static readonly double[][] Targets =
+    [
+        [300, -100, 400], [300, -100, 300], [450, -100, 300], [450, 100, 300], [300, 100, 300], [300, 100, 450],
+    ];
+
+    private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
+
+    [Fact]
+    public async Task Preview_Svg_DrawsTheProgramsTargetsInEveryView()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", Program);
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--out", "pics/p.svg");
+
+        Assert.Equal(0, result.Exit);
+        Assert.Equal("pics/p.svg", result.Lines.Single());
+        XDocument svg = XDocument.Load(cli.PathOf("pics/p.svg"));
+        foreach ((string view, int h, int v) in new[] { ("top", 0, 1), ("front", 0, 2), ("side", 1, 2) })
+        {
+            XElement group = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("data-view") == view);
+            double[][] circles = group.Descendants(Svg + "circle").Select(c => new[] { D(c, "cx"), D(c, "cy") }).ToArray();
+            Assert.Equal(Targets.Select(t => new[] { t[h], t[v] }), circles);
+            // The polylines pass through every target, in order, with the arc sampled between its ends.
+            List<double[]> drawn = group.Descendants(Svg + "polyline").SelectMany(p => Points(p)).ToList();
+            int at = 0;
+            foreach (double[] target in Targets)
+            {
+                at = drawn.FindIndex(at, p => Math.Abs(p[0] - target[h]) < 1e-3 && Math.Abs(p[1] - target[v]) < 1e-3);
+                Assert.True(at >= 0, $"{view}: target [{string.Join(", ", target)}] is not drawn in order");
+            }
+        }
+        XElement top = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("data-view") == "top");
+        Assert.Equal(["linear", "joint", "arc", "linear"], top.Descendants(Svg + "polyline").Select(p => (string)p.Attribute("data-kind")!));
+        Assert.Equal(3, svg.Descendants(Svg + "g").Count(g => (string?)g.Attribute("class") == "start"));
+        Assert.Equal(3, svg.Descendants(Svg + "g").Count(g => (string?)g.Attribute("class") == "end"));
+    }
+
+    [Fact]
+    public async Task Preview_Html_EmbedsTheProgramsTargetsAndIsSelfContained()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", Program);
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--out", "p.html");
+
+        Assert.Equal(0, result.Exit);
+        string html = File.ReadAllText(cli.PathOf("p.html"));
+        Match json = Regex.Match(html, "<script type=\"application/json\" id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline);
+        Assert.True(json.Success);
+        using JsonDocument data = JsonDocument.Parse(json.Groups[1].Value);
+        double[][] targets = data.RootElement.GetProperty("targets").EnumerateArray().Select(t => t.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
+        Assert.Equal(Targets, targets);
+        Assert.Equal(Targets[0], data.RootElement.GetProperty("start").EnumerateArray().Select(v => v.GetDouble()));
+        Assert.Equal(Targets[^1], data.RootElement.GetProperty("end").EnumerateArray().Select(v => v.GetDouble()));
+        Assert.Equal(["linear", "linear", "joint", "arc", "linear"], data.RootElement.GetProperty("segments").EnumerateArray().Select(s => s.GetProperty("kind").GetString()));
+        Assert.Equal([2, 3, 5, 7, 9], data.RootElement.GetProperty("segments").EnumerateArray().Select(s => s.GetProperty("line").GetInt32()));
+        // The arc is drawn along its circle: every sample is as far from the circle's centre as its three points.
+        double[][] arc = data.RootElement.GetProperty("segments")[3].GetProperty("points").EnumerateArray()
+            .Select(p => p.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
+        double[] centre = Circumcentre([450, 100, 300], [375, 0, 360], [300, 100, 300]);
+        double radius = Distance(centre, [450, 100, 300]);
+        Assert.True(arc.Length > 10);
+        Assert.All(arc, p => Assert.Equal(radius, Distance(centre, p), 2));
+        Assert.Equal([375, 0, 360], arc.MinBy(p => Distance(p, [375, 0, 360]))!);
+        Assert.DoesNotMatch("(src|href)=\"(https?:)?//", html);
+        Assert.Contains("getContext('2d')", html, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task Preview_WithModel_DrawsTheWarningWhereItHappens()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", "MoveTo(300, 0, 400);\nMoveTo(900, 0, 400);\nMoveTo(300, 0, 300);\n");
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--model", "IRB 120", "--out", "p.svg");
+
+        Assert.Equal(0, result.Exit);
+        Assert.Contains("p.machina:2:1: warning: MoveTo(900,0,400); Unreachable", result.Stderr, StringComparison.Ordinal);
+        XDocument svg = XDocument.Load(cli.PathOf("p.svg"));
+        XElement[] warnings = svg.Descendants(Svg + "g").Where(g => (string?)g.Attribute("class") == "warning").ToArray();
+        Assert.Equal(3, warnings.Length); // once in each view
+        Assert.All(warnings, w => Assert.StartsWith("line 2: MoveTo(900,0,400); Unreachable", w.Element(Svg + "title")!.Value, StringComparison.Ordinal));
+        // In the top view the marker sits on the drawn target (900, 0): apply the view's transform to it.
+        XElement top = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("data-view") == "top");
+        (double sx, double sy) = Transform(top, 900, 0);
+        XElement ring = warnings.Select(w => w.Element(Svg + "circle")!).First(c => Math.Abs(D(c, "cx") - sx) < 0.01);
+        Assert.Equal(sy, D(ring, "cy"), 2);
+    }
+
+    [Fact]
+    public async Task Preview_JointMoveWithModel_FollowsTheArmsJoints()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", "MoveTo(300, 0, 400);\nMotionMode(\"joint\");\nMoveTo(250, 250, 300);\n");
+        Robot robot = Robot.Create("T", "ABB", "IRB 120");
+        robot.MoveTo(300, 0, 400);
+        Joints a = robot.GetIssuedState().Axes!.Value;
+        robot.MotionMode("joint");
+        robot.MoveTo(250, 250, 300);
+        Joints b = robot.GetIssuedState().Axes!.Value;
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--model", "IRB 120", "--out", "p.html");
+
+        Assert.Equal(0, result.Exit);
+        string html = File.ReadAllText(cli.PathOf("p.html"));
+        using JsonDocument data = JsonDocument.Parse(Regex.Match(html, "id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline).Groups[1].Value);
+        JsonElement joint = data.RootElement.GetProperty("segments").EnumerateArray().Single();
+        Assert.Equal("joint", joint.GetProperty("kind").GetString());
+        double[][] points = joint.GetProperty("points").EnumerateArray().Select(p => p.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
+        Assert.Equal(25, points.Length);
+        Assert.Equal([300, 0, 400], points[0]);
+        Assert.Equal([250, 250, 300], points[^1]);
+        // Half way, every joint is half way: the tip is the forward kinematics of the mean joints (no tool).
+        Vector middle = RobotModels.Get("IRB 120").Kinematics.Forward(new Joints(
+            (a.J1 + b.J1) / 2, (a.J2 + b.J2) / 2, (a.J3 + b.J3) / 2, (a.J4 + b.J4) / 2, (a.J5 + b.J5) / 2, (a.J6 + b.J6) / 2)).Position;
+        Assert.Equal(middle.X, points[12][0], 3);
+        Assert.Equal(middle.Y, points[12][1], 3);
+        Assert.Equal(middle.Z, points[12][2], 3);
+        // A joint move is not a straight line: the middle is off the chord.
+        Assert.True(Math.Abs(middle.Z - 350) > 1 || Math.Abs(middle.X - 275) > 1 || Math.Abs(middle.Y - 125) > 1);
+        Assert.Contains("joint move (the tool path as the joints turn)", html, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task Preview_Printer_DrawsTravelAndExtrusion()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", "MoveTo(0, 0, 0.2);\nMoveTo(20, 0, 0.2);\nExtrude(true);\nMove(0, 20, 0);\nMove(-20, 0, 0);\nExtrude(false);\nMove(0, 0, 5);\n");
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--brand", "marlin", "--out", "p.html");
+
+        Assert.Equal(0, result.Exit);
+        string html = File.ReadAllText(cli.PathOf("p.html"));
+        using JsonDocument data = JsonDocument.Parse(Regex.Match(html, "id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline).Groups[1].Value);
+        Assert.Equal(["travel", "extrusion", "extrusion", "travel"], data.RootElement.GetProperty("segments").EnumerateArray().Select(s => s.GetProperty("kind").GetString()));
+    }
+
+    [Fact]
+    public async Task Preview_UnknownPictureKind_IsAUsageError()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", Program);
+
+        CliResult result = await cli.RunAsync("preview", "p.machina", "--out", "p.png");
+
+        Assert.Equal(2, result.Exit);
+        Assert.Contains("--out must end in .svg", result.Stderr, StringComparison.Ordinal);
+    }
+
+    /// <summary>The centre of the circle through three points: the point of their plane equally far from all three (Cramer's rule).</summary>
+    private static double[] Circumcentre(double[] a, double[] b, double[] c)
+    {
+        double[] ab = Sub(b, a), ac = Sub(c, a), n = Cross(ab, ac);
+        // Solve (p − a)·ab = |ab|²/2, (p − a)·ac = |ac|²/2, (p − a)·n = 0.
+        double[][] m = [ab, ac, n];
+        double[] r = [Dot(ab, ab) / 2, Dot(ac, ac) / 2, 0];
+        double det = Dot(m[0], Cross(m[1], m[2]));
+        double[] x = new double[3];
+        for (int i = 0; i < 3; i++)
+        {
+            double[][] mi = m.Select((row, k) => row.Select((v, j) => j == i ? r[k] : v).ToArray()).ToArray();
+            x[i] = Dot(mi[0], Cross(mi[1], mi[2])) / det;
+        }
+        return [a[0] + x[0], a[1] + x[1], a[2] + x[2]];
+    }
+
+    private static double[] Sub(double[] p, double[] q) => [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
+
+    private static double Dot(double[] p, double[] q) => (p[0] * q[0]) + (p[1] * q[1]) + (p[2] * q[2]);
+
+    private static double[] Cross(double[] p, double[] q) => [(p[1] * q[2]) - (p[2] * q[1]), (p[2] * q[0]) - (p[0] * q[2]), (p[0] * q[1]) - (p[1] * q[0])];
+
+    private static double Distance(double[] p, double[] q) => Math.Sqrt(Dot(Sub(p, q), Sub(p, q)));
+
+    private static double D(XElement e, string attribute) => double.Parse((string)e.Attribute(attribute)!, CultureInfo.InvariantCulture);
+
+    private static IEnumerable<double[]> Points(XElement polyline) => ((string)polyline.Attribute("points")!)
+        .Split(' ').Select(p => p.Split(',').Select(v => double.Parse(v, CultureInfo.InvariantCulture)).ToArray());
+
+    /// <summary>Applies "translate(a b) scale(s t) translate(c d)" to a point.</summary>
+    private static (double X, double Y) Transform(XElement group, double u, double v)
+    {
+        double[] n = Regex.Matches((string)group.Attribute("transform")!, @"-?[\d.]+").Select(m => double.Parse(m.Value, CultureInfo.InvariantCulture)).ToArray();
+        return (n[0] + (n[2] * (u + n[4])), n[1] + (n[3] * (v + n[5])));
+    }
+}
