@@ -64,12 +64,26 @@ internal sealed class CompileJob
     internal IReadOnlyList<ProgramWarning> Warnings => _warnings;
 
     /// <summary>Records that <paramref name="action"/> could not be expressed exactly.</summary>
-    internal void Warn(RobotAction action, string message) =>
-        _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), message) { Line = Source?.LineOf(action) });
+    internal void Warn(RobotAction action, string message) => Keep(new ProgramWarning(action.Id, action.ToInstruction(), message));
 
     /// <summary>Records a kinematic pre-flight issue of <paramref name="action"/>.</summary>
     internal void Warn(RobotAction action, KinematicIssue issue) =>
-        _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind, Line = Source?.LineOf(action) });
+        Keep(new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind });
+
+    /// <summary>Most warnings kept in <see cref="Warnings"/>; later ones are only counted (so that memory does not grow with a long program).</summary>
+    internal int MaxWarningsKept { get; init; } = int.MaxValue;
+
+    /// <summary>All warnings raised, including those beyond <see cref="MaxWarningsKept"/>.</summary>
+    internal int WarningCount { get; private set; }
+
+    private void Keep(ProgramWarning warning)
+    {
+        WarningCount++;
+        if (_warnings.Count < MaxWarningsKept)
+        {
+            _warnings.Add(Source is null ? warning : warning with { Line = Source.LineOf(warning.ActionId) });
+        }
+    }
 
     /// <summary>
     /// For actions read from instruction text, a refusal is an error in the text: it throws with the action's position, as

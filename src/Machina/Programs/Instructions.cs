@@ -40,6 +40,9 @@ public static class Instructions
         }
     }
 
+    /// <summary>How many warnings <c>CompileToFolder</c> keeps in its result (all are counted, and all are written as comments in the program).</summary>
+    public const int MaxWarningsKept = 1000;
+
     /// <summary>
     /// Compiles an instruction file (a <c>.machina</c> program, UTF-8) straight into program files in <paramref name="folderPath"/>,
     /// reading it statement by statement: memory stays small and the same whatever the program's length, so files of
@@ -118,8 +121,8 @@ public static class Instructions
             throw new ArgumentException("Lines end with \"\\n\" or \"\\r\\n\".", nameof(newLine));
         }
         var source = new InstructionSource(open, cancellationToken);
-        var job = new CompileJob(CompileJob.SafeProgramName(programName), source, options ?? CompileOptions.Default) { Source = source };
+        var job = new CompileJob(CompileJob.SafeProgramName(programName), source, options ?? CompileOptions.Default) { Source = source, MaxWarningsKept = MaxWarningsKept };
         IReadOnlyList<string> paths = compiler.CompileToFolder(job, folderPath, newLine, replaceAtEnd: true);
-        return new FolderCompileResult(job.ProgramName, language, paths, job.Warnings, source.Count);
+        return new FolderCompileResult(job.ProgramName, language, paths, job.Warnings, job.WarningCount, source.Count);
     }
 }

@@ -111,6 +111,24 @@ public sealed class InstructionFileCompileTests : IDisposable
     }
 
     [Fact]
+    public void CompileToFolder_ManyWarnings_KeepsTheFirstAndCountsAll()
+    {
+        string file = Path.Combine(_root, "rotations.machina");
+        var text = new StringBuilder("MoveTo(100, 0, 10);\n");
+        for (int i = 0; i < Instructions.MaxWarningsKept + 200; i++)
+        {
+            text.Append("Rotate(0, 0, 1, 1);\n");
+        }
+        File.WriteAllText(file, text.ToString());
+
+        FolderCompileResult result = Instructions.CompileToFolder(file, RobotType.ZMORPH, Path.Combine(_root, "out"));
+
+        Assert.Equal(Instructions.MaxWarningsKept + 200, result.WarningCount);
+        Assert.Equal(Instructions.MaxWarningsKept, result.Warnings.Count);
+        Assert.Equal((Instructions.MaxWarningsKept + 1, 2, Instructions.MaxWarningsKept + 1), (result.Warnings[^1].ActionId, result.Warnings[0].Line, result.Warnings[^1].Line));
+    }
+
+    [Fact]
     public void CompileToFolder_TextReader_SameBytesAsFile()
     {
         string file = Path.Combine(_root, "Mixed.machina");
