@@ -9,6 +9,7 @@ internal static class Catalog
         var scenarios = new List<Scenario> { new IssueScenario() };
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: false)));
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: true)));
+        scenarios.AddRange(languages.Select(l => new FileCompileScenario(l)));
         scenarios.Add(new ParseScenario(workloads));
 #if MACHINA_ONLINE
         scenarios.Add(new StreamScenario(wideWindow: false));

@@ -72,8 +72,12 @@ internal sealed class InstructionParser
         {
             throw Error(line, column, $"expected an instruction such as MoveTo(400, 300, 500), but found '{Describe(_text[nameStart])}'.");
         }
-        string name = _text.Substring(nameStart, _pos - nameStart);
-        InstructionCatalog.Overload[] overloads = Resolve(name, line, column);
+        // Known names are looked up in place: the catalogue's own string is used, so no name is allocated per statement.
+        if (!InstructionCatalog.TryFind(_text.AsSpan(nameStart, _pos - nameStart), out string name, out InstructionCatalog.Overload[] overloads))
+        {
+            name = _text.Substring(nameStart, _pos - nameStart);
+            overloads = Resolve(name, line, column);
+        }
         SkipSpaces();
         if (_pos >= _text.Length || _text[_pos] != '(')
         {

@@ -1,5 +1,4 @@
 using System.Collections;
-using System.Text;
 
 namespace Machina;
 
@@ -57,12 +56,16 @@ internal sealed class PackedLines : IReadOnlyList<string>
         }
     }
 
-    /// <summary>Appends every line followed by <paramref name="newLine"/>, without creating strings.</summary>
-    internal void AppendTo(StringBuilder text, string newLine)
+    /// <summary>Copies every line followed by <paramref name="newLine"/> into <paramref name="destination"/>, which must be exactly long enough.</summary>
+    internal void CopyTo(Span<char> destination, string newLine)
     {
+        int at = 0;
         foreach (Line line in _lines)
         {
-            text.Append(Span(line)).Append(newLine);
+            Span(line).CopyTo(destination[at..]);
+            at += line.Length;
+            newLine.CopyTo(destination[at..]);
+            at += newLine.Length;
         }
     }
 

@@ -1,5 +1,3 @@
-using System.Text;
-
 namespace Machina.Tests.Programs;
 
 public class PackedLinesTests
@@ -43,7 +41,7 @@ public class PackedLinesTests
     }
 
     [Fact]
-    public void WriteTo_AndAppendTo_GiveEachLineWithTheNewLine()
+    public void WriteTo_AndCopyTo_GiveEachLineWithTheNewLine()
     {
         var packed = new PackedLines();
         packed.Add("MoveL p1;");
@@ -51,10 +49,10 @@ public class PackedLinesTests
         packed.Add("! done");
         var writer = new StringWriter();
         packed.WriteTo(writer, "\r\n");
-        var text = new StringBuilder();
-        packed.AppendTo(text, "\n");
+        var text = new char[packed.CharacterCount + 3];
+        packed.CopyTo(text, "\n");
         Assert.Equal("MoveL p1;\r\n\r\n! done\r\n", writer.ToString());
-        Assert.Equal("MoveL p1;\n\n! done\n", text.ToString());
+        Assert.Equal("MoveL p1;\n\n! done\n", new string(text));
     }
 
     [Fact]
