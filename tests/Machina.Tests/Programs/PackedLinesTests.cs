@@ -30,6 +30,26 @@ public class PackedLinesTests
     }
 
     [Fact]
+    public void Add_AsciiAndOtherLinesMixed_EachReadsBackExactly()
+    {
+        string[] expected = ["MoveL p1;", "unicodé ✓ 日本", "", "\u007f del", "🤖 robot", "plain", "\u0080 first non-ASCII", new string('z', 5000)];
+        var packed = new PackedLines();
+        foreach (string line in expected)
+        {
+            packed.Add(line);
+        }
+        var writer = new StringWriter();
+        packed.WriteTo(writer, "\n");
+        var copied = new char[packed.CharacterCount + expected.Length];
+        packed.CopyTo(copied, "\n");
+
+        Assert.Equal(expected, packed);
+        Assert.Equal(expected[1], packed[1]);
+        Assert.Equal(string.Concat(expected.Select(l => l + "\n")), writer.ToString());
+        Assert.Equal(writer.ToString(), new string(copied));
+    }
+
+    [Fact]
     public void Add_LineLongerThanLargestBlock_IsKeptWhole()
     {
         var packed = new PackedLines();
