@@ -51,6 +51,9 @@ internal sealed class CompileProcessScenario(RobotType brand, bool huge, string 
     /// <summary>The language compiled.</summary>
     public RobotType Brand => brand;
 
+    /// <summary>True for the 10^7-line scenarios (no warm repetition: one process is long enough).</summary>
+    public bool Huge => huge;
+
     /// <summary>True for the streaming entry point (the others are the robot paths it replaces).</summary>
     public bool Streaming => path == "stream";
 

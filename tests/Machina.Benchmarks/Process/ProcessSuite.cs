@@ -60,7 +60,7 @@ internal static class ProcessSuite
             {
                 Console.Error.Write($"\r  {scenario.Name} at {Report.Count(size)}...".PadRight(70));
             }
-            ProcessResult result = Measure(scenario, size, runs, warm: scenario is CompileProcessScenario, inputs);
+            ProcessResult result = Measure(scenario, size, runs, warm: scenario is CompileProcessScenario { Huge: false }, inputs);
             results.Add(result);
             if (scenario is CompileProcessScenario { Streaming: true } compile)
             {

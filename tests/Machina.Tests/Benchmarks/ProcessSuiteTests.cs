@@ -25,7 +25,8 @@ public class ProcessSuiteTests
             Assert.True(r.Ratio is > 0 and < double.PositiveInfinity, $"{r.Scenario}: ratio {r.Ratio}");
             Assert.NotEqual("-", r.TargetText);
         });
-        Assert.All(results.Where(r => r.Scenario.StartsWith("cold-compile", StringComparison.Ordinal)), r => Assert.InRange(r.WarmWorkSeconds!.Value, 1e-5, 60));
+        Assert.All(results.Where(r => r.Scenario.StartsWith("cold-compile", StringComparison.Ordinal) && !r.Scenario.Contains("10m", StringComparison.Ordinal)),
+            r => Assert.InRange(r.WarmWorkSeconds!.Value, 1e-5, 60));
         Assert.Contains("over 999", results.Single(r => r.Scenario == "cold-first-ack").Note, StringComparison.Ordinal);
     }
 
