@@ -9,6 +9,7 @@ internal static class Catalog
         var scenarios = new List<Scenario> { new IssueScenario() };
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: false)));
         scenarios.AddRange(languages.Select(l => new CompileScenario(workloads, l, toFolder: true)));
+        scenarios.AddRange(languages.Select(l => new FileCompileScenario(l)));
         scenarios.Add(new ParseScenario(workloads));
         scenarios.Add(new CliCompileScenario());
 #if MACHINA_ONLINE

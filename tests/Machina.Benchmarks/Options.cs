@@ -15,6 +15,10 @@ internal sealed record Options
           --runs N          measured runs per scenario (median is reported; default 3)
           --warmup N        warm-up runs before measuring (default 1)
           --quick           small sizes (10^4) and 1 run, to check that everything works
+          --process         the whole-process scenarios instead: fresh processes timed from outside (cold-compile-abb,
+                            cold-compile-10m-…, cold-stream, cold-first-ack); see docs/performance.md
+          --child-env K=V   (with --process) set an environment variable in every child, e.g. DOTNET_TieredPGO=0 (repeatable)
+          --child-exe PATH  (with --process) run another build of this program as the child, e.g. a ReadyToRun publish
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -24,6 +28,10 @@ internal sealed record Options
     public int? Size { get; init; }
     public bool? Scaling { get; init; }
     public int Runs { get; init; } = 3;
+    public bool RunsGiven { get; init; }
+    public bool Process { get; init; }
+    public Dictionary<string, string> ChildEnvironment { get; init; } = [];
+    public string? ChildExecutable { get; init; }
     public int Warmups { get; init; } = 1;
     public bool Quick { get; init; }
     public bool Json { get; init; }
@@ -41,7 +49,10 @@ internal sealed record Options
             {
                 "--scenario" or "-s" => options with { Scenarios = [.. options.Scenarios, .. Value(args, ref i).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)] },
                 "--size" or "-n" => options with { Size = Positive(args, ref i) },
-                "--runs" => options with { Runs = Positive(args, ref i) },
+                "--runs" => options with { Runs = Positive(args, ref i), RunsGiven = true },
+                "--process" => options with { Process = true },
+                "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
+                "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },
                 "--warmup" => options with { Warmups = NonNegative(args, ref i) },
                 "--scaling" => options with { Scaling = true },
                 "--no-scaling" => options with { Scaling = false },
@@ -58,6 +69,16 @@ internal sealed record Options
     /// <summary>True when the scenario was asked for (all are, when none is named).</summary>
     public bool Selects(Scenario scenario) => Scenarios.Count == 0 || Scenarios.Any(s =>
         scenario.Name.Equals(s, StringComparison.OrdinalIgnoreCase) || scenario.Name.StartsWith(s + "-", StringComparison.OrdinalIgnoreCase));
+
+    private static Dictionary<string, string> WithVariable(Dictionary<string, string> variables, string text)
+    {
+        string[] parts = text.Split('=', 2);
+        if (parts.Length != 2 || parts[0].Length == 0)
+        {
+            throw new ArgumentException($"--child-env needs NAME=VALUE, not \"{text}\".");
+        }
+        return new Dictionary<string, string>(variables) { [parts[0]] = parts[1] };
+    }
 
     private static string Value(string[] args, ref int i) =>
         i + 1 < args.Length ? args[++i] : throw new ArgumentException($"Option {args[i]} needs a value.");

@@ -3,6 +3,12 @@
 using System.Diagnostics;
 using Machina.Benchmarks;
 
+if (args.Length > 0 && args[0] == "--child")
+{
+    // The process under test of the whole-process scenarios (see Process/Child.cs).
+    return Child.Run(args[1..], Stopwatch.GetTimestamp());
+}
+
 Options options;
 try
 {
@@ -18,6 +24,24 @@ if (options.Help)
 {
     Console.WriteLine(Options.Usage);
     return 0;
+}
+
+if (options.Process)
+{
+    foreach ((string key, string value) in options.ChildEnvironment)
+    {
+        ChildProcess.Environment[key] = value;
+    }
+    ChildProcess.Executable = options.ChildExecutable;
+    if (options.List)
+    {
+        foreach (ProcessScenario s in ProcessSuite.All())
+        {
+            Console.WriteLine($"{s.Name,-28} {s.Title} (target: {s.TargetText})");
+        }
+        return 0;
+    }
+    return ProcessSuite.Run(options).ExitCode;
 }
 
 var workloads = new Workloads();

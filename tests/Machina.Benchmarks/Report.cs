@@ -113,9 +113,9 @@ internal static class Report
         _ => bytes.ToString("0", Inv) + " B",
     };
 
-    private static string Count(double n) => n.ToString("N0", Inv);
+    public static string Count(double n) => n.ToString("N0", Inv);
 
-    private static string Table(string[] header, List<string[]> lines)
+    public static string Table(string[] header, List<string[]> lines)
     {
         int[] widths = header.Select((h, i) => Math.Max(h.Length, lines.Select(l => l[i].Length).DefaultIfEmpty(0).Max())).ToArray();
         string Row(string[] cells) => "| " + string.Join(" | ", cells.Select((c, i) => i == 0 || i == cells.Length - 1 ? c.PadRight(widths[i]) : c.PadLeft(widths[i]))) + " |";

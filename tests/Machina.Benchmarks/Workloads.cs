@@ -69,7 +69,7 @@ internal sealed class Workloads
         }
     }
 
-    private static string Line(int i, Random random)
+    public static string Line(int i, Random random)
     {
         double R(double scale) => Math.Round((random.NextDouble() - 0.5) * scale, 3);
         return (i % 50) switch

@@ -42,15 +42,15 @@ internal sealed class RunningController(RobotType brand, int port, int[] ports, 
 internal static class VirtualControllers
 {
     /// <summary>The brands that have a virtual controller in this build.</summary>
-    internal static readonly RobotType[] Available = [RobotType.ABB];
+    internal static readonly RobotType[] Available = [RobotType.ABB, RobotType.KUKA];
 
     /// <summary>Starts a virtual controller of <paramref name="brand"/> on 127.0.0.1 (an OS-chosen port).</summary>
     /// <exception cref="CliException">This build has no virtual controller for the brand.</exception>
     internal static async Task<RunningController> StartAsync(RobotType brand, VirtualControllerOptions options, CancellationToken cancellationToken) => brand switch
     {
         RobotType.ABB => await StartAbbAsync(options, cancellationToken).ConfigureAwait(false),
-        // After the UR and KUKA virtual controllers are merged: RobotType.UR => await StartUrAsync(options, cancellationToken), …
-        RobotType.UR or RobotType.KUKA => throw NotInThisBuild(brand),
+        RobotType.KUKA => await StartKukaAsync(options, cancellationToken).ConfigureAwait(false),
+        RobotType.UR => throw NotInThisBuild(brand),
         _ => throw new UsageException($"{brand} devices have no virtual controller: only robot arms (abb, ur, kuka) are controlled online."),
     };
 
@@ -64,13 +64,24 @@ internal static class VirtualControllers
         var settings = new VirtualAbbControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
         if (options.Model is RobotModel model)
         {
-            var kinematics = new ModelKinematics(model);
-            (Vector position, Rotation rotation) = kinematics.Forward(settings.InitialJoints);
-            settings = settings with { Kinematics = kinematics, InitialPosition = position, InitialRotation = rotation };
+            settings = settings with { Model = model };
         }
         var controller = new VirtualAbbController(settings);
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
         return new RunningController(RobotType.ABB, controller.Port, [0, 1], ["driver", "monitor"], ';', controller.DisposeAsync,
             () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} malformed");
+    }
+
+    private static async Task<RunningController> StartKukaAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
+    {
+        var settings = new VirtualKukaControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
+        if (options.Model is RobotModel model)
+        {
+            settings = settings with { Model = model };
+        }
+        var controller = new VirtualKukaController(settings);
+        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
+        return new RunningController(RobotType.KUKA, controller.Port, [0, 1], ["driver", "monitor"], '>', controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
     }
 }

@@ -5,7 +5,7 @@ internal sealed class CompileJob
 {
     private readonly List<ProgramWarning> _warnings = [];
 
-    internal CompileJob(string programName, IReadOnlyList<RobotAction> actions, CompileOptions options, Func<RobotCursor>? newCursor = null)
+    internal CompileJob(string programName, IEnumerable<RobotAction> actions, CompileOptions options, Func<RobotCursor>? newCursor = null)
     {
         ProgramName = programName;
         Actions = actions;
@@ -18,21 +18,84 @@ internal sealed class CompileJob
     /// <summary>Program name, safe for robot languages.</summary>
     internal string ProgramName { get; }
 
-    /// <summary>The actions, in issue order.</summary>
-    internal IReadOnlyList<RobotAction> Actions { get; }
+    /// <summary>
+    /// The actions, in issue order. Compilers may go over them more than once (a pass to collect declarations, a pass to
+    /// write), so this is a list, or a source that reads its text again for each pass (<see cref="InstructionSource"/>).
+    /// </summary>
+    internal IEnumerable<RobotAction> Actions { get; }
+
+    /// <summary>
+    /// Where the actions come from when they are read from instruction text (null for a robot's program): warnings then carry
+    /// the line of their action, and an action that cannot be applied stops the compilation with its position.
+    /// </summary>
+    internal InstructionSource? Source { get; init; }
 
     /// <summary>Compile options.</summary>
     internal CompileOptions Options { get; }
+
+    private (List<string> Declarations, bool SetsAcceleration)? _survey;
+
+    /// <summary>The statements of the custom-code declarations (<c>CustomCode(..., true)</c>), in order, from one pass over the actions.</summary>
+    internal IReadOnlyList<string> CustomDeclarations => Survey().Declarations;
+
+    /// <summary>True when any action sets the acceleration (same pass as <see cref="CustomDeclarations"/>).</summary>
+    internal bool SetsAcceleration => Survey().SetsAcceleration;
+
+    private (List<string> Declarations, bool SetsAcceleration) Survey()
+    {
+        if (_survey is null)
+        {
+            var declarations = new List<string>();
+            bool acceleration = false;
+            foreach (RobotAction action in Actions)
+            {
+                if (action is ActionCustomCode { IsDeclaration: true } custom)
+                {
+                    declarations.Add(custom.Statement);
+                }
+                acceleration |= action is ActionAcceleration;
+            }
+            _survey = (declarations, acceleration);
+        }
+        return _survey.Value;
+    }
 
     /// <summary>Warnings collected so far.</summary>
     internal IReadOnlyList<ProgramWarning> Warnings => _warnings;
 
     /// <summary>Records that <paramref name="action"/> could not be expressed exactly.</summary>
-    internal void Warn(RobotAction action, string message) => _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), message));
+    internal void Warn(RobotAction action, string message) => Keep(new ProgramWarning(action.Id, action.ToInstruction(), message));
 
     /// <summary>Records a kinematic pre-flight issue of <paramref name="action"/>.</summary>
     internal void Warn(RobotAction action, KinematicIssue issue) =>
-        _warnings.Add(new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind });
+        Keep(new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind });
+
+    /// <summary>Most warnings kept in <see cref="Warnings"/>; later ones are only counted (so that memory does not grow with a long program).</summary>
+    internal int MaxWarningsKept { get; init; } = int.MaxValue;
+
+    /// <summary>All warnings raised, including those beyond <see cref="MaxWarningsKept"/>.</summary>
+    internal int WarningCount { get; private set; }
+
+    private void Keep(ProgramWarning warning)
+    {
+        WarningCount++;
+        if (_warnings.Count < MaxWarningsKept)
+        {
+            _warnings.Add(Source is null ? warning : warning with { Line = Source.LineOf(warning.ActionId) });
+        }
+    }
+
+    /// <summary>
+    /// For actions read from instruction text, a refusal is an error in the text: it throws with the action's position, as
+    /// <c>Robot.Do</c> would refuse it. For a robot's own program (already checked when issued) it returns normally.
+    /// </summary>
+    private void RefuseFromSource(RobotAction action, string refusal)
+    {
+        if (Source is not null)
+        {
+            throw Source.Refused(action, refusal);
+        }
+    }
 
     /// <summary>The robot's arm model, or null; with a model the replayed cursors know joints and pose together.</summary>
     internal RobotModel? Model { get; init; }
@@ -62,6 +125,7 @@ internal sealed class CompileJob
             string? refusal = cursor.TryApply(action);
             if (refusal is not null)
             {
+                RefuseFromSource(action, refusal);
                 Warn(action, "skipped: " + refusal);
                 continue;
             }
@@ -85,9 +149,14 @@ internal sealed class CompileJob
         RobotCursor cursor = NewCursor();
         foreach (RobotAction action in Actions)
         {
-            if (cursor.TryApply(action) is null)
+            string? refusal = cursor.TryApply(action);
+            if (refusal is null)
             {
                 yield return (action, cursor);
+            }
+            else
+            {
+                RefuseFromSource(action, refusal);
             }
         }
     }

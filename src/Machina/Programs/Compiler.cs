@@ -27,10 +27,11 @@ internal abstract class Compiler
     }
 
     /// <summary>Compiles the job straight into files in <paramref name="folder"/>; returns their paths.</summary>
-    internal IReadOnlyList<string> CompileToFolder(CompileJob job, string folder, string newLine = "\n")
+    internal IReadOnlyList<string> CompileToFolder(CompileJob job, string folder, string newLine = "\n", bool replaceAtEnd = false)
     {
-        using var output = new FolderProgramOutput(folder, newLine);
+        using var output = new FolderProgramOutput(folder, newLine, replaceAtEnd);
         Emit(job, output);
+        output.Commit();
         return output.Paths;
     }
 

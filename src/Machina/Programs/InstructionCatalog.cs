@@ -14,8 +14,19 @@ internal static class InstructionCatalog
     private static readonly Dictionary<string, string> ProperNames =
         Table.Keys.ToDictionary(k => k, k => k, StringComparer.OrdinalIgnoreCase);
 
+    private static readonly Dictionary<string, Overload[]>.AlternateLookup<ReadOnlySpan<char>> BySpan = Table.GetAlternateLookup<ReadOnlySpan<char>>();
+
     /// <summary>The overloads of an exact (case-sensitive) name, or null.</summary>
     internal static Overload[]? Find(string name) => Table.GetValueOrDefault(name);
+
+    /// <summary>The overloads of an exact (case-sensitive) name read from text, with the name as a string, without allocating; false when unknown.</summary>
+    internal static bool TryFind(ReadOnlySpan<char> name, out string key, out Overload[] overloads)
+    {
+        bool found = BySpan.TryGetValue(name, out string? actual, out Overload[]? value);
+        key = actual ?? "";
+        overloads = value ?? [];
+        return found;
+    }
 
     /// <summary>The properly spelled name when <paramref name="name"/> differs only in letter case, or null.</summary>
     internal static string? ProperName(string name) => ProperNames.GetValueOrDefault(name);

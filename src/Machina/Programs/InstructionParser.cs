@@ -7,14 +7,48 @@ namespace Machina;
 internal sealed class InstructionParser
 {
     private readonly string _text;
-    private readonly InstructionArgs _args = new();
+    private readonly InstructionArgs _args;
+    private readonly bool _final;
     private int _pos;
     private int _line = 1;
     private int _lineStart;
 
-    internal InstructionParser(string text) => _text = text ?? throw new ArgumentNullException(nameof(text));
+    internal InstructionParser(string text)
+        : this(text, new InstructionArgs(), firstLine: 1, start: 0, isFinal: true)
+    {
+    }
+
+    /// <summary>
+    /// A parser for one piece of a longer text (see <see cref="InstructionReader"/>): <paramref name="text"/> starts at the
+    /// beginning of line <paramref name="firstLine"/> and parsing starts at <paramref name="start"/>. When
+    /// <paramref name="isFinal"/> is false more text follows, and a statement cut by the end of this piece throws
+    /// <see cref="StatementCutException"/> instead of a parse error.
+    /// </summary>
+    internal InstructionParser(string text, InstructionArgs args, int firstLine, int start, bool isFinal)
+    {
+        _text = text ?? throw new ArgumentNullException(nameof(text));
+        _args = args;
+        _line = firstLine;
+        _pos = start;
+        _final = isFinal;
+    }
 
     private int Column => _pos - _lineStart + 1;
+
+    /// <summary>The text being parsed.</summary>
+    internal string Text => _text;
+
+    /// <summary>The line the parser has reached (after the last statement read).</summary>
+    internal int Line => _line;
+
+    /// <summary>Line (from 1) of the statement read last.</summary>
+    internal int StatementLine { get; private set; }
+
+    /// <summary>Column (from 1) of the statement read last.</summary>
+    internal int StatementColumn { get; private set; }
+
+    /// <summary>Offset in the text of the start of the line where the statement read last begins.</summary>
+    internal int StatementLineStart { get; private set; }
 
     /// <summary>The next action, or null at the end of the text.</summary>
     /// <exception cref="InstructionParseException">The text is malformed, or a value is not acceptable.</exception>
@@ -26,6 +60,9 @@ internal sealed class InstructionParser
             return null;
         }
         int line = _line, column = Column;
+        StatementLine = line;
+        StatementColumn = column;
+        StatementLineStart = _lineStart;
         int nameStart = _pos;
         while (_pos < _text.Length && (char.IsAsciiLetterOrDigit(_text[_pos]) || _text[_pos] == '_'))
         {
@@ -35,8 +72,12 @@ internal sealed class InstructionParser
         {
             throw Error(line, column, $"expected an instruction such as MoveTo(400, 300, 500), but found '{Describe(_text[nameStart])}'.");
         }
-        string name = _text.Substring(nameStart, _pos - nameStart);
-        InstructionCatalog.Overload[] overloads = Resolve(name, line, column);
+        // Known names are looked up in place: the catalogue's own string is used, so no name is allocated per statement.
+        if (!InstructionCatalog.TryFind(_text.AsSpan(nameStart, _pos - nameStart), out string name, out InstructionCatalog.Overload[] overloads))
+        {
+            name = _text.Substring(nameStart, _pos - nameStart);
+            overloads = Resolve(name, line, column);
+        }
         SkipSpaces();
         if (_pos >= _text.Length || _text[_pos] != '(')
         {
@@ -106,7 +147,7 @@ internal sealed class InstructionParser
             SkipGaps();
             if (_pos >= _text.Length)
             {
-                throw Error(_line, Column, $"{name}( is not closed with ')'.");
+                throw NotClosed(name);
             }
             var arg = new InstructionArgs.Arg { Line = _line, Column = Column };
             if (_text[_pos] == '"')
@@ -121,7 +162,7 @@ internal sealed class InstructionParser
             SkipGaps();
             if (_pos >= _text.Length)
             {
-                throw Error(_line, Column, $"{name}( is not closed with ')'.");
+                throw NotClosed(name);
             }
             char c = _text[_pos++];
             if (c == ')')
@@ -262,7 +303,16 @@ internal sealed class InstructionParser
         _pos++;
     }
 
+    /// <summary>The end of the text inside a statement: a parse error at the real end, else the statement continues in the next piece.</summary>
+    private Exception NotClosed(string name) =>
+        _final ? Error(_line, Column, $"{name}( is not closed with ')'.") : new StatementCutException();
+
     private static string Describe(char c) => char.IsControl(c) ? $"\\u{(int)c:x4}" : c.ToString();
 
     private static InstructionParseException Error(int line, int column, string problem) => new(line, column, problem);
+}
+
+/// <summary>Thrown by a parser of a piece that is not the last, when a statement runs past its end (see <see cref="InstructionReader"/>).</summary>
+internal sealed class StatementCutException : Exception
+{
 }

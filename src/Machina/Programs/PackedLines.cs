@@ -4,24 +4,51 @@ using System.Text;
 namespace Machina;
 
 /// <summary>
-/// The lines of an in-memory program file, packed one after the other into large character blocks instead of one string
-/// object per line. A program of a million lines then holds a few dozen large arrays that the garbage collector never has
-/// to copy, instead of a million small strings it copies from generation to generation while compiling; this roughly halves
-/// the time to compile long toolpaths in memory. Reading a line creates its string.
+/// The lines of an in-memory program file, packed one after the other into large blocks instead of one string object per
+/// line. A program of a million lines then holds a few dozen large arrays that the garbage collector never has to copy,
+/// instead of a million small strings it copies from generation to generation while compiling. Lines of plain ASCII (all
+/// robot code, most listings) are kept as one byte per character, half the memory of .NET strings; other lines as
+/// characters. Reading a line creates its string.
 /// </summary>
 internal sealed class PackedLines : IReadOnlyList<string>
 {
-    /// <summary>Characters in the first block; each new block doubles, up to <see cref="MaxBlockSize"/>, so short programs stay small.</summary>
+    /// <summary>Elements in the first block of each kind; each new block doubles, up to <see cref="MaxBlockSize"/>, so short programs stay small.</summary>
     private const int FirstBlockSize = 1 << 10;
 
-    /// <summary>Characters in the largest blocks: 1 Mi chars (2 MB), large enough to live in the large object heap.</summary>
+    /// <summary>Elements in the largest blocks: 1 Mi (1 MB of ASCII, 2 MB of characters), large enough to live in the large object heap.</summary>
     private const int MaxBlockSize = 1 << 20;
 
-    private readonly List<char[]> _blocks = [];
+    private readonly Blocks<byte> _ascii = new();
+    private readonly Blocks<char> _other = new();
     private readonly List<Line> _lines = [];
-    private int _used;
+    private int _longest;
 
-    private readonly record struct Line(int Block, int Start, int Length);
+    /// <summary>Where a line is: block index (≥ 0 in the ASCII blocks, ~index in the character blocks), start and length.</summary>
+    private readonly record struct Line(int Block, int Start, int Length)
+    {
+        internal bool IsAscii => Block >= 0;
+    }
+
+    /// <summary>A chain of blocks of one element type, filled in order.</summary>
+    private sealed class Blocks<T>
+    {
+        internal readonly List<T[]> List = [];
+        private int _used;
+
+        /// <summary>Room for <paramref name="length"/> elements: the block index and the start within it.</summary>
+        internal (int Block, int Start) Reserve(int length)
+        {
+            if (List.Count == 0 || length > List[^1].Length - _used)
+            {
+                int size = List.Count == 0 ? FirstBlockSize : Math.Min(MaxBlockSize, List[^1].Length * 2);
+                List.Add(new T[Math.Max(size, length)]);
+                _used = 0;
+            }
+            int start = _used;
+            _used += length;
+            return (List.Count - 1, start);
+        }
+    }
 
     /// <summary>Number of lines.</summary>
     public int Count => _lines.Count;
@@ -30,50 +57,82 @@ internal sealed class PackedLines : IReadOnlyList<string>
     internal long CharacterCount { get; private set; }
 
     /// <summary>The line at <paramref name="index"/> (a new string each time).</summary>
-    public string this[int index] => new(Span(_lines[index]));
+    public string this[int index] => Text(_lines[index]);
 
     /// <summary>Appends a line.</summary>
     internal void Add(ReadOnlySpan<char> line)
     {
-        if (_blocks.Count == 0 || line.Length > _blocks[^1].Length - _used)
+        if (Ascii.IsValid(line))
         {
-            int size = _blocks.Count == 0 ? FirstBlockSize : Math.Min(MaxBlockSize, _blocks[^1].Length * 2);
-            _blocks.Add(new char[Math.Max(size, line.Length)]);
-            _used = 0;
+            (int block, int start) = _ascii.Reserve(line.Length);
+            Ascii.FromUtf16(line, _ascii.List[block].AsSpan(start, line.Length), out _);
+            _lines.Add(new Line(block, start, line.Length));
         }
-        line.CopyTo(_blocks[^1].AsSpan(_used));
-        _lines.Add(new Line(_blocks.Count - 1, _used, line.Length));
-        _used += line.Length;
+        else
+        {
+            (int block, int start) = _other.Reserve(line.Length);
+            line.CopyTo(_other.List[block].AsSpan(start));
+            _lines.Add(new Line(~block, start, line.Length));
+        }
         CharacterCount += line.Length;
+        _longest = Math.Max(_longest, line.Length);
     }
 
     /// <summary>Writes every line followed by <paramref name="newLine"/>, without creating strings.</summary>
     internal void WriteTo(TextWriter writer, string newLine)
     {
+        char[] buffer = new char[Math.Min(_longest, MaxBlockSize)];
         foreach (Line line in _lines)
         {
-            writer.Write(Span(line));
+            if (line.IsAscii && line.Length <= buffer.Length)
+            {
+                Ascii.ToUtf16(AsciiSpan(line), buffer, out int written);
+                writer.Write(buffer.AsSpan(0, written));
+            }
+            else if (line.IsAscii)
+            {
+                writer.Write(Text(line));
+            }
+            else
+            {
+                writer.Write(CharSpan(line));
+            }
             writer.Write(newLine);
         }
     }
 
-    /// <summary>Appends every line followed by <paramref name="newLine"/>, without creating strings.</summary>
-    internal void AppendTo(StringBuilder text, string newLine)
+    /// <summary>Copies every line followed by <paramref name="newLine"/> into <paramref name="destination"/>, which must be exactly long enough.</summary>
+    internal void CopyTo(Span<char> destination, string newLine)
     {
+        int at = 0;
         foreach (Line line in _lines)
         {
-            text.Append(Span(line)).Append(newLine);
+            if (line.IsAscii)
+            {
+                Ascii.ToUtf16(AsciiSpan(line), destination[at..], out _);
+            }
+            else
+            {
+                CharSpan(line).CopyTo(destination[at..]);
+            }
+            at += line.Length;
+            newLine.CopyTo(destination[at..]);
+            at += newLine.Length;
         }
     }
 
-    private ReadOnlySpan<char> Span(Line line) => _blocks[line.Block].AsSpan(line.Start, line.Length);
+    private ReadOnlySpan<byte> AsciiSpan(Line line) => _ascii.List[line.Block].AsSpan(line.Start, line.Length);
+
+    private ReadOnlySpan<char> CharSpan(Line line) => _other.List[~line.Block].AsSpan(line.Start, line.Length);
+
+    private string Text(Line line) => line.IsAscii ? Encoding.ASCII.GetString(AsciiSpan(line)) : new string(CharSpan(line));
 
     /// <inheritdoc/>
     public IEnumerator<string> GetEnumerator()
     {
         for (int i = 0; i < _lines.Count; i++)
         {
-            yield return new string(Span(_lines[i]));
+            yield return Text(_lines[i]);
         }
     }
 

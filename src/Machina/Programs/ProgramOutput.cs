@@ -29,9 +29,16 @@ internal sealed class MemoryProgramOutput : ProgramOutput
         name, brand, _files.Select(f => new RobotProgramFile(f.Name, f.Extension, f.Encoding, f.Comment, f.Sink.Lines)).ToArray(), warnings);
 }
 
-/// <summary>Writes files straight into a folder, without keeping their text in memory.</summary>
-internal sealed class FolderProgramOutput(string folder, string newLine) : ProgramOutput
+/// <summary>
+/// Writes files straight into a folder, without keeping their text in memory. With <paramref name="replaceAtEnd"/> each file
+/// is written under a temporary name and takes its real name only at <see cref="Commit"/>, so that a compilation that fails
+/// half-way (an error on line 900,000 of an instruction file) leaves no truncated program and keeps any earlier one.
+/// </summary>
+internal sealed class FolderProgramOutput(string folder, string newLine, bool replaceAtEnd = false) : ProgramOutput
 {
+    /// <summary>Appended to a file's name while it is being written (with <c>replaceAtEnd</c>).</summary>
+    internal const string PartialSuffix = ".partial";
+
     private readonly List<StreamWriter> _writers = [];
 
     /// <summary>Paths of the files written.</summary>
@@ -41,13 +48,41 @@ internal sealed class FolderProgramOutput(string folder, string newLine) : Progr
     {
         Directory.CreateDirectory(folder);
         string path = Path.Combine(folder, name + "." + extension);
-        var writer = new StreamWriter(path, append: false, encoding, bufferSize: 1 << 16);
+        var writer = new StreamWriter(replaceAtEnd ? path + PartialSuffix : path, append: false, encoding, bufferSize: 1 << 16);
         _writers.Add(writer);
         Paths.Add(path);
         return new WriterLineSink(writer, newLine);
     }
 
+    /// <summary>Closes every file and, with <c>replaceAtEnd</c>, gives each its real name (replacing a file of that name).</summary>
+    internal void Commit()
+    {
+        CloseWriters();
+        if (replaceAtEnd)
+        {
+            foreach (string path in Paths)
+            {
+                File.Move(path + PartialSuffix, path, overwrite: true);
+            }
+        }
+        _committed = true;
+    }
+
+    private bool _committed;
+
     public override void Dispose()
+    {
+        CloseWriters();
+        if (replaceAtEnd && !_committed)
+        {
+            foreach (string path in Paths)
+            {
+                File.Delete(path + PartialSuffix);
+            }
+        }
+    }
+
+    private void CloseWriters()
     {
         foreach (StreamWriter writer in _writers)
         {

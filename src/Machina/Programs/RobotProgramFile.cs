@@ -33,13 +33,19 @@ public sealed class RobotProgramFile
     public IReadOnlyList<string> Lines { get; }
 
     /// <summary>The whole file as text, each line ended by <paramref name="newLine"/> (default "\n").</summary>
+    /// <exception cref="InvalidOperationException">The file is too long for one string (over about 10^9 characters); save it with <c>SaveToFolder</c> instead.</exception>
     public string ToText(string newLine = "\n")
     {
+        ArgumentNullException.ThrowIfNull(newLine);
         if (Lines is PackedLines packed)
         {
-            var text = new StringBuilder((int)Math.Min(int.MaxValue, packed.CharacterCount + (long)packed.Count * newLine.Length));
-            packed.AppendTo(text, newLine);
-            return text.ToString();
+            // The text is written once, straight into the string (a StringBuilder would hold it and then copy it).
+            long length = packed.CharacterCount + (long)packed.Count * newLine.Length;
+            if (length > Array.MaxLength)
+            {
+                throw new InvalidOperationException($"\"{FileName}\" has {length:N0} characters, too many for one string; save it with SaveToFolder instead.");
+            }
+            return string.Create((int)length, (packed, newLine), static (span, state) => state.packed.CopyTo(span, state.newLine));
         }
         var sb = new StringBuilder();
         foreach (string line in Lines)

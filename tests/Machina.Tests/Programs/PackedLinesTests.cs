@@ -1,5 +1,3 @@
-using System.Text;
-
 namespace Machina.Tests.Programs;
 
 public class PackedLinesTests
@@ -32,6 +30,26 @@ public class PackedLinesTests
     }
 
     [Fact]
+    public void Add_AsciiAndOtherLinesMixed_EachReadsBackExactly()
+    {
+        string[] expected = ["MoveL p1;", "unicodé ✓ 日本", "", "\u007f del", "🤖 robot", "plain", "\u0080 first non-ASCII", new string('z', 5000)];
+        var packed = new PackedLines();
+        foreach (string line in expected)
+        {
+            packed.Add(line);
+        }
+        var writer = new StringWriter();
+        packed.WriteTo(writer, "\n");
+        var copied = new char[packed.CharacterCount + expected.Length];
+        packed.CopyTo(copied, "\n");
+
+        Assert.Equal(expected, packed);
+        Assert.Equal(expected[1], packed[1]);
+        Assert.Equal(string.Concat(expected.Select(l => l + "\n")), writer.ToString());
+        Assert.Equal(writer.ToString(), new string(copied));
+    }
+
+    [Fact]
     public void Add_LineLongerThanLargestBlock_IsKeptWhole()
     {
         var packed = new PackedLines();
@@ -43,7 +61,7 @@ public class PackedLinesTests
     }
 
     [Fact]
-    public void WriteTo_AndAppendTo_GiveEachLineWithTheNewLine()
+    public void WriteTo_AndCopyTo_GiveEachLineWithTheNewLine()
     {
         var packed = new PackedLines();
         packed.Add("MoveL p1;");
@@ -51,10 +69,10 @@ public class PackedLinesTests
         packed.Add("! done");
         var writer = new StringWriter();
         packed.WriteTo(writer, "\r\n");
-        var text = new StringBuilder();
-        packed.AppendTo(text, "\n");
+        var text = new char[packed.CharacterCount + 3];
+        packed.CopyTo(text, "\n");
         Assert.Equal("MoveL p1;\r\n\r\n! done\r\n", writer.ToString());
-        Assert.Equal("MoveL p1;\n\n! done\n", text.ToString());
+        Assert.Equal("MoveL p1;\n\n! done\n", new string(text));
     }
 
     [Fact]

@@ -39,14 +39,7 @@ internal sealed class GCodeWriter
         _file.AddRange(_compiler.Header(_job));
         _file.Add("");
         _file.AddRange(_flavor.Preamble);
-        IReadOnlyList<RobotAction> actions = _job.Actions;
-        for (int i = 0; i < actions.Count; i++)
-        {
-            if (actions[i] is ActionCustomCode { IsDeclaration: true } custom)
-            {
-                _file.Add(custom.Statement);
-            }
-        }
+        _file.AddRange(_job.CustomDeclarations);
         _file.Add("");
         _job.Replay(EmitAction);
     }

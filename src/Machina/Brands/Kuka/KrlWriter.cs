@@ -40,7 +40,7 @@ internal sealed class KrlWriter
     {
         string module = KrlText.ModuleName(_job.ProgramName);
         RobotCursor start = _job.NewCursor();
-        _usesAccDefault = ContainsAcceleration(_job.Actions);
+        _usesAccDefault = _job.SetsAcceleration;
         _src = _output.OpenFile(module, "src", RobotProgram.Ascii, _compiler.CommentPrefix);
         if (!_inline)
         {
@@ -56,18 +56,6 @@ internal sealed class KrlWriter
             _dat.Add("");
             _dat.Add("ENDDAT");
         }
-    }
-
-    private static bool ContainsAcceleration(IReadOnlyList<RobotAction> actions)
-    {
-        for (int i = 0; i < actions.Count; i++)
-        {
-            if (actions[i] is ActionAcceleration)
-            {
-                return true;
-            }
-        }
-        return false;
     }
 
     private void WriteHeader(LineSink file, string module)
@@ -101,14 +89,10 @@ internal sealed class KrlWriter
         src.Add("");
 
         bool declared = false;
-        IReadOnlyList<RobotAction> actions = _job.Actions;
-        for (int i = 0; i < actions.Count; i++)
+        foreach (string statement in _job.CustomDeclarations)
         {
-            if (actions[i] is ActionCustomCode { IsDeclaration: true } custom)
-            {
-                src.Add(Indent + custom.Statement);
-                declared = true;
-            }
+            src.Add(Indent + statement);
+            declared = true;
         }
         if (_usesAccDefault)
         {

@@ -20,13 +20,10 @@ internal sealed class UrScriptCompiler : Compiler
         script.Add("");
 
         bool anyDeclaration = false;
-        foreach (RobotAction action in job.Actions)
+        foreach (string statement in job.CustomDeclarations)
         {
-            if (action is ActionCustomCode { IsDeclaration: true } code)
-            {
-                script.Add("  " + code.Statement);
-                anyDeclaration = true;
-            }
+            script.Add("  " + statement);
+            anyDeclaration = true;
         }
         if (anyDeclaration)
         {

@@ -1,0 +1,136 @@
+using System.Collections;
+using System.Collections.Concurrent;
+using System.Runtime.ExceptionServices;
+
+namespace Machina;
+
+/// <summary>
+/// The actions of an instruction text that is read again from its start for every pass a compiler makes, so that no pass
+/// holds the whole program: memory stays the same for ten lines or ten million. Actions get the ids a robot would give them
+/// (1, 2, 3, … in order), and the source remembers where the action it returned last was written, for warnings and errors.
+/// Each pass reads and parses on a thread of its own, a few hundred statements ahead of the compiler (at most
+/// <see cref="BatchesAhead"/> batches), so that on two or more cores parsing and compiling overlap; errors still surface
+/// exactly where the statement is reached.
+/// </summary>
+internal sealed class InstructionSource(Func<TextReader> open, CancellationToken cancellationToken) : IEnumerable<RobotAction>
+{
+    /// <summary>Statements per batch handed from the reading thread to the compiler.</summary>
+    internal const int BatchSize = 512;
+
+    /// <summary>Batches the reading thread may be ahead.</summary>
+    internal const int BatchesAhead = 4;
+
+    private RobotAction? _current;
+    private int _line;
+    private int _column;
+
+    /// <summary>Number of actions in the text, known after the first complete pass (0 before).</summary>
+    internal int Count { get; private set; }
+
+    /// <summary>The line of the action with id <paramref name="actionId"/> if it is the action returned last, else null.</summary>
+    internal int? LineOf(int actionId) => _current is not null && _current.Id == actionId ? _line : null;
+
+    /// <summary>The error for an action that cannot be applied: an instruction error at the action's position.</summary>
+    internal InstructionParseException Refused(RobotAction action, string reason)
+    {
+        bool here = ReferenceEquals(action, _current);
+        return new InstructionParseException(here ? _line : 0, here ? _column : 0, $"cannot apply \"{action.ToInstruction()}\": {reason}");
+    }
+
+    /// <summary>Parsed statements with their positions, and the error that ended the text after them, if any.</summary>
+    private sealed class Batch
+    {
+        internal readonly RobotAction[] Actions = new RobotAction[BatchSize];
+        internal readonly int[] Lines = new int[BatchSize];
+        internal readonly int[] Columns = new int[BatchSize];
+        internal int Count;
+        internal ExceptionDispatchInfo? Error;
+    }
+
+    /// <inheritdoc/>
+    public IEnumerator<RobotAction> GetEnumerator()
+    {
+        using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        using var batches = new BlockingCollection<Batch>(BatchesAhead);
+        Task reading = Task.Factory.StartNew(() => Read(batches, stop.Token), stop.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        try
+        {
+            int id = 0;
+            foreach (Batch batch in batches.GetConsumingEnumerable(cancellationToken))
+            {
+                for (int i = 0; i < batch.Count; i++)
+                {
+                    RobotAction action = batch.Actions[i];
+                    action.Id = ++id;
+                    _current = action;
+                    _line = batch.Lines[i];
+                    _column = batch.Columns[i];
+                    yield return action;
+                }
+                batch.Error?.Throw();
+            }
+            cancellationToken.ThrowIfCancellationRequested();
+            _current = null;
+            Count = id;
+        }
+        finally
+        {
+            // Stops the reading thread if the compiler stopped early (an error, or cancellation), and waits for it.
+            stop.Cancel();
+            try
+            {
+                reading.Wait(CancellationToken.None);
+            }
+            catch (AggregateException)
+            {
+                // Cancelled while handing over a batch: nothing to report.
+            }
+        }
+    }
+
+    /// <summary>
+    /// The reading thread: parses the text into batches. Whatever stops it (the end, a parse error, a file that cannot be
+    /// read) is handed over after the statements before it, so the compiler meets it in order; nothing is silently cut.
+    /// </summary>
+    private void Read(BlockingCollection<Batch> batches, CancellationToken stop)
+    {
+        var batch = new Batch();
+        try
+        {
+            try
+            {
+                using TextReader reader = open();
+                var parser = new InstructionReader(reader);
+                while (parser.Next() is RobotAction action)
+                {
+                    batch.Actions[batch.Count] = action;
+                    batch.Lines[batch.Count] = parser.Line;
+                    batch.Columns[batch.Count] = parser.Column;
+                    if (++batch.Count == BatchSize)
+                    {
+                        batches.Add(batch, stop);
+                        batch = new Batch();
+                    }
+                }
+            }
+            catch (Exception ex) when (ex is not OperationCanceledException || !stop.IsCancellationRequested)
+            {
+                batch.Error = ExceptionDispatchInfo.Capture(ex);
+            }
+            if (batch.Count > 0 || batch.Error is not null)
+            {
+                batches.Add(batch, stop);
+            }
+        }
+        catch (OperationCanceledException) when (stop.IsCancellationRequested)
+        {
+            // The compiler stopped reading.
+        }
+        finally
+        {
+            batches.CompleteAdding();
+        }
+    }
+
+    IEnumerator IEnumerable.GetEnumerator() => GetEnumerator();
+}

@@ -1,0 +1,138 @@
+using System.Diagnostics;
+using System.Text.Json;
+
+namespace Machina.Benchmarks;
+
+/// <summary>
+/// The process under test of the whole-process scenarios: <c>Machina.Benchmarks --child KIND key=value…</c> does what a user's
+/// program does (compile an instruction file to a folder, or connect to a controller and stream), once or several times, and
+/// prints one JSON line with Stopwatch timestamps (the monotonic clock, comparable between processes on Linux) and its peak
+/// resident memory from /proc, so the parent can split process start-up, the work and exit.
+/// </summary>
+internal static class Child
+{
+    /// <summary>Runs the child; <paramref name="args"/> start after <c>--child</c>.</summary>
+    public static int Run(string[] args, long mainTimestamp)
+    {
+        Dictionary<string, string> a = args.Skip(1).Select(x => x.Split('=', 2)).ToDictionary(p => p[0], p => p.Length > 1 ? p[1] : "");
+        string kind = args.Length > 0 ? args[0] : "";
+        int repeat = a.TryGetValue("repeat", out string? r) ? int.Parse(r, System.Globalization.CultureInfo.InvariantCulture) : 1;
+        var iterations = new List<double>();
+        var extra = new Dictionary<string, object?>();
+        long workStart = Stopwatch.GetTimestamp();
+        for (int i = 0; i < repeat; i++)
+        {
+            long start = Stopwatch.GetTimestamp();
+            switch (kind)
+            {
+                case "compile":
+                    Compile(a["file"], Enum.Parse<RobotType>(a["brand"]), a["folder"], a.GetValueOrDefault("path", "stream"), extra);
+                    break;
+                case "stream":
+                    Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), extra);
+                    break;
+                default:
+                    Console.Error.WriteLine($"Unknown child kind \"{kind}\".");
+                    return 2;
+            }
+            iterations.Add(Stopwatch.GetElapsedTime(start).TotalSeconds);
+        }
+        long workEnd = Stopwatch.GetTimestamp();
+        (long hwm, long rss) = Memory();
+        Console.WriteLine(JsonSerializer.Serialize(new Dictionary<string, object?>
+        {
+            ["main"] = mainTimestamp,
+            ["workStart"] = workStart,
+            ["workEnd"] = workEnd,
+            ["iterations"] = iterations,
+            ["peakResidentBytes"] = hwm,
+            ["cpuSeconds"] = Environment.CpuUsage.TotalTime.TotalSeconds,
+            ["residentBytes"] = rss,
+            ["extra"] = extra,
+        }));
+        return 0;
+    }
+
+    /// <summary>
+    /// The three ways to compile a file: <c>stream</c>, the library's streaming entry point; <c>robot-folder</c>, read the whole
+    /// file, issue it on a robot and <c>CompileToFolder</c>; <c>robot-memory</c>, the same but <c>Compile()</c> in memory and write
+    /// each file's <c>ToText()</c>, as a user who saves a program does.
+    /// </summary>
+    private static void Compile(string file, RobotType brand, string folder, string path, Dictionary<string, object?> extra)
+    {
+        switch (path)
+        {
+            case "stream":
+                FolderCompileResult result = Instructions.CompileToFolder(file, brand, folder, programName: "Bench");
+                extra["actions"] = result.ActionCount;
+                extra["files"] = result.Paths.Count;
+                break;
+            case "robot-folder":
+            case "robot-memory":
+                var bot = Robot.Create("Bench", brand);
+                bot.Do(File.ReadAllText(file));
+                if (path == "robot-folder")
+                {
+                    bot.CompileToFolder(folder);
+                    break;
+                }
+                RobotProgram program = bot.Compile();
+                Directory.CreateDirectory(folder);
+                foreach (RobotProgramFile f in program.Files)
+                {
+                    File.WriteAllText(Path.Combine(folder, f.FileName), f.ToText(), f.Encoding);
+                }
+                break;
+            default:
+                throw new ArgumentException($"Unknown compile path \"{path}\".");
+        }
+    }
+
+    /// <summary>HelloRobot online: connect, set a speed, move to a start point and stream <paramref name="count"/> relative moves, wait until all are executed.</summary>
+    private static void Stream(int port, int count, string window, Dictionary<string, object?> extra)
+    {
+        var bot = Robot.Create("HelloRobot", "ABB");
+        bot.ControlMode("online");
+        if (window == "1")
+        {
+            bot.BlockSize = 1;
+            bot.PendingCount = 1;
+        }
+        long connect = Stopwatch.GetTimestamp();
+        bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
+        long first = Stopwatch.GetTimestamp();
+        bot.SpeedTo(1000);
+        bot.MoveTo(300, 0, 500);
+        Vector[] steps = [new(10, 0, 0), new(0, 10, 0), new(-10, 0, 0), new(0, -10, 0)];
+        for (int i = 2; i < count; i++)
+        {
+            bot.Move(steps[i & 3]);
+        }
+        using var timeout = new CancellationTokenSource(TimeSpan.FromMinutes(2) + TimeSpan.FromMilliseconds(count));
+        bot.WaitForCompletionAsync(timeout.Token).GetAwaiter().GetResult();
+        long done = Stopwatch.GetTimestamp();
+        bot.DisconnectAsync().GetAwaiter().GetResult();
+        extra["connectTimestamp"] = connect;
+        extra["firstIssueTimestamp"] = first;
+        extra["doneTimestamp"] = done;
+    }
+
+    /// <summary>Peak and current resident memory of this process (VmHWM and VmRSS in /proc/self/status), bytes; 0 when unknown.</summary>
+    private static (long Peak, long Current) Memory()
+    {
+        long Field(string[] lines, string name)
+        {
+            string? line = lines.FirstOrDefault(l => l.StartsWith(name, StringComparison.Ordinal));
+            return line is null ? 0 : long.Parse(line[name.Length..].Trim().Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture) * 1024;
+        }
+        try
+        {
+            string[] lines = File.ReadAllLines("/proc/self/status");
+            return (Field(lines, "VmHWM:"), Field(lines, "VmRSS:"));
+        }
+        catch (IOException)
+        {
+            return (0, 0);
+        }
+    }
+}

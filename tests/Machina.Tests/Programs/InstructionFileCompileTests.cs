@@ -1,0 +1,207 @@
+using System.Text;
+using Machina.Tests.Support;
+
+namespace Machina.Tests.Programs;
+
+/// <summary>
+/// <c>Instructions.CompileToFolder</c> reads an instruction file statement by statement and writes the same bytes as a robot
+/// that issued the same instructions and compiled to a folder; errors carry their line and column, and leave no file behind.
+/// </summary>
+public sealed class InstructionFileCompileTests : IDisposable
+{
+    private static readonly RobotType[] Languages = [RobotType.ABB, RobotType.UR, RobotType.KUKA, RobotType.ZMORPH, RobotType.MARLIN, RobotType.HUMAN, RobotType.MACHINA];
+
+    private readonly string _root = Path.Combine(Path.GetTempPath(), "machina-filecompile-" + Guid.NewGuid().ToString("N"));
+
+    public InstructionFileCompileTests() => Directory.CreateDirectory(_root);
+
+    public void Dispose() => Directory.Delete(_root, recursive: true);
+
+    /// <summary>Custom declarations, accelerations, settings stacks, tools, IO, arcs, extrusion, statements over several lines and comments.</summary>
+    private const string Mixed = """
+        // A program that uses most instructions.
+        CustomCode("VAR num counter := 0;", true);
+        SpeedTo(120); AccelerationTo(800);
+        PrecisionTo(2)
+        MoveTo(300, 0, 500);
+        DefineTool("pen", 0, 0, 100,
+                   1, 0, 0,
+                   0, 1, 0,
+                   0.5, 0, 0, 20); // mass and centre of gravity
+        AttachTool("pen");
+        PushSettings(); SpeedTo(40); Move(10, 0, 0); PopSettings();
+        Move(0,
+             10,   // y
+             0.25);
+        Rotate(0, 0, 1, 30);
+        ArcMotionTo(320, 20, 500, 340, 0, 500);
+        WriteDigital(1, true); WriteAnalog(2, 0.5);
+        Message("say \"hi\"; // not a comment");
+        Wait(500);
+        TemperatureTo(210, "extruder", false);
+        Extrude(true); ExtrusionRateTo(0.8);
+        Move(5, 5, 0);
+        Extrude(false);
+        CustomCode("counter := counter + 1;");
+        DetachTool();
+        AxesTo(0, 0, 0, 0, 90, 0);
+        """;
+
+    public static IEnumerable<object[]> Cases()
+    {
+        foreach (RobotType language in Languages)
+        {
+            foreach (string program in ReferencePrograms.All.Keys.Append("Mixed"))
+            {
+                yield return [language, program, true];
+            }
+            yield return [language, "Mixed", false];
+        }
+    }
+
+    private static string Text(string program)
+    {
+        if (program == "Mixed")
+        {
+            return Mixed;
+        }
+        Robot bot = ReferencePrograms.Issue(program, RobotType.ABB);
+        return string.Join("\n", bot.GetProgramActions().Select(a => a.ToInstruction())) + "\n";
+    }
+
+    [Theory]
+    [MemberData(nameof(Cases))]
+    public void CompileToFolder_InstructionFile_SameBytesAndWarningsAsRobot(RobotType language, string program, bool inline)
+    {
+        string text = Text(program);
+        var options = new CompileOptions { InlineTargets = inline };
+        var bot = Robot.Create(program, language);
+        bot.Do(text);
+        string expectedFolder = Path.Combine(_root, "robot");
+        IReadOnlyList<string> expected = bot.CompileToFolder(expectedFolder, language, options);
+        RobotProgram inMemory = bot.Compile(language, options);
+        string file = Path.Combine(_root, program + ".machina");
+        File.WriteAllText(file, text);
+
+        FolderCompileResult result = Instructions.CompileToFolder(file, language, Path.Combine(_root, "file"), options);
+
+        Assert.Equal(expected.Select(Path.GetFileName), result.Paths.Select(Path.GetFileName));
+        for (int i = 0; i < expected.Count; i++)
+        {
+            Assert.Equal(File.ReadAllBytes(expected[i]), File.ReadAllBytes(result.Paths[i]));
+        }
+        Assert.Equal(inMemory.Warnings.Select(w => (w.ActionId, w.Instruction, w.Message)), result.Warnings.Select(w => (w.ActionId, w.Instruction, w.Message)));
+        Assert.Equal(bot.GetProgramActions().Count, result.ActionCount);
+        Assert.Equal(program, result.ProgramName);
+        Assert.Empty(Directory.GetFiles(Path.Combine(_root, "file"), "*" + FolderProgramOutput.PartialSuffix));
+    }
+
+    [Fact]
+    public void CompileToFolder_Warning_CarriesLineOfItsStatement()
+    {
+        string file = Path.Combine(_root, "print.machina");
+        File.WriteAllText(file, "MoveTo(100, 0, 10);\n\n// turn\nMove(1, 0, 0); Rotate(0, 0, 1, 90);\n");
+
+        FolderCompileResult result = Instructions.CompileToFolder(file, RobotType.MARLIN, Path.Combine(_root, "out"));
+
+        ProgramWarning warning = Assert.Single(result.Warnings);
+        Assert.Equal(3, warning.ActionId);
+        Assert.Equal(4, warning.Line);
+        Assert.StartsWith("Rotate(", warning.Instruction, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void CompileToFolder_ManyWarnings_KeepsTheFirstAndCountsAll()
+    {
+        string file = Path.Combine(_root, "rotations.machina");
+        var text = new StringBuilder("MoveTo(100, 0, 10);\n");
+        for (int i = 0; i < Instructions.MaxWarningsKept + 200; i++)
+        {
+            text.Append("Rotate(0, 0, 1, 1);\n");
+        }
+        File.WriteAllText(file, text.ToString());
+
+        FolderCompileResult result = Instructions.CompileToFolder(file, RobotType.ZMORPH, Path.Combine(_root, "out"));
+
+        Assert.Equal(Instructions.MaxWarningsKept + 200, result.WarningCount);
+        Assert.Equal(Instructions.MaxWarningsKept, result.Warnings.Count);
+        Assert.Equal((Instructions.MaxWarningsKept + 1, 2, Instructions.MaxWarningsKept + 1), (result.Warnings[^1].ActionId, result.Warnings[0].Line, result.Warnings[^1].Line));
+    }
+
+    [Fact]
+    public void CompileToFolder_TextReader_SameBytesAsFile()
+    {
+        string file = Path.Combine(_root, "Mixed.machina");
+        File.WriteAllText(file, Mixed);
+        FolderCompileResult fromFile = Instructions.CompileToFolder(file, RobotType.KUKA, Path.Combine(_root, "a"));
+
+        using var reader = new StringReader(Mixed);
+        FolderCompileResult fromReader = Instructions.CompileToFolder(reader, RobotType.KUKA, Path.Combine(_root, "b"), programName: "Mixed", newLine: "\r\n");
+
+        Assert.Equal(fromFile.Paths.Select(Path.GetFileName), fromReader.Paths.Select(Path.GetFileName));
+        string expected = File.ReadAllText(fromFile.Paths[0]).Replace("\n", "\r\n", StringComparison.Ordinal);
+        Assert.Equal(expected, File.ReadAllText(fromReader.Paths[0]));
+    }
+
+    [Fact]
+    public void CompileToFolder_ErrorFarIntoTheFile_ReportsLineAndColumnAndKeepsEarlierProgram()
+    {
+        string folder = Path.Combine(_root, "out");
+        string file = Path.Combine(_root, "Long.machina");
+        var text = new StringBuilder("MoveTo(300, 0, 500);\n");
+        for (int i = 0; i < 5000; i++)
+        {
+            text.Append("Move(1, 0, 0);\n");
+        }
+        File.WriteAllText(file, text.ToString());
+        FolderCompileResult good = Instructions.CompileToFolder(file, RobotType.ABB, folder);
+        byte[] before = File.ReadAllBytes(good.Paths[1]);
+        text.Append("Move(1, 0,\n   0, 0 x);\n"); // four arguments: the error is at the statement, line 5002
+        File.WriteAllText(file, text.ToString());
+
+        var error = Assert.Throws<InstructionParseException>(() => Instructions.CompileToFolder(file, RobotType.ABB, folder));
+
+        var expected = Assert.Throws<InstructionParseException>(() => Instructions.Parse(text.ToString()));
+        Assert.Equal(5002, error.Line);
+        Assert.Equal((expected.Line, expected.Column, expected.Message), (error.Line, error.Column, error.Message));
+        Assert.Equal(before, File.ReadAllBytes(good.Paths[1]));
+        Assert.Equal(2, Directory.GetFiles(folder).Length);
+    }
+
+    [Fact]
+    public void CompileToFolder_ActionThatCannotApply_ThrowsWithItsPosition()
+    {
+        string file = Path.Combine(_root, "Relative.machina");
+        File.WriteAllText(file, "SpeedTo(10);\n  Wait(1); Move(10, 0, 0);\n");
+
+        var error = Assert.Throws<InstructionParseException>(() => Instructions.CompileToFolder(file, RobotType.UR, Path.Combine(_root, "out")));
+
+        Assert.Equal((2, 12), (error.Line, error.Column));
+        Assert.Contains("cannot apply \"Move(10,0,0);\"", error.Message, StringComparison.Ordinal);
+        Assert.False(Directory.Exists(Path.Combine(_root, "out")) && Directory.GetFiles(Path.Combine(_root, "out")).Length > 0);
+    }
+
+    [Fact]
+    public void CompileToFolder_BadArguments_ThrowArgumentExceptions()
+    {
+        string file = Path.Combine(_root, "a.machina");
+        File.WriteAllText(file, "MoveTo(1, 2, 3);");
+        Assert.Throws<FileNotFoundException>(() => Instructions.CompileToFolder(Path.Combine(_root, "missing.machina"), RobotType.ABB, _root));
+        Assert.Throws<ArgumentException>(() => Instructions.CompileToFolder(file, RobotType.ABB, " "));
+        Assert.Throws<ArgumentException>(() => Instructions.CompileToFolder(file, RobotType.ABB, _root, newLine: "\r"));
+        Assert.Throws<ArgumentException>(() => Instructions.CompileToFolder(file, (RobotType)99, _root));
+    }
+
+    [Fact]
+    public void CompileToFolder_Cancelled_ThrowsAndLeavesNoFile()
+    {
+        string file = Path.Combine(_root, "c.machina");
+        File.WriteAllText(file, "MoveTo(1, 2, 3);");
+        using var cancelled = new CancellationTokenSource();
+        cancelled.Cancel();
+
+        Assert.ThrowsAny<OperationCanceledException>(() => Instructions.CompileToFolder(file, RobotType.ABB, Path.Combine(_root, "out"), cancellationToken: cancelled.Token));
+
+        Assert.False(Directory.Exists(Path.Combine(_root, "out")) && Directory.GetFiles(Path.Combine(_root, "out")).Length > 0);
+    }
+}

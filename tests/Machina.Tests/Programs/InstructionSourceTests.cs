@@ -1,0 +1,85 @@
+namespace Machina.Tests.Programs;
+
+/// <summary>The source that re-reads instruction text for each compiler pass, on a reading thread of its own.</summary>
+public class InstructionSourceTests
+{
+    private static string Moves(int count) => "MoveTo(0, 0, 0);\n" + string.Concat(Enumerable.Range(1, count).Select(i => $"Move({i % 5}, 0, 0);\n"));
+
+    [Fact]
+    public void Enumerate_TwoPasses_SameActionsWithIdsFromOne()
+    {
+        string text = Moves(3000);
+        var source = new InstructionSource(() => new StringReader(text), CancellationToken.None);
+
+        List<RobotAction> first = [.. source];
+        List<RobotAction> second = [.. source];
+
+        Assert.Equal(Instructions.Parse(text), first);
+        Assert.Equal(first, second);
+        Assert.Equal(Enumerable.Range(1, 3001), second.Select(a => a.Id));
+        Assert.Equal(3001, source.Count);
+        Assert.False(ReferenceEquals(first[5], second[5]));
+    }
+
+    [Fact]
+    public void Enumerate_ReaderFailsHalfWay_StatementsBeforeThenTheError()
+    {
+        string text = Moves(20_000);
+        var source = new InstructionSource(() => new FailingReader(text, failAt: text.Length / 2), CancellationToken.None);
+        int seen = 0;
+
+        var error = Assert.Throws<IOException>(() =>
+        {
+            foreach (RobotAction action in source)
+            {
+                Assert.Equal(++seen, action.Id);
+            }
+        });
+
+        Assert.Equal("disk gone", error.Message);
+        Assert.InRange(seen, 1000, 10_000);
+    }
+
+    [Fact]
+    public void Enumerate_StoppedEarly_ReadingThreadEnds()
+    {
+        var source = new InstructionSource(() => new StringReader(Moves(200_000)), CancellationToken.None);
+
+        List<RobotAction> firstTen = [.. source.Take(10)];
+
+        Assert.Equal(Enumerable.Range(1, 10), firstTen.Select(a => a.Id));
+        Assert.Equal(0, source.Count);
+        Assert.Equal(10, source.LineOf(10));
+    }
+
+    [Fact]
+    public void LineOf_CurrentAction_ItsLine()
+    {
+        var source = new InstructionSource(() => new StringReader("MoveTo(0, 0, 0);\n\n  Wait(5); Move(1, 0, 0);\n"), CancellationToken.None);
+        var lines = new List<int?>();
+        foreach (RobotAction action in source)
+        {
+            lines.Add(source.LineOf(action.Id));
+            Assert.Null(source.LineOf(action.Id + 1));
+        }
+        Assert.Equal([1, 3, 3], lines);
+    }
+
+    /// <summary>Gives the text in small reads, then throws an IOException at <c>failAt</c>.</summary>
+    private sealed class FailingReader(string text, int failAt) : TextReader
+    {
+        private int _pos;
+
+        public override int Read(char[] buffer, int index, int count)
+        {
+            if (_pos >= failAt)
+            {
+                throw new IOException("disk gone");
+            }
+            int n = Math.Min(Math.Min(count, 1000), failAt - _pos);
+            text.CopyTo(_pos, buffer, index, n);
+            _pos += n;
+            return n;
+        }
+    }
+}
