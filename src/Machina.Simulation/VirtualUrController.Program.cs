@@ -152,11 +152,10 @@ public sealed partial class VirtualUrController
             _runtime = _safety == Normal ? Playing : Paused;
         }
         ResetProgress();
-        if (_safety == Normal)
+        if (SafetyStatus == Normal)
         {
             ReleaseHalt();
         }
-        WakeRtde();
         return program;
     }
 
@@ -175,8 +174,8 @@ public sealed partial class VirtualUrController
         if (wasRunning)
         {
             Pendant("Program stopped: " + why);
+            WakeRtde();
         }
-        WakeRtde();
     }
 
     /// <summary>Reads instructions from a driver program's connection into the buffer until it closes or the program is replaced.</summary>

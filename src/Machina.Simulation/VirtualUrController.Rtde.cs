@@ -181,6 +181,7 @@ public sealed partial class VirtualUrController
     /// </summary>
     private async Task SendRtdeAsync(CancellationToken token)
     {
+        bool woken = false;
         while (!token.IsCancellationRequested)
         {
             RtdeSubscriber[] subscribers;
@@ -192,7 +193,6 @@ public sealed partial class VirtualUrController
             }
             long now = Clock.GetTimestamp();
             TimeSpan wait = TimeSpan.FromSeconds(1);
-            bool woken = wake.IsCancellationRequested;
             foreach (RtdeSubscriber s in subscribers)
             {
                 bool due = s.IsDue(Clock, now);
@@ -210,10 +210,7 @@ public sealed partial class VirtualUrController
                 TimeSpan left = s.Period - Clock.GetElapsedTime(s.LastSent, now);
                 wait = left < wait ? left : wait;
             }
-            if (woken)
-            {
-                continue;
-            }
+            woken = false;
             using var both = CancellationTokenSource.CreateLinkedTokenSource(token, wake);
             try
             {
@@ -221,7 +218,7 @@ public sealed partial class VirtualUrController
             }
             catch (OperationCanceledException) when (!token.IsCancellationRequested)
             {
-                // Woken: send at once.
+                woken = true; // a change to report at once
             }
             catch (OperationCanceledException)
             {
