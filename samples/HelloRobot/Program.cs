@@ -1,6 +1,7 @@
-// The paper's "Hello Robot" (Code Sample 1), streamed online to an ABB controller.
-// With no arguments it starts a virtual ABB controller on this computer; with --host and --port it talks to a real
-// robot running Machina's RAPID driver (see Robot.GetDeviceDriverModules).
+// The paper's "Hello Robot" (Code Sample 1), streamed online to an ABB or UR controller.
+// With no arguments it starts a virtual ABB controller on this computer (--brand ur: a virtual UR5e); with --host and
+// --port it talks to a real robot: an ABB running Machina's RAPID driver (see Robot.GetDeviceDriverModules), or a UR,
+// to whose script port (30003) Machina sends its URScript driver.
 using System.Diagnostics;
 using Machina;
 
@@ -13,7 +14,7 @@ if (controller is null)
 
 try
 {
-    var bot = Robot.Create("HelloRobot", "ABB");
+    var bot = Robot.Create("HelloRobot", controller.Brand);
     bot.ControlMode("online");
     long lastMotion = 0;
     bot.ActionIssued += (_, e) => Console.WriteLine($"  issued    #{e.LastAction.Id} {e.LastAction}");
@@ -40,6 +41,10 @@ try
     await bot.WaitForCompletionAsync(timeout.Token);
     RobotState final = bot.GetExecutedState();
     Console.WriteLine($"Done. Final state: {final}");
+    foreach (string error in controller.Errors)
+    {
+        Console.WriteLine($"  the virtual controller {error}");
+    }
     await bot.DisconnectAsync();
 }
 catch (MachinaException ex)

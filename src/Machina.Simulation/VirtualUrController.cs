@@ -31,6 +31,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
             Position = position,
             Rotation = rotation,
             Joints = joints,
+            Zone = 5, // the driver's starting blend radius
         })
     {
         _options = options;

@@ -29,8 +29,8 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     /// <summary>The controller software version RTDE reports; from 5 on RTDE runs up to 500 Hz, before up to 125 Hz. Default 5.11.0.</summary>
     public Version ControllerVersion { get; init; } = new(5, 11, 0);
 
-    /// <summary>Where the robot starts without a model: (-134, -492, 488) mm with the tool down, about where a UR5e is at those joints.</summary>
-    internal static Pose DefaultStart => new(new Vector(-134, -492, 488), Rotation.FromQuaternion(0, 1, 0, 0));
+    /// <summary>Where the robot starts without a model: (492, -133, 488) mm with the tool down, about where a UR5e is at those joints.</summary>
+    internal static Pose DefaultStart => new(new Vector(492, -133, 488), Rotation.FromQuaternion(0, 1, 0, 0));
 
     /// <summary>Highest RTDE frequency of <see cref="ControllerVersion"/>.</summary>
     internal double MaxRtdeFrequency => ControllerVersion.Major >= 5 ? 500 : 125;
