@@ -73,9 +73,11 @@ public class UrStateTests
 
         await bot.ResumeAsync().WaitAsync(Limit);
         await resumed.Task.WaitAsync(Limit);
-        Assert.Equal(["close safety popup", "unlock protective stop", "play"], controller.DashboardCommands);
+        Assert.Equal(["safetystatus", "close safety popup", "unlock protective stop", "play"], controller.DashboardCommands);
+        // Simulated time runs until everything is done (however slowly this machine schedules the controller), bounded in real time.
         Task done = bot.WaitForCompletionAsync();
-        for (int step = 0; step < 2000 && !done.IsCompleted; step++)
+        long begun = TimeProvider.System.GetTimestamp();
+        while (!done.IsCompleted && TimeProvider.System.GetElapsedTime(begun) < Limit)
         {
             clock.Advance(TimeSpan.FromSeconds(0.05));
             await Task.Delay(1);
@@ -87,6 +89,27 @@ public class UrStateTests
         Assert.Equal(13, controller.RequestsExecuted);
         Assert.True(controller.State.Position.IsSimilar(start + new Vector(0, 0, -130), 1e-6), controller.State.Position.ToString());
         Assert.Empty(controller.Errors);
+        await bot.DisconnectAsync();
+    }
+
+    [Fact]
+    public async Task EmergencyStop_ResumeRefusedUntilTheButtonIsReleased()
+    {
+        await using var controller = await StartUrAsync();
+        var stopped = new TaskCompletionSource<ControllerStoppedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        Robot bot = await ConnectUrAsync(controller, b => b.ControllerStopped += (_, e) => stopped.TrySetResult(e));
+        Assert.True(controller.EmergencyStop());
+        Assert.Contains("robot emergency stop", (await stopped.Task.WaitAsync(Limit)).Reason!.Message, StringComparison.Ordinal);
+
+        var refused = await Assert.ThrowsAsync<RobotStoppedException>(() => bot.ResumeAsync().WaitAsync(Limit));
+        Assert.Contains("release the emergency stop button", refused.Message, StringComparison.Ordinal);
+        Assert.Equal(["safetystatus"], controller.DashboardCommands);
+
+        controller.ReleaseEmergencyStop();
+        await bot.ResumeAsync().WaitAsync(Limit);
+        bot.Move(0, 0, -10);
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        Assert.Equal(1, controller.RequestsExecuted);
         await bot.DisconnectAsync();
     }
 

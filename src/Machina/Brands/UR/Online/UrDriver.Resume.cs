@@ -7,23 +7,32 @@ internal sealed partial class UrDriver
 
     /// <inheritdoc/>
     /// <remarks>
-    /// Over the dashboard server: closes the safety popup, unlocks the protective stop and plays the paused driver program;
-    /// completes when RTDE shows it running. An emergency stop must be released at the robot first.
+    /// Over the dashboard server: asks the safety status; after a protective stop closes the safety popup and unlocks it;
+    /// then plays the paused driver program and completes when RTDE shows it running. An emergency stop must be released at
+    /// the robot first.
     /// </remarks>
     public async Task ResumeAsync(CancellationToken cancellationToken)
     {
-        RtdeSample? now = LatestSample;
-        if (now is { SafetyStatus: 6 or 7 })
-        {
-            throw new RobotStoppedException("The UR robot is in an emergency stop: release the emergency stop button at the robot, then call Resume.", now.Value.SafetyName);
-        }
         await using (UrDashboard dashboard = await UrDashboard.OpenAsync(_host, _ports.Dashboard, cancellationToken).ConfigureAwait(false))
         {
-            await dashboard.CommandAsync("close safety popup", cancellationToken).ConfigureAwait(false);
-            string unlock = await dashboard.CommandAsync("unlock protective stop", cancellationToken).ConfigureAwait(false);
-            if (!unlock.StartsWith("Protective stop releasing", StringComparison.OrdinalIgnoreCase))
+            // Asked now, not read from the last RTDE package: the button may have been released a moment ago.
+            string safety = await dashboard.CommandAsync("safetystatus", cancellationToken).ConfigureAwait(false);
+            if (safety.StartsWith("could not understand", StringComparison.OrdinalIgnoreCase))
             {
-                throw new RobotStoppedException($"The UR controller did not unlock the protective stop: \"{unlock}\".", unlock);
+                safety = await dashboard.CommandAsync("safetymode", cancellationToken).ConfigureAwait(false); // before software 5.4
+            }
+            if (safety.Contains("EMERGENCY", StringComparison.OrdinalIgnoreCase))
+            {
+                throw new RobotStoppedException("The UR robot is in an emergency stop: release the emergency stop button at the robot, then call Resume.", safety);
+            }
+            if (safety.Contains("PROTECTIVE", StringComparison.OrdinalIgnoreCase))
+            {
+                await dashboard.CommandAsync("close safety popup", cancellationToken).ConfigureAwait(false);
+                string unlock = await dashboard.CommandAsync("unlock protective stop", cancellationToken).ConfigureAwait(false);
+                if (!unlock.StartsWith("Protective stop releasing", StringComparison.OrdinalIgnoreCase))
+                {
+                    throw new RobotStoppedException($"The UR controller did not unlock the protective stop: \"{unlock}\".", unlock);
+                }
             }
             string play = await dashboard.CommandAsync("play", cancellationToken).ConfigureAwait(false);
             if (!play.StartsWith("Starting program", StringComparison.OrdinalIgnoreCase))
