@@ -85,6 +85,29 @@ public class UrOnlineTests
     }
 
     [Fact]
+    public async Task TwoRobots_OneProcess_EachOwnCallbackPortAndNoInterference()
+    {
+        await using var first = await StartUrAsync();
+        await using var second = await StartUrAsync();
+        Robot a = await ConnectUrAsync(first, name: "A");
+        Robot b = await ConnectUrAsync(second, name: "B");
+        for (int i = 0; i < 100; i++)
+        {
+            a.Move(0, 0, -1);
+            b.Move(0, 0, 1);
+        }
+        await Task.WhenAll(a.WaitForCompletionAsync(), b.WaitForCompletionAsync()).WaitAsync(Limit);
+
+        Assert.Equal((100, 100), (first.RequestsExecuted, second.RequestsExecuted));
+        Assert.NotEqual(CallbackPort(first.LastScript!), CallbackPort(second.LastScript!));
+        Assert.Equal(first.State.Position.Z + 200, second.State.Position.Z, 6);
+        await a.DisconnectAsync();
+        await b.DisconnectAsync();
+    }
+
+    private static string CallbackPort(string script) => script.Split('\n').Single(l => l.TrimStart().StartsWith("PORT = ", StringComparison.Ordinal));
+
+    [Fact]
     public async Task Issue_ActionTheDriverCannotRun_RefusedNamingIt()
     {
         await using var controller = await StartUrAsync();
