@@ -1,6 +1,7 @@
-// The paper's "Hello Robot" (Code Sample 1), streamed online to an ABB controller (or a KUKA one with --brand kuka).
-// With no host it starts a virtual controller on this computer; with --host and --port it talks to a real robot
-// running Machina's driver (see Robot.GetDeviceDriverModules).
+// The paper's "Hello Robot" (Code Sample 1), streamed online to an ABB, UR or KUKA controller.
+// With no arguments it starts a virtual ABB controller on this computer (--brand ur: a virtual UR5e; --brand kuka: a
+// virtual KR 6 R900 sixx); with --host and --port it talks to a real robot running Machina's driver (see
+// Robot.GetDeviceDriverModules; on a UR, Machina sends its URScript driver to the script port, 30003).
 using System.Diagnostics;
 using Machina;
 
@@ -40,6 +41,10 @@ try
     await bot.WaitForCompletionAsync(timeout.Token);
     RobotState final = bot.GetExecutedState();
     Console.WriteLine($"Done. Final state: {final}");
+    foreach (string error in controller.Errors)
+    {
+        Console.WriteLine($"  the virtual controller {error}");
+    }
     await bot.DisconnectAsync();
 }
 catch (MachinaException ex)

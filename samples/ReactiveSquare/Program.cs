@@ -14,7 +14,7 @@ if (controller is null)
 
 try
 {
-    var bot = Robot.Create("ReactiveSquare", "ABB");
+    var bot = Robot.Create("ReactiveSquare", controller.Brand);
     bot.ControlMode("online");
     await bot.ConnectAsync(controller.Host, controller.Port);
 

@@ -1,9 +1,10 @@
-// Shared by the online samples (linked into each project): where the robot is, from the command line.
+// Shared by the online samples (linked into each project): which robot, and where it is, from the command line.
 using Machina.Simulation;
 
 /// <summary>
-/// The controller an online sample talks to: a virtual controller started on this computer (ABB by default, KUKA with
-/// <c>--brand kuka</c>), or a real one given with <c>--host</c> and <c>--port</c> (running Machina's driver).
+/// The controller an online sample talks to: a virtual controller started on this computer (ABB by default, UR with
+/// <c>--brand ur</c>, KUKA with <c>--brand kuka</c>), or a real one given with <c>--host</c> and <c>--port</c> (running
+/// Machina's driver: RAPID on ABB, KRL on KUKA; on UR the script port, 30003, to which Machina sends its URScript driver).
 /// </summary>
 internal sealed class SampleController : IAsyncDisposable
 {
@@ -17,25 +18,25 @@ internal sealed class SampleController : IAsyncDisposable
         _simulator = simulator;
     }
 
-    /// <summary>The robot brand, as <c>Robot.Create</c> takes it ("ABB" unless <c>--brand</c> says otherwise).</summary>
+    /// <summary>The robot brand, as <c>Robot.Create</c> takes it: "ABB" (the default), "UR" or "KUKA".</summary>
     public string Brand { get; }
 
     /// <summary>Address of the controller.</summary>
     public string Host { get; }
 
-    /// <summary>Port of the Machina driver on the controller.</summary>
+    /// <summary>Port of the Machina driver on the controller (UR: the script port).</summary>
     public int Port { get; }
 
     /// <summary>
-    /// Reads <c>--host</c>, <c>--port</c> and the sample's own options (<paramref name="option"/> takes a name and a value and
-    /// says whether it knew them), then starts a virtual controller when no host was given. Null (after printing
+    /// Reads <c>--brand</c>, <c>--host</c>, <c>--port</c> and the sample's own options (<paramref name="option"/> takes a name and
+    /// a value and says whether it knew them), then starts a virtual controller when no host was given. Null (after printing
     /// <paramref name="usage"/>) when the arguments are wrong.
     /// </summary>
     public static async Task<SampleController?> OpenAsync(string[] args, string usage, double speedFactor, Func<string, string, bool>? option = null)
     {
         string? host = null;
-        int port = 7000;
         string brand = "ABB";
+        int port = 0;
         for (int i = 0; i < args.Length; i++)
         {
             string? value = i + 1 < args.Length ? args[i + 1] : null;
@@ -43,19 +44,26 @@ internal sealed class SampleController : IAsyncDisposable
             {
                 "--host" => (host = value) is not null,
                 "--port" => int.TryParse(value, out port) && port is > 0 and <= 65535,
-                "--brand" => (brand = value.ToUpperInvariant()) is "ABB" or "KUKA",
+                "--brand" => (brand = value.ToUpperInvariant()) is "ABB" or "UR" or "KUKA",
                 _ => option?.Invoke(args[i], value) ?? false,
             };
             if (!known)
             {
-                Console.Error.WriteLine("Usage: " + usage);
+                Console.Error.WriteLine("Usage: " + usage + " [--brand abb|ur]");
                 return null;
             }
             i++;
         }
         if (host is not null)
         {
-            return new SampleController(brand, host, port, null);
+            return new SampleController(brand, host, port != 0 ? port : brand == "UR" ? 30003 : 7000, null);
+        }
+        if (brand == "UR")
+        {
+            var ur = new VirtualUrController(new VirtualUrControllerOptions { SpeedFactor = speedFactor });
+            await ur.StartAsync();
+            Console.WriteLine($"Started a virtual UR5e controller on 127.0.0.1 (scripts on {ur.Port}, RTDE on {ur.RtdePort}, dashboard on {ur.DashboardPort}; {speedFactor}x faster than real time).");
+            return new SampleController(brand, "127.0.0.1", ur.Port, ur);
         }
         if (brand == "KUKA")
         {
@@ -64,11 +72,20 @@ internal sealed class SampleController : IAsyncDisposable
             Console.WriteLine($"Started a virtual KUKA controller (KR 6 R900 sixx) on 127.0.0.1:{kuka.Port} ({speedFactor}x faster than real time).");
             return new SampleController(brand, "127.0.0.1", kuka.Port, kuka);
         }
-        var simulator = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor });
-        await simulator.StartAsync();
-        Console.WriteLine($"Started a virtual ABB controller on 127.0.0.1:{simulator.Port} ({speedFactor}x faster than real time).");
-        return new SampleController(brand, "127.0.0.1", simulator.Port, simulator);
+        var abb = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor });
+        await abb.StartAsync();
+        Console.WriteLine($"Started a virtual IRB 120 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
+        return new SampleController(brand, "127.0.0.1", abb.Port, abb);
     }
+
+    /// <summary>What the virtual controller refused (e.g. a target its robot cannot reach); empty for a real controller.</summary>
+    public IReadOnlyList<string> Errors => _simulator switch
+    {
+        VirtualAbbController abb => abb.Errors,
+        VirtualUrController ur => ur.Errors,
+        VirtualKukaController kuka => kuka.Errors,
+        _ => [],
+    };
 
     /// <summary>Stops the virtual controller, if one was started.</summary>
     public ValueTask DisposeAsync() => _simulator?.DisposeAsync() ?? ValueTask.CompletedTask;

@@ -77,8 +77,15 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>The wire id of the last request executed (0 when none); read it while greeting a client, under the send lock.</summary>
-    private protected int LastExecutedId => _lastExecutedId;
+    private protected int LastExecutedId => Volatile.Read(ref _lastExecutedId);
 
     /// <summary>The wire id of the last request received (0 when none).</summary>
     private protected int LastReceivedId => Volatile.Read(ref _lastReceivedId);
+
+    /// <summary>Forgets the progress, for a new driver program that starts counting again.</summary>
+    private protected void ResetProgress()
+    {
+        Volatile.Write(ref _lastExecutedId, 0);
+        Volatile.Write(ref _lastReceivedId, 0);
+    }
 }

@@ -15,6 +15,8 @@ internal static class Catalog
 #if MACHINA_ONLINE
         scenarios.Add(new StreamScenario(wideWindow: false));
         scenarios.Add(new StreamScenario(wideWindow: true));
+        scenarios.Add(new StreamScenario(wideWindow: false, ur: true));
+        scenarios.Add(new StreamScenario(wideWindow: true, ur: true));
 #else
         scenarios.Add(new MissingScenario("stream", "Stream moves to the virtual ABB controller", 100_000, StreamTarget, "the virtual ABB controller is not in this build."));
 #endif

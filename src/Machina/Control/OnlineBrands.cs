@@ -3,7 +3,7 @@ namespace Machina;
 /// <summary>The registry of the brands that can be controlled online: one <see cref="IOnlineBrand"/> each.</summary>
 internal static class OnlineBrands
 {
-    private static readonly IOnlineBrand[] Supported = [new AbbOnline(), new KukaOnline()];
+    private static readonly IOnlineBrand[] Supported = [new AbbOnline(), new UrOnline(), new KukaOnline()];
 
     /// <summary>The online support of a brand, or null when it has none.</summary>
     internal static IOnlineBrand? TryFor(RobotType brand) => Array.Find(Supported, b => b.Brand == brand);

@@ -39,6 +39,17 @@ internal sealed class TcpLink : IAsyncDisposable
     /// <summary>"host:port" of the other end.</summary>
     internal string RemoteAddress { get; }
 
+    /// <summary>The address of this end: the local address that reaches the other end.</summary>
+    internal System.Net.IPAddress? LocalAddress => (_socket.LocalEndPoint as System.Net.IPEndPoint)?.Address;
+
+    /// <summary>Wraps a socket that is already connected (e.g. accepted by a server the host opened).</summary>
+    internal static TcpLink Adopt(Socket socket, string remoteAddress)
+    {
+        socket.NoDelay = true;
+        socket.Blocking = false; // Post never waits; the loops use asynchronous calls
+        return new TcpLink(socket, remoteAddress);
+    }
+
     /// <summary>Connects within <paramref name="timeout"/>; throws <see cref="MachinaException"/> when the host cannot be reached.</summary>
     internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
     {

@@ -3,20 +3,20 @@ using Machina.Simulation;
 namespace Machina.Benchmarks;
 
 /// <summary>
-/// Streams moves online to a virtual ABB controller on loopback that executes every instruction at once, and times from
-/// the first issued move until the controller has acknowledged the last one. With <paramref name="wideWindow"/> the
-/// release window is widened (100 actions per block) to show what the link can carry; otherwise the defaults are used.
+/// Streams moves online to a virtual controller (ABB, or UR with <paramref name="ur"/>) on loopback that executes every
+/// instruction at once, and times from the first issued move until the controller has acknowledged the last one. With
+/// <paramref name="wideWindow"/> the release window is widened (100 actions per block) to show what the link can carry;
+/// otherwise the defaults are used.
 /// </summary>
-internal sealed class StreamScenario(bool wideWindow) : Scenario
+internal sealed class StreamScenario(bool wideWindow, bool ur = false) : Scenario
 {
-    private VirtualAbbController? _controller;
+    private IAsyncDisposable? _controller;
     private Robot? _bot;
 
-    public override string Name => wideWindow ? "stream-wide" : "stream";
+    public override string Name => (ur ? "stream-ur" : "stream") + (wideWindow ? "-wide" : "");
 
-    public override string Title => wideWindow
-        ? "Stream moves to the virtual ABB controller, instant execution, window 100/100"
-        : "Stream moves to the virtual ABB controller, instant execution, default window";
+    public override string Title => $"Stream moves to the virtual {(ur ? "UR" : "ABB")} controller, instant execution, "
+        + (wideWindow ? "window 100/100" : "default window");
 
     public override int TargetSize => 100_000;
 
@@ -28,9 +28,20 @@ internal sealed class StreamScenario(bool wideWindow) : Scenario
 
     public override Func<object?> Prepare(int size)
     {
-        _controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true });
-        _controller.StartAsync().GetAwaiter().GetResult();
-        var bot = Robot.Create("Stream", "ABB");
+        int port;
+        if (ur)
+        {
+            var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+            controller.StartAsync().GetAwaiter().GetResult();
+            (_controller, port) = (controller, controller.Port);
+        }
+        else
+        {
+            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true });
+            controller.StartAsync().GetAwaiter().GetResult();
+            (_controller, port) = (controller, controller.Port);
+        }
+        var bot = Robot.Create("Stream", ur ? "UR" : "ABB");
         _bot = bot;
         bot.ControlMode("online");
         if (wideWindow)
@@ -38,9 +49,16 @@ internal sealed class StreamScenario(bool wideWindow) : Scenario
             bot.BlockSize = 100;
             bot.PendingCount = 100;
         }
-        bot.ConnectAsync("127.0.0.1", _controller.Port).GetAwaiter().GetResult();
+        bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
         bot.SpeedTo(1000);
-        bot.MoveTo(300, 0, 500);
+        if (ur)
+        {
+            bot.MoveTo(300, -300, 400);
+        }
+        else
+        {
+            bot.MoveTo(300, 0, 500);
+        }
         Vector[] steps = [new(10, 0, 0), new(0, 10, 0), new(-10, 0, 0), new(0, -10, 0)];
         return () =>
         {

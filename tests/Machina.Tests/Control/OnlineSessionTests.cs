@@ -424,8 +424,8 @@ public class OnlineSessionTests
         Assert.False(bot.ConnectionManager("machina"));
         Assert.True(bot.ConnectionManager(ConnectionType.User));
         Assert.Throws<ArgumentException>(() => Robot.Create("H", "HUMAN").ControlMode("online"));
-        var ur = Robot.Create("U", "UR");
-        Assert.Contains("only ABB", Assert.Throws<NotSupportedException>(() => ur.ControlMode("online")).Message, StringComparison.Ordinal);
-        Assert.Equal(ControlType.Offline, ur.GetControlMode());
+        var kuka = Robot.Create("K", "KUKA");
+        Assert.Contains("only ABB, UR", Assert.Throws<NotSupportedException>(() => kuka.ControlMode("online")).Message, StringComparison.Ordinal);
+        Assert.Equal(ControlType.Offline, kuka.GetControlMode());
     }
 }

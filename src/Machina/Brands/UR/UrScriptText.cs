@@ -9,8 +9,8 @@ namespace Machina;
 /// </summary>
 internal static class UrScriptText
 {
-    private const double Mm = 0.001;
-    private const double Rad = Math.PI / 180;
+    internal const double Mm = 0.001;
+    internal const double Rad = Math.PI / 180;
 
     private static readonly HashSet<string> Reserved = new(StringComparer.Ordinal)
     {

@@ -1,0 +1,181 @@
+using System.Net.Sockets;
+using System.Text;
+using System.Text.RegularExpressions;
+
+namespace Machina.Simulation;
+
+public sealed partial class VirtualUrController
+{
+    /// <summary>Largest script accepted, in bytes (Machina's driver is about 6 KB).</summary>
+    internal const int MaxScriptLength = 256 * 1024;
+
+    private static readonly Regex HostLine = new("^[ \\t]*HOSTNAME[ \\t]*=[ \\t]*\"([^\"\\n]*)\"", RegexOptions.Multiline | RegexOptions.CultureInvariant);
+    private static readonly Regex PortLine = new("^[ \\t]*PORT[ \\t]*=[ \\t]*([0-9]{1,5})[ \\t]*(#.*)?$", RegexOptions.Multiline | RegexOptions.CultureInvariant);
+    private static readonly Regex OursLine = new("^[ \\t]*MACHINA_DRIVER_VERSION[ \\t]*=[ \\t]*\\[[ \\t]*2[ \\t]*,", RegexOptions.Multiline | RegexOptions.CultureInvariant);
+    private static readonly Regex OriginalLine = new("^[ \\t]*MACHINA_DRIVER_VERSION[ \\t]*=[ \\t]*\"1\\.", RegexOptions.Multiline | RegexOptions.CultureInvariant);
+
+    private readonly List<string> _scripts = [];
+
+    /// <summary>Which Machina driver a script is.</summary>
+    internal enum DriverKind
+    {
+        /// <summary>Not a Machina driver.</summary>
+        None,
+
+        /// <summary>Machina's driver (drivers/ur, version 2).</summary>
+        Ours,
+
+        /// <summary>The original Machina.NET driver (version 1.x).</summary>
+        Original,
+    }
+
+    /// <summary>How many scripts arrived on the script ports (driver or not).</summary>
+    public int ScriptsReceived
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return _scripts.Count;
+            }
+        }
+    }
+
+    /// <summary>The last script received, or null.</summary>
+    public string? LastScript
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return _scripts.Count == 0 ? null : _scripts[^1];
+            }
+        }
+    }
+
+    private Task AcceptScriptsAsync(TcpListener listener, CancellationToken token) => AcceptAsync(listener, ReadScriptsAsync, token);
+
+    /// <summary>Reads scripts from one connection: each ends with an unindented line after its definitions (a call, or <c>end</c>).</summary>
+    private async Task ReadScriptsAsync(TcpClient client, CancellationToken token)
+    {
+        var stream = client.GetStream();
+        var text = new StringBuilder();
+        var bytes = new byte[8192];
+        while (true)
+        {
+            int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
+            if (n == 0)
+            {
+                return;
+            }
+            text.Append(Encoding.ASCII.GetString(bytes, 0, n));
+            if (text.Length > MaxScriptLength)
+            {
+                RecordError($"refused a script longer than {MaxScriptLength} bytes.");
+                return;
+            }
+            if (IsComplete(text))
+            {
+                string script = text.ToString();
+                text.Clear();
+                await RunScriptAsync(script, token).ConfigureAwait(false);
+            }
+        }
+    }
+
+    /// <summary>True when the text ends with a complete top-level line (not indented, not a <c>def</c>) after at least one line.</summary>
+    private static bool IsComplete(StringBuilder text)
+    {
+        string s = text.ToString().TrimEnd();
+        if (s.Length == 0 || !text.ToString().EndsWith('\n'))
+        {
+            return false;
+        }
+        int start = s.LastIndexOf('\n') + 1;
+        string last = s[start..];
+        return last.Length > 0 && !char.IsWhiteSpace(last[0]) && !last.StartsWith("def ", StringComparison.Ordinal) && !last.StartsWith('#');
+    }
+
+    /// <summary>What a script is, and where it connects back to.</summary>
+    internal static (DriverKind Kind, string? Host, int Port) Recognise(string script)
+    {
+        if (!script.Contains("def machina_ur_driver():", StringComparison.Ordinal))
+        {
+            return (DriverKind.None, null, 0);
+        }
+        DriverKind kind = OursLine.IsMatch(script) ? DriverKind.Ours : OriginalLine.IsMatch(script) ? DriverKind.Original : DriverKind.None;
+        Match host = HostLine.Match(script), port = PortLine.Match(script);
+        if (kind == DriverKind.None || !host.Success || !port.Success || !int.TryParse(port.Groups[1].Value, Num.Inv, out int p) || p is < 1 or > 65535)
+        {
+            return (DriverKind.None, null, 0);
+        }
+        return (kind, host.Groups[1].Value, p);
+    }
+
+    /// <summary>Runs a script as a real controller would: it replaces the running program; a Machina driver connects back.</summary>
+    private async Task RunScriptAsync(string script, CancellationToken token)
+    {
+        lock (Gate)
+        {
+            _scripts.Add(script);
+            if (_scripts.Count > MaxKeptTexts)
+            {
+                _scripts.RemoveAt(0);
+            }
+        }
+        var (kind, host, port) = Recognise(script);
+        StopProgram(kind == DriverKind.None ? "a new script replaces it" : "a new driver replaces it");
+        if (kind == DriverKind.None)
+        {
+            string first = script.Split('\n').Select(l => l.Trim()).FirstOrDefault(l => l.Length > 0 && !l.StartsWith('#')) ?? "";
+            RecordError($"refused a script that is not Machina's driver (no machina_ur_driver with its version, HOSTNAME and PORT); it begins \"{Shorten(first)}\".");
+            return;
+        }
+        Pendant(kind == DriverKind.Ours ? "Machina driver 2.0.0 started" : "Started Machina driver (original 1.x)");
+        int program = StartProgram(kind);
+        var client = new TcpClient { NoDelay = true };
+        try
+        {
+            using var deadline = CancellationTokenSource.CreateLinkedTokenSource(token);
+            deadline.CancelAfter(TimeSpan.FromSeconds(10));
+            await client.ConnectAsync(host!, port, deadline.Token).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is SocketException or OperationCanceledException)
+        {
+            client.Dispose();
+            RecordError($"the driver could not connect back to {host}:{port}: {e.Message}");
+            StopProgram("it could not connect back");
+            return;
+        }
+        if (!await AttachClientAsync(client, (stream, t) => GreetAsync(stream, kind, t), token).ConfigureAwait(false))
+        {
+            return;
+        }
+        Run(t => ReadProgramAsync(client, kind, program, t));
+    }
+
+    private static string Shorten(string text) => text.Length <= 60 ? text : text[..60] + "…";
+
+    /// <summary>Our driver sends its version, then (both drivers) the full pose: -54, X Y Z RX RY RZ J1..J6, end marker.</summary>
+    private async Task GreetAsync(NetworkStream stream, DriverKind kind, CancellationToken token)
+    {
+        var values = new List<int>(20);
+        if (kind == DriverKind.Ours)
+        {
+            values.AddRange([UrWire.ResponseVersion, 2, 0, 0, UrWire.End]);
+        }
+        VirtualUrState s = State;
+        RotationVector rv = s.Rotation.ToRotationVector();
+        values.Add(UrWire.ResponseFullPose);
+        values.AddRange([UrWire.Millimetres(s.Position.X), UrWire.Millimetres(s.Position.Y), UrWire.Millimetres(s.Position.Z)]);
+        values.AddRange([UrWire.Degrees(rv.X), UrWire.Degrees(rv.Y), UrWire.Degrees(rv.Z)]);
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            values.Add(UrWire.Degrees(s.Joints[i]));
+        }
+        values.Add(UrWire.End);
+        var bytes = new byte[values.Count * 4];
+        UrWire.Write(values.ToArray(), bytes);
+        await stream.WriteAsync(bytes, token).ConfigureAwait(false);
+    }
+}

@@ -1,0 +1,162 @@
+using System.Net;
+using System.Net.Sockets;
+
+namespace Machina.Simulation;
+
+/// <summary>
+/// A stand-in for a Universal Robots controller, listening on 127.0.0.1: it takes a driver script on its script port(s),
+/// recognises Machina's URScript driver (and the original Machina.NET driver, whose protocol ours keeps), connects back to
+/// the host address and port written in the script, and runs the instructions it reads there with the shared motion model,
+/// acknowledging each by id. It serves RTDE (UR's package layout, any RTDE client reads it) and the dashboard commands a
+/// host uses, and can be told to enter a protective stop. Made for tests and demos.
+/// </summary>
+public sealed partial class VirtualUrController : VirtualController<VirtualUrState>
+{
+    private const int MaxPortAttempts = 50;
+
+    private readonly VirtualUrControllerOptions _options;
+    private readonly List<TcpListener> _scriptListeners = [];
+    private TcpListener? _rtdeListener;
+    private TcpListener? _dashboardListener;
+
+    /// <summary>Creates a stopped controller; call <c>StartAsync</c> to listen.</summary>
+    public VirtualUrController(VirtualUrControllerOptions? options = null)
+        : this(options ?? new VirtualUrControllerOptions(), 0)
+    {
+    }
+
+    private VirtualUrController(VirtualUrControllerOptions options, int _)
+        : base(options, VirtualUrControllerOptions.DefaultStart, (position, rotation, joints) => new VirtualUrState
+        {
+            Position = position,
+            Rotation = rotation,
+            Joints = joints,
+            Zone = 5, // the driver's starting blend radius
+        })
+    {
+        _options = options;
+    }
+
+    /// <summary>The port that takes driver scripts (what a host gives to Connect); 0 until started.</summary>
+    public int Port { get; private set; }
+
+    /// <summary>The RTDE port; 0 until started.</summary>
+    public int RtdePort { get; private set; }
+
+    /// <summary>The dashboard port; 0 until started.</summary>
+    public int DashboardPort { get; private set; }
+
+    private protected override Task ListenAsync(CancellationToken token)
+    {
+        var (script, rtde, dashboard) = Bind();
+        _scriptListeners.Add(script);
+        foreach (int extra in _options.ExtraScriptPorts)
+        {
+            var listener = new TcpListener(IPAddress.Loopback, extra);
+            listener.Start();
+            _scriptListeners.Add(listener);
+        }
+        (_rtdeListener, _dashboardListener) = (rtde, dashboard);
+        Port = PortOf(script);
+        RtdePort = PortOf(rtde);
+        DashboardPort = PortOf(dashboard);
+        foreach (TcpListener listener in _scriptListeners)
+        {
+            Run(token => AcceptScriptsAsync(listener, token));
+        }
+        Run(AcceptRtdeClientsAsync);
+        Run(AcceptDashboardClientsAsync);
+        Run(SendRtdeAsync);
+        return Task.CompletedTask;
+    }
+
+    private protected override void StopListening()
+    {
+        foreach (TcpListener listener in _scriptListeners)
+        {
+            listener.Stop();
+        }
+        _rtdeListener?.Stop();
+        _dashboardListener?.Stop();
+        StopProgram("the controller stops");
+        WakeRtde();
+    }
+
+    private static int PortOf(TcpListener listener) => ((IPEndPoint)listener.LocalEndpoint).Port;
+
+    /// <summary>The given ports, or three consecutive OS-chosen ones (script, RTDE, dashboard) for those left at 0.</summary>
+    private (TcpListener Script, TcpListener Rtde, TcpListener Dashboard) Bind()
+    {
+        if (_options.ScriptPort != 0 || _options.RtdePort != 0 || _options.DashboardPort != 0)
+        {
+            return (Listen(_options.ScriptPort), Listen(_options.RtdePort), Listen(_options.DashboardPort));
+        }
+        for (int attempt = 0; ; attempt++)
+        {
+            var script = Listen(0);
+            int port = PortOf(script);
+            if (port + 2 <= IPEndPoint.MaxPort)
+            {
+                TcpListener? rtde = null;
+                try
+                {
+                    rtde = Listen(port + 1);
+                    return (script, rtde, Listen(port + 2));
+                }
+                catch (SocketException) when (attempt < MaxPortAttempts)
+                {
+                    rtde?.Stop();
+                }
+            }
+            script.Stop();
+            if (attempt >= MaxPortAttempts)
+            {
+                throw new InvalidOperationException("Could not find three free consecutive ports on 127.0.0.1.");
+            }
+        }
+    }
+
+    private static TcpListener Listen(int port)
+    {
+        var listener = new TcpListener(IPAddress.Loopback, port);
+        listener.Start();
+        return listener;
+    }
+
+    /// <summary>Accepts connections from one listener and serves each with <paramref name="serve"/>, one after another or side by side.</summary>
+    private static async Task AcceptAsync(TcpListener listener, Func<TcpClient, CancellationToken, Task> serve, CancellationToken token)
+    {
+        var served = new List<Task>();
+        while (!token.IsCancellationRequested)
+        {
+            TcpClient client;
+            try
+            {
+                client = await listener.AcceptTcpClientAsync(token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
+            {
+                break;
+            }
+            client.NoDelay = true;
+            served.RemoveAll(t => t.IsCompleted);
+            served.Add(ServeAsync(client, serve, token));
+        }
+        await Task.WhenAll(served).ConfigureAwait(false);
+    }
+
+    private static async Task ServeAsync(TcpClient client, Func<TcpClient, CancellationToken, Task> serve, CancellationToken token)
+    {
+        using (client)
+        {
+            try
+            {
+                await serve(client, token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
+            {
+                // Client gone or controller stopping.
+            }
+        }
+    }
+}

@@ -1,0 +1,51 @@
+namespace Machina.Simulation;
+
+/// <summary>
+/// Settings of a <see cref="VirtualUrController"/>. Every property has a usable default: a UR5e at (0, -90, -90, -90, 90, 0)
+/// with its script, RTDE and dashboard servers on three consecutive OS-chosen ports of 127.0.0.1 (script P, RTDE P + 1,
+/// dashboard P + 2, which is where Machina's host looks when the script port is not 30001-30003).
+/// </summary>
+public sealed record VirtualUrControllerOptions : VirtualControllerOptions
+{
+    /// <summary>A UR5e with the tool pointing down.</summary>
+    public VirtualUrControllerOptions()
+    {
+        Model = RobotModels.Get("UR5e");
+        InitialJoints = new Joints(0, -90, -90, -90, 90, 0);
+    }
+
+    /// <summary>Port that accepts driver scripts (a real controller: 30001-30003), 0 = OS-chosen. Default 0.</summary>
+    public int ScriptPort { get; init; }
+
+    /// <summary>More ports that accept scripts, e.g. [30001, 30002] next to 30003. Default none.</summary>
+    public IReadOnlyList<int> ExtraScriptPorts { get; init; } = [];
+
+    /// <summary>RTDE port (a real controller: 30004), 0 = OS-chosen (the script port + 1 when that is OS-chosen too). Default 0.</summary>
+    public int RtdePort { get; init; }
+
+    /// <summary>Dashboard port (a real controller: 29999), 0 = OS-chosen (the script port + 2 when that is OS-chosen too). Default 0.</summary>
+    public int DashboardPort { get; init; }
+
+    /// <summary>The controller software version RTDE reports; from 5 on RTDE runs up to 500 Hz, before up to 125 Hz. Default 5.11.0.</summary>
+    public Version ControllerVersion { get; init; } = new(5, 11, 0);
+
+    /// <summary>Where the robot starts without a model: (492, -133, 488) mm with the tool down, about where a UR5e is at those joints.</summary>
+    internal static Pose DefaultStart => new(new Vector(492, -133, 488), Rotation.FromQuaternion(0, 1, 0, 0));
+
+    /// <summary>Highest RTDE frequency of <see cref="ControllerVersion"/>.</summary>
+    internal double MaxRtdeFrequency => ControllerVersion.Major >= 5 ? 500 : 125;
+
+    internal override void Validate()
+    {
+        base.Validate();
+        ArgumentNullException.ThrowIfNull(ControllerVersion);
+        ArgumentNullException.ThrowIfNull(ExtraScriptPorts);
+        foreach (int port in ExtraScriptPorts.Append(ScriptPort).Append(RtdePort).Append(DashboardPort))
+        {
+            if (port is < 0 or > 65535)
+            {
+                throw new ArgumentException($"A port must be between 0 and 65535, not {port}.");
+            }
+        }
+    }
+}

@@ -1,0 +1,306 @@
+using System.Buffers.Binary;
+using System.Text;
+
+namespace Machina;
+
+/// <summary>What one RTDE data package says about the robot, in Machina units.</summary>
+/// <param name="Position">TCP position in mm (actual_TCP_pose).</param>
+/// <param name="Rotation">TCP orientation (actual_TCP_pose's rotation vector).</param>
+/// <param name="Joints">Joint angles in degrees (actual_q).</param>
+/// <param name="RobotMode">robot_mode (7 = running).</param>
+/// <param name="SafetyStatus">safety_status (1 = normal, 3 = protective stop, 6/7 = emergency stop…).</param>
+/// <param name="RuntimeState">runtime_state (2 = playing, 4 = paused…).</param>
+/// <param name="Executed">Our driver's last executed id (output_int_register_24).</param>
+/// <param name="Received">Our driver's last received id (output_int_register_25).</param>
+internal readonly record struct RtdeSample(Vector Position, Rotation Rotation, Joints Joints, int RobotMode, int SafetyStatus, uint RuntimeState, int Executed, int Received)
+{
+    /// <summary>runtime_state of a running program.</summary>
+    public const uint Playing = 2;
+
+    /// <summary>True when a safety function stopped the robot (protective, safeguard or emergency stop, violation, fault).</summary>
+    public bool IsSafetyStop => SafetyStatus is 3 or 5 or 6 or 7 or 8 or 9 or 12 or 13;
+
+    /// <summary>A name for the safety status, for messages.</summary>
+    public string SafetyName => SafetyStatus switch
+    {
+        1 => "normal",
+        2 => "reduced",
+        3 => "protective stop",
+        5 or 12 => "safeguard stop",
+        6 => "system emergency stop",
+        7 => "robot emergency stop",
+        8 => "safety violation",
+        9 => "safety fault",
+        13 => "three-position enabling stop",
+        _ => "safety status " + SafetyStatus.ToString(Num.Inv),
+    };
+}
+
+internal sealed partial class UrDriver
+{
+    /// <summary>The output recipe: state for the cursors and events, the safety and program state, and the driver's progress.</summary>
+    internal static readonly string[] Recipe =
+    [
+        "timestamp", "actual_q", "actual_TCP_pose", "robot_mode", "safety_status", "runtime_state",
+        "output_int_register_" + UrWire.ExecutedRegister.ToString(Num.Inv), "output_int_register_" + UrWire.ReceivedRegister.ToString(Num.Inv),
+    ];
+
+    private static readonly string[] RecipeTypes = ["DOUBLE", "VECTOR6D", "VECTOR6D", "INT32", "INT32", "UINT32", "INT32", "INT32"];
+
+    private readonly Lock _rtdeGate = new();
+    private readonly RtdePackageReader _rtdeReader = new();
+    private TcpLink? _rtdeLink;
+    private TaskCompletionSource<byte[]>? _reply;
+    private byte _replyType;
+    private TaskCompletionSource<RtdeSample> _nextSample = new(TaskCreationOptions.RunContinuationsAsynchronously);
+    private RtdeSample? _latest;
+    private double _rtdeFrequency;
+    private bool _reportedStop;
+
+    /// <summary>The last state RTDE reported, or null before the first package.</summary>
+    private RtdeSample? LatestSample
+    {
+        get
+        {
+            lock (_rtdeGate)
+            {
+                return _latest;
+            }
+        }
+    }
+
+    /// <summary>Connects to RTDE, negotiates protocol 2, subscribes to <see cref="Recipe"/> and returns the first package.</summary>
+    private async Task<RtdeSample> ConnectRtdeAsync(string host, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        long start = _time.GetTimestamp();
+        _rtdeLink = await TcpLink.ConnectAsync(host, _ports.Rtde, timeout, _time, cancellationToken).ConfigureAwait(false);
+        _rtdeLink.Start(new RtdeReceiver(this));
+        byte[] accepted = await RequestAsync(Rtde.RequestProtocolVersion, [0, (byte)Rtde.ProtocolVersion], start, timeout, cancellationToken).ConfigureAwait(false);
+        if (accepted.Length != 1 || accepted[0] != 1)
+        {
+            throw new RobotConnectionException($"The UR controller at {host} does not speak RTDE protocol version 2 (software 3.4 / 5.0 or newer is needed).");
+        }
+        byte[] version = await RequestAsync(Rtde.GetControllerVersion, [], start, timeout, cancellationToken).ConfigureAwait(false);
+        uint major = version.Length >= 4 ? BinaryPrimitives.ReadUInt32BigEndian(version) : 3;
+        double maxRate = major >= 5 ? 500 : 125;
+        _rtdeFrequency = Math.Min(_context.MotionUpdateRate, maxRate);
+
+        byte[] names = Encoding.ASCII.GetBytes(string.Join(',', Recipe));
+        var setup = new byte[8 + names.Length];
+        BinaryPrimitives.WriteDoubleBigEndian(setup, _rtdeFrequency);
+        names.CopyTo(setup, 8);
+        byte[] reply = await RequestAsync(Rtde.SetupOutputs, setup, start, timeout, cancellationToken).ConfigureAwait(false);
+        string[] types = reply.Length > 1 ? Encoding.ASCII.GetString(reply, 1, reply.Length - 1).Split(',') : [];
+        if (!types.SequenceEqual(RecipeTypes))
+        {
+            var missing = Recipe.Where((_, i) => i >= types.Length || types[i] == Rtde.NotFound);
+            throw new RobotConnectionException($"The UR controller at {host} cannot report {string.Join(", ", missing)} over RTDE (it answered \"{string.Join(',', types)}\"); Machina needs software 3.9 / 5.3 or newer.");
+        }
+        byte[] started = await RequestAsync(Rtde.Start, [], start, timeout, cancellationToken).ConfigureAwait(false);
+        if (started.Length != 1 || started[0] != 1)
+        {
+            throw new RobotConnectionException($"The UR controller at {host} refused to start the RTDE data stream.");
+        }
+        Task<RtdeSample> first;
+        lock (_rtdeGate)
+        {
+            first = _latest is RtdeSample s ? Task.FromResult(s) : _nextSample.Task;
+        }
+        try
+        {
+            return await first.WaitAsync(Left(start, timeout), _time, cancellationToken).ConfigureAwait(false);
+        }
+        catch (TimeoutException)
+        {
+            throw new RobotConnectionException($"The UR controller at {host} started RTDE but sent no data within {Num.G(timeout.TotalSeconds)} s.");
+        }
+    }
+
+    /// <summary>Sends one RTDE request and waits for the reply of the same type.</summary>
+    private async Task<byte[]> RequestAsync(byte type, byte[] payload, long start, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        var reply = new TaskCompletionSource<byte[]>(TaskCreationOptions.RunContinuationsAsynchronously);
+        lock (_rtdeGate)
+        {
+            _reply = reply;
+            _replyType = type;
+        }
+        _rtdeLink!.Post(Rtde.Package(type, payload));
+        try
+        {
+            return await reply.Task.WaitAsync(Left(start, timeout), _time, cancellationToken).ConfigureAwait(false);
+        }
+        catch (TimeoutException)
+        {
+            throw new RobotConnectionException($"The UR controller did not answer the RTDE request '{(char)type}' in time; is port {_ports.Rtde} its RTDE interface?");
+        }
+    }
+
+    /// <summary>
+    /// Where the previous driver program is: while it still runs requests it received, waits (within the connect timeout)
+    /// until it has run them all, so that the new program starts after them and nothing is sent twice or lost.
+    /// </summary>
+    private async Task<DeviceProgress> SettledProgressAsync(RtdeSample sample, TimeSpan left, CancellationToken cancellationToken)
+    {
+        long start = _time.GetTimestamp();
+        while (sample.Executed != sample.Received && sample.RuntimeState == RtdeSample.Playing && !sample.IsSafetyStop)
+        {
+            Task<RtdeSample> next;
+            lock (_rtdeGate)
+            {
+                next = _nextSample.Task;
+            }
+            TimeSpan remaining = left - _time.GetElapsedTime(start);
+            if (remaining <= TimeSpan.Zero)
+            {
+                return new DeviceProgress(sample.Executed, sample.Received);
+            }
+            try
+            {
+                sample = await next.WaitAsync(remaining, _time, cancellationToken).ConfigureAwait(false);
+            }
+            catch (TimeoutException)
+            {
+                return new DeviceProgress(sample.Executed, sample.Received);
+            }
+        }
+        // The new program replaces the old one: what it had received but not run is sent again.
+        return new DeviceProgress(sample.Executed, sample.Executed);
+    }
+
+    private void OnRtdePackage(byte type, ReadOnlySpan<byte> payload)
+    {
+        if (type == Rtde.DataPackage)
+        {
+            OnSample(Decode(payload));
+            return;
+        }
+        if (type == Rtde.TextMessage)
+        {
+            _log.Info("UR controller: " + TextOf(payload));
+            return;
+        }
+        TaskCompletionSource<byte[]>? reply = null;
+        lock (_rtdeGate)
+        {
+            if (_reply is not null && _replyType == type)
+            {
+                reply = _reply;
+                _reply = null;
+            }
+        }
+        reply?.TrySetResult(payload.ToArray());
+    }
+
+    private static string TextOf(ReadOnlySpan<byte> payload)
+    {
+        int length = payload.Length > 0 ? Math.Min(payload[0], payload.Length - 1) : 0;
+        return Encoding.ASCII.GetString(payload.Slice(1, length));
+    }
+
+    /// <summary>Reads a data package of <see cref="Recipe"/>: recipe id, timestamp, actual_q, actual_TCP_pose, modes and registers.</summary>
+    internal static RtdeSample Decode(ReadOnlySpan<byte> payload)
+    {
+        if (payload.Length != 1 + 8 + 48 + 48 + 5 * 4)
+        {
+            throw new RobotConnectionException($"The UR controller sent an RTDE data package of {payload.Length} bytes; the recipe has 125.");
+        }
+        ReadOnlySpan<byte> p = payload[9..];
+        Span<double> q = stackalloc double[6];
+        Span<double> tcp = stackalloc double[6];
+        for (int i = 0; i < 6; i++)
+        {
+            q[i] = BinaryPrimitives.ReadDoubleBigEndian(p[(i * 8)..]) / UrScriptText.Rad;
+            tcp[i] = BinaryPrimitives.ReadDoubleBigEndian(p[(48 + i * 8)..]);
+        }
+        p = p[96..];
+        return new RtdeSample(
+            new Vector(tcp[0] / UrScriptText.Mm, tcp[1] / UrScriptText.Mm, tcp[2] / UrScriptText.Mm),
+            Rotation.FromRotationVector(new Vector(tcp[3] / UrScriptText.Rad, tcp[4] / UrScriptText.Rad, tcp[5] / UrScriptText.Rad)),
+            new Joints(q[0], q[1], q[2], q[3], q[4], q[5]),
+            BinaryPrimitives.ReadInt32BigEndian(p),
+            BinaryPrimitives.ReadInt32BigEndian(p[4..]),
+            BinaryPrimitives.ReadUInt32BigEndian(p[8..]),
+            BinaryPrimitives.ReadInt32BigEndian(p[12..]),
+            BinaryPrimitives.ReadInt32BigEndian(p[16..]));
+    }
+
+    private void OnSample(RtdeSample sample)
+    {
+        TaskCompletionSource<RtdeSample> waiting;
+        lock (_rtdeGate)
+        {
+            _latest = sample;
+            waiting = _nextSample;
+            _nextSample = new TaskCompletionSource<RtdeSample>(TaskCreationOptions.RunContinuationsAsynchronously);
+        }
+        waiting.TrySetResult(sample);
+        if (!_handshake.Task.IsCompletedSuccessfully || Volatile.Read(ref _failed) != 0)
+        {
+            return;
+        }
+        _listener?.OnMotion(new MotionSample(sample.Position, sample.Rotation, sample.Joints, null));
+        if (sample.IsSafetyStop && !_reportedStop)
+        {
+            _reportedStop = true;
+            _listener?.OnStopped(new RobotStoppedException(
+                $"The UR robot stopped: {sample.SafetyName}. Nothing more is sent; clear the cause, then call Resume (or unlock and play at the pendant).",
+                sample.SafetyName));
+        }
+        else if (_reportedStop && !sample.IsSafetyStop && sample.RuntimeState == RtdeSample.Playing)
+        {
+            _reportedStop = false;
+            _listener?.OnResumed();
+        }
+    }
+
+    /// <summary>Reads the RTDE connection. A broken RTDE link is logged; the driver link decides whether the connection lives.</summary>
+    private sealed class RtdeReceiver(UrDriver driver) : ILinkReceiver
+    {
+        private bool _stopped;
+
+        public void OnReceived(ReadOnlySpan<byte> data)
+        {
+            if (_stopped)
+            {
+                return;
+            }
+            driver._rtdeReader.Append(data);
+            try
+            {
+                while (!_stopped && driver._rtdeReader.TryRead(out byte type, out ReadOnlySpan<byte> payload))
+                {
+                    driver.OnRtdePackage(type, payload);
+                }
+            }
+            catch (Exception ex) when (ex is RobotConnectionException or ArgumentException)
+            {
+                Stop(ex.Message);
+            }
+        }
+
+        public void OnClosed(Exception? error) => Stop(error is null ? "the controller closed the RTDE connection" : error.Message);
+
+        private void Stop(string why)
+        {
+            if (_stopped || Volatile.Read(ref driver._failed) != 0)
+            {
+                return;
+            }
+            _stopped = true;
+            if (!driver._handshake.Task.IsCompleted)
+            {
+                driver._handshake.TrySetException(new RobotConnectionException("RTDE failed: " + why));
+                lock (driver._rtdeGate)
+                {
+                    driver._reply?.TrySetException(new RobotConnectionException("RTDE failed: " + why));
+                    driver._nextSample.TrySetException(new RobotConnectionException("RTDE failed: " + why));
+                }
+            }
+            else
+            {
+                driver._log.Warning($"Live state from the UR controller stopped: {why}. Stops are no longer detected.");
+            }
+        }
+    }
+}

@@ -1,0 +1,35 @@
+using System.Reflection;
+
+namespace Machina;
+
+/// <summary>Machina's URScript driver (drivers/ur/machina_ur_driver.script), embedded in the library, with the host's address filled in.</summary>
+internal static class UrDriverScript
+{
+    /// <summary>The file name of the driver program.</summary>
+    public const string FileName = "machina_ur_driver.script";
+
+    /// <summary>The version the script declares.</summary>
+    public const string Version = "2.0.0";
+
+    /// <summary>The script with <c>{{HOSTNAME}}</c> and <c>{{PORT}}</c> replaced: where it connects back to.</summary>
+    public static string For(string hostname, int port)
+    {
+        ArgumentException.ThrowIfNullOrWhiteSpace(hostname);
+        ArgumentOutOfRangeException.ThrowIfNegativeOrZero(port);
+        if (hostname.Contains('"', StringComparison.Ordinal) || hostname.Contains('\n', StringComparison.Ordinal))
+        {
+            throw new ArgumentException($"\"{hostname}\" is not a host name or address.", nameof(hostname));
+        }
+        return Template().Replace("{{HOSTNAME}}", hostname.Trim(), StringComparison.Ordinal)
+                         .Replace("{{PORT}}", port.ToString(Num.Inv), StringComparison.Ordinal);
+    }
+
+    private static string Template()
+    {
+        Assembly assembly = typeof(UrDriverScript).Assembly;
+        string name = assembly.GetManifestResourceNames().Single(n => n.EndsWith(FileName, StringComparison.Ordinal));
+        using Stream stream = assembly.GetManifestResourceStream(name)!;
+        using var reader = new StreamReader(stream);
+        return reader.ReadToEnd().Replace("\r\n", "\n", StringComparison.Ordinal);
+    }
+}

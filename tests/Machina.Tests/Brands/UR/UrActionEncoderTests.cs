@@ -1,0 +1,80 @@
+using System.Buffers.Binary;
+
+namespace Machina.Tests.Brands.UR;
+
+public class UrActionEncoderTests
+{
+    private readonly RobotCursor _cursor = new();
+    private int _nextId = 1;
+
+    /// <summary>Applies the action to the cursor with the next id and returns the integers it is sent as.</summary>
+    private int[] Wire(RobotAction action)
+    {
+        action.Id = _nextId++;
+        Assert.Null(_cursor.TryApply(action));
+        var values = new int[UrActionEncoder.MaxValues];
+        return values[..UrActionEncoder.Encode(action, _cursor, values)];
+    }
+
+    [Fact]
+    public void Encode_MotionActions_ExactIntegers()
+    {
+        // Tool down: quaternion (0, 0, 1, 0) is the rotation vector (0, π, 0) rad = (0, 31416, 0) in 1e-4 rad.
+        Assert.Equal([1, 1, 4000, 0, 5000, 0, 31416, 0], Wire(new ActionTransformation(new Vector(400, 0, 500), Rotation.FromQuaternion(0, 0, 1, 0), false, true)));
+        Assert.Equal([2, 1, 4505, 0, 5000, 0, 31416, 0], Wire(new ActionTranslation(new Vector(50.5, 0, 0), true)));
+        Wire(new ActionMotionMode(MotionType.Joint));
+        Assert.Equal([4, 2, 4505, 0, 4500, 0, 31416, 0], Wire(new ActionTranslation(new Vector(0, 0, -50), true)));
+        Assert.Equal([5, 3, 0, -15708, 0, 0, 15708, 0], Wire(new ActionAxes(new Joints(0, -90, 0, 0, 90, 0), false)));
+    }
+
+    [Fact]
+    public void Encode_Settings_ExactIntegers()
+    {
+        Assert.Equal([1, 15, 1000], Wire(new ActionSpeed(100, false)));
+        Assert.Equal([2, 16, 5000], Wire(new ActionAcceleration(500, false)));
+        Assert.Equal([3, 8, 20], Wire(new ActionPrecision(2, false)));
+        Assert.Equal([4, 9, 1500], Wire(new ActionWait(1500)));
+        Assert.Empty(Wire(new ActionMessage("Hello world!")));
+        Assert.Equal([6, 13, 15, 1, 0], Wire(new ActionIODigital("15", true, false)));
+        Assert.Equal([7, 13, 2, 0, 1], Wire(new ActionIODigital("2", false, true)));
+        Assert.Equal([8, 14, 1, 500_000], Wire(new ActionIOAnalog("1", 0.5, false)));
+    }
+
+    [Fact]
+    public void Encode_PushPop_OnlyChangedSettingsAndTheIdOnTheLast()
+    {
+        Wire(new ActionPushPop(true));
+        Wire(new ActionSpeed(50, false));
+        Wire(new ActionPrecision(3, false));
+        Assert.Equal([0, 15, 200, 4, 8, 50], Wire(new ActionPushPop(false)));
+        Wire(new ActionPushPop(true));
+        Assert.Empty(Wire(new ActionPushPop(false)));
+    }
+
+    [Fact]
+    public void Write_BigEndian()
+    {
+        var bytes = new byte[8];
+        Assert.Equal(8, UrWire.Write([1, int.MinValue], bytes));
+        Assert.Equal([0, 0, 0, 1, 0x80, 0, 0, 0], bytes);
+        Assert.Equal(-54, BinaryPrimitives.ReadInt32BigEndian(new byte[] { 0xFF, 0xFF, 0xFF, 0xCA }));
+    }
+
+    [Theory]
+    [InlineData(30003, 30004, 29999)]
+    [InlineData(30001, 30004, 29999)]
+    [InlineData(41000, 41001, 41002)]
+    public void Ports_FromTheScriptPort(int script, int rtde, int dashboard) =>
+        Assert.Equal(new UrPorts(script, rtde, dashboard), UrPorts.For(script));
+
+    [Fact]
+    public void DriverModules_HostAndPort_FilledInTheScript()
+    {
+        var bot = Robot.Create("U", "UR");
+        var files = bot.GetDeviceDriverModules(new Dictionary<string, string> { ["HOSTNAME"] = "192.168.0.5", ["PORT"] = "50123" });
+        string script = Assert.Single(files).Value;
+        Assert.Equal("machina_ur_driver.script", files.Keys.Single());
+        Assert.Contains("  HOSTNAME = \"192.168.0.5\"\n  PORT = 50123\n", script, StringComparison.Ordinal);
+        Assert.EndsWith("\nmachina_ur_driver()\n", script, StringComparison.Ordinal);
+    }
+}

@@ -1,0 +1,191 @@
+using System.Collections.Concurrent;
+using Machina.Simulation;
+using Machina.Tests.Support;
+using static Machina.Tests.Online.OnlineTestSupport;
+using static Machina.Tests.Online.UrOnlineTestSupport;
+
+namespace Machina.Tests.Online;
+
+/// <summary>What the host learns over RTDE and does with the dashboard: motion updates, stops and resumes, reconnects.</summary>
+public class UrStateTests
+{
+    [Fact]
+    public async Task MotionUpdates_ManualClock_ArriveAtTheConfiguredRate()
+    {
+        var clock = new ManualClock();
+        await using var controller = await StartUrAsync(new VirtualUrControllerOptions { InstantExecution = true, TimeProvider = clock });
+        int updates = 0;
+        Robot bot = await ConnectUrAsync(controller, b =>
+        {
+            b.MotionUpdateRate = 50;
+            b.MotionUpdate += (_, _) => Interlocked.Increment(ref updates);
+        });
+        var period = TimeSpan.FromMilliseconds(20);
+        Assert.Equal(0, Volatile.Read(ref updates)); // the package read while connecting is not an update
+
+        // One simulated second, one period at a time: each step is due exactly one package, and so one update.
+        for (int i = 1; i <= 50; i++)
+        {
+            await EventuallyAsync(() => clock.HasTimerDueIn(period), "RTDE to wait for its next package");
+            clock.Advance(period);
+            int expected = i;
+            await EventuallyAsync(() => Volatile.Read(ref updates) >= expected, "the update of this period");
+        }
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+        Assert.Equal(50, Volatile.Read(ref updates));
+        Assert.Equal(51, controller.RtdePackagesSent);
+        Assert.True(((Vector)bot.GetCurrentPosition()!.Value).IsSimilar(controller.State.Position, 1e-6));
+        await bot.DisconnectAsync();
+    }
+
+    [Fact]
+    public async Task ProtectiveStop_ReportedAtOnceNothingMoreSent_ResumeRunsEachActionOnce()
+    {
+        var clock = new ManualClock();
+        await using var controller = await StartUrAsync(new VirtualUrControllerOptions { TimeProvider = clock });
+        var stopped = new TaskCompletionSource<ControllerStoppedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var resumed = new TaskCompletionSource<ControllerStoppedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var executed = new ConcurrentQueue<int>();
+        Robot bot = await ConnectUrAsync(controller, b =>
+        {
+            b.ControllerStopped += (_, e) => stopped.TrySetResult(e);
+            b.ControllerResumed += (_, e) => resumed.TrySetResult(e);
+            b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+        });
+        Vector start = controller.State.Position;
+        for (int i = 0; i < 12; i++)
+        {
+            bot.Move(0, 0, -10); // 10 mm at the driver's 20 mm/s: 0.5 s each
+        }
+        await EventuallyAsync(() => clock.HasTimerDueIn(TimeSpan.FromSeconds(0.5)), "the first move to start");
+        clock.Advance(TimeSpan.FromSeconds(0.25));
+        Assert.True(controller.ProtectiveStop());
+
+        ControllerStoppedArgs stop = await stopped.Task.WaitAsync(Limit);
+        Assert.Contains("protective stop", stop.Reason!.Message, StringComparison.Ordinal);
+        Assert.True(controller.State.Position.IsSimilar(start + new Vector(0, 0, -5), 1e-6), controller.State.Position.ToString());
+        await Assert.ThrowsAsync<RobotStoppedException>(() => bot.WaitForCompletionAsync().WaitAsync(Limit));
+        int released = bot.GetReleasedState().LastAction!.Id;
+        bot.Move(0, 0, -10);
+        Assert.Equal(released, bot.GetReleasedState().LastAction!.Id); // nothing more is sent while stopped
+        clock.Advance(TimeSpan.FromSeconds(5));
+        Assert.Empty(executed);
+
+        await bot.ResumeAsync().WaitAsync(Limit);
+        await resumed.Task.WaitAsync(Limit);
+        Assert.Equal(["safetystatus", "close safety popup", "unlock protective stop", "play"], controller.DashboardCommands);
+        // Simulated time runs until everything is done (however slowly this machine schedules the controller), bounded in real time.
+        Task done = bot.WaitForCompletionAsync();
+        long begun = TimeProvider.System.GetTimestamp();
+        while (!done.IsCompleted && TimeProvider.System.GetElapsedTime(begun) < Limit)
+        {
+            clock.Advance(TimeSpan.FromSeconds(0.05));
+            await Task.Delay(1);
+        }
+        await done.WaitAsync(Limit);
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+
+        Assert.Equal(Enumerable.Range(1, 13), executed);
+        Assert.Equal(13, controller.RequestsExecuted);
+        Assert.True(controller.State.Position.IsSimilar(start + new Vector(0, 0, -130), 1e-6), controller.State.Position.ToString());
+        Assert.Empty(controller.Errors);
+        await bot.DisconnectAsync();
+    }
+
+    [Fact]
+    public async Task EmergencyStop_ResumeRefusedUntilTheButtonIsReleased()
+    {
+        await using var controller = await StartUrAsync();
+        var stopped = new TaskCompletionSource<ControllerStoppedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        Robot bot = await ConnectUrAsync(controller, b => b.ControllerStopped += (_, e) => stopped.TrySetResult(e));
+        Assert.True(controller.EmergencyStop());
+        Assert.Contains("robot emergency stop", (await stopped.Task.WaitAsync(Limit)).Reason!.Message, StringComparison.Ordinal);
+
+        var refused = await Assert.ThrowsAsync<RobotStoppedException>(() => bot.ResumeAsync().WaitAsync(Limit));
+        Assert.Contains("release the emergency stop button", refused.Message, StringComparison.Ordinal);
+        Assert.Equal(["safetystatus"], controller.DashboardCommands);
+
+        controller.ReleaseEmergencyStop();
+        await bot.ResumeAsync().WaitAsync(Limit);
+        bot.Move(0, 0, -10);
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        Assert.Equal(1, controller.RequestsExecuted);
+        await bot.DisconnectAsync();
+    }
+
+    [Fact]
+    public async Task Reconnect_ControllerRanTheRestWhileDisconnected_EachActionOnce()
+    {
+        await using var controller = await StartUrAsync();
+        var (bot, executed, lost) = await ConnectWatchedAsync(controller);
+        Vector start = controller.State.Position;
+        int released = await IssueTwentyWhilePausedAsync(bot, controller);
+        controller.CloseConnectionAfter(3);
+        controller.ResumeAnswering();
+        await lost.Task.WaitAsync(Limit);
+        await EventuallyAsync(() => controller.RequestsExecuted == released, "the program to run what it holds, acknowledgements lost");
+
+        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+
+        AssertEachOnce(controller, executed, start);
+    }
+
+    [Fact]
+    public async Task Reconnect_ControllerStillRunningWhatItHolds_WaitsForItThenSendsOnlyTheRest()
+    {
+        await using var controller = await StartUrAsync();
+        var (bot, executed, lost) = await ConnectWatchedAsync(controller);
+        Vector start = controller.State.Position;
+        int released = await IssueTwentyWhilePausedAsync(bot, controller);
+        controller.CloseConnectionAfter(3);
+        controller.ResumeAnswering(3);
+        await lost.Task.WaitAsync(Limit);
+        Assert.Equal(released - 3, controller.BufferedRequestCount);
+
+        Task reconnect = bot.ConnectAsync("127.0.0.1", controller.Port);
+        controller.ResumeAnswering();
+        await reconnect.WaitAsync(Limit);
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+
+        AssertEachOnce(controller, executed, start);
+    }
+
+    private static async Task<(Robot Bot, ConcurrentQueue<int> Executed, TaskCompletionSource Lost)> ConnectWatchedAsync(VirtualUrController controller)
+    {
+        var executed = new ConcurrentQueue<int>();
+        var lost = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        Robot bot = await ConnectUrAsync(controller, b =>
+        {
+            b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+            b.ConnectionLost += (_, _) => lost.TrySetResult();
+        });
+        return (bot, executed, lost);
+    }
+
+    /// <summary>Issues twenty moves of -10 mm in Z with the program paused; returns how many reached the controller.</summary>
+    private static async Task<int> IssueTwentyWhilePausedAsync(Robot bot, VirtualUrController controller)
+    {
+        controller.StopAnswering();
+        for (int i = 0; i < 20; i++)
+        {
+            bot.Move(0, 0, -10);
+        }
+        int released = bot.GetReleasedState().LastAction!.Id;
+        Assert.InRange(released, 4, 19);
+        await EventuallyAsync(() => controller.BufferedRequestCount == released, "the released block to reach the controller");
+        return released;
+    }
+
+    private static void AssertEachOnce(VirtualUrController controller, ConcurrentQueue<int> executed, Vector start)
+    {
+        Assert.Equal(Enumerable.Range(1, 20), executed);
+        Assert.Equal(20, controller.RequestsExecuted);
+        Assert.Equal(Enumerable.Range(1, 20), controller.ReceivedRequests.Select(r => int.Parse(r[..r.IndexOf(' ')], Num.Inv)));
+        Assert.True(controller.State.Position.IsSimilar(start + new Vector(0, 0, -200), 1e-6), controller.State.Position.ToString());
+        Assert.Equal(2, controller.ScriptsReceived);
+        Assert.Empty(controller.Errors);
+    }
+}

@@ -1,0 +1,135 @@
+using System.Buffers.Binary;
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+using Machina.Simulation;
+
+namespace Machina.Tests.Simulation;
+
+/// <summary>The virtual UR's script ports as a raw client sees them: which scripts it runs, and the int protocol it speaks.</summary>
+public class VirtualUrControllerTests
+{
+    private static readonly TimeSpan Timeout = TimeSpan.FromSeconds(15);
+
+    /// <summary>The shape of the original Machina.NET driver script: what the virtual UR must recognise (its body is irrelevant here).</summary>
+    private static string OriginalScript(int port) =>
+        "# A Universal Robot driver script\ndef machina_ur_driver():\n  MACHINA_DRIVER_VERSION = \"1.2.0\"\n  HOSTNAME = \"127.0.0.1\"\n"
+        + $"  PORT = {port}\n  socket_open(HOSTNAME, PORT)\nend\n\n\n# Kickstart the driver\nmachina_ur_driver()\n";
+
+    [Fact]
+    public async Task OriginalDriverScript_Recognised_ConnectsBackAndSpeaksTheOriginalProtocol()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var link = await HostAsync(controller, OriginalScript);
+        var stream = link.Driver.GetStream();
+
+        // No version response from the original driver: the full pose first, 14 ints.
+        int[] pose = await ReadIntsAsync(stream, 14);
+        Assert.Equal((-54, int.MinValue), (pose[0], pose[13]));
+        Assert.Equal(15708, pose[11]); // J5 = 90° in 1e-4 rad
+        // Original host bytes: speed 50 mm/s, then a move to (400, 0, 300) mm with the tool down (rotation vector [π, 0, 0]).
+        await WriteIntsAsync(stream, [1, 15, 500, 2, 1, 4000, 0, 3000, 31416, 0, 0]);
+        Assert.Equal(new int[] { 1, 2 }, await ReadIntsAsync(stream, 2));
+        Assert.Equal(50, controller.State.Speed);
+        Assert.True(controller.State.Position.IsSimilar(new Vector(400, 0, 300), 1e-9), controller.State.Position.ToString());
+        Assert.Contains("Started Machina driver (original 1.x)", controller.PendantMessages);
+        Assert.Empty(controller.Errors);
+    }
+
+    [Fact]
+    public async Task Script_NotAMachinaDriver_RefusedWithAClearLogLine()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var script = new TcpClient();
+        await script.ConnectAsync(IPAddress.Loopback, controller.Port);
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes("def hello():\n  textmsg(\"hi\")\nend\n"));
+        await WaitUntilAsync(() => controller.Errors.Count == 1);
+
+        Assert.Equal("refused a script that is not Machina's driver (no machina_ur_driver with its version, HOSTNAME and PORT); it begins \"def hello():\".", controller.Errors[0]);
+        Assert.False(controller.IsProgramRunning);
+        Assert.Equal(1, controller.ScriptsReceived);
+    }
+
+    [Theory]
+    [InlineData("  MACHINA_DRIVER_VERSION = [2, 0, 0]\n", "Ours")]
+    [InlineData("  MACHINA_DRIVER_VERSION = \"1.2.0\"\n", "Original")]
+    [InlineData("  MACHINA_DRIVER_VERSION = \"3.0.0\"\n", "None")]
+    [InlineData("", "None")]
+    public void Recognise_VersionLine_TellsTheDriver(string versionLine, string kind)
+    {
+        string script = "def machina_ur_driver():\n" + versionLine + "  HOSTNAME = \"10.0.0.5\"\n  PORT = 51234   # the host\nend\nmachina_ur_driver()\n";
+        var (k, host, port) = VirtualUrController.Recognise(script);
+        Assert.Equal(kind, k.ToString());
+        if (kind != "None")
+        {
+            Assert.Equal(("10.0.0.5", 51234), (host, port));
+        }
+    }
+
+    [Fact]
+    public async Task OurDriver_UnknownCode_RecordedAndProgramStops()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var link = await HostAsync(controller, port => UrDriverScript.For("127.0.0.1", port));
+        var stream = link.Driver.GetStream();
+        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await ReadIntsAsync(stream, 5));
+        await ReadIntsAsync(stream, 14);
+        await WriteIntsAsync(stream, [1, 8, 20, 2, 99]);
+        Assert.Equal(new int[] { 1 }, await ReadIntsAsync(stream, 1));
+        await WaitUntilAsync(() => !controller.IsProgramRunning);
+        Assert.Equal("unknown instruction code 99 (id 2): the driver cannot read on, its program stops.", Assert.Single(controller.Errors));
+        Assert.Equal(2, controller.State.Zone);
+    }
+
+    /// <summary>Plays the host: opens a server, sends the script made for its port, and takes the connection the driver opens back.</summary>
+    private static async Task<HostLink> HostAsync(VirtualUrController controller, Func<int, string> script)
+    {
+        var server = new TcpListener(IPAddress.Loopback, 0);
+        server.Start();
+        var scriptClient = new TcpClient();
+        await scriptClient.ConnectAsync(IPAddress.Loopback, controller.Port);
+        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(script(((IPEndPoint)server.LocalEndpoint).Port)));
+        var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
+        return new HostLink(server, scriptClient, driver);
+    }
+
+    private sealed record HostLink(TcpListener Server, TcpClient Script, TcpClient Driver) : IDisposable
+    {
+        public void Dispose()
+        {
+            Driver.Dispose();
+            Script.Dispose();
+            Server.Stop();
+        }
+    }
+
+    private static async Task WriteIntsAsync(NetworkStream stream, int[] values)
+    {
+        var bytes = new byte[values.Length * 4];
+        for (int i = 0; i < values.Length; i++)
+        {
+            BinaryPrimitives.WriteInt32BigEndian(bytes.AsSpan(i * 4), values[i]);
+        }
+        await stream.WriteAsync(bytes);
+    }
+
+    private static async Task<int[]> ReadIntsAsync(NetworkStream stream, int count)
+    {
+        var bytes = new byte[count * 4];
+        await stream.ReadExactlyAsync(bytes).AsTask().WaitAsync(Timeout);
+        return [.. Enumerable.Range(0, count).Select(i => BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(i * 4)))];
+    }
+
+    private static async Task WaitUntilAsync(Func<bool> condition)
+    {
+        long start = TimeProvider.System.GetTimestamp();
+        while (!condition())
+        {
+            Assert.True(TimeProvider.System.GetElapsedTime(start) < Timeout, "timed out");
+            await Task.Delay(5);
+        }
+    }
+}
