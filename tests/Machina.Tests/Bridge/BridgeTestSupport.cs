@@ -189,7 +189,8 @@ internal sealed class TestClient : IAsyncDisposable
         using var timeout = new CancellationTokenSource(BridgeTestSupport.Limit);
         if (_socket.State == WebSocketState.Open)
         {
-            await _socket.CloseAsync(WebSocketCloseStatus.NormalClosure, "bye", timeout.Token);
+            // Only the pump receives: it reads the bridge's answering close frame.
+            await _socket.CloseOutputAsync(WebSocketCloseStatus.NormalClosure, "bye", timeout.Token);
         }
         await _pump.WaitAsync(BridgeTestSupport.Limit);
     }
@@ -209,9 +210,8 @@ internal static class Json
 
     internal static int Id(this JsonElement e) => e.GetProperty("id").GetInt32();
 
-    /// <summary>A numeric array field, or null when the field is JSON null.</summary>
-    internal static double[]? Numbers(this JsonElement e, string name) =>
-        e.GetProperty(name).ValueKind == JsonValueKind.Null ? null : [.. e.GetProperty(name).EnumerateArray().Select(v => v.GetDouble())];
+    /// <summary>A field's JSON text exactly as sent, e.g. <c>[400,300,500]</c> or <c>null</c>.</summary>
+    internal static string Raw(this JsonElement e, string name) => e.GetProperty(name).GetRawText();
 
     internal static string[] Keys(this JsonElement e) => [.. e.EnumerateObject().Select(p => p.Name)];
 }
