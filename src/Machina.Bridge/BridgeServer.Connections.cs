@@ -226,7 +226,7 @@ public sealed partial class BridgeServer
     {
         try
         {
-            await sending.WaitAsync(TimeSpan.FromSeconds(5), _options.TimeProvider).ConfigureAwait(false);
+            await sending.WaitAsync(CloseTimeout, _options.TimeProvider).ConfigureAwait(false);
         }
         catch (TimeoutException)
         {

@@ -39,6 +39,9 @@ public sealed partial class BridgeServer : IAsyncDisposable
         _page = BridgePage.Render(_options.Path);
     }
 
+    /// <summary>How long a client may take to answer the close frame when the bridge stops or the client leaves (tests shorten it).</summary>
+    internal TimeSpan CloseTimeout { get; set; } = TimeSpan.FromSeconds(5);
+
     /// <summary>The settings this bridge was made with.</summary>
     public BridgeOptions Options => _options;
 
@@ -149,6 +152,10 @@ public sealed partial class BridgeServer : IAsyncDisposable
         }
         await _stopping.CancelAsync().ConfigureAwait(false);
         _listener?.Stop();
+        if (_acceptLoop is not null)
+        {
+            await _acceptLoop.ConfigureAwait(false);
+        }
         BridgeClient[] clients;
         Task[] connections;
         lock (_gate)
@@ -160,11 +167,19 @@ public sealed partial class BridgeServer : IAsyncDisposable
         {
             client.Close(System.Net.WebSockets.WebSocketCloseStatus.EndpointUnavailable, "The bridge is stopping.");
         }
-        if (_acceptLoop is not null)
+        try
         {
-            await _acceptLoop.ConfigureAwait(false);
+            await Task.WhenAll(connections).WaitAsync(CloseTimeout, _options.TimeProvider).ConfigureAwait(false);
         }
-        await Task.WhenAll(connections).ConfigureAwait(false);
+        catch (TimeoutException)
+        {
+            // A client that does not answer the close frame is dropped.
+            foreach (BridgeClient client in clients)
+            {
+                client.Abort();
+            }
+            await Task.WhenAll(connections).ConfigureAwait(false);
+        }
         Unsubscribe();
         if (_reconnecting is { } reconnecting)
         {

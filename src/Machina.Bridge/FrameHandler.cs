@@ -33,8 +33,7 @@ internal sealed class FrameHandler(Robot robot, Func<bool> isConnected)
         }
         try
         {
-            // Reads only up to the first instruction: cheap, and an empty message is told apart from a malformed one.
-            if (!Instructions.Enumerate(text).Any())
+            if (HoldsNoInstruction(text))
             {
                 return Rejected(BridgeEvents.Error(BridgeEvents.Kinds.Empty, "The message holds no instruction; send text such as MoveTo(400,300,500);"));
             }
@@ -52,4 +51,31 @@ internal sealed class FrameHandler(Robot robot, Func<bool> isConnected)
     }
 
     private static FrameResult Rejected(string reply) => new(FrameOutcome.Rejected, reply);
+
+    /// <summary>
+    /// True when the text holds only what the instruction reader skips between statements: white space, ';', a byte order
+    /// mark and <c>//</c> comments. Anything else is an instruction or an error, so an empty message is told apart without
+    /// reading the text twice.
+    /// </summary>
+    internal static bool HoldsNoInstruction(string text)
+    {
+        for (int i = 0; i < text.Length; i++)
+        {
+            char c = text[i];
+            if (c == '/' && i + 1 < text.Length && text[i + 1] == '/')
+            {
+                int end = text.IndexOf('\n', i);
+                if (end < 0)
+                {
+                    return true;
+                }
+                i = end;
+            }
+            else if (!char.IsWhiteSpace(c) && c != ';' && c != '\uFEFF')
+            {
+                return false;
+            }
+        }
+        return true;
+    }
 }

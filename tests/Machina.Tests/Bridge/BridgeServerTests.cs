@@ -295,6 +295,23 @@ public class BridgeServerTests
     }
 
     [Fact]
+    public async Task StopAsync_ClientNeverAnswersTheCloseFrame_DroppedAfterTheCloseTimeout()
+    {
+        BridgeServer bridge = await StartAsync();
+        bridge.CloseTimeout = TimeSpan.FromMilliseconds(200);
+        using var tcp = new TcpClient();
+        await tcp.ConnectAsync(IPAddress.Loopback, bridge.Port);
+        await tcp.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
+            "GET /Bridge HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Version: 13\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n\r\n"));
+        await EventuallyAsync(() => bridge.ClientCount == 1, "the silent client to be registered");
+
+        await bridge.StopAsync().WaitAsync(Limit); // the client reads nothing and never closes: the bridge drops it
+
+        Assert.Equal(0, bridge.ClientCount);
+        Assert.False(bridge.Robot.IsConnected);
+    }
+
+    [Fact]
     public async Task StartAsync_BrandWithoutVirtualController_ThrowsAndReleasesThePort()
     {
         var bridge = new BridgeServer(Options(o => o with { RobotFactory = null, Brand = RobotType.UR }));
