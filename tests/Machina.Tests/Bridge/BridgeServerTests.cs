@@ -200,6 +200,30 @@ public class BridgeServerTests
     }
 
     [Fact]
+    public async Task InvalidUtf8Text_ConnectionClosedAsInvalidPayload_OthersServed()
+    {
+        await using BridgeServer bridge = await StartAsync();
+        await using TestClient bad = await TestClient.ConnectAsync(bridge, "?name=Bad");
+        await bad.SendAsync([0x4D, 0xC3, 0x28], WebSocketMessageType.Text); // "M" then a broken two-byte sequence
+        Assert.Null(await bad.ReceiveTextAsync());
+        Assert.Equal(WebSocketCloseStatus.InvalidPayloadData, bad.CloseStatus);
+        await using TestClient good = await TestClient.ConnectAsync(bridge);
+        await good.SendAsync("SpeedTo(10);");
+        Assert.Equal("action-issued", (await good.ReceiveAsync()).Event());
+    }
+
+    [Fact]
+    public async Task GrasshopperInstructionsTheOriginalRefused_CustomCodeAndArmAngleTo_Issued()
+    {
+        await using BridgeServer bridge = await StartAsync();
+        await using TestClient gh = await TestClient.ConnectAsync(bridge);
+        await gh.SendAsync("CustomCode(\"VAR num n := 1;\",True);");
+        Assert.Equal("CustomCode(\"VAR num n := 1;\",True);", (await gh.ReceiveAsync()).GetProperty("last").GetString());
+        await gh.SendAsync("ArmAngleTo(30);");
+        Assert.Equal("ArmAngleTo(30);", (await gh.ReceiveUntilAsync(e => e.Event() == "action-issued" && e.Id() == 2))[^1].GetProperty("last").GetString());
+    }
+
+    [Fact]
     public async Task ClientLeaves_OthersGetClientDisconnectedWithItsName()
     {
         await using BridgeServer bridge = await StartAsync();
