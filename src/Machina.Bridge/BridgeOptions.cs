@@ -45,14 +45,17 @@ public sealed record BridgeOptions
     /// </summary>
     public IReadOnlyList<string> AllowedOrigins { get; init; } = [];
 
-    /// <summary>Largest message a client may send, in bytes (default 4 MiB, about 100 000 instructions). Larger ones are refused with an error event.</summary>
-    public int MaxMessageBytes { get; init; } = 4 * 1024 * 1024;
+    /// <summary>Largest message a client may send, in bytes (default 1 MiB: tens of thousands of instructions). Larger ones are refused with an error event.</summary>
+    public int MaxMessageBytes { get; init; } = 1024 * 1024;
 
     /// <summary>How many connections may be open at once (default 64); more are answered with HTTP 503.</summary>
     public int MaxConnections { get; init; } = 64;
 
-    /// <summary>How many events may wait for a slow client (default 100 000); a client that falls further behind is disconnected.</summary>
-    public int MaxQueuedEvents { get; init; } = 100_000;
+    /// <summary>
+    /// How many events may wait for a slow client (default 250 000, enough for the <c>action-issued</c> of a largest message);
+    /// a client that falls further behind is disconnected, so that it cannot hold up the robot or the others.
+    /// </summary>
+    public int MaxQueuedEvents { get; init; } = 250_000;
 
     /// <summary>How long a new connection may take to send its HTTP request (default 10 s).</summary>
     public TimeSpan RequestTimeout { get; init; } = TimeSpan.FromSeconds(10);

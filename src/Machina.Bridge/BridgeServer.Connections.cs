@@ -157,7 +157,12 @@ public sealed partial class BridgeServer
             return null;
         }
         await WriteAsync(stream, HttpConnection.SwitchingProtocols(key!), stop).ConfigureAwait(false);
-        return WebSocket.CreateFromStream(stream, new WebSocketCreationOptions { IsServer = true, KeepAliveInterval = TimeSpan.FromSeconds(30) });
+        return WebSocket.CreateFromStream(stream, new WebSocketCreationOptions
+        {
+            IsServer = true,
+            KeepAliveInterval = TimeSpan.FromSeconds(30),
+            KeepAliveTimeout = TimeSpan.FromSeconds(60), // a client that stops answering pings is dropped instead of holding a connection forever
+        });
     }
 
     /// <summary>

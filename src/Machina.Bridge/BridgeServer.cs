@@ -188,7 +188,15 @@ public sealed partial class BridgeServer : IAsyncDisposable
         await Robot.DisconnectAsync().ConfigureAwait(false);
         if (_embedded is not null)
         {
-            await _embedded.Owner.DisposeAsync().ConfigureAwait(false);
+            try
+            {
+                await _embedded.Owner.DisposeAsync().ConfigureAwait(false);
+            }
+            catch (Exception e)
+            {
+                // Stopping always completes; a virtual controller that failed earlier reports its failure here (logged).
+                Robot.Logger.Error($"Bridge: the virtual controller had failed: {e.GetType().Name}: {e.Message}");
+            }
         }
         _stopping.Dispose();
     }

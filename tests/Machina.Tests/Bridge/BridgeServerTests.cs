@@ -336,6 +336,20 @@ public class BridgeServerTests
     }
 
     [Fact]
+    public async Task StopAsync_AfterAMoveTooLongForTheVirtualController_CompletesAndLogs()
+    {
+        BridgeServer bridge = await StartAsync();
+        var errors = new System.Collections.Concurrent.ConcurrentQueue<string>();
+        bridge.Robot.Logger.Logged += (_, e) => { if (e.Level == LogLevel.ERROR) { errors.Enqueue(e.Message); } };
+        await using TestClient client = await TestClient.ConnectAsync(bridge);
+        await client.SendAsync("MoveTo(1e300,0,0);"); // the virtual controller cannot time such a motion (it overflows a TimeSpan)
+        await client.ReceiveUntilAsync(e => e.Event() == "action-released");
+        await bridge.StopAsync().WaitAsync(Limit); // never throws, whatever state the virtual controller is in
+        Assert.False(bridge.Robot.IsConnected);
+        Assert.All(errors, m => Assert.StartsWith("Bridge: the virtual controller had failed: OverflowException", m, StringComparison.Ordinal));
+    }
+
+    [Fact]
     public async Task StartAsync_BrandWithoutVirtualController_ThrowsAndReleasesThePort()
     {
         var bridge = new BridgeServer(Options(o => o with { RobotFactory = null, Brand = RobotType.UR }));
