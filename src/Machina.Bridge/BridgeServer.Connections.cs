@@ -123,8 +123,9 @@ public sealed partial class BridgeServer
         }
         if (isPage && !isSocketPath)
         {
-            byte[] response = HttpConnection.Response(200, "OK", "text/html; charset=utf-8", request.Method == "HEAD" ? [] : _page,
-                "Content-Security-Policy: default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; connect-src 'self' ws: wss:; img-src data:\r\n");
+            byte[] response = HttpConnection.Response(200, "OK", "text/html; charset=utf-8", _page,
+                "Content-Security-Policy: default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; connect-src 'self' ws: wss:; img-src data:\r\n",
+                headOnly: request.Method == "HEAD");
             await WriteAsync(stream, response, stop).ConfigureAwait(false);
             return null;
         }

@@ -64,14 +64,17 @@ internal static class HttpConnection
     internal static byte[] SwitchingProtocols(string clientKey) => Encoding.ASCII.GetBytes(
         "HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Accept: " + AcceptKey(clientKey) + "\r\n\r\n");
 
-    /// <summary>A complete response that closes the connection.</summary>
-    internal static byte[] Response(int status, string reason, string contentType, ReadOnlySpan<byte> body, string extraHeaders = "")
+    /// <summary>A complete response that closes the connection; with <paramref name="headOnly"/> (a HEAD request) the body is left out but still counted.</summary>
+    internal static byte[] Response(int status, string reason, string contentType, ReadOnlySpan<byte> body, string extraHeaders = "", bool headOnly = false)
     {
         string head = $"HTTP/1.1 {status} {reason}\r\nContent-Type: {contentType}\r\nContent-Length: {body.Length}\r\n" +
             "Cache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n" + extraHeaders + "\r\n";
-        byte[] bytes = new byte[Encoding.ASCII.GetByteCount(head) + body.Length];
+        byte[] bytes = new byte[Encoding.ASCII.GetByteCount(head) + (headOnly ? 0 : body.Length)];
         int at = Encoding.ASCII.GetBytes(head, bytes);
-        body.CopyTo(bytes.AsSpan(at));
+        if (!headOnly)
+        {
+            body.CopyTo(bytes.AsSpan(at));
+        }
         return bytes;
     }
 

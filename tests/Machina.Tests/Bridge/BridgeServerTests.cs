@@ -273,6 +273,11 @@ public class BridgeServerTests
         Assert.Contains("const BRIDGE_PATH = \"/Bridge\";", page, StringComparison.Ordinal);
         Assert.DoesNotContain("__BRIDGE_PATH__", page, StringComparison.Ordinal);
 
+        string head = await RawRequestAsync(bridge, "HEAD / HTTP/1.1\r\nHost: x\r\n\r\n");
+        int length = int.Parse(page[(page.IndexOf("Content-Length: ", StringComparison.Ordinal) + 16)..page.IndexOf("\r\nCache", StringComparison.Ordinal)], System.Globalization.CultureInfo.InvariantCulture);
+        Assert.Equal(page.Length - page.IndexOf("\r\n\r\n", StringComparison.Ordinal) - 4, length);
+        Assert.Contains($"Content-Length: {length}\r\n", head, StringComparison.Ordinal);
+        Assert.EndsWith("\r\n\r\n", head, StringComparison.Ordinal); // no body
         Assert.StartsWith("HTTP/1.1 404 ", await RawRequestAsync(bridge, "GET /favicon.ico HTTP/1.1\r\nHost: x\r\n\r\n"), StringComparison.Ordinal);
         Assert.StartsWith("HTTP/1.1 405 ", await RawRequestAsync(bridge, "POST / HTTP/1.1\r\nHost: x\r\nContent-Length: 0\r\n\r\n"), StringComparison.Ordinal);
         Assert.StartsWith("HTTP/1.1 426 ", await RawRequestAsync(bridge, "GET /Bridge HTTP/1.1\r\nHost: x\r\n\r\n"), StringComparison.Ordinal);
