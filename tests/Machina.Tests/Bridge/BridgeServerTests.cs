@@ -108,6 +108,33 @@ public class BridgeServerTests
     }
 
     [Fact]
+    public async Task MotionUpdate_WhileMoving_OriginalFieldsAndOnlyWhenThePoseChanged()
+    {
+        await using BridgeServer bridge = await StartAsync();
+        await using TestClient client = await TestClient.ConnectAsync(bridge);
+        await client.SendAsync("MoveTo(400,300,500);");
+        var updates = new List<string>();
+        while (updates.Count == 0 || !updates[^1].Contains("\"pos\":[400,300,500]", StringComparison.Ordinal))
+        {
+            string text = await client.ReceiveTextAsync() ?? throw new InvalidOperationException("closed");
+            if (text.Contains("\"motion-update\"", StringComparison.Ordinal))
+            {
+                updates.Add(text);
+            }
+        }
+        JsonElement last = JsonDocument.Parse(updates[^1]).RootElement;
+        Assert.Equal(["event", "pos", "ori", "quat", "axes", "extax", "conf"], last.Keys());
+        Assert.Equal("[-1,0,0,0,1,0]", last.Raw("ori"));
+        Assert.Equal("[0,0,1,0]", last.Raw("quat"));
+        Assert.Equal(JsonValueKind.Array, last.GetProperty("axes").ValueKind);
+        Assert.Equal("null", last.Raw("conf"));
+        for (int i = 1; i < updates.Count; i++)
+        {
+            Assert.NotEqual(updates[i - 1], updates[i]); // a report that changed nothing is not sent again
+        }
+    }
+
+    [Fact]
     public async Task Python_NewConnectionPerStatement_EveryStatementGetsOneAnswer()
     {
         await using BridgeServer bridge = await StartAsync();
