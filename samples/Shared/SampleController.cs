@@ -1,4 +1,5 @@
 // Shared by the online samples (linked into each project): which robot, and where it is, from the command line.
+using Machina;
 using Machina.Simulation;
 
 /// <summary>
@@ -72,9 +73,10 @@ internal sealed class SampleController : IAsyncDisposable
             Console.WriteLine($"Started a virtual KUKA controller (KR 6 R900 sixx) on 127.0.0.1:{kuka.Port} ({speedFactor}x faster than real time).");
             return new SampleController(brand, "127.0.0.1", kuka.Port, kuka);
         }
-        var abb = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor });
+        // An IRB 1200-5/0.9 (the virtual ABB's default, an IRB 120, cannot reach the paper's Hello Robot targets).
+        var abb = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor, Model = RobotModels.Get("IRB 1200-5/0.9") });
         await abb.StartAsync();
-        Console.WriteLine($"Started a virtual IRB 120 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
+        Console.WriteLine($"Started a virtual ABB IRB 1200-5/0.9 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
         return new SampleController(brand, "127.0.0.1", abb.Port, abb);
     }
 

@@ -1,0 +1,69 @@
+namespace Machina.Bridge;
+
+public sealed partial class BridgeServer
+{
+    private void Subscribe()
+    {
+        Robot.ActionIssued += OnRobotEvent;
+        Robot.ActionReleased += OnRobotEvent;
+        Robot.ActionExecuted += OnRobotEvent;
+        Robot.MotionUpdate += OnMotionUpdate;
+        Robot.ConnectionLost += OnConnectionLost;
+    }
+
+    private void Unsubscribe()
+    {
+        Robot.ActionIssued -= OnRobotEvent;
+        Robot.ActionReleased -= OnRobotEvent;
+        Robot.ActionExecuted -= OnRobotEvent;
+        Robot.MotionUpdate -= OnMotionUpdate;
+        Robot.ConnectionLost -= OnConnectionLost;
+    }
+
+    /// <summary>Action events go to every client as the library writes them (one line of JSON in the original's shape).</summary>
+    private void OnRobotEvent(object? sender, MachinaEventArgs e) => Broadcast(e.ToJsonString());
+
+    /// <summary>
+    /// Motion updates go to every client only when the reported state changed: a controller reports many times a second even
+    /// at rest, and the original sent each of them. Online events are raised one at a time, so no lock is needed here.
+    /// </summary>
+    private void OnMotionUpdate(object? sender, MotionUpdateArgs e)
+    {
+        string json = e.ToJsonString();
+        if (json != _lastMotion)
+        {
+            _lastMotion = json;
+            Broadcast(json);
+        }
+    }
+
+    private void OnConnectionLost(object? sender, ConnectionLostArgs e) =>
+        Robot.Logger.Warning("Bridge: the connection to the controller was lost; the next message from a client makes the bridge try to reconnect.");
+
+    /// <summary>Tries once, in the background, to connect the robot again (a message arrived while it was disconnected).</summary>
+    private void StartReconnecting()
+    {
+        lock (_gate)
+        {
+            if (_state != 1 || _reconnecting is { IsCompleted: false })
+            {
+                return;
+            }
+            _reconnecting = Task.Run(ReconnectAsync, CancellationToken.None);
+        }
+    }
+
+    private async Task ReconnectAsync()
+    {
+        (string host, int port) = _embedded is { } embedded ? ("127.0.0.1", embedded.Port) : (_options.ControllerHost!, _options.ControllerPort);
+        try
+        {
+            await Robot.ConnectAsync(host, port, _stopping!.Token).ConfigureAwait(false);
+            Robot.Logger.Info($"Bridge: reconnected to the controller at {host}:{port}.");
+        }
+        catch (Exception e) when (e is MachinaException or OperationCanceledException or InvalidOperationException or ObjectDisposedException)
+        {
+            Robot.Logger.Warning($"Bridge: could not reconnect to the controller at {host}:{port}: {e.Message}");
+        }
+    }
+}
