@@ -1,28 +1,90 @@
+using System.Net;
+using Machina.Bridge;
+
 namespace Machina.Cli.Commands;
 
 /// <summary>
-/// <c>machina bridge</c>: the Machina Bridge (a web page and WebSocket server between apps and a robot). It lives in the
-/// Machina.Bridge library, which is not part of this build yet: <see cref="RunAsync"/> is the one place to wire its BridgeServer.
+/// <c>machina bridge</c>: the Machina Bridge, a web page and WebSocket server between apps (Grasshopper, Dynamo, Processing,
+/// Python, a browser) and one robot, real or virtual. The server itself is <see cref="BridgeServer"/> in Machina.Bridge.
 /// </summary>
 internal static class BridgeCommand
 {
     internal static readonly CliCommand Command = new(
         "bridge",
-        "Run the Machina Bridge (not in this build)",
-        """
-        Usage: machina bridge
+        "Run the Machina Bridge: apps and a web page drive a robot over WebSockets",
+        $"""
+        Usage: machina bridge [--listen ADDRESS:PORT] [--brand abb|ur|kuka] (--sim | --host H --port P) [--speed-factor F]
 
-        The Machina Bridge connects apps (Grasshopper, Dynamo, a web page) to a robot over WebSockets. It is not in this
-        build of the machina tool yet.
+        Starts the Machina Bridge until Ctrl+C: the original Machina clients (Grasshopper, Dynamo, Processing, Python,
+        JavaScript) connect to ws://ADDRESS:PORT{BridgeOptions.DefaultPath} unchanged, and a browser at http://ADDRESS:PORT/
+        shows a page to type instructions and watch the tool path. Every message sent to the bridge is issued on one robot,
+        online: a virtual controller on this computer (--sim, the default) or a real one (--host and --port).
+
+        Options:
+          --listen ADDRESS:PORT  where the bridge listens (default 127.0.0.1:{BridgeOptions.DefaultPort}, this computer only)
+          --brand B              abb (default), ur or kuka
+          --sim                  drive a virtual controller started on this computer (the default)
+          --host H --port P      drive a real controller running Machina's driver
+          --speed-factor F       with --sim: how much faster than real time the virtual robot moves (default 1)
+
+        Example:
+          machina bridge --sim
+          (then open http://127.0.0.1:{BridgeOptions.DefaultPort}/ in a browser)
         """,
-        Options: [],
-        Flags: [],
+        Options: ["--listen", "--brand", "--host", "--port", "--speed-factor"],
+        Flags: ["--sim"],
         RunAsync);
 
-    private static Task<int> RunAsync(CliArgs args, CliContext context)
+    private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
-        // Wire Machina.Bridge's BridgeServer here: read the listen endpoint, the brand and --sim or --host/--port from args,
-        // StartAsync it, wait for context.Cancellation, then StopAsync.
-        throw new CliException("machina bridge is not in this build yet: the Machina Bridge is being built separately.");
+        string listenText = args.Value("--listen") ?? $"127.0.0.1:{BridgeOptions.DefaultPort}";
+        if (!IPEndPoint.TryParse(listenText, out IPEndPoint? listen))
+        {
+            throw new UsageException($"--listen needs an address and a port such as 127.0.0.1:{BridgeOptions.DefaultPort}, not \"{listenText}\".");
+        }
+        RobotType brand = args.Value("--brand") is string b
+            ? Brands.Parse(b, [RobotType.ABB, RobotType.UR, RobotType.KUKA], "bridge")
+            : RobotType.ABB;
+        string? host = args.Value("--host");
+        if (host is not null && args.Has("--sim"))
+        {
+            throw new UsageException("Choose --sim or --host, not both.");
+        }
+        int port = host is null ? 0 : args.Port("--port", brand == RobotType.UR ? 30003 : 7000);
+        var options = new BridgeOptions
+        {
+            Listen = listen,
+            Brand = brand,
+            ControllerHost = host,
+            ControllerPort = host is null ? new BridgeOptions().ControllerPort : port,
+            SimulationSpeed = args.Positive("--speed-factor", 1),
+        };
+        await using var bridge = new BridgeServer(options);
+        bridge.Robot.Logger.Writer = context.Stderr;
+        try
+        {
+            await bridge.StartAsync(context.Cancellation).ConfigureAwait(false);
+        }
+        catch (System.Net.Sockets.SocketException ex)
+        {
+            throw new CliException($"The bridge cannot listen on {listen}: {ex.Message}");
+        }
+        catch (MachinaException ex)
+        {
+            throw new CliException($"The bridge cannot reach the {brand} controller: {ex.Message}");
+        }
+        await context.Stdout.WriteLineAsync($"Machina Bridge for a {(host is null ? "virtual" : "real")} {brand} robot: apps connect to {bridge.WebSocketUri}, "
+            + $"the page is at {bridge.PageUri}. Press Ctrl+C to stop.").ConfigureAwait(false);
+        context.Ready?.Invoke(bridge.WebSocketUri!.ToString());
+        try
+        {
+            await Task.Delay(Timeout.Infinite, context.Cancellation).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException)
+        {
+        }
+        await bridge.StopAsync().ConfigureAwait(false);
+        await context.Stdout.WriteLineAsync("Bridge stopped.").ConfigureAwait(false);
+        return ExitCodes.Ok;
     }
 }

@@ -42,7 +42,7 @@ internal sealed class RunningController(RobotType brand, int port, int[] ports, 
 internal static class VirtualControllers
 {
     /// <summary>The brands that have a virtual controller in this build.</summary>
-    internal static readonly RobotType[] Available = [RobotType.ABB, RobotType.KUKA];
+    internal static readonly RobotType[] Available = [RobotType.ABB, RobotType.UR, RobotType.KUKA];
 
     /// <summary>Starts a virtual controller of <paramref name="brand"/> on 127.0.0.1 (an OS-chosen port).</summary>
     /// <exception cref="CliException">This build has no virtual controller for the brand.</exception>
@@ -50,7 +50,7 @@ internal static class VirtualControllers
     {
         RobotType.ABB => await StartAbbAsync(options, cancellationToken).ConfigureAwait(false),
         RobotType.KUKA => await StartKukaAsync(options, cancellationToken).ConfigureAwait(false),
-        RobotType.UR => throw NotInThisBuild(brand),
+        RobotType.UR => await StartUrAsync(options, cancellationToken).ConfigureAwait(false),
         _ => throw new UsageException($"{brand} devices have no virtual controller: only robot arms (abb, ur, kuka) are controlled online."),
     };
 
@@ -70,6 +70,19 @@ internal static class VirtualControllers
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
         return new RunningController(RobotType.ABB, controller.Port, [0, 1], ["driver", "monitor"], ';', controller.DisposeAsync,
             () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} malformed");
+    }
+
+    private static async Task<RunningController> StartUrAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
+    {
+        var settings = new VirtualUrControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
+        if (options.Model is RobotModel model)
+        {
+            settings = settings with { Model = model };
+        }
+        var controller = new VirtualUrController(settings);
+        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
+        return new RunningController(RobotType.UR, controller.Port, [0, 1, 2], ["script", "RTDE", "dashboard"], '\n', controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} instructions received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
     }
 
     private static async Task<RunningController> StartKukaAsync(VirtualControllerOptions options, CancellationToken cancellationToken)

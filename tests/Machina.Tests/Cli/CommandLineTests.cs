@@ -140,19 +140,36 @@ public class CommandLineTests
         Assert.Equal(expected.Keys.Order().Select(k => Path.Combine("driver", k)), result.Lines);
         Assert.All(expected, f => Assert.Equal(f.Value, File.ReadAllText(cli.PathOf(Path.Combine("driver", f.Key)))));
         Assert.Contains("192.168.125.1", File.ReadAllText(cli.PathOf("driver/machina_abb_driver.mod")), StringComparison.Ordinal);
-        Assert.Equal(1, ur.Exit);
-        Assert.Contains("The UR driver is not available in this build yet", ur.Stderr, StringComparison.Ordinal);
+        Assert.Equal(0, ur.Exit);
+        IReadOnlyDictionary<string, string> expectedUr = Robot.Create("X", "UR").GetDeviceDriverModules(
+            new Dictionary<string, string> { ["HOSTNAME"] = "192.168.0.9", ["PORT"] = "30002" });
+        Assert.All(expectedUr, f => Assert.Equal(f.Value, File.ReadAllText(cli.PathOf(Path.Combine("driver-ur", f.Key)))));
     }
 
     [Fact]
-    public async Task Bridge_IsAClearStub()
+    public async Task Bridge_Sim_ServesUntilCancelledAndAClientGetsEvents()
     {
         using var cli = new CliRunner();
+        using var stop = new CancellationTokenSource();
+        var ready = new TaskCompletionSource<string>(TaskCreationOptions.RunContinuationsAsynchronously);
 
-        CliResult result = await cli.RunAsync("bridge");
+        Task<CliResult> running = cli.RunAsync(["bridge", "--listen", "127.0.0.1:0", "--sim", "--speed-factor", "1000"], "", stop.Token, ready: ready.SetResult);
+        string url = await ready.Task.WaitAsync(TimeSpan.FromMinutes(1));
+        using (var client = new System.Net.WebSockets.ClientWebSocket())
+        {
+            await client.ConnectAsync(new Uri(url), CancellationToken.None).WaitAsync(TimeSpan.FromMinutes(1));
+            await client.SendAsync("MoveTo(400, 0, 500);"u8.ToArray(), System.Net.WebSockets.WebSocketMessageType.Text, true, CancellationToken.None);
+            var buffer = new byte[4096];
+            System.Net.WebSockets.WebSocketReceiveResult first = await client.ReceiveAsync(buffer, CancellationToken.None).WaitAsync(TimeSpan.FromMinutes(1));
+            Assert.StartsWith("{\"event\":\"action-issued\"", System.Text.Encoding.UTF8.GetString(buffer, 0, first.Count), StringComparison.Ordinal);
+        }
+        stop.Cancel();
+        CliResult result = await running;
 
-        Assert.Equal(1, result.Exit);
-        Assert.Equal("machina: error: machina bridge is not in this build yet: the Machina Bridge is being built separately.\n", result.Stderr);
+        Assert.Equal(0, result.Exit);
+        Assert.StartsWith("ws://127.0.0.1:", url, StringComparison.Ordinal);
+        Assert.Contains($"Machina Bridge for a virtual ABB robot: apps connect to {url}", result.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("Bridge stopped.\n", result.Stdout, StringComparison.Ordinal);
     }
 
     [Fact]

@@ -47,25 +47,6 @@ public class OnlineCommandTests
         Assert.DoesNotContain("%", result.Stdout, StringComparison.Ordinal);
     }
 
-    [Theory]
-    [InlineData("ur")]
-    [InlineData("kuka")]
-    public async Task Run_BrandWithoutOnlineControlYet_SaysSoAndFails(string brand)
-    {
-        using var cli = new CliRunner();
-        cli.Write("p.machina", Program);
-
-        CliResult sim = await cli.RunAsync("run", "p.machina", "--brand", brand, "--sim");
-        CliResult host = await cli.RunAsync("run", "p.machina", "--brand", brand, "--host", "127.0.0.1", "--port", "1");
-        CliResult standalone = await cli.RunAsync("sim", brand);
-
-        foreach (CliResult result in new[] { sim, host, standalone })
-        {
-            Assert.Equal(1, result.Exit);
-            Assert.Contains($"Online control of {brand.ToUpperInvariant()} robots (and its virtual controller) is not available in this build yet", result.Stderr, StringComparison.Ordinal);
-        }
-    }
-
     [Fact]
     public async Task Run_MalformedLine_StopsBeforeConnecting()
     {
