@@ -49,7 +49,7 @@ public sealed partial class Robot
     public static Robot Create(string name, string brand)
     {
         ValidateName(name);
-        return new Robot(name, EnumText.Parse<RobotType>(brand, "robot brand"));
+        return new Robot(name, EnumText.Parse<RobotType>(brand, "robot brand", nameof(brand)));
     }
 
     private static void ValidateName(string? name)

@@ -11,11 +11,7 @@ public sealed class Tool : IEquatable<Tool>
         Name = ValidateName(name);
         TcpPosition = tcpPosition.RequireFinite(nameof(tcpPosition));
         TcpOrientation = tcpOrientation;
-        Weight = Num.Finite(weight, nameof(weight));
-        if (weight < 0)
-        {
-            throw new ArgumentException($"Tool weight cannot be negative, but it was {Num.G(weight)} kg.", nameof(weight));
-        }
+        Weight = CheckWeight(weight);
         CenterOfGravity = centerOfGravity.RequireFinite(nameof(centerOfGravity));
     }
 
@@ -49,6 +45,17 @@ public sealed class Tool : IEquatable<Tool>
         new(name, new Vector(tcpX, tcpY, tcpZ),
             Rotation.FromAxes(new Vector(tcpXAxisX, tcpXAxisY, tcpXAxisZ), new Vector(tcpYAxisX, tcpYAxisY, tcpYAxisZ)),
             weightKg, new Vector(cogX, cogY, cogZ));
+
+    /// <summary>The weight (kg) when it is a finite number of 0 or more; otherwise an <see cref="ArgumentException"/> for "weight".</summary>
+    internal static double CheckWeight(double weight)
+    {
+        Num.Finite(weight, nameof(weight));
+        if (weight < 0)
+        {
+            throw new ArgumentException($"Tool weight cannot be negative, but it was {Num.G(weight)} kg.", nameof(weight));
+        }
+        return weight;
+    }
 
     /// <summary>Refuses names that are empty or do not start with a letter, or that contain characters other than letters, digits and '_'.</summary>
     internal static string ValidateName(string? name)
