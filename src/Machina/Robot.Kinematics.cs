@@ -46,7 +46,7 @@ public sealed partial class Robot
     public void SetModel(string model)
     {
         ArgumentNullException.ThrowIfNull(model);
-        SetModel(RobotModels.Get(model));
+        SetModel(Arg.Renamed("name", nameof(model), model, static m => RobotModels.Get(m)));
     }
 
     /// <summary>

@@ -3,26 +3,26 @@ namespace Machina;
 public sealed partial class Robot
 {
     /// <summary>Moves the tool tip by an offset in mm (in the world frame, or the tool's frame after <c>Coordinates("Local")</c>).</summary>
-    public bool Move(Vector direction) => Issue(new ActionTranslation(direction, true));
+    public bool Move(Vector direction) => Issue(new ActionTranslation(Arg.Finite(direction), true));
 
     /// <summary>Moves the tool tip by (x, y, z) mm.</summary>
-    public bool Move(double incX, double incY, double incZ = 0) => Issue(new ActionTranslation(new Vector(incX, incY, incZ), true));
+    public bool Move(double incX, double incY, double incZ = 0) => Issue(new ActionTranslation(Arg.Vector(incX, incY, incZ), true));
 
     /// <summary>Moves the tool tip to a position in mm, keeping its orientation.</summary>
-    public bool MoveTo(Vector position) => Issue(new ActionTranslation(position, false));
+    public bool MoveTo(Vector position) => Issue(new ActionTranslation(Arg.Finite(position), false));
 
     /// <summary>Moves the tool tip to (x, y, z) mm, keeping its orientation.</summary>
-    public bool MoveTo(double x, double y, double z) => Issue(new ActionTranslation(new Vector(x, y, z), false));
+    public bool MoveTo(double x, double y, double z) => Issue(new ActionTranslation(Arg.Vector(x, y, z), false));
 
     /// <summary>Rotates the tool around its tip by a rotation.</summary>
     public bool Rotate(Rotation rotation) => Issue(new ActionRotation(rotation, true));
 
     /// <summary>Rotates the tool around its tip by <paramref name="angleDegrees"/> around an axis (right-hand rule).</summary>
-    public bool Rotate(Vector axis, double angleDegrees) => Issue(new ActionRotation(axis, angleDegrees, true));
+    public bool Rotate(Vector axis, double angleDegrees) => Issue(new ActionRotation(axis, Arg.Finite(angleDegrees), true));
 
     /// <summary>Rotates the tool around its tip by <paramref name="angleDegrees"/> around the axis (x, y, z).</summary>
     public bool Rotate(double rotVecX, double rotVecY, double rotVecZ, double angleDegrees) =>
-        Issue(new ActionRotation(new Vector(rotVecX, rotVecY, rotVecZ), angleDegrees, true));
+        Issue(Arg.Renamed("axis", nameof(rotVecX), (Arg.Vector(rotVecX, rotVecY, rotVecZ), Arg.Finite(angleDegrees)), static a => new ActionRotation(a.Item1, a.Item2, true)));
 
     /// <summary>Turns the tool to an orientation, keeping its tip in place.</summary>
     public bool RotateTo(Rotation rotation) => Issue(new ActionRotation(rotation, false));
@@ -35,23 +35,23 @@ public sealed partial class Robot
 
     /// <summary>Turns the tool so that its X axis is (x0, x1, x2) and its Y axis is (y0, y1, y2).</summary>
     public bool RotateTo(double x0, double x1, double x2, double y0, double y1, double y2) =>
-        Issue(new ActionRotation(Rotation.FromAxes(new Vector(x0, x1, x2), new Vector(y0, y1, y2)), false));
+        Issue(new ActionRotation(Arg.FromAxes(Arg.Vector(x0, x1, x2), Arg.Vector(y0, y1, y2), nameof(x0), nameof(y0)), false));
 
     /// <summary>Moves by an offset (mm), then rotates.</summary>
-    public bool Transform(Vector direction, Rotation rotation) => Issue(new ActionTransformation(direction, rotation, true, true));
+    public bool Transform(Vector direction, Rotation rotation) => Issue(new ActionTransformation(Arg.Finite(direction), rotation, true, true));
 
     /// <summary>Rotates, then moves by an offset (mm); the difference shows in the tool's frame.</summary>
-    public bool Transform(Rotation rotation, Vector direction) => Issue(new ActionTransformation(direction, rotation, true, false));
+    public bool Transform(Rotation rotation, Vector direction) => Issue(new ActionTransformation(Arg.Finite(direction), rotation, true, false));
 
     /// <summary>Moves to a position (mm) and orientation in one motion.</summary>
-    public bool TransformTo(Vector position, Rotation orientation) => Issue(new ActionTransformation(position, orientation, false, true));
+    public bool TransformTo(Vector position, Rotation orientation) => Issue(new ActionTransformation(Arg.Finite(position), orientation, false, true));
 
     /// <summary>Moves to a position (mm) and orientation in one motion.</summary>
-    public bool TransformTo(Rotation orientation, Vector position) => Issue(new ActionTransformation(position, orientation, false, false));
+    public bool TransformTo(Rotation orientation, Vector position) => Issue(new ActionTransformation(Arg.Finite(position), orientation, false, false));
 
     /// <summary>Moves the tool tip to (x, y, z) mm with its X axis along (x0, x1, x2) and Y axis along (y0, y1, y2).</summary>
     public bool TransformTo(double x, double y, double z, double x0, double x1, double x2, double y0, double y1, double y2) =>
-        Issue(new ActionTransformation(new Vector(x, y, z), Rotation.FromAxes(new Vector(x0, x1, x2), new Vector(y0, y1, y2)), false, true));
+        Issue(new ActionTransformation(Arg.Vector(x, y, z), Arg.FromAxes(Arg.Vector(x0, x1, x2), Arg.Vector(y0, y1, y2), nameof(x0), nameof(y0)), false, true));
 
     /// <summary>Moves along a circular arc through a point to an end point, both given as offsets (mm) from the current position.</summary>
     public bool ArcMotion(Vector through, Vector end) =>
@@ -59,7 +59,7 @@ public sealed partial class Robot
 
     /// <summary>Moves along a circular arc through (tx, ty, tz) to (ex, ey, ez), both offsets in mm from the current position.</summary>
     public bool ArcMotion(double throughX, double throughY, double throughZ, double endX, double endY, double endZ) =>
-        ArcMotion(new Vector(throughX, throughY, throughZ), new Vector(endX, endY, endZ));
+        ArcMotion(Arg.Vector(throughX, throughY, throughZ), Arg.Vector(endX, endY, endZ));
 
     /// <summary>Moves along a circular arc through a point to an end point (mm), keeping the tool orientation.</summary>
     public bool ArcMotionTo(Vector through, Vector end) =>
@@ -67,7 +67,7 @@ public sealed partial class Robot
 
     /// <summary>Moves along a circular arc through (tx, ty, tz) to (ex, ey, ez) mm, keeping the tool orientation.</summary>
     public bool ArcMotionTo(double throughX, double throughY, double throughZ, double endX, double endY, double endZ) =>
-        ArcMotionTo(new Vector(throughX, throughY, throughZ), new Vector(endX, endY, endZ));
+        ArcMotionTo(Arg.Vector(throughX, throughY, throughZ), Arg.Vector(endX, endY, endZ));
 
     /// <summary>Moves along a circular arc through one frame to another, turning the tool to each frame's orientation.</summary>
     public bool ArcMotionTo(Plane through, Plane end) => Issue(new ActionArcMotion(through, end, false, false));
@@ -82,30 +82,32 @@ public sealed partial class Robot
         double endX, double endY, double endZ, double endXAxisX, double endXAxisY, double endXAxisZ,
         double endYAxisX, double endYAxisY, double endYAxisZ) =>
         ArcMotionTo(
-            new Plane(throughX, throughY, throughZ, throughXAxisX, throughXAxisY, throughXAxisZ, throughYAxisX, throughYAxisY, throughYAxisZ),
-            new Plane(endX, endY, endZ, endXAxisX, endXAxisY, endXAxisZ, endYAxisX, endYAxisY, endYAxisZ));
+            new Plane(Arg.Vector(throughX, throughY, throughZ),
+                Arg.FromAxes(Arg.Vector(throughXAxisX, throughXAxisY, throughXAxisZ), Arg.Vector(throughYAxisX, throughYAxisY, throughYAxisZ), nameof(throughXAxisX), nameof(throughYAxisX))),
+            new Plane(Arg.Vector(endX, endY, endZ),
+                Arg.FromAxes(Arg.Vector(endXAxisX, endXAxisY, endXAxisZ), Arg.Vector(endYAxisX, endYAxisY, endYAxisZ), nameof(endXAxisX), nameof(endYAxisX))));
 
     /// <summary>Turns the joints by the given amounts, degrees.</summary>
     public bool Axes(Joints increments) => Issue(new ActionAxes(increments, true));
 
     /// <summary>Turns the joints by the given amounts, degrees.</summary>
     public bool Axes(double incJ1, double incJ2, double incJ3, double incJ4, double incJ5, double incJ6) =>
-        Issue(new ActionAxes(new Joints(incJ1, incJ2, incJ3, incJ4, incJ5, incJ6), true));
+        Issue(new ActionAxes(new Joints(Arg.Finite(incJ1), Arg.Finite(incJ2), Arg.Finite(incJ3), Arg.Finite(incJ4), Arg.Finite(incJ5), Arg.Finite(incJ6)), true));
 
     /// <summary>Turns the joints to the given angles, degrees.</summary>
     public bool AxesTo(Joints joints) => Issue(new ActionAxes(joints, false));
 
     /// <summary>Turns the joints to the given angles, degrees.</summary>
     public bool AxesTo(double j1, double j2, double j3, double j4, double j5, double j6) =>
-        Issue(new ActionAxes(new Joints(j1, j2, j3, j4, j5, j6), false));
+        Issue(new ActionAxes(new Joints(Arg.Finite(j1), Arg.Finite(j2), Arg.Finite(j3), Arg.Finite(j4), Arg.Finite(j5), Arg.Finite(j6)), false));
 
     /// <summary>Changes external axis 1..6 (track or positioner) by an amount, mm or degrees.</summary>
     public bool ExternalAxis(int axisNumber, double increment, ExternalAxesTarget target = ExternalAxesTarget.All) =>
-        Issue(new ActionExternalAxis(axisNumber, increment, target, true));
+        Issue(new ActionExternalAxis(axisNumber, Arg.Finite(increment), target, true));
 
     /// <summary>Changes external axis 1..6 by an amount; <paramref name="target"/> is "All", "Cartesian" or "Joint".</summary>
     public bool ExternalAxis(int axisNumber, double increment, string target) =>
-        ExternalAxis(axisNumber, increment, EnumText.Parse<ExternalAxesTarget>(target, "external axes target"));
+        ExternalAxis(axisNumber, increment, EnumText.Parse<ExternalAxesTarget>(target, "external axes target", nameof(target)));
 
     /// <summary>Sets external axis 1..6 (track or positioner) to a value, mm or degrees.</summary>
     public bool ExternalAxisTo(int axisNumber, double value, ExternalAxesTarget target = ExternalAxesTarget.All) =>
@@ -113,10 +115,10 @@ public sealed partial class Robot
 
     /// <summary>Sets external axis 1..6 to a value; <paramref name="target"/> is "All", "Cartesian" or "Joint".</summary>
     public bool ExternalAxisTo(int axisNumber, double value, string target) =>
-        ExternalAxisTo(axisNumber, value, EnumText.Parse<ExternalAxesTarget>(target, "external axes target"));
+        ExternalAxisTo(axisNumber, value, EnumText.Parse<ExternalAxesTarget>(target, "external axes target", nameof(target)));
 
     /// <summary>Changes the arm angle of a 7-axis arm, degrees.</summary>
-    public bool ArmAngle(double increment) => Issue(new ActionArmAngle(increment, true));
+    public bool ArmAngle(double increment) => Issue(new ActionArmAngle(Arg.Finite(increment), true));
 
     /// <summary>Sets the arm angle of a 7-axis arm, degrees.</summary>
     public bool ArmAngleTo(double angle) => Issue(new ActionArmAngle(angle, false));

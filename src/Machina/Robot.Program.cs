@@ -100,8 +100,11 @@ public sealed partial class Robot
     }
 
     /// <summary>Saves a compiled program's files into a folder named after the program inside <paramref name="folderPath"/> (e.g. <c>HelloRobot_Program</c>).</summary>
-    /// <returns>True when every file was written; false (with a logged error) when the disk refused.</returns>
+    /// <returns>True (kept for scripts written as <c>if (bot.SaveProgram(...))</c>): a disk error throws, as in <see cref="RobotProgram.SaveToFolder"/>
+    /// and <see cref="CompileToFolder"/>.</returns>
     /// <exception cref="ArgumentException"><paramref name="folderPath"/> is null, empty or blank.</exception>
+    /// <exception cref="IOException">The disk refused (the folder is a file, the disk is full, …); the error is also logged.</exception>
+    /// <exception cref="UnauthorizedAccessException">No permission to write there; the error is also logged.</exception>
     public bool SaveProgram(RobotProgram program, string folderPath)
     {
         ArgumentNullException.ThrowIfNull(program);
@@ -116,7 +119,7 @@ public sealed partial class Robot
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {
             Logger.Error($"Could not save the program to \"{folder}\": {ex.Message}");
-            return false;
+            throw;
         }
     }
 }

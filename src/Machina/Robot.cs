@@ -51,7 +51,7 @@ public sealed partial class Robot : IOnlineHost
     public static Robot Create(string name, string brand)
     {
         ValidateName(name);
-        return new Robot(name, EnumText.Parse<RobotType>(brand, "robot brand"));
+        return new Robot(name, EnumText.Parse<RobotType>(brand, "robot brand", nameof(brand)));
     }
 
     private static void ValidateName(string? name)

@@ -36,6 +36,14 @@ public interface IKinematics
     /// <summary>The solution with the requested configuration, or null when that configuration cannot reach the pose within the limits.</summary>
     Joints? Solve(Pose flange, ArmConfiguration configuration);
 
+    /// <summary>
+    /// Why <see cref="Inverse(Pose)"/> (and <see cref="Closest"/>) find no solution for this flange pose, or null when they find one:
+    /// <see cref="KinematicIssueKind.Unreachable"/> when the pose is out of the arm's reach, <see cref="KinematicIssueKind.JointLimit"/>
+    /// when it is reachable only with a joint beyond its limits (then <see cref="KinematicIssue.Joint"/> and
+    /// <see cref="KinematicIssue.Limit"/> name the limit passed by the way of reaching it that comes nearest to being allowed).
+    /// </summary>
+    KinematicIssue? WhyNoSolution(Pose flange);
+
     /// <summary>The shoulder/elbow/wrist configuration of a set of joint values.</summary>
     ArmConfiguration ConfigurationOf(Joints joints);
 

@@ -24,6 +24,12 @@ public static class KinematicChecks
     /// <summary>A joint jumping more than this between two samples of a straight line means the arm had to change configuration (degrees).</summary>
     public const double FlipJumpDegrees = 30;
 
+    /// <summary>Arcs are also sampled at least every this many degrees of the circle.</summary>
+    public const double ArcStepDegrees = 2;
+
+    /// <summary>A joint move to a Cartesian target that turns one joint by more than this is reported (degrees).</summary>
+    public const double LargeJointMoveDegrees = 180;
+
     private const int MaxSamples = 2000;
 
     /// <summary>Checks a motion to a flange pose. <paramref name="previous"/> is the joint state before the motion (null when unknown).</summary>
@@ -31,11 +37,13 @@ public static class KinematicChecks
         Check(model, previous, target, motion, speedMmPerSecond, Pose.Identity, out _);
 
     /// <summary>
-    /// As the public overload, and also gives the joint solution it checked: closest to <paramref name="previous"/>, or the first one within
-    /// the limits when previous is null (null when the target cannot be reached within the limits). Positions in the sentences are those of
-    /// <paramref name="tool"/> on the flange (the TCP the program speaks of; identity for the flange itself).
+    /// As the public overload, and also gives the joint solution it checked (null when the target cannot be reached within the limits):
+    /// for a path (a line, or an arc when <paramref name="arcThrough"/> is given) from known <paramref name="previous"/> joints, the joints
+    /// the arm arrives with when it follows the path; for a joint move, the solution closest to <paramref name="previous"/>; with
+    /// previous unknown, the first one within the limits. Positions in the sentences are those of <paramref name="tool"/> on the flange
+    /// (the TCP the program speaks of; identity for the flange itself). <paramref name="arcThrough"/> is a TCP position.
     /// </summary>
-    internal static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond, Pose tool, out Joints? solution)
+    internal static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond, Pose tool, out Joints? solution, Vector? arcThrough = null)
     {
         solution = null;
         ArgumentNullException.ThrowIfNull(model);
@@ -55,12 +63,24 @@ public static class KinematicChecks
         solution = chosen;
         if (chosen is null)
         {
-            issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"every way to reach {Shown(target, tool)} needs a joint beyond its limits ({Violation(model, raw[0])})."));
+            issues.Add(KinematicsCore.LimitIssue(model, KinematicsCore.NearestToLimits(model, raw[..n]), $"every way to reach {Shown(target, tool)} needs a joint beyond its limits"));
             return issues;
         }
-        if (motion == KinematicMotion.Linear && previous is Joints start)
+        if (previous is Joints start)
         {
-            CheckLine(model, start, target, chosen.Value, speedMmPerSecond, tool, issues);
+            if (motion == KinematicMotion.Linear || arcThrough is not null)
+            {
+                // The controller follows the path: the arm arrives with the joints it reaches continuously, not with the solution closest to
+                // where it started (the two differ when the path passes near a singularity).
+                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, issues) is Joints followed)
+                {
+                    chosen = solution = followed;
+                }
+            }
+            else
+            {
+                CheckJointMove(start, chosen.Value, issues);
+            }
         }
         CheckSingularities(solver.Measure(chosen.Value), "at the target", issues);
         return issues;
@@ -74,12 +94,19 @@ public static class KinematicChecks
         var issues = new List<KinematicIssue>();
         if (!model.IsWithinLimits(target))
         {
-            issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"the target joints {target} are beyond the limits ({Violation(model, target)})."));
+            (int joint, double limit, _) = KinematicsCore.WorstLimit(model, target);
+            issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"the target joints {target} are beyond the limits ({Violation(model, target)}).") { Joint = joint, Limit = limit });
             return issues;
         }
         if (motion == KinematicMotion.Linear && previous is Joints start)
         {
-            CheckLine(model, start, model.Kinematics.Forward(target), target, speedMmPerSecond, Pose.Identity, issues);
+            IKinematics kin = model.Kinematics;
+            if (CheckPath(model, start, kin.Forward(target), null, speedMmPerSecond, Pose.Identity, issues) is Joints arrival
+                && kin.ConfigurationOf(arrival) != kin.ConfigurationOf(target))
+            {
+                Add(issues, KinematicIssueKind.ConfigurationFlip,
+                    $"the target joints are in {kin.ConfigurationOf(target)} but a straight line from the start arrives in {kin.ConfigurationOf(arrival)} (use a joint move).");
+            }
         }
         CheckSingularities(((ISolver)model.Kinematics).Measure(target), "at the target", issues);
         return issues;
@@ -91,22 +118,27 @@ public static class KinematicChecks
         return kin.Inverse(target, s) > 0 ? s[0] : null;
     }
 
-    private static void CheckLine(RobotModel model, Joints start, Pose target, Joints end, double speed, Pose tool, List<KinematicIssue> issues)
+    /// <summary>
+    /// Follows the tool tip from the pose of <paramref name="start"/> to <paramref name="target"/> (a flange pose) on a straight line, or on
+    /// the circle through <paramref name="arcThrough"/>, turning the tool evenly from the start to the end orientation as the
+    /// controllers do. Reports where the path leaves the reach or the limits, changes configuration, passes near a singularity, or
+    /// asks a joint to move faster than it can; returns the joints at the end of the path (null when the path could not be followed).
+    /// </summary>
+    private static Joints? CheckPath(RobotModel model, Joints start, Pose target, Vector? arcThrough, double speed, Pose tool, List<KinematicIssue> issues)
     {
         IKinematics kin = model.Kinematics;
         var solver = (ISolver)kin;
-        // The controller moves the tool tip on the straight line (the flange swings around it when the tool turns): sample the tip's
-        // line and solve for the flange of each sample; the speed is the tip's.
+        // The controller moves the tool tip on the path (the flange swings around it when the tool turns): sample the tip's path and
+        // solve for the flange of each sample; the speed is the tip's.
         Pose from = kin.Forward(start) * tool, to = target * tool, toTool = tool.Inverse();
-        double length = Vector.Distance(from.Position, to.Position);
+        GCodeArc arc = default;
+        bool isArc = arcThrough is Vector through && GCodeArc.TryCreate(from.Position, through, to.Position, out arc);
+        double length = isArc ? arc.Length : Vector.Distance(from.Position, to.Position);
         double turn = from.Rotation.AngleTo(to.Rotation);
-        int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(length / LinearStepMm, turn / LinearStepDegrees)), 1, MaxSamples);
+        double sweepSteps = isArc ? arc.Sweep * Angles.ToDegrees / ArcStepDegrees : 0;
+        int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(Math.Max(length / LinearStepMm, turn / LinearStepDegrees), sweepSteps)), 1, MaxSamples);
+        string path = isArc ? "arc" : "line";
         ArmConfiguration startConfig = kin.ConfigurationOf(start);
-        if (kin.ConfigurationOf(end) != startConfig)
-        {
-            Add(issues, KinematicIssueKind.ConfigurationFlip,
-                $"the target needs {kin.ConfigurationOf(end)} but the arm starts with {startConfig}; a straight line cannot change it (use a joint move).");
-        }
         double dt = speed > 0 && length > 1e-9 ? length / steps / speed : 0;
         double worstRatio = 0;
         int worstJoint = -1;
@@ -114,7 +146,8 @@ public static class KinematicChecks
         for (int i = 1; i <= steps; i++)
         {
             double t = (double)i / steps;
-            Pose pose = new Pose(from.Position + (to.Position - from.Position) * t, Slerp(from.Rotation, to.Rotation, t)) * toTool;
+            Vector position = i == steps ? to.Position : isArc ? arc.PointAt(t) : from.Position + (to.Position - from.Position) * t;
+            Pose pose = new Pose(position, Slerp(from.Rotation, to.Rotation, t)) * toTool;
             Joints? next = kin.Closest(pose, last);
             if (next is null)
             {
@@ -122,8 +155,8 @@ public static class KinematicChecks
                 Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
                 bool reachable = solver.SolveRaw(Affine.FromPose(pose), last, raw, cfg) > 0;
                 Add(issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
-                    reachable ? $"the line needs a joint beyond its limits {Where(t, pose, tool)}." : $"the line leaves the reach of the {model} {Where(t, pose, tool)}.");
-                return;
+                    reachable ? $"the {path} needs a joint beyond its limits {Where(t, path, pose, tool)}." : $"the {path} leaves the reach of the {model} {Where(t, path, pose, tool)}.");
+                return null;
             }
             Joints j = next.Value;
             double jump = 0;
@@ -139,12 +172,13 @@ public static class KinematicChecks
             }
             if (jump > FlipJumpDegrees || kin.ConfigurationOf(j) != startConfig)
             {
-                Add(issues, KinematicIssueKind.ConfigurationFlip, $"the arm would have to change configuration {Where(t, pose, tool)} (a joint jumps {Num.F(jump, 1)}°).");
+                Add(issues, KinematicIssueKind.ConfigurationFlip,
+                    $"the arm would have to change configuration {Where(t, path, pose, tool)} (from {startConfig} to {kin.ConfigurationOf(j)}, a joint jumps {Num.F(jump, 1)}°): the {path} passes through or very near a position where the arm must flip, which it cannot do smoothly (use a joint move, or move the path away from it).");
             }
             SingularityMeasure measure = solver.Measure(j);
             if (IsNearSingularity(measure))
             {
-                CheckSingularities(measure, Where(t, pose, tool), issues);
+                CheckSingularities(measure, Where(t, path, pose, tool), issues);
             }
             last = j;
         }
@@ -153,10 +187,30 @@ public static class KinematicChecks
             Add(issues, KinematicIssueKind.JointSpeed,
                 $"at {Num.F(speed, 1)} mm/s joint {worstJoint + 1} would need {Num.F(worstRatio * limits[worstJoint], 0)}°/s, above its maximum of {Num.F(limits[worstJoint], 0)}°/s.");
         }
+        return last;
     }
 
-    /// <summary>Where a sample of a line is, for messages (built only when there is something to report).</summary>
-    private static string Where(double t, Pose pose, Pose tool) => $"{Num.F(t * 100, 0)}% along the line, at {Shown(pose, tool)}";
+    /// <summary>A joint move (PTP, MoveJ, movej) to a Cartesian target that swings a joint by more than <see cref="LargeJointMoveDegrees"/>.</summary>
+    private static void CheckJointMove(Joints start, Joints end, List<KinematicIssue> issues)
+    {
+        int widest = 0;
+        for (int k = 1; k < Joints.Count; k++)
+        {
+            if (Math.Abs(end[k] - start[k]) > Math.Abs(end[widest] - start[widest]))
+            {
+                widest = k;
+            }
+        }
+        double swing = Math.Abs(end[widest] - start[widest]);
+        if (swing > LargeJointMoveDegrees)
+        {
+            Add(issues, KinematicIssueKind.LargeJointMove,
+                $"to reach this target in a joint move, joint {widest + 1} turns {Num.F(swing, 0)}° (from {Num.F(start[widest], 1)}° to {Num.F(end[widest], 1)}°); make sure the tool and its cables have room to swing.");
+        }
+    }
+
+    /// <summary>Where a sample of a path is, for messages (built only when there is something to report).</summary>
+    private static string Where(double t, string path, Pose pose, Pose tool) => $"{Num.F(t * 100, 0)}% along the {path}, at {Shown(pose, tool)}";
 
     /// <summary>The position quoted in messages: the tool tip for a flange pose.</summary>
     private static Vector Shown(Pose flange, Pose tool) => (flange * tool).Position;
@@ -166,17 +220,21 @@ public static class KinematicChecks
 
     private static void CheckSingularities(SingularityMeasure m, string where, List<KinematicIssue> issues)
     {
+        // At the singular point itself a distance reads "0"; say what it means instead.
         if (m.WristDegrees < WristSingularityDegrees)
         {
-            Add(issues, KinematicIssueKind.WristSingularity, $"axis 5 is within {Num.F(m.WristDegrees, 2)}° of straight {where}; axes 4 and 6 may spin fast.");
+            string how = m.WristDegrees < 0.005 ? "axis 5 is exactly straight" : $"axis 5 is only {Num.F(m.WristDegrees, 2)}° from straight";
+            Add(issues, KinematicIssueKind.WristSingularity, $"{how} {where}, so axes 4 and 6 line up and the controller cannot tell them apart; axes 4 and 6 may spin fast.");
         }
         if (m.ElbowDegrees < ElbowSingularityDegrees)
         {
-            Add(issues, KinematicIssueKind.ElbowSingularity, $"the elbow is within {Num.F(m.ElbowDegrees, 2)}° of fully stretched or folded {where}.");
+            string how = m.ElbowDegrees < 0.005 ? "the arm is fully stretched or folded at the elbow" : $"the elbow is only {Num.F(m.ElbowDegrees, 2)}° from fully stretched or folded";
+            Add(issues, KinematicIssueKind.ElbowSingularity, $"{how} {where}, at the edge of what the arm can reach; it may move slowly or jerkily there.");
         }
         if (m.ShoulderMm < ShoulderSingularityMm)
         {
-            Add(issues, KinematicIssueKind.ShoulderSingularity, $"the wrist is {Num.F(m.ShoulderMm, 1)} mm from axis 1's singular line {where}; axis 1 may spin fast.");
+            string how = m.ShoulderMm < 0.05 ? "the wrist is right on axis 1's singular line" : $"the wrist is only {Num.F(m.ShoulderMm, 1)} mm from axis 1's singular line";
+            Add(issues, KinematicIssueKind.ShoulderSingularity, $"{how} {where}, where turning axis 1 hardly moves the wrist; axis 1 may spin fast.");
         }
     }
 

@@ -23,12 +23,15 @@ public enum KinematicIssueKind
 
     /// <summary>At the requested speed a joint would have to move faster than its maximum speed.</summary>
     JointSpeed,
+
+    /// <summary>A joint move to a Cartesian target swings one joint by more than half a turn, often a surprise for the tool and its cables.</summary>
+    LargeJointMove,
 }
 
 /// <summary>How the robot moves to the target, for the checks.</summary>
 public enum KinematicMotion
 {
-    /// <summary>Straight line of the flange (MoveL, LIN, movel).</summary>
+    /// <summary>Straight line of the tool tip (MoveL, LIN, movel).</summary>
     Linear,
 
     /// <summary>Joint interpolation (MoveJ, PTP, movej): the path is not a line.</summary>
@@ -40,6 +43,12 @@ public enum KinematicMotion
 /// <param name="Reason">Human explanation, e.g. which joint and by how much.</param>
 public sealed record KinematicIssue(KinematicIssueKind Kind, string Reason)
 {
+    /// <summary>For a <see cref="KinematicIssueKind.JointLimit"/> issue, the joint (1 to 6) furthest past its limit; otherwise null.</summary>
+    public int? Joint { get; init; }
+
+    /// <summary>For a <see cref="KinematicIssueKind.JointLimit"/> issue, the limit of <see cref="Joint"/> that is passed, degrees; otherwise null.</summary>
+    public double? Limit { get; init; }
+
     /// <summary>Text such as <c>JointLimit: joint 3 would be at 95° (limit 70°)</c>.</summary>
     public override string ToString() => $"{Kind}: {Reason}";
 }

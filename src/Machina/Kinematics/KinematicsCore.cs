@@ -161,6 +161,92 @@ internal static class KinematicsCore
         }
     }
 
+    /// <summary>
+    /// Null when the flange pose has a solution within the limits; otherwise why not (out of reach, or the limit passed by the nearest
+    /// way of reaching it). Positions in the sentence are those of <paramref name="tool"/> on the flange.
+    /// </summary>
+    internal static KinematicIssue? WhyNoSolution(ISolver solver, RobotModel model, Pose flange, Pose tool)
+    {
+        flange.Position.RequireFinite(nameof(flange));
+        Span<Joints> raw = stackalloc Joints[MaxSolutions];
+        Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
+        int n = solver.SolveRaw(Affine.FromPose(flange), default, raw, configs);
+        Vector shown = (flange * tool).Position;
+        if (n == 0)
+        {
+            return new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {shown} is out of reach of the {model}.");
+        }
+        for (int i = 0; i < n; i++)
+        {
+            if (FitLimits(model, raw[i], default, out _))
+            {
+                return null;
+            }
+        }
+        return LimitIssue(model, NearestToLimits(model, raw[..n]), $"every way to reach {shown} needs a joint beyond its limits");
+    }
+
+    /// <summary>A joint-limit issue for <paramref name="joints"/>: <paramref name="what"/>, then the joint furthest past its limit and by how much.</summary>
+    internal static KinematicIssue LimitIssue(RobotModel model, Joints joints, string what)
+    {
+        (int joint, double limit, double excess) = WorstLimit(model, joints);
+        string reason = $"{what}: the nearest needs joint {joint} at {Num.F(joints[joint - 1], 1)}°, {Num.F(excess, 1)}° past its limit of {Num.G(limit)}° (allowed {Num.G(model.MinJoints[joint - 1])}° to {Num.G(model.MaxJoints[joint - 1])}°).";
+        return new KinematicIssue(KinematicIssueKind.JointLimit, reason) { Joint = joint, Limit = limit };
+    }
+
+    /// <summary>The joint (1 to 6) furthest past its limit, that limit and by how much (degrees).</summary>
+    internal static (int Joint, double Limit, double Excess) WorstLimit(RobotModel model, Joints joints)
+    {
+        int worst = 0;
+        double worstExcess = 0, limit = model.MaxJoints[0];
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            double min = model.MinJoints[i], max = model.MaxJoints[i];
+            double excess = joints[i] < min ? min - joints[i] : joints[i] > max ? joints[i] - max : 0;
+            if (excess > worstExcess)
+            {
+                worst = i; worstExcess = excess; limit = joints[i] < min ? min : max;
+            }
+        }
+        return (worst + 1, limit, worstExcess);
+    }
+
+    /// <summary>
+    /// Of geometric solutions that all break a limit, the one that breaks them least (smallest total excess, each joint on the ±360°
+    /// turn closest to its range): the way to reach the pose that is nearest to being allowed.
+    /// </summary>
+    internal static Joints NearestToLimits(RobotModel model, ReadOnlySpan<Joints> raw)
+    {
+        Joints best = raw[0];
+        double bestExcess = double.PositiveInfinity;
+        Span<double> v = stackalloc double[Joints.Count];
+        foreach (Joints solution in raw)
+        {
+            double excess = 0;
+            for (int i = 0; i < Joints.Count; i++)
+            {
+                double min = model.MinJoints[i], max = model.MaxJoints[i], value = solution[i];
+                double bestValue = value, bestJointExcess = double.PositiveInfinity;
+                for (int k = -2; k <= 2; k++)
+                {
+                    double candidate = value + 360.0 * k;
+                    double e = candidate < min ? min - candidate : candidate > max ? candidate - max : 0;
+                    if (e < bestJointExcess)
+                    {
+                        bestJointExcess = e; bestValue = candidate;
+                    }
+                }
+                v[i] = bestValue;
+                excess += bestJointExcess;
+            }
+            if (excess < bestExcess)
+            {
+                bestExcess = excess; best = Joints.FromArray(v);
+            }
+        }
+        return best;
+    }
+
     internal static bool IsWithinLimits(RobotModel model, Joints joints)
     {
         for (int i = 0; i < Joints.Count; i++)

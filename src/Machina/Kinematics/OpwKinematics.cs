@@ -110,6 +110,9 @@ public sealed class OpwKinematics : IKinematics, ISolver
     public bool IsWithinLimits(Joints joints) => KinematicsCore.IsWithinLimits(Model, joints);
 
     /// <inheritdoc/>
+    public KinematicIssue? WhyNoSolution(Pose flange) => KinematicsCore.WhyNoSolution(this, Model, flange, Pose.Identity);
+
+    /// <inheritdoc/>
     public ArmConfiguration ConfigurationOf(Joints joints)
     {
         Span<double> t = stackalloc double[6];

@@ -55,6 +55,9 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
     public bool IsWithinLimits(Joints joints) => KinematicsCore.IsWithinLimits(Model, joints);
 
     /// <inheritdoc/>
+    public KinematicIssue? WhyNoSolution(Pose flange) => KinematicsCore.WhyNoSolution(this, Model, flange, Pose.Identity);
+
+    /// <inheritdoc/>
     public ArmConfiguration ConfigurationOf(Joints joints)
     {
         Affine t = ForwardAffine(joints);

@@ -25,6 +25,17 @@ public sealed class RobotProgram
     /// <summary>What the device could not do exactly as asked; each also appears as a comment in the code.</summary>
     public IReadOnlyList<ProgramWarning> Warnings { get; }
 
+    /// <summary>
+    /// The file that holds the program's instructions, the one to open or run: ABB <c>.mod</c>, KUKA <c>.src</c>, UR <c>.script</c>,
+    /// <c>.gcode</c>, … Not always <c>Files[0]</c>: an ABB program lists its <c>.pgf</c> loader first, and a KUKA program may have a
+    /// <c>.dat</c> file of targets.
+    /// </summary>
+    public RobotProgramFile MainFile => Files.FirstOrDefault(f => !IsCompanion(f)) ?? Files[0];
+
+    /// <summary>Files that only accompany the main one: the ABB loader (<c>.pgf</c>) and KUKA data (<c>.dat</c>).</summary>
+    private static bool IsCompanion(RobotProgramFile file) =>
+        string.Equals(file.Extension, "pgf", StringComparison.OrdinalIgnoreCase) || string.Equals(file.Extension, "dat", StringComparison.OrdinalIgnoreCase);
+
     /// <summary>The file with this extension (e.g. "mod"), or null.</summary>
     public RobotProgramFile? GetFile(string extension) =>
         Files.FirstOrDefault(f => string.Equals(f.Extension, extension, StringComparison.OrdinalIgnoreCase));
@@ -49,6 +60,8 @@ public sealed class RobotProgram
     /// Writes every file into <paramref name="folderPath"/> (created if missing; existing files with the same names are replaced,
     /// nothing else is touched). Lines end with <paramref name="newLine"/> (default "\n"). Returns the paths written.
     /// </summary>
+    /// <exception cref="IOException">The disk refused (the folder is a file, the disk is full, …).</exception>
+    /// <exception cref="UnauthorizedAccessException">No permission to write there.</exception>
     public IReadOnlyList<string> SaveToFolder(string folderPath, string newLine = "\n")
     {
         if (string.IsNullOrWhiteSpace(folderPath))

@@ -81,24 +81,28 @@ internal sealed partial class RobotCursor
     }
 
     /// <summary>
-    /// After a Cartesian motion: the joints are the inverse kinematics of the flange pose (TCP pose × tool⁻¹), the solution closest to
-    /// the previous joints (or to all-zero joints when they are unknown). Unreachable: the pose is kept and the joints become unknown.
+    /// After a Cartesian motion: the joints are the inverse kinematics of the flange pose (TCP pose × tool⁻¹): for lines and arcs the
+    /// joints reached by following the path from the previous joints, for joint moves the solution closest to them (or to all-zero
+    /// joints when they are unknown). Unreachable: the pose is kept and the joints become unknown.
     /// </summary>
     private IReadOnlyList<KinematicIssue> SyncFromPose(RobotModel model, RobotAction action)
     {
         Pose flange = FlangePose(Position!.Value, Rotation!.Value);
+        Vector? through = action is ActionArcMotion ? ArcThrough : null;
         bool linear = action is not ActionArcMotion && MotionType == MotionType.Linear;
         Pose tool = Tool is null ? Pose.Identity : new Pose(Tool.TcpPosition, Tool.TcpOrientation);
-        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed, tool, out Joints? solution);
-        if (action is ActionArcMotion && ArcThrough is Vector through)
+        // Lines and arcs are followed from the previous joints, so the joints kept are those the arm arrives with along the path.
+        IReadOnlyList<KinematicIssue> issues = KinematicChecks.Check(model, PrevAxes, flange, linear ? KinematicMotion.Linear : KinematicMotion.Joint, Speed, tool, out Joints? solution, through);
+        if (through is Vector via && PrevAxes is null)
         {
-            IReadOnlyList<KinematicIssue> viaIssues = KinematicChecks.Check(model, null, FlangePose(through, ArcThroughRotation ?? Rotation!.Value), KinematicMotion.Joint, Speed, tool, out _);
+            // Without previous joints the arc cannot be followed: at least check its through point.
+            IReadOnlyList<KinematicIssue> viaIssues = KinematicChecks.Check(model, null, FlangePose(via, ArcThroughRotation ?? Rotation!.Value), KinematicMotion.Joint, Speed, tool, out _);
             if (viaIssues.Count > 0)
             {
                 issues = [.. issues, .. viaIssues.Select(i => i with { Reason = "through point: " + i.Reason })];
             }
         }
-        // With known previous joints the checks already solved for the closest solution; otherwise take the one closest to all-zero joints.
+        // With known previous joints the checks already solved for the followed or closest solution; otherwise take the one closest to all-zero joints.
         Axes = PrevAxes is null ? model.Kinematics.Closest(flange, ReferenceJoints) : solution;
         return issues;
     }

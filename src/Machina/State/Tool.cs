@@ -11,11 +11,7 @@ public sealed class Tool : IEquatable<Tool>
         Name = ValidateName(name);
         TcpPosition = tcpPosition.RequireFinite(nameof(tcpPosition));
         TcpOrientation = tcpOrientation;
-        Weight = Num.Finite(weight, nameof(weight));
-        if (weight < 0)
-        {
-            throw new ArgumentException($"Tool weight cannot be negative, but it was {Num.G(weight)} kg.", nameof(weight));
-        }
+        Weight = CheckWeight(weight);
         CenterOfGravity = centerOfGravity.RequireFinite(nameof(centerOfGravity));
     }
 
@@ -40,15 +36,26 @@ public sealed class Tool : IEquatable<Tool>
 
     /// <summary>A tool with all its properties.</summary>
     public static Tool Create(string name, Vector tcpPosition, Rotation tcpOrientation, double weightKg, Vector centerOfGravity) =>
-        new(name, tcpPosition, tcpOrientation, weightKg, centerOfGravity);
+        new(name, tcpPosition, tcpOrientation, Arg.Renamed("weight", nameof(weightKg), weightKg, static w => CheckWeight(w)), centerOfGravity);
 
     /// <summary>A tool from numbers: tip (mm), tip frame X and Y axes, weight (kg), centre of gravity (mm).</summary>
     public static Tool Create(string name, double tcpX, double tcpY, double tcpZ,
         double tcpXAxisX, double tcpXAxisY, double tcpXAxisZ, double tcpYAxisX, double tcpYAxisY, double tcpYAxisZ,
         double weightKg, double cogX, double cogY, double cogZ) =>
-        new(name, new Vector(tcpX, tcpY, tcpZ),
-            Rotation.FromAxes(new Vector(tcpXAxisX, tcpXAxisY, tcpXAxisZ), new Vector(tcpYAxisX, tcpYAxisY, tcpYAxisZ)),
-            weightKg, new Vector(cogX, cogY, cogZ));
+        new(name, Arg.Vector(tcpX, tcpY, tcpZ),
+            Arg.FromAxes(Arg.Vector(tcpXAxisX, tcpXAxisY, tcpXAxisZ), Arg.Vector(tcpYAxisX, tcpYAxisY, tcpYAxisZ), nameof(tcpXAxisX), nameof(tcpYAxisX)),
+            Arg.Renamed("weight", nameof(weightKg), weightKg, static w => CheckWeight(w)), Arg.Vector(cogX, cogY, cogZ));
+
+    /// <summary>The weight (kg) when it is a finite number of 0 or more; otherwise an <see cref="ArgumentException"/> for "weight".</summary>
+    internal static double CheckWeight(double weight)
+    {
+        Num.Finite(weight, nameof(weight));
+        if (weight < 0)
+        {
+            throw new ArgumentException($"Tool weight cannot be negative, but it was {Num.G(weight)} kg.", nameof(weight));
+        }
+        return weight;
+    }
 
     /// <summary>Refuses names that are empty or do not start with a letter, or that contain characters other than letters, digits and '_'.</summary>
     internal static string ValidateName(string? name)

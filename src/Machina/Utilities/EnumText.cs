@@ -1,16 +1,19 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>Case-insensitive enum parsing with error messages that list the accepted names.</summary>
 internal static class EnumText
 {
     /// <summary>Parses a name case-insensitively; numbers are refused. Throws an error listing the accepted names.</summary>
-    internal static T Parse<T>(string? text, string what) where T : struct, Enum
+    /// <remarks>The error's <see cref="ArgumentException.ParamName"/> is the caller's argument (its parameter name, e.g. "mode").</remarks>
+    internal static T Parse<T>(string? text, string what, [CallerArgumentExpression(nameof(text))] string paramName = "") where T : struct, Enum
     {
         if (TryParse<T>(text, out var value))
         {
             return value;
         }
-        throw new ArgumentException($"\"{text}\" is not a valid {what}; use one of: {string.Join(", ", Enum.GetNames<T>())}.");
+        throw new ArgumentException($"\"{text}\" is not a valid {what}; use one of: {string.Join(", ", Enum.GetNames<T>())}.", paramName);
     }
 
     /// <summary>Parses a single member name case-insensitively; numbers and comma lists are refused.</summary>

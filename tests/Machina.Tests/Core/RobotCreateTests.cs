@@ -24,7 +24,8 @@ public class RobotCreateTests
     {
         var ex = Assert.Throws<ArgumentException>(() => Robot.Create("Bot", "FANUC"));
 
-        Assert.Equal("\"FANUC\" is not a valid robot brand; use one of: HUMAN, MACHINA, ABB, UR, KUKA, ZMORPH, MARLIN.", ex.Message);
+        Assert.Equal("\"FANUC\" is not a valid robot brand; use one of: HUMAN, MACHINA, ABB, UR, KUKA, ZMORPH, MARLIN. (Parameter 'brand')", ex.Message);
+        Assert.Equal("brand", ex.ParamName);
     }
 
     [Theory]
@@ -95,7 +96,8 @@ public class RobotCreateTests
 
         var ex = Assert.Throws<ArgumentException>(() => bot.MotionMode(text));
 
-        Assert.Equal($"\"{text}\" is not a valid motion type; use one of: Linear, Joint.", ex.Message);
+        Assert.Equal($"\"{text}\" is not a valid motion type; use one of: Linear, Joint. (Parameter 'motionType')", ex.Message);
+        Assert.Equal("motionType", ex.ParamName);
         Assert.Empty(bot.GetProgramActions());
     }
 
@@ -104,7 +106,8 @@ public class RobotCreateTests
     {
         var ex = Assert.Throws<ArgumentException>(() => Robot.Create("Bot", RobotType.ABB).Coordinates("tool"));
 
-        Assert.Equal("\"tool\" is not a valid coordinate system; use one of: World, Local.", ex.Message);
+        Assert.Equal("\"tool\" is not a valid coordinate system; use one of: World, Local. (Parameter 'referenceCS')", ex.Message);
+        Assert.Equal("referenceCS", ex.ParamName);
     }
 
     [Fact]
@@ -112,7 +115,8 @@ public class RobotCreateTests
     {
         var ex = Assert.Throws<ArgumentException>(() => Robot.Create("Bot", RobotType.ABB).ExternalAxisTo(1, 2, "both"));
 
-        Assert.Equal("\"both\" is not a valid external axes target; use one of: All, Cartesian, Joint.", ex.Message);
+        Assert.Equal("\"both\" is not a valid external axes target; use one of: All, Cartesian, Joint. (Parameter 'target')", ex.Message);
+        Assert.Equal("target", ex.ParamName);
     }
 
     [Fact]

@@ -307,4 +307,47 @@ public class InverseKinematicsTests
         }
         return true;
     }
+
+    [Fact]
+    public void WhyNoSolution_OutOfReach_Unreachable()
+    {
+        RobotModel model = RobotModels.Get("IRB 120");
+        var pose = new Pose(new Vector(2000, 0, 300), Rotation.FlippedAroundY);
+
+        Assert.Empty(model.Kinematics.Inverse(pose));
+        KinematicIssue why = model.Kinematics.WhyNoSolution(pose)!;
+
+        Assert.Equal(KinematicIssueKind.Unreachable, why.Kind);
+        Assert.Equal("the target [2000, 0, 300] is out of reach of the ABB IRB 120.", why.Reason);
+        Assert.Null(why.Joint);
+        Assert.Null(why.Limit);
+    }
+
+    [Fact]
+    public void WhyNoSolution_ReachableOnlyBeyondALimit_NamesTheJointAndTheNearestLimit()
+    {
+        // Axis 5 at 130° (limit ±120°): the other ways to reach this pose need axis 5 at −130° or break other limits further.
+        RobotModel model = RobotModels.Get("IRB 120");
+        Pose pose = model.Kinematics.Forward(new Joints(0, 0, 0, 0, 130, 0));
+
+        Assert.Empty(model.Kinematics.Inverse(pose));
+        Assert.Null(model.Kinematics.Closest(pose, new Joints(0, 0, 0, 0, 90, 0)));
+        KinematicIssue why = model.Kinematics.WhyNoSolution(pose)!;
+
+        Assert.Equal(KinematicIssueKind.JointLimit, why.Kind);
+        Assert.Equal(5, why.Joint);
+        Assert.Equal(120, Math.Abs(why.Limit!.Value));
+        Assert.Contains("joint 5 at ", why.Reason, StringComparison.Ordinal);
+        Assert.Contains("10° past its limit", why.Reason, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void WhyNoSolution_Reachable_Null()
+    {
+        RobotModel model = RobotModels.Get("UR5e");
+        Pose pose = model.Kinematics.Forward(new Joints(10, -80, 70, -80, -90, 0));
+
+        Assert.NotEmpty(model.Kinematics.Inverse(pose));
+        Assert.Null(model.Kinematics.WhyNoSolution(pose));
+    }
 }

@@ -20,6 +20,7 @@ public class KinematicChecksTests
         var issues = KinematicChecks.Check(Irb120, null, new Joints(0, 0, 95, 0, 30, 0), KinematicMotion.Joint, 100);
         Assert.Equal([KinematicIssueKind.JointLimit], Kinds(issues));
         Assert.Contains("joint 3 at 95°, allowed -110° to 70°", issues[0].Reason);
+        Assert.Equal((3, 70.0), (issues[0].Joint, issues[0].Limit));
     }
 
     [Fact]
@@ -27,7 +28,11 @@ public class KinematicChecksTests
     {
         RobotModel narrow = RobotModel.FromOpw("narrow", "ABB", Irb120.Opw!.Value, new Joints(-10, -110, -110, -160, -120, -400), new Joints(10, 110, 70, 160, 120, 400));
         Pose target = Irb120.Kinematics.Forward(new Joints(45, 0, 0, 0, 30, 0));
-        Assert.Equal([KinematicIssueKind.JointLimit], Kinds(KinematicChecks.Check(narrow, null, target, KinematicMotion.Joint, 100)));
+        var issues = KinematicChecks.Check(narrow, null, target, KinematicMotion.Joint, 100);
+        Assert.Equal([KinematicIssueKind.JointLimit], Kinds(issues));
+        // Axis 1 needs 45° (limit 10°); the other ways (axis 1 at −135°) are further from allowed.
+        Assert.Equal((1, 10.0), (issues[0].Joint, issues[0].Limit));
+        Assert.Contains("the nearest needs joint 1 at 45°, 35° past its limit of 10° (allowed -10° to 10°)", issues[0].Reason);
     }
 
     [Fact]

@@ -83,7 +83,7 @@ public class RobotKinematicWarningsTests
         bot.SpeedTo(1000);
         bot.Rotate(new Vector(0, 1, 0), -40);
         ProgramWarning w = Assert.Single(bot.GetWarnings(), x => x.ActionId == 5 && x.Kind == KinematicIssueKind.WristSingularity);
-        Assert.EndsWith($"along the line, at {tip}; axes 4 and 6 may spin fast.", w.Message, StringComparison.Ordinal);
+        Assert.Contains($"along the line, at {tip}, so axes 4 and 6 line up", w.Message, StringComparison.Ordinal);
         Assert.DoesNotContain(bot.GetWarnings(), x => x.Kind == KinematicIssueKind.JointSpeed);
         Assert.True(Vector.Distance(tip, bot.GetCurrentPosition()!.Value) < 1e-9);
     }
@@ -177,7 +177,7 @@ public class RobotKinematicWarningsTests
     }
 
     [Fact]
-    public void ArcThroughUnreachablePoint_WarnsThroughPoint()
+    public void ArcThroughUnreachablePoint_WarnsWhereTheArcLeavesTheReach()
     {
         Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
         bot.AxesTo(0, 10, 10, 0, 45, 0);
@@ -185,7 +185,84 @@ public class RobotKinematicWarningsTests
         bot.ArcMotionTo(new Vector(2000, 0, start.Z), new Vector(start.X, start.Y + 20, start.Z));
         ProgramWarning w = Assert.Single(bot.GetWarnings());
         Assert.Equal(KinematicIssueKind.Unreachable, w.Kind);
-        Assert.StartsWith("Unreachable: through point: the target [2000, 0, ", w.Message);
+        // The arc is followed from the start: it leaves the reach on its way to the through point.
+        Assert.StartsWith("Unreachable: the arc leaves the reach of the ABB IRB 120 ", w.Message);
+        Assert.Contains("% along the arc, at [", w.Message);
         Assert.NotNull(bot.GetCurrentAxes());
+    }
+
+    [Fact]
+    public void JointMoveToACartesianTarget_AJointSwingsMoreThanHalfATurn_Warns()
+    {
+        // Axis 6 at 390° of its ±400°: turning the tool 30° more is only possible the other way round, 330° back.
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 45, 390);
+        bot.MotionMode("joint");
+        bot.Coordinates("local");
+        bot.Rotate(0, 0, 1, 30);
+
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal(KinematicIssueKind.LargeJointMove, w.Kind);
+        Assert.Equal(4, w.ActionId);
+        Assert.Equal("LargeJointMove: to reach this target in a joint move, joint 6 turns 330° (from 390° to 60°); make sure the tool and its cables have room to swing.", w.Message);
+    }
+
+    [Fact]
+    public void JointMoveTurningAJointLessThanHalfATurn_NoWarning()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 45, 90);
+        bot.MotionMode("joint");
+        bot.Coordinates("local");
+        bot.Rotate(0, 0, 1, 170);
+
+        Assert.Empty(bot.GetWarnings());
+        Assert.Equal(170, Math.Abs(bot.GetCurrentAxes()!.Value.J6 - 90), 6);
+    }
+
+    [Fact]
+    public void AxesTo_ExactlyAtTheWristSingularity_SaysStraightNotWithinZeroDegrees()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 0, 0);
+
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal("WristSingularity: axis 5 is exactly straight at the target, so axes 4 and 6 line up and the controller cannot tell them apart; axes 4 and 6 may spin fast.", w.Message);
+    }
+
+    [Fact]
+    public void AxesTo_NearTheWristSingularity_SaysHowFar()
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 1.5, 0);
+
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.StartsWith("WristSingularity: axis 5 is only 1.5° from straight at the target", w.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void AxesTo_WristCentreOnAxisOne_SaysOnTheLineNotZeroMillimetres()
+    {
+        // IRB 120: no offset between axes 1 and 2, so axis 1's singular line is the vertical through the base. Find the axis 3 angle
+        // that puts the wrist centre (72 mm behind the flange) on it, by bisection on the wrist centre's X.
+        RobotModel model = RobotModels.Get("IRB 120");
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        double WristX(double j3)
+        {
+            Pose flange = model.Kinematics.Forward(new Joints(0, 0, j3, 0, 45, 0));
+            return (flange.Position - flange.Rotation * new Vector(0, 0, 72)).X;
+        }
+        double lo = -110, hi = 70;
+        Assert.True(Math.Sign(WristX(lo)) != Math.Sign(WristX(hi)));
+        for (int i = 0; i < 100; i++)
+        {
+            double mid = (lo + hi) / 2;
+            if (Math.Sign(WristX(mid)) == Math.Sign(WristX(lo))) { lo = mid; } else { hi = mid; }
+        }
+        Joints j = new(0, 0, lo, 0, 45, 0);
+        bot.AxesTo(j);
+
+        ProgramWarning w = Assert.Single(bot.GetWarnings(), x => x.Kind == KinematicIssueKind.ShoulderSingularity);
+        Assert.StartsWith("ShoulderSingularity: the wrist is right on axis 1's singular line at the target", w.Message, StringComparison.Ordinal);
     }
 }

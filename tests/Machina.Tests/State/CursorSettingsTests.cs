@@ -236,6 +236,7 @@ public class CursorSettingsTests
 
         var ex = Assert.Throws<ArgumentException>(() => bot.TemperatureTo(200, "nozzle"));
 
-        Assert.Equal("\"nozzle\" is not a valid printer part; use one of: Extruder, Bed, Chamber.", ex.Message);
+        Assert.Equal("\"nozzle\" is not a valid printer part; use one of: Extruder, Bed, Chamber. (Parameter 'devicePart')", ex.Message);
+        Assert.Equal("devicePart", ex.ParamName);
     }
 }

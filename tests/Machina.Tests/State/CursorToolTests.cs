@@ -162,7 +162,7 @@ public class CursorToolTests
     {
         var ex = Assert.Throws<ArgumentException>(() => Tool.Create("t", Vector.Zero, Rotation.Identity, -1, Vector.Zero));
 
-        Assert.Equal("weight", ex.ParamName);
+        Assert.Equal("weightKg", ex.ParamName);
     }
 
     [Fact]

@@ -11,6 +11,12 @@ internal sealed class GCodeWriter
     /// <summary>Largest distance, mm, between an arc and the straight segments that replace it.</summary>
     internal const double ArcTolerance = 0.01;
 
+    /// <summary>Height, mm, kept above the highest point the nozzle reached before it travels away at the start or end of a print.</summary>
+    internal const double ClearanceMm = 10;
+
+    /// <summary>Feed rate, mm/min, of the rise above the print (the original ZMorph ending's 300).</summary>
+    private const double RiseFeed = 300;
+
     private readonly GCodeCompiler _compiler;
     private readonly GCodeFlavor _flavor;
     private readonly CompileJob _job;
@@ -20,6 +26,7 @@ internal sealed class GCodeWriter
     private LineSink _file = null!;
     private double _extrusionOrigin;
     private double _feed = double.NaN;
+    private double _highest = double.NegativeInfinity;
 
     internal GCodeWriter(GCodeCompiler compiler, CompileJob job, ProgramOutput output)
     {
@@ -253,6 +260,7 @@ internal sealed class GCodeWriter
             _file.Add("G1 F" + Rate(feed));
             _feed = feed;
         }
+        _highest = Math.Max(_highest, point.Z);
         StringBuilder sb = _sb.Clear();
         FixedPoint.Append(sb.Append(code).Append(" X"), point.X, 3);
         FixedPoint.Append(sb.Append(" Y"), point.Y, 3);
@@ -328,7 +336,19 @@ internal sealed class GCodeWriter
 
     private void EmitSequence(RobotAction action, bool start, RobotCursor c)
     {
-        _file.AddRange(start ? _flavor.StartSequence : _flavor.EndSequence);
+        if (start)
+        {
+            // Homing after something was printed must not drag the nozzle through it: rise first.
+            if (double.IsFinite(_highest))
+            {
+                _file.Add(RiseLine(_highest + ClearanceMm));
+            }
+            _file.AddRange(_flavor.StartSequence);
+        }
+        else
+        {
+            WriteEnd();
+        }
         if (start || _flavor.EndResetsExtruder)
         {
             _extrusionOrigin = c.ExtrudedLength;
@@ -341,6 +361,35 @@ internal sealed class GCodeWriter
             _file.Add("G1 F" + Rate(_feed));
         }
         NoCode(action);
+    }
+
+    /// <summary>
+    /// The ending: retract, rise straight up above everything printed (plus <see cref="ClearanceMm"/>), travel to the park position
+    /// at that height, then shut down.
+    /// </summary>
+    private void WriteEnd()
+    {
+        _file.AddRange(_flavor.EndRetract);
+        double rise = Math.Max(_flavor.ParkMinZ, _highest + ClearanceMm);
+        if (double.IsFinite(rise))
+        {
+            _file.Add(RiseLine(rise));
+            _highest = Math.Max(_highest, rise);
+        }
+        if (_flavor.ParkXY is (double x, double y))
+        {
+            StringBuilder sb = _sb.Clear().Append(_flavor.TravelCode).Append(" X");
+            FixedPoint.Append(sb, x, 3).Append(" Y");
+            _file.Add(FixedPoint.Append(sb, y, 3).ToString());
+        }
+        _file.AddRange(_flavor.EndShutdown);
+    }
+
+    private string RiseLine(double z)
+    {
+        StringBuilder sb = _sb.Clear().Append(_flavor.TravelCode).Append(" Z");
+        FixedPoint.Append(sb, z, 3).Append(" F");
+        return FixedPoint.Append(sb, RiseFeed, 3).ToString();
     }
 
     private void WarnIfTurned(RobotAction action, RobotCursor c)

@@ -17,6 +17,9 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
     private int _target;
+    private RobotAction? _lastMotion;
+    private double _lastRadius;
+    private bool _lastRadiusWarned;
 
     /// <summary>Second pass (variable targets only): one <c>targetN=…</c> per target, numbered 0, 1, 2… ; returns how many.</summary>
     internal int DeclareTargets()
@@ -62,6 +65,11 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
 
     private void Write(RobotAction action, RobotCursor cursor)
     {
+        if (action is ActionTranslation or ActionRotation or ActionTransformation or ActionArcMotion or ActionAxes)
+        {
+            CheckBlend(action, cursor);
+            CheckJointSpeed(action, cursor);
+        }
         switch (action)
         {
             case ActionTranslation or ActionRotation or ActionTransformation:
@@ -152,6 +160,76 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 break;
             default:
                 throw ActionKinds.Unhandled(action, "The URScript writer");
+        }
+    }
+
+    /// <summary>
+    /// A UR controller refuses blends that overlap (a protective stop with "blend radius too large"): a blend radius may be at most
+    /// half of each segment it joins. Checks this motion's segment against its own radius and the previous motion's.
+    /// </summary>
+    private void CheckBlend(RobotAction action, RobotCursor cursor)
+    {
+        if (cursor.LastPathLength is double length)
+        {
+            if (_lastMotion is not null && !_lastRadiusWarned && _lastRadius > length / 2)
+            {
+                WarnBlend(_lastMotion, _lastRadius, length, "the next");
+            }
+            if (cursor.Precision > length / 2)
+            {
+                WarnBlend(action, cursor.Precision, length, "this");
+                _lastRadiusWarned = true;
+            }
+            else
+            {
+                _lastRadiusWarned = false;
+            }
+        }
+        else
+        {
+            _lastRadiusWarned = false;
+        }
+        _lastMotion = action;
+        _lastRadius = cursor.Precision;
+    }
+
+    private void WarnBlend(RobotAction action, double radius, double length, string which) =>
+        job.Warn(action, $"the blend radius of {Num.G(radius)} mm is more than half of {which} motion ({Num.G(Math.Round(length, 3))} mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo({Num.G(Math.Floor(length / 2 * 1000) / 1000)}) or less around short motions.");
+
+    /// <summary>
+    /// movej takes the speed as the speed of the joint that moves most, in °/s (written in rad/s): warn when it is above that joint's
+    /// maximum for the robot's model (without known joints, above every joint's maximum).
+    /// </summary>
+    private void CheckJointSpeed(RobotAction action, RobotCursor cursor)
+    {
+        if (job.Model?.MaxJointSpeeds is not Joints max || !(action is ActionAxes || cursor.MotionType == MotionType.Joint) || action is ActionArcMotion)
+        {
+            return;
+        }
+        int joint = 0;
+        if (cursor.PrevAxes is Joints before && cursor.Axes is Joints after)
+        {
+            for (int k = 1; k < Joints.Count; k++)
+            {
+                if (Math.Abs(after[k] - before[k]) > Math.Abs(after[joint] - before[joint]))
+                {
+                    joint = k;
+                }
+            }
+        }
+        else
+        {
+            for (int k = 1; k < Joints.Count; k++)
+            {
+                if (max[k] > max[joint])
+                {
+                    joint = k;
+                }
+            }
+        }
+        if (cursor.Speed > max[joint])
+        {
+            job.Warn(action, $"joint motions take the speed as the speed of the joint that moves most, in degrees per second: {Num.G(cursor.Speed)}°/s is above the {job.Model.Name}'s maximum of {Num.G(max[joint])}°/s for joint {joint + 1}. Use SpeedTo({Num.G(max[joint])}) or less for joint motions.");
         }
     }
 

@@ -98,7 +98,7 @@ public class GCodeCompilerTests
 
         string[] body = Body(bot, RobotType.MARLIN);
 
-        Assert.Equal(["G0 X0 Y0 Z1 F1200", "G1 X10 Y0 Z1 E1", "G28", "G92 E0", "G1 X20 Y0 Z1 E1 F1200"], body);
+        Assert.Equal(["G0 X0 Y0 Z1 F1200", "G1 X10 Y0 Z1 E1", "G0 Z11 F300", "G28", "G92 E0", "G1 X20 Y0 Z1 E1 F1200"], body);
     }
 
     [Fact]
@@ -218,11 +218,54 @@ public class GCodeCompilerTests
                 "G1 F1500",
                 "G91", "G1 Z1.000 F200.000", "G90", "G28 X0.000 Y0.00", "G1 X117.500 Y125.000 F8000.000", "G28 Z0.000", "G92 E0.00000", "M82",
                 "G1 F1500",
-                "G92 E0.0000", "G91", "G1 E-3.00000 F1800.000", "G90", "G92 E0.00000", "G1 X117.500 Y220.000 Z30.581 F300.000",
+                "G92 E0.0000", "G91", "G1 E-3.00000 F1800.000", "G90", "G92 E0.00000", "G1 Z30.581 F300", "G1 X117.5 Y220",
                 "T0", "M104 S0", "T1", "M104 S0", "M140 S0", "M106 S0", "M84", "M220 S100",
             ],
             body);
         Assert.Equal(["G28", "G92 E0", "M104 S0", "M140 S0", "M107", "M84"], Body(ReInitialized(RobotType.MARLIN), RobotType.MARLIN));
+    }
+
+    /// <summary>A 100 mm tall print: the ending must rise above it before travelling, never go diagonally down through it.</summary>
+    [Theory]
+    [InlineData(RobotType.ZMORPH)]
+    [InlineData(RobotType.MARLIN)]
+    public void Compile_TerminateAfterATallPrint_RisesAboveThePrintBeforeTravelling(RobotType brand)
+    {
+        var bot = NewBot(brand);
+        bot.MoveTo(50, 50, 0.3);
+        bot.ExtrusionRateTo(0.05);
+        bot.Extrude();
+        bot.MoveTo(50, 50, 100);
+        bot.MoveTo(60, 50, 100);
+        bot.Extrude(false);
+        bot.MoveTo(60, 50, 40);
+        bot.Terminate();
+
+        string[] body = Body(bot, brand);
+        string[] ending = body.SkipWhile(l => !l.StartsWith(brand == RobotType.ZMORPH ? "G92 E0.0000" : "G0 X60 Y50 Z40")).Skip(1).ToArray();
+
+        Assert.Equal(
+            brand == RobotType.ZMORPH
+                ? ["G91", "G1 E-3.00000 F1800.000", "G90", "G92 E0.00000", "G1 Z110 F300", "G1 X117.5 Y220", "T0", "M104 S0", "T1", "M104 S0", "M140 S0", "M106 S0", "M84", "M220 S100"]
+                : ["G0 Z110 F300", "M104 S0", "M140 S0", "M107", "M84"],
+            ending);
+    }
+
+    [Theory]
+    [InlineData(RobotType.ZMORPH, "G1 Z35.5 F300", "G91")]
+    [InlineData(RobotType.MARLIN, "G0 Z35.5 F300", "G28")]
+    public void Compile_InitializeAfterPrinting_RisesAboveThePrintBeforeHoming(RobotType brand, string rise, string homingStart)
+    {
+        var bot = NewBot(brand);
+        bot.MoveTo(10, 10, 25.5);
+        bot.MoveTo(10, 10, 5);
+        bot.Initialize();
+
+        string[] body = Body(bot, brand);
+        int at = Array.IndexOf(body, rise);
+
+        Assert.True(at > 0, string.Join("\n", body));
+        Assert.Equal(homingStart, body[at + 1]);
     }
 
     private static Robot ReInitialized(RobotType brand)

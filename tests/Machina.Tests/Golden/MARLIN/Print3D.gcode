@@ -29,6 +29,7 @@ G1 X50 Y50 Z0.5 E8.01  ; [Move [0, -20, 0] mm]
 G1 X50 Y50 Z0.7 E8.02  ; [Move [0, 0, 0.2] mm]
 ; [Turn extrusion off]
 G0 X50 Y50 Z10.7  ; [Move [0, 0, 10] mm]
+G0 Z20.7 F300
 M104 S0
 M140 S0
 M107
