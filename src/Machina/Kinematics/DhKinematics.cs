@@ -134,6 +134,9 @@ public sealed class DhKinematics : IKinematics, ISolver
     /// <inheritdoc/>
     public bool IsWithinLimits(Joints joints) => KinematicsCore.IsWithinLimits(Model, joints);
 
+    /// <inheritdoc/>
+    public KinematicIssue? WhyNoSolution(Pose flange) => KinematicsCore.WhyNoSolution(this, Model, flange, Pose.Identity);
+
     /// <summary>
     /// The configuration, measured on the geometry (the same rules for every arm, so the flags stay consistent along a path): shoulder back
     /// when the wrist point is behind axis 1 (against axis 2 × axis 1), elbow down when the wrist point is on the far side of the line from
