@@ -82,12 +82,12 @@ public class BridgeServerTests
 
         Assert.Equal([6, 5, 4, 3, 2, 1, 0], executed.Select(e => e.GetProperty("pendTot").GetInt32()));
         Assert.Equal([6, 5, 4, 3, 2, 1, 0], executed.Select(e => e.GetProperty("pendDev").GetInt32()));
-        // The virtual controller starts at [374, 0, 630], tool down, joints at ABB home.
-        Assert.Equal("[374,0,630]", executed[0].Raw("pos"));
+        // The virtual controller (an IRB 1200-5/0.9) starts where its model puts the ABB home joints, tool down.
+        Assert.Equal("[451,0,807.1]", executed[0].Raw("pos"));
         Assert.Equal("[-1,0,0,0,1,0]", executed[0].Raw("ori"));
         Assert.Equal("[0,0,1,0]", executed[0].Raw("quat"));
         Assert.Equal("[0,0,0,0,90,0]", executed[0].Raw("axes"));
-        Assert.Equal("[374,0,630]", executed[1].Raw("pos"));
+        Assert.Equal("[451,0,807.1]", executed[1].Raw("pos"));
         Assert.Equal("[400,300,500]", executed[2].Raw("pos"));
         Assert.Equal("null", executed[2].Raw("axes"));
         Assert.Equal("[0,0,-1,0,1,0]", executed[3].Raw("ori"));
@@ -384,9 +384,9 @@ public class BridgeServerTests
     [Fact]
     public async Task StartAsync_BrandWithoutVirtualController_ThrowsAndReleasesThePort()
     {
-        var bridge = new BridgeServer(Options(o => o with { RobotFactory = null, Brand = RobotType.UR }));
+        var bridge = new BridgeServer(Options(o => o with { RobotFactory = null, Brand = RobotType.ZMORPH }));
         var e = await Assert.ThrowsAsync<NotSupportedException>(() => bridge.StartAsync());
-        Assert.Contains("no virtual controller for UR", e.Message, StringComparison.Ordinal);
+        Assert.Contains("no virtual controller for ZMORPH", e.Message, StringComparison.Ordinal);
         int port = bridge.Port;
         var listener = new TcpListener(IPAddress.Loopback, port);
         listener.Start(); // the bridge let go of its port

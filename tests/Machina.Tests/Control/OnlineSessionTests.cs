@@ -424,8 +424,12 @@ public class OnlineSessionTests
         Assert.False(bot.ConnectionManager("machina"));
         Assert.True(bot.ConnectionManager(ConnectionType.User));
         Assert.Throws<ArgumentException>(() => Robot.Create("H", "HUMAN").ControlMode("online"));
-        var kuka = Robot.Create("K", "KUKA");
-        Assert.Contains("only ABB, UR", Assert.Throws<NotSupportedException>(() => kuka.ControlMode("online")).Message, StringComparison.Ordinal);
-        Assert.Equal(ControlType.Offline, kuka.GetControlMode());
+        Assert.Throws<ArgumentException>(() => Robot.Create("Z", "ZMORPH").ControlMode("online"));
+        foreach (string arm in new[] { "UR", "KUKA" })
+        {
+            var other = Robot.Create("O", arm);
+            Assert.True(other.ControlMode("online"));
+            Assert.Equal(ControlType.Online, other.GetControlMode());
+        }
     }
 }
