@@ -14,7 +14,7 @@ public sealed partial class BridgeServer : IAsyncDisposable
     private readonly BridgeOptions _options;
     private readonly FrameHandler _frames;
     private readonly byte[] _page;
-    private readonly Lock _gate = new();
+    private readonly object _gate = new();
     private readonly List<Task> _connections = [];
     private BridgeClient[] _clients = [];
     private TcpListener? _listener;

@@ -1,12 +1,16 @@
+using System.Collections.Immutable;
+
 namespace Machina;
 
 /// <summary>
 /// A robot's own log. Subscribe to <see cref="Logged"/> (or set <see cref="Writer"/>) to see its messages; <see cref="Level"/>
-/// chooses how much is reported. Machina itself never writes to the console.
+/// chooses how much is reported. A host routes the log to its own logger with one call to
+/// <see cref="AddSink(Action{LogEntry}, LogLevel)"/>. Machina itself never writes to the console.
 /// </summary>
 public sealed class RobotLogger
 {
     private readonly string _source;
+    private ImmutableArray<Sink> _sinks = ImmutableArray<Sink>.Empty;
 
     internal RobotLogger(string source) => _source = source;
 
@@ -20,7 +24,38 @@ public sealed class RobotLogger
     public TextWriter? Writer { get; set; }
 
     /// <summary>True when a message of <paramref name="level"/> would be reported; check it before building costly texts.</summary>
-    public bool IsEnabled(LogLevel level) => level != LogLevel.NONE && level <= Level && (Logged is not null || Writer is not null);
+    public bool IsEnabled(LogLevel level) =>
+        level != LogLevel.NONE && ((level <= Level && (Logged is not null || Writer is not null)) || AnySinkWants(level));
+
+    /// <summary>
+    /// Sends every message of this robot up to <paramref name="level"/> to <paramref name="sink"/>, for example your
+    /// application's logger: <c>bot.Logger.AddSink(e => log.Log(Map(e.Level), "{Robot}: {Text}", e.Source, e.Message))</c>.
+    /// Each sink has its own level (<see cref="Level"/> applies only to <see cref="Logged"/> and <see cref="Writer"/>).
+    /// The sink is called on the thread that wrote the message; if it throws, the robot carries on.
+    /// Dispose the result to stop.
+    /// </summary>
+    public IDisposable AddSink(Action<LogEntry> sink, LogLevel level = LogLevel.INFO)
+    {
+        ArgumentNullException.ThrowIfNull(sink);
+        if (level < LogLevel.NONE || level > LogLevel.DEBUG)
+        {
+            throw new ArgumentOutOfRangeException(nameof(level), level, "The level must be one of LogLevel's values, from NONE to DEBUG.");
+        }
+        var added = new Sink(this, sink, level);
+        ImmutableInterlocked.Update(ref _sinks, (sinks, s) => sinks.Add(s), added);
+        return added;
+    }
+
+    /// <summary>
+    /// Writes every message of this robot up to <paramref name="level"/> to <paramref name="writer"/> as one line, such as
+    /// <c>HelloRobot WARNING: …</c>. If several threads log, give a thread-safe writer (<see cref="TextWriter.Synchronized"/>).
+    /// Dispose the result to stop.
+    /// </summary>
+    public IDisposable AddSink(TextWriter writer, LogLevel level = LogLevel.INFO)
+    {
+        ArgumentNullException.ThrowIfNull(writer);
+        return AddSink(entry => writer.WriteLine(entry.ToString()), level);
+    }
 
     /// <summary>Reports an error.</summary>
     public void Error(string message) => Write(LogLevel.ERROR, message);
@@ -45,14 +80,53 @@ public sealed class RobotLogger
             return;
         }
         var entry = new LogEntry(_source, level, message);
-        try
+        if (level <= Level)
         {
-            Logged?.Invoke(this, entry);
-            Writer?.WriteLine(entry.ToString());
+            try
+            {
+                Logged?.Invoke(this, entry);
+                Writer?.WriteLine(entry.ToString());
+            }
+            catch (Exception)
+            {
+                // A failing log subscriber must never stop the robot.
+            }
         }
-        catch (Exception)
+        foreach (Sink sink in _sinks)
         {
-            // A failing log subscriber must never stop the robot.
+            if (level <= sink.Level)
+            {
+                try
+                {
+                    sink.Receive(entry);
+                }
+                catch (Exception)
+                {
+                    // Nor a failing sink; the other sinks still receive the entry.
+                }
+            }
         }
+    }
+
+    private bool AnySinkWants(LogLevel level)
+    {
+        foreach (Sink sink in _sinks)
+        {
+            if (level <= sink.Level)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>One sink added by a host; disposing it removes it.</summary>
+    private sealed class Sink(RobotLogger owner, Action<LogEntry> receive, LogLevel level) : IDisposable
+    {
+        public LogLevel Level { get; } = level;
+
+        public Action<LogEntry> Receive { get; } = receive;
+
+        public void Dispose() => ImmutableInterlocked.Update(ref owner._sinks, (sinks, s) => sinks.Remove(s), this);
     }
 }

@@ -14,7 +14,9 @@ internal static class InstructionCatalog
     private static readonly Dictionary<string, string> ProperNames =
         Table.Keys.ToDictionary(k => k, k => k, StringComparer.OrdinalIgnoreCase);
 
+#if NET9_0_OR_GREATER
     private static readonly Dictionary<string, Overload[]>.AlternateLookup<ReadOnlySpan<char>> BySpan = Table.GetAlternateLookup<ReadOnlySpan<char>>();
+#endif
 
     /// <summary>The overloads of an exact (case-sensitive) name, or null.</summary>
     internal static Overload[]? Find(string name) => Table.GetValueOrDefault(name);
@@ -22,8 +24,14 @@ internal static class InstructionCatalog
     /// <summary>The overloads of an exact (case-sensitive) name read from text, with the name as a string, without allocating; false when unknown.</summary>
     internal static bool TryFind(ReadOnlySpan<char> name, out string key, out Overload[] overloads)
     {
+#if NET9_0_OR_GREATER
         bool found = BySpan.TryGetValue(name, out string? actual, out Overload[]? value);
-        key = actual ?? "";
+#else
+        // .NET 8 has no span lookup: the name is allocated (only the .NET 10 build parses without allocating).
+        string actual = name.ToString();
+        bool found = Table.TryGetValue(actual, out Overload[]? value);
+#endif
+        key = found ? actual! : "";
         overloads = value ?? [];
         return found;
     }

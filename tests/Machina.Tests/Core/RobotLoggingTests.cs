@@ -68,4 +68,75 @@ public class RobotLoggingTests
         Assert.True(bot.Move(1, 0, 0));
         Assert.Equal(new Point(1, 0, 0), bot.GetCurrentPosition());
     }
+
+    [Fact]
+    public void AddSink_TwoRobots_EachSinkReceivesExactlyItsRobotsEntriesAtItsLevel()
+    {
+        var alpha = Robot.Create("Alpha", "ABB");
+        var beta = Robot.Create("Beta", "ABB");
+        var alphaLog = new List<LogEntry>();
+        var betaLog = new List<LogEntry>();
+        alpha.Logger.AddSink(alphaLog.Add, LogLevel.WARNING);
+        beta.Logger.AddSink(betaLog.Add, LogLevel.VERBOSE);
+
+        foreach (Robot bot in new[] { alpha, beta })
+        {
+            bot.MoveTo(400, 300, 500);
+            bot.Move(0, 0, 250);
+            bot.Logger.Info("info text");
+            Assert.Throws<ActionRefusedException>(() => bot.PopSettings());
+        }
+
+        const string refusal = "Refused PopSettings(); there are no saved settings to restore; every PopSettings needs an earlier PushSettings.";
+        Assert.Equal([new LogEntry("Alpha", LogLevel.WARNING, refusal)], alphaLog);
+        Assert.Equal(
+            [
+                new LogEntry("Beta", LogLevel.VERBOSE, "TCP position at [400, 300, 750]"),
+                new LogEntry("Beta", LogLevel.INFO, "info text"),
+                new LogEntry("Beta", LogLevel.WARNING, refusal),
+            ],
+            betaLog);
+    }
+
+    [Fact]
+    public void AddSink_LevelIndependentOfLoggerLevel_AndDisposeStops()
+    {
+        var bot = Robot.Create("Host", "ABB");
+        bot.Logger.Level = LogLevel.ERROR;
+        var events = new List<LogEntry>();
+        bot.Logger.Logged += (_, e) => events.Add(e);
+        var writer = new StringWriter { NewLine = "\n" };
+        var sinkLog = new List<LogEntry>();
+
+        IDisposable toWriter = bot.Logger.AddSink(writer, LogLevel.DEBUG);
+        using (bot.Logger.AddSink(sinkLog.Add, LogLevel.INFO))
+        {
+            Assert.True(bot.Logger.IsEnabled(LogLevel.DEBUG));
+            bot.Logger.Debug("details");
+            bot.Logger.Info("hello");
+            bot.Logger.Error("broken");
+        }
+        toWriter.Dispose();
+        bot.Logger.Error("after");
+
+        Assert.Equal("Host DEBUG: details\nHost INFO: hello\nHost ERROR: broken\n", writer.ToString());
+        Assert.Equal([new LogEntry("Host", LogLevel.INFO, "hello"), new LogEntry("Host", LogLevel.ERROR, "broken")], sinkLog);
+        Assert.Equal([new LogEntry("Host", LogLevel.ERROR, "broken"), new LogEntry("Host", LogLevel.ERROR, "after")], events);
+        Assert.False(bot.Logger.IsEnabled(LogLevel.WARNING));
+    }
+
+    [Fact]
+    public void AddSink_ThrowingSink_OtherSinksStillReceive()
+    {
+        var bot = Robot.Create("Sturdy", "ABB");
+        var log = new List<LogEntry>();
+        bot.Logger.AddSink(_ => throw new InvalidOperationException("bad sink"));
+        bot.Logger.AddSink(log.Add);
+
+        bot.Logger.Warning("careful");
+
+        Assert.Equal([new LogEntry("Sturdy", LogLevel.WARNING, "careful")], log);
+        Assert.Throws<ArgumentNullException>(() => bot.Logger.AddSink((Action<LogEntry>)null!));
+        Assert.Throws<ArgumentOutOfRangeException>(() => bot.Logger.AddSink(log.Add, (LogLevel)9));
+    }
 }

@@ -47,7 +47,7 @@ internal sealed partial class UrDriver
 
     private static readonly string[] RecipeTypes = ["DOUBLE", "VECTOR6D", "VECTOR6D", "INT32", "INT32", "UINT32", "INT32", "INT32"];
 
-    private readonly Lock _rtdeGate = new();
+    private readonly object _rtdeGate = new();
     private readonly RtdePackageReader _rtdeReader = new();
     private TcpLink? _rtdeLink;
     private TaskCompletionSource<byte[]>? _reply;
