@@ -55,9 +55,12 @@ public sealed partial class Robot
 
     private CompileJob CreateCompileJob(CompileOptions? options)
     {
-        if (_online is not null)
+        if (_session is { } session)
         {
-            throw new InvalidOperationException("Compile works in offline mode; this robot is streaming its actions to a controller.");
+            throw new InvalidOperationException(session.IsConnected
+                ? "Compile works in offline mode; this robot is streaming its actions to a controller."
+                : "Compile works in offline mode; this robot is in online mode (not connected), so its actions wait to be streamed. "
+                  + "Call ControlMode(\"offline\") first to compile the actions issued from then on.");
         }
         RobotAction[] actions;
         RobotCursor start = new();

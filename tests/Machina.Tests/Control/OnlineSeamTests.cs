@@ -212,4 +212,21 @@ public class OnlineSeamTests
         bot.ControlMode("offline");
         Assert.Equal(50, Volatile.Read(ref issued));
     }
+
+    [Fact]
+    public void Compile_OnlineAfterAFailedConnect_SaysNotConnectedAndHowToCompile()
+    {
+        var bot = Robot.Create("Failed", "ABB");
+        bot.ConnectTimeout = TimeSpan.FromMilliseconds(200);
+        bot.ControlMode("online");
+        using var closed = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
+        closed.Start();
+        int port = ((System.Net.IPEndPoint)closed.LocalEndpoint).Port;
+        closed.Stop();   // nothing listens there any more
+        Assert.ThrowsAny<MachinaException>(() => bot.Connect("127.0.0.1", port));
+
+        var error = Assert.Throws<InvalidOperationException>(() => bot.Compile());
+        Assert.Equal("Compile works in offline mode; this robot is in online mode (not connected), so its actions wait to be streamed. "
+            + "Call ControlMode(\"offline\") first to compile the actions issued from then on.", error.Message);
+    }
 }
