@@ -9,7 +9,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     private readonly RobotLogger _log;
     private readonly TimeProvider _time;
     private readonly AbbMessageReader _reader = new();
-    private readonly Queue<int> _awaiting = new();
+    private readonly AwaitedAcknowledgements _awaiting = new(WireId);
     private readonly List<AbbRequest> _requests = new(4);
     private readonly TaskCompletionSource<DeviceHandshake> _handshake = new(TaskCreationOptions.RunContinuationsAsynchronously);
     private byte[] _encoded = new byte[1024];
@@ -132,10 +132,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
     /// <remarks>Also how <see cref="Send"/> records an action it sent: its acknowledgement is awaited in order.</remarks>
     public void Adopt(int actionId)
     {
-        lock (_awaiting)
-        {
-            _awaiting.Enqueue(actionId);
-        }
+        _awaiting.Expect(actionId);
     }
 
     /// <inheritdoc/>
@@ -182,24 +179,7 @@ internal sealed partial class AbbDriver : IDeviceDriver, ILinkReceiver
 
     private void Acknowledge(int wireId)
     {
-        int actionId = wireId;
-        lock (_awaiting)
-        {
-            int index = 0, found = -1;
-            foreach (int awaiting in _awaiting)
-            {
-                if (WireId(awaiting) == wireId)
-                {
-                    found = index;
-                    break;
-                }
-                index++;
-            }
-            for (int i = 0; i <= found; i++)
-            {
-                actionId = _awaiting.Dequeue();
-            }
-        }
+        int actionId = _awaiting.Resolve(wireId);
         _listener?.OnAcknowledged(actionId);
     }
 

@@ -15,7 +15,7 @@ internal sealed partial class UrDriver : IDeviceDriver, ILinkReceiver
     private readonly DeviceContext _context;
     private readonly RobotLogger _log;
     private readonly TimeProvider _time;
-    private readonly Queue<int> _awaiting = new();
+    private readonly AwaitedAcknowledgements _awaiting = new(id => id);
     private readonly TaskCompletionSource<(string Version, int[] Pose)> _handshake = new(TaskCreationOptions.RunContinuationsAsynchronously);
     private readonly List<int> _response = new(16);
     private readonly byte[] _partial = new byte[4];
@@ -127,10 +127,7 @@ internal sealed partial class UrDriver : IDeviceDriver, ILinkReceiver
     /// <inheritdoc/>
     public void Adopt(int actionId)
     {
-        lock (_awaiting)
-        {
-            _awaiting.Enqueue(actionId);
-        }
+        _awaiting.Expect(actionId);
     }
 
     /// <inheritdoc/>
@@ -198,24 +195,7 @@ internal sealed partial class UrDriver : IDeviceDriver, ILinkReceiver
 
     private void Acknowledge(int id)
     {
-        int actionId = id;
-        lock (_awaiting)
-        {
-            int index = 0, found = -1;
-            foreach (int awaiting in _awaiting)
-            {
-                if (awaiting == id)
-                {
-                    found = index;
-                    break;
-                }
-                index++;
-            }
-            for (int i = 0; i <= found; i++)
-            {
-                actionId = _awaiting.Dequeue();
-            }
-        }
+        int actionId = _awaiting.Resolve(id);
         _listener?.OnAcknowledged(actionId);
     }
 
