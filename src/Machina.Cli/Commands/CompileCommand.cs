@@ -57,57 +57,40 @@ internal static class CompileCommand
     internal sealed record CompileResult(IReadOnlyList<string> Paths, int Actions, int Warnings);
 
     /// <summary>
-    /// THE compile of the command line, in one place: reads the program statement by statement, applies and checks each (errors
-    /// and warnings with their line), and writes the brand's files into <paramref name="folder"/>.
-    /// Today the library compiles from a list of actions, so the actions are kept until the end (memory grows with the program);
-    /// the lines and files themselves are streamed. When the library offers a streaming file-to-folder compile, only this method changes.
+    /// THE compile of the command line, in one place: the library's streaming compile (<c>Instructions.CompileToFolder</c>) reads the
+    /// program statement by statement, applies and checks each, and writes the brand's files into <paramref name="folder"/>, so memory
+    /// does not grow with the program. Errors and warnings are reported with their line and column; of the warnings, the library keeps
+    /// the first <see cref="Instructions.MaxWarningsKept"/> (all are counted, and all are comments in the program).
     /// </summary>
     /// <exception cref="CliException">An instruction is malformed or cannot be applied (located), or the folder cannot be written.</exception>
     internal static Task<CompileResult> CompileStreamAsync(ProgramReader reader, RobotType brand, RobotModel? model, CompileOptions options, string folder, CliContext context)
     {
-        var replay = new ProgramReplay(model);
-        var actions = new List<RobotAction>();
-        var places = new List<(int Line, int Column)>();
-        var problems = new List<string>();
-        int warnings = 0;
-        foreach (ProgramStatement statement in reader.Read(context.Cancellation))
-        {
-            string? refusal = replay.Apply(statement.Action, problems);
-            if (refusal is not null)
-            {
-                throw CliException.At(reader.DisplayName, statement.Line, statement.Column, $"{statement.Action.ToInstruction()} cannot be applied: {refusal}");
-            }
-            foreach (string problem in problems)
-            {
-                Warn(context, reader.DisplayName, statement.Line, statement.Column, statement.Action, problem);
-                warnings++;
-            }
-            actions.Add(statement.Action);
-            places.Add((statement.Line, statement.Column));
-        }
-        var job = new CompileJob(reader.ProgramName, actions, options) { Model = model };
-        IReadOnlyList<string> paths;
+        FolderCompileResult result;
         try
         {
-            paths = Compilers.For(brand).CompileToFolder(job, folder);
+            result = reader.FilePath is string file
+                ? Instructions.CompileToFolder(file, brand, folder, options, reader.ProgramName, model: model, cancellationToken: context.Cancellation)
+                : Instructions.CompileToFolder(reader.Input, brand, folder, options, reader.ProgramName, model: model, cancellationToken: context.Cancellation);
+        }
+        catch (InstructionParseException ex)
+        {
+            throw CliException.At(reader.DisplayName, ex.Line, ex.Column, ex.Problem);
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {
-            throw new CliException($"Cannot write into \"{folder}\": {ex.Message}");
+            throw new CliException($"Cannot compile \"{reader.DisplayName}\" into \"{folder}\": {ex.Message}");
         }
-        // Kinematic issues were reported while reading; what the brand cannot express is known only now.
-        foreach (ProgramWarning warning in job.Warnings.Where(w => w.Kind is null))
+        foreach (ProgramWarning warning in result.Warnings)
         {
-            (int line, int column) = warning.ActionId >= 1 && warning.ActionId <= places.Count ? places[warning.ActionId - 1] : (0, 0);
-            context.Stderr.WriteLine($"{reader.DisplayName}:{line}:{column}: warning: {warning.Instruction} {warning.Message}");
-            warnings++;
+            context.Stderr.WriteLine($"{reader.DisplayName}:{warning.Line ?? 0}:{warning.Column ?? 0}: warning: {warning.Instruction} {warning.Message}");
         }
-        return Task.FromResult(new CompileResult(paths, actions.Count, warnings));
+        if (result.WarningCount > result.Warnings.Count)
+        {
+            int more = result.WarningCount - result.Warnings.Count;
+            context.Stderr.WriteLine($"{reader.DisplayName}: and {more} more warning{(more == 1 ? "" : "s")} (each is a comment in the program).");
+        }
+        return Task.FromResult(new CompileResult(result.Paths, result.ActionCount, result.WarningCount));
     }
-
-    /// <summary>Writes <c>file:line:column: warning: instruction problem</c> to standard error.</summary>
-    internal static void Warn(CliContext context, string file, int line, int column, RobotAction action, string problem) =>
-        context.Stderr.WriteLine($"{file}:{line}:{column}: warning: {action.ToInstruction()} {problem}");
 
     /// <summary>A path relative to the working folder when it is inside it, else the full path.</summary>
     internal static string Display(string path, CliContext context)

@@ -18,8 +18,9 @@ internal sealed class ProgramReader : IDisposable
     private readonly List<string> _lines = [];
     private int _lineNumber;
 
-    private ProgramReader(TextReader reader, bool ownsReader, string displayName, string programName)
+    private ProgramReader(TextReader reader, bool ownsReader, string displayName, string programName, string? filePath = null)
     {
+        FilePath = filePath;
         _reader = reader;
         _ownsReader = ownsReader;
         DisplayName = displayName;
@@ -31,6 +32,12 @@ internal sealed class ProgramReader : IDisposable
 
     /// <summary>The name compiled programs get: the name given to <see cref="Open"/>, else the file name without extension.</summary>
     internal string ProgramName { get; }
+
+    /// <summary>The full path of the program file, or null for standard input.</summary>
+    internal string? FilePath { get; }
+
+    /// <summary>The text being read (the file, or standard input), for a reader of its own such as the library's compile.</summary>
+    internal TextReader Input => _reader;
 
     /// <summary>True when the program comes from standard input.</summary>
     internal bool IsStdin => !_ownsReader;
@@ -63,7 +70,7 @@ internal sealed class ProgramReader : IDisposable
         {
             throw new CliException($"Cannot read \"{path}\": {ex.Message}");
         }
-        return new ProgramReader(reader, true, path, CompileJob.SafeProgramName(name ?? Path.GetFileNameWithoutExtension(full)));
+        return new ProgramReader(reader, true, path, CompileJob.SafeProgramName(name ?? Path.GetFileNameWithoutExtension(full)), full);
     }
 
     /// <summary>The actions, in order, read as they are enumerated.</summary>

@@ -81,7 +81,8 @@ internal sealed class CompileJob
         WarningCount++;
         if (_warnings.Count < MaxWarningsKept)
         {
-            _warnings.Add(Source is null ? warning : warning with { Line = Source.LineOf(warning.ActionId) });
+            (int Line, int Column)? at = Source?.PositionOf(warning.ActionId);
+            _warnings.Add(at is null ? warning : warning with { Line = at.Value.Line, Column = at.Value.Column });
         }
     }
 

@@ -1,6 +1,6 @@
 namespace Machina;
 
-/// <summary>What <see cref="Instructions.CompileToFolder(string, RobotType, string, CompileOptions?, string?, string, CancellationToken)"/> wrote: the files and the warnings.</summary>
+/// <summary>What <see cref="Instructions.CompileToFolder(string, RobotType, string, CompileOptions?, string?, string, RobotModel?, CancellationToken)"/> wrote: the files and the warnings.</summary>
 public sealed class FolderCompileResult
 {
     internal FolderCompileResult(string programName, RobotType language, IReadOnlyList<string> paths, IReadOnlyList<ProgramWarning> warnings, int warningCount, int actionCount)
@@ -23,7 +23,7 @@ public sealed class FolderCompileResult
     public IReadOnlyList<string> Paths { get; }
 
     /// <summary>
-    /// What the device could not do exactly as asked, each with the line of its instruction (<see cref="ProgramWarning.Line"/>):
+    /// What the device could not do exactly as asked, each with the line and column of its instruction (<see cref="ProgramWarning.Line"/>, <see cref="ProgramWarning.Column"/>):
     /// the first <see cref="Instructions.MaxWarningsKept"/>, so that memory stays small; <see cref="WarningCount"/> counts them all.
     /// Each warning is also written as a comment in the program.
     /// </summary>

@@ -27,8 +27,8 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// <summary>Number of actions in the text, known after the first complete pass (0 before).</summary>
     internal int Count { get; private set; }
 
-    /// <summary>The line of the action with id <paramref name="actionId"/> if it is the action returned last, else null.</summary>
-    internal int? LineOf(int actionId) => _current is not null && _current.Id == actionId ? _line : null;
+    /// <summary>The line and column of the action with id <paramref name="actionId"/> if it is the action returned last, else null.</summary>
+    internal (int Line, int Column)? PositionOf(int actionId) => _current is not null && _current.Id == actionId ? (_line, _column) : null;
 
     /// <summary>The error for an action that cannot be applied: an instruction error at the action's position.</summary>
     internal InstructionParseException Refused(RobotAction action, string reason)

@@ -55,13 +55,15 @@ public static class Instructions
     /// <param name="options">Compile options (inline targets, human comments, timestamp); the defaults when null.</param>
     /// <param name="programName">The program's name; by default the file's name without extension. It is made safe for robot languages.</param>
     /// <param name="newLine">Line ending of the files written: "\n" (default) or "\r\n".</param>
+    /// <param name="model">The robot arm model (e.g. from <c>RobotModels</c>), or null: with a model every motion is checked for reach,
+    /// joint limits, singularities and joint speeds, as on a robot with that model, and problems become warnings.</param>
     /// <param name="cancellationToken">Stops a long compilation; the files being written are then removed.</param>
-    /// <returns>The paths written and the warnings, each with the line of its instruction.</returns>
+    /// <returns>The paths written and the warnings, each with the line and column of its instruction.</returns>
     /// <exception cref="InstructionParseException">A statement is malformed, or cannot be applied in the state the statements before it
     /// leave (e.g. a relative move before any absolute one); carries the line and column. No file is written or replaced then.</exception>
     /// <exception cref="IOException">The file cannot be read or the folder cannot be written.</exception>
     public static FolderCompileResult CompileToFolder(string instructionFile, RobotType language, string folderPath, CompileOptions? options = null,
-        string? programName = null, string newLine = "\n", CancellationToken cancellationToken = default)
+        string? programName = null, string newLine = "\n", RobotModel? model = null, CancellationToken cancellationToken = default)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(instructionFile);
         if (!File.Exists(instructionFile))
@@ -69,7 +71,7 @@ public static class Instructions
             throw new FileNotFoundException($"The instruction file \"{instructionFile}\" does not exist.", instructionFile);
         }
         string name = programName ?? Path.GetFileNameWithoutExtension(instructionFile);
-        return CompileToFolder(() => new StreamReader(instructionFile, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, name, newLine, cancellationToken);
+        return CompileToFolder(() => new StreamReader(instructionFile, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, name, newLine, model, cancellationToken);
     }
 
     /// <summary>
@@ -83,11 +85,12 @@ public static class Instructions
     /// <param name="options">Compile options; the defaults when null.</param>
     /// <param name="programName">The program's name (default "Machina"), made safe for robot languages.</param>
     /// <param name="newLine">Line ending of the files written: "\n" (default) or "\r\n".</param>
+    /// <param name="model">The robot arm model, or null: with a model every motion is checked, as in the file overload.</param>
     /// <param name="cancellationToken">Stops a long compilation; the files being written are then removed.</param>
-    /// <returns>The paths written and the warnings, each with the line of its instruction.</returns>
+    /// <returns>The paths written and the warnings, each with the line and column of its instruction.</returns>
     /// <exception cref="InstructionParseException">A statement is malformed or cannot be applied; carries the line and column. No file is written or replaced then.</exception>
     public static FolderCompileResult CompileToFolder(TextReader instructions, RobotType language, string folderPath, CompileOptions? options = null,
-        string programName = "Machina", string newLine = "\n", CancellationToken cancellationToken = default)
+        string programName = "Machina", string newLine = "\n", RobotModel? model = null, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(instructions);
         string spool = Path.GetTempFileName();
@@ -103,7 +106,7 @@ public static class Instructions
                     copy.Write(buffer, 0, read);
                 }
             }
-            return CompileToFolder(() => new StreamReader(spool, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, programName, newLine, cancellationToken);
+            return CompileToFolder(() => new StreamReader(spool, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, programName, newLine, model, cancellationToken);
         }
         finally
         {
@@ -112,7 +115,7 @@ public static class Instructions
     }
 
     private static FolderCompileResult CompileToFolder(Func<TextReader> open, RobotType language, string folderPath, CompileOptions? options,
-        string programName, string newLine, CancellationToken cancellationToken)
+        string programName, string newLine, RobotModel? model, CancellationToken cancellationToken)
     {
         Compiler compiler = Compilers.For(EnumText.RequireDefined(language, nameof(language)));
         ArgumentException.ThrowIfNullOrWhiteSpace(folderPath);
@@ -121,7 +124,7 @@ public static class Instructions
             throw new ArgumentException("Lines end with \"\\n\" or \"\\r\\n\".", nameof(newLine));
         }
         var source = new InstructionSource(open, cancellationToken);
-        var job = new CompileJob(CompileJob.SafeProgramName(programName), source, options ?? CompileOptions.Default) { Source = source, MaxWarningsKept = MaxWarningsKept };
+        var job = new CompileJob(CompileJob.SafeProgramName(programName), source, options ?? CompileOptions.Default) { Source = source, MaxWarningsKept = MaxWarningsKept, Model = model };
         IReadOnlyList<string> paths = compiler.CompileToFolder(job, folderPath, newLine, replaceAtEnd: true);
         return new FolderCompileResult(job.ProgramName, language, paths, job.Warnings, job.WarningCount, source.Count);
     }

@@ -12,6 +12,9 @@ public sealed record ProgramWarning(int ActionId, string Instruction, string Mes
     /// <summary>When the program was compiled from instruction text: the line (from 1) of the action's statement; otherwise null.</summary>
     public int? Line { get; init; }
 
+    /// <summary>When the program was compiled from instruction text: the column (from 1) where the action's statement starts; otherwise null.</summary>
+    public int? Column { get; init; }
+
     /// <summary>Text such as <c>#4 Rotate(0,1,0,-90); rotations are not applicable to a 3D printer</c>.</summary>
     public override string ToString() => ActionId >= 0 ? $"#{ActionId} {Instruction} {Message}" : Message;
 }

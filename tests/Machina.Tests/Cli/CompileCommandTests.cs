@@ -92,7 +92,7 @@ public class CompileCommandTests
         CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "ur", "--out", "out");
 
         Assert.Equal(1, result.Exit);
-        Assert.StartsWith("p.machina:2:10: error: PopSettings(); cannot be applied:", result.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith("p.machina:2:10: error: cannot apply \"PopSettings();\":", result.Stderr, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -104,7 +104,7 @@ public class CompileCommandTests
         CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "abb", "--out", "out");
 
         Assert.Equal(1, result.Exit);
-        Assert.StartsWith("p.machina:3:4: error: Move(0,0,10); cannot be applied:", result.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith("p.machina:3:4: error: cannot apply \"Move(0,0,10);\":", result.Stderr, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -156,6 +156,22 @@ public class CompileCommandTests
         Assert.Equal(0, result.Exit);
         Assert.Contains("p.machina:4:1: warning: Rotate(0,0,1,45);", result.Stderr, StringComparison.Ordinal);
         Assert.Contains("1 warning.", result.Stderr, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task Compile_MoreWarningsThanKept_PrintsTheFirstAndCountsTheRest()
+    {
+        using var cli = new CliRunner();
+        cli.Write("p.machina", "MoveTo(100, 100, 10);\n" + string.Concat(Enumerable.Repeat("Rotate(0, 0, 1, 1);\n", Instructions.MaxWarningsKept + 5)));
+
+        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "zmorph", "--out", "out");
+
+        Assert.Equal(0, result.Exit);
+        string[] warnings = result.Stderr.Split('\n').Where(l => l.Contains(": warning: Rotate(", StringComparison.Ordinal)).ToArray();
+        Assert.Equal(Instructions.MaxWarningsKept, warnings.Length);
+        Assert.StartsWith($"p.machina:{Instructions.MaxWarningsKept + 1}:1: warning:", warnings[^1], StringComparison.Ordinal);
+        Assert.Contains("p.machina: and 5 more warnings", result.Stderr, StringComparison.Ordinal);
+        Assert.Contains($"{Instructions.MaxWarningsKept + 5} warnings.", result.Stderr, StringComparison.Ordinal);
     }
 
     [Fact]

@@ -97,7 +97,7 @@ public sealed class InstructionFileCompileTests : IDisposable
     }
 
     [Fact]
-    public void CompileToFolder_Warning_CarriesLineOfItsStatement()
+    public void CompileToFolder_Warning_CarriesLineAndColumnOfItsStatement()
     {
         string file = Path.Combine(_root, "print.machina");
         File.WriteAllText(file, "MoveTo(100, 0, 10);\n\n// turn\nMove(1, 0, 0); Rotate(0, 0, 1, 90);\n");
@@ -106,8 +106,27 @@ public sealed class InstructionFileCompileTests : IDisposable
 
         ProgramWarning warning = Assert.Single(result.Warnings);
         Assert.Equal(3, warning.ActionId);
-        Assert.Equal(4, warning.Line);
+        Assert.Equal((4, 16), (warning.Line, warning.Column));
         Assert.StartsWith("Rotate(", warning.Instruction, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void CompileToFolder_WithModel_WarnsOfUnreachableTargetsAsARobotOfThatModel()
+    {
+        string file = Path.Combine(_root, "far.machina");
+        const string Program = "MoveTo(300, 0, 400);\n  MoveTo(2000, 0, 400);\n";
+        File.WriteAllText(file, Program);
+        RobotModel model = RobotModels.Get("IRB 120");
+
+        FolderCompileResult withModel = Instructions.CompileToFolder(file, RobotType.ABB, Path.Combine(_root, "model"), model: model);
+        FolderCompileResult without = Instructions.CompileToFolder(file, RobotType.ABB, Path.Combine(_root, "none"));
+
+        ProgramWarning warning = Assert.Single(withModel.Warnings);
+        Assert.Equal((2, 2, 3, KinematicIssueKind.Unreachable), (warning.ActionId, warning.Line, warning.Column, warning.Kind));
+        Assert.Equal(0, without.WarningCount);
+        Robot robot = Robot.Create("far", RobotType.ABB, model);
+        robot.Do(Program);
+        Assert.Equal(robot.Compile().Files[0].ToText(), File.ReadAllText(withModel.Paths[0]));
     }
 
     [Fact]

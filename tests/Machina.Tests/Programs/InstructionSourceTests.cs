@@ -49,20 +49,20 @@ public class InstructionSourceTests
 
         Assert.Equal(Enumerable.Range(1, 10), firstTen.Select(a => a.Id));
         Assert.Equal(0, source.Count);
-        Assert.Equal(10, source.LineOf(10));
+        Assert.Equal((10, 1), source.PositionOf(10));
     }
 
     [Fact]
-    public void LineOf_CurrentAction_ItsLine()
+    public void PositionOf_CurrentAction_ItsLineAndColumn()
     {
         var source = new InstructionSource(() => new StringReader("MoveTo(0, 0, 0);\n\n  Wait(5); Move(1, 0, 0);\n"), CancellationToken.None);
-        var lines = new List<int?>();
+        var positions = new List<(int, int)?>();
         foreach (RobotAction action in source)
         {
-            lines.Add(source.LineOf(action.Id));
-            Assert.Null(source.LineOf(action.Id + 1));
+            positions.Add(source.PositionOf(action.Id));
+            Assert.Null(source.PositionOf(action.Id + 1));
         }
-        Assert.Equal([1, 3, 3], lines);
+        Assert.Equal([(1, 1), (3, 3), (3, 12)], positions);
     }
 
     /// <summary>Gives the text in small reads, then throws an IOException at <c>failAt</c>.</summary>
