@@ -13,6 +13,13 @@ internal static class AbbRequestParser
     {
         request = default;
         var rest = statement.Trim();
+        // .NET number parsing skips trailing NUL characters, RAPID's StrToVal does not: refuse every control character
+        // other than the tab separator before reading any token.
+        if (ContainsControlOtherThanTab(rest))
+        {
+            error = $"received a control character in \"{Printable(statement)}\"";
+            return false;
+        }
         if (rest.Length < 2 && !(rest.Length == 1 && char.IsAsciiDigit(rest[0])))
         {
             error = $"statement too short: \"{statement}\"";
@@ -79,6 +86,29 @@ internal static class AbbRequestParser
         }
         error = null;
         return true;
+    }
+
+    private static bool ContainsControlOtherThanTab(ReadOnlySpan<char> text)
+    {
+        foreach (char c in text)
+        {
+            if (char.IsControl(c) && c != '\t')
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>The statement with control characters shown as <c>\uXXXX</c>, for a readable reason.</summary>
+    private static string Printable(ReadOnlySpan<char> text)
+    {
+        var sb = new System.Text.StringBuilder(text.Length);
+        foreach (char c in text)
+        {
+            sb.Append(char.IsControl(c) ? $"\\u{(int)c:x4}" : c);
+        }
+        return sb.ToString();
     }
 
     private static ReadOnlySpan<char> NextToken(ref ReadOnlySpan<char> rest, int skip)

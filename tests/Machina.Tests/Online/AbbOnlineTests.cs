@@ -188,6 +188,8 @@ public class AbbOnlineTests
     [InlineData("hello;", "hello")]
     [InlineData("@x 1;", "@x 1")]
     [InlineData("$21 1 2 abc 0 0 1 0;", "abc")]
+    [InlineData("@-5 1;", "@-5 1;")]
+    [InlineData("@1 1 done;", "@1 1 done;")]
     public async Task Fault_Garbage_ReportsProtocolErrorWithReceivedText(string garbage, string expectedInText)
     {
         await using var controller = await StartControllerAsync();

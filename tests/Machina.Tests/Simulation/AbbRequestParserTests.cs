@@ -38,6 +38,10 @@ public class AbbRequestParserTests
     [InlineData("@1 1 2 abc", "corrupt parameter")]
     [InlineData("@1 7 \"unterminated", "closing quote")]
     [InlineData("@1 17 1 2 3 4 5 6 7 8 9 10 11 12", "more than 11")]
+    [InlineData("@1\0 4 100", "control character")]
+    [InlineData("@1 4 100\0", "control character")]
+    [InlineData("@1 4\u0001 100", "control character")]
+    [InlineData("@1 7 \"a\0b\"", "control character")]
     public void TryParse_Malformed_ReturnsReason(string statement, string reason)
     {
         Assert.False(AbbRequestParser.TryParse(statement, out _, out var error));

@@ -100,6 +100,10 @@ public class AbbMessageReaderTests
     [InlineData("@abc 1;", "@abc 1;")]
     [InlineData("$22 0 0 zero 0 0 0;", "$22 0 0 zero 0 0 0;")]
     [InlineData("$;", "$;")]
+    [InlineData("@-5 1;", "@-5 1;")]
+    [InlineData("@5 1 2;", "@5 1 2;")]
+    [InlineData("@5 1 ok;", "@5 1 ok;")]
+    [InlineData("15 3;", "15 3;")]
     public void TryRead_Garbage_ThrowsWithReceivedText(string garbage, string received)
     {
         var reader = new AbbMessageReader();

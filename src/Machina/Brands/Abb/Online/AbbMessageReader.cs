@@ -96,12 +96,16 @@ internal sealed class AbbMessageReader
         {
             tokens.Skip(1);
             int id = ReadInt(ref tokens, body, "id");
+            if (id < 0)
+            {
+                throw Garbage("The controller acknowledged a negative id, which no request carries", body);
+            }
             int code = tokens.AtEnd ? 0 : ReadInt(ref tokens, body, "instruction code");
-            return AbbMessage.Acknowledgement(id, code);
+            return EndOfAcknowledgement(ref tokens, body, AbbMessage.Acknowledgement(id, code));
         }
         if (first is (byte)'-' or (>= (byte)'0' and <= (byte)'9'))
         {
-            return AbbMessage.Acknowledgement(0, ReadInt(ref tokens, body, "instruction code"));
+            return EndOfAcknowledgement(ref tokens, body, AbbMessage.Acknowledgement(0, ReadInt(ref tokens, body, "instruction code")));
         }
         if (first != (byte)'$')
         {
@@ -127,6 +131,10 @@ internal sealed class AbbMessageReader
         }
         return AbbMessage.Data(dataCode, values);
     }
+
+    /// <summary>An acknowledgement ends after its code (spec online §6.2): anything more is not the protocol.</summary>
+    private static AbbMessage EndOfAcknowledgement(ref Tokenizer tokens, ReadOnlySpan<byte> body, AbbMessage acknowledgement) =>
+        tokens.AtEnd ? acknowledgement : throw Garbage("The controller sent an acknowledgement with more after its instruction code", body);
 
     private static int ReadInt(ref Tokenizer tokens, ReadOnlySpan<byte> body, string what)
     {

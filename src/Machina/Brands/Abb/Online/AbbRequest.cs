@@ -84,42 +84,69 @@ internal readonly partial struct AbbRequest
         {
             throw new ArgumentOutOfRangeException(nameof(id), id, $"An ABB request id must be between 0 and {MaxId}.");
         }
-        string trimmed = statement.Trim();
-        if (trimmed.EndsWith(';'))
+        if (WhyStatementCannotBeSent(statement) is string why)
         {
-            trimmed = trimmed[..^1].TrimEnd();
+            throw new ArgumentException(why, nameof(statement));
         }
+        return new AbbRequest(id, TrimStatement(statement));
+    }
+
+    /// <summary>Why <paramref name="statement"/> cannot be sent as a custom statement (a sentence), or null when it can.</summary>
+    public static string? WhyStatementCannotBeSent(string statement)
+    {
+        ArgumentNullException.ThrowIfNull(statement);
+        string trimmed = TrimStatement(statement);
         if (trimmed.Length == 0)
         {
-            throw new ArgumentException("A custom ABB statement cannot be empty.", nameof(statement));
+            return "A custom ABB statement cannot be empty.";
         }
         foreach (char c in trimmed)
         {
             if (c == ';' || c > 126 || char.IsControl(c))
             {
-                throw new ArgumentException(
-                    $"A custom ABB statement must be one line of plain ASCII without ';', but got \"{statement}\".", nameof(statement));
+                return $"A custom ABB statement must be one line of plain ASCII without ';', but got \"{Abbreviate(statement)}\".";
             }
         }
-        return new AbbRequest(id, trimmed);
+        return null;
+    }
+
+    private static string TrimStatement(string statement)
+    {
+        string trimmed = statement.Trim();
+        return trimmed.EndsWith(';') ? trimmed[..^1].TrimEnd() : trimmed;
     }
 
     /// <summary>Throws when a text parameter would break the framing or not fit a RAPID string.</summary>
     public static void ValidateText(string text, string paramName)
     {
+        if (WhyTextCannotBeSent(text) is string why)
+        {
+            throw new ArgumentException(why, paramName);
+        }
+    }
+
+    /// <summary>
+    /// Why <paramref name="text"/> cannot be sent as a text parameter (a sentence), or null when it can: it must fit a RAPID
+    /// string and be plain ASCII without '"' or ';', which would break the framing.
+    /// </summary>
+    public static string? WhyTextCannotBeSent(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
         if (text.Length > MaxTextLength)
         {
-            throw new ArgumentException($"Text sent to an ABB robot can be at most {MaxTextLength} characters, but \"{text}\" has {text.Length}.", paramName);
+            return $"Text sent to an ABB robot can be at most {MaxTextLength} characters, but \"{Abbreviate(text)}\" has {text.Length}.";
         }
         foreach (char c in text)
         {
             if (c == '"' || c == ';' || c > 126 || char.IsControl(c))
             {
-                throw new ArgumentException(
-                    $"Text sent to an ABB robot must be plain ASCII without '\"' or ';', but got \"{text}\".", paramName);
+                return $"Text sent to an ABB robot must be plain ASCII without '\"' or ';', but got \"{text}\".";
             }
         }
+        return null;
     }
+
+    private static string Abbreviate(string text) => text.Length <= 40 ? text : text[..37] + "...";
 
     /// <summary>
     /// Makes any text safe to show on the pendant: '"' becomes '\'', ';' becomes ',', other non-ASCII or control

@@ -210,13 +210,13 @@ internal sealed partial class UrDriver
         Span<double> tcp = stackalloc double[6];
         for (int i = 0; i < 6; i++)
         {
-            q[i] = BinaryPrimitives.ReadDoubleBigEndian(p[(i * 8)..]) / UrScriptText.Rad;
-            tcp[i] = BinaryPrimitives.ReadDoubleBigEndian(p[(48 + i * 8)..]);
+            q[i] = Plausible(BinaryPrimitives.ReadDoubleBigEndian(p[(i * 8)..]) / UrScriptText.Rad, "actual_q");
+            tcp[i] = Plausible(BinaryPrimitives.ReadDoubleBigEndian(p[(48 + i * 8)..]) / (i < 3 ? UrScriptText.Mm : UrScriptText.Rad), "actual_TCP_pose");
         }
         p = p[96..];
         return new RtdeSample(
-            new Vector(tcp[0] / UrScriptText.Mm, tcp[1] / UrScriptText.Mm, tcp[2] / UrScriptText.Mm),
-            Rotation.FromRotationVector(new Vector(tcp[3] / UrScriptText.Rad, tcp[4] / UrScriptText.Rad, tcp[5] / UrScriptText.Rad)),
+            new Vector(tcp[0], tcp[1], tcp[2]),
+            Rotation.FromRotationVector(new Vector(tcp[3], tcp[4], tcp[5])),
             new Joints(q[0], q[1], q[2], q[3], q[4], q[5]),
             BinaryPrimitives.ReadInt32BigEndian(p),
             BinaryPrimitives.ReadInt32BigEndian(p[4..]),
@@ -224,6 +224,15 @@ internal sealed partial class UrDriver
             BinaryPrimitives.ReadInt32BigEndian(p[12..]),
             BinaryPrimitives.ReadInt32BigEndian(p[16..]));
     }
+
+    /// <summary>Largest magnitude a pose or joint value of a real arm can have (mm or degrees); anything beyond is corrupt data.</summary>
+    internal const double MaxPlausibleValue = 1e6;
+
+    /// <summary><paramref name="value"/> (mm or degrees) when a real arm can report it; a connection error otherwise (not a number, infinite, absurd).</summary>
+    private static double Plausible(double value, string field) =>
+        double.IsFinite(value) && Math.Abs(value) <= MaxPlausibleValue
+            ? value
+            : throw new RobotConnectionException($"The UR controller sent {value.ToString(System.Globalization.CultureInfo.InvariantCulture)} in {field} of an RTDE data package: no arm reports that; the data is corrupt.");
 
     private void OnSample(RtdeSample sample)
     {
