@@ -29,11 +29,13 @@ internal sealed class SampleController : IAsyncDisposable
     public int Port { get; }
 
     /// <summary>
-    /// Reads <c>--brand</c>, <c>--host</c>, <c>--port</c> and the sample's own options (<paramref name="option"/> takes a name and
-    /// a value and says whether it knew them), then starts a virtual controller when no host was given. Null (after printing
-    /// <paramref name="usage"/>) when the arguments are wrong.
+    /// Reads <c>--brand</c>, <c>--host</c>, <c>--port</c>, <c>--speed-factor</c> and the sample's own options (<paramref name="option"/>
+    /// takes a name and a value and says whether it knew them), then starts a virtual controller when no host was given, running
+    /// <paramref name="speedFactor"/> times faster than real time unless <c>--speed-factor</c> says otherwise. Null (after printing
+    /// <paramref name="usage"/> on <paramref name="error"/>) when the arguments are wrong.
     /// </summary>
-    public static async Task<SampleController?> OpenAsync(string[] args, string usage, double speedFactor, Func<string, string, bool>? option = null)
+    public static async Task<SampleController?> OpenAsync(string[] args, string usage, double speedFactor, TextWriter output, TextWriter error,
+        Func<string, string, bool>? option = null, CancellationToken cancellationToken = default)
     {
         string? host = null;
         string brand = "ABB";
@@ -46,11 +48,12 @@ internal sealed class SampleController : IAsyncDisposable
                 "--host" => (host = value) is not null,
                 "--port" => int.TryParse(value, out port) && port is > 0 and <= 65535,
                 "--brand" => (brand = value.ToUpperInvariant()) is "ABB" or "UR" or "KUKA",
+                "--speed-factor" => double.TryParse(value, System.Globalization.CultureInfo.InvariantCulture, out speedFactor) && speedFactor is > 0 and <= 1000,
                 _ => option?.Invoke(args[i], value) ?? false,
             };
             if (!known)
             {
-                Console.Error.WriteLine("Usage: " + usage + " [--brand abb|ur]");
+                error.WriteLine("Usage: " + usage + " [--brand abb|ur|kuka] [--speed-factor <times faster than real time>]");
                 return null;
             }
             i++;
@@ -62,21 +65,21 @@ internal sealed class SampleController : IAsyncDisposable
         if (brand == "UR")
         {
             var ur = new VirtualUrController(new VirtualUrControllerOptions { SpeedFactor = speedFactor });
-            await ur.StartAsync();
-            Console.WriteLine($"Started a virtual UR5e controller on 127.0.0.1 (scripts on {ur.Port}, RTDE on {ur.RtdePort}, dashboard on {ur.DashboardPort}; {speedFactor}x faster than real time).");
+            await ur.StartAsync(cancellationToken);
+            output.WriteLine($"Started a virtual UR5e controller on 127.0.0.1 (scripts on {ur.Port}, RTDE on {ur.RtdePort}, dashboard on {ur.DashboardPort}; {speedFactor}x faster than real time).");
             return new SampleController(brand, "127.0.0.1", ur.Port, ur);
         }
         if (brand == "KUKA")
         {
             var kuka = new VirtualKukaController(new VirtualKukaControllerOptions { SpeedFactor = speedFactor });
-            await kuka.StartAsync();
-            Console.WriteLine($"Started a virtual KUKA controller (KR 6 R900 sixx) on 127.0.0.1:{kuka.Port} ({speedFactor}x faster than real time).");
+            await kuka.StartAsync(cancellationToken);
+            output.WriteLine($"Started a virtual KUKA controller (KR 6 R900 sixx) on 127.0.0.1:{kuka.Port} ({speedFactor}x faster than real time).");
             return new SampleController(brand, "127.0.0.1", kuka.Port, kuka);
         }
         // An IRB 1200-5/0.9 (the virtual ABB's default, an IRB 120, cannot reach the paper's Hello Robot targets).
         var abb = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor, Model = RobotModels.Get("IRB 1200-5/0.9") });
-        await abb.StartAsync();
-        Console.WriteLine($"Started a virtual ABB IRB 1200-5/0.9 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
+        await abb.StartAsync(cancellationToken);
+        output.WriteLine($"Started a virtual ABB IRB 1200-5/0.9 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
         return new SampleController(brand, "127.0.0.1", abb.Port, abb);
     }
 
@@ -87,6 +90,15 @@ internal sealed class SampleController : IAsyncDisposable
         VirtualUrController ur => ur.Errors,
         VirtualKukaController kuka => kuka.Errors,
         _ => [],
+    };
+
+    /// <summary>The virtual controller's robot as it is now (pose, joints, tool, outputs); null for a real controller.</summary>
+    public VirtualRobotState? State => _simulator switch
+    {
+        VirtualAbbController abb => abb.State,
+        VirtualUrController ur => ur.State,
+        VirtualKukaController kuka => kuka.State,
+        _ => null,
     };
 
     /// <summary>Stops the virtual controller, if one was started.</summary>
