@@ -13,7 +13,7 @@ namespace Machina.Samples;
 /// <summary>The kinematics check sample (the test suite runs it through <see cref="RunAsync"/>).</summary>
 public static class KinematicsCheckSample
 {
-    /// <summary>Runs the sample: 0 when the check found the two planted problems, 1 when it did not, 2 for wrong arguments.</summary>
+    /// <summary>Runs the sample: 0 when the check ran (and, on the IRB 120, found the two planted problems), 1 when it missed them, 2 for wrong arguments.</summary>
     public static Task<int> RunAsync(string[] args, TextWriter output, TextWriter error, CancellationToken cancellationToken)
     {
         string modelName = "IRB 120";
@@ -109,7 +109,8 @@ public static class KinematicsCheckSample
         output.WriteLine();
         output.WriteLine($"{bot.GetWarnings().Count} warnings in {program.Length} actions; the compiled program carries them too " +
             $"({bot.Compile().Warnings.Count(w => w.Kind is not null)} in RobotProgram.Warnings).");
-        if (!kinds.Contains(KinematicIssueKind.Unreachable) || !kinds.Contains(KinematicIssueKind.WristSingularity))
+        // The two problems are planted for the IRB 120; a larger arm may well reach everything.
+        if (model.Name == "IRB 120" && (!kinds.Contains(KinematicIssueKind.Unreachable) || !kinds.Contains(KinematicIssueKind.WristSingularity)))
         {
             return Task.FromResult(SampleHost.Fail(error, "the check should have found the unreachable target and the straight wrist; it found " +
                 (kinds.Count == 0 ? "nothing" : string.Join(", ", kinds)) + "."));

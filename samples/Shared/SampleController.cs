@@ -65,22 +65,36 @@ internal sealed class SampleController : IAsyncDisposable
         if (brand == "UR")
         {
             var ur = new VirtualUrController(new VirtualUrControllerOptions { SpeedFactor = speedFactor });
-            await ur.StartAsync(cancellationToken);
+            await StartedAsync(ur, ur.StartAsync(cancellationToken));
             output.WriteLine($"Started a virtual UR5e controller on 127.0.0.1 (scripts on {ur.Port}, RTDE on {ur.RtdePort}, dashboard on {ur.DashboardPort}; {speedFactor}x faster than real time).");
             return new SampleController(brand, "127.0.0.1", ur.Port, ur);
         }
         if (brand == "KUKA")
         {
             var kuka = new VirtualKukaController(new VirtualKukaControllerOptions { SpeedFactor = speedFactor });
-            await kuka.StartAsync(cancellationToken);
+            await StartedAsync(kuka, kuka.StartAsync(cancellationToken));
             output.WriteLine($"Started a virtual KUKA controller (KR 6 R900 sixx) on 127.0.0.1:{kuka.Port} ({speedFactor}x faster than real time).");
             return new SampleController(brand, "127.0.0.1", kuka.Port, kuka);
         }
         // An IRB 1200-5/0.9 (the virtual ABB's default, an IRB 120, cannot reach the paper's Hello Robot targets).
         var abb = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor, Model = RobotModels.Get("IRB 1200-5/0.9") });
-        await abb.StartAsync(cancellationToken);
+        await StartedAsync(abb, abb.StartAsync(cancellationToken));
         output.WriteLine($"Started a virtual ABB IRB 1200-5/0.9 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
         return new SampleController(brand, "127.0.0.1", abb.Port, abb);
+    }
+
+    /// <summary>Waits for a virtual controller to start, and stops it again if it could not (e.g. no free port).</summary>
+    private static async Task StartedAsync(IAsyncDisposable controller, Task starting)
+    {
+        try
+        {
+            await starting;
+        }
+        catch
+        {
+            await controller.DisposeAsync();
+            throw;
+        }
     }
 
     /// <summary>What the virtual controller refused (e.g. a target its robot cannot reach); empty for a real controller.</summary>

@@ -47,6 +47,11 @@ internal static class SampleHost
             Console.Error.WriteLine("Stopped (Ctrl+C).");
             return Failed;
         }
+        catch (Exception ex)
+        {
+            // Whatever a sample did not expect: say what went wrong, without a stack trace.
+            return Fail(Console.Error, $"{ex.GetType().Name}: {ex.Message}");
+        }
     }
 
     /// <summary>Prints why a sample failed, for someone who is not a programmer, and returns <see cref="Failed"/>.</summary>
