@@ -14,7 +14,7 @@ public static class ReactiveSquareSample
     {
         int loops = 3;
         await using SampleController? controller = await SampleController.OpenAsync(
-            args, "ReactiveSquare [--loops <squares>] [--host <controller address> --port <driver port>]", speedFactor: 8, output, error,
+            args, "ReactiveSquare [--loops <squares>] [--brand abb|ur|kuka] [--host <controller address> --port <driver port>]", speedFactor: 8, output, error,
             (name, value) => name == "--loops" && int.TryParse(value, out loops) && loops > 0);
         if (controller is null)
         {

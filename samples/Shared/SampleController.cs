@@ -53,7 +53,7 @@ internal sealed class SampleController : IAsyncDisposable
             };
             if (!known)
             {
-                error.WriteLine("Usage: " + usage + " [--brand abb|ur|kuka] [--speed-factor <times faster than real time>]");
+                error.WriteLine("Usage: " + usage + " [--speed-factor <times faster than real time>]");
                 return null;
             }
             i++;
