@@ -87,6 +87,7 @@ internal static partial class OriginalApiComparison
         }
         if (FieldForm().Match(rest) is { Success: true } f)
         {
+            // A field counts as a property; only an instance field that isn't readonly is writable (no one assigns a static one).
             string kind = f.Groups["kind"].Value;
             return new ApiEntry(line, owner, "property", f.Groups["name"].Value, isStatic || kind.StartsWith("static", StringComparison.Ordinal)
                 || kind.StartsWith("const", StringComparison.Ordinal), [], [], f.Groups["type"].Value, kind == "field");
