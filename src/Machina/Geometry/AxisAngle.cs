@@ -63,6 +63,21 @@ public readonly record struct RotationVector(double X, double Y, double Z)
     /// <summary>The angle in degrees (the vector's length).</summary>
     public double Angle => Math.Sqrt(X * X + Y * Y + Z * Z);
 
+    /// <summary>The angle in degrees (the vector's length), the original's name for <see cref="Angle"/>.</summary>
+    public double GetAngle() => Angle;
+
+    /// <summary>The length of the vector (the angle in degrees), as in the original.</summary>
+    public double Length() => Angle;
+
+    /// <summary>The squared length of the vector, as in the original.</summary>
+    public double SqLength() => X * X + Y * Y + Z * Z;
+
+    /// <summary>True when the squared length is below 1e-6 (no rotation), as in the original.</summary>
+    public bool IsZero() => SqLength() < 1e-6;
+
+    /// <summary>The unit axis of this vector (zero for the zero vector), as in the original.</summary>
+    public Vector GetVector() => ToAxisAngle().Axis;
+
     /// <summary>The axis (unit length) and angle (the vector's length) of this vector; the zero vector gives a zero axis and angle 0.</summary>
     public AxisAngle ToAxisAngle()
     {

@@ -58,6 +58,12 @@ public readonly record struct Vector(double X, double Y, double Z)
     /// <summary>Distance between two points.</summary>
     public static double Distance(Vector a, Vector b) => (a - b).Length;
 
+    /// <summary>Squared length (the original's method form of <see cref="SquaredLength"/>).</summary>
+    public double SqLength() => SquaredLength;
+
+    /// <summary>True when the length is 1 (within 1e-6 on the squared length), as in the original.</summary>
+    public bool IsUnit() => Math.Abs(SquaredLength - 1) < 1e-6;
+
     /// <summary>Distance from this point to <paramref name="other"/>.</summary>
     public double DistanceTo(Vector other) => Distance(this, other);
 

@@ -118,6 +118,36 @@ public class OriginalCompatibilityTests
     }
 
     [Fact]
+    public void Vector_LengthHelpers_AsTheOriginal()
+    {
+        Assert.Equal(25, new Vector(3, 4, 0).SqLength(), 15);
+        Assert.True(new Vector(0.6, 0.8, 0).IsUnit());
+        Assert.False(new Vector(3, 4, 0).IsUnit());
+    }
+
+    [Fact]
+    public void Joints_Norm_IsTheEuclideanLengthOfTheSixValues()
+    {
+        var j = new Joints(1, 2, 3, 4, 5, 6);
+
+        Assert.Equal(91, j.NormSq(), 15);
+        Assert.Equal(Math.Sqrt(91), j.Norm(), 15);
+    }
+
+    [Fact]
+    public void RotationVector_OriginalGetters_ReadAxisAndAngle()
+    {
+        var rv = new RotationVector(0, 30, 40);
+
+        Assert.Equal(50, rv.GetAngle(), 15);
+        Assert.Equal(50, rv.Length(), 15);
+        Assert.Equal(2500, rv.SqLength(), 15);
+        Assert.Equal(new Vector(0, 0.6, 0.8), rv.GetVector());
+        Assert.False(rv.IsZero());
+        Assert.True(new RotationVector(0, 0, 1e-4).IsZero());
+    }
+
+    [Fact]
     public void ExternalAxes_OriginalNamesAndOneBasedAccessor()
     {
         var e = new ExternalAxes(100, null, 300);
