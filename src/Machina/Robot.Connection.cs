@@ -23,13 +23,13 @@ public sealed partial class Robot
     /// thread (not always the same one), never on the thread that issued the action. A handler may issue new actions. After
     /// going offline or disposing the robot, no handler runs any more.
     /// </summary>
-    public event EventHandler<ActionReleasedArgs>? ActionReleased;
+    public event ActionReleasedHandler? ActionReleased;
 
     /// <summary>Raised after the controller reports an action as executed, with the state after it and the pending counts.</summary>
-    public event EventHandler<ActionExecutedArgs>? ActionExecuted;
+    public event ActionExecutedHandler? ActionExecuted;
 
     /// <summary>Raised when the controller reports where the robot is while it moves (ABB: its monitor task).</summary>
-    public event EventHandler<MotionUpdateArgs>? MotionUpdate;
+    public event MotionUpdateHandler? MotionUpdate;
 
     /// <summary>Raised when the link to the controller fails; the actions not confirmed as executed are kept and listed.</summary>
     public event EventHandler<ConnectionLostArgs>? ConnectionLost;

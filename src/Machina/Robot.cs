@@ -35,7 +35,7 @@ public sealed partial class Robot : IOnlineHost
     public RobotLogger Logger { get; }
 
     /// <summary>Raised after each action is accepted, with the state it leads to. Offline it is raised on the thread that issued the action; online, on the robot's event thread (see <see cref="ActionReleased"/>).</summary>
-    public event EventHandler<ActionIssuedArgs>? ActionIssued;
+    public event ActionIssuedHandler? ActionIssued;
 
     /// <summary>A robot named "Machina" that compiles to a human-readable listing.</summary>
     public static Robot Create() => new("Machina", RobotType.HUMAN);
@@ -202,13 +202,22 @@ public sealed partial class Robot : IOnlineHost
     };
 
     /// <summary>Raises an event; an exception thrown by a subscriber is logged and never stops the robot.</summary>
-    internal void RaiseSafely<T>(EventHandler<T> handler, T args)
+    internal void RaiseSafely(Delegate handler, MachinaEventArgs args)
     {
-        foreach (EventHandler<T> subscriber in handler.GetInvocationList().Cast<EventHandler<T>>())
+        foreach (Delegate subscriber in handler.GetInvocationList())
         {
             try
             {
-                subscriber(this, args);
+                switch (subscriber)
+                {
+                    case ActionIssuedHandler d: d(this, (ActionIssuedArgs)args); break;
+                    case ActionReleasedHandler d: d(this, (ActionReleasedArgs)args); break;
+                    case ActionExecutedHandler d: d(this, (ActionExecutedArgs)args); break;
+                    case MotionUpdateHandler d: d(this, (MotionUpdateArgs)args); break;
+                    case EventHandler<ConnectionLostArgs> d: d(this, (ConnectionLostArgs)args); break;
+                    case EventHandler<ControllerStoppedArgs> d: d(this, (ControllerStoppedArgs)args); break;
+                    default: throw new InvalidOperationException($"No way to raise {subscriber.GetType().Name}.");
+                }
             }
             catch (Exception ex)
             {

@@ -18,6 +18,9 @@ public sealed class ActionReleasedArgs : MachinaEventArgs
     /// <summary>How many issued actions are still waiting to be sent.</summary>
     public int PendingRelease { get; }
 
+    /// <summary>Same as <see cref="PendingRelease"/> (the original's name).</summary>
+    public int PendingReleaseToDevice => PendingRelease;
+
     /// <inheritdoc/>
     public override string ToJsonString()
     {

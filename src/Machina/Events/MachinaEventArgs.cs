@@ -25,6 +25,9 @@ public abstract class MachinaEventArgs : EventArgs
     /// <summary>The payload as one line of JSON, in the shape the original Machina Bridge sent.</summary>
     public abstract string ToJsonString();
 
+    /// <summary>Same as <see cref="ToJsonString"/> (the original's name).</summary>
+    public string ToJSONString() => ToJsonString();
+
     /// <summary>Same as <see cref="ToJsonString"/>.</summary>
     public override string ToString() => ToJsonString();
 

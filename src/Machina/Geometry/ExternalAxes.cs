@@ -32,8 +32,38 @@ public readonly struct ExternalAxes : IEquatable<ExternalAxes>
     /// <summary>All axes unset.</summary>
     public static ExternalAxes None => default;
 
-    /// <summary>Value of axis 1..6 (one-based, as robot languages count them), or null when unset.</summary>
-    public double? this[int axisNumber] => axisNumber switch
+    /// <summary>
+    /// Value of axis 1..6 (one-based, as robot languages count them), or null when unset. Use <see cref="Axis"/> (also one-based)
+    /// or <see cref="ToArray"/> (zero-based).
+    /// </summary>
+    public double? Axis(int axisNumber) => this[axisNumber];
+
+    /// <summary>Value of external axis 1, or null when unset (the original's name).</summary>
+    public double? EA1 => _a1;
+
+    /// <summary>Value of external axis 2, or null when unset.</summary>
+    public double? EA2 => _a2;
+
+    /// <summary>Value of external axis 3, or null when unset.</summary>
+    public double? EA3 => _a3;
+
+    /// <summary>Value of external axis 4, or null when unset.</summary>
+    public double? EA4 => _a4;
+
+    /// <summary>Value of external axis 5, or null when unset.</summary>
+    public double? EA5 => _a5;
+
+    /// <summary>Value of external axis 6, or null when unset.</summary>
+    public double? EA6 => _a6;
+
+    /// <summary>Number of external axes (6), the original's name for <see cref="Count"/>.</summary>
+    public int Length => Count;
+
+    /// <summary>
+    /// Value of axis 1..6 (one-based), or null when unset. Internal on purpose: the original's public indexer counted from 0, so
+    /// <c>axes[0]</c> ported from it must not compile against this one; users call <see cref="Axis"/>.
+    /// </summary>
+    internal double? this[int axisNumber] => axisNumber switch
     {
         1 => _a1, 2 => _a2, 3 => _a3, 4 => _a4, 5 => _a5, 6 => _a6,
         _ => throw new ArgumentOutOfRangeException(nameof(axisNumber), axisNumber, "External axis numbers are 1 to 6."),

@@ -41,6 +41,12 @@ public readonly record struct Joints(double J1, double J2, double J3, double J4,
     /// <summary>Component-wise difference.</summary>
     public static Joints operator -(Joints a, Joints b) => new(a.J1 - b.J1, a.J2 - b.J2, a.J3 - b.J3, a.J4 - b.J4, a.J5 - b.J5, a.J6 - b.J6);
 
+    /// <summary>Square root of the sum of the squared joint values, as in the original.</summary>
+    public double Norm() => Math.Sqrt(NormSq());
+
+    /// <summary>Sum of the squared joint values, as in the original.</summary>
+    public double NormSq() => J1 * J1 + J2 * J2 + J3 * J3 + J4 * J4 + J5 * J5 + J6 * J6;
+
     /// <summary>True when every joint differs by less than <paramref name="tolerance"/> degrees.</summary>
     public bool IsSimilar(Joints other, double tolerance = 1e-6)
     {

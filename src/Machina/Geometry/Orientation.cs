@@ -22,6 +22,21 @@ public readonly struct Orientation : IEquatable<Orientation>
     /// <summary>The world XY frame (identity).</summary>
     public static Orientation WorldXY => new(Rotation.Identity);
 
+    /// <summary>The world XZ frame: X axis (1, 0, 0), Y axis (0, 0, 1), so Z points along world −Y; as in the original.</summary>
+    public static Orientation WorldXZ => new(1, 0, 0, 0, 0, 1);
+
+    /// <summary>The world YZ frame: X axis (0, 1, 0), Y axis (0, 0, 1), so Z points along world +X; as in the original.</summary>
+    public static Orientation WorldYZ => new(0, 1, 0, 0, 0, 1);
+
+    /// <summary>The unit quaternion of this orientation.</summary>
+    public Quaternion ToQuaternion() => Rotation.ToQuaternion();
+
+    /// <summary>The 3×3 rotation matrix whose columns are this frame's axes.</summary>
+    public RotationMatrix ToRotationMatrix() => Rotation.ToMatrix();
+
+    /// <summary>Rotation vector (axis × angle, degrees) of this orientation.</summary>
+    public RotationVector ToRotationVector() => Rotation.ToRotationVector();
+
     /// <summary>X axis of the frame.</summary>
     public Vector XAxis => Rotation.XAxis;
 
@@ -33,6 +48,12 @@ public readonly struct Orientation : IEquatable<Orientation>
 
     /// <summary>The rotation of this orientation.</summary>
     public static implicit operator Rotation(Orientation o) => o.Rotation;
+
+    /// <summary>The unit quaternion of this orientation, as in the original.</summary>
+    public static implicit operator Quaternion(Orientation o) => o.Rotation.ToQuaternion();
+
+    /// <summary>The rotation matrix of this orientation (its columns are the axes), as in the original.</summary>
+    public static implicit operator RotationMatrix(Orientation o) => o.Rotation.ToMatrix();
 
     /// <summary>The orientation of a rotation.</summary>
     public static implicit operator Orientation(Rotation r) => new(r);

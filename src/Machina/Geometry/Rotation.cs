@@ -9,10 +9,12 @@ public readonly struct Rotation : IEquatable<Rotation>
     private readonly double _w, _x, _y, _z;
     private readonly bool _set;
 
-    private Rotation(double w, double x, double y, double z)
+    private Rotation((double W, double X, double Y, double Z) q)
     {
-        _w = w; _x = x; _y = y; _z = z; _set = true;
+        (_w, _x, _y, _z, _set) = (q.W, q.X, q.Y, q.Z, true);
     }
+
+    private static Rotation Unit(double w, double x, double y, double z) => new((w, x, y, z));
 
     /// <summary>Scalar part of the quaternion.</summary>
     public double W => _set ? _w : 1.0;
@@ -26,17 +28,29 @@ public readonly struct Rotation : IEquatable<Rotation>
     /// <summary>Z component of the quaternion's vector part.</summary>
     public double Z => _z;
 
+    /// <summary>
+    /// A rotation of <paramref name="angleDegrees"/> about <paramref name="axis"/> (right-hand rule), as in the original Machina;
+    /// the same as <see cref="FromAxisAngle(Vector, double)"/>.
+    /// </summary>
+    public Rotation(Vector axis, double angleDegrees) => this = FromAxisAngle(axis, angleDegrees);
+
+    /// <summary>A rotation of <paramref name="angleDegrees"/> about the axis (axisX, axisY, axisZ), as in the original Machina.</summary>
+    public Rotation(double axisX, double axisY, double axisZ, double angleDegrees) => this = FromAxisAngle(axisX, axisY, axisZ, angleDegrees);
+
     /// <summary>No rotation.</summary>
-    public static Rotation Identity => new(1, 0, 0, 0);
+    public static Rotation Identity => Unit(1, 0, 0, 0);
+
+    /// <summary>No rotation (the original's name for <see cref="Identity"/>).</summary>
+    public static Rotation GlobalXYZ => Identity;
 
     /// <summary>Half a turn about world X (tool Z pointing down, tool X along world +X).</summary>
-    public static Rotation FlippedAroundX => new(0, 1, 0, 0);
+    public static Rotation FlippedAroundX => Unit(0, 1, 0, 0);
 
     /// <summary>Half a turn about world Y: Machina's default flange orientation (tool Z down, tool X along world −X).</summary>
-    public static Rotation FlippedAroundY => new(0, 0, 1, 0);
+    public static Rotation FlippedAroundY => Unit(0, 0, 1, 0);
 
     /// <summary>Half a turn about world Z.</summary>
-    public static Rotation FlippedAroundZ => new(0, 0, 0, 1);
+    public static Rotation FlippedAroundZ => Unit(0, 0, 0, 1);
 
     /// <summary>
     /// A rotation of <paramref name="degrees"/> about <paramref name="axis"/> (right-hand rule). The axis need not be unit length,
@@ -63,7 +77,7 @@ public readonly struct Rotation : IEquatable<Rotation>
         }
         double half = degrees * Angles.ToRadians / 2;
         double s = Math.Sin(half) / length;
-        return new Rotation(Math.Cos(half), axis.X * s, axis.Y * s, axis.Z * s);
+        return Unit(Math.Cos(half), axis.X * s, axis.Y * s, axis.Z * s);
     }
 
     /// <summary>A rotation of <paramref name="degrees"/> about the axis (x, y, z).</summary>
@@ -90,9 +104,9 @@ public readonly struct Rotation : IEquatable<Rotation>
         }
         if (Math.Abs(n - 1) < 1e-15)
         {
-            return new Rotation(w, x, y, z);
+            return Unit(w, x, y, z);
         }
-        return new Rotation(w / n, x / n, y / n, z / n);
+        return Unit(w / n, x / n, y / n, z / n);
     }
 
     /// <summary>
@@ -133,7 +147,7 @@ public readonly struct Rotation : IEquatable<Rotation>
     /// <summary>A rotation from intrinsic Z-Y′-X″ Euler angles in degrees: first yaw about Z, then pitch about the new Y, then roll about the new X.</summary>
     public static Rotation FromYawPitchRoll(double yaw, double pitch, double roll) => new YawPitchRoll(roll, pitch, yaw).ToRotation();
 
-    internal static Rotation FromUnitQuaternionUnchecked(double w, double x, double y, double z) => new(w, x, y, z);
+    internal static Rotation FromUnitQuaternionUnchecked(double w, double x, double y, double z) => Unit(w, x, y, z);
 
     /// <summary>X axis of the rotated frame (first column of the rotation matrix).</summary>
     public Vector XAxis => new(1 - 2 * (Y * Y + Z * Z), 2 * (X * Y + W * Z), 2 * (X * Z - W * Y));
@@ -145,7 +159,28 @@ public readonly struct Rotation : IEquatable<Rotation>
     public Vector ZAxis => new(2 * (X * Z + W * Y), 2 * (Y * Z - W * X), 1 - 2 * (X * X + Y * Y));
 
     /// <summary>The opposite rotation.</summary>
-    public Rotation Inverse() => new(W, -X, -Y, -Z);
+    public Rotation Inverse() => Unit(W, -X, -Y, -Z);
+
+    /// <summary>The opposite rotation of <paramref name="r"/> (the original's static form of <see cref="Inverse()"/>).</summary>
+    public static Rotation Inverse(Rotation r) => r.Inverse();
+
+    /// <summary>
+    /// Unit axis of this rotation (see <see cref="ToAxisAngle"/>): with <see cref="Angle"/> in [0°, 180°]; a zero vector for the identity.
+    /// The original kept the axis and angle as given (<c>(0,0,1), −90°</c>); this is the same rotation as <c>(0,0,−1), 90°</c>.
+    /// </summary>
+    public Vector Axis => ToAxisAngle().Axis;
+
+    /// <summary>Angle of this rotation about <see cref="Axis"/>, in degrees, in [0°, 180°].</summary>
+    public double Angle => ToAxisAngle().Angle;
+
+    /// <summary>The unit quaternion (W, X, Y, Z) of this rotation.</summary>
+    public Quaternion ToQuaternion() => new(W, X, Y, Z);
+
+    /// <summary>A rotation from a quaternion; it is scaled to unit length, and a zero quaternion is refused.</summary>
+    public static Rotation FromQuaternion(Quaternion q) => FromQuaternion(q.W, q.X, q.Y, q.Z);
+
+    /// <summary>The orientation (frame axes) of this rotation.</summary>
+    public Orientation ToOrientation() => new(this);
 
     /// <summary>
     /// Composition: <c>a * b</c> applies <c>b</c> in the frame of <c>a</c> (local); equivalently, <c>b</c> first and then <c>a</c> in world axes.
@@ -164,7 +199,7 @@ public readonly struct Rotation : IEquatable<Rotation>
             double inv = 1 / Math.Sqrt(n);
             w *= inv; x *= inv; y *= inv; z *= inv;
         }
-        return new Rotation(w, x, y, z);
+        return Unit(w, x, y, z);
     }
 
     /// <summary>Rotates a vector by this rotation.</summary>

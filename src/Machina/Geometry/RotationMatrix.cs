@@ -1,8 +1,32 @@
 namespace Machina;
 
-/// <summary>A 3×3 rotation matrix, row-major (M01 is row 0, column 1). Its columns are the axes of the rotated frame.</summary>
+/// <summary>
+/// A 3×3 rotation matrix, row-major (M01 is row 0, column 1). Its columns are the axes of the rotated frame.
+/// <c>new RotationMatrix()</c> is the identity, as in the original Machina; only <c>default</c> is all zeros (not a rotation).
+/// </summary>
 public readonly record struct RotationMatrix
 {
+    /// <summary>The identity matrix (no rotation), as in the original Machina.</summary>
+    public RotationMatrix()
+    {
+        M00 = 1;
+        M11 = 1;
+        M22 = 1;
+    }
+
+    /// <summary>
+    /// A rotation matrix from nine values in row order, made orthonormal as <see cref="FromRows"/> does (as in the original);
+    /// a degenerate matrix is refused.
+    /// </summary>
+    public RotationMatrix(double m00, double m01, double m02, double m10, double m11, double m12, double m20, double m21, double m22) =>
+        this = FromRows(m00, m01, m02, m10, m11, m12, m20, m21, m22);
+
+    /// <summary>The matrix whose first two columns are <paramref name="xAxis"/> and <paramref name="yAxis"/>, made orthonormal (Z = X × Y).</summary>
+    public RotationMatrix(Vector xAxis, Vector yAxis) => this = Rotation.FromAxes(xAxis, yAxis).ToMatrix();
+
+    /// <summary>The identity matrix.</summary>
+    public static RotationMatrix Identity => new();
+
     /// <summary>Row 0.</summary>
     public double M00 { get; init; }
     /// <summary>Row 0.</summary>
@@ -102,6 +126,41 @@ public readonly record struct RotationMatrix
         }
         return Rotation.FromQuaternion(w, x, y, z);
     }
+
+    /// <summary>The unit quaternion of this matrix; see <see cref="ToRotation"/>.</summary>
+    /// <exception cref="InvalidOperationException">The matrix is not a rotation (see <see cref="IsRotation"/>).</exception>
+    public Quaternion ToQuaternion() => ToRotation().ToQuaternion();
+
+    /// <summary>Rotation vector (axis × angle, degrees, angle in [0°, 180°]) of this matrix's rotation.</summary>
+    /// <exception cref="InvalidOperationException">The matrix is not a rotation (see <see cref="IsRotation"/>).</exception>
+    public RotationVector ToRotationVector() => ToRotation().ToRotationVector();
+
+    /// <summary>True when every entry is within 1e-6 of the identity's.</summary>
+    public bool IsIdentity() =>
+        Math.Abs(M00 - 1) < 1e-6 && Math.Abs(M11 - 1) < 1e-6 && Math.Abs(M22 - 1) < 1e-6 && Math.Abs(M01) < 1e-6 && Math.Abs(M02) < 1e-6
+        && Math.Abs(M10) < 1e-6 && Math.Abs(M12) < 1e-6 && Math.Abs(M20) < 1e-6 && Math.Abs(M21) < 1e-6;
+
+    /// <summary>The determinant (1 for a rotation).</summary>
+    public double Determinant() =>
+        M00 * (M11 * M22 - M12 * M21) - M01 * (M10 * M22 - M12 * M20) + M02 * (M10 * M21 - M11 * M20);
+
+    /// <summary>The matrix product <c>m1 · m2</c> (applies m2 in the frame of m1), as in the original.</summary>
+    public static RotationMatrix Multiply(RotationMatrix m1, RotationMatrix m2) => new()
+    {
+        M00 = m1.M00 * m2.M00 + m1.M01 * m2.M10 + m1.M02 * m2.M20,
+        M01 = m1.M00 * m2.M01 + m1.M01 * m2.M11 + m1.M02 * m2.M21,
+        M02 = m1.M00 * m2.M02 + m1.M01 * m2.M12 + m1.M02 * m2.M22,
+        M10 = m1.M10 * m2.M00 + m1.M11 * m2.M10 + m1.M12 * m2.M20,
+        M11 = m1.M10 * m2.M01 + m1.M11 * m2.M11 + m1.M12 * m2.M21,
+        M12 = m1.M10 * m2.M02 + m1.M11 * m2.M12 + m1.M12 * m2.M22,
+        M20 = m1.M20 * m2.M00 + m1.M21 * m2.M10 + m1.M22 * m2.M20,
+        M21 = m1.M20 * m2.M01 + m1.M21 * m2.M11 + m1.M22 * m2.M21,
+        M22 = m1.M20 * m2.M02 + m1.M21 * m2.M12 + m1.M22 * m2.M22,
+    };
+
+    /// <summary>Axis and angle (degrees, in [0°, 180°]) of this matrix's rotation.</summary>
+    /// <exception cref="InvalidOperationException">The matrix is not a rotation (see <see cref="IsRotation"/>).</exception>
+    public AxisAngle ToAxisAngle() => ToRotation().ToAxisAngle();
 
     /// <summary>Intrinsic Z-Y′-X″ Euler angles in degrees; at pitch ±90° (gimbal lock) roll is set to 0 and yaw carries the whole turn.</summary>
     /// <exception cref="InvalidOperationException">The matrix is not a rotation (see <see cref="IsRotation"/>).</exception>

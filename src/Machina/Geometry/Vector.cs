@@ -58,8 +58,38 @@ public readonly record struct Vector(double X, double Y, double Z)
     /// <summary>Distance between two points.</summary>
     public static double Distance(Vector a, Vector b) => (a - b).Length;
 
+    /// <summary>Squared length (the original's method form of <see cref="SquaredLength"/>).</summary>
+    public double SqLength() => SquaredLength;
+
+    /// <summary>True when the length is 1 (within 1e-6 on the squared length), as in the original.</summary>
+    public bool IsUnit() => Math.Abs(SquaredLength - 1) < 1e-6;
+
+    /// <summary>Distance from this point to <paramref name="other"/>.</summary>
+    public double DistanceTo(Vector other) => Distance(this, other);
+
+    /// <summary>Squared distance between two points (cheaper than <see cref="Distance"/>).</summary>
+    public static double SqDistance(Vector a, Vector b) => (a - b).SquaredLength;
+
+    /// <summary>Dot product (the original's name for <see cref="Dot"/>).</summary>
+    public static double DotProduct(Vector a, Vector b) => Dot(a, b);
+
+    /// <summary>Cross product, right-handed (the original's name for <see cref="Cross"/>).</summary>
+    public static Vector CrossProduct(Vector a, Vector b) => Cross(a, b);
+
+    /// <summary>Angle between two vectors in radians (0 when either is zero), as in the original; <see cref="AngleBetweenDegrees"/> gives degrees.</summary>
+    public static double AngleBetween(Vector a, Vector b) => AngleBetweenDegrees(a, b) * Angles.ToRadians;
+
+    /// <summary>True when the vectors point the same way (within 1e-6 rad; a zero vector counts as parallel), as in the original.</summary>
+    public static bool AreParallel(Vector vec1, Vector vec2) => AngleBetween(vec1, vec2) < 1e-6;
+
+    /// <summary>True when the vectors are perpendicular (within 1e-6 rad), as in the original.</summary>
+    public static bool AreOrthogonal(Vector vec1, Vector vec2) => Math.Abs(AngleBetween(vec1, vec2) - Math.PI / 2) < 1e-6;
+
+    /// <summary>True when the vectors point opposite ways (within 1e-6 rad), as in the original.</summary>
+    public static bool AreOpposite(Vector vec1, Vector vec2) => Math.Abs(AngleBetween(vec1, vec2) - Math.PI) < 1e-6;
+
     /// <summary>Angle between two vectors in degrees (0 when either is zero).</summary>
-    public static double AngleBetween(Vector a, Vector b)
+    public static double AngleBetweenDegrees(Vector a, Vector b)
     {
         double la = a.Length, lb = b.Length;
         if (la < 1e-12 || lb < 1e-12)

@@ -33,6 +33,21 @@ public readonly record struct YawPitchRoll(double XAngle, double YAngle, double 
             cx * cy * sz - sx * sy * cz);
     }
 
+    /// <summary>Rotation about X in degrees (the original's aviation name for <see cref="Roll"/>).</summary>
+    public double Bank => XAngle;
+
+    /// <summary>Rotation about Y in degrees (the original's aviation name for <see cref="Pitch"/>).</summary>
+    public double Attitude => YAngle;
+
+    /// <summary>Rotation about Z in degrees (the original's aviation name for <see cref="Yaw"/>).</summary>
+    public double Heading => ZAngle;
+
+    /// <summary>The 3×3 rotation matrix Rz(yaw)·Ry(pitch)·Rx(roll).</summary>
+    public RotationMatrix ToRotationMatrix() => ToRotation().ToMatrix();
+
+    /// <summary>The unit quaternion of these angles: qz(yaw)·qy(pitch)·qx(roll).</summary>
+    public Quaternion ToQuaternion() => ToRotation().ToQuaternion();
+
     /// <summary>Text such as <c>EulerZYX[Z:30, Y:20, X:10]</c> (6 decimals).</summary>
     public override string ToString() => $"EulerZYX[Z:{Num.F(ZAngle, 6)}, Y:{Num.F(YAngle, 6)}, X:{Num.F(XAngle, 6)}]";
 }

@@ -37,18 +37,18 @@ public class HugeInputTests
     }
 
     [Fact]
-    public void AngleBetween_HugeVectors_IsTheAngleNotNaN()
+    public void AngleBetweenDegrees_HugeVectors_IsTheAngleNotNaN()
     {
-        Assert.Equal(90, Vector.AngleBetween(new Vector(1e200, 0, 0), new Vector(0, 1e300, 0)), 12);
-        Assert.Equal(45, Vector.AngleBetween(new Vector(double.MaxValue, 0, 0), new Vector(double.MaxValue, double.MaxValue, 0)), 12);
+        Assert.Equal(90, Vector.AngleBetweenDegrees(new Vector(1e200, 0, 0), new Vector(0, 1e300, 0)), 12);
+        Assert.Equal(45, Vector.AngleBetweenDegrees(new Vector(double.MaxValue, 0, 0), new Vector(double.MaxValue, double.MaxValue, 0)), 12);
     }
 
     [Fact]
-    public void AngleBetween_TinyAngle_IsNotRoundedToZero()
+    public void AngleBetweenDegrees_TinyAngle_IsNotRoundedToZero()
     {
         double expected = Math.Atan(1e-10) * 180 / Math.PI;
 
-        Assert.Equal(expected, Vector.AngleBetween(Vector.XAxis, new Vector(1, 1e-10, 0)), expected * 1e-9);
-        Assert.Equal(180 - expected, Vector.AngleBetween(Vector.XAxis, new Vector(-1, 1e-10, 0)), 1e-12);
+        Assert.Equal(expected, Vector.AngleBetweenDegrees(Vector.XAxis, new Vector(1, 1e-10, 0)), expected * 1e-9);
+        Assert.Equal(180 - expected, Vector.AngleBetweenDegrees(Vector.XAxis, new Vector(-1, 1e-10, 0)), 1e-12);
     }
 }

@@ -36,13 +36,13 @@ public class VectorTests
     }
 
     [Fact]
-    public void AngleBetween_KnownPairs_Degrees()
+    public void AngleBetweenDegrees_KnownPairs_Degrees()
     {
-        Assert.Equal(90, Vector.AngleBetween(Vector.XAxis, Vector.YAxis), 12);
-        Assert.Equal(180, Vector.AngleBetween(Vector.XAxis, -Vector.XAxis), 12);
-        Assert.Equal(45, Vector.AngleBetween(new Vector(1, 0, 0), new Vector(3, 3, 0)), 12);
-        Assert.Equal(0, Vector.AngleBetween(Vector.Zero, Vector.XAxis));
-        Assert.Equal(0, Vector.AngleBetween(new Vector(1, 1e-9, 0), new Vector(1, 1e-9, 0)), 6);
+        Assert.Equal(90, Vector.AngleBetweenDegrees(Vector.XAxis, Vector.YAxis), 12);
+        Assert.Equal(180, Vector.AngleBetweenDegrees(Vector.XAxis, -Vector.XAxis), 12);
+        Assert.Equal(45, Vector.AngleBetweenDegrees(new Vector(1, 0, 0), new Vector(3, 3, 0)), 12);
+        Assert.Equal(0, Vector.AngleBetweenDegrees(Vector.Zero, Vector.XAxis));
+        Assert.Equal(0, Vector.AngleBetweenDegrees(new Vector(1, 1e-9, 0), new Vector(1, 1e-9, 0)), 6);
     }
 
     [Fact]
