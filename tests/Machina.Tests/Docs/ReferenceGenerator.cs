@@ -67,6 +67,10 @@ internal static class ReferenceGenerator
                 return $"{obsolete}{(isStatic ? "static " : "")}{TypeName(p.PropertyType, Nullability.Create(p))} {p.Name} {accessors}";
             case EventInfo e:
                 return $"{obsolete}event {TypeName(e.EventHandlerType!, Nullability.Create(e))} {e.Name}";
+            case Type { BaseType: var b } d when b == typeof(MulticastDelegate):
+                MethodInfo invoke = d.GetMethod("Invoke")!;
+                string arguments = string.Join(", ", invoke.GetParameters().Select(Parameter));
+                return $"{obsolete}delegate {TypeName(invoke.ReturnType, Nullability.Create(invoke.ReturnParameter))} {d.Name}({arguments})";
             default:
                 throw new InvalidOperationException($"Unexpected member {member}.");
         }
