@@ -41,8 +41,19 @@ internal sealed class CompileJob
     /// <summary>True when any action sets the acceleration (same pass as <see cref="CustomDeclarations"/>).</summary>
     internal bool SetsAcceleration => Survey().SetsAcceleration;
 
+    /// <summary>
+    /// Text that every statement the survey looks for contains: <c>CustomCode</c>, and <c>Acceleration</c> in both
+    /// <c>Acceleration</c> and <c>AccelerationTo</c> (instruction names are case-sensitive).
+    /// </summary>
+    private static readonly string[] SurveyedInstructions = ["CustomCode", "Acceleration"];
+
     private (List<string> Declarations, bool SetsAcceleration) Survey()
     {
+        if (_survey is null && Source is not null && !Source.MayContain(SurveyedInstructions))
+        {
+            // A text that never names the statements the survey looks for has none of them: no pass needed.
+            _survey = ([], false);
+        }
         if (_survey is null)
         {
             var declarations = new List<string>();
