@@ -87,6 +87,14 @@ internal sealed class CompileJob
     /// <summary>All warnings raised, including those beyond <see cref="MaxWarningsKept"/>.</summary>
     internal int WarningCount { get; private set; }
 
+    /// <summary>Forgets the warnings and reports of an attempt that is thrown away, so that a new attempt starts afresh.</summary>
+    internal void Restart()
+    {
+        _warnings.Clear();
+        WarningCount = 0;
+        _kinematicsReported = false;
+    }
+
     private void Keep(ProgramWarning warning)
     {
         WarningCount++;
