@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>Everything a compiler needs: the program name, the actions in order, the options, and a place for warnings.</summary>
@@ -75,7 +77,29 @@ internal sealed class CompileJob
     internal IReadOnlyList<ProgramWarning> Warnings => _warnings;
 
     /// <summary>Records that <paramref name="action"/> could not be expressed exactly.</summary>
-    internal void Warn(RobotAction action, string message) => Keep(new ProgramWarning(action.Id, action.ToInstruction(), message));
+    internal void Warn(RobotAction action, string message)
+    {
+        if (!KeepsMoreWarnings)
+        {
+            WarningCount++;
+            return;
+        }
+        Keep(new ProgramWarning(action.Id, action.ToInstruction(), message));
+    }
+
+    /// <summary>Records a warning whose text is formatted only if it is kept (see <see cref="WarningText"/>).</summary>
+    internal void Warn(RobotAction action, [InterpolatedStringHandlerArgument("")] ref WarningText message)
+    {
+        if (!message.IsWanted)
+        {
+            WarningCount++;
+            return;
+        }
+        Keep(new ProgramWarning(action.Id, action.ToInstruction(), message.ToStringAndClear()));
+    }
+
+    /// <summary>True while warnings are still kept in full (fewer than <see cref="MaxWarningsKept"/> so far).</summary>
+    internal bool KeepsMoreWarnings => _warnings.Count < MaxWarningsKept;
 
     /// <summary>Records a kinematic pre-flight issue of <paramref name="action"/>.</summary>
     internal void Warn(RobotAction action, KinematicIssue issue) =>
