@@ -26,5 +26,15 @@ public sealed record ActionTranslation : RobotAction
     public override string ToInstruction() => InstructionText.Call(Relative ? "Move" : "MoveTo", Translation.X, Translation.Y, Translation.Z);
 
     /// <inheritdoc/>
-    public override string Describe() => Relative ? $"Move {Translation} mm" : $"Move to {Translation} mm";
+    public override string Describe()
+    {
+        // Written into one buffer: compilers with human comments describe every move of a program of millions.
+        ReadOnlySpan<char> verb = Relative ? "Move " : "Move to ";
+        Span<char> buffer = stackalloc char[16 + Vector.MaxTextChars];
+        verb.CopyTo(buffer);
+        int at = verb.Length;
+        at += Translation.WriteText(buffer[at..], ", ");
+        " mm".CopyTo(buffer[at..]);
+        return new string(buffer[..(at + 3)]);
+    }
 }

@@ -128,10 +128,37 @@ public readonly record struct Vector(double X, double Y, double Z)
         Math.Abs(X - other.X) < tolerance && Math.Abs(Y - other.Y) < tolerance && Math.Abs(Z - other.Z) < tolerance;
 
     /// <summary>Text such as <c>[400, 300, 500]</c> (3 decimals).</summary>
-    public override string ToString() => $"[{Num.F(X, 3)}, {Num.F(Y, 3)}, {Num.F(Z, 3)}]";
+    public override string ToString()
+    {
+        Span<char> buffer = stackalloc char[MaxTextChars];
+        return new string(buffer[..WriteText(buffer, ", ")]);
+    }
 
     /// <summary>Compact text such as <c>[400,300,500]</c> (3 decimals, no spaces).</summary>
-    public string ToArrayString() => $"[{Num.F(X, 3)},{Num.F(Y, 3)},{Num.F(Z, 3)}]";
+    public string ToArrayString()
+    {
+        Span<char> buffer = stackalloc char[MaxTextChars];
+        return new string(buffer[..WriteText(buffer, ",")]);
+    }
+
+    /// <summary>Characters enough for <see cref="WriteText"/> with a separator of up to two characters.</summary>
+    internal const int MaxTextChars = 3 * NumAppend.MaxChars + 8;
+
+    /// <summary>Writes <c>[x{separator}y{separator}z]</c> (3 decimals) into <paramref name="destination"/> and returns its length.</summary>
+    internal int WriteText(Span<char> destination, ReadOnlySpan<char> separator)
+    {
+        int at = 0;
+        destination[at++] = '[';
+        at += NumAppend.WriteF(destination[at..], X, 3);
+        separator.CopyTo(destination[at..]);
+        at += separator.Length;
+        at += NumAppend.WriteF(destination[at..], Y, 3);
+        separator.CopyTo(destination[at..]);
+        at += separator.Length;
+        at += NumAppend.WriteF(destination[at..], Z, 3);
+        destination[at++] = ']';
+        return at;
+    }
 
     internal Vector RequireFinite(string name)
     {

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>Everything a compiler needs: the program name, the actions in order, the options, and a place for warnings.</summary>
@@ -41,8 +43,19 @@ internal sealed class CompileJob
     /// <summary>True when any action sets the acceleration (same pass as <see cref="CustomDeclarations"/>).</summary>
     internal bool SetsAcceleration => Survey().SetsAcceleration;
 
+    /// <summary>
+    /// Text that every statement the survey looks for contains: <c>CustomCode</c>, and <c>Acceleration</c> in both
+    /// <c>Acceleration</c> and <c>AccelerationTo</c> (instruction names are case-sensitive).
+    /// </summary>
+    private static readonly string[] SurveyedInstructions = ["CustomCode", "Acceleration"];
+
     private (List<string> Declarations, bool SetsAcceleration) Survey()
     {
+        if (_survey is null && Source is not null && !Source.MayContain(SurveyedInstructions))
+        {
+            // A text that never names the statements the survey looks for has none of them: no pass needed.
+            _survey = ([], false);
+        }
         if (_survey is null)
         {
             var declarations = new List<string>();
@@ -64,7 +77,29 @@ internal sealed class CompileJob
     internal IReadOnlyList<ProgramWarning> Warnings => _warnings;
 
     /// <summary>Records that <paramref name="action"/> could not be expressed exactly.</summary>
-    internal void Warn(RobotAction action, string message) => Keep(new ProgramWarning(action.Id, action.ToInstruction(), message));
+    internal void Warn(RobotAction action, string message)
+    {
+        if (!KeepsMoreWarnings)
+        {
+            WarningCount++;
+            return;
+        }
+        Keep(new ProgramWarning(action.Id, action.ToInstruction(), message));
+    }
+
+    /// <summary>Records a warning whose text is formatted only if it is kept (see <see cref="WarningText"/>).</summary>
+    internal void Warn(RobotAction action, [InterpolatedStringHandlerArgument("")] ref WarningText message)
+    {
+        if (!message.IsWanted)
+        {
+            WarningCount++;
+            return;
+        }
+        Keep(new ProgramWarning(action.Id, action.ToInstruction(), message.ToStringAndClear()));
+    }
+
+    /// <summary>True while warnings are still kept in full (fewer than <see cref="MaxWarningsKept"/> so far).</summary>
+    internal bool KeepsMoreWarnings => _warnings.Count < MaxWarningsKept;
 
     /// <summary>Records a kinematic pre-flight issue of <paramref name="action"/>.</summary>
     internal void Warn(RobotAction action, KinematicIssue issue) =>
@@ -75,6 +110,14 @@ internal sealed class CompileJob
 
     /// <summary>All warnings raised, including those beyond <see cref="MaxWarningsKept"/>.</summary>
     internal int WarningCount { get; private set; }
+
+    /// <summary>Forgets the warnings and reports of an attempt that is thrown away, so that a new attempt starts afresh.</summary>
+    internal void Restart()
+    {
+        _warnings.Clear();
+        WarningCount = 0;
+        _kinematicsReported = false;
+    }
 
     private void Keep(ProgramWarning warning)
     {

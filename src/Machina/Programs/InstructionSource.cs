@@ -37,6 +37,35 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
         return new InstructionParseException(here ? _line : 0, here ? _column : 0, $"cannot apply \"{action.ToInstruction()}\": {reason}");
     }
 
+    /// <summary>
+    /// False when the text contains none of <paramref name="words"/> anywhere (in a statement, a comment or a string): a
+    /// scan of the raw characters, far cheaper than a parse, that lets a compiler skip a pass whose result it already knows.
+    /// </summary>
+    internal bool MayContain(IReadOnlyList<string> words)
+    {
+        int longest = words.Max(w => w.Length);
+        char[] buffer = new char[(1 << 16) + longest];
+        int kept = 0;
+        using TextReader reader = open();
+        int read;
+        while ((read = reader.ReadBlock(buffer, kept, buffer.Length - kept)) > 0)
+        {
+            cancellationToken.ThrowIfCancellationRequested();
+            ReadOnlySpan<char> text = buffer.AsSpan(0, kept + read);
+            foreach (string word in words)
+            {
+                if (text.IndexOf(word, StringComparison.Ordinal) >= 0)
+                {
+                    return true;
+                }
+            }
+            // Keeps the end of this block so that a word cut between two blocks is still found.
+            kept = Math.Min(longest - 1, text.Length);
+            text[^kept..].CopyTo(buffer);
+        }
+        return false;
+    }
+
     /// <summary>Parsed statements with their positions, and the error that ended the text after them, if any.</summary>
     private sealed class Batch
     {

@@ -27,6 +27,12 @@ internal sealed class ListLineSink : LineSink
 /// <summary>Writes lines to a text writer as they come.</summary>
 internal sealed class WriterLineSink(TextWriter writer, string newLine) : LineSink
 {
+    /// <summary>Where the lines go.</summary>
+    internal TextWriter Writer => writer;
+
+    /// <summary>What ends each line.</summary>
+    internal string NewLine => newLine;
+
     internal override void Add(string line)
     {
         writer.Write(line);

@@ -8,6 +8,12 @@ internal abstract class ProgramOutput : IDisposable
     /// <summary>Opens a new file; lines added to the sink become its content, in order.</summary>
     internal abstract LineSink OpenFile(string name, string extension, Encoding encoding, string commentPrefix);
 
+    /// <summary>
+    /// Lines kept aside, to be placed later into a file of this output with <see cref="SpoolSink.MoveTo"/>: a compiler that
+    /// learns its declarations while it writes its instructions writes them here, then the declarations, then these lines.
+    /// </summary>
+    internal abstract SpoolSink OpenSpool(Encoding encoding);
+
     /// <summary>Flushes and closes every file.</summary>
     public virtual void Dispose() { }
 }
@@ -25,6 +31,8 @@ internal sealed class MemoryProgramOutput : ProgramOutput
     }
 
     /// <summary>The program made of the files written so far.</summary>
+    internal override SpoolSink OpenSpool(Encoding encoding) => new MemorySpool();
+
     internal RobotProgram ToProgram(string name, RobotType brand, IReadOnlyList<ProgramWarning> warnings) => new(
         name, brand, _files.Select(f => new RobotProgramFile(f.Name, f.Extension, f.Encoding, f.Comment, f.Sink.Lines)).ToArray(), warnings);
 }
@@ -55,6 +63,11 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
     }
 
     /// <summary>Closes every file and, with <c>replaceAtEnd</c>, gives each its real name (replacing a file of that name).</summary>
+    internal override SpoolSink OpenSpool(Encoding encoding)
+    {
+        return new FileSpool(Path.Combine(Path.GetTempPath(), "machina-" + Guid.NewGuid().ToString("N") + ".spool"), encoding, newLine);
+    }
+
     internal void Commit()
     {
         CloseWriters();

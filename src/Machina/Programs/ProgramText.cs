@@ -1,4 +1,4 @@
-using System.Text;
+using System.Buffers;
 
 namespace Machina;
 
@@ -8,28 +8,39 @@ internal static class ProgramText
     /// <summary>True for characters that end a line or are invisible controls: C0/C1 controls, DEL and the Unicode line and paragraph separators.</summary>
     internal static bool BreaksLine(char c) => char.IsControl(c) || c is '\u2028' or '\u2029';
 
-    /// <summary>The text with every line break and control character replaced by a space, so that it stays on one line.</summary>
-    internal static string OneLine(string text)
+    /// <summary>Characters that break a line or are invisible controls: <see cref="char.IsControl(char)"/>, U+2028 and U+2029.</summary>
+    private static readonly SearchValues<char> LineBreakers = SearchValues.Create(
+        Enumerable.Range(0, 0x20).Concat(Enumerable.Range(0x7f, 0x21)).Select(c => (char)c).Concat(['\u2028', '\u2029']).ToArray());
+
+    /// <summary>The characters robot-language comments replace: C0 controls, DEL, NEL (U+0085), U+2028 and U+2029.</summary>
+    private static readonly SearchValues<char> CommentBreakers = SearchValues.Create(
+        Enumerable.Range(0, 0x20).Select(c => (char)c).Concat(['\u007f', '\u0085', '\u2028', '\u2029']).ToArray());
+
+    /// <summary>The text on one line: every character that breaks a line or is a control character becomes a space.</summary>
+    internal static string OneLine(string text) => Replace(text, LineBreakers);
+
+    /// <summary>A text safe inside a one-line RAPID or URScript comment: line breaks and control characters become spaces.</summary>
+    internal static string CommentText(string text) => Replace(text, CommentBreakers);
+
+    /// <summary>The text with every character of <paramref name="breakers"/> replaced by a space; the same string when there is none.</summary>
+    private static string Replace(string text, SearchValues<char> breakers)
     {
-        int first = -1;
-        for (int i = 0; i < text.Length; i++)
-        {
-            if (BreaksLine(text[i]))
-            {
-                first = i;
-                break;
-            }
-        }
+        int first = text.AsSpan().IndexOfAny(breakers);
         if (first < 0)
         {
             return text;
         }
-        var sb = new StringBuilder(text.Length).Append(text, 0, first);
-        for (int i = first; i < text.Length; i++)
+        return string.Create(text.Length, (text, breakers, first), static (span, state) =>
         {
-            sb.Append(BreaksLine(text[i]) ? ' ' : text[i]);
-        }
-        return sb.ToString();
+            state.text.AsSpan().CopyTo(span);
+            for (int i = state.first; i < span.Length; i++)
+            {
+                if (state.breakers.Contains(span[i]))
+                {
+                    span[i] = ' ';
+                }
+            }
+        });
     }
 
     /// <summary>Milliseconds as exact decimal seconds, never in exponent form: 1500 → "1.5", 1 → "0.001", 0 → "0".</summary>

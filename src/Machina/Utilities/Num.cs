@@ -20,7 +20,11 @@ internal static class Num
     internal static string G(double value) => Clean(value).ToString("G15", Inv);
 
     /// <summary>Rounded to <paramref name="decimals"/> decimals (midpoint to even), printed in shortest form.</summary>
-    internal static string F(double value, int decimals) => Clean(Math.Round(value, decimals)).ToString("G15", Inv);
+    internal static string F(double value, int decimals)
+    {
+        Span<char> buffer = stackalloc char[NumAppend.MaxChars];
+        return new string(buffer[..NumAppend.WriteF(buffer, value, decimals)]);
+    }
 
     /// <summary>Integer text.</summary>
     internal static string I(long value) => value.ToString(Inv);

@@ -15,25 +15,45 @@ internal static class NumAppend
     /// <summary>Appends <paramref name="value"/> rounded to <paramref name="decimals"/> (0–9) decimals, trailing zeros removed.</summary>
     internal static StringBuilder AppendFixed(this StringBuilder sb, double value, int decimals)
     {
+        Span<char> buffer = stackalloc char[MaxChars];
+        int written = TryWriteScaled(buffer, value, decimals);
+        if (written < 0)
+        {
+            return sb.Append(Num.Inv, $"{Num.Clean(Math.Round(value, decimals)):G15}");
+        }
+        return sb.Append(buffer[..written]);
+    }
+
+    /// <summary>Characters enough for any number this class or <see cref="Num.F(double, int)"/> writes.</summary>
+    internal const int MaxChars = 32;
+
+    /// <summary>
+    /// Writes <paramref name="value"/> rounded to <paramref name="decimals"/> (0–9) decimals into <paramref name="destination"/>
+    /// (at least <see cref="MaxChars"/> long) in plain decimal notation and returns the number of characters, or −1 when the
+    /// rounded value has more than 15 significant digits, or is not finite, and the caller must format it another way.
+    /// </summary>
+    internal static int TryWriteScaled(Span<char> destination, double value, int decimals)
+    {
         // Math.Round(value, decimals) scales, rounds to even and scales back; doing the first two steps here gives the
         // same digits as an integer, which prints exactly while it has at most 15 significant digits.
         double scaled = Math.Round(value * Pow10[decimals]);
         if (!(Math.Abs(scaled) < 1e15))
         {
-            return sb.Append(Num.Inv, $"{Num.Clean(Math.Round(value, decimals)):G15}");
+            return -1;
         }
         long m = (long)scaled;
+        int at = 0;
         if (m < 0)
         {
-            sb.Append('-');
+            destination[at++] = '-';
             m = -m;
         }
-        long unit = Pow10L[decimals];
-        long whole = Math.DivRem(m, unit, out long fraction);
-        sb.Append(Num.Inv, $"{whole}");
+        long whole = Math.DivRem(m, Pow10L[decimals], out long fraction);
+        whole.TryFormat(destination[at..], out int length, default, Num.Inv);
+        at += length;
         if (fraction == 0)
         {
-            return sb;
+            return at;
         }
         int digits = decimals;
         while (fraction % 10 == 0)
@@ -41,11 +61,35 @@ internal static class NumAppend
             fraction /= 10;
             digits--;
         }
-        sb.Append('.');
+        destination[at++] = '.';
         for (long p = Pow10L[digits - 1]; p > fraction && p > 1; p /= 10)
         {
-            sb.Append('0');
+            destination[at++] = '0';
         }
-        return sb.Append(Num.Inv, $"{fraction}");
+        fraction.TryFormat(destination[at..], out length, default, Num.Inv);
+        return at + length;
+    }
+
+    /// <summary>
+    /// Writes exactly the text of <see cref="Num.F(double, int)"/> (which switches to E notation below 0.0001) into
+    /// <paramref name="destination"/> (at least <see cref="MaxChars"/> long) and returns the number of characters.
+    /// </summary>
+    internal static int WriteF(Span<char> destination, double value, int decimals)
+    {
+        if ((uint)decimals < (uint)Pow10.Length)
+        {
+            // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
+            double scaled = Math.Abs(Math.Round(value * Pow10[decimals]));
+            if (decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4])
+            {
+                int written = TryWriteScaled(destination, value, decimals);
+                if (written >= 0)
+                {
+                    return written;
+                }
+            }
+        }
+        Num.Clean(Math.Round(value, decimals)).TryFormat(destination, out int general, "G15", Num.Inv);
+        return general;
     }
 }

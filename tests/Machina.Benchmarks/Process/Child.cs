@@ -18,11 +18,13 @@ internal static class Child
         string kind = args.Length > 0 ? args[0] : "";
         int repeat = a.TryGetValue("repeat", out string? r) ? int.Parse(r, System.Globalization.CultureInfo.InvariantCulture) : 1;
         var iterations = new List<double>();
+        var iterationCpu = new List<double>();
         var extra = new Dictionary<string, object?>();
         long workStart = Stopwatch.GetTimestamp();
         for (int i = 0; i < repeat; i++)
         {
             long start = Stopwatch.GetTimestamp();
+            double cpuStart = Environment.CpuUsage.TotalTime.TotalSeconds;
             switch (kind)
             {
                 case "compile":
@@ -31,11 +33,15 @@ internal static class Child
                 case "stream":
                     Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), extra);
                     break;
+                case "write-input":
+                    Workloads.WriteInstructionFile(a["file"], int.Parse(a["lines"], System.Globalization.CultureInfo.InvariantCulture));
+                    break;
                 default:
                     Console.Error.WriteLine($"Unknown child kind \"{kind}\".");
                     return 2;
             }
             iterations.Add(Stopwatch.GetElapsedTime(start).TotalSeconds);
+            iterationCpu.Add(Environment.CpuUsage.TotalTime.TotalSeconds - cpuStart);
         }
         long workEnd = Stopwatch.GetTimestamp();
         (long hwm, long rss) = Memory();
@@ -45,6 +51,7 @@ internal static class Child
             ["workStart"] = workStart,
             ["workEnd"] = workEnd,
             ["iterations"] = iterations,
+            ["iterationCpuSeconds"] = iterationCpu,
             ["peakResidentBytes"] = hwm,
             ["cpuSeconds"] = Environment.CpuUsage.TotalTime.TotalSeconds,
             ["residentBytes"] = rss,

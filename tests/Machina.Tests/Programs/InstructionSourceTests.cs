@@ -21,6 +21,46 @@ public class InstructionSourceTests
         Assert.False(ReferenceEquals(first[5], second[5]));
     }
 
+    [Theory]
+    [InlineData(0, true)]
+    [InlineData(65_530, true)]      // "CustomCode" cut by the end of the first 64 K block
+    [InlineData(65_536, true)]
+    [InlineData(200_000, true)]
+    [InlineData(-1, false)]
+    public void MayContain_WordAnywhere_FoundEvenAcrossBlocks(int at, bool expected)
+    {
+        string filler = new('x', 300_000);
+        string text = at < 0 ? filler : filler[..at] + "CustomCode" + filler[at..];
+        var source = new InstructionSource(() => new StringReader(text), CancellationToken.None);
+
+        Assert.Equal(expected, source.MayContain(["Acceleration", "CustomCode"]));
+    }
+
+    [Fact]
+    public void CompileToFolder_DeclarationsOnlyInLaterText_StillDeclared()
+    {
+        // The survey pass is skipped only when the text cannot hold what it looks for; here it must run and find both.
+        string folder = Path.Combine(Path.GetTempPath(), "machina-survey-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            string text = Moves(50_000) + "CustomCode(\"DECL INT counter\", true);\nAccelerationTo(500);\nMove(1, 0, 0);\n";
+            Instructions.CompileToFolder(new StringReader(text), RobotType.KUKA, folder, programName: "Survey");
+
+            string src = File.ReadAllText(Path.Combine(folder, "Survey.src"));
+            var robot = Robot.Create("Survey", RobotType.KUKA);
+            robot.Do(text);
+            Assert.Contains("DECL INT counter", src);
+            Assert.Equal(robot.Compile().Files.Single(f => f.FileName == "Survey.src").ToText(), src);
+        }
+        finally
+        {
+            if (Directory.Exists(folder))
+            {
+                Directory.Delete(folder, recursive: true);
+            }
+        }
+    }
+
     [Fact]
     public void Enumerate_ReaderFailsHalfWay_StatementsBeforeThenTheError()
     {

@@ -102,19 +102,7 @@ internal static class UrScriptText
     }
 
     /// <summary>A text safe inside a <c>#</c> comment: line breaks and control characters become spaces.</summary>
-    internal static string CommentText(string text)
-    {
-        if (text.AsSpan().IndexOfAnyInRange('\0', '\u001f') < 0 && text.AsSpan().IndexOfAny('\u007f', '\u2028', '\u2029') < 0 && !text.Contains('\u0085'))
-        {
-            return text;
-        }
-        var sb = new StringBuilder(text.Length);
-        foreach (char c in text)
-        {
-            sb.Append(c < ' ' || c is '\u007f' or '\u2028' or '\u2029' or '\u0085' ? ' ' : c);
-        }
-        return sb.ToString();
-    }
+    internal static string CommentText(string text) => ProgramText.CommentText(text);
 
     /// <summary>The program name as a URScript function name: ASCII letters, digits and '_', a letter first, not a keyword or a function this program calls.</summary>
     internal static string FunctionName(string programName)

@@ -12,8 +12,27 @@ internal sealed class RapidCompiler : Compiler
 
     internal override void Emit(CompileJob job, ProgramOutput output)
     {
-        RapidPlan plan = RapidPlan.Collect(job);
+        if (job.Options.InlineTargets)
+        {
+            // One pass: the instructions go to a spool while the declarations are gathered, then the module is written
+            // around them. Only when names collide (which the provisional names cannot foresee) is it done again in two.
+            RapidPlan live = RapidPlan.StartLive(job);
+            using SpoolSink body = output.OpenSpool(RobotProgram.Ascii);
+            new RapidWriter(job, live, body).WriteInstructions();
+            live.Finish();
+            if (live.ProvisionalNamesHeld)
+            {
+                WriteModule(job, output, live, writer => body.MoveTo(writer.Sink));
+                return;
+            }
+            job.Restart();
+        }
+        WriteModule(job, output, RapidPlan.Collect(job), writer => writer.WriteInstructions());
+    }
 
+    /// <summary>Writes the program file and the module, with the instructions from <paramref name="instructions"/>.</summary>
+    private void WriteModule(CompileJob job, ProgramOutput output, RapidPlan plan, Action<RapidWriter> instructions)
+    {
         LineSink pgf = output.OpenFile(job.ProgramName, "pgf", RobotProgram.Ascii, CommentPrefix);
         pgf.Add("<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>");
         pgf.Add("<Program>");
@@ -43,7 +62,7 @@ internal sealed class RapidCompiler : Compiler
         mod.Add("    ConfL \\Off;");
         mod.Add(writer.StartAcceleration());
         mod.Add("");
-        writer.WriteInstructions();
+        instructions(writer);
         mod.Add("");
         mod.Add("  ENDPROC");
         mod.Add("");

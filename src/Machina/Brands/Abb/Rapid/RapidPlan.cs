@@ -43,12 +43,7 @@ internal sealed class RapidPlan
     /// <summary>Runs the first pass: replays the actions (refused ones are skipped; the writing pass reports them).</summary>
     internal static RapidPlan Collect(CompileJob job)
     {
-        var plan = new RapidPlan();
-        plan.ModuleName = plan.Names.Claim(RapidNames.LooksLikeTarget(job.ProgramName) ? "M_" + job.ProgramName : job.ProgramName, "M");
-        if (job.NewCursor().Tool is Tool startTool)
-        {
-            plan.AddTool(startTool);
-        }
+        RapidPlan plan = Start(job, live: false);
         foreach ((RobotAction action, RobotCursor cursor) in job.Applied())
         {
             plan.Observe(action, cursor);
@@ -57,7 +52,74 @@ internal sealed class RapidPlan
         return plan;
     }
 
-    private void Observe(RobotAction action, RobotCursor cursor)
+    /// <summary>
+    /// A plan that is gathered while the instructions are written, in one pass (<see cref="Observe"/> before each action is
+    /// written). Until <see cref="Finish"/> it answers names provisionally, claimed in the order the instructions meet them;
+    /// <see cref="Finish"/> names everything as <see cref="Collect"/> does and <see cref="ProvisionalNamesHeld"/> tells whether
+    /// every answer given was the final name (it is not only when names collide, e.g. a tool called <c>vel100</c>).
+    /// </summary>
+    internal static RapidPlan StartLive(CompileJob job) => Start(job, live: true);
+
+    private static RapidPlan Start(CompileJob job, bool live)
+    {
+        var plan = new RapidPlan();
+        plan.ModuleName = plan.Names.Claim(RapidNames.LooksLikeTarget(job.ProgramName) ? "M_" + job.ProgramName : job.ProgramName, "M");
+        if (live)
+        {
+            plan._provisional = new RapidNames();
+            plan._provisional.Claim(plan.ModuleName, "M");
+        }
+        if (job.NewCursor().Tool is Tool startTool)
+        {
+            plan.AddTool(startTool);
+        }
+        return plan;
+    }
+
+    // One-pass mode: names claimed as the instructions meet them, and every answer given, checked by Finish.
+    private RapidNames? _provisional;
+    private readonly Dictionary<double, string> _provisionalSpeeds = [];
+    private readonly Dictionary<double, string> _provisionalZones = [];
+    private readonly Dictionary<Tool, string> _provisionalTools = [];
+
+    /// <summary>True while names are answered provisionally (one-pass mode, before <see cref="Finish"/>).</summary>
+    internal bool IsLive => _provisional is not null;
+
+    /// <summary>After <see cref="Finish"/> in one-pass mode: true when every provisional answer is the final name.</summary>
+    internal bool ProvisionalNamesHeld { get; private set; } = true;
+
+    private string ProvisionalSpeed(double key)
+    {
+        if (!_provisionalSpeeds.TryGetValue(key, out string? name))
+        {
+            _provisionalSpeeds[key] = name = _provisional!.Claim("vel" + NameNumber(key), "vel");
+        }
+        return name;
+    }
+
+    private string ProvisionalZone(double key)
+    {
+        if (!_provisionalZones.TryGetValue(key, out string? name))
+        {
+            _provisionalZones[key] = name = ZoneName(key, _provisional!, out _);
+        }
+        return name;
+    }
+
+    private string ProvisionalTool(Tool tool)
+    {
+        if (!_provisionalTools.TryGetValue(tool, out string? name))
+        {
+            _provisionalTools[tool] = name = ToolIdentifier(tool, _provisional!);
+        }
+        return name;
+    }
+
+    private static string ToolIdentifier(Tool tool, RapidNames names) =>
+        names.Claim(RapidNames.LooksLikeTarget(tool.Name) ? "tool_" + tool.Name : tool.Name, "tool_");
+
+    /// <summary>Records what <paramref name="action"/> adds to the declarations, with the cursor state after it.</summary>
+    internal void Observe(RobotAction action, RobotCursor cursor)
     {
         switch (action)
         {
@@ -98,11 +160,12 @@ internal sealed class RapidPlan
     /// <summary>A number for a generated name: fixed-point, up to 3 decimals, '.' as '_' (100 → "100", 2.5 → "2_5").</summary>
     private static string NameNumber(double value) => value.ToString("0.###", Num.Inv).Replace('.', '_');
 
-    private void Finish()
+    /// <summary>Names every speed, zone and tool and makes their declaration lines (and checks the provisional answers).</summary>
+    internal void Finish()
     {
         foreach (double zone in _zones)
         {
-            _zoneNames[zone] = ZoneName(zone, out bool predefined);
+            _zoneNames[zone] = ZoneName(zone, Names, out bool predefined);
             if (!predefined)
             {
                 DataLines.Add($"  CONST zonedata {_zoneNames[zone]} := {RapidText.ZoneData(zone)};");
@@ -118,15 +181,25 @@ internal sealed class RapidPlan
         var toolLines = new List<string>(_tools.Count);
         foreach (Tool tool in _tools)
         {
-            string name = Names.Claim(RapidNames.LooksLikeTarget(tool.Name) ? "tool_" + tool.Name : tool.Name, "tool_");
+            string name = ToolIdentifier(tool, Names);
             _toolNames[tool] = name;
             toolLines.Add($"  PERS tooldata {name} := {RapidText.ToolData(tool)};");
         }
         DataLines.InsertRange(0, speedLines);
         DataLines.InsertRange(0, toolLines);
+        if (_provisional is not null)
+        {
+            ProvisionalNamesHeld = Held(_provisionalSpeeds, _speedNames) && Held(_provisionalZones, _zoneNames) && Held(_provisionalTools, _toolNames);
+            _provisional = null;
+            _lastSpeed = _lastZone = double.NaN;
+            _lastTool = null;
+        }
     }
 
-    private string ZoneName(double zone, out bool predefined)
+    private static bool Held<TKey>(Dictionary<TKey, string> answered, Dictionary<TKey, string> final) where TKey : notnull =>
+        answered.All(pair => final.TryGetValue(pair.Key, out string? name) && name == pair.Value);
+
+    private static string ZoneName(double zone, RapidNames names, out bool predefined)
     {
         predefined = true;
         if (zone < 0.001)
@@ -138,7 +211,7 @@ internal sealed class RapidPlan
             return "z" + Num.I((long)Math.Round(zone));
         }
         predefined = false;
-        return Names.Claim("zone" + NameNumber(zone), "zone");
+        return names.Claim("zone" + NameNumber(zone), "zone");
     }
 
     /// <summary>The speeddata name for the cursor's speed.</summary>
@@ -148,7 +221,7 @@ internal sealed class RapidPlan
         if (key != _lastSpeed)
         {
             _lastSpeed = key;
-            _lastSpeedName = _speedNames[key];
+            _lastSpeedName = IsLive ? ProvisionalSpeed(key) : _speedNames[key];
         }
         return _lastSpeedName;
     }
@@ -160,7 +233,7 @@ internal sealed class RapidPlan
         if (key != _lastZone)
         {
             _lastZone = key;
-            _lastZoneName = _zoneNames[key];
+            _lastZoneName = IsLive ? ProvisionalZone(key) : _zoneNames[key];
         }
         return _lastZoneName;
     }
@@ -175,11 +248,13 @@ internal sealed class RapidPlan
         if (!ReferenceEquals(tool, _lastTool))
         {
             _lastTool = tool;
-            _lastToolName = _toolNames[tool];
+            _lastToolName = IsLive ? ProvisionalTool(tool) : _toolNames[tool];
         }
         return _lastToolName;
     }
 
     /// <summary>The declared name of a tool, or null when no motion uses it (it is then not declared).</summary>
-    internal string? DeclaredToolName(Tool tool) => _toolNames.TryGetValue(tool, out string? name) ? name : null;
+    /// <remarks>In one-pass mode a tool not yet used by a motion is answered as if it will be; <see cref="Finish"/> checks it.</remarks>
+    internal string? DeclaredToolName(Tool tool) =>
+        IsLive ? ProvisionalTool(tool) : _toolNames.TryGetValue(tool, out string? name) ? name : null;
 }

@@ -149,25 +149,5 @@ internal static class RapidText
     }
 
     /// <summary>A text safe inside a one-line comment: line breaks and control characters become spaces.</summary>
-    internal static string CommentText(string text)
-    {
-        foreach (char c in text)
-        {
-            if (c < ' ' || c == '\u007f' || c == '\u2028' || c == '\u2029' || c == '\u0085')
-            {
-                return Clean(text);
-            }
-        }
-        return text;
-
-        static string Clean(string text)
-        {
-            var sb = new StringBuilder(text.Length);
-            foreach (char c in text)
-            {
-                sb.Append(c < ' ' || c == '\u007f' || c == '\u2028' || c == '\u2029' || c == '\u0085' ? ' ' : c);
-            }
-            return sb.ToString();
-        }
-    }
+    internal static string CommentText(string text) => ProgramText.CommentText(text);
 }

@@ -9,6 +9,9 @@ namespace Machina;
 /// </summary>
 internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
 {
+    /// <summary>Where this writer's lines go.</summary>
+    internal LineSink Sink => sink;
+
     private const string Indent = "    ";
     private const double MinWorldAcc = 0.1;
 
@@ -68,6 +71,10 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
 
     private void Write(RobotAction action, RobotCursor cursor)
     {
+        if (plan.IsLive)
+        {
+            plan.Observe(action, cursor);
+        }
         switch (action)
         {
             case ActionTranslation or ActionRotation or ActionTransformation:
