@@ -20,6 +20,9 @@ public abstract partial class VirtualController<TState>
     /// <summary>Acknowledges an executed request (and whatever else the brand's driver sends then); false ends the driver program.</summary>
     private protected abstract Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token);
 
+    /// <summary>True for a request the brand's driver will skip (a UR program replaced since it was read); it is not logged as executed.</summary>
+    private protected virtual bool IsStale(object request) => false;
+
     private async Task ExecuteRequestsAsync(CancellationToken token)
     {
         var reader = _buffer.Reader;
@@ -28,11 +31,16 @@ public abstract partial class VirtualController<TState>
             while (await reader.WaitToReadAsync(token).ConfigureAwait(false))
             {
                 await WhileStoppedAsync(token).ConfigureAwait(false);
-                if (!reader.TryRead(out var queued))
+                if (!reader.TryRead(out var queued) || IsLost(queued.Generation))
                 {
                     continue;
                 }
+                bool stale = IsStale(queued.Request);
                 await ExecuteAsync(queued.Request, token).ConfigureAwait(false);
+                if (!stale)
+                {
+                    LogExecuted(queued.Id);
+                }
                 Interlocked.Increment(ref _requestsExecuted);
                 // Before the acknowledgement goes out: whoever sees it also sees the pause it may start.
                 CountTowardsPause();

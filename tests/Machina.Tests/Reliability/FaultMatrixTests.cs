@@ -1,0 +1,166 @@
+using Machina.Simulation;
+using Machina.Tests.Support;
+using static Machina.Tests.Online.OnlineTestSupport;
+
+namespace Machina.Tests.Reliability;
+
+/// <summary>
+/// Every fault a virtual controller can inject, for every brand: the program runs to its end after the user's usual
+/// recovery (Connect again, or Resume), each action executed exactly once and in order on the controller (its execution
+/// log) and on the host (<c>ActionExecuted</c>), the robot where the program leaves it, and the fault reported with a
+/// clear exception. docs/reliability.md, "Fault matrix and soak", has the table.
+/// </summary>
+public class FaultMatrixTests
+{
+    private const int Actions = 40;
+    private const int FaultAfter = 10;
+    private static readonly Vector Start = new(300, 100, 400);
+    private static readonly Vector End = Start + new Vector(0, 0, 5 * (Actions - 1));
+
+    /// <summary>Connection drops, lost messages: "closed" (FIN) or "failed" (reset), whichever the socket reports first.</summary>
+    private const string LinkBroken = "closed the connection|connection to the (controller|UR driver program) failed";
+
+    public static TheoryData<VirtualFault, string> Recoverable()
+    {
+        var data = new TheoryData<VirtualFault, string>();
+        VirtualFault[] common =
+        [
+            VirtualFault.Drop, VirtualFault.Delay, VirtualFault.Garbage, VirtualFault.Truncate, VirtualFault.UnknownAcknowledgement,
+            VirtualFault.RestartKeepingBuffer, VirtualFault.RestartLosingBuffer,
+        ];
+        foreach (VirtualFault fault in common)
+        {
+            foreach (string brand in FaultRig.Brands)
+            {
+                data.Add(fault, brand);
+            }
+        }
+        data.Add(VirtualFault.ProtectiveStop, "UR");
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(Recoverable))]
+    public async Task Fault_AfterTenAcknowledgements_EveryActionOnceInOrderAndReported(VirtualFault fault, string brand)
+    {
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { After = FaultAfter, Kinds = [fault], Seed = 14100, Delay = TimeSpan.FromMilliseconds(5) });
+        var w = rig.CreateRobot();
+        await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
+        IssueProgram(w.Bot);
+
+        int recoveries = await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 3);
+
+        AssertExactlyOnce(rig, w);
+        Assert.Equal([fault], rig.InjectedFaults);
+        var (type, message) = Expected(fault, brand);
+        if (type is null)
+        {
+            Assert.Empty(w.Faults);
+            Assert.Equal(0, recoveries);
+        }
+        else
+        {
+            Assert.Equal(1, recoveries);
+            MachinaException reported = Assert.Single(w.Faults);
+            Assert.IsType(type, reported);
+            Assert.Matches(message, reported.Message);
+        }
+        await w.Bot.DisconnectAsync();
+    }
+
+    /// <summary>
+    /// A controller that stops answering (nothing executes, nothing is acknowledged) is detected by the response timeout on the
+    /// host's clock, here a <see cref="ManualClock"/>: the link is closed with "stopped answering", and once the controller
+    /// answers again a reconnection resumes with nothing lost or repeated.
+    /// </summary>
+    [Theory]
+    [InlineData("ABB")]
+    [InlineData("UR")]
+    [InlineData("KUKA")]
+    public async Task StopAnswering_ResponseTimeoutThenReconnect_EveryActionOnceInOrder(string brand)
+    {
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { After = FaultAfter, Kinds = [VirtualFault.StopAnswering], Seed = 14101 });
+        var clock = new ManualClock();
+        var w = rig.CreateRobot(b => b.ResponseTimeout = TimeSpan.FromSeconds(2), clock);
+        await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
+        IssueProgram(w.Bot);
+        await EventuallyAsync(() => w.Executed.Count == FaultAfter && rig.InjectedFaults.Count == 1, "the controller to stop answering after ten actions");
+        Assert.Empty(w.Faults);
+
+        // 2 s of timeout plus the 0.25 s a 5 mm move takes at 20 mm/s, in steps of the watchdog's period.
+        for (int i = 0; i < 20 && w.Faults.IsEmpty; i++)
+        {
+            clock.Advance(TimeSpan.FromMilliseconds(500));
+            await w.Bot.FlushEventsAsync().WaitAsync(Limit);
+        }
+        MachinaException reported = Assert.Single(w.Faults);
+        Assert.IsType<RobotConnectionException>(reported);
+        Assert.StartsWith("The controller stopped answering: no acknowledgement for ", reported.Message, StringComparison.Ordinal);
+        Assert.Equal(FaultAfter, rig.ExecutedIds.Count);
+
+        rig.ResumeAnswering();
+        int recoveries = await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 2);
+
+        Assert.Equal(1, recoveries);
+        AssertExactlyOnce(rig, w);
+        await w.Bot.DisconnectAsync();
+    }
+
+    /// <summary>A controller that refuses connections: Connect fails with a clear error each time; once it accepts, the program runs once.</summary>
+    [Theory]
+    [InlineData("ABB")]
+    [InlineData("UR")]
+    [InlineData("KUKA")]
+    public async Task RefuseConnections_ConnectFailsClearlyThenSucceeds_EveryActionOnce(string brand)
+    {
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { RefuseConnections = 2 });
+        var w = rig.CreateRobot();
+        IssueProgram(w.Bot); // issued before connecting: they wait in the buffer
+
+        for (int i = 0; i < 2; i++)
+        {
+            var refused = await Assert.ThrowsAsync<RobotConnectionException>(() => w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit));
+            Assert.Matches("closed the connection|before (its|the) handshake|handshake", refused.Message);
+            Assert.Equal(ConnectionState.Disconnected, w.Bot.ConnectionState);
+        }
+        await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
+        await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 0);
+
+        AssertExactlyOnce(rig, w);
+        await w.Bot.DisconnectAsync();
+    }
+
+    /// <summary>The program: a move to <see cref="Start"/>, then 5 mm up each time; every action is one request on every brand.</summary>
+    internal static void IssueProgram(Robot bot, int count = Actions)
+    {
+        bot.MoveTo(Start.X, Start.Y, Start.Z);
+        for (int i = 1; i < count; i++)
+        {
+            bot.Move(0, 0, 5);
+        }
+    }
+
+    private static void AssertExactlyOnce(FaultRig rig, FaultRig.Watched w)
+    {
+        Assert.Equal(Enumerable.Range(1, Actions), w.Executed);
+        Assert.Equal(Enumerable.Range(1, Actions), rig.ExecutedIds);
+        Assert.True(rig.Position.IsSimilar(End, 1e-6), $"{rig.Brand} ended at {rig.Position}, expected {End}");
+        Assert.Empty(rig.Errors);
+        Assert.Empty(w.Bot.GetPendingActions());
+    }
+
+    /// <summary>What the user is told about each fault: the exception type and a pattern of its message (no type: nothing to tell).</summary>
+    private static (Type? Type, string Message) Expected(VirtualFault fault, string brand) => fault switch
+    {
+        VirtualFault.Delay => (null, ""),
+        VirtualFault.Garbage => brand switch
+        {
+            "ABB" => (typeof(AbbProtocolException), "neither an acknowledgement \\('@'\\) nor data"),
+            "KUKA" => (typeof(KukaProtocolException), "not part of the Machina KUKA driver protocol"),
+            _ => (typeof(RobotConnectionException), "response that never ends"),
+        },
+        VirtualFault.UnknownAcknowledgement => (typeof(RobotConnectionException), "^The controller acknowledged action [0-9]+, which is not waiting for execution"),
+        VirtualFault.ProtectiveStop => (typeof(RobotStoppedException), "protective stop"),
+        _ => (typeof(RobotConnectionException), LinkBroken),
+    };
+}
