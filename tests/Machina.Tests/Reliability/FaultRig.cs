@@ -19,12 +19,10 @@ internal sealed class FaultRig : IAsyncDisposable
     private readonly Func<IReadOnlyList<string>> _errors;
     private readonly Func<IReadOnlyList<VirtualFault>> _injected;
     private readonly Action _resumeAnswering;
-    private readonly Func<Task> _operator;
 
     private FaultRig(string brand, int port, IAsyncDisposable controller, Func<IReadOnlyList<int>> executed, Func<Vector> position,
-        Func<IReadOnlyList<string>> errors, Func<IReadOnlyList<VirtualFault>> injected, Action resumeAnswering, Func<Task>? fix = null)
+        Func<IReadOnlyList<string>> errors, Func<IReadOnlyList<VirtualFault>> injected, Action resumeAnswering)
     {
-        _operator = fix ?? (() => Task.CompletedTask);
         Brand = brand;
         Port = port;
         _controller = controller;
@@ -59,7 +57,7 @@ internal sealed class FaultRig : IAsyncDisposable
     /// Starts a controller of <paramref name="brand"/> with instant execution, no robot model (targets are taken as they
     /// are), the given faults and room in its logs for <paramref name="logCapacity"/> requests.
     /// </summary>
-    public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000)
+    public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole)
     {
         switch (brand)
         {
@@ -73,12 +71,11 @@ internal sealed class FaultRig : IAsyncDisposable
             {
                 var c = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity });
                 await c.StartAsync();
-                return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering,
-                    () => UnlockAtThePendantAsync(c));
+                return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
             }
             case "KUKA":
             {
-                var c = new VirtualKukaController(new VirtualKukaControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity });
+                var c = new VirtualKukaController(new VirtualKukaControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
             }
@@ -137,7 +134,6 @@ internal sealed class FaultRig : IAsyncDisposable
                         await w.Bot.ResumeAsync().WaitAsync(Limit);
                         break;
                     case ConnectionState.Disconnected:
-                        await _operator(); // a stop met while nobody was connected is cleared at the robot
                         await w.Bot.ConnectAsync("127.0.0.1", w.Port).WaitAsync(Limit);
                         break;
                 }
@@ -146,35 +142,12 @@ internal sealed class FaultRig : IAsyncDisposable
             catch (MachinaException e) when (attempt < 20)
             {
                 w.RecoveryErrors.Enqueue(e);
-                await _operator();
                 await Task.Delay(10);
             }
         }
     }
 
     public ValueTask DisposeAsync() => _controller.DisposeAsync();
-
-    /// <summary>
-    /// What an operator does when a UR robot in a protective stop holds instructions of a lost connection (the host waits for
-    /// them before it connects, and Resume needs a connection): unlock the stop and play, over the dashboard.
-    /// </summary>
-    private static async Task UnlockAtThePendantAsync(VirtualUrController controller)
-    {
-        if (controller.SafetyStatus == 1)
-        {
-            return;
-        }
-        using var client = new System.Net.Sockets.TcpClient();
-        await client.ConnectAsync(System.Net.IPAddress.Loopback, controller.DashboardPort).WaitAsync(Limit);
-        using var reader = new StreamReader(client.GetStream(), System.Text.Encoding.ASCII);
-        await using var writer = new StreamWriter(client.GetStream(), System.Text.Encoding.ASCII) { AutoFlush = true, NewLine = "\n" };
-        await reader.ReadLineAsync().WaitAsync(Limit);
-        foreach (string command in (string[])["unlock protective stop", "play"])
-        {
-            await writer.WriteLineAsync(command).WaitAsync(Limit);
-            await reader.ReadLineAsync().WaitAsync(Limit);
-        }
-    }
 
     /// <summary>A robot with what its events reported: executed ids in order, and faults (lost connections, stops).</summary>
     internal sealed class Watched(Robot bot, int port)

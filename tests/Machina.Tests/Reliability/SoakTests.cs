@@ -53,6 +53,10 @@ public class SoakTests(ITestOutputHelper output)
         Assert.InRange(recoveries, 1, injected.Count);
         output.WriteLine($"{brand}: {Actions} actions, {injected.Count} faults ({string.Join(", ", injected.GroupBy(f => f).Select(g => $"{g.Key} {g.Count()}"))}), "
             + $"{recoveries} recoveries, {watch.Elapsed.TotalSeconds:F2} s");
+        foreach (var e in w.RecoveryErrors.GroupBy(e => e.Message.Length > 90 ? e.Message[..90] : e.Message))
+        {
+            output.WriteLine($"  retried {e.Count()}x: {e.Key}");
+        }
         await w.Bot.DisconnectAsync();
     }
 
