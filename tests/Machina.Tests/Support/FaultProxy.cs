@@ -16,8 +16,12 @@ internal sealed record FaultProxyOptions
     /// <summary>Close this many of the fault channel's connections, each after a seeded number of bytes towards the host. Default 0.</summary>
     public int CloseConnections { get; init; }
 
-    /// <summary>The range the number of bytes before a close is drawn from (towards the host, counted from the connection's start).</summary>
-    public (int Min, int Max) CloseAfterBytes { get; init; } = (100, 400);
+    /// <summary>
+    /// The ranges the number of bytes before a close or the garbage is drawn from (towards the host, counted from the
+    /// connection's start): the first for the fault channel's first connection, the second for its second, and so on; the
+    /// last range serves every later connection.
+    /// </summary>
+    public IReadOnlyList<(int Min, int Max)> CloseAfterBytes { get; init; } = [(100, 400)];
 
     /// <summary>Inject garbage towards the host on this many of the fault channel's connections, after a seeded number of bytes (same range). Default 0.</summary>
     public int GarbageConnections { get; init; }
@@ -161,8 +165,9 @@ internal sealed class FaultProxy : IAsyncDisposable
             }
         }
         var random = new Random(seed);
-        int closeAt = faultNumber >= 0 && faultNumber < _options.CloseConnections ? random.Next(_options.CloseAfterBytes.Min, _options.CloseAfterBytes.Max + 1) : -1;
-        int garbageAt = faultNumber >= 0 && faultNumber < _options.GarbageConnections ? random.Next(_options.CloseAfterBytes.Min, _options.CloseAfterBytes.Max + 1) : -1;
+        var (min, max) = _options.CloseAfterBytes[Math.Clamp(faultNumber, 0, _options.CloseAfterBytes.Count - 1)];
+        int closeAt = faultNumber >= 0 && faultNumber < _options.CloseConnections ? random.Next(min, max + 1) : -1;
+        int garbageAt = faultNumber >= 0 && faultNumber < _options.GarbageConnections ? random.Next(min, max + 1) : -1;
         using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
         Task up = PumpAsync(host, controller, new Random(seed + 1), -1, -1, both.Token);
         Task down = PumpAsync(controller, host, new Random(seed + 2), closeAt, garbageAt, both.Token);
