@@ -35,9 +35,7 @@ public abstract partial class VirtualController<TState>
                 {
                     continue;
                 }
-                bool stale = IsStale(queued.Request);
-                await ExecuteAsync(queued.Request, token).ConfigureAwait(false);
-                if (!stale)
+                if (await ExecuteAsync(queued.Request, token).ConfigureAwait(false))
                 {
                     LogExecuted(queued.Id);
                 }
@@ -69,12 +67,14 @@ public abstract partial class VirtualController<TState>
     /// <summary>
     /// Executes one request: plans it, refuses (and logs) what cannot run, and waits for its motion on the controller's clock.
     /// A protective stop interrupts the motion where the robot is; once released the same request runs again from there.
+    /// False when the brand's driver skipped it (<see cref="IsStale"/> when it was last planned): it does not enter the execution log.
     /// </summary>
-    private async Task ExecuteAsync(object request, CancellationToken token)
+    private async Task<bool> ExecuteAsync(object request, CancellationToken token)
     {
         while (true)
         {
             await WhileHaltedAsync(token).ConfigureAwait(false);
+            bool runs = !IsStale(request);
             TState from;
             CancellationToken halt;
             lock (Gate)
@@ -92,7 +92,7 @@ public abstract partial class VirtualController<TState>
             catch (Exception e) when (e is VirtualRefusalException or ArgumentException or ArithmeticException or InvalidOperationException)
             {
                 RecordError("refused: " + e.Message);
-                return;
+                return runs;
             }
             if (duration > TimeSpan.Zero)
             {
@@ -120,7 +120,7 @@ public abstract partial class VirtualController<TState>
                 _state = (TState)step.State;
                 _motion = null;
             }
-            return;
+            return runs;
         }
     }
 

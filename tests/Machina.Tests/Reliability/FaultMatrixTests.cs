@@ -157,6 +157,95 @@ public class FaultMatrixTests
         await w.Bot.DisconnectAsync();
     }
 
+    /// <summary>
+    /// After a dropped connection the user cancels what was never sent (<c>ClearPendingActions</c>) and connects again: the
+    /// actions already released run once each (on the controller or after the resume), the cancelled ones never.
+    /// </summary>
+    [Theory]
+    [InlineData("ABB")]
+    [InlineData("UR")]
+    [InlineData("KUKA")]
+    public async Task Drop_ThenClearPendingActions_ReleasedRunOnceCancelledNever(string brand)
+    {
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { After = 3, Kinds = [VirtualFault.Drop], Seed = 14103 });
+        var w = rig.CreateRobot();
+        await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
+        IssueProgram(w.Bot);
+        await EventuallyAsync(() => !w.Faults.IsEmpty, "the connection to drop");
+        await Assert.ThrowsAnyAsync<MachinaException>(() => w.Bot.WaitForCompletionAsync().WaitAsync(Limit));
+
+        int released = w.Bot.GetReleasedState().LastAction!.Id;
+        Assert.InRange(released, FaultAfter - 7, Actions - 1); // the first block of 8 went out, not all 40
+        w.Bot.ClearPendingActions();
+        List<int> pending = [.. w.Bot.GetPendingActions().Select(a => a.Id)];
+        if (pending.Count > 0)
+        {
+            Assert.Equal(Enumerable.Range(released - pending.Count + 1, pending.Count), pending); // the sent ones, none cancelled
+        }
+        await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 2);
+
+        Assert.Equal(Enumerable.Range(1, released), w.Executed);
+        Assert.Equal(Enumerable.Range(1, released), rig.ExecutedIds);
+        Vector end = Start + new Vector(0, 0, 5 * (released - 1));
+        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"{rig.Brand} ended at {rig.Position}, expected {end}");
+        Assert.Empty(w.Bot.GetPendingActions());
+        w.Bot.Move(0, 0, 5); // the issue cursor went back to the released one: the next move starts there
+        await w.Bot.WaitForCompletionAsync().WaitAsync(Limit);
+        Assert.True(rig.Position.IsSimilar(end + new Vector(0, 0, 5), 1e-6), $"{rig.Brand} ended at {rig.Position}");
+        await w.Bot.DisconnectAsync();
+    }
+
+    /// <summary>
+    /// UR: the connection drops while the driver holds instructions, then a protective stop halts it mid-move with nobody
+    /// connected. Connecting again starts a new driver program (paused by the stop, which the host reports); Resume runs
+    /// every instruction the old program had not finished, each once: the halted one is not counted twice.
+    /// </summary>
+    [Fact]
+    public async Task Ur_ProtectiveStopWhileDisconnected_ReconnectAndResumeRunEachOnce()
+    {
+        var clock = new ManualClock();
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { Model = null, TimeProvider = clock });
+        await controller.StartAsync();
+        await using var rig = FaultRig.Of("UR", controller.Port, controller);
+        var w = rig.CreateRobot();
+        await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
+        IssueProgram(w.Bot, 12);
+        await EventuallyAsync(() => controller.BufferedRequestCount >= 7, "the first block to reach the controller");
+        controller.CloseConnectionAfter(0);
+        await EventuallyAsync(() => !w.Faults.IsEmpty, "the host to see the connection lost");
+        // The first move (to Start) runs on the controller's clock; the stop comes half-way through it.
+        clock.Advance(TimeSpan.FromMilliseconds(1));
+        Assert.True(controller.ProtectiveStop());
+
+        await rig.RecoverAsync(w); // Connect: the new program starts paused by the stop
+        // RTDE packages go out on the controller's clock (a real one sends hundreds a second): the next shows the stop.
+        for (long start = TimeProvider.System.GetTimestamp(); w.Bot.ConnectionState != ConnectionState.Stopped && TimeProvider.System.GetElapsedTime(start) < Limit;)
+        {
+            clock.Advance(TimeSpan.FromMilliseconds(10));
+            await Task.Delay(1);
+        }
+        Assert.Equal(ConnectionState.Stopped, w.Bot.ConnectionState);
+        await w.Bot.FlushEventsAsync().WaitAsync(Limit);
+        Assert.Equal(2, w.Faults.Count); // the lost connection, then the stop
+        Assert.IsType<RobotStoppedException>(w.Faults.Last());
+        await rig.RecoverAsync(w); // Resume
+        Task done = w.Bot.WaitForCompletionAsync();
+        for (long start = TimeProvider.System.GetTimestamp(); !done.IsCompleted && TimeProvider.System.GetElapsedTime(start) < Limit;)
+        {
+            clock.Advance(TimeSpan.FromSeconds(1));
+            await Task.Delay(1);
+        }
+        await done.WaitAsync(Limit);
+        await w.Bot.FlushEventsAsync().WaitAsync(Limit);
+
+        Assert.Equal(Enumerable.Range(1, 12), w.Executed);
+        Assert.Equal(Enumerable.Range(1, 12), rig.ExecutedIds);
+        Vector end = Start + new Vector(0, 0, 5 * 11);
+        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"UR ended at {rig.Position}, expected {end}");
+        Assert.Empty(rig.Errors);
+        await w.Bot.DisconnectAsync();
+    }
+
     /// <summary>The program: a move to <see cref="Start"/>, then 5 mm up each time; every action is one request on every brand.</summary>
     internal static void IssueProgram(Robot bot, int count = Actions)
     {

@@ -84,6 +84,10 @@ internal sealed class FaultRig : IAsyncDisposable
         }
     }
 
+    /// <summary>A rig around a UR controller a test made itself (its own clock or options).</summary>
+    public static FaultRig Of(string brand, int port, VirtualUrController c) =>
+        new(brand, port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
+
     /// <summary>An online robot of this brand, not connected yet, recording what it sees executed and every fault it reports.</summary>
     public Watched CreateRobot(Action<Robot>? configure = null, TimeProvider? time = null, int? port = null)
     {
