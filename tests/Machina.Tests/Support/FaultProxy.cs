@@ -55,6 +55,7 @@ internal sealed class FaultProxy : IAsyncDisposable
     private readonly List<Task> _loops = [];
     private readonly object _gate = new();
     private int _faultConnections;
+    private readonly List<long> _towardsHost = [];
     private int _closed;
     private int _garbage;
     private int _accepted;
@@ -79,6 +80,18 @@ internal sealed class FaultProxy : IAsyncDisposable
 
     /// <summary>Connections the proxy closed as a fault.</summary>
     public int Closed => Volatile.Read(ref _closed);
+
+    /// <summary>Bytes carried towards the host by each finished connection of the fault channel, in the order they ended.</summary>
+    public IReadOnlyList<long> BytesTowardsHost
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return [.. _towardsHost];
+            }
+        }
+    }
 
     /// <summary>Times garbage was injected.</summary>
     public int GarbageInjected => Volatile.Read(ref _garbage);
@@ -155,7 +168,8 @@ internal sealed class FaultProxy : IAsyncDisposable
             controller.Dispose();
             return;
         }
-        int seed = HashCode.Combine(_options.Seed, channel, number);
+        // Not HashCode.Combine: its results change from one process to the next.
+        int seed = unchecked(_options.Seed * 7919 + channel * 104_729 + number * 1_299_709);
         int faultNumber = -1;
         if (channel == _options.FaultChannel)
         {
@@ -170,16 +184,23 @@ internal sealed class FaultProxy : IAsyncDisposable
         int garbageAt = faultNumber >= 0 && faultNumber < _options.GarbageConnections ? random.Next(min, max + 1) : -1;
         using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
         Task up = PumpAsync(host, controller, new Random(seed + 1), -1, -1, both.Token);
-        Task down = PumpAsync(controller, host, new Random(seed + 2), closeAt, garbageAt, both.Token);
+        Task<long> down = PumpAsync(controller, host, new Random(seed + 2), closeAt, garbageAt, both.Token);
         await Task.WhenAny(up, down);
         await both.CancelAsync();
         host.Dispose();
         controller.Dispose();
         await Task.WhenAll(up, down);
+        if (faultNumber >= 0)
+        {
+            lock (_gate)
+            {
+                _towardsHost.Add(down.Result);
+            }
+        }
     }
 
-    /// <summary>Copies bytes one way until either side ends, applying the faults; never throws.</summary>
-    private async Task PumpAsync(TcpClient from, TcpClient to, Random random, int closeAt, int garbageAt, CancellationToken token)
+    /// <summary>Copies bytes one way until either side ends, applying the faults; never throws. Returns how many it carried.</summary>
+    private async Task<long> PumpAsync(TcpClient from, TcpClient to, Random random, int closeAt, int garbageAt, CancellationToken token)
     {
         var buffer = new byte[4096];
         long carried = 0;
@@ -192,7 +213,7 @@ internal sealed class FaultProxy : IAsyncDisposable
                 int n = await input.ReadAsync(buffer, token);
                 if (n == 0)
                 {
-                    return;
+                    return carried;
                 }
                 if (_options.MaxDelay > TimeSpan.Zero)
                 {
@@ -208,7 +229,7 @@ internal sealed class FaultProxy : IAsyncDisposable
                     if (carried == closeAt)
                     {
                         Interlocked.Increment(ref _closed);
-                        return;
+                        return carried;
                     }
                     int run = _options.SplitIntoBytes ? 1 : RunLength(carried, n - i, closeAt, garbageAt);
                     await output.WriteAsync(buffer.AsMemory(i, run), token);
@@ -221,6 +242,7 @@ internal sealed class FaultProxy : IAsyncDisposable
         {
             // One side left, or the proxy stops.
         }
+        return carried;
     }
 
     /// <summary>How many bytes can go in one write before the next fault point.</summary>
