@@ -14,4 +14,21 @@ public sealed partial class VirtualAbbController
     /// <summary>Fault injection: send an acknowledgement for any id (for example one never requested); false when no client is connected.</summary>
     public Task<bool> SendAcknowledgementAsync(int id, int code, CancellationToken cancellationToken = default) =>
         SendToClientAsync(Encoding.ASCII.GetBytes(AbbMessageFormat.Acknowledgement(id, code)), cancellationToken);
+
+    private protected override byte[] AcknowledgementBytes(int id) => Encoding.ASCII.GetBytes(AbbMessageFormat.Acknowledgement(id, 0));
+
+    /// <summary>A statement that is neither an acknowledgement (<c>@</c>) nor data (<c>$</c>).</summary>
+    private protected override byte[] GarbageBytes(Random random)
+    {
+        const string alphabet = "#!%&*?xyz019 ";
+        var text = new StringBuilder("#");
+        for (int i = random.Next(2, 12); i > 0; i--)
+        {
+            text.Append(alphabet[random.Next(alphabet.Length)]);
+        }
+        return Encoding.ASCII.GetBytes(text.Append(';').ToString());
+    }
+
+    /// <summary>Ids are sent modulo <see cref="AbbRequest.MaxId"/>: one far ahead, within that range.</summary>
+    private protected override int UnknownId(int id) => (id + 1_000_000 - 1) % AbbRequest.MaxId + 1;
 }

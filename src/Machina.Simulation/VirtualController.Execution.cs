@@ -20,6 +20,9 @@ public abstract partial class VirtualController<TState>
     /// <summary>Acknowledges an executed request (and whatever else the brand's driver sends then); false ends the driver program.</summary>
     private protected abstract Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token);
 
+    /// <summary>True for a request the brand's driver will skip (a UR program replaced since it was read); it is not logged as executed.</summary>
+    private protected virtual bool IsStale(object request) => false;
+
     private async Task ExecuteRequestsAsync(CancellationToken token)
     {
         var reader = _buffer.Reader;
@@ -28,11 +31,14 @@ public abstract partial class VirtualController<TState>
             while (await reader.WaitToReadAsync(token).ConfigureAwait(false))
             {
                 await WhileStoppedAsync(token).ConfigureAwait(false);
-                if (!reader.TryRead(out var queued))
+                if (!reader.TryRead(out var queued) || IsLost(queued.Generation))
                 {
                     continue;
                 }
-                await ExecuteAsync(queued.Request, token).ConfigureAwait(false);
+                if (await ExecuteAsync(queued.Request, token).ConfigureAwait(false))
+                {
+                    LogExecuted(queued.Id);
+                }
                 Interlocked.Increment(ref _requestsExecuted);
                 // Before the acknowledgement goes out: whoever sees it also sees the pause it may start.
                 CountTowardsPause();
@@ -61,12 +67,14 @@ public abstract partial class VirtualController<TState>
     /// <summary>
     /// Executes one request: plans it, refuses (and logs) what cannot run, and waits for its motion on the controller's clock.
     /// A protective stop interrupts the motion where the robot is; once released the same request runs again from there.
+    /// False when the brand's driver skipped it (<see cref="IsStale"/> when it was last planned): it does not enter the execution log.
     /// </summary>
-    private async Task ExecuteAsync(object request, CancellationToken token)
+    private async Task<bool> ExecuteAsync(object request, CancellationToken token)
     {
         while (true)
         {
             await WhileHaltedAsync(token).ConfigureAwait(false);
+            bool runs = !IsStale(request);
             TState from;
             CancellationToken halt;
             lock (Gate)
@@ -84,7 +92,7 @@ public abstract partial class VirtualController<TState>
             catch (Exception e) when (e is VirtualRefusalException or ArgumentException or ArithmeticException or InvalidOperationException)
             {
                 RecordError("refused: " + e.Message);
-                return;
+                return runs;
             }
             if (duration > TimeSpan.Zero)
             {
@@ -112,7 +120,7 @@ public abstract partial class VirtualController<TState>
                 _state = (TState)step.State;
                 _motion = null;
             }
-            return;
+            return runs;
         }
     }
 

@@ -9,6 +9,7 @@ public abstract partial class VirtualController<TState>
     private int _requestsExecuted;
     private int _acknowledgementsSent;
     private int _maxUnacknowledged;
+    private readonly Queue<int> _executedLog = new();
 
     /// <summary>How many driver clients have connected (and received the handshake) so far.</summary>
     public int ConnectionCount => Volatile.Read(ref _connectionCount);
@@ -18,6 +19,21 @@ public abstract partial class VirtualController<TState>
 
     /// <summary>How many requests have been executed or refused (acknowledged or, with no client, ack lost).</summary>
     public int RequestsExecuted => Volatile.Read(ref _requestsExecuted);
+
+    /// <summary>
+    /// The wire ids of the requests executed (or refused), in the order the robot ran them: the controller's execution log,
+    /// bounded like <see cref="ReceivedRequests"/> by the options' <c>RequestLogCapacity</c>. A request run twice is there twice.
+    /// </summary>
+    public IReadOnlyList<int> ExecutedIds
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return [.. _executedLog];
+            }
+        }
+    }
 
     /// <summary>How many acknowledgements actually reached a client.</summary>
     public int AcknowledgementsSent => Volatile.Read(ref _acknowledgementsSent);
@@ -72,6 +88,17 @@ public abstract partial class VirtualController<TState>
             lock (Gate)
             {
                 return _motion is null ? _state : (TState)_motion.At(Clock, Clock.GetTimestamp());
+            }
+        }
+    }
+
+    private void LogExecuted(int id)
+    {
+        if (id > 0 && _options.RequestLogCapacity > 0)
+        {
+            lock (Gate)
+            {
+                Keep(_executedLog, id, _options.RequestLogCapacity);
             }
         }
     }

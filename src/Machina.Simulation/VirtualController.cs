@@ -67,6 +67,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             throw new InvalidOperationException("This virtual controller was already started; create a new one.");
         }
         _stopping = new CancellationTokenSource();
+        StartFaultPlan();
         await ListenAsync(_stopping.Token).ConfigureAwait(false);
         Run(ExecuteRequestsAsync);
     }
@@ -136,6 +137,11 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     /// </summary>
     private protected async Task<bool> AttachClientAsync(TcpClient client, Func<NetworkStream, CancellationToken, Task> greet, CancellationToken token)
     {
+        if (RefusesConnection())
+        {
+            client.Dispose();
+            return false;
+        }
         var stream = client.GetStream();
         try
         {
@@ -154,6 +160,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             {
                 _client = client;
                 _clientStream = stream;
+                _readerGeneration = _generation;
             }
             return true;
         }
@@ -230,25 +237,13 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         }
     }
 
-    /// <summary>Sends the acknowledgement of an executed request and counts it (or notes it lost when no client listens).</summary>
-    private protected async Task AcknowledgeAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token)
-    {
-        // Marked executed under the send lock: a handshake reports as executed exactly the requests whose
-        // acknowledgement went to an earlier client (or was lost).
-        if (await SendToClientAsync(bytes, token, executedId: id).ConfigureAwait(false))
-        {
-            Interlocked.Increment(ref _acknowledgementsSent);
-            CountTowardsClose();
-        }
-        else
-        {
-            Pendant("acknowledgement lost, client disconnected");
-        }
-    }
-
     /// <summary>Puts a parsed request into the instruction buffer, waiting while it is full; counts and logs it.</summary>
     private protected async ValueTask EnqueueAsync(object request, int id, string logText, CancellationToken token)
     {
+        if (!Receives(id, out int generation))
+        {
+            return; // read from a client a restart cut off: lost with the rest of the buffer
+        }
         if (_options.RequestLogCapacity > 0)
         {
             lock (Gate)
@@ -263,11 +258,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             && Interlocked.CompareExchange(ref _maxUnacknowledged, unacknowledged, seen) != seen)
         {
         }
-        if (id > 0)
-        {
-            Volatile.Write(ref _lastReceivedId, id);
-        }
-        await _buffer.Writer.WriteAsync(new Queued(request, id), token).ConfigureAwait(false);
+        await _buffer.Writer.WriteAsync(new Queued(request, id, generation), token).ConfigureAwait(false);
     }
 
     /// <summary>Keeps a text the driver would show on the teach pendant.</summary>
@@ -289,7 +280,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         }
     }
 
-    private static void Keep(Queue<string> queue, string text, int capacity)
+    private static void Keep<T>(Queue<T> queue, T text, int capacity)
     {
         queue.Enqueue(text);
         while (queue.Count > capacity)
@@ -299,5 +290,5 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     }
 
     /// <summary>A request in the buffer with the id it is acknowledged by.</summary>
-    private readonly record struct Queued(object Request, int Id);
+    private readonly record struct Queued(object Request, int Id, int Generation);
 }

@@ -39,6 +39,9 @@ public abstract record VirtualControllerOptions
     /// <summary>Clock used for motion timing and state reports. Default: the system clock.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
 
+    /// <summary>Faults the controller injects by itself, from a seed (connection drops, delays, garbage, restarts…). Default: none.</summary>
+    public VirtualFaults Faults { get; init; } = new();
+
     /// <summary>Throws <see cref="ArgumentException"/> naming the first setting that cannot work.</summary>
     internal virtual void Validate()
     {
@@ -55,6 +58,8 @@ public abstract record VirtualControllerOptions
             throw new ArgumentException("RequestLogCapacity cannot be negative.", nameof(RequestLogCapacity));
         }
         ArgumentNullException.ThrowIfNull(TimeProvider);
+        ArgumentNullException.ThrowIfNull(Faults);
+        Faults.Validate();
         if (InitialPosition is { IsFinite: false } || !InitialJoints.IsFinite)
         {
             throw new ArgumentException("The initial position and joints must be finite numbers.");

@@ -70,6 +70,19 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
     public Task<bool> SendAcknowledgementAsync(int id, CancellationToken cancellationToken = default) =>
         SendToClientAsync(Encoding.ASCII.GetBytes(KukaMessages.Acknowledgement(id)), cancellationToken);
 
+    private protected override byte[] AcknowledgementBytes(int id) => Encoding.ASCII.GetBytes(KukaMessages.Acknowledgement(id));
+
+    /// <summary>An element that is not part of the protocol (neither <c>S</c> nor <c>R</c>).</summary>
+    private protected override byte[] GarbageBytes(Random random)
+    {
+        var name = new StringBuilder("X");
+        for (int i = random.Next(1, 8); i > 0; i--)
+        {
+            name.Append((char)('a' + random.Next(26)));
+        }
+        return Encoding.ASCII.GetBytes($"<{name}>{random.Next()}</{name}>");
+    }
+
     private protected override Task ListenAsync(CancellationToken token)
     {
         (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
@@ -150,7 +163,7 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
                 return false;
             }
             KukaInstruction instruction = KukaInstruction.Parse(action);
-            if (RequestsReceived - RequestsExecuted >= KukaProtocol.Capacity)
+            if (RequestsHeld >= KukaProtocol.Capacity)
             {
                 RecordError($"the host sent action {instruction.Id} while the {KukaProtocol.Capacity} slots of the ring hold actions not executed; the driver stops rather than overwrite one.");
                 return false;

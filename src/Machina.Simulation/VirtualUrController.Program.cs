@@ -249,11 +249,34 @@ public sealed partial class VirtualUrController
             StopProgram("unknown instruction");
             return true;
         }
-        var bytes = new byte[4];
-        BinaryPrimitives.WriteInt32BigEndian(bytes, r.Id);
-        await AcknowledgeAsync(bytes, Math.Max(r.Id, 0), token).ConfigureAwait(false);
+        await AcknowledgeAsync(AcknowledgementBytes(r.Id), Math.Max(r.Id, 0), token).ConfigureAwait(false);
         return true;
     }
+
+    private protected override bool IsStale(object request) => request is UrRequest r && (r.Program != CurrentProgram || r.Halts);
+
+    private protected override byte[] AcknowledgementBytes(int id)
+    {
+        var bytes = new byte[4];
+        BinaryPrimitives.WriteInt32BigEndian(bytes, id);
+        return bytes;
+    }
+
+    /// <summary>A response (a code below -1) that never ends: more values than any response of the protocol carries.</summary>
+    private protected override byte[] GarbageBytes(Random random)
+    {
+        var values = new int[80];
+        values[0] = -100 - random.Next(1000);
+        for (int i = 1; i < values.Length; i++)
+        {
+            values[i] = random.Next(0, int.MaxValue);
+        }
+        var bytes = new byte[values.Length * 4];
+        UrWire.Write(values, bytes);
+        return bytes;
+    }
+
+    private protected override bool InjectProtectiveStop() => ProtectiveStop();
 
     private protected override VirtualStep Plan(VirtualUrState s, object request)
     {

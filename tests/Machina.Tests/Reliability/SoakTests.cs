@@ -1,0 +1,103 @@
+using System.Diagnostics;
+using Machina.Simulation;
+using Xunit.Abstractions;
+
+namespace Machina.Tests.Reliability;
+
+/// <summary>
+/// A seeded soak per brand: 100,000 actions streamed to a virtual controller that injects a random fault after about one
+/// acknowledgement in 2,000 (drops, delays, garbage, truncated and unknown acknowledgements, restarts keeping or losing the
+/// buffer, and on UR protective stops), recovered the user's way (Connect again, Resume). Over the whole run every action
+/// is executed exactly once and in order, on the controller (its execution log) and on the host (<c>ActionExecuted</c>),
+/// and the robot ends where the program leaves it. The time each brand took is written to the test output.
+/// </summary>
+public class SoakTests(ITestOutputHelper output)
+{
+    private const int Actions = 100_000;
+    private const double FaultChance = 1.0 / 2000;
+    private static readonly TimeSpan WaitLimit = TimeSpan.FromSeconds(60);
+
+    private static readonly VirtualFault[] Kinds =
+    [
+        VirtualFault.Drop, VirtualFault.Delay, VirtualFault.Garbage, VirtualFault.Truncate, VirtualFault.UnknownAcknowledgement,
+        VirtualFault.RestartKeepingBuffer, VirtualFault.RestartLosingBuffer,
+    ];
+
+    [Theory]
+    [InlineData("ABB", 14201)]
+    [InlineData("UR", 14202)]
+    [InlineData("KUKA", 14203)]
+    public async Task Soak_HundredThousandActionsWithRandomFaults_EachExecutedOnceInOrder(string brand, int seed)
+    {
+        var watch = Stopwatch.StartNew();
+        VirtualFault[] kinds = brand == "UR" ? [.. Kinds, VirtualFault.ProtectiveStop] : Kinds;
+        var faults = new VirtualFaults { Seed = seed, Chance = FaultChance, Kinds = kinds, Delay = TimeSpan.FromMilliseconds(1) };
+        await using var rig = await FaultRig.StartAsync(brand, faults, logCapacity: Actions);
+        // A wide window (at most 89 actions on the controller: within KUKA's ring of 100).
+        var w = rig.CreateRobot(b => { b.BlockSize = 50; b.PendingCount = 40; });
+        await rig.RecoverAsync(w);
+        Vector end = IssueRandomProgram(w.Bot, new Random(seed));
+
+        int recoveries = await rig.RunToCompletionAsync(w, WaitLimit, maxRecoveries: 1000);
+        watch.Stop();
+
+        Assert.True(w.Executed.SequenceEqual(Enumerable.Range(1, Actions)), "The host saw actions executed out of order, twice or not at all.");
+        IReadOnlyList<int> log = rig.ExecutedIds;
+        Assert.Equal(Actions, log.Count);
+        Assert.True(log.SequenceEqual(Enumerable.Range(1, Actions)), $"The controller executed out of order or twice: first difference at {FirstDifference(log)}.");
+        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"{brand} ended at {rig.Position}, expected {end}");
+        Assert.Empty(rig.Errors);
+        Assert.Empty(w.Bot.GetPendingActions());
+        IReadOnlyList<VirtualFault> injected = rig.InjectedFaults;
+        Assert.All(kinds, k => Assert.Contains(k, injected));
+        Assert.InRange(recoveries, 1, injected.Count);
+        output.WriteLine($"{brand}: {Actions} actions, {injected.Count} faults ({string.Join(", ", injected.GroupBy(f => f).Select(g => $"{g.Key} {g.Count()}"))}), "
+            + $"{recoveries} recoveries, {watch.Elapsed.TotalSeconds:F2} s");
+        foreach (var e in w.RecoveryErrors.GroupBy(e => e.Message.Length > 90 ? e.Message[..90] : e.Message))
+        {
+            output.WriteLine($"  retried {e.Count()}x: {e.Key}");
+        }
+        await w.Bot.DisconnectAsync();
+    }
+
+    /// <summary>
+    /// Issues <see cref="Actions"/> actions, each one request on every brand: an absolute move now and then, relative moves of
+    /// up to 5 mm per axis in between, a speed change now and then. Returns where the last one leaves the robot.
+    /// </summary>
+    private static Vector IssueRandomProgram(Robot bot, Random random)
+    {
+        var at = new Vector(300, 0, 400);
+        bot.MoveTo(at.X, at.Y, at.Z);
+        for (int i = 1; i < Actions; i++)
+        {
+            switch (random.Next(10))
+            {
+                case 0:
+                    bot.SpeedTo(random.Next(10, 200));
+                    break;
+                case 1:
+                    at = new Vector(random.Next(200, 400), random.Next(-100, 100), random.Next(300, 500));
+                    bot.MoveTo(at.X, at.Y, at.Z);
+                    break;
+                default:
+                    var by = new Vector(random.Next(-5, 6), random.Next(-5, 6), random.Next(1, 6) * (random.Next(2) == 0 ? 1 : -1));
+                    at += by;
+                    bot.Move(by.X, by.Y, by.Z);
+                    break;
+            }
+        }
+        return at;
+    }
+
+    private static int FirstDifference(IReadOnlyList<int> log)
+    {
+        for (int i = 0; i < log.Count; i++)
+        {
+            if (log[i] != i + 1)
+            {
+                return i;
+            }
+        }
+        return log.Count;
+    }
+}
