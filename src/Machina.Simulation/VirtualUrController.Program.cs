@@ -181,30 +181,26 @@ public sealed partial class VirtualUrController
     /// <summary>Reads instructions from a driver program's connection into the buffer until it closes or the program is replaced.</summary>
     private async Task ReadProgramAsync(TcpClient client, DriverKind kind, int program, CancellationToken token)
     {
-        var reader = new IntReader(client.GetStream());
+        var reader = new UrRequestReader(client.GetStream(), kind, program);
         try
         {
             while (CurrentProgram == program)
             {
-                if (!await reader.ReadAsync(2, token).ConfigureAwait(false))
+                if (await reader.ReadAsync(token).ConfigureAwait(false) is not UrRequest request)
                 {
+                    if (reader.EndedInside is (int id, int code))
+                    {
+                        RecordError($"the connection ended inside instruction {id} (code {code}).");
+                    }
                     break;
                 }
-                int id = reader[0], code = reader[1];
-                int count = ParameterCount(code, kind);
-                if (count < 0)
+                if (request.Halts)
                 {
                     // Our driver halts there, after running what came before: the stop waits its turn in the buffer.
-                    await EnqueueAsync(new UrRequest(id, code, [], program, Halts: true), 0, $"{id} {code}", token).ConfigureAwait(false);
+                    await EnqueueAsync(request, 0, $"{request.Id} {request.Code}", token).ConfigureAwait(false);
                     return;
                 }
-                if (count > 0 && !await reader.ReadAsync(count, token).ConfigureAwait(false))
-                {
-                    RecordError($"the connection ended inside instruction {id} (code {code}).");
-                    break;
-                }
-                var request = new UrRequest(id, code, reader.Values(count), program);
-                await EnqueueAsync(request, Math.Max(id, 0), request.ToString(), token).ConfigureAwait(false);
+                await EnqueueAsync(request, Math.Max(request.Id, 0), request.ToString(), token).ConfigureAwait(false);
             }
         }
         catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException or System.Threading.Channels.ChannelClosedException)
@@ -353,47 +349,4 @@ public sealed partial class VirtualUrController
     private static (Vector Position, Rotation Rotation) PoseOf(int[] v) =>
         (new Vector(UrWire.ToMillimetres(v[0]), UrWire.ToMillimetres(v[1]), UrWire.ToMillimetres(v[2])),
          Rotation.FromRotationVector(new Vector(UrWire.ToDegrees(v[3]), UrWire.ToDegrees(v[4]), UrWire.ToDegrees(v[5]))));
-
-    /// <summary>Reads big-endian int32 values from a stream, any number at a time, whatever the chunking.</summary>
-    private sealed class IntReader(NetworkStream stream)
-    {
-        private readonly byte[] _buffer = new byte[8192];
-        private readonly int[] _values = new int[16];
-        private int _start;
-        private int _length;
-
-        public int this[int index] => _values[index];
-
-        public int[] Values(int count) => _values.AsSpan(0, count).ToArray();
-
-        /// <summary>Reads <paramref name="count"/> values (at most 16); false when the stream ended first.</summary>
-        public async Task<bool> ReadAsync(int count, CancellationToken token)
-        {
-            while (_length < count * 4)
-            {
-                if (_start > 0)
-                {
-                    Array.Copy(_buffer, _start, _buffer, 0, _length);
-                    _start = 0;
-                }
-                int n = await stream.ReadAsync(_buffer.AsMemory(_length), token).ConfigureAwait(false);
-                if (n == 0)
-                {
-                    return false;
-                }
-                _length += n;
-            }
-            for (int i = 0; i < count; i++)
-            {
-                _values[i] = BinaryPrimitives.ReadInt32BigEndian(_buffer.AsSpan(_start + i * 4));
-            }
-            _start += count * 4;
-            _length -= count * 4;
-            if (_length == 0)
-            {
-                _start = 0;
-            }
-            return true;
-        }
-    }
 }

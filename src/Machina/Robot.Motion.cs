@@ -31,7 +31,7 @@ public sealed partial class Robot
     public bool RotateTo(Orientation orientation) => Issue(new ActionRotation(orientation.Rotation, false));
 
     /// <summary>Turns the tool so that its X and Y axes point along the given directions.</summary>
-    public bool RotateTo(Vector xAxis, Vector yAxis) => Issue(new ActionRotation(Rotation.FromAxes(xAxis, yAxis), false));
+    public bool RotateTo(Vector xAxis, Vector yAxis) => Issue(new ActionRotation(Arg.FromAxes(xAxis, yAxis, nameof(xAxis), nameof(yAxis)), false));
 
     /// <summary>Turns the tool so that its X axis is (x0, x1, x2) and its Y axis is (y0, y1, y2).</summary>
     public bool RotateTo(double x0, double x1, double x2, double y0, double y1, double y2) =>
@@ -88,7 +88,7 @@ public sealed partial class Robot
                 Arg.FromAxes(Arg.Vector(endXAxisX, endXAxisY, endXAxisZ), Arg.Vector(endYAxisX, endYAxisY, endYAxisZ), nameof(endXAxisX), nameof(endYAxisX))));
 
     /// <summary>Turns the joints by the given amounts, degrees.</summary>
-    public bool Axes(Joints increments) => Issue(new ActionAxes(increments, true));
+    public bool Axes(Joints increments) => Issue(new ActionAxes(increments.RequireFinite(nameof(increments)), true));
 
     /// <summary>Turns the joints by the given amounts, degrees.</summary>
     public bool Axes(double incJ1, double incJ2, double incJ3, double incJ4, double incJ5, double incJ6) =>

@@ -119,13 +119,13 @@ public readonly struct Rotation : IEquatable<Rotation>
         yAxis.RequireFinite(nameof(yAxis));
         if (xAxis.Length < 1e-9 || yAxis.Length < 1e-9)
         {
-            throw new ArgumentException($"Cannot build a frame from X {xAxis} and Y {yAxis}: an axis is zero.");
+            throw new ArgumentException($"Cannot build a frame from X {xAxis} and Y {yAxis}: an axis is zero.", xAxis.Length < 1e-9 ? nameof(xAxis) : nameof(yAxis));
         }
         Vector nx = xAxis.Normalized();
         Vector zc = Vector.Cross(nx, yAxis);
         if (zc.Length < 1e-9 * yAxis.Length)
         {
-            throw new ArgumentException($"Cannot build a frame from X {xAxis} and Y {yAxis}: the axes are parallel.");
+            throw new ArgumentException($"Cannot build a frame from X {xAxis} and Y {yAxis}: the axes are parallel.", nameof(yAxis));
         }
         Vector nz = zc.Normalized();
         Vector ny = Vector.Cross(nz, nx);

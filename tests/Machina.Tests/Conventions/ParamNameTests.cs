@@ -110,6 +110,28 @@ public class ParamNameTests
     }
 
     [Fact]
+    public void Axes_NaNInJoints_NamesIncrements()
+    {
+        // Found by the extreme-value test: it named "joints", a parameter of AxesTo.
+        var e = Assert.Throws<ArgumentException>(() => Robot.Create("Bot", "ABB").Axes(new Joints(0, double.NaN, 0, 0, 0, 0)));
+        Assert.Equal("increments", e.ParamName);
+        Assert.StartsWith("increments must contain six finite numbers.", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void RotateTo_ZeroOrParallelAxes_NamesTheAxis()
+    {
+        // Found by the extreme-value test: these errors named no parameter at all.
+        var zero = Assert.Throws<ArgumentException>(() => Robot.Create("Bot", "ABB").RotateTo(Vector.Zero, Vector.YAxis));
+        var parallel = Assert.Throws<ArgumentException>(() => Robot.Create("Bot", "ABB").RotateTo(Vector.XAxis, new Vector(1e308, 0, 0)));
+        var direct = Assert.Throws<ArgumentException>(() => Rotation.FromAxes(Vector.XAxis, Vector.Zero));
+
+        Assert.Equal(("xAxis", "yAxis", "yAxis"), (zero.ParamName, parallel.ParamName, direct.ParamName));
+        Assert.StartsWith("Cannot build a frame from X [0, 0, 0] and Y [0, 1, 0]: an axis is zero.", zero.Message, StringComparison.Ordinal);
+        Assert.StartsWith("Cannot build a frame from X [1, 0, 0] and Y [1E+308, 0, 0]: the axes are parallel.", parallel.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public void Wait_Negative_NamesTimeMillisAndKeepsTheMessage()
     {
         var e = Assert.Throws<ArgumentOutOfRangeException>(() => Robot.Create("Bot", "ABB").Wait(-5));

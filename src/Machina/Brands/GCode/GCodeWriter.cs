@@ -60,13 +60,17 @@ internal sealed class GCodeWriter
                 {
                     Warning(action, $"feed rates are written in mm/min with 3 decimals; {Num.G(c.Speed)} mm/s would be F0 and was raised to F{FixedPoint.Format(MinRate, 3)}.");
                 }
+                else if (double.IsInfinity(c.Speed * 60))
+                {
+                    Warning(action, $"{Num.G(c.Speed)} mm/s is too fast to write in mm/min; the largest feed rate was written, so the printer's own limit applies.");
+                }
                 if (_flavor.FeedOnMotionLine)
                 {
                     NoCode(action);
                 }
                 else
                 {
-                    _feed = c.Speed * 60;
+                    _feed = Feed(c.Speed);
                     Code("G1 F" + Rate(_feed), action);
                 }
                 break;
@@ -172,7 +176,7 @@ internal sealed class GCodeWriter
         {
             if (before.Speed != c.Speed && !_flavor.FeedOnMotionLine)
             {
-                _feed = c.Speed * 60;
+                _feed = Feed(c.Speed);
                 Code("G1 F" + Rate(_feed), action);
                 wrote = true;
             }
@@ -254,7 +258,7 @@ internal sealed class GCodeWriter
 
     private void Motion(string code, Vector point, double? e, double speed, RobotAction? action, Vector? arcCenterOffset = null)
     {
-        double feed = speed * 60;
+        double feed = Feed(speed);
         if (!_flavor.FeedOnMotionLine && feed != _feed)
         {
             _file.Add("G1 F" + Rate(feed));
@@ -285,6 +289,9 @@ internal sealed class GCodeWriter
         }
         _file.Add(sb.ToString());
     }
+
+    /// <summary>A speed in mm/s as a feed rate in mm/min; a speed whose feed would overflow gives the largest number instead.</summary>
+    private static double Feed(double mmPerSecond) => Math.Min(mmPerSecond * 60, double.MaxValue);
 
     /// <summary>The smallest feed rate (mm/min) or acceleration (mm/s²) written: a value above 0 that would print as 0 is raised to it.</summary>
     internal const double MinRate = 0.001;
@@ -357,7 +364,7 @@ internal sealed class GCodeWriter
         _feed = double.NaN;
         if (start && !_flavor.FeedOnMotionLine)
         {
-            _feed = c.Speed * 60;
+            _feed = Feed(c.Speed);
             _file.Add("G1 F" + Rate(_feed));
         }
         NoCode(action);

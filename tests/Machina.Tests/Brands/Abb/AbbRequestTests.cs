@@ -80,6 +80,17 @@ public class AbbRequestTests
         Assert.Throws<ArgumentException>(() => AbbRequest.SetDO(1, signal, true));
 
     [Fact]
+    public void WhyStatementCannotBeSent_LongerThanTheDriverReads_IsRefused()
+    {
+        // Found by the extreme-value test: a million-character statement was sent, and the controller closed the link.
+        Assert.Null(AbbRequest.WhyStatementCannotBeSent(new string('1', 1000)));
+        Assert.Equal("A custom ABB statement can be at most 1000 characters (what the driver reads of one request), but \"" + new string('1', 37) + "...\" has 1001.",
+            AbbRequest.WhyStatementCannotBeSent(new string('1', 1001)));
+        var refused = Assert.Throws<ArgumentException>(() => AbbRequest.Custom(3, new string('x', 1_000_000)));
+        Assert.Equal("statement", refused.ParamName);
+    }
+
+    [Fact]
     public void TPWrite_UnsafeText_IsSanitizedAndTruncated()
     {
         Assert.Equal("@3 7 \"say 'hi', ok?\";", AbbRequest.TPWrite(3, "say \"hi\"; ok\u00e9").ToWireText());

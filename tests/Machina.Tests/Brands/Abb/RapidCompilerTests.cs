@@ -219,7 +219,19 @@ public class RapidCompilerTests
     public void Emit_HumanCommentWithLineBreak_StaysOnOneLine()
     {
         RobotProgram p = Compile(bot => bot.Message("a\nb"), CompileOptions.Default);
-        Assert.Equal(["    TPWrite \"a\";  ! [Display message \"a b\"]", "    TPWrite \"b\";  ! [Display message \"a b\"]"], MainLines(p));
+        Assert.Equal(["    TPWrite \"a\";  ! [Display message \"a b\"]", "    TPWrite \"b\";"], MainLines(p));
+    }
+
+    [Fact]
+    public void Emit_MillionCharacterMessageWithHumanComments_CommentsOnlyItsFirstLine()
+    {
+        // Each of the 12,500 TPWrite lines used to carry the whole message as its comment: 25 GB, and the process died.
+        RobotProgram p = Compile(bot => bot.Message(new string('m', 1_000_000)), CompileOptions.Default);
+
+        List<string> lines = MainLines(p);
+        Assert.Equal(12_500, lines.Count);
+        Assert.Equal("    TPWrite \"" + new string('m', 80) + "\";  ! [Display message \"" + new string('m', 1_000_000) + "\"]", lines[0]);
+        Assert.All(lines.Skip(1), l => Assert.Equal("    TPWrite \"" + new string('m', 80) + "\";", l));
     }
 
     [Fact]

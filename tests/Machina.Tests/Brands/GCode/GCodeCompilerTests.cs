@@ -161,6 +161,28 @@ public class GCodeCompilerTests
     }
 
     [Fact]
+    public void Compile_SpeedBeyondWhatMmPerMinuteHolds_WritesTheLargestFeedWithAWarning()
+    {
+        // 1e308 mm/s is 6e309 mm/min, beyond double: the feed used to be written as "FInfinity".
+        string largest = double.MaxValue.ToString("0", CultureInfo.InvariantCulture);
+        foreach (RobotType brand in new[] { RobotType.ZMORPH, RobotType.MARLIN })
+        {
+            var bot = NewBot(brand);
+            bot.SpeedTo(1e308);
+            bot.MoveTo(0, 0, 10);
+
+            string[] body = Body(bot, brand);
+
+            string warning = "; WARNING: 1E+308 mm/s is too fast to write in mm/min; the largest feed rate was written, so the printer's own limit applies.";
+            string[] expected = brand == RobotType.ZMORPH
+                ? [warning, "G1 F" + largest, "G1 X0 Y0 Z10"]
+                : [warning, "G0 X0 Y0 Z10 F" + largest];
+            Assert.Equal(expected, body);
+            Assert.Equal(309, largest.Length);
+        }
+    }
+
+    [Fact]
     public void Compile_PopSettings_FeedRateSentAgain()
     {
         foreach (RobotType brand in new[] { RobotType.ZMORPH, RobotType.MARLIN })

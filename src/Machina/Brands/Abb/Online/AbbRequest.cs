@@ -91,6 +91,9 @@ internal readonly partial struct AbbRequest
         return new AbbRequest(id, TrimStatement(statement));
     }
 
+    /// <summary>Longest custom statement sent: the driver reads a code and 11 numbers of at most 80 characters each per request.</summary>
+    public const int MaxStatementLength = 1000;
+
     /// <summary>Why <paramref name="statement"/> cannot be sent as a custom statement (a sentence), or null when it can.</summary>
     public static string? WhyStatementCannotBeSent(string statement)
     {
@@ -99,6 +102,10 @@ internal readonly partial struct AbbRequest
         if (trimmed.Length == 0)
         {
             return "A custom ABB statement cannot be empty.";
+        }
+        if (trimmed.Length > MaxStatementLength)
+        {
+            return $"A custom ABB statement can be at most {MaxStatementLength} characters (what the driver reads of one request), but \"{Abbreviate(statement)}\" has {trimmed.Length}.";
         }
         foreach (char c in trimmed)
         {

@@ -209,9 +209,11 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         {
             job.Warn(m, "characters that are not printable ASCII were replaced by '?' in the message.");
         }
-        foreach (string literal in literals)
+        // The human comment goes on the first line only: repeated on each piece of a long message it grew with its square.
+        Code(m, Indent + "TPWrite " + literals[0] + ";");
+        for (int i = 1; i < literals.Count; i++)
         {
-            Code(m, Indent + "TPWrite " + literal + ";");
+            sink.Add(Indent + "TPWrite " + literals[i] + ";");
         }
     }
 

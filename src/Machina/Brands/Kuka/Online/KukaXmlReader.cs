@@ -21,6 +21,11 @@ internal sealed class KukaXmlReader
     private int _start;
     private int _end;
 
+    // False inside an element after an incomplete parse, until a '>' arrives: every item ends with one, so parsing the same
+    // bytes again before could not complete it (a large element trickling in was parsed again from its start for each piece;
+    // its garbage is then found at the next '>' or at the length bound).
+    private bool _mayComplete = true;
+
     /// <summary>Bytes received but not yet returned as part of a complete element.</summary>
     public int PendingByteCount => _end - _start;
 
@@ -45,6 +50,7 @@ internal sealed class KukaXmlReader
         }
         data.CopyTo(_buffer.AsSpan(_end));
         _end += data.Length;
+        _mayComplete |= data.Contains((byte)'>');
     }
 
     /// <summary>Returns the next complete top-level element, or false when more bytes are needed.</summary>
@@ -53,10 +59,16 @@ internal sealed class KukaXmlReader
     {
         while (true)
         {
+            Outcome outcome = Outcome.Incomplete;
+            KukaElement? parsed = null;
             var parser = new Parser(_buffer.AsSpan(_start, _end - _start));
-            Outcome outcome = parser.Next(out KukaElement? parsed);
+            if (_mayComplete)
+            {
+                outcome = parser.Next(out parsed);
+            }
             if (outcome == Outcome.Incomplete)
             {
+                _mayComplete = _end == _start;
                 if (_end - _start > MaxElementLength)
                 {
                     Fail($"The controller sent more than {MaxElementLength} bytes without completing an XML element: this is not the Machina KUKA driver protocol.");
@@ -85,6 +97,7 @@ internal sealed class KukaXmlReader
     {
         string text = Encoding.UTF8.GetString(_buffer, _start, Math.Min(_end - _start, 200));
         _start = _end = 0;
+        _mayComplete = true;
         throw new KukaProtocolException(message, text);
     }
 

@@ -17,12 +17,9 @@ internal sealed partial class UrDriver : IDeviceDriver, ILinkReceiver
     private readonly TimeProvider _time;
     private readonly AwaitedAcknowledgements _awaiting = new(id => id);
     private readonly TaskCompletionSource<(string Version, int[] Pose)> _handshake = new(TaskCreationOptions.RunContinuationsAsynchronously);
-    private readonly List<int> _response = new(16);
-    private readonly byte[] _partial = new byte[4];
+    private readonly UrDriverReader _reader = new();
     private readonly int[] _values = new int[UrActionEncoder.MaxValues];
     private readonly byte[] _encoded = new byte[UrActionEncoder.MaxValues * 4];
-    private int _partialLength;
-    private bool _inResponse;
     private string _version = "1.2.0";
     private UrPorts _ports;
     private string _host = "";
@@ -133,62 +130,38 @@ internal sealed partial class UrDriver : IDeviceDriver, ILinkReceiver
     /// <inheritdoc/>
     public void OnReceived(ReadOnlySpan<byte> data)
     {
-        while (!data.IsEmpty && Volatile.Read(ref _failed) == 0)
+        try
         {
-            int take = Math.Min(4 - _partialLength, data.Length);
-            data[..take].CopyTo(_partial.AsSpan(_partialLength));
-            _partialLength += take;
-            data = data[take..];
-            if (_partialLength == 4)
+            while (Volatile.Read(ref _failed) == 0 && _reader.TryRead(ref data, out int acknowledged, out int[]? response))
             {
-                _partialLength = 0;
-                OnValue(BinaryPrimitives.ReadInt32BigEndian(_partial));
-            }
-        }
-    }
-
-    /// <summary>One integer from the driver: part of a response, the start of one (codes below -1), or an acknowledgement.</summary>
-    private void OnValue(int value)
-    {
-        if (_inResponse)
-        {
-            if (value != UrWire.End)
-            {
-                if (_response.Count > 64)
+                if (response is not null)
                 {
-                    Fail(new RobotConnectionException("The UR driver sent a response that never ends; is it Machina's driver?"));
+                    OnResponse(response);
                 }
-                _response.Add(value);
-                return;
+                else
+                {
+                    Acknowledge(acknowledged);
+                }
             }
-            _inResponse = false;
-            OnResponse();
-            return;
         }
-        if (value < -1)
+        catch (RobotConnectionException e)
         {
-            _inResponse = true;
-            _response.Clear();
-            _response.Add(value);
-        }
-        else if (value > 0)
-        {
-            Acknowledge(value);
+            Fail(e);
         }
     }
 
-    private void OnResponse()
+    private void OnResponse(int[] response)
     {
-        switch (_response[0])
+        switch (response[0])
         {
-            case UrWire.ResponseVersion when _response.Count == 4:
-                _version = $"{_response[1]}.{_response[2]}.{_response[3]}";
+            case UrWire.ResponseVersion when response.Length == 4:
+                _version = $"{response[1]}.{response[2]}.{response[3]}";
                 break;
-            case UrWire.ResponseFullPose when _response.Count == 13:
-                _handshake.TrySetResult((_version, _response.Skip(1).ToArray()));
+            case UrWire.ResponseFullPose when response.Length == 13:
+                _handshake.TrySetResult((_version, response[1..]));
                 break;
             default:
-                _log.Debug($"Ignored a response from the UR driver: {string.Join(' ', _response)}");
+                _log.Debug($"Ignored a response from the UR driver: {string.Join(' ', response)}");
                 break;
         }
     }
