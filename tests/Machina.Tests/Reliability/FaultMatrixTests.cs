@@ -273,7 +273,7 @@ public class FaultMatrixTests
         {
             "ABB" => (typeof(AbbProtocolException), "neither an acknowledgement \\('@'\\) nor data"),
             "KUKA" => (typeof(KukaProtocolException), "not part of the Machina KUKA driver protocol"),
-            _ => (typeof(RobotConnectionException), "response that never ends"),
+            _ => (typeof(RobotConnectionException), "response longer than 64 values that never ends"),
         },
         VirtualFault.UnknownAcknowledgement => (typeof(RobotConnectionException), "^The controller acknowledged action [0-9]+, which is not waiting for execution"),
         VirtualFault.ProtectiveStop => (typeof(RobotStoppedException), "protective stop"),
