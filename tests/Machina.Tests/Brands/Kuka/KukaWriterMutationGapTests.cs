@@ -130,4 +130,105 @@ public class KukaWriterMutationGapTests
 
     [Fact]
     public void Degrees_JustAboveMinusOneEighty_IsKept() => Assert.Equal(-179.9994, KrlFormat.Degrees(-179.9994));
+
+    private static IReadOnlyList<string> Lines(Robot bot, bool human = false) =>
+        bot.Compile(RobotType.KUKA, new CompileOptions { HumanComments = human }).Files[0].Lines;
+
+    /// <summary>The lines from <paramref name="first"/> on, <paramref name="count"/> of them.</summary>
+    private static IEnumerable<string> From(IReadOnlyList<string> lines, string first, int count) =>
+        lines.Skip(lines.ToList().IndexOf(first)).Take(count);
+
+    [Fact]
+    public void Compile_DeclarationsAndAccelerationVariable_OneBlockFollowedByAnEmptyLine()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.CustomCode("DECL INT counter", isDeclaration: true);
+        bot.AccelerationTo(0);
+
+        var lines = Lines(bot);
+
+        Assert.Equal(["DEF Test( )"], lines.Where(l => l.StartsWith("DEF ", StringComparison.Ordinal)));
+        Assert.Equal(["  DECL INT counter", "  DECL REAL machina_acc_cp", "", ";FOLD INI"], From(lines, "  DECL INT counter", 4));
+        Assert.Equal(["  PTP $AXIS_ACT", "  machina_acc_cp = $ACC.CP", "  $BASE = $NULLFRAME"], From(lines, "  PTP $AXIS_ACT", 3));
+    }
+
+    [Fact]
+    public void Compile_OnlyACustomDeclaration_EmptyLineBeforeTheIniFold()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.CustomCode("DECL INT counter", isDeclaration: true);
+
+        var lines = Lines(bot, human: true);
+
+        Assert.Equal(["  DECL INT counter", "", ";FOLD INI"], From(lines, "  DECL INT counter", 3));
+        Assert.DoesNotContain(lines, l => l.Contains("machina_acc_cp", StringComparison.Ordinal));
+        Assert.Equal(["  ; [Add custom declaration: \"DECL INT counter\"]", "", "END"], lines.TakeLast(3));
+    }
+
+    [Fact]
+    public void Compile_NoDeclarations_TheIniFoldFollowsTheHeader()
+    {
+        var lines = Lines(Robot.Create("Test", RobotType.KUKA));
+
+        Assert.Equal(["; run it at reduced speed, keep clear of the working area and keep the emergency stop in reach.", "", ";FOLD INI"],
+            From(lines, "; run it at reduced speed, keep clear of the working area and keep the emergency stop in reach.", 3));
+    }
+
+    [Fact]
+    public void Compile_SettingsChangedBeforeTheProgram_StartBlockWritesThem()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.SpeedTo(100);
+        bot.AccelerationTo(500);
+        bot.PrecisionTo(1);
+        bot.ClearProgram();
+
+        Assert.Equal(["  $ADVANCE = 3", "  $VEL.CP = 0.1", "  $ACC.CP = 0.5", "  $APO.CDIS = 1", ""], From(Lines(bot), "  $ADVANCE = 3", 5));
+    }
+
+    [Fact]
+    public void Compile_DigitalOutputZero_IsAnError()
+    {
+        const int pin = 0;
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.WriteDigital(pin, true);
+
+        Assert.Equal($"  ; ERROR on \"Turn digital IO {pin} ON\": $OUT outputs are numbered 1 to 4096, so output {pin} does not exist.",
+            Lines(bot)[^3]);
+    }
+
+    [Fact]
+    public void Compile_ActionsForOtherMachines_EachWarningSaysWhy()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.ArmAngleTo(30);
+        bot.Initialize();
+        bot.Extrude();
+        bot.Message("hi");
+
+        RobotProgram program = bot.Compile(RobotType.KUKA, new CompileOptions { HumanComments = false });
+
+        Assert.Equal(
+            [
+                "KUKA arms of this kind have no arm angle to set.",
+                "a KUKA program needs no start-up or shut-down sequence; this is for 3D printers.",
+                "a KUKA arm has no extruder or heated parts; this is for 3D printers.",
+                "KRL has no plain instruction to show a message; it is written as a comment.",
+            ],
+            program.Warnings.Select(w => w.Message));
+        Assert.Equal("  ; ACTION \"Set arm-angle to 30 deg\" NOT APPLICABLE TO THIS DEVICE", program.Files[0].Lines[^6]);
+    }
+
+    [Fact]
+    public void Compile_AttachTool_WarnsThatTheLoadIsNotSent()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.DefineTool("pen", 0, 0, 100, 1, 0, 0, 0, 1, 0, 0.5, 0, 0, 50);
+        bot.AttachTool("pen");
+
+        RobotProgram program = bot.Compile(RobotType.KUKA, new CompileOptions { HumanComments = false });
+
+        Assert.Equal("the weight and centre of gravity of tool \"pen\" are not sent; set its load data on the controller.",
+            Assert.Single(program.Warnings).Message);
+    }
 }
