@@ -231,4 +231,51 @@ public class KukaWriterMutationGapTests
         Assert.Equal("the weight and centre of gravity of tool \"pen\" are not sent; set its load data on the controller.",
             Assert.Single(program.Warnings).Message);
     }
+
+    [Fact]
+    public void Compile_PopSettingsWithHumanComments_CodeForWhatChangedElseAComment()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.PushSettings();
+        bot.SpeedTo(300);
+        bot.PopSettings();
+        bot.PushSettings();
+        bot.AccelerationTo(800);
+        bot.PopSettings();
+        bot.PushSettings();
+        bot.PopSettings();
+
+        var lines = Lines(bot, human: true);
+        string[] pops = lines.Where(l => l.Contains("[Pop settings", StringComparison.Ordinal)).ToArray();
+
+        Assert.Equal(
+            [
+                "  $VEL.CP = 0.02  ; [Pop settings]",
+                "  $ACC.CP = machina_acc_cp  ; [Pop settings]",
+                "  ; [Pop settings]",
+            ],
+            pops);
+    }
+
+    [Fact]
+    public void Compile_JointMotionToAPose_WarnsOnceAboutPtpSpeed()
+    {
+        var bot = Robot.Create("Test", RobotType.KUKA);
+        bot.MotionMode(MotionType.Joint);
+        bot.MoveTo(400, 0, 400);
+        bot.MoveTo(400, 0, 300);
+
+        RobotProgram program = bot.Compile(RobotType.KUKA, new CompileOptions { HumanComments = false });
+
+        Assert.Equal(2, Assert.Single(program.Warnings).ActionId);
+        Assert.Equal(
+            [
+                "  ; WARNING: joint (PTP) motions run at the controller's axis speeds ($VEL_AXIS, set by BAS #INITMOV); the Machina speed sets $VEL.CP for LIN and CIRC motions only.",
+                "  PTP {E6POS: X 400, Y 0, Z 400, A 180, B 0, C 180} C_PTP",
+                "  PTP {E6POS: X 400, Y 0, Z 300, A 180, B 0, C 180} C_PTP",
+                "",
+                "END",
+            ],
+            program.Files[0].Lines.TakeLast(5));
+    }
 }
