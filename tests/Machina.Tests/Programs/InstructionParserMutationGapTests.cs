@@ -34,4 +34,68 @@ public class InstructionParserMutationGapTests
 
         Assert.Equal("ExternalAxisTo: External axis numbers are 1 to 6.", ex.Problem);
     }
+
+    // How each instruction is used, as the error for a wrong number of arguments tells a user: written out here on purpose,
+    // so that a usage lost or garbled in the catalogue fails.
+    [Theory]
+    [InlineData("Speed", 2, "Speed(increment)")]
+    [InlineData("SpeedTo", 2, "SpeedTo(mmPerSecond)")]
+    [InlineData("Acceleration", 2, "Acceleration(increment)")]
+    [InlineData("AccelerationTo", 2, "AccelerationTo(mmPerSecondSquared)")]
+    [InlineData("Precision", 2, "Precision(increment)")]
+    [InlineData("PrecisionTo", 2, "PrecisionTo(radius)")]
+    [InlineData("MotionMode", 2, "MotionMode(\"linear\"|\"joint\")")]
+    [InlineData("Coordinates", 2, "Coordinates(\"world\"|\"local\")")]
+    [InlineData("PushSettings", 1, "PushSettings()")]
+    [InlineData("PopSettings", 1, "PopSettings()")]
+    [InlineData("Move", 4, "Move(x, y[, z])")]
+    [InlineData("MoveTo", 4, "MoveTo(x, y, z)")]
+    [InlineData("Rotate", 5, "Rotate(axisX, axisY, axisZ, degrees)")]
+    [InlineData("RotateTo", 7, "RotateTo(xAxisX, xAxisY, xAxisZ, yAxisX, yAxisY, yAxisZ)")]
+    [InlineData("Transform", 9, "Transform(x, y, z, axisX, axisY, axisZ, degrees[, translationFirst])")]
+    [InlineData("TransformTo", 10, "TransformTo(x, y, z, xAxisX, xAxisY, xAxisZ, yAxisX, yAxisY, yAxisZ)")]
+    [InlineData("ArcMotion", 7, "ArcMotion(throughX, throughY, throughZ, endX, endY, endZ)")]
+    [InlineData("ArcMotionTo", 19, "ArcMotionTo(throughX, throughY, throughZ, endX, endY, endZ) or ArcMotionTo(through origin, X axis, Y axis, end origin, X axis, Y axis: 18 numbers)")]
+    [InlineData("Axes", 7, "Axes(j1, j2, j3, j4, j5, j6)")]
+    [InlineData("AxesTo", 7, "AxesTo(j1, j2, j3, j4, j5, j6)")]
+    [InlineData("ExternalAxis", 4, "ExternalAxis(axisNumber, increment[, \"all\"|\"cartesian\"|\"joint\"])")]
+    [InlineData("ExternalAxisTo", 4, "ExternalAxisTo(axisNumber, value[, \"all\"|\"cartesian\"|\"joint\"])")]
+    [InlineData("ArmAngle", 2, "ArmAngle(increment)")]
+    [InlineData("ArmAngleTo", 2, "ArmAngleTo(degrees)")]
+    [InlineData("Wait", 2, "Wait(milliseconds)")]
+    [InlineData("Message", 2, "Message(\"text\")")]
+    [InlineData("Comment", 2, "Comment(\"text\")")]
+    [InlineData("CustomCode", 3, "CustomCode(\"statement\"[, isDeclaration])")]
+    [InlineData("DefineTool", 15, "DefineTool(\"name\", tipX, tipY, tipZ, xAxisX, xAxisY, xAxisZ, yAxisX, yAxisY, yAxisZ, weightKg, cogX, cogY, cogZ)")]
+    [InlineData("AttachTool", 2, "AttachTool(\"name\")")]
+    [InlineData("DetachTool", 1, "DetachTool()")]
+    [InlineData("WriteDigital", 4, "WriteDigital(pin, on[, toolPin])")]
+    [InlineData("WriteAnalog", 4, "WriteAnalog(pin, value[, toolPin])")]
+    [InlineData("Temperature", 4, "Temperature(increment, \"extruder\"|\"bed\"|\"chamber\"[, wait])")]
+    [InlineData("TemperatureTo", 4, "TemperatureTo(celsius, \"extruder\"|\"bed\"|\"chamber\"[, wait])")]
+    [InlineData("ExtrusionRate", 2, "ExtrusionRate(increment)")]
+    [InlineData("ExtrusionRateTo", 2, "ExtrusionRateTo(mmPerMm)")]
+    [InlineData("Extrude", 2, "Extrude([on])")]
+    [InlineData("Initialize", 1, "Initialize()")]
+    [InlineData("Terminate", 1, "Terminate()")]
+    public void Parse_TooManyArguments_ErrorShowsEveryUsage(string name, int count, string usages)
+    {
+        string args = string.Join(", ", Enumerable.Repeat("1", count));
+
+        var ex = ParseError($"{name}({args});");
+
+        string given = count == 1 ? "1 argument" : $"{count} arguments";
+        Assert.Equal($"{name} was given {given}; use it as {usages}.", ex.Problem);
+    }
+
+    [Fact]
+    public void Parse_TransformWithoutItsLastArgument_TranslatesFirst()
+    {
+        var relative = (ActionTransformation)Assert.Single(Instructions.Parse("Transform(1, 2, 3, 0, 0, 1, 90);"));
+        var absolute = (ActionTransformation)Assert.Single(Instructions.Parse("TransformTo(1, 2, 3, 1, 0, 0, 0, 1, 0);"));
+
+        Assert.True(relative.TranslationFirst);
+        Assert.True(absolute.TranslationFirst);
+        Assert.False(((ActionTransformation)Instructions.Parse("Transform(1, 2, 3, 0, 0, 1, 90, false);")[0]).TranslationFirst);
+    }
 }
