@@ -98,4 +98,19 @@ public class InstructionParserMutationGapTests
         Assert.True(absolute.TranslationFirst);
         Assert.False(((ActionTransformation)Instructions.Parse("Transform(1, 2, 3, 0, 0, 1, 90, false);")[0]).TranslationFirst);
     }
+
+    [Fact]
+    public void Parse_CommentAndMessageWithoutText_AreEmptyNotTheLastText()
+    {
+        var actions = Instructions.Parse("Comment(\"x\"); Comment(); Message(\"y\"); Message();");
+
+        Assert.Equal(["x", ""], actions.OfType<ActionComment>().Select(c => c.Comment));
+        Assert.Equal(["y", ""], actions.OfType<ActionMessage>().Select(m => m.Message));
+    }
+
+    [Theory]
+    [InlineData("ExternalAxisTo(1, 5, \"both\");", "\"both\" is not a valid external axes target; use one of: All, Cartesian, Joint.")]
+    [InlineData("TemperatureTo(200, \"nozzle\");", "\"nozzle\" is not a valid printer part; use one of: Extruder, Bed, Chamber.")]
+    [InlineData("MotionMode(\"circular\");", "\"circular\" is not a valid motion type; use one of: Linear, Joint.")]
+    public void Parse_UnknownChoice_ErrorNamesWhatWasExpected(string text, string problem) => Assert.Equal(problem, ParseError(text).Problem);
 }
