@@ -113,4 +113,23 @@ public class InstructionParserMutationGapTests
     [InlineData("TemperatureTo(200, \"nozzle\");", "\"nozzle\" is not a valid printer part; use one of: Extruder, Bed, Chamber.")]
     [InlineData("MotionMode(\"circular\");", "\"circular\" is not a valid motion type; use one of: Linear, Joint.")]
     public void Parse_UnknownChoice_ErrorNamesWhatWasExpected(string text, string problem) => Assert.Equal(problem, ParseError(text).Problem);
+
+    [Theory]
+    [InlineData("Wait", 1, 5)]
+    [InlineData("SpeedTo(10); Wait  ", 1, 20)]
+    public void Parse_TextEndingAfterAName_AsksForTheParenthesis(string text, int line, int column)
+    {
+        var ex = ParseError(text);
+
+        Assert.Equal((line, column), (ex.Line, ex.Column));
+        Assert.Equal("expected '(' after Wait.", ex.Problem);
+    }
+
+    [Fact]
+    public void Parse_NoArgumentsWithSpacesOrACommentInside_TakesNoArguments()
+    {
+        var actions = Instructions.Parse("PushSettings( ); PopSettings( // restore\n);");
+
+        Assert.Equal([true, false], actions.Cast<ActionPushPop>().Select(a => a.Push));
+    }
 }
