@@ -132,4 +132,16 @@ public class InstructionParserMutationGapTests
 
         Assert.Equal([true, false], actions.Cast<ActionPushPop>().Select(a => a.Push));
     }
+
+    [Theory]
+    [InlineData("Message(\"abc")]
+    [InlineData("Message(\"abc\\")]
+    [InlineData("Message(\"abc\\\ndef\")")]  // a backslash before a line break escapes nothing
+    public void Parse_TextEndingInsideAString_SaysTheStringIsNotClosed(string text)
+    {
+        var ex = ParseError(text);
+
+        Assert.Equal((1, 9), (ex.Line, ex.Column));
+        Assert.Equal("this text is not closed with a double quote (\"); write a quote inside text as \\\".", ex.Problem);
+    }
 }
