@@ -111,6 +111,7 @@ public class InstructionParserMutationGapTests
     [Theory]
     [InlineData("ExternalAxisTo(1, 5, \"both\");", "\"both\" is not a valid external axes target; use one of: All, Cartesian, Joint.")]
     [InlineData("TemperatureTo(200, \"nozzle\");", "\"nozzle\" is not a valid printer part; use one of: Extruder, Bed, Chamber.")]
+    [InlineData("Coordinates(\"tool\");", "\"tool\" is not a valid coordinate system; use one of: World, Local.")]
     [InlineData("MotionMode(\"circular\");", "\"circular\" is not a valid motion type; use one of: Linear, Joint.")]
     public void Parse_UnknownChoice_ErrorNamesWhatWasExpected(string text, string problem) => Assert.Equal(problem, ParseError(text).Problem);
 
