@@ -145,4 +145,24 @@ public class InstructionParserMutationGapTests
         Assert.Equal((1, 9), (ex.Line, ex.Column));
         Assert.Equal("this text is not closed with a double quote (\"); write a quote inside text as \\\".", ex.Problem);
     }
+
+    [Fact]
+    public void Parse_EmptyArgumentAfterASpace_IsAMissingValue()
+    {
+        var ex = ParseError("MoveTo(1, , 3);");
+
+        Assert.Equal((1, 11), (ex.Line, ex.Column));
+        Assert.Equal("a value is missing in MoveTo(...).", ex.Problem);
+    }
+
+    [Theory]
+    [InlineData("Wait(1); /", "expected an instruction such as MoveTo(400, 300, 500), but found '/'.")]
+    [InlineData("Wait(1); a/b", "unknown instruction \"a\".")]
+    public void Parse_SingleSlash_IsNotAComment(string text, string problem)
+    {
+        var ex = ParseError(text);
+
+        Assert.Equal((1, 10), (ex.Line, ex.Column));
+        Assert.Equal(problem, ex.Problem);
+    }
 }
