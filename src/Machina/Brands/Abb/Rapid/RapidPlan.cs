@@ -88,32 +88,23 @@ internal sealed class RapidPlan
     /// <summary>After <see cref="Finish"/> in one-pass mode: true when every provisional answer is the final name.</summary>
     internal bool ProvisionalNamesHeld { get; private set; } = true;
 
-    private string ProvisionalSpeed(double key)
+    private string ProvisionalSpeed(double key) => Provisional(_provisionalSpeeds, key, SpeedIdentifier);
+
+    private string ProvisionalZone(double key) => Provisional(_provisionalZones, key, static (zone, names) => ZoneName(zone, names, out _));
+
+    private string ProvisionalTool(Tool tool) => Provisional(_provisionalTools, tool, ToolIdentifier);
+
+    /// <summary>The name already answered for <paramref name="key"/>, or a new one claimed among the provisional names.</summary>
+    private string Provisional<TKey>(Dictionary<TKey, string> answered, TKey key, Func<TKey, RapidNames, string> claim) where TKey : notnull
     {
-        if (!_provisionalSpeeds.TryGetValue(key, out string? name))
+        if (!answered.TryGetValue(key, out string? name))
         {
-            _provisionalSpeeds[key] = name = _provisional!.Claim("vel" + NameNumber(key), "vel");
+            answered[key] = name = claim(key, _provisional!);
         }
         return name;
     }
 
-    private string ProvisionalZone(double key)
-    {
-        if (!_provisionalZones.TryGetValue(key, out string? name))
-        {
-            _provisionalZones[key] = name = ZoneName(key, _provisional!, out _);
-        }
-        return name;
-    }
-
-    private string ProvisionalTool(Tool tool)
-    {
-        if (!_provisionalTools.TryGetValue(tool, out string? name))
-        {
-            _provisionalTools[tool] = name = ToolIdentifier(tool, _provisional!);
-        }
-        return name;
-    }
+    private static string SpeedIdentifier(double speed, RapidNames names) => names.Claim("vel" + NameNumber(speed), "vel");
 
     private static string ToolIdentifier(Tool tool, RapidNames names) =>
         names.Claim(RapidNames.LooksLikeTarget(tool.Name) ? "tool_" + tool.Name : tool.Name, "tool_");
@@ -174,7 +165,7 @@ internal sealed class RapidPlan
         var speedLines = new List<string>(_speeds.Count);
         foreach (double speed in _speeds)
         {
-            string name = Names.Claim("vel" + NameNumber(speed), "vel");
+            string name = SpeedIdentifier(speed, Names);
             _speedNames[speed] = name;
             speedLines.Add($"  CONST speeddata {name} := {RapidText.SpeedData(speed)};");
         }
