@@ -6,8 +6,9 @@ namespace Machina;
 /// <summary>
 /// One TCP connection with a receive loop and a send loop. A sender's bytes go straight into the socket when nothing is
 /// queued (a non-blocking send); otherwise they wait in an outbox that the send loop writes in one call. Streaming many
-/// small requests thus costs no allocation per request and never blocks the caller. Disposing cancels both loops and
-/// closes the socket.
+/// small requests thus costs no allocation per request and never blocks the caller. What is posted from the receive loop
+/// while it hands over a read (the next requests an acknowledgement releases) is held and written in one call when the read
+/// is handled, so a block of requests costs one system call, not one each. Disposing cancels both loops and closes the socket.
 /// </summary>
 internal sealed class TcpLink : IAsyncDisposable
 {
@@ -24,6 +25,8 @@ internal sealed class TcpLink : IAsyncDisposable
     private byte[] _outbox = new byte[4096];
     private int _outboxLength;
     private bool _loopWriting;
+    private int _dispatchingThread; // the receive loop's thread while it hands a read to the receiver, else 0
+    private int _socketWrites;
     private byte[] _writing = new byte[4096];
     private Task _receiveLoop = Task.CompletedTask;
     private Task _sendLoop = Task.CompletedTask;
@@ -35,6 +38,9 @@ internal sealed class TcpLink : IAsyncDisposable
         _socket = socket;
         RemoteAddress = remoteAddress;
     }
+
+    /// <summary>How many times bytes were handed to the socket (direct sends and the send loop's writes), for tests.</summary>
+    internal int SocketWrites => Volatile.Read(ref _socketWrites);
 
     /// <summary>"host:port" of the other end.</summary>
     internal string RemoteAddress { get; }
@@ -95,10 +101,16 @@ internal sealed class TcpLink : IAsyncDisposable
     {
         lock (_outboxGate)
         {
+            if (_dispatchingThread == Environment.CurrentManagedThreadId)
+            {
+                Append(bytes); // written by FlushHeld when the read is handled
+                return;
+            }
             if (_outboxLength == 0 && !_loopWriting && Volatile.Read(ref _disposed) == 0)
             {
                 try
                 {
+                    Interlocked.Increment(ref _socketWrites);
                     int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
                     if (error is SocketError.Success or SocketError.WouldBlock && sent > 0)
                     {
@@ -116,12 +128,53 @@ internal sealed class TcpLink : IAsyncDisposable
                 }
                 // Not sent (buffer full or an error): the send loop writes it or meets and reports the failure.
             }
-            if (_outboxLength + bytes.Length > _outbox.Length)
+            Append(bytes);
+        }
+        _doorbell.Writer.TryWrite(true);
+    }
+
+    private void Append(ReadOnlySpan<byte> bytes)
+    {
+        if (_outboxLength + bytes.Length > _outbox.Length)
+        {
+            Array.Resize(ref _outbox, Math.Max(_outbox.Length * 2, _outboxLength + bytes.Length));
+        }
+        bytes.CopyTo(_outbox.AsSpan(_outboxLength));
+        _outboxLength += bytes.Length;
+    }
+
+    /// <summary>Writes what was posted while a read was handed over: straight into the socket when it fits, else by the send loop.</summary>
+    private void FlushHeld()
+    {
+        lock (_outboxGate)
+        {
+            _dispatchingThread = 0;
+            if (_outboxLength == 0)
             {
-                Array.Resize(ref _outbox, Math.Max(_outbox.Length * 2, _outboxLength + bytes.Length));
+                return;
             }
-            bytes.CopyTo(_outbox.AsSpan(_outboxLength));
-            _outboxLength += bytes.Length;
+            if (!_loopWriting && Volatile.Read(ref _disposed) == 0)
+            {
+                try
+                {
+                    Interlocked.Increment(ref _socketWrites);
+                    int sent = _socket.Send(_outbox.AsSpan(0, _outboxLength), SocketFlags.None, out SocketError error);
+                    if (error is SocketError.Success or SocketError.WouldBlock && sent > 0)
+                    {
+                        _outbox.AsSpan(sent, _outboxLength - sent).CopyTo(_outbox);
+                        _outboxLength -= sent;
+                    }
+                }
+                catch (ObjectDisposedException)
+                {
+                    _outboxLength = 0; // closing: the bytes are dropped with the link, whose loops report the end
+                    return;
+                }
+                if (_outboxLength == 0)
+                {
+                    return;
+                }
+            }
         }
         _doorbell.Writer.TryWrite(true);
     }
@@ -144,6 +197,7 @@ internal sealed class TcpLink : IAsyncDisposable
                 }
                 if (length > 0)
                 {
+                    Interlocked.Increment(ref _socketWrites);
                     await _socket.SendAsync(_writing.AsMemory(0, length), SocketFlags.None, stop).ConfigureAwait(false);
                     lock (_outboxGate)
                     {
@@ -183,7 +237,18 @@ internal sealed class TcpLink : IAsyncDisposable
                 {
                     return;
                 }
-                _receiver!.OnReceived(buffer.AsSpan(0, n));
+                lock (_outboxGate)
+                {
+                    _dispatchingThread = Environment.CurrentManagedThreadId;
+                }
+                try
+                {
+                    _receiver!.OnReceived(buffer.AsSpan(0, n));
+                }
+                finally
+                {
+                    FlushHeld();
+                }
             }
         }
         catch (OperationCanceledException) when (stop.IsCancellationRequested)

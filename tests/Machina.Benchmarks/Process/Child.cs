@@ -61,9 +61,10 @@ internal static class Child
     }
 
     /// <summary>
-    /// The three ways to compile a file: <c>stream</c>, the library's streaming entry point; <c>robot-folder</c>, read the whole
-    /// file, issue it on a robot and <c>CompileToFolder</c>; <c>robot-memory</c>, the same but <c>Compile()</c> in memory and write
-    /// each file's <c>ToText()</c>, as a user who saves a program does.
+    /// The four ways to compile a file: <c>stream</c>, the library's streaming entry point; <c>tool</c>, the <c>machina compile</c>
+    /// command (run by the parent with the tool's own runtime settings); <c>robot-folder</c>, read the whole file, issue it on a
+    /// robot and <c>CompileToFolder</c>; <c>robot-memory</c>, the same but <c>Compile()</c> in memory and write each file's
+    /// <c>ToText()</c>, as a user who saves a program does.
     /// </summary>
     private static void Compile(string file, RobotType brand, string folder, string path, Dictionary<string, object?> extra)
     {
@@ -73,6 +74,16 @@ internal static class Child
                 FolderCompileResult result = Instructions.CompileToFolder(file, brand, folder, programName: "Bench");
                 extra["actions"] = result.ActionCount;
                 extra["files"] = result.Paths.Count;
+                break;
+            case "tool":
+                var context = new Machina.Cli.CliContext(TextReader.Null, TextWriter.Null, Console.Error, CancellationToken.None);
+                int exit = Machina.Cli.CliApp.RunAsync(["compile", file, "--brand", brand.ToString(), "--out", folder, "--name", "Bench"], context).GetAwaiter().GetResult();
+                extra["exitCode"] = exit;
+                extra["tieredCompilation"] = AppContext.TryGetSwitch("System.Runtime.TieredCompilation", out bool tiered) ? tiered : (bool?)null;
+                if (exit != 0)
+                {
+                    throw new InvalidOperationException($"machina compile ended with exit code {exit}.");
+                }
                 break;
             case "robot-folder":
             case "robot-memory":

@@ -40,10 +40,16 @@ internal static class ChildProcess
     /// <summary>Another build of this program to run as the child (e.g. a ReadyToRun publish), from --child-exe; null for this one.</summary>
     public static string? Executable { get; set; }
 
-    /// <summary>Runs a child to its end (bounded by <paramref name="timeout"/>) and returns its report; throws with its error output when it fails.</summary>
-    public static ChildRun Run(IEnumerable<string> arguments, TimeSpan timeout)
+    /// <summary>The runtime settings the <c>machina</c> tool ships with (its runtimeconfig.json, built beside this program).</summary>
+    public static string ToolRuntimeConfig => Path.Combine(Path.GetDirectoryName(Executable ?? typeof(ChildProcess).Assembly.Location)!, "Machina.Cli.runtimeconfig.json");
+
+    /// <summary>
+    /// Runs a child to its end (bounded by <paramref name="timeout"/>) and returns its report; throws with its error output when it
+    /// fails. With <paramref name="runtimeConfig"/>, the child runs under those runtime settings (<c>dotnet exec --runtimeconfig</c>).
+    /// </summary>
+    public static ChildRun Run(IEnumerable<string> arguments, TimeSpan timeout, string? runtimeConfig = null)
     {
-        string self = typeof(ChildProcess).Assembly.Location;
+        string self = Executable is null ? typeof(ChildProcess).Assembly.Location : Path.ChangeExtension(Executable, ".dll");
         string appHost = Path.ChangeExtension(self, null);
         var start = new ProcessStartInfo
         {
@@ -51,7 +57,15 @@ internal static class ChildProcess
             RedirectStandardError = true,
             UseShellExecute = false,
         };
-        if (Executable is not null)
+        if (runtimeConfig is not null)
+        {
+            start.FileName = "dotnet";
+            start.ArgumentList.Add("exec");
+            start.ArgumentList.Add("--runtimeconfig");
+            start.ArgumentList.Add(runtimeConfig);
+            start.ArgumentList.Add(self);
+        }
+        else if (Executable is not null)
         {
             start.FileName = Executable;
         }

@@ -34,9 +34,13 @@ internal sealed class CompileProcessScenario(RobotType brand, bool huge, string 
 {
     private const double Mb = 1 << 20;
 
-    public override string Name => $"{(huge ? "cold-compile-10m" : "cold-compile")}{(path == "stream" ? "" : "-" + path)}-{brand.ToString().ToLowerInvariant()}";
+    public override string Name => path == "tool"
+        ? $"{(huge ? "cold-tool-10m" : "cold-tool")}-{brand.ToString().ToLowerInvariant()}"
+        : $"{(huge ? "cold-compile-10m" : "cold-compile")}{(path == "stream" ? "" : "-" + path)}-{brand.ToString().ToLowerInvariant()}";
 
-    public override string Title => $"Fresh process: {Report.Count(TargetSize)}-line instruction file to {brand} files ({path})";
+    public override string Title => path == "tool"
+        ? $"Fresh process: machina compile of a {Report.Count(TargetSize)}-line instruction file to {brand} files (the tool's runtime settings)"
+        : $"Fresh process: {Report.Count(TargetSize)}-line instruction file to {brand} files ({path})";
 
     public override int TargetSize => huge ? 10_000_000 : 1_000_000;
 
@@ -54,19 +58,27 @@ internal sealed class CompileProcessScenario(RobotType brand, bool huge, string 
     /// <summary>True for the 10^7-line scenarios (no warm repetition: one process is long enough).</summary>
     public bool Huge => huge;
 
-    /// <summary>True for the streaming entry point (the others are the robot paths it replaces).</summary>
+    /// <summary>True for the streaming entry point (the robot paths are what it replaces; the tool is a user of it).</summary>
     public bool Streaming => path == "stream";
+
+    /// <summary>True for the <c>machina compile</c> command run with the tool's runtime settings.</summary>
+    public bool Tool => path == "tool";
 
     public override ProcessResult Measure(int size, int runs, bool warm, ProcessInputs inputs)
     {
         string file = inputs.InstructionFile(size);
         string folder = inputs.Folder(Name);
         string[] arguments = ["compile", $"file={file}", $"brand={brand}", $"folder={folder}", $"path={path}"];
-        var children = Enumerable.Range(0, runs).Select(_ => ChildProcess.Run(arguments, Timeout(size))).ToList();
+        string? runtimeConfig = path == "tool" ? ChildProcess.ToolRuntimeConfig : null;
+        var children = Enumerable.Range(0, runs).Select(_ => ChildProcess.Run(arguments, Timeout(size), runtimeConfig)).ToList();
+        if (path == "tool" && children.Any(c => c.Report.GetProperty("extra").GetProperty("tieredCompilation").ValueKind != System.Text.Json.JsonValueKind.False))
+        {
+            throw new InvalidOperationException($"The child did not run with the tool's runtime settings ({runtimeConfig}).");
+        }
         double? warmSeconds = null;
         if (warm)
         {
-            ChildRun repeated = ChildProcess.Run([.. arguments, $"repeat={(runs == 1 ? 2 : 3)}"], Timeout(size * 3));
+            ChildRun repeated = ChildProcess.Run([.. arguments, $"repeat={(runs == 1 ? 2 : 3)}"], Timeout(size * 3), runtimeConfig);
             warmSeconds = repeated.Iterations.Skip(1).Min();
         }
         var result = Summarize(this, size, children) with { WarmWorkSeconds = warmSeconds };

@@ -16,6 +16,8 @@ internal static class ProcessSuite
         var all = new List<ProcessScenario>();
         all.AddRange(languages.Select(l => new CompileProcessScenario(l, huge: false)));
         all.AddRange(languages.Select(l => new CompileProcessScenario(l, huge: true)));
+        all.AddRange(languages.Select(l => new CompileProcessScenario(l, huge: false, "tool")));
+        all.AddRange(languages.Select(l => new CompileProcessScenario(l, huge: true, "tool")));
         all.Add(new CompileProcessScenario(RobotType.ABB, huge: false, "robot-folder"));
         all.Add(new CompileProcessScenario(RobotType.ABB, huge: false, "robot-memory"));
         all.Add(new StreamProcessScenario());

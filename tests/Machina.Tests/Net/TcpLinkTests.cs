@@ -1,0 +1,188 @@
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Tests.Net;
+
+/// <summary>
+/// The TCP link under the drivers: what the receive loop's handler posts (the requests an acknowledgement releases) goes out
+/// in one write when the read is handled, in order with what other threads post, and nothing is lost however much it is.
+/// </summary>
+public sealed class TcpLinkTests
+{
+    private static readonly TimeSpan Bound = TimeSpan.FromSeconds(20);
+
+    [Fact]
+    public async Task Post_FromTheReceiveHandler_IsWrittenInOneCallWhenTheReadIsHandled()
+    {
+        await using var pair = await LinkPair.OpenAsync(new PostingReceiver("one\n", "two\n", "three\n"));
+        await pair.Server.SendAsync(Encoding.ASCII.GetBytes("go"));
+
+        string received = await pair.ReadAsync("one\ntwo\nthree\n".Length);
+
+        Assert.Equal("one\ntwo\nthree\n", received);
+        Assert.Equal(1, pair.Link.SocketWrites);
+    }
+
+    [Fact]
+    public async Task Post_FromAnotherThread_IsWrittenAtOnceEachTime()
+    {
+        await using var pair = await LinkPair.OpenAsync(new PostingReceiver());
+
+        foreach (string text in new[] { "a\n", "b\n", "c\n" })
+        {
+            pair.Link.Post(Encoding.ASCII.GetBytes(text));
+        }
+        string received = await pair.ReadAsync(6);
+
+        Assert.Equal("a\nb\nc\n", received);
+        Assert.Equal(3, pair.Link.SocketWrites);
+    }
+
+    [Fact]
+    public async Task Post_MoreThanTheSocketTakesFromTheHandler_ArrivesWholeAndInOrder()
+    {
+        const int chunks = 64, chunkSize = 64 * 1024;
+        string[] posts = [.. Enumerable.Range(0, chunks).Select(i => new string((char)('A' + (i % 26)), chunkSize))];
+        await using var pair = await LinkPair.OpenAsync(new PostingReceiver(posts));
+        await pair.Server.SendAsync(Encoding.ASCII.GetBytes("go"));
+
+        Task<string> reading = pair.ReadAsync(chunks * chunkSize + 4);
+        await pair.Receiver.Posted.Task.WaitAsync(Bound);
+        pair.Link.Post(Encoding.ASCII.GetBytes("end\n"));
+        string received = await reading;
+
+        Assert.Equal(string.Concat(posts) + "end\n", received);
+    }
+
+    [Fact]
+    public async Task Post_FromAnotherThreadWhileTheHandlerHolds_KeepsTheOrderOfPosting()
+    {
+        var receiver = new HandshakeReceiver();
+        await using var pair = await LinkPair.OpenAsync(receiver);
+        await pair.Server.SendAsync(Encoding.ASCII.GetBytes("go"));
+
+        await receiver.FirstPosted.Task.WaitAsync(Bound);
+        pair.Link.Post(Encoding.ASCII.GetBytes("second\n"));
+        receiver.MayGoOn.SetResult();
+        string received = await pair.ReadAsync("first\nsecond\nthird\n".Length);
+
+        Assert.Equal("first\nsecond\nthird\n", received);
+    }
+
+    /// <summary>On its first read, posts each text in turn (from the receive loop's thread), then reports that it did.</summary>
+    private sealed class PostingReceiver(params string[] texts) : ILinkReceiver
+    {
+        private int _reads;
+
+        public TcpLink? Link { get; set; }
+
+        public TaskCompletionSource Posted { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public void OnReceived(ReadOnlySpan<byte> data)
+        {
+            if (Interlocked.Increment(ref _reads) == 1)
+            {
+                foreach (string text in texts)
+                {
+                    Link!.Post(Encoding.ASCII.GetBytes(text));
+                }
+                Posted.SetResult();
+            }
+        }
+
+        public void OnClosed(Exception? error)
+        {
+        }
+    }
+
+    /// <summary>Posts "first", lets the test post from its thread, then posts "third" before the read is handled.</summary>
+    private sealed class HandshakeReceiver : ILinkReceiver
+    {
+        private int _reads;
+
+        public TcpLink? Link { get; set; }
+
+        public TaskCompletionSource FirstPosted { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public TaskCompletionSource MayGoOn { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public void OnReceived(ReadOnlySpan<byte> data)
+        {
+            if (Interlocked.Increment(ref _reads) == 1)
+            {
+                Link!.Post(Encoding.ASCII.GetBytes("first\n"));
+                FirstPosted.SetResult();
+                MayGoOn.Task.Wait(Bound);
+                Link.Post(Encoding.ASCII.GetBytes("third\n"));
+            }
+        }
+
+        public void OnClosed(Exception? error)
+        {
+        }
+    }
+
+    /// <summary>A listening socket on loopback (port 0), a link connected to it, and the accepted server end.</summary>
+    private sealed class LinkPair : IAsyncDisposable
+    {
+        private readonly TcpListener _listener;
+
+        private LinkPair(TcpListener listener, TcpLink link, Socket server, ILinkReceiver receiver)
+        {
+            _listener = listener;
+            Link = link;
+            Server = server;
+            Receiver = receiver as PostingReceiver ?? new PostingReceiver();
+        }
+
+        public TcpLink Link { get; }
+
+        public Socket Server { get; }
+
+        public PostingReceiver Receiver { get; }
+
+        public static async Task<LinkPair> OpenAsync(ILinkReceiver receiver)
+        {
+            var listener = new TcpListener(IPAddress.Loopback, 0);
+            listener.Start();
+            int port = ((IPEndPoint)listener.LocalEndpoint).Port;
+            Task<Socket> accepting = listener.AcceptSocketAsync();
+            TcpLink link = await TcpLink.ConnectAsync("127.0.0.1", port, Bound, TimeProvider.System, CancellationToken.None);
+            Socket server = await accepting.WaitAsync(Bound);
+            switch (receiver)
+            {
+                case PostingReceiver p:
+                    p.Link = link;
+                    break;
+                case HandshakeReceiver h:
+                    h.Link = link;
+                    break;
+            }
+            link.Start(receiver);
+            return new LinkPair(listener, link, server, receiver);
+        }
+
+        /// <summary>Reads exactly <paramref name="length"/> bytes from the server end, within the bound.</summary>
+        public async Task<string> ReadAsync(int length)
+        {
+            using var timeout = new CancellationTokenSource(Bound);
+            byte[] buffer = new byte[length];
+            int read = 0;
+            while (read < length)
+            {
+                int n = await Server.ReceiveAsync(buffer.AsMemory(read), SocketFlags.None, timeout.Token);
+                Assert.True(n > 0, $"The link closed after {read} of {length} bytes.");
+                read += n;
+            }
+            return Encoding.ASCII.GetString(buffer);
+        }
+
+        public async ValueTask DisposeAsync()
+        {
+            await Link.DisposeAsync();
+            Server.Dispose();
+            _listener.Stop();
+        }
+    }
+}
