@@ -13,6 +13,7 @@ internal sealed class HumanCompiler : Compiler
         file.AddRange(Header(job));
         file.Add("");
         int index = 0;
-        job.Replay((action, _) => file.Add($"[{index++}] {ProgramText.OneLine(action.Describe())}"));
+        var line = new System.Text.StringBuilder(128);
+        job.Replay((action, _) => file.Add(line.Clear().Append('[').Append(index++).Append("] ").Append(ProgramText.OneLine(action.Describe()))));
     }
 }

@@ -6,6 +6,9 @@ internal abstract class LineSink
     /// <summary>Adds one line (without line ending).</summary>
     internal abstract void Add(string line);
 
+    /// <summary>Adds the text of a builder as one line, without making a string of it where the sink can (hot compiler paths).</summary>
+    internal virtual void Add(System.Text.StringBuilder line) => Add(line.ToString());
+
     /// <summary>Adds several lines.</summary>
     internal void AddRange(IEnumerable<string> lines)
     {
@@ -22,6 +25,8 @@ internal sealed class ListLineSink : LineSink
     internal PackedLines Lines { get; } = new();
 
     internal override void Add(string line) => Lines.Add(line);
+
+    internal override void Add(System.Text.StringBuilder line) => Lines.Add(line);
 }
 
 /// <summary>Writes lines to a text writer as they come.</summary>
@@ -34,6 +39,12 @@ internal sealed class WriterLineSink(TextWriter writer, string newLine) : LineSi
     internal string NewLine => newLine;
 
     internal override void Add(string line)
+    {
+        writer.Write(line);
+        writer.Write(newLine);
+    }
+
+    internal override void Add(System.Text.StringBuilder line)
     {
         writer.Write(line);
         writer.Write(newLine);

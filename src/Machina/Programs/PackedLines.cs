@@ -59,6 +59,30 @@ internal sealed class PackedLines : IReadOnlyList<string>
     /// <summary>The line at <paramref name="index"/> (a new string each time).</summary>
     public string this[int index] => Text(_lines[index]);
 
+    /// <summary>Appends the text of a builder as a line, without making a string of it.</summary>
+    internal void Add(StringBuilder line)
+    {
+        int length = line.Length;
+        foreach (ReadOnlyMemory<char> chunk in line.GetChunks())
+        {
+            if (chunk.Length == length)
+            {
+                Add(chunk.Span); // the usual case: a builder that is reused has one chunk
+                return;
+            }
+            break;
+        }
+        if (length == 0)
+        {
+            Add(ReadOnlySpan<char>.Empty);
+            return;
+        }
+        char[] copy = System.Buffers.ArrayPool<char>.Shared.Rent(length);
+        line.CopyTo(0, copy, length);
+        Add(copy.AsSpan(0, length));
+        System.Buffers.ArrayPool<char>.Shared.Return(copy);
+    }
+
     /// <summary>Appends a line.</summary>
     internal void Add(ReadOnlySpan<char> line)
     {

@@ -19,6 +19,8 @@ internal sealed class MemorySpool : SpoolSink
 
     internal override void Add(string line) => _lines.Add(line);
 
+    internal override void Add(StringBuilder line) => _lines.Add(line);
+
     internal override void MoveTo(LineSink target)
     {
         foreach (string line in _lines)
@@ -53,6 +55,13 @@ internal sealed class FileSpool : SpoolSink
     }
 
     internal override void Add(string line)
+    {
+        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
+        writer.Write(line);
+        writer.Write(_newLine);
+    }
+
+    internal override void Add(StringBuilder line)
     {
         StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
         writer.Write(line);

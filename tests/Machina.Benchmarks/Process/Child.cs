@@ -20,6 +20,7 @@ internal static class Child
         var iterations = new List<double>();
         var iterationCpu = new List<double>();
         var extra = new Dictionary<string, object?>();
+        using JitSampler? jit = a.ContainsKey("jitlog") ? new JitSampler() : null;
         long workStart = Stopwatch.GetTimestamp();
         for (int i = 0; i < repeat; i++)
         {
@@ -44,6 +45,13 @@ internal static class Child
             iterationCpu.Add(Environment.CpuUsage.TotalTime.TotalSeconds - cpuStart);
         }
         long workEnd = Stopwatch.GetTimestamp();
+        if (jit is not null)
+        {
+            extra["jit"] = jit.Samples();
+        }
+        extra["gcCollections"] = new[] { GC.CollectionCount(0), GC.CollectionCount(1), GC.CollectionCount(2) };
+        extra["allocatedBytes"] = GC.GetTotalAllocatedBytes();
+        extra["gcPauseSeconds"] = GC.GetTotalPauseDuration().TotalSeconds;
         (long hwm, long rss) = Memory();
         Console.WriteLine(JsonSerializer.Serialize(new Dictionary<string, object?>
         {

@@ -89,4 +89,50 @@ public class PackedLinesTests
         Assert.Equal("Move(-1.5,0,0);", file.Lines[^1]);
         Assert.Equal(file.Lines.Count, file.ToText().Count(c => c == '\n'));
     }
+    [Fact]
+    public void Add_BuildersOfOneAndManyChunks_ReadBackAsTheirText()
+    {
+        // A builder grown from a small capacity holds its text in several chunks; a reused one usually in one.
+        var chunked = new System.Text.StringBuilder(4);
+        for (int i = 0; i < 40; i++)
+        {
+            chunked.Append("MoveL ").Append(i).Append(';');
+        }
+        var single = new System.Text.StringBuilder(256).Append("movel(p[0.3, 0, 0.5, 0, 3.1416, 0], a=1, v=0.1)  # [Move to 300, 0, 500 mm]");
+        var other = new System.Text.StringBuilder(2).Append("unicodé ").Append("✓ 日本 ").Append("🤖");
+        int chunks = 0;
+        foreach (ReadOnlyMemory<char> _ in chunked.GetChunks())
+        {
+            chunks++;
+        }
+        Assert.True(chunks > 1, "the test needs a builder of several chunks");
+        var packed = new PackedLines();
+
+        packed.Add(chunked);
+        packed.Add(single);
+        packed.Add(other);
+        packed.Add(new System.Text.StringBuilder());
+
+        Assert.Equal([chunked.ToString(), single.ToString(), "unicodé ✓ 日本 🤖", ""], packed);
+        Assert.Equal(chunked.Length + single.Length + other.Length, packed.CharacterCount);
+    }
+
+    [Fact]
+    public void Add_BuilderToEachSink_WritesTheSameLineAsItsString()
+    {
+        var text = new System.Text.StringBuilder(3).Append("  MoveL [[1,2,3]], v100, z5, tool0\\WObj:=WObj0;").Append("  ! [Move 1, 2, 3 mm]");
+        var writer = new StringWriter();
+        var list = new ListLineSink();
+        using var memory = new MemorySpool();
+
+        new WriterLineSink(writer, "\r\n").Add(text);
+        list.Add(text);
+        memory.Add(text);
+        var moved = new ListLineSink();
+        memory.MoveTo(moved);
+
+        Assert.Equal(text + "\r\n", writer.ToString());
+        Assert.Equal([text.ToString()], list.Lines);
+        Assert.Equal([text.ToString()], moved.Lines);
+    }
 }

@@ -287,7 +287,7 @@ internal sealed class GCodeWriter
         {
             sb.Append("  ; [").Append(GCodeText.Comment(action.Describe())).Append(']');
         }
-        _file.Add(sb.ToString());
+        _file.Add(sb);
     }
 
     /// <summary>A speed in mm/s as a feed rate in mm/min; a speed whose feed would overflow gives the largest number instead.</summary>
@@ -387,7 +387,7 @@ internal sealed class GCodeWriter
         {
             StringBuilder sb = _sb.Clear().Append(_flavor.TravelCode).Append(" X");
             FixedPoint.Append(sb, x, 3).Append(" Y");
-            _file.Add(FixedPoint.Append(sb, y, 3).ToString());
+            _file.Add(FixedPoint.Append(sb, y, 3));
         }
         _file.AddRange(_flavor.EndShutdown);
     }

@@ -386,7 +386,7 @@ internal sealed class KrlWriter
             line.Append('}');
             return;
         }
-        _dat!.Add(_declaration.Append('}').ToString());
+        _dat!.Add(_declaration.Append('}'));
         FixedPoint.Append(line.Append("target"), _targetCount, 0);
     }
 
@@ -398,7 +398,7 @@ internal sealed class KrlWriter
         {
             line.Append("  ; [").Append(KrlText.Comment(action.Describe())).Append(']');
         }
-        _src.Add(line.ToString());
+        _src.Add(line);
     }
 
     private void Code(string code, RobotAction action) => EndLine(BeginLine().Append(code), action);

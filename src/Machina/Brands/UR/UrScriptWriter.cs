@@ -76,7 +76,8 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 bool joint = cursor.MotionType == MotionType.Joint;
                 _sb.Clear().Append(Indent).Append(joint ? "movej(" : "movep(");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
-                Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint).ToString());
+                _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
+                MoveCode(action);
                 break;
             case ActionArcMotion arc:
                 if (ArcOrientation.ThroughIsIgnored(arc, cursor))
@@ -87,7 +88,8 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 PoseOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
                 _sb.Append(", ");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
-                Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: false).ToString());
+                _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: false);
+                MoveCode(action);
                 break;
             case ActionAxes:
                 _sb.Clear().Append(Indent).Append("movej(");
@@ -99,7 +101,8 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 {
                     _sb.Append("target").Append(_target++);
                 }
-                Code(action, _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true).ToString());
+                _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true);
+                MoveCode(action);
                 break;
             case ActionSpeed when UrScriptText.RoundsToZero(cursor.Speed):
                 job.Warn(action, $"URScript speeds are written in m/s with 6 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {FixedPoint.Format(UrScriptText.MinRate, 6)} m/s.");
@@ -291,6 +294,16 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     {
         job.Warn(action, reason);
         sink.Add(Indent + "# NOT SUPPORTED ON UR: " + UrScriptText.CommentText(action.Describe()));
+    }
+
+    /// <summary>Writes the motion line built in the builder, with its comment.</summary>
+    private void MoveCode(RobotAction action)
+    {
+        if (_human)
+        {
+            _sb.Append("  # [").Append(UrScriptText.CommentText(action.Describe())).Append(']');
+        }
+        sink.Add(_sb);
     }
 
     private void Code(RobotAction action, string line) =>

@@ -80,7 +80,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
             case ActionTranslation or ActionRotation or ActionTransformation:
                 _sb.Clear().Append(Indent).Append(cursor.MotionType == MotionType.Joint ? "MoveJ " : "MoveL ");
                 RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
-                Code(action, MoveTail(cursor));
+                MoveCode(action, cursor);
                 break;
             case ActionArcMotion arc:
                 if (ArcOrientation.ThroughIsIgnored(arc, cursor))
@@ -91,7 +91,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 RobTargetOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value, cursor, false);
                 _sb.Append(", ");
                 RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
-                Code(action, MoveTail(cursor));
+                MoveCode(action, cursor);
                 break;
             case ActionAxes:
                 _sb.Clear().Append(Indent).Append("MoveAbsJ ");
@@ -103,7 +103,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 {
                     _sb.Append("target").Append(_target++);
                 }
-                Code(action, MoveTail(cursor));
+                MoveCode(action, cursor);
                 break;
             case ActionAcceleration:
                 Code(action, AccelerationLine(action, cursor.Acceleration));
@@ -178,9 +178,17 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         }
     }
 
-    private string MoveTail(RobotCursor cursor) =>
+    /// <summary>Ends the move instruction begun in the builder (speed, zone, tool, work object), adds its comment and writes the line.</summary>
+    private void MoveCode(RobotAction action, RobotCursor cursor)
+    {
         _sb.Append(", ").Append(plan.SpeedName(cursor.Speed)).Append(", ").Append(plan.ZoneName(cursor.Precision))
-           .Append(", ").Append(plan.ToolName(cursor.Tool)).Append("\\WObj:=WObj0;").ToString();
+           .Append(", ").Append(plan.ToolName(cursor.Tool)).Append("\\WObj:=WObj0;");
+        if (_human)
+        {
+            _sb.Append("  ! [").Append(RapidText.CommentText(action.Describe())).Append(']');
+        }
+        sink.Add(_sb);
+    }
 
     private string AccelerationLine(RobotAction action, double acceleration)
     {
