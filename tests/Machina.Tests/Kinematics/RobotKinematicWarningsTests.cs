@@ -6,14 +6,21 @@ public class RobotKinematicWarningsTests
 
     private static List<KinematicIssueKind?> Kinds(IEnumerable<ProgramWarning> warnings) => warnings.Select(w => w.Kind).ToList();
 
+    /// <summary>The robot's one warning, checked to be of <paramref name="kind"/> and raised by action <paramref name="actionId"/>.</summary>
+    private static ProgramWarning OnlyWarning(Robot bot, KinematicIssueKind kind, int actionId)
+    {
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal(kind, w.Kind);
+        Assert.Equal(actionId, w.ActionId);
+        return w;
+    }
+
     [Fact]
     public void AxesTo_BeyondLimit_JointLimitWarningWithActionId()
     {
         Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
         bot.AxesTo(0, 0, 95, 0, 30, 0);
-        ProgramWarning w = Assert.Single(bot.GetWarnings());
-        Assert.Equal(KinematicIssueKind.JointLimit, w.Kind);
-        Assert.Equal(1, w.ActionId);
+        ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.JointLimit, 1);
         Assert.Equal("#1 AxesTo(0,0,95,0,30,0); JointLimit: the target joints [0, 0, 95, 0, 30, 0] are beyond the limits (joint 3 at 95°, allowed -110° to 70°).", w.ToString());
     }
 
@@ -107,9 +114,7 @@ public class RobotKinematicWarningsTests
         bot.AxesTo(0, 10, 10, 0, 45, 0);
         bot.SpeedTo(500);
         bot.Move(0, 100, 0);
-        ProgramWarning w = Assert.Single(bot.GetWarnings());
-        Assert.Equal(KinematicIssueKind.JointSpeed, w.Kind);
-        Assert.Equal(3, w.ActionId);
+        ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.JointSpeed, 3);
         Assert.Contains("above its maximum of 1°/s", w.Message);
     }
 
@@ -201,9 +206,7 @@ public class RobotKinematicWarningsTests
         bot.Coordinates("local");
         bot.Rotate(0, 0, 1, 30);
 
-        ProgramWarning w = Assert.Single(bot.GetWarnings());
-        Assert.Equal(KinematicIssueKind.LargeJointMove, w.Kind);
-        Assert.Equal(4, w.ActionId);
+        ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.LargeJointMove, 4);
         Assert.Equal("LargeJointMove: to reach this target in a joint move, joint 6 turns 330° (from 390° to 60°); make sure the tool and its cables have room to swing.", w.Message);
     }
 
