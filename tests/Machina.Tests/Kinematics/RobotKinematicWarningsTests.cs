@@ -15,6 +15,17 @@ public class RobotKinematicWarningsTests
         return w;
     }
 
+    /// <summary>An IRB 120 at axis 5 = 45° and axis 6 = <paramref name="j6"/>° turning its tool <paramref name="degrees"/>° about its Z, in a joint move.</summary>
+    private static Robot TurnToolInAJointMove(double j6, double degrees)
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 45, j6);
+        bot.MotionMode("joint");
+        bot.Coordinates("local");
+        bot.Rotate(0, 0, 1, degrees);
+        return bot;
+    }
+
     [Fact]
     public void AxesTo_BeyondLimit_JointLimitWarningWithActionId()
     {
@@ -200,11 +211,7 @@ public class RobotKinematicWarningsTests
     public void JointMoveToACartesianTarget_AJointSwingsMoreThanHalfATurn_Warns()
     {
         // Axis 6 at 390° of its ±400°: turning the tool 30° more is only possible the other way round, 330° back.
-        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
-        bot.AxesTo(0, 0, 0, 0, 45, 390);
-        bot.MotionMode("joint");
-        bot.Coordinates("local");
-        bot.Rotate(0, 0, 1, 30);
+        Robot bot = TurnToolInAJointMove(390, 30);
 
         ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.LargeJointMove, 4);
         Assert.Equal("LargeJointMove: to reach this target in a joint move, joint 6 turns 330° (from 390° to 60°); make sure the tool and its cables have room to swing.", w.Message);
@@ -213,11 +220,7 @@ public class RobotKinematicWarningsTests
     [Fact]
     public void JointMoveTurningAJointLessThanHalfATurn_NoWarning()
     {
-        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
-        bot.AxesTo(0, 0, 0, 0, 45, 90);
-        bot.MotionMode("joint");
-        bot.Coordinates("local");
-        bot.Rotate(0, 0, 1, 170);
+        Robot bot = TurnToolInAJointMove(90, 170);
 
         Assert.Empty(bot.GetWarnings());
         Assert.Equal(170, Math.Abs(bot.GetCurrentAxes()!.Value.J6 - 90), 6);
