@@ -20,7 +20,7 @@ internal static class EmbeddedControllers
         _ => null,
     };
 
-    private static async Task<EmbeddedController> StartAbbAsync(BridgeOptions options, CancellationToken cancellationToken)
+    private static Task<EmbeddedController> StartAbbAsync(BridgeOptions options, CancellationToken cancellationToken)
     {
         var controller = new VirtualAbbController(new VirtualAbbControllerOptions
         {
@@ -29,29 +29,26 @@ internal static class EmbeddedControllers
             SpeedFactor = options.SimulationSpeed,
             TimeProvider = options.TimeProvider,
         });
-        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new EmbeddedController(controller.Port, controller);
+        return StartAsync(controller, () => controller.Port, cancellationToken);
     }
 
-    private static async Task<EmbeddedController> StartUrAsync(BridgeOptions options, CancellationToken cancellationToken)
+    private static Task<EmbeddedController> StartUrAsync(BridgeOptions options, CancellationToken cancellationToken)
     {
-        var controller = new VirtualUrController(new VirtualUrControllerOptions
-        {
-            SpeedFactor = options.SimulationSpeed,
-            TimeProvider = options.TimeProvider,
-        });
-        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new EmbeddedController(controller.Port, controller);
+        var controller = new VirtualUrController(new VirtualUrControllerOptions { SpeedFactor = options.SimulationSpeed, TimeProvider = options.TimeProvider });
+        return StartAsync(controller, () => controller.Port, cancellationToken);
     }
 
-    private static async Task<EmbeddedController> StartKukaAsync(BridgeOptions options, CancellationToken cancellationToken)
+    private static Task<EmbeddedController> StartKukaAsync(BridgeOptions options, CancellationToken cancellationToken)
     {
-        var controller = new VirtualKukaController(new VirtualKukaControllerOptions
-        {
-            SpeedFactor = options.SimulationSpeed,
-            TimeProvider = options.TimeProvider,
-        });
+        var controller = new VirtualKukaController(new VirtualKukaControllerOptions { SpeedFactor = options.SimulationSpeed, TimeProvider = options.TimeProvider });
+        return StartAsync(controller, () => controller.Port, cancellationToken);
+    }
+
+    /// <summary>Starts a controller and hands it over with the port its driver listens on (known once it has started).</summary>
+    private static async Task<EmbeddedController> StartAsync<TState>(VirtualController<TState> controller, Func<int> port, CancellationToken cancellationToken)
+        where TState : VirtualRobotState
+    {
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new EmbeddedController(controller.Port, controller);
+        return new EmbeddedController(port(), controller);
     }
 }

@@ -20,7 +20,7 @@ internal static class RunCommand
         and shows the progress: a bar with counts, rate and time left on a terminal, plain lines when redirected.
         A file is read once first, so that a malformed line stops nothing: the robot moves only if the whole file reads well.
         Ctrl+C stops cleanly: nothing more is sent, and the actions already sent to the controller are listed.
-        Online control in this build: {string.Join(", ", VirtualControllers.Available.Select(Brands.Name))}.
+        Online control in this build: {VirtualControllers.AvailableNames}.
 
         Options:
           --brand B         the robot brand (abb, ur, kuka)

@@ -18,7 +18,7 @@ internal static class SimCommand
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
         definition, your own script. Every request it receives is printed, one line each.
-        Available in this build: {string.Join(", ", VirtualControllers.Available.Select(Brands.Name))}.
+        Available in this build: {VirtualControllers.AvailableNames}.
 
         Options:
           --port P          the port hosts connect to (default {DefaultPort}; ABB also uses P + 1 for its monitor; 0 picks a free one)

@@ -44,6 +44,9 @@ internal static class VirtualControllers
     /// <summary>The brands that have a virtual controller in this build.</summary>
     internal static readonly RobotType[] Available = [RobotType.ABB, RobotType.UR, RobotType.KUKA];
 
+    /// <summary>The brands of <see cref="Available"/> as typed on the command line, e.g. "abb, ur, kuka", for help texts.</summary>
+    internal static string AvailableNames => string.Join(", ", Available.Select(Brands.Name));
+
     /// <summary>Starts a virtual controller of <paramref name="brand"/> on 127.0.0.1 (an OS-chosen port).</summary>
     /// <exception cref="CliException">This build has no virtual controller for the brand.</exception>
     internal static async Task<RunningController> StartAsync(RobotType brand, VirtualControllerOptions options, CancellationToken cancellationToken) => brand switch
@@ -61,12 +64,7 @@ internal static class VirtualControllers
 
     private static async Task<RunningController> StartAbbAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
     {
-        var settings = new VirtualAbbControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
-        if (options.Model is RobotModel model)
-        {
-            settings = settings with { Model = model };
-        }
-        var controller = new VirtualAbbController(settings);
+        var controller = new VirtualAbbController(Settings(new VirtualAbbControllerOptions(), options));
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
         return new RunningController(RobotType.ABB, controller.Port, [0, 1], ["driver", "monitor"], ';', controller.DisposeAsync,
             () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} malformed");
@@ -74,12 +72,7 @@ internal static class VirtualControllers
 
     private static async Task<RunningController> StartUrAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
     {
-        var settings = new VirtualUrControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
-        if (options.Model is RobotModel model)
-        {
-            settings = settings with { Model = model };
-        }
-        var controller = new VirtualUrController(settings);
+        var controller = new VirtualUrController(Settings(new VirtualUrControllerOptions(), options));
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
         return new RunningController(RobotType.UR, controller.Port, [0, 1, 2], ["script", "RTDE", "dashboard"], '\n', controller.DisposeAsync,
             () => $"{controller.RequestsReceived} instructions received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
@@ -87,14 +80,24 @@ internal static class VirtualControllers
 
     private static async Task<RunningController> StartKukaAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
     {
-        var settings = new VirtualKukaControllerOptions { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
+        var controller = new VirtualKukaController(Settings(new VirtualKukaControllerOptions(), options));
+        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
+        return new RunningController(RobotType.KUKA, controller.Port, [0, 1], ["driver", "monitor"], '>', controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
+    }
+
+    /// <summary>
+    /// A brand's default settings with the command line's speed and arm (the brand's default arm when none is given), keeping no
+    /// request log (the command line never reads it).
+    /// </summary>
+    private static T Settings<T>(T defaults, VirtualControllerOptions options) where T : Machina.Simulation.VirtualControllerOptions
+    {
+        Machina.Simulation.VirtualControllerOptions settings = defaults;
+        settings = settings with { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
         if (options.Model is RobotModel model)
         {
             settings = settings with { Model = model };
         }
-        var controller = new VirtualKukaController(settings);
-        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new RunningController(RobotType.KUKA, controller.Port, [0, 1], ["driver", "monitor"], '>', controller.DisposeAsync,
-            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
+        return (T)settings;
     }
 }

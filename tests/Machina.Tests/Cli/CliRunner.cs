@@ -18,6 +18,10 @@ internal sealed class CliRunner : IDisposable
         return name;
     }
 
+    /// <summary>Writes <paramref name="program"/> to p.machina and runs <c>machina COMMAND p.machina OPTIONS</c> to its end.</summary>
+    internal async Task<CliResult> RunProgramAsync(string command, string program, params string[] options) =>
+        await RunAsync([command, Write("p.machina", program), .. options]);
+
     /// <summary>Runs a command line to its end.</summary>
     internal async Task<CliResult> RunAsync(params string[] args) => await RunAsync(args, "", CancellationToken.None);
 

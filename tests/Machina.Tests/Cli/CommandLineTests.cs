@@ -82,9 +82,8 @@ public class CommandLineTests
     public async Task OptionWithEquals_IsAccepted()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(300, 0, 400);");
 
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand=human", "--out=o");
+        CliResult result = await cli.RunProgramAsync("compile", "MoveTo(300, 0, 400);", "--brand=human", "--out=o");
 
         Assert.Equal(0, result.Exit);
         Assert.True(File.Exists(cli.PathOf("o/p.txt")));

@@ -83,28 +83,21 @@ public class CompileCommandTests
         Assert.False(Directory.Exists(cli.PathOf("out")));
     }
 
-    [Fact]
-    public async Task Compile_RefusedSecondStatementOfALine_PointsAtItsColumn()
+    [Theory]
+    // A refused second statement of a line: the column where that statement starts.
+    [InlineData("MoveTo(1, 2, 3);\nWait(1); PopSettings();\n", "ur", "p.machina:2:10: error: cannot apply \"PopSettings();\":")]
+    // A relative move before any position, after a comment, a blank line and an indent.
+    [InlineData("// starts relative\n\n   Move(0, 0, 10);\n", "abb", "p.machina:3:4: error: cannot apply \"Move(0,0,10);\":")]
+    // A statement still open at the end of the file: reported at the end.
+    [InlineData("MoveTo(1, 2, 3);\nMoveTo(1,\n 2,", "abb", "p.machina:3:4: error: MoveTo( is not closed with ')'.")]
+    public async Task Compile_RefusedStatement_IsReportedAtItsLineAndColumn(string program, string brand, string error)
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(1, 2, 3);\nWait(1); PopSettings();\n");
 
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "ur", "--out", "out");
-
-        Assert.Equal(1, result.Exit);
-        Assert.StartsWith("p.machina:2:10: error: cannot apply \"PopSettings();\":", result.Stderr, StringComparison.Ordinal);
-    }
-
-    [Fact]
-    public async Task Compile_RelativeMoveBeforeAnyPosition_IsRefusedWithItsLine()
-    {
-        using var cli = new CliRunner();
-        cli.Write("p.machina", "// starts relative\n\n   Move(0, 0, 10);\n");
-
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "abb", "--out", "out");
+        CliResult result = await cli.RunProgramAsync("compile", program, "--brand", brand, "--out", "out");
 
         Assert.Equal(1, result.Exit);
-        Assert.StartsWith("p.machina:3:4: error: cannot apply \"Move(0,0,10);\":", result.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith(error, result.Stderr, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -134,24 +127,11 @@ public class CompileCommandTests
     }
 
     [Fact]
-    public async Task Compile_UnclosedStatementAtTheEnd_IsReportedAtTheEnd()
-    {
-        using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(1, 2, 3);\nMoveTo(1,\n 2,");
-
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "abb", "--out", "out");
-
-        Assert.Equal(1, result.Exit);
-        Assert.StartsWith("p.machina:3:4: error: MoveTo( is not closed with ')'.", result.Stderr, StringComparison.Ordinal);
-    }
-
-    [Fact]
     public async Task Compile_PrinterWarnings_GoToStandardErrorWithTheirLines()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(100, 100, 10);\nExtrude(true);\nMove(10, 0, 0);\nRotate(0, 0, 1, 45);\n");
 
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "zmorph", "--out", "out");
+        CliResult result = await cli.RunProgramAsync("compile", "MoveTo(100, 100, 10);\nExtrude(true);\nMove(10, 0, 0);\nRotate(0, 0, 1, 45);\n", "--brand", "zmorph", "--out", "out");
 
         Assert.Equal(0, result.Exit);
         Assert.Contains("p.machina:4:1: warning: Rotate(0,0,1,45);", result.Stderr, StringComparison.Ordinal);
@@ -162,9 +142,8 @@ public class CompileCommandTests
     public async Task Compile_MoreWarningsThanKept_PrintsTheFirstAndCountsTheRest()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(100, 100, 10);\n" + string.Concat(Enumerable.Repeat("Rotate(0, 0, 1, 1);\n", Instructions.MaxWarningsKept + 5)));
 
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "zmorph", "--out", "out");
+        CliResult result = await cli.RunProgramAsync("compile", "MoveTo(100, 100, 10);\n" + string.Concat(Enumerable.Repeat("Rotate(0, 0, 1, 1);\n", Instructions.MaxWarningsKept + 5)), "--brand", "zmorph", "--out", "out");
 
         Assert.Equal(0, result.Exit);
         string[] warnings = result.Stderr.Split('\n').Where(l => l.Contains(": warning: Rotate(", StringComparison.Ordinal)).ToArray();
@@ -178,9 +157,8 @@ public class CompileCommandTests
     public async Task Compile_UnreachableTargetWithModel_WarnsAtItsLineAndColumn()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(300, 0, 400);\n  MoveTo(2000, 0, 400);\n");
 
-        CliResult result = await cli.RunAsync("compile", "p.machina", "--brand", "abb", "--model", "IRB 120", "--out", "out");
+        CliResult result = await cli.RunProgramAsync("compile", "MoveTo(300, 0, 400);\n  MoveTo(2000, 0, 400);\n", "--brand", "abb", "--model", "IRB 120", "--out", "out");
 
         Assert.Equal(0, result.Exit);
         Assert.Contains("p.machina:2:3: warning: MoveTo(2000,0,400); Unreachable:", result.Stderr, StringComparison.Ordinal);
@@ -195,9 +173,8 @@ public class CompileCommandTests
     public async Task Compile_WrongBrandOrModel_IsAUsageError(string o1, string v1, string o2, string v2, string message)
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(1, 2, 3);");
 
-        CliResult result = await cli.RunAsync("compile", "p.machina", o1, v1, o2, v2);
+        CliResult result = await cli.RunProgramAsync("compile", "MoveTo(1, 2, 3);", o1, v1, o2, v2);
 
         Assert.Equal(2, result.Exit);
         Assert.Contains(message, result.Stderr, StringComparison.Ordinal);

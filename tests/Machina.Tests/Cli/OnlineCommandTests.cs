@@ -23,9 +23,8 @@ public class OnlineCommandTests
     public async Task Run_Sim_CompletesTheProgram(string brand)
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", Program);
 
-        CliResult result = await cli.RunAsync("run", "p.machina", "--brand", brand, "--sim", "--speed-factor", "1000");
+        CliResult result = await cli.RunProgramAsync("run", Program, "--brand", brand, "--sim", "--speed-factor", "1000");
 
         Assert.Equal(0, result.Exit);
         Assert.Contains("(7 actions)", result.Stdout, StringComparison.Ordinal);
@@ -51,9 +50,8 @@ public class OnlineCommandTests
     public async Task Run_MalformedLine_StopsBeforeConnecting()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", Program + "\nMoveTo(1, 2);\n");
 
-        CliResult result = await cli.RunAsync("run", "p.machina", "--brand", "abb", "--sim");
+        CliResult result = await cli.RunProgramAsync("run", Program + "\nMoveTo(1, 2);\n", "--brand", "abb", "--sim");
 
         Assert.Equal(1, result.Exit);
         Assert.StartsWith("p.machina:8:1: error: MoveTo was given 2 arguments", result.Stderr, StringComparison.Ordinal);

@@ -31,9 +31,8 @@ public class PreviewCommandTests
     public async Task Preview_Svg_DrawsTheProgramsTargetsInEveryView()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", Program);
 
-        CliResult result = await cli.RunAsync("preview", "p.machina", "--out", "pics/p.svg");
+        CliResult result = await cli.RunProgramAsync("preview", Program, "--out", "pics/p.svg");
 
         Assert.Equal(0, result.Exit);
         Assert.Equal("pics/p.svg", result.Lines.Single());
@@ -62,24 +61,19 @@ public class PreviewCommandTests
     public async Task Preview_Html_EmbedsTheProgramsTargetsAndIsSelfContained()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", Program);
 
-        CliResult result = await cli.RunAsync("preview", "p.machina", "--out", "p.html");
+        CliResult result = await cli.RunProgramAsync("preview", Program, "--out", "p.html");
 
         Assert.Equal(0, result.Exit);
         string html = File.ReadAllText(cli.PathOf("p.html"));
-        Match json = Regex.Match(html, "<script type=\"application/json\" id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline);
-        Assert.True(json.Success);
-        using JsonDocument data = JsonDocument.Parse(json.Groups[1].Value);
-        double[][] targets = data.RootElement.GetProperty("targets").EnumerateArray().Select(t => t.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
-        Assert.Equal(Targets, targets);
+        using JsonDocument data = PathData(html);
+        Assert.Equal(Targets, Vectors(data.RootElement.GetProperty("targets")));
         Assert.Equal(Targets[0], data.RootElement.GetProperty("start").EnumerateArray().Select(v => v.GetDouble()));
         Assert.Equal(Targets[^1], data.RootElement.GetProperty("end").EnumerateArray().Select(v => v.GetDouble()));
         Assert.Equal(["linear", "linear", "joint", "arc", "linear"], data.RootElement.GetProperty("segments").EnumerateArray().Select(s => s.GetProperty("kind").GetString()));
         Assert.Equal([2, 3, 5, 7, 9], data.RootElement.GetProperty("segments").EnumerateArray().Select(s => s.GetProperty("line").GetInt32()));
         // The arc is drawn along its circle: every sample is as far from the circle's centre as its three points.
-        double[][] arc = data.RootElement.GetProperty("segments")[3].GetProperty("points").EnumerateArray()
-            .Select(p => p.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
+        double[][] arc = Vectors(data.RootElement.GetProperty("segments")[3].GetProperty("points"));
         double[] centre = Circumcentre([450, 100, 300], [375, 0, 360], [300, 100, 300]);
         double radius = Distance(centre, [450, 100, 300]);
         Assert.True(arc.Length > 10);
@@ -93,9 +87,8 @@ public class PreviewCommandTests
     public async Task Preview_WithModel_DrawsTheWarningWhereItHappens()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(300, 0, 400);\nMoveTo(900, 0, 400);\nMoveTo(300, 0, 300);\n");
 
-        CliResult result = await cli.RunAsync("preview", "p.machina", "--model", "IRB 120", "--out", "p.svg");
+        CliResult result = await cli.RunProgramAsync("preview", "MoveTo(300, 0, 400);\nMoveTo(900, 0, 400);\nMoveTo(300, 0, 300);\n", "--model", "IRB 120", "--out", "p.svg");
 
         Assert.Equal(0, result.Exit);
         Assert.Contains("p.machina:2:1: warning: MoveTo(900,0,400); Unreachable", result.Stderr, StringComparison.Ordinal);
@@ -126,10 +119,10 @@ public class PreviewCommandTests
 
         Assert.Equal(0, result.Exit);
         string html = File.ReadAllText(cli.PathOf("p.html"));
-        using JsonDocument data = JsonDocument.Parse(Regex.Match(html, "id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline).Groups[1].Value);
+        using JsonDocument data = PathData(html);
         JsonElement joint = data.RootElement.GetProperty("segments").EnumerateArray().Single();
         Assert.Equal("joint", joint.GetProperty("kind").GetString());
-        double[][] points = joint.GetProperty("points").EnumerateArray().Select(p => p.EnumerateArray().Select(v => v.GetDouble()).ToArray()).ToArray();
+        double[][] points = Vectors(joint.GetProperty("points"));
         Assert.Equal(25, points.Length);
         Assert.Equal([300, 0, 400], points[0]);
         Assert.Equal([250, 250, 300], points[^1]);
@@ -148,13 +141,12 @@ public class PreviewCommandTests
     public async Task Preview_Printer_DrawsTravelAndExtrusion()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", "MoveTo(0, 0, 0.2);\nMoveTo(20, 0, 0.2);\nExtrude(true);\nMove(0, 20, 0);\nMove(-20, 0, 0);\nExtrude(false);\nMove(0, 0, 5);\n");
 
-        CliResult result = await cli.RunAsync("preview", "p.machina", "--brand", "marlin", "--out", "p.html");
+        CliResult result = await cli.RunProgramAsync("preview", "MoveTo(0, 0, 0.2);\nMoveTo(20, 0, 0.2);\nExtrude(true);\nMove(0, 20, 0);\nMove(-20, 0, 0);\nExtrude(false);\nMove(0, 0, 5);\n", "--brand", "marlin", "--out", "p.html");
 
         Assert.Equal(0, result.Exit);
         string html = File.ReadAllText(cli.PathOf("p.html"));
-        using JsonDocument data = JsonDocument.Parse(Regex.Match(html, "id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline).Groups[1].Value);
+        using JsonDocument data = PathData(html);
         Assert.Equal(["travel", "extrusion", "extrusion", "travel"], data.RootElement.GetProperty("segments").EnumerateArray().Select(s => s.GetProperty("kind").GetString()));
     }
 
@@ -162,13 +154,24 @@ public class PreviewCommandTests
     public async Task Preview_UnknownPictureKind_IsAUsageError()
     {
         using var cli = new CliRunner();
-        cli.Write("p.machina", Program);
 
-        CliResult result = await cli.RunAsync("preview", "p.machina", "--out", "p.png");
+        CliResult result = await cli.RunProgramAsync("preview", Program, "--out", "p.png");
 
         Assert.Equal(2, result.Exit);
         Assert.Contains("--out must end in .svg", result.Stderr, StringComparison.Ordinal);
     }
+
+    /// <summary>The path data a page embeds (its "machina-path" JSON script).</summary>
+    private static JsonDocument PathData(string html)
+    {
+        Match json = Regex.Match(html, "<script type=\"application/json\" id=\"machina-path\">(.*?)</script>", RegexOptions.Singleline);
+        Assert.True(json.Success, "the page embeds no path data");
+        return JsonDocument.Parse(json.Groups[1].Value);
+    }
+
+    /// <summary>A JSON array of points as arrays of numbers.</summary>
+    private static double[][] Vectors(JsonElement array) =>
+        [.. array.EnumerateArray().Select(p => p.EnumerateArray().Select(v => v.GetDouble()).ToArray())];
 
     /// <summary>The centre of the circle through three points: the point of their plane equally far from all three (Cramer's rule).</summary>
     private static double[] Circumcentre(double[] a, double[] b, double[] c)

@@ -1,3 +1,5 @@
+using Machina.Tests.Support;
+
 namespace Machina.Tests.Core;
 
 public class HelloRobotTests
@@ -9,13 +11,7 @@ public class HelloRobotTests
         {
             bot.ActionIssued += (_, e) => events.Add(e);
         }
-        bot.Message("Hello Robot!");
-        bot.SpeedTo(100);
-        bot.MoveTo(400, 300, 500);
-        bot.Rotate(0, 1, 0, -90);
-        bot.Move(0, 0, 250);
-        bot.Wait(2000);
-        bot.AxesTo(0, 0, 0, 0, 90, 0);
+        ReferencePrograms.HelloRobot(bot);
         return bot;
     }
 

@@ -27,16 +27,25 @@ public class PathFollowingTests
         return last;
     }
 
-    [Fact]
-    public void ArcMotionTo_WristNearStraight_JointsFollowTheArcNotTheEndPointAlone()
+    /// <summary>
+    /// The tilted-tool KUKA after issue 13's arc, from (500, 100, 300) over (600, 0, 300) to (500, −100, 300): the robot, its joints
+    /// at the start, and the joints an independent follower reaches at the end.
+    /// </summary>
+    private static (Robot Bot, Joints Start, Joints Followed) AfterTheArc()
     {
         Robot bot = TiltedToolKuka();
         bot.MoveTo(500, 100, 300);
         Joints start = bot.GetCurrentAxes()!.Value;
         bot.ArcMotionTo(600, 0, 300, 500, -100, 300);
+        return (bot, start, FollowCircle(bot.Model!, start, bot.GetCurrentRotation()!.Value));
+    }
+
+    [Fact]
+    public void ArcMotionTo_WristNearStraight_JointsFollowTheArcNotTheEndPointAlone()
+    {
+        (Robot bot, Joints start, Joints followed) = AfterTheArc();
 
         Joints after = bot.GetCurrentAxes()!.Value;
-        Joints followed = FollowCircle(bot.Model!, start, bot.GetCurrentRotation()!.Value);
         Assert.True(after.IsSimilar(followed, 1e-6), $"predicted {after}, followed {followed}");
         // Along the circle axis 5 stays between 5° and 10° on the side it started on: no wrist flip.
         Assert.InRange(start.J5, 5, 10);
@@ -51,11 +60,7 @@ public class PathFollowingTests
     {
         // Before, the PTP after the arc was solved from the end-point-only joints: its Status and Turn asked the arm, really at the
         // followed joints, to turn axes 4 and 6 by about 180°.
-        Robot bot = TiltedToolKuka();
-        bot.MoveTo(500, 100, 300);
-        Joints start = bot.GetCurrentAxes()!.Value;
-        bot.ArcMotionTo(600, 0, 300, 500, -100, 300);
-        Joints followed = FollowCircle(bot.Model!, start, bot.GetCurrentRotation()!.Value);
+        (Robot bot, _, Joints followed) = AfterTheArc();
         bot.MotionMode("joint");
         bot.MoveTo(500, -100, 350);
 

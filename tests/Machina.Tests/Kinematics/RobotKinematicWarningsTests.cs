@@ -6,14 +6,32 @@ public class RobotKinematicWarningsTests
 
     private static List<KinematicIssueKind?> Kinds(IEnumerable<ProgramWarning> warnings) => warnings.Select(w => w.Kind).ToList();
 
+    /// <summary>The robot's one warning, checked to be of <paramref name="kind"/> and raised by action <paramref name="actionId"/>.</summary>
+    private static ProgramWarning OnlyWarning(Robot bot, KinematicIssueKind kind, int actionId)
+    {
+        ProgramWarning w = Assert.Single(bot.GetWarnings());
+        Assert.Equal(kind, w.Kind);
+        Assert.Equal(actionId, w.ActionId);
+        return w;
+    }
+
+    /// <summary>An IRB 120 at axis 5 = 45° and axis 6 = <paramref name="j6"/>° turning its tool <paramref name="degrees"/>° about its Z, in a joint move.</summary>
+    private static Robot TurnToolInAJointMove(double j6, double degrees)
+    {
+        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
+        bot.AxesTo(0, 0, 0, 0, 45, j6);
+        bot.MotionMode("joint");
+        bot.Coordinates("local");
+        bot.Rotate(0, 0, 1, degrees);
+        return bot;
+    }
+
     [Fact]
     public void AxesTo_BeyondLimit_JointLimitWarningWithActionId()
     {
         Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
         bot.AxesTo(0, 0, 95, 0, 30, 0);
-        ProgramWarning w = Assert.Single(bot.GetWarnings());
-        Assert.Equal(KinematicIssueKind.JointLimit, w.Kind);
-        Assert.Equal(1, w.ActionId);
+        ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.JointLimit, 1);
         Assert.Equal("#1 AxesTo(0,0,95,0,30,0); JointLimit: the target joints [0, 0, 95, 0, 30, 0] are beyond the limits (joint 3 at 95°, allowed -110° to 70°).", w.ToString());
     }
 
@@ -107,9 +125,7 @@ public class RobotKinematicWarningsTests
         bot.AxesTo(0, 10, 10, 0, 45, 0);
         bot.SpeedTo(500);
         bot.Move(0, 100, 0);
-        ProgramWarning w = Assert.Single(bot.GetWarnings());
-        Assert.Equal(KinematicIssueKind.JointSpeed, w.Kind);
-        Assert.Equal(3, w.ActionId);
+        ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.JointSpeed, 3);
         Assert.Contains("above its maximum of 1°/s", w.Message);
     }
 
@@ -195,26 +211,16 @@ public class RobotKinematicWarningsTests
     public void JointMoveToACartesianTarget_AJointSwingsMoreThanHalfATurn_Warns()
     {
         // Axis 6 at 390° of its ±400°: turning the tool 30° more is only possible the other way round, 330° back.
-        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
-        bot.AxesTo(0, 0, 0, 0, 45, 390);
-        bot.MotionMode("joint");
-        bot.Coordinates("local");
-        bot.Rotate(0, 0, 1, 30);
+        Robot bot = TurnToolInAJointMove(390, 30);
 
-        ProgramWarning w = Assert.Single(bot.GetWarnings());
-        Assert.Equal(KinematicIssueKind.LargeJointMove, w.Kind);
-        Assert.Equal(4, w.ActionId);
+        ProgramWarning w = OnlyWarning(bot, KinematicIssueKind.LargeJointMove, 4);
         Assert.Equal("LargeJointMove: to reach this target in a joint move, joint 6 turns 330° (from 390° to 60°); make sure the tool and its cables have room to swing.", w.Message);
     }
 
     [Fact]
     public void JointMoveTurningAJointLessThanHalfATurn_NoWarning()
     {
-        Robot bot = Robot.Create("Bot", "ABB", "IRB 120");
-        bot.AxesTo(0, 0, 0, 0, 45, 90);
-        bot.MotionMode("joint");
-        bot.Coordinates("local");
-        bot.Rotate(0, 0, 1, 170);
+        Robot bot = TurnToolInAJointMove(90, 170);
 
         Assert.Empty(bot.GetWarnings());
         Assert.Equal(170, Math.Abs(bot.GetCurrentAxes()!.Value.J6 - 90), 6);

@@ -1,16 +1,12 @@
+using Machina.Tests.Support;
+
 namespace Machina.Tests.Programs;
 
 /// <summary>Audit findings: user texts and extreme numbers that used to break or silently change compiled programs.</summary>
 public class CompilerEdgeCaseTests
 {
-    private static readonly CompileOptions Plain = new() { HumanComments = false };
-
-    private static RobotProgram Compile(RobotType brand, Action<Robot> issue, CompileOptions? options = null, string name = "Demo")
-    {
-        var bot = Robot.Create(name, brand);
-        issue(bot);
-        return bot.Compile(brand, options ?? Plain);
-    }
+    private static RobotProgram Compile(RobotType brand, Action<Robot> issue, CompileOptions? options = null, string name = "Demo") =>
+        TestCompile.Program(brand, issue, options, name);
 
     private static List<string> Lines(RobotProgram program, string extension) => program.GetFile(extension)!.Lines.ToList();
 

@@ -100,15 +100,8 @@ internal sealed class GCodeWriter
             case ActionComment comment:
                 _file.Add("; " + GCodeText.Comment(comment.Comment));
                 break;
-            case ActionCustomCode custom:
-                if (custom.IsDeclaration)
-                {
-                    NoCode(action);
-                }
-                else
-                {
-                    Code(custom.Statement, action);
-                }
+            case ActionCustomCode { IsDeclaration: false } custom:
+                Code(custom.Statement, action);
                 break;
             case ActionIODigital digital:
                 EmitOutput(action, digital.PinName, digital.IsToolPin, digital.On ? _flavor.DigitalOnValue : "0");
@@ -125,7 +118,8 @@ internal sealed class GCodeWriter
             case ActionMotionMode { MotionType: MotionType.Joint }:
                 NotApplicable(action, "a 3D printer always moves in straight lines; joint motion does not apply.");
                 break;
-            case ActionPushPop or ActionMotionMode or ActionCoordinates or ActionExtrusion or ActionExtrusionRate or ActionDefineTool:
+            case ActionPushPop or ActionMotionMode or ActionCoordinates or ActionExtrusion or ActionExtrusionRate or ActionDefineTool or ActionCustomCode:
+                // Custom declarations are written at the top of the file.
                 NoCode(action);
                 break;
             case ActionRotation:

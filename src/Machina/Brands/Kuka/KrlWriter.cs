@@ -177,15 +177,8 @@ internal sealed class KrlWriter
             case ActionComment comment:
                 _src.Add(Indent + "; " + KrlText.Comment(comment.Comment));
                 break;
-            case ActionCustomCode custom:
-                if (custom.IsDeclaration)
-                {
-                    NoCode(action);
-                }
-                else
-                {
-                    Code(custom.Statement, action);
-                }
+            case ActionCustomCode { IsDeclaration: false } custom:
+                Code(custom.Statement, action);
                 break;
             case ActionAttachTool:
                 EmitAttach(action, c);
@@ -206,7 +199,8 @@ internal sealed class KrlWriter
                     EmitOutput(action, analog.PinName, analog.IsToolPin, KrlFormat.Fine(analog.Value), "$ANOUT", 32);
                 }
                 break;
-            case ActionDefineTool or ActionExternalAxis or ActionMotionMode or ActionCoordinates or ActionPushPop:
+            case ActionDefineTool or ActionExternalAxis or ActionMotionMode or ActionCoordinates or ActionPushPop or ActionCustomCode:
+                // Custom declarations are written in the declaration section.
                 NoCode(action);
                 break;
             case ActionArmAngle:

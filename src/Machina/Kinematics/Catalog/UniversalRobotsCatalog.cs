@@ -8,7 +8,7 @@ namespace Machina;
 /// </summary>
 internal static class UniversalRobotsCatalog
 {
-    private static Joints J(double a, double b, double c, double d, double e, double f) => CatalogSource.J(a, b, c, d, e, f);
+    private static Joints J(double a, double b, double c, double d, double e, double f) => new(a, b, c, d, e, f);
 
     // ±360° on every joint except the elbow: ±180°, because the upper arm stops the forearm there ("due to the physical construction
     // of the robot, it's impossible to rotate the elbow_joint over more than approx ±1 pi", joint_limits.yaml). UR's data sheets print

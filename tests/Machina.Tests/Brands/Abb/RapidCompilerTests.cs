@@ -1,17 +1,12 @@
 using System.Globalization;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Brands.Abb;
 
 public class RapidCompilerTests
 {
-    private static readonly CompileOptions Plain = new() { HumanComments = false };
-
-    private static RobotProgram Compile(Action<Robot> issue, CompileOptions? options = null, string name = "Demo")
-    {
-        var bot = Robot.Create(name, RobotType.ABB);
-        issue(bot);
-        return bot.Compile(RobotType.ABB, options ?? Plain);
-    }
+    private static RobotProgram Compile(Action<Robot> issue, CompileOptions? options = null, string name = "Demo") =>
+        TestCompile.Program(RobotType.ABB, issue, options, name);
 
     /// <summary>The instruction lines of PROC main, without the fixed start lines and the blank lines around them.</summary>
     internal static List<string> MainLines(RobotProgram program)
@@ -374,7 +369,7 @@ public class RapidCompilerTests
         bot.AccelerationTo(1200);
         bot.ClearProgram();
         bot.MoveTo(100, 100, 100);
-        RobotProgram p = bot.Compile(RobotType.ABB, Plain);
+        RobotProgram p = bot.Compile(RobotType.ABB, TestCompile.Plain);
         Assert.Equal("  PERS tooldata pen := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,50],[1,0,0,0],0,0,0]];", Declarations(p)[0]);
         Assert.Contains("    WorldAccLim \\On := 1.2;", p.GetFile("mod")!.Lines);
         Assert.EndsWith(", vel20, z5, pen\\WObj:=WObj0;", MainLines(p)[0]);

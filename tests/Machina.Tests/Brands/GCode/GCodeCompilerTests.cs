@@ -20,6 +20,16 @@ public class GCodeCompilerTests
         return lines.Skip(preambleEnd + 1).ToArray();
     }
 
+    /// <summary>A new printer of <paramref name="brand"/> at (x, y, z), extruding <paramref name="rate"/> mm of filament per mm.</summary>
+    private static Robot Extruding(RobotType brand, double x, double y, double z, double rate)
+    {
+        var bot = NewBot(brand);
+        bot.MoveTo(x, y, z);
+        bot.ExtrusionRateTo(rate);
+        bot.Extrude();
+        return bot;
+    }
+
     [Fact]
     public void Compile_Preamble_SetsAbsoluteModesAndZeroesTheExtruder()
     {
@@ -33,10 +43,7 @@ public class GCodeCompilerTests
     /// <summary>Spec 14.3's example: extrusion rate 0.6, then extruded moves of 10, 10 and 20 mm.</summary>
     private static Robot ExtrudeTenTenTwenty(RobotType brand)
     {
-        var bot = NewBot(brand);
-        bot.MoveTo(0, 0, 1);
-        bot.ExtrusionRateTo(0.6);
-        bot.Extrude();
+        var bot = Extruding(brand, 0, 0, 1, 0.6);
         bot.Move(10, 0, 0);
         bot.Move(10, 0, 0);
         bot.Move(20, 0, 0);
@@ -88,10 +95,7 @@ public class GCodeCompilerTests
     [Fact]
     public void Compile_InitializeAfterExtruding_StartsEAgainFromZero()
     {
-        var bot = NewBot(RobotType.MARLIN);
-        bot.MoveTo(0, 0, 1);
-        bot.ExtrusionRateTo(0.1);
-        bot.Extrude();
+        var bot = Extruding(RobotType.MARLIN, 0, 0, 1, 0.1);
         bot.Move(10, 0, 0);
         bot.Initialize();
         bot.Move(10, 0, 0);
@@ -104,10 +108,7 @@ public class GCodeCompilerTests
     [Fact]
     public void Compile_MarlinHorizontalArc_WritesG2WithCentreOffsetAndArcLengthExtrusion()
     {
-        var bot = NewBot(RobotType.MARLIN);
-        bot.MoveTo(0, 0, 5);
-        bot.ExtrusionRateTo(0.1);
-        bot.Extrude();
+        var bot = Extruding(RobotType.MARLIN, 0, 0, 5, 0.1);
         // From (0,0) over (10,10) to (20,0): clockwise seen from above, centre (10,0), half a circle of radius 10.
         bot.ArcMotionTo(10, 10, 5, 20, 0, 5);
         bot.ArcMotionTo(30, -10, 5, 40, 0, 5);
@@ -121,10 +122,7 @@ public class GCodeCompilerTests
     [Fact]
     public void Compile_ZMorphArc_StraightSegmentsOnTheCircleWithProportionalE()
     {
-        var bot = NewBot(RobotType.ZMORPH);
-        bot.MoveTo(0, 0, 5);
-        bot.ExtrusionRateTo(0.1);
-        bot.Extrude();
+        var bot = Extruding(RobotType.ZMORPH, 0, 0, 5, 0.1);
         bot.ArcMotionTo(10, 10, 5, 20, 0, 5);
 
         string[] segments = Body(bot, RobotType.ZMORPH).Skip(2).ToArray();
@@ -253,10 +251,7 @@ public class GCodeCompilerTests
     [InlineData(RobotType.MARLIN)]
     public void Compile_TerminateAfterATallPrint_RisesAboveThePrintBeforeTravelling(RobotType brand)
     {
-        var bot = NewBot(brand);
-        bot.MoveTo(50, 50, 0.3);
-        bot.ExtrusionRateTo(0.05);
-        bot.Extrude();
+        var bot = Extruding(brand, 50, 50, 0.3, 0.05);
         bot.MoveTo(50, 50, 100);
         bot.MoveTo(60, 50, 100);
         bot.Extrude(false);

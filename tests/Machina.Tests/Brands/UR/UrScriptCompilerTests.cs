@@ -1,17 +1,12 @@
 using System.Globalization;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Brands.UR;
 
 public class UrScriptCompilerTests
 {
-    private static readonly CompileOptions Plain = new() { HumanComments = false };
-
-    private static RobotProgram Compile(Action<Robot> issue, CompileOptions? options = null, string name = "Demo")
-    {
-        var bot = Robot.Create(name, RobotType.UR);
-        issue(bot);
-        return bot.Compile(RobotType.UR, options ?? Plain);
-    }
+    private static RobotProgram Compile(Action<Robot> issue, CompileOptions? options = null, string name = "Demo") =>
+        TestCompile.Program(RobotType.UR, issue, options, name);
 
     /// <summary>The lines inside the program function, without the blank lines that frame them.</summary>
     private static List<string> Body(RobotProgram program)
@@ -235,7 +230,7 @@ public class UrScriptCompilerTests
         bot.MoveTo(100, 100, 100);
         Assert.Equal(
             ["  set_tcp(p[0,0,0.1,0,0,0])", "  set_payload(1, [0,0,0.05])", "  movep(p[0.1,0.1,0.1,0,3.141593,0], v=0.02, r=0.005)"],
-            Body(bot.Compile(RobotType.UR, Plain)));
+            Body(bot.Compile(RobotType.UR, TestCompile.Plain)));
     }
 
     [Fact]
