@@ -95,6 +95,10 @@ internal sealed partial class OnlineSession
                     earlyFault ??= AcknowledgeEarly(link);
                     if (earlyFault is null)
                     {
+                        if (link.EarlyStop is MachinaException stop)
+                        {
+                            OnStopped(link, stop); // stopped while connecting (UR: RTDE showed it before the link became current)
+                        }
                         ReleaseReady();
                     }
                 }
@@ -405,9 +409,34 @@ internal sealed partial class OnlineSession
 
         public void OnMotion(in MotionSample sample) => session.OnMotion(this, sample);
 
-        public void OnStopped(MachinaException reason) => session.OnStopped(this, reason);
+        /// <summary>A stop reported before the connection became current and not followed by a resume; applied once it is.</summary>
+        internal MachinaException? EarlyStop { get; private set; }
 
-        public void OnResumed() => session.OnResumed(this);
+        public void OnStopped(MachinaException reason)
+        {
+            lock (session._gate)
+            {
+                if (!IsReady)
+                {
+                    EarlyStop = reason;
+                    return;
+                }
+            }
+            session.OnStopped(this, reason);
+        }
+
+        public void OnResumed()
+        {
+            lock (session._gate)
+            {
+                if (!IsReady)
+                {
+                    EarlyStop = null;
+                    return;
+                }
+            }
+            session.OnResumed(this);
+        }
 
         public void OnFault(MachinaException error)
         {

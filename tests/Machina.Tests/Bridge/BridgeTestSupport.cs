@@ -4,6 +4,7 @@ using System.Text;
 using System.Text.Json;
 using System.Threading.Channels;
 using Machina.Bridge;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Bridge;
 
@@ -42,18 +43,7 @@ internal static class BridgeTestSupport
     }
 
     /// <summary>Waits for a condition that another thread makes true, at most <see cref="Limit"/>.</summary>
-    internal static async Task EventuallyAsync(Func<bool> condition, string what)
-    {
-        long start = TimeProvider.System.GetTimestamp();
-        while (!condition())
-        {
-            if (TimeProvider.System.GetElapsedTime(start) > Limit)
-            {
-                Assert.Fail($"Timed out waiting for {what}.");
-            }
-            await Task.Delay(5);
-        }
-    }
+    internal static Task EventuallyAsync(Func<bool> condition, string what) => Eventually.TrueAsync(condition, what, Limit);
 }
 
 /// <summary>A WebSocket client like the original ones: it sends text and reads every message the bridge sends, in order.</summary>

@@ -48,9 +48,13 @@ internal sealed class FakeDriver : IDeviceDriver
 
     public string RemoteAddress => "fake:1";
 
+    /// <summary>What the controller reports while connecting, before the handshake is returned (before the link is current).</summary>
+    internal Action<IDeviceListener>? DuringConnect { get; set; }
+
     public Task<DeviceHandshake> ConnectAsync(string host, int port, IDeviceListener listener, TimeSpan timeout, CancellationToken cancellationToken)
     {
         Listener = listener;
+        DuringConnect?.Invoke(listener);
         return Task.FromResult(Handshake);
     }
 

@@ -20,13 +20,12 @@ internal static class KukaTestSupport
     {
         var executed = new ConcurrentQueue<int>();
         var lost = new TaskCompletionSource<ConnectionLostArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
-        var bot = Robot.Create("KukaBot", "KUKA");
-        bot.ControlMode("online");
-        bot.ConnectTimeout = OnlineTestSupport.Limit;
-        bot.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
-        bot.ConnectionLost += (_, e) => lost.TrySetResult(e);
-        configure?.Invoke(bot);
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+        Robot bot = await OnlineTestSupport.ConnectRobotAsync("KukaBot", "KUKA", controller.Port, b =>
+        {
+            b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+            b.ConnectionLost += (_, e) => lost.TrySetResult(e);
+            configure?.Invoke(b);
+        });
         return (bot, executed, lost);
     }
 

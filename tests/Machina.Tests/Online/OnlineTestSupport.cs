@@ -1,4 +1,5 @@
 using Machina.Simulation;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Online;
 
@@ -14,29 +15,25 @@ internal static class OnlineTestSupport
         return controller;
     }
 
-    internal static async Task<Robot> ConnectAsync(VirtualAbbController controller, Action<Robot>? configure = null)
+    internal static Task<Robot> ConnectAsync(VirtualAbbController controller, Action<Robot>? configure = null) =>
+        ConnectRobotAsync("HelloRobot", "ABB", controller.Port, configure);
+
+    /// <summary>
+    /// An online robot of <paramref name="brand"/> connected to the virtual controller on loopback <paramref name="port"/>, set up
+    /// by <paramref name="configure"/> before connecting.
+    /// </summary>
+    internal static async Task<Robot> ConnectRobotAsync(string name, string brand, int port, Action<Robot>? configure)
     {
-        var bot = Robot.Create("HelloRobot", "ABB");
+        var bot = Robot.Create(name, brand);
         bot.ControlMode("online");
         bot.ConnectTimeout = Limit; // a loaded test machine may be slow to accept; no test is about this timeout
         configure?.Invoke(bot);
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(Limit);
+        await bot.ConnectAsync("127.0.0.1", port).WaitAsync(Limit);
         return bot;
     }
 
-    /// <summary>Waits for a condition that another thread makes true, checking every few milliseconds, at most <see cref="Timeout"/>.</summary>
-    internal static async Task EventuallyAsync(Func<bool> condition, string what)
-    {
-        long start = TimeProvider.System.GetTimestamp();
-        while (!condition())
-        {
-            if (TimeProvider.System.GetElapsedTime(start) > Limit)
-            {
-                Assert.Fail($"Timed out waiting for {what}.");
-            }
-            await Task.Delay(5);
-        }
-    }
+    /// <summary>Waits for a condition that another thread makes true, checking every few milliseconds, at most <see cref="Limit"/>.</summary>
+    internal static Task EventuallyAsync(Func<bool> condition, string what) => Eventually.TrueAsync(condition, what, Limit);
 }
 
 /// <summary>A loopback server that accepts one client and never says anything (a controller without the driver).</summary>

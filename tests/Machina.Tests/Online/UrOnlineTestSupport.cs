@@ -12,13 +12,6 @@ internal static class UrOnlineTestSupport
         return controller;
     }
 
-    internal static async Task<Robot> ConnectUrAsync(VirtualUrController controller, Action<Robot>? configure = null, string name = "HelloRobot")
-    {
-        var bot = Robot.Create(name, "UR");
-        bot.ControlMode("online");
-        bot.ConnectTimeout = OnlineTestSupport.Limit;
-        configure?.Invoke(bot);
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
-        return bot;
-    }
+    internal static Task<Robot> ConnectUrAsync(VirtualUrController controller, Action<Robot>? configure = null, string name = "HelloRobot") =>
+        OnlineTestSupport.ConnectRobotAsync(name, "UR", controller.Port, configure);
 }

@@ -27,64 +27,30 @@ internal sealed partial class AbbDriver
                 _progress = message.ToProgress();
                 break;
             case AbbResponseCode.FullPose:
-                _listener?.OnMotion(Sample(message.ToMonitorUpdate()));
+                Listener?.OnMotion(Sample(message.ToMonitorUpdate()));
                 return;
             default:
-                _log.Debug($"Ignored data message from the controller: {message}");
+                Log.Debug($"Ignored data message from the controller: {message}");
                 return;
         }
-        if (!_handshake.Task.IsCompleted && _version is AbbDriverVersion version && _position is not null && _axes is not null && _hasExternalAxes
+        if (!IsHandshakeOver && _version is AbbDriverVersion version && _position is not null && _axes is not null && _hasExternalAxes
             && (_progress is not null || !version.ReportsProgress))
         {
-            _handshake.TrySetResult(new DeviceHandshake(version.ToString(), _position, _rotation, _axes, _externalAxes, _progress));
+            Handshake(new DeviceHandshake(version.ToString(), _position, _rotation, _axes, _externalAxes, _progress));
         }
     }
 
     private static MotionSample Sample(AbbMonitorUpdate update) =>
         new(update.Position, update.Rotation, update.Joints, update.ExternalAxes.IsEmpty ? null : update.ExternalAxes);
 
-    /// <summary>Reads the monitor connection: live poses (<c>$24</c>). A failing monitor is logged; it never stops streaming.</summary>
-    private sealed class MonitorReceiver(AbbDriver driver) : ILinkReceiver
+    /// <inheritdoc/>
+    protected override bool TryReadMotion(in AbbMessage message, out MotionSample sample)
     {
-        private readonly AbbMessageReader _reader = new();
-        private bool _stopped;
-
-        public void OnReceived(ReadOnlySpan<byte> data)
-        {
-            if (_stopped)
-            {
-                return;
-            }
-            _reader.Append(data);
-            try
-            {
-                while (!_stopped && Volatile.Read(ref driver._failed) == 0 && _reader.TryRead(out AbbMessage message))
-                {
-                    if (message.Kind == AbbMessageKind.Data && message.Code == (int)AbbResponseCode.FullPose)
-                    {
-                        driver._listener?.OnMotion(Sample(message.ToMonitorUpdate()));
-                    }
-                    else
-                    {
-                        Stop($"it sent \"{message}\"");
-                    }
-                }
-            }
-            catch (AbbProtocolException ex)
-            {
-                Stop(ex.Message);
-            }
-        }
-
-        public void OnClosed(Exception? error) => Stop(error is null ? "the controller closed the monitor connection" : error.Message);
-
-        private void Stop(string why)
-        {
-            if (!_stopped && Volatile.Read(ref driver._failed) == 0)
-            {
-                _stopped = true;
-                driver._log.Warning($"Motion updates stopped: {why}.");
-            }
-        }
+        bool isPose = message.Kind == AbbMessageKind.Data && message.Code == (int)AbbResponseCode.FullPose;
+        sample = isPose ? Sample(message.ToMonitorUpdate()) : default;
+        return isPose;
     }
+
+    /// <inheritdoc/>
+    protected override string Describe(in AbbMessage message) => $"\"{message}\"";
 }

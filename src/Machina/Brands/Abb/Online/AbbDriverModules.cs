@@ -1,5 +1,3 @@
-using System.Globalization;
-
 namespace Machina;
 
 /// <summary>
@@ -10,8 +8,6 @@ internal static class AbbDriverModules
 {
     /// <summary>Default monitor report rate in Hz (the original reported at 10 Hz).</summary>
     public const double DefaultMonitorRate = 50;
-
-    private const string ResourcePrefix = "Machina.Drivers.abb.";
 
     /// <summary>The four files (driver .mod/.pgf, monitor .mod/.pgf) by file name, ready to load on the controller.</summary>
     public static IReadOnlyDictionary<string, string> Create(string host, int port, double monitorRateHz = DefaultMonitorRate)
@@ -30,10 +26,8 @@ internal static class AbbDriverModules
             throw new ArgumentOutOfRangeException(nameof(monitorRateHz), monitorRateHz, "The monitor rate must be between 0 and 250 reports per second.");
         }
         string interval = Num.F(1 / monitorRateHz, 3);
-        string Fill(string text, int p) => text
-            .Replace("{{HOSTNAME}}", host, StringComparison.Ordinal)
-            .Replace("{{PORT}}", p.ToString(CultureInfo.InvariantCulture), StringComparison.Ordinal)
-            .Replace("{{MONITOR_INTERVAL}}", interval, StringComparison.Ordinal);
+        string Fill(string text, int p) =>
+            DriverFiles.Fill(text, ("HOSTNAME", host), ("PORT", p.ToString(Num.Inv)), ("MONITOR_INTERVAL", interval));
         return new Dictionary<string, string>
         {
             ["machina_abb_driver.mod"] = Fill(Read("machina_abb_driver.mod"), port),
@@ -43,11 +37,5 @@ internal static class AbbDriverModules
         };
     }
 
-    private static string Read(string file)
-    {
-        using var stream = typeof(AbbDriverModules).Assembly.GetManifestResourceStream(ResourcePrefix + file)
-            ?? throw new InvalidOperationException($"The embedded driver file {file} is missing from the Machina library.");
-        using var reader = new StreamReader(stream);
-        return reader.ReadToEnd();
-    }
+    private static string Read(string file) => DriverFiles.Read("abb", file);
 }

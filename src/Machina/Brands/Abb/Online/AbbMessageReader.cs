@@ -9,7 +9,7 @@ namespace Machina;
 /// Numbers are parsed with the invariant culture (fix of bug A7). Garbage throws <see cref="AbbProtocolException"/>
 /// carrying the received text. Not thread-safe: one reader per socket, used by its receive loop.
 /// </summary>
-internal sealed class AbbMessageReader
+internal sealed class AbbMessageReader : IMessageReader<AbbMessage>
 {
     /// <summary>Longest message accepted before the stream is declared garbage (the longest real one, <c>$24</c>, is about 250 bytes).</summary>
     public const int MaxMessageLength = 4096;

@@ -1,5 +1,3 @@
-using System.Globalization;
-
 namespace Machina;
 
 /// <summary>
@@ -10,8 +8,6 @@ internal static class KukaDriverModules
 {
     /// <summary>The driver's default <c>$ADVANCE</c>, as in the programs the KRL compiler writes: motions planned 3 ahead, approximation on.</summary>
     public const int DefaultAdvance = 3;
-
-    private const string ResourcePrefix = "Machina.Drivers.kuka.";
 
     /// <summary>The six files by file name: driver and monitor (.src, .dat) and their EthernetKRL configurations (.xml).</summary>
     /// <param name="host">The robot's address the channels listen on (its KLI network address).</param>
@@ -32,10 +28,8 @@ internal static class KukaDriverModules
         {
             throw new ArgumentOutOfRangeException(nameof(advance), advance, "KRL's $ADVANCE goes from 0 (acknowledge after each motion) to 5.");
         }
-        string Fill(string text, int p) => text
-            .Replace("{{HOSTNAME}}", host, StringComparison.Ordinal)
-            .Replace("{{PORT}}", p.ToString(CultureInfo.InvariantCulture), StringComparison.Ordinal)
-            .Replace("{{ADVANCE}}", advance.ToString(CultureInfo.InvariantCulture), StringComparison.Ordinal);
+        string Fill(string text, int p) =>
+            DriverFiles.Fill(text, ("HOSTNAME", host), ("PORT", p.ToString(Num.Inv)), ("ADVANCE", advance.ToString(Num.Inv)));
         return new Dictionary<string, string>
         {
             ["machina_kuka_driver.src"] = Fill(Read("machina_kuka_driver.src"), port),
@@ -48,11 +42,5 @@ internal static class KukaDriverModules
     }
 
     /// <summary>One shipped file as embedded, placeholders unfilled.</summary>
-    internal static string Read(string file)
-    {
-        using var stream = typeof(KukaDriverModules).Assembly.GetManifestResourceStream(ResourcePrefix + file)
-            ?? throw new InvalidOperationException($"The embedded driver file {file} is missing from the Machina library.");
-        using var reader = new StreamReader(stream);
-        return reader.ReadToEnd();
-    }
+    internal static string Read(string file) => DriverFiles.Read("kuka", file);
 }

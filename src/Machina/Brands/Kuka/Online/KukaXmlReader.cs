@@ -10,7 +10,7 @@ namespace Machina;
 /// Anything else throws <see cref="KukaProtocolException"/> carrying the received text. The bytes waiting for the end of
 /// an element are bounded by <see cref="MaxElementLength"/>. Not thread-safe: one reader per socket.
 /// </summary>
-internal sealed class KukaXmlReader
+internal sealed class KukaXmlReader : IMessageReader<KukaElement>
 {
     /// <summary>Longest element accepted (bytes); a batch of <see cref="KukaProtocol.Capacity"/> actions is about 25 KB.</summary>
     public const int MaxElementLength = 64 * 1024;

@@ -40,7 +40,7 @@ internal sealed partial class UrDriver
                 throw new RobotStoppedException($"The UR controller did not play the driver program again: \"{play}\".", play);
             }
         }
-        long start = _time.GetTimestamp();
+        long start = Time.GetTimestamp();
         while (LatestSample is not { IsSafetyStop: false, RuntimeState: RtdeSample.Playing })
         {
             Task<RtdeSample> next;
@@ -48,10 +48,10 @@ internal sealed partial class UrDriver
             {
                 next = _nextSample.Task;
             }
-            TimeSpan left = ResumeTimeout - _time.GetElapsedTime(start);
+            TimeSpan left = ResumeTimeout - Time.GetElapsedTime(start);
             try
             {
-                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, _time, cancellationToken).ConfigureAwait(false);
+                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time, cancellationToken).ConfigureAwait(false);
             }
             catch (TimeoutException)
             {

@@ -72,9 +72,8 @@ internal sealed partial class UrDriver
     /// <summary>Connects to RTDE, negotiates protocol 2, subscribes to <see cref="Recipe"/> and returns the first package.</summary>
     private async Task<RtdeSample> ConnectRtdeAsync(string host, TimeSpan timeout, CancellationToken cancellationToken)
     {
-        long start = _time.GetTimestamp();
-        _rtdeLink = await TcpLink.ConnectAsync(host, _ports.Rtde, timeout, _time, cancellationToken).ConfigureAwait(false);
-        _rtdeLink.Start(new RtdeReceiver(this));
+        long start = Time.GetTimestamp();
+        _rtdeLink = await OpenSideLinkAsync(host, _ports.Rtde, timeout, new RtdeReceiver(this), cancellationToken).ConfigureAwait(false);
         byte[] accepted = await RequestAsync(Rtde.RequestProtocolVersion, [0, (byte)Rtde.ProtocolVersion], start, timeout, cancellationToken).ConfigureAwait(false);
         if (accepted.Length != 1 || accepted[0] != 1)
         {
@@ -108,7 +107,7 @@ internal sealed partial class UrDriver
         }
         try
         {
-            return await first.WaitAsync(Left(start, timeout), _time, cancellationToken).ConfigureAwait(false);
+            return await first.WaitAsync(Left(start, timeout), Time, cancellationToken).ConfigureAwait(false);
         }
         catch (TimeoutException)
         {
@@ -128,7 +127,7 @@ internal sealed partial class UrDriver
         _rtdeLink!.Post(Rtde.Package(type, payload));
         try
         {
-            return await reply.Task.WaitAsync(Left(start, timeout), _time, cancellationToken).ConfigureAwait(false);
+            return await reply.Task.WaitAsync(Left(start, timeout), Time, cancellationToken).ConfigureAwait(false);
         }
         catch (TimeoutException)
         {
@@ -142,7 +141,7 @@ internal sealed partial class UrDriver
     /// </summary>
     private async Task<DeviceProgress> SettledProgressAsync(RtdeSample sample, TimeSpan left, CancellationToken cancellationToken)
     {
-        long start = _time.GetTimestamp();
+        long start = Time.GetTimestamp();
         while (sample.Executed != sample.Received && sample.RuntimeState == RtdeSample.Playing && !sample.IsSafetyStop)
         {
             Task<RtdeSample> next;
@@ -150,14 +149,14 @@ internal sealed partial class UrDriver
             {
                 next = _nextSample.Task;
             }
-            TimeSpan remaining = left - _time.GetElapsedTime(start);
+            TimeSpan remaining = left - Time.GetElapsedTime(start);
             if (remaining <= TimeSpan.Zero)
             {
                 return new DeviceProgress(sample.Executed, sample.Received);
             }
             try
             {
-                sample = await next.WaitAsync(remaining, _time, cancellationToken).ConfigureAwait(false);
+                sample = await next.WaitAsync(remaining, Time, cancellationToken).ConfigureAwait(false);
             }
             catch (TimeoutException)
             {
@@ -177,7 +176,7 @@ internal sealed partial class UrDriver
         }
         if (type == Rtde.TextMessage)
         {
-            _log.Info("UR controller: " + TextOf(payload));
+            Log.Info("UR controller: " + TextOf(payload));
             return;
         }
         TaskCompletionSource<byte[]>? reply = null;
@@ -244,22 +243,22 @@ internal sealed partial class UrDriver
             _nextSample = new TaskCompletionSource<RtdeSample>(TaskCreationOptions.RunContinuationsAsynchronously);
         }
         waiting.TrySetResult(sample);
-        if (!_handshake.Task.IsCompletedSuccessfully || Volatile.Read(ref _failed) != 0)
+        if (!HasHandshake || IsFailed)
         {
             return;
         }
-        _listener?.OnMotion(new MotionSample(sample.Position, sample.Rotation, sample.Joints, null));
+        Listener?.OnMotion(new MotionSample(sample.Position, sample.Rotation, sample.Joints, null));
         if (sample.IsSafetyStop && !_reportedStop)
         {
             _reportedStop = true;
-            _listener?.OnStopped(new RobotStoppedException(
+            Listener?.OnStopped(new RobotStoppedException(
                 $"The UR robot stopped: {sample.SafetyName}. Nothing more is sent; clear the cause, then call Resume (or unlock and play at the pendant).",
                 sample.SafetyName));
         }
         else if (_reportedStop && !sample.IsSafetyStop && sample.RuntimeState == RtdeSample.Playing)
         {
             _reportedStop = false;
-            _listener?.OnResumed();
+            Listener?.OnResumed();
         }
     }
 
@@ -292,14 +291,14 @@ internal sealed partial class UrDriver
 
         private void Stop(string why)
         {
-            if (_stopped || Volatile.Read(ref driver._failed) != 0)
+            if (_stopped || driver.IsFailed)
             {
                 return;
             }
             _stopped = true;
-            if (!driver._handshake.Task.IsCompleted)
+            if (!driver.IsHandshakeOver)
             {
-                driver._handshake.TrySetException(new RobotConnectionException("RTDE failed: " + why));
+                driver.FailHandshake(new RobotConnectionException("RTDE failed: " + why));
                 lock (driver._rtdeGate)
                 {
                     driver._reply?.TrySetException(new RobotConnectionException("RTDE failed: " + why));
@@ -308,7 +307,7 @@ internal sealed partial class UrDriver
             }
             else
             {
-                driver._log.Warning($"Live state from the UR controller stopped: {why}. Stops are no longer detected.");
+                driver.Log.Warning($"Live state from the UR controller stopped: {why}. Stops are no longer detected.");
             }
         }
     }

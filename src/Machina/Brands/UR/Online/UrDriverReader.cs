@@ -8,7 +8,7 @@ namespace Machina;
 /// 0 and -1 mean nothing. A response longer than <see cref="MaxResponseValues"/> values throws <see cref="RobotConnectionException"/>,
 /// so garbage never grows memory. Not thread-safe: one reader per connection, used by its receive loop.
 /// </summary>
-internal sealed class UrDriverReader
+internal sealed class UrDriverReader : IMessageReader<UrReply>
 {
     /// <summary>Most values a response may hold, its code included (the longest, the full pose, has 13).</summary>
     internal const int MaxResponseValues = 64;
@@ -17,6 +17,41 @@ internal sealed class UrDriverReader
     private readonly List<int> _response = new(16);
     private int _partialLength;
     private bool _inResponse;
+    private byte[] _pending = new byte[256];
+    private int _pendingStart;
+    private int _pendingEnd;
+
+    /// <summary>Keeps received bytes for <see cref="TryRead(out UrReply)"/>.</summary>
+    public void Append(ReadOnlySpan<byte> data)
+    {
+        if (_pendingStart == _pendingEnd)
+        {
+            _pendingStart = _pendingEnd = 0;
+        }
+        if (_pendingEnd + data.Length > _pending.Length)
+        {
+            int pending = _pendingEnd - _pendingStart;
+            byte[] target = pending + data.Length > _pending.Length ? new byte[Math.Max(_pending.Length * 2, pending + data.Length)] : _pending;
+            _pending.AsSpan(_pendingStart, pending).CopyTo(target);
+            _pending = target;
+            _pendingStart = 0;
+            _pendingEnd = pending;
+        }
+        data.CopyTo(_pending.AsSpan(_pendingEnd));
+        _pendingEnd += data.Length;
+    }
+
+    /// <summary>The next acknowledgement or response from the appended bytes, or false when more are needed.</summary>
+    /// <exception cref="RobotConnectionException">A response that never ends: this is not Machina's driver.</exception>
+    public bool TryRead(out UrReply reply)
+    {
+        ReadOnlySpan<byte> rest = _pending.AsSpan(_pendingStart, _pendingEnd - _pendingStart);
+        int before = rest.Length;
+        bool read = TryRead(ref rest, out int acknowledged, out int[]? response);
+        _pendingStart += before - rest.Length;
+        reply = new UrReply(acknowledged, response);
+        return read;
+    }
 
     /// <summary>
     /// Consumes bytes from <paramref name="data"/> until a message is complete (true) or the bytes run out (false). A message is
@@ -69,3 +104,8 @@ internal sealed class UrDriverReader
         return false;
     }
 }
+
+/// <summary>One message from Machina's URScript driver: an acknowledgement (<paramref name="Acknowledged"/> above 0) or a response.</summary>
+/// <param name="Acknowledged">The id acknowledged, or 0 for a response.</param>
+/// <param name="Response">The response's values, code first, or null for an acknowledgement.</param>
+internal readonly record struct UrReply(int Acknowledged, int[]? Response);

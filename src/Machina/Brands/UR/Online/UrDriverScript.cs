@@ -1,5 +1,3 @@
-using System.Reflection;
-
 namespace Machina;
 
 /// <summary>Machina's URScript driver (drivers/ur/machina_ur_driver.script), embedded in the library, with the host's address filled in.</summary>
@@ -20,16 +18,7 @@ internal static class UrDriverScript
         {
             throw new ArgumentException($"\"{hostname}\" is not a host name or address.", nameof(hostname));
         }
-        return Template().Replace("{{HOSTNAME}}", hostname.Trim(), StringComparison.Ordinal)
-                         .Replace("{{PORT}}", port.ToString(Num.Inv), StringComparison.Ordinal);
-    }
-
-    private static string Template()
-    {
-        Assembly assembly = typeof(UrDriverScript).Assembly;
-        string name = assembly.GetManifestResourceNames().Single(n => n.EndsWith(FileName, StringComparison.Ordinal));
-        using Stream stream = assembly.GetManifestResourceStream(name)!;
-        using var reader = new StreamReader(stream);
-        return reader.ReadToEnd().Replace("\r\n", "\n", StringComparison.Ordinal);
+        return DriverFiles.Fill(DriverFiles.Read("ur", FileName).Replace("\r\n", "\n", StringComparison.Ordinal),
+            ("HOSTNAME", hostname.Trim()), ("PORT", port.ToString(Num.Inv)));
     }
 }
