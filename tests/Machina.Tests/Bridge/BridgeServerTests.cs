@@ -144,7 +144,7 @@ public class BridgeServerTests
             ("MoveTo(400.0,300.0,500.0);", "action-issued", "MoveTo(400,300,500);"),
             ("Move(0.0,0.0,25.5);", "action-issued", "Move(0,0,25.5);"),
             ("Wait(2000.5);", "error", "parse"),
-            ("Detach()", "error", "parse"),
+            ("Detach()", "action-issued", "DetachTool();"),
             ("AxesTo(0,0,0,0,90,0);", "action-issued", "AxesTo(0,0,0,0,90,0);"),
             ("Move(0.0,0.0,10.0);", "error", "refused"),
         ];
