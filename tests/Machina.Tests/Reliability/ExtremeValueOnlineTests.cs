@@ -101,10 +101,7 @@ public class ExtremeValueOnlineTests
     public async Task ValueTheWireCannotCarry_IsRefusedAtIssueTime_AndTheLinkRunsTheNextMove(string brand, string what, string message)
     {
         await using Controller controller = await Controller.StartAsync(brand);
-        Robot bot = Robot.Create("Edge", brand);
-        bot.ControlMode("online");
-        bot.ConnectTimeout = OnlineTestSupport.Limit;
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+        Robot bot = await controller.ConnectAsync(brand);
         try
         {
             bot.SpeedTo(100);
@@ -137,10 +134,7 @@ public class ExtremeValueOnlineTests
     public async Task Do_AStatementTheWireCannotCarry_IssuesNone(string brand)
     {
         await using Controller controller = await Controller.StartAsync(brand);
-        Robot bot = Robot.Create("Edge", brand);
-        bot.ControlMode("online");
-        bot.ConnectTimeout = OnlineTestSupport.Limit;
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+        Robot bot = await controller.ConnectAsync(brand);
         try
         {
             int received = controller.RequestsReceived;
@@ -167,10 +161,7 @@ public class ExtremeValueOnlineTests
     public async Task Sample_EachEdgeRefusedOrExecuted_ThenANormalMoveEndsWhereItShould(string brand)
     {
         await using Controller controller = await Controller.StartAsync(brand);
-        Robot bot = Robot.Create("Edge", brand);
-        bot.ControlMode("online");
-        bot.ConnectTimeout = OnlineTestSupport.Limit;
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+        Robot bot = await controller.ConnectAsync(brand);
         var outcomes = new List<string>();
         try
         {
@@ -231,6 +222,16 @@ public class ExtremeValueOnlineTests
         }
 
         internal int RequestsReceived => _received();
+
+        /// <summary>A robot of <paramref name="brand"/> connected online to this controller (bounded waits).</summary>
+        internal async Task<Robot> ConnectAsync(string brand)
+        {
+            Robot bot = Robot.Create("Edge", brand);
+            bot.ControlMode("online");
+            bot.ConnectTimeout = OnlineTestSupport.Limit;
+            await bot.ConnectAsync("127.0.0.1", Port).WaitAsync(OnlineTestSupport.Limit);
+            return bot;
+        }
 
         internal int Port { get; }
 
