@@ -32,8 +32,8 @@ public static class BridgeClientSample
         "AxesTo(0,0,0,0,90,0);",
     ];
 
-    /// <summary>What the original JavaScript client sends to detach a tool: not a Machina instruction (it is <c>DetachTool();</c>).</summary>
-    private const string NotAnInstruction = "Detach();";
+    /// <summary>What the original Processing client sends to set the rotation speed: not a Machina instruction (<c>Speed</c> covers rotations).</summary>
+    private const string NotAnInstruction = "RotationSpeed(10);";
 
     /// <summary>Runs the sample: 0 when every action was executed, 1 when not (or the bridge could not be reached), 2 for wrong arguments.</summary>
     public static async Task<int> RunAsync(string[] args, TextWriter output, TextWriter error, CancellationToken cancellationToken)

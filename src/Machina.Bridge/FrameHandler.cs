@@ -37,7 +37,7 @@ internal sealed class FrameHandler(Robot robot, Func<bool> isConnected)
             {
                 return Rejected(BridgeEvents.Error(BridgeEvents.Kinds.Empty, "The message holds no instruction; send text such as MoveTo(400,300,500);"));
             }
-            robot.Do(text);
+            robot.Do(ClientAliases.Translate(text));
             return new(FrameOutcome.Accepted, null);
         }
         catch (InstructionParseException e)

@@ -11,6 +11,10 @@ public sealed partial class Robot : IOnlineHost
     /// <summary>Guards the issue cursor and the program list; taken before any lock of the online session (see <see cref="IOnlineHost"/>).</summary>
     private readonly object _issueLock = new();
     private readonly RobotCursor _issueCursor;
+
+    /// <summary>Online, the issue cursor as it was before the action being issued (see <see cref="IssueLocked"/>).</summary>
+    private readonly RobotCursor _undoCursor = new();
+
     private readonly List<RobotAction> _programActions = [];
     private int _nextId = 1;
 
@@ -155,6 +159,11 @@ public sealed partial class Robot : IOnlineHost
             Logger.Warning($"Refused {action.ToInstruction()}: {refusal}");
             throw new ActionRefusedException(action, refusal);
         }
+        if (_online is not null)
+        {
+            // What is sent is read from the state after the action: keep the state before it, to undo an action the wire cannot carry.
+            _undoCursor.CopyFrom(_issueCursor);
+        }
         try
         {
             refusal = _issueCursor.TryApply(action);
@@ -163,6 +172,11 @@ public sealed partial class Robot : IOnlineHost
         {
             action.Id = -1;
             throw;
+        }
+        if (refusal is null && _online?.WhyCannotSend(action, _issueCursor) is string unsendable)
+        {
+            _issueCursor.CopyFrom(_undoCursor);
+            refusal = unsendable;
         }
         if (refusal is not null)
         {

@@ -44,7 +44,8 @@ public sealed record ActionArcMotion : RobotAction
         {
             return InstructionText.Call(Relative ? "ArcMotion" : "ArcMotionTo", t.X, t.Y, t.Z, e.X, e.Y, e.Z);
         }
-        Vector tx = Through.XAxis, ty = Through.YAxis, ex = End.XAxis, ey = End.YAxis;
+        Vector tx = InstructionText.Axis(Through.XAxis), ty = InstructionText.Axis(Through.YAxis);
+        Vector ex = InstructionText.Axis(End.XAxis), ey = InstructionText.Axis(End.YAxis);
         return InstructionText.Call("ArcMotionTo",
             t.X, t.Y, t.Z, tx.X, tx.Y, tx.Z, ty.X, ty.Y, ty.Z,
             e.X, e.Y, e.Z, ex.X, ex.Y, ex.Z, ey.X, ey.Y, ey.Z);

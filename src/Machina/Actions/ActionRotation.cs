@@ -46,9 +46,10 @@ public sealed record ActionRotation : RobotAction
     {
         if (Relative)
         {
-            return InstructionText.Call("Rotate", Request.Axis.X, Request.Axis.Y, Request.Axis.Z, Request.Angle);
+            Vector axis = InstructionText.Axis(Request.Axis);
+            return InstructionText.Call("Rotate", axis.X, axis.Y, axis.Z, Request.Angle);
         }
-        Vector x = Rotation.XAxis, y = Rotation.YAxis;
+        Vector x = InstructionText.Axis(Rotation.XAxis), y = InstructionText.Axis(Rotation.YAxis);
         return InstructionText.Call("RotateTo", x.X, x.Y, x.Z, y.X, y.Y, y.Z);
     }
 

@@ -41,10 +41,11 @@ public sealed record ActionTransformation : RobotAction
         if (Relative)
         {
             AxisAngle aa = Rotation.ToAxisAngle().WithUnitAxis();
-            return InstructionText.Call("Transform", null, [t.X, t.Y, t.Z, aa.Axis.X, aa.Axis.Y, aa.Axis.Z, aa.Angle],
+            Vector axis = InstructionText.Axis(aa.Axis);
+            return InstructionText.Call("Transform", null, [t.X, t.Y, t.Z, axis.X, axis.Y, axis.Z, aa.Angle],
                 TranslationFirst ? null : InstructionText.Bool(false));
         }
-        Vector x = Rotation.XAxis, y = Rotation.YAxis;
+        Vector x = InstructionText.Axis(Rotation.XAxis), y = InstructionText.Axis(Rotation.YAxis);
         return InstructionText.Call("TransformTo", t.X, t.Y, t.Z, x.X, x.Y, x.Z, y.X, y.Y, y.Z);
     }
 

@@ -12,4 +12,7 @@ internal interface IActionStream
 
     /// <summary>Why the controller's driver cannot run <paramref name="action"/>, or null; asked before the action changes anything.</summary>
     string? WhyCannotStream(RobotAction action);
+
+    /// <summary>Why the driver cannot carry what <paramref name="action"/> sends from <paramref name="after"/>, the state it leads to, or null.</summary>
+    string? WhyCannotSend(RobotAction action, RobotCursor after);
 }

@@ -19,6 +19,13 @@ internal interface IOnlineBrand
     /// </summary>
     string? WhyCannotStream(RobotAction action);
 
+    /// <summary>
+    /// Why the driver's encoding cannot carry what would be sent for <paramref name="action"/> from <paramref name="after"/>, the
+    /// state it leads to (a relative move or speed beyond the wire's numbers), or null. Asked once the action is applied to the
+    /// issue cursor; a refusal undoes it, so nothing is accepted that would fail when it is sent.
+    /// </summary>
+    string? WhyCannotSend(RobotAction action, RobotCursor after);
+
     /// <summary>The controller-side driver files by file name, with the connection parameters (HOSTNAME, PORT…) filled in.</summary>
     IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters);
 }

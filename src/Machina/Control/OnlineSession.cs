@@ -61,6 +61,9 @@ internal sealed partial class OnlineSession : IActionStream
     /// <inheritdoc/>
     public string? WhyCannotStream(RobotAction action) => _brand?.WhyCannotStream(action);
 
+    /// <inheritdoc/>
+    public string? WhyCannotSend(RobotAction action, RobotCursor after) => _brand?.WhyCannotSend(action, after);
+
     /// <summary>Actions issued and not executed yet, oldest first: first those sent to the controller, then those waiting.</summary>
     internal IReadOnlyList<RobotAction> GetPendingActions()
     {

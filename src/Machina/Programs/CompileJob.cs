@@ -157,13 +157,19 @@ internal sealed class CompileJob
 
     /// <summary>
     /// Replays every action on a fresh cursor and calls <paramref name="emit"/> with the action and the state after it.
-    /// An action the cursor refuses (impossible for actions issued through a robot) is reported as a warning and skipped.
+    /// An action the cursor refuses (impossible for actions issued through a robot) is reported as a warning and skipped; the
+    /// first replay also reports the kinematic issues and the cursor's own warnings.
     /// </summary>
     internal void Replay(Action<RobotAction, RobotCursor> emit)
     {
         RobotCursor cursor = NewCursor();
         bool reportIssues = !_kinematicsReported;
         _kinematicsReported = true;
+        if (reportIssues)
+        {
+            // What the cursor notices while applying (a tool defined again, an extruded length it cannot compute) is a warning too.
+            cursor.Warn = Warn;
+        }
         foreach (RobotAction action in Actions)
         {
             string? refusal = cursor.TryApply(action);

@@ -81,14 +81,14 @@ internal sealed partial class RobotCursor
                 return "the joint angles are not known yet (the last motion was Cartesian); use AxesTo before relative Axes.";
             }
             target = current + a.Joints;
-            if (!target.IsFinite)
-            {
-                return $"the joint angles would become {target} degrees, too large to represent.";
-            }
         }
         else
         {
             target = a.Joints;
+        }
+        if (!WithinReach(target))
+        {
+            return $"the joint angles would become [{string.Join(", ", target.ToArray().Select(Num.G))}] degrees; {JointLimitText}";
         }
         PrevPosition = Position;
         PrevRotation = Rotation;
@@ -129,9 +129,9 @@ internal sealed partial class RobotCursor
         {
             return problem;
         }
-        if (!through.IsFinite)
+        if (!WithinReach(through))
         {
-            return $"the arc's through point would be at {through} mm, too far to represent.";
+            return $"the arc's through point would be at {through} mm; {CoordinateLimitText}";
         }
         if (CommitCartesian(end, endRot, length) is string refusal)
         {
@@ -142,14 +142,31 @@ internal sealed partial class RobotCursor
         return null;
     }
 
+    /// <summary>
+    /// The largest coordinate (mm) or joint value (degrees) a target may have: 1 km, or 2,777 turns. No robot or printer reaches
+    /// beyond it, every brand's program and driver carries it, and a gantry of tens of metres stays far inside it.
+    /// </summary>
+    internal const double MaxCoordinate = 1_000_000;
+
+    private const string CoordinateLimitText = "targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches.";
+
+    private const string JointLimitText = "joint values are refused beyond 1,000,000 degrees (about 2,778 turns), which no robot reaches.";
+
+    /// <summary>True when every coordinate is within <see cref="MaxCoordinate"/> (false for NaN and infinities).</summary>
+    private static bool WithinReach(Vector v) => Within(v.X) && Within(v.Y) && Within(v.Z);
+
+    private static bool WithinReach(Joints j) => Within(j.J1) && Within(j.J2) && Within(j.J3) && Within(j.J4) && Within(j.J5) && Within(j.J6);
+
+    private static bool Within(double value) => Math.Abs(value) <= MaxCoordinate;
+
     private double? LineLength(Vector target) => Position is Vector p ? Vector.Distance(p, target) : null;
 
     /// <summary>Makes a Cartesian motion the current pose, or refuses it (changing nothing) when a number would overflow.</summary>
     private string? CommitCartesian(Vector position, Rotation rotation, double? pathLength)
     {
-        if (!position.IsFinite)
+        if (!WithinReach(position))
         {
-            return $"the tool position would become {position} mm, too far to represent.";
+            return $"the tool position would become {position} mm; {CoordinateLimitText}";
         }
         if (IsExtruding && pathLength is double length && !double.IsFinite(ExtrudedLength + ExtrusionRate * length))
         {

@@ -77,7 +77,7 @@ public sealed class Tool : IEquatable<Tool>
     /// <summary>The instruction that defines this tool: <c>DefineTool("name",x,y,z,Xx,Xy,Xz,Yx,Yy,Yz,weight,cx,cy,cz);</c>.</summary>
     public string ToDefineInstruction()
     {
-        Vector t = TcpPosition, x = TcpOrientation.XAxis, y = TcpOrientation.YAxis, c = CenterOfGravity;
+        Vector t = TcpPosition, x = InstructionText.Axis(TcpOrientation.XAxis), y = InstructionText.Axis(TcpOrientation.YAxis), c = CenterOfGravity;
         return InstructionText.Call("DefineTool", InstructionText.Quote(Name), [t.X, t.Y, t.Z, x.X, x.Y, x.Z, y.X, y.Y, y.Z, Weight, c.X, c.Y, c.Z], null);
     }
 

@@ -82,6 +82,16 @@ internal static class InstructionText
         return text.ToStringAndClear();
     }
 
+    /// <summary>
+    /// A unit axis with the floating-point noise of rotation arithmetic removed (components within 1e-15 of 0 or ±1 become exactly
+    /// that), so that <c>RotateTo(0,0,-1,0,1,0)</c> reads back as written instead of with <c>2.220446049250313E-16</c>. The
+    /// rotation it describes changes by far less than the 1e-9 degrees within which instructions compare equal.
+    /// </summary>
+    internal static Vector Axis(Vector axis) => new(Unit(axis.X), Unit(axis.Y), Unit(axis.Z));
+
+    private static double Unit(double value) =>
+        Math.Abs(value) < 1e-15 ? 0 : Math.Abs(Math.Abs(value) - 1) < 1e-15 ? Math.Sign(value) : value;
+
     /// <summary>"Increase" or "Decrease" depending on the sign, as used by relative descriptions.</summary>
     internal static string Change(double value) => value < 0 ? "Decrease" : "Increase";
 }

@@ -144,7 +144,7 @@ public class BridgeServerTests
             ("MoveTo(400.0,300.0,500.0);", "action-issued", "MoveTo(400,300,500);"),
             ("Move(0.0,0.0,25.5);", "action-issued", "Move(0,0,25.5);"),
             ("Wait(2000.5);", "error", "parse"),
-            ("Detach()", "error", "parse"),
+            ("Detach()", "action-issued", "DetachTool();"),
             ("AxesTo(0,0,0,0,90,0);", "action-issued", "AxesTo(0,0,0,0,90,0);"),
             ("Move(0.0,0.0,10.0);", "error", "refused"),
         ];
@@ -383,8 +383,9 @@ public class BridgeServerTests
         var errors = new System.Collections.Concurrent.ConcurrentQueue<string>();
         bridge.Robot.Logger.Logged += (_, e) => { if (e.Level == LogLevel.ERROR) { errors.Enqueue(e.Message); } };
         await using TestClient client = await TestClient.ConnectAsync(bridge);
-        await client.SendAsync("MoveTo(1e300,0,0);"); // the virtual controller cannot time such a motion (it overflows a TimeSpan)
-        await client.ReceiveUntilAsync(e => e.Event() == "action-released");
+        // The virtual controller cannot time such a motion (1 km at 1e-9 mm/s overflows a TimeSpan).
+        await client.SendAsync("SpeedTo(1e-9);MoveTo(1e6,0,0);");
+        await client.ReceiveUntilAsync(e => e.Event() == "action-released" && e.Id() == 2);
         await bridge.StopAsync().WaitAsync(Limit); // never throws, whatever state the virtual controller is in
         Assert.False(bridge.Robot.IsConnected);
         Assert.All(errors, m => Assert.StartsWith("Bridge: the virtual controller had failed: OverflowException", m, StringComparison.Ordinal));

@@ -14,6 +14,8 @@ public class OnlineSeamTests
         public string? WhyCannotStream(RobotAction action) =>
             action is ActionIOAnalog ? $"{action.ToInstruction()} is not supported online on this test brand." : null;
 
+        public string? WhyCannotSend(RobotAction action, RobotCursor after) => null;
+
         public IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters) => new Dictionary<string, string>();
     }
 
@@ -139,8 +141,8 @@ public class OnlineSeamTests
         bot.ControlMode("online");
         bot.Connect("127.0.0.1", 7000);
         bot.Wait(long.MaxValue);
-        bot.SpeedTo(1);
-        bot.MoveTo(1e12, 0, 630);
+        bot.SpeedTo(1e-9);
+        bot.MoveTo(1e6, 0, 630);
 
         clock.Advance(TimeSpan.FromSeconds(10));   // 40 checks of the watchdog, each facing an expected duration TimeSpan cannot hold
         OnlineRobot.Flush(bot);

@@ -35,7 +35,7 @@ public class AbbIssueRefusalTests
         var online = new AbbOnline();
         RobotAction[] fine =
         [
-            new ActionIODigital("DO_1", true, false), new ActionIOAnalog("AO_" + new string('x', 77), 2, false),
+            new ActionIODigital("DO_1", true, false), new ActionIOAnalog("AO_" + new string('x', 29), 2, false),
             new ActionCustomCode("TPWrite \"hi\";", false), new ActionCustomCode("VAR num ü := 1;", isDeclaration: true),
             new ActionMessage("DÖ \"quoted\"; 漢字"), new ActionSpeed(100, relative: false),
         ];
@@ -62,6 +62,36 @@ public class AbbIssueRefusalTests
         {
             Assert.Equal([1], executed);
         }
+        await bot.DisconnectAsync();
+    }
+
+    /// <summary>
+    /// A numbered pin names no ABB signal (signals are named in the IO configuration and are RAPID identifiers): offline the RAPID
+    /// compiler writes a NOT SUPPORTED comment with a warning, and online the same reason refuses it at issue time, nothing sent.
+    /// </summary>
+    [Fact]
+    public async Task WriteDigital_NumberedPin_RefusedOnlineWithTheOfflineReason_NextActionRuns()
+    {
+        const string Reason = "\"1\" is not a RAPID signal name; ABB signals are named in the controller's IO configuration (e.g. DO_1).";
+        Robot offline = Robot.Create("Offline", "ABB");
+        offline.WriteDigital(1, true);
+        offline.WriteAnalog("AO_" + new string('x', 30), 0.5);
+        RobotProgram program = offline.Compile(humanComments: false);
+        Assert.Equal(["#1 WriteDigital(1,True); " + Reason, "#2 WriteAnalog(\"AO_xxxxxxxxxxxxxxxxxxxxxxxxxxxxxx\",0.5); \"AO_xxxxxxxxxxxxxxxxxxxxxxxxxxxxxx\" is not a RAPID signal name; ABB signals are named in the controller's IO configuration (e.g. DO_1)."],
+            program.Warnings.Select(w => w.ToString()));
+        Assert.Contains("    ! NOT SUPPORTED ON ABB: Turn digital IO 1 ON", program.MainFile.Lines);
+
+        await using var controller = await StartControllerAsync();
+        Robot bot = await ConnectAsync(controller);
+        var refused = Assert.Throws<ActionRefusedException>(() => bot.WriteDigital(1, true));
+        var refusedAnalog = Assert.Throws<ActionRefusedException>(() => bot.WriteAnalog(2, 0.5));
+        bot.WriteDigital("DO_1", true);
+        await bot.WaitForCompletionAsync().WaitAsync(Limit);
+
+        Assert.Equal("IODigital (WriteDigital(1,True);) cannot be streamed to an ABB robot: " + Reason, refused.Reason);
+        Assert.Equal("IOAnalog (WriteAnalog(2,0.5);) cannot be streamed to an ABB robot: " + Reason.Replace("\"1\"", "\"2\"", StringComparison.Ordinal), refusedAnalog.Reason);
+        Assert.Equal(["@1 10 \"DO_1\" 1;"], controller.ReceivedRequests.Where(r => r.Contains(" 10 ") || r.Contains(" 11 ")));
+        Assert.True(bot.IsConnected);
         await bot.DisconnectAsync();
     }
 }

@@ -38,12 +38,6 @@ public class ExtremeValueOnlineTests
         ("DefineTool(1e308 tip)", b => b.DefineTool("Big", new Vector(0, 0, 1e308), Rotation.Identity)),
     ];
 
-    /// <summary>
-    /// Edges UR accepts at issue time but cannot encode in its 32-bit wire integers: a relative move whose target is beyond them
-    /// loses the link when it is released (a known gap, see docs/reliability.md).
-    /// </summary>
-    private static readonly string[] BeyondUrWire = ["Move(-1e308, 0, 0)"];
-
     [Fact]
     public async Task Ur_AbsoluteValuesBeyondTheInt32Wire_AreRefusedAtIssueTime()
     {
@@ -70,6 +64,96 @@ public class ExtremeValueOnlineTests
         }
     }
 
+    /// <summary>
+    /// Values the state reaches through a relative action (or a setting) that the brand's encoding cannot carry: UR's 32-bit
+    /// integers (0.1 mm), the 32-bit floats of RAPID's num and KRL's REAL. Each is refused at issue time with the reason, nothing
+    /// is sent, the state is unchanged, and the link then runs a normal move.
+    /// </summary>
+    public static TheoryData<string, string, string> BeyondTheWire() => new()
+    {
+        { "UR", "Move(-1e308, 0, 0)", "Cannot apply \"Move(-1E+308,0,0);\": the tool position would become [-1E+308, 100, 500] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches." },
+        { "UR", "Speed(3e8)", "Cannot apply \"Speed(300000000);\": \"Speed(300000000);\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers." },
+        { "UR", "Precision(3e8)", "Cannot apply \"Precision(300000000);\": \"Precision(300000000);\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers." },
+        { "UR", "Acceleration(3e8)", "Cannot apply \"Acceleration(300000000);\": \"Acceleration(300000000);\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers." },
+        { "ABB", "Move(-1e308, 0, 0)", "Cannot apply \"Move(-1E+308,0,0);\": the tool position would become [-1E+308, 100, 500] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches." },
+        { "ABB", "SpeedTo(1e308)", "Cannot apply \"SpeedTo(1E+308);\": Speed (SpeedTo(1E+308);) cannot be streamed to an ABB robot: 1E+308 is beyond what a RAPID number holds (±3.4E+38)." },
+        { "ABB", "Speed(1e308)", "Cannot apply \"Speed(1E+308);\": Speed (Speed(1E+308);) cannot be streamed to an ABB robot: 1E+308 is beyond what a RAPID number holds (±3.4E+38)." },
+        { "ABB", "WriteAnalog(\"AO_1\", 1e308)", "Cannot apply \"WriteAnalog(\"AO_1\",1E+308);\": IOAnalog (WriteAnalog(\"AO_1\",1E+308);) cannot be streamed to an ABB robot: 1E+308 is beyond what a RAPID number holds (±3.4E+38)." },
+        { "KUKA", "Move(-1e308, 0, 0)", "Cannot apply \"Move(-1E+308,0,0);\": the tool position would become [-1E+308, 100, 500] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches." },
+        { "KUKA", "SpeedTo(1e308)", "Cannot apply \"SpeedTo(1E+308);\": Speed (SpeedTo(1E+308);) is not supported online on KUKA: 1E+305 is beyond what a KRL REAL holds (±3.4E+38)." },
+        { "KUKA", "Precision(1e308)", "Cannot apply \"Precision(1E+308);\": Precision (Precision(1E+308);) is not supported online on KUKA: 1E+308 is beyond what a KRL REAL holds (±3.4E+38)." },
+    };
+
+    private static readonly Dictionary<string, Action<Robot>> Overflows = new()
+    {
+        ["Move(-1e308, 0, 0)"] = b => b.Move(-1e308, 0, 0),
+        ["Speed(3e8)"] = b => b.Speed(3e8),
+        ["Precision(3e8)"] = b => b.Precision(3e8),
+        ["Acceleration(3e8)"] = b => b.Acceleration(3e8),
+        ["SpeedTo(1e308)"] = b => b.SpeedTo(1e308),
+        ["Speed(1e308)"] = b => b.Speed(1e308),
+        ["Precision(1e308)"] = b => b.Precision(1e308),
+        ["WriteAnalog(\"AO_1\", 1e308)"] = b => b.WriteAnalog("AO_1", 1e308),
+    };
+
+    [Theory]
+    [MemberData(nameof(BeyondTheWire))]
+    public async Task ValueTheWireCannotCarry_IsRefusedAtIssueTime_AndTheLinkRunsTheNextMove(string brand, string what, string message)
+    {
+        await using Controller controller = await Controller.StartAsync(brand);
+        Robot bot = await controller.ConnectAsync(brand);
+        try
+        {
+            bot.SpeedTo(100);
+            bot.PrecisionTo(0);
+            bot.TransformTo(new Vector(300, 100, 500), Rotation.FlippedAroundY);
+            Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit));
+            RobotState before = bot.GetCurrentState();
+            int received = controller.RequestsReceived;
+
+            var refused = Assert.Throws<ActionRefusedException>(() => Overflows[what](bot));
+
+            Assert.Equal(message, refused.Message);
+            Support.StateAssert.Same(before, bot.GetCurrentState());
+            Assert.Empty(bot.GetPendingActions());
+            bot.MoveTo(300, -100, 500);
+            Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit), "the move after the refusal was not executed");
+            Assert.True(bot.IsConnected);
+            Assert.True(Vector.Distance(new Vector(300, -100, 500), controller.Position) < 0.01, $"the robot is at {controller.Position}");
+            Assert.Equal(received + 1, controller.RequestsReceived);
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+
+    /// <summary>A multi-statement Do checks every statement, the wire's limits included, before it issues any (ids not given yet).</summary>
+    [Theory]
+    [MemberData(nameof(Brands))]
+    public async Task Do_AStatementTheWireCannotCarry_IssuesNone(string brand)
+    {
+        await using Controller controller = await Controller.StartAsync(brand);
+        Robot bot = await controller.ConnectAsync(brand);
+        try
+        {
+            int received = controller.RequestsReceived;
+            var refused = Assert.Throws<ActionRefusedException>(() => bot.Do("SpeedTo(100);\nMoveTo(300,100,500);\nSpeed(1e308);"));
+
+            Assert.Equal("Speed(1E+308);", refused.Action.ToInstruction());
+            Assert.Equal(-1, refused.Action.Id);
+            Assert.Empty(bot.GetPendingActions());
+            bot.Do("SpeedTo(100);\nTransformTo(300,100,500, -1,0,0, 0,1,0);");
+            Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit));
+            Assert.Equal(received + 2, controller.RequestsReceived);
+            Assert.True(Vector.Distance(new Vector(300, 100, 500), controller.Position) < 0.01, $"the robot is at {controller.Position}");
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+
     public static TheoryData<string> Brands() => new("ABB", "UR", "KUKA");
 
     [Theory]
@@ -77,15 +161,12 @@ public class ExtremeValueOnlineTests
     public async Task Sample_EachEdgeRefusedOrExecuted_ThenANormalMoveEndsWhereItShould(string brand)
     {
         await using Controller controller = await Controller.StartAsync(brand);
-        Robot bot = Robot.Create("Edge", brand);
-        bot.ControlMode("online");
-        bot.ConnectTimeout = OnlineTestSupport.Limit;
-        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+        Robot bot = await controller.ConnectAsync(brand);
         var outcomes = new List<string>();
         try
         {
             int step = 0;
-            foreach ((string what, Action<Robot> issue) in Sample.Where(s => brand != "UR" || !BeyondUrWire.Contains(s.What)))
+            foreach ((string what, Action<Robot> issue) in Sample)
             {
                 string outcome;
                 try
@@ -123,7 +204,7 @@ public class ExtremeValueOnlineTests
         {
             await bot.DisconnectAsync();
         }
-        Assert.Equal(Sample.Length - (brand == "UR" ? BeyondUrWire.Length : 0), outcomes.Count);
+        Assert.Equal(Sample.Length, outcomes.Count);
     }
 
     /// <summary>One of the three virtual controllers, instant execution, loopback, OS-chosen ports.</summary>
@@ -133,9 +214,23 @@ public class ExtremeValueOnlineTests
         private readonly Func<Vector> _position;
         private readonly Func<IReadOnlyList<string>> _errors;
 
-        private Controller(IAsyncDisposable inner, int port, Func<Vector> position, Func<IReadOnlyList<string>> errors)
+        private readonly Func<int> _received;
+
+        private Controller(IAsyncDisposable inner, int port, Func<Vector> position, Func<IReadOnlyList<string>> errors, Func<int> received)
         {
-            (_inner, Port, _position, _errors) = (inner, port, position, errors);
+            (_inner, Port, _position, _errors, _received) = (inner, port, position, errors, received);
+        }
+
+        internal int RequestsReceived => _received();
+
+        /// <summary>A robot of <paramref name="brand"/> connected online to this controller (bounded waits).</summary>
+        internal async Task<Robot> ConnectAsync(string brand)
+        {
+            Robot bot = Robot.Create("Edge", brand);
+            bot.ControlMode("online");
+            bot.ConnectTimeout = OnlineTestSupport.Limit;
+            await bot.ConnectAsync("127.0.0.1", Port).WaitAsync(OnlineTestSupport.Limit);
+            return bot;
         }
 
         internal int Port { get; }
@@ -150,13 +245,13 @@ public class ExtremeValueOnlineTests
             {
                 case "ABB":
                     VirtualAbbController abb = await OnlineTestSupport.StartControllerAsync();
-                    return new Controller(abb, abb.Port, () => abb.State.Position, () => abb.Errors);
+                    return new Controller(abb, abb.Port, () => abb.State.Position, () => abb.Errors, () => abb.RequestsReceived);
                 case "UR":
                     VirtualUrController ur = await UrOnlineTestSupport.StartUrAsync();
-                    return new Controller(ur, ur.Port, () => ur.State.Position, () => ur.Errors);
+                    return new Controller(ur, ur.Port, () => ur.State.Position, () => ur.Errors, () => ur.RequestsReceived);
                 default:
                     VirtualKukaController kuka = await KukaTestSupport.StartKukaAsync();
-                    return new Controller(kuka, kuka.Port, () => kuka.State.Position, () => kuka.Errors);
+                    return new Controller(kuka, kuka.Port, () => kuka.State.Position, () => kuka.Errors, () => kuka.RequestsReceived);
             }
         }
 

@@ -257,7 +257,7 @@ public sealed class SamplesRunTests
         Assert.Contains("{\"event\":\"action-executed\",\"last\":\"Move(0,0,250);\",\"id\":5,\"pendDev\":2,\"pendTot\":2,\"pos\":[400,300,750],\"ori\":[0,0,-1,0,1,0],\"quat\":[0.7071,0,0.7071,0],\"axes\":null,\"extax\":null,\"conf\":null}",
             received);
         Assert.Contains(received, e => e.StartsWith("{\"event\":\"motion-update\",\"pos\":[", StringComparison.Ordinal));
-        Assert.Contains("{\"event\":\"error\",\"kind\":\"parse\",\"message\":\"Line 1, column 1: unknown instruction \\\"Detach\\\".\",\"line\":1,\"column\":1}", received);
+        Assert.Contains("{\"event\":\"error\",\"kind\":\"parse\",\"message\":\"Line 1, column 1: unknown instruction \\\"RotationSpeed\\\".\",\"line\":1,\"column\":1}", received);
         Assert.Contains("Done: 7 actions issued, 7 executed (ids 1, 2, 3, 4, 5, 6, 7).", output, StringComparison.Ordinal);
     }
 

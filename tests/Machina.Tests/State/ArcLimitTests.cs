@@ -16,13 +16,15 @@ public class ArcLimitTests
     }
 
     [Fact]
-    public void LargeButComputableArc_IsAccepted()
+    public void LargeButComputableArc_IsRefusedBeyondTheCoordinateBound_AndAKilometreArcIsAccepted()
     {
         var bot = Robot.Create("Bot", RobotType.ABB);
         bot.MoveTo(0, 0, 0);
 
-        bot.ArcMotionTo(1e60, 1e60, 0, 2e60, 0, 0);
+        var ex = Assert.Throws<ActionRefusedException>(() => bot.ArcMotionTo(1e60, 1e60, 0, 2e60, 0, 0));
+        bot.ArcMotionTo(5e5, 5e5, 0, 1e6, 0, 0);
 
-        Assert.Equal(new Point(2e60, 0, 0), bot.GetCurrentPosition());
+        Assert.Equal("the arc's through point would be at [1E+60, 1E+60, 0] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches.", ex.Reason);
+        Assert.Equal(new Point(1e6, 0, 0), bot.GetCurrentPosition());
     }
 }

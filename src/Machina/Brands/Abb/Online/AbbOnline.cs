@@ -11,16 +11,47 @@ internal sealed class AbbOnline : IOnlineBrand
 
     /// <inheritdoc/>
     /// <remarks>
-    /// Refuses the texts the encoder cannot put on the wire (signal names and custom statements that are not plain ASCII, hold
-    /// '"' or ';', or do not fit a RAPID string), with the encoder's own rules; messages are made safe instead (TPWrite).
+    /// Refuses IO pins that are not RAPID signal names (a number such as 1: the same rule as the RAPID compiler's), and the texts the
+    /// encoder cannot put on the wire (custom statements that are not plain ASCII, hold '"' or ';', or do not fit a RAPID string),
+    /// with the encoder's own rules; messages are made safe instead (TPWrite).
     /// </remarks>
     public string? WhyCannotStream(RobotAction action) => action switch
     {
-        ActionIODigital digital => Refuse(action, AbbRequest.WhyTextCannotBeSent(digital.PinName)),
-        ActionIOAnalog analog => Refuse(action, AbbRequest.WhyTextCannotBeSent(analog.PinName)),
+        ActionIODigital digital => Refuse(action, AbbRequest.WhyTextCannotBeSent(digital.PinName) ?? RapidNames.WhyNotSignal(digital.PinName)),
+        ActionIOAnalog analog => Refuse(action, AbbRequest.WhyTextCannotBeSent(analog.PinName) ?? RapidNames.WhyNotSignal(analog.PinName)),
         ActionCustomCode { IsDeclaration: false } custom => Refuse(action, AbbRequest.WhyStatementCannotBeSent(custom.Statement)),
         _ => null,
     };
+
+    /// <inheritdoc/>
+    /// <remarks>The driver reads every number into a RAPID <c>num</c>, a 32-bit float: a value beyond ±3.4E+38 is refused.</remarks>
+    public string? WhyCannotSend(RobotAction action, RobotCursor after)
+    {
+        var requests = new List<AbbRequest>(2);
+        AbbActionEncoder.Encode(action.Id is >= 0 and <= AbbRequest.MaxId ? action : WithWireId(action), after, requests);
+        foreach (AbbRequest request in requests)
+        {
+            for (int i = 0; i < request.ParameterCount; i++)
+            {
+                if (Math.Abs(request[i]) > float.MaxValue)
+                {
+                    return Refuse(action, $"{Num.G(request[i])} is beyond what a RAPID number holds (±3.4E+38).");
+                }
+            }
+        }
+        return null;
+    }
+
+    /// <summary>
+    /// A copy with an id the encoder accepts: the wire id the driver will send, or 0 for an action not issued yet (a multi-statement
+    /// <c>Do</c> checks its actions before they get ids). Only the numbers matter here.
+    /// </summary>
+    private static RobotAction WithWireId(RobotAction action)
+    {
+        RobotAction copy = action.CloneUnissued();
+        copy.Id = action.Id < 0 ? 0 : AbbDriver.WireId(action.Id);
+        return copy;
+    }
 
     private static string? Refuse(RobotAction action, string? why) =>
         why is null ? null : $"{action.Type} ({Abbreviate(action.ToInstruction())}) cannot be streamed to an ABB robot: {why}";

@@ -33,6 +33,14 @@ internal sealed class RapidNames
 
     private readonly HashSet<string> _used = new(Reserved, StringComparer.OrdinalIgnoreCase);
 
+    /// <summary>
+    /// Why <paramref name="pin"/> cannot name an ABB IO signal, or null. Signals are named in the controller's IO configuration and
+    /// used as RAPID identifiers, so a number such as <c>1</c> names none; the same rule offline (SetDO) and online (AliasIO).
+    /// </summary>
+    internal static string? WhyNotSignal(string pin) => IsValid(pin)
+        ? null
+        : $"\"{(pin.Length <= 40 ? pin : pin[..37] + "...")}\" is not a RAPID signal name; ABB signals are named in the controller's IO configuration (e.g. DO_1).";
+
     /// <summary>True when <paramref name="name"/> is a syntactically valid RAPID identifier that is not a reserved word.</summary>
     internal static bool IsValid(string name)
     {

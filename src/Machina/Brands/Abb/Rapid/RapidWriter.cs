@@ -242,9 +242,9 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
 
     private void WriteSignal(RobotAction action, string pin, string instruction, string value)
     {
-        if (!RapidNames.IsValid(pin))
+        if (RapidNames.WhyNotSignal(pin) is string why)
         {
-            Unsupported(action, $"\"{pin}\" is not a RAPID signal name; ABB signals are named in the controller's IO configuration (e.g. DO_1).");
+            Unsupported(action, why);
             return;
         }
         Code(action, Indent + instruction + pin + ", " + value + ";");

@@ -42,7 +42,8 @@ internal static class KukaActionEncoder
         return number < 1 || number > count ? Refuse(action, $"{array} outputs are numbered 1 to {Num.I(count)}, so output {Num.I(number)} does not exist.") : null;
     }
 
-    private static string Refuse(RobotAction action, string why) => $"{action.Type} ({action.ToInstruction()}) is not supported online on KUKA: {why}";
+    /// <summary>The refusal of <paramref name="action"/> for the reason <paramref name="why"/>, naming the action.</summary>
+    internal static string Refuse(RobotAction action, string why) => $"{action.Type} ({action.ToInstruction()}) is not supported online on KUKA: {why}";
 
     /// <summary>
     /// The driver instruction for <paramref name="action"/> with id <paramref name="id"/>, or null when it has nothing to send

@@ -13,6 +13,25 @@ internal sealed class KukaOnline : IOnlineBrand
     public string? WhyCannotStream(RobotAction action) => KukaActionEncoder.WhyCannotStream(action);
 
     /// <inheritdoc/>
+    /// <remarks>The driver reads every number into a KRL <c>REAL</c>, a 32-bit float: a value beyond ±3.4E+38 is refused.</remarks>
+    public string? WhyCannotSend(RobotAction action, RobotCursor after)
+    {
+        if (KukaActionEncoder.Encode(action, action.Id, after) is not KukaInstruction instruction)
+        {
+            return null;
+        }
+        KukaValues values = instruction.Values;
+        for (int i = 0; i < KukaProtocol.ValueCount; i++)
+        {
+            if (Math.Abs(values[i]) > float.MaxValue)
+            {
+                return KukaActionEncoder.Refuse(action, $"{Num.G(values[i])} is beyond what a KRL REAL holds (±3.4E+38).");
+            }
+        }
+        return null;
+    }
+
+    /// <inheritdoc/>
     public IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters) =>
         KukaDriverModules.Create(
             DriverParameters.Require(parameters, "HOSTNAME"),

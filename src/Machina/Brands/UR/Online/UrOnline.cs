@@ -43,8 +43,27 @@ internal sealed class UrOnline : IOnlineBrand
             ActionDefineTool d => Fits(d.Tool.TcpPosition) && Fits(d.Tool.Weight * UrWire.FactorKilogram),
             _ => true,
         };
-        return fits ? null : $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers.";
+        return fits ? null : TooLarge(action);
     }
+
+    /// <inheritdoc/>
+    /// <remarks>The encoder's own rule: what it cannot scale into 32-bit integers (a relative move or speed gone too far) is refused.</remarks>
+    public string? WhyCannotSend(RobotAction action, RobotCursor after)
+    {
+        Span<int> values = stackalloc int[UrActionEncoder.MaxValues];
+        try
+        {
+            UrActionEncoder.Encode(action, after, values);
+            return null;
+        }
+        catch (ArgumentOutOfRangeException)
+        {
+            return TooLarge(action);
+        }
+    }
+
+    private static string TooLarge(RobotAction action) =>
+        $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers.";
 
     private static bool Fits(Vector mm) => FitsMm(mm.X) && FitsMm(mm.Y) && FitsMm(mm.Z);
 
