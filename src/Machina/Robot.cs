@@ -23,7 +23,8 @@ public sealed partial class Robot : IOnlineHost
         Name = name;
         Brand = brand;
         Logger = new RobotLogger(name);
-        _issueCursor = new RobotCursor { Warn = (action, message) => Logger.Warning($"{action.ToInstruction()} {message}") };
+        Action<RobotAction, string> warn = (action, message) => Logger.Warning($"{action.ToInstruction()} {message}");
+        _issueCursor = new RobotCursor { Warn = warn, Notice = warn };
     }
 
     /// <summary>The library's version.</summary>

@@ -27,7 +27,7 @@ internal sealed partial class RobotCursor
         }
         else
         {
-            Warn?.Invoke(a, "the tool was attached while the tool pose is unknown; the pose will be known after the next absolute motion.");
+            Notice?.Invoke(a, "the tool was attached while the tool pose is unknown; the pose will be known after the next absolute motion.");
         }
         Tool = tool;
         return null;

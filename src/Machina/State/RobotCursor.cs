@@ -53,6 +53,12 @@ internal sealed partial class RobotCursor
     /// <summary>Receives warnings about actions that were applied but may surprise the user; may be null.</summary>
     internal Action<RobotAction, string>? Warn;
 
+    /// <summary>
+    /// Receives what the robot's log shows as a warning but a compiled program does not, because it is the usual order of
+    /// things (a tool attached before the first absolute motion); may be null.
+    /// </summary>
+    internal Action<RobotAction, string>? Notice;
+
     /// <summary>A cursor in Machina's initial state: position unknown, tool pointing down, 20 mm/s, 30 mm/s², 5 mm, linear, world.</summary>
     internal RobotCursor() => Reset();
 

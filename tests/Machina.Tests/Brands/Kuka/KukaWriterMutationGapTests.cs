@@ -228,8 +228,8 @@ public class KukaWriterMutationGapTests
 
         RobotProgram program = bot.Compile(RobotType.KUKA, new CompileOptions { HumanComments = false });
 
-        Assert.Equal(["the tool was attached while the tool pose is unknown; the pose will be known after the next absolute motion.", "the weight and centre of gravity of tool \"pen\" are not sent; set its load data on the controller."],
-            program.Warnings.Select(w => w.Message));
+        Assert.Equal("the weight and centre of gravity of tool \"pen\" are not sent; set its load data on the controller.",
+            Assert.Single(program.Warnings).Message);
     }
 
     [Fact]
