@@ -48,13 +48,18 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
     internal const string PartialSuffix = ".partial";
 
     private readonly List<StreamWriter> _writers = [];
+    private bool _createdFolder;
 
     /// <summary>Paths of the files written.</summary>
     internal List<string> Paths { get; } = [];
 
     internal override LineSink OpenFile(string name, string extension, Encoding encoding, string commentPrefix)
     {
-        Directory.CreateDirectory(folder);
+        if (!Directory.Exists(folder))
+        {
+            Directory.CreateDirectory(folder);
+            _createdFolder = true;
+        }
         string path = Path.Combine(folder, name + "." + extension);
         var writer = new StreamWriter(replaceAtEnd ? path + PartialSuffix : path, append: false, encoding, bufferSize: 1 << 16);
         _writers.Add(writer);
@@ -62,12 +67,13 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
         return new WriterLineSink(writer, newLine);
     }
 
-    /// <summary>Closes every file and, with <c>replaceAtEnd</c>, gives each its real name (replacing a file of that name).</summary>
+    /// <summary>A spool in a temporary file (not in the output folder), deleted when it is closed.</summary>
     internal override SpoolSink OpenSpool(Encoding encoding)
     {
         return new FileSpool(Path.Combine(Path.GetTempPath(), "machina-" + Guid.NewGuid().ToString("N") + ".spool"), encoding, newLine);
     }
 
+    /// <summary>Closes every file and, with <c>replaceAtEnd</c>, gives each its real name (replacing a file of that name).</summary>
     internal void Commit()
     {
         CloseWriters();
@@ -91,6 +97,10 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
             foreach (string path in Paths)
             {
                 File.Delete(path + PartialSuffix);
+            }
+            if (_createdFolder && !Directory.EnumerateFileSystemEntries(folder).Any())
+            {
+                Directory.Delete(folder); // a failed compile leaves nothing it made, not even an empty folder
             }
         }
     }

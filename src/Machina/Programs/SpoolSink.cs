@@ -34,7 +34,7 @@ internal sealed class MemorySpool : SpoolSink
 }
 
 /// <summary>
-/// A spool in a temporary file beside the output, so that memory does not grow with the program. Moved into a file of the
+/// A spool in a temporary file (the system's temporary folder), so that memory does not grow with the program. Moved into a file of the
 /// same encoding and line ending as a plain byte copy; otherwise line by line.
 /// </summary>
 internal sealed class FileSpool : SpoolSink

@@ -86,6 +86,8 @@ public class CompileCommandTests
     [Theory]
     // A refused second statement of a line: the column where that statement starts.
     [InlineData("MoveTo(1, 2, 3);\nWait(1); PopSettings();\n", "ur", "p.machina:2:10: error: cannot apply \"PopSettings();\":")]
+    [InlineData("MoveTo(1, 2, 3);\nPopSettings();\n", "kuka", "p.machina:2:1: error: cannot apply \"PopSettings();\":")]
+    [InlineData("MoveTo(1, 2, 3);\nPopSettings();\n", "marlin", "p.machina:2:1: error: cannot apply \"PopSettings();\":")]
     // A relative move before any position, after a comment, a blank line and an indent.
     [InlineData("// starts relative\n\n   Move(0, 0, 10);\n", "abb", "p.machina:3:4: error: cannot apply \"Move(0,0,10);\":")]
     // A statement still open at the end of the file: reported at the end.
@@ -98,6 +100,7 @@ public class CompileCommandTests
 
         Assert.Equal(1, result.Exit);
         Assert.StartsWith(error, result.Stderr, StringComparison.Ordinal);
+        Assert.False(Directory.Exists(cli.PathOf("out")), "a failed compile must not leave the folder it created");
     }
 
     [Fact]
