@@ -106,31 +106,44 @@ internal sealed class TcpLink : IAsyncDisposable
                 Append(bytes); // written by FlushHeld when the read is handled
                 return;
             }
-            if (_outboxLength == 0 && !_loopWriting && Volatile.Read(ref _disposed) == 0)
+            if (_outboxLength == 0 && CanSendNow)
             {
-                try
+                int sent = SendNow(bytes);
+                if (sent < 0)
                 {
-                    Interlocked.Increment(ref _socketWrites);
-                    int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
-                    if (error is SocketError.Success or SocketError.WouldBlock && sent > 0)
-                    {
-                        bytes = bytes[sent..];
-                    }
-                }
-                catch (ObjectDisposedException)
-                {
-                    // Closing: the bytes are dropped with the link, whose loops report the end.
                     return;
                 }
+                bytes = bytes[sent..];
                 if (bytes.IsEmpty)
                 {
                     return;
                 }
-                // Not sent (buffer full or an error): the send loop writes it or meets and reports the failure.
+                // Not all sent (buffer full or an error): the send loop writes the rest or meets and reports the failure.
             }
             Append(bytes);
         }
         _doorbell.Writer.TryWrite(true);
+    }
+
+    /// <summary>True when bytes may go straight into the socket (under the outbox lock): the send loop is not writing and the link is open.</summary>
+    private bool CanSendNow => !_loopWriting && Volatile.Read(ref _disposed) == 0;
+
+    /// <summary>
+    /// One non-blocking send (under the outbox lock): how many bytes the socket took, 0 when none (its buffer is full, or an
+    /// error the send loop will meet and report), -1 when the link is closing (the bytes are dropped with it).
+    /// </summary>
+    private int SendNow(ReadOnlySpan<byte> bytes)
+    {
+        try
+        {
+            Interlocked.Increment(ref _socketWrites);
+            int sent = _socket.Send(bytes, SocketFlags.None, out SocketError error);
+            return error is SocketError.Success or SocketError.WouldBlock && sent > 0 ? sent : 0;
+        }
+        catch (ObjectDisposedException)
+        {
+            return -1;
+        }
     }
 
     private void Append(ReadOnlySpan<byte> bytes)
@@ -153,23 +166,16 @@ internal sealed class TcpLink : IAsyncDisposable
             {
                 return;
             }
-            if (!_loopWriting && Volatile.Read(ref _disposed) == 0)
+            if (CanSendNow)
             {
-                try
+                int sent = SendNow(_outbox.AsSpan(0, _outboxLength));
+                if (sent < 0)
                 {
-                    Interlocked.Increment(ref _socketWrites);
-                    int sent = _socket.Send(_outbox.AsSpan(0, _outboxLength), SocketFlags.None, out SocketError error);
-                    if (error is SocketError.Success or SocketError.WouldBlock && sent > 0)
-                    {
-                        _outbox.AsSpan(sent, _outboxLength - sent).CopyTo(_outbox);
-                        _outboxLength -= sent;
-                    }
-                }
-                catch (ObjectDisposedException)
-                {
-                    _outboxLength = 0; // closing: the bytes are dropped with the link, whose loops report the end
+                    _outboxLength = 0;
                     return;
                 }
+                _outbox.AsSpan(sent, _outboxLength - sent).CopyTo(_outbox);
+                _outboxLength -= sent;
                 if (_outboxLength == 0)
                 {
                     return;

@@ -77,7 +77,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 _sb.Clear().Append(Indent).Append(joint ? "movej(" : "movep(");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
                 _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
-                MoveCode(action);
+                EndLine(action);
                 break;
             case ActionArcMotion arc:
                 if (ArcOrientation.ThroughIsIgnored(arc, cursor))
@@ -89,7 +89,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 _sb.Append(", ");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
                 _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: false);
-                MoveCode(action);
+                EndLine(action);
                 break;
             case ActionAxes:
                 _sb.Clear().Append(Indent).Append("movej(");
@@ -102,7 +102,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                     _sb.Append("target").Append(_target++);
                 }
                 _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true);
-                MoveCode(action);
+                EndLine(action);
                 break;
             case ActionSpeed when UrScriptText.RoundsToZero(cursor.Speed):
                 job.Warn(action, $"URScript speeds are written in m/s with 6 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {FixedPoint.Format(UrScriptText.MinRate, 6)} m/s.");
@@ -296,8 +296,8 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         sink.Add(Indent + "# NOT SUPPORTED ON UR: " + UrScriptText.CommentText(action.Describe()));
     }
 
-    /// <summary>Writes the motion line built in the builder, with its comment.</summary>
-    private void MoveCode(RobotAction action)
+    /// <summary>Adds the action's comment (with human comments) to the line in the builder and writes it.</summary>
+    private void EndLine(RobotAction action)
     {
         if (_human)
         {
@@ -306,8 +306,11 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         sink.Add(_sb);
     }
 
-    private void Code(RobotAction action, string line) =>
-        sink.Add(_human ? line + "  # [" + UrScriptText.CommentText(action.Describe()) + "]" : line);
+    private void Code(RobotAction action, string line)
+    {
+        _sb.Clear().Append(line);
+        EndLine(action);
+    }
 
     private void NoCode(RobotAction action)
     {

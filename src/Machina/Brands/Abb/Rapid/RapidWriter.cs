@@ -183,6 +183,12 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         _sb.Append(", ").Append(plan.SpeedName(cursor.Speed)).Append(", ").Append(plan.ZoneName(cursor.Precision))
            .Append(", ").Append(plan.ToolName(cursor.Tool)).Append("\\WObj:=WObj0;");
+        EndLine(action);
+    }
+
+    /// <summary>Adds the action's comment (with human comments) to the line in the builder and writes it.</summary>
+    private void EndLine(RobotAction action)
+    {
         if (_human)
         {
             _sb.Append("  ! [").Append(RapidText.CommentText(action.Describe())).Append(']');
@@ -264,8 +270,11 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         sink.Add(Indent + "! NOT SUPPORTED ON ABB: " + RapidText.CommentText(action.Describe()));
     }
 
-    private void Code(RobotAction action, string line) =>
-        sink.Add(_human ? line + "  ! [" + RapidText.CommentText(action.Describe()) + "]" : line);
+    private void Code(RobotAction action, string line)
+    {
+        _sb.Clear().Append(line);
+        EndLine(action);
+    }
 
     private void NoCode(RobotAction action)
     {
