@@ -61,6 +61,7 @@ public sealed partial class VirtualUrController
         var stream = client.GetStream();
         var text = new StringBuilder();
         var bytes = new byte[8192];
+        string? awaitingCall = null; // a program whose definition ran without the call that usually follows it
         while (true)
         {
             int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
@@ -78,6 +79,15 @@ public sealed partial class VirtualUrController
             {
                 string script = text.ToString();
                 text.Clear();
+                if (awaitingCall is not null && IsOnlyCallOf(script, awaitingCall))
+                {
+                    // The call line of the program just started, read apart from its definition (a slow link can cut a
+                    // write anywhere): part of the same script, not a new one that would replace the program.
+                    AppendToLastScript(script);
+                    awaitingCall = null;
+                    continue;
+                }
+                awaitingCall = DefinedWithoutCall(script);
                 await RunScriptAsync(script, token).ConfigureAwait(false);
             }
         }
@@ -94,6 +104,39 @@ public sealed partial class VirtualUrController
         int start = s.LastIndexOf('\n') + 1;
         string last = s[start..];
         return last.Length > 0 && !char.IsWhiteSpace(last[0]) && !last.StartsWith("def ", StringComparison.Ordinal) && !last.StartsWith('#');
+    }
+
+    /// <summary>The name of the program a script defines when the script ends with that definition's <c>end</c> (no call after it), else null.</summary>
+    internal static string? DefinedWithoutCall(string script)
+    {
+        List<string> top = TopLevelLines(script);
+        if (top.Count == 0 || top[^1] != "end")
+        {
+            return null;
+        }
+        string? def = top.LastOrDefault(l => l.StartsWith("def ", StringComparison.Ordinal));
+        int open = def?.IndexOf('(') ?? -1;
+        return open > 4 ? def![4..open].Trim() : null;
+    }
+
+    /// <summary>True when a script is nothing but the call of <paramref name="program"/> (blank and comment lines aside).</summary>
+    internal static bool IsOnlyCallOf(string script, string program) =>
+        script.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && !l.StartsWith('#')).ToList() is [string only]
+        && only.Replace(" ", "", StringComparison.Ordinal) == program + "()";
+
+    /// <summary>The unindented lines of a script that are neither blank nor comments, trimmed.</summary>
+    private static List<string> TopLevelLines(string script) =>
+        [.. script.Split('\n').Where(l => l.Length > 0 && !char.IsWhiteSpace(l[0]) && !l.StartsWith('#')).Select(l => l.TrimEnd())];
+
+    private void AppendToLastScript(string text)
+    {
+        lock (Gate)
+        {
+            if (_scripts.Count > 0)
+            {
+                _scripts[^1] += text;
+            }
+        }
     }
 
     /// <summary>What a script is, and where it connects back to.</summary>

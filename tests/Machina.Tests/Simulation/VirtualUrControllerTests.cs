@@ -52,6 +52,60 @@ public class VirtualUrControllerTests
         Assert.Equal(1, controller.ScriptsReceived);
     }
 
+    [Fact]
+    public async Task OurDriver_CallLineReadApartFromTheDefinition_IsTheSameScriptAndTheProgramRunsOn()
+    {
+        // A slow link (or one that delivers a byte at a time) can cut the host's single write right after the definition's
+        // "end": the program starts, and the call line that follows must not replace it.
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        var server = new TcpListener(IPAddress.Loopback, 0);
+        server.Start();
+        using var scriptClient = new TcpClient();
+        await scriptClient.ConnectAsync(IPAddress.Loopback, controller.Port);
+        string script = UrDriverScript.For("127.0.0.1", ((IPEndPoint)server.LocalEndpoint).Port);
+        int cut = script.LastIndexOf("\nend\n", StringComparison.Ordinal) + "\nend\n".Length;
+        Assert.EndsWith("machina_ur_driver()", script[cut..].Trim(), StringComparison.Ordinal);
+
+        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(script[..cut]));
+        using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
+        var stream = driver.GetStream();
+        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await ReadIntsAsync(stream, 5));
+        await ReadIntsAsync(stream, 14);
+        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(script[cut..]));
+        await WaitUntilAsync(() => controller.LastScript == script);
+
+        Assert.Equal(1, controller.ScriptsReceived);
+        Assert.True(controller.IsProgramRunning);
+        Assert.Empty(controller.Errors);
+        await WriteIntsAsync(stream, [1, 8, 20]); // id 1: blend code 8 with 20 on the wire, as in OurDriver_UnknownCode_…
+        Assert.Equal(new int[] { 1 }, await ReadIntsAsync(stream, 1));
+        Assert.Equal(2, controller.State.Zone);
+        server.Stop();
+    }
+
+    [Theory]
+    [InlineData("def prog():\n  textmsg(1)\nend\n", "prog")]
+    [InlineData("# header\ndef machina_ur_driver():\n  x = 1\nend\n\n\n", "machina_ur_driver")]
+    [InlineData("def prog():\n  textmsg(1)\nend\nprog()\n", null)]
+    [InlineData("textmsg(1)\n", null)]
+    public void DefinedWithoutCall_ScriptEndingWithADefinition_NamesIt(string script, string? expected)
+    {
+        Assert.Equal(expected, VirtualUrController.DefinedWithoutCall(script));
+    }
+
+    [Theory]
+    [InlineData("machina_ur_driver()\n", true)]
+    [InlineData("\n\n# Kickstart the driver\nmachina_ur_driver()\n", true)]
+    [InlineData("machina_ur_driver( )\n", true)]
+    [InlineData("other()\n", false)]
+    [InlineData("machina_ur_driver()\nhalt\n", false)]
+    [InlineData("  textmsg(1)\nmachina_ur_driver()\n", false)]
+    public void IsOnlyCallOf_ScriptOfJustTheCall_IsRecognised(string script, bool expected)
+    {
+        Assert.Equal(expected, VirtualUrController.IsOnlyCallOf(script, "machina_ur_driver"));
+    }
+
     [Theory]
     [InlineData("  MACHINA_DRIVER_VERSION = [2, 0, 0]\n", "Ours")]
     [InlineData("  MACHINA_DRIVER_VERSION = \"1.2.0\"\n", "Original")]
