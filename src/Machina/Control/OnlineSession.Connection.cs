@@ -95,10 +95,6 @@ internal sealed partial class OnlineSession
                     earlyFault ??= AcknowledgeEarly(link);
                     if (earlyFault is null)
                     {
-                        if (link.EarlyMotion is MotionSample motion)
-                        {
-                            OnMotion(link, motion); // the monitor reported before the link became current (ABB, KUKA)
-                        }
                         if (link.EarlyStop is MachinaException stop)
                         {
                             OnStopped(link, stop); // stopped while connecting (UR: RTDE showed it before the link became current)
@@ -411,21 +407,7 @@ internal sealed partial class OnlineSession
             session.OnAcknowledged(this, id);
         }
 
-        /// <summary>The latest live pose reported before the connection became current; raised once it is.</summary>
-        internal MotionSample? EarlyMotion { get; private set; }
-
-        public void OnMotion(in MotionSample sample)
-        {
-            lock (session._gate)
-            {
-                if (!IsReady)
-                {
-                    EarlyMotion = sample;
-                    return;
-                }
-            }
-            session.OnMotion(this, sample);
-        }
+        public void OnMotion(in MotionSample sample) => session.OnMotion(this, sample);
 
         /// <summary>A stop reported before the connection became current and not followed by a resume; applied once it is.</summary>
         internal MachinaException? EarlyStop { get; private set; }

@@ -1,9 +1,8 @@
 namespace Machina.Tests.Control;
 
 /// <summary>
-/// A controller that reports a stop or a live pose while the connection is still being set up (UR: RTDE shows the protective
-/// stop right after the driver program's handshake; ABB and KUKA: the monitor's first report), before the session made the
-/// link current: neither may be lost.
+/// A controller that reports a stop while the connection is still being set up (UR: RTDE shows the protective stop right after
+/// the driver program's handshake, before the session made the link current): the stop must not be lost.
 /// </summary>
 public class EarlyStopTests
 {
@@ -47,27 +46,6 @@ public class EarlyStopTests
 
         Assert.Equal(ConnectionState.Connected, bot.ConnectionState);
         Assert.Equal([1], driver.Sent.Select(a => a.Id));
-        bot.Disconnect();
-    }
-    [Fact]
-    public void Connect_MotionReportedBeforeTheLinkIsCurrent_TheLatestIsRaisedOnceConnected()
-    {
-        var driver = new FakeDriver
-        {
-            DuringConnect = l =>
-            {
-                l.OnMotion(new MotionSample(new Vector(1, 2, 3), Rotation.Identity, new Joints(0, 0, 0, 0, 90, 0), null));
-                l.OnMotion(new MotionSample(new Vector(4, 5, 6), Rotation.Identity, new Joints(0, 0, 0, 0, 91, 0), null));
-            },
-        };
-        var bot = OnlineRobot.Create(driver, connect: false);
-        var updates = new List<Vector?>();
-        bot.MotionUpdate += (_, e) => updates.Add(e.Position);
-
-        bot.Connect("127.0.0.1", 7000);
-        OnlineRobot.Flush(bot);
-
-        Assert.Equal([new Vector(4, 5, 6)], updates);
         bot.Disconnect();
     }
 }
