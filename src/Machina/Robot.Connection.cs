@@ -41,6 +41,12 @@ public sealed partial class Robot
     /// </summary>
     public event EventHandler<ControllerStoppedArgs>? ControllerStopped;
 
+    /// <summary>
+    /// Raised when the controller reports that it could not run an action (an unreachable target, a joint beyond its limits)
+    /// and stopped: the state is where the robot really is, and no action after the failed one is reported executed.
+    /// </summary>
+    public event EventHandler<ActionFailedArgs>? ActionFailed;
+
     /// <summary>Raised when a stopped controller runs again (after <see cref="Resume"/> or at its pendant); sending goes on.</summary>
     public event EventHandler<ControllerStoppedArgs>? ControllerResumed;
 
@@ -51,6 +57,7 @@ public sealed partial class Robot
         OnlineEvent.Motion => MotionUpdate is not null,
         OnlineEvent.ConnectionLost => ConnectionLost is not null,
         OnlineEvent.StopChanged => ControllerStopped is not null || ControllerResumed is not null,
+        OnlineEvent.Failed => ActionFailed is not null,
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Unknown online event."),
     };
 
@@ -72,6 +79,7 @@ public sealed partial class Robot
             case ActionExecutedArgs a when ActionExecuted is { } h: RaiseSafely(h, a); break;
             case MotionUpdateArgs a when MotionUpdate is { } h: RaiseSafely(h, a); break;
             case ConnectionLostArgs a when ConnectionLost is { } h: RaiseSafely(h, a); break;
+            case ActionFailedArgs a when ActionFailed is { } h: RaiseSafely(h, a); break;
             case ControllerStoppedArgs { IsStopped: true } a when ControllerStopped is { } h: RaiseSafely(h, a); break;
             case ControllerStoppedArgs { IsStopped: false } a when ControllerResumed is { } h: RaiseSafely(h, a); break;
         }

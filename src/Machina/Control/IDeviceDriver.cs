@@ -55,6 +55,13 @@ internal interface IDeviceListener
     /// <summary>The controller runs again after <see cref="OnStopped"/> (cleared at its pendant, or by <see cref="IDeviceDriver.ResumeAsync"/>).</summary>
     void OnResumed();
 
+    /// <summary>
+    /// The controller could not run the action with this id (its wire id, as in <see cref="OnAcknowledged"/>) and stopped its
+    /// program: <paramref name="reason"/> in the controller's words, <paramref name="code"/> its error number or null. Everything
+    /// acknowledged before it ran; nothing after it will run.
+    /// </summary>
+    void OnFailed(int id, string reason, string? code);
+
     /// <summary>The link failed (closed socket, garbage, protocol violation); the driver stops after this call.</summary>
     void OnFault(MachinaException error);
 }

@@ -45,4 +45,7 @@ internal enum OnlineEvent
 
     /// <summary><c>Robot.ControllerStopped</c> and <c>Robot.ControllerResumed</c>.</summary>
     StopChanged,
+
+    /// <summary><c>Robot.ActionFailed</c>.</summary>
+    Failed,
 }

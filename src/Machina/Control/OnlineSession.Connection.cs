@@ -438,6 +438,10 @@ internal sealed partial class OnlineSession
             session.OnResumed(this);
         }
 
+        // Placeholder until the session reports failed actions itself: a failure closes the link, keeping every action.
+        public void OnFailed(int id, string reason, string? code) =>
+            OnFault(new RobotConnectionException($"The controller could not run action {id}: {reason}", code));
+
         public void OnFault(MachinaException error)
         {
             lock (session._gate)

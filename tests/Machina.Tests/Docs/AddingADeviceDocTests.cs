@@ -23,7 +23,7 @@ public partial class AddingADeviceDocTests
         (typeof(IOnlineBrand), ["Brand", "CreateDriver", "WhyCannotStream", "DriverModules"]),
         (typeof(DeviceContext), []),
         (typeof(IDeviceDriver), ["ConnectAsync", "Send", "WireId", "Adopt", "ResumeAsync"]),
-        (typeof(IDeviceListener), ["OnAcknowledged", "OnMotion", "OnStopped", "OnResumed", "OnFault"]),
+        (typeof(IDeviceListener), ["OnAcknowledged", "OnMotion", "OnStopped", "OnResumed", "OnFailed", "OnFault"]),
         (typeof(DeviceDriver<>), ["OpenAsync", "OpenDriverLinkAsync", "OpenMonitorAsync", "OpenSideLinkAsync", "TryReadMotion", "OnMessage", "Handshake",
             "Listener", "Link"]),
         (typeof(IMessageReader<>), ["Append", "TryRead"]),
