@@ -100,6 +100,7 @@ public sealed partial class Robot
         {
             mode = ControlType.Online;
         }
+        ThrowIfDisposed("change the control mode");
         if (mode == _controlType)
         {
             return true;
@@ -110,11 +111,11 @@ public sealed partial class Robot
         }
         if (mode == ControlType.Online)
         {
-            ThrowIfDisposed("go online");
             IOnlineBrand? brand = OnlineBrandOverride ?? (DriverFactory is null ? OnlineBrands.For(Brand) : OnlineBrands.TryFor(Brand));
             Func<IDeviceDriver> factory = DriverFactory ?? CreateDriverFactory(brand!);
             lock (_issueLock)
             {
+                ThrowIfDisposed("go online");   // again under the lock: a robot disposed meanwhile never gets a session
                 _session = new OnlineSession(this, _issueCursor, _window, factory, brand, Time);
                 _online = _session;
             }
@@ -180,7 +181,11 @@ public sealed partial class Robot
     /// </summary>
     /// <exception cref="InvalidOperationException">The robot is not stopped.</exception>
     /// <exception cref="MachinaException">The controller refused or could not be reached.</exception>
-    public Task ResumeAsync(CancellationToken cancellationToken = default) => RequireSession("resume").ResumeAsync(cancellationToken);
+    public Task ResumeAsync(CancellationToken cancellationToken = default)
+    {
+        ThrowIfDisposed("resume");
+        return RequireSession("resume").ResumeAsync(cancellationToken);
+    }
 
     /// <summary>Same as <see cref="ResumeAsync"/>, waiting for it.</summary>
     /// <returns>True once the controller runs again.</returns>
@@ -233,8 +238,11 @@ public sealed partial class Robot
 
     /// <summary>Waits until every issued action was executed by the controller and its events were raised.</summary>
     /// <exception cref="MachinaException">The connection was lost (or closed) before that.</exception>
-    public Task WaitForCompletionAsync(CancellationToken cancellationToken = default) =>
-        RequireSession("wait for completion").WaitForCompletionAsync(cancellationToken);
+    public Task WaitForCompletionAsync(CancellationToken cancellationToken = default)
+    {
+        ThrowIfDisposed("wait for completion");
+        return RequireSession("wait for completion").WaitForCompletionAsync(cancellationToken);
+    }
 
     /// <summary>Waits until every issued action was executed, at most <paramref name="timeout"/>.</summary>
     /// <returns>True when everything was executed, false on timeout.</returns>

@@ -6,20 +6,26 @@ public sealed partial class Robot : IAsyncDisposable, IDisposable
 
     /// <summary>
     /// Disconnects (actions sent but not confirmed stay unconfirmed), stops the robot's event loop at once (events not raised
-    /// yet are dropped, and no handler runs after this returns) and refuses to go online again. Offline verbs keep working.
+    /// yet are dropped, and no handler runs after this returns). From then on the robot refuses everything: every verb,
+    /// Connect (a connection under way ends disconnected), Resume, WaitForCompletion and ControlMode throw
+    /// <see cref="ObjectDisposedException"/>; a call waiting for completion fails with it.
     /// </summary>
     public async ValueTask DisposeAsync()
     {
-        if (_disposed)
+        OnlineSession? session;
+        lock (_issueLock)
         {
-            return;
+            // Under the issue lock: no action is accepted once this is set, and no session is created after it is read.
+            if (_disposed)
+            {
+                return;
+            }
+            _disposed = true;
+            session = _session;
         }
-        _disposed = true;
-        OnlineSession? session = _session;
         if (session is not null)
         {
-            await session.DisconnectAsync().ConfigureAwait(false);
-            await session.CloseAsync(raiseQueued: false).ConfigureAwait(false);
+            await session.DisposeAsync().ConfigureAwait(false);
         }
     }
 

@@ -147,6 +147,7 @@ public sealed partial class Robot : IOnlineHost
     /// <summary>Applies and records one action; the caller holds the lock. Returns the log report and the event to raise.</summary>
     private (string? Report, ActionIssuedArgs? Issued) IssueLocked(RobotAction action)
     {
+        ThrowIfDisposed($"issue {action.ToInstruction().TrimEnd(';')}");
         // The id is claimed atomically before applying, so that an object issued by two robots at once is never shared.
         if (!action.TryClaimId(_nextId))
         {
@@ -231,6 +232,7 @@ public sealed partial class Robot : IOnlineHost
                     case MotionUpdateHandler d: d(this, (MotionUpdateArgs)args); break;
                     case EventHandler<ConnectionLostArgs> d: d(this, (ConnectionLostArgs)args); break;
                     case EventHandler<ControllerStoppedArgs> d: d(this, (ControllerStoppedArgs)args); break;
+                    case EventHandler<ActionFailedArgs> d: d(this, (ActionFailedArgs)args); break;
                     default: throw new InvalidOperationException($"No way to raise {subscriber.GetType().Name}.");
                 }
             }

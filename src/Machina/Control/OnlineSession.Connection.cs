@@ -42,6 +42,10 @@ internal sealed partial class OnlineSession
     {
         lock (_gate)
         {
+            if (_disposed)
+            {
+                throw Disposed("connect");
+            }
             if (_state != ConnectionState.Disconnected)
             {
                 throw new InvalidOperationException($"The robot is already {_state.ToString().ToLowerInvariant()}; call Disconnect first.");
@@ -76,11 +80,17 @@ internal sealed partial class OnlineSession
 
         MachinaException? earlyFault = null;
         string? refusal = null;
+        bool failedEarly = false, disposed = false;
         _host.WithIssueCursor(issue =>
         {
             lock (_gate)
             {
                 _state = ConnectionState.Disconnected;
+                if (_disposed)
+                {
+                    disposed = true;   // disposed during the handshake: the robot stays disconnected, nothing changes
+                    return;
+                }
                 refusal = Resume(handshake, driver, issue);
                 earlyFault = link.EarlyFault;
                 if (refusal is null)
@@ -88,12 +98,19 @@ internal sealed partial class OnlineSession
                     _state = ConnectionState.Connected;
                     _stopReason = null;
                     _lastFault = null;
+                    _failure = null;
+                    _liveOnLink = false;
                     _link = link;
                     link.IsReady = true;
                     _lastProgress = _time.GetTimestamp();
                     StartWatchdog(link);
                     earlyFault ??= AcknowledgeEarly(link);
-                    if (earlyFault is null)
+                    if (earlyFault is null && link.EarlyFailure is { } failed)
+                    {
+                        earlyFault = Fail(link, failed.Id, failed.Reason, failed.Code, issue);
+                        failedEarly = earlyFault is null;
+                    }
+                    else if (earlyFault is null)
                     {
                         if (link.EarlyStop is MachinaException stop)
                         {
@@ -104,6 +121,11 @@ internal sealed partial class OnlineSession
                 }
             }
         });
+        if (disposed)
+        {
+            await driver.DisposeAsync().ConfigureAwait(false);
+            throw Disposed("connect");
+        }
         if (refusal is not null)
         {
             await driver.DisposeAsync().ConfigureAwait(false);
@@ -113,6 +135,10 @@ internal sealed partial class OnlineSession
         if (earlyFault is not null)
         {
             Fault(link, earlyFault);
+        }
+        else if (failedEarly)
+        {
+            await CloseQuietlyAsync(driver).ConfigureAwait(false);
         }
     }
 
@@ -258,6 +284,7 @@ internal sealed partial class OnlineSession
             {
                 return;
             }
+            _liveOnLink = true;
             RobotCursor motion = _motion ??= new RobotCursor();
             motion.SetLivePose(sample.Position, sample.Rotation, sample.Axes, sample.ExternalAxes);
             if (_host.IsListening(OnlineEvent.Motion))
@@ -319,6 +346,10 @@ internal sealed partial class OnlineSession
         Connection link;
         lock (_gate)
         {
+            if (_disposed)
+            {
+                throw Disposed("resume");
+            }
             if (_state != ConnectionState.Stopped || _link is null)
             {
                 throw new InvalidOperationException(_state == ConnectionState.Connected
@@ -438,9 +469,21 @@ internal sealed partial class OnlineSession
             session.OnResumed(this);
         }
 
-        // Placeholder until the session reports failed actions itself: a failure closes the link, keeping every action.
-        public void OnFailed(int id, string reason, string? code) =>
-            OnFault(new RobotConnectionException($"The controller could not run action {id}: {reason}", code));
+        /// <summary>A failure reported before the connection became current (wire id, reason, code); applied once it is.</summary>
+        internal (int Id, string Reason, string? Code)? EarlyFailure { get; private set; }
+
+        public void OnFailed(int id, string reason, string? code)
+        {
+            lock (session._gate)
+            {
+                if (!IsReady)
+                {
+                    EarlyFailure ??= (id, reason, code);
+                    return;
+                }
+            }
+            session.OnFailed(this, id, reason, code);
+        }
 
         public void OnFault(MachinaException error)
         {

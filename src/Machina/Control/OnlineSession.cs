@@ -129,7 +129,10 @@ internal sealed partial class OnlineSession : IActionStream
         }
     }
 
-    /// <summary>Completes once every issued action was executed and its events raised; fails when the link fails first.</summary>
+    /// <summary>
+    /// Completes once every issued action was executed and its events raised; fails when the link fails first, or with the
+    /// <see cref="ActionFailedException"/> of an action the controller could not run (until the next connection).
+    /// </summary>
     internal Task WaitForCompletionAsync(CancellationToken cancellationToken)
     {
         if (_events.IsRaisingOnCurrentThread)
@@ -140,6 +143,14 @@ internal sealed partial class OnlineSession : IActionStream
         Task task;
         lock (_gate)
         {
+            if (_disposed)
+            {
+                return Task.FromException(Disposed("wait for completion"));
+            }
+            if (_buffer.Count == 0 && _inFlight.Count == 0 && _failure is not null)
+            {
+                return Task.FromException(_failure);
+            }
             if (_buffer.Count == 0 && _inFlight.Count == 0)
             {
                 var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
@@ -153,6 +164,11 @@ internal sealed partial class OnlineSession : IActionStream
             else if (_link is null)
             {
                 int waiting = _buffer.Count + _inFlight.Count;
+                if (_failure is not null)
+                {
+                    return Task.FromException(new RobotConnectionException(
+                        $"{waiting} actions wait to be executed, but the controller stopped after a failure ({_failure.Message}); connect again to run them.", _failure));
+                }
                 return Task.FromException(_lastFault is { } fault
                     ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {waiting} actions wait to be executed; connect again to resume.", fault)
                     : new RobotConnectionException($"{waiting} actions wait to be executed but the robot is not connected; call Connect first."));
@@ -248,7 +264,10 @@ internal sealed partial class OnlineSession : IActionStream
         }
     }
 
-    private void Execute(InFlight entry)
+    private void Execute(InFlight entry) => Execute(entry, _inFlight.Count, _inFlight.Count + _buffer.Count);
+
+    /// <summary>Applies an executed action to the execution cursor and reports it with the counts still pending after it.</summary>
+    private void Execute(InFlight entry, int pendingOnDevice, int pendingTotal)
     {
         string? refusal = _execution.TryApply(entry.Action);
         if (refusal is not null)
@@ -257,7 +276,7 @@ internal sealed partial class OnlineSession : IActionStream
         }
         if (_host.IsListening(OnlineEvent.Executed))
         {
-            _events.Post(new ActionExecutedArgs(entry.Action, _inFlight.Count, _inFlight.Count + _buffer.Count, _execution.Snapshot()));
+            _events.Post(new ActionExecutedArgs(entry.Action, pendingOnDevice, pendingTotal, _execution.Snapshot()));
         }
     }
 

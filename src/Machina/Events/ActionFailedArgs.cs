@@ -4,14 +4,20 @@ namespace Machina;
 
 /// <summary>
 /// Payload of <c>Robot.ActionFailed</c>: the controller reported that it could not run an action and stopped. The state is
-/// where the robot really is; actions issued after the failed one were not executed.
+/// where the robot really is; actions issued after the failed one were cancelled (never executed) and are listed.
 /// </summary>
 public sealed class ActionFailedArgs : MachinaEventArgs
 {
-    /// <summary>Creates the payload.</summary>
-    public ActionFailedArgs(ActionFailedException failure, RobotState state) : base(state)
+    /// <summary>Creates the payload, with no cancelled actions.</summary>
+    public ActionFailedArgs(ActionFailedException failure, RobotState state) : this(failure, [], state)
+    {
+    }
+
+    /// <summary>Creates the payload; <paramref name="cancelledActions"/> are the actions after the failed one that will never run.</summary>
+    public ActionFailedArgs(ActionFailedException failure, IReadOnlyList<RobotAction> cancelledActions, RobotState state) : base(state)
     {
         Failure = failure ?? throw new ArgumentNullException(nameof(failure));
+        CancelledActions = cancelledActions ?? throw new ArgumentNullException(nameof(cancelledActions));
     }
 
     /// <summary>The failure: the action, the controller's reason and code.</summary>
@@ -22,6 +28,12 @@ public sealed class ActionFailedArgs : MachinaEventArgs
 
     /// <summary>What the controller said, in its own words.</summary>
     public string Reason => Failure.ControllerReason;
+
+    /// <summary>
+    /// Actions issued after the failed one, oldest first: they were cancelled (sent ones were dropped by the stopped
+    /// controller, waiting ones were never sent) and will never run or be reported executed. Issue them again if you want them.
+    /// </summary>
+    public IReadOnlyList<RobotAction> CancelledActions { get; }
 
     /// <inheritdoc/>
     public override string ToJsonString()
@@ -39,7 +51,16 @@ public sealed class ActionFailedArgs : MachinaEventArgs
         {
             AppendJsonString(sb, Failure.ControllerCode);
         }
-        sb.Append(',');
+        sb.Append(",\"cancelled\":[");
+        for (int i = 0; i < CancelledActions.Count; i++)
+        {
+            if (i > 0)
+            {
+                sb.Append(',');
+            }
+            sb.Append(Num.I(CancelledActions[i].Id));
+        }
+        sb.Append("],");
         AppendPose(sb);
         return sb.Append('}').ToString();
     }

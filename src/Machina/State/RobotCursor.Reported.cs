@@ -32,4 +32,19 @@ internal sealed partial class RobotCursor
         Axes = axes;
         ExternalAxesCartesian = externalAxes;
     }
+
+    /// <summary>
+    /// Puts the pose where a controller last reported the robot, keeping every setting (speed, tool, frame…): used when the
+    /// controller stopped before reaching the target the cursor holds. External axes change only when reported.
+    /// </summary>
+    internal void StopAtReported(Vector position, Rotation rotation, Joints axes, ExternalAxes? externalAxes)
+    {
+        Position = PrevPosition = position;
+        Rotation = PrevRotation = rotation;
+        Axes = PrevAxes = axes;
+        if (externalAxes is not null)
+        {
+            ExternalAxesCartesian = externalAxes;
+        }
+    }
 }

@@ -1,0 +1,97 @@
+namespace Machina;
+
+internal sealed partial class OnlineSession
+{
+    /// <summary>The controller's last reported failure, until the next connection: a wait with nothing pending reports it.</summary>
+    private ActionFailedException? _failure;
+
+    /// <summary>True once the current link reported a live pose (the motion cursor then says where the robot really is).</summary>
+    private bool _liveOnLink;
+
+    /// <summary>A failure reported by a driver (wire id): applied under the issue lock and the session lock, then the link is closed.</summary>
+    private void OnFailed(Connection link, int wireId, string reason, string? code)
+    {
+        MachinaException? unknown = null;
+        bool failed = false;
+        _host.WithIssueCursor(issue =>
+        {
+            lock (_gate)
+            {
+                if (ReferenceEquals(_link, link))
+                {
+                    unknown = Fail(link, wireId, reason, code, issue);
+                    failed = unknown is null;
+                }
+            }
+        });
+        if (unknown is not null)
+        {
+            Fault(link, unknown);
+        }
+        else if (failed)
+        {
+            _ = CloseQuietlyAsync(link.Driver);
+        }
+    }
+
+    /// <summary>
+    /// Applies a failure (under both locks): what was released before the failed action ran, the failed action raises
+    /// <c>ActionFailed</c>, everything after it is cancelled, the cursors go back to where the robot is, waiters fail and the
+    /// link is forgotten (the controller's program stopped). Returns a link fault instead when no action waits with that id.
+    /// </summary>
+    private MachinaException? Fail(Connection link, int wireId, string reason, string? code, RobotCursor issue)
+    {
+        int found = -1, index = 0;
+        foreach (InFlight f in _inFlight)
+        {
+            if (f.Acked && link.Driver.WireId(f.Action.Id) == wireId)
+            {
+                found = index;
+                break;
+            }
+            index++;
+        }
+        if (found < 0)
+        {
+            return new RobotConnectionException(
+                $"The controller reported that it could not run action {wireId}, which is not waiting for execution: {reason}", code);
+        }
+        var ran = new List<InFlight>(found);
+        for (int i = 0; i < found; i++)
+        {
+            ran.Add(_inFlight.Dequeue());
+        }
+        RobotAction failedAction = _inFlight.Dequeue().Action;
+        var cancelled = new List<RobotAction>(_inFlight.Count + _buffer.Count);
+        cancelled.AddRange(_inFlight.Select(f => f.Action));
+        cancelled.AddRange(_buffer);
+        _inFlight.Clear();
+        _buffer.Clear();
+        for (int i = 0; i < ran.Count; i++)
+        {
+            int after = ran.Count - 1 - i;
+            Execute(ran[i], after, after);
+        }
+        if (_liveOnLink && _motion is { Position: Vector at, Rotation: Rotation facing, Axes: Joints axes } live)
+        {
+            _execution.StopAtReported(at, facing, axes, live.ExternalAxesCartesian);
+        }
+        _release.CopyFrom(_execution);
+        issue.CopyFrom(_execution);
+
+        var failure = new ActionFailedException(failedAction, reason, code);
+        _failure = failure;
+        Detach(failure);
+        _host.Logger.Error($"\"{_host.Name}\" stopped: {failure.Message} {cancelled.Count} actions after it were cancelled; the link is closed. "
+            + "Connect again to go on from where the robot is.");
+        if (_host.IsListening(OnlineEvent.Failed))
+        {
+            _events.Post(new ActionFailedArgs(failure, cancelled, _execution.Snapshot()));
+        }
+        if (_host.IsListening(OnlineEvent.StopChanged))
+        {
+            _events.Post(new ControllerStoppedArgs(true, failure, [], _execution.Snapshot()));
+        }
+        return null;
+    }
+}
