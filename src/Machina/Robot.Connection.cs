@@ -3,7 +3,7 @@ namespace Machina;
 public sealed partial class Robot
 {
     private readonly ReleaseWindow _window = new();
-    private IActionStream? _online;
+    /// <summary>The online session while the robot is online (null offline); set under the issue lock, where actions are issued into it.</summary>
     private OnlineSession? _session;
     private ControlType _controlType = ControlType.Offline;
 
@@ -117,7 +117,6 @@ public sealed partial class Robot
             {
                 ThrowIfDisposed("go online");   // again under the lock: a robot disposed meanwhile never gets a session
                 _session = new OnlineSession(this, _issueCursor, _window, factory, brand, Time);
-                _online = _session;
             }
         }
         else
@@ -127,7 +126,6 @@ public sealed partial class Robot
             {
                 old = _session;
                 _session = null;
-                _online = null;
             }
             int dropped = old?.GetPendingActions().Count ?? 0;
             if (dropped > 0)

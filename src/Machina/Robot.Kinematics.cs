@@ -63,7 +63,7 @@ public sealed partial class Robot
         }
         lock (_issueLock)
         {
-            if (_online is not null)
+            if (_session is not null)
             {
                 throw new InvalidOperationException("The robot model must be chosen before connecting to the controller (the stream keeps its own copy of the state).");
             }

@@ -26,7 +26,7 @@ public sealed partial class Robot
         trial.Strict = _issueCursor.Strict;
         foreach (RobotAction action in actions)
         {
-            if ((_online?.WhyCannotStream(action) ?? trial.TryApply(action) ?? _online?.WhyCannotSend(action, trial)) is string refusal)
+            if ((_session?.WhyCannotStream(action) ?? trial.TryApply(action) ?? _session?.WhyCannotSend(action, trial)) is string refusal)
             {
                 throw new ActionRefusedException(action, refusal);
             }

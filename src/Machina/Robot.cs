@@ -154,14 +154,14 @@ public sealed partial class Robot : IOnlineHost
             action = action.CloneUnissued();
             action.Id = _nextId;
         }
-        string? refusal = _online?.WhyCannotStream(action);
+        string? refusal = _session?.WhyCannotStream(action);
         if (refusal is not null)
         {
             action.Id = -1;
             Logger.Warning($"Refused {action.ToInstruction()}: {refusal}");
             throw new ActionRefusedException(action, refusal);
         }
-        if (_online is not null)
+        if (_session is not null)
         {
             // What is sent is read from the state after the action: keep the state before it, to undo an action the wire cannot carry.
             _undoCursor.CopyFrom(_issueCursor);
@@ -175,7 +175,7 @@ public sealed partial class Robot : IOnlineHost
             action.Id = -1;
             throw;
         }
-        if (refusal is null && _online?.WhyCannotSend(action, _issueCursor) is string unsendable)
+        if (refusal is null && _session?.WhyCannotSend(action, _issueCursor) is string unsendable)
         {
             _issueCursor.CopyFrom(_undoCursor);
             refusal = unsendable;
@@ -195,10 +195,10 @@ public sealed partial class Robot : IOnlineHost
         // even when another thread issues the next action before the handlers run.
         string? report = Logger.IsEnabled(LogLevel.VERBOSE) && action.IsRelative ? StateReport() : null;
         ActionIssuedArgs? issued = ActionIssued is not null ? new ActionIssuedArgs(action, _issueCursor.Snapshot()) : null;
-        if (_online is not null)
+        if (_session is not null)
         {
             // Online, the stream raises ActionIssued on its event loop, before any later event about this action.
-            _online.Enqueue(action, issued);
+            _session.Enqueue(action, issued);
             issued = null;
         }
         else

@@ -25,10 +25,19 @@ internal sealed class EventPump
     internal bool IsRaisingOnCurrentThread => Volatile.Read(ref _raisingThread) == Environment.CurrentManagedThreadId;
 
     /// <summary>Queues an event.</summary>
-    internal void Post(MachinaEventArgs args) => _queue.Writer.TryWrite(new Item(args, null, null));
+    internal void Post(MachinaEventArgs args) => _queue.Writer.TryWrite(new Item(args, null, null, null));
 
     /// <summary>Completes (or fails, when <paramref name="error"/> is set) a waiting task after every event queued so far was raised.</summary>
-    internal void PostSignal(TaskCompletionSource signal, Exception? error) => _queue.Writer.TryWrite(new Item(null, signal, error));
+    internal void PostSignal(TaskCompletionSource signal, Exception? error) => _queue.Writer.TryWrite(new Item(null, signal, error, null));
+
+    /// <summary>Queues a log entry: the log's sinks and handlers run on this loop, in order with the events (dropped once stopped).</summary>
+    internal void PostLog(RobotLogger logger, LogLevel level, string message)
+    {
+        if (logger.IsEnabled(level))
+        {
+            _queue.Writer.TryWrite(new Item(null, null, null, new LogLine(logger, level, message)));
+        }
+    }
 
     /// <summary>
     /// Stops the loop after raising what is queued (<paramref name="raiseQueued"/>) or after the handler running now (the
@@ -50,6 +59,12 @@ internal sealed class EventPump
             {
                 item.Signal?.TrySetCanceled();
             }
+            else if (item.Log is { } line)
+            {
+                Volatile.Write(ref _raisingThread, Environment.CurrentManagedThreadId);
+                line.Logger.Write(line.Level, line.Message);
+                Volatile.Write(ref _raisingThread, -1);
+            }
             else if (item.Args is not null)
             {
                 Volatile.Write(ref _raisingThread, Environment.CurrentManagedThreadId);
@@ -67,5 +82,7 @@ internal sealed class EventPump
         }
     }
 
-    private readonly record struct Item(MachinaEventArgs? Args, TaskCompletionSource? Signal, Exception? Error);
+    private readonly record struct Item(MachinaEventArgs? Args, TaskCompletionSource? Signal, Exception? Error, LogLine? Log);
+
+    private sealed record LogLine(RobotLogger Logger, LogLevel Level, string Message);
 }

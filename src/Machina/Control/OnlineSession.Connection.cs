@@ -112,6 +112,10 @@ internal sealed partial class OnlineSession
                     }
                     else if (earlyFault is null)
                     {
+                        if (link.EarlyMotion is MotionSample motion)
+                        {
+                            OnMotion(link, motion); // the monitor reported before the link became current (ABB, KUKA; UR's RTDE)
+                        }
                         if (link.EarlyStop is MachinaException stop)
                         {
                             OnStopped(link, stop); // stopped while connecting (UR: RTDE showed it before the link became current)
@@ -131,7 +135,7 @@ internal sealed partial class OnlineSession
             await driver.DisposeAsync().ConfigureAwait(false);
             throw new RobotConnectionException(refusal);
         }
-        _host.Logger.Info($"Connected to {_host.Brand} robot \"{_host.Name}\" on {driver.RemoteAddress} (driver {handshake.Version}).");
+        Log(LogLevel.INFO, $"Connected to {_host.Brand} robot \"{_host.Name}\" on {driver.RemoteAddress} (driver {handshake.Version}).");
         if (earlyFault is not null)
         {
             Fault(link, earlyFault);
@@ -158,7 +162,7 @@ internal sealed partial class OnlineSession
             }
             else
             {
-                _host.Logger.Warning($"Dropped the waiting action {action.ToInstruction()} (id {action.Id}): {refusal}");
+                Log(LogLevel.WARNING, $"Dropped the waiting action {action.ToInstruction()} (id {action.Id}): {refusal}");
             }
         }
     }
@@ -177,7 +181,7 @@ internal sealed partial class OnlineSession
             Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
         }
         await link.Driver.DisposeAsync().ConfigureAwait(false);
-        _host.Logger.Info($"Disconnected from {_host.Brand} robot \"{_host.Name}\".");
+        Log(LogLevel.INFO, $"Disconnected from {_host.Brand} robot \"{_host.Name}\".");
     }
 
     /// <summary>
@@ -210,7 +214,7 @@ internal sealed partial class OnlineSession
             }
             Detach(error);
             _lastFault = error;
-            _host.Logger.Error($"Connection to \"{_host.Name}\" lost: {error.Message}");
+            Log(LogLevel.ERROR, $"Connection to \"{_host.Name}\" lost: {error.Message}");
             if (_host.IsListening(OnlineEvent.ConnectionLost))
             {
                 _events.Post(new ConnectionLostArgs(error, PendingList(), _execution.Snapshot()));
@@ -311,7 +315,7 @@ internal sealed partial class OnlineSession
                 _events.PostSignal(_completion, reason);
                 _completion = null;
             }
-            _host.Logger.Error($"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
+            Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
             if (_host.IsListening(OnlineEvent.StopChanged))
             {
                 _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
@@ -331,7 +335,7 @@ internal sealed partial class OnlineSession
             _state = ConnectionState.Connected;
             _stopReason = null;
             _lastProgress = _time.GetTimestamp();
-            _host.Logger.Info($"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
+            Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
             if (_host.IsListening(OnlineEvent.StopChanged))
             {
                 _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
@@ -408,94 +412,6 @@ internal sealed partial class OnlineSession
         if (fault is not null)
         {
             Fault(link, fault);
-        }
-    }
-
-    /// <summary>One connection: routes a driver's reports to the session, ignoring them once the connection is replaced.</summary>
-    private sealed class Connection(OnlineSession session, IDeviceDriver driver) : IDeviceListener
-    {
-        internal IDeviceDriver Driver { get; } = driver;
-
-        /// <summary>Set once the handshake is done and the cursors are initialised.</summary>
-        internal bool IsReady { get; set; }
-
-        /// <summary>A fault reported before the connection became current.</summary>
-        internal MachinaException? EarlyFault { get; private set; }
-
-        /// <summary>Acknowledgements that arrived before the connection became current (controller ids), in order.</summary>
-        internal List<int>? Early { get; set; }
-
-        public void OnAcknowledged(int id)
-        {
-            lock (session._gate)
-            {
-                if (!IsReady)
-                {
-                    (Early ??= []).Add(id);
-                    return;
-                }
-            }
-            session.OnAcknowledged(this, id);
-        }
-
-        public void OnMotion(in MotionSample sample) => session.OnMotion(this, sample);
-
-        /// <summary>A stop reported before the connection became current and not followed by a resume; applied once it is.</summary>
-        internal MachinaException? EarlyStop { get; private set; }
-
-        public void OnStopped(MachinaException reason)
-        {
-            lock (session._gate)
-            {
-                if (!IsReady)
-                {
-                    EarlyStop = reason;
-                    return;
-                }
-            }
-            session.OnStopped(this, reason);
-        }
-
-        public void OnResumed()
-        {
-            lock (session._gate)
-            {
-                if (!IsReady)
-                {
-                    EarlyStop = null;
-                    return;
-                }
-            }
-            session.OnResumed(this);
-        }
-
-        /// <summary>A failure reported before the connection became current (wire id, reason, code); applied once it is.</summary>
-        internal (int Id, string Reason, string? Code)? EarlyFailure { get; private set; }
-
-        public void OnFailed(int id, string reason, string? code)
-        {
-            lock (session._gate)
-            {
-                if (!IsReady)
-                {
-                    EarlyFailure ??= (id, reason, code);
-                    return;
-                }
-            }
-            session.OnFailed(this, id, reason, code);
-        }
-
-        public void OnFault(MachinaException error)
-        {
-            lock (session._gate)
-            {
-                if (!IsReady)
-                {
-                    EarlyFault ??= error;
-                    return;
-                }
-            }
-            session.Fault(this, error);
         }
     }
 }

@@ -41,7 +41,7 @@ internal sealed partial class OnlineSession
         }
         if (_inFlight.Count > 0)
         {
-            _host.Logger.Warning(progress is null
+            Log(LogLevel.WARNING, progress is null
                 ? $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {_inFlight.Count} actions sent "
                     + "before the connection was lost are sent again, and any the robot already ran will run twice."
                 : $"The controller does not know the {_inFlight.Count} actions sent before the connection was lost (a restarted driver or another "
@@ -96,11 +96,11 @@ internal sealed partial class OnlineSession
         }
         var resend = remaining.Skip(heldCount).Select(f => f.Action).ToList();
         PutBackInFront(resend);
-        _host.Logger.Info($"Resumed where the controller is: {executedCount} actions ran while disconnected, {heldCount} are still on the controller, "
+        Log(LogLevel.INFO, $"Resumed where the controller is: {executedCount} actions ran while disconnected, {heldCount} are still on the controller, "
             + $"{resend.Count} are sent again.");
         if (heldCount == 0 && handshake.Position is Vector at && _execution.Position is Vector expected && Vector.Distance(at, expected) > 1)
         {
-            _host.Logger.Warning($"The robot is at {at}, {Num.F(Vector.Distance(at, expected), 1)} mm from where its last action left it: "
+            Log(LogLevel.WARNING, $"The robot is at {at}, {Num.F(Vector.Distance(at, expected), 1)} mm from where its last action left it: "
                 + "it was moved while disconnected. The remaining actions keep their targets.");
         }
     }

@@ -272,7 +272,7 @@ internal sealed partial class OnlineSession : IActionStream
         string? refusal = _execution.TryApply(entry.Action);
         if (refusal is not null)
         {
-            _host.Logger.Error($"The execution state could not follow {entry.Action.ToInstruction()}: {refusal}");
+            Log(LogLevel.ERROR, $"The execution state could not follow {entry.Action.ToInstruction()}: {refusal}");
         }
         if (_host.IsListening(OnlineEvent.Executed))
         {
@@ -288,6 +288,12 @@ internal sealed partial class OnlineSession : IActionStream
             _completion = null;
         }
     }
+
+    /// <summary>
+    /// Writes to the robot's log from the event loop, after the events queued so far: log sinks are user code, so they never
+    /// run under the session's or the robot's locks, nor on a driver's loops.
+    /// </summary>
+    private void Log(LogLevel level, string message) => _events.PostLog(_host.Logger, level, message);
 
     /// <summary>Completes once every event queued so far was raised.</summary>
     internal Task FlushEventsAsync()
