@@ -21,6 +21,8 @@ internal sealed class ControllerActivity : IAsyncDisposable
     private readonly Task _loop;
     private int _received;
     private int _executed;
+    private int _idsSeen;
+    private int? _lastId;
     private int _pendant;
     private int _errors;
     private IReadOnlyDictionary<string, bool> _digital = new Dictionary<string, bool>();
@@ -75,12 +77,13 @@ internal sealed class ControllerActivity : IAsyncDisposable
             }
             _received = now.RequestsReceived;
             int newExecuted = now.RequestsExecuted - _executed;
-            if (newExecuted > 0)
+            int[] ids = NewIds(now.ExecutedIds);
+            if (newExecuted > 0 || ids.Length > 0)
             {
-                IEnumerable<int> ids = now.ExecutedIds.TakeLast(Math.Min(newExecuted, now.ExecutedIds.Count));
-                string ended = string.Join(", ", ids.Where(id => id > 0).Select(id => "#" + id.ToString(CultureInfo.InvariantCulture)));
-                _log($"  executed  {(ended.Length > 0 ? ended : newExecuted.ToString(CultureInfo.InvariantCulture) + " more")}; " +
-                    $"the tool is now at {now.Position} mm, the joints at {now.Joints} degrees");
+                string ended = ids.Length > 0
+                    ? string.Join(", ", ids.Select(id => "#" + id.ToString(CultureInfo.InvariantCulture)))
+                    : $"{newExecuted.ToString(CultureInfo.InvariantCulture)} request{(newExecuted == 1 ? "" : "s")} without an id";
+                _log($"  executed  {ended}; the tool is now at {now.Position} mm, the joints at {now.Joints} degrees");
             }
             _executed = now.RequestsExecuted;
             foreach ((string pin, bool on) in now.DigitalOutputs.OrderBy(p => p.Key, StringComparer.Ordinal))
@@ -104,6 +107,31 @@ internal sealed class ControllerActivity : IAsyncDisposable
                 _log($"  ERROR     {error}");
             }
         }
+    }
+
+    /// <summary>
+    /// The ids executed since the last look. The controller lists only requests with an id (a UR script's own requests have none)
+    /// and keeps the last <see cref="VirtualControllers.RequestsKept"/>: below that the list only grows; once full, the new ids
+    /// are those after the last one seen.
+    /// </summary>
+    private int[] NewIds(IReadOnlyList<int> ids)
+    {
+        int from = Math.Min(_idsSeen, ids.Count);
+        if (ids.Count >= VirtualControllers.RequestsKept && _lastId is int last)
+        {
+            from = 0;
+            for (int k = ids.Count - 1; k >= 0; k--)
+            {
+                if (ids[k] == last)
+                {
+                    from = k + 1;
+                    break;
+                }
+            }
+        }
+        _idsSeen = ids.Count;
+        _lastId = ids.Count > 0 ? ids[^1] : _lastId;
+        return [.. ids.Skip(from)];
     }
 
     /// <summary>The entries of a growing list not seen yet (the list keeps only its last entries: the count seen is capped).</summary>
