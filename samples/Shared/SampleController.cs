@@ -115,6 +115,18 @@ internal sealed class SampleController : IAsyncDisposable
         _ => null,
     };
 
+    /// <summary>
+    /// The arm of the virtual controller (null for a real controller: give your robot's model yourself). A robot created with it
+    /// knows its pose after joint moves and its joints after Cartesian moves.
+    /// </summary>
+    public RobotModel? Model => _simulator switch
+    {
+        VirtualAbbController abb => abb.Model,
+        VirtualUrController ur => ur.Model,
+        VirtualKukaController kuka => kuka.Model,
+        _ => null,
+    };
+
     /// <summary>Stops the virtual controller, if one was started.</summary>
     public ValueTask DisposeAsync() => _simulator?.DisposeAsync() ?? ValueTask.CompletedTask;
 }

@@ -90,7 +90,7 @@ public sealed partial class Robot
 
     /// <summary>
     /// Chooses offline (actions are compiled) or online (actions are streamed to a controller after <see cref="Connect(string, int)"/>).
-    /// Online control is available for ABB robots. Disconnect before changing the mode of a connected robot.
+    /// Online control is available for ABB, UR and KUKA robots. Disconnect before changing the mode of a connected robot.
     /// </summary>
     /// <returns>True when the mode is set.</returns>
     public bool ControlMode(ControlType mode)
@@ -150,9 +150,16 @@ public sealed partial class Robot
         {
             return true;
         }
-        Logger.Warning("Machina cannot load the driver on the controller itself in this version; load it with GetDeviceDriverModules and connect as User.");
+        Logger.Warning(MachinaManagerRefused);
         return false;
     }
+
+    /// <summary>The warning for ConnectionManager("machina"): what to do instead, and where it is explained.</summary>
+    internal const string MachinaManagerRefused =
+        "ConnectionManager(\"machina\") is not available, so nothing changed: Machina does not load or start the driver on an ABB or " +
+        "KUKA controller. Load and start the driver by hand (its files come from \"machina drivers\" or GetDeviceDriverModules), " +
+        "then Connect; on a UR there is nothing to load, Connect sends the driver script itself. " +
+        "See docs/migrating.md#the-driver-is-loaded-by-hand.";
 
     /// <summary>Same as <see cref="ConnectionManager(ConnectionType)"/> with "user" or "machina" (any letter case).</summary>
     public bool ConnectionManager(string type) => ConnectionManager(EnumText.Parse<ConnectionType>(type, "connection type"));

@@ -14,7 +14,9 @@ internal static class CheckCommand
 
         Follows PROGRAM (a text file of Machina instructions, - for standard input) with the kinematics of the arm model M
         and reports, for every motion, whether the arm can do it: reach, joint limits, wrist/elbow/shoulder singularities,
-        configuration flips on straight lines, and joint speeds at the programmed speed. Nothing is written or moved.
+        configuration flips on straight lines, and joint speeds at the programmed speed. For a program file it also reports,
+        at their lines, the warnings of the model's brand compiler (e.g. a UR blend radius larger than half a motion).
+        Nothing is written or moved.
 
         Options:
           --model M          the arm model, e.g. "IRB 120", UR5e, "KR 6 R700 sixx" (machina models lists them)
@@ -39,6 +41,7 @@ internal static class CheckCommand
             "configuration flips and joint speeds.").ConfigureAwait(false);
         await output.WriteLineAsync().ConfigureAwait(false);
         await output.WriteLineAsync("   LINE:COL RESULT   INSTRUCTION").ConfigureAwait(false);
+        Dictionary<(int Line, int Column), List<string>> brandWarnings = BrandWarnings(reader.FilePath, model, context.Cancellation);
         var replay = new ProgramReplay(model);
         var problems = new List<string>();
         int motions = 0, withProblems = 0, refused = 0, refusedMotions = 0;
@@ -46,6 +49,10 @@ internal static class CheckCommand
         foreach (ProgramStatement statement in reader.Read(context.Cancellation))
         {
             string? refusal = replay.Apply(statement.Action, problems);
+            if (refusal is null && brandWarnings.TryGetValue((statement.Line, statement.Column), out List<string>? warnings))
+            {
+                problems.AddRange(warnings);
+            }
             bool motion = ProgramReplay.IsMotion(statement.Action);
             motions += motion ? 1 : 0;
             string where = string.Create(CultureInfo.InvariantCulture, $"{statement.Line,7}:{statement.Column,-3}");
@@ -76,5 +83,44 @@ internal static class CheckCommand
         await output.WriteLineAsync($"{motions} motion{(motions == 1 ? "" : "s")} checked: {fine} ok, {withProblems} with problems, {refused} refused" +
             $" (of {replay.Count + refused} actions).").ConfigureAwait(false);
         return refused == 0 && !anyProblem ? ExitCodes.Ok : ExitCodes.Failed;
+    }
+
+    /// <summary>
+    /// The warnings of the model's brand compiler that are not kinematic (those the replay finds itself), by the line and column of
+    /// their statement: the file is compiled into a temporary folder, deleted afterwards. None for standard input, for a model of no
+    /// compiled brand, or when the program does not compile (the replay then reports the statement at fault).
+    /// </summary>
+    private static Dictionary<(int Line, int Column), List<string>> BrandWarnings(string? file, RobotModel model, CancellationToken cancellation)
+    {
+        var byStatement = new Dictionary<(int Line, int Column), List<string>>();
+        if (file is null || !Enum.TryParse(model.Brand, ignoreCase: true, out RobotType brand) || brand is not (RobotType.ABB or RobotType.UR or RobotType.KUKA))
+        {
+            return byStatement;
+        }
+        string folder = Directory.CreateTempSubdirectory("machina-check-").FullName;
+        try
+        {
+            FolderCompileResult result = Instructions.CompileToFolder(file, brand, folder, model: model, cancellationToken: cancellation);
+            foreach (ProgramWarning warning in result.Warnings)
+            {
+                if (warning.Kind is null && warning.Line is int line && warning.Column is int column)
+                {
+                    if (!byStatement.TryGetValue((line, column), out List<string>? list))
+                    {
+                        byStatement[(line, column)] = list = [];
+                    }
+                    list.Add($"{brand}: {warning.Message}");
+                }
+            }
+        }
+        catch (InstructionParseException)
+        {
+            // The replay meets the same statement and reports it.
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+        return byStatement;
     }
 }

@@ -12,13 +12,18 @@ internal static class DriversCommand
         Usage: machina drivers abb|ur|kuka --host H --port P --out DIR
 
         Writes the files of Machina's driver, the program that runs on the robot controller and receives the streamed
-        actions, with the controller's address and port filled in. Load them on the controller and start them before
-        "machina run --host H --port P".
+        actions, with the address and port filled in, and says what to do with them:
+          abb   load the driver into the motion task and start it, then "machina run --host H --port P"
+          kuka  copy the KRL and EthernetKRL files to the controller, start the driver in T1, then "machina run --host H --port P"
+          ur    nothing to load: "machina run" sends the script itself to the robot's script port (30003); the file is
+                only for reading
 
         Options:
-          --host H   the address the driver listens on: the controller's own address, e.g. 192.168.125.1
-                     (ABB service port) or 127.0.0.1 (RobotStudio's virtual controller)
-          --port P   the port the driver listens on (ABB: also P + 1 for the monitor), e.g. 7000
+          --host H   ABB and KUKA: the address the driver listens on, the controller's own address, e.g. 192.168.125.1
+                     (ABB service port) or 127.0.0.1 (RobotStudio's virtual controller); UR: the computer's address
+                     the script connects back to (Machina fills it in itself when it sends the script)
+          --port P   ABB and KUKA: the port the driver listens on (also P + 1 for the monitor), e.g. 7000 or 54600;
+                     UR: the computer's port the script connects back to
           --out DIR  the folder to write into (created if needed)
 
         Example:
@@ -62,8 +67,25 @@ internal static class DriversCommand
             await File.WriteAllTextAsync(path, text, context.Cancellation).ConfigureAwait(false);
             await context.Stdout.WriteLineAsync(CompileCommand.Display(path, context)).ConfigureAwait(false);
         }
-        await context.Stderr.WriteLineAsync($"Wrote {files.Count} {brand} driver files for {host}:{port}. Load them on the controller and start them, " +
-            $"then: machina run PROGRAM --brand {Brands.Name(brand)} --host {host} --port {port}").ConfigureAwait(false);
+        await context.Stderr.WriteLineAsync(NextSteps(brand, files.Count, host, port)).ConfigureAwait(false);
         return ExitCodes.Ok;
     }
+
+    /// <summary>What the brand really needs once the files are written (docs/getting-started.md, "Load the driver on the controller").</summary>
+    internal static string NextSteps(RobotType brand, int fileCount, string host, int port) => brand switch
+    {
+        RobotType.ABB => $"Wrote {fileCount} ABB driver files for {host}:{port}. With RobotStudio or the FlexPendant, load machina_abb_driver.mod " +
+            $"into the motion task T_ROB1 and start it in manual reduced speed: it listens on {host}:{port}. For live positions, load " +
+            $"machina_abb_monitor.mod into a second task, T_MACHINA_MONITOR (Multitasking option 623-1); it uses port {port + 1}. " +
+            $"Then: machina run PROGRAM --brand abb --host {host} --port {port}",
+        RobotType.KUKA => $"Wrote {fileCount} KUKA driver files for {host}:{port} (needs the KUKA.EthernetKRL option). Copy the .xml files to " +
+            @"C:\KRC\ROBOTER\Config\User\Common\EthernetKRL and the .src and .dat files to R1\Program; for live positions add " +
+            $"machina_kuka_monitor( ) to the USER PLC fold of sps.sub (it uses port {port + 1}; flags 1 to 3 and timer 16 must be free). " +
+            $"Select machina_kuka_driver and start it in T1: it listens on {host}:{port}. Then: machina run PROGRAM --brand kuka --host {host} --port {port}",
+        RobotType.UR => $"Wrote {fileCount} UR driver file{(fileCount == 1 ? "" : "s")} for reading, filled in with {host}:{port} as the computer it connects back to. " +
+            "Nothing to load on a UR: machina run sends this script to the robot's script port itself, with this computer's address " +
+            "and a free port filled in. Give the robot a fixed address the computer can reach (and that can reach the computer), put " +
+            "an e-Series robot in remote control, then: machina run PROGRAM --brand ur --host ROBOT_ADDRESS --port 30003",
+        _ => throw new ArgumentOutOfRangeException(nameof(brand), brand, "Only ABB, KUKA and UR have drivers."),
+    };
 }

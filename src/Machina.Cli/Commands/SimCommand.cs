@@ -17,15 +17,18 @@ internal static class SimCommand
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
-        definition, your own script. Every request it receives is printed, one line each.
+        definition, your own script. It tells what the controller does: connections, the driver program starting and
+        stopping, each request it accepts (its own reading of the instruction), where the robot is after the actions it
+        finishes, output changes, pendant messages and errors.
         Available in this build: {VirtualControllers.AvailableNames}.
 
         Options:
-          --port P          the port hosts connect to (default {DefaultPort}; ABB also uses P + 1 for its monitor; 0 picks a free one)
+          --port P          the port hosts connect to (default {DefaultPort}; 0 picks a free one). ABB and KUKA: the driver's port,
+                            P + 1 the monitor's; UR: the script port, P + 1 RTDE and P + 2 the dashboard
           --bind ADDRESS    the address to listen on (default 127.0.0.1, this computer only; 0.0.0.0 for every network)
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
-          --quiet           do not print every request, only connections
+          --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
 
         Example:
           machina sim abb --port 7000
@@ -51,7 +54,7 @@ internal static class SimCommand
         var gate = new Lock();
         void Log(string line)
         {
-            if (quiet && line.StartsWith("  #", StringComparison.Ordinal))
+            if (quiet && (line.StartsWith("  received", StringComparison.Ordinal) || line.StartsWith("  executed", StringComparison.Ordinal)))
             {
                 return;
             }
@@ -64,8 +67,8 @@ internal static class SimCommand
 
         await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model), context.Cancellation).ConfigureAwait(false);
         await using TcpRelay relay = TcpRelay.Start(bind, port, controller, Log);
-        string ports = string.Join(", ", controller.PortOffsets.Skip(1).Select(o => (relay.Port + o).ToString(System.Globalization.CultureInfo.InvariantCulture)));
-        Log($"Virtual {brand} controller listening on {bind}:{relay.Port}" + (ports.Length > 0 ? $" (monitor on {ports})" : "") +
+        await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
+        Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(controller, relay.Port)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +
             $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {relay.Port}");
@@ -77,8 +80,17 @@ internal static class SimCommand
         catch (OperationCanceledException)
         {
         }
+        activity.Flush();
         Log($"Stopping: {controller.Summary()}.");
         return ExitCodes.Ok;
+    }
+
+    /// <summary>Every port named for what it is, e.g. "(script port; RTDE on 7001, dashboard on 7002)".</summary>
+    internal static string Ports(RunningController controller, int port)
+    {
+        string others = string.Join(", ", controller.PortOffsets.Skip(1).Select((offset, i) =>
+            $"{controller.PortNames[i + 1]} on {(port + offset).ToString(System.Globalization.CultureInfo.InvariantCulture)}"));
+        return $"({controller.PortNames[0]} port{(others.Length > 0 ? "; " + others : "")})";
     }
 
     private static string Num(double value) => value.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture);

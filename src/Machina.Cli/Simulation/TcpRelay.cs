@@ -1,40 +1,34 @@
 using System.Net;
 using System.Net.Sockets;
-using System.Text;
 
 namespace Machina.Cli.Simulation;
 
 /// <summary>
 /// Makes a virtual controller reachable at the address and port a user chose (<c>machina sim --bind --port</c>): listens there and
-/// passes bytes both ways to the controller on 127.0.0.1, and logs every request a host sends, one line each.
+/// passes bytes both ways to the controller on 127.0.0.1, and logs each connection (what the controller does is told by
+/// <see cref="ControllerActivity"/> from the controller itself, not from the bytes: a UR driver script is not a list of requests).
 /// </summary>
 internal sealed class TcpRelay : IAsyncDisposable
 {
     private const int MaxPortAttempts = 50;
     private readonly List<TcpListener> _listeners;
     private readonly int _targetPort;
-    private readonly char _statementEnd;
     private readonly Action<string> _log;
     private readonly CancellationTokenSource _stopping = new();
     private readonly List<Task> _tasks = [];
     private readonly Lock _gate = new();
     private readonly List<TcpClient> _clients = [];
-    private int _received;
 
-    private TcpRelay(List<TcpListener> listeners, int targetPort, char statementEnd, Action<string> log)
+    private TcpRelay(List<TcpListener> listeners, int targetPort, Action<string> log)
     {
         _listeners = listeners;
         _targetPort = targetPort;
-        _statementEnd = statementEnd;
         _log = log;
         Port = ((IPEndPoint)listeners[0].LocalEndpoint).Port;
     }
 
     /// <summary>The first port listened on (the others follow at the controller's offsets).</summary>
     internal int Port { get; }
-
-    /// <summary>How many requests hosts have sent so far.</summary>
-    internal int Received => Volatile.Read(ref _received);
 
     /// <summary>
     /// Listens on <paramref name="address"/> at <paramref name="port"/> (0: the system chooses) plus each of the controller's port
@@ -44,7 +38,7 @@ internal sealed class TcpRelay : IAsyncDisposable
     internal static TcpRelay Start(IPAddress address, int port, RunningController controller, Action<string> log)
     {
         List<TcpListener> listeners = Listen(address, port, controller.PortOffsets);
-        var relay = new TcpRelay(listeners, controller.Port, controller.StatementEnd, log);
+        var relay = new TcpRelay(listeners, controller.Port, log);
         for (int i = 0; i < listeners.Count; i++)
         {
             int offset = controller.PortOffsets[i];
@@ -125,8 +119,8 @@ internal sealed class TcpRelay : IAsyncDisposable
             await upstream.ConnectAsync(IPAddress.Loopback, _targetPort + offset, token).ConfigureAwait(false);
             _log($"{who} connected ({what})");
             using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
-            Task toController = PumpAsync(client.GetStream(), upstream.GetStream(), log: offset == 0, both.Token);
-            Task toHost = PumpAsync(upstream.GetStream(), client.GetStream(), log: false, both.Token);
+            Task toController = PumpAsync(client.GetStream(), upstream.GetStream(), both.Token);
+            Task toHost = PumpAsync(upstream.GetStream(), client.GetStream(), both.Token);
             await Task.WhenAny(toController, toHost).ConfigureAwait(false);
             await both.CancelAsync().ConfigureAwait(false);
             await Task.WhenAll(toController, toHost).ConfigureAwait(false);
@@ -148,10 +142,9 @@ internal sealed class TcpRelay : IAsyncDisposable
         }
     }
 
-    private async Task PumpAsync(NetworkStream from, NetworkStream to, bool log, CancellationToken token)
+    private static async Task PumpAsync(NetworkStream from, NetworkStream to, CancellationToken token)
     {
         var buffer = new byte[8192];
-        var statement = new StringBuilder();
         try
         {
             while (true)
@@ -162,36 +155,10 @@ internal sealed class TcpRelay : IAsyncDisposable
                     return;
                 }
                 await to.WriteAsync(buffer.AsMemory(0, n), token).ConfigureAwait(false);
-                if (log)
-                {
-                    LogStatements(buffer.AsSpan(0, n), statement);
-                }
             }
         }
         catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
         {
-        }
-    }
-
-    private void LogStatements(ReadOnlySpan<byte> bytes, StringBuilder statement)
-    {
-        foreach (byte b in bytes)
-        {
-            char c = (char)b;
-            if (c == _statementEnd || c == '\n')
-            {
-                string text = statement.ToString().Trim();
-                statement.Clear();
-                if (text.Length > 0)
-                {
-                    int n = Interlocked.Increment(ref _received);
-                    _log($"  #{n} received {text}{(c == '\n' ? "" : c.ToString())}");
-                }
-            }
-            else if (!char.IsControl(c) || c == '\t')
-            {
-                statement.Append(c);
-            }
         }
     }
 

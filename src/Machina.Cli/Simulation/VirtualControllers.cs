@@ -8,7 +8,8 @@ namespace Machina.Cli.Simulation;
 internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null);
 
 /// <summary>A virtual controller listening on 127.0.0.1, until disposed.</summary>
-internal sealed class RunningController(RobotType brand, int port, int[] ports, string[] portNames, char statementEnd, Func<ValueTask> stop, Func<string> summary) : IAsyncDisposable
+internal sealed class RunningController(RobotType brand, int port, int[] ports, string[] portNames, Func<ValueTask> stop, Func<string> summary,
+    Func<ControllerView> look) : IAsyncDisposable
 {
     /// <summary>The brand whose driver it imitates.</summary>
     internal RobotType Brand { get; } = brand;
@@ -22,14 +23,14 @@ internal sealed class RunningController(RobotType brand, int port, int[] ports, 
     /// <summary>Every port it listens on, as offsets from <see cref="Port"/> (ABB: 0 for the driver, 1 for the monitor).</summary>
     internal int[] PortOffsets { get; } = ports;
 
-    /// <summary>What each port is for (ABB: "driver", "monitor"), in the order of <see cref="PortOffsets"/>.</summary>
+    /// <summary>What each port is for (ABB: "driver", "monitor"; UR: "script", "RTDE", "dashboard"), in the order of <see cref="PortOffsets"/>.</summary>
     internal string[] PortNames { get; } = portNames;
-
-    /// <summary>The character that ends one request of its protocol (ABB: ';'), for logging what it receives.</summary>
-    internal char StatementEnd { get; } = statementEnd;
 
     /// <summary>What it did: requests received and executed.</summary>
     internal string Summary() => summary();
+
+    /// <summary>What it shows of itself now: requests, executed actions, pendant, errors, robot and outputs.</summary>
+    internal ControllerView Look() => look();
 
     /// <summary>Stops it and closes its connections.</summary>
     public ValueTask DisposeAsync() => stop();
@@ -66,34 +67,40 @@ internal static class VirtualControllers
     {
         var controller = new VirtualAbbController(Settings(new VirtualAbbControllerOptions(), options));
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new RunningController(RobotType.ABB, controller.Port, [0, 1], ["driver", "monitor"], ';', controller.DisposeAsync,
-            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} malformed");
+        return new RunningController(RobotType.ABB, controller.Port, [0, 1], ["driver", "monitor"], controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} malformed",
+            () => ControllerView.Of(controller));
     }
 
     private static async Task<RunningController> StartUrAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
     {
         var controller = new VirtualUrController(Settings(new VirtualUrControllerOptions(), options));
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new RunningController(RobotType.UR, controller.Port, [0, 1, 2], ["script", "RTDE", "dashboard"], '\n', controller.DisposeAsync,
-            () => $"{controller.RequestsReceived} instructions received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
+        return new RunningController(RobotType.UR, controller.Port, [0, 1, 2], ["script", "RTDE", "dashboard"], controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} instructions received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused",
+            () => ControllerView.Of(controller));
     }
 
     private static async Task<RunningController> StartKukaAsync(VirtualControllerOptions options, CancellationToken cancellationToken)
     {
         var controller = new VirtualKukaController(Settings(new VirtualKukaControllerOptions(), options));
         await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new RunningController(RobotType.KUKA, controller.Port, [0, 1], ["driver", "monitor"], '>', controller.DisposeAsync,
-            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused");
+        return new RunningController(RobotType.KUKA, controller.Port, [0, 1], ["driver", "monitor"], controller.DisposeAsync,
+            () => $"{controller.RequestsReceived} requests received, {controller.RequestsExecuted} executed, {controller.Errors.Count} refused",
+            () => ControllerView.Of(controller));
     }
 
+    /// <summary>Requests (and executed ids) a command-line controller keeps for telling what it does.</summary>
+    internal const int RequestsKept = 4096;
+
     /// <summary>
-    /// A brand's default settings with the command line's speed and arm (the brand's default arm when none is given), keeping no
-    /// request log (the command line never reads it).
+    /// A brand's default settings with the command line's speed and arm (the brand's default arm when none is given), keeping the
+    /// last <see cref="RequestsKept"/> requests and executed ids for <see cref="ControllerActivity"/> (bounded, whatever the program's length).
     /// </summary>
     private static T Settings<T>(T defaults, VirtualControllerOptions options) where T : Machina.Simulation.VirtualControllerOptions
     {
         Machina.Simulation.VirtualControllerOptions settings = defaults;
-        settings = settings with { SpeedFactor = options.SpeedFactor, RequestLogCapacity = 0 };
+        settings = settings with { SpeedFactor = options.SpeedFactor, RequestLogCapacity = RequestsKept };
         if (options.Model is RobotModel model)
         {
             settings = settings with { Model = model };

@@ -102,8 +102,13 @@ internal sealed class InstructionParser
             return overloads;
         }
         string? proper = InstructionCatalog.ProperName(name);
-        throw Error(line, column, proper is not null
-            ? $"unknown instruction \"{name}\"; did you mean \"{proper}\"? Instruction names are case-sensitive."
+        if (proper is not null)
+        {
+            throw Error(line, column, $"unknown instruction \"{name}\"; did you mean \"{proper}\"? Instruction names are case-sensitive.");
+        }
+        IReadOnlyList<string> close = InstructionSuggestion.For(name);
+        throw Error(line, column, close.Count > 0
+            ? $"unknown instruction \"{name}\"; did you mean {InstructionSuggestion.Quoted(close)}?"
             : $"unknown instruction \"{name}\".");
     }
 

@@ -20,6 +20,13 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// <summary>Batches the reading thread may be ahead.</summary>
     internal const int BatchesAhead = 4;
 
+    /// <summary>
+    /// Positions of the last actions read, by id (a ring): a compiler may warn about an action it met a little earlier (a UR blend
+    /// that only the next motion shows to be too large), and the warning must still point at that action's statement.
+    /// </summary>
+    internal const int PositionsKept = 1024;
+
+    private readonly (int Id, int Line, int Column)[] _recent = new (int, int, int)[PositionsKept];
     private RobotAction? _current;
     private int _line;
     private int _column;
@@ -27,14 +34,25 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// <summary>Number of actions in the text, known after the first complete pass (0 before).</summary>
     internal int Count { get; private set; }
 
-    /// <summary>The line and column of the action with id <paramref name="actionId"/> if it is the action returned last, else null.</summary>
-    internal (int Line, int Column)? PositionOf(int actionId) => _current is not null && _current.Id == actionId ? (_line, _column) : null;
+    /// <summary>
+    /// The line and column of the action with id <paramref name="actionId"/> if it is one of the last <see cref="PositionsKept"/>
+    /// actions returned, else null.
+    /// </summary>
+    internal (int Line, int Column)? PositionOf(int actionId)
+    {
+        if (actionId <= 0)
+        {
+            return null;
+        }
+        (int id, int line, int column) = _recent[actionId % PositionsKept];
+        return id == actionId ? (line, column) : null;
+    }
 
     /// <summary>The error for an action that cannot be applied: an instruction error at the action's position.</summary>
     internal InstructionParseException Refused(RobotAction action, string reason)
     {
-        bool here = ReferenceEquals(action, _current);
-        return new InstructionParseException(here ? _line : 0, here ? _column : 0, $"cannot apply \"{action.ToInstruction()}\": {reason}");
+        (int Line, int Column) at = ReferenceEquals(action, _current) ? (_line, _column) : PositionOf(action.Id) ?? (0, 0);
+        return new InstructionParseException(at.Line, at.Column, $"cannot apply \"{action.ToInstruction()}\": {reason}");
     }
 
     /// <summary>
@@ -94,6 +112,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                     _current = action;
                     _line = batch.Lines[i];
                     _column = batch.Columns[i];
+                    _recent[id % PositionsKept] = (id, _line, _column);
                     yield return action;
                 }
                 batch.Error?.Throw();

@@ -112,16 +112,16 @@ public class OnlineCommandTests
         await robot.WaitForCompletionAsync().WaitAsync(TimeSpan.FromSeconds(60));
         RobotState state = robot.GetExecutedState();
         await robot.DisconnectAsync();
-        await stdout.WaitForAsync("#3 received");
         await cancel.CancelAsync();
         CliResult result = await sim;
 
         Assert.Equal(0, result.Exit);
         Assert.Equal(new Vector(350, 50, 480), state.Position);
-        Assert.Contains($"Virtual ABB controller listening on 127.0.0.1:{port} (monitor on {port + 1})", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains($"Virtual ABB controller listening on 127.0.0.1:{port} (driver port; monitor on {port + 1})", result.Stdout, StringComparison.Ordinal);
         Assert.Contains("connected (driver)", result.Stdout, StringComparison.Ordinal);
-        Assert.Contains("#2 received @2 1 350 50 500 ", result.Stdout, StringComparison.Ordinal);
-        Assert.Contains("#3 received @3 1 350 50 480 ", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  received  MoveL           @2 1 350 50 500 ", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  received  MoveL           @3 1 350 50 480 ", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains($"the tool is now at {state.Position} mm", result.Stdout.Split('\n').Last(l => l.StartsWith("  executed  ", StringComparison.Ordinal)), StringComparison.Ordinal);
         Assert.Contains("Stopping: 3 requests received, 3 executed, 0 malformed.", result.Stdout, StringComparison.Ordinal);
     }
 

@@ -24,9 +24,9 @@ public sealed class SamplesRunTests
     {
         ["HelloRobot"] =
         [
-            new("abb", ["--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "ABB IRB 1200-5/0.9 controller")),
-            new("ur", ["--brand", "ur", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "UR5e controller")),
-            new("kuka", ["--brand", "kuka", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "KUKA controller (KR 6 R900 sixx)")),
+            new("abb", ["--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "ABB IRB 1200-5/0.9 controller", "IRB 1200-5/0.9")),
+            new("ur", ["--brand", "ur", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "UR5e controller", "UR5e")),
+            new("kuka", ["--brand", "kuka", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "KUKA controller (KR 6 R900 sixx)", "KR 6 R900 sixx")),
         ],
         ["OfflineCompile"] = [new("all languages", ["{out}"], CheckOfflineCompile)],
         ["ReactiveSquare"] =
@@ -151,7 +151,7 @@ public sealed class SamplesRunTests
         return (exit, output.ToString().ReplaceLineEndings("\n"), error.ToString().ReplaceLineEndings("\n"));
     }
 
-    private static void CheckHelloRobot(string output, string controller)
+    private static void CheckHelloRobot(string output, string controller, string model)
     {
         Assert.Contains($"Started a virtual {controller}", output, StringComparison.Ordinal);
         // The seven actions executed in order, each once, the last with nothing left. (How many are left after the others
@@ -164,7 +164,14 @@ public sealed class SamplesRunTests
         }
         Assert.StartsWith("  executed  #3 -> position [400, 300, 500]", executed[2], StringComparison.Ordinal);
         Assert.StartsWith("  executed  #5 -> position [400, 300, 750]", executed[4], StringComparison.Ordinal);
-        Assert.Equal("  executed  #7 -> position unknown, axes [0, 0, 0, 0, 90, 0] (0 left)", executed[6]);
+        // With the controller's arm model, the joint move has a known pose (forward kinematics) and the Cartesian moves known joints.
+        Vector flange = RobotModels.Get(model).Kinematics.Forward(new Joints(0, 0, 0, 0, 90, 0)).Position;
+        Assert.Equal($"  executed  #7 -> position {flange}, axes [0, 0, 0, 0, 90, 0] (0 left)", executed[6]);
+        Assert.All(executed, line => Assert.DoesNotContain("unknown", line, StringComparison.Ordinal));
+        string final = Assert.Single(output.Split('\n'), l => l.StartsWith("Done. Final state: ", StringComparison.Ordinal));
+        Assert.DoesNotContain("pos null", final, StringComparison.Ordinal);
+        Assert.DoesNotContain("rot null", final, StringComparison.Ordinal);
+        Assert.DoesNotContain("axes null", final, StringComparison.Ordinal);
         Assert.DoesNotContain("the virtual controller", output, StringComparison.Ordinal);
         // Then the same program offline.
         AssertInOrder(output, "--- ABB: HelloRobot.mod ---", "--- UR: HelloRobot.script ---", "--- KUKA: HelloRobot.src ---", "--- HUMAN: HelloRobot.txt ---");

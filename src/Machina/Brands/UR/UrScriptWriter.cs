@@ -196,8 +196,13 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         _lastRadius = cursor.Precision;
     }
 
-    private void WarnBlend(RobotAction action, double radius, double length, string which) =>
-        job.Warn(action, $"the blend radius of {Num.G(radius)} mm is more than half of {which} motion ({Num.G(Math.Round(length, 3))} mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo({Num.G(Math.Floor(length / 2 * 1000) / 1000)}) or less around short motions.");
+    /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
+    private void WarnBlend(RobotAction action, double radius, double length, string which)
+    {
+        string text = $"the blend radius of {Num.G(radius)} mm is more than half of {which} motion ({Num.G(Math.Round(length, 3))} mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo({Num.G(Math.Floor(length / 2 * 1000) / 1000)}) or less around short motions.";
+        job.Warn(action, $"{text}");
+        sink.Add(Indent + "# WARNING: " + UrScriptText.CommentText(action.ToInstruction() + " " + text));
+    }
 
     /// <summary>
     /// movej takes the speed as the speed of the joint that moves most, in °/s (written in rad/s): warn when it is above that joint's
