@@ -231,6 +231,7 @@ public sealed partial class Robot : IOnlineHost
                     case MotionUpdateHandler d: d(this, (MotionUpdateArgs)args); break;
                     case EventHandler<ConnectionLostArgs> d: d(this, (ConnectionLostArgs)args); break;
                     case EventHandler<ControllerStoppedArgs> d: d(this, (ControllerStoppedArgs)args); break;
+                    case EventHandler<ActionFailedArgs> d: d(this, (ActionFailedArgs)args); break;
                     default: throw new InvalidOperationException($"No way to raise {subscriber.GetType().Name}.");
                 }
             }
