@@ -48,7 +48,7 @@ public sealed record BridgeOptions
     /// <summary>Largest message a client may send, in bytes (default 1 MiB: tens of thousands of instructions). Larger ones are refused with an error event.</summary>
     public int MaxMessageBytes { get; init; } = 1024 * 1024;
 
-    /// <summary>How many connections may be open at once (default 64); more are answered with HTTP 503.</summary>
+    /// <summary>How many WebSocket clients may be connected at once (default 64); more are answered with HTTP 503.</summary>
     public int MaxConnections { get; init; } = 64;
 
     /// <summary>
@@ -57,8 +57,20 @@ public sealed record BridgeOptions
     /// </summary>
     public int MaxQueuedEvents { get; init; } = 250_000;
 
-    /// <summary>How long a new connection may take to send its HTTP request (default 10 s).</summary>
+    /// <summary>How long a new connection may take to send its HTTP request and finish the handshake (default 10 s).</summary>
     public TimeSpan RequestTimeout { get; init; } = TimeSpan.FromSeconds(10);
+
+    /// <summary>
+    /// How many connections may be in their handshake at once (default 128). They do not count against <see cref="MaxConnections"/>;
+    /// when one more arrives, the oldest of them is dropped, so that slow or idle connections cannot lock clients out.
+    /// </summary>
+    public int MaxPendingHandshakes { get; init; } = 128;
+
+    /// <summary>
+    /// A secret that clients must pass in their address as <c>authkey=</c> (e.g. <c>ws://127.0.0.1:6999/Bridge?authkey=…</c>), or null
+    /// (the default) for none. Required when <see cref="Listen"/> is not a loopback address, since other computers can then connect.
+    /// </summary>
+    public string? Token { get; init; }
 
     /// <summary>Clock for the timeouts above and for the virtual controller; tests may replace it.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
@@ -96,6 +108,18 @@ public sealed record BridgeOptions
         if (MaxQueuedEvents < 16)
         {
             throw new ArgumentOutOfRangeException(nameof(MaxQueuedEvents), MaxQueuedEvents, "At least 16 events must be allowed to wait for a client.");
+        }
+        if (MaxPendingHandshakes < 1)
+        {
+            throw new ArgumentOutOfRangeException(nameof(MaxPendingHandshakes), MaxPendingHandshakes, "At least one connection must be allowed to shake hands.");
+        }
+        if (Token is not null && (Token.Length < 8 || Token.Any(c => c <= ' ' || c >= '\x7f' || c is '&' or '#' or '%' or '+')))
+        {
+            throw new ArgumentException("The token must be at least 8 printable ASCII characters without spaces, '&', '#', '%' or '+', so that it can be written in an address as is.", nameof(Token));
+        }
+        if (Token is null && !IPAddress.IsLoopback(Listen.Address))
+        {
+            throw new ArgumentException($"Listening on {Listen.Address} lets other computers connect, so a token is required: give one (machina bridge --token …) that clients pass as authkey=….", nameof(Token));
         }
         if (RequestTimeout <= TimeSpan.Zero)
         {

@@ -10,6 +10,14 @@ public sealed partial class BridgeServer
 {
     private static readonly UTF8Encoding StrictUtf8 = new(encoderShouldEmitUTF8Identifier: false, throwOnInvalidBytes: true);
 
+    /// <summary>
+    /// Headers of the page: it runs only its own inline script, talks only to WebSockets, may not be framed by any site
+    /// (so that no other page can show it and make a person click in it), and sends no address on.
+    /// </summary>
+    internal const string PageHeaders =
+        "Content-Security-Policy: default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; connect-src 'self' ws: wss:; img-src data:; frame-ancestors 'none'; form-action 'none'; base-uri 'none'\r\n" +
+        "X-Frame-Options: DENY\r\nReferrer-Policy: no-referrer\r\nCross-Origin-Opener-Policy: same-origin\r\n";
+
     private async Task AcceptLoopAsync(CancellationToken stop)
     {
         while (!stop.IsCancellationRequested)
@@ -38,28 +46,18 @@ public sealed partial class BridgeServer
     /// <summary>Serves one TCP connection: one HTTP request, then, for a WebSocket, messages until either side closes.</summary>
     private async Task ServeAsync(TcpClient tcp, CancellationToken stop)
     {
-        int open = Interlocked.Increment(ref _connectionCount);
         string remote = tcp.Client.RemoteEndPoint?.ToString() ?? "?";
+        WebSocket? socket = null;
         try
         {
             tcp.NoDelay = true;
             NetworkStream stream = tcp.GetStream();
-            if (open > _options.MaxConnections)
-            {
-                await WriteAsync(stream, HttpConnection.Error(503, "Service Unavailable", $"The bridge already serves {_options.MaxConnections} connections."), stop).ConfigureAwait(false);
-                return;
-            }
-            HttpRequestHead? request = await ReadRequestAsync(stream, stop).ConfigureAwait(false);
-            if (request is null)
-            {
-                return;
-            }
-            WebSocket? socket = await RouteAsync(request, stream, stop).ConfigureAwait(false);
+            (HttpRequestHead? request, socket) = await HandshakeAsync(stream, stop).ConfigureAwait(false);
             if (socket is not null)
             {
                 using (socket)
                 {
-                    await ServeClientAsync(socket, request.QueryValue("name") is { Length: > 0 } name ? name : remote, remote).ConfigureAwait(false);
+                    await ServeClientAsync(socket, request!.QueryValue("name") is { Length: > 0 } name ? name : remote, remote).ConfigureAwait(false);
                 }
             }
         }
@@ -73,30 +71,73 @@ public sealed partial class BridgeServer
         }
         finally
         {
-            Interlocked.Decrement(ref _connectionCount);
+            if (socket is not null)
+            {
+                Interlocked.Decrement(ref _connectionCount); // its client slot, taken in RouteAsync
+            }
             tcp.Dispose();
         }
     }
 
-    /// <summary>Reads the request head within the request timeout; answers and returns null when it is missing, too long or malformed.</summary>
-    private async Task<HttpRequestHead?> ReadRequestAsync(NetworkStream stream, CancellationToken stop)
+    /// <summary>
+    /// Reads the request and answers it within <see cref="BridgeOptions.RequestTimeout"/>. Connections in their handshake do
+    /// not take client slots; when there are more than <see cref="BridgeOptions.MaxPendingHandshakes"/>, the oldest is dropped.
+    /// </summary>
+    private async Task<(HttpRequestHead? Request, WebSocket? Socket)> HandshakeAsync(NetworkStream stream, CancellationToken stop)
     {
-        using var timeout = new CancellationTokenSource(_options.RequestTimeout, _options.TimeProvider);
-        using var linked = CancellationTokenSource.CreateLinkedTokenSource(stop, timeout.Token);
-        byte[]? head;
-        bool tooLong;
+        using var deadline = new CancellationTokenSource(_options.RequestTimeout, _options.TimeProvider);
+        using var linked = CancellationTokenSource.CreateLinkedTokenSource(stop, deadline.Token);
+        LinkedListNode<CancellationTokenSource> node;
+        CancellationTokenSource? evicted = null;
+        lock (_gate)
+        {
+            node = _handshakes.AddLast(linked);
+            if (_handshakes.Count > _options.MaxPendingHandshakes)
+            {
+                evicted = _handshakes.First!.Value;
+                _handshakes.RemoveFirst();
+            }
+        }
         try
         {
-            (head, tooLong) = await HttpConnection.ReadHeadAsync(stream, linked.Token).ConfigureAwait(false);
+            evicted?.Cancel();
+        }
+        catch (ObjectDisposedException)
+        {
+            // It finished meanwhile.
+        }
+        try
+        {
+            HttpRequestHead? request = await ReadRequestAsync(stream, linked.Token).ConfigureAwait(false);
+            return request is null ? (null, null) : (request, await RouteAsync(request, stream, linked.Token).ConfigureAwait(false));
         }
         catch (OperationCanceledException) when (!stop.IsCancellationRequested)
         {
-            await WriteAsync(stream, HttpConnection.Error(408, "Request Timeout", "The request did not arrive in time."), stop).ConfigureAwait(false);
-            return null;
+            byte[] answer = deadline.IsCancellationRequested
+                ? HttpConnection.Error(408, "Request Timeout", "The request did not arrive in time.")
+                : HttpConnection.Error(503, "Service Unavailable", "Too many connections are opening at once; try again.");
+            await WriteAsync(stream, answer, stop).ConfigureAwait(false);
+            return (null, null);
         }
+        finally
+        {
+            lock (_gate)
+            {
+                if (node.List is not null)
+                {
+                    _handshakes.Remove(node);
+                }
+            }
+        }
+    }
+
+    /// <summary>Reads the request head; answers and returns null when it is missing, too long or malformed.</summary>
+    private static async Task<HttpRequestHead?> ReadRequestAsync(NetworkStream stream, CancellationToken cancellationToken)
+    {
+        (byte[]? head, bool tooLong) = await HttpConnection.ReadHeadAsync(stream, cancellationToken).ConfigureAwait(false);
         if (tooLong)
         {
-            await WriteAsync(stream, HttpConnection.Error(431, "Request Header Fields Too Large", "The request head is too long."), stop).ConfigureAwait(false);
+            await WriteAsync(stream, HttpConnection.Error(431, "Request Header Fields Too Large", "The request head is too long."), cancellationToken).ConfigureAwait(false);
             return null;
         }
         if (head is null)
@@ -106,7 +147,7 @@ public sealed partial class BridgeServer
         HttpRequestHead? request = HttpRequestHead.TryParse(head, out string? error);
         if (request is null)
         {
-            await WriteAsync(stream, HttpConnection.Error(400, "Bad Request", $"Bad request: {error}."), stop).ConfigureAwait(false);
+            await WriteAsync(stream, HttpConnection.Error(400, "Bad Request", $"Bad request: {error}."), cancellationToken).ConfigureAwait(false);
         }
         return request;
     }
@@ -124,7 +165,7 @@ public sealed partial class BridgeServer
         if (isPage && !isSocketPath)
         {
             byte[] response = HttpConnection.Response(200, "OK", "text/html; charset=utf-8", _page,
-                "Content-Security-Policy: default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; connect-src 'self' ws: wss:; img-src data:\r\n",
+                PageHeaders,
                 headOnly: request.Method == "HEAD");
             await WriteAsync(stream, response, stop).ConfigureAwait(false);
             return null;
@@ -157,7 +198,27 @@ public sealed partial class BridgeServer
             await WriteAsync(stream, HttpConnection.Error(403, "Forbidden", $"Web pages from {request["Origin"]} may not drive this robot."), stop).ConfigureAwait(false);
             return null;
         }
-        await WriteAsync(stream, HttpConnection.SwitchingProtocols(key!), stop).ConfigureAwait(false);
+        if (!HasToken(request))
+        {
+            Robot.Logger.Warning("Bridge: refused a connection without the bridge's token (authkey=…).");
+            await WriteAsync(stream, HttpConnection.Error(403, "Forbidden", "This bridge needs its token: add authkey=TOKEN to the address, e.g. ws://HOST:PORT/Bridge?authkey=TOKEN."), stop).ConfigureAwait(false);
+            return null;
+        }
+        if (Interlocked.Increment(ref _connectionCount) > _options.MaxConnections)
+        {
+            Interlocked.Decrement(ref _connectionCount);
+            await WriteAsync(stream, HttpConnection.Error(503, "Service Unavailable", $"The bridge already serves {_options.MaxConnections} clients."), stop).ConfigureAwait(false);
+            return null;
+        }
+        try
+        {
+            await WriteAsync(stream, HttpConnection.SwitchingProtocols(key!), stop).ConfigureAwait(false);
+        }
+        catch
+        {
+            Interlocked.Decrement(ref _connectionCount);
+            throw;
+        }
         return WebSocket.CreateFromStream(stream, new WebSocketCreationOptions
         {
             IsServer = true,
@@ -188,6 +249,17 @@ public sealed partial class BridgeServer
         // The page is served by this bridge when the origin names the address and port the request was sent to.
         return request["Host"] is string host && string.Equals(uri.Authority, host.Trim(), StringComparison.OrdinalIgnoreCase)
             && (uri.IsLoopback || IPAddress.TryParse(uri.Host.Trim('[', ']'), out _));
+    }
+
+    /// <summary>True when the bridge has no token, or the request's <c>authkey</c> parameter is it (compared in constant time).</summary>
+    private bool HasToken(HttpRequestHead request)
+    {
+        if (_options.Token is not { } token)
+        {
+            return true;
+        }
+        string given = request.QueryValue("authkey") ?? "";
+        return System.Security.Cryptography.CryptographicOperations.FixedTimeEquals(Encoding.UTF8.GetBytes(given), Encoding.UTF8.GetBytes(token));
     }
 
     private static async Task WriteAsync(NetworkStream stream, byte[] bytes, CancellationToken stop)

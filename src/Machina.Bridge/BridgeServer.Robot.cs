@@ -7,6 +7,7 @@ public sealed partial class BridgeServer
         Robot.ActionIssued += OnRobotEvent;
         Robot.ActionReleased += OnRobotEvent;
         Robot.ActionExecuted += OnRobotEvent;
+        Robot.ActionFailed += OnActionFailed;
         Robot.MotionUpdate += OnMotionUpdate;
         Robot.ConnectionLost += OnConnectionLost;
     }
@@ -16,12 +17,20 @@ public sealed partial class BridgeServer
         Robot.ActionIssued -= OnRobotEvent;
         Robot.ActionReleased -= OnRobotEvent;
         Robot.ActionExecuted -= OnRobotEvent;
+        Robot.ActionFailed -= OnActionFailed;
         Robot.MotionUpdate -= OnMotionUpdate;
         Robot.ConnectionLost -= OnConnectionLost;
     }
 
     /// <summary>Action events go to every client as the library writes them (one line of JSON in the original's shape).</summary>
     private void OnRobotEvent(object? sender, MachinaEventArgs e) => Broadcast(e.ToJsonString());
+
+    /// <summary>A failed action goes to every client as the <c>action-failed</c> event (with the controller's reason), and to the log.</summary>
+    private void OnActionFailed(object? sender, ActionFailedArgs e)
+    {
+        Robot.Logger.Warning($"Bridge: the controller could not run action #{e.Action.Id} ({e.Action}) and stopped: {e.Reason}");
+        Broadcast(e.ToJsonString());
+    }
 
     /// <summary>
     /// Motion updates go to every client only when the reported state changed: a controller reports many times a second even

@@ -16,6 +16,7 @@ public sealed partial class BridgeServer : IAsyncDisposable
     private readonly byte[] _page;
     private readonly object _gate = new();
     private readonly List<Task> _connections = [];
+    private readonly LinkedList<CancellationTokenSource> _handshakes = new();
     private BridgeClient[] _clients = [];
     private TcpListener? _listener;
     private CancellationTokenSource? _stopping;
@@ -23,7 +24,7 @@ public sealed partial class BridgeServer : IAsyncDisposable
     private EmbeddedController? _embedded;
     private Task? _reconnecting;
     private string? _lastMotion;
-    private int _connectionCount;
+    private int _connectionCount; // WebSocket clients holding a slot (see BridgeOptions.MaxConnections)
     private int _state; // 0 new, 1 starting or running, 2 stopped
 
     /// <summary>Creates a stopped bridge and its robot (see <see cref="Robot"/>); nothing listens until <see cref="StartAsync"/>.</summary>
@@ -68,6 +69,18 @@ public sealed partial class BridgeServer : IAsyncDisposable
 
     /// <summary>The virtual controller inside the bridge, when it is an ABB one (tests pause and resume it).</summary>
     internal Machina.Simulation.VirtualAbbController? VirtualAbb => _embedded?.Owner as Machina.Simulation.VirtualAbbController;
+
+    /// <summary>How many connections are in their HTTP handshake now (tests watch it).</summary>
+    internal int PendingHandshakeCount
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _handshakes.Count;
+            }
+        }
+    }
 
     /// <summary>How many WebSocket clients are connected now.</summary>
     public int ClientCount

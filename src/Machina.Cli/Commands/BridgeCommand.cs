@@ -13,7 +13,7 @@ internal static class BridgeCommand
         "bridge",
         "Run the Machina Bridge: apps and a web page drive a robot over WebSockets",
         $"""
-        Usage: machina bridge [--listen ADDRESS:PORT] [--brand abb|ur|kuka] (--sim | --host H --port P) [--speed-factor F]
+        Usage: machina bridge [--listen ADDRESS:PORT] [--token T] [--brand abb|ur|kuka] (--sim | --host H --port P) [--speed-factor F]
 
         Starts the Machina Bridge until Ctrl+C: the original Machina clients (Grasshopper, Dynamo, Processing, Python,
         JavaScript) connect to ws://ADDRESS:PORT{BridgeOptions.DefaultPath} unchanged, and a browser at http://ADDRESS:PORT/
@@ -22,6 +22,8 @@ internal static class BridgeCommand
 
         Options:
           --listen ADDRESS:PORT  where the bridge listens (default 127.0.0.1:{BridgeOptions.DefaultPort}, this computer only)
+          --token T              a secret clients must pass as authkey=T in their address (required when --listen is
+                                 not a loopback address); open the page at http://ADDRESS:PORT/?authkey=T
           --brand B              abb (default), ur or kuka
           --sim                  drive a virtual controller started on this computer (the default)
           --host H --port P      drive a real controller running Machina's driver
@@ -31,7 +33,7 @@ internal static class BridgeCommand
           machina bridge --sim
           (then open http://127.0.0.1:{BridgeOptions.DefaultPort}/ in a browser)
         """,
-        Options: ["--listen", "--brand", "--host", "--port", "--speed-factor"],
+        Options: ["--listen", "--token", "--brand", "--host", "--port", "--speed-factor"],
         Flags: ["--sim"],
         RunAsync);
 
@@ -58,8 +60,18 @@ internal static class BridgeCommand
             ControllerHost = host,
             ControllerPort = host is null ? new BridgeOptions().ControllerPort : port,
             SimulationSpeed = args.Positive("--speed-factor", 1),
+            Token = args.Value("--token"),
         };
-        await using var bridge = new BridgeServer(options);
+        BridgeServer created;
+        try
+        {
+            created = new BridgeServer(options);
+        }
+        catch (ArgumentException ex) when (ex.ParamName == nameof(BridgeOptions.Token))
+        {
+            throw new UsageException(ex.Message[..(ex.Message.IndexOf(" (Parameter", StringComparison.Ordinal) is int i and >= 0 ? i : ex.Message.Length)]);
+        }
+        await using var bridge = created;
         bridge.Robot.Logger.Writer = context.Stderr;
         try
         {
@@ -73,8 +85,9 @@ internal static class BridgeCommand
         {
             throw new CliException($"The bridge cannot reach the {brand} controller: {ex.Message}");
         }
-        await context.Stdout.WriteLineAsync($"Machina Bridge for a {(host is null ? "virtual" : "real")} {brand} robot: apps connect to {bridge.WebSocketUri}, "
-            + $"the page is at {bridge.PageUri}. Press Ctrl+C to stop.").ConfigureAwait(false);
+        string key = options.Token is null ? "" : "?authkey=" + options.Token;
+        await context.Stdout.WriteLineAsync($"Machina Bridge for a {(host is null ? "virtual" : "real")} {brand} robot: apps connect to {bridge.WebSocketUri}{key}, "
+            + $"the page is at {bridge.PageUri}{key}. Press Ctrl+C to stop.").ConfigureAwait(false);
         context.Ready?.Invoke(bridge.WebSocketUri!.ToString());
         try
         {

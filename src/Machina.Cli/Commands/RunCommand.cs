@@ -18,7 +18,10 @@ internal static class RunCommand
 
         Streams PROGRAM, a text file of Machina instructions (- for standard input), to Machina's driver on the controller
         and shows the progress: a bar with counts, rate and time left on a terminal, plain lines when redirected.
-        A file is read once first, so that a malformed line stops nothing: the robot moves only if the whole file reads well.
+        Once connected, and before the first action is sent, the whole program is read and checked: every statement parsed,
+        every action tried as the robot would issue it (what the brand's driver cannot run is refused), and with the arm's
+        model (--model, or always with --sim) every target checked for reach and joint limits. The robot moves only if the
+        whole program passes. When the controller reports that it could not run an action, the run stops with its line.
         Ctrl+C stops cleanly: nothing more is sent, and the actions already sent to the controller are listed.
         Online control in this build: {VirtualControllers.AvailableNames}.
 
@@ -67,15 +70,18 @@ internal static class RunCommand
         }
         int port = args.Port("--port", SimCommand.DefaultPort);
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
+        if (sim && model is null)
+        {
+            model = RunCheck.VirtualModel(brand); // the virtual controller moves like this arm: check against it
+        }
         double speed = args.Positive("--speed-factor", 1);
         string? name = args.Value("--name");
 
-        long? total = null;
         if (path != "-")
         {
-            // Read the whole file once: a malformed line must stop the run before the robot moves, and the count gives the progress.
-            using ProgramReader check = ProgramReader.Open(path, context, name);
-            total = check.Read(context.Cancellation).LongCount();
+            // Every statement is parsed before anything is started: a malformed line stops the run before it connects.
+            using ProgramReader parse = ProgramReader.Open(path, context, name);
+            _ = parse.Read(context.Cancellation).LongCount();
         }
         if (!VirtualControllers.Available.Contains(brand))
         {
@@ -85,18 +91,29 @@ internal static class RunCommand
             ? await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model), context.Cancellation).ConfigureAwait(false)
             : null;
         using ProgramReader reader = ProgramReader.Open(path, context, name);
-        var run = new Streamer(reader, brand, model, total, context);
-        return await run.RunAsync(controller?.Host ?? host!, controller?.Port ?? port).ConfigureAwait(false);
+        // Standard input can be read only once: it is checked as it streams, and stops at its first problem.
+        ProgramReader? check = path == "-" ? null : ProgramReader.Open(path, context, name);
+        try
+        {
+            var run = new Streamer(reader, check, brand, model, context);
+            return await run.RunAsync(controller?.Host ?? host!, controller?.Port ?? port).ConfigureAwait(false);
+        }
+        finally
+        {
+            check?.Dispose();
+        }
     }
 
     /// <summary>One streamed run: the robot, its events and the counts.</summary>
-    private sealed class Streamer(ProgramReader reader, RobotType brand, RobotModel? model, long? total, CliContext context)
+    private sealed class Streamer(ProgramReader reader, ProgramReader? check, RobotType brand, RobotModel? model, CliContext context)
     {
         private readonly SemaphoreSlim _window = new(Window, Window);
         private readonly TaskCompletionSource<MachinaException> _lost = new(TaskCreationOptions.RunContinuationsAsynchronously);
-        private readonly Dictionary<RobotAction, int> _lines = new(ReferenceEqualityComparer.Instance);
+        private readonly TaskCompletionSource<CliException> _failed = new(TaskCreationOptions.RunContinuationsAsynchronously);
+        private readonly Dictionary<RobotAction, ProgramStatement> _lines = new(ReferenceEqualityComparer.Instance);
         private readonly Lock _gate = new();
-        private readonly ProgressReporter _progress = new(context, total);
+        private ProgressReporter _progress = new(context, null);
+        private long? _total;
         private long _executed;
         private int _issuingThread;
         private ProgramStatement _issuing;
@@ -116,11 +133,25 @@ internal static class RunCommand
             }
             robot.ActionExecuted += (_, e) => OnExecuted(e);
             robot.ConnectionLost += (_, e) => _lost.TrySetResult(e.Error);
+            robot.ActionFailed += (_, e) => OnFailed(e);
             await context.Stdout.WriteLineAsync($"Connecting to the {brand} controller at {host}:{port}...").ConfigureAwait(false);
             await robot.ConnectAsync(host, port, context.Cancellation).ConfigureAwait(false);
+            if (check is not null)
+            {
+                try
+                {
+                    _total = RunCheck.Check(robot, check, context);
+                }
+                catch
+                {
+                    await robot.DisconnectAsync().ConfigureAwait(false);
+                    throw;
+                }
+                _progress = new ProgressReporter(context, _total);
+            }
             await context.Stdout.WriteLineAsync($"Connected. The robot is at {robot.GetCurrentPosition()?.ToString() ?? "an unknown position"}, " +
-                $"axes {robot.GetCurrentAxes()?.ToString() ?? "unknown"}. Streaming {reader.DisplayName}" +
-                (total is long t ? $" ({t} actions)" : "") + "...").ConfigureAwait(false);
+                $"axes {robot.GetCurrentAxes()?.ToString() ?? "unknown"}. " + (_total is long t ? $"{reader.DisplayName} checked: {t} action{(t == 1 ? "" : "s")}" +
+                (model is null ? "" : $", every target within the {model.Name}'s reach and limits") + ". Streaming it..." : $"Streaming {reader.DisplayName}...")).ConfigureAwait(false);
             long issued = 0;
             try
             {
@@ -131,7 +162,7 @@ internal static class RunCommand
                     issued++;
                 }
                 Task done = robot.WaitForCompletionAsync(context.Cancellation);
-                await Task.WhenAny(done, _lost.Task).ConfigureAwait(false);
+                await Task.WhenAny(done, _lost.Task, _failed.Task).ConfigureAwait(false);
                 ThrowIfLost();
                 await done.ConfigureAwait(false);
                 _progress.Update(Interlocked.Read(ref _executed), 0);
@@ -149,8 +180,9 @@ internal static class RunCommand
                 IReadOnlyList<RobotAction> sent = robot.GetPendingActions();
                 await robot.DisconnectAsync().ConfigureAwait(false);
                 string why = ex is OperationCanceledException ? "Stopped (Ctrl+C)" : "Stopped";
-                await context.Stderr.WriteLineAsync($"{why} after {Interlocked.Read(ref _executed)} of {issued} actions were executed; " +
-                    $"{cancelled} not sent yet were cancelled." + (sent.Count > 0
+                long executed = Interlocked.Read(ref _executed);
+                await context.Stderr.WriteLineAsync($"{why} after {executed} of {(_total is long all ? all : issued)} actions were executed " +
+                    $"({issued} issued); {cancelled} not sent yet were cancelled." + (sent.Count > 0
                         ? $" {sent.Count} were sent and the controller may still run them (first: {sent[0].ToInstruction()})."
                         : "")).ConfigureAwait(false);
                 throw;
@@ -164,7 +196,7 @@ internal static class RunCommand
                 _issuingThread = Environment.CurrentManagedThreadId;
                 _issuing = statement;
                 // Known before issuing, so that even an action executed at once finds its line; a freshly read action is issued as itself.
-                _lines[statement.Action] = statement.Line;
+                _lines[statement.Action] = statement;
             }
             try
             {
@@ -189,10 +221,11 @@ internal static class RunCommand
 
         private async Task WaitForRoomAsync()
         {
+            ThrowIfLost();
             Task room = _window.WaitAsync(context.Cancellation);
             if (!room.IsCompleted)
             {
-                await Task.WhenAny(room, _lost.Task).ConfigureAwait(false);
+                await Task.WhenAny(room, _lost.Task, _failed.Task).ConfigureAwait(false);
                 ThrowIfLost();
             }
             await room.ConfigureAwait(false);
@@ -200,6 +233,10 @@ internal static class RunCommand
 
         private void ThrowIfLost()
         {
+            if (_failed.Task.IsCompletedSuccessfully)
+            {
+                throw _failed.Task.Result;
+            }
             if (_lost.Task.IsCompletedSuccessfully)
             {
                 throw new CliException($"The connection to the controller was lost: {_lost.Task.Result.Message}");
@@ -209,13 +246,25 @@ internal static class RunCommand
         private void OnExecuted(ActionExecutedArgs e)
         {
             long executed = Interlocked.Increment(ref _executed);
-            int line;
+            ProgramStatement statement;
             lock (_gate)
             {
-                _lines.Remove(e.LastAction, out line);
+                _lines.Remove(e.LastAction, out statement);
             }
             _window.Release();
-            _progress.Update(executed, line);
+            _progress.Update(executed, statement.Line);
+        }
+
+        /// <summary>The controller could not run an action and stopped: the run stops with the action's line and the controller's reason.</summary>
+        private void OnFailed(ActionFailedArgs e)
+        {
+            ProgramStatement statement;
+            bool known;
+            lock (_gate)
+            {
+                known = _lines.TryGetValue(e.Action, out statement);
+            }
+            _failed.TrySetResult(FailedError(reader.DisplayName, known ? statement : null, e));
         }
 
         private void OnLog(LogEntry entry)
@@ -235,5 +284,15 @@ internal static class RunCommand
             }
             context.Stderr.WriteLine($"{where}{(entry.Level == LogLevel.ERROR ? "error" : "warning")}: {entry.Message}");
         }
+    }
+
+    /// <summary>The error for an action the controller could not run: its line (when known) and the controller's reason and code.</summary>
+    internal static CliException FailedError(string file, ProgramStatement? statement, ActionFailedArgs e)
+    {
+        string problem = $"the controller could not run {e.Action.ToInstruction()} and stopped: {e.Reason}" +
+            (e.Failure.ControllerCode is string code ? $" (error {code})" : "") + ".";
+        return statement is ProgramStatement s
+            ? CliException.At(file, s.Line, s.Column, problem)
+            : new CliException($"{file}: {problem}");
     }
 }

@@ -26,11 +26,15 @@ internal abstract class Compiler
         return output.ToProgram(job.ProgramName, Brand, job.Warnings);
     }
 
-    /// <summary>Compiles the job straight into files in <paramref name="folder"/>; returns their paths.</summary>
-    internal IReadOnlyList<string> CompileToFolder(CompileJob job, string folder, string newLine = "\n", bool replaceAtEnd = false)
+    /// <summary>
+    /// Compiles the job straight into files in <paramref name="folder"/>; returns their paths. <paramref name="beforeCommit"/>
+    /// runs after the last line is written and before the files take their names; when it throws, no file remains.
+    /// </summary>
+    internal IReadOnlyList<string> CompileToFolder(CompileJob job, string folder, string newLine = "\n", bool replaceAtEnd = false, Action? beforeCommit = null)
     {
         using var output = new FolderProgramOutput(folder, newLine, replaceAtEnd);
         Emit(job, output);
+        beforeCommit?.Invoke();
         output.Commit();
         return output.Paths;
     }

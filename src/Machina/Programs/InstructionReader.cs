@@ -11,6 +11,12 @@ internal sealed class InstructionReader
     /// <summary>Characters read at a time (a piece is at least this long, unless the text ends first).</summary>
     internal const int PieceSize = 1 << 14;
 
+    /// <summary>
+    /// Longest line, and longest statement, read (16 Mi characters): a whole program may be written on one line, but a file
+    /// with a longer one is not a program, and reading it whole would take gigabytes.
+    /// </summary>
+    internal const int MaxLineChars = 1 << 24;
+
     private readonly TextReader _reader;
     private readonly InstructionArgs _args = new();
     private char[] _buffer = new char[PieceSize * 2];
@@ -72,6 +78,11 @@ internal sealed class InstructionReader
     /// </summary>
     private bool NextPiece(ReadOnlySpan<char> carry, int firstLine, int start)
     {
+        if (carry.Length > MaxLineChars)
+        {
+            throw new InstructionParseException(firstLine, start + 1,
+                $"this statement is longer than {MaxLineChars} characters, the most Machina reads as one statement (is a quote or a parenthesis left open?)");
+        }
         // The buffer holds, from its start, text read but not yet given to a parser (the tail after the last line break).
         int needed = carry.Length + _buffered + PieceSize;
         if (needed > _buffer.Length)
@@ -101,7 +112,14 @@ internal sealed class InstructionReader
             _buffered += read;
             // A piece must end at a line break, and hold at least what was carried plus a full read.
             end = _buffer.AsSpan(0, _buffered).LastIndexOf('\n');
-            if (end >= carry.Length && end >= from && _buffered - carry.Length >= PieceSize)
+            if (_buffered - (end + 1) > MaxLineChars)
+            {
+                int line = firstLine + _buffer.AsSpan(0, end + 1).Count('\n');
+                throw new InstructionParseException(line, 1,
+                    $"this line is longer than {MaxLineChars} characters, the most Machina reads as one line; is the file a program?");
+            }
+            // (at least as much as was carried, so that a statement over many lines is read again only a few times).
+            if (end >= carry.Length && end >= from && _buffered - carry.Length >= Math.Max(PieceSize, carry.Length))
             {
                 break;
             }

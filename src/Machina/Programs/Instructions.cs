@@ -71,7 +71,28 @@ public static class Instructions
             throw new FileNotFoundException($"The instruction file \"{instructionFile}\" does not exist.", instructionFile);
         }
         string name = programName ?? Path.GetFileNameWithoutExtension(instructionFile);
-        return CompileToFolder(() => new StreamReader(instructionFile, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, name, newLine, model, cancellationToken);
+        return CompileFileToFolder(instructionFile, () => new StreamReader(instructionFile, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, name, newLine, model, cancellationToken);
+    }
+
+    /// <summary>
+    /// Compiles a file read through <paramref name="open"/>, and refuses it when it changed while it was compiled: the compilers
+    /// read it more than once, and a file truncated or rewritten meanwhile would give a program made of two different texts.
+    /// </summary>
+    internal static FolderCompileResult CompileFileToFolder(string instructionFile, Func<TextReader> open, RobotType language, string folderPath,
+        CompileOptions? options, string name, string newLine, RobotModel? model, CancellationToken cancellationToken)
+    {
+        var before = new FileInfo(instructionFile);
+        (long length, DateTime written) = (before.Length, before.LastWriteTimeUtc);
+        void Unchanged()
+        {
+            var after = new FileInfo(instructionFile);
+            if (!after.Exists || after.Length != length || after.LastWriteTimeUtc != written)
+            {
+                throw new IOException($"The instruction file \"{instructionFile}\" changed while it was compiled ({length} bytes before, " +
+                    $"{(after.Exists ? after.Length + " bytes" : "gone")} after); nothing was written. Compile it again once it is complete.");
+            }
+        }
+        return CompileToFolder(open, language, folderPath, options, name, newLine, model, cancellationToken, Unchanged);
     }
 
     /// <summary>
@@ -106,7 +127,7 @@ public static class Instructions
                     copy.Write(buffer, 0, read);
                 }
             }
-            return CompileToFolder(() => new StreamReader(spool, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, programName, newLine, model, cancellationToken);
+            return CompileToFolder(() => new StreamReader(spool, System.Text.Encoding.UTF8, true, 1 << 16), language, folderPath, options, programName, newLine, model, cancellationToken, beforeCommit: null);
         }
         finally
         {
@@ -115,7 +136,7 @@ public static class Instructions
     }
 
     private static FolderCompileResult CompileToFolder(Func<TextReader> open, RobotType language, string folderPath, CompileOptions? options,
-        string programName, string newLine, RobotModel? model, CancellationToken cancellationToken)
+        string programName, string newLine, RobotModel? model, CancellationToken cancellationToken, Action? beforeCommit)
     {
         Compiler compiler = Compilers.For(EnumText.RequireDefined(language, nameof(language)));
         ArgumentException.ThrowIfNullOrWhiteSpace(folderPath);
@@ -125,7 +146,7 @@ public static class Instructions
         }
         var source = new InstructionSource(open, cancellationToken);
         var job = new CompileJob(CompileJob.SafeProgramName(programName), source, options ?? CompileOptions.Default) { Source = source, MaxWarningsKept = MaxWarningsKept, Model = model };
-        IReadOnlyList<string> paths = compiler.CompileToFolder(job, folderPath, newLine, replaceAtEnd: true);
+        IReadOnlyList<string> paths = compiler.CompileToFolder(job, folderPath, newLine, replaceAtEnd: true, beforeCommit);
         return new FolderCompileResult(job.ProgramName, language, paths, job.Warnings, job.WarningCount, source.Count);
     }
 }

@@ -73,15 +73,36 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
         return new FileSpool(Path.Combine(Path.GetTempPath(), "machina-" + Guid.NewGuid().ToString("N") + ".spool"), encoding, newLine);
     }
 
-    /// <summary>Closes every file and, with <c>replaceAtEnd</c>, gives each its real name (replacing a file of that name).</summary>
+    /// <summary>
+    /// Closes every file and, with <c>replaceAtEnd</c>, gives each its real name (replacing a file of that name). When a file
+    /// cannot be closed (a full disk) or named (a folder has its name), nothing of this compile remains: the files it named
+    /// already are removed too, and the error is thrown.
+    /// </summary>
     internal void Commit()
     {
-        CloseWriters();
+        CloseWriters(throwFirst: true);
         if (replaceAtEnd)
         {
             foreach (string path in Paths)
             {
-                File.Move(path + PartialSuffix, path, overwrite: true);
+                if (Directory.Exists(path))
+                {
+                    throw new IOException($"\"{path}\" is a folder; the program cannot be written under that name.");
+                }
+            }
+            var named = new List<string>();
+            try
+            {
+                foreach (string path in Paths)
+                {
+                    File.Move(path + PartialSuffix, path, overwrite: true);
+                    named.Add(path);
+                }
+            }
+            catch
+            {
+                named.ForEach(TryDelete);
+                throw;
             }
         }
         _committed = true;
@@ -91,26 +112,58 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
 
     public override void Dispose()
     {
-        CloseWriters();
+        CloseWriters(throwFirst: false);
         if (replaceAtEnd && !_committed)
         {
             foreach (string path in Paths)
             {
-                File.Delete(path + PartialSuffix);
+                TryDelete(path + PartialSuffix);
             }
-            if (_createdFolder && !Directory.EnumerateFileSystemEntries(folder).Any())
+            try
             {
-                Directory.Delete(folder); // a failed compile leaves nothing it made, not even an empty folder
+                if (_createdFolder && !Directory.EnumerateFileSystemEntries(folder).Any())
+                {
+                    Directory.Delete(folder); // a failed compile leaves nothing it made, not even an empty folder
+                }
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // Left for the person to remove; the compile's own error is the one reported.
             }
         }
     }
 
-    private void CloseWriters()
+    /// <summary>Closes every writer, even when one fails (a full disk fails the last flush); then throws the first failure if asked.</summary>
+    private void CloseWriters(bool throwFirst)
     {
+        Exception? first = null;
         foreach (StreamWriter writer in _writers)
         {
-            writer.Dispose();
+            try
+            {
+                writer.Dispose();
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                first ??= e;
+            }
         }
         _writers.Clear();
+        if (first is not null && throwFirst)
+        {
+            System.Runtime.ExceptionServices.ExceptionDispatchInfo.Throw(first);
+        }
+    }
+
+    private static void TryDelete(string path)
+    {
+        try
+        {
+            File.Delete(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // Nothing more can be done; the compile's own error is the one reported.
+        }
     }
 }

@@ -223,4 +223,46 @@ public sealed class InstructionFileCompileTests : IDisposable
 
         Assert.False(Directory.Exists(Path.Combine(_root, "out")) && Directory.GetFiles(Path.Combine(_root, "out")).Length > 0);
     }
+
+    [Fact]
+    public void CompileToFolder_AFolderHasTheNameOfAFile_NothingOfTheCompileRemains()
+    {
+        string file = Path.Combine(_root, "square.machina");
+        File.WriteAllText(file, "MoveTo(300, 0, 500);\nMove(0, 100, 0);\n");
+        string folder = Path.Combine(_root, "out");
+        Directory.CreateDirectory(Path.Combine(folder, "square.mod"));
+
+        var error = Assert.Throws<IOException>(() => Instructions.CompileToFolder(file, RobotType.ABB, folder));
+
+        Assert.Equal($"\"{Path.Combine(folder, "square.mod")}\" is a folder; the program cannot be written under that name.", error.Message);
+        Assert.Equal(["square.mod"], Directory.GetFileSystemEntries(folder).Select(Path.GetFileName)); // no square.pgf, no .partial
+    }
+
+    [Fact]
+    public void CompileToFolder_FileTruncatedWhileCompiled_RefusedAndNothingWritten()
+    {
+        string file = Path.Combine(_root, "big.machina");
+        File.WriteAllText(file, "MoveTo(300, 0, 500);\n" + string.Concat(Enumerable.Repeat("Move(1, 0, 0);\n", 1000)));
+        long length = new FileInfo(file).Length;
+        string folder = Path.Combine(_root, "out");
+        int opened = 0;
+        TextReader Open()
+        {
+            if (++opened == 1)
+            {
+                using (var stream = new FileStream(file, FileMode.Open, FileAccess.Write))
+                {
+                    stream.SetLength(36); // another program cuts the file as it is read, after a whole line
+                }
+                File.SetLastWriteTimeUtc(file, File.GetLastWriteTimeUtc(file).AddSeconds(1)); // a coarse clock would not see it otherwise
+            }
+            return new StreamReader(file);
+        }
+
+        var error = Assert.Throws<IOException>(() => Instructions.CompileFileToFolder(file, Open, RobotType.ABB, folder, null, "big", "\n", null, CancellationToken.None));
+
+        Assert.Equal($"The instruction file \"{file}\" changed while it was compiled ({length} bytes before, 36 bytes after); nothing was written. " +
+            "Compile it again once it is complete.", error.Message);
+        Assert.False(Directory.Exists(folder));
+    }
 }

@@ -66,6 +66,40 @@ public class InstructionReaderTests
     }
 
     [Fact]
+    public void Next_EndlessLine_RefusedWithItsLine_MemoryBounded()
+    {
+        // 2^30 characters on one line used to end the process; the text is made as it is read, never held whole here.
+        var reader = new InstructionReader(new EndlessReader("MoveTo(0, 0, 0);\nWait(1);\n", "Move(1, 0, 0); "));
+        Assert.IsType<ActionTranslation>(reader.Next());
+        var e = Assert.Throws<InstructionParseException>(() => { while (reader.Next() is not null) { } });
+        Assert.Equal($"Line 3, column 1: this line is longer than {InstructionReader.MaxLineChars} characters, the most Machina reads as one line; is the file a program?", e.Message);
+    }
+
+    [Fact]
+    public void Next_EndlessStatementOverManyLines_RefusedWithWhereItStarts()
+    {
+        var reader = new InstructionReader(new EndlessReader("Wait(1);\n  Move(1,\n", "  // a comment, and the parenthesis never closed\n"));
+        Assert.NotNull(reader.Next());
+        var e = Assert.Throws<InstructionParseException>(() => { while (reader.Next() is not null) { } });
+        Assert.Equal($"Line 2, column 3: this statement is longer than {InstructionReader.MaxLineChars} characters, the most Machina reads as one statement (is a quote or a parenthesis left open?)", e.Message);
+    }
+
+    /// <summary>A start, then one text repeated forever, made as it is read.</summary>
+    private sealed class EndlessReader(string start, string repeated) : TextReader
+    {
+        private long _at;
+
+        public override int Read(char[] buffer, int index, int count)
+        {
+            for (int i = 0; i < count; i++, _at++)
+            {
+                buffer[index + i] = _at < start.Length ? start[(int)_at] : repeated[(int)((_at - start.Length) % repeated.Length)];
+            }
+            return count;
+        }
+    }
+
+    [Fact]
     public void Next_UnclosedStatementAtTheEnd_SameErrorAsParse()
     {
         string text = LongText(5000, "\n") + "Move(1,\n 2,\n";
