@@ -21,10 +21,10 @@ public sealed partial class Robot
     /// </summary>
     internal string? TryOn(RobotCursor trial, RobotAction action)
     {
-        if (_online?.WhyCannotStream(action) is string refused)
+        if (_session?.WhyCannotStream(action) is string refused)
         {
             return refused;
         }
-        return trial.TryApply(action) ?? _online?.WhyCannotSend(action, trial);
+        return trial.TryApply(action) ?? _session?.WhyCannotSend(action, trial);
     }
 }
