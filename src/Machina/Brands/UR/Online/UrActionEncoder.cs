@@ -62,9 +62,9 @@ internal static class UrActionEncoder
             case ActionWait wait:
                 return Put(into, id, UrInstructionCode.Sleep, wire.Scale(wait.Millis));
             case ActionSpeed:
-                return Put(into, id, UrInstructionCode.AllSpeed, wire.Positive(after.Speed, "speed", "mm/s"));
+                return Put(into, id, UrInstructionCode.AllSpeed, wire.Positive(after.Speed, "a speed", "mm/s"));
             case ActionAcceleration:
-                return Put(into, id, UrInstructionCode.AllAcceleration, wire.Positive(after.Acceleration, "acceleration", "mm/s²"));
+                return Put(into, id, UrInstructionCode.AllAcceleration, wire.Positive(after.Acceleration, "an acceleration", "mm/s²"));
             case ActionPrecision:
                 return Put(into, id, UrInstructionCode.Blend, wire.Millimetres(after.Precision));
             case ActionDefineTool define:
@@ -108,11 +108,11 @@ internal static class UrActionEncoder
         int n = 0;
         if (before.Speed != after.Speed)
         {
-            n += Put(into[n..], 0, UrInstructionCode.AllSpeed, wire.Positive(after.Speed, "speed", "mm/s"));
+            n += Put(into[n..], 0, UrInstructionCode.AllSpeed, wire.Positive(after.Speed, "a speed", "mm/s"));
         }
         if (before.Acceleration != after.Acceleration)
         {
-            n += Put(into[n..], 0, UrInstructionCode.AllAcceleration, wire.Positive(after.Acceleration, "acceleration", "mm/s²"));
+            n += Put(into[n..], 0, UrInstructionCode.AllAcceleration, wire.Positive(after.Acceleration, "an acceleration", "mm/s²"));
         }
         if (before.Precision != after.Precision)
         {
@@ -151,7 +151,7 @@ internal static class UrActionEncoder
             int value = Millimetres(mm);
             if (value <= 0 && Problem is null)
             {
-                Problem = $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: a {what} of {Num.G(mm)} {unit} is 0 in its driver's 0.1 {unit} steps, and the robot would never get anywhere.";
+                Problem = $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: {what} of {Num.G(mm)} {unit} is 0 in its driver's 0.1 {unit} steps, and the robot would never get anywhere.";
             }
             return value;
         }
