@@ -23,6 +23,12 @@ public abstract partial class VirtualController<TState>
     /// <summary>True for a request the brand's driver will skip (a UR program replaced since it was read); it is not logged as executed.</summary>
     private protected virtual bool IsStale(object request) => false;
 
+    /// <summary>
+    /// Called when <paramref name="request"/> is refused: true when the brand's program stops there (a UR runtime error), so the
+    /// request is not logged as executed; false (the default) when the driver logs the refusal and goes on.
+    /// </summary>
+    private protected virtual bool FailsProgram(object request, string reason) => false;
+
     private async Task ExecuteRequestsAsync(CancellationToken token)
     {
         var reader = _buffer.Reader;
@@ -92,7 +98,7 @@ public abstract partial class VirtualController<TState>
             catch (Exception e) when (e is VirtualRefusalException or ArgumentException or ArithmeticException or InvalidOperationException)
             {
                 RecordError("refused: " + e.Message);
-                return runs;
+                return runs && !FailsProgram(request, e.Message);
             }
             if (duration > TimeSpan.Zero)
             {

@@ -12,6 +12,8 @@ public sealed partial class VirtualUrController
     internal const int Normal = 1, ProtectiveStopped = 3, RobotEmergencyStopped = 7;
 
     private int _program;
+    private int _instanceRegister;
+    private string? _runtimeException;
     private DriverKind _kind;
     private uint _runtime = Stopped;
     private int _safety = Normal;
@@ -142,7 +144,38 @@ public sealed partial class VirtualUrController
         return "Pausing program";
     }
 
-    private int StartProgram(DriverKind kind)
+    /// <summary>
+    /// The instance number in output_int_register_26: written by each of our driver programs when it starts, kept after it
+    /// stops (registers keep their values), 0 until the first.
+    /// </summary>
+    public int InstanceRegister
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return _instanceRegister;
+            }
+        }
+    }
+
+    /// <summary>The text of the last runtime error that stopped a program (what the pendant shows), or null.</summary>
+    public string? LastRuntimeException
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return _runtimeException;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Starts a driver program. Ours publishes its <paramref name="instance"/> first; the progress registers keep what the
+    /// programs before it wrote (a program does not reset them).
+    /// </summary>
+    private int StartProgram(DriverKind kind, int instance)
     {
         int program;
         lock (Gate)
@@ -150,8 +183,12 @@ public sealed partial class VirtualUrController
             program = ++_program;
             _kind = kind;
             _runtime = _safety == Normal ? Playing : Paused;
+            if (kind == DriverKind.Ours)
+            {
+                _instanceRegister = instance;
+            }
         }
-        ResetProgress();
+        WakeRtde();
         if (SafetyStatus == Normal)
         {
             ReleaseHalt();
@@ -159,7 +196,10 @@ public sealed partial class VirtualUrController
         return program;
     }
 
-    /// <summary>Ends the running program, if any: its connection closes and what it still held is dropped.</summary>
+    /// <summary>
+    /// Ends the running program, if any: the motion in progress stops where the robot is (it is not completed, nor logged as
+    /// executed), its connection closes and what it still held is dropped.
+    /// </summary>
     private void StopProgram(string why)
     {
         bool wasRunning;
@@ -170,6 +210,7 @@ public sealed partial class VirtualUrController
             _kind = DriverKind.None;
             _runtime = Stopped;
         }
+        Halt(); // released when the next program starts
         DropClient();
         if (wasRunning)
         {
@@ -247,6 +288,46 @@ public sealed partial class VirtualUrController
         }
         await AcknowledgeAsync(AcknowledgementBytes(r.Id), Math.Max(r.Id, 0), token).ConfigureAwait(false);
         return true;
+    }
+
+    /// <summary>
+    /// A request the robot cannot run (an unreachable target, a joint beyond its limits, a speed of 0) stops the program with
+    /// a runtime error, as on a UR: the pendant shows it, the script ports send it as a runtime exception message, RTDE
+    /// reports runtime_state stopped, the driver connection closes, and the request is never acknowledged.
+    /// </summary>
+    private protected override bool FailsProgram(object request, string reason)
+    {
+        var r = (UrRequest)request;
+        if (r.Program != CurrentProgram || r.Halts)
+        {
+            return false;
+        }
+        string function = r.Code switch { 1 => "movel", 2 or 3 => "movej", 17 => "movep", 9 => "sleep", 12 => "set_tcp", _ => "machina_ur_driver" };
+        string text = $"{function}: {reason}";
+        int line;
+        lock (Gate)
+        {
+            _runtimeException = text;
+            line = LineOf(_scripts.Count == 0 ? "" : _scripts[^1], function + "(");
+        }
+        Pendant($"Runtime error (line {line.ToString(Num.Inv)}): {text}");
+        SendRuntimeException(line, text);
+        StopProgram("runtime error");
+        return true;
+    }
+
+    /// <summary>The 1-based number of the first line of <paramref name="script"/> that contains <paramref name="call"/>, or 0.</summary>
+    private static int LineOf(string script, string call)
+    {
+        string[] lines = script.Split('\n');
+        for (int i = 0; i < lines.Length; i++)
+        {
+            if (lines[i].Contains(call, StringComparison.Ordinal) && !lines[i].TrimStart().StartsWith('#'))
+            {
+                return i + 1;
+            }
+        }
+        return 0;
     }
 
     private protected override bool IsStale(object request) => request is UrRequest r && (r.Program != CurrentProgram || r.Halts);

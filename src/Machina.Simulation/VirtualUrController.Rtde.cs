@@ -231,13 +231,15 @@ public sealed partial class VirtualUrController
     private byte[] DataPackage(RtdeSubscriber s)
     {
         VirtualUrState state = State;
-        int runtime, safety;
+        int runtime, safety, instance;
+        bool registers;
         lock (Gate)
         {
             runtime = (int)_runtime;
             safety = _safety;
+            instance = _instanceRegister;
+            registers = _kind != DriverKind.Original; // the original driver writes none
         }
-        bool ours = _kind == DriverKind.Ours;
         var payload = new byte[1 + s.Types.Sum(Rtde.SizeOf)];
         payload[0] = s.RecipeId;
         int at = 1;
@@ -276,9 +278,15 @@ public sealed partial class VirtualUrController
                 case "actual_digital_output_bits":
                     BinaryPrimitives.WriteUInt64BigEndian(to, 0);
                     break;
-                default: // output_int_register_N: our driver's progress on 24 and 25, else 0
+                default: // output_int_register_N: our driver's progress on 24 and 25, its instance on 26, else 0
                     int register = int.Parse(s.Names[i].AsSpan("output_int_register_".Length), Num.Inv);
-                    int value = !ours ? 0 : register == UrWire.ExecutedRegister ? LastExecutedId : register == UrWire.ReceivedRegister ? LastReceivedId : 0;
+                    int value = !registers ? 0 : register switch
+                    {
+                        UrWire.ExecutedRegister => LastExecutedId,
+                        UrWire.ReceivedRegister => LastReceivedId,
+                        UrWire.InstanceRegister => instance,
+                        _ => 0,
+                    };
                     BinaryPrimitives.WriteInt32BigEndian(to, value);
                     break;
             }

@@ -11,10 +11,12 @@ public sealed partial class VirtualUrController
 
     private static readonly Regex HostLine = new("^[ \\t]*HOSTNAME[ \\t]*=[ \\t]*\"([^\"\\n]*)\"", RegexOptions.Multiline | RegexOptions.CultureInvariant);
     private static readonly Regex PortLine = new("^[ \\t]*PORT[ \\t]*=[ \\t]*([0-9]{1,5})[ \\t]*(#.*)?$", RegexOptions.Multiline | RegexOptions.CultureInvariant);
+    private static readonly Regex InstanceLine = new("^[ \\t]*INSTANCE[ \\t]*=[ \\t]*(-?[0-9]{1,10})[ \\t]*(#.*)?$", RegexOptions.Multiline | RegexOptions.CultureInvariant);
     private static readonly Regex OursLine = new("^[ \\t]*MACHINA_DRIVER_VERSION[ \\t]*=[ \\t]*\\[[ \\t]*2[ \\t]*,", RegexOptions.Multiline | RegexOptions.CultureInvariant);
     private static readonly Regex OriginalLine = new("^[ \\t]*MACHINA_DRIVER_VERSION[ \\t]*=[ \\t]*\"1\\.", RegexOptions.Multiline | RegexOptions.CultureInvariant);
 
     private readonly List<string> _scripts = [];
+    private readonly List<NetworkStream> _scriptStreams = [];
 
     /// <summary>Which Machina driver a script is.</summary>
     internal enum DriverKind
@@ -55,34 +57,60 @@ public sealed partial class VirtualUrController
 
     private Task AcceptScriptsAsync(TcpListener listener, CancellationToken token) => AcceptAsync(listener, ReadScriptsAsync, token);
 
-    /// <summary>Reads scripts from one connection: each ends with an unindented line after its definitions (a call, or <c>end</c>).</summary>
+    /// <summary>
+    /// Reads scripts from one connection, as the script manual says a controller recognises them: a program starts with
+    /// <c>def</c> or <c>sec</c> in column 1 and is complete at its <c>end</c> in column 1 (a line break after it is not
+    /// waited for); any other unindented line is a one-line script, complete at its line break or when the connection closes.
+    /// </summary>
     private async Task ReadScriptsAsync(TcpClient client, CancellationToken token)
     {
         var stream = client.GetStream();
+        lock (Gate)
+        {
+            _scriptStreams.Add(stream);
+        }
+        try
+        {
+            await ReadScriptsAsync(stream, token).ConfigureAwait(false);
+        }
+        finally
+        {
+            lock (Gate)
+            {
+                _scriptStreams.Remove(stream);
+            }
+        }
+    }
+
+    private async Task ReadScriptsAsync(NetworkStream stream, CancellationToken token)
+    {
         var text = new StringBuilder();
         var bytes = new byte[8192];
         string? awaitingCall = null; // a program whose definition ran without the call that usually follows it
-        while (true)
+        bool closed = false;
+        while (!closed)
         {
             int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
             if (n == 0)
             {
-                return;
+                closed = true;
             }
-            text.Append(Encoding.ASCII.GetString(bytes, 0, n));
+            else
+            {
+                text.Append(Encoding.ASCII.GetString(bytes, 0, n));
+            }
             if (text.Length > MaxScriptLength)
             {
                 RecordError($"refused a script longer than {MaxScriptLength} bytes.");
                 return;
             }
-            if (IsComplete(text))
+            while (TakeScript(text.ToString(), closed) is (string script, int length))
             {
-                string script = text.ToString();
-                text.Clear();
+                text.Remove(0, length);
                 if (awaitingCall is not null && IsOnlyCallOf(script, awaitingCall))
                 {
-                    // The call line of the program just started, read apart from its definition (a slow link can cut a
-                    // write anywhere): part of the same script, not a new one that would replace the program.
+                    // The call line after a program's end (the original Machina.NET host sends one): part of the same
+                    // upload, not a new script that would replace the program it just started.
                     AppendToLastScript(script);
                     awaitingCall = null;
                     continue;
@@ -93,17 +121,44 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>True when the text ends with a complete top-level line (not indented, not a <c>def</c>) after at least one line.</summary>
-    private static bool IsComplete(StringBuilder text)
+    /// <summary>
+    /// The first complete script at the start of <paramref name="text"/> and how many characters it takes (blank and comment
+    /// lines before it included), or null when more text is needed. <paramref name="closed"/>: nothing more will come, so a
+    /// last line without its line break counts.
+    /// </summary>
+    internal static (string Script, int Length)? TakeScript(string text, bool closed)
     {
-        string s = text.ToString().TrimEnd();
-        if (s.Length == 0 || !text.ToString().EndsWith('\n'))
+        int at = 0;
+        bool inProgram = false;
+        while (at < text.Length)
         {
-            return false;
+            int lineEnd = text.IndexOf('\n', at);
+            bool hasBreak = lineEnd >= 0;
+            int next = hasBreak ? lineEnd + 1 : text.Length;
+            string line = text[at..(hasBreak ? lineEnd : text.Length)].TrimEnd('\r');
+            bool topLevel = line.Length > 0 && !char.IsWhiteSpace(line[0]) && !line.StartsWith('#');
+            if (!inProgram && topLevel)
+            {
+                if (line.StartsWith("def ", StringComparison.Ordinal) || line.StartsWith("sec ", StringComparison.Ordinal))
+                {
+                    inProgram = true;
+                }
+                else
+                {
+                    return hasBreak || closed ? (text[..next], next) : null; // a one-line script
+                }
+            }
+            else if (inProgram && topLevel && line.TrimEnd() == "end")
+            {
+                return (text[..next], next); // the program's end in column 1: complete, with or without its line break
+            }
+            if (!hasBreak)
+            {
+                return null;
+            }
+            at = next;
         }
-        int start = s.LastIndexOf('\n') + 1;
-        string last = s[start..];
-        return last.Length > 0 && !char.IsWhiteSpace(last[0]) && !last.StartsWith("def ", StringComparison.Ordinal) && !last.StartsWith('#');
+        return null;
     }
 
     /// <summary>The name of the program a script defines when the script ends with that definition's <c>end</c> (no call after it), else null.</summary>
@@ -155,6 +210,41 @@ public sealed partial class VirtualUrController
         return (kind, host.Groups[1].Value, p);
     }
 
+    /// <summary>
+    /// Sends a runtime exception to every connection on the script ports, as a primary/secondary client interface does: a
+    /// robot message package (size, type 20, timestamp, source, message type 10, script line and column, then the text).
+    /// </summary>
+    private void SendRuntimeException(int line, string text)
+    {
+        byte[] bytes = UrRobotMessage.RuntimeException((ulong)Clock.GetElapsedTime(0).TotalMilliseconds, line, 0, text);
+        NetworkStream[] streams;
+        lock (Gate)
+        {
+            streams = [.. _scriptStreams];
+        }
+        foreach (NetworkStream stream in streams)
+        {
+            Run(async token =>
+            {
+                try
+                {
+                    await stream.WriteAsync(bytes, token).ConfigureAwait(false);
+                }
+                catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException or OperationCanceledException)
+                {
+                    // That client is gone.
+                }
+            });
+        }
+    }
+
+    /// <summary>The instance number our driver publishes in output_int_register_26 (its <c>INSTANCE</c> line), or 0 without one.</summary>
+    internal static int InstanceOf(string script)
+    {
+        Match m = InstanceLine.Match(script);
+        return m.Success && int.TryParse(m.Groups[1].Value, Num.Inv, out int instance) ? instance : 0;
+    }
+
     /// <summary>Runs a script as a real controller would: it replaces the running program; a Machina driver connects back.</summary>
     private async Task RunScriptAsync(string script, CancellationToken token)
     {
@@ -175,7 +265,7 @@ public sealed partial class VirtualUrController
             return;
         }
         Pendant(kind == DriverKind.Ours ? "Machina driver 2.0.0 started" : "Started Machina driver (original 1.x)");
-        int program = StartProgram(kind);
+        int program = StartProgram(kind, InstanceOf(script));
         var client = new TcpClient { NoDelay = true };
         try
         {

@@ -7,7 +7,7 @@ public class UrRtdeDecodeTests
     /// <summary>A data package of the driver's recipe: q in radians, the TCP pose in metres and a rotation vector.</summary>
     private static byte[] Package(double[] q, double[] tcp)
     {
-        var payload = new byte[125];
+        var payload = new byte[UrDriver.PackageLength];
         payload[0] = 1;
         for (int i = 0; i < 6; i++)
         {
@@ -16,6 +16,7 @@ public class UrRtdeDecodeTests
         }
         BinaryPrimitives.WriteInt32BigEndian(payload.AsSpan(105 + 12), 7);
         BinaryPrimitives.WriteInt32BigEndian(payload.AsSpan(105 + 16), 9);
+        BinaryPrimitives.WriteInt32BigEndian(payload.AsSpan(105 + 20), 123_456_789);
         return payload;
     }
 
@@ -25,7 +26,8 @@ public class UrRtdeDecodeTests
         var sample = UrDriver.Decode(Package([0, -Math.PI / 2, 0, 0, Math.PI / 2, 0], [0.4, -0.1, 0.5, 0, 0, 0]));
         Assert.Equal(new Vector(400, -100, 500), sample.Position);
         Assert.Equal(-90, sample.Joints.J2, 9);
-        Assert.Equal((7, 9), (sample.Executed, sample.Received));
+        Assert.Equal((7, 9, 123_456_789), (sample.Executed, sample.Received, sample.Instance));
+        Assert.Equal(129, UrDriver.PackageLength);
     }
 
     [Theory]

@@ -33,7 +33,7 @@ public class UrStateTests
         }
         await bot.FlushEventsAsync().WaitAsync(Limit);
         Assert.Equal(50, Volatile.Read(ref updates));
-        Assert.Equal(51, controller.RtdePackagesSent);
+        Assert.Equal(52, controller.RtdePackagesSent); // the 50, the one read while connecting, the driver program's start (sent at once)
         Assert.True(((Vector)bot.GetCurrentPosition()!.Value).IsSimilar(controller.State.Position, 1e-6));
         await bot.DisconnectAsync();
     }

@@ -148,8 +148,8 @@ public class ProtocolDecoderFuzzTests
             for (int i = 0; i < Fuzz.Cases; i++)
             {
                 var reader = new RtdePackageReader();
-                // Every other case is a data package of the recipe's size (125 bytes of payload) with random contents.
-                var bytes = new byte[i % 2 == 1 ? 128 : random.Next(3, 200)];
+                // Every other case is a data package of the recipe's size (UrDriver.PackageLength bytes of payload) with random contents.
+                var bytes = new byte[i % 2 == 1 ? UrDriver.PackageLength + 3 : random.Next(3, 200)];
                 random.NextBytes(bytes);
                 if (i % 2 == 1)
                 {
@@ -170,7 +170,7 @@ public class ProtocolDecoderFuzzTests
                     while (reader.TryRead(out byte type, out ReadOnlySpan<byte> payload))
                     {
                         packages++;
-                        if (type == Rtde.DataPackage && payload.Length == 125)
+                        if (type == Rtde.DataPackage && payload.Length == UrDriver.PackageLength)
                         {
                             try
                             {

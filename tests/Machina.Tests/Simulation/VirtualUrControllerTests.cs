@@ -53,27 +53,26 @@ public class VirtualUrControllerTests
     }
 
     [Fact]
-    public async Task OurDriver_CallLineReadApartFromTheDefinition_IsTheSameScriptAndTheProgramRunsOn()
+    public async Task OurDriver_CallLineAfterItsEnd_IsTheSameScriptAndTheProgramRunsOn()
     {
-        // A slow link (or one that delivers a byte at a time) can cut the host's single write right after the definition's
-        // "end": the program starts, and the call line that follows must not replace it.
+        // The original Machina.NET host follows the definition with a call line; a slow link can deliver it apart. The program
+        // starts at its "end" (script manual), and the call line that follows must not replace it.
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
         await controller.StartAsync();
         var server = new TcpListener(IPAddress.Loopback, 0);
         server.Start();
         using var scriptClient = new TcpClient();
         await scriptClient.ConnectAsync(IPAddress.Loopback, controller.Port);
-        string script = UrDriverScript.For("127.0.0.1", ((IPEndPoint)server.LocalEndpoint).Port);
-        int cut = script.LastIndexOf("\nend\n", StringComparison.Ordinal) + "\nend\n".Length;
-        Assert.EndsWith("machina_ur_driver()", script[cut..].Trim(), StringComparison.Ordinal);
+        string definition = UrDriverScript.For("127.0.0.1", ((IPEndPoint)server.LocalEndpoint).Port);
+        string call = "\n\n# Kickstart the driver\nmachina_ur_driver()\n";
 
-        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(script[..cut]));
+        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(definition));
         using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
         var stream = driver.GetStream();
         Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await ReadIntsAsync(stream, 5));
         await ReadIntsAsync(stream, 14);
-        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(script[cut..]));
-        await WaitUntilAsync(() => controller.LastScript == script);
+        await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(call));
+        await WaitUntilAsync(() => controller.LastScript == definition + call);
 
         Assert.Equal(1, controller.ScriptsReceived);
         Assert.True(controller.IsProgramRunning);
@@ -82,6 +81,42 @@ public class VirtualUrControllerTests
         Assert.Equal(new int[] { 1 }, await ReadIntsAsync(stream, 1));
         Assert.Equal(2, controller.State.Zone);
         server.Stop();
+    }
+
+    [Theory]
+    [InlineData(true)]
+    [InlineData(false)]
+    public async Task Script_WithoutAFinalLineBreak_Starts(bool original)
+    {
+        // Script manual: a program is complete at its "end" in column 1. The original host sends its call line after it with no
+        // line break at all; our driver's upload ends with "end". Either way the program starts with the connection left open.
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var link = await HostAsync(controller, port => original
+            ? OriginalScript(port).TrimEnd('\n')
+            : UrDriverScript.For("127.0.0.1", port, instance: 77).TrimEnd('\n'));
+        var stream = link.Driver.GetStream();
+        int[] greeting = await ReadIntsAsync(stream, original ? 14 : 19);
+
+        Assert.Equal(-54, greeting[original ? 0 : 5]);
+        Assert.True(controller.IsProgramRunning);
+        Assert.Equal(2u, controller.RuntimeState);
+        Assert.Equal(original ? 0 : 77, controller.InstanceRegister);
+        Assert.Empty(controller.Errors);
+    }
+
+    [Theory]
+    [InlineData("def p():\n  x = 1\nend", false, "def p():\n  x = 1\nend")]
+    [InlineData("def p():\n  x = 1\nend\nmore", false, "def p():\n  x = 1\nend\n")]
+    [InlineData("# c\n\ndef p():\n  x = 1\nen", false, null)]
+    [InlineData("def p():\n  x = 1\n  end\n", false, null)]
+    [InlineData("textmsg(1)", false, null)]
+    [InlineData("textmsg(1)", true, "textmsg(1)")]
+    [InlineData("textmsg(1)\ndef p():\n", false, "textmsg(1)\n")]
+    [InlineData("sec s():\n  x = 1\nend\r\n", false, "sec s():\n  x = 1\nend\r\n")]
+    public void TakeScript_ProgramCompleteAtItsEnd_OneLinerAtItsLineBreak(string text, bool closed, string? expected)
+    {
+        Assert.Equal(expected, VirtualUrController.TakeScript(text, closed)?.Script);
     }
 
     [Theory]

@@ -9,9 +9,6 @@ namespace Machina;
 internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
 {
     private const string Indent = "  ";
-    private const int StandardDigitalOutputs = 8;
-    private const int ToolDigitalOutputs = 2;
-    private const int StandardAnalogOutputs = 2;
 
     private readonly StringBuilder _sb = new(256);
     private readonly bool _inline = job.Options.InlineTargets;
@@ -255,8 +252,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
 
     private void WriteDigital(ActionIODigital io)
     {
-        int count = io.IsToolPin ? ToolDigitalOutputs : StandardDigitalOutputs;
-        if (PinProblem(io.PinName, count, io.IsToolPin, "digital") is string problem)
+        if (UrOutputs.WhyNot(io) is string problem)
         {
             Unsupported(io, problem);
             return;
@@ -267,32 +263,12 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
 
     private void WriteAnalog(ActionIOAnalog io)
     {
-        if (io.IsToolPin)
-        {
-            Unsupported(io, "the UR tool flange has no analog outputs (only analog inputs).");
-            return;
-        }
-        if (PinProblem(io.PinName, StandardAnalogOutputs, false, "analog") is string problem)
+        if (UrOutputs.WhyNot(io) is string problem)
         {
             Unsupported(io, problem);
             return;
         }
-        if (io.Value < 0 || io.Value > 1)
-        {
-            Unsupported(io, $"UR analog outputs take a value from 0 to 1 (a fraction of the output's current or voltage range), not {Num.G(io.Value)}.");
-            return;
-        }
         Code(io, Indent + "set_standard_analog_out(" + Num.I(io.PinNumber) + ", " + Num.F(io.Value, 3) + ")");
-    }
-
-    private static string? PinProblem(string pin, int count, bool tool, string kind)
-    {
-        string where = tool ? "tool " : "standard ";
-        if (!IOPin.TryNumber(pin, out int n))
-        {
-            return $"UR {kind} outputs are numbered; \"{pin}\" is not a number (use 0 to {count - 1}).";
-        }
-        return n < count ? null : $"UR robots have {where}{kind} outputs 0 to {count - 1}; output {n} does not exist.";
     }
 
     private void Unsupported(RobotAction action, string reason)

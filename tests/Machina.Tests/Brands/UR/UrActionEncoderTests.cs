@@ -35,8 +35,8 @@ public class UrActionEncoderTests
         Assert.Equal([3, 8, 20], Wire(new ActionPrecision(2, false)));
         Assert.Equal([4, 9, 1500], Wire(new ActionWait(1500)));
         Assert.Empty(Wire(new ActionMessage("Hello world!")));
-        Assert.Equal([6, 13, 15, 1, 0], Wire(new ActionIODigital("15", true, false)));
-        Assert.Equal([7, 13, 2, 0, 1], Wire(new ActionIODigital("2", false, true)));
+        Assert.Equal([6, 13, 7, 1, 0], Wire(new ActionIODigital("7", true, false)));
+        Assert.Equal([7, 13, 1, 0, 1], Wire(new ActionIODigital("1", false, true)));
         Assert.Equal([8, 14, 1, 500_000], Wire(new ActionIOAnalog("1", 0.5, false)));
     }
 
@@ -75,6 +75,10 @@ public class UrActionEncoderTests
         string script = Assert.Single(files).Value;
         Assert.Equal("machina_ur_driver.script", files.Keys.Single());
         Assert.Contains("  HOSTNAME = \"192.168.0.5\"\n  PORT = 50123\n", script, StringComparison.Ordinal);
-        Assert.EndsWith("\nmachina_ur_driver()\n", script, StringComparison.Ordinal);
+        Assert.Contains("  INSTANCE = 1\n", script, StringComparison.Ordinal);
+        // The script manual's shape: def in column 1 first, every other line indented, end in column 1 last, no call line.
+        Assert.StartsWith("def machina_ur_driver():\n", script, StringComparison.Ordinal);
+        Assert.EndsWith("\nend\n", script, StringComparison.Ordinal);
+        Assert.Equal(["def machina_ur_driver():", "end"], script.Split('\n').Where(l => l.Length > 0 && !char.IsWhiteSpace(l[0])).ToArray());
     }
 }

@@ -12,8 +12,12 @@ namespace Machina;
 /// <param name="RuntimeState">runtime_state (2 = playing, 4 = paused…).</param>
 /// <param name="Executed">Our driver's last executed id (output_int_register_24).</param>
 /// <param name="Received">Our driver's last received id (output_int_register_25).</param>
-internal readonly record struct RtdeSample(Vector Position, Rotation Rotation, Joints Joints, int RobotMode, int SafetyStatus, uint RuntimeState, int Executed, int Received)
+/// <param name="Instance">The instance number of the last of our driver programs that started (output_int_register_26).</param>
+internal readonly record struct RtdeSample(Vector Position, Rotation Rotation, Joints Joints, int RobotMode, int SafetyStatus, uint RuntimeState, int Executed, int Received, int Instance = 0)
 {
+    /// <summary>runtime_state of a stopped program.</summary>
+    public const uint Stopped = 1;
+
     /// <summary>runtime_state of a running program.</summary>
     public const uint Playing = 2;
 
@@ -43,9 +47,10 @@ internal sealed partial class UrDriver
     [
         "timestamp", "actual_q", "actual_TCP_pose", "robot_mode", "safety_status", "runtime_state",
         "output_int_register_" + UrWire.ExecutedRegister.ToString(Num.Inv), "output_int_register_" + UrWire.ReceivedRegister.ToString(Num.Inv),
+        "output_int_register_" + UrWire.InstanceRegister.ToString(Num.Inv),
     ];
 
-    private static readonly string[] RecipeTypes = ["DOUBLE", "VECTOR6D", "VECTOR6D", "INT32", "INT32", "UINT32", "INT32", "INT32"];
+    private static readonly string[] RecipeTypes = ["DOUBLE", "VECTOR6D", "VECTOR6D", "INT32", "INT32", "UINT32", "INT32", "INT32", "INT32"];
 
     private readonly object _rtdeGate = new();
     private readonly RtdePackageReader _rtdeReader = new();
@@ -136,8 +141,8 @@ internal sealed partial class UrDriver
     }
 
     /// <summary>
-    /// Where the previous driver program is: while it still runs requests it received, waits (within the connect timeout)
-    /// until it has run them all, so that the new program starts after them and nothing is sent twice or lost.
+    /// While the previous driver program still runs requests it received, waits (within <paramref name="left"/>) until it has
+    /// run them, so that fewer are sent again. The progress itself is read only once the new program runs (<see cref="ProgressOfAsync"/>).
     /// </summary>
     private async Task<DeviceProgress> SettledProgressAsync(RtdeSample sample, TimeSpan left, CancellationToken cancellationToken)
     {
@@ -165,6 +170,38 @@ internal sealed partial class UrDriver
         }
         // The new program replaces the old one: what it had received but not run is sent again.
         return new DeviceProgress(sample.Executed, sample.Executed);
+    }
+
+    /// <summary>
+    /// The progress to resume from, read once RTDE shows this connection's program (its instance number in register 26):
+    /// a controller runs one program at a time, so every older one, and whatever it could still run, is stopped by then and
+    /// the registers are final. The new program holds nothing yet, so what was received but not executed is sent again.
+    /// </summary>
+    private async Task<DeviceProgress> ProgressOfAsync(int instance, TimeSpan left, CancellationToken cancellationToken)
+    {
+        long start = Time.GetTimestamp();
+        while (true)
+        {
+            Task<RtdeSample> next;
+            lock (_rtdeGate)
+            {
+                if (_latest is RtdeSample s && s.Instance == instance)
+                {
+                    return new DeviceProgress(s.Executed, s.Executed);
+                }
+                next = _nextSample.Task;
+            }
+            TimeSpan remaining = left - Time.GetElapsedTime(start);
+            try
+            {
+                await next.WaitAsync(remaining > TimeSpan.Zero ? remaining : TimeSpan.Zero, Time, cancellationToken).ConfigureAwait(false);
+            }
+            catch (TimeoutException)
+            {
+                throw new RobotConnectionException(
+                    $"The UR driver program connected back but RTDE never showed its instance number {instance.ToString(Num.Inv)} in output_int_register_{UrWire.InstanceRegister.ToString(Num.Inv)}: another program may have replaced it. Nothing was sent; connect again.");
+            }
+        }
     }
 
     private void OnRtdePackage(byte type, ReadOnlySpan<byte> payload)
@@ -197,12 +234,15 @@ internal sealed partial class UrDriver
         return Encoding.ASCII.GetString(payload.Slice(1, length));
     }
 
+    /// <summary>Bytes of a data package of <see cref="Recipe"/>: recipe id, timestamp, two vectors, six 32-bit integers.</summary>
+    internal const int PackageLength = 1 + 8 + 48 + 48 + 6 * 4;
+
     /// <summary>Reads a data package of <see cref="Recipe"/>: recipe id, timestamp, actual_q, actual_TCP_pose, modes and registers.</summary>
     internal static RtdeSample Decode(ReadOnlySpan<byte> payload)
     {
-        if (payload.Length != 1 + 8 + 48 + 48 + 5 * 4)
+        if (payload.Length != PackageLength)
         {
-            throw new RobotConnectionException($"The UR controller sent an RTDE data package of {payload.Length} bytes; the recipe has 125.");
+            throw new RobotConnectionException($"The UR controller sent an RTDE data package of {payload.Length} bytes; the recipe has {PackageLength}.");
         }
         ReadOnlySpan<byte> p = payload[9..];
         Span<double> q = stackalloc double[6];
@@ -221,7 +261,8 @@ internal sealed partial class UrDriver
             BinaryPrimitives.ReadInt32BigEndian(p[4..]),
             BinaryPrimitives.ReadUInt32BigEndian(p[8..]),
             BinaryPrimitives.ReadInt32BigEndian(p[12..]),
-            BinaryPrimitives.ReadInt32BigEndian(p[16..]));
+            BinaryPrimitives.ReadInt32BigEndian(p[16..]),
+            BinaryPrimitives.ReadInt32BigEndian(p[20..]));
     }
 
     /// <summary>Largest magnitude a pose or joint value of a real arm can have (mm or degrees); anything beyond is corrupt data.</summary>
@@ -243,11 +284,16 @@ internal sealed partial class UrDriver
             _nextSample = new TaskCompletionSource<RtdeSample>(TaskCreationOptions.RunContinuationsAsynchronously);
         }
         waiting.TrySetResult(sample);
-        if (!HasHandshake || IsFailed)
+        if (!HasHandshake || IsFailed || IsProgramFailed)
         {
             return;
         }
         Listener?.OnMotion(new MotionSample(sample.Position, sample.Rotation, sample.Joints, null));
+        if (sample.RuntimeState == RtdeSample.Stopped && !sample.IsSafetyStop && sample.Instance == _instance)
+        {
+            OnProgramStopped(sample);
+            return;
+        }
         if (sample.IsSafetyStop && !_reportedStop)
         {
             _reportedStop = true;
@@ -301,8 +347,15 @@ internal sealed partial class UrDriver
                 driver.FailHandshake(new RobotConnectionException("RTDE failed: " + why));
                 lock (driver._rtdeGate)
                 {
-                    driver._reply?.TrySetException(new RobotConnectionException("RTDE failed: " + why));
-                    driver._nextSample.TrySetException(new RobotConnectionException("RTDE failed: " + why));
+                    // Nobody may be waiting for these: their exceptions are observed here, never left to the finalizer.
+                    if (driver._reply is { } reply && reply.TrySetException(new RobotConnectionException("RTDE failed: " + why)))
+                    {
+                        _ = reply.Task.Exception;
+                    }
+                    if (driver._nextSample.TrySetException(new RobotConnectionException("RTDE failed: " + why)))
+                    {
+                        _ = driver._nextSample.Task.Exception;
+                    }
                 }
             }
             else

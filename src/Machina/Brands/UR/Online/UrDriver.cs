@@ -36,7 +36,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         _host = host;
         _ports = UrPorts.For(port);
         RtdeSample first = await ConnectRtdeAsync(host, timeout, cancellationToken).ConfigureAwait(false);
-        DeviceProgress progress = await SettledProgressAsync(first, Left(start, timeout), cancellationToken).ConfigureAwait(false);
+        await SettledProgressAsync(first, Left(start, timeout), cancellationToken).ConfigureAwait(false);
 
         // The address this computer has on the way to the robot (loopback included), and a port the OS chooses.
         IPAddress local = _rtdeLink!.LocalAddress ?? IPAddress.Loopback;
@@ -47,9 +47,10 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         using var server = new TcpListener(local, 0);
         server.Start();
         int callbackPort = ((IPEndPoint)server.LocalEndpoint).Port;
-        TcpLink script = await OpenSideLinkAsync(host, _ports.Script, Left(start, timeout), new Drain(), cancellationToken).ConfigureAwait(false);
-        script.Post(Encoding.ASCII.GetBytes(UrDriverScript.For(local.ToString(), callbackPort)));
-        Log.Debug($"Sent the UR driver script; it connects back to {local}:{callbackPort}.");
+        // What the script port sends is read (its buffers never fill, fix of U1) for the runtime errors that stop a program.
+        TcpLink script = await OpenSideLinkAsync(host, _ports.Script, Left(start, timeout), new UrRobotMessage.Reader(OnRuntimeException), cancellationToken).ConfigureAwait(false);
+        script.Post(Encoding.ASCII.GetBytes(UrDriverScript.For(local.ToString(), callbackPort, _instance)));
+        Log.Debug($"Sent the UR driver script (instance {_instance}); it connects back to {local}:{callbackPort}.");
 
         Socket socket;
         using (var deadline = new CancellationTokenSource(Left(start, timeout), Time))
@@ -68,6 +69,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         StartLink(TcpLink.Adopt(socket, $"{host}:{_ports.Script}"));
         DeviceHandshake driver = await HandshakeAsync(Left(start, timeout),
             () => $"The UR driver program at {host} connected back but did not report its pose in time.", cancellationToken).ConfigureAwait(false);
+        DeviceProgress progress = await ProgressOfAsync(_instance, Left(start, timeout), cancellationToken).ConfigureAwait(false);
         RtdeSample now = LatestSample ?? first;
         Log.Info($"Connected to the UR driver {driver.Version} at {host}; live state over RTDE at {Num.G(_rtdeFrequency)} Hz.");
         return new DeviceHandshake(driver.Version, now.Position, now.Rotation, now.Joints, null, progress);
@@ -95,6 +97,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     public void Adopt(int actionId)
     {
         _awaiting.Expect(actionId);
+        Sent(actionId);
     }
 
     /// <inheritdoc/>
@@ -129,18 +132,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     private void Acknowledge(int id)
     {
         int actionId = _awaiting.Resolve(id);
+        Acknowledged(id);
         Listener?.OnAcknowledged(actionId);
-    }
-
-    /// <summary>Reads and drops what the script port sends (the controller's state stream), so its buffers never fill (fix of U1).</summary>
-    private sealed class Drain : ILinkReceiver
-    {
-        public void OnReceived(ReadOnlySpan<byte> data)
-        {
-        }
-
-        public void OnClosed(Exception? error)
-        {
-        }
     }
 }

@@ -9,8 +9,12 @@ internal static class UrDriverScript
     /// <summary>The version the script declares.</summary>
     public const string Version = "2.0.0";
 
-    /// <summary>The script with <c>{{HOSTNAME}}</c> and <c>{{PORT}}</c> replaced: where it connects back to.</summary>
-    public static string For(string hostname, int port)
+    /// <summary>
+    /// The script with <c>{{HOSTNAME}}</c> and <c>{{PORT}}</c> replaced (where it connects back to) and <c>{{INSTANCE}}</c>, the
+    /// number the program publishes in RTDE output_int_register_26 when it starts. It begins with its <c>def</c> and ends with
+    /// its <c>end</c> and a line break, as the script manual asks.
+    /// </summary>
+    public static string For(string hostname, int port, int instance = 1)
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(hostname);
         ArgumentOutOfRangeException.ThrowIfNegativeOrZero(port);
@@ -19,6 +23,6 @@ internal static class UrDriverScript
             throw new ArgumentException($"\"{hostname}\" is not a host name or address.", nameof(hostname));
         }
         return DriverFiles.Fill(DriverFiles.Read("ur", FileName).Replace("\r\n", "\n", StringComparison.Ordinal),
-            ("HOSTNAME", hostname.Trim()), ("PORT", port.ToString(Num.Inv)));
+            ("HOSTNAME", hostname.Trim()), ("PORT", port.ToString(Num.Inv)), ("INSTANCE", instance.ToString(Num.Inv)));
     }
 }

@@ -38,6 +38,9 @@ internal static class UrWire
     /// <summary>The RTDE output integer register where our driver publishes the last received id.</summary>
     public const int ReceivedRegister = 25;
 
+    /// <summary>The RTDE output integer register where each of our driver programs publishes its instance number when it starts.</summary>
+    public const int InstanceRegister = 26;
+
     /// <summary>Millimetres to wire integers (0.1 mm).</summary>
     public static int Millimetres(double mm) => Scale(mm * UrScriptText.Mm * FactorMetre);
 

@@ -1,0 +1,156 @@
+namespace Machina;
+
+/// <summary>
+/// How the UR host learns that an action failed: a UR that cannot run an instruction (a target out of reach, a joint beyond
+/// its limits) stops the program with a runtime error and never acknowledges it. RTDE then shows runtime_state stopped
+/// without a safety stop, and the driver connection closes; the client interfaces (30001, 30002) send the error's text.
+/// Either sign makes the action in flight fail with the controller's words (<see cref="IDeviceListener.OnFailed"/>).
+/// </summary>
+internal sealed partial class UrDriver : ILinkReceiver
+{
+    /// <summary>How long a closed driver connection waits for RTDE to say whether the program stopped on an error.</summary>
+    private static readonly TimeSpan StopEvidenceTimeout = TimeSpan.FromSeconds(2);
+
+    /// <summary>How long a failure waits for the runtime error's text from a client interface before reporting without it.</summary>
+    private static readonly TimeSpan ReasonTimeout = TimeSpan.FromSeconds(2);
+
+    private readonly Queue<int> _unacknowledged = new();
+    private readonly TaskCompletionSource<string> _runtimeException = new(TaskCreationOptions.RunContinuationsAsynchronously);
+    private readonly int _instance = Random.Shared.Next(1, int.MaxValue);
+    private int _programFailed;
+
+    /// <summary>True once a failure was reported: nothing more is reported by this driver.</summary>
+    private bool IsProgramFailed => Volatile.Read(ref _programFailed) != 0;
+
+    /// <summary>True when the script port is a client interface that sends robot messages (not the real-time port 30003).</summary>
+    private bool ScriptPortSendsMessages => _ports.Script != UrPorts.StandardScript;
+
+    void ILinkReceiver.OnReceived(ReadOnlySpan<byte> data) => OnReceived(data);
+
+    /// <summary>The driver connection closed: a program stopped by a runtime error fails the action in flight; anything else is a link fault.</summary>
+    void ILinkReceiver.OnClosed(Exception? error)
+    {
+        if (!HasHandshake || IsFailed || IsProgramFailed || !HasUnacknowledged)
+        {
+            if (!IsProgramFailed)
+            {
+                OnClosed(error);
+            }
+            return;
+        }
+        _ = AfterCloseAsync(error);
+    }
+
+    /// <summary>Waits for RTDE to tell why the program's connection closed, then reports a failure or a link fault. Never throws.</summary>
+    private async Task AfterCloseAsync(Exception? error)
+    {
+        long start = Time.GetTimestamp();
+        try
+        {
+            while (!IsProgramFailed)
+            {
+                Task<RtdeSample> next;
+                lock (_rtdeGate)
+                {
+                    if (_latest is RtdeSample s && s.RuntimeState != RtdeSample.Playing)
+                    {
+                        break;
+                    }
+                    next = _nextSample.Task;
+                }
+                TimeSpan left = StopEvidenceTimeout - Time.GetElapsedTime(start);
+                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time).ConfigureAwait(false);
+            }
+        }
+        catch (Exception e) when (e is TimeoutException or RobotConnectionException)
+        {
+            // No news from RTDE: the link itself failed.
+        }
+        if (IsProgramFailed)
+        {
+            return;
+        }
+        if (LatestSample is RtdeSample stopped && stopped.RuntimeState == RtdeSample.Stopped && !stopped.IsSafetyStop && stopped.Instance == _instance)
+        {
+            OnProgramStopped(stopped);
+            return;
+        }
+        OnClosed(error);
+    }
+
+    /// <summary>The program stopped without a safety stop while actions were in flight: the first not executed fails, once.</summary>
+    private void OnProgramStopped(RtdeSample sample)
+    {
+        int failed;
+        lock (_unacknowledged)
+        {
+            failed = _unacknowledged.FirstOrDefault(id => id > sample.Executed);
+        }
+        if (failed == 0 || Interlocked.Exchange(ref _programFailed, 1) != 0)
+        {
+            return;
+        }
+        _ = ReportFailureAsync(failed, sample);
+    }
+
+    private async Task ReportFailureAsync(int id, RtdeSample sample)
+    {
+        string? text = null;
+        if (ScriptPortSendsMessages)
+        {
+            try
+            {
+                text = await _runtimeException.Task.WaitAsync(ReasonTimeout, Time).ConfigureAwait(false);
+            }
+            catch (TimeoutException)
+            {
+                // The controller sent no text: the reason names what RTDE showed.
+            }
+        }
+        string reason = text ?? $"the program stopped (RTDE runtime_state {sample.RuntimeState.ToString(Num.Inv)}, safety status {sample.SafetyName}) without running it";
+        Log.Error($"The UR controller could not run action {id.ToString(Num.Inv)}: {reason}");
+        Listener?.OnFailed(id, reason, null);
+    }
+
+    /// <summary>A runtime error's text from a client interface (the script port); the first is kept.</summary>
+    private void OnRuntimeException(string text)
+    {
+        Log.Warning("UR runtime error: " + text);
+        _runtimeException.TrySetResult(text);
+    }
+
+    private bool HasUnacknowledged
+    {
+        get
+        {
+            lock (_unacknowledged)
+            {
+                return _unacknowledged.Count > 0;
+            }
+        }
+    }
+
+    /// <summary>Keeps the ids sent and not acknowledged, oldest first, to name the one a stopped program did not run.</summary>
+    private void Sent(int id)
+    {
+        lock (_unacknowledged)
+        {
+            _unacknowledged.Enqueue(id);
+        }
+    }
+
+    /// <summary>An acknowledgement covers its id and every one sent before it.</summary>
+    private void Acknowledged(int id)
+    {
+        lock (_unacknowledged)
+        {
+            if (!_unacknowledged.Contains(id))
+            {
+                return;
+            }
+            while (_unacknowledged.Count > 0 && _unacknowledged.Dequeue() != id)
+            {
+            }
+        }
+    }
+}

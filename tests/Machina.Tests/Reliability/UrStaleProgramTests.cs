@@ -1,0 +1,73 @@
+using System.Collections.Concurrent;
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+using Machina.Simulation;
+using Machina.Tests.Online;
+
+namespace Machina.Tests.Reliability;
+
+/// <summary>
+/// Exactly once on UR under stalls (issue 28): a driver script held by a slow link and delivered after the host has moved on
+/// starts an old program that replaces the current one. It must not make the host believe nothing ran.
+/// </summary>
+public class UrStaleProgramTests
+{
+    [Fact]
+    public async Task HeldScriptDeliveredLate_ReplacesTheProgram_ReconnectResumesFromTheRealProgress_NothingRunsTwice()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { Model = null, InstantExecution = true });
+        await controller.StartAsync();
+        var lost = new ConcurrentQueue<ConnectionLostArgs>();
+        var executed = new ConcurrentQueue<int>();
+        Robot bot = await UrOnlineTestSupport.ConnectUrAsync(controller, b =>
+        {
+            b.ConnectionLost += (_, e) => lost.Enqueue(e);
+            b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+        });
+        try
+        {
+            string held = controller.LastScript!; // the first upload, as a slow link could still be holding a copy of it
+            await bot.DisconnectAsync();
+            await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+            Assert.NotEqual(VirtualUrController.InstanceOf(held), controller.InstanceRegister);
+
+            // Moves reach the controller (as many as the session streams ahead); it runs them all, but the host sees only the
+            // first acknowledgement before its link drops.
+            controller.StopAnswering();
+            controller.CloseConnectionAfter(1);
+            for (int i = 0; i < 10; i++)
+            {
+                bot.MoveTo(400 + i, 0, 300);
+            }
+            await OnlineTestSupport.EventuallyAsync(() => controller.RequestsReceived >= 2, "moves to reach the controller");
+            controller.ResumeAnswering();
+            await OnlineTestSupport.EventuallyAsync(() => !lost.IsEmpty && controller.BufferedRequestCount == 0 && controller.ExecutedIds.Count == controller.RequestsReceived,
+                "the link to drop and the program to run what it received");
+            int[] ran = [.. controller.ExecutedIds];
+            Assert.True(ran.Length >= 2, "the controller ran fewer than two moves");
+
+            // The held script arrives now: its program replaces the idle one and cannot connect back (that server is gone).
+            using (var late = new TcpClient())
+            {
+                await late.ConnectAsync(IPAddress.Loopback, controller.Port);
+                await late.GetStream().WriteAsync(Encoding.ASCII.GetBytes(held));
+                await OnlineTestSupport.EventuallyAsync(() => controller.InstanceRegister == VirtualUrController.InstanceOf(held) && !controller.IsProgramRunning, "the late program to start and stop");
+            }
+
+            await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
+            bot.MoveTo(500, 0, 300);
+            Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit));
+
+            // Each of the eleven moves ran once, in order: those the old program ran were not sent again.
+            Assert.Equal(Enumerable.Range(ran[0], 11), controller.ExecutedIds);
+            Assert.Equal(11, executed.Count);
+            Assert.Equal(executed.Distinct().Count(), executed.Count);
+            Assert.True(controller.State.Position.IsSimilar(new Vector(500, 0, 300), 1e-6), controller.State.Position.ToString());
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+}
