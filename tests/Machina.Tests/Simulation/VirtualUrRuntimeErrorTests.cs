@@ -85,12 +85,12 @@ public class VirtualUrRuntimeErrorTests
     {
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
         await controller.StartAsync();
-        var lost = new TaskCompletionSource<ConnectionLostArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var failed = new TaskCompletionSource<ActionFailedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
         var executed = new ConcurrentQueue<int>();
         Robot bot = await UrOnlineTestSupport.ConnectUrAsync(controller, b =>
         {
             b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
-            b.ConnectionLost += (_, e) => lost.TrySetResult(e);
+            b.ActionFailed += (_, e) => failed.TrySetResult(e);
         });
         try
         {
@@ -103,10 +103,14 @@ public class VirtualUrRuntimeErrorTests
 
             bot.MoveTo(2000, 0, 500);
             bot.MoveTo(at.X, at.Y, at.Z);
-            ConnectionLostArgs e = await lost.Task.WaitAsync(Timeout);
+            ActionFailedArgs e = await failed.Task.WaitAsync(Timeout);
+            var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync().WaitAsync(Timeout));
 
-            // Until the session reports failures itself, the driver's OnFailed closes the link with the controller's words.
-            Assert.StartsWith($"The controller could not run action {lastGood + 1}: movel: the UR5e cannot reach ", e.Error.Message, StringComparison.Ordinal);
+            Assert.Equal(lastGood + 1, e.Action.Id);
+            Assert.StartsWith("movel: the UR5e cannot reach ", e.Reason, StringComparison.Ordinal);
+            Assert.Same(e.Action, thrown.Action);
+            Assert.Equal(new[] { lastGood + 2 }, e.CancelledActions.Select(a => a.Id));
+            Assert.True(e.Position is Vector stoppedAt && stoppedAt.IsSimilar(at + new Vector(0, 0, -20), 0.05), e.Position?.ToString());
             Assert.Equal(before, controller.ExecutedIds.Count);
             Assert.DoesNotContain(lastGood + 1, executed);
             Assert.DoesNotContain(lastGood + 2, controller.ExecutedIds);
