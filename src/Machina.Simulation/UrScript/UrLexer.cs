@@ -5,8 +5,6 @@ namespace Machina.Simulation.UrScript;
 /// <summary>Splits URScript text into tokens: names, numbers, strings, symbols and line ends; comments (#) are dropped.</summary>
 internal static class UrLexer
 {
-    private static readonly string[] TwoCharSymbols = ["==", "!=", "<=", ">="];
-
     /// <summary>The tokens of <paramref name="text"/>, ending with <see cref="UrTokenKind.End"/>.</summary>
     /// <exception cref="UrCompileException">A character that is not URScript, or a string that does not end on its line.</exception>
     public static List<UrToken> Tokenize(string text)
@@ -61,7 +59,7 @@ internal static class UrLexer
                 tokens.Add(new UrToken(UrTokenKind.String, text[start..i], line, column));
                 i++;
             }
-            else if (i + 1 < text.Length && Array.IndexOf(TwoCharSymbols, text.Substring(i, 2)) >= 0)
+            else if (i + 1 < text.Length && text[i + 1] == '=' && c is '=' or '!' or '<' or '>')
             {
                 tokens.Add(new UrToken(UrTokenKind.Symbol, text.Substring(i, 2), line, column));
                 i += 2;
