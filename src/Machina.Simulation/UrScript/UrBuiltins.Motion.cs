@@ -113,6 +113,7 @@ internal static partial class UrBuiltins
         double degrees = UrGeometry.AngleBetween(start.Rotation, end.Rotation) * 180 / Math.PI;
         int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(mm / 10, degrees / 5)), 1, 16);
         Joints joints = m.Controller.Arm.Joints;
+        Solve(m, line, function, end, joints); // the target itself first, so that an unreachable target is named as such
         for (int k = 1; k <= steps; k++)
         {
             Joints next = Solve(m, line, function, at((double)k / steps), joints);
