@@ -116,7 +116,16 @@ internal static partial class UrBuiltins
         Solve(m, line, function, end, joints); // the target itself first, so that an unreachable target is named as such
         for (int k = 1; k <= steps; k++)
         {
-            Joints next = Solve(m, line, function, at((double)k / steps), joints);
+            Joints next;
+            try
+            {
+                next = m.Controller.Arm.Solve(at((double)k / steps), joints);
+            }
+            catch (TwinMotionException e)
+            {
+                throw new UrRuntimeException(line, FormattableString.Invariant(
+                    $"{function}: the straight path leaves the workspace {100.0 * (k - 1) / steps:0}% of the way ({e.Message})"));
+            }
             double jump = (next - joints).ToArray().Max(Math.Abs);
             if (jump > MaxJointStepDegrees)
             {
