@@ -15,6 +15,7 @@ internal static class CliApp
         SimCommand.Command,
         DriversCommand.Command,
         ModelsCommand.Command,
+        VerifyCommand.Command,
         BridgeCommand.Command,
     ];
 

@@ -1,0 +1,118 @@
+namespace Machina.Simulation.Twin;
+
+/// <summary>
+/// The arm of a twin controller: its model's kinematics (shared with the library), the joints it is at, the active tool centre
+/// point and payload, and a trace of what it did. Language interpreters move it; it refuses what the real arm cannot do.
+/// </summary>
+internal sealed class TwinArm
+{
+    private readonly Lock _gate = new();
+    private readonly List<TwinTraceEntry> _trace = [];
+    private Joints _joints;
+
+    /// <summary>An arm of <paramref name="model"/> at <paramref name="start"/> joints (degrees).</summary>
+    public TwinArm(RobotModel model, Joints start, TwinClock clock)
+    {
+        Model = model;
+        Clock = clock;
+        if (!model.IsWithinLimits(start))
+        {
+            throw new ArgumentException($"The start joints {start} are outside the limits of the {model}.", nameof(start));
+        }
+        _joints = start;
+    }
+
+    /// <summary>The robot model (kinematics, joint limits).</summary>
+    public RobotModel Model { get; }
+
+    /// <summary>The controller's clock.</summary>
+    public TwinClock Clock { get; }
+
+    /// <summary>The joints now, in degrees.</summary>
+    public Joints Joints
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _joints;
+            }
+        }
+    }
+
+    /// <summary>The active tool centre point, relative to the flange (mm).</summary>
+    public Pose ToolCenter { get; set; } = Pose.Identity;
+
+    /// <summary>The payload mass in kg.</summary>
+    public double PayloadKg { get; set; }
+
+    /// <summary>The flange pose now (mm, base frame).</summary>
+    public Pose Flange => Model.Kinematics.Forward(Joints);
+
+    /// <summary>The tool centre point now (mm, base frame).</summary>
+    public Pose Tcp => Flange * ToolCenter;
+
+    /// <summary>A copy of every traced step so far.</summary>
+    public IReadOnlyList<TwinTraceEntry> Trace
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return [.. _trace];
+            }
+        }
+    }
+
+    /// <summary>The joints (degrees) that put the tool centre point at <paramref name="tcp"/>, nearest to <paramref name="near"/>.</summary>
+    /// <exception cref="TwinMotionException">The pose is out of reach or needs a joint beyond its limits.</exception>
+    public Joints Solve(Pose tcp, Joints near)
+    {
+        Pose flange = tcp * ToolCenter.Inverse();
+        Joints? solution = Model.Kinematics.Closest(flange, near);
+        if (solution is { } found)
+        {
+            return found;
+        }
+        KinematicIssue? why = Model.Kinematics.WhyNoSolution(flange);
+        throw new TwinMotionException(why is { Kind: KinematicIssueKind.JointLimit }
+            ? $"no inverse kinematics solution within the joint limits for the target pose ({why})"
+            : "no inverse kinematics solution: the target pose is out of reach");
+    }
+
+    /// <summary>Checks that <paramref name="joints"/> are within the joint limits.</summary>
+    /// <exception cref="TwinMotionException">A joint is beyond its limit.</exception>
+    public void RequireWithinLimits(Joints joints)
+    {
+        if (!Model.IsWithinLimits(joints))
+        {
+            double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
+            int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
+            throw new TwinMotionException(FormattableString.Invariant(
+                $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
+        }
+    }
+
+    /// <summary>Moves to <paramref name="target"/> joints in <paramref name="seconds"/>, then traces the step at <paramref name="line"/>.</summary>
+    public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation)
+    {
+        RequireWithinLimits(target);
+        Clock.Wait(seconds, cancellation);
+        lock (_gate)
+        {
+            _joints = target;
+        }
+        Record(line, TwinTraceKind.Motion, text);
+    }
+
+    /// <summary>Adds a step to the trace, with the arm's joints and TCP now.</summary>
+    public void Record(int line, TwinTraceKind kind, string text)
+    {
+        Joints joints = Joints;
+        var entry = new TwinTraceEntry(line, kind, joints, Model.Kinematics.Forward(joints) * ToolCenter, text, Clock.Seconds);
+        lock (_gate)
+        {
+            _trace.Add(entry);
+        }
+    }
+}

@@ -1,0 +1,35 @@
+namespace Machina.Simulation.Twin;
+
+/// <summary>
+/// The time of a twin controller. Motion and waits advance <see cref="Seconds"/>; in real-time mode they also take that long on the
+/// <see cref="TimeProvider"/> (a fake provider in tests), otherwise they return at once (to verify a program quickly).
+/// </summary>
+internal sealed class TwinClock(TimeProvider time, bool realTime)
+{
+    private long _ticks;
+
+    /// <summary>The time source that real-time waits use.</summary>
+    public TimeProvider Time { get; } = time;
+
+    /// <summary>True when waits take their time on <see cref="Time"/>.</summary>
+    public bool RealTime { get; } = realTime;
+
+    /// <summary>Program time so far, in seconds: the sum of every motion and wait.</summary>
+    public double Seconds => Interlocked.Read(ref _ticks) / (double)TimeSpan.TicksPerSecond;
+
+    /// <summary>Advances the program time by <paramref name="seconds"/>, waiting for it in real-time mode.</summary>
+    public void Wait(double seconds, CancellationToken cancellation)
+    {
+        cancellation.ThrowIfCancellationRequested();
+        if (!(seconds > 0))
+        {
+            return;
+        }
+        TimeSpan span = TimeSpan.FromSeconds(Math.Min(seconds, 86_400));
+        if (RealTime)
+        {
+            Task.Delay(span, Time, cancellation).GetAwaiter().GetResult();
+        }
+        Interlocked.Add(ref _ticks, span.Ticks);
+    }
+}

@@ -1,0 +1,235 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.UrScript;
+
+internal static partial class UrBuiltins
+{
+    /// <summary>Largest joint change (degrees) between two neighbouring points of a straight-line move before it is refused as a flip.</summary>
+    private const double MaxJointStepDegrees = 60;
+
+    private static void AddMotion(Dictionary<string, UrBuiltin> t)
+    {
+        Add(t, "movej", MoveJ, R("q"), O("a", 1.4), O("v", 1.05), O("t", 0), O("r", 0));
+        Add(t, "movel", (m, line, a) => MoveLinear(m, line, a, "movel"), R("pose"), O("a", 1.2), O("v", 0.25), O("t", 0), O("r", 0));
+        Add(t, "movep", (m, line, a) => MoveLinear(m, line, [a[0], a[1], a[2], 0, a[3]], "movep"), R("pose"), O("a", 1.2), O("v", 0.25), O("r", 0));
+        Add(t, "movec", MoveC, R("pose_via"), R("pose_to"), O("a", 1.2), O("v", 0.25), O("r", 0), O("mode", 0));
+        Add(t, "servoj", ServoJ, R("q"), O("a", 0), O("v", 0), O("t", 0.002), O("lookahead_time", 0.1), O("gain", 300));
+        Add(t, "stopj", (m, line, a) => Positive(Num(a, 0, line, "stopj", "a"), line, "stopj", "a"), R("a"));
+        Add(t, "stopl", (m, line, a) => Positive(Num(a, 0, line, "stopl", "a"), line, "stopl", "a"), R("a"), O("aRot", NotGiven));
+        Add(t, "get_actual_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
+        Add(t, "get_target_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
+        Add(t, "get_actual_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
+        Add(t, "get_target_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
+        Add(t, "get_actual_tcp_speed", (m, line, a) => new UrPose(new double[6]));
+        Add(t, "get_actual_joint_speeds", (m, line, a) => new UrList([0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
+        Add(t, "is_steady", (m, line, a) => UrValue.Box(true));
+        Add(t, "set_tcp", SetTcp, R("pose"));
+        Add(t, "set_payload", SetPayload, R("m"), O("cog", NotGiven));
+        Add(t, "set_payload_mass", (m, line, a) => SetPayload(m, line, [a[0], NotGiven]), R("m"));
+        Add(t, "get_forward_kin", ForwardKin, O("q", NotGiven), O("tcp", NotGiven));
+        Add(t, "get_inverse_kin", InverseKin, R("x"), O("qnear", NotGiven), O("maxPositionError", 1e-10), O("maxOrientationError", 1e-10), O("tcp", NotGiven));
+        Add(t, "get_inverse_kin_has_solution", (m, line, a) => UrValue.Box(TrySolve(m, line, a[0], a[1]) is not null),
+            R("pose"), O("qnear", NotGiven), O("maxPositionError", 1e-10), O("maxOrientationError", 1e-10), O("tcp", NotGiven));
+        Add(t, "is_within_safety_limits", (m, line, a) => UrValue.Box(TrySolve(m, line, a[0], NotGiven) is not null), R("pose"), O("qnear", NotGiven));
+    }
+
+    private static object Positive(double value, int line, string function, string parameter) =>
+        value > 0 ? UrNone.Value : throw new UrRuntimeException(line, $"{function}: argument '{parameter}' must be positive");
+
+    private static (double A, double V, double T, double R) Profile(object[] a, int line, string function)
+    {
+        double acc = Num(a, 1, line, function, "a"), v = Num(a, 2, line, function, "v"), time = Num(a, 3, line, function, "t"), r = Num(a, 4, line, function, "r");
+        if (time < 0 || r < 0 || !double.IsFinite(time) || !double.IsFinite(r))
+        {
+            throw new UrRuntimeException(line, $"{function}: 't' and 'r' must be zero or positive");
+        }
+        if (time == 0 && (!(acc > 0) || !(v > 0) || !double.IsFinite(acc) || !double.IsFinite(v)))
+        {
+            throw new UrRuntimeException(line, $"{function}: speed 'v' and acceleration 'a' must be positive");
+        }
+        return (acc, v, time, r);
+    }
+
+    private static Joints Solve(UrMachine m, int line, string function, Pose tcp, Joints near)
+    {
+        try
+        {
+            return m.Controller.Arm.Solve(tcp, near);
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{function}: {e.Message}");
+        }
+    }
+
+    private static void Move(UrMachine m, int line, Joints target, double seconds, string function)
+    {
+        CancellationToken token = m.Cancellation;
+        try
+        {
+            m.Unlocked(() =>
+            {
+                m.Controller.Arm.MoveTo(target, seconds, line, function, token);
+                return 0;
+            });
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{function}: {e.Message}");
+        }
+    }
+
+    private static object MoveJ(UrMachine m, int line, object[] a)
+    {
+        (double acc, double v, double time, _) = Profile(a, line, "movej");
+        Joints from = m.Controller.Arm.Joints;
+        Joints to = a[0] is UrPose pose
+            ? Solve(m, line, "movej", UrGeometry.ToPose(pose.Values, line), from)
+            : UrGeometry.ToJoints(Six(a, 0, line, "movej", "q"), line);
+        double distance = (to - from).ToArray().Max(Math.Abs) * Math.PI / 180;
+        Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), "movej");
+        return UrNone.Value;
+    }
+
+    private static object MoveLinear(UrMachine m, int line, object[] a, string function)
+    {
+        (double acc, double v, double time, _) = Profile(a, line, function);
+        Pose target = a[0] is UrList list && list.Items.Length == 6 && a[0] is not UrPose
+            ? m.Controller.Arm.Model.Kinematics.Forward(UrGeometry.ToJoints(Six(a, 0, line, function, "pose"), line)) * m.Controller.Arm.ToolCenter
+            : UrGeometry.ToPose(Six(a, 0, line, function, "pose"), line);
+        Pose start = m.Controller.Arm.Tcp;
+        Joints last = FollowLine(m, line, function, start, target, t => new Pose(
+            start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t)));
+        double metres = (target.Position - start.Position).Length / 1000;
+        double distance = metres > 1e-6 ? metres : UrGeometry.AngleBetween(start.Rotation, target.Rotation);
+        Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function);
+        return UrNone.Value;
+    }
+
+    /// <summary>Solves the inverse kinematics at points along a path, each near the last, and gives the joints at its end.</summary>
+    private static Joints FollowLine(UrMachine m, int line, string function, Pose start, Pose end, Func<double, Pose> at)
+    {
+        double mm = (end.Position - start.Position).Length;
+        double degrees = UrGeometry.AngleBetween(start.Rotation, end.Rotation) * 180 / Math.PI;
+        int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(mm / 10, degrees / 5)), 1, 16);
+        Joints joints = m.Controller.Arm.Joints;
+        Solve(m, line, function, end, joints); // the target itself first, so that an unreachable target is named as such
+        for (int k = 1; k <= steps; k++)
+        {
+            Joints next;
+            try
+            {
+                next = m.Controller.Arm.Solve(at((double)k / steps), joints);
+            }
+            catch (TwinMotionException e)
+            {
+                throw new UrRuntimeException(line, FormattableString.Invariant(
+                    $"{function}: the straight path leaves the workspace {100.0 * (k - 1) / steps:0}% of the way ({e.Message})"));
+            }
+            double jump = (next - joints).ToArray().Max(Math.Abs);
+            if (jump > MaxJointStepDegrees)
+            {
+                throw new UrRuntimeException(line, FormattableString.Invariant(
+                    $"{function}: the straight path passes near a singularity (a joint would turn {jump:0.#} deg between two close points)"));
+            }
+            joints = next;
+        }
+        return joints;
+    }
+
+    private static object MoveC(UrMachine m, int line, object[] a)
+    {
+        (double acc, double v, _, _) = Profile([null!, a[2], a[3], 0, a[4]], line, "movec");
+        Pose via = UrGeometry.ToPose(Six(a, 0, line, "movec", "pose_via"), line);
+        Pose to = UrGeometry.ToPose(Six(a, 1, line, "movec", "pose_to"), line);
+        Pose start = m.Controller.Arm.Tcp;
+        Vector p0 = start.Position, p1 = via.Position, p2 = to.Position;
+        Vector u = p1 - p0, w = p2 - p0;
+        Vector normal = Vector.Cross(u, w);
+        if (normal.Length < 1e-9 * Math.Max(1, u.Length * w.Length))
+        {
+            throw new UrRuntimeException(line, "movec: the start, via and end points are on one line, so they do not define a circle");
+        }
+        // Circle centre from the three points; angles measured around the normal.
+        Vector centre = p0 + (Vector.Cross(normal, u) * w.SquaredLength + Vector.Cross(w, normal) * u.SquaredLength) / (2 * normal.SquaredLength);
+        Vector n = normal.Normalized();
+        Vector x = (p0 - centre).Normalized();
+        Vector y = Vector.Cross(n, x);
+        double Angle(Vector p) => (Math.Atan2(Vector.Dot(p - centre, y), Vector.Dot(p - centre, x)) + 2 * Math.PI) % (2 * Math.PI);
+        double sweep = Angle(p2);
+        double radius = (p0 - centre).Length;
+        Joints last = FollowLine(m, line, "movec", start, new Pose(p2, to.Rotation), t =>
+        {
+            double angle = sweep * t;
+            return new Pose(centre + x * (radius * Math.Cos(angle)) + y * (radius * Math.Sin(angle)), UrGeometry.Slerp(start.Rotation, to.Rotation, t));
+        });
+        Move(m, line, last, TwinMotion.TrapezoidSeconds(radius * sweep / 1000, v, acc), "movec");
+        return UrNone.Value;
+    }
+
+    private static object ServoJ(UrMachine m, int line, object[] a)
+    {
+        Joints to = UrGeometry.ToJoints(Six(a, 0, line, "servoj", "q"), line);
+        double time = Num(a, 3, line, "servoj", "t");
+        if (!(time > 0))
+        {
+            throw new UrRuntimeException(line, "servoj: argument 't' must be positive");
+        }
+        Joints from = m.Controller.Arm.Joints;
+        if (m.Controller.Arm.Model.MaxJointSpeeds is { } max)
+        {
+            double[] delta = (to - from).ToArray(), limit = max.ToArray();
+            for (int i = 0; i < 6; i++)
+            {
+                if (Math.Abs(delta[i]) / time > limit[i])
+                {
+                    throw new UrRuntimeException(line, FormattableString.Invariant(
+                        $"servoj: joint {i + 1} would move at {Math.Abs(delta[i]) / time:0.#} deg/s, above its maximum of {limit[i]:0.#} deg/s"));
+                }
+            }
+        }
+        Move(m, line, to, time, "servoj");
+        return UrNone.Value;
+    }
+
+    private static object SetTcp(UrMachine m, int line, object[] a)
+    {
+        m.Controller.Arm.ToolCenter = UrGeometry.ToPose(Six(a, 0, line, "set_tcp", "pose"), line);
+        m.Controller.Arm.Record(line, TwinTraceKind.Tool, "set_tcp");
+        return UrNone.Value;
+    }
+
+    private static object SetPayload(UrMachine m, int line, object[] a)
+    {
+        double mass = Num(a, 0, line, "set_payload", "m");
+        if (!(mass >= 0) || !double.IsFinite(mass))
+        {
+            throw new UrRuntimeException(line, "set_payload: the mass 'm' must be zero or positive");
+        }
+        m.Controller.Arm.PayloadKg = mass;
+        return UrNone.Value;
+    }
+
+    private static object ForwardKin(UrMachine m, int line, object[] a)
+    {
+        Joints q = Given(a[0]) ? UrGeometry.ToJoints(Six(a, 0, line, "get_forward_kin", "q"), line) : m.Controller.Arm.Joints;
+        Pose tcp = Given(a[1]) ? UrGeometry.ToPose(Six(a, 1, line, "get_forward_kin", "tcp"), line) : m.Controller.Arm.ToolCenter;
+        return UrGeometry.FromPose(m.Controller.Arm.Model.Kinematics.Forward(q) * tcp);
+    }
+
+    private static Joints? TrySolve(UrMachine m, int line, object pose, object near)
+    {
+        Pose target = UrGeometry.ToPose(UrValue.Six(pose, line, "the pose"), line);
+        Joints reference = Given(near) ? UrGeometry.ToJoints(UrValue.Six(near, line, "qnear"), line) : m.Controller.Arm.Joints;
+        return m.Controller.Arm.Model.Kinematics.Closest(target * m.Controller.Arm.ToolCenter.Inverse(), reference);
+    }
+
+    private static object InverseKin(UrMachine m, int line, object[] a)
+    {
+        Pose target = UrGeometry.ToPose(Six(a, 0, line, "get_inverse_kin", "x"), line);
+        Joints near = Given(a[1]) ? UrGeometry.ToJoints(Six(a, 1, line, "get_inverse_kin", "qnear"), line) : m.Controller.Arm.Joints;
+        Pose tcp = Given(a[4]) ? UrGeometry.ToPose(Six(a, 4, line, "get_inverse_kin", "tcp"), line) : m.Controller.Arm.ToolCenter;
+        Joints? solution = m.Controller.Arm.Model.Kinematics.Closest(target * tcp.Inverse(), near);
+        return solution is { } q ? UrGeometry.FromJoints(q) : throw new UrRuntimeException(line, "get_inverse_kin: no solution for the pose within the joint limits");
+    }
+}

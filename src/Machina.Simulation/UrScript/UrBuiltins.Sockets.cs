@@ -1,0 +1,97 @@
+using System.Text;
+
+namespace Machina.Simulation.UrScript;
+
+internal static partial class UrBuiltins
+{
+    private const string DefaultSocket = "socket_0";
+
+    private static void AddSockets(Dictionary<string, UrBuiltin> t)
+    {
+        Add(t, "socket_open", SocketOpen, R("address"), R("port"), O("socket_name", DefaultSocket));
+        Add(t, "socket_close", (m, line, a) =>
+        {
+            string name = Str(a, 0, line, "socket_close", "socket_name");
+            if (m.Controller.Sockets.Remove(name, out UrSocket? socket))
+            {
+                socket.Dispose();
+            }
+            return UrNone.Value;
+        }, O("socket_name", DefaultSocket));
+        Add(t, "socket_read_binary_integer", (m, line, a) =>
+        {
+            int count = Int(a, 0, line, "socket_read_binary_integer", "number");
+            if (count < 1 || count > 30)
+            {
+                throw new UrRuntimeException(line, "socket_read_binary_integer: 'number' must be 1 to 30");
+            }
+            UrSocket socket = Socket(m, line, a, 1, "socket_read_binary_integer");
+            double timeout = Num(a, 2, line, "socket_read_binary_integer", "timeout");
+            CancellationToken token = m.Cancellation;
+            return m.Unlocked(() => socket.ReadIntegers(count, timeout, token));
+        }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
+        Add(t, "socket_read_ascii_float", (m, line, a) =>
+        {
+            int count = Int(a, 0, line, "socket_read_ascii_float", "number");
+            if (count < 1 || count > 30)
+            {
+                throw new UrRuntimeException(line, "socket_read_ascii_float: 'number' must be 1 to 30");
+            }
+            UrSocket socket = Socket(m, line, a, 1, "socket_read_ascii_float");
+            double timeout = Num(a, 2, line, "socket_read_ascii_float", "timeout");
+            CancellationToken token = m.Cancellation;
+            return m.Unlocked(() => socket.ReadAsciiFloats(count, timeout, token));
+        }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
+        Add(t, "socket_read_string", (m, line, a) =>
+        {
+            UrSocket socket = Socket(m, line, a, 0, "socket_read_string");
+            double timeout = Num(a, 4, line, "socket_read_string", "timeout");
+            CancellationToken token = m.Cancellation;
+            return m.Unlocked(() => socket.ReadString(timeout, token));
+        }, O("socket_name", DefaultSocket), O("prefix", ""), O("suffix", ""), O("interpret_escape", "False"), O("timeout", 2));
+        Add(t, "socket_send_int", (m, line, a) =>
+            UrValue.Box(Socket(m, line, a, 1, "socket_send_int").SendInt(Int(a, 0, line, "socket_send_int", "value"))),
+            R("value"), O("socket_name", DefaultSocket));
+        Add(t, "socket_send_byte", (m, line, a) =>
+            UrValue.Box(Socket(m, line, a, 1, "socket_send_byte").Send([(byte)Int(a, 0, line, "socket_send_byte", "value")])),
+            R("value"), O("socket_name", DefaultSocket));
+        Add(t, "socket_send_string", (m, line, a) =>
+            UrValue.Box(Socket(m, line, a, 1, "socket_send_string").Send(Encoding.Latin1.GetBytes(UrValue.ToText(a[0])))),
+            R("str"), O("socket_name", DefaultSocket));
+        Add(t, "socket_send_line", (m, line, a) =>
+            UrValue.Box(Socket(m, line, a, 1, "socket_send_line").Send(Encoding.Latin1.GetBytes(UrValue.ToText(a[0]) + "\n"))),
+            R("str"), O("socket_name", DefaultSocket));
+    }
+
+    private static object SocketOpen(UrMachine m, int line, object[] a)
+    {
+        string address = Str(a, 0, line, "socket_open", "address");
+        int port = Int(a, 1, line, "socket_open", "port");
+        string name = Str(a, 2, line, "socket_open", "socket_name");
+        if (port < 1 || port > 65535)
+        {
+            throw new UrRuntimeException(line, $"socket_open: port {port} is not 1 to 65535");
+        }
+        if (m.Controller.Sockets.Remove(name, out UrSocket? old))
+        {
+            old.Dispose();
+        }
+        CancellationToken token = m.Cancellation;
+        TimeSpan timeout = m.Controller.Options.SocketOpenTimeout;
+        UrSocket? socket = m.Unlocked(() => UrSocket.Connect(address, port, timeout, token));
+        if (socket is null)
+        {
+            return UrValue.Box(false);
+        }
+        m.Controller.Sockets[name] = socket;
+        return UrValue.Box(true);
+    }
+
+    private static UrSocket Socket(UrMachine m, int line, object[] a, int index, string function)
+    {
+        string name = Str(a, index, line, function, "socket_name");
+        return m.Controller.Sockets.TryGetValue(name, out UrSocket? socket)
+            ? socket
+            : throw new UrRuntimeException(line, $"{function}: socket '{name}' is not open");
+    }
+}

@@ -1,0 +1,56 @@
+using System.Collections.Frozen;
+
+namespace Machina.Simulation.UrScript;
+
+/// <summary>
+/// The built-in functions the twin knows, with the parameter names and defaults of UR's Script Manual. A program that calls
+/// anything else is refused at compile time.
+/// </summary>
+internal static partial class UrBuiltins
+{
+    /// <summary>Default of a parameter whose value depends on the controller (the current joints, the active TCP, …).</summary>
+    private static readonly object NotGiven = UrNone.Value;
+
+    /// <summary>Every built-in by name.</summary>
+    public static FrozenDictionary<string, UrBuiltin> All { get; } = Build();
+
+    private static FrozenDictionary<string, UrBuiltin> Build()
+    {
+        var table = new Dictionary<string, UrBuiltin>(StringComparer.Ordinal);
+        AddMotion(table);
+        AddPoseMath(table);
+        AddIo(table);
+        AddSockets(table);
+        AddMath(table);
+        AddMisc(table);
+        return table.ToFrozenDictionary(StringComparer.Ordinal);
+    }
+
+    private static void Add(Dictionary<string, UrBuiltin> table, string name, Func<UrMachine, int, object[], object> body, params (string, object?)[] parameters) =>
+        table.Add(name, new UrBuiltin(name, parameters, body));
+
+    /// <summary>A required parameter.</summary>
+    private static (string, object?) R(string name) => (name, null);
+
+    /// <summary>An optional parameter with its default.</summary>
+    private static (string, object?) O(string name, object value) => (name, value);
+
+    private static double Num(object[] a, int i, int line, string function, string parameter) =>
+        UrValue.Number(a[i], line, $"{function}: argument '{parameter}'");
+
+    private static int Int(object[] a, int i, int line, string function, string parameter) =>
+        a[i] is double d && d != Math.Floor(d)
+            ? throw new UrRuntimeException(line, $"{function}: argument '{parameter}' must be an integer, not {UrValue.FormatNumber(d)}")
+            : UrValue.Int(a[i], line, $"{function}: argument '{parameter}'");
+
+    private static bool Bool(object[] a, int i, int line, string function, string parameter) =>
+        UrValue.Bool(a[i], line, $"{function}: argument '{parameter}'");
+
+    private static string Str(object[] a, int i, int line, string function, string parameter) =>
+        UrValue.Text(a[i], line, $"{function}: argument '{parameter}'");
+
+    private static double[] Six(object[] a, int i, int line, string function, string parameter) =>
+        UrValue.Six(a[i], line, $"{function}: argument '{parameter}'");
+
+    private static bool Given(object value) => !ReferenceEquals(value, NotGiven);
+}

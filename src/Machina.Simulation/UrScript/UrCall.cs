@@ -1,0 +1,61 @@
+namespace Machina.Simulation.UrScript;
+
+/// <summary>A call <c>name(a, b, key=c)</c>; the binder resolves it to a built-in or a function of the program.</summary>
+internal sealed class UrCall(int line, string name, List<UrExpr> positional, List<(string Name, UrExpr Value)> named) : UrExpr(line)
+{
+    /// <summary>The called name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>Arguments given by position.</summary>
+    public List<UrExpr> Positional { get; } = positional;
+
+    /// <summary>Arguments given by name.</summary>
+    public List<(string Name, UrExpr Value)> Named { get; } = named;
+
+    /// <summary>The built-in called, once bound.</summary>
+    public UrBuiltin? Builtin { get; set; }
+
+    /// <summary>The program's function called, once bound.</summary>
+    public UrFunction? Function { get; set; }
+
+    /// <summary>One expression per parameter, in parameter order (defaults filled in), once bound.</summary>
+    public UrExpr[] Arguments { get; set; } = [];
+
+    /// <inheritdoc/>
+    public override object Eval(UrFrame frame)
+    {
+        var values = new object[Arguments.Length];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = Arguments[i].Eval(frame);
+        }
+        if (Builtin is not null)
+        {
+            return Builtin.Invoke(frame.Machine, Line, values);
+        }
+        return Function!.Invoke(frame.Machine, Line, values, frame.Depth + 1);
+    }
+}
+
+/// <summary><c>run name()</c>: starts a thread of the program and gives its handle.</summary>
+internal sealed class UrRunExpr(int line, string name) : UrExpr(line)
+{
+    /// <summary>The thread's name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>The thread definition, once bound.</summary>
+    public UrFunction? Thread { get; set; }
+
+    /// <inheritdoc/>
+    public override object Eval(UrFrame frame) => frame.Machine.StartThread(Thread!, Line);
+}
+
+/// <summary>The parameters and implementation of one built-in function, as in the Script Manual.</summary>
+/// <param name="Name">The function's name.</param>
+/// <param name="Parameters">Parameter names; a non-null default makes the parameter optional.</param>
+/// <param name="Body">The implementation: machine, line and one value per parameter.</param>
+internal sealed record UrBuiltin(string Name, (string Name, object? Default)[] Parameters, Func<UrMachine, int, object[], object> Body)
+{
+    /// <summary>Runs the built-in.</summary>
+    public object Invoke(UrMachine machine, int line, object[] args) => Body(machine, line, args);
+}

@@ -1,0 +1,127 @@
+using System.Globalization;
+
+namespace Machina.Simulation.UrScript;
+
+/// <summary>Splits URScript text into tokens: names, numbers, strings, symbols and line ends; comments (#) are dropped.</summary>
+internal static class UrLexer
+{
+    /// <summary>The tokens of <paramref name="text"/>, ending with <see cref="UrTokenKind.End"/>.</summary>
+    /// <exception cref="UrCompileException">A character that is not URScript, or a string that does not end on its line.</exception>
+    public static List<UrToken> Tokenize(string text)
+    {
+        var tokens = new List<UrToken>(text.Length / 4 + 8);
+        int line = 1, lineStart = 0, i = 0;
+        while (i < text.Length)
+        {
+            char c = text[i];
+            int column = i - lineStart + 1;
+            if (c == '\n')
+            {
+                tokens.Add(new UrToken(UrTokenKind.Newline, "\n", line, column));
+                line++;
+                lineStart = ++i;
+            }
+            else if (c == ' ' || c == '\t' || c == '\r')
+            {
+                i++;
+            }
+            else if (c == '#')
+            {
+                while (i < text.Length && text[i] != '\n')
+                {
+                    i++;
+                }
+            }
+            else if (char.IsAsciiLetter(c) || c == '_')
+            {
+                int start = i;
+                while (i < text.Length && (char.IsAsciiLetterOrDigit(text[i]) || text[i] == '_'))
+                {
+                    i++;
+                }
+                tokens.Add(new UrToken(UrTokenKind.Name, text[start..i], line, column));
+            }
+            else if (char.IsAsciiDigit(c) || (c == '.' && i + 1 < text.Length && char.IsAsciiDigit(text[i + 1])))
+            {
+                tokens.Add(ReadNumber(text, ref i, line, column));
+            }
+            else if (c == '"' || c == '\'')
+            {
+                int start = ++i;
+                while (i < text.Length && text[i] != c && text[i] != '\n')
+                {
+                    i++;
+                }
+                if (i >= text.Length || text[i] != c)
+                {
+                    throw new UrCompileException(line, "the string does not end on its line");
+                }
+                tokens.Add(new UrToken(UrTokenKind.String, text[start..i], line, column));
+                i++;
+            }
+            else if (i + 1 < text.Length && text[i + 1] == '=' && c is '=' or '!' or '<' or '>')
+            {
+                tokens.Add(new UrToken(UrTokenKind.Symbol, text.Substring(i, 2), line, column));
+                i += 2;
+            }
+            else if ("+-*/%=<>()[],:".Contains(c, StringComparison.Ordinal))
+            {
+                tokens.Add(new UrToken(UrTokenKind.Symbol, c.ToString(), line, column));
+                i++;
+            }
+            else
+            {
+                throw new UrCompileException(line, $"unexpected character '{c}'");
+            }
+        }
+        tokens.Add(new UrToken(UrTokenKind.Newline, "\n", line, i - lineStart + 1));
+        tokens.Add(new UrToken(UrTokenKind.End, "", line, i - lineStart + 1));
+        return tokens;
+    }
+
+    private static UrToken ReadNumber(string text, ref int i, int line, int column)
+    {
+        int start = i;
+        bool isFloat = false;
+        while (i < text.Length && char.IsAsciiDigit(text[i]))
+        {
+            i++;
+        }
+        if (i < text.Length && text[i] == '.')
+        {
+            isFloat = true;
+            i++;
+            while (i < text.Length && char.IsAsciiDigit(text[i]))
+            {
+                i++;
+            }
+        }
+        if (i < text.Length && (text[i] == 'e' || text[i] == 'E'))
+        {
+            int save = i++;
+            if (i < text.Length && (text[i] == '+' || text[i] == '-'))
+            {
+                i++;
+            }
+            if (i < text.Length && char.IsAsciiDigit(text[i]))
+            {
+                isFloat = true;
+                while (i < text.Length && char.IsAsciiDigit(text[i]))
+                {
+                    i++;
+                }
+            }
+            else
+            {
+                i = save;
+            }
+        }
+        string literal = text[start..i];
+        double value = double.Parse(literal, NumberStyles.Float, CultureInfo.InvariantCulture);
+        if (!isFloat && (value > int.MaxValue + 1.0))
+        {
+            throw new UrCompileException(line, $"the integer {literal} is out of range");
+        }
+        return new UrToken(isFloat ? UrTokenKind.Float : UrTokenKind.Int, literal, line, column, value);
+    }
+}

@@ -1,0 +1,202 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.UrScript;
+
+/// <summary>A started thread of a program (the value <c>run</c> gives).</summary>
+internal sealed class UrThreadHandle(string name, CancellationTokenSource stop)
+{
+    /// <summary>The thread's name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>Cancelled by <c>kill</c> or when the program stops.</summary>
+    public CancellationTokenSource Stop { get; } = stop;
+
+    /// <summary>The .NET thread that runs it.</summary>
+    public Thread? Thread { get; set; }
+
+    /// <inheritdoc/>
+    public override string ToString() => $"thread {Name}";
+}
+
+/// <summary>
+/// One running URScript program: its globals, its threads and the controller it runs on. Threads run one at a time, as in the
+/// controller: a thread gives way to the others only in a blocking call (motion, sleep, sync, socket reads) or every few thousand
+/// loop turns.
+/// </summary>
+internal sealed class UrMachine : IDisposable
+{
+    private const int LoopTurnsPerYield = 4096;
+    private readonly object _gil = new();
+    private readonly ThreadLocal<CancellationToken> _token = new();
+    private readonly CancellationTokenSource _stop;
+    private readonly List<UrThreadHandle> _threads = [];
+    private Exception? _threadError;
+    private int _turns;
+
+    /// <summary>A machine for <paramref name="program"/> on <paramref name="controller"/>.</summary>
+    public UrMachine(UrBoundProgram program, UrTwinController controller, CancellationToken cancellation)
+    {
+        Program = program;
+        Controller = controller;
+        Globals = new object?[program.Globals.Length];
+        _stop = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
+    }
+
+    /// <summary>The program.</summary>
+    public UrBoundProgram Program { get; }
+
+    /// <summary>The controller the program runs on (arm, IO, sockets, pendant).</summary>
+    public UrTwinController Controller { get; }
+
+    /// <summary>The global variable slots.</summary>
+    public object?[] Globals { get; }
+
+    /// <summary>The line being run (for messages).</summary>
+    public int CurrentLine { get; set; }
+
+    /// <summary>Cancelled when the program or the calling thread is stopped.</summary>
+    public CancellationToken Cancellation => _token.IsValueCreated ? _token.Value : _stop.Token;
+
+    /// <summary>Runs the program to its end on the calling thread; a runtime error or a stop ends it with an exception.</summary>
+    public void Run()
+    {
+        _token.Value = _stop.Token;
+        lock (_gil)
+        {
+            try
+            {
+                var frame = new UrFrame(this, new object?[Program.Entry?.LocalCount ?? 0], 0);
+                if (Program.Statements.Count > 0)
+                {
+                    UrStmt.Run(Program.Statements, frame);
+                }
+                else if (Program.Entry is not null)
+                {
+                    Program.Entry.Invoke(this, Program.Entry.Line, [], 0);
+                }
+            }
+            catch (UrHaltSignal)
+            {
+            }
+            catch (OperationCanceledException) when (_threadError is not null)
+            {
+                throw _threadError;
+            }
+            finally
+            {
+                StopThreads();
+            }
+            if (_threadError is not null)
+            {
+                throw _threadError;
+            }
+        }
+    }
+
+    /// <summary>Called every loop turn: stops when asked, and lets the other threads run now and then.</summary>
+    public void LoopTick()
+    {
+        Cancellation.ThrowIfCancellationRequested();
+        if (++_turns >= LoopTurnsPerYield && _threads.Count > 0)
+        {
+            _turns = 0;
+            Unlocked(() => Thread.Yield());
+        }
+    }
+
+    /// <summary>Runs a blocking call (motion, wait, socket read) with the other threads allowed to run meanwhile.</summary>
+    public T Unlocked<T>(Func<T> call)
+    {
+        Monitor.Exit(_gil);
+        try
+        {
+            return call();
+        }
+        finally
+        {
+            Monitor.Enter(_gil);
+        }
+    }
+
+    /// <summary>Starts <paramref name="thread"/> and gives its handle.</summary>
+    public UrThreadHandle StartThread(UrFunction thread, int line)
+    {
+        var handle = new UrThreadHandle(thread.Name, CancellationTokenSource.CreateLinkedTokenSource(_stop.Token));
+        var worker = new Thread(() => ThreadBody(thread, handle)) { IsBackground = true, Name = "URScript thread " + thread.Name };
+        handle.Thread = worker;
+        _threads.Add(handle);
+        worker.Start();
+        return handle;
+    }
+
+    private void ThreadBody(UrFunction thread, UrThreadHandle handle)
+    {
+        _token.Value = handle.Stop.Token;
+        lock (_gil)
+        {
+            try
+            {
+                thread.Invoke(this, thread.Line, [], 0);
+            }
+            catch (OperationCanceledException)
+            {
+            }
+            catch (UrHaltSignal)
+            {
+                _stop.Cancel();
+            }
+            catch (Exception e) when (e is UrRuntimeException or TwinMotionException)
+            {
+                _threadError ??= e;
+                _stop.Cancel();
+            }
+        }
+    }
+
+    /// <summary><c>join</c>: waits for the thread to end.</summary>
+    public void JoinThread(UrThreadHandle handle, int line)
+    {
+        CancellationToken token = Cancellation;
+        Unlocked(() =>
+        {
+            while (!handle.Thread!.Join(20))
+            {
+                token.ThrowIfCancellationRequested();
+            }
+            return 0;
+        });
+    }
+
+    /// <summary><c>kill</c>: stops the thread (it ends at its next blocking call or loop turn).</summary>
+    public void KillThread(UrThreadHandle handle) => handle.Stop.Cancel();
+
+    private void StopThreads()
+    {
+        foreach (UrThreadHandle thread in _threads)
+        {
+            thread.Stop.Cancel();
+        }
+        if (_threads.Count > 0)
+        {
+            Unlocked(() =>
+            {
+                foreach (UrThreadHandle thread in _threads)
+                {
+                    thread.Thread!.Join(TimeSpan.FromSeconds(5));
+                }
+                return 0;
+            });
+        }
+    }
+
+    /// <inheritdoc/>
+    public void Dispose()
+    {
+        _stop.Dispose();
+        _token.Dispose();
+        foreach (UrThreadHandle thread in _threads)
+        {
+            thread.Stop.Dispose();
+        }
+    }
+}

@@ -1,0 +1,204 @@
+using System.Buffers.Binary;
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Simulation.UrScript;
+
+/// <summary>
+/// One client socket a program opened with <c>socket_open</c>. Reads wait up to their timeout for complete values; bytes of a
+/// value that has not fully arrived stay for the next read, so nothing half-read is lost.
+/// </summary>
+internal sealed class UrSocket(Socket socket) : IDisposable
+{
+    private byte[] _buffer = new byte[64 * 1024];
+    private int _start;
+    private int _end;
+    private bool _closed;
+
+    private int Buffered => _end - _start;
+
+    private ReadOnlySpan<byte> Pending => _buffer.AsSpan(_start, _end - _start);
+
+    private void Consume(int count) => _start += count;
+
+    /// <summary>Makes room for at least one more chunk at the end of the buffer.</summary>
+    private void MakeRoom()
+    {
+        if (_start > 0)
+        {
+            Buffer.BlockCopy(_buffer, _start, _buffer, 0, Buffered);
+            _end -= _start;
+            _start = 0;
+        }
+        if (_buffer.Length - _end < 16 * 1024)
+        {
+            Array.Resize(ref _buffer, _buffer.Length * 2);
+        }
+    }
+
+    /// <summary>Opens a TCP connection, waiting at most <paramref name="timeout"/>; null when it cannot connect.</summary>
+    public static UrSocket? Connect(string address, int port, TimeSpan timeout, CancellationToken cancellation)
+    {
+        var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true };
+        try
+        {
+            using var cts = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
+            cts.CancelAfter(timeout);
+            socket.ConnectAsync(address, port, cts.Token).AsTask().GetAwaiter().GetResult();
+            return new UrSocket(socket);
+        }
+        catch (Exception e) when (e is SocketException or OperationCanceledException or ArgumentException && !cancellation.IsCancellationRequested)
+        {
+            socket.Dispose();
+            return null;
+        }
+    }
+
+    /// <summary>Waits until <paramref name="count"/> bytes are buffered or the time is up; true when they are.</summary>
+    private bool Fill(int count, double timeoutSeconds, CancellationToken cancellation)
+    {
+        long deadline = Environment.TickCount64 + (long)(Math.Max(0, timeoutSeconds) * 1000);
+        while (Buffered < count && !_closed)
+        {
+            cancellation.ThrowIfCancellationRequested();
+            long left = deadline - Environment.TickCount64;
+            int slice = (int)Math.Clamp(left, 0, 50);
+            if (!socket.Poll(slice * 1000, SelectMode.SelectRead))
+            {
+                if (left <= 0)
+                {
+                    return false;
+                }
+                continue;
+            }
+            int read;
+            if (_buffer.Length - _end < 16 * 1024)
+            {
+                MakeRoom();
+            }
+            try
+            {
+                read = socket.Receive(_buffer, _end, _buffer.Length - _end, SocketFlags.None);
+            }
+            catch (SocketException)
+            {
+                read = 0;
+            }
+            if (read == 0)
+            {
+                _closed = true;
+                break;
+            }
+            _end += read;
+        }
+        return Buffered >= count;
+    }
+
+    /// <summary>
+    /// <c>socket_read_binary_integer</c>: [n, v1 … vn] with big-endian signed 32-bit values; [0, -1 …] when they did not all
+    /// arrive in time (what did arrive stays buffered).
+    /// </summary>
+    public UrList ReadIntegers(int count, double timeoutSeconds, CancellationToken cancellation)
+    {
+        var items = new object[count + 1];
+        if (!Fill(4 * count, timeoutSeconds, cancellation))
+        {
+            items[0] = 0;
+            for (int i = 1; i <= count; i++)
+            {
+                items[i] = -1;
+            }
+            return new UrList(items);
+        }
+        items[0] = count;
+        for (int i = 0; i < count; i++)
+        {
+            items[i + 1] = BinaryPrimitives.ReadInt32BigEndian(Pending.Slice(4 * i, 4));
+        }
+        Consume(4 * count);
+        return new UrList(items);
+    }
+
+    /// <summary><c>socket_read_string</c>: the text that arrives within the timeout (empty when none does).</summary>
+    public string ReadString(double timeoutSeconds, CancellationToken cancellation)
+    {
+        Fill(1, timeoutSeconds, cancellation);
+        string text = Encoding.Latin1.GetString(Pending);
+        Consume(Buffered);
+        return text;
+    }
+
+    /// <summary>
+    /// <c>socket_read_ascii_float</c>: reads text <c>(a, b, …)</c> and gives [n, a, b, …]; [0, nan …] when n numbers did not arrive in time.
+    /// </summary>
+    public UrList ReadAsciiFloats(int count, double timeoutSeconds, CancellationToken cancellation)
+    {
+        var failed = new object[count + 1];
+        failed[0] = 0;
+        for (int i = 1; i <= count; i++)
+        {
+            failed[i] = double.NaN;
+        }
+        int close;
+        while ((close = Pending.IndexOf((byte)')')) < 0)
+        {
+            int have = Buffered;
+            if (!Fill(have + 1, timeoutSeconds, cancellation))
+            {
+                return new UrList(failed);
+            }
+        }
+        string text = Encoding.Latin1.GetString(Pending[..(close + 1)]);
+        Consume(close + 1);
+        int open = text.IndexOf('(', StringComparison.Ordinal);
+        string[] parts = text[(open + 1)..^1].Split(',', StringSplitOptions.TrimEntries);
+        if (open < 0 || parts.Length != count)
+        {
+            return new UrList(failed);
+        }
+        var items = new object[count + 1];
+        items[0] = count;
+        for (int i = 0; i < count; i++)
+        {
+            if (!double.TryParse(parts[i], System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture, out double v))
+            {
+                return new UrList(failed);
+            }
+            items[i + 1] = v;
+        }
+        return new UrList(items);
+    }
+
+    /// <summary>Sends bytes; false when the connection is gone.</summary>
+    public bool Send(ReadOnlySpan<byte> bytes)
+    {
+        try
+        {
+            while (bytes.Length > 0)
+            {
+                int sent = socket.Send(bytes);
+                bytes = bytes[sent..];
+            }
+            return true;
+        }
+        catch (SocketException)
+        {
+            return false;
+        }
+        catch (ObjectDisposedException)
+        {
+            return false;
+        }
+    }
+
+    /// <summary><c>socket_send_int</c>: a big-endian signed 32-bit integer.</summary>
+    public bool SendInt(int value)
+    {
+        Span<byte> bytes = stackalloc byte[4];
+        BinaryPrimitives.WriteInt32BigEndian(bytes, value);
+        return Send(bytes);
+    }
+
+    /// <inheritdoc/>
+    public void Dispose() => socket.Dispose();
+}

@@ -1,0 +1,377 @@
+using System.Text;
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.UrScript;
+
+/// <summary>
+/// A UR controller that runs URScript: programs are compiled before they run (a mistake refuses the whole program, with its
+/// line), run on the twin arm with the model's kinematics, and a runtime error stops the program with the controller's message.
+/// Text arrives as on the controller's script port: a program starts as soon as its top-level <c>def … end</c> is complete,
+/// and a new program stops the one running.
+/// </summary>
+internal sealed class UrTwinController : IDisposable
+{
+    /// <summary>Largest program text accepted (a program above this size is refused).</summary>
+    public const int MaxProgramLength = 16 * 1024 * 1024;
+
+    private readonly Lock _gate = new();
+    private readonly StringBuilder _incoming = new();
+    private CancellationTokenSource? _programStop;
+    private Thread? _programThread;
+    private string? _startedName;
+    private UrProgramState _state;
+    private string? _error;
+    private int _programs;
+
+    /// <summary>A controller with <paramref name="options"/> (UR5e, not real-time, by default).</summary>
+    public UrTwinController(UrTwinOptions? options = null)
+    {
+        Options = options ?? new UrTwinOptions();
+        Clock = new TwinClock(Options.Time, Options.RealTime);
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock);
+        Random = new Random(Options.RandomSeed);
+        Io = new TwinIo();
+        Io.AddBits(UrIoBanks.StandardIn, 8);
+        Io.AddBits(UrIoBanks.StandardOut, 8);
+        Io.AddBits(UrIoBanks.ConfigurableIn, 8);
+        Io.AddBits(UrIoBanks.ConfigurableOut, 8);
+        Io.AddBits(UrIoBanks.ToolIn, 2);
+        Io.AddBits(UrIoBanks.ToolOut, 2);
+        Io.AddNumbers(UrIoBanks.AnalogIn, 2);
+        Io.AddNumbers(UrIoBanks.AnalogOut, 2);
+        Io.AddNumbers(UrIoBanks.ToolAnalogIn, 2);
+        Io.AddBits(UrIoBanks.InputBoolRegisters, 128);
+        Io.AddBits(UrIoBanks.OutputBoolRegisters, 128);
+        Io.AddNumbers(UrIoBanks.InputIntRegisters, 48);
+        Io.AddNumbers(UrIoBanks.OutputIntRegisters, 48);
+        Io.AddNumbers(UrIoBanks.InputFloatRegisters, 48);
+        Io.AddNumbers(UrIoBanks.OutputFloatRegisters, 48);
+    }
+
+    /// <summary>The settings.</summary>
+    public UrTwinOptions Options { get; }
+
+    /// <summary>The controller's clock.</summary>
+    public TwinClock Clock { get; }
+
+    /// <summary>The arm.</summary>
+    public TwinArm Arm { get; }
+
+    /// <summary>Inputs, outputs and RTDE registers.</summary>
+    public TwinIo Io { get; }
+
+    /// <summary>The pendant log: program messages and errors.</summary>
+    public TwinPendant Pendant { get; } = new();
+
+    /// <summary>The source of <c>random()</c> (seeded from the options, so a run can be repeated).</summary>
+    internal Random Random { get; }
+
+    /// <summary>The sockets the running program opened, by name.</summary>
+    internal Dictionary<string, UrSocket> Sockets { get; } = new(StringComparer.Ordinal);
+
+    /// <summary>Where the program is.</summary>
+    public UrProgramState State
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _state;
+            }
+        }
+    }
+
+    /// <summary>The message of the last compile or runtime error (null when the last program had none).</summary>
+    public string? Error
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _error;
+            }
+        }
+    }
+
+    /// <summary>How many programs were started (refused ones not counted).</summary>
+    public int ProgramsStarted
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _programs;
+            }
+        }
+    }
+
+    /// <summary>Parses and binds a program; throws <see cref="UrCompileException"/> for the first mistake.</summary>
+    public static UrBoundProgram Compile(string text)
+    {
+        if (text.Length > MaxProgramLength)
+        {
+            throw new UrCompileException(1, $"the program is longer than {MaxProgramLength} characters");
+        }
+        return UrBinder.Bind(UrParser.Parse(text), UrBuiltins.All);
+    }
+
+    /// <summary>
+    /// Text as it arrives on the script port, in any pieces. A top-level <c>def … end</c> starts when its <c>end</c> line is there
+    /// (a line break after it is not needed); the call line that often follows it belongs to that program and is skipped;
+    /// another complete line outside a definition runs as a one-line program.
+    /// </summary>
+    public void Receive(string text)
+    {
+        List<string> programs = [];
+        lock (_gate)
+        {
+            _incoming.Append(text);
+            if (_incoming.Length > MaxProgramLength)
+            {
+                _incoming.Clear();
+                _error = $"Compile error: line 1: the program is longer than {MaxProgramLength} characters";
+                _state = UrProgramState.Failed;
+                Pendant.Log(_error);
+                return;
+            }
+            while (TakeProgram() is { } program)
+            {
+                programs.Add(program);
+            }
+        }
+        foreach (string program in programs)
+        {
+            Start(program);
+        }
+    }
+
+    /// <summary>The next complete program in the received text, or null (called under the gate).</summary>
+    private string? TakeProgram()
+    {
+        string buffer = _incoming.ToString();
+        int at = 0;
+        int programStart = -1;
+        while (at < buffer.Length)
+        {
+            int newline = buffer.IndexOf('\n', at);
+            bool complete = newline >= 0;
+            string line = (complete ? buffer[at..newline] : buffer[at..]).TrimEnd('\r');
+            int next = complete ? newline + 1 : buffer.Length;
+            string code = StripComment(line).TrimEnd();
+            if (programStart < 0)
+            {
+                if (code.Trim().Length == 0)
+                {
+                    if (!complete)
+                    {
+                        break;
+                    }
+                    at = next;
+                    _incoming.Remove(0, next);
+                    buffer = buffer[next..];
+                    at = 0;
+                    continue;
+                }
+                if (code.StartsWith("def ", StringComparison.Ordinal) || code.StartsWith("sec ", StringComparison.Ordinal))
+                {
+                    programStart = at;
+                }
+                else if (complete)
+                {
+                    _incoming.Remove(0, next);
+                    if (_startedName is not null && code.Trim() == _startedName + "()")
+                    {
+                        _startedName = null;
+                        buffer = buffer[next..];
+                        at = 0;
+                        continue;
+                    }
+                    return line;
+                }
+                else
+                {
+                    break;
+                }
+            }
+            else if (code == "end" && line.Length > 0 && line[0] == 'e')
+            {
+                string program = buffer[programStart..next];
+                _incoming.Remove(0, next);
+                string header = program.TrimStart();
+                int paren = header.IndexOf('(', StringComparison.Ordinal);
+                _startedName = paren > 4 ? header[4..paren].Trim() : null;
+                return program;
+            }
+            if (!complete)
+            {
+                break;
+            }
+            at = next;
+        }
+        return null;
+    }
+
+    private static string StripComment(string line)
+    {
+        bool quoted = false;
+        for (int i = 0; i < line.Length; i++)
+        {
+            if (line[i] == '"')
+            {
+                quoted = !quoted;
+            }
+            else if (line[i] == '#' && !quoted)
+            {
+                return line[..i];
+            }
+        }
+        return line;
+    }
+
+    /// <summary>
+    /// Compiles <paramref name="text"/> and, when it compiles, stops the running program and starts this one on its own thread.
+    /// A program that does not compile is refused: the running one goes on, and <see cref="Error"/> says why.
+    /// </summary>
+    /// <returns>True when the program started.</returns>
+    public bool Start(string text)
+    {
+        UrBoundProgram program;
+        try
+        {
+            program = Compile(text);
+        }
+        catch (UrCompileException e)
+        {
+            Fail(e.Message);
+            return false;
+        }
+        StopProgram();
+        var stop = new CancellationTokenSource();
+        var thread = new Thread(() => RunBound(program, stop.Token)) { IsBackground = true, Name = "URScript program" };
+        lock (_gate)
+        {
+            _programStop = stop;
+            _programThread = thread;
+            _state = UrProgramState.Running;
+            _error = null;
+            _programs++;
+        }
+        thread.Start();
+        return true;
+    }
+
+    /// <summary>Compiles and runs <paramref name="text"/> on the calling thread to its end; gives how it ended.</summary>
+    public UrProgramState Run(string text, CancellationToken cancellation = default)
+    {
+        UrBoundProgram program;
+        try
+        {
+            program = Compile(text);
+        }
+        catch (UrCompileException e)
+        {
+            Fail(e.Message);
+            return UrProgramState.Failed;
+        }
+        StopProgram();
+        lock (_gate)
+        {
+            _state = UrProgramState.Running;
+            _error = null;
+            _programs++;
+        }
+        RunBound(program, cancellation);
+        return State;
+    }
+
+    /// <summary>Waits until no program runs (or the time is up); true when none runs.</summary>
+    public bool WaitForEnd(TimeSpan timeout)
+    {
+        Thread? thread;
+        lock (_gate)
+        {
+            thread = _programThread;
+        }
+        return thread is null || thread.Join(timeout);
+    }
+
+    /// <summary>Stops the running program, if any, and waits for it to end.</summary>
+    public void StopProgram()
+    {
+        CancellationTokenSource? stop;
+        Thread? thread;
+        lock (_gate)
+        {
+            stop = _programStop;
+            thread = _programThread;
+            _programStop = null;
+            _programThread = null;
+        }
+        if (stop is null)
+        {
+            return;
+        }
+        stop.Cancel();
+        if (thread != Thread.CurrentThread)
+        {
+            thread?.Join(TimeSpan.FromSeconds(10));
+        }
+        stop.Dispose();
+    }
+
+    private void RunBound(UrBoundProgram program, CancellationToken cancellation)
+    {
+        UrProgramState end;
+        string? error = null;
+        using (var machine = new UrMachine(program, this, cancellation))
+        {
+            try
+            {
+                machine.Run();
+                end = UrProgramState.Finished;
+            }
+            catch (UrRuntimeException e)
+            {
+                end = UrProgramState.Failed;
+                error = e.Message;
+            }
+            catch (OperationCanceledException)
+            {
+                end = UrProgramState.Stopped;
+            }
+            finally
+            {
+                foreach (UrSocket socket in Sockets.Values)
+                {
+                    socket.Dispose();
+                }
+                Sockets.Clear();
+            }
+        }
+        if (error is not null)
+        {
+            Pendant.Log(error);
+        }
+        lock (_gate)
+        {
+            if (_state == UrProgramState.Running)
+            {
+                _state = end;
+                _error = error;
+            }
+        }
+    }
+
+    private void Fail(string message)
+    {
+        lock (_gate)
+        {
+            _state = UrProgramState.Failed;
+            _error = message;
+        }
+        Pendant.Log(message);
+    }
+
+    /// <inheritdoc/>
+    public void Dispose() => StopProgram();
+}

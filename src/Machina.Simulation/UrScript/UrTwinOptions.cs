@@ -1,0 +1,23 @@
+namespace Machina.Simulation.UrScript;
+
+/// <summary>Settings of a URScript twin controller.</summary>
+internal sealed class UrTwinOptions
+{
+    /// <summary>The arm model (default UR5e).</summary>
+    public RobotModel Model { get; init; } = RobotModels.Get("UR5e");
+
+    /// <summary>The joints (degrees) the arm starts at: a common UR home, upright with the tool pointing down.</summary>
+    public Joints StartJoints { get; init; } = new(0, -90, 90, -90, -90, 0);
+
+    /// <summary>The time source for real-time motion and waits.</summary>
+    public TimeProvider Time { get; init; } = TimeProvider.System;
+
+    /// <summary>True: motion and waits take their time on <see cref="Time"/>; false: they return at once (program time still adds up).</summary>
+    public bool RealTime { get; init; }
+
+    /// <summary>The seed of <c>random()</c>.</summary>
+    public int RandomSeed { get; init; } = 1;
+
+    /// <summary>How long <c>socket_open</c> tries to connect (the Script Manual says 2 s).</summary>
+    public TimeSpan SocketOpenTimeout { get; init; } = TimeSpan.FromSeconds(2);
+}
