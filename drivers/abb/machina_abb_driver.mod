@@ -1,7 +1,7 @@
 MODULE Machina_Driver
     ! Machina driver for ABB IRC5 controllers (motion task T_ROB1).
     ! A TCP server: reads requests "@id code "text" p1 ... pN;", executes them in order and answers "@id code;"
-    ! after each one. Protocol: docs/protocol-abb.md in the Machina repository. Placeholders are filled by Machina.
+    ! after each one. A request that cannot run is never acknowledged: "$26 id code;" reports it and the program stops. Protocol: docs/protocol-abb.md in the Machina repository. Placeholders are filled by Machina.
 
     CONST string DRIVER_VERSION_MAJOR := "1";
     CONST string DRIVER_VERSION_MINOR := "6";
@@ -12,6 +12,9 @@ MODULE Machina_Driver
     PERS bool USE_STRICT := TRUE;
     PERS bool isMachinaDriverAvailable := TRUE;
     PERS num monitorUpdateInterval := {{MONITOR_INTERVAL}};
+    ! Id of the motion request being run, shared with the monitor task: its error trap reports it when a motion error
+    ! (event 50050 "Position outside reach" and the rest of the motion domain) stops this task ("$26 id code;").
+    PERS num machinaMotionId := 0;
     PERS tooldata cursorTool := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];
     PERS wobjdata cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
 
@@ -267,6 +270,9 @@ MODULE Machina_Driver
         r := requests{readIndex};
         readIndex := readIndex MOD BUFFER_SIZE + 1;
         requestCount := requestCount - 1;
+        IF r.code = 1 OR r.code = 2 OR r.code = 3 OR r.code = 30 THEN
+            CheckMotion r;
+        ENDIF
         TEST r.code
         CASE 1:
             cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
@@ -363,6 +369,23 @@ MODULE Machina_Driver
             STOP;
         ENDIF
         RAISE;
+    ENDPROC
+
+    ! Before a move: a speed of 0 would never end, so the driver reports "$26 id 1;" and stops instead of starting it.
+    ! Otherwise the move's id is shared with the monitor, whose trap reports a motion error of this move.
+    PROC CheckMotion(MachinaRequest r)
+        IF cursorSpeed.v_tcp <= 0 THEN
+            Fail r, 1;
+        ENDIF
+        machinaMotionId := r.id;
+    ENDPROC
+
+    ! Reports that request r could not run ("$26 id code;", never acknowledged) and ends the program: nothing after it runs.
+    PROC Fail(MachinaRequest r, num code)
+        TPWrite "Machina: request " + NumToStr(r.id, 0) + " failed, code " + NumToStr(code, 0);
+        SendIfConnected "$26 " + NumToStr(r.id, 0) + " " + NumToStr(code, 0) + ";";
+        isMachinaDriverAvailable := FALSE;
+        EXIT;
     ENDPROC
 
     FUNC num OrDefault(num value, num fallback)

@@ -1,13 +1,16 @@
 MODULE Machina_Monitor
     ! Machina monitor for ABB IRC5 controllers (second task T_MACHINA_MONITOR, needs option 623-1 Multitasking).
     ! A TCP server on the driver port + 1 that reports the robot state every monitorUpdateInterval seconds as
-    ! "$24 x y z q1 q2 q3 q4>" "j1 ... j6>" "e1 ... e6;". Placeholders are filled by Machina.
+    ! "$24 x y z q1 q2 q3 q4>" "j1 ... j6>" "e1 ... e6;", and "$26 id code;" when a motion error stops the driver's
+    ! task (its error trap). Placeholders are filled by Machina.
 
     PERS string SERVER_IP := "{{HOSTNAME}}";
     CONST num MONITOR_PORT := {{PORT}};
     PERS bool USE_STRICT := TRUE;
     PERS bool isMachinaDriverAvailable := TRUE;
     PERS num monitorUpdateInterval := {{MONITOR_INTERVAL}};
+    ! Id of the driver's motion request being run (set by Machina_Driver before each move).
+    PERS num machinaMotionId := 0;
     PERS tooldata cursorTool := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];
     PERS wobjdata cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
 
@@ -15,6 +18,9 @@ MODULE Machina_Monitor
 
     VAR socketdev serverSocket;
     VAR socketdev clientSocket;
+    VAR intnum motionError;
+    ! A failure report the trap left for the main loop, which sends it between two state reports (never inside one).
+    VAR string failureReport := "";
 
     PROC Main()
         IF NOT isMachinaDriverAvailable THEN
@@ -22,6 +28,10 @@ MODULE Machina_Monitor
             EXIT;
         ENDIF
         ServerStart;
+        ! A motion error stops the motion task before it can say anything: this task reports it for the driver.
+        IDelete motionError;
+        CONNECT motionError WITH MotionErrorTrap;
+        IError MOTION_ERR, TYPE_ERR, motionError;
         WHILE TRUE DO
             Report;
             WaitTime monitorUpdateInterval;
@@ -46,6 +56,10 @@ MODULE Machina_Monitor
     PROC Report()
         VAR jointtarget joints;
         VAR robtarget pose;
+        IF failureReport <> "" THEN
+            SocketSend clientSocket \Str:=failureReport;
+            failureReport := "";
+        ENDIF
         joints := CJointT();
         pose := CalcRobT(joints, cursorTool \WObj:=cursorWObj);
         SocketSend clientSocket \Str:="$24 " + NumToStr(pose.trans.x, 3) + " " + NumToStr(pose.trans.y, 3) + " " + NumToStr(pose.trans.z, 3) + " ";
@@ -65,6 +79,18 @@ MODULE Machina_Monitor
         ENDIF
         STOP;
     ENDPROC
+
+    ! "$26 id code;": the driver's motion request id could not run; code is the event number (domain * 10000 + number,
+    ! e.g. 50050 "Position outside reach"). Left for the main loop, so that it never splits a state report.
+    TRAP MotionErrorTrap
+        VAR trapdata errData;
+        VAR errdomain domain;
+        VAR num number;
+        VAR errtype kind;
+        GetTrapData errData;
+        ReadErrData errData, domain, number, kind;
+        failureReport := "$26 " + NumToStr(machinaMotionId, 0) + " " + NumToStr(domain * 10000 + number, 0) + ";";
+    ENDTRAP
 
     FUNC string AxisText(num value)
         IF value >= 9E9 THEN

@@ -5,13 +5,20 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualAbbController
 {
-    /// <summary>Sends <c>$24</c> reports in three chunks, like the RAPID monitor, until the client leaves or the controller stops.</summary>
+    /// <summary>
+    /// Sends <c>$24</c> reports in three chunks, like the RAPID monitor, until the client leaves or the controller stops; a failure
+    /// report (<c>$26</c>, from the monitor's error trap) goes out before the next report.
+    /// </summary>
     private async Task ReportAsync(NetworkStream stream, CancellationToken token)
     {
         try
         {
             while (true)
             {
+                if (TakeFailureReport() is string failure)
+                {
+                    await stream.WriteAsync(Encoding.ASCII.GetBytes(failure), token).ConfigureAwait(false);
+                }
                 var state = State;
                 var (pose, joints, axes) = AbbMessageFormat.MonitorChunks(state.Position, state.Rotation, state.Joints, state.ExternalAxesCartesian);
                 await stream.WriteAsync(Encoding.ASCII.GetBytes(pose), token).ConfigureAwait(false);

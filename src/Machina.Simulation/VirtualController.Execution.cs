@@ -20,6 +20,14 @@ public abstract partial class VirtualController<TState>
     /// <summary>Acknowledges an executed request (and whatever else the brand's driver sends then); false ends the driver program.</summary>
     private protected abstract Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token);
 
+    /// <summary>
+    /// Called for a request the robot refused (nothing of it ran, the robot is where the previous one left it). True when the
+    /// brand's driver reports the failure and stops its program there, as a real controller does: the request is neither logged
+    /// as executed nor acknowledged, and nothing after it runs. False (the default) logs it and acknowledges it as before.
+    /// </summary>
+    private protected virtual Task<bool> StopsOnRefusalAsync(object request, int id, VirtualRefusalException refusal, CancellationToken token) =>
+        Task.FromResult(false);
+
     /// <summary>True for a request the brand's driver will skip (a UR program replaced since it was read); it is not logged as executed.</summary>
     private protected virtual bool IsStale(object request) => false;
 
@@ -41,7 +49,13 @@ public abstract partial class VirtualController<TState>
                 {
                     continue;
                 }
-                if (await ExecuteAsync(queued.Request, token).ConfigureAwait(false))
+                var (runs, refusal) = await ExecuteAsync(queued.Request, token).ConfigureAwait(false);
+                if (refusal is not null && await StopsOnRefusalAsync(queued.Request, queued.Id, refusal, token).ConfigureAwait(false))
+                {
+                    Interlocked.Increment(ref _requestsExecuted);
+                    return;
+                }
+                if (runs)
                 {
                     LogExecuted(queued.Id);
                 }
@@ -73,9 +87,10 @@ public abstract partial class VirtualController<TState>
     /// <summary>
     /// Executes one request: plans it, refuses (and logs) what cannot run, and waits for its motion on the controller's clock.
     /// A protective stop interrupts the motion where the robot is; once released the same request runs again from there.
-    /// False when the brand's driver skipped it (<see cref="IsStale"/> when it was last planned): it does not enter the execution log.
+    /// Runs is false when the brand's driver skipped it (<see cref="IsStale"/> when it was last planned): it does not enter the
+    /// execution log. Refusal is why the robot could not run it (logged), or null.
     /// </summary>
-    private async Task<bool> ExecuteAsync(object request, CancellationToken token)
+    private async Task<(bool Runs, VirtualRefusalException? Refusal)> ExecuteAsync(object request, CancellationToken token)
     {
         while (true)
         {
@@ -98,7 +113,9 @@ public abstract partial class VirtualController<TState>
             catch (Exception e) when (e is VirtualRefusalException or ArgumentException or ArithmeticException or InvalidOperationException)
             {
                 RecordError("refused: " + e.Message);
-                return runs && !FailsProgram(request, e.Message);
+                // UR's program stops in place (FailsProgram: the controller goes on to the next program); ABB's and KUKA's driver
+                // reports the failure and stops (StopsOnRefusalAsync, asked by the caller).
+                return (runs && !FailsProgram(request, e.Message), e as VirtualRefusalException ?? new VirtualRefusalException(e.Message));
             }
             if (duration > TimeSpan.Zero)
             {
@@ -126,7 +143,7 @@ public abstract partial class VirtualController<TState>
                 _state = (TState)step.State;
                 _motion = null;
             }
-            return runs;
+            return (runs, null);
         }
     }
 
@@ -222,7 +239,7 @@ public abstract partial class VirtualController<TState>
     {
         if (!p.IsFinite || Math.Abs(p.X) > MaxCoordinate || Math.Abs(p.Y) > MaxCoordinate || Math.Abs(p.Z) > MaxCoordinate)
         {
-            throw new VirtualRefusalException($"the target {p} is not a place a robot can go (coordinates beyond {Num.G(MaxCoordinate)} mm or not numbers).");
+            throw new VirtualRefusalException($"the target {p} is not a place a robot can go (coordinates beyond {Num.G(MaxCoordinate)} mm or not numbers).", VirtualRefusalKind.Reach);
         }
     }
 
@@ -237,7 +254,7 @@ public abstract partial class VirtualController<TState>
         }
         var flange = new Pose(position, rotation) * (s.Tool ?? Pose.Identity).Inverse();
         Joints joints = Model.Kinematics.Closest(flange, s.Joints)
-            ?? throw new VirtualRefusalException($"the {Model.Name} cannot reach {new Pose(position, rotation)} (outside its reach or joint limits).");
+            ?? throw new VirtualRefusalException($"the {Model.Name} cannot reach {new Pose(position, rotation)} (outside its reach or joint limits).", VirtualRefusalKind.Reach);
         return (TState)(next with { Joints = joints });
     }
 
@@ -251,7 +268,7 @@ public abstract partial class VirtualController<TState>
         }
         if (!Model.Kinematics.IsWithinLimits(joints))
         {
-            throw new VirtualRefusalException($"the joints {joints} are beyond the limits of the {Model.Name}.");
+            throw new VirtualRefusalException($"the joints {joints} are beyond the limits of the {Model.Name}.", VirtualRefusalKind.JointLimits);
         }
         Pose tcp = Model.Kinematics.Forward(joints) * (s.Tool ?? Pose.Identity);
         return (TState)(next with { Position = tcp.Position, Rotation = tcp.Rotation });
@@ -271,7 +288,7 @@ public abstract partial class VirtualController<TState>
 
     /// <summary>A speed to divide by: positive, or a refusal naming what it is for.</summary>
     private protected static double Positive(double speed, string what) =>
-        speed > 0 ? speed : throw new VirtualRefusalException($"the {what} is {Num.G(speed)}, so the move would never end.");
+        speed > 0 ? speed : throw new VirtualRefusalException($"the {what} is {Num.G(speed)}, so the move would never end.", VirtualRefusalKind.Speed);
 
     /// <summary>The largest single-joint change between two sets of joints, in degrees.</summary>
     private protected static double LargestJointChange(Joints a, Joints b)

@@ -68,6 +68,12 @@ public class EveryActionKindTests
         {
             action.Id = id++;
             Assert.Null(cursor.TryApply(action));
+            if (action is ActionCustomCode { IsDeclaration: false } custom && AbbRequest.WhyStatementCannotBeSent(custom.Statement) is not null)
+            {
+                // "x := 1;" is RAPID, not a request the driver reads: refused when issued online (issue 28), never encoded.
+                Assert.Equal("x := 1;", custom.Statement);
+                continue;
+            }
             if (AbbActionEncoder.Encode(action, cursor, requests) == 0)
             {
                 silent.Add(action.GetType().Name["Action".Length..]);

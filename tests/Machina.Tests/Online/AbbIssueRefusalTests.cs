@@ -14,6 +14,16 @@ public class AbbIssueRefusalTests
         { new ActionCustomCode("TPWrite \"é\"", false), "plain ASCII" },
         { new ActionCustomCode("a; b", false), "plain ASCII" },
         { new ActionCustomCode(" ; ", false), "cannot be empty" },
+        { new ActionCustomCode("TPWrite \"x\"", false), "\"TPWrite\" is not a numeric instruction code." },
+        { new ActionCustomCode("TPWrite x", false), "\"TPWrite\" is not a numeric instruction code." },
+        { new ActionCustomCode("@3 1 300 0 500", false), "'@' marks the id" },
+        { new ActionCustomCode("7 \"unclosed", false), "a quote is never closed." },
+        { new ActionCustomCode("\"x\" 7", false), "the text comes before the instruction code." },
+        { new ActionCustomCode("7 \"a\" \"b\"", false), "more than one quoted text." },
+        { new ActionCustomCode("7.5", false), "the instruction code 7.5 is not a whole number." },
+        { new ActionCustomCode("17 1 2 3 4 5 6 7 8 9 10 11 12", false), "more than 11 numbers." },
+        { new ActionCustomCode("13 1E39", false), "1E39 is beyond what a RAPID number holds" },
+        { new ActionCustomCode("7 \"" + new string('y', 81) + "\"", false), "the quoted text has 81 characters." },
     };
 
     [Theory]
@@ -36,7 +46,7 @@ public class AbbIssueRefusalTests
         RobotAction[] fine =
         [
             new ActionIODigital("DO_1", true, false), new ActionIOAnalog("AO_" + new string('x', 29), 2, false),
-            new ActionCustomCode("TPWrite \"hi\";", false), new ActionCustomCode("VAR num ü := 1;", isDeclaration: true),
+            new ActionCustomCode("7 \"hi\";", false), new ActionCustomCode("103 0.05", false), new ActionCustomCode("14", false), new ActionCustomCode("VAR num ü := 1;", isDeclaration: true),
             new ActionMessage("DÖ \"quoted\"; 漢字"), new ActionSpeed(100, relative: false),
         ];
         Assert.All(fine, a => Assert.Null(online.WhyCannotStream(a)));

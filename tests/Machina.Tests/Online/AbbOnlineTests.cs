@@ -10,7 +10,9 @@ public class AbbOnlineTests
     [Fact]
     public async Task HelloRobot_Online_EveryActionReleasedAndExecutedOnceInOrder()
     {
-        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { SpeedFactor = 20 });
+        // HelloRobot's (400, 300, 750) is beyond an IRB 120's reach (the model would stop the driver there): an arm without a
+        // model, starting where the IRB 120's flange is.
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { SpeedFactor = 20, Model = null, InitialPosition = new Vector(302, 0, 558) });
         Robot bot = await ConnectAsync(controller);
         var released = new List<int>();
         var executed = new List<ActionExecutedArgs>();
@@ -401,7 +403,10 @@ public class AbbOnlineReferenceProgramTests
     [MemberData(nameof(Programs))]
     public async Task ReferenceProgram_StreamedOnline_EveryActionExecutedOnceInOrder(string name)
     {
-        await using var controller = await OnlineTestSupport.StartControllerAsync();
+        // HelloRobot goes beyond an IRB 120's reach (the driver would stop there, AbbFailureTests): an arm without a model for it.
+        await using var controller = await OnlineTestSupport.StartControllerAsync(name == "HelloRobot"
+            ? new VirtualAbbControllerOptions { InstantExecution = true, Model = null, InitialPosition = new Vector(302, 0, 558) }
+            : null);
         Robot bot = await OnlineTestSupport.ConnectAsync(controller);
         var executed = new ConcurrentQueue<int>();
         bot.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);

@@ -35,6 +35,20 @@ public class KukaDriverModulesTests
         Assert.Contains("\n  $ADVANCE = 0\n", Files(advance: "0")["machina_kuka_driver.src"].ReplaceLineEndings("\n"), StringComparison.Ordinal);
     }
 
+    /// <summary>KRL's arithmetic has +, -, * and / (issue 23): a MOD, as RAPID has, does not parse. The ring wraps with an IF instead.</summary>
+    [Fact]
+    public void KrlFiles_UseNoModOperator_RingWrapsWithIf()
+    {
+        var files = Files();
+        foreach (string name in new[] { "machina_kuka_driver.src", "machina_kuka_driver.dat", "machina_kuka_monitor.src", "machina_kuka_monitor.dat" })
+        {
+            Assert.DoesNotMatch(new Regex(@"\bMOD\b", RegexOptions.IgnoreCase), files[name]);
+        }
+        string driver = files["machina_kuka_driver.src"].ReplaceLineEndings("\n");
+        Assert.Contains("\n    write_slot = write_slot + 1\n    IF write_slot > 100 THEN\n      write_slot = 1\n    ENDIF\n", driver, StringComparison.Ordinal);
+        Assert.Contains("\n  read_slot = read_slot + 1\n  IF read_slot > 100 THEN\n    read_slot = 1\n  ENDIF\n", driver, StringComparison.Ordinal);
+    }
+
     [Theory]
     [InlineData("6", "ADVANCE must be a whole number from 0 to 5")]
     [InlineData("1.5", "ADVANCE must be a whole number from 0 to 5")]
@@ -72,7 +86,7 @@ public class KukaDriverModulesTests
     {
         XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
         var expected = AttributePaths(KukaMessages.State(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity, 1, 2))
-            .Concat(AttributePaths(KukaMessages.Acknowledgement(3)));
+            .Concat(AttributePaths(KukaMessages.Acknowledgement(3))).Concat(AttributePaths(KukaFailure.Message(4, KukaFailure.NoSpeed)));
         Assert.Equal(expected, Tags(server, "SEND"));
         XElement monitor = XElement.Parse(KukaDriverModules.Read("machina_kuka_monitor.xml"));
         Assert.Equal(AttributePaths(KukaMessages.Pose(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity)), Tags(monitor, "SEND"));
@@ -105,7 +119,7 @@ public class KukaDriverModulesTests
         string ring = KukaProtocol.Capacity.ToString(Num.Inv);
         Assert.Contains($"DECL INT slot_id[{ring}]", dat, StringComparison.Ordinal);
         Assert.Contains($"DECL CHAR slot_text[{ring},{KukaProtocol.MaxTextLength}]", dat, StringComparison.Ordinal);
-        Assert.Equal(3, Regex.Matches(src, $"MOD {ring} \\+ 1|FOR i = 1 TO {ring}").Count);
+        Assert.Equal(3, Regex.Matches(src, $"_slot > {ring} THEN|FOR i = 1 TO {ring}").Count);
         Assert.Contains($"\"S/@VR\", \"{KukaProtocol.DriverVersion}\"", src, StringComparison.Ordinal);
         var cases = Regex.Matches(src, @"^\s*CASE ([\d, ]+)$", RegexOptions.Multiline)
             .SelectMany(m => m.Groups[1].Value.Split(',', StringSplitOptions.TrimEntries)).Select(int.Parse).ToHashSet();

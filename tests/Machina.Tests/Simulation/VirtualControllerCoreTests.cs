@@ -1,10 +1,12 @@
 using Machina.Simulation;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Simulation;
 
 /// <summary>
 /// The brand-neutral core of the virtual controllers, seen through the ABB front end: the robot model keeps joints and
-/// pose consistent, and an instruction the simulated robot cannot execute is refused, logged, acknowledged and survived.
+/// pose consistent; a move the simulated robot cannot make stops the ABB driver (nothing more runs), and any other instruction it
+/// cannot execute is refused, logged, acknowledged and survived.
 /// </summary>
 public class VirtualControllerCoreTests
 {
@@ -71,6 +73,23 @@ public class VirtualControllerCoreTests
     [InlineData("@1 1 2000 0 300 0 0 1 0;", "cannot reach")]
     [InlineData("@1 1 1E308 0 300 0 0 1 0;", "is not a place a robot can go")]
     [InlineData("@1 3 0 0 0 0 170 0;", "beyond the limits")]
+    public async Task Move_RobotCannotMake_RefusedLoggedNotAcknowledgedAndNothingAfterRuns(string request, string reason)
+    {
+        await using var controller = await StartAsync(instant: false);
+        using var client = await ConnectAsync(controller);
+        var before = controller.State;
+        await client.SendAsync("@5 4 30;" + request + "@2 4 50;");
+        Assert.Equal("@5 4;", (await client.ReadMessagesAsync(1))[0].ToString());
+        await Eventually.TrueAsync(() => controller.RequestsExecuted == 2, "the refused move is done with", RawAbbClient.Timeout);
+        Assert.Contains(reason, Assert.Single(controller.Errors), StringComparison.Ordinal);
+        Assert.Equal([5], controller.ExecutedIds);
+        Assert.Equal((before.Position, before.Joints, 30.0), (controller.State.Position, controller.State.Joints, controller.State.Speed));
+        await controller.StopAsync();
+        Assert.Equal(2, controller.RequestsExecuted);
+        Assert.Equal(1, controller.AcknowledgementsSent);
+    }
+
+    [Theory]
     [InlineData("@1 6 4320000;", "longer than the 49.7 days")]
     [InlineData("@1 4 1E-9;@9 1 302 0 300 0 0 1 0;", "longer than the 49.7 days")]
     public async Task Instruction_CannotBeExecuted_RefusedLoggedAcknowledgedAndControllerServesOn(string requests, string reason)

@@ -83,7 +83,11 @@ public class AbbRequestTests
     public void WhyStatementCannotBeSent_LongerThanTheDriverReads_IsRefused()
     {
         // Found by the extreme-value test: a million-character statement was sent, and the controller closed the link.
-        Assert.Null(AbbRequest.WhyStatementCannotBeSent(new string('1', 1000)));
+        string longest = "17 \"" + new string('t', 80) + "\"" + string.Concat(Enumerable.Repeat(" 0." + new string('0', 78), 11));
+        longest = longest.Replace("17 ", "17" + new string(' ', 1001 - longest.Length), StringComparison.Ordinal);
+        Assert.Equal(1000, longest.Length);
+        Assert.Null(AbbRequest.WhyStatementCannotBeSent(longest));
+        Assert.EndsWith("\"" + new string('1', 17) + "...\" is not a numeric instruction code.", AbbRequest.WhyStatementCannotBeSent(new string('1', 1000)));
         Assert.Equal("A custom ABB statement can be at most 1000 characters (what the driver reads of one request), but \"" + new string('1', 37) + "...\" has 1001.",
             AbbRequest.WhyStatementCannotBeSent(new string('1', 1001)));
         var refused = Assert.Throws<ArgumentException>(() => AbbRequest.Custom(3, new string('x', 1_000_000)));

@@ -26,6 +26,9 @@ internal sealed partial class AbbDriver
             case AbbResponseCode.Progress:
                 _progress = message.ToProgress();
                 break;
+            case AbbResponseCode.Failure:
+                OnFailure(message);
+                return;
             case AbbResponseCode.FullPose:
                 Listener?.OnMotion(Sample(message.ToMonitorUpdate()));
                 return;
@@ -40,12 +43,28 @@ internal sealed partial class AbbDriver
         }
     }
 
+    /// <summary>A <c>$26 id code;</c> report: the action with that wire id failed and the driver stopped.</summary>
+    private void OnFailure(in AbbMessage message)
+    {
+        var (wireId, code) = message.ToFailure();
+        int actionId = _awaiting.Resolve(wireId);
+        Log.Error($"The controller could not run action {actionId}: {AbbFailure.Describe(code)}");
+        Listener?.OnFailed(actionId, AbbFailure.Describe(code), code.ToString(System.Globalization.CultureInfo.InvariantCulture));
+    }
+
     private static MotionSample Sample(AbbMonitorUpdate update) =>
         new(update.Position, update.Rotation, update.Joints, update.ExternalAxes.IsEmpty ? null : update.ExternalAxes);
 
     /// <inheritdoc/>
+    /// <remarks>A failure report (<c>$26</c>, from the monitor task's error trap) is handled here too; the monitor stops after it.</remarks>
     protected override bool TryReadMotion(in AbbMessage message, out MotionSample sample)
     {
+        if (message.Kind == AbbMessageKind.Data && message.Code == (int)AbbResponseCode.Failure)
+        {
+            OnFailure(message);
+            sample = default;
+            return false;
+        }
         bool isPose = message.Kind == AbbMessageKind.Data && message.Code == (int)AbbResponseCode.FullPose;
         sample = isPose ? Sample(message.ToMonitorUpdate()) : default;
         return isPose;

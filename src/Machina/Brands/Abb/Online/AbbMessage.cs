@@ -83,6 +83,13 @@ internal readonly struct AbbMessage
         return new DeviceProgress(Integer(0), Integer(1));
     }
 
+    /// <summary>The failed request's id and the failure code of a <c>$26</c> message.</summary>
+    public (int Id, int Code) ToFailure()
+    {
+        Expect(AbbMessageKind.Data, AbbResponseCode.Failure, 2);
+        return (Whole(0), Whole(1));
+    }
+
     /// <summary>The monitor report of a <c>$24</c> message.</summary>
     public AbbMonitorUpdate ToMonitorUpdate()
     {
@@ -117,6 +124,16 @@ internal readonly struct AbbMessage
         if (v != Math.Floor(v) || v < 0 || v > int.MaxValue)
         {
             throw new AbbProtocolException("The controller sent a version that is not made of whole numbers.", ToString());
+        }
+        return (int)v;
+    }
+
+    private int Whole(int index)
+    {
+        double v = _values![index];
+        if (v != Math.Floor(v) || v < 0 || v > int.MaxValue)
+        {
+            throw new AbbProtocolException($"The controller sent a ${Code} message whose value {Num.G(v)} is not a whole number.", ToString());
         }
         return (int)v;
     }

@@ -114,7 +114,9 @@ internal readonly partial struct AbbRequest
                 return $"A custom ABB statement must be one line of plain ASCII without ';', but got \"{Abbreviate(statement)}\".";
             }
         }
-        return null;
+        return AbbStatementGrammar.WhyDriverCannotRead(trimmed) is string why
+            ? $"A custom ABB statement is sent as a request to the Machina driver, which reads a numeric instruction code, at most one quoted text of up to {MaxTextLength} characters, then up to {MaxParameters} numbers: in \"{Abbreviate(statement)}\", {why}"
+            : null;
     }
 
     private static string TrimStatement(string statement)

@@ -11,4 +11,7 @@ internal enum AbbResponseCode
 
     /// <summary>Handshake, driver 1.6 on: <c>$25 lastExecutedId lastReceivedId;</c>, so a reconnecting host sends nothing twice.</summary>
     Progress = 25,
+
+    /// <summary><c>$26 id code;</c>, the request with that id could not run and the driver stopped (<see cref="AbbFailure"/>).</summary>
+    Failure = 26,
 }

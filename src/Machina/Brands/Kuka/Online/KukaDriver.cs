@@ -126,6 +126,9 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
             case KukaProtocol.Acknowledgement:
                 Acknowledge(element.Integer("ID"));
                 break;
+            case KukaProtocol.Failure:
+                Fail(element.Integer("ID"), element.Attribute("Text") ?? KukaFailure.Describe(0), element.Attribute("Code"));
+                break;
             case KukaProtocol.State when !IsHandshakeOver:
                 KukaState state = KukaState.Parse(element);
                 _version = state.Version;
@@ -135,8 +138,15 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
                 Log.Debug($"Ignored a second state report on one connection: {element}");
                 break;
             default:
-                throw new KukaProtocolException($"The controller sent <{element.Name}>, which is not part of the Machina KUKA driver protocol (S, R).", element.ToString());
+                throw new KukaProtocolException($"The controller sent <{element.Name}>, which is not part of the Machina KUKA driver protocol (S, R, F).", element.ToString());
         }
+    }
+
+    /// <summary>The driver could not run action <paramref name="id"/> and halted (it runs nothing more): the listener hears it.</summary>
+    private void Fail(int id, string reason, string? code)
+    {
+        Log.Error($"The controller could not run action {id}: {reason}");
+        Listener?.OnFailed(id, reason, code);
     }
 
     private void Acknowledge(int wireId)

@@ -35,6 +35,9 @@ internal static class KukaProtocol
     /// <summary>An acknowledgement: attribute <c>ID</c>, the action the driver executed.</summary>
     public const string Acknowledgement = "R";
 
+    /// <summary>A failure report: attributes <c>ID</c>, <c>Code</c> and <c>Text</c>, the action the driver could not run before it halted.</summary>
+    public const string Failure = "F";
+
     /// <summary>A live pose report on the monitor channel (driver port + 1).</summary>
     public const string Pose = "P";
 

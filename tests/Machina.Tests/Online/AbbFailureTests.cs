@@ -1,0 +1,170 @@
+using System.Collections.Concurrent;
+using Machina.Simulation;
+using Machina.Tests.Simulation;
+
+namespace Machina.Tests.Online;
+
+/// <summary>
+/// "Executed" means the robot got there (issue 21 §1): a move the virtual IRB 120 cannot make is never acknowledged; the driver
+/// reports it (<c>$26 id code;</c>) and stops, and nothing after it runs.
+/// </summary>
+public class AbbFailureTests
+{
+    private const string Reach = "Position outside reach (event 50050): the target is outside the robot's working range or a joint would pass its limits.";
+
+    [Fact]
+    public async Task UnreachableMove_MidProgram_MonitorReportsFailureNothingAfterRunsRobotStaysAtLastTarget()
+    {
+        await using var controller = await StartAsync();
+        using var driver = await ConnectAsync(controller.Port);
+        using var monitor = await RawAbbClient.ConnectAsync(controller.MonitorPort);
+
+        await driver.SendAsync("@1 4 100;@2 1 350 0 450 0 0 1 0;@3 1 620 0 450 0 0 1 0;@4 1 300 0 500 0 0 1 0;@5 7 \"after\";");
+        var acks = await driver.ReadMessagesAsync(2);
+        AbbMessage failure = await ReadFailureAsync(monitor);
+
+        Assert.Equal(["@1 4;", "@2 1;"], acks.Select(a => a.ToString()));
+        Assert.Equal((3, AbbFailure.OutsideReach), failure.ToFailure());
+        Assert.Equal([1, 2], controller.ExecutedIds);
+        Assert.Equal(3, controller.RequestsExecuted);
+        Assert.True(controller.State.Position.IsSimilar(new Vector(350, 0, 450), 1e-6), controller.State.Position.ToString());
+        Assert.Contains(controller.PendantMessages, m => m.StartsWith("50050 Position outside reach: the IRB 120 cannot reach", StringComparison.Ordinal));
+        Assert.DoesNotContain("after", controller.PendantMessages);
+    }
+
+    [Fact]
+    public async Task JointsBeyondLimits_ReportedAsOutsideReach_NotAcknowledged()
+    {
+        await using var controller = await StartAsync();
+        using var driver = await ConnectAsync(controller.Port);
+        using var monitor = await RawAbbClient.ConnectAsync(controller.MonitorPort);
+
+        await driver.SendAsync("@1 3 10 0 0 0 90 0;@2 3 0 0 0 0 170 0;@3 3 0 0 0 0 90 0;");
+        var acks = await driver.ReadMessagesAsync(1);
+        AbbMessage failure = await ReadFailureAsync(monitor);
+
+        Assert.Equal("@1 3;", Assert.Single(acks).ToString());
+        Assert.Equal((2, AbbFailure.OutsideReach), failure.ToFailure());
+        Assert.Equal([1], controller.ExecutedIds);
+        Assert.Equal(new Joints(10, 0, 0, 0, 90, 0), controller.State.Joints);
+    }
+
+    [Fact]
+    public async Task MoveWithSpeedZero_DriverReportsOnItsOwnLinkAndStops()
+    {
+        await using var controller = await StartAsync();
+        using var driver = await ConnectAsync(controller.Port);
+
+        await driver.SendAsync("@1 4 0;@2 1 350 0 450 0 0 1 0;@3 4 50;");
+        var messages = await driver.ReadMessagesAsync(2);
+
+        Assert.Equal(["@1 4;", "$26 2 1;"], messages.Select(m => m.ToString()));
+        Assert.Equal([1], controller.ExecutedIds);
+        Assert.Equal(0.0, controller.State.Speed);
+    }
+
+    [Fact]
+    public async Task HostDriver_DecodesFailure_ListenerGetsActionIdReasonAndCode()
+    {
+        await using var controller = await StartAsync();
+        var listener = new FailureListener();
+        await using var host = new AbbDriver(new RobotLogger("test"), TimeProvider.System);
+        await host.ConnectAsync("127.0.0.1", controller.Port, listener, OnlineTestSupport.Limit, CancellationToken.None);
+        var cursor = new RobotCursor();
+        RobotAction[] program =
+        [
+            new ActionSpeed(100, relative: false), new ActionTranslation(new Vector(350, 0, 450), relative: false),
+            new ActionTranslation(new Vector(620, 0, 450), relative: false), new ActionTranslation(new Vector(300, 0, 500), relative: false),
+        ];
+        for (int i = 0; i < program.Length; i++)
+        {
+            program[i].Id = i + 1;
+            Assert.Null(cursor.TryApply(program[i]));
+            Assert.True(host.Send(program[i], cursor));
+        }
+
+        var (id, reason, code) = await listener.Failed.Task.WaitAsync(OnlineTestSupport.Limit);
+
+        Assert.Equal((3, Reach, "50050"), (id, reason, code));
+        Assert.Equal([1, 2], listener.Acknowledged);
+        Assert.Equal([1, 2], controller.ExecutedIds);
+        Assert.Empty(listener.Faults);
+    }
+
+    [Theory]
+    [InlineData("$26 12 50050;", 12, Reach, "50050")]
+    [InlineData("$26 7 1;", 7, "The speed is 0: the move would never end, so the driver did not start it.", "1")]
+    [InlineData("$26 3 40223;", 3, "The controller reported error 40223 and stopped the driver program.", "40223")]
+    public void FailureMessage_Parsed_IdCodeAndReason(string text, int id, string reason, string code)
+    {
+        var message = AbbMessageReader.Parse(System.Text.Encoding.ASCII.GetBytes(text.TrimEnd(';')));
+        var (parsedId, parsedCode) = message.ToFailure();
+
+        Assert.Equal((id, code), (parsedId, parsedCode.ToString(System.Globalization.CultureInfo.InvariantCulture)));
+        Assert.Equal(reason, AbbFailure.Describe(parsedCode));
+        Assert.Equal(text, AbbFailure.Message(id, parsedCode));
+    }
+
+    [Theory]
+    [InlineData("$26 12;", "with 1 values where 2 were expected")]
+    [InlineData("$26 1.5 50050;", "is not a whole number")]
+    public void FailureMessage_Malformed_ProtocolError(string text, string expected)
+    {
+        var message = AbbMessageReader.Parse(System.Text.Encoding.ASCII.GetBytes(text.TrimEnd(';')));
+        var e = Assert.Throws<AbbProtocolException>(() => message.ToFailure());
+        Assert.Contains(expected, e.Message, StringComparison.Ordinal);
+    }
+
+    private static async Task<VirtualAbbController> StartAsync()
+    {
+        var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, MonitorPeriod = TimeSpan.FromMilliseconds(5) });
+        await controller.StartAsync();
+        return controller;
+    }
+
+    private static async Task<RawAbbClient> ConnectAsync(int port)
+    {
+        var client = await RawAbbClient.ConnectAsync(port);
+        await client.ReadHandshakeAsync();
+        return client;
+    }
+
+    /// <summary>Reads monitor messages until the failure report (bounded: at most 10 000 reports).</summary>
+    private static async Task<AbbMessage> ReadFailureAsync(RawAbbClient monitor)
+    {
+        for (int i = 0; i < 10_000; i++)
+        {
+            AbbMessage message = (await monitor.ReadMessagesAsync(1))[0];
+            if (message.Code == (int)AbbResponseCode.Failure)
+            {
+                return message;
+            }
+        }
+        throw new Xunit.Sdk.XunitException("The monitor sent no failure report.");
+    }
+
+    private sealed class FailureListener : IDeviceListener
+    {
+        internal TaskCompletionSource<(int Id, string Reason, string? Code)> Failed { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        internal ConcurrentQueue<int> Acknowledged { get; } = new();
+
+        internal ConcurrentQueue<MachinaException> Faults { get; } = new();
+
+        public void OnAcknowledged(int id) => Acknowledged.Enqueue(id);
+
+        public void OnMotion(in MotionSample sample)
+        {
+        }
+
+        public void OnStopped(MachinaException reason) => Faults.Enqueue(reason);
+
+        public void OnResumed()
+        {
+        }
+
+        public void OnFailed(int id, string reason, string? code) => Failed.TrySetResult((id, reason, code));
+
+        public void OnFault(MachinaException error) => Faults.Enqueue(error);
+    }
+}
