@@ -21,18 +21,23 @@ public class UrStateTests
             b.MotionUpdate += (_, _) => Interlocked.Increment(ref updates);
         });
         var period = TimeSpan.FromMilliseconds(20);
-        Assert.Equal(0, Volatile.Read(ref updates)); // the package read while connecting is not an update
+        // The package the handshake reads is not an update. The driver program's start also sends one at once: when the
+        // handshake read it first it is not an update either; when it came after, it is an early live pose, raised once the link
+        // is current. Either way, at most one, and every period after it brings exactly one more.
+        await bot.FlushEventsAsync().WaitAsync(Limit);
+        int initial = Volatile.Read(ref updates);
+        Assert.InRange(initial, 0, 1);
 
         // One simulated second, one period at a time: each step is due exactly one package, and so one update.
         for (int i = 1; i <= 50; i++)
         {
             await EventuallyAsync(() => clock.HasTimerDueIn(period), "RTDE to wait for its next package");
             clock.Advance(period);
-            int expected = i;
+            int expected = initial + i;
             await EventuallyAsync(() => Volatile.Read(ref updates) >= expected, "the update of this period");
         }
         await bot.FlushEventsAsync().WaitAsync(Limit);
-        Assert.Equal(50, Volatile.Read(ref updates));
+        Assert.Equal(initial + 50, Volatile.Read(ref updates));
         Assert.Equal(52, controller.RtdePackagesSent); // the 50, the one read while connecting, the driver program's start (sent at once)
         Assert.True(((Vector)bot.GetCurrentPosition()!.Value).IsSimilar(controller.State.Position, 1e-6));
         await bot.DisconnectAsync();
