@@ -275,6 +275,7 @@ internal sealed partial class OnlineSession
             Execute(_inFlight.Dequeue());
         }
         _lastAcknowledgedId = id;
+        _liveOnLink = false; // a live pose from before this acknowledgement is older than the target it confirms
         _lastProgress = _time.GetTimestamp();
         ReleaseReady();
         return null;

@@ -5,7 +5,10 @@ internal sealed partial class OnlineSession
     /// <summary>The controller's last reported failure, until the next connection: a wait with nothing pending reports it.</summary>
     private ActionFailedException? _failure;
 
-    /// <summary>True once the current link reported a live pose (the motion cursor then says where the robot really is).</summary>
+    /// <summary>
+    /// True once the current link reported a live pose since the last acknowledgement (the motion cursor then says where the
+    /// robot really is; an older one predates the target the acknowledgement confirmed).
+    /// </summary>
     private bool _liveOnLink;
 
     /// <summary>A failure reported by a driver (wire id): applied under the issue lock and the session lock, then the link is closed.</summary>

@@ -33,6 +33,45 @@ public class AbbFailureTests
     }
 
     [Fact]
+    public async Task Robot_UnreachableMove_ActionFailedWithTheControllerReason_LaterActionsCancelled()
+    {
+        await using var controller = await StartAsync();
+        var failed = new TaskCompletionSource<ActionFailedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var executed = new ConcurrentQueue<int>();
+        Robot bot = await OnlineTestSupport.ConnectAsync(controller, b =>
+        {
+            b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
+            b.ActionFailed += (_, e) => failed.TrySetResult(e);
+        });
+        try
+        {
+            bot.SpeedTo(100);
+            bot.MoveTo(350, 0, 450);
+            Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit));
+            int lastGood = controller.ExecutedIds[^1];
+
+            bot.MoveTo(620, 0, 450);
+            bot.MoveTo(300, 0, 500);
+            ActionFailedArgs e = await failed.Task.WaitAsync(OnlineTestSupport.Limit);
+            var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync().WaitAsync(OnlineTestSupport.Limit));
+
+            Assert.Equal("MoveTo(620,0,450);", e.Action.ToInstruction().Replace(" ", "", StringComparison.Ordinal));
+            Assert.Equal(Reach, e.Reason);
+            Assert.Equal("50050", e.Failure.ControllerCode);
+            Assert.Same(e.Action, thrown.Action);
+            Assert.Equal(new[] { e.Action.Id + 1 }, e.CancelledActions.Select(a => a.Id));
+            Assert.DoesNotContain(e.Action.Id, executed);
+            Assert.DoesNotContain(e.Action.Id + 1, executed);
+            Assert.Equal(lastGood, controller.ExecutedIds[^1]);
+            Assert.True(e.Position is Vector stoppedAt && stoppedAt.IsSimilar(new Vector(350, 0, 450), 0.05), e.Position?.ToString());
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+
+    [Fact]
     public async Task JointsBeyondLimits_ReportedAsOutsideReach_NotAcknowledged()
     {
         await using var controller = await StartAsync();
