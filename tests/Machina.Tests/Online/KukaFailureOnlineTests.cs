@@ -1,0 +1,47 @@
+using System.Collections.Concurrent;
+using static Machina.Tests.Online.KukaTestSupport;
+using static Machina.Tests.Online.OnlineTestSupport;
+
+namespace Machina.Tests.Online;
+
+/// <summary>"Executed" means the robot got there (issue 21 §1), KUKA through a Robot: a target beyond reach fails, nothing after it runs.</summary>
+public class KukaFailureOnlineTests
+{
+    [Fact]
+    public async Task Robot_UnreachableMove_ActionFailedWithTheDriversReason_LaterActionsCancelled()
+    {
+        await using var controller = await StartKukaAsync();
+        var failed = new TaskCompletionSource<ActionFailedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var (bot, executed, _) = await ConnectKukaAsync(controller, b => b.ActionFailed += (_, e) => failed.TrySetResult(e));
+        try
+        {
+            bot.SpeedTo(100);
+            bot.Move(0, 0, -20);
+            await bot.WaitForCompletionAsync().WaitAsync(Limit);
+            int lastGood = controller.ExecutedIds[^1];
+            Joints stoppedAt = controller.State.Joints;
+            Vector stoppedPosition = (Vector)bot.GetCurrentPosition()!.Value;
+
+            bot.MoveTo(2000, 0, 300);
+            bot.AxesTo(0, -90, 90, 0, 90, 0);
+            ActionFailedArgs e = await failed.Task.WaitAsync(Limit);
+            var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync().WaitAsync(Limit));
+
+            Assert.Equal("MoveTo(2000,0,300);", e.Action.ToInstruction().Replace(" ", "", StringComparison.Ordinal));
+            Assert.Equal("Target not reachable: no axis position within the software limit switches reaches it.", e.Reason);
+            Assert.Equal("1", e.Failure.ControllerCode);
+            Assert.Same(e.Action, thrown.Action);
+            Assert.Equal(new[] { e.Action.Id + 1 }, e.CancelledActions.Select(a => a.Id));
+            Assert.DoesNotContain(e.Action.Id, executed);
+            Assert.DoesNotContain(e.Action.Id + 1, executed);
+            Assert.Equal(lastGood, controller.ExecutedIds[^1]);
+            Assert.Equal(stoppedAt, controller.State.Joints);
+            Assert.True(e.Position is Vector at && at.IsSimilar(stoppedPosition, 0.05), e.Position?.ToString());
+            Assert.True(((Vector)bot.GetCurrentPosition()!.Value).IsSimilar(stoppedPosition, 0.05));
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+}
