@@ -106,7 +106,7 @@ public class AbbFailureTests
     public async Task HostDriver_DecodesFailure_ListenerGetsActionIdReasonAndCode()
     {
         await using var controller = await StartAsync();
-        var listener = new FailureListener();
+        var listener = new FailureRecordingListener();
         await using var host = new AbbDriver(new RobotLogger("test"), TimeProvider.System);
         await host.ConnectAsync("127.0.0.1", controller.Port, listener, OnlineTestSupport.Limit, CancellationToken.None);
         var cursor = new RobotCursor();
@@ -180,30 +180,5 @@ public class AbbFailureTests
             }
         }
         throw new Xunit.Sdk.XunitException("The monitor sent no failure report.");
-    }
-
-    private sealed class FailureListener : IDeviceListener
-    {
-        internal TaskCompletionSource<(int Id, string Reason, string? Code)> Failed { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
-
-        internal ConcurrentQueue<int> Acknowledged { get; } = new();
-
-        internal ConcurrentQueue<MachinaException> Faults { get; } = new();
-
-        public void OnAcknowledged(int id) => Acknowledged.Enqueue(id);
-
-        public void OnMotion(in MotionSample sample)
-        {
-        }
-
-        public void OnStopped(MachinaException reason) => Faults.Enqueue(reason);
-
-        public void OnResumed()
-        {
-        }
-
-        public void OnFailed(int id, string reason, string? code) => Failed.TrySetResult((id, reason, code));
-
-        public void OnFault(MachinaException error) => Faults.Enqueue(error);
     }
 }

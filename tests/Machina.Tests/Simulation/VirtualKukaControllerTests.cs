@@ -15,8 +15,8 @@ public class VirtualKukaControllerTests
     public async Task Connect_SendsItsStateWithTheModelsPoseAndNoProgress()
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
-        using var client = await ConnectAsync(controller.Port);
-        KukaElement state = await ReadElementAsync(client, new KukaXmlReader());
+        using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
+        KukaElement state = await KukaTestSupport.ReadElementAsync(client, new KukaXmlReader());
 
         Pose flange = RobotModels.Get("KR 6 R900 sixx").Kinematics.Forward(new Joints(0, -90, 90, 0, 90, 0));
         Assert.Equal(KukaMessages.State(new Joints(0, -90, 90, 0, 90, 0), flange.Position, flange.Rotation, 0, 0), state.ToString().Replace("/>", "></S>", StringComparison.Ordinal));
@@ -28,8 +28,8 @@ public class VirtualKukaControllerTests
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
         controller.StopAnswering();
-        using var client = await ConnectAsync(controller.Port);
-        await ReadElementAsync(client, new KukaXmlReader());
+        using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
+        await KukaTestSupport.ReadElementAsync(client, new KukaXmlReader());
         var sb = new StringBuilder();
         KukaInstruction.AppendBatch(sb, Enumerable.Range(1, KukaProtocol.Capacity + 1).Select(id => new KukaInstruction(id, KukaActionCode.Wait, new KukaValues(), "")));
         await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(sb.ToString()));
@@ -47,35 +47,13 @@ public class VirtualKukaControllerTests
     public async Task Batch_Malformed_ErrorKeptAndClientDropped(string batch, string expected)
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
-        using var client = await ConnectAsync(controller.Port);
-        await ReadElementAsync(client, new KukaXmlReader());
+        using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
+        await KukaTestSupport.ReadElementAsync(client, new KukaXmlReader());
         await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(batch));
 
         using var cts = new CancellationTokenSource(Timeout);
         Assert.Equal(0, await client.GetStream().ReadAsync(new byte[16], cts.Token));
         Assert.Contains(expected, Assert.Single(controller.Errors), StringComparison.Ordinal);
         Assert.Equal(0, controller.RequestsReceived);
-    }
-
-    private static async Task<TcpClient> ConnectAsync(int port)
-    {
-        var client = new TcpClient { NoDelay = true };
-        using var cts = new CancellationTokenSource(Timeout);
-        await client.ConnectAsync(IPAddress.Loopback, port, cts.Token);
-        return client;
-    }
-
-    private static async Task<KukaElement> ReadElementAsync(TcpClient client, KukaXmlReader reader)
-    {
-        using var cts = new CancellationTokenSource(Timeout);
-        var bytes = new byte[4096];
-        KukaElement element;
-        while (!reader.TryRead(out element))
-        {
-            int n = await client.GetStream().ReadAsync(bytes, cts.Token);
-            Assert.NotEqual(0, n);
-            reader.Append(bytes.AsSpan(0, n));
-        }
-        return element;
     }
 }

@@ -22,14 +22,14 @@ public class VirtualKukaFailureTests
     public async Task ActionTheRobotCannotRun_MidBatch_FailureInsteadOfAcknowledgementNothingAfterRuns(string type, string values, int code, string text)
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
-        using var client = await ConnectAsync(controller.Port);
+        using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
         var reader = new KukaXmlReader();
-        await ReadElementAsync(client, reader);
+        await KukaTestSupport.ReadElementAsync(client, reader);
 
         string batch = "<DT><DR>" + Action(1, "3", "0 -80 90 0 90 0") + Action(2, type, values) + Action(3, "3", "0 -90 90 0 90 0") + "</DR></DT>";
         await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(batch));
-        KukaElement first = await ReadElementAsync(client, reader);
-        KukaElement second = await ReadElementAsync(client, reader);
+        KukaElement first = await KukaTestSupport.ReadElementAsync(client, reader);
+        KukaElement second = await KukaTestSupport.ReadElementAsync(client, reader);
 
         Assert.Equal("<R ID=\"1\"></R>", first.ToString().Replace("/>", "></R>", StringComparison.Ordinal));
         Assert.Equal((KukaProtocol.Failure, 2, code.ToString(Num.Inv), text), (second.Name, second.Integer("ID"), second.Attribute("Code"), second.Attribute("Text")));
@@ -45,7 +45,7 @@ public class VirtualKukaFailureTests
     public async Task HostDriver_DecodesFailure_ListenerGetsIdReasonAndCode()
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
-        var listener = new Listener();
+        var listener = new FailureRecordingListener();
         await using var host = new KukaDriver(new DeviceContext(new RobotLogger("test"), TimeProvider.System, "test", null, 50));
         await host.ConnectAsync("127.0.0.1", controller.Port, listener, Timeout, CancellationToken.None);
         var cursor = new RobotCursor();
@@ -88,52 +88,5 @@ public class VirtualKukaFailureTests
             sb.Append(Num.Inv, $" V{i + 1}=\"{(i < v.Length ? v[i] : "0")}\"");
         }
         return sb.Append(" M=\"\"/>").ToString();
-    }
-
-    private static async Task<TcpClient> ConnectAsync(int port)
-    {
-        var client = new TcpClient { NoDelay = true };
-        using var cts = new CancellationTokenSource(Timeout);
-        await client.ConnectAsync(IPAddress.Loopback, port, cts.Token);
-        return client;
-    }
-
-    private static async Task<KukaElement> ReadElementAsync(TcpClient client, KukaXmlReader reader)
-    {
-        using var cts = new CancellationTokenSource(Timeout);
-        var bytes = new byte[4096];
-        KukaElement element;
-        while (!reader.TryRead(out element))
-        {
-            int n = await client.GetStream().ReadAsync(bytes, cts.Token);
-            Assert.NotEqual(0, n);
-            reader.Append(bytes.AsSpan(0, n));
-        }
-        return element;
-    }
-
-    private sealed class Listener : IDeviceListener
-    {
-        internal TaskCompletionSource<(int Id, string Reason, string? Code)> Failed { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
-
-        internal ConcurrentQueue<int> Acknowledged { get; } = new();
-
-        internal ConcurrentQueue<MachinaException> Faults { get; } = new();
-
-        public void OnAcknowledged(int id) => Acknowledged.Enqueue(id);
-
-        public void OnMotion(in MotionSample sample)
-        {
-        }
-
-        public void OnStopped(MachinaException reason) => Faults.Enqueue(reason);
-
-        public void OnResumed()
-        {
-        }
-
-        public void OnFailed(int id, string reason, string? code) => Failed.TrySetResult((id, reason, code));
-
-        public void OnFault(MachinaException error) => Faults.Enqueue(error);
     }
 }
