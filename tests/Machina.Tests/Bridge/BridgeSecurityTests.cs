@@ -185,13 +185,16 @@ internal static class RawHttp
         await tcp.ConnectAsync(IPAddress.Loopback, port, timeout.Token);
         NetworkStream stream = tcp.GetStream();
         await stream.WriteAsync(Encoding.Latin1.GetBytes(request), timeout.Token);
-        return await ReadAllAsync(stream, untilBlankLine);
+        return await ReadAllAsync(stream, untilBlankLine, timeout.Token);
     }
 
-    /// <summary>Reads until the server closes (or until the blank line), at most <see cref="BridgeTestSupport.Limit"/>.</summary>
-    internal static async Task<string> ReadAllAsync(NetworkStream stream, bool untilBlankLine = false)
+    /// <summary>
+    /// Reads until the server closes (or until the blank line), at most <see cref="BridgeTestSupport.Limit"/>, or until
+    /// <paramref name="deadline"/> when the caller's request has one.
+    /// </summary>
+    internal static async Task<string> ReadAllAsync(NetworkStream stream, bool untilBlankLine = false, CancellationToken deadline = default)
     {
-        using var timeout = new CancellationTokenSource(BridgeTestSupport.Limit);
+        using var timeout = deadline.CanBeCanceled ? CancellationTokenSource.CreateLinkedTokenSource(deadline) : new CancellationTokenSource(BridgeTestSupport.Limit);
         var answer = new MemoryStream();
         var buffer = new byte[4096];
         while (true)

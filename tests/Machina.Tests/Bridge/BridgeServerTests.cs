@@ -414,36 +414,6 @@ public class BridgeServerTests
     }
 
     /// <summary>Sends raw bytes and reads the answer until the server closes (or, for a handshake, until the blank line).</summary>
-    private static async Task<string> RawRequestAsync(BridgeServer bridge, string request, bool untilBlankLine = false)
-    {
-        using var tcp = new TcpClient();
-        using var timeout = new CancellationTokenSource(Limit);
-        await tcp.ConnectAsync(IPAddress.Loopback, bridge.Port, timeout.Token);
-        NetworkStream stream = tcp.GetStream();
-        await stream.WriteAsync(Encoding.Latin1.GetBytes(request), timeout.Token);
-        var answer = new MemoryStream();
-        var buffer = new byte[4096];
-        while (true)
-        {
-            int n;
-            try
-            {
-                n = await stream.ReadAsync(buffer, timeout.Token);
-            }
-            catch (IOException)
-            {
-                break; // reset after the answer
-            }
-            if (n == 0)
-            {
-                break;
-            }
-            answer.Write(buffer, 0, n);
-            if (untilBlankLine && Encoding.Latin1.GetString(answer.ToArray()).Contains("\r\n\r\n", StringComparison.Ordinal))
-            {
-                break;
-            }
-        }
-        return Encoding.Latin1.GetString(answer.ToArray());
-    }
+    private static Task<string> RawRequestAsync(BridgeServer bridge, string request, bool untilBlankLine = false) =>
+        RawHttp.RequestAsync(bridge.Port, request, untilBlankLine);
 }
