@@ -377,18 +377,20 @@ public class BridgeServerTests
     }
 
     [Fact]
-    public async Task StopAsync_AfterAMoveTooLongForTheVirtualController_CompletesAndLogs()
+    public async Task StopAsync_AfterAMoveTheVirtualControllerCannotRun_CompletesAndLogsTheFailure()
     {
         BridgeServer bridge = await StartAsync();
         var errors = new System.Collections.Concurrent.ConcurrentQueue<string>();
         bridge.Robot.Logger.Logged += (_, e) => { if (e.Level == LogLevel.ERROR) { errors.Enqueue(e.Message); } };
         await using TestClient client = await TestClient.ConnectAsync(bridge);
-        // The virtual controller cannot time such a motion (1 km at 1e-9 mm/s overflows a TimeSpan).
+        // 1 km away at 1e-9 mm/s: the controller refuses the target (outside reach) before it would try to time the motion, so
+        // the failure is reported (issue 21) and the stop that follows must still complete.
         await client.SendAsync("SpeedTo(1e-9);MoveTo(1e6,0,0);");
-        await client.ReceiveUntilAsync(e => e.Event() == "action-released" && e.Id() == 2);
+        await client.ReceiveUntilAsync(e => e.Event() == "action-failed" && e.Id() == 2);
         await bridge.StopAsync().WaitAsync(Limit); // never throws, whatever state the virtual controller is in
         Assert.False(bridge.Robot.IsConnected);
-        Assert.All(errors, m => Assert.StartsWith("Bridge: the virtual controller had failed: OverflowException", m, StringComparison.Ordinal));
+        Assert.Contains(errors, m => m.StartsWith("The controller could not run action 2: Position outside reach", StringComparison.Ordinal));
+        Assert.All(errors, m => Assert.Contains("The controller could not run", m, StringComparison.Ordinal));
     }
 
     [Fact]
