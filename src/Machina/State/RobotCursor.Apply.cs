@@ -38,12 +38,13 @@ internal sealed partial class RobotCursor
             ActionExtrusion a => Set(ref _isExtruding, a.Extrude),
             ActionExternalAxis a => ApplyExternalAxis(a),
             ActionArmAngle a => ApplyArmAngle(a),
-            ActionDefineTool a => DefineTool(a),
+            ActionDefineTool a => CheckTool(a) ?? DefineTool(a),
             ActionAttachTool a => AttachTool(a),
             ActionDetachTool a => DetachTool(a),
             ActionIODigital a => SetOutput(DigitalOutputs, a.IsToolPin, a.PinName, a.On),
-            ActionIOAnalog a => SetOutput(AnalogOutputs, a.IsToolPin, a.PinName, a.Value),
-            ActionWait or ActionMessage or ActionComment or ActionCustomCode or ActionInitialization => null,
+            ActionIOAnalog a => CheckAnalog(a) ?? SetOutput(AnalogOutputs, a.IsToolPin, a.PinName, a.Value),
+            ActionWait a => CheckWait(a),
+            ActionMessage or ActionComment or ActionCustomCode or ActionInitialization => null,
             _ => $"Machina does not know how to apply a {action.GetType().Name}.",
         };
         if (refusal is null)
@@ -71,6 +72,10 @@ internal sealed partial class RobotCursor
         if (strictlyPositive ? !(value > 0) : !(value >= 0))
         {
             return $"the {what} would become {Num.G(value)} {unit}; it must be {(strictlyPositive ? "greater than 0" : "0 or more")}.";
+        }
+        if (BeyondSettingLimit(what, value, unit) is string beyond)
+        {
+            return beyond;
         }
         field = value;
         return null;
@@ -108,6 +113,10 @@ internal sealed partial class RobotCursor
         if (value < 0)
         {
             return $"the {a.Part} temperature would become {Num.G(value)} C; it cannot be below 0 C.";
+        }
+        if (BeyondSettingLimit($"{a.Part} temperature", value, "C") is string beyond)
+        {
+            return beyond;
         }
         Temperatures[part] = value;
         return null;
@@ -166,7 +175,12 @@ internal sealed partial class RobotCursor
         {
             return $"the arm angle would become too large to represent ({Num.G(ArmAngle.Value)} degrees now).";
         }
-        ArmAngle = a.Relative ? ArmAngle!.Value + a.Angle : a.Angle;
+        double angle = a.Relative ? ArmAngle!.Value + a.Angle : a.Angle;
+        if (!Within(angle))
+        {
+            return $"the arm angle would become {Num.G(angle)} degrees; {JointLimitText}";
+        }
+        ArmAngle = angle;
         return null;
     }
 

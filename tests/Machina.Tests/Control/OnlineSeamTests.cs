@@ -140,7 +140,7 @@ public class OnlineSeamTests
         bot.ResponseTimeout = TimeSpan.FromSeconds(1);
         bot.ControlMode("online");
         bot.Connect("127.0.0.1", 7000);
-        bot.Wait(long.MaxValue);
+        bot.Wait(1_000_000_000);                    // the longest wait allowed; the move below is what TimeSpan cannot hold
         bot.SpeedTo(1e-9);
         bot.MoveTo(1e6, 0, 630);
 

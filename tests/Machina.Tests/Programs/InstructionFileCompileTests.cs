@@ -200,6 +200,31 @@ public sealed class InstructionFileCompileTests : IDisposable
         Assert.False(Directory.Exists(Path.Combine(_root, "out")) && Directory.GetFiles(Path.Combine(_root, "out")).Length > 0);
     }
 
+    /// <summary>
+    /// Values a robot language cannot hold (a speed of 1E+300 mm/s: KRL's $VEL.CP with 300 digits; a wait of 292 million years)
+    /// stop the compilation with the statement's position, as online refuses them at issue time; no file is written.
+    /// </summary>
+    [Theory]
+    [InlineData(RobotType.ABB, "SpeedTo(1e300);", "the speed would become 1E+300 mm/s; settings are refused beyond 1,000,000 mm/s")]
+    [InlineData(RobotType.KUKA, "SpeedTo(1e300);", "the speed would become 1E+300 mm/s; settings are refused beyond 1,000,000 mm/s")]
+    [InlineData(RobotType.UR, "DefineTool(\"t\", 0,0,100, 1,0,0, 0,1,0, 1e300, 0,0,50);", "tool \"t\" would weigh 1E+300 kg; tool weights are refused beyond 1,000,000 kg")]
+    [InlineData(RobotType.ABB, "WriteAnalog(\"AO_1\", 1e300);", "the analog output AO_1 would be set to 1E+300; analog values are refused beyond ±1,000,000")]
+    [InlineData(RobotType.UR, "Wait(9223372036854775807);", "a wait of 9223372036854775807 ms is refused: waits are limited to 1,000,000,000 ms")]
+    [InlineData(RobotType.MARLIN, "TemperatureTo(1e300, \"bed\");", "the Bed temperature would become 1E+300 C; settings are refused beyond 1,000,000 C")]
+    [InlineData(RobotType.KUKA, "AccelerationTo(2e6);", "the acceleration would become 2000000 mm/s^2; settings are refused beyond 1,000,000 mm/s^2")]
+    public void CompileToFolder_ValueNoLanguageHolds_ThrowsWithItsPosition(RobotType language, string statement, string reason)
+    {
+        string file = Path.Combine(_root, "Huge.machina");
+        File.WriteAllText(file, "MoveTo(300, 0, 400);\n  " + statement + "\nMoveTo(300, 10, 400);\n");
+        string folder = Path.Combine(_root, "out");
+
+        var error = Assert.Throws<InstructionParseException>(() => Instructions.CompileToFolder(file, language, folder));
+
+        Assert.Equal((2, 3), (error.Line, error.Column));
+        Assert.Contains(reason, error.Message, StringComparison.Ordinal);
+        Assert.False(Directory.Exists(folder) && Directory.GetFiles(folder).Length > 0);
+    }
+
     [Fact]
     public void CompileToFolder_BadArguments_ThrowArgumentExceptions()
     {

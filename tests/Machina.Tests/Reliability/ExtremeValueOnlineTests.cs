@@ -58,7 +58,10 @@ public class ExtremeValueOnlineTests
             Assert.StartsWith("Cannot apply \"MoveTo(1E+308,0,0);\": the tool position would become", refused[0], StringComparison.Ordinal);
             Assert.Equal("Cannot apply \"WriteAnalog(1,2148);\": \"Set analog IO 1 to 2148\" cannot be streamed to a UR robot: UR analog outputs take a value from 0 to 1 (a fraction of the output's current or voltage range), not 2148.", refused[5]);
             Assert.EndsWith("which no robot reaches.", refused[6], StringComparison.Ordinal); // the general joint rule, also before the wire's
-            Assert.All(refused.Where((_, i) => i is not 0 and not 5 and not 6), m => Assert.EndsWith("cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers.", m, StringComparison.Ordinal));
+            // The general bounds on waits, settings and tools (what every robot language holds) come before the wire's own.
+            Assert.EndsWith("the longest every robot language's timer holds.", refused[1], StringComparison.Ordinal);
+            Assert.All([refused[2], refused[3], refused[4]], m => Assert.EndsWith("which no robot or printer uses and not every robot language can hold.", m, StringComparison.Ordinal));
+            Assert.Contains("tool coordinates are refused beyond 1,000,000 mm (1 km)", refused[7], StringComparison.Ordinal);
             Assert.Equal(8, refused.Length);
         }
         finally
@@ -69,22 +72,23 @@ public class ExtremeValueOnlineTests
 
     /// <summary>
     /// Values the state reaches through a relative action (or a setting) that the brand's encoding cannot carry: UR's 32-bit
-    /// integers (0.1 mm), the 32-bit floats of RAPID's num and KRL's REAL. Each is refused at issue time with the reason, nothing
-    /// is sent, the state is unchanged, and the link then runs a normal move.
+    /// integers (0.1 mm), the 32-bit floats of RAPID's num and KRL's REAL. The general bounds (1 km for targets, 1,000,000 in its
+    /// unit for a setting) now refuse them first, with the same words online and offline. Each is refused at issue time with the
+    /// reason, nothing is sent, the state is unchanged, and the link then runs a normal move.
     /// </summary>
     public static TheoryData<string, string, string> BeyondTheWire() => new()
     {
         { "UR", "Move(-1e308, 0, 0)", "Cannot apply \"Move(-1E+308,0,0);\": the tool position would become [-1E+308, 100, 500] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches." },
-        { "UR", "Speed(3e8)", "Cannot apply \"Speed(300000000);\": \"Speed(300000000);\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers." },
-        { "UR", "Precision(3e8)", "Cannot apply \"Precision(300000000);\": \"Precision(300000000);\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers." },
-        { "UR", "Acceleration(3e8)", "Cannot apply \"Acceleration(300000000);\": \"Acceleration(300000000);\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers." },
+        { "UR", "Speed(3e8)", "Cannot apply \"Speed(300000000);\": the speed would become 300000100 mm/s; settings are refused beyond 1,000,000 mm/s, which no robot or printer uses and not every robot language can hold." },
+        { "UR", "Precision(3e8)", "Cannot apply \"Precision(300000000);\": the precision would become 300000000 mm; settings are refused beyond 1,000,000 mm, which no robot or printer uses and not every robot language can hold." },
+        { "UR", "Acceleration(3e8)", "Cannot apply \"Acceleration(300000000);\": the acceleration would become 300000030 mm/s^2; settings are refused beyond 1,000,000 mm/s^2, which no robot or printer uses and not every robot language can hold." },
         { "ABB", "Move(-1e308, 0, 0)", "Cannot apply \"Move(-1E+308,0,0);\": the tool position would become [-1E+308, 100, 500] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches." },
-        { "ABB", "SpeedTo(1e308)", "Cannot apply \"SpeedTo(1E+308);\": Speed (SpeedTo(1E+308);) cannot be streamed to an ABB robot: 1E+308 is beyond what a RAPID number holds (±3.4E+38)." },
-        { "ABB", "Speed(1e308)", "Cannot apply \"Speed(1E+308);\": Speed (Speed(1E+308);) cannot be streamed to an ABB robot: 1E+308 is beyond what a RAPID number holds (±3.4E+38)." },
-        { "ABB", "WriteAnalog(\"AO_1\", 1e308)", "Cannot apply \"WriteAnalog(\"AO_1\",1E+308);\": IOAnalog (WriteAnalog(\"AO_1\",1E+308);) cannot be streamed to an ABB robot: 1E+308 is beyond what a RAPID number holds (±3.4E+38)." },
+        { "ABB", "SpeedTo(1e308)", "Cannot apply \"SpeedTo(1E+308);\": the speed would become 1E+308 mm/s; settings are refused beyond 1,000,000 mm/s, which no robot or printer uses and not every robot language can hold." },
+        { "ABB", "Speed(1e308)", "Cannot apply \"Speed(1E+308);\": the speed would become 1E+308 mm/s; settings are refused beyond 1,000,000 mm/s, which no robot or printer uses and not every robot language can hold." },
+        { "ABB", "WriteAnalog(\"AO_1\", 1e308)", "Cannot apply \"WriteAnalog(\"AO_1\",1E+308);\": the analog output AO_1 would be set to 1E+308; analog values are refused beyond ±1,000,000, which no output takes and not every robot language can hold." },
         { "KUKA", "Move(-1e308, 0, 0)", "Cannot apply \"Move(-1E+308,0,0);\": the tool position would become [-1E+308, 100, 500] mm; targets are refused beyond 1,000,000 mm (1 km) from the origin along X, Y or Z, which no robot or printer reaches." },
-        { "KUKA", "SpeedTo(1e308)", "Cannot apply \"SpeedTo(1E+308);\": Speed (SpeedTo(1E+308);) is not supported online on KUKA: 1E+305 is beyond what a KRL REAL holds (±3.4E+38)." },
-        { "KUKA", "Precision(1e308)", "Cannot apply \"Precision(1E+308);\": Precision (Precision(1E+308);) is not supported online on KUKA: 1E+308 is beyond what a KRL REAL holds (±3.4E+38)." },
+        { "KUKA", "SpeedTo(1e308)", "Cannot apply \"SpeedTo(1E+308);\": the speed would become 1E+308 mm/s; settings are refused beyond 1,000,000 mm/s, which no robot or printer uses and not every robot language can hold." },
+        { "KUKA", "Precision(1e308)", "Cannot apply \"Precision(1E+308);\": the precision would become 1E+308 mm; settings are refused beyond 1,000,000 mm, which no robot or printer uses and not every robot language can hold." },
     };
 
     private static readonly Dictionary<string, Action<Robot>> Overflows = new()

@@ -42,19 +42,21 @@ public class CursorOverflowTests
     }
 
     [Fact]
-    public void SettingsOverflow_IsRefused()
+    public void SettingsBeyondAMillion_AreRefused_AndAMillionIsKept()
     {
         var bot = Robot.Create("Bot", RobotType.ABB);
-        bot.SpeedTo(double.MaxValue);
-        bot.AccelerationTo(double.MaxValue);
-        bot.PrecisionTo(double.MaxValue);
-        bot.ExtrusionRateTo(double.MaxValue);
+        bot.SpeedTo(1e6);
+        bot.AccelerationTo(1e6);
+        bot.PrecisionTo(1e6);
+        bot.ExtrusionRateTo(1e6);
 
-        AssertRefusedAndUnchanged(bot, () => bot.Speed(double.MaxValue), "the speed would become too large to represent");
-        AssertRefusedAndUnchanged(bot, () => bot.Acceleration(double.MaxValue), "the acceleration would become too large to represent");
-        AssertRefusedAndUnchanged(bot, () => bot.Precision(double.MaxValue), "the precision would become too large to represent");
-        AssertRefusedAndUnchanged(bot, () => bot.ExtrusionRate(double.MaxValue), "the extrusion rate would become too large to represent");
-        Assert.Equal(double.MaxValue, bot.GetCurrentSpeed());
+        AssertRefusedAndUnchanged(bot, () => bot.Speed(1), "the speed would become 1000001 mm/s; settings are refused beyond 1,000,000 mm/s, which no robot or printer uses");
+        AssertRefusedAndUnchanged(bot, () => bot.Acceleration(double.MaxValue), "the acceleration would become 1.79769313486232E+308 mm/s^2; settings are refused beyond 1,000,000 mm/s^2");
+        AssertRefusedAndUnchanged(bot, () => bot.Precision(0.5), "the precision would become 1000000.5 mm; settings are refused beyond 1,000,000 mm");
+        AssertRefusedAndUnchanged(bot, () => bot.ExtrusionRateTo(1e300), "the extrusion rate would become 1E+300 mm/mm; settings are refused beyond 1,000,000 mm/mm");
+        AssertRefusedAndUnchanged(bot, () => bot.SpeedTo(double.MaxValue), "the speed would become 1.79769313486232E+308 mm/s; settings are refused");
+        Assert.Equal(1e6, bot.GetCurrentSpeed());
+        Assert.Equal(1e6, bot.GetCurrentAcceleration());
     }
 
     [Fact]
@@ -62,14 +64,31 @@ public class CursorOverflowTests
     {
         var bot = Robot.Create("Bot", RobotType.ABB);
         bot.AxesTo(0, 0, 1e6, 0, 0, 0);
-        bot.ArmAngleTo(-double.MaxValue);
+        bot.ArmAngleTo(-1e6);
         bot.ExternalAxisTo(2, -double.MaxValue);
-        bot.TemperatureTo(double.MaxValue, RobotPartType.Bed);
+        bot.TemperatureTo(1e6, RobotPartType.Bed);
 
         AssertRefusedAndUnchanged(bot, () => bot.Axes(0, 0, double.MaxValue, 0, 0, 0), "the joint angles would become [0, 0, 1.79769313486232E+308, 0, 0, 0] degrees; joint values are refused beyond 1,000,000 degrees");
-        AssertRefusedAndUnchanged(bot, () => bot.ArmAngle(-double.MaxValue), "the arm angle would become too large to represent");
+        AssertRefusedAndUnchanged(bot, () => bot.ArmAngle(-double.MaxValue), "the arm angle would become -1.79769313486232E+308 degrees; joint values are refused");
+        AssertRefusedAndUnchanged(bot, () => bot.ArmAngle(-1), "the arm angle would become -1000001 degrees; joint values are refused beyond 1,000,000 degrees");
         AssertRefusedAndUnchanged(bot, () => bot.ExternalAxis(2, -double.MaxValue), "external axis 2 would become too large to represent");
-        AssertRefusedAndUnchanged(bot, () => bot.Temperature(double.MaxValue, RobotPartType.Bed), "the Bed temperature would become too large to represent");
+        AssertRefusedAndUnchanged(bot, () => bot.Temperature(1, RobotPartType.Bed), "the Bed temperature would become 1000001 C; settings are refused beyond 1,000,000 C");
+        AssertRefusedAndUnchanged(bot, () => bot.Temperature(double.MaxValue, RobotPartType.Bed), "the Bed temperature would become 1.79769313486232E+308 C; settings are refused");
+    }
+
+    [Fact]
+    public void WaitsAnalogValuesAndToolsBeyondWhatALanguageHolds_AreRefused()
+    {
+        var bot = Robot.Create("Bot", RobotType.ABB);
+        bot.Wait(1_000_000_000);
+        bot.WriteAnalog("AO_1", -1e6);
+
+        AssertRefusedAndUnchanged(bot, () => bot.Wait(1_000_000_001), "a wait of 1000000001 ms is refused: waits are limited to 1,000,000,000 ms (1,000,000 s, about 11.6 days)");
+        AssertRefusedAndUnchanged(bot, () => bot.Wait(long.MaxValue), "a wait of 9223372036854775807 ms is refused");
+        AssertRefusedAndUnchanged(bot, () => bot.WriteAnalog("AO_1", 1e300), "the analog output AO_1 would be set to 1E+300; analog values are refused beyond ±1,000,000");
+        AssertRefusedAndUnchanged(bot, () => bot.DefineTool("Heavy", 0, 0, 100, 1, 0, 0, 0, 1, 0, 1e300, 0, 0, 50), "tool \"Heavy\" would weigh 1E+300 kg; tool weights are refused beyond 1,000,000 kg");
+        AssertRefusedAndUnchanged(bot, () => bot.DefineTool("Long", new Vector(0, 0, 2e6), Rotation.Identity), "tool \"Long\" has its tip at [0, 0, 2000000] mm");
+        Assert.Equal(-1e6, bot.GetCurrentState().AnalogOutputs["AO_1"]);
     }
 
     [Fact]
@@ -84,15 +103,17 @@ public class CursorOverflowTests
     }
 
     [Fact]
-    public void ExtrudedLengthOverflow_RefusesTheMotion()
+    public void ExtrusionRateThatWouldOverflowTheExtrudedLength_IsRefusedAsASetting()
     {
+        // The rate is bounded (1,000,000 mm/mm), and so is a move (1 km): the extruded length cannot overflow any more.
         var bot = Robot.Create("Bot", RobotType.ZMORPH);
         bot.MoveTo(0, 0, 0);
-        bot.ExtrusionRateTo(1e305);
         bot.Extrude();
 
-        AssertRefusedAndUnchanged(bot, () => bot.MoveTo(1e6, 0, 0), "the extruded length would become too large to represent");
-        Assert.Equal(new Point(0, 0, 0), bot.GetCurrentPosition());
+        AssertRefusedAndUnchanged(bot, () => bot.ExtrusionRateTo(1e305), "the extrusion rate would become 1E+305 mm/mm; settings are refused");
+        bot.ExtrusionRateTo(1e6);
+        bot.MoveTo(1e6, 0, 0);
+        Assert.Equal(new Point(1e6, 0, 0), bot.GetCurrentPosition());
     }
 
     [Fact]

@@ -159,24 +159,23 @@ public class GCodeCompilerTests
     }
 
     [Fact]
-    public void Compile_SpeedBeyondWhatMmPerMinuteHolds_WritesTheLargestFeedWithAWarning()
+    public void Compile_TheFastestSpeedAllowed_IsWrittenInMmPerMinuteWithoutExponent()
     {
-        // 1e308 mm/s is 6e309 mm/min, beyond double: the feed used to be written as "FInfinity".
-        string largest = double.MaxValue.ToString("0", CultureInfo.InvariantCulture);
+        // 1E+308 mm/s used to reach the writer (as "FInfinity", then as the largest double); the state now refuses speeds
+        // beyond 1,000,000 mm/s, so the fastest feed a program can hold is 60,000,000 mm/min.
         foreach (RobotType brand in new[] { RobotType.ZMORPH, RobotType.MARLIN })
         {
             var bot = NewBot(brand);
-            bot.SpeedTo(1e308);
+            Assert.Throws<ActionRefusedException>(() => bot.SpeedTo(1e308));
+            bot.SpeedTo(1e6);
             bot.MoveTo(0, 0, 10);
 
             string[] body = Body(bot, brand);
 
-            string warning = "; WARNING: 1E+308 mm/s is too fast to write in mm/min; the largest feed rate was written, so the printer's own limit applies.";
             string[] expected = brand == RobotType.ZMORPH
-                ? [warning, "G1 F" + largest, "G1 X0 Y0 Z10"]
-                : [warning, "G0 X0 Y0 Z10 F" + largest];
+                ? ["G1 F60000000", "G1 X0 Y0 Z10"]
+                : ["G0 X0 Y0 Z10 F60000000"];
             Assert.Equal(expected, body);
-            Assert.Equal(309, largest.Length);
         }
     }
 
