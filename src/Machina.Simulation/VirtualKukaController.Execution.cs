@@ -83,7 +83,7 @@ public sealed partial class VirtualKukaController
             case KukaActionCode.DigitalOutput:
                 return new(s with { DigitalOutputs = With(s.DigitalOutputs, Output(v[0], KukaActionEncoder.DigitalOutputs), v[1] > 0.5) }, 0);
             case KukaActionCode.AnalogOutput:
-                return new(s with { AnalogOutputs = With(s.AnalogOutputs, Output(v[0], KukaActionEncoder.AnalogOutputs), v[1]) }, 0);
+                return new(s with { AnalogOutputs = With(s.AnalogOutputs, Output(v[0], KukaActionEncoder.AnalogOutputs), AnalogValue(v[1])) }, 0);
             case KukaActionCode.Settings:
                 return new(s with { Speed = Positive(v[0], "speed ($VEL.CP)") * 1000, Acceleration = v[1] > 0 ? v[1] : null, Zone = v[2] }, 0);
             default:
@@ -114,7 +114,12 @@ public sealed partial class VirtualKukaController
     /// <summary>The number of an output, or a refusal when it does not exist.</summary>
     private static string Output(double number, int count) => number == Math.Floor(number) && number >= 1 && number <= count
         ? ((int)number).ToString(CultureInfo.InvariantCulture)
-        : throw new VirtualRefusalException($"output {Num.G(number)} does not exist (1 to {count.ToString(CultureInfo.InvariantCulture)}).");
+        : throw new VirtualRefusalException($"output {Num.G(number)} does not exist (1 to {count.ToString(CultureInfo.InvariantCulture)}).", VirtualRefusalKind.Output);
+
+    /// <summary>$ANOUT takes -1 to 1; the driver checks it before setting the output.</summary>
+    private static double AnalogValue(double value) => value is >= -1 and <= 1
+        ? value
+        : throw new VirtualRefusalException($"analog value {Num.G(value)} is outside -1 to 1.", VirtualRefusalKind.OutputValue);
 
     private static Dictionary<string, T> With<T>(IReadOnlyDictionary<string, T> old, string key, T value) => new(old) { [key] = value };
 }

@@ -17,6 +17,8 @@ public sealed partial class VirtualKukaController
             VirtualRefusalKind.Reach => KukaFailure.NotReachable,
             VirtualRefusalKind.JointLimits => KukaFailure.SoftwareLimit,
             VirtualRefusalKind.Speed => KukaFailure.NoSpeed,
+            VirtualRefusalKind.Output => KukaFailure.NoSuchOutput,
+            VirtualRefusalKind.OutputValue => KukaFailure.AnalogRange,
             _ => null,
         };
         if (code is not int failure)

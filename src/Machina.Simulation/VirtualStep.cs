@@ -30,4 +30,10 @@ internal enum VirtualRefusalKind
 
     /// <summary>A motion with a speed of 0 or less: it would never end.</summary>
     Speed,
+
+    /// <summary>An output number the controller does not have.</summary>
+    Output,
+
+    /// <summary>A value an output cannot take (an analog value beyond its range).</summary>
+    OutputValue,
 }

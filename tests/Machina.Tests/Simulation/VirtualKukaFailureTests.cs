@@ -19,6 +19,9 @@ public class VirtualKukaFailureTests
     [InlineData("3", "0 -90 90 0 170 0", KukaFailure.SoftwareLimit, "Software limit switch: an axis target is beyond its software limits.")]
     [InlineData("1", "2000 0 300 0 90 0", KukaFailure.NotReachable, "Target not reachable: no axis position within the software limit switches reaches it.")]
     [InlineData("4", "0 0 0 0 0 0", KukaFailure.NoSpeed, "The speed ($VEL.CP) is 0: the motion would never end.")]
+    [InlineData("11", "5000 1 0 0 0 0", KukaFailure.NoSuchOutput, "Output does not exist: the number is outside the controller's outputs.")]
+    [InlineData("12", "33 0.5 0 0 0 0", KukaFailure.NoSuchOutput, "Output does not exist: the number is outside the controller's outputs.")]
+    [InlineData("12", "2 1.5 0 0 0 0", KukaFailure.AnalogRange, "Analog value out of range: $ANOUT takes values from -1 to 1.")]
     public async Task ActionTheRobotCannotRun_MidBatch_FailureInsteadOfAcknowledgementNothingAfterRuns(string type, string values, int code, string text)
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();

@@ -16,12 +16,20 @@ internal static class KukaFailure
     /// <summary>A speed (<c>$VEL.CP</c>) of 0 or less: the motions after it would never end.</summary>
     public const int NoSpeed = 3;
 
+    /// <summary>An output number outside <c>$OUT[1..4096]</c> or <c>$ANOUT[1..32]</c>.</summary>
+    public const int NoSuchOutput = 4;
+
+    /// <summary>An analog value outside -1..1, the range of <c>$ANOUT</c>.</summary>
+    public const int AnalogRange = 5;
+
     /// <summary>The text the driver sends (and shows in its quit message) for a code.</summary>
     public static string Describe(int code) => code switch
     {
         NotReachable => "Target not reachable: no axis position within the software limit switches reaches it.",
         SoftwareLimit => "Software limit switch: an axis target is beyond its software limits.",
         NoSpeed => "The speed ($VEL.CP) is 0: the motion would never end.",
+        NoSuchOutput => "Output does not exist: the number is outside the controller's outputs.",
+        AnalogRange => "Analog value out of range: $ANOUT takes values from -1 to 1.",
         _ => "The driver could not run the action and halted.",
     };
 
