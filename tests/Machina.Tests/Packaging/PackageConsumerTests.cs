@@ -54,11 +54,11 @@ public class PackageConsumerTests
         {
             // Pack from a copy of the sources, so that this test never races the build of the suite itself for obj/.
             string sources = Path.Combine(work, "sources");
-            foreach (string file in new[] { "Directory.Build.props", "CHANGELOG.md", "PACKAGE.md", "global.json", "NuGet.Config", ".editorconfig" })
+            foreach (string file in new[] { "Directory.Build.props", "CHANGELOG.md", "PACKAGE.md", "global.json", "NuGet.Config", ".editorconfig", "docs/icon.png" })
             {
                 if (File.Exists(Path.Combine(root, file)))
                 {
-                    Directory.CreateDirectory(sources);
+                    Directory.CreateDirectory(Path.GetDirectoryName(Path.Combine(sources, file))!);
                     File.Copy(Path.Combine(root, file), Path.Combine(sources, file));
                 }
             }
@@ -72,6 +72,7 @@ public class PackageConsumerTests
             }
             Assert.True(File.Exists(Path.Combine(feed, "Machina.0.1.0.nupkg")), "Machina.0.1.0.nupkg was not made.");
             Assert.True(File.Exists(Path.Combine(feed, "Machina.Simulation.0.1.0.snupkg")), "Machina.Simulation.0.1.0.snupkg was not made.");
+            AssertHasIcon(Path.Combine(feed, "Machina.0.1.0.nupkg"), Path.Combine(root, "docs", "icon.png"));
 
             // A fresh project, as a newcomer writes it: package references, the folder feed plus the usual sources, and its
             // own packages folder so that an older Machina 0.1.0 in the machine's cache cannot stand in for these.
@@ -207,5 +208,25 @@ public class PackageConsumerTests
         string output = await stdout + await stderr;
         Assert.True(process.ExitCode == 0, $"dotnet {string.Join(' ', arguments)} failed with exit code {process.ExitCode}:\n{output}");
         return output;
+    }
+
+    /// <summary>The package names icon.png in its manifest and carries the repository's docs/icon.png, a 128 x 128 PNG, byte for byte.</summary>
+    private static void AssertHasIcon(string package, string icon)
+    {
+        using System.IO.Compression.ZipArchive zip = System.IO.Compression.ZipFile.OpenRead(package);
+        System.IO.Compression.ZipArchiveEntry nuspec = zip.Entries.Single(e => e.FullName.EndsWith(".nuspec", StringComparison.Ordinal));
+        using (Stream stream = nuspec.Open())
+        {
+            XElement metadata = XDocument.Load(stream).Root!.Elements().Single(e => e.Name.LocalName == "metadata");
+            Assert.Equal("icon.png", metadata.Elements().Single(e => e.Name.LocalName == "icon").Value);
+        }
+        using var packed = new MemoryStream();
+        using (Stream stream = zip.GetEntry("icon.png")!.Open())
+        {
+            stream.CopyTo(packed);
+        }
+        byte[] bytes = packed.ToArray();
+        Assert.Equal(File.ReadAllBytes(icon), bytes);
+        Assert.Equal((128, 128), (System.Buffers.Binary.BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(16)), System.Buffers.Binary.BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(20))));
     }
 }
