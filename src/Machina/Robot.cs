@@ -43,7 +43,7 @@ public sealed partial class Robot : IOnlineHost
     public event ActionIssuedHandler? ActionIssued;
 
     /// <summary>A robot named "Machina" that compiles to a human-readable listing.</summary>
-    public static Robot Create() => new("Machina", RobotType.HUMAN);
+    public static Robot Create() => new("Machina", BrandRegistry.Default.Type);
 
     /// <summary>A robot with a name (starting with a letter) and a brand.</summary>
     public static Robot Create(string name, RobotType brand)

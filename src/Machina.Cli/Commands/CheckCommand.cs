@@ -93,7 +93,7 @@ internal static class CheckCommand
     private static Dictionary<(int Line, int Column), List<string>> BrandWarnings(string? file, RobotModel model, CancellationToken cancellation)
     {
         var byStatement = new Dictionary<(int Line, int Column), List<string>>();
-        if (file is null || !Enum.TryParse(model.Brand, ignoreCase: true, out RobotType brand) || brand is not (RobotType.ABB or RobotType.UR or RobotType.KUKA))
+        if (file is null || BrandRegistry.Find(model.Brand) is not { IsArm: true, Type: RobotType brand })
         {
             return byStatement;
         }
