@@ -158,7 +158,7 @@ public sealed partial class Robot : IOnlineHost
         if (refusal is not null)
         {
             action.Id = -1;
-            Logger.Warning($"Refused {action.ToInstruction()}: {refusal}");
+            Logger.Refused(action, $"Refused {action.ToInstruction()}: {refusal}");
             throw new ActionRefusedException(action, refusal);
         }
         if (_session is not null)
@@ -183,7 +183,7 @@ public sealed partial class Robot : IOnlineHost
         if (refusal is not null)
         {
             action.Id = -1;
-            Logger.Warning($"Refused {action.ToInstruction()} {refusal}");
+            Logger.Refused(action, $"Refused {action.ToInstruction()} {refusal}");
             throw new ActionRefusedException(action, refusal);
         }
         _nextId++;

@@ -46,7 +46,7 @@ internal static class CheckCommand
         var problems = new List<string>();
         int motions = 0, withProblems = 0, refused = 0, refusedMotions = 0;
         bool anyProblem = false;
-        foreach (ProgramStatement statement in reader.Read(context.Cancellation))
+        foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
             string? refusal = replay.Apply(statement.Action, problems);
             if (refusal is null && brandWarnings.TryGetValue((statement.Line, statement.Column), out List<string>? warnings))

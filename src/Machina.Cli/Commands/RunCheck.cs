@@ -25,7 +25,7 @@ internal static class RunCheck
         long count = 0;
         var problems = new List<string>();
         int more = 0;
-        foreach (ProgramStatement statement in reader.Read(context.Cancellation))
+        foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
             count++;
             string? problem = robot.TryOn(trial, statement.Action) is string refusal
