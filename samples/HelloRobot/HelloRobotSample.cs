@@ -26,7 +26,7 @@ public static class HelloRobotSample
             // With the arm's model, Machina knows the pose after a joint move (forward kinematics) and the joints after a
             // Cartesian one; without it, the one it was not given stays unknown.
             Robot bot = controller.Model is RobotModel model
-                ? Robot.Create("HelloRobot", Enum.Parse<RobotType>(controller.Brand), model)
+                ? Robot.Create("HelloRobot", controller.Brand, model)
                 : Robot.Create("HelloRobot", controller.Brand);
             bot.ControlMode("online");
             long lastMotion = 0;

@@ -27,7 +27,7 @@ public static class KinematicsCheckSample
             return Task.FromResult(SampleHost.Usage);
         }
         RobotModel? model = RobotModels.Find(modelName);
-        if (model is null || model.Brand != "ABB")
+        if (model is null || model.Brand != RobotType.ABB.ToString())
         {
             error.WriteLine($"\"{modelName}\" is not an ABB model of the catalogue; try \"IRB 120\" or \"IRB 1200-5/0.9\".");
             return Task.FromResult(SampleHost.Usage);

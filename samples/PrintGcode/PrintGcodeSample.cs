@@ -25,7 +25,7 @@ public static class PrintGcodeSample
         // Filament (1.75 mm) per mm of path for a 0.4 mm wide, 0.2 mm high line: 0.4 × 0.2 / (π × 0.875²) ≈ 0.033.
         const double extrusionRate = 0.033;
 
-        string printer = "ZMORPH";
+        RobotType printer = RobotType.ZMORPH;
         int layers = 5;
         string folder = Path.Combine(Path.GetTempPath(), "MachinaPrint");
         for (int i = 0; i < args.Length; i += 2)
@@ -33,7 +33,7 @@ public static class PrintGcodeSample
             string? value = i + 1 < args.Length ? args[i + 1] : null;
             bool known = value is not null && args[i] switch
             {
-                "--printer" => (printer = value.ToUpperInvariant()) is "ZMORPH" or "MARLIN",
+                "--printer" => Enum.TryParse(value, ignoreCase: true, out printer) && printer is RobotType.ZMORPH or RobotType.MARLIN,
                 "--layers" => int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out layers) && layers is >= 1 and <= 500,
                 "--out" => (folder = value).Length > 0,
                 _ => false,

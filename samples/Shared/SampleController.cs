@@ -3,15 +3,21 @@ using Machina;
 using Machina.Simulation;
 
 /// <summary>
-/// The controller an online sample talks to: a virtual controller started on this computer (ABB by default, UR with
-/// <c>--brand ur</c>, KUKA with <c>--brand kuka</c>), or a real one given with <c>--host</c> and <c>--port</c> (running
+/// The controller an online sample talks to: a virtual controller started on this computer (ABB by default, another brand
+/// with <c>--brand</c>, e.g. <c>--brand ur</c>; see <c>VirtualControllerRegistry</c>), or a real one given with <c>--host</c> and <c>--port</c> (running
 /// Machina's driver: RAPID on ABB, KRL on KUKA; on UR the script port, 30003, to which Machina sends its URScript driver).
 /// </summary>
 internal sealed class SampleController : IAsyncDisposable
 {
-    private readonly IAsyncDisposable? _simulator;
+    /// <summary>
+    /// A larger arm than the brand's default for the virtual controller, where the default cannot reach the paper's Hello Robot
+    /// targets (an IRB 1200-5/0.9 reaches them, the virtual ABB's default IRB 120 does not).
+    /// </summary>
+    private const string DemoModel = "IRB 1200-5/0.9";
 
-    private SampleController(string brand, string host, int port, IAsyncDisposable? simulator)
+    private readonly RunningVirtualController? _simulator;
+
+    private SampleController(RobotType brand, string host, int port, RunningVirtualController? simulator)
     {
         Brand = brand;
         Host = host;
@@ -19,8 +25,8 @@ internal sealed class SampleController : IAsyncDisposable
         _simulator = simulator;
     }
 
-    /// <summary>The robot brand, as <c>Robot.Create</c> takes it: "ABB" (the default), "UR" or "KUKA".</summary>
-    public string Brand { get; }
+    /// <summary>The robot brand, as <c>Robot.Create</c> takes it: the first brand with a virtual controller (ABB) unless <c>--brand</c> says otherwise.</summary>
+    public RobotType Brand { get; }
 
     /// <summary>Address of the controller.</summary>
     public string Host { get; }
@@ -38,7 +44,7 @@ internal sealed class SampleController : IAsyncDisposable
         Func<string, string, bool>? option = null, CancellationToken cancellationToken = default)
     {
         string? host = null;
-        string brand = "ABB";
+        RobotType brand = VirtualControllerRegistry.Brands[0];
         int port = 0;
         for (int i = 0; i < args.Length; i++)
         {
@@ -47,7 +53,7 @@ internal sealed class SampleController : IAsyncDisposable
             {
                 "--host" => (host = value) is not null,
                 "--port" => int.TryParse(value, out port) && port is > 0 and <= 65535,
-                "--brand" => (brand = value.ToUpperInvariant()) is "ABB" or "UR" or "KUKA",
+                "--brand" => TryBrand(value, ref brand),
                 "--speed-factor" => double.TryParse(value, System.Globalization.CultureInfo.InvariantCulture, out speedFactor) && speedFactor is > 0 and <= 1000,
                 _ => option?.Invoke(args[i], value) ?? false,
             };
@@ -60,72 +66,41 @@ internal sealed class SampleController : IAsyncDisposable
         }
         if (host is not null)
         {
-            return new SampleController(brand, host, port != 0 ? port : brand == "UR" ? 30003 : 7000, null);
+            return new SampleController(brand, host, port != 0 ? port : VirtualControllerRegistry.DriverPort(brand), null);
         }
-        if (brand == "UR")
+        VirtualControllerOptions settings = VirtualControllerRegistry.DefaultOptions(brand) with { SpeedFactor = speedFactor };
+        if (RobotModels.Get(DemoModel) is { } demo && demo.Brand == settings.Model?.Brand)
         {
-            var ur = new VirtualUrController(new VirtualUrControllerOptions { SpeedFactor = speedFactor });
-            await StartedAsync(ur, ur.StartAsync(cancellationToken));
-            output.WriteLine($"Started a virtual UR5e controller on 127.0.0.1 (scripts on {ur.Port}, RTDE on {ur.RtdePort}, dashboard on {ur.DashboardPort}; {speedFactor}x faster than real time).");
-            return new SampleController(brand, "127.0.0.1", ur.Port, ur);
+            settings = settings with { Model = demo };
         }
-        if (brand == "KUKA")
-        {
-            var kuka = new VirtualKukaController(new VirtualKukaControllerOptions { SpeedFactor = speedFactor });
-            await StartedAsync(kuka, kuka.StartAsync(cancellationToken));
-            output.WriteLine($"Started a virtual KUKA controller (KR 6 R900 sixx) on 127.0.0.1:{kuka.Port} ({speedFactor}x faster than real time).");
-            return new SampleController(brand, "127.0.0.1", kuka.Port, kuka);
-        }
-        // An IRB 1200-5/0.9 (the virtual ABB's default, an IRB 120, cannot reach the paper's Hello Robot targets).
-        var abb = new VirtualAbbController(new VirtualAbbControllerOptions { SpeedFactor = speedFactor, Model = RobotModels.Get("IRB 1200-5/0.9") });
-        await StartedAsync(abb, abb.StartAsync(cancellationToken));
-        output.WriteLine($"Started a virtual ABB IRB 1200-5/0.9 controller on 127.0.0.1:{abb.Port} ({speedFactor}x faster than real time).");
-        return new SampleController(brand, "127.0.0.1", abb.Port, abb);
+        RunningVirtualController controller = await VirtualControllerRegistry.StartAsync(brand, settings, cancellationToken);
+        string ports = string.Join(", ", controller.PortNames.Zip(controller.Ports, (name, p) => $"{name} on {p}"));
+        output.WriteLine($"Started a virtual {brand} {controller.Model?.Name} controller on 127.0.0.1 ({ports}; {speedFactor}x faster than real time).");
+        return new SampleController(brand, "127.0.0.1", controller.Port, controller);
     }
 
-    /// <summary>Waits for a virtual controller to start, and stops it again if it could not (e.g. no free port).</summary>
-    private static async Task StartedAsync(IAsyncDisposable controller, Task starting)
+    /// <summary>Sets <paramref name="brand"/> to the brand named <paramref name="name"/> (any letter case) when it has a virtual controller.</summary>
+    private static bool TryBrand(string name, ref RobotType brand)
     {
-        try
+        if (VirtualControllerRegistry.Find(name) is not RobotType named)
         {
-            await starting;
+            return false;
         }
-        catch
-        {
-            await controller.DisposeAsync();
-            throw;
-        }
+        brand = named;
+        return true;
     }
 
     /// <summary>What the virtual controller refused (e.g. a target its robot cannot reach); empty for a real controller.</summary>
-    public IReadOnlyList<string> Errors => _simulator switch
-    {
-        VirtualAbbController abb => abb.Errors,
-        VirtualUrController ur => ur.Errors,
-        VirtualKukaController kuka => kuka.Errors,
-        _ => [],
-    };
+    public IReadOnlyList<string> Errors => _simulator?.Errors ?? [];
 
     /// <summary>The virtual controller's robot as it is now (pose, joints, tool, outputs); null for a real controller.</summary>
-    public VirtualRobotState? State => _simulator switch
-    {
-        VirtualAbbController abb => abb.State,
-        VirtualUrController ur => ur.State,
-        VirtualKukaController kuka => kuka.State,
-        _ => null,
-    };
+    public VirtualRobotState? State => _simulator?.State;
 
     /// <summary>
     /// The arm of the virtual controller (null for a real controller: give your robot's model yourself). A robot created with it
     /// knows its pose after joint moves and its joints after Cartesian moves.
     /// </summary>
-    public RobotModel? Model => _simulator switch
-    {
-        VirtualAbbController abb => abb.Model,
-        VirtualUrController ur => ur.Model,
-        VirtualKukaController kuka => kuka.Model,
-        _ => null,
-    };
+    public RobotModel? Model => _simulator?.Model;
 
     /// <summary>Stops the virtual controller, if one was started.</summary>
     public ValueTask DisposeAsync() => _simulator?.DisposeAsync() ?? ValueTask.CompletedTask;

@@ -21,7 +21,7 @@ public sealed record BridgeOptions
     public string RobotName { get; init; } = "Bridge";
 
     /// <summary>Brand of the robot the bridge creates (ignored when <see cref="RobotFactory"/> is set). Default ABB.</summary>
-    public RobotType Brand { get; init; } = RobotType.ABB;
+    public RobotType Brand { get; init; } = BrandRegistry.DefaultOnline.Type;
 
     /// <summary>Makes the robot, instead of <see cref="RobotName"/> and <see cref="Brand"/>; the bridge switches it online and connects it.</summary>
     public Func<Robot>? RobotFactory { get; init; }

@@ -6,49 +6,34 @@ namespace Machina.Bridge;
 internal sealed record EmbeddedController(int Port, IAsyncDisposable Owner);
 
 /// <summary>
-/// The virtual controllers the bridge can start in place of a real one, by brand. Adding a brand is one line in
-/// <see cref="For"/> and one small start method.
+/// The virtual controllers the bridge can start in place of a real one: those of <see cref="VirtualControllerRegistry"/>, so that a
+/// brand with a virtual controller works in the bridge without a line here.
 /// </summary>
 internal static class EmbeddedControllers
 {
-    /// <summary>Starts a virtual controller for a brand, or null when Machina has none for it yet.</summary>
-    internal static Func<BridgeOptions, CancellationToken, Task<EmbeddedController>>? For(RobotType brand) => brand switch
-    {
-        RobotType.ABB => StartAbbAsync,
-        RobotType.UR => StartUrAsync,
-        RobotType.KUKA => StartKukaAsync,
-        _ => null,
-    };
+    /// <summary>
+    /// Larger arms the bridge's virtual controllers move like instead of their brand's default, where the default cannot reach the
+    /// paper's Hello Robot (an IRB 1200-5/0.9 reaches it, an IRB 120 does not).
+    /// </summary>
+    private static readonly string[] DemoModels = ["IRB 1200-5/0.9"];
 
-    private static Task<EmbeddedController> StartAbbAsync(BridgeOptions options, CancellationToken cancellationToken)
+    /// <summary>Starts a virtual controller for a brand, or null when Machina has none for it yet.</summary>
+    internal static Func<BridgeOptions, CancellationToken, Task<EmbeddedController>>? For(RobotType brand) =>
+        VirtualControllerRegistry.Has(brand) ? (options, cancellationToken) => StartAsync(brand, options, cancellationToken) : null;
+
+    private static async Task<EmbeddedController> StartAsync(RobotType brand, BridgeOptions options, CancellationToken cancellationToken)
     {
-        var controller = new VirtualAbbController(new VirtualAbbControllerOptions
+        VirtualControllerOptions settings = VirtualControllerRegistry.DefaultOptions(brand) with
         {
-            // An IRB 1200-5/0.9 reaches the paper's Hello Robot, which the default IRB 120 cannot.
-            Model = RobotModels.Get("IRB 1200-5/0.9"),
             SpeedFactor = options.SimulationSpeed,
             TimeProvider = options.TimeProvider,
-        });
-        return StartAsync(controller, () => controller.Port, cancellationToken);
-    }
-
-    private static Task<EmbeddedController> StartUrAsync(BridgeOptions options, CancellationToken cancellationToken)
-    {
-        var controller = new VirtualUrController(new VirtualUrControllerOptions { SpeedFactor = options.SimulationSpeed, TimeProvider = options.TimeProvider });
-        return StartAsync(controller, () => controller.Port, cancellationToken);
-    }
-
-    private static Task<EmbeddedController> StartKukaAsync(BridgeOptions options, CancellationToken cancellationToken)
-    {
-        var controller = new VirtualKukaController(new VirtualKukaControllerOptions { SpeedFactor = options.SimulationSpeed, TimeProvider = options.TimeProvider });
-        return StartAsync(controller, () => controller.Port, cancellationToken);
-    }
-
-    /// <summary>Starts a controller and hands it over with the port its driver listens on (known once it has started).</summary>
-    private static async Task<EmbeddedController> StartAsync<TState>(VirtualController<TState> controller, Func<int> port, CancellationToken cancellationToken)
-        where TState : VirtualRobotState
-    {
-        await controller.StartAsync(cancellationToken).ConfigureAwait(false);
-        return new EmbeddedController(port(), controller);
+        };
+        string? catalogueBrand = BrandRegistry.For(brand).ModelBrand;
+        if (DemoModels.Select(RobotModels.Get).FirstOrDefault(m => m.Brand == catalogueBrand) is RobotModel demo)
+        {
+            settings = settings with { Model = demo };
+        }
+        RunningVirtualController controller = await VirtualControllerRegistry.StartAsync(brand, settings, cancellationToken).ConfigureAwait(false);
+        return new EmbeddedController(controller.Port, controller.Controller);
     }
 }

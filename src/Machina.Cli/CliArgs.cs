@@ -138,7 +138,7 @@ internal sealed class CliArgs
 
     private static string Example(string option) => option switch
     {
-        "--brand" => "abb",
+        "--brand" => BrandRegistry.DefaultOnline.Name,
         "--out" => "out",
         "--model" => "\"IRB 120\"",
         "--host" => "192.168.125.1",

@@ -79,15 +79,12 @@ public sealed partial class Robot
 
     private void CheckModelBrand(RobotModel model)
     {
-        string? brand = Brand switch
+        BrandDefinition definition = BrandRegistry.For(Brand);
+        if (definition.Kind == BrandKind.Printer)
         {
-            RobotType.ABB => "ABB",
-            RobotType.UR => "UR",
-            RobotType.KUKA => "KUKA",
-            RobotType.ZMORPH or RobotType.MARLIN => throw new ArgumentException(
-                $"A {Brand} robot is a 3D printer; arm models such as {model} do not apply to it.", nameof(model)),
-            _ => null,
-        };
+            throw new ArgumentException($"A {Brand} robot is a 3D printer; arm models such as {model} do not apply to it.", nameof(model));
+        }
+        string? brand = definition.ModelBrand;
         if (brand is not null && !string.Equals(brand, model.Brand, StringComparison.Ordinal))
         {
             throw new ArgumentException($"The model {model} is a {model.Brand} arm, but this robot's brand is {Brand}.", nameof(model));

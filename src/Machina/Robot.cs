@@ -43,7 +43,7 @@ public sealed partial class Robot : IOnlineHost
     public event ActionIssuedHandler? ActionIssued;
 
     /// <summary>A robot named "Machina" that compiles to a human-readable listing.</summary>
-    public static Robot Create() => new("Machina", RobotType.HUMAN);
+    public static Robot Create() => new("Machina", BrandRegistry.Default.Type);
 
     /// <summary>A robot with a name (starting with a letter) and a brand.</summary>
     public static Robot Create(string name, RobotType brand)
@@ -158,7 +158,7 @@ public sealed partial class Robot : IOnlineHost
         if (refusal is not null)
         {
             action.Id = -1;
-            Logger.Warning($"Refused {action.ToInstruction()}: {refusal}");
+            Logger.Refused(action, $"Refused {action.ToInstruction()}: {refusal}");
             throw new ActionRefusedException(action, refusal);
         }
         if (_session is not null)
@@ -183,7 +183,7 @@ public sealed partial class Robot : IOnlineHost
         if (refusal is not null)
         {
             action.Id = -1;
-            Logger.Warning($"Refused {action.ToInstruction()} {refusal}");
+            Logger.Refused(action, $"Refused {action.ToInstruction()} {refusal}");
             throw new ActionRefusedException(action, refusal);
         }
         _nextId++;

@@ -45,14 +45,14 @@ internal static class BridgeCommand
             throw new UsageException($"--listen needs an address and a port such as 127.0.0.1:{BridgeOptions.DefaultPort}, not \"{listenText}\".");
         }
         RobotType brand = args.Value("--brand") is string b
-            ? Brands.Parse(b, [RobotType.ABB, RobotType.UR, RobotType.KUKA], "bridge")
-            : RobotType.ABB;
+            ? Brands.Parse(b, Brands.Online, "bridge")
+            : BrandRegistry.DefaultOnline.Type;
         string? host = args.Value("--host");
         if (host is not null && args.Has("--sim"))
         {
             throw new UsageException("Choose --sim or --host, not both.");
         }
-        int port = host is null ? 0 : args.Port("--port", brand == RobotType.UR ? 30003 : 7000);
+        int port = host is null ? 0 : args.Port("--port", BrandRegistry.For(brand).DefaultPort);
         var options = new BridgeOptions
         {
             Listen = listen,

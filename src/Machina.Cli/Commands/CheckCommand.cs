@@ -46,7 +46,7 @@ internal static class CheckCommand
         var problems = new List<string>();
         int motions = 0, withProblems = 0, refused = 0, refusedMotions = 0;
         bool anyProblem = false;
-        foreach (ProgramStatement statement in reader.Read(context.Cancellation))
+        foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
             string? refusal = replay.Apply(statement.Action, problems);
             if (refusal is null && brandWarnings.TryGetValue((statement.Line, statement.Column), out List<string>? warnings))
@@ -93,7 +93,7 @@ internal static class CheckCommand
     private static Dictionary<(int Line, int Column), List<string>> BrandWarnings(string? file, RobotModel model, CancellationToken cancellation)
     {
         var byStatement = new Dictionary<(int Line, int Column), List<string>>();
-        if (file is null || !Enum.TryParse(model.Brand, ignoreCase: true, out RobotType brand) || brand is not (RobotType.ABB or RobotType.UR or RobotType.KUKA))
+        if (file is null || BrandRegistry.Find(model.Brand) is not { IsArm: true, Type: RobotType brand })
         {
             return byStatement;
         }

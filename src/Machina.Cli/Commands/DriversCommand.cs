@@ -35,7 +35,7 @@ internal static class DriversCommand
 
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
-        RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [RobotType.ABB, RobotType.UR, RobotType.KUKA], "drivers");
+        RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), Brands.Online, "drivers");
         string host = args.Required("--host", "(the controller's address, e.g. 192.168.125.1)");
         int port = args.Port("--port", 0);
         if (port == 0)
@@ -72,20 +72,6 @@ internal static class DriversCommand
     }
 
     /// <summary>What the brand really needs once the files are written (docs/getting-started.md, "Load the driver on the controller").</summary>
-    internal static string NextSteps(RobotType brand, int fileCount, string host, int port) => brand switch
-    {
-        RobotType.ABB => $"Wrote {fileCount} ABB driver files for {host}:{port}. With RobotStudio or the FlexPendant, load machina_abb_driver.mod " +
-            $"into the motion task T_ROB1 and start it in manual reduced speed: it listens on {host}:{port}. For live positions, load " +
-            $"machina_abb_monitor.mod into a second task, T_MACHINA_MONITOR (Multitasking option 623-1); it uses port {port + 1}. " +
-            $"Then: machina run PROGRAM --brand abb --host {host} --port {port}",
-        RobotType.KUKA => $"Wrote {fileCount} KUKA driver files for {host}:{port} (needs the KUKA.EthernetKRL option). Copy the .xml files to " +
-            @"C:\KRC\ROBOTER\Config\User\Common\EthernetKRL and the .src and .dat files to R1\Program; for live positions add " +
-            $"machina_kuka_monitor( ) to the USER PLC fold of sps.sub (it uses port {port + 1}; flags 1 to 3 and timer 16 must be free). " +
-            $"Select machina_kuka_driver and start it in T1: it listens on {host}:{port}. Then: machina run PROGRAM --brand kuka --host {host} --port {port}",
-        RobotType.UR => $"Wrote {fileCount} UR driver file{(fileCount == 1 ? "" : "s")} for reading, filled in with {host}:{port} as the computer it connects back to. " +
-            "Nothing to load on a UR: machina run sends this script to the robot's script port itself, with this computer's address " +
-            "and a free port filled in. Give the robot a fixed address the computer can reach (and that can reach the computer), put " +
-            "an e-Series robot in remote control, then: machina run PROGRAM --brand ur --host ROBOT_ADDRESS --port 30003",
-        _ => throw new ArgumentOutOfRangeException(nameof(brand), brand, "Only ABB, KUKA and UR have drivers."),
-    };
+    internal static string NextSteps(RobotType brand, int fileCount, string host, int port) =>
+        (BrandRegistry.For(brand).DriverNextSteps ?? throw new ArgumentOutOfRangeException(nameof(brand), brand, "This brand has no driver."))(fileCount, host, port);
 }

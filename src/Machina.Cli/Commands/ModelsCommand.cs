@@ -37,7 +37,7 @@ internal static class ModelsCommand
             await context.Stdout.WriteAsync(Details(model)).ConfigureAwait(false);
             return ExitCodes.Ok;
         }
-        string? brand = args.Value("--brand") is string b ? Brands.Name(Brands.Parse(b, [RobotType.ABB, RobotType.UR, RobotType.KUKA])).ToUpperInvariant() : null;
+        string? brand = args.Value("--brand") is string b ? BrandRegistry.For(Brands.Parse(b, Brands.Online)).ModelBrand : null;
         var models = RobotModels.All.Where(m => brand is null || m.Brand == brand).ToList();
         await context.Stdout.WriteAsync(Table(models)).ConfigureAwait(false);
         return ExitCodes.Ok;

@@ -13,13 +13,8 @@ internal static class RunCheck
     internal const int MaxListed = 20;
 
     /// <summary>The arm the brand's virtual controller moves like when no model is given (its default settings' model).</summary>
-    internal static RobotModel? VirtualModel(RobotType brand) => brand switch
-    {
-        RobotType.ABB => new Machina.Simulation.VirtualAbbControllerOptions().Model,
-        RobotType.UR => new Machina.Simulation.VirtualUrControllerOptions().Model,
-        RobotType.KUKA => new Machina.Simulation.VirtualKukaControllerOptions().Model,
-        _ => null,
-    };
+    internal static RobotModel? VirtualModel(RobotType brand) =>
+        Machina.Simulation.VirtualControllerRegistry.Has(brand) ? Machina.Simulation.VirtualControllerRegistry.DefaultOptions(brand).Model : null;
 
     /// <summary>Checks the whole program; returns its number of actions.</summary>
     /// <exception cref="CliException">A statement is malformed, or an action would be refused or cannot be reached; located, nothing sent.</exception>
@@ -30,7 +25,7 @@ internal static class RunCheck
         long count = 0;
         var problems = new List<string>();
         int more = 0;
-        foreach (ProgramStatement statement in reader.Read(context.Cancellation))
+        foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
             count++;
             string? problem = robot.TryOn(trial, statement.Action) is string refusal

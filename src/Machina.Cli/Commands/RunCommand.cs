@@ -110,13 +110,13 @@ internal static class RunCommand
         private readonly SemaphoreSlim _window = new(Window, Window);
         private readonly TaskCompletionSource<MachinaException> _lost = new(TaskCreationOptions.RunContinuationsAsynchronously);
         private readonly TaskCompletionSource<CliException> _failed = new(TaskCreationOptions.RunContinuationsAsynchronously);
-        private readonly Dictionary<RobotAction, ProgramStatement> _lines = new(ReferenceEqualityComparer.Instance);
+        private readonly Dictionary<RobotAction, InstructionStatement> _lines = new(ReferenceEqualityComparer.Instance);
         private readonly Lock _gate = new();
         private ProgressReporter _progress = new(context, null);
         private long? _total;
         private long _executed;
         private int _issuingThread;
-        private ProgramStatement _issuing;
+        private InstructionStatement _issuing;
 
         internal async Task<int> RunAsync(string host, int port)
         {
@@ -155,7 +155,7 @@ internal static class RunCommand
             long issued = 0;
             try
             {
-                foreach (ProgramStatement statement in reader.Read(context.Cancellation))
+                foreach (InstructionStatement statement in reader.Read(context.Cancellation))
                 {
                     await WaitForRoomAsync().ConfigureAwait(false);
                     Issue(robot, statement);
@@ -189,7 +189,7 @@ internal static class RunCommand
             }
         }
 
-        private void Issue(Robot robot, ProgramStatement statement)
+        private void Issue(Robot robot, InstructionStatement statement)
         {
             lock (_gate)
             {
@@ -246,7 +246,7 @@ internal static class RunCommand
         private void OnExecuted(ActionExecutedArgs e)
         {
             long executed = Interlocked.Increment(ref _executed);
-            ProgramStatement statement;
+            InstructionStatement statement;
             lock (_gate)
             {
                 _lines.Remove(e.LastAction, out statement);
@@ -258,7 +258,7 @@ internal static class RunCommand
         /// <summary>The controller could not run an action and stopped: the run stops with the action's line and the controller's reason.</summary>
         private void OnFailed(ActionFailedArgs e)
         {
-            ProgramStatement statement;
+            InstructionStatement statement;
             bool known;
             lock (_gate)
             {
@@ -278,7 +278,7 @@ internal static class RunCommand
                 }
             }
             // A refused action is reported once, as the error that stops the run.
-            if (entry.Message.StartsWith("Refused ", StringComparison.Ordinal))
+            if (entry.Refused is not null)
             {
                 return;
             }
@@ -287,11 +287,11 @@ internal static class RunCommand
     }
 
     /// <summary>The error for an action the controller could not run: its line (when known) and the controller's reason and code.</summary>
-    internal static CliException FailedError(string file, ProgramStatement? statement, ActionFailedArgs e)
+    internal static CliException FailedError(string file, InstructionStatement? statement, ActionFailedArgs e)
     {
         string problem = $"the controller could not run {e.Action.ToInstruction()} and stopped: {e.Reason}" +
             (e.Failure.ControllerCode is string code ? $" (error {code})" : "") + ".";
-        return statement is ProgramStatement s
+        return statement is InstructionStatement s
             ? CliException.At(file, s.Line, s.Column, problem)
             : new CliException($"{file}: {problem}");
     }

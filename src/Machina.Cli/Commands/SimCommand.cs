@@ -40,7 +40,7 @@ internal static class SimCommand
 
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
-        RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [RobotType.ABB, RobotType.UR, RobotType.KUKA], "sim");
+        RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
         int port = args.Port("--port", DefaultPort, allowZero: true);
         string bindText = args.Value("--bind") ?? "127.0.0.1";
         if (!IPAddress.TryParse(bindText, out IPAddress? bind))

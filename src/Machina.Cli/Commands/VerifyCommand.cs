@@ -37,8 +37,10 @@ internal static class VerifyCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         string path = args.Single("a PROGRAM file (Machina instructions, or a .script)");
-        Brands.Parse(args.Required("--brand", "(ur: only UR has a twin controller so far)"), [RobotType.UR]);
-        RobotModel model = Brands.Model(args.Value("--model") ?? "UR5e", RobotType.UR)!;
+        // The URScript twin is the only twin controller so far: its brand is the one --brand must name.
+        BrandDefinition twinBrand = UrBrand.Definition;
+        Brands.Parse(args.Required("--brand", "(ur: only UR has a twin controller so far)"), [twinBrand.Type]);
+        RobotModel model = Brands.Model(args.Value("--model") ?? twinBrand.DefaultModel, twinBrand.Type)!;
         var options = new UrTwinOptions { Model = model };
         TextWriter output = context.Stdout;
         if (path.EndsWith(".script", StringComparison.OrdinalIgnoreCase) && args.Value("--script") is null)
@@ -59,7 +61,7 @@ internal static class VerifyCommand
         }
         string script = args.Value("--script") is { } scriptPath
             ? ReadFile(context, scriptPath)
-            : Compilers.For(RobotType.UR).Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files[0].ToText("\n");
+            : twinBrand.CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files[0].ToText("\n");
         await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a URScript twin of a {model} and comparing it with {path}.").ConfigureAwait(false);
         UrVerification result = UrScriptVerifier.Verify(script, actions, options, context.Cancellation);
         await output.WriteAsync(result.ToText()).ConfigureAwait(false);

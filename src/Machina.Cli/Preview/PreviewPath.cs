@@ -61,7 +61,7 @@ internal sealed class PreviewPath
         var replay = new ProgramReplay(model);
         var problems = new List<string>();
         Vector? last = null;
-        foreach (ProgramStatement statement in reader.Read(cancellationToken))
+        foreach (InstructionStatement statement in reader.Read(cancellationToken))
         {
             path.Actions++;
             RobotCursor cursor = replay.Cursor;

@@ -43,7 +43,11 @@ internal sealed class ControllerActivity : IAsyncDisposable
 
     /// <summary>Starts telling what <paramref name="controller"/> does, one line at a time to <paramref name="log"/>.</summary>
     internal static ControllerActivity Start(RunningController controller, Action<string> log, TimeProvider time) =>
-        new(controller.Brand, controller.Look, log, time);
+        Start(controller.Brand, controller.Look, log, time);
+
+    /// <summary>Starts telling what a <paramref name="brand"/> controller seen through <paramref name="look"/> does, one line at a time to <paramref name="log"/>.</summary>
+    internal static ControllerActivity Start(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time) =>
+        new(brand, look, log, time);
 
     private async Task LoopAsync(TimeProvider time, CancellationToken token)
     {

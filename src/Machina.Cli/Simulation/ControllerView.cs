@@ -10,9 +10,9 @@ internal sealed record ControllerView(
     IReadOnlyDictionary<string, bool> DigitalOutputs, IReadOnlyDictionary<string, double> AnalogOutputs)
 {
     /// <summary>Reads the view of a controller of the simulation library.</summary>
-    internal static ControllerView Of<TState>(Machina.Simulation.VirtualController<TState> controller) where TState : Machina.Simulation.VirtualRobotState
+    internal static ControllerView Of(Machina.Simulation.RunningVirtualController controller)
     {
-        TState state = controller.State;
+        Machina.Simulation.VirtualRobotState state = controller.State;
         return new ControllerView(controller.RequestsReceived, controller.ReceivedRequests, controller.RequestsExecuted, controller.ExecutedIds,
             controller.PendantMessages, controller.Errors, state.Position, state.Joints, state.DigitalOutputs, state.AnalogOutputs);
     }

@@ -56,22 +56,23 @@ public sealed class RobotModel
     public static RobotModel FromOpw(string name, string brand, OpwParameters parameters, Joints minJoints, Joints maxJoints, Joints? maxJointSpeeds = null, string source = "user defined")
     {
         string b = CheckCommon(name, brand, minJoints, maxJoints, maxJointSpeeds, source);
-        if (b != "ABB" && b != "KUKA")
+        if (BrandRegistry.Find(b) is not { Family: KinematicFamily.Opw } opwBrand)
         {
             throw new ArgumentException($"OPW models follow ABB or KUKA joint conventions; brand must be \"ABB\" or \"KUKA\", not \"{brand}\".", nameof(brand));
         }
         parameters.Validate();
         var model = new RobotModel(name, b, KinematicFamily.Opw, minJoints, maxJoints, maxJointSpeeds, source) { Opw = parameters };
-        model.Kinematics = new OpwKinematics(model, parameters, b == "KUKA");
+        model.Kinematics = new OpwKinematics(model, parameters, opwBrand.MirroredOpwJoints);
         return model;
     }
 
     /// <summary>A user-defined Universal Robots style arm from its DH lengths (mm, UR signs) and joint limits (degrees).</summary>
     public static RobotModel FromUniversalRobotsDh(string name, UniversalRobotsDh parameters, Joints minJoints, Joints maxJoints, Joints? maxJointSpeeds = null, string source = "user defined")
     {
-        CheckCommon(name, "UR", minJoints, maxJoints, maxJointSpeeds, source);
+        string brand = BrandRegistry.All.First(b => b.Family == KinematicFamily.UniversalRobots).ModelBrand!;
+        CheckCommon(name, brand, minJoints, maxJoints, maxJointSpeeds, source);
         parameters.Validate();
-        var model = new RobotModel(name, "UR", KinematicFamily.UniversalRobots, minJoints, maxJoints, maxJointSpeeds, source) { UniversalRobotsDh = parameters };
+        var model = new RobotModel(name, brand, KinematicFamily.UniversalRobots, minJoints, maxJoints, maxJointSpeeds, source) { UniversalRobotsDh = parameters };
         model.Kinematics = new UniversalRobotsKinematics(model, parameters);
         return model;
     }
@@ -132,11 +133,8 @@ public sealed class RobotModel
                 throw new ArgumentException($"Joint {i + 1} of \"{name}\": the maximum speed must be a positive number of degrees per second, not {Num.G(s[i])}.");
             }
         }
-        return brand.Trim().ToUpperInvariant() switch
-        {
-            "UNIVERSALROBOTS" or "UNIVERSAL ROBOTS" => "UR",
-            var b => b,
-        };
+        // A brand's alias (e.g. "Universal Robots") becomes its catalogue name; other brands are kept, in capitals.
+        return BrandRegistry.Find(brand)?.ModelBrand ?? brand.Trim().ToUpperInvariant();
     }
 
     /// <summary>True when every joint is within this model's limits.</summary>

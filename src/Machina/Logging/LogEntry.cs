@@ -6,6 +6,16 @@ namespace Machina;
 /// <param name="Message">The text.</param>
 public sealed record LogEntry(string Source, LogLevel Level, string Message)
 {
+    /// <summary>The action this entry reports as refused when it was issued, or null: a tool that reports the refusal itself skips the entry by it.</summary>
+    internal RobotAction? Refused { get; init; }
+
+    /// <summary>True when both entries have the same source, level and message (the refused action is not part of an entry's value).</summary>
+    public bool Equals(LogEntry? other) =>
+        other is not null && Source == other.Source && Level == other.Level && Message == other.Message;
+
+    /// <summary>A hash of the source, level and message.</summary>
+    public override int GetHashCode() => HashCode.Combine(Source, Level, Message);
+
     /// <summary>Text such as <c>HelloRobot VERBOSE: TCP position at [400, 300, 750]</c>.</summary>
     public override string ToString() => $"{Source} {Level}: {Message}";
 }

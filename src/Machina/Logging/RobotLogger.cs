@@ -75,11 +75,24 @@ public sealed class RobotLogger
     /// <summary>Reports a message at a level.</summary>
     public void Write(LogLevel level, string message)
     {
-        if (!IsEnabled(level))
+        if (IsEnabled(level))
         {
-            return;
+            Write(new LogEntry(_source, level, message));
         }
-        var entry = new LogEntry(_source, level, message);
+    }
+
+    /// <summary>Reports, as a warning, an action refused when it was issued (the entry's <see cref="LogEntry.Refused"/> is the action).</summary>
+    internal void Refused(RobotAction action, string message)
+    {
+        if (IsEnabled(LogLevel.WARNING))
+        {
+            Write(new LogEntry(_source, LogLevel.WARNING, message) { Refused = action });
+        }
+    }
+
+    private void Write(LogEntry entry)
+    {
+        LogLevel level = entry.Level;
         if (level <= Level)
         {
             try

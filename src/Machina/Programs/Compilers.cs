@@ -1,18 +1,11 @@
 namespace Machina;
 
-/// <summary>Finds the compiler for a device language.</summary>
+/// <summary>Finds the compiler for a device language, in the brand's definition (<see cref="BrandRegistry"/>).</summary>
 internal static class Compilers
 {
-    /// <summary>The compiler for <paramref name="brand"/>.</summary>
-    internal static Compiler For(RobotType brand) => brand switch
-    {
-        RobotType.HUMAN => new HumanCompiler(),
-        RobotType.MACHINA => new MachinaCompiler(),
-        RobotType.ABB => new RapidCompiler(),
-        RobotType.UR => new UrScriptCompiler(),
-        RobotType.KUKA => new KrlCompiler(),
-        RobotType.ZMORPH => new GCodeCompiler(GCodeFlavor.ZMorph),
-        RobotType.MARLIN => new GCodeCompiler(GCodeFlavor.Marlin),
-        _ => throw new ArgumentOutOfRangeException(nameof(brand), brand, "Unknown robot language."),
-    };
+    /// <summary>A new compiler for <paramref name="brand"/>.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The value is not a brand.</exception>
+    internal static Compiler For(RobotType brand) =>
+        BrandRegistry.All.FirstOrDefault(b => b.Type == brand)?.CreateCompiler()
+        ?? throw new ArgumentOutOfRangeException(nameof(brand), brand, "Unknown robot language.");
 }

@@ -172,13 +172,14 @@ public class CommandLineTests
     }
 
     [Fact]
-    public void StatementStarts_FindsEachInstructionOutsideParenthesesStringsAndComments()
+    public void ProgramReader_GivesEachStatementTheLibrarysPosition_OutsideParenthesesStringsAndComments()
     {
         string text = "MoveTo(1, 2, 3); Wait(5) // Note(1)\n  Message(\"a ) Fake(2)\"); Move(0,\n 0, // x) Bad(\n 1);";
 
-        List<(int Line, int Column)> starts = ProgramReader.StatementStarts(text);
+        List<(string, int, int)> statements = [.. InstructionStatement.ReadAll(new StringReader(text), CancellationToken.None)
+            .Select(s => (s.Action.ToInstruction(), s.Line, s.Column))];
 
-        Assert.Equal([(0, 1), (0, 18), (1, 3), (1, 27)], starts);
+        Assert.Equal([("MoveTo(1,2,3);", 1, 1), ("Wait(5);", 1, 18), ("Message(\"a ) Fake(2)\");", 2, 3), ("Move(0,0,1);", 2, 27)], statements);
     }
 
     [Fact]

@@ -23,11 +23,9 @@ public sealed class ControllerActivityTests
                 ["protective stop"], new Vector(300, 100, 400), new Dictionary<string, bool> { ["1"] = true }),
         ]);
         ControllerView last = views.Peek();
-        var controller = new RunningController(RobotType.UR, 7000, [0, 1, 2], ["script", "RTDE", "dashboard"], () => ValueTask.CompletedTask, () => "",
-            () => last = views.Count > 0 ? views.Dequeue() : last);
         var lines = new List<string>();
 
-        await using (ControllerActivity activity = ControllerActivity.Start(controller, lines.Add, new ManualClock()))
+        await using (ControllerActivity activity = ControllerActivity.Start(RobotType.UR, () => last = views.Count > 0 ? views.Dequeue() : last, lines.Add, new ManualClock()))
         {
             activity.Flush();
             activity.Flush();

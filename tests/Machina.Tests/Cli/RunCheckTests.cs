@@ -65,7 +65,7 @@ public class RunCheckTests
         var failure = new ActionFailedException(action, "Position outside reach", "50050");
         var args = new ActionFailedArgs(failure, Robot.Create("R", RobotType.ABB).GetExecutedState());
 
-        CliException located = RunCommand.FailedError("p.machina", new ProgramStatement(action, 14, 3), args);
+        CliException located = RunCommand.FailedError("p.machina", new InstructionStatement(action, 14, 3), args);
         CliException unlocated = RunCommand.FailedError("p.machina", null, new ActionFailedArgs(new ActionFailedException(action, "Stopped", null), args.State));
 
         Assert.Equal("p.machina:14:3: error: the controller could not run MoveTo(5000,0,400); and stopped: Position outside reach (error 50050).", located.Message);

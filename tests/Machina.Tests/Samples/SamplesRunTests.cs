@@ -25,8 +25,8 @@ public sealed class SamplesRunTests
         ["HelloRobot"] =
         [
             new("abb", ["--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "ABB IRB 1200-5/0.9 controller", "IRB 1200-5/0.9")),
-            new("ur", ["--brand", "ur", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "UR5e controller", "UR5e")),
-            new("kuka", ["--brand", "kuka", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "KUKA controller (KR 6 R900 sixx)", "KR 6 R900 sixx")),
+            new("ur", ["--brand", "ur", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "UR UR5e controller", "UR5e")),
+            new("kuka", ["--brand", "kuka", "--speed-factor", "50"], (output, _) => CheckHelloRobot(output, "KUKA KR 6 R900 sixx controller", "KR 6 R900 sixx")),
         ],
         ["OfflineCompile"] = [new("all languages", ["{out}"], CheckOfflineCompile)],
         ["ReactiveSquare"] =

@@ -1,0 +1,157 @@
+namespace Machina.Simulation;
+
+/// <summary>
+/// The virtual controller of each brand that has one, keyed by the brands of Machina's brand list (docs/architecture.md, "Brands").
+/// The command line (<c>machina sim</c>, <c>machina run --sim</c>), the bridge and the samples start their controllers here, so that a
+/// new brand's virtual controller is one line in this file. The library does not reference this assembly, which is why the list lives here.
+/// </summary>
+public static class VirtualControllerRegistry
+{
+    private sealed record Entry(BrandDefinition Brand, Func<VirtualControllerOptions> Defaults, Func<VirtualControllerOptions, RunningVirtualController> Create);
+
+    private static readonly Entry[] Entries =
+    [
+        new(AbbBrand.Definition, () => new VirtualAbbControllerOptions(), o =>
+        {
+            var c = new VirtualAbbController((VirtualAbbControllerOptions)o);
+            return new Running<VirtualAbbState>(AbbBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "malformed");
+        }),
+        new(UrBrand.Definition, () => new VirtualUrControllerOptions(), o =>
+        {
+            var c = new VirtualUrController((VirtualUrControllerOptions)o);
+            return new Running<VirtualUrState>(UrBrand.Definition.Type, c, c.StartAsync, ["script", "RTDE", "dashboard"], () => [c.Port, c.RtdePort, c.DashboardPort], "instructions", "refused");
+        }),
+        new(KukaBrand.Definition, () => new VirtualKukaControllerOptions(), o =>
+        {
+            var c = new VirtualKukaController((VirtualKukaControllerOptions)o);
+            return new Running<VirtualKukaState>(KukaBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "refused");
+        }),
+    ];
+
+    /// <summary>The brands that have a virtual controller, in the order of Machina's brand list.</summary>
+    public static IReadOnlyList<RobotType> Brands => [.. Entries.Select(e => e.Brand.Type)];
+
+    /// <summary>True when <paramref name="brand"/> has a virtual controller.</summary>
+    public static bool Has(RobotType brand) => Array.Exists(Entries, e => e.Brand.Type == brand);
+
+    /// <summary>The brand with a virtual controller named <paramref name="name"/> (e.g. "abb", "UR"; any letter case), or null.</summary>
+    public static RobotType? Find(string name) => Array.Find(Entries, e => e.Brand.IsNamed(name))?.Brand.Type;
+
+    /// <summary>The port Machina's driver listens on on a real controller of <paramref name="brand"/> (UR: the robot's script port), for a default.</summary>
+    public static int DriverPort(RobotType brand) => EntryFor(brand).Brand.DefaultPort;
+
+    /// <summary>The default settings of a brand's virtual controller (its own options type, e.g. <see cref="VirtualAbbControllerOptions"/>), to change with <c>with</c>.</summary>
+    /// <exception cref="ArgumentException">The brand has no virtual controller.</exception>
+    public static VirtualControllerOptions DefaultOptions(RobotType brand) => EntryFor(brand).Defaults();
+
+    /// <summary>
+    /// Starts a virtual controller of <paramref name="brand"/> on 127.0.0.1 (OS-chosen ports), with <paramref name="options"/> (of the brand's
+    /// options type, e.g. from <see cref="DefaultOptions"/>) or the brand's defaults.
+    /// </summary>
+    /// <exception cref="ArgumentException">The brand has no virtual controller, or the options are of another brand's type.</exception>
+    public static async Task<RunningVirtualController> StartAsync(RobotType brand, VirtualControllerOptions? options = null, CancellationToken cancellationToken = default)
+    {
+        Entry entry = EntryFor(brand);
+        VirtualControllerOptions settings = options ?? entry.Defaults();
+        if (settings.GetType() != entry.Defaults().GetType())
+        {
+            throw new ArgumentException($"A virtual {entry.Brand.DisplayName} controller takes {entry.Defaults().GetType().Name}, not {settings.GetType().Name}.", nameof(options));
+        }
+        RunningVirtualController controller = entry.Create(settings);
+        try
+        {
+            await controller.StartAsync(cancellationToken).ConfigureAwait(false);
+        }
+        catch
+        {
+            await controller.DisposeAsync().ConfigureAwait(false);
+            throw;
+        }
+        return controller;
+    }
+
+    private static Entry EntryFor(RobotType brand) => Array.Find(Entries, e => e.Brand.Type == brand)
+        ?? throw new ArgumentException(
+            $"{brand} devices have no virtual controller; {string.Join(", ", Entries.Select(e => e.Brand.DisplayName))} have one.", nameof(brand));
+
+    /// <summary>A started controller of one state type, seen through <see cref="RunningVirtualController"/>.</summary>
+    private sealed class Running<TState>(RobotType brand, VirtualController<TState> c, Func<CancellationToken, Task> start, string[] portNames,
+        Func<int[]> ports, string requestNoun, string errorWord) : RunningVirtualController(brand, c, portNames)
+        where TState : VirtualRobotState
+    {
+        public override IReadOnlyList<int> Ports => ports();
+        public override RobotModel? Model => c.Model;
+        public override int RequestsReceived => c.RequestsReceived;
+        public override IReadOnlyList<string> ReceivedRequests => c.ReceivedRequests;
+        public override int RequestsExecuted => c.RequestsExecuted;
+        public override IReadOnlyList<int> ExecutedIds => c.ExecutedIds;
+        public override IReadOnlyList<string> PendantMessages => c.PendantMessages;
+        public override IReadOnlyList<string> Errors => c.Errors;
+        public override VirtualRobotState State => c.State;
+        public override string Summary() => $"{c.RequestsReceived} {requestNoun} received, {c.RequestsExecuted} executed, {c.Errors.Count} {errorWord}";
+        private protected override Task StartCoreAsync(CancellationToken cancellationToken) => start(cancellationToken);
+    }
+}
+
+/// <summary>
+/// A virtual controller started from <see cref="VirtualControllerRegistry"/>, whatever its brand: where it listens and what it did,
+/// until disposed. <see cref="Controller"/> is the brand's own controller (e.g. a <see cref="VirtualAbbController"/>) for more.
+/// </summary>
+public abstract class RunningVirtualController : IAsyncDisposable
+{
+    private protected RunningVirtualController(RobotType brand, IAsyncDisposable controller, string[] portNames)
+    {
+        Brand = brand;
+        Controller = controller;
+        PortNames = portNames;
+    }
+
+    /// <summary>The brand whose controller it imitates.</summary>
+    public RobotType Brand { get; }
+
+    /// <summary>The brand's own controller object (a <see cref="VirtualAbbController"/>, <see cref="VirtualUrController"/> or <see cref="VirtualKukaController"/>).</summary>
+    public IAsyncDisposable Controller { get; }
+
+    /// <summary>What each port is for (ABB and KUKA: "driver", "monitor"; UR: "script", "RTDE", "dashboard"), in the order of <see cref="Ports"/>.</summary>
+    public IReadOnlyList<string> PortNames { get; }
+
+    /// <summary>The ports it listens on, on 127.0.0.1; the first is the one a Machina host connects to.</summary>
+    public abstract IReadOnlyList<int> Ports { get; }
+
+    /// <summary>The port a Machina host connects to.</summary>
+    public int Port => Ports[0];
+
+    /// <summary>The arm it moves like, or null.</summary>
+    public abstract RobotModel? Model { get; }
+
+    /// <summary>How many requests (instructions) it has read.</summary>
+    public abstract int RequestsReceived { get; }
+
+    /// <summary>The last requests it read, oldest first.</summary>
+    public abstract IReadOnlyList<string> ReceivedRequests { get; }
+
+    /// <summary>How many requests it has executed.</summary>
+    public abstract int RequestsExecuted { get; }
+
+    /// <summary>The ids of the last actions it executed, oldest first.</summary>
+    public abstract IReadOnlyList<int> ExecutedIds { get; }
+
+    /// <summary>What its pendant shows, oldest first.</summary>
+    public abstract IReadOnlyList<string> PendantMessages { get; }
+
+    /// <summary>What it refused or could not read (e.g. a target its arm cannot reach), oldest first.</summary>
+    public abstract IReadOnlyList<string> Errors { get; }
+
+    /// <summary>Its robot as it is now (pose, joints, tool, outputs).</summary>
+    public abstract VirtualRobotState State { get; }
+
+    /// <summary>One line of what it did, e.g. "12 requests received, 12 executed, 0 malformed".</summary>
+    public abstract string Summary();
+
+    /// <summary>Stops it and closes its connections.</summary>
+    public ValueTask DisposeAsync() => Controller.DisposeAsync();
+
+    internal Task StartAsync(CancellationToken cancellationToken) => StartCoreAsync(cancellationToken);
+
+    private protected abstract Task StartCoreAsync(CancellationToken cancellationToken);
+}
