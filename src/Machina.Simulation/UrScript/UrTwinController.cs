@@ -22,6 +22,7 @@ internal sealed class UrTwinController : IDisposable
     private UrProgramState _state;
     private string? _error;
     private int _programs;
+    private string? _programName;
 
     /// <summary>A controller with <paramref name="options"/> (UR5e, not real-time, by default).</summary>
     public UrTwinController(UrTwinOptions? options = null)
@@ -63,6 +64,15 @@ internal sealed class UrTwinController : IDisposable
     /// <summary>The pendant log: program messages and errors.</summary>
     public TwinPendant Pendant { get; } = new();
 
+    /// <summary>Raised for each complete program taken from the received text (before it is compiled and started).</summary>
+    public event Action<string>? ProgramReceived;
+
+    /// <summary>Raised when a runtime error stops the program, with its line and reason, before its sockets close (on the program's thread).</summary>
+    public event Action<int, string>? RuntimeError;
+
+    /// <summary>Raised after a program started or ended (on the thread that started or ran it).</summary>
+    public event Action? StateChanged;
+
     /// <summary>The source of <c>random()</c> (seeded from the options, so a run can be repeated).</summary>
     internal Random Random { get; }
 
@@ -89,6 +99,18 @@ internal sealed class UrTwinController : IDisposable
             lock (_gate)
             {
                 return _error;
+            }
+        }
+    }
+
+    /// <summary>The name of the last program started with a <c>def</c> or <c>sec</c> (null for a one-line program or none).</summary>
+    public string? ProgramName
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _programName;
             }
         }
     }
@@ -141,6 +163,7 @@ internal sealed class UrTwinController : IDisposable
         }
         foreach (string program in programs)
         {
+            ProgramReceived?.Invoke(program);
             Start(program);
         }
     }
@@ -248,8 +271,12 @@ internal sealed class UrTwinController : IDisposable
         StopProgram();
         var stop = new CancellationTokenSource();
         var thread = new Thread(() => RunBound(program, stop.Token)) { IsBackground = true, Name = "URScript program" };
+        string header = text.TrimStart();
+        int paren = header.IndexOf('(', StringComparison.Ordinal);
+        bool named = header.StartsWith("def ", StringComparison.Ordinal) || header.StartsWith("sec ", StringComparison.Ordinal);
         lock (_gate)
         {
+            _programName = named && paren > 4 ? header[4..paren].Trim() : null;
             _programStop = stop;
             _programThread = thread;
             _state = UrProgramState.Running;
@@ -257,6 +284,7 @@ internal sealed class UrTwinController : IDisposable
             _programs++;
         }
         thread.Start();
+        StateChanged?.Invoke();
         return true;
     }
 
@@ -334,6 +362,7 @@ internal sealed class UrTwinController : IDisposable
             {
                 end = UrProgramState.Failed;
                 error = e.Message;
+                RuntimeError?.Invoke(e.Line, e.Reason);
             }
             catch (OperationCanceledException)
             {
@@ -360,13 +389,17 @@ internal sealed class UrTwinController : IDisposable
                 _error = error;
             }
         }
+        StateChanged?.Invoke();
     }
 
     private void Fail(string message)
     {
         lock (_gate)
         {
-            _state = UrProgramState.Failed;
+            if (_state != UrProgramState.Running)
+            {
+                _state = UrProgramState.Failed; // a running program goes on: only the refused one failed
+            }
             _error = message;
         }
         Pendant.Log(message);
