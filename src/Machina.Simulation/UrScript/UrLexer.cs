@@ -10,6 +10,7 @@ internal static class UrLexer
     public static List<UrToken> Tokenize(string text)
     {
         var tokens = new List<UrToken>(text.Length / 4 + 8);
+        var words = new TextCache(); // one string per distinct name or number: a long program repeats few of them
         int line = 1, lineStart = 0, i = 0;
         while (i < text.Length)
         {
@@ -39,11 +40,11 @@ internal static class UrLexer
                 {
                     i++;
                 }
-                tokens.Add(new UrToken(UrTokenKind.Name, text[start..i], line, column));
+                tokens.Add(new UrToken(UrTokenKind.Name, words.Get(text, start, i - start), line, column));
             }
             else if (char.IsAsciiDigit(c) || (c == '.' && i + 1 < text.Length && char.IsAsciiDigit(text[i + 1])))
             {
-                tokens.Add(ReadNumber(text, ref i, line, column));
+                tokens.Add(ReadNumber(text, ref i, line, column, words));
             }
             else if (c == '"' || c == '\'')
             {
@@ -61,12 +62,12 @@ internal static class UrLexer
             }
             else if (i + 1 < text.Length && text[i + 1] == '=' && c is '=' or '!' or '<' or '>')
             {
-                tokens.Add(new UrToken(UrTokenKind.Symbol, text.Substring(i, 2), line, column));
+                tokens.Add(new UrToken(UrTokenKind.Symbol, c switch { '=' => "==", '!' => "!=", '<' => "<=", _ => ">=" }, line, column));
                 i += 2;
             }
-            else if ("+-*/%=<>()[],:".Contains(c, StringComparison.Ordinal))
+            else if (Symbols.IndexOf(c, StringComparison.Ordinal) is int symbol and >= 0)
             {
-                tokens.Add(new UrToken(UrTokenKind.Symbol, c.ToString(), line, column));
+                tokens.Add(new UrToken(UrTokenKind.Symbol, SymbolTexts[symbol], line, column));
                 i++;
             }
             else
@@ -79,7 +80,12 @@ internal static class UrLexer
         return tokens;
     }
 
-    private static UrToken ReadNumber(string text, ref int i, int line, int column)
+    private const string Symbols = "+-*/%=<>()[],:";
+
+    /// <summary>The text of each single-character symbol, made once.</summary>
+    private static readonly string[] SymbolTexts = [.. Symbols.Select(c => c.ToString())];
+
+    private static UrToken ReadNumber(string text, ref int i, int line, int column, TextCache words)
     {
         int start = i;
         bool isFloat = false;
@@ -116,12 +122,39 @@ internal static class UrLexer
                 i = save;
             }
         }
-        string literal = text[start..i];
+        string literal = words.Get(text, start, i - start);
         double value = double.Parse(literal, NumberStyles.Float, CultureInfo.InvariantCulture);
         if (!isFloat && (value > int.MaxValue + 1.0))
         {
             throw new UrCompileException(line, $"the integer {literal} is out of range");
         }
         return new UrToken(isFloat ? UrTokenKind.Float : UrTokenKind.Int, literal, line, column, value);
+    }
+
+    /// <summary>Gives the same string for the same characters, so that a name or number repeated on many lines is stored once.</summary>
+    private sealed class TextCache
+    {
+        private readonly Dictionary<string, string> _texts = new(StringComparer.Ordinal);
+
+        public string Get(string text, int start, int length)
+        {
+#if NET9_0_OR_GREATER
+            var lookup = _texts.GetAlternateLookup<ReadOnlySpan<char>>();
+            ReadOnlySpan<char> span = text.AsSpan(start, length);
+            if (lookup.TryGetValue(span, out string? known))
+            {
+                return known;
+            }
+            string made = span.ToString();
+#else
+            string made = text.Substring(start, length);
+            if (_texts.TryGetValue(made, out string? known))
+            {
+                return known;
+            }
+#endif
+            _texts[made] = made;
+            return made;
+        }
     }
 }

@@ -1,4 +1,3 @@
-using System.Text;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.UrScript;
@@ -15,10 +14,9 @@ internal sealed class UrTwinController : IDisposable
     public const int MaxProgramLength = 16 * 1024 * 1024;
 
     private readonly Lock _gate = new();
-    private readonly StringBuilder _incoming = new();
+    private readonly UrScriptIntake _incoming = new();
     private CancellationTokenSource? _programStop;
     private Thread? _programThread;
-    private string? _startedName;
     private UrProgramState _state;
     private string? _error;
     private int _programs;
@@ -156,7 +154,7 @@ internal sealed class UrTwinController : IDisposable
                 Pendant.Log(_error);
                 return;
             }
-            while (TakeProgram() is { } program)
+            while (_incoming.TakeProgram() is { } program)
             {
                 programs.Add(program);
             }
@@ -166,89 +164,6 @@ internal sealed class UrTwinController : IDisposable
             ProgramReceived?.Invoke(program);
             Start(program);
         }
-    }
-
-    /// <summary>The next complete program in the received text, or null (called under the gate).</summary>
-    private string? TakeProgram()
-    {
-        string buffer = _incoming.ToString();
-        int at = 0;
-        int programStart = -1;
-        while (at < buffer.Length)
-        {
-            int newline = buffer.IndexOf('\n', at);
-            bool complete = newline >= 0;
-            string line = (complete ? buffer[at..newline] : buffer[at..]).TrimEnd('\r');
-            int next = complete ? newline + 1 : buffer.Length;
-            string code = StripComment(line).TrimEnd();
-            if (programStart < 0)
-            {
-                if (code.Trim().Length == 0)
-                {
-                    if (!complete)
-                    {
-                        break;
-                    }
-                    at = next;
-                    _incoming.Remove(0, next);
-                    buffer = buffer[next..];
-                    at = 0;
-                    continue;
-                }
-                if (code.StartsWith("def ", StringComparison.Ordinal) || code.StartsWith("sec ", StringComparison.Ordinal))
-                {
-                    programStart = at;
-                }
-                else if (complete)
-                {
-                    _incoming.Remove(0, next);
-                    if (_startedName is not null && code.Trim() == _startedName + "()")
-                    {
-                        _startedName = null;
-                        buffer = buffer[next..];
-                        at = 0;
-                        continue;
-                    }
-                    return line;
-                }
-                else
-                {
-                    break;
-                }
-            }
-            else if (code == "end" && line.Length > 0 && line[0] == 'e')
-            {
-                string program = buffer[programStart..next];
-                _incoming.Remove(0, next);
-                string header = program.TrimStart();
-                int paren = header.IndexOf('(', StringComparison.Ordinal);
-                _startedName = paren > 4 ? header[4..paren].Trim() : null;
-                return program;
-            }
-            if (!complete)
-            {
-                break;
-            }
-            at = next;
-        }
-        return null;
-    }
-
-    private static string StripComment(string line)
-    {
-        bool quoted = false;
-        for (int i = 0; i < line.Length; i++)
-        {
-            if (line[i] == '"')
-            {
-                quoted = !quoted;
-            }
-            else if (line[i] == '#' && !quoted)
-            {
-                return line[..i];
-            }
-        }
-        return line;
     }
 
     /// <summary>
