@@ -50,6 +50,10 @@ public sealed partial class VirtualUrController
     /// <summary>The answer of the dashboard server to one command (the commands a host uses).</summary>
     private string Dashboard(string command)
     {
+        if (Twin is { } twin)
+        {
+            return TwinDashboard(twin, command);
+        }
         switch (command)
         {
             case "play":

@@ -23,6 +23,10 @@ public sealed partial class VirtualUrController
     {
         get
         {
+            if (Twin is { } twin)
+            {
+                return twin.State == UrScript.UrProgramState.Running;
+            }
             lock (Gate)
             {
                 return _runtime != Stopped;
@@ -35,6 +39,10 @@ public sealed partial class VirtualUrController
     {
         get
         {
+            if (Twin is { } twin)
+            {
+                return RuntimeOf(twin);
+            }
             lock (Gate)
             {
                 return _runtime;
@@ -79,6 +87,10 @@ public sealed partial class VirtualUrController
 
     private bool SafetyStop(int status, string text)
     {
+        if (Twin is not null)
+        {
+            return false; // not modelled on the interpreter yet
+        }
         lock (Gate)
         {
             if (_safety != Normal)
@@ -152,6 +164,10 @@ public sealed partial class VirtualUrController
     {
         get
         {
+            if (Twin is { } twin)
+            {
+                return (int)twin.Io.GetNumber(UrScript.UrIoBanks.OutputIntRegisters, InstanceRegisterNumber);
+            }
             lock (Gate)
             {
                 return _instanceRegister;
@@ -164,6 +180,10 @@ public sealed partial class VirtualUrController
     {
         get
         {
+            if (Twin is { } twin)
+            {
+                return twin.State == UrScript.UrProgramState.Failed ? twin.Error : null;
+            }
             lock (Gate)
             {
                 return _runtimeException;

@@ -230,6 +230,10 @@ public sealed partial class VirtualUrController
     /// <summary>One data package of the subscriber's recipe: its id, then each value big-endian in UR's units (m, rad).</summary>
     private byte[] DataPackage(RtdeSubscriber s)
     {
+        if (Twin is { } twin)
+        {
+            return Rtde.Package(Rtde.DataPackage, TwinDataPayload(twin, s.RecipeId, s.Names));
+        }
         VirtualUrState state = State;
         int runtime, safety, instance;
         bool registers;

@@ -71,7 +71,14 @@ public sealed partial class VirtualUrController
         }
         try
         {
-            await ReadScriptsAsync(stream, token).ConfigureAwait(false);
+            if (Twin is { } twin)
+            {
+                await FeedTwinAsync(stream, twin, token).ConfigureAwait(false);
+            }
+            else
+            {
+                await ReadScriptsAsync(stream, token).ConfigureAwait(false);
+            }
         }
         finally
         {

@@ -35,6 +35,10 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         })
     {
         _options = options;
+        if (options.RunsScripts)
+        {
+            CreateTwin();
+        }
     }
 
     /// <summary>The port that takes driver scripts (what a host gives to Connect); 0 until started.</summary>
@@ -79,6 +83,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         _rtdeListener?.Stop();
         _dashboardListener?.Stop();
         StopProgram("the controller stops");
+        Twin?.Dispose();
         WakeRtde();
     }
 

@@ -26,6 +26,13 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     /// <summary>Dashboard port (a real controller: 29999), 0 = OS-chosen (the script port + 2 when that is OS-chosen too). Default 0.</summary>
     public int DashboardPort { get; init; }
 
+    /// <summary>
+    /// True: the controller runs what arrives on its script ports with its URScript interpreter (the twin), as a UR does, and
+    /// RTDE and the dashboard report the twin's arm, registers and program. Needs a <c>Model</c>; the fault plan, protective
+    /// stops and request inspection do not apply. False (default): Machina's driver is recognised and imitated.
+    /// </summary>
+    public bool RunsScripts { get; init; }
+
     /// <summary>The controller software version RTDE reports; from 5 on RTDE runs up to 500 Hz, before up to 125 Hz. Default 5.11.0.</summary>
     public Version ControllerVersion { get; init; } = new(5, 11, 0);
 
@@ -40,6 +47,10 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
         base.Validate();
         ArgumentNullException.ThrowIfNull(ControllerVersion);
         ArgumentNullException.ThrowIfNull(ExtraScriptPorts);
+        if (RunsScripts && Model is null)
+        {
+            throw new ArgumentException("A virtual UR that runs scripts needs a robot model (the interpreter moves its kinematics); set Model.");
+        }
         foreach (int port in ExtraScriptPorts.Append(ScriptPort).Append(RtdePort).Append(DashboardPort))
         {
             if (port is < 0 or > 65535)

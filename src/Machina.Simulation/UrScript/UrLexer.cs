@@ -7,9 +7,15 @@ internal static class UrLexer
 {
     /// <summary>The tokens of <paramref name="text"/>, ending with <see cref="UrTokenKind.End"/>.</summary>
     /// <exception cref="UrCompileException">A character that is not URScript, or a string that does not end on its line.</exception>
-    public static List<UrToken> Tokenize(string text)
+    public static List<UrToken> Tokenize(string text) => [.. Tokens(text)];
+
+    /// <summary>
+    /// The tokens of <paramref name="text"/> one at a time, ending with <see cref="UrTokenKind.End"/> (a mistake throws when
+    /// its token is reached), so that a parser never holds the tokens of a whole long program.
+    /// </summary>
+    public static IEnumerable<UrToken> Tokens(string text)
     {
-        var tokens = new List<UrToken>(text.Length / 4 + 8);
+        var words = new TextCache(); // one string per distinct name or number: a long program repeats few of them
         int line = 1, lineStart = 0, i = 0;
         while (i < text.Length)
         {
@@ -17,7 +23,7 @@ internal static class UrLexer
             int column = i - lineStart + 1;
             if (c == '\n')
             {
-                tokens.Add(new UrToken(UrTokenKind.Newline, "\n", line, column));
+                yield return new UrToken(UrTokenKind.Newline, "\n", line, column);
                 line++;
                 lineStart = ++i;
             }
@@ -39,11 +45,12 @@ internal static class UrLexer
                 {
                     i++;
                 }
-                tokens.Add(new UrToken(UrTokenKind.Name, text[start..i], line, column));
+                yield return new UrToken(UrTokenKind.Name, words.Get(text, start, i - start), line, column);
             }
             else if (char.IsAsciiDigit(c) || (c == '.' && i + 1 < text.Length && char.IsAsciiDigit(text[i + 1])))
             {
-                tokens.Add(ReadNumber(text, ref i, line, column));
+                (UrToken number, i) = ReadNumber(text, i, line, column, words);
+                yield return number;
             }
             else if (c == '"' || c == '\'')
             {
@@ -56,17 +63,17 @@ internal static class UrLexer
                 {
                     throw new UrCompileException(line, "the string does not end on its line");
                 }
-                tokens.Add(new UrToken(UrTokenKind.String, text[start..i], line, column));
+                yield return new UrToken(UrTokenKind.String, text[start..i], line, column);
                 i++;
             }
             else if (i + 1 < text.Length && text[i + 1] == '=' && c is '=' or '!' or '<' or '>')
             {
-                tokens.Add(new UrToken(UrTokenKind.Symbol, text.Substring(i, 2), line, column));
+                yield return new UrToken(UrTokenKind.Symbol, c switch { '=' => "==", '!' => "!=", '<' => "<=", _ => ">=" }, line, column);
                 i += 2;
             }
-            else if ("+-*/%=<>()[],:".Contains(c, StringComparison.Ordinal))
+            else if (Symbols.IndexOf(c, StringComparison.Ordinal) is int symbol and >= 0)
             {
-                tokens.Add(new UrToken(UrTokenKind.Symbol, c.ToString(), line, column));
+                yield return new UrToken(UrTokenKind.Symbol, SymbolTexts[symbol], line, column);
                 i++;
             }
             else
@@ -74,12 +81,16 @@ internal static class UrLexer
                 throw new UrCompileException(line, $"unexpected character '{c}'");
             }
         }
-        tokens.Add(new UrToken(UrTokenKind.Newline, "\n", line, i - lineStart + 1));
-        tokens.Add(new UrToken(UrTokenKind.End, "", line, i - lineStart + 1));
-        return tokens;
+        yield return new UrToken(UrTokenKind.Newline, "\n", line, i - lineStart + 1);
+        yield return new UrToken(UrTokenKind.End, "", line, i - lineStart + 1);
     }
 
-    private static UrToken ReadNumber(string text, ref int i, int line, int column)
+    private const string Symbols = "+-*/%=<>()[],:";
+
+    /// <summary>The text of each single-character symbol, made once.</summary>
+    private static readonly string[] SymbolTexts = [.. Symbols.Select(c => c.ToString())];
+
+    private static (UrToken Token, int End) ReadNumber(string text, int i, int line, int column, TextCache words)
     {
         int start = i;
         bool isFloat = false;
@@ -116,12 +127,39 @@ internal static class UrLexer
                 i = save;
             }
         }
-        string literal = text[start..i];
+        string literal = words.Get(text, start, i - start);
         double value = double.Parse(literal, NumberStyles.Float, CultureInfo.InvariantCulture);
         if (!isFloat && (value > int.MaxValue + 1.0))
         {
             throw new UrCompileException(line, $"the integer {literal} is out of range");
         }
-        return new UrToken(isFloat ? UrTokenKind.Float : UrTokenKind.Int, literal, line, column, value);
+        return (new UrToken(isFloat ? UrTokenKind.Float : UrTokenKind.Int, literal, line, column, value), i);
+    }
+
+    /// <summary>Gives the same string for the same characters, so that a name or number repeated on many lines is stored once.</summary>
+    private sealed class TextCache
+    {
+        private readonly Dictionary<string, string> _texts = new(StringComparer.Ordinal);
+
+        public string Get(string text, int start, int length)
+        {
+#if NET9_0_OR_GREATER
+            var lookup = _texts.GetAlternateLookup<ReadOnlySpan<char>>();
+            ReadOnlySpan<char> span = text.AsSpan(start, length);
+            if (lookup.TryGetValue(span, out string? known))
+            {
+                return known;
+            }
+            string made = span.ToString();
+#else
+            string made = text.Substring(start, length);
+            if (_texts.TryGetValue(made, out string? known))
+            {
+                return known;
+            }
+#endif
+            _texts[made] = made;
+            return made;
+        }
     }
 }

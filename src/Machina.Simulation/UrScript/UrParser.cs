@@ -32,18 +32,18 @@ internal sealed class UrDecl(int line, bool isGlobal, string name, UrAssign? ini
 /// <summary>Recursive-descent parser of URScript (the language of UR's Script Manual) into statements and expressions with lines.</summary>
 internal sealed class UrParser
 {
-    private readonly List<UrToken> _tokens;
+    private readonly UrTokenWindow _tokens;
     private readonly UrSyntaxTree _tree = new();
     private int _at;
     private int _depth;
 
-    private UrParser(List<UrToken> tokens) => _tokens = tokens;
+    private UrParser(UrTokenWindow tokens) => _tokens = tokens;
 
     /// <summary>Parses a whole program.</summary>
     /// <exception cref="UrCompileException">A syntax error, with its line.</exception>
     public static UrSyntaxTree Parse(string text)
     {
-        var parser = new UrParser(UrLexer.Tokenize(text));
+        var parser = new UrParser(new UrTokenWindow(UrLexer.Tokens(text)));
         parser.SkipNewlines();
         while (parser.Peek.Kind != UrTokenKind.End)
         {

@@ -1,4 +1,3 @@
-using System.Text;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.UrScript;
@@ -15,13 +14,13 @@ internal sealed class UrTwinController : IDisposable
     public const int MaxProgramLength = 16 * 1024 * 1024;
 
     private readonly Lock _gate = new();
-    private readonly StringBuilder _incoming = new();
+    private readonly UrScriptIntake _incoming = new();
     private CancellationTokenSource? _programStop;
     private Thread? _programThread;
-    private string? _startedName;
     private UrProgramState _state;
     private string? _error;
     private int _programs;
+    private string? _programName;
 
     /// <summary>A controller with <paramref name="options"/> (UR5e, not real-time, by default).</summary>
     public UrTwinController(UrTwinOptions? options = null)
@@ -63,6 +62,15 @@ internal sealed class UrTwinController : IDisposable
     /// <summary>The pendant log: program messages and errors.</summary>
     public TwinPendant Pendant { get; } = new();
 
+    /// <summary>Raised for each complete program taken from the received text (before it is compiled and started).</summary>
+    public event Action<string>? ProgramReceived;
+
+    /// <summary>Raised when a runtime error stops the program, with its line and reason, before its sockets close (on the program's thread).</summary>
+    public event Action<int, string>? RuntimeError;
+
+    /// <summary>Raised after a program started or ended (on the thread that started or ran it).</summary>
+    public event Action? StateChanged;
+
     /// <summary>The source of <c>random()</c> (seeded from the options, so a run can be repeated).</summary>
     internal Random Random { get; }
 
@@ -89,6 +97,18 @@ internal sealed class UrTwinController : IDisposable
             lock (_gate)
             {
                 return _error;
+            }
+        }
+    }
+
+    /// <summary>The name of the last program started with a <c>def</c> or <c>sec</c> (null for a one-line program or none).</summary>
+    public string? ProgramName
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _programName;
             }
         }
     }
@@ -134,98 +154,16 @@ internal sealed class UrTwinController : IDisposable
                 Pendant.Log(_error);
                 return;
             }
-            while (TakeProgram() is { } program)
+            while (_incoming.TakeProgram() is { } program)
             {
                 programs.Add(program);
             }
         }
         foreach (string program in programs)
         {
+            ProgramReceived?.Invoke(program);
             Start(program);
         }
-    }
-
-    /// <summary>The next complete program in the received text, or null (called under the gate).</summary>
-    private string? TakeProgram()
-    {
-        string buffer = _incoming.ToString();
-        int at = 0;
-        int programStart = -1;
-        while (at < buffer.Length)
-        {
-            int newline = buffer.IndexOf('\n', at);
-            bool complete = newline >= 0;
-            string line = (complete ? buffer[at..newline] : buffer[at..]).TrimEnd('\r');
-            int next = complete ? newline + 1 : buffer.Length;
-            string code = StripComment(line).TrimEnd();
-            if (programStart < 0)
-            {
-                if (code.Trim().Length == 0)
-                {
-                    if (!complete)
-                    {
-                        break;
-                    }
-                    at = next;
-                    _incoming.Remove(0, next);
-                    buffer = buffer[next..];
-                    at = 0;
-                    continue;
-                }
-                if (code.StartsWith("def ", StringComparison.Ordinal) || code.StartsWith("sec ", StringComparison.Ordinal))
-                {
-                    programStart = at;
-                }
-                else if (complete)
-                {
-                    _incoming.Remove(0, next);
-                    if (_startedName is not null && code.Trim() == _startedName + "()")
-                    {
-                        _startedName = null;
-                        buffer = buffer[next..];
-                        at = 0;
-                        continue;
-                    }
-                    return line;
-                }
-                else
-                {
-                    break;
-                }
-            }
-            else if (code == "end" && line.Length > 0 && line[0] == 'e')
-            {
-                string program = buffer[programStart..next];
-                _incoming.Remove(0, next);
-                string header = program.TrimStart();
-                int paren = header.IndexOf('(', StringComparison.Ordinal);
-                _startedName = paren > 4 ? header[4..paren].Trim() : null;
-                return program;
-            }
-            if (!complete)
-            {
-                break;
-            }
-            at = next;
-        }
-        return null;
-    }
-
-    private static string StripComment(string line)
-    {
-        bool quoted = false;
-        for (int i = 0; i < line.Length; i++)
-        {
-            if (line[i] == '"')
-            {
-                quoted = !quoted;
-            }
-            else if (line[i] == '#' && !quoted)
-            {
-                return line[..i];
-            }
-        }
-        return line;
     }
 
     /// <summary>
@@ -248,8 +186,12 @@ internal sealed class UrTwinController : IDisposable
         StopProgram();
         var stop = new CancellationTokenSource();
         var thread = new Thread(() => RunBound(program, stop.Token)) { IsBackground = true, Name = "URScript program" };
+        string header = text.TrimStart();
+        int paren = header.IndexOf('(', StringComparison.Ordinal);
+        bool named = header.StartsWith("def ", StringComparison.Ordinal) || header.StartsWith("sec ", StringComparison.Ordinal);
         lock (_gate)
         {
+            _programName = named && paren > 4 ? header[4..paren].Trim() : null;
             _programStop = stop;
             _programThread = thread;
             _state = UrProgramState.Running;
@@ -257,6 +199,7 @@ internal sealed class UrTwinController : IDisposable
             _programs++;
         }
         thread.Start();
+        StateChanged?.Invoke();
         return true;
     }
 
@@ -334,6 +277,7 @@ internal sealed class UrTwinController : IDisposable
             {
                 end = UrProgramState.Failed;
                 error = e.Message;
+                RuntimeError?.Invoke(e.Line, e.Reason);
             }
             catch (OperationCanceledException)
             {
@@ -360,13 +304,17 @@ internal sealed class UrTwinController : IDisposable
                 _error = error;
             }
         }
+        StateChanged?.Invoke();
     }
 
     private void Fail(string message)
     {
         lock (_gate)
         {
-            _state = UrProgramState.Failed;
+            if (_state != UrProgramState.Running)
+            {
+                _state = UrProgramState.Failed; // a running program goes on: only the refused one failed
+            }
             _error = message;
         }
         Pendant.Log(message);

@@ -6,16 +6,16 @@ namespace Machina.Benchmarks;
 /// Streams moves online to a virtual controller (ABB, or UR with <paramref name="ur"/>) on loopback that executes every
 /// instruction at once, and times from the first issued move until the controller has acknowledged the last one. With
 /// <paramref name="wideWindow"/> the release window is widened (100 actions per block) to show what the link can carry;
-/// otherwise the defaults are used.
+/// otherwise the defaults are used. With <paramref name="twin"/> the virtual UR runs the driver script on its URScript interpreter.
 /// </summary>
-internal sealed class StreamScenario(bool wideWindow, bool ur = false) : Scenario
+internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin = false) : Scenario
 {
     private IAsyncDisposable? _controller;
     private Robot? _bot;
 
-    public override string Name => (ur ? "stream-ur" : "stream") + (wideWindow ? "-wide" : "");
+    public override string Name => (ur ? "stream-ur" : "stream") + (twin ? "-twin" : "") + (wideWindow ? "-wide" : "");
 
-    public override string Title => $"Stream moves to the virtual {(ur ? "UR" : "ABB")} controller, instant execution, "
+    public override string Title => $"Stream moves to the virtual {(ur ? "UR" : "ABB")} controller{(twin ? " running the driver script" : "")}, instant execution, "
         + (wideWindow ? "window 100/100" : "default window");
 
     public override int TargetSize => 100_000;
@@ -31,7 +31,7 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false) : Scenari
         int port;
         if (ur)
         {
-            var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+            var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, RunsScripts = twin });
             controller.StartAsync().GetAwaiter().GetResult();
             (_controller, port) = (controller, controller.Port);
         }

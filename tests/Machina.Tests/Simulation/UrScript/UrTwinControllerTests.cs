@@ -48,8 +48,9 @@ public class UrTwinControllerTests(ITestOutputHelper output)
         Assert.Equal("Compile error: line 3: unknown function 'nosuch'", twin.Error);
         Assert.Equal(1, twin.ProgramsStarted);
         Assert.False(twin.WaitForEnd(TimeSpan.FromMilliseconds(50)));
+        Assert.Equal(UrProgramState.Running, twin.State); // the refused program failed, not the running one
         twin.StopProgram();
-        Assert.Equal(UrProgramState.Failed, twin.State);
+        Assert.Equal(UrProgramState.Stopped, twin.State);
     }
 
     [Theory]
