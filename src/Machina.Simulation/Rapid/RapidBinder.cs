@@ -30,22 +30,29 @@ internal sealed partial class RapidBinder
         IReadOnlyDictionary<string, RapidBuiltin> builtins, Dictionary<string, RapidCell> persistents)
     {
         var binder = new RapidBinder(program, machine, builtins, persistents);
-        foreach (RapidModule module in modules)
+        try
         {
-            binder.Declare(module);
-        }
-        foreach (RapidModule module in modules)
-        {
-            binder._module = module;
-            binder.InitializeData(module);
-        }
-        foreach (RapidModule module in modules)
-        {
-            binder._module = module;
-            foreach (RapidRoutine routine in module.Routines)
+            foreach (RapidModule module in modules)
             {
-                binder.BindRoutine(routine);
+                binder.Declare(module);
             }
+            foreach (RapidModule module in modules)
+            {
+                binder._module = module;
+                binder.InitializeData(module);
+            }
+            foreach (RapidModule module in modules)
+            {
+                binder._module = module;
+                foreach (RapidRoutine routine in module.Routines)
+                {
+                    binder.BindRoutine(routine);
+                }
+            }
+        }
+        catch (RapidLoadException ex) when (ex.Module is null && binder._module is not null)
+        {
+            throw new RapidLoadException(ex.Line, ex.Reason) { Module = binder._module.Name };
         }
         program.Modules.AddRange(modules);
     }

@@ -80,11 +80,14 @@ internal sealed class RapidTask
     public void Load(IEnumerable<(string Name, string Text)> modules)
     {
         var parsed = new List<RapidModule>();
+        var files = new Dictionary<string, string>(StringComparer.OrdinalIgnoreCase);
         foreach ((string name, string text) in modules)
         {
             try
             {
-                parsed.Add(RapidParser.Parse(text));
+                RapidModule module = RapidParser.Parse(text);
+                files[module.Name] = name;
+                parsed.Add(module);
             }
             catch (RapidLoadException ex)
             {
@@ -97,7 +100,7 @@ internal sealed class RapidTask
         }
         catch (RapidLoadException ex)
         {
-            throw new RapidLoadException(ex.Line, ex.Reason) { Module = ex.Module };
+            throw new RapidLoadException(ex.Line, ex.Reason) { Module = ex.Module is null ? null : files.GetValueOrDefault(ex.Module, ex.Module) };
         }
     }
 
