@@ -220,9 +220,7 @@ internal sealed partial class RapidBinder
         {
             throw Refuse(line, RapidLoadException.Reference(procedure ? $"'{name}' is a function, not a procedure" : $"'{name}' is a procedure, not a function"));
         }
-        List<(string Name, string? Type, bool Optional, bool Switch, bool Ref, int Rank)> ps = routine is not null
-            ? [.. routine.Parameters.Select(p => (p.Name, (string?)p.TypeName, p.Optional, p.IsSwitch, p.Mode != RapidParamMode.In, p.Rank))]
-            : [.. builtin!.Parameters.Select(p => (p.Name, p.Type, p.Optional, p.Switch, p.Ref, 0))];
+        List<(string Name, string? Type, bool Optional, bool Switch, bool Ref, int Rank)> ps = Signature(routine, builtin!);
         int[] map = new int[ps.Count];
         Array.Fill(map, -1);
         int next = 0;
@@ -257,12 +255,30 @@ internal sealed partial class RapidBinder
             map[p] = k;
             BindArgument(name, arg, ps[p], line, scope);
         }
-        int missing = Enumerable.Range(0, ps.Count).FirstOrDefault(p => !ps[p].Optional && map[p] < 0, -1);
-        if (missing >= 0)
+        for (int missing = 0; missing < ps.Count; missing++)
         {
-            throw Refuse(line, RapidLoadException.Reference($"the argument '{ps[missing].Name}' of '{name}' is missing"));
+            if (!ps[missing].Optional && map[missing] < 0)
+            {
+                throw Refuse(line, RapidLoadException.Reference($"the argument '{ps[missing].Name}' of '{name}' is missing"));
+            }
         }
         return new RapidCallTarget(builtin, routine, map);
+    }
+
+    private readonly Dictionary<object, List<(string Name, string? Type, bool Optional, bool Switch, bool Ref, int Rank)>> _signatures = [];
+
+    /// <summary>The parameters of a routine or built-in in one shape, made once per routine.</summary>
+    private List<(string Name, string? Type, bool Optional, bool Switch, bool Ref, int Rank)> Signature(RapidRoutine? routine, RapidBuiltin builtin)
+    {
+        object key = (object?)routine ?? builtin;
+        if (!_signatures.TryGetValue(key, out List<(string, string?, bool, bool, bool, int)>? ps))
+        {
+            ps = routine is not null
+                ? [.. routine.Parameters.Select(p => (p.Name, (string?)p.TypeName, p.Optional, p.IsSwitch, p.Mode != RapidParamMode.In, p.Rank))]
+                : [.. builtin.Parameters.Select(p => (p.Name, p.Type, p.Optional, p.Switch, p.Ref, 0))];
+            _signatures[key] = ps;
+        }
+        return ps;
     }
 
     private void BindArgument(string routine, RapidArg arg, (string Name, string? Type, bool Optional, bool Switch, bool Ref, int Rank) p, int line, RapidScope scope)
