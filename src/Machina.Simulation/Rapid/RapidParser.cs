@@ -8,19 +8,19 @@ internal sealed partial class RapidParser
 {
     private static readonly string[] BodyEnds = ["ERROR", "BACKWARD", "UNDO", "ENDFUNC", "ENDTRAP", "ENDPROC"];
 
-    private readonly List<RapidToken> _tokens;
+    private readonly RapidToken[] _tokens;
     private int _at;
 
-    private RapidParser(List<RapidToken> tokens) => _tokens = tokens;
+    private RapidParser(List<RapidToken> tokens) => _tokens = [.. tokens];
 
     /// <summary>Parses one module; throws <see cref="RapidLoadException"/> at the first syntax error.</summary>
     public static RapidModule Parse(string text) => new RapidParser(RapidLexer.Tokenize(text)).Module();
 
-    private RapidToken Peek => _tokens[_at];
+    private ref readonly RapidToken Peek => ref _tokens[_at];
 
-    private RapidToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Count - 1)];
+    private RapidToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Length - 1)];
 
-    private RapidToken Next() => _tokens[_at < _tokens.Count - 1 ? _at++ : _at];
+    private RapidToken Next() => _tokens[_at < _tokens.Length - 1 ? _at++ : _at];
 
     private RapidLoadException Error(string what, RapidToken? at = null) =>
         new((at ?? Peek).Line, RapidLoadException.Syntax(what));
