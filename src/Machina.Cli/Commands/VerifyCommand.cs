@@ -3,14 +3,14 @@ using Machina.Simulation.UrScript;
 
 namespace Machina.Cli.Commands;
 
-/// <summary><c>machina verify</c>: runs a compiled URScript program on the URScript twin controller and checks where the arm got.</summary>
-internal static class VerifyCommand
+/// <summary><c>machina verify</c>: runs a compiled URScript or RAPID program on a twin controller and checks where the arm got.</summary>
+internal static partial class VerifyCommand
 {
     internal static readonly CliCommand Command = new(
         "verify",
-        "Run a compiled UR program on a twin controller and compare it with the library",
+        "Run a compiled UR or ABB program on a twin controller and compare it with the library",
         """
-        Usage: machina verify PROGRAM --brand ur [--script FILE] [--model M]
+        Usage: machina verify PROGRAM --brand ur|abb [--script FILE] [--model M]
 
         PROGRAM is a text file of Machina instructions. It is compiled to URScript (or FILE, a URScript program compiled from
         it earlier, is taken instead), and the script runs on the URScript twin: a controller that interprets URScript as
@@ -21,13 +21,20 @@ internal static class VerifyCommand
 
         PROGRAM may also be a .script file alone: it then runs on the twin and each step is listed, with no comparison.
 
-        Options:
-          --brand ur         the controller (only UR has a twin so far)
-          --script FILE      the compiled URScript to check, instead of compiling PROGRAM now
-          --model M          the arm model (default UR5e; machina models lists them)
+        With --brand abb the program is compiled to RAPID and its main runs on the RAPID twin, which interprets RAPID
+        (modules, data, routines, error handlers, motion, IO) with the arm model's kinematics. --script is then the
+        compiled RAPID program: a .pgf file, a .mod file or a folder holding them. PROGRAM may also be such a
+        .pgf/.mod file or folder alone: main runs and each step is listed.
 
-        Example:
+        Options:
+          --brand ur|abb     the controller (UR: URScript twin; ABB: RAPID twin)
+          --script FILE      the compiled program to check, instead of compiling PROGRAM now
+          --model M          the arm model (default UR5e for UR, IRB 120 for ABB; machina models lists them)
+
+        Examples:
           machina verify square.machina --brand ur
+          machina verify square.machina --brand abb --model "IRB 1200-5/0.9"
+          machina verify out/Square --brand abb
         Exit code: 0 when the program runs to its end and every step agrees, 1 when it does not, 2 for a command-line mistake.
         """,
         Options: ["--brand", "--script", "--model"],
@@ -36,10 +43,13 @@ internal static class VerifyCommand
 
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
-        string path = args.Single("a PROGRAM file (Machina instructions, or a .script)");
-        // The URScript twin is the only twin controller so far: its brand is the one --brand must name.
+        string path = args.Single("a PROGRAM file (Machina instructions, a .script, or a RAPID .pgf/.mod file or folder)");
+        // The brands with a twin controller: URScript and RAPID.
         BrandDefinition twinBrand = UrBrand.Definition;
-        Brands.Parse(args.Required("--brand", "(ur: only UR has a twin controller so far)"), [twinBrand.Type]);
+        if (Brands.Parse(args.Required("--brand", "(ur or abb: the brands with a twin controller)"), [twinBrand.Type, AbbBrand.Definition.Type]) == AbbBrand.Definition.Type)
+        {
+            return await RunAbbAsync(path, args, context).ConfigureAwait(false);
+        }
         RobotModel model = Brands.Model(args.Value("--model") ?? twinBrand.DefaultModel, twinBrand.Type)!;
         var options = new UrTwinOptions { Model = model };
         TextWriter output = context.Stdout;

@@ -1,0 +1,118 @@
+using System.Globalization;
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>Waits, messages, clocks and motion settings.</summary>
+internal static partial class RapidBuiltins
+{
+    private static IEnumerable<RapidBuiltin> Misc() =>
+    [
+        Instruction("WaitTime", [Sw("InPos"), P("Time", "num")], call =>
+        {
+            double seconds = call.Num(1);
+            if (seconds < 0)
+            {
+                throw ArgumentError(call, $"WaitTime: the time {RapidValues.FormatNumber(seconds)} s is negative");
+            }
+            RapidTwinController c = call.Machine.Task.Controller;
+            c.Clock.Wait(seconds, call.Machine.Task.CancellationToken);
+            c.Arm.Record(call.Line, TwinTraceKind.Wait, string.Create(CultureInfo.InvariantCulture, $"WaitTime {seconds}"));
+        }),
+        Instruction("TPWrite", [P("String", "string"), Opt("Num", "num"), Opt("Bool", "bool"), Opt("Pos", "pos"), Opt("Orient", "orient"), Opt("Dnum", "dnum")], call =>
+        {
+            string text = call.Str(0);
+            for (int p = 1; p <= 5; p++)
+            {
+                if (call.Has(p))
+                {
+                    text += RapidValues.ToText(call.Value(p));
+                }
+            }
+            call.Machine.Task.Controller.Pendant.Log(text);
+            call.Machine.Task.Controller.Arm.Record(call.Line, TwinTraceKind.Message, text);
+        }),
+        Instruction("TPErase", [], _ => { }),
+        Instruction("ClkStart", [P("Clock", "clock", true)], call =>
+        {
+            var clock = (RapidClock)call.Value(0);
+            clock.StartedAt ??= call.Machine.Task.Controller.Clock.Seconds;
+        }),
+        Instruction("ClkStop", [P("Clock", "clock", true)], call =>
+        {
+            var clock = (RapidClock)call.Value(0);
+            if (clock.StartedAt is { } start)
+            {
+                clock.Accumulated += call.Machine.Task.Controller.Clock.Seconds - start;
+                clock.StartedAt = null;
+            }
+        }),
+        Instruction("ClkReset", [P("Clock", "clock", true)], call =>
+        {
+            var clock = (RapidClock)call.Value(0);
+            clock.Accumulated = 0;
+            clock.StartedAt = clock.StartedAt is null ? null : call.Machine.Task.Controller.Clock.Seconds;
+        }),
+        Function("ClkRead", "num", [P("Clock", "clock", true), Sw("HighRes")], call =>
+        {
+            var clock = (RapidClock)call.Value(0);
+            double seconds = clock.Accumulated + (clock.StartedAt is { } start ? call.Machine.Task.Controller.Clock.Seconds - start : 0);
+            return call.Has(1) ? Math.Round(seconds, 6) : Math.Round(seconds, 3);
+        }),
+        Function("Present", "bool", [P("OptPar", null, true)], call =>
+        {
+            try
+            {
+                call.Value(0);
+                return true;
+            }
+            catch (RapidRuntimeException ex) when (ex.ErrorNumber == RapidErrorNumbers.NotPres)
+            {
+                return false;
+            }
+        }),
+    ];
+
+    private static IEnumerable<RapidBuiltin> Settings() =>
+    [
+        Instruction("ConfL", [Sw("On"), Sw("Off")], call => call.Machine.Task.ConfL = !call.Has(1)),
+        Instruction("ConfJ", [Sw("On"), Sw("Off")], call => call.Machine.Task.ConfJ = !call.Has(1)),
+        Instruction("SingArea", [Sw("Wrist"), Sw("LockAxis4"), Sw("Off")], call => call.Machine.Task.SingAreaWrist = call.Has(0)),
+        Instruction("CirPathMode", [Sw("PathFrame"), Sw("ObjectFrame"), Sw("CirPointOri"), Sw("Wrist45"), Sw("Wrist46"), Sw("Wrist56")], _ => { }),
+        Instruction("VelSet", [P("Override", "num"), P("Max", "num")], call =>
+        {
+            double overridePercent = call.Num(0), max = call.Num(1);
+            if (overridePercent <= 0 || max <= 0)
+            {
+                throw ArgumentError(call, "VelSet: the override and the largest speed must be positive");
+            }
+            call.Machine.Task.SpeedOverride = overridePercent;
+            call.Machine.Task.MaxSpeed = max;
+        }),
+        Instruction("AccSet", [P("Acc", "num"), P("Ramp", "num")], call =>
+        {
+            double acc = call.Num(0);
+            if (acc < 20 || acc > 100)
+            {
+                throw ArgumentError(call, $"AccSet: the acceleration {RapidValues.FormatNumber(acc)} % is outside 20..100 %");
+            }
+            call.Machine.Task.AccelerationPercent = acc;
+        }),
+        Instruction("WorldAccLim", [Opt("On", "num"), Sw("Off")], call =>
+        {
+            if (call.Has(0))
+            {
+                double limit = call.Num(0);
+                if (limit <= 0)
+                {
+                    throw ArgumentError(call, "WorldAccLim: the acceleration limit must be positive");
+                }
+                call.Machine.Task.AccelerationLimit = limit;
+            }
+            else
+            {
+                call.Machine.Task.AccelerationLimit = null;
+            }
+        }),
+    ];
+}

@@ -1,0 +1,157 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Motion instructions (MoveL, MoveJ, MoveAbsJ, MoveC) and position functions (CRobT, CJointT, CalcRobT) on the twin arm. Every
+/// move ends at its target (zones are not blended). A target out of reach or beyond a joint limit raises ERR_ROBLIMIT with
+/// event 50050, which an ERROR handler may take.
+/// </summary>
+internal static partial class RapidBuiltins
+{
+    private const double Degrees = 180 / Math.PI;
+
+    /// <summary>The parameters of a move, by index: the target(s), speed, optional \V and \T, tool, optional \WObj.</summary>
+    private readonly record struct MoveParams(int Speed, int V, int T, int Tool, int WObj);
+
+    private static IEnumerable<RapidBuiltin> Motion()
+    {
+        RapidBuiltinParam[] Tail() =>
+        [
+            Opt("ID", "num"), P("Speed", "speeddata"), Opt("V", "num"), Opt("T", "num"), P("Zone", "zonedata"), Opt("Z", "num"), Opt("Inpos", null),
+            P("Tool", "tooldata"), Opt("WObj", "wobjdata"), Sw("Corr"), Opt("TLoad", "loaddata"),
+        ];
+        var cartesian = new MoveParams(3, 4, 5, 9, 10);
+        var circular = new MoveParams(4, 5, 6, 10, 11);
+        return
+        [
+            Instruction("MoveL", [Sw("Conc"), P("ToPoint", "robtarget"), .. Tail()], call => MoveTo(call, "MoveL", call.Record(1), null, cartesian)),
+            Instruction("MoveJ", [Sw("Conc"), P("ToPoint", "robtarget"), .. Tail()], call => MoveTo(call, "MoveJ", call.Record(1), null, cartesian)),
+            Instruction("MoveC", [Sw("Conc"), P("CirPoint", "robtarget"), P("ToPoint", "robtarget"), .. Tail()],
+                call => MoveTo(call, "MoveC", call.Record(2), call.Record(1), circular)),
+            Instruction("MoveAbsJ", [Sw("Conc"), P("ToJointPos", "jointtarget"), Sw("NoEOffs"), .. Tail()], call => MoveAbsJ(call, circular)),
+            Function("CRobT", "robtarget", [Opt("TaskRef", "num"), Opt("TaskName", "string"), Opt("Tool", "tooldata"), Opt("WObj", "wobjdata")], call =>
+            {
+                RapidTwinController c = call.Machine.Task.Controller;
+                Joints joints = c.Arm.Joints;
+                Pose tool = call.Has(2) ? ToolFrame(call, call.Record(2)) : c.Arm.ToolCenter;
+                Pose wobj = call.Has(3) ? WorkObjectFrame(call, call.Record(3)) : call.Machine.Task.WorkObject;
+                return RapidGeometry.ToRobTarget(wobj.Inverse() * c.Arm.Model.Kinematics.Forward(joints) * tool, joints);
+            }),
+            Function("CJointT", "jointtarget", [Opt("TaskRef", "num"), Opt("TaskName", "string")],
+                call => RapidGeometry.ToJointTarget(call.Machine.Task.Controller.Arm.Joints)),
+            Function("CalcRobT", "robtarget", [P("Joint_target", "jointtarget"), P("Tool", "tooldata"), Opt("WObj", "wobjdata")], call =>
+            {
+                Joints joints = RapidGeometry.ToJoints((RapidRecord)call.Record(0).Fields[0]);
+                Pose wobj = call.Has(2) ? WorkObjectFrame(call, call.Record(2)) : Pose.Identity;
+                Pose flange = call.Machine.Task.Controller.Arm.Model.Kinematics.Forward(joints);
+                return RapidGeometry.ToRobTarget(wobj.Inverse() * flange * ToolFrame(call, call.Record(1)), joints);
+            }),
+        ];
+    }
+
+    private static void MoveTo(RapidCall call, string name, RapidRecord target, RapidRecord? via, MoveParams p)
+    {
+        RapidTask task = call.Machine.Task;
+        TwinArm arm = task.Controller.Arm;
+        Pose tool = ToolFrame(call, call.Record(p.Tool));
+        Pose wobj = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
+        Pose start = arm.Flange * tool;
+        Pose goal = wobj * RapidGeometry.ToPose(target, call.Line);
+        Joints joints;
+        double path;
+        try
+        {
+            arm.ToolCenter = tool;
+            task.WorkObject = wobj;
+            if (via is not null)
+            {
+                Pose middle = wobj * RapidGeometry.ToPose(via, call.Line);
+                Joints viaJoints = arm.Solve(middle, arm.Joints);
+                joints = arm.Solve(goal, viaJoints);
+                path = (middle.Position - start.Position).Length + (goal.Position - middle.Position).Length;
+            }
+            else
+            {
+                joints = arm.Solve(goal, arm.Joints);
+                path = (goal.Position - start.Position).Length;
+            }
+            arm.RequireWithinLimits(joints);
+        }
+        catch (TwinMotionException ex)
+        {
+            throw MotionError(call, ex.Message);
+        }
+        double seconds = Duration(call, p, path, RapidGeometry.AngleDegrees(start.Rotation, goal.Rotation));
+        arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken);
+    }
+
+    private static void MoveAbsJ(RapidCall call, MoveParams p)
+    {
+        RapidTask task = call.Machine.Task;
+        TwinArm arm = task.Controller.Arm;
+        Pose tool = ToolFrame(call, call.Record(p.Tool));
+        Joints joints = RapidGeometry.ToJoints((RapidRecord)call.Record(1).Fields[0]);
+        try
+        {
+            arm.RequireWithinLimits(joints);
+        }
+        catch (TwinMotionException ex)
+        {
+            throw MotionError(call, ex.Message);
+        }
+        Pose start = arm.Flange * tool;
+        arm.ToolCenter = tool;
+        task.WorkObject = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
+        Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
+        double seconds = Duration(call, p, (goal.Position - start.Position).Length, RapidGeometry.AngleDegrees(start.Rotation, goal.Rotation));
+        arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
+    }
+
+    /// <summary>Seconds a move takes: \T when given, else the TCP path at the programmed speed (VelSet applied) with the acceleration ramps, or the reorientation at v_ori when it is longer.</summary>
+    private static double Duration(RapidCall call, MoveParams p, double mm, double degrees)
+    {
+        if (call.Has(p.T))
+        {
+            double t = call.Num(p.T);
+            return t > 0 ? t : throw ArgumentError(call, "the time \\T must be positive");
+        }
+        RapidTask task = call.Machine.Task;
+        RapidRecord speed = call.Record(p.Speed);
+        double vTcp = call.Has(p.V) ? call.Num(p.V) : (double)speed.Fields[0], vOri = (double)speed.Fields[1];
+        if (!(vTcp > 0) || !(vOri > 0))
+        {
+            throw ArgumentError(call, "the speed must be positive (speeddata v_tcp and v_ori)");
+        }
+        double v = Math.Min(vTcp * task.SpeedOverride / 100, task.MaxSpeed) / 1000;
+        double acceleration = (task.AccelerationLimit ?? task.Controller.Options.Acceleration) * task.AccelerationPercent / 100;
+        return Math.Max(TwinMotion.TrapezoidSeconds(mm / 1000, v, acceleration), degrees / vOri);
+    }
+
+    private static RapidRuntimeException MotionError(RapidCall call, string detail) =>
+        new(RapidErrorNumbers.RobLimit, call.Line, $"Position outside reach: {detail}") { Event = 50050 };
+
+    /// <summary>The TCP frame of a tooldata, relative to the flange; a stationary tool (robhold FALSE) is refused.</summary>
+    private static Pose ToolFrame(RapidCall call, RapidRecord tool)
+    {
+        if (!(bool)tool.Fields[0])
+        {
+            throw ArgumentError(call, "the twin has no stationary tools: tooldata robhold must be TRUE");
+        }
+        if ((double)((RapidRecord)tool.Fields[2]).Fields[0] <= 0)
+        {
+            throw ArgumentError(call, "the tool's load has no mass (tooldata tload.mass must be positive)");
+        }
+        return RapidGeometry.ToPose((RapidRecord)tool.Fields[1], call.Line);
+    }
+
+    /// <summary>The frame of a wobjdata (user frame then object frame); a work object moved by the robot is refused.</summary>
+    private static Pose WorkObjectFrame(RapidCall call, RapidRecord wobj)
+    {
+        if ((bool)wobj.Fields[0])
+        {
+            throw ArgumentError(call, "the twin has no work objects held by the robot: wobjdata robhold must be FALSE");
+        }
+        return RapidGeometry.ToPose((RapidRecord)wobj.Fields[3], call.Line) * RapidGeometry.ToPose((RapidRecord)wobj.Fields[4], call.Line);
+    }
+}

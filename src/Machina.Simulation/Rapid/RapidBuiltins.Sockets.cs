@@ -1,0 +1,150 @@
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Socket Messaging (SocketCreate, SocketBind, SocketListen, SocketAccept, SocketReceive, SocketSend, SocketClose, SocketGetStatus)
+/// on the controller's own TCP sockets, and the interrupt instructions the monitor uses (IDelete, IError, GetTrapData, ReadErrData).
+/// A call that waits longer than its <c>\Time</c> raises ERR_SOCK_TIMEOUT; a connection closed by the other end raises ERR_SOCK_CLOSED.
+/// </summary>
+internal static partial class RapidBuiltins
+{
+    private const double DefaultSocketSeconds = 60;
+
+    private static IEnumerable<RapidBuiltin> Sockets() =>
+    [
+        Instruction("SocketCreate", [P("Socket", "socketdev"), Sw("UDP")], call =>
+        {
+            RapidSocketDevice s = Device(call);
+            if (s.Status != 0)
+            {
+                throw call.Error(RapidErrorNumbers.SockAddrInUse, "SocketCreate: the socket is already created");
+            }
+            s.Status = 1;
+        }),
+        Instruction("SocketBind", [P("Socket", "socketdev"), P("LocalAddress", "string"), P("LocalPort", "num")], call =>
+        {
+            RapidSocketDevice s = Device(call);
+            if (!IPAddress.TryParse(call.Str(1), out IPAddress? address))
+            {
+                throw ArgumentError(call, $"SocketBind: \"{call.Str(1)}\" is not an IP address");
+            }
+            s.Bound = new IPEndPoint(address, (int)call.Num(2));
+            s.Status = 3;
+        }),
+        Instruction("SocketListen", [P("Socket", "socketdev")], call =>
+        {
+            RapidSocketDevice s = Device(call);
+            if (s.Bound is null)
+            {
+                throw ArgumentError(call, "SocketListen: the socket is not bound");
+            }
+            try
+            {
+                s.Listener = new TcpListener(s.Bound);
+                s.Listener.Start(1);
+            }
+            catch (SocketException ex)
+            {
+                throw call.Error(RapidErrorNumbers.SockAddrInUse, $"SocketListen: {ex.Message}");
+            }
+            s.Status = 4;
+        }),
+        Instruction("SocketAccept", [P("Socket", "socketdev"), P("ClientSocket", "socketdev"), Opt("ClientAddress", "string", true), Opt("Time", "num")], call =>
+        {
+            RapidSocketDevice server = Device(call);
+            var client = (RapidSocketDevice)call.Value(1);
+            TcpListener listener = server.Listener ?? throw ArgumentError(call, "SocketAccept: the socket is not listening");
+            Task<Socket> accept = listener.AcceptSocketAsync(call.Machine.Task.CancellationToken).AsTask();
+            if (!Wait(call, accept, call.Has(3) ? call.Num(3) : DefaultSocketSeconds))
+            {
+                throw call.Error(RapidErrorNumbers.SockTimeout, "SocketAccept: no client connected in time");
+            }
+            client.Connection = accept.Result;
+            client.Connection.NoDelay = true;
+            client.Status = 2;
+        }),
+        Instruction("SocketSend", [P("Socket", "socketdev"), Opt("Str", "string"), Opt("RawData", null), Opt("Data", null), Opt("NoOfBytes", "num")], call =>
+        {
+            Socket connection = Connected(call);
+            byte[] bytes = Encoding.Latin1.GetBytes(call.Has(1) ? call.Str(1) : throw ArgumentError(call, "SocketSend: the twin sends \\Str only"));
+            try
+            {
+                connection.Send(bytes);
+            }
+            catch (SocketException ex)
+            {
+                throw call.Error(RapidErrorNumbers.SockClosed, $"SocketSend: {ex.Message}");
+            }
+        }),
+        Instruction("SocketReceive", [P("Socket", "socketdev"), Opt("Str", "string", true), Opt("RawData", null, true), Opt("Data", null, true),
+            Opt("ReadNoOfBytes", "num"), Opt("NoRecBytes", "num", true), Opt("Time", "num")], call =>
+        {
+            Socket connection = Connected(call);
+            if (!call.Has(1))
+            {
+                throw ArgumentError(call, "SocketReceive: the twin receives \\Str only");
+            }
+            var buffer = new byte[RapidMachine.MaxStringLength];
+            Task<int> receive = connection.ReceiveAsync(buffer, SocketFlags.None, call.Machine.Task.CancellationToken).AsTask();
+            if (!Wait(call, receive, call.Has(6) ? call.Num(6) : DefaultSocketSeconds))
+            {
+                throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
+            }
+            int count = receive.IsFaulted ? 0 : receive.Result;
+            if (count == 0)
+            {
+                Device(call).Status = 5;
+                throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
+            }
+            call.Set(1, Encoding.Latin1.GetString(buffer, 0, count));
+            if (call.Has(5))
+            {
+                call.Set(5, (double)count);
+            }
+        }),
+        Instruction("SocketClose", [P("Socket", "socketdev")], call =>
+        {
+            RapidSocketDevice s = Device(call);
+            s.Connection?.Dispose();
+            s.Listener?.Stop();
+            (s.Connection, s.Listener, s.Bound, s.Status) = (null, null, null, 0);
+        }),
+        Function("SocketGetStatus", "socketstatus", [P("Socket", "socketdev")], call => (double)(Device(call).Status == 0 ? 5 : Device(call).Status)),
+    ];
+
+    private static IEnumerable<RapidBuiltin> Interrupts() =>
+    [
+        Instruction("IDelete", [P("Interrupt", "intnum")], _ => { }),
+        Instruction("IError", [P("ErrorDomain", "num"), Opt("ErrorId", "num"), P("ErrorType", "num"), P("Interrupt", "intnum")], _ => { }),
+        Instruction("GetTrapData", [P("TrapEvent", "trapdata", true)], _ => { }),
+        Instruction("ReadErrData", [P("TrapEvent", "trapdata"), P("ErrorDomain", "errdomain", true), P("ErrorId", "num", true), P("ErrorType", "errtype", true)], call =>
+        {
+            var data = (RapidTrapData)call.Value(0);
+            call.Set(1, data.Domain);
+            call.Set(2, data.Number);
+            call.Set(3, data.Kind);
+        }),
+    ];
+
+    private static RapidSocketDevice Device(RapidCall call) => (RapidSocketDevice)call.Value(0);
+
+    private static Socket Connected(RapidCall call) => Device(call).Connection
+        ?? throw call.Error(RapidErrorNumbers.SockClosed, "the socket is not connected");
+
+    /// <summary>Waits for a socket operation up to <paramref name="seconds"/>; false when it timed out.</summary>
+    private static bool Wait(RapidCall call, Task operation, double seconds)
+    {
+        CancellationToken cancellation = call.Machine.Task.CancellationToken;
+        try
+        {
+            return operation.Wait(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
+        }
+        catch (AggregateException) when (operation.IsFaulted)
+        {
+            return true;
+        }
+    }
+}

@@ -1,0 +1,117 @@
+using System.Globalization;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>String functions: StrLen, StrPart, StrFind, StrMatch, StrToVal, NumToStr, ValToStr.</summary>
+internal static partial class RapidBuiltins
+{
+    private static IEnumerable<RapidBuiltin> Strings() =>
+    [
+        Function("StrLen", "num", [P("Str", "string")], call => (double)call.Str(0).Length),
+        Function("StrPart", "string", [P("Str", "string"), P("ChPos", "num"), P("Len", "num")], call =>
+        {
+            string s = call.Str(0);
+            double pos = call.Num(1), len = call.Num(2);
+            if (pos < 1 || len < 0 || pos + len - 1 > s.Length || pos != Math.Floor(pos) || len != Math.Floor(len))
+            {
+                throw ArgumentError(call, $"StrPart: characters {RapidValues.FormatNumber(pos)} to {RapidValues.FormatNumber(pos + len - 1)} are outside the string of length {s.Length}");
+            }
+            return s.Substring((int)pos - 1, (int)len);
+        }),
+        Function("StrFind", "num", [P("Str", "string"), P("ChPos", "num"), P("Set", "string"), Sw("NotInSet")], call =>
+        {
+            string s = call.Str(0), set = call.Str(2);
+            int start = StartOf(call, s, call.Num(1));
+            bool notIn = call.Has(3);
+            for (int i = start; i < s.Length; i++)
+            {
+                if (set.Contains(s[i], StringComparison.Ordinal) != notIn)
+                {
+                    return (double)(i + 1);
+                }
+            }
+            return (double)(s.Length + 1);
+        }),
+        Function("StrMatch", "num", [P("Str", "string"), P("ChPos", "num"), P("Pattern", "string")], call =>
+        {
+            string s = call.Str(0);
+            int found = s.IndexOf(call.Str(2), StartOf(call, s, call.Num(1)), StringComparison.Ordinal);
+            return (double)(found < 0 ? s.Length + 1 : found + 1);
+        }),
+        Function("StrToVal", "bool", [P("Str", "string"), P("Val", null, true)], call =>
+        {
+            string text = call.Str(0).Trim();
+            RapidDataType? type = call.TypeOf(1);
+            if (type is { Rank: 0, Element.IsNumeric: true })
+            {
+                if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) || !double.IsFinite(value))
+                {
+                    return false;
+                }
+                call.Set(1, value);
+                return true;
+            }
+            if (type is { Rank: 0, Element.Kind: RapidTypeKind.Bool })
+            {
+                bool isTrue = text.Equals("TRUE", StringComparison.OrdinalIgnoreCase);
+                if (!isTrue && !text.Equals("FALSE", StringComparison.OrdinalIgnoreCase))
+                {
+                    return false;
+                }
+                call.Set(1, isTrue);
+                return true;
+            }
+            throw ArgumentError(call, $"StrToVal: the twin converts to num, dnum and bool only, not to {type}");
+        }),
+        Function("NumToStr", "string", [P("Val", "num"), P("Dec", "num"), Sw("Exp")], call =>
+        {
+            double value = call.Num(0), dec = call.Num(1);
+            if (dec < 0 || dec > 15 || dec != Math.Floor(dec))
+            {
+                throw ArgumentError(call, $"NumToStr: {RapidValues.FormatNumber(dec)} is not a number of decimals");
+            }
+            return call.Has(2)
+                ? value.ToString("0." + new string('0', (int)dec) + "E+00", CultureInfo.InvariantCulture)
+                : NumberText(value, (int)dec);
+        }),
+        Function("ValToStr", "string", [P("Val", null)], call => RapidValues.ToText(call.Value(0))),
+    ];
+
+    /// <summary>A number rounded to <paramref name="decimals"/> decimals, without trailing zeros (NumToStr).</summary>
+    internal static string NumberText(double value, int decimals)
+    {
+        string text = Math.Round(value, decimals, MidpointRounding.AwayFromZero).ToString("F" + decimals, CultureInfo.InvariantCulture);
+        if (text.Contains('.', StringComparison.Ordinal))
+        {
+            text = text.TrimEnd('0').TrimEnd('.');
+        }
+        return text == "-0" ? "0" : text;
+    }
+
+    private static int StartOf(RapidCall call, string s, double position) =>
+        position >= 1 && position <= s.Length + 1 && position == Math.Floor(position)
+            ? (int)position - 1
+            : throw ArgumentError(call, $"the character position {RapidValues.FormatNumber(position)} is outside the string of length {s.Length}");
+
+    private static IEnumerable<RapidBuiltin> MathFunctions() =>
+    [
+        Function("Abs", "num", [P("Input", "num")], call => Math.Abs(call.Num(0))),
+        Function("Sqrt", "num", [P("Value", "num")], call => call.Num(0) >= 0 ? Math.Sqrt(call.Num(0)) : throw ArgumentError(call, "Sqrt: the value is negative")),
+        Function("Sin", "num", [P("Angle", "num")], call => Math.Sin(call.Num(0) * Math.PI / 180)),
+        Function("Cos", "num", [P("Angle", "num")], call => Math.Cos(call.Num(0) * Math.PI / 180)),
+        Function("Tan", "num", [P("Angle", "num")], call => Math.Tan(call.Num(0) * Math.PI / 180)),
+        Function("ASin", "num", [P("Value", "num")], call => Math.Asin(call.Num(0)) * 180 / Math.PI),
+        Function("ACos", "num", [P("Value", "num")], call => Math.Acos(call.Num(0)) * 180 / Math.PI),
+        Function("ATan", "num", [P("Value", "num")], call => Math.Atan(call.Num(0)) * 180 / Math.PI),
+        Function("ATan2", "num", [P("Y", "num"), P("X", "num")], call => Math.Atan2(call.Num(0), call.Num(1)) * 180 / Math.PI),
+        Function("Exp", "num", [P("Exponent", "num")], call => Math.Exp(call.Num(0))),
+        Function("Pow", "num", [P("Base", "num"), P("Exponent", "num")], call => Math.Pow(call.Num(0), call.Num(1))),
+        Function("Round", "num", [P("Val", "num"), Opt("Dec", "num")], call => Math.Round(call.Num(0), call.Has(1) ? (int)call.Num(1) : 0, MidpointRounding.AwayFromZero)),
+        Function("Trunc", "num", [P("Val", "num"), Opt("Dec", "num")], call =>
+        {
+            double scale = Math.Pow(10, call.Has(1) ? (int)call.Num(1) : 0);
+            return Math.Truncate(call.Num(0) * scale) / scale;
+        }),
+        Function("VectMagn", "num", [P("Vector", "pos")], call => RapidGeometry.ToVector(call.Record(0)).Length),
+    ];
+}

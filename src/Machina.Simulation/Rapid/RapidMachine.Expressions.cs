@@ -1,0 +1,163 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>Evaluating expressions and storing values.</summary>
+internal sealed partial class RapidMachine
+{
+    /// <summary>Largest string length (RAPID strings hold at most 80 characters).</summary>
+    public const int MaxStringLength = 80;
+
+    /// <summary>The value of <paramref name="e"/> (live data for a data reference: copy it before keeping it).</summary>
+    public object Evaluate(RapidExpr e, RapidFrame? frame)
+    {
+        switch (e)
+        {
+            case RapidLiteral l:
+                return l.Value;
+            case RapidName n:
+            {
+                object value = (n.Global ?? frame!.Cells[n.Slot]).Value;
+                return ReferenceEquals(value, Absent)
+                    ? throw new RapidRuntimeException(RapidErrorNumbers.NotPres, n.Line, $"the optional parameter '{n.Name}' is not present")
+                    : value;
+            }
+            case RapidComponent c:
+                return ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index];
+            case RapidIndex i:
+            {
+                var array = (RapidArray)Evaluate(i.Target, frame);
+                return array.Items[Offset(array, i, frame)];
+            }
+            case RapidAggregate a:
+                return Aggregate(a, frame);
+            case RapidUnary u:
+            {
+                object v = Evaluate(u.Operand, frame);
+                return u.Op switch
+                {
+                    "NOT" => !(bool)v,
+                    "-" when v is RapidRecord p => RapidGeometry.ToPosRecord(-RapidGeometry.ToVector(p)),
+                    "-" => -(double)v,
+                    _ => v,
+                };
+            }
+            case RapidBinary b:
+                return Binary(b, frame);
+            case RapidCallExpr call:
+                return Call(call.Target!, call.Args, frame, call.Line)!;
+            default:
+                throw new InvalidOperationException($"Unknown expression {e.GetType().Name}.");
+        }
+    }
+
+    /// <summary>Stores a copy of <paramref name="value"/> into the data <paramref name="target"/> refers to.</summary>
+    public void Store(RapidExpr target, RapidFrame? frame, object value)
+    {
+        value = RapidValues.Copy(value);
+        if (value is string s && s.Length > MaxStringLength)
+        {
+            throw new RapidRuntimeException(RapidErrorNumbers.StringTooLong, target.Line, $"the string is longer than {MaxStringLength} characters");
+        }
+        switch (target)
+        {
+            case RapidName n:
+                (n.Global ?? frame!.Cells[n.Slot]).Value = value;
+                break;
+            case RapidComponent c:
+                ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index] = value;
+                break;
+            case RapidIndex i:
+            {
+                var array = (RapidArray)Evaluate(i.Target, frame);
+                array.Items[Offset(array, i, frame)] = value;
+                break;
+            }
+            default:
+                throw new RapidRuntimeException(0, target.Line, "only data can be assigned");
+        }
+    }
+
+    private int Offset(RapidArray array, RapidIndex i, RapidFrame? frame)
+    {
+        int offset = 0;
+        for (int d = 0; d < i.Indices.Length; d++)
+        {
+            double index = (double)Evaluate(i.Indices[d], frame);
+            if (index != Math.Floor(index) || index < 1 || index > array.Dimensions[d])
+            {
+                throw new RapidRuntimeException(RapidErrorNumbers.OutOfBounds, i.Line,
+                    $"the index {RapidValues.FormatNumber(index)} is outside the array's bounds 1..{array.Dimensions[d]}");
+            }
+            offset = offset * array.Dimensions[d] + (int)index - 1;
+        }
+        return offset;
+    }
+
+    private object Aggregate(RapidAggregate a, RapidFrame? frame)
+    {
+        var items = new object[a.Items.Length];
+        for (int k = 0; k < items.Length; k++)
+        {
+            items[k] = RapidValues.Copy(Evaluate(a.Items[k], frame));
+        }
+        RapidDataType type = a.Type!.Value;
+        return type.Rank > 0 ? new RapidArray([items.Length], items) : new RapidRecord(type.Element, items);
+    }
+
+    private object Binary(RapidBinary b, RapidFrame? frame)
+    {
+        object l = Evaluate(b.Left, frame);
+        switch (b.Op)
+        {
+            case "AND":
+                return (bool)l && (bool)Evaluate(b.Right, frame);
+            case "OR":
+                return (bool)l || (bool)Evaluate(b.Right, frame);
+        }
+        object r = Evaluate(b.Right, frame);
+        switch (b.Op)
+        {
+            case "XOR":
+                return (bool)l ^ (bool)r;
+            case "=":
+                return RapidValues.AreEqual(l, r);
+            case "<>":
+                return !RapidValues.AreEqual(l, r);
+        }
+        if (l is double x && r is double y)
+        {
+            return b.Op switch
+            {
+                "+" => Checked(x + y, b),
+                "-" => Checked(x - y, b),
+                "*" => Checked(x * y, b),
+                "/" => y == 0 ? throw DivZero(b) : Checked(x / y, b),
+                "DIV" => y == 0 ? throw DivZero(b) : Math.Truncate(Integer(x, b) / Integer(y, b)),
+                "MOD" => y == 0 ? throw DivZero(b) : Integer(x, b) % Integer(y, b),
+                "<" => x < y,
+                ">" => x > y,
+                "<=" => x <= y,
+                _ => x >= y,
+            };
+        }
+        if (l is string ls && r is string rs)
+        {
+            return ls + rs;
+        }
+        if (l is RapidRecord lp && r is RapidRecord rp)
+        {
+            Vector sum = b.Op == "+" ? RapidGeometry.ToVector(lp) + RapidGeometry.ToVector(rp) : RapidGeometry.ToVector(lp) - RapidGeometry.ToVector(rp);
+            return RapidGeometry.ToPosRecord(sum);
+        }
+        return l is RapidRecord p ? RapidGeometry.ToPosRecord(RapidGeometry.ToVector(p) * (double)r) : RapidGeometry.ToPosRecord(RapidGeometry.ToVector((RapidRecord)r) * (double)l);
+    }
+
+    private static double Checked(double value, RapidBinary b) => double.IsFinite(value)
+        ? value
+        : throw new RapidRuntimeException(RapidErrorNumbers.NumOverflow, b.Line, "the result is too large (overflow)");
+
+    private static double Integer(double value, RapidBinary b) => value == Math.Floor(value)
+        ? value
+        : throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, b.Line, $"{b.Op} needs integers, not {RapidValues.FormatNumber(value)}");
+
+    private static RapidRuntimeException DivZero(RapidBinary b) => new(RapidErrorNumbers.DivZero, b.Line, "division by zero");
+}

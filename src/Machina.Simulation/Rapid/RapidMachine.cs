@@ -1,0 +1,276 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Runs the statements of one RAPID task: control flow, routine calls (parameters by value or by reference), error handlers
+/// (ERRNO, RETRY, TRYNEXT, RAISE, RETURN), GOTO and labels. Built-ins act on the task's controller.
+/// </summary>
+internal sealed partial class RapidMachine(RapidTask task)
+{
+    /// <summary>The value of an optional parameter that was not given.</summary>
+    internal static readonly object Absent = new();
+
+    /// <summary>The task this machine runs.</summary>
+    public RapidTask Task { get; } = task;
+
+    /// <summary>How deep routine calls may nest before the controller stops the task.</summary>
+    public const int MaxDepth = 256;
+
+    private int _depth;
+
+    /// <summary>Calls a routine with no arguments (main, or a trap).</summary>
+    public void Run(RapidRoutine routine) => Invoke(routine, [], new RapidCallTarget(null, routine, []), null, routine.Line);
+
+    private RapidFlow ExecuteBlock(List<RapidStmt> body, RapidFrame frame)
+    {
+        int i = 0;
+        while (i < body.Count)
+        {
+            RapidFlow flow = frame.Routine.ErrorHandler is null || frame.Handling is not null
+                ? Execute(body[i], frame)
+                : ExecuteGuarded(body[i], frame);
+            if (flow == RapidFlow.Next)
+            {
+                i++;
+                continue;
+            }
+            if (flow == RapidFlow.Goto && LabelIn(body, frame.GotoLabel!) is int target and >= 0)
+            {
+                frame.GotoLabel = null;
+                i = target;
+                continue;
+            }
+            return flow;
+        }
+        return RapidFlow.Next;
+    }
+
+    private static int LabelIn(List<RapidStmt> body, string label) =>
+        body.FindIndex(s => s is RapidJump { Kind: RapidJumpKind.Label } j && j.Label!.Equals(label, StringComparison.OrdinalIgnoreCase));
+
+    /// <summary>Runs a statement of a routine that has an ERROR handler: a RAPID error in it goes to the handler.</summary>
+    private RapidFlow ExecuteGuarded(RapidStmt statement, RapidFrame frame)
+    {
+        while (true)
+        {
+            try
+            {
+                return Execute(statement, frame);
+            }
+            catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null)
+            {
+                frame.Handling = ex;
+                Task.Program.Errno.Value = (double)ex.ErrorNumber;
+                RapidFlow flow;
+                try
+                {
+                    flow = ExecuteBlock(frame.Routine.ErrorHandler!, frame);
+                }
+                finally
+                {
+                    frame.Handling = null;
+                }
+                switch (flow)
+                {
+                    case RapidFlow.Retry:
+                        Task.CancellationToken.ThrowIfCancellationRequested();
+                        continue;
+                    case RapidFlow.TryNext:
+                        return RapidFlow.Next;
+                    default:
+                        return RapidFlow.Return;
+                }
+            }
+        }
+    }
+
+    private RapidFlow Execute(RapidStmt statement, RapidFrame frame)
+    {
+        switch (statement)
+        {
+            case RapidAssign a:
+                Store(a.Target, frame, Evaluate(a.Value, frame));
+                return RapidFlow.Next;
+            case RapidProcCall call:
+                Call(call.Target!, call.Args, frame, call.Line);
+                return RapidFlow.Next;
+            case RapidIf i:
+                foreach ((RapidExpr condition, List<RapidStmt> body) in i.Branches)
+                {
+                    if ((bool)Evaluate(condition, frame))
+                    {
+                        return ExecuteBlock(body, frame);
+                    }
+                }
+                return i.Otherwise is null ? RapidFlow.Next : ExecuteBlock(i.Otherwise, frame);
+            case RapidWhile w:
+                while ((bool)Evaluate(w.Condition, frame))
+                {
+                    Task.Tick();
+                    RapidFlow flow = ExecuteBlock(w.Body, frame);
+                    if (flow != RapidFlow.Next)
+                    {
+                        return flow;
+                    }
+                }
+                return RapidFlow.Next;
+            case RapidFor f:
+                return For(f, frame);
+            case RapidTest t:
+            {
+                object value = Evaluate(t.Value, frame);
+                foreach ((RapidExpr[] values, List<RapidStmt> body) in t.Cases)
+                {
+                    foreach (RapidExpr v in values)
+                    {
+                        if (RapidValues.AreEqual(value, Evaluate(v, frame)))
+                        {
+                            return ExecuteBlock(body, frame);
+                        }
+                    }
+                }
+                return t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
+            }
+            case RapidJump j:
+                return Jump(j, frame);
+            case RapidConnect c:
+                Store(c.Interrupt, frame, (double)Task.Connect(c.Routine!));
+                return RapidFlow.Next;
+            default:
+                throw new InvalidOperationException($"Unknown statement {statement.GetType().Name}.");
+        }
+    }
+
+    private RapidFlow For(RapidFor f, RapidFrame frame)
+    {
+        double from = (double)Evaluate(f.From, frame), to = (double)Evaluate(f.To, frame);
+        double step = f.Step is null ? (to >= from ? 1 : -1) : (double)Evaluate(f.Step, frame);
+        if (step == 0)
+        {
+            throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, f.Line, "the STEP of a FOR loop is 0");
+        }
+        var cell = new RapidCell(f.Variable, new RapidDataType(RapidTypes.Num), RapidStorage.Var, from);
+        frame.Cells[f.Slot] = cell;
+        for (double v = from; step > 0 ? v <= to : v >= to; v += step)
+        {
+            Task.Tick();
+            cell.Value = v;
+            RapidFlow flow = ExecuteBlock(f.Body, frame);
+            if (flow != RapidFlow.Next)
+            {
+                return flow;
+            }
+        }
+        return RapidFlow.Next;
+    }
+
+    private RapidFlow Jump(RapidJump j, RapidFrame frame)
+    {
+        switch (j.Kind)
+        {
+            case RapidJumpKind.Label:
+                return RapidFlow.Next;
+            case RapidJumpKind.Goto:
+                frame.GotoLabel = j.Label;
+                return RapidFlow.Goto;
+            case RapidJumpKind.Return:
+                frame.ReturnValue = j.Value is null ? null : Evaluate(j.Value, frame);
+                return RapidFlow.Return;
+            case RapidJumpKind.Retry:
+                return RapidFlow.Retry;
+            case RapidJumpKind.TryNext:
+                return RapidFlow.TryNext;
+            case RapidJumpKind.Exit or RapidJumpKind.Stop:
+                throw new RapidHaltException(j.Kind == RapidJumpKind.Exit, j.Line);
+            default:
+                if (j.Value is null)
+                {
+                    RapidRuntimeException handled = frame.Handling!;
+                    handled.RaisedBy = frame;
+                    throw handled;
+                }
+                double errno = (double)Evaluate(j.Value, frame);
+                throw new RapidRuntimeException((int)errno, j.Line, $"error {RapidValues.FormatNumber(errno)} raised by the program and not handled");
+        }
+    }
+
+    /// <summary>Calls a built-in or a routine of the program; returns a function's value.</summary>
+    private object? Call(RapidCallTarget target, RapidArg[] args, RapidFrame? frame, int line)
+    {
+        if (target.Builtin is { } builtin)
+        {
+            return builtin.Run(new RapidCall(this, frame, args, target, line));
+        }
+        return Invoke(target.Routine!, args, target, frame, line);
+    }
+
+    private object? Invoke(RapidRoutine routine, RapidArg[] args, RapidCallTarget target, RapidFrame? caller, int line)
+    {
+        if (++_depth > MaxDepth)
+        {
+            _depth = 0;
+            throw new RapidRuntimeException(0, line, $"the routine calls are nested deeper than {MaxDepth} levels");
+        }
+        try
+        {
+            var cells = new RapidCell[routine.FrameSize];
+            List<(RapidExpr Arg, RapidCell Cell)>? writeBack = null;
+            for (int p = 0; p < routine.Parameters.Count; p++)
+            {
+                RapidParam param = routine.Parameters[p];
+                RapidDataType type = routine.SlotTypes[p];
+                int k = target.ArgumentOf[p];
+                if (k < 0)
+                {
+                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, Absent);
+                }
+                else if (param.IsSwitch)
+                {
+                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, true);
+                }
+                else if (param.Mode != RapidParamMode.In && args[k].Value is RapidName name)
+                {
+                    cells[p] = name.Global ?? caller!.Cells[name.Slot];
+                }
+                else
+                {
+                    RapidExpr arg = args[k].Value!;
+                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, RapidValues.Copy(Evaluate(arg, caller)));
+                    if (param.Mode != RapidParamMode.In)
+                    {
+                        (writeBack ??= []).Add((arg, cells[p]));
+                    }
+                }
+            }
+            var frame = new RapidFrame(routine, cells);
+            int slot = routine.Parameters.Count;
+            foreach (RapidDataDecl decl in routine.Data)
+            {
+                RapidDataType type = routine.SlotTypes[slot];
+                int[] dims = [.. decl.Dimensions.Select(d => (int)(double)Evaluate(d, frame))];
+                object value = decl.Initial is null ? RapidValues.Default(type, dims) : RapidValues.Copy(Evaluate(decl.Initial, frame));
+                cells[slot++] = new RapidCell(decl.Name, type, decl.Storage, value);
+            }
+            RapidFlow flow = ExecuteBlock(routine.Body, frame);
+            if (flow == RapidFlow.Goto)
+            {
+                throw new RapidRuntimeException(0, line, $"the label '{frame.GotoLabel}' cannot be reached from its GOTO");
+            }
+            if (writeBack is not null)
+            {
+                foreach ((RapidExpr arg, RapidCell cell) in writeBack)
+                {
+                    Store(arg, caller, cell.Value);
+                }
+            }
+            if (routine.Kind == RapidRoutineKind.Func && frame.ReturnValue is null)
+            {
+                throw new RapidRuntimeException(0, line, $"the function '{routine.Name}' ended without RETURN");
+            }
+            return frame.ReturnValue;
+        }
+        finally
+        {
+            _depth--;
+        }
+    }
+}

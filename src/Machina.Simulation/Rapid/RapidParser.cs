@@ -1,0 +1,255 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Parses a RAPID module (RAPID reference manual, "Basic elements" and "Modules"): <c>MODULE name(attributes)</c>, records,
+/// data declarations, PROC/FUNC/TRAP routines with error handlers, up to <c>ENDMODULE</c>.
+/// </summary>
+internal sealed partial class RapidParser
+{
+    private static readonly string[] BodyEnds = ["ERROR", "BACKWARD", "UNDO", "ENDFUNC", "ENDTRAP", "ENDPROC"];
+
+    private readonly RapidToken[] _tokens;
+    private int _at;
+
+    private RapidParser(List<RapidToken> tokens) => _tokens = [.. tokens];
+
+    /// <summary>Parses one module; throws <see cref="RapidLoadException"/> at the first syntax error.</summary>
+    public static RapidModule Parse(string text) => new RapidParser(RapidLexer.Tokenize(text)).Module();
+
+    private ref readonly RapidToken Peek => ref _tokens[_at];
+
+    private RapidToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Length - 1)];
+
+    private RapidToken Next() => _tokens[_at < _tokens.Length - 1 ? _at++ : _at];
+
+    private RapidLoadException Error(string what, RapidToken? at = null) =>
+        new((at ?? Peek).Line, RapidLoadException.Syntax(what));
+
+    private RapidToken Expect(string symbol)
+    {
+        if (!Peek.IsSymbol(symbol))
+        {
+            throw Error($"'{symbol}' expected, found '{Peek.Text}'");
+        }
+        return Next();
+    }
+
+    private RapidToken ExpectWord(string word)
+    {
+        if (!Peek.Is(word))
+        {
+            throw Error($"'{word}' expected, found '{Peek.Text}'");
+        }
+        return Next();
+    }
+
+    private string Identifier(string what)
+    {
+        if (Peek.Kind != RapidTokenKind.Name || IsReserved(Peek.Text))
+        {
+            throw Error($"{what} expected, found '{Peek.Text}'");
+        }
+        return Next().Text;
+    }
+
+    private bool Accept(string symbol)
+    {
+        if (Peek.IsSymbol(symbol))
+        {
+            _at++;
+            return true;
+        }
+        return false;
+    }
+
+    private bool AcceptWord(string word)
+    {
+        if (Peek.Is(word))
+        {
+            _at++;
+            return true;
+        }
+        return false;
+    }
+
+    private RapidModule Module()
+    {
+        int line = ExpectWord("MODULE").Line;
+        string name = Identifier("a module name");
+        var attributes = new List<string>();
+        if (Accept("("))
+        {
+            do
+            {
+                attributes.Add(Identifier("a module attribute").ToUpperInvariant());
+            }
+            while (Accept(","));
+            Expect(")");
+        }
+        var module = new RapidModule(line, name, attributes);
+        while (!Peek.Is("ENDMODULE"))
+        {
+            if (Peek.Kind == RapidTokenKind.End)
+            {
+                throw Error("'ENDMODULE' expected");
+            }
+            ModuleItem(module);
+        }
+        Next();
+        if (Peek.Kind != RapidTokenKind.End)
+        {
+            throw Error($"nothing may follow ENDMODULE, found '{Peek.Text}'");
+        }
+        return module;
+    }
+
+    private void ModuleItem(RapidModule module)
+    {
+        bool local = AcceptWord("LOCAL");
+        bool task = !local && AcceptWord("TASK");
+        RapidToken head = Peek;
+        if (head.Is("RECORD"))
+        {
+            Next();
+            string name = Identifier("a record name");
+            var fields = new List<(string, string)>();
+            while (!AcceptWord("ENDRECORD"))
+            {
+                string type = Identifier("a component type");
+                fields.Add((type, Identifier("a component name")));
+                Expect(";");
+            }
+            module.Records.Add(new RapidRecordDecl(head.Line, name, fields));
+        }
+        else if (head.Is("PROC") || head.Is("FUNC") || head.Is("TRAP"))
+        {
+            RapidRoutine routine = Routine(local);
+            routine.Module = module;
+            module.Routines.Add(routine);
+        }
+        else if (head.Is("VAR") || head.Is("CONST") || head.Is("PERS"))
+        {
+            module.Data.Add(DataDecl(local));
+        }
+        else if (head.Is("ALIAS"))
+        {
+            throw Error("ALIAS declarations are not supported by the twin");
+        }
+        else
+        {
+            throw Error($"a declaration expected, found '{head.Text}'{(task ? " after TASK" : "")}");
+        }
+    }
+
+    private RapidDataDecl DataDecl(bool local)
+    {
+        RapidToken head = Next();
+        RapidStorage storage = head.Is("CONST") ? RapidStorage.Const : head.Is("PERS") ? RapidStorage.Pers : RapidStorage.Var;
+        string type = Identifier("a data type");
+        string name = Identifier("a data name");
+        var dims = new List<RapidExpr>();
+        if (Accept("{"))
+        {
+            do
+            {
+                dims.Add(Expression());
+            }
+            while (Accept(","));
+            Expect("}");
+        }
+        RapidExpr? initial = null;
+        if (Accept(":="))
+        {
+            initial = Expression();
+        }
+        else if (storage == RapidStorage.Const)
+        {
+            throw Error($"the constant '{name}' needs a value (':=' expected)");
+        }
+        Expect(";");
+        return new RapidDataDecl(head.Line, storage, type, name, [.. dims], initial, local);
+    }
+
+    private RapidRoutine Routine(bool local)
+    {
+        RapidToken head = Next();
+        RapidRoutineKind kind = head.Is("PROC") ? RapidRoutineKind.Proc : head.Is("FUNC") ? RapidRoutineKind.Func : RapidRoutineKind.Trap;
+        string? returnType = kind == RapidRoutineKind.Func ? Identifier("the type the function returns") : null;
+        string name = Identifier("a routine name");
+        var parameters = new List<RapidParam>();
+        if (kind != RapidRoutineKind.Trap)
+        {
+            Expect("(");
+            if (!Peek.IsSymbol(")"))
+            {
+                do
+                {
+                    Parameters(parameters);
+                }
+                while (Accept(",") || Peek.IsSymbol("\\"));
+            }
+            Expect(")");
+        }
+        var routine = new RapidRoutine(head.Line, kind, name, returnType, parameters, local);
+        while (Peek.Is("VAR") || Peek.Is("CONST") || Peek.Is("PERS"))
+        {
+            routine.Data.Add(DataDecl(false));
+        }
+        routine.Body.AddRange(Statements(BodyEnds));
+        if (AcceptWord("ERROR"))
+        {
+            if (Accept("("))
+            {
+                do
+                {
+                    Expression();
+                }
+                while (Accept(","));
+                Expect(")");
+            }
+            routine.ErrorHandler = Statements(BodyEnds);
+        }
+        if (Peek.Is("BACKWARD") || Peek.Is("UNDO"))
+        {
+            throw Error($"{Peek.Text.ToUpperInvariant()} handlers are not supported by the twin");
+        }
+        string end = kind switch { RapidRoutineKind.Proc => "ENDPROC", RapidRoutineKind.Func => "ENDFUNC", _ => "ENDTRAP" };
+        ExpectWord(end);
+        return routine;
+    }
+
+    private void Parameters(List<RapidParam> parameters)
+    {
+        bool optional = Accept("\\");
+        do
+        {
+            RapidParamMode mode = AcceptWord("VAR") ? RapidParamMode.Var : AcceptWord("PERS") ? RapidParamMode.Pers
+                : AcceptWord("INOUT") ? RapidParamMode.InOut : RapidParamMode.In;
+            string type = Identifier("a parameter type");
+            string name = Identifier("a parameter name");
+            int rank = 0;
+            if (Accept("{"))
+            {
+                do
+                {
+                    Expect("*");
+                    rank++;
+                }
+                while (Accept(","));
+                Expect("}");
+            }
+            parameters.Add(new RapidParam(name, type, mode, optional, rank));
+        }
+        while (optional && Accept("|"));
+    }
+
+    private static readonly HashSet<string> Reserved = new(
+    [
+        "AND", "OR", "XOR", "NOT", "DIV", "MOD", "IF", "THEN", "ELSE", "ELSEIF", "ENDIF", "WHILE", "DO", "ENDWHILE", "FOR", "FROM", "TO", "STEP",
+        "ENDFOR", "TEST", "CASE", "DEFAULT", "ENDTEST", "GOTO", "RETURN", "RETRY", "TRYNEXT", "RAISE", "ERROR", "ENDPROC", "ENDFUNC", "ENDTRAP",
+        "ENDMODULE", "MODULE", "PROC", "FUNC", "TRAP", "VAR", "CONST", "PERS", "LOCAL", "TASK", "RECORD", "ENDRECORD", "CONNECT", "WITH", "INOUT",
+        "BACKWARD", "UNDO", "ALIAS", "TRUE", "FALSE",
+    ], StringComparer.OrdinalIgnoreCase);
+
+    private static bool IsReserved(string word) => Reserved.Contains(word);
+}

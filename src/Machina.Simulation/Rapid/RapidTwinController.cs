@@ -1,0 +1,195 @@
+using System.Xml.Linq;
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// An ABB controller that runs RAPID: modules are loaded into a task the way the controller loads them (a mistake refuses the
+/// module, with its line), <c>main</c> runs on the twin arm with the model's kinematics, and an error that no handler takes
+/// stops the task with the controller's message, as in the event log.
+/// </summary>
+internal sealed class RapidTwinController
+{
+    /// <summary>The name of the motion task.</summary>
+    public const string MotionTask = "T_ROB1";
+
+    private readonly Lock _gate = new();
+    private readonly Dictionary<string, RapidTask> _tasks = new(StringComparer.OrdinalIgnoreCase);
+    private readonly Dictionary<string, (bool Digital, bool Output, int Index)> _signals = new(StringComparer.OrdinalIgnoreCase);
+    private RapidProgramState _state;
+    private string? _error;
+
+    /// <summary>A controller with <paramref name="options"/> (IRB 120, not real-time, by default).</summary>
+    public RapidTwinController(RapidTwinOptions? options = null)
+    {
+        Options = options ?? new RapidTwinOptions();
+        Clock = new TwinClock(Options.Time, Options.RealTime);
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock);
+        foreach ((string name, string type) in Options.Signals)
+        {
+            string kind = type.ToLowerInvariant();
+            if (kind is not ("signaldo" or "signaldi" or "signalao" or "signalai"))
+            {
+                throw new ArgumentException($"The signal \"{name}\" has the type \"{type}\"; the twin has signaldo, signaldi, signalao and signalai.", nameof(options));
+            }
+            string bank = kind[^2..];
+            _signals[name] = (bank[0] == 'd', bank[1] == 'o', _signals.Count(s => Bank(s.Value) == bank));
+        }
+        foreach (string bank in new[] { "do", "di" })
+        {
+            Io.AddBits(bank, Math.Max(1, _signals.Count(s => Bank(s.Value) == bank)));
+        }
+        foreach (string bank in new[] { "ao", "ai" })
+        {
+            Io.AddNumbers(bank, Math.Max(1, _signals.Count(s => Bank(s.Value) == bank)));
+        }
+    }
+
+    /// <summary>The settings.</summary>
+    public RapidTwinOptions Options { get; }
+
+    /// <summary>The controller's clock.</summary>
+    public TwinClock Clock { get; }
+
+    /// <summary>The arm.</summary>
+    public TwinArm Arm { get; }
+
+    /// <summary>The signals of the IO configuration: banks do, di, ao, ai, in the order of the options.</summary>
+    public TwinIo Io { get; } = new();
+
+    /// <summary>The event log and the FlexPendant's messages.</summary>
+    public TwinPendant Pendant { get; } = new();
+
+    /// <summary>The instructions and functions RAPID programs may call.</summary>
+    public IReadOnlyDictionary<string, RapidBuiltin> Builtins => RapidBuiltins.All;
+
+    /// <summary>The PERS data, shared by every task.</summary>
+    internal Dictionary<string, RapidCell> Persistents { get; } = new(StringComparer.OrdinalIgnoreCase);
+
+    /// <summary>How the last program run ended.</summary>
+    public RapidProgramState State
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _state;
+            }
+        }
+    }
+
+    /// <summary>The message of the error that stopped the last run (null when none did).</summary>
+    public string? Error
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _error;
+            }
+        }
+    }
+
+    /// <summary>The task called <paramref name="name"/>, made when first asked for.</summary>
+    public RapidTask Task(string name = MotionTask)
+    {
+        lock (_gate)
+        {
+            if (!_tasks.TryGetValue(name, out RapidTask? task))
+            {
+                task = new RapidTask(this, name);
+                _tasks[name] = task;
+            }
+            return task;
+        }
+    }
+
+    /// <summary>Loads modules (name, text) into the motion task; throws <see cref="RapidLoadException"/> for the first mistake.</summary>
+    public void Load(params (string Name, string Text)[] modules) => Task().Load(modules);
+
+    /// <summary>
+    /// Loads a program as the controller does: a <c>.pgf</c> file lists its modules (<c>&lt;Module&gt;name.mod&lt;/Module&gt;</c>), a
+    /// <c>.mod</c> file is one module, a folder holds one <c>.pgf</c> or its <c>.mod</c> files.
+    /// </summary>
+    public void LoadFrom(string path) => Load([.. ModuleFiles(path).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))]);
+
+    /// <summary>The module files of a program path (see <see cref="LoadFrom"/>).</summary>
+    public static IReadOnlyList<string> ModuleFiles(string path)
+    {
+        if (Directory.Exists(path))
+        {
+            string[] programs = Directory.GetFiles(path, "*.pgf");
+            if (programs.Length == 1)
+            {
+                return ModuleFiles(programs[0]);
+            }
+            string[] modules = Directory.GetFiles(path, "*.mod");
+            Array.Sort(modules, StringComparer.Ordinal);
+            return modules.Length > 0 ? modules : throw new FileNotFoundException($"The folder \"{path}\" has no .pgf or .mod file.");
+        }
+        if (path.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase))
+        {
+            string folder = Path.GetDirectoryName(Path.GetFullPath(path))!;
+            return [.. XDocument.Load(path).Descendants("Module").Select(m => Path.Combine(folder, m.Value.Trim()))];
+        }
+        return [path];
+    }
+
+    /// <summary>
+    /// Runs <paramref name="entry"/> (main) of the motion task to its end: EXIT or the end of main finish it, Stop stops it, an error
+    /// that no handler takes fails it and its message goes to the event log.
+    /// </summary>
+    public RapidProgramState Run(string entry = "main", CancellationToken cancellation = default)
+    {
+        RapidTask task = Task();
+        RapidRoutine? main = task.Program.Find(entry);
+        if (main is not { Kind: RapidRoutineKind.Proc } || main.Parameters.Count > 0)
+        {
+            return Finish(RapidProgramState.Failed, $"Execution error: the task {task.Name} has no procedure '{entry}' without parameters");
+        }
+        lock (_gate)
+        {
+            _state = RapidProgramState.Running;
+            _error = null;
+        }
+        task.CancellationToken = cancellation;
+        try
+        {
+            task.Machine.Run(main);
+            return Finish(RapidProgramState.Finished, null);
+        }
+        catch (RapidHaltException halt)
+        {
+            return Finish(halt.Exit ? RapidProgramState.Finished : RapidProgramState.Stopped, null);
+        }
+        catch (RapidRuntimeException ex)
+        {
+            string message = ex.Event > 0 ? $"{ex.Event} {ex.Reason} (line {ex.Line}, task {task.Name})" : $"{ex.Message} (task {task.Name})";
+            return Finish(RapidProgramState.Failed, message);
+        }
+        catch (OperationCanceledException)
+        {
+            return Finish(RapidProgramState.Stopped, null);
+        }
+    }
+
+    private RapidProgramState Finish(RapidProgramState state, string? error)
+    {
+        lock (_gate)
+        {
+            _state = state;
+            _error = error;
+        }
+        if (error is not null)
+        {
+            Pendant.Log(error);
+        }
+        return state;
+    }
+
+    /// <summary>The IO bank and index of signal <paramref name="name"/>, or null when the configuration has no such signal.</summary>
+    internal (string Bank, int Index)? Signal(string name) =>
+        _signals.TryGetValue(name, out (bool Digital, bool Output, int Index) s) ? (Bank(s), s.Index) : null;
+
+    private static string Bank((bool Digital, bool Output, int Index) s) => (s.Digital ? "d" : "a") + (s.Output ? "o" : "i");
+}

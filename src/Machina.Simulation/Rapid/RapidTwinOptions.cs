@@ -1,0 +1,23 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>Settings of a RAPID twin controller.</summary>
+internal sealed class RapidTwinOptions
+{
+    /// <summary>The arm model (default IRB 120, as the virtual ABB).</summary>
+    public RobotModel Model { get; init; } = RobotModels.Get("IRB 120");
+
+    /// <summary>The joints (degrees) the arm starts at: ABB's calibration position with the wrist bent down.</summary>
+    public Joints StartJoints { get; init; } = new(0, 0, 0, 0, 90, 0);
+
+    /// <summary>The time source for real-time motion and waits.</summary>
+    public TimeProvider Time { get; init; } = TimeProvider.System;
+
+    /// <summary>True: motion and waits take their time on <see cref="Time"/>; false: they return at once (program time still adds up).</summary>
+    public bool RealTime { get; init; }
+
+    /// <summary>The IO configuration: signal names with their type (signaldo, signaldi, signalao, signalai).</summary>
+    public IReadOnlyList<(string Name, string Type)> Signals { get; init; } = [];
+
+    /// <summary>The TCP acceleration (m/s²) motion time assumes when the program sets no WorldAccLim.</summary>
+    public double Acceleration { get; init; } = 5;
+}

@@ -1,0 +1,153 @@
+using System.Globalization;
+using System.Text;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>A record value: its type and its components (double, bool, string, records, arrays).</summary>
+internal sealed class RapidRecord(RapidType type, object[] fields)
+{
+    /// <summary>The record type.</summary>
+    public RapidType Type { get; } = type;
+
+    /// <summary>The components, in the order of the type.</summary>
+    public object[] Fields { get; } = fields;
+}
+
+/// <summary>An array value (1 to 3 dimensions, 1-based indices), stored row by row.</summary>
+internal sealed class RapidArray(int[] dimensions, object[] items)
+{
+    /// <summary>The size of each dimension.</summary>
+    public int[] Dimensions { get; } = dimensions;
+
+    /// <summary>The elements.</summary>
+    public object[] Items { get; } = items;
+}
+
+/// <summary>A storage place for data: a global, a persistent, or a local of a routine call.</summary>
+internal sealed class RapidCell(string name, RapidDataType type, RapidStorage storage, object value)
+{
+    /// <summary>The data's name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>Its static type.</summary>
+    public RapidDataType Type { get; } = type;
+
+    /// <summary>CONST, VAR or PERS.</summary>
+    public RapidStorage Storage { get; } = storage;
+
+    /// <summary>The value now.</summary>
+    public object Value { get; set; } = value;
+}
+
+/// <summary>Value helpers: defaults, copies (RAPID data are values: storing copies them), equality and text.</summary>
+internal static class RapidValues
+{
+    /// <summary>The initial value of data of type <paramref name="type"/> with <paramref name="dimensions"/> (0, FALSE, "" and so on).</summary>
+    public static object Default(RapidDataType type, int[]? dimensions = null)
+    {
+        if (type.Rank > 0)
+        {
+            int[] dims = dimensions ?? new int[type.Rank];
+            int count = dims.Aggregate(1, (a, b) => a * b);
+            var items = new object[count];
+            for (int i = 0; i < count; i++)
+            {
+                items[i] = Default(new RapidDataType(type.Element));
+            }
+            return new RapidArray(dims, items);
+        }
+        RapidType t = type.Element;
+        return t.Kind switch
+        {
+            RapidTypeKind.Num or RapidTypeKind.Dnum => 0.0,
+            RapidTypeKind.Bool => false,
+            RapidTypeKind.String => "",
+            RapidTypeKind.Record => new RapidRecord(t, [.. t.Fields.Select(f => Default(f.Type))]),
+            _ => t.Create?.Invoke() ?? new object(),
+        };
+    }
+
+    /// <summary>A copy of <paramref name="value"/>: records and arrays are copied deeply; non-value data are shared.</summary>
+    public static object Copy(object value) => value switch
+    {
+        RapidRecord r => new RapidRecord(r.Type, CopyAll(r.Fields)),
+        RapidArray a => new RapidArray(a.Dimensions, CopyAll(a.Items)),
+        _ => value,
+    };
+
+    private static object[] CopyAll(object[] items)
+    {
+        var copy = new object[items.Length];
+        for (int i = 0; i < items.Length; i++)
+        {
+            copy[i] = Copy(items[i]);
+        }
+        return copy;
+    }
+
+    /// <summary>True when two values are equal (numbers exactly, records component by component).</summary>
+    public static bool AreEqual(object a, object b) => (a, b) switch
+    {
+        (double x, double y) => x == y,
+        (RapidRecord x, RapidRecord y) => x.Fields.Length == y.Fields.Length && x.Fields.Zip(y.Fields).All(p => AreEqual(p.First, p.Second)),
+        (RapidArray x, RapidArray y) => x.Items.Length == y.Items.Length && x.Items.Zip(y.Items).All(p => AreEqual(p.First, p.Second)),
+        _ => a.Equals(b),
+    };
+
+    /// <summary>A number as the controller writes it with <c>ValToStr</c>: up to 6 significant digits.</summary>
+    public static string FormatNumber(double value)
+    {
+        if (value == Math.Round(value) && Math.Abs(value) < 1e7)
+        {
+            return value.ToString("0", CultureInfo.InvariantCulture);
+        }
+        return value.ToString("G6", CultureInfo.InvariantCulture).Replace("E+", "E", StringComparison.Ordinal);
+    }
+
+    /// <summary>A value as <c>ValToStr</c> writes it: numbers, <c>TRUE</c>/<c>FALSE</c>, quoted strings, <c>[…]</c> aggregates.</summary>
+    public static string ToText(object value)
+    {
+        var text = new StringBuilder();
+        Append(text, value, true);
+        return text.ToString();
+    }
+
+    private static void Append(StringBuilder text, object value, bool top)
+    {
+        switch (value)
+        {
+            case double d:
+                text.Append(FormatNumber(d));
+                break;
+            case bool b:
+                text.Append(b ? "TRUE" : "FALSE");
+                break;
+            case string s:
+                text.Append(top ? s : $"\"{s}\"");
+                break;
+            case RapidRecord r:
+                AppendAll(text, r.Fields);
+                break;
+            case RapidArray a:
+                AppendAll(text, a.Items);
+                break;
+            default:
+                text.Append(value);
+                break;
+        }
+    }
+
+    private static void AppendAll(StringBuilder text, object[] items)
+    {
+        text.Append('[');
+        for (int i = 0; i < items.Length; i++)
+        {
+            if (i > 0)
+            {
+                text.Append(',');
+            }
+            Append(text, items[i], false);
+        }
+        text.Append(']');
+    }
+}
