@@ -61,11 +61,12 @@ public sealed partial class Robot
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Unknown online event."),
     };
 
-    void IOnlineHost.WithIssueCursor(Action<RobotCursor> change)
+    IReadOnlyList<(LogLevel Level, string Message)>? IOnlineHost.WithIssueCursor(Action<RobotCursor> change)
     {
         lock (_issueLock)
         {
             change(_issueCursor);
+            return TakeLockedLog();   // written by the session on its event pump, never under the lock
         }
     }
 

@@ -96,9 +96,16 @@ internal sealed partial class OnlineSession
     }
 
     /// <summary>Runs <paramref name="change"/> on the loop under the robot's issue lock, with every issued action in the buffer.</summary>
-    private void WithIssueCursor(Action<RobotCursor> change) => _host.WithIssueCursor(issue =>
+    private void WithIssueCursor(Action<RobotCursor> change)
     {
-        TakeIssued();
-        change(issue);
-    });
+        IReadOnlyList<(LogLevel Level, string Message)>? lines = _host.WithIssueCursor(issue =>
+        {
+            TakeIssued();
+            change(issue);
+        });
+        foreach ((LogLevel level, string message) in lines ?? [])
+        {
+            Log(level, message);
+        }
+    }
 }
