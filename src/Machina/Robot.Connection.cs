@@ -344,7 +344,7 @@ public sealed partial class Robot
     internal Task FlushEventsAsync() => _session?.FlushEventsAsync() ?? Task.CompletedTask;
 
     private Func<IDeviceDriver> CreateDriverFactory(IOnlineBrand brand) =>
-        () => brand.CreateDriver(new DeviceContext(Logger, Time, Name, Model, MotionUpdateRate));
+        () => brand.CreateDriver(new DeviceContext(_session?.DriverLog ?? Logger, Time, Name, Model, MotionUpdateRate));
 
     /// <summary>
     /// How many live pose reports per second the robot asks its controller for while connected (Hz, default 50), which set

@@ -335,8 +335,15 @@ internal sealed partial class OnlineSession
             return;
         }
         TimeSpan period = TimeSpan.FromTicks(Math.Clamp(timeout.Ticks / 4, TimeSpan.TicksPerMillisecond * 10, TimeSpan.TicksPerSecond));
-        // A tick is a message: the timer thread only posts it (and runs the loop if it is idle).
-        _watchdog = _time.CreateTimer(_ => Post(() => CheckSilence(link, timeout)), null, period, period);
+        // A tick is a message, posted only once the controller was silent longer than the timeout (CheckSilence adds the
+        // expected duration of the action under way); _lastProgress is written by the loop only.
+        _watchdog = _time.CreateTimer(_ =>
+        {
+            if (_time.GetElapsedTime(Volatile.Read(ref _lastProgress)) > timeout)
+            {
+                Post(() => CheckSilence(link, timeout));
+            }
+        }, null, period, period);
     }
 
     private void CheckSilence(Connection link, TimeSpan timeout)

@@ -42,9 +42,26 @@ internal sealed partial class OnlineSession
     /// <summary>
     /// Posts a driver's report: on the loop it is handled when <paramref name="link"/> is current, held (as
     /// <paramref name="whenHeld"/> if given; a live pose, <paramref name="isMotion"/>, replaces the one held before) while
-    /// <paramref name="link"/> is being connected, and ignored otherwise.
+    /// <paramref name="link"/> is being connected, and ignored otherwise. Returns once it is handled, as a call into the
+    /// session did before the loop (a driver's loops hold no lock of theirs when they report); a report made from inside
+    /// the loop (a driver answering in <c>Send</c>) is handled right after the message under way.
     /// </summary>
-    private void Report(Connection link, Action handle, Action? whenHeld = null, bool isMotion = false) => Post(() =>
+    private void Report(Connection link, Action handle, Action? whenHeld = null, bool isMotion = false)
+    {
+        Action message = () => Receive(link, handle, whenHeld, isMotion);
+        if (IsOnLoop)
+        {
+            Post(message);
+            return;
+        }
+        Ask(() =>
+        {
+            message();
+            return true;
+        });
+    }
+
+    private void Receive(Connection link, Action handle, Action? whenHeld, bool isMotion)
     {
         if (ReferenceEquals(_link, link))
         {
@@ -58,7 +75,7 @@ internal sealed partial class OnlineSession
             }
             _held.Add((whenHeld ?? handle, isMotion));
         }
-    });
+    }
 
     /// <summary>The action id a controller's id stands for among the actions in flight (held acknowledgements), else the id itself.</summary>
     private int ActionIdOf(Connection link, int controllerId)

@@ -36,9 +36,16 @@ internal sealed partial class OnlineSession : IActionStream
         _time = time;
         _events = new EventPump(host.Raise);
         _releaseReady = ReleaseReady;
+        DriverLog = new RobotLogger(host.Logger, (level, message) => _events.PostLog(host.Logger, level, message));
         _release.CopyFrom(issued);
         _execution.CopyFrom(issued);
     }
+
+    /// <summary>
+    /// The log the session's device drivers write to: their lines go to the robot's log on the event pump, in order with the
+    /// events, so log sinks never run on a driver's loops nor on the session's loop.
+    /// </summary>
+    internal RobotLogger DriverLog { get; }
 
     /// <summary>How long the controller may stay silent beyond the expected duration of the action it works on.</summary>
     internal TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
@@ -269,11 +276,16 @@ internal sealed partial class OnlineSession : IActionStream
     private void Log(LogLevel level, string message) => _events.PostLog(_host.Logger, level, message);
 
     /// <summary>Completes once every event queued so far was raised.</summary>
-    internal Task FlushEventsAsync()
+    internal async Task FlushEventsAsync()
     {
+        // Through the loop first: every message posted so far is handled and its events are queued before the signal.
         var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-        _events.PostSignal(done, null);
-        return done.Task;
+        await AskAsync(() =>
+        {
+            _events.PostSignal(done, null);
+            return true;
+        }).ConfigureAwait(false);
+        await done.Task.ConfigureAwait(false);
     }
 
     /// <summary>
