@@ -61,11 +61,13 @@ public sealed partial class Robot
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, "Unknown online event."),
     };
 
-    void IOnlineHost.WithIssueCursor(Action<RobotCursor> change)
+    IReadOnlyList<(LogLevel Level, string Message)>? IOnlineHost.WithIssueCursor(Action<RobotCursor> change)
     {
         lock (_issueLock)
         {
             change(_issueCursor);
+            // Written by the session on its event pump, never under the lock (a cursor change there refuses nothing).
+            return TakeLockedLog()?.ConvertAll(line => (line.Level, line.Message));
         }
     }
 
@@ -343,7 +345,7 @@ public sealed partial class Robot
     internal Task FlushEventsAsync() => _session?.FlushEventsAsync() ?? Task.CompletedTask;
 
     private Func<IDeviceDriver> CreateDriverFactory(IOnlineBrand brand) =>
-        () => brand.CreateDriver(new DeviceContext(Logger, Time, Name, Model, MotionUpdateRate));
+        () => brand.CreateDriver(new DeviceContext(_session?.DriverLog ?? Logger, Time, Name, Model, MotionUpdateRate));
 
     /// <summary>
     /// How many live pose reports per second the robot asks its controller for while connected (Hz, default 50), which set

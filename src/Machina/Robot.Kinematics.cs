@@ -140,7 +140,7 @@ public sealed partial class Robot
         {
             var warning = new ProgramWarning(action.Id, action.ToInstruction(), issue.ToString()) { Kind = issue.Kind };
             _warnings.Add(warning);
-            Logger.Warning(warning.ToString());
+            LogLocked(LogLevel.WARNING, warning.ToString());
         }
     }
 }

@@ -23,7 +23,8 @@ public sealed partial class Robot : IOnlineHost
         Name = name;
         Brand = brand;
         Logger = new RobotLogger(name);
-        Action<RobotAction, string> warn = (action, message) => Logger.Warning($"{action.ToInstruction()} {message}");
+        // Called while the issue cursor changes, under the issue lock: written once it is released (Robot.IssueLog.cs).
+        Action<RobotAction, string> warn = (action, message) => LogLocked(LogLevel.WARNING, $"{action.ToInstruction()} {message}");
         _issueCursor = new RobotCursor { Warn = warn, Notice = warn };
     }
 
@@ -85,11 +86,7 @@ public sealed partial class Robot : IOnlineHost
     public bool Issue(RobotAction action)
     {
         ArgumentNullException.ThrowIfNull(action);
-        (string? Report, ActionIssuedArgs? Issued) result;
-        lock (_issueLock)
-        {
-            result = IssueLocked(action);
-        }
+        (string? Report, ActionIssuedArgs? Issued) result = UnderIssueLock(action, static (self, a) => self.IssueLocked(a));
         RaiseIssued(result.Report, result.Issued);
         return true;
     }
@@ -103,17 +100,18 @@ public sealed partial class Robot : IOnlineHost
         var raised = new List<(string? Report, ActionIssuedArgs? Issued)>(actions.Count);
         try
         {
-            lock (_issueLock)
+            UnderIssueLock(actions, (self, list) =>
             {
-                if (actions.Count > 1)
+                if (list.Count > 1)
                 {
-                    DryRun(actions);
+                    self.DryRun(list);
                 }
-                foreach (RobotAction action in actions)
+                foreach (RobotAction action in list)
                 {
-                    raised.Add(IssueLocked(action));
+                    raised.Add(self.IssueLocked(action));
                 }
-            }
+                return true;
+            });
         }
         finally
         {
@@ -158,7 +156,7 @@ public sealed partial class Robot : IOnlineHost
         if (refusal is not null)
         {
             action.Id = -1;
-            Logger.Refused(action, $"Refused {action.ToInstruction()}: {refusal}");
+            LogLocked(LogLevel.WARNING, $"Refused {action.ToInstruction()}: {refusal}", refused: action);
             throw new ActionRefusedException(action, refusal);
         }
         if (_session is not null)
@@ -183,7 +181,7 @@ public sealed partial class Robot : IOnlineHost
         if (refusal is not null)
         {
             action.Id = -1;
-            Logger.Refused(action, $"Refused {action.ToInstruction()} {refusal}");
+            LogLocked(LogLevel.WARNING, $"Refused {action.ToInstruction()} {refusal}", refused: action);
             throw new ActionRefusedException(action, refusal);
         }
         _nextId++;

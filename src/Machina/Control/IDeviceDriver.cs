@@ -15,7 +15,7 @@ internal interface IDeviceDriver : IAsyncDisposable
     /// <summary>
     /// Encodes a released action with the release cursor's state after it and queues the bytes for sending. Returns true when
     /// the controller will acknowledge the action, false when it produced nothing to send (it then counts as executed as
-    /// soon as everything released before it is executed). Called under the session lock: it must not block.
+    /// soon as everything released before it is executed). Called on the session's loop: it must not block.
     /// </summary>
     bool Send(RobotAction action, RobotCursor releaseState);
 
@@ -24,7 +24,7 @@ internal interface IDeviceDriver : IAsyncDisposable
 
     /// <summary>
     /// Expects the acknowledgement of an action that an earlier connection sent and the controller still holds (it is not
-    /// sent again). Called under the session lock, in release order, before anything new is sent.
+    /// sent again). Called on the session's loop, in release order, before anything new is sent.
     /// </summary>
     void Adopt(int actionId);
 

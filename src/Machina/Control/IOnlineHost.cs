@@ -23,9 +23,10 @@ internal interface IOnlineHost
 
     /// <summary>
     /// Runs <paramref name="change"/> on the issue cursor while holding the robot's issue lock, so that no action is issued
-    /// meanwhile. Lock order: the issue lock first, then the session's own lock (taken inside <paramref name="change"/>).
+    /// meanwhile (the session calls it from its loop). Returns the log lines the change wrote, for the session to write on its
+    /// event pump (log sinks never run under the lock), or null.
     /// </summary>
-    void WithIssueCursor(Action<RobotCursor> change);
+    IReadOnlyList<(LogLevel Level, string Message)>? WithIssueCursor(Action<RobotCursor> change);
 }
 
 /// <summary>The online events a session raises.</summary>

@@ -2,35 +2,26 @@ namespace Machina;
 
 internal sealed partial class OnlineSession
 {
-    private Connection? _link;
-    private ConnectionState _state = ConnectionState.Disconnected;
+    private volatile Connection? _link;
+    private volatile ConnectionState _state = ConnectionState.Disconnected;
     private MachinaException? _stopReason;
     private MachinaException? _lastFault;
     private long _lastProgress;
     private ITimer? _watchdog;
 
     /// <summary>
-    /// Where the link stands. Transitions (all under <c>_gate</c>): Disconnected → Connecting (<see cref="ConnectAsync"/>);
+    /// Where the link stands: the loop's one state, written only on the loop, read anywhere. Transitions: Disconnected → Connecting (<see cref="ConnectAsync"/>);
     /// Connecting → Connected (handshake done, cursors set) or Disconnected (failed or refused); Connected → Stopped
     /// (<see cref="IDeviceListener.OnStopped"/>) → Connected (<see cref="IDeviceListener.OnResumed"/>); Connected or Stopped →
     /// Disconnected (<see cref="DisconnectAsync"/>, a fault, silence). Actions are released only while Connected.
     /// </summary>
-    internal ConnectionState State
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _state;
-            }
-        }
-    }
+    internal ConnectionState State => _state;
 
     /// <summary>True while a controller is linked (connected or stopped).</summary>
     internal bool IsConnected => State is ConnectionState.Connected or ConnectionState.Stopped;
 
     /// <summary>"host:port" of the connected controller, or empty.</summary>
-    internal string RemoteAddress => Volatile.Read(ref _link)?.Driver.RemoteAddress ?? "";
+    internal string RemoteAddress => _link?.Driver.RemoteAddress ?? "";
 
     /// <summary>
     /// Connects and starts releasing the buffered actions. A controller that reports its progress and knows the actions an
@@ -40,7 +31,7 @@ internal sealed partial class OnlineSession
     /// </summary>
     internal async Task ConnectAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
     {
-        lock (_gate)
+        await AskAsync(() =>
         {
             if (_disposed)
             {
@@ -51,7 +42,8 @@ internal sealed partial class OnlineSession
                 throw new InvalidOperationException($"The robot is already {_state.ToString().ToLowerInvariant()}; call Disconnect first.");
             }
             _state = ConnectionState.Connecting;
-        }
+            return true;
+        }).ConfigureAwait(false);
         IDeviceDriver driver;
         Connection link;
         DeviceHandshake handshake;
@@ -59,6 +51,7 @@ internal sealed partial class OnlineSession
         {
             driver = _driverFactory();
             link = new Connection(this, driver);
+            await AskAsync(() => _connecting = link).ConfigureAwait(false);   // its reports are held from now on
             try
             {
                 handshake = await driver.ConnectAsync(host, port, link, timeout, cancellationToken).ConfigureAwait(false);
@@ -71,79 +64,61 @@ internal sealed partial class OnlineSession
         }
         catch
         {
-            lock (_gate)
+            await AskAsync(() =>
             {
                 _state = ConnectionState.Disconnected;
-            }
+                _connecting = null;
+                _held = [];
+                return true;
+            }).ConfigureAwait(false);
             throw;
         }
-
-        MachinaException? earlyFault = null;
-        string? refusal = null;
-        bool failedEarly = false, disposed = false;
-        _host.WithIssueCursor(issue =>
-        {
-            lock (_gate)
-            {
-                _state = ConnectionState.Disconnected;
-                if (_disposed)
-                {
-                    disposed = true;   // disposed during the handshake: the robot stays disconnected, nothing changes
-                    return;
-                }
-                refusal = Resume(handshake, driver, issue);
-                earlyFault = link.EarlyFault;
-                if (refusal is null)
-                {
-                    _state = ConnectionState.Connected;
-                    _stopReason = null;
-                    _lastFault = null;
-                    _failure = null;
-                    _liveOnLink = false;
-                    _link = link;
-                    link.IsReady = true;
-                    _lastProgress = _time.GetTimestamp();
-                    StartWatchdog(link);
-                    earlyFault ??= AcknowledgeEarly(link);
-                    if (earlyFault is null && link.EarlyFailure is { } failed)
-                    {
-                        earlyFault = Fail(link, failed.Id, failed.Reason, failed.Code, issue);
-                        failedEarly = earlyFault is null;
-                    }
-                    else if (earlyFault is null)
-                    {
-                        if (link.EarlyMotion is MotionSample motion)
-                        {
-                            OnMotion(link, motion); // the monitor reported before the link became current (ABB, KUKA; UR's RTDE)
-                        }
-                        if (link.EarlyStop is MachinaException stop)
-                        {
-                            OnStopped(link, stop); // stopped while connecting (UR: RTDE showed it before the link became current)
-                        }
-                        ReleaseReady();
-                    }
-                }
-            }
-        });
-        if (disposed)
-        {
-            await driver.DisposeAsync().ConfigureAwait(false);
-            throw Disposed("connect");
-        }
+        string? refusal = await AskAsync(() => Attach(link, handshake)).ConfigureAwait(false);
         if (refusal is not null)
         {
             await driver.DisposeAsync().ConfigureAwait(false);
-            throw new RobotConnectionException(refusal);
+            throw refusal == DisposedRefusal ? Disposed("connect") : new RobotConnectionException(refusal);
         }
-        Log(LogLevel.INFO, $"Connected to {_host.Brand} robot \"{_host.Name}\" on {driver.RemoteAddress} (driver {handshake.Version}).");
-        if (earlyFault is not null)
+    }
+
+    /// <summary>What <see cref="Attach"/> returns when the robot was disposed during the handshake.</summary>
+    private const string DisposedRefusal = "disposed";
+
+    /// <summary>
+    /// Makes a link whose handshake is done current (on the loop): sets the cursors and queues for it (<see cref="Resume"/>),
+    /// then handles the reports it sent meanwhile, in order, and releases. Returns why the connection is refused, or null.
+    /// </summary>
+    private string? Attach(Connection link, DeviceHandshake handshake)
+    {
+        List<(Action Handle, bool IsMotion)> held = _held;
+        _held = [];
+        _connecting = null;
+        _state = ConnectionState.Disconnected;
+        if (_disposed)
         {
-            Fault(link, earlyFault);
+            return DisposedRefusal;   // disposed during the handshake: the robot stays disconnected, nothing changes
         }
-        else if (failedEarly)
+        string? refusal = null;
+        WithIssueCursor(issue => refusal = Resume(handshake, link.Driver, issue));
+        if (refusal is not null)
         {
-            await CloseQuietlyAsync(driver).ConfigureAwait(false);
+            return refusal;
         }
+        _state = ConnectionState.Connected;
+        _stopReason = null;
+        _lastFault = null;
+        _failure = null;
+        _liveOnLink = false;
+        _link = link;
+        _lastProgress = _time.GetTimestamp();
+        StartWatchdog(link);
+        Log(LogLevel.INFO, $"Connected to {_host.Brand} robot \"{_host.Name}\" on {link.Driver.RemoteAddress} (driver {handshake.Version}).");
+        foreach ((Action report, _) in held)
+        {
+            report();   // each handler checks that the link is still current (a held fault or failure ends it)
+        }
+        ReleaseReady();
+        return null;
     }
 
     private void InitialiseCursors(DeviceHandshake handshake, RobotCursor issue)
@@ -170,22 +145,25 @@ internal sealed partial class OnlineSession
     /// <summary>Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.</summary>
     internal async Task DisconnectAsync()
     {
-        Connection? link;
-        lock (_gate)
+        Connection? link = await AskAsync(() =>
         {
-            link = _link;
-            if (link is null)
+            Connection? current = _link;
+            if (current is not null)
             {
-                return;
+                Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
             }
-            Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
+            return current;
+        }).ConfigureAwait(false);
+        if (link is null)
+        {
+            return;
         }
         await link.Driver.DisposeAsync().ConfigureAwait(false);
         Log(LogLevel.INFO, $"Disconnected from {_host.Brand} robot \"{_host.Name}\".");
     }
 
     /// <summary>
-    /// Forgets the current link (under the lock) and fails waiters. Actions sent but not confirmed stay in flight: whether
+    /// Forgets the current link (on the loop) and fails waiters. Actions sent but not confirmed stay in flight: whether
     /// the controller ran them is only known when it reports its progress at the next connection.
     /// </summary>
     private void Detach(MachinaException reason)
@@ -206,19 +184,16 @@ internal sealed partial class OnlineSession
     /// <summary>The link failed: report it, keep every unconfirmed action, close the driver. Later calls for the same link do nothing.</summary>
     private void Fault(Connection link, MachinaException error)
     {
-        lock (_gate)
+        if (!ReferenceEquals(_link, link))
         {
-            if (!ReferenceEquals(_link, link))
-            {
-                return;
-            }
-            Detach(error);
-            _lastFault = error;
-            Log(LogLevel.ERROR, $"Connection to \"{_host.Name}\" lost: {error.Message}");
-            if (_host.IsListening(OnlineEvent.ConnectionLost))
-            {
-                _events.Post(new ConnectionLostArgs(error, PendingList(), _execution.Snapshot()));
-            }
+            return;
+        }
+        Detach(error);
+        _lastFault = error;
+        Log(LogLevel.ERROR, $"Connection to \"{_host.Name}\" lost: {error.Message}");
+        if (_host.IsListening(OnlineEvent.ConnectionLost))
+        {
+            _events.Post(new ConnectionLostArgs(error, PendingList(), _execution.Snapshot()));
         }
         _ = CloseQuietlyAsync(link.Driver);
     }
@@ -231,28 +206,19 @@ internal sealed partial class OnlineSession
         }
         catch (Exception ex)
         {
-            _host.Logger.Debug($"Closing the failed link threw {ex.GetType().Name}: {ex.Message}");
+            Log(LogLevel.DEBUG, $"Closing the failed link threw {ex.GetType().Name}: {ex.Message}");
         }
     }
 
     private void OnAcknowledged(Connection link, int id)
     {
-        MachinaException? fault;
-        lock (_gate)
-        {
-            if (!ReferenceEquals(_link, link))
-            {
-                return;
-            }
-            fault = Acknowledge(id);
-        }
-        if (fault is not null)
+        if (ReferenceEquals(_link, link) && Acknowledge(id) is MachinaException fault)
         {
             Fault(link, fault);
         }
     }
 
-    /// <summary>Executes the acknowledged action and everything released before it (under the lock); a fault for an unknown id.</summary>
+    /// <summary>Executes the acknowledged action and everything released before it; a fault for an unknown id.</summary>
     private MachinaException? Acknowledge(int id)
     {
         int index = 0, found = -1;
@@ -283,73 +249,63 @@ internal sealed partial class OnlineSession
 
     private void OnMotion(Connection link, in MotionSample sample)
     {
-        lock (_gate)
+        if (!ReferenceEquals(_link, link))
         {
-            if (!ReferenceEquals(_link, link))
-            {
-                return;
-            }
-            _liveOnLink = true;
-            RobotCursor motion = _motion ??= new RobotCursor();
-            motion.SetLivePose(sample.Position, sample.Rotation, sample.Axes, sample.ExternalAxes);
-            if (_host.IsListening(OnlineEvent.Motion))
-            {
-                _events.Post(new MotionUpdateArgs(motion.Snapshot()));
-            }
+            return;
+        }
+        _liveOnLink = true;
+        RobotCursor motion = _motion ??= new RobotCursor();
+        motion.SetLivePose(sample.Position, sample.Rotation, sample.Axes, sample.ExternalAxes);
+        if (_host.IsListening(OnlineEvent.Motion))
+        {
+            _events.Post(new MotionUpdateArgs(motion.Snapshot()));
         }
     }
 
     /// <summary>The controller stopped on its own: nothing more is released, waiters fail with the reason, the link stays.</summary>
     private void OnStopped(Connection link, MachinaException reason)
     {
-        lock (_gate)
+        if (!ReferenceEquals(_link, link) || _state != ConnectionState.Connected)
         {
-            if (!ReferenceEquals(_link, link) || _state != ConnectionState.Connected)
-            {
-                return;
-            }
-            _state = ConnectionState.Stopped;
-            _stopReason = reason;
-            _credit = 0;
-            if (_completion is not null)
-            {
-                _events.PostSignal(_completion, reason);
-                _completion = null;
-            }
-            Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
-            if (_host.IsListening(OnlineEvent.StopChanged))
-            {
-                _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
-            }
+            return;
+        }
+        _state = ConnectionState.Stopped;
+        _stopReason = reason;
+        _credit = 0;
+        if (_completion is not null)
+        {
+            _events.PostSignal(_completion, reason);
+            _completion = null;
+        }
+        Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
+        if (_host.IsListening(OnlineEvent.StopChanged))
+        {
+            _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
         }
     }
 
     /// <summary>The controller runs again after a stop: releasing resumes where it was.</summary>
     private void OnResumed(Connection link)
     {
-        lock (_gate)
+        if (!ReferenceEquals(_link, link) || _state != ConnectionState.Stopped)
         {
-            if (!ReferenceEquals(_link, link) || _state != ConnectionState.Stopped)
-            {
-                return;
-            }
-            _state = ConnectionState.Connected;
-            _stopReason = null;
-            _lastProgress = _time.GetTimestamp();
-            Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
-            if (_host.IsListening(OnlineEvent.StopChanged))
-            {
-                _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
-            }
-            ReleaseReady();
+            return;
         }
+        _state = ConnectionState.Connected;
+        _stopReason = null;
+        _lastProgress = _time.GetTimestamp();
+        Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
+        if (_host.IsListening(OnlineEvent.StopChanged))
+        {
+            _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
+        }
+        ReleaseReady();
     }
 
     /// <summary>Asks a stopped controller to run again (through its driver) and waits until it does.</summary>
     internal async Task ResumeAsync(CancellationToken cancellationToken)
     {
-        Connection link;
-        lock (_gate)
+        Connection link = await AskAsync(() =>
         {
             if (_disposed)
             {
@@ -361,10 +317,14 @@ internal sealed partial class OnlineSession
                     ? "The robot is running; there is nothing to resume."
                     : "The robot is not connected; call Connect (a reconnection resumes exactly where the controller is).");
             }
-            link = _link;
-        }
+            return _link;
+        }).ConfigureAwait(false);
         await link.Driver.ResumeAsync(cancellationToken).ConfigureAwait(false);
-        OnResumed(link);
+        await AskAsync(() =>
+        {
+            OnResumed(link);
+            return true;
+        }).ConfigureAwait(false);
     }
 
     private void StartWatchdog(Connection link)
@@ -375,44 +335,44 @@ internal sealed partial class OnlineSession
             return;
         }
         TimeSpan period = TimeSpan.FromTicks(Math.Clamp(timeout.Ticks / 4, TimeSpan.TicksPerMillisecond * 10, TimeSpan.TicksPerSecond));
-        _watchdog = _time.CreateTimer(_ => CheckSilence(link, timeout), null, period, period);
+        // A tick is a message, posted only once the controller was silent longer than the timeout (CheckSilence adds the
+        // expected duration of the action under way); _lastProgress is written by the loop only.
+        _watchdog = _time.CreateTimer(_ =>
+        {
+            if (_time.GetElapsedTime(Volatile.Read(ref _lastProgress)) > timeout)
+            {
+                Post(() => CheckSilence(link, timeout));
+            }
+        }, null, period, period);
     }
 
     private void CheckSilence(Connection link, TimeSpan timeout)
     {
-        MachinaException? fault = null;
-        lock (_gate)
+        if (!ReferenceEquals(_link, link))
         {
-            if (!ReferenceEquals(_link, link))
+            return;
+        }
+        double expected = -1;
+        foreach (InFlight f in _inFlight)
+        {
+            if (f.Acked)
             {
-                return;
-            }
-            double expected = -1;
-            foreach (InFlight f in _inFlight)
-            {
-                if (f.Acked)
-                {
-                    expected = f.ExpectedMs;
-                    break;
-                }
-            }
-            if (expected < 0 || _state == ConnectionState.Stopped)
-            {
-                _lastProgress = _time.GetTimestamp();
-                return;
-            }
-            TimeSpan silent = _time.GetElapsedTime(_lastProgress);
-            // In milliseconds as doubles: an action expected to take longer than TimeSpan can hold (Wait(long.MaxValue), a
-            // huge move at a tiny speed) must never overflow on this timer thread.
-            if (silent.TotalMilliseconds > timeout.TotalMilliseconds + expected)
-            {
-                fault = new RobotConnectionException(
-                    $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {_inFlight.Count} actions wait for execution.");
+                expected = f.ExpectedMs;
+                break;
             }
         }
-        if (fault is not null)
+        if (expected < 0 || _state == ConnectionState.Stopped)
         {
-            Fault(link, fault);
+            _lastProgress = _time.GetTimestamp();
+            return;
+        }
+        TimeSpan silent = _time.GetElapsedTime(_lastProgress);
+        // In milliseconds as doubles: an action expected to take longer than TimeSpan can hold (Wait(long.MaxValue), a
+        // huge move at a tiny speed) must never overflow on this timer thread.
+        if (silent.TotalMilliseconds > timeout.TotalMilliseconds + expected)
+        {
+            Fault(link, new RobotConnectionException(
+                $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {_inFlight.Count} actions wait for execution."));
         }
     }
 }

@@ -11,19 +11,18 @@ internal sealed partial class OnlineSession
     /// </summary>
     internal async Task DisposeAsync()
     {
-        Connection? link;
-        TaskCompletionSource? waiter;
-        lock (_gate)
+        (Connection? link, TaskCompletionSource? waiter) = await AskAsync(() =>
         {
             _disposed = true;
-            waiter = _completion;
+            TaskCompletionSource? waiting = _completion;
             _completion = null;
-            link = _link;
-            if (link is not null)
+            Connection? current = _link;
+            if (current is not null)
             {
                 Detach(new RobotConnectionException($"The robot \"{_host.Name}\" was disposed."));   // the waiter was taken above
             }
-        }
+            return (current, waiting);
+        }).ConfigureAwait(false);
         waiter?.TrySetException(Disposed("wait for completion"));
         if (link is not null)
         {

@@ -11,34 +11,27 @@ internal sealed partial class OnlineSession
     /// </summary>
     private bool _liveOnLink;
 
-    /// <summary>A failure reported by a driver (wire id): applied under the issue lock and the session lock, then the link is closed.</summary>
+    /// <summary>A failure reported by a driver (wire id): applied under the issue lock, then the link is closed.</summary>
     private void OnFailed(Connection link, int wireId, string reason, string? code)
     {
-        MachinaException? unknown = null;
-        bool failed = false;
-        _host.WithIssueCursor(issue =>
+        if (!ReferenceEquals(_link, link))
         {
-            lock (_gate)
-            {
-                if (ReferenceEquals(_link, link))
-                {
-                    unknown = Fail(link, wireId, reason, code, issue);
-                    failed = unknown is null;
-                }
-            }
-        });
+            return;
+        }
+        MachinaException? unknown = null;
+        WithIssueCursor(issue => unknown = Fail(link, wireId, reason, code, issue));
         if (unknown is not null)
         {
             Fault(link, unknown);
         }
-        else if (failed)
+        else
         {
             _ = CloseQuietlyAsync(link.Driver);
         }
     }
 
     /// <summary>
-    /// Applies a failure (under both locks): what was released before the failed action ran, the failed action raises
+    /// Applies a failure (on the loop, under the issue lock): what was released before the failed action ran, the failed action raises
     /// <c>ActionFailed</c>, everything after it is cancelled, the cursors go back to where the robot is, waiters fail and the
     /// link is forgotten (the controller's program stopped). Returns a link fault instead when no action waits with that id.
     /// </summary>

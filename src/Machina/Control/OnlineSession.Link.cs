@@ -2,108 +2,91 @@ namespace Machina;
 
 internal sealed partial class OnlineSession
 {
+    /// <summary>The connection being set up (its handshake is under way), or null.</summary>
+    private Connection? _connecting;
+
     /// <summary>
-    /// One connection: routes a driver's reports to the session, ignoring them once the connection is replaced. Reports that
-    /// arrive during the handshake, before the connection is current, are kept (one guard, <see cref="KeepUntilReady"/>) and
-    /// applied in <see cref="ConnectAsync"/> once the cursors are set: acknowledgements in order, the latest live pose, a stop
-    /// not followed by a resume, the first failure and the first fault.
+    /// Reports of <see cref="_connecting"/> that arrived before it became current, in order: handled once it is. Of the live
+    /// poses only the latest is kept (<c>IsMotion</c>): the robot is where the last one says.
+    /// </summary>
+    private List<(Action Handle, bool IsMotion)> _held = [];
+
+    /// <summary>
+    /// One connection: posts a driver's reports to the session's loop as messages. There, a report of the current link is
+    /// handled; a report of the link being connected is held and handled, in order, once the link is current (see
+    /// <see cref="Report"/>); any other is a report of a replaced link and is ignored.
     /// </summary>
     private sealed class Connection(OnlineSession session, IDeviceDriver driver) : IDeviceListener
     {
-        private volatile bool _isReady;
-
         internal IDeviceDriver Driver { get; } = driver;
 
-        /// <summary>Set (under the session lock) once the handshake is done and the cursors are initialised.</summary>
-        internal bool IsReady
-        {
-            get => _isReady;
-            set => _isReady = value;
-        }
-
-        /// <summary>A fault reported before the connection became current.</summary>
-        internal MachinaException? EarlyFault { get; private set; }
-
-        /// <summary>Acknowledgements that arrived before the connection became current (controller ids), in order.</summary>
-        internal List<int>? Early { get; set; }
-
-        /// <summary>The latest live pose reported before the connection became current (the monitor's first report).</summary>
-        internal MotionSample? EarlyMotion { get; private set; }
-
-        /// <summary>A stop reported before the connection became current and not followed by a resume; applied once it is.</summary>
-        internal MachinaException? EarlyStop { get; private set; }
-
-        /// <summary>A failure reported before the connection became current (wire id, reason, code); applied once it is.</summary>
-        internal (int Id, string Reason, string? Code)? EarlyFailure { get; private set; }
-
-        /// <summary>
-        /// The one guard of every report: before the connection is current, <paramref name="keep"/> records the report (under the
-        /// session lock, so that <see cref="ConnectAsync"/> sees it) and true is returned; afterwards false (the report goes on).
-        /// Once current, a connection never becomes not current again, so the check needs the lock only until then.
-        /// </summary>
-        private bool KeepUntilReady<T>(T report, Action<Connection, T> keep)
-        {
-            if (_isReady)
-            {
-                return false;
-            }
-            lock (session._gate)
-            {
-                if (_isReady)
-                {
-                    return false;
-                }
-                keep(this, report);
-                return true;
-            }
-        }
-
-        public void OnAcknowledged(int id)
-        {
-            if (!KeepUntilReady(id, static (c, i) => (c.Early ??= []).Add(i)))
-            {
-                session.OnAcknowledged(this, id);
-            }
-        }
+        // Before the link is current the driver cannot map a controller's id to an action yet: it is mapped once it is.
+        public void OnAcknowledged(int id) =>
+            session.Report(this, () => session.OnAcknowledged(this, id), () => session.OnAcknowledged(this, session.ActionIdOf(this, id)));
 
         public void OnMotion(in MotionSample sample)
         {
-            if (!KeepUntilReady(sample, static (c, s) => c.EarlyMotion = s))
-            {
-                session.OnMotion(this, sample);
-            }
+            MotionSample copy = sample;
+            session.Report(this, () => session.OnMotion(this, copy), isMotion: true);
         }
 
-        public void OnStopped(MachinaException reason)
-        {
-            if (!KeepUntilReady(reason, static (c, r) => c.EarlyStop = r))
-            {
-                session.OnStopped(this, reason);
-            }
-        }
+        public void OnStopped(MachinaException reason) => session.Report(this, () => session.OnStopped(this, reason));
 
-        public void OnResumed()
-        {
-            if (!KeepUntilReady(0, static (c, _) => c.EarlyStop = null))
-            {
-                session.OnResumed(this);
-            }
-        }
+        public void OnResumed() => session.Report(this, () => session.OnResumed(this));
 
-        public void OnFailed(int id, string reason, string? code)
-        {
-            if (!KeepUntilReady((id, reason, code), static (c, f) => c.EarlyFailure ??= f))
-            {
-                session.OnFailed(this, id, reason, code);
-            }
-        }
+        public void OnFailed(int id, string reason, string? code) => session.Report(this, () => session.OnFailed(this, id, reason, code));
 
-        public void OnFault(MachinaException error)
+        public void OnFault(MachinaException error) => session.Report(this, () => session.Fault(this, error));
+    }
+
+    /// <summary>
+    /// Posts a driver's report: on the loop it is handled when <paramref name="link"/> is current, held (as
+    /// <paramref name="whenHeld"/> if given; a live pose, <paramref name="isMotion"/>, replaces the one held before) while
+    /// <paramref name="link"/> is being connected, and ignored otherwise. Returns once it is handled, as a call into the
+    /// session did before the loop (a driver's loops hold no lock of theirs when they report); a report made from inside
+    /// the loop (a driver answering in <c>Send</c>) is handled right after the message under way.
+    /// </summary>
+    private void Report(Connection link, Action handle, Action? whenHeld = null, bool isMotion = false)
+    {
+        Action message = () => Receive(link, handle, whenHeld, isMotion);
+        if (IsOnLoop)
         {
-            if (!KeepUntilReady(error, static (c, e) => c.EarlyFault ??= e))
+            Post(message);
+            return;
+        }
+        Ask(() =>
+        {
+            message();
+            return true;
+        });
+    }
+
+    private void Receive(Connection link, Action handle, Action? whenHeld, bool isMotion)
+    {
+        if (ReferenceEquals(_link, link))
+        {
+            handle();
+        }
+        else if (ReferenceEquals(_connecting, link))
+        {
+            if (isMotion)
             {
-                session.Fault(this, error);
+                _held.RemoveAll(static h => h.IsMotion);
+            }
+            _held.Add((whenHeld ?? handle, isMotion));
+        }
+    }
+
+    /// <summary>The action id a controller's id stands for among the actions in flight (held acknowledgements), else the id itself.</summary>
+    private int ActionIdOf(Connection link, int controllerId)
+    {
+        foreach (InFlight f in _inFlight)
+        {
+            if (f.Acked && link.Driver.WireId(f.Action.Id) == controllerId)
+            {
+                return f.Action.Id;
             }
         }
+        return controllerId;
     }
 }

@@ -9,7 +9,7 @@ internal sealed partial class OnlineSession
     private int _lastAcknowledgedId;
 
     /// <summary>
-    /// Sets the cursors and the queues for a new connection (under both locks). Returns why the connection is refused, or null.
+    /// Sets the cursors and the queues for a new connection (on the loop, under the issue lock). Returns why the connection is refused, or null.
     /// <list type="bullet">
     /// <item>Actions sent on an earlier connection and not confirmed, with a controller that reports its progress and knows
     /// them: those it executed count as executed, those it still holds wait for their acknowledgement, the rest are sent
@@ -125,29 +125,5 @@ internal sealed partial class OnlineSession
         {
             _buffer.Enqueue(a);
         }
-    }
-
-    /// <summary>Applies the acknowledgements that arrived with the handshake, before the connection was current (under the lock).</summary>
-    private MachinaException? AcknowledgeEarly(Connection link)
-    {
-        List<int>? early = link.Early;
-        link.Early = null;
-        foreach (int controllerId in early ?? [])
-        {
-            int id = controllerId;
-            foreach (InFlight f in _inFlight)
-            {
-                if (f.Acked && link.Driver.WireId(f.Action.Id) == controllerId)
-                {
-                    id = f.Action.Id;
-                    break;
-                }
-            }
-            if (Acknowledge(id) is MachinaException fault)
-            {
-                return fault;
-            }
-        }
-        return null;
     }
 }

@@ -3,10 +3,9 @@ namespace Machina;
 /// <summary>
 /// The online half of a robot: the FIFO buffer of issued actions, the release policy, the Release, Execution and Motion
 /// cursors, and the events. It holds no brand code: the brand's <see cref="IDeviceDriver"/> encodes and decodes, and its
-/// <see cref="IOnlineBrand"/> refuses what the driver cannot run. One lock (<c>_gate</c>) guards all of the session's state;
-/// user code never runs under it (events go through an <see cref="EventPump"/>). Lock order, everywhere: the robot's issue
-/// lock (<see cref="IOnlineHost.WithIssueCursor"/>, or the robot issuing an action) first, then <c>_gate</c>; a driver's
-/// loops call in without holding any lock of theirs.
+/// <see cref="IOnlineBrand"/> refuses what the driver cannot run. Its state is owned by one loop (OnlineSession.Loop.cs):
+/// issued actions, driver reports, watchdog ticks and the robot's calls are messages handled there in order, without a
+/// lock; user code never runs in it (events and log lines go through an <see cref="EventPump"/>).
 /// </summary>
 internal sealed partial class OnlineSession : IActionStream
 {
@@ -16,7 +15,6 @@ internal sealed partial class OnlineSession : IActionStream
     private readonly IOnlineBrand? _brand;
     private readonly TimeProvider _time;
     private readonly EventPump _events;
-    private readonly object _gate = new();
     private readonly Queue<RobotAction> _buffer = new();
     private readonly Queue<InFlight> _inFlight = new();
     private readonly RobotCursor _release = new();
@@ -24,6 +22,9 @@ internal sealed partial class OnlineSession : IActionStream
     private RobotCursor? _motion;
     private TaskCompletionSource? _completion;
     private int _credit;
+
+    /// <summary>The message an issued action posts (one delegate for all).</summary>
+    private readonly Action _releaseReady;
 
     /// <summary>Creates the session of a robot whose issued state is <paramref name="issued"/> (called under the robot's issue lock).</summary>
     internal OnlineSession(IOnlineHost host, RobotCursor issued, ReleaseWindow window, Func<IDeviceDriver> driverFactory, IOnlineBrand? brand, TimeProvider time)
@@ -34,9 +35,17 @@ internal sealed partial class OnlineSession : IActionStream
         _driverFactory = driverFactory;
         _time = time;
         _events = new EventPump(host.Raise);
+        _releaseReady = ReleaseReady;
+        DriverLog = new RobotLogger(host.Logger, (level, message) => _events.PostLog(host.Logger, level, message));
         _release.CopyFrom(issued);
         _execution.CopyFrom(issued);
     }
+
+    /// <summary>
+    /// The log the session's device drivers write to: their lines go to the robot's log on the event pump, in order with the
+    /// events, so log sinks never run on a driver's loops nor on the session's loop.
+    /// </summary>
+    internal RobotLogger DriverLog { get; }
 
     /// <summary>How long the controller may stay silent beyond the expected duration of the action it works on.</summary>
     internal TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
@@ -47,15 +56,13 @@ internal sealed partial class OnlineSession : IActionStream
     /// <inheritdoc/>
     public void Enqueue(RobotAction action, ActionIssuedArgs? issued)
     {
-        lock (_gate)
+        // Called under the robot's issue lock: the event and the action are queued in issue order; the loop releases it.
+        if (issued is not null)
         {
-            if (issued is not null)
-            {
-                _events.Post(issued);
-            }
-            _buffer.Enqueue(action);
-            ReleaseReady();
+            _events.Post(issued);
         }
+        _inbox.Enqueue(action);
+        Post(_releaseReady);
     }
 
     /// <inheritdoc/>
@@ -65,13 +72,7 @@ internal sealed partial class OnlineSession : IActionStream
     public string? WhyCannotSend(RobotAction action, RobotCursor after) => _brand?.WhyCannotSend(action, after);
 
     /// <summary>Actions issued and not executed yet, oldest first: first those sent to the controller, then those waiting.</summary>
-    internal IReadOnlyList<RobotAction> GetPendingActions()
-    {
-        lock (_gate)
-        {
-            return PendingList();
-        }
-    }
+    internal IReadOnlyList<RobotAction> GetPendingActions() => Ask(PendingList);
 
     private List<RobotAction> PendingList()
     {
@@ -85,107 +86,86 @@ internal sealed partial class OnlineSession : IActionStream
     }
 
     /// <summary>Numbers of actions waiting to be released and released but not executed.</summary>
-    internal (int Buffered, int OnDevice) PendingCounts()
-    {
-        lock (_gate)
-        {
-            return (_buffer.Count, _inFlight.Count);
-        }
-    }
+    internal (int Buffered, int OnDevice) PendingCounts() => Ask(() => (_buffer.Count, _inFlight.Count));
 
     /// <summary>Drops every action not released yet; the issue cursor goes back to the state after the last released action.</summary>
     /// <returns>How many actions were dropped.</returns>
-    internal int ClearPendingActions()
+    internal int ClearPendingActions() => Ask(() =>
     {
         int count = 0;
-        _host.WithIssueCursor(issue =>
+        WithIssueCursor(issue =>
         {
-            lock (_gate)
-            {
-                count = _buffer.Count;
-                _buffer.Clear();
-                issue.CopyFrom(_release);
-                CheckCompletion();
-            }
+            count = _buffer.Count;
+            _buffer.Clear();
+            issue.CopyFrom(_release);
+            CheckCompletion();
         });
         return count;
-    }
+    });
 
     /// <summary>Snapshots of the release, execution and motion cursors (motion is null before the first live pose).</summary>
-    internal (RobotState Released, RobotState Executed, RobotState? Motion) Snapshots()
-    {
-        lock (_gate)
-        {
-            return (_release.Snapshot(), _execution.Snapshot(), _motion?.Snapshot());
-        }
-    }
+    internal (RobotState Released, RobotState Executed, RobotState? Motion) Snapshots() =>
+        Ask(() => (_release.Snapshot(), _execution.Snapshot(), _motion?.Snapshot()));
 
-    /// <summary>Reads the execution cursor under the lock (online the robot's getters report the executed state, as the original did).</summary>
-    internal T ReadExecution<T>(Func<RobotCursor, T> read)
-    {
-        lock (_gate)
-        {
-            return read(_execution);
-        }
-    }
+    /// <summary>Reads the execution cursor on the loop (online the robot's getters report the executed state, as the original did).</summary>
+    internal T ReadExecution<T>(Func<RobotCursor, T> read) => Ask(() => read(_execution));
 
     /// <summary>
     /// Completes once every issued action was executed and its events raised; fails when the link fails first, or with the
     /// <see cref="ActionFailedException"/> of an action the controller could not run (until the next connection).
     /// </summary>
-    internal Task WaitForCompletionAsync(CancellationToken cancellationToken)
+    internal async Task WaitForCompletionAsync(CancellationToken cancellationToken)
     {
         if (_events.IsRaisingOnCurrentThread)
         {
-            return Task.FromException(new InvalidOperationException(
-                "WaitForCompletion cannot be called from an event handler: the completion is reported on the same thread. Await it elsewhere."));
+            throw new InvalidOperationException(
+                "WaitForCompletion cannot be called from an event handler: the completion is reported on the same thread. Await it elsewhere.");
         }
-        Task task;
-        lock (_gate)
+        Task task = await AskAsync(Completion).ConfigureAwait(false);
+        await task.WaitAsync(cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>What a wait for completion waits for (on the loop): done already, a failure to report, or the next completion.</summary>
+    private Task Completion()
+    {
+        if (_disposed)
         {
-            if (_disposed)
-            {
-                return Task.FromException(Disposed("wait for completion"));
-            }
-            if (_buffer.Count == 0 && _inFlight.Count == 0 && _failure is not null)
-            {
-                return Task.FromException(_failure);
-            }
-            if (_buffer.Count == 0 && _inFlight.Count == 0)
-            {
-                var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-                _events.PostSignal(done, null);
-                task = done.Task;
-            }
-            else if (_state == ConnectionState.Stopped)
-            {
-                return Task.FromException(_stopReason!);
-            }
-            else if (_link is null)
-            {
-                int waiting = _buffer.Count + _inFlight.Count;
-                if (_failure is not null)
-                {
-                    return Task.FromException(new RobotConnectionException(
-                        $"{waiting} actions wait to be executed, but the controller stopped after a failure ({_failure.Message}); connect again to run them.", _failure));
-                }
-                return Task.FromException(_lastFault is { } fault
-                    ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {waiting} actions wait to be executed; connect again to resume.", fault)
-                    : new RobotConnectionException($"{waiting} actions wait to be executed but the robot is not connected; call Connect first."));
-            }
-            else
-            {
-                _completion ??= new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-                task = _completion.Task;
-            }
+            return Task.FromException(Disposed("wait for completion"));
         }
-        return task.WaitAsync(cancellationToken);
+        if (_buffer.Count == 0 && _inFlight.Count == 0 && _failure is not null)
+        {
+            return Task.FromException(_failure);
+        }
+        if (_buffer.Count == 0 && _inFlight.Count == 0)
+        {
+            var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+            _events.PostSignal(done, null);
+            return done.Task;
+        }
+        if (_state == ConnectionState.Stopped)
+        {
+            return Task.FromException(_stopReason!);
+        }
+        if (_link is null)
+        {
+            int waiting = _buffer.Count + _inFlight.Count;
+            if (_failure is not null)
+            {
+                return Task.FromException(new RobotConnectionException(
+                    $"{waiting} actions wait to be executed, but the controller stopped after a failure ({_failure.Message}); connect again to run them.", _failure));
+            }
+            return Task.FromException(_lastFault is { } fault
+                ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {waiting} actions wait to be executed; connect again to resume.", fault)
+                : new RobotConnectionException($"{waiting} actions wait to be executed but the robot is not connected; call Connect first."));
+        }
+        _completion ??= new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        return _completion.Task;
     }
 
     /// <summary>Releases blocks while the window allows; executes released actions that nothing acknowledges once they are next.</summary>
     private void ReleaseReady()
     {
-        if (_state != ConnectionState.Connected || _link is not { IsReady: true } link)
+        if (_state != ConnectionState.Connected || _link is not { } link)
         {
             return;
         }
@@ -296,11 +276,16 @@ internal sealed partial class OnlineSession : IActionStream
     private void Log(LogLevel level, string message) => _events.PostLog(_host.Logger, level, message);
 
     /// <summary>Completes once every event queued so far was raised.</summary>
-    internal Task FlushEventsAsync()
+    internal async Task FlushEventsAsync()
     {
+        // Through the loop first: every message posted so far is handled and its events are queued before the signal.
         var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-        _events.PostSignal(done, null);
-        return done.Task;
+        await AskAsync(() =>
+        {
+            _events.PostSignal(done, null);
+            return true;
+        }).ConfigureAwait(false);
+        await done.Task.ConfigureAwait(false);
     }
 
     /// <summary>

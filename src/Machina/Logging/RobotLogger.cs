@@ -14,6 +14,23 @@ public sealed class RobotLogger
 
     internal RobotLogger(string source) => _source = source;
 
+    /// <summary>The log a forwarding logger writes to, or null (see the constructor taking a target).</summary>
+    private readonly RobotLogger? _target;
+
+    /// <summary>What a forwarding logger does with a line its target wants.</summary>
+    private readonly Action<LogLevel, string>? _forward;
+
+    /// <summary>
+    /// A logger that hands every line <paramref name="target"/> wants to <paramref name="forward"/> instead of writing it (the
+    /// online session gives one to its device drivers, to write their lines on the robot's event pump).
+    /// </summary>
+    internal RobotLogger(RobotLogger target, Action<LogLevel, string> forward)
+        : this(target._source)
+    {
+        _target = target;
+        _forward = forward;
+    }
+
     /// <summary>Messages up to this level are reported (default <see cref="LogLevel.INFO"/>).</summary>
     public LogLevel Level { get; set; } = LogLevel.INFO;
 
@@ -24,7 +41,7 @@ public sealed class RobotLogger
     public TextWriter? Writer { get; set; }
 
     /// <summary>True when a message of <paramref name="level"/> would be reported; check it before building costly texts.</summary>
-    public bool IsEnabled(LogLevel level) =>
+    public bool IsEnabled(LogLevel level) => _target is not null ? _target.IsEnabled(level) :
         level != LogLevel.NONE && ((level <= Level && (Logged is not null || Writer is not null)) || AnySinkWants(level));
 
     /// <summary>
@@ -75,10 +92,16 @@ public sealed class RobotLogger
     /// <summary>Reports a message at a level.</summary>
     public void Write(LogLevel level, string message)
     {
-        if (IsEnabled(level))
+        if (!IsEnabled(level))
         {
-            Write(new LogEntry(_source, level, message));
+            return;
         }
+        if (_forward is not null)
+        {
+            _forward(level, message);
+            return;
+        }
+        Write(new LogEntry(_source, level, message));
     }
 
     /// <summary>Reports, as a warning, an action refused when it was issued (the entry's <see cref="LogEntry.Refused"/> is the action).</summary>

@@ -50,8 +50,8 @@ public class AbbFailureTests
             Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit));
             int lastGood = controller.ExecutedIds[^1];
 
-            bot.MoveTo(620, 0, 450);
-            bot.MoveTo(300, 0, 500);
+            // Both under one issue lock: the controller's failure, reported as soon as the move is sent, cannot come between them.
+            bot.Do("MoveTo(620, 0, 450); MoveTo(300, 0, 500);");
             ActionFailedArgs e = await failed.Task.WaitAsync(OnlineTestSupport.Limit);
             var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync().WaitAsync(OnlineTestSupport.Limit));
 

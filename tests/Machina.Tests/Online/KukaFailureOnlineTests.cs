@@ -22,8 +22,8 @@ public class KukaFailureOnlineTests
             Joints stoppedAt = controller.State.Joints;
             Vector stoppedPosition = (Vector)bot.GetCurrentPosition()!.Value;
 
-            bot.MoveTo(2000, 0, 300);
-            bot.AxesTo(0, -90, 90, 0, 90, 0);
+            // Both under one issue lock: the controller's failure, reported as soon as the move is sent, cannot come between them.
+            bot.Do("MoveTo(2000, 0, 300); AxesTo(0, -90, 90, 0, 90, 0);");
             ActionFailedArgs e = await failed.Task.WaitAsync(Limit);
             var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync().WaitAsync(Limit));
 
