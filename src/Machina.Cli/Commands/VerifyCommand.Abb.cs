@@ -1,5 +1,6 @@
 using Machina.Cli.Programs;
 using Machina.Simulation.Rapid;
+using Machina.Simulation.Twin;
 
 namespace Machina.Cli.Commands;
 
@@ -32,7 +33,7 @@ internal static partial class VerifyCommand
             : [.. Compilers.For(AbbBrand.Definition.Type).Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files
                 .Where(f => f.Extension.Equals("mod", StringComparison.OrdinalIgnoreCase)).Select(f => (f.FileName, f.ToText("\n")))];
         await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a RAPID twin of an {model} and comparing it with {path}.").ConfigureAwait(false);
-        RapidVerification result = RapidVerifier.Verify(modules, actions, options, context.Cancellation);
+        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(modules, actions, options, context.Cancellation);
         await output.WriteAsync(result.ToText()).ConfigureAwait(false);
         return result.Passed ? ExitCodes.Ok : ExitCodes.Failed;
     }

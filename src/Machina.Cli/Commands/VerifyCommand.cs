@@ -1,4 +1,5 @@
 using Machina.Cli.Programs;
+using Machina.Simulation.Twin;
 using Machina.Simulation.UrScript;
 
 namespace Machina.Cli.Commands;
@@ -73,7 +74,7 @@ internal static partial class VerifyCommand
             ? ReadFile(context, scriptPath)
             : twinBrand.CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files[0].ToText("\n");
         await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a URScript twin of a {model} and comparing it with {path}.").ConfigureAwait(false);
-        UrVerification result = UrScriptVerifier.Verify(script, actions, options, context.Cancellation);
+        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions, options, context.Cancellation);
         await output.WriteAsync(result.ToText()).ConfigureAwait(false);
         return result.Passed ? ExitCodes.Ok : ExitCodes.Failed;
     }

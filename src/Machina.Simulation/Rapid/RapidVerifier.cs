@@ -18,7 +18,7 @@ internal static class RapidVerifier
     private sealed record Expectation(RobotAction Action, TwinTraceKind Kind, RobotState State, string? Output);
 
     /// <summary>Loads <paramref name="modules"/> on a twin with <paramref name="options"/>, runs main and compares it with <paramref name="actions"/>.</summary>
-    public static RapidVerification Verify(IReadOnlyList<(string Name, string Text)> modules, IEnumerable<RobotAction> actions,
+    public static TwinVerification<RapidProgramState> Verify(IReadOnlyList<(string Name, string Text)> modules, IEnumerable<RobotAction> actions,
         RapidTwinOptions? options = null, CancellationToken cancellation = default)
     {
         options ??= new RapidTwinOptions();
@@ -45,7 +45,7 @@ internal static class RapidVerifier
             error = ex.Module is null ? ex.Message : $"{ex.Module}: {ex.Message}";
         }
         List<TwinTraceEntry> done = [.. twin.Arm.Trace.Where(e => e.Kind is TwinTraceKind.Motion or TwinTraceKind.Output)];
-        var result = new RapidVerification { State = state, Error = error, Seconds = twin.Clock.Seconds };
+        var result = new TwinVerification<RapidProgramState> { State = state, Finished = state == RapidProgramState.Finished, Error = error, Seconds = twin.Clock.Seconds };
         int count = Math.Max(expected.Count, done.Count);
         for (int i = 0; i < count; i++)
         {
@@ -57,7 +57,7 @@ internal static class RapidVerifier
                 (_, null) => state == RapidProgramState.Finished ? "the program ended before this step" : "the program stopped before this step",
                 _ => Compare(e, d),
             };
-            result.Steps.Add(new RapidVerifyStep(i + 1, e?.Action.ToInstruction(), d?.Line ?? 0, e is null ? "(no more actions)" : Describe(e),
+            result.Steps.Add(new TwinVerifyStep(i + 1, e?.Action.ToInstruction(), d?.Line ?? 0, e is null ? "(no more actions)" : Describe(e),
                 d is null ? "(the program did not get there)" : Describe(d), problem));
         }
         return result;

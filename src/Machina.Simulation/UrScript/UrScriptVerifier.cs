@@ -18,7 +18,7 @@ internal static class UrScriptVerifier
     private sealed record Expectation(RobotAction Action, TwinTraceKind Kind, RobotState State, string? Output);
 
     /// <summary>Runs <paramref name="script"/> on a twin with <paramref name="options"/> and compares it with <paramref name="actions"/>.</summary>
-    public static UrVerification Verify(string script, IEnumerable<RobotAction> actions, UrTwinOptions? options = null, CancellationToken cancellation = default)
+    public static TwinVerification<UrProgramState> Verify(string script, IEnumerable<RobotAction> actions, UrTwinOptions? options = null, CancellationToken cancellation = default)
     {
         options ??= new UrTwinOptions();
         List<Expectation> expected = Expect(actions, options.Model);
@@ -33,7 +33,7 @@ internal static class UrScriptVerifier
         using var twin = new UrTwinController(options);
         UrProgramState state = twin.Run(script, cancellation);
         List<TwinTraceEntry> done = [.. twin.Arm.Trace.Where(e => e.Kind is TwinTraceKind.Motion or TwinTraceKind.Output)];
-        var result = new UrVerification { State = state, Error = twin.Error, Seconds = twin.Clock.Seconds };
+        var result = new TwinVerification<UrProgramState> { State = state, Finished = state == UrProgramState.Finished, Error = twin.Error, Seconds = twin.Clock.Seconds };
         int count = Math.Max(expected.Count, done.Count);
         for (int i = 0; i < count; i++)
         {
@@ -47,7 +47,7 @@ internal static class UrScriptVerifier
                 (_, null) => state == UrProgramState.Finished ? "the program ended before this step" : "the program stopped before this step",
                 _ => Compare(e, d),
             };
-            result.Steps.Add(new UrVerifyStep(i + 1, e?.Action.ToInstruction(), d?.Line ?? 0, expectedText, actualText, problem));
+            result.Steps.Add(new TwinVerifyStep(i + 1, e?.Action.ToInstruction(), d?.Line ?? 0, expectedText, actualText, problem));
         }
         return result;
     }

@@ -124,4 +124,41 @@ internal static class ExtremeValues
             name.EndsWith('Y') || name.EndsWith('1') ? 1 : 0,
         _ => null,
     };
+
+    /// <summary>
+    /// Cases for property tests: each verb with good values, then each parameter set to each of its edges (texts up to 1,000
+    /// characters), then <paramref name="seeded"/> random mixtures from <paramref name="seed"/>.
+    /// </summary>
+    internal static List<(string Name, MethodInfo Verb, object?[] Args)> Cases(int seed, int seeded)
+    {
+        var cases = new List<(string Name, MethodInfo Verb, object?[] Args)>();
+        IReadOnlyList<MethodInfo> verbs = ExtremeValues.Verbs();
+        foreach (MethodInfo verb in verbs)
+        {
+            ParameterInfo[] ps = verb.GetParameters();
+            object?[] good = [.. ps.Select(ExtremeValues.Good)];
+            cases.Add(($"{ExtremeValues.Describe(verb)} with good values", verb, good));
+            for (int i = 0; i < ps.Length; i++)
+            {
+                foreach (object? edge in ExtremeValues.Edges(ps[i].ParameterType)!.Where(e => e is not string { Length: > 1000 }))
+                {
+                    object?[] args = (object?[])good.Clone();
+                    args[i] = edge;
+                    cases.Add(($"{ExtremeValues.Describe(verb)} with {ps[i].Name} = {edge}", verb, args));
+                }
+            }
+        }
+        var random = new Random(seed);
+        for (int n = 0; n < seeded; n++)
+        {
+            MethodInfo verb = verbs[random.Next(verbs.Count)];
+            object?[] args = [.. verb.GetParameters().Select(p =>
+            {
+                object?[] choices = [ExtremeValues.Good(p), .. ExtremeValues.Edges(p.ParameterType)!.Where(e => e is not string { Length: > 1000 })];
+                return choices[random.Next(choices.Length)];
+            })];
+            cases.Add(($"seeded {n}: {ExtremeValues.Describe(verb)}", verb, args));
+        }
+        return cases;
+    }
 }

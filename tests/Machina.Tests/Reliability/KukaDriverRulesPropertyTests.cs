@@ -18,7 +18,7 @@ public class KukaDriverRulesPropertyTests
     [Fact]
     public async Task KukaDriverRules_EdgeAndSeededValuesOfEveryVerb_IssuedAreExecuted_RefusedSayWhy()
     {
-        List<(string Name, MethodInfo Verb, object?[] Args)> cases = Cases(seed: 3307, seeded: 300);
+        List<(string Name, MethodInfo Verb, object?[] Args)> cases = ExtremeValues.Cases(seed: 3307, seeded: 300);
 
         // No model: reach is not what this test is about (KukaFailureOnlineTests is); every accepted action must run.
         await using VirtualKukaController controller = await KukaTestSupport.StartKukaAsync(
@@ -96,39 +96,5 @@ public class KukaDriverRulesPropertyTests
         {
             return false;
         }
-    }
-
-    /// <summary>Each verb with good values, then each parameter set to each of its edges, then seeded random mixtures.</summary>
-    private static List<(string Name, MethodInfo Verb, object?[] Args)> Cases(int seed, int seeded)
-    {
-        var cases = new List<(string Name, MethodInfo Verb, object?[] Args)>();
-        IReadOnlyList<MethodInfo> verbs = ExtremeValues.Verbs();
-        foreach (MethodInfo verb in verbs)
-        {
-            ParameterInfo[] ps = verb.GetParameters();
-            object?[] good = [.. ps.Select(ExtremeValues.Good)];
-            cases.Add(($"{ExtremeValues.Describe(verb)} with good values", verb, good));
-            for (int i = 0; i < ps.Length; i++)
-            {
-                foreach (object? edge in ExtremeValues.Edges(ps[i].ParameterType)!.Where(e => e is not string { Length: > 1000 }))
-                {
-                    object?[] args = (object?[])good.Clone();
-                    args[i] = edge;
-                    cases.Add(($"{ExtremeValues.Describe(verb)} with {ps[i].Name} = {edge}", verb, args));
-                }
-            }
-        }
-        var random = new Random(seed);
-        for (int n = 0; n < seeded; n++)
-        {
-            MethodInfo verb = verbs[random.Next(verbs.Count)];
-            object?[] args = [.. verb.GetParameters().Select(p =>
-            {
-                object?[] choices = [ExtremeValues.Good(p), .. ExtremeValues.Edges(p.ParameterType)!.Where(e => e is not string { Length: > 1000 })];
-                return choices[random.Next(choices.Length)];
-            })];
-            cases.Add(($"seeded {n}: {ExtremeValues.Describe(verb)}", verb, args));
-        }
-        return cases;
     }
 }

@@ -21,34 +21,7 @@ public class UrDriverRulesPropertyTests
     [Fact]
     public async Task UrDriverRules_EdgeAndSeededValuesOfEveryVerb_AcceptedRunOnTheVirtualUr_RefusedSayWhy()
     {
-        var cases = new List<(string Name, MethodInfo Verb, object?[] Args)>();
-        foreach (MethodInfo verb in ExtremeValues.Verbs())
-        {
-            ParameterInfo[] ps = verb.GetParameters();
-            object?[] good = [.. ps.Select(ExtremeValues.Good)];
-            cases.Add(($"{ExtremeValues.Describe(verb)} with good values", verb, good));
-            for (int i = 0; i < ps.Length; i++)
-            {
-                foreach (object? edge in ExtremeValues.Edges(ps[i].ParameterType)!.Where(e => e is not string { Length: > 1000 }))
-                {
-                    object?[] args = (object?[])good.Clone();
-                    args[i] = edge;
-                    cases.Add(($"{ExtremeValues.Describe(verb)} with {ps[i].Name} = {edge}", verb, args));
-                }
-            }
-        }
-        var random = new Random(2811);
-        IReadOnlyList<MethodInfo> verbs = ExtremeValues.Verbs();
-        for (int n = 0; n < 400; n++)
-        {
-            MethodInfo verb = verbs[random.Next(verbs.Count)];
-            object?[] args = [.. verb.GetParameters().Select(p =>
-            {
-                object?[] choices = [ExtremeValues.Good(p), .. ExtremeValues.Edges(p.ParameterType)!.Where(e => e is not string { Length: > 1000 })];
-                return choices[random.Next(choices.Length)];
-            })];
-            cases.Add(($"seeded {n}: {ExtremeValues.Describe(verb)}", verb, args));
-        }
+        List<(string Name, MethodInfo Verb, object?[] Args)> cases = ExtremeValues.Cases(seed: 2811, seeded: 400);
 
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { Model = null, InstantExecution = true, SpeedFactor = 1e9, RequestLogCapacity = 0 });
         await controller.StartAsync();

@@ -1,4 +1,5 @@
 using Machina.Simulation.Rapid;
+using Machina.Simulation.Twin;
 using Machina.Tests.Support;
 using Xunit.Abstractions;
 
@@ -26,7 +27,7 @@ public class RapidGoldenTwinTests(ITestOutputHelper output)
     {
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue(name, RobotType.ABB).GetProgramActions();
 
-        RapidVerification result = RapidVerifier.Verify(Modules(name, variant), actions);
+        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(Modules(name, variant), actions);
 
         output.WriteLine(result.ToText());
         Assert.True(result.Passed, result.ToText());
@@ -45,7 +46,7 @@ public class RapidGoldenTwinTests(ITestOutputHelper output)
     {
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue("HelloRobot", RobotType.ABB).GetProgramActions();
 
-        RapidVerification result = RapidVerifier.Verify(Modules("HelloRobot", variant), actions);
+        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(Modules("HelloRobot", variant), actions);
 
         Assert.Equal(RapidProgramState.Failed, result.State);
         Assert.Equal($"50050 Position outside reach: no inverse kinematics solution: the target pose is out of reach (line {line}, task T_ROB1)", result.Error);
@@ -62,7 +63,7 @@ public class RapidGoldenTwinTests(ITestOutputHelper output)
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue("HelloRobot", RobotType.ABB).GetProgramActions();
         var options = new RapidTwinOptions { Model = RobotModels.Get("IRB 1200-5/0.9") };
 
-        RapidVerification result = RapidVerifier.Verify(Modules("HelloRobot", variant), actions, options);
+        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(Modules("HelloRobot", variant), actions, options);
 
         output.WriteLine(result.ToText());
         Assert.True(result.Passed, result.ToText());
@@ -76,10 +77,10 @@ public class RapidGoldenTwinTests(ITestOutputHelper output)
         modules[0].Text = modules[0].Text.Replace("MoveL [[350, 0, 300]", "MoveL [[350, 1, 300]", StringComparison.Ordinal);
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue("SquarePushPop", RobotType.ABB).GetProgramActions();
 
-        RapidVerification result = RapidVerifier.Verify(modules, actions);
+        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(modules, actions);
 
         Assert.False(result.Passed);
-        RapidVerifyStep step = Assert.Single(result.Steps, s => s.Problem is not null);
+        TwinVerifyStep step = Assert.Single(result.Steps, s => s.Problem is not null);
         Assert.Equal(2, step.Index);
         Assert.Equal("the TCP is 1 mm away", step.Problem);
     }
@@ -91,7 +92,7 @@ public class RapidGoldenTwinTests(ITestOutputHelper output)
         modules[0].Text = modules[0].Text.Replace("MoveL [[350, 0, 300]", "MoveL [[1350, 0, 300]", StringComparison.Ordinal);
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue("SquarePushPop", RobotType.ABB).GetProgramActions();
 
-        RapidVerification result = RapidVerifier.Verify(modules, actions);
+        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(modules, actions);
 
         Assert.Equal(RapidProgramState.Failed, result.State);
         int line = modules[0].Text.Split('\n').ToList().FindIndex(l => l.Contains("[[1350, 0, 300]", StringComparison.Ordinal)) + 1;

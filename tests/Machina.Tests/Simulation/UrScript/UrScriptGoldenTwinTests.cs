@@ -1,3 +1,4 @@
+using Machina.Simulation.Twin;
 using Machina.Simulation.UrScript;
 using Machina.Tests.Support;
 using Xunit.Abstractions;
@@ -22,7 +23,7 @@ public class UrScriptGoldenTwinTests(ITestOutputHelper output)
         string script = File.ReadAllText(path);
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue(name, RobotType.UR).GetProgramActions();
 
-        UrVerification result = UrScriptVerifier.Verify(script, actions);
+        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions);
 
         output.WriteLine(result.ToText());
         Assert.True(result.Passed, result.ToText());
@@ -43,7 +44,7 @@ public class UrScriptGoldenTwinTests(ITestOutputHelper output)
         string script = File.ReadAllText(Path.Combine(AppContext.BaseDirectory, "Golden", "UR", "Print3D" + (variant is null ? "" : "." + variant) + ".script"));
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue("Print3D", RobotType.UR).GetProgramActions();
 
-        UrVerification result = UrScriptVerifier.Verify(script, actions);
+        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions);
 
         Assert.Equal(UrProgramState.Failed, result.State);
         Assert.Equal($"Runtime error: line {line}: movep: no inverse kinematics solution: the target pose is out of reach", result.Error);
@@ -58,10 +59,10 @@ public class UrScriptGoldenTwinTests(ITestOutputHelper output)
             .Replace("movep(p[0.35,0,0.3,", "movep(p[0.35,0.001,0.3,", StringComparison.Ordinal);
         IReadOnlyList<RobotAction> actions = ReferencePrograms.Issue("SquarePushPop", RobotType.UR).GetProgramActions();
 
-        UrVerification result = UrScriptVerifier.Verify(script, actions);
+        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions);
 
         Assert.False(result.Passed);
-        UrVerifyStep step = Assert.Single(result.Steps, s => s.Problem is not null);
+        TwinVerifyStep step = Assert.Single(result.Steps, s => s.Problem is not null);
         Assert.Equal(2, step.Index);
         Assert.Equal("the TCP is 1 mm away", step.Problem);
     }
@@ -73,7 +74,7 @@ public class UrScriptGoldenTwinTests(ITestOutputHelper output)
         string script = File.ReadAllText(Path.Combine(AppContext.BaseDirectory, "Golden", "UR", "SquarePushPop.script"))
             .Replace("movep(p[0.35,0,0.3,", "movep(p[1.35,0,0.3,", StringComparison.Ordinal);
 
-        UrVerification result = UrScriptVerifier.Verify(script, actions);
+        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions);
 
         Assert.Equal(UrProgramState.Failed, result.State);
         Assert.Equal("Runtime error: line 14: movep: no inverse kinematics solution: the target pose is out of reach", result.Error);

@@ -1,34 +1,41 @@
 using System.Globalization;
 using System.Text;
 
-namespace Machina.Simulation.Rapid;
+namespace Machina.Simulation.Twin;
 
-/// <summary>One compared step: what the library's cursor expects and what the RAPID twin did.</summary>
+/// <summary>One compared step: what the library's cursor expects and what the twin controller did.</summary>
 /// <param name="Index">1-based number of the step (motions and outputs, in order).</param>
 /// <param name="Action">The action, as an instruction (null when the twin did a step the actions do not have).</param>
-/// <param name="Line">The module line the twin ran for it (0 when it did not run it).</param>
+/// <param name="Line">The program line (script or module line) the twin ran for it (0 when it did not run it).</param>
 /// <param name="Expected">The cursor's state after the action, in words.</param>
 /// <param name="Actual">The twin's state after the step, in words.</param>
 /// <param name="Problem">Why they differ, or null when they agree.</param>
-internal sealed record RapidVerifyStep(int Index, string? Action, int Line, string Expected, string Actual, string? Problem);
+internal sealed record TwinVerifyStep(int Index, string? Action, int Line, string Expected, string Actual, string? Problem);
 
-/// <summary>The result of running a compiled RAPID program on the twin and comparing it with the library's cursor.</summary>
-internal sealed class RapidVerification
+/// <summary>
+/// The result of running a compiled program on a twin controller (any language) and comparing it with the library's
+/// cursor. <typeparamref name="TState"/> is the language's program state (how the program ended).
+/// </summary>
+internal sealed class TwinVerification<TState>
+    where TState : struct, Enum
 {
     /// <summary>Each compared step, in order.</summary>
-    public List<RapidVerifyStep> Steps { get; } = [];
+    public List<TwinVerifyStep> Steps { get; } = [];
 
     /// <summary>How the program ended on the twin.</summary>
-    public RapidProgramState State { get; init; }
+    public TState State { get; init; }
 
-    /// <summary>The controller's load or execution error, or null.</summary>
+    /// <summary>True when the program ran to its end (the language's "finished" state).</summary>
+    public bool Finished { get; init; }
+
+    /// <summary>The controller's load, compile or runtime error, or null.</summary>
     public string? Error { get; init; }
 
     /// <summary>Program time on the twin, in seconds.</summary>
     public double Seconds { get; init; }
 
     /// <summary>True when the program ran to its end and every step agrees.</summary>
-    public bool Passed => State == RapidProgramState.Finished && Steps.All(s => s.Problem is null);
+    public bool Passed => Finished && Steps.All(s => s.Problem is null);
 
     /// <summary>A one-line summary.</summary>
     public string Summary => Passed
@@ -41,7 +48,7 @@ internal sealed class RapidVerification
     public string ToText()
     {
         var text = new StringBuilder();
-        foreach (RapidVerifyStep step in Steps)
+        foreach (TwinVerifyStep step in Steps)
         {
             text.Append(CultureInfo.InvariantCulture, $"{step.Index,4} line {step.Line,-5} {(step.Problem is null ? "ok  " : "DIFF")} {step.Action}").Append('\n');
             if (step.Problem is not null)
