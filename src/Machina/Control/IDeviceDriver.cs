@@ -19,6 +19,12 @@ internal interface IDeviceDriver : IAsyncDisposable
     /// </summary>
     bool Send(RobotAction action, RobotCursor releaseState);
 
+    /// <summary>
+    /// The most actions the controller's driver holds sent and not yet acknowledged (its buffer), or null when it has no
+    /// limit of its own. The session never releases more than this, whatever the release window allows.
+    /// </summary>
+    int? Capacity => null;
+
     /// <summary>The id the controller knows an action by (the ids of <see cref="DeviceProgress"/>).</summary>
     int WireId(int actionId);
 

@@ -173,6 +173,13 @@ internal sealed partial class OnlineSession : IActionStream
         {
             ExecuteUnacknowledgedHead();
             int block = _window.Take(_inFlight.Count, _buffer.Count, ref _credit);
+            if (link.Driver.Capacity is int capacity && block > capacity - _inFlight.Count)
+            {
+                // The controller's buffer is the limit: the rest of the block stays open until acknowledgements free room.
+                int room = Math.Max(0, capacity - _inFlight.Count);
+                _credit += block - room;
+                block = room;
+            }
             if (block == 0)
             {
                 break;

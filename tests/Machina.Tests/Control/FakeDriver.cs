@@ -44,6 +44,9 @@ internal sealed class FakeDriver : IDeviceDriver
 
     internal bool Disposed { get; private set; }
 
+    /// <summary>The controller's buffer the session must respect (null: no limit of its own).</summary>
+    public int? Capacity { get; set; }
+
     private int _unacked;
 
     public string RemoteAddress => "fake:1";

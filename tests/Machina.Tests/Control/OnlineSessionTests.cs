@@ -51,6 +51,35 @@ public class OnlineSessionTests
         Assert.Equal(new Joints(1, 2, 3, 4, 5, 16), bot.GetIssuedState().Axes);
     }
 
+    /// <summary>
+    /// A driver with a buffer of its own (KUKA's ring of 100 slots) limits what the session releases, whatever the window
+    /// allows: released means sent, and the rest of the block goes out as acknowledgements free room (no hidden second window).
+    /// </summary>
+    [Fact]
+    public void Release_DriverCapacityThree_BlockOfTenGoesOutAsRoomFrees()
+    {
+        var driver = new FakeDriver { Capacity = 3 };
+        var bot = OnlineRobot.Create(driver);
+        bot.BlockSize = 10;
+        bot.PendingCount = 10;
+
+        IssueMoves(bot, 10);
+        Assert.Equal([1, 2, 3], driver.Sent.Select(a => a.Id));
+        Assert.Equal(3, bot.GetReleasedState().LastAction!.Id);
+        driver.Ack(1);
+        Assert.Equal([1, 2, 3, 4], driver.Sent.Select(a => a.Id));
+        driver.Ack(2);
+        driver.Ack(3);
+        Assert.Equal([1, 2, 3, 4, 5, 6], driver.Sent.Select(a => a.Id));
+        for (int id = 4; id <= 10; id++)
+        {
+            driver.Ack(id);
+        }
+        Assert.Equal(Enumerable.Range(1, 10), driver.Sent.Select(a => a.Id));
+        Assert.Equal(3, driver.MaxUnacknowledged);
+        Assert.True(bot.WaitForCompletion(TimeSpan.FromSeconds(10)));
+    }
+
     [Fact]
     public void Release_BlockSizeFourPendingTwo_ReleasesExactBlocks()
     {

@@ -125,7 +125,9 @@ public class KukaOnlineTests
             bot.Move(0, i % 2 == 0 ? 10 : -10, 0);
         }
         await EventuallyAsync(() => controller.BufferedRequestCount == KukaProtocol.Capacity, "the ring to fill");
-        Assert.Equal(250, bot.GetReleasedState().LastAction!.Id);
+        // Released means sent: the session holds the rest of the block until acknowledgements free slots (no hidden window).
+        Assert.Equal(KukaProtocol.Capacity, bot.GetReleasedState().LastAction!.Id);
+        Assert.Equal(250 - KukaProtocol.Capacity, bot.GetPendingActions().Count(a => a.Id > KukaProtocol.Capacity));
         controller.ResumeAnswering();
         await bot.WaitForCompletionAsync().WaitAsync(Limit);
         await bot.FlushEventsAsync().WaitAsync(Limit);

@@ -6,15 +6,14 @@ namespace Machina;
 /// Host side of the KUKA link: a TCP client to Machina's KRL driver on EthernetKRL (batches of actions out, the state
 /// <c>S</c> and acknowledgements <c>R</c> in) and, when the controller runs the monitor, a second client on port + 1 that
 /// receives live poses (<c>P</c>). Never more than <see cref="KukaProtocol.Capacity"/> actions are on the controller
-/// unacknowledged, so a batch can never overwrite a slot of the driver's ring that was not executed (fix of bug K7):
-/// actions beyond that wait here and go out as acknowledgements free slots.
+/// unacknowledged, so a batch can never overwrite a slot of the driver's ring that was not executed (fix of bug K7): the
+/// session reads <see cref="Capacity"/> and releases no more; an action sent beyond it is refused here, never held.
 /// </summary>
 internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
 {
     private readonly double _motionUpdateRate;
     private readonly object _gate = new();
     private readonly Queue<int> _awaiting = new();
-    private readonly Queue<KukaInstruction> _held = new();
     private readonly StringBuilder _batch = new(1024);
     private TcpLink? _monitor;
     private string _version = "";
@@ -36,7 +35,7 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
         {
             lock (_gate)
             {
-                return _awaiting.Count - _held.Count;
+                return _awaiting.Count;
             }
         }
     }
@@ -76,34 +75,21 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
         }
         lock (_gate)
         {
+            if (_awaiting.Count >= KukaProtocol.Capacity)
+            {
+                // The session releases no more than Capacity; a send beyond it would overwrite a slot not yet executed.
+                throw new InvalidOperationException($"the controller's {KukaProtocol.Capacity} slots hold actions not executed yet; action {action.Id} cannot be sent now.");
+            }
             _awaiting.Enqueue(action.Id);
-            _held.Enqueue(instruction);
-            Flush();
+            _batch.Clear();
+            KukaInstruction.AppendBatch(_batch, [instruction]);
+            Link.Post(Encoding.ASCII.GetBytes(_batch.ToString()));
         }
         return true;
     }
 
-    /// <summary>Sends held actions while the controller has free slots, all in one batch (under <c>_gate</c>).</summary>
-    private void Flush()
-    {
-        int free = KukaProtocol.Capacity - (_awaiting.Count - _held.Count);
-        if (free <= 0 || _held.Count == 0 || Link is not TcpLink link)
-        {
-            return;
-        }
-        _batch.Clear();
-        KukaInstruction.AppendBatch(_batch, Take(Math.Min(free, _held.Count)));
-        byte[] bytes = Encoding.ASCII.GetBytes(_batch.ToString());
-        link.Post(bytes);
-    }
-
-    private IEnumerable<KukaInstruction> Take(int count)
-    {
-        for (int i = 0; i < count; i++)
-        {
-            yield return _held.Dequeue();
-        }
-    }
+    /// <inheritdoc/>
+    public int? Capacity => KukaProtocol.Capacity;
 
     /// <inheritdoc/>
     /// <remarks>KRL integers hold every action id, so the controller knows actions by their own ids.</remarks>
@@ -154,7 +140,7 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
         int actionId = wireId;
         lock (_gate)
         {
-            int sent = _awaiting.Count - _held.Count, index = 0, found = -1;
+            int sent = _awaiting.Count, index = 0, found = -1;
             foreach (int awaiting in _awaiting)
             {
                 if (index == sent)
@@ -173,12 +159,8 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
                 actionId = _awaiting.Dequeue();
             }
         }
-        // Outside the lock: the session takes its own lock and may call Send.
+        // Outside the lock: the session's loop may call Send while handling it.
         Listener?.OnAcknowledged(actionId);
-        lock (_gate)
-        {
-            Flush();
-        }
     }
 
     /// <inheritdoc/>
