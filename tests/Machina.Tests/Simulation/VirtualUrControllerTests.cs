@@ -1,8 +1,8 @@
-using System.Buffers.Binary;
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Simulation;
 
@@ -25,12 +25,12 @@ public class VirtualUrControllerTests
         var stream = link.Driver.GetStream();
 
         // No version response from the original driver: the full pose first, 14 ints.
-        int[] pose = await ReadIntsAsync(stream, 14);
+        int[] pose = await WireInts.ReadAsync(stream, 14, Timeout);
         Assert.Equal((-54, int.MinValue), (pose[0], pose[13]));
         Assert.Equal(15708, pose[11]); // J5 = 90° in 1e-4 rad
         // Original host bytes: speed 50 mm/s, then a move to (400, 0, 300) mm with the tool down (rotation vector [π, 0, 0]).
-        await WriteIntsAsync(stream, [1, 15, 500, 2, 1, 4000, 0, 3000, 31416, 0, 0]);
-        Assert.Equal(new int[] { 1, 2 }, await ReadIntsAsync(stream, 2));
+        await WireInts.WriteAsync(stream, [1, 15, 500, 2, 1, 4000, 0, 3000, 31416, 0, 0]);
+        Assert.Equal(new int[] { 1, 2 }, await WireInts.ReadAsync(stream, 2, Timeout));
         Assert.Equal(50, controller.State.Speed);
         Assert.True(controller.State.Position.IsSimilar(new Vector(400, 0, 300), 1e-9), controller.State.Position.ToString());
         Assert.Contains("Started Machina driver (original 1.x)", controller.PendantMessages);
@@ -69,16 +69,16 @@ public class VirtualUrControllerTests
         await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(definition));
         using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
         var stream = driver.GetStream();
-        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await ReadIntsAsync(stream, 5));
-        await ReadIntsAsync(stream, 14);
+        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
+        await WireInts.ReadAsync(stream, 14, Timeout);
         await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(call));
         await WaitUntilAsync(() => controller.LastScript == definition + call);
 
         Assert.Equal(1, controller.ScriptsReceived);
         Assert.True(controller.IsProgramRunning);
         Assert.Empty(controller.Errors);
-        await WriteIntsAsync(stream, [1, 8, 20]); // id 1: blend code 8 with 20 on the wire, as in OurDriver_UnknownCode_…
-        Assert.Equal(new int[] { 1 }, await ReadIntsAsync(stream, 1));
+        await WireInts.WriteAsync(stream, [1, 8, 20]); // id 1: blend code 8 with 20 on the wire, as in OurDriver_UnknownCode_…
+        Assert.Equal(new int[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));
         Assert.Equal(2, controller.State.Zone);
         server.Stop();
     }
@@ -96,7 +96,7 @@ public class VirtualUrControllerTests
             ? OriginalScript(port).TrimEnd('\n')
             : UrDriverScript.For("127.0.0.1", port, instance: 77).TrimEnd('\n'));
         var stream = link.Driver.GetStream();
-        int[] greeting = await ReadIntsAsync(stream, original ? 14 : 19);
+        int[] greeting = await WireInts.ReadAsync(stream, original ? 14 : 19, Timeout);
 
         Assert.Equal(-54, greeting[original ? 0 : 5]);
         Assert.True(controller.IsProgramRunning);
@@ -164,10 +164,10 @@ public class VirtualUrControllerTests
         await controller.StartAsync();
         using var link = await HostAsync(controller, port => UrDriverScript.For("127.0.0.1", port));
         var stream = link.Driver.GetStream();
-        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await ReadIntsAsync(stream, 5));
-        await ReadIntsAsync(stream, 14);
-        await WriteIntsAsync(stream, [1, 8, 20, 2, 99]);
-        Assert.Equal(new int[] { 1 }, await ReadIntsAsync(stream, 1));
+        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
+        await WireInts.ReadAsync(stream, 14, Timeout);
+        await WireInts.WriteAsync(stream, [1, 8, 20, 2, 99]);
+        Assert.Equal(new int[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));
         await WaitUntilAsync(() => !controller.IsProgramRunning);
         Assert.Equal("unknown instruction code 99 (id 2): the driver cannot read on, its program stops.", Assert.Single(controller.Errors));
         Assert.Equal(2, controller.State.Zone);
@@ -193,23 +193,6 @@ public class VirtualUrControllerTests
             Script.Dispose();
             Server.Stop();
         }
-    }
-
-    private static async Task WriteIntsAsync(NetworkStream stream, int[] values)
-    {
-        var bytes = new byte[values.Length * 4];
-        for (int i = 0; i < values.Length; i++)
-        {
-            BinaryPrimitives.WriteInt32BigEndian(bytes.AsSpan(i * 4), values[i]);
-        }
-        await stream.WriteAsync(bytes);
-    }
-
-    private static async Task<int[]> ReadIntsAsync(NetworkStream stream, int count)
-    {
-        var bytes = new byte[count * 4];
-        await stream.ReadExactlyAsync(bytes).AsTask().WaitAsync(Timeout);
-        return [.. Enumerable.Range(0, count).Select(i => BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(i * 4)))];
     }
 
     private static async Task WaitUntilAsync(Func<bool> condition)

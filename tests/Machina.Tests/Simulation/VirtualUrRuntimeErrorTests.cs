@@ -5,6 +5,7 @@ using System.Net.Sockets;
 using System.Text;
 using Machina.Tests.Online;
 using Machina.Simulation;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Simulation;
 
@@ -28,16 +29,16 @@ public class VirtualUrRuntimeErrorTests
         await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(UrDriverScript.For("127.0.0.1", ((IPEndPoint)server.LocalEndpoint).Port, 5)));
         using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
         var stream = driver.GetStream();
-        await ReadIntsAsync(stream, 19);
+        await WireInts.ReadAsync(stream, 19, Timeout);
         VirtualUrState start = controller.State;
         RotationVector rv = start.Rotation.ToRotationVector();
         int[] Move(int id, Vector p) =>
             [id, 1, UrWire.Millimetres(p.X), UrWire.Millimetres(p.Y), UrWire.Millimetres(p.Z), UrWire.Degrees(rv.X), UrWire.Degrees(rv.Y), UrWire.Degrees(rv.Z)];
         Vector reachable = start.Position + new Vector(0, 0, -20);
 
-        await WriteIntsAsync(stream, [.. new[] { 1, 15, 1000 }, .. Move(2, reachable), .. Move(3, new Vector(2000, 0, 500)), .. Move(4, start.Position)]);
+        await WireInts.WriteAsync(stream, [.. new[] { 1, 15, 1000 }, .. Move(2, reachable), .. Move(3, new Vector(2000, 0, 500)), .. Move(4, start.Position)]);
 
-        Assert.Equal(new[] { 1, 2 }, await ReadIntsAsync(stream, 2));
+        Assert.Equal(new[] { 1, 2 }, await WireInts.ReadAsync(stream, 2, Timeout));
         Assert.Equal(0, await stream.ReadAsync(new byte[4]).AsTask().WaitAsync(Timeout)); // closed: 3 is never acknowledged
         Assert.Equal(new[] { 1, 2 }, controller.ExecutedIds);
         Assert.Equal(1u, controller.RuntimeState); // RTDE runtime_state: stopped
@@ -69,11 +70,11 @@ public class VirtualUrRuntimeErrorTests
         await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(UrDriverScript.For("127.0.0.1", ((IPEndPoint)server.LocalEndpoint).Port, 6)));
         using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
         var stream = driver.GetStream();
-        await ReadIntsAsync(stream, 19);
+        await WireInts.ReadAsync(stream, 19, Timeout);
 
-        await WriteIntsAsync(stream, [1, 15, 0, 2, 3, 0, -15708, -15708, -15708, 15708, 1000]);
+        await WireInts.WriteAsync(stream, [1, 15, 0, 2, 3, 0, -15708, -15708, -15708, 15708, 1000]);
 
-        Assert.Equal(new[] { 1 }, await ReadIntsAsync(stream, 1));
+        Assert.Equal(new[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));
         Assert.Equal(0, await stream.ReadAsync(new byte[4]).AsTask().WaitAsync(Timeout));
         Assert.Equal(new[] { 1 }, controller.ExecutedIds);
         Assert.Equal("movej: the joint speed is 0, so the move would never end.", controller.LastRuntimeException);
@@ -131,19 +132,5 @@ public class VirtualUrRuntimeErrorTests
         size.CopyTo(package, 0);
         await stream.ReadExactlyAsync(package.AsMemory(4)).AsTask().WaitAsync(Timeout);
         return package;
-    }
-
-    private static async Task<int[]> ReadIntsAsync(NetworkStream stream, int count)
-    {
-        var bytes = new byte[count * 4];
-        await stream.ReadExactlyAsync(bytes).AsTask().WaitAsync(Timeout);
-        return [.. Enumerable.Range(0, count).Select(i => BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(i * 4)))];
-    }
-
-    private static async Task WriteIntsAsync(NetworkStream stream, int[] values)
-    {
-        var bytes = new byte[values.Length * 4];
-        UrWire.Write(values, bytes);
-        await stream.WriteAsync(bytes);
     }
 }

@@ -1,8 +1,8 @@
-using System.Buffers.Binary;
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Simulation;
 
@@ -66,34 +66,17 @@ public class VirtualUrTwinProtocolTests
         using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
         NetworkStream stream = driver.GetStream();
 
-        int[] pose = await ReadIntsAsync(stream, 14);
+        int[] pose = await WireInts.ReadAsync(stream, 14, Timeout);
         Assert.Equal((-54, int.MinValue), (pose[0], pose[13]));
         Assert.Equal(new[] { 0, -15708, -15708, -15708, 15708, 0 }, pose[7..13]); // the UR5e's start joints in 1e-4 rad
         // Speed 50 mm/s, then a move to (400, 0, 300) mm with the tool down (rotation vector [π, 0, 0]).
-        await WriteIntsAsync(stream, [1, 15, 500, 2, 1, 4000, 0, 3000, 31416, 0, 0]);
+        await WireInts.WriteAsync(stream, [1, 15, 500, 2, 1, 4000, 0, 3000, 31416, 0, 0]);
 
-        Assert.Equal(new[] { 1, 2 }, await ReadIntsAsync(stream, 2));
+        Assert.Equal(new[] { 1, 2 }, await WireInts.ReadAsync(stream, 2, Timeout));
         Pose tcp = controller.Twin!.Arm.Tcp;
         Assert.True(tcp.Position.IsSimilar(new Vector(400, 0, 300), 1e-6), tcp.Position.ToString());
         Assert.True(controller.IsProgramRunning);
         Assert.Equal(1, controller.ScriptsReceived);
         Assert.Empty(controller.Errors);
-    }
-
-    private static async Task WriteIntsAsync(NetworkStream stream, int[] values)
-    {
-        var bytes = new byte[values.Length * 4];
-        for (int i = 0; i < values.Length; i++)
-        {
-            BinaryPrimitives.WriteInt32BigEndian(bytes.AsSpan(i * 4), values[i]);
-        }
-        await stream.WriteAsync(bytes);
-    }
-
-    private static async Task<int[]> ReadIntsAsync(NetworkStream stream, int count)
-    {
-        var bytes = new byte[count * 4];
-        await stream.ReadExactlyAsync(bytes).AsTask().WaitAsync(Timeout);
-        return [.. Enumerable.Range(0, count).Select(i => BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(i * 4)))];
     }
 }
