@@ -82,7 +82,7 @@ internal static partial class RapidBuiltins
         {
             throw MotionError(call, ex.Message);
         }
-        double seconds = Duration(call, p, path, RapidGeometry.AngleDegrees(start.Rotation, goal.Rotation));
+        double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken);
     }
 
@@ -104,7 +104,7 @@ internal static partial class RapidBuiltins
         arm.ToolCenter = tool;
         task.WorkObject = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
         Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
-        double seconds = Duration(call, p, (goal.Position - start.Position).Length, RapidGeometry.AngleDegrees(start.Rotation, goal.Rotation));
+        double seconds = Duration(call, p, (goal.Position - start.Position).Length, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
     }
 

@@ -53,11 +53,4 @@ internal static class RapidGeometry
     }
 
     private static object Quadrant(double degrees) => Math.Floor(degrees / 90);
-
-    /// <summary>The angle between two rotations, in degrees.</summary>
-    public static double AngleDegrees(Rotation a, Rotation b)
-    {
-        double dot = Math.Abs(a.W * b.W + a.X * b.X + a.Y * b.Y + a.Z * b.Z);
-        return 2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI;
-    }
 }

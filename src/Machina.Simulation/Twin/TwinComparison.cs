@@ -118,20 +118,13 @@ internal sealed record TwinComparison(double PositionToleranceMm, double AngleTo
         }
         if (e.State.Rotation is { } rotation)
         {
-            double degrees = AngleDegrees(rotation, d.Tcp.Rotation);
+            double degrees = TwinRotation.AngleDegrees(rotation, d.Tcp.Rotation);
             if (degrees > AngleToleranceDegrees)
             {
                 problems.Add(string.Create(CultureInfo.InvariantCulture, $"the TCP is turned {degrees:0.###} deg away"));
             }
         }
         return problems.Count == 0 ? null : string.Join("; ", problems);
-    }
-
-    /// <summary>The angle of the smallest rotation from <paramref name="a"/> to <paramref name="b"/>, degrees.</summary>
-    private static double AngleDegrees(Rotation a, Rotation b)
-    {
-        double dot = Math.Abs(a.W * b.W + a.X * b.X + a.Y * b.Y + a.Z * b.Z);
-        return 2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI;
     }
 
     private static string Describe(TwinExpectation e) => e.Kind == TwinTraceKind.Output

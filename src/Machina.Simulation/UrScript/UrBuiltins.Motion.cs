@@ -101,7 +101,7 @@ internal static partial class UrBuiltins
         Joints last = FollowLine(m, line, function, start, target, t => new Pose(
             start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t)));
         double metres = (target.Position - start.Position).Length / 1000;
-        double distance = metres > 1e-6 ? metres : UrGeometry.AngleBetween(start.Rotation, target.Rotation);
+        double distance = metres > 1e-6 ? metres : TwinRotation.AngleBetween(start.Rotation, target.Rotation);
         Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function);
         return UrNone.Value;
     }
@@ -110,7 +110,7 @@ internal static partial class UrBuiltins
     private static Joints FollowLine(UrMachine m, int line, string function, Pose start, Pose end, Func<double, Pose> at)
     {
         double mm = (end.Position - start.Position).Length;
-        double degrees = UrGeometry.AngleBetween(start.Rotation, end.Rotation) * 180 / Math.PI;
+        double degrees = TwinRotation.AngleDegrees(start.Rotation, end.Rotation);
         int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(mm / 10, degrees / 5)), 1, 16);
         Joints joints = m.Controller.Arm.Joints;
         Solve(m, line, function, end, joints); // the target itself first, so that an unreachable target is named as such

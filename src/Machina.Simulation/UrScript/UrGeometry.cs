@@ -62,11 +62,4 @@ internal static class UrGeometry
         }
         return Rotation.FromQuaternion(wa * a.W + sign * wb * b.W, wa * a.X + sign * wb * b.X, wa * a.Y + sign * wb * b.Y, wa * a.Z + sign * wb * b.Z);
     }
-
-    /// <summary>The angle between two rotations, in radians.</summary>
-    public static double AngleBetween(Rotation a, Rotation b)
-    {
-        double dot = Math.Abs(a.W * b.W + a.X * b.X + a.Y * b.Y + a.Z * b.Z);
-        return 2 * Math.Acos(Math.Min(1, dot));
-    }
 }
