@@ -60,10 +60,6 @@ internal sealed class GCodeWriter
                 {
                     Warning(action, $"feed rates are written in mm/min with 3 decimals; {Num.G(c.Speed)} mm/s would be F0 and was raised to F{FixedPoint.Format(MinRate, 3)}.");
                 }
-                else if (double.IsInfinity(c.Speed * 60))
-                {
-                    Warning(action, $"{Num.G(c.Speed)} mm/s is too fast to write in mm/min; the largest feed rate was written, so the printer's own limit applies.");
-                }
                 if (_flavor.FeedOnMotionLine)
                 {
                     NoCode(action);
@@ -284,8 +280,8 @@ internal sealed class GCodeWriter
         _file.Add(sb);
     }
 
-    /// <summary>A speed in mm/s as a feed rate in mm/min; a speed whose feed would overflow gives the largest number instead.</summary>
-    private static double Feed(double mmPerSecond) => Math.Min(mmPerSecond * 60, double.MaxValue);
+    /// <summary>A speed in mm/s as a feed rate in mm/min (speeds are at most 1,000,000 mm/s, so the feed always fits).</summary>
+    private static double Feed(double mmPerSecond) => mmPerSecond * 60;
 
     /// <summary>The smallest feed rate (mm/min) or acceleration (mm/s²) written: a value above 0 that would print as 0 is raised to it.</summary>
     internal const double MinRate = 0.001;
