@@ -251,6 +251,20 @@ public sealed partial class Robot
         return RequireSession("wait for completion").WaitForCompletionAsync(cancellationToken);
     }
 
+    /// <summary>
+    /// Waits until fewer than <paramref name="maxPending"/> issued actions wait to be executed, so a long program can be issued as
+    /// the robot goes instead of all at once. Offline it returns at once (nothing waits for a controller).
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="maxPending"/> is less than 1.</exception>
+    /// <exception cref="ActionFailedException">The controller could not run an action and stopped (until the next connection).</exception>
+    /// <exception cref="MachinaException">The controller stopped, or the connection was lost or never made while the wait would last.</exception>
+    public Task WaitForRoomAsync(int maxPending, CancellationToken cancellationToken = default)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(maxPending, 1);
+        ThrowIfDisposed("wait for room");
+        return _session?.WaitForRoomAsync(maxPending, cancellationToken) ?? Task.CompletedTask;
+    }
+
     /// <summary>Waits until every issued action was executed, at most <paramref name="timeout"/>.</summary>
     /// <returns>True when everything was executed, false on timeout.</returns>
     /// <exception cref="MachinaException">The connection was lost before that.</exception>

@@ -107,7 +107,6 @@ internal static class RunCommand
     /// <summary>One streamed run: the robot, its events and the counts.</summary>
     private sealed class Streamer(ProgramReader reader, ProgramReader? check, RobotType brand, RobotModel? model, CliContext context)
     {
-        private readonly SemaphoreSlim _window = new(Window, Window);
         private readonly TaskCompletionSource<MachinaException> _lost = new(TaskCreationOptions.RunContinuationsAsynchronously);
         private readonly TaskCompletionSource<CliException> _failed = new(TaskCreationOptions.RunContinuationsAsynchronously);
         private readonly Dictionary<RobotAction, InstructionStatement> _lines = new(ReferenceEqualityComparer.Instance);
@@ -157,7 +156,7 @@ internal static class RunCommand
             {
                 foreach (InstructionStatement statement in reader.Read(context.Cancellation))
                 {
-                    await WaitForRoomAsync().ConfigureAwait(false);
+                    await WaitForRoomAsync(robot).ConfigureAwait(false);
                     Issue(robot, statement);
                     issued++;
                 }
@@ -219,16 +218,34 @@ internal static class RunCommand
             }
         }
 
-        private async Task WaitForRoomAsync()
+        /// <summary>Waits until fewer than <see cref="Window"/> actions are pending (the library's back-pressure); a failure or a lost link stops the run.</summary>
+        private async Task WaitForRoomAsync(Robot robot)
         {
             ThrowIfLost();
-            Task room = _window.WaitAsync(context.Cancellation);
-            if (!room.IsCompleted)
+            try
             {
-                await Task.WhenAny(room, _lost.Task, _failed.Task).ConfigureAwait(false);
-                ThrowIfLost();
+                await robot.WaitForRoomAsync(Window, context.Cancellation).ConfigureAwait(false);
             }
-            await room.ConfigureAwait(false);
+            catch (ActionFailedException failure)
+            {
+                throw FailedError(failure);
+            }
+            catch (RobotConnectionException lost)
+            {
+                throw new CliException($"The connection to the controller was lost: {lost.Message}");
+            }
+        }
+
+        /// <summary>The run's error for an action the controller could not run, at the action's line when it is known.</summary>
+        private CliException FailedError(ActionFailedException failure)
+        {
+            InstructionStatement statement;
+            bool known;
+            lock (_gate)
+            {
+                known = _lines.TryGetValue(failure.Action, out statement);
+            }
+            return RunCommand.FailedError(reader.DisplayName, known ? statement : null, failure);
         }
 
         private void ThrowIfLost()
@@ -251,21 +268,11 @@ internal static class RunCommand
             {
                 _lines.Remove(e.LastAction, out statement);
             }
-            _window.Release();
             _progress.Update(executed, statement.Line);
         }
 
         /// <summary>The controller could not run an action and stopped: the run stops with the action's line and the controller's reason.</summary>
-        private void OnFailed(ActionFailedArgs e)
-        {
-            InstructionStatement statement;
-            bool known;
-            lock (_gate)
-            {
-                known = _lines.TryGetValue(e.Action, out statement);
-            }
-            _failed.TrySetResult(FailedError(reader.DisplayName, known ? statement : null, e));
-        }
+        private void OnFailed(ActionFailedArgs e) => _failed.TrySetResult(FailedError(e.Failure));
 
         private void OnLog(LogEntry entry)
         {
@@ -287,10 +294,10 @@ internal static class RunCommand
     }
 
     /// <summary>The error for an action the controller could not run: its line (when known) and the controller's reason and code.</summary>
-    internal static CliException FailedError(string file, InstructionStatement? statement, ActionFailedArgs e)
+    internal static CliException FailedError(string file, InstructionStatement? statement, ActionFailedException e)
     {
-        string problem = $"the controller could not run {e.Action.ToInstruction()} and stopped: {e.Reason}" +
-            (e.Failure.ControllerCode is string code ? $" (error {code})" : "") + ".";
+        string problem = $"the controller could not run {e.Action.ToInstruction()} and stopped: {e.ControllerReason}" +
+            (e.ControllerCode is string code ? $" (error {code})" : "") + ".";
         return statement is InstructionStatement s
             ? CliException.At(file, s.Line, s.Column, problem)
             : new CliException($"{file}: {problem}");

@@ -174,11 +174,7 @@ internal sealed partial class OnlineSession
         _credit = 0;
         _watchdog?.Dispose();
         _watchdog = null;
-        if (_completion is not null)
-        {
-            _events.PostSignal(_completion, reason);
-            _completion = null;
-        }
+        FailWaiters(reason);
     }
 
     /// <summary>The link failed: report it, keep every unconfirmed action, close the driver. Later calls for the same link do nothing.</summary>
@@ -272,11 +268,7 @@ internal sealed partial class OnlineSession
         _state = ConnectionState.Stopped;
         _stopReason = reason;
         _credit = 0;
-        if (_completion is not null)
-        {
-            _events.PostSignal(_completion, reason);
-            _completion = null;
-        }
+        FailWaiters(reason);
         Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
         if (_host.IsListening(OnlineEvent.StopChanged))
         {

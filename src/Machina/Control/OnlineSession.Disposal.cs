@@ -11,11 +11,10 @@ internal sealed partial class OnlineSession
     /// </summary>
     internal async Task DisposeAsync()
     {
-        (Connection? link, TaskCompletionSource? waiter) = await AskAsync(() =>
+        (Connection? link, List<(string What, TaskCompletionSource Signal)> waiters) = await AskAsync(() =>
         {
             _disposed = true;
-            TaskCompletionSource? waiting = _completion;
-            _completion = null;
+            List<(string What, TaskCompletionSource Signal)> waiting = TakeWaiters();
             Connection? current = _link;
             if (current is not null)
             {
@@ -23,7 +22,10 @@ internal sealed partial class OnlineSession
             }
             return (current, waiting);
         }).ConfigureAwait(false);
-        waiter?.TrySetException(Disposed("wait for completion"));
+        foreach ((string what, TaskCompletionSource signal) in waiters)
+        {
+            signal.TrySetException(Disposed(what));
+        }
         if (link is not null)
         {
             await CloseQuietlyAsync(link.Driver).ConfigureAwait(false);

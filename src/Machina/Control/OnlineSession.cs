@@ -20,7 +20,6 @@ internal sealed partial class OnlineSession : IActionStream
     private readonly RobotCursor _release = new();
     private readonly RobotCursor _execution = new();
     private RobotCursor? _motion;
-    private TaskCompletionSource? _completion;
     private int _credit;
 
     /// <summary>The message an issued action posts (one delegate for all).</summary>
@@ -98,7 +97,7 @@ internal sealed partial class OnlineSession : IActionStream
             count = _buffer.Count;
             _buffer.Clear();
             issue.CopyFrom(_release);
-            CheckCompletion();
+            SignalWaiters();
         });
         return count;
     });
@@ -121,45 +120,8 @@ internal sealed partial class OnlineSession : IActionStream
             throw new InvalidOperationException(
                 "WaitForCompletion cannot be called from an event handler: the completion is reported on the same thread. Await it elsewhere.");
         }
-        Task task = await AskAsync(Completion).ConfigureAwait(false);
+        Task task = await AskAsync(() => WhenPendingBelow(1, "wait for completion")).ConfigureAwait(false);
         await task.WaitAsync(cancellationToken).ConfigureAwait(false);
-    }
-
-    /// <summary>What a wait for completion waits for (on the loop): done already, a failure to report, or the next completion.</summary>
-    private Task Completion()
-    {
-        if (_disposed)
-        {
-            return Task.FromException(Disposed("wait for completion"));
-        }
-        if (_buffer.Count == 0 && _inFlight.Count == 0 && _failure is not null)
-        {
-            return Task.FromException(_failure);
-        }
-        if (_buffer.Count == 0 && _inFlight.Count == 0)
-        {
-            var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-            _events.PostSignal(done, null);
-            return done.Task;
-        }
-        if (_state == ConnectionState.Stopped)
-        {
-            return Task.FromException(_stopReason!);
-        }
-        if (_link is null)
-        {
-            int waiting = _buffer.Count + _inFlight.Count;
-            if (_failure is not null)
-            {
-                return Task.FromException(new RobotConnectionException(
-                    $"{waiting} actions wait to be executed, but the controller stopped after a failure ({_failure.Message}); connect again to run them.", _failure));
-            }
-            return Task.FromException(_lastFault is { } fault
-                ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {waiting} actions wait to be executed; connect again to resume.", fault)
-                : new RobotConnectionException($"{waiting} actions wait to be executed but the robot is not connected; call Connect first."));
-        }
-        _completion ??= new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-        return _completion.Task;
     }
 
     /// <summary>Releases blocks while the window allows; executes released actions that nothing acknowledges once they are next.</summary>
@@ -192,7 +154,7 @@ internal sealed partial class OnlineSession : IActionStream
                 }
             }
         }
-        CheckCompletion();
+        SignalWaiters();
     }
 
     /// <summary>Sends one action; false when the link failed doing so (then nothing more is released).</summary>
@@ -264,15 +226,6 @@ internal sealed partial class OnlineSession : IActionStream
         if (_host.IsListening(OnlineEvent.Executed))
         {
             _events.Post(new ActionExecutedArgs(entry.Action, pendingOnDevice, pendingTotal, _execution.Snapshot()));
-        }
-    }
-
-    private void CheckCompletion()
-    {
-        if (_completion is not null && _buffer.Count == 0 && _inFlight.Count == 0)
-        {
-            _events.PostSignal(_completion, null);
-            _completion = null;
         }
     }
 

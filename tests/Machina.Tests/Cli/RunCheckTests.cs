@@ -63,10 +63,9 @@ public class RunCheckTests
     {
         var action = new ActionTranslation(new Vector(5000, 0, 400), false);
         var failure = new ActionFailedException(action, "Position outside reach", "50050");
-        var args = new ActionFailedArgs(failure, Robot.Create("R", RobotType.ABB).GetExecutedState());
 
-        CliException located = RunCommand.FailedError("p.machina", new InstructionStatement(action, 14, 3), args);
-        CliException unlocated = RunCommand.FailedError("p.machina", null, new ActionFailedArgs(new ActionFailedException(action, "Stopped", null), args.State));
+        CliException located = RunCommand.FailedError("p.machina", new InstructionStatement(action, 14, 3), failure);
+        CliException unlocated = RunCommand.FailedError("p.machina", null, new ActionFailedException(action, "Stopped", null));
 
         Assert.Equal("p.machina:14:3: error: the controller could not run MoveTo(5000,0,400); and stopped: Position outside reach (error 50050).", located.Message);
         Assert.True(located.IsLocated);
