@@ -42,18 +42,20 @@ internal static class CheckCommand
         await output.WriteLineAsync().ConfigureAwait(false);
         await output.WriteLineAsync("   LINE:COL RESULT   INSTRUCTION").ConfigureAwait(false);
         Dictionary<(int Line, int Column), List<string>> brandWarnings = BrandWarnings(reader.FilePath, model, context.Cancellation);
-        var replay = new ProgramReplay(model);
+        var trial = new ProgramTrial(model);
         var problems = new List<string>();
         int motions = 0, withProblems = 0, refused = 0, refusedMotions = 0;
         bool anyProblem = false;
         foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
-            string? refusal = replay.Apply(statement.Action, problems);
+            TrialStep step = trial.Try(statement.Action);
+            string? refusal = step.Refusal;
+            Problems(step, problems);
             if (refusal is null && brandWarnings.TryGetValue((statement.Line, statement.Column), out List<string>? warnings))
             {
                 problems.AddRange(warnings);
             }
-            bool motion = ProgramReplay.IsMotion(statement.Action);
+            bool motion = step.IsMotion;
             motions += motion ? 1 : 0;
             string where = string.Create(CultureInfo.InvariantCulture, $"{statement.Line,7}:{statement.Column,-3}");
             if (refusal is not null)
@@ -81,8 +83,23 @@ internal static class CheckCommand
         await output.WriteLineAsync().ConfigureAwait(false);
         int fine = motions - withProblems - refusedMotions;
         await output.WriteLineAsync($"{motions} motion{(motions == 1 ? "" : "s")} checked: {fine} ok, {withProblems} with problems, {refused} refused" +
-            $" (of {replay.Count + refused} actions).").ConfigureAwait(false);
+            $" (of {trial.AppliedCount + refused} actions).").ConfigureAwait(false);
         return refused == 0 && !anyProblem ? ExitCodes.Ok : ExitCodes.Failed;
+    }
+
+    /// <summary>What an applied step deserves a look for, in plain words: its warnings, then the arm's issues (none when refused).</summary>
+    internal static void Problems(TrialStep step, List<string> problems)
+    {
+        problems.Clear();
+        if (!step.Applied)
+        {
+            return;
+        }
+        problems.AddRange(step.Warnings);
+        foreach (KinematicIssue issue in step.Issues)
+        {
+            problems.Add(issue.ToString());
+        }
     }
 
     /// <summary>

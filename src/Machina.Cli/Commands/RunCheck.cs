@@ -20,17 +20,17 @@ internal static class RunCheck
     /// <exception cref="CliException">A statement is malformed, or an action would be refused or cannot be reached; located, nothing sent.</exception>
     internal static long Check(Robot robot, ProgramReader reader, CliContext context)
     {
-        RobotCursor trial = robot.TrialCursor();
-        trial.Strict = false;
+        ProgramTrial trial = robot.StartTrial();
         long count = 0;
         var problems = new List<string>();
         int more = 0;
         foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
             count++;
-            string? problem = robot.TryOn(trial, statement.Action) is string refusal
+            TrialStep step = trial.Try(statement.Action);
+            string? problem = step.Refusal is string refusal
                 ? $"{statement.Action.ToInstruction()} cannot be applied: {refusal}"
-                : trial.LastIssues.FirstOrDefault(i => i.Kind is KinematicIssueKind.Unreachable or KinematicIssueKind.JointLimit) is KinematicIssue issue
+                : step.Blocking is KinematicIssue issue
                     ? $"{statement.Action.ToInstruction()} cannot be reached by the {robot.Model?.Name ?? "arm"}: {issue.Reason}"
                     : null;
             if (problem is null)

@@ -1,3 +1,4 @@
+using Machina.Cli.Commands;
 using Machina.Cli.Programs;
 
 namespace Machina.Cli.Preview;
@@ -58,31 +59,31 @@ internal sealed class PreviewPath
     internal static PreviewPath Build(ProgramReader reader, RobotModel? model, bool printer, CancellationToken cancellationToken)
     {
         var path = new PreviewPath { JointsFollowTheArm = model is not null };
-        var replay = new ProgramReplay(model);
+        var trial = new ProgramTrial(model);
         var problems = new List<string>();
         Vector? last = null;
         foreach (InstructionStatement statement in reader.Read(cancellationToken))
         {
             path.Actions++;
-            RobotCursor cursor = replay.Cursor;
-            string? refusal = replay.Apply(statement.Action, problems);
-            if (refusal is not null)
+            TrialStep step = trial.Try(statement.Action);
+            CheckCommand.Problems(step, problems);
+            if (step.Refusal is string refusal)
             {
                 path.Warnings.Add(new PathWarning(last, statement.Line, statement.Column, statement.Action.ToInstruction(), "not applied: " + refusal));
                 continue;
             }
-            Vector? now = cursor.Position;
-            if (ProgramReplay.IsMotion(statement.Action) && now is Vector target)
+            Vector? now = trial.Position;
+            if (step.IsMotion && now is Vector target)
             {
                 if (last is Vector from)
                 {
                     if (from != target || statement.Action is ActionArcMotion)
                     {
-                        SegmentKind kind = KindOf(statement.Action, cursor, printer);
-                        IReadOnlyList<Vector> points = statement.Action is ActionArcMotion && cursor.ArcThrough is Vector through
+                        SegmentKind kind = KindOf(statement.Action, trial, printer);
+                        IReadOnlyList<Vector> points = statement.Action is ActionArcMotion && trial.ArcThrough is Vector through
                             ? ArcPoints(from, through, target)
-                            : kind == SegmentKind.Joint && model is not null && cursor.PrevAxes is Joints a && cursor.Axes is Joints b
-                                ? JointPoints(model, cursor.Tool, a, b, from, target)
+                            : kind == SegmentKind.Joint && model is not null && trial.PreviousAxes is Joints a && trial.Axes is Joints b
+                                ? JointPoints(model, trial.Tool, a, b, from, target)
                                 : [from, target];
                         path.Segments.Add(new PathSegment(kind, statement.Line, points));
                         path.Targets.Add(target);
@@ -102,9 +103,9 @@ internal sealed class PreviewPath
         return path;
     }
 
-    private static SegmentKind KindOf(RobotAction action, RobotCursor cursor, bool printer)
+    private static SegmentKind KindOf(RobotAction action, ProgramTrial trial, bool printer)
     {
-        if (cursor.IsExtruding)
+        if (trial.IsExtruding)
         {
             return SegmentKind.Extrusion;
         }
@@ -116,7 +117,7 @@ internal sealed class PreviewPath
         {
             ActionArcMotion => SegmentKind.Arc,
             ActionAxes => SegmentKind.Joint,
-            _ => cursor.MotionType == MotionType.Joint ? SegmentKind.Joint : SegmentKind.Linear,
+            _ => trial.MotionType == MotionType.Joint ? SegmentKind.Joint : SegmentKind.Linear,
         };
     }
 
