@@ -6,8 +6,11 @@ namespace Machina;
 /// <param name="Message">The text.</param>
 public sealed record LogEntry(string Source, LogLevel Level, string Message)
 {
-    /// <summary>The action this entry reports as refused when it was issued, or null: a tool that reports the refusal itself skips the entry by it.</summary>
-    internal RobotAction? Refused { get; init; }
+    /// <summary>
+    /// The action this entry reports as refused when it was issued, or null: a program that reports refusals itself (from
+    /// <see cref="ActionRefusedException"/>) can tell these entries apart without reading their text.
+    /// </summary>
+    public RobotAction? Refused { get; init; }
 
     /// <summary>True when both entries have the same source, level and message (the refused action is not part of an entry's value).</summary>
     public bool Equals(LogEntry? other) =>
