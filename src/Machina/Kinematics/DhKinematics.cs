@@ -87,6 +87,24 @@ public sealed class DhKinematics : IKinematics, ISolver
         return Chain(q, axes).ToPose();
     }
 
+    /// <summary>Where the arm's joints are for these joint values: the base, the origin of each joint's frame, the flange.</summary>
+    internal Vector[] LinkPoints(Joints joints)
+    {
+        joints.RequireFinite(nameof(joints));
+        Span<double> q = stackalloc double[6];
+        ToRadians(joints, q);
+        Span<Affine> axes = stackalloc Affine[6];
+        Affine end = Chain(q, axes);
+        var points = new Vector[8];
+        points[0] = Vector.Zero;
+        for (int i = 0; i < 6; i++)
+        {
+            points[i + 1] = P(axes[i]);
+        }
+        points[7] = P(end);
+        return points;
+    }
+
     private static void ToRadians(Joints joints, Span<double> q)
     {
         for (int i = 0; i < 6; i++)

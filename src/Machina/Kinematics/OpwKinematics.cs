@@ -75,6 +75,28 @@ public sealed class OpwKinematics : IKinematics, ISolver
         return FlangeFromWrist(ForwardCanonical(t)).ToPose();
     }
 
+    /// <summary>Where the arm's joints are for these joint values: base, axis 1 at shoulder height, shoulder, elbow, the forearm's offset, wrist centre, flange.</summary>
+    internal Vector[] LinkPoints(Joints joints)
+    {
+        joints.RequireFinite(nameof(joints));
+        Span<double> t = stackalloc double[6];
+        ToCanonical(joints, t);
+        double c1 = Math.Cos(t[0]), s1 = Math.Sin(t[0]), phi = t[1] + t[2];
+        Vector At(double reach, double z) => new(reach * c1 - _p.B * s1, reach * s1 + _p.B * c1, z);
+        double elbowReach = _p.A1 + _p.C2 * Math.Sin(t[1]), elbowZ = _p.C1 + _p.C2 * Math.Cos(t[1]);
+        double offsetReach = elbowReach + _e * Math.Sin(phi), offsetZ = elbowZ + _e * Math.Cos(phi);
+        return
+        [
+            Vector.Zero,
+            new Vector(0, 0, _p.C1),
+            At(_p.A1, _p.C1),
+            At(elbowReach, elbowZ),
+            At(offsetReach, offsetZ),
+            At(offsetReach + _p.C3 * Math.Cos(phi), offsetZ - _p.C3 * Math.Sin(phi)),
+            Forward(joints).Position,
+        ];
+    }
+
     /// <summary>Horizontal distance of the wrist centre in front of axis 1 (in the axis-1 frame; negative = behind).</summary>
     private double Reach(ReadOnlySpan<double> t)
     {

@@ -137,6 +137,19 @@ public sealed class RobotModel
         return BrandRegistry.Find(brand)?.ModelBrand ?? brand.Trim().ToUpperInvariant();
     }
 
+    /// <summary>
+    /// Where the arm's joints are for these joint values (mm, base frame), from the base to the flange: the points to join with
+    /// lines to draw the arm. The last point is the flange (<c>Kinematics.Forward(joints).Position</c>).
+    /// </summary>
+    /// <exception cref="ArgumentException">A joint value is not a finite number.</exception>
+    public IReadOnlyList<Vector> LinkPositions(Joints joints) => Kinematics switch
+    {
+        OpwKinematics opw => opw.LinkPoints(joints),
+        UniversalRobotsKinematics ur => ur.LinkPoints(joints),
+        DhKinematics dh => dh.LinkPoints(joints),
+        IKinematics other => [Vector.Zero, other.Forward(joints).Position],
+    };
+
     /// <summary>True when every joint is within this model's limits.</summary>
     public bool IsWithinLimits(Joints joints) => KinematicsCore.IsWithinLimits(this, joints);
 

@@ -28,6 +28,27 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         return ForwardAffine(joints).ToPose();
     }
 
+    /// <summary>Where the arm's joints are for these joint values: base, shoulder, elbow, wrists 1 to 3, flange.</summary>
+    internal Vector[] LinkPoints(Joints j)
+    {
+        j.RequireFinite(nameof(j));
+        const double r = Angles.ToRadians;
+        Affine[] steps =
+        [
+            Affine.Dh(j.J1 * r, _dh.D1, 0, 0, 1), Affine.Dh(j.J2 * r, 0, _dh.A2, 1, 0), Affine.Dh(j.J3 * r, 0, _dh.A3, 1, 0),
+            Affine.Dh(j.J4 * r, _dh.D4, 0, 0, 1), Affine.Dh(j.J5 * r, _dh.D5, 0, 0, -1), Affine.Dh(j.J6 * r, _dh.D6, 0, 1, 0),
+        ];
+        var points = new Vector[7];
+        Affine t = Affine.Identity;
+        points[0] = Vector.Zero;
+        for (int i = 0; i < 6; i++)
+        {
+            t *= steps[i];
+            points[i + 1] = new Vector(t.Px, t.Py, t.Pz);
+        }
+        return points;
+    }
+
     private Affine ForwardAffine(Joints j)
     {
         const double r = Angles.ToRadians;
