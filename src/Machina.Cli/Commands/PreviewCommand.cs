@@ -22,7 +22,8 @@ internal static class PreviewCommand
         Options:
           --out FILE   the picture to write; .svg or .html decides the kind
           --brand B    {Brands.Choices(Brands.All)} (printers draw travel and extrusion; default: an arm)
-          --model M    the arm model, e.g. "IRB 120": kinematic problems become warnings on the picture
+          --model M    the arm model, e.g. "IRB 120": the arm is drawn at the start and the end (and where the first
+                       warnings are), and kinematic problems become warnings on the picture
 
         Examples:
           machina preview square.machina --out square.svg

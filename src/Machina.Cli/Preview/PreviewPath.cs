@@ -28,6 +28,9 @@ internal sealed record PathSegment(SegmentKind Kind, int Line, IReadOnlyList<Vec
 /// <summary>A problem to draw where it happens (<paramref name="At"/>, null when the position is not known yet): a kinematic issue or an instruction that could not be applied.</summary>
 internal sealed record PathWarning(Vector? At, int Line, int Column, string Instruction, string Message);
 
+/// <summary>The arm drawn at one moment of the program (<paramref name="Label"/>: start, end or a warning's line): its joints from base to flange.</summary>
+internal sealed record ArmPose(string Label, IReadOnlyList<Vector> Points);
+
 /// <summary>The tool path of a program, as the robot's state follows it: what <c>machina preview</c> draws.</summary>
 internal sealed class PreviewPath
 {
@@ -42,6 +45,12 @@ internal sealed class PreviewPath
 
     /// <summary>Problems, where they occur.</summary>
     internal List<PathWarning> Warnings { get; } = [];
+
+    /// <summary>The arm at the start, at the end and where the first warnings with known joints are (with a model only).</summary>
+    internal List<ArmPose> Arms { get; } = [];
+
+    /// <summary>Most arms drawn where a warning is.</summary>
+    internal const int MaxWarningArms = 2;
 
     /// <summary>Where the tool path starts, or null when no position is ever known.</summary>
     internal Vector? Start => Targets.Count > 0 ? Targets[0] : null;
@@ -62,6 +71,8 @@ internal sealed class PreviewPath
         var trial = new ProgramTrial(model);
         var problems = new List<string>();
         Vector? last = null;
+        Joints? firstJoints = null, lastJoints = null;
+        var warningArms = new List<ArmPose>();
         foreach (InstructionStatement statement in reader.Read(cancellationToken))
         {
             path.Actions++;
@@ -95,9 +106,27 @@ internal sealed class PreviewPath
                 }
             }
             last = now ?? last;
+            if (model is not null && step.IsMotion && trial.Axes is Joints joints)
+            {
+                firstJoints ??= joints;
+                lastJoints = joints;
+                if (problems.Count > 0 && warningArms.Count < MaxWarningArms)
+                {
+                    warningArms.Add(new ArmPose($"!{statement.Line}", model.LinkPositions(joints)));
+                }
+            }
             foreach (string problem in problems)
             {
                 path.Warnings.Add(new PathWarning(now ?? last, statement.Line, statement.Column, statement.Action.ToInstruction(), problem));
+            }
+        }
+        if (model is not null && firstJoints is Joints first)
+        {
+            path.Arms.Add(new ArmPose("start", model.LinkPositions(first)));
+            path.Arms.AddRange(warningArms);
+            if (lastJoints is Joints end && end != first)
+            {
+                path.Arms.Add(new ArmPose("end", model.LinkPositions(end)));
             }
         }
         return path;
@@ -185,7 +214,8 @@ internal sealed class PreviewPath
     /// <summary>The smallest and largest coordinates of everything drawn, or null when nothing is.</summary>
     internal (Vector Min, Vector Max)? Bounds()
     {
-        IEnumerable<Vector> all = Segments.SelectMany(s => s.Points).Concat(Targets).Concat(Warnings.Where(w => w.At is not null).Select(w => w.At!.Value));
+        IEnumerable<Vector> all = Segments.SelectMany(s => s.Points).Concat(Targets).Concat(Warnings.Where(w => w.At is not null).Select(w => w.At!.Value))
+            .Concat(Arms.SelectMany(a => a.Points));
         if (!all.Any())
         {
             return null;

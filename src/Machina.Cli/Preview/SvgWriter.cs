@@ -38,6 +38,9 @@ internal static class SvgWriter
             svg.Append(CultureInfo.InvariantCulture, $".{name}{{stroke:{colour}}}");
         }
         svg.Append(".joint{stroke-dasharray:7 5}.travel{stroke-dasharray:2 5;stroke-width:1.5}");
+        svg.Append(".arm{fill:none;stroke-width:7;stroke-linejoin:round;stroke-linecap:round;vector-effect:non-scaling-stroke;opacity:.75}");
+        svg.Append(".arm-start{stroke:#c3cad4}.arm-end{stroke:#8d97a5}.arm-warning{stroke:#f2aaa7}");
+        svg.Append(".arm-joint{fill:#fff;stroke:#6b7684;stroke-width:1.2;vector-effect:non-scaling-stroke}");
         svg.Append(".target{fill:#fff;stroke:#5f6b7a;stroke-width:1;vector-effect:non-scaling-stroke}");
         svg.Append("text{fill:#2b2f36;font-size:13px}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
         svg.Append("\n</style>\n");
@@ -101,6 +104,7 @@ internal static class SvgWriter
             svg.Append(CultureInfo.InvariantCulture, $"<line class=\"{(Math.Abs(v) < step / 1000 ? "axis" : "grid")}\" x1=\"{F(mu - halfU)}\" y1=\"{F(v)}\" x2=\"{F(mu + halfU)}\" y2=\"{F(v)}\"/>");
         }
         svg.Append("</g>\n");
+        WriteArms(svg, path, view, scale);
         foreach ((SegmentKind kind, List<Vector> points) in Runs(path.Segments))
         {
             (string name, _, _) = PreviewStyle.Of(kind);
@@ -132,6 +136,12 @@ internal static class SvgWriter
                     $"<text x=\"{F(sx + 8)}\" y=\"{F(sy - 8)}\" fill=\"{PreviewStyle.WarningColour}\" font-size=\"11\" font-weight=\"700\">!{warning.Line}</text></g>\n");
             }
         }
+        if (path.Arms.Count > 0)
+        {
+            (double bx0, double by0) = Screen(Vector.Zero);
+            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"base\"><rect x=\"{F(bx0 - 9)}\" y=\"{F(by0 - 4)}\" width=\"18\" height=\"8\" rx=\"2\" fill=\"#5f6b7a\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(bx0 - 14)}\" y=\"{F(by0 + 18)}\" class=\"small\">base</text></g>\n");
+        }
         if (path.Start is Vector start)
         {
             (double sx, double sy) = Screen(start);
@@ -151,6 +161,34 @@ internal static class SvgWriter
         svg.Append(CultureInfo.InvariantCulture, $"<g class=\"scale-bar\"><line x1=\"{F(bx)}\" y1=\"{F(by)}\" x2=\"{F(bx + barPx)}\" y2=\"{F(by)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/>");
         svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(bx)}\" y1=\"{F(by - 4)}\" x2=\"{F(bx)}\" y2=\"{F(by + 1)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/><line x1=\"{F(bx + barPx)}\" y1=\"{F(by - 4)}\" x2=\"{F(bx + barPx)}\" y2=\"{F(by + 1)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/>");
         svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(bx + barPx + 6)}\" y=\"{F(by + 4)}\" class=\"small\">{G(step)} mm (grid)</text></g>\n");
+        svg.Append("</g>\n");
+    }
+
+    /// <summary>The arm at its drawn moments, in millimetres (inside the view's transform): a thick grey line through its joints.</summary>
+    private static void WriteArms(StringBuilder svg, PreviewPath path, View view, double scale)
+    {
+        if (path.Arms.Count == 0)
+        {
+            return;
+        }
+        svg.Append("<g class=\"arms\">");
+        double r = 3.2 / scale;
+        foreach (ArmPose arm in path.Arms)
+        {
+            string kind = arm.Label is "start" or "end" ? arm.Label : "warning";
+            svg.Append(CultureInfo.InvariantCulture, $"<polyline class=\"arm arm-{kind}\" data-arm=\"{Esc(arm.Label)}\" points=\"");
+            for (int i = 0; i < arm.Points.Count; i++)
+            {
+                (double u, double v) = view.Project(arm.Points[i]);
+                svg.Append(i == 0 ? "" : " ").Append(F(u)).Append(',').Append(F(v));
+            }
+            svg.Append("\"/>");
+            foreach (Vector joint in arm.Points)
+            {
+                (double u, double v) = view.Project(joint);
+                svg.Append(CultureInfo.InvariantCulture, $"<circle class=\"arm-joint\" cx=\"{F(u)}\" cy=\"{F(v)}\" r=\"{F6(r)}\"/>");
+            }
+        }
         svg.Append("</g>\n");
     }
 
@@ -179,6 +217,13 @@ internal static class SvgWriter
         svg.Append(CultureInfo.InvariantCulture, $"<circle cx=\"{F(x + 24)}\" cy=\"{F(ty - 4)}\" r=\"3\" fill=\"#fff\" stroke=\"#5f6b7a\"/><text x=\"{F(x + 40)}\" y=\"{F(ty)}\">target ({path.Targets.Count})</text>\n");
         ty += 21;
         svg.Append(CultureInfo.InvariantCulture, $"<circle cx=\"{F(x + 24)}\" cy=\"{F(ty - 4)}\" r=\"6\" fill=\"none\" stroke=\"{PreviewStyle.WarningColour}\" stroke-width=\"2.5\"/><text x=\"{F(x + 40)}\" y=\"{F(ty)}\">warning, with its line ({path.Warnings.Count})</text>\n");
+        if (path.Arms.Count > 0)
+        {
+            ty += 21;
+            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 32)}\" y2=\"{F(ty - 4)}\" stroke=\"#c3cad4\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 36)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" stroke=\"#8d97a5\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 62)}\" y=\"{F(ty)}\">the arm at the start (light) and the end (dark), base at 0,0,0</text>\n");
+        }
         ty += 24;
         svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">Extent: X {G(min.X)} to {G(max.X)}, Y {G(min.Y)} to {G(max.Y)}, Z {G(min.Z)} to {G(max.Z)} mm</text>\n");
         if (path.Warnings.Count > 0)
@@ -193,7 +238,19 @@ internal static class SvgWriter
                     break;
                 }
                 string text = $"line {warning.Line}: {warning.Instruction} {warning.Message}";
-                svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">{Esc(Shorten(text, 88))}</text>\n");
+                IReadOnlyList<string> lines = Wrap(text, WarningLineLength, MaxWarningLines);
+                for (int i = 0; i < lines.Count; i++)
+                {
+                    if (i > 0)
+                    {
+                        ty += 14;
+                    }
+                    if (ty > y + h - 8)
+                    {
+                        break;
+                    }
+                    svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + (i == 0 ? 14 : 26))}\" y=\"{F(ty)}\" class=\"small\">{Esc(lines[i])}</text>\n");
+                }
             }
             if (path.Warnings.Count > MaxListedWarnings)
             {
@@ -243,7 +300,39 @@ internal static class SvgWriter
         return 10 * power;
     }
 
-    private static string Shorten(string text, int max) => text.Length <= max ? text : text[..(max - 1)] + "…";
+    /// <summary>Characters of a warning per legend line (11 px text in the legend's width), and most lines per warning.</summary>
+    private const int WarningLineLength = 92, MaxWarningLines = 3;
+
+    /// <summary>
+    /// <paramref name="text"/> in lines of at most <paramref name="width"/> characters, broken between words; at most
+    /// <paramref name="maxLines"/> lines, the last ending in "…" when text is left over.
+    /// </summary>
+    internal static IReadOnlyList<string> Wrap(string text, int width, int maxLines)
+    {
+        var lines = new List<string>();
+        int start = 0;
+        while (start < text.Length)
+        {
+            if (lines.Count == maxLines - 1 && text.Length - start > width)
+            {
+                lines.Add(text[start..(start + width - 1)].TrimEnd() + "…");
+                return lines;
+            }
+            int end = Math.Min(text.Length, start + width);
+            if (end < text.Length)
+            {
+                int space = text.LastIndexOf(' ', end - 1, end - start);
+                end = space > start ? space : end;
+            }
+            lines.Add(text[start..end].Trim());
+            start = end;
+            while (start < text.Length && text[start] == ' ')
+            {
+                start++;
+            }
+        }
+        return lines;
+    }
 
     private static string P(Vector? p) => p is Vector v ? $"[{G(v.X)}, {G(v.Y)}, {G(v.Z)}] mm" : "unknown";
 

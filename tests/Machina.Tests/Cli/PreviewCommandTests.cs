@@ -104,6 +104,48 @@ public class PreviewCommandTests
     }
 
     [Fact]
+    public async Task Preview_SvgWithModel_DrawsTheArmAtStartAndEnd_FromItsJoints_AndTheBase()
+    {
+        using var cli = new CliRunner();
+        Robot robot = Robot.Create("T", "ABB", "IRB 120");
+        robot.MoveTo(300, 0, 400);
+        Joints start = robot.GetIssuedState().Axes!.Value;
+        robot.MoveTo(250, 250, 300);
+        Joints end = robot.GetIssuedState().Axes!.Value;
+
+        CliResult result = await cli.RunProgramAsync("preview", "MoveTo(300, 0, 400);\nMoveTo(250, 250, 300);\n", "--model", "IRB 120", "--out", "p.svg");
+
+        Assert.Equal(0, result.Exit);
+        XDocument svg = XDocument.Load(cli.PathOf("p.svg"));
+        XElement front = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("data-view") == "front");
+        XElement[] arms = front.Descendants(Svg + "polyline").Where(l => ((string?)l.Attribute("class"))?.StartsWith("arm ", StringComparison.Ordinal) == true).ToArray();
+        Assert.Equal(["start", "end"], arms.Select(a => (string?)a.Attribute("data-arm")));
+        // The front view draws X and Z of the arm's joints, base to flange: the model's link positions for the issued joints.
+        foreach ((XElement arm, Joints joints) in arms.Zip([start, end]))
+        {
+            double[][] drawn = [.. Points(arm)];
+            IReadOnlyList<Vector> expected = RobotModels.Get("IRB 120").LinkPositions(joints);
+            Assert.Equal(expected.Count, drawn.Length);
+            for (int i = 0; i < drawn.Length; i++)
+            {
+                Assert.Equal(expected[i].X, drawn[i][0], 3);
+                Assert.Equal(expected[i].Z, drawn[i][1], 3);
+            }
+        }
+        Assert.Equal([0, 0], Points(arms[0]).First());   // from the base
+        Assert.Equal(3, svg.Descendants(Svg + "g").Count(g => (string?)g.Attribute("class") == "base"));
+        Assert.Contains("the arm at the start (light) and the end (dark), base at 0,0,0", svg.ToString(), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Wrap_BreaksBetweenWords_AndCutsOnlyPastTheLastLine()
+    {
+        Assert.Equal(["line 17: MoveTo(620,0,450); Unreachable:", "the target is out of reach."],
+            Machina.Cli.Preview.SvgWriter.Wrap("line 17: MoveTo(620,0,450); Unreachable: the target is out of reach.", 42, 3));
+        Assert.Equal(["aaaa bbbb", "cccc dddd", "eeee ffff…"], Machina.Cli.Preview.SvgWriter.Wrap("aaaa bbbb cccc dddd eeee ffff gggg", 10, 3));
+    }
+
+    [Fact]
     public async Task Preview_JointMoveWithModel_FollowsTheArmsJoints()
     {
         using var cli = new CliRunner();
