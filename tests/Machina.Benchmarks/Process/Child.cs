@@ -34,6 +34,9 @@ internal static class Child
                 case "stream":
                     Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), extra);
                     break;
+                case "issue-text":
+                    IssueText(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
+                    break;
                 case "write-input":
                     Workloads.WriteInstructionFile(a["file"], int.Parse(a["lines"], System.Globalization.CultureInfo.InvariantCulture));
                     break;
@@ -112,6 +115,18 @@ internal static class Child
             default:
                 throw new ArgumentException($"Unknown compile path \"{path}\".");
         }
+    }
+
+    /// <summary>Issues <paramref name="moves"/> relative moves on an ABB robot, compiles them in memory and takes every file's text.</summary>
+    private static void IssueText(int moves, Dictionary<string, object?> extra)
+    {
+        RobotProgram program = Workloads.IssueToolpath("ABB", moves).Compile();
+        long characters = 0;
+        foreach (RobotProgramFile file in program.Files)
+        {
+            characters += file.ToText().Length;
+        }
+        extra["characters"] = characters;
     }
 
     /// <summary>HelloRobot online: connect, set a speed, move to a start point and stream <paramref name="count"/> relative moves, wait until all are executed.</summary>
