@@ -37,6 +37,9 @@ internal static class Child
                 case "issue-text":
                     IssueText(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
                     break;
+                case "format-floor":
+                    FormatFloor(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
+                    break;
                 case "write-input":
                     Workloads.WriteInstructionFile(a["file"], int.Parse(a["lines"], System.Globalization.CultureInfo.InvariantCulture));
                     break;
@@ -126,6 +129,27 @@ internal static class Child
         {
             characters += file.ToText().Length;
         }
+        extra["characters"] = characters;
+    }
+
+    /// <summary>Formats the three coordinates of <paramref name="moves"/> moves of the benchmark file (same random values) with the shortest round-trip text.</summary>
+    private static void FormatFloor(int moves, Dictionary<string, object?> extra)
+    {
+        var random = new Random(6);
+        double[] values = new double[moves * 3];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = Math.Round((random.NextDouble() - 0.5) * 20, 3);
+        }
+        Span<char> buffer = stackalloc char[32];
+        long characters = 0;
+        long start = Stopwatch.GetTimestamp();
+        foreach (double value in values)
+        {
+            value.TryFormat(buffer, out int written, "R", System.Globalization.CultureInfo.InvariantCulture);
+            characters += written;
+        }
+        extra["formatSeconds"] = Stopwatch.GetElapsedTime(start).TotalSeconds;
         extra["characters"] = characters;
     }
 

@@ -148,3 +148,34 @@ internal sealed class IssueTextProcessScenario : ProcessScenario
         };
     }
 }
+
+/// <summary>
+/// The yardstick: a fresh process formats the numbers of the 10^6-line file (three per move, as the compilers write them)
+/// with .NET's shortest round-trip formatting into a buffer, nothing else (child kind <c>format-floor</c>).
+/// </summary>
+internal sealed class FormatFloorProcessScenario : ProcessScenario
+{
+    public override string Name => "cold-format-floor";
+
+    public override string Title => $"Fresh process: shortest round-trip text of the numbers of {Report.Count(TargetSize)} moves alone (the floor)";
+
+    public override int TargetSize => 1_000_000;
+
+    public override int QuickSize => 10_000;
+
+    public override int DefaultRuns => 5;
+
+    public override string TargetText => "(yardstick)";
+
+    public override ProcessResult Measure(int size, int runs, bool warm, ProcessInputs inputs)
+    {
+        var children = Enumerable.Range(0, runs).Select(_ => ChildProcess.Run(["format-floor", $"moves={size}"], Timeout(size))).ToList();
+        ProcessResult result = CompileProcessScenario.Summarize(this, size, children);
+        return result with
+        {
+            TargetText = TargetText,
+            Note = $"{children[0].Report.GetProperty("extra").GetProperty("characters").GetInt64()} characters; the formatting alone "
+                + string.Join(" / ", children.Select(c => c.Report.GetProperty("extra").GetProperty("formatSeconds").GetDouble().ToString("0.000", System.Globalization.CultureInfo.InvariantCulture))) + " s",
+        };
+    }
+}

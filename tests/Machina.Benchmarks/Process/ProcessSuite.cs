@@ -33,6 +33,7 @@ internal static class ProcessSuite
         named.AddRange(languages.Select(l => new ExternalToolScenario(l, native: true)));
         named.AddRange(languages.Select(l => new ExternalToolScenario(l, native: false)));
         named.Add(new IssueTextProcessScenario());
+        named.Add(new FormatFloorProcessScenario());
         return named;
     }
 
