@@ -17,7 +17,18 @@ internal static class BridgePage
         using var reader = new StreamReader(stream, Encoding.UTF8);
         string html = reader.ReadToEnd();
         // JSON string text is also a valid JavaScript string literal; '<' is escaped so that it cannot end the script element.
-        string literal = JsonSerializer.Serialize(socketPath);
+        string literal = JsonString(socketPath);
         return Encoding.UTF8.GetBytes(html.Replace(PathPlaceholder, literal, StringComparison.Ordinal));
+    }
+
+    /// <summary><paramref name="text"/> as a JSON string with the default (HTML-safe) escaping, written without reflection so that it trims.</summary>
+    private static string JsonString(string text)
+    {
+        var buffer = new System.Buffers.ArrayBufferWriter<byte>(text.Length + 16);
+        using (var writer = new Utf8JsonWriter(buffer))
+        {
+            writer.WriteStringValue(text);
+        }
+        return Encoding.UTF8.GetString(buffer.WrittenSpan);
     }
 }

@@ -19,6 +19,8 @@ internal sealed record Options
                             cold-compile-10m-…, cold-stream, cold-first-ack); see docs/performance.md
           --child-env K=V   (with --process) set an environment variable in every child, e.g. DOTNET_TieredPGO=0 (repeatable)
           --child-exe PATH  (with --process) run another build of this program as the child, e.g. a ReadyToRun publish
+          --native PATH     (with --process) the native machina the cold-native-… scenarios run (default: where
+                            dotnet publish src/Machina.Cli -p:PublishProfile=linux-x64 puts it)
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -32,6 +34,7 @@ internal sealed record Options
     public bool Process { get; init; }
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
+    public string? NativeTool { get; init; }
     public int Warmups { get; init; } = 1;
     public bool Quick { get; init; }
     public bool Json { get; init; }
@@ -52,6 +55,7 @@ internal sealed record Options
                 "--runs" => options with { Runs = Positive(args, ref i), RunsGiven = true },
                 "--process" => options with { Process = true },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
+                "--native" => options with { NativeTool = Value(args, ref i) },
                 "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },
                 "--warmup" => options with { Warmups = NonNegative(args, ref i) },
                 "--scaling" => options with { Scaling = true },

@@ -33,9 +33,10 @@ if (options.Process)
         ChildProcess.Environment[key] = value;
     }
     ChildProcess.Executable = options.ChildExecutable;
+    ExternalToolScenario.NativePath = options.NativeTool;
     if (options.List)
     {
-        foreach (ProcessScenario s in ProcessSuite.All())
+        foreach (ProcessScenario s in ProcessSuite.All().Concat(ProcessSuite.Named()))
         {
             Console.WriteLine($"{s.Name,-28} {s.Title} (target: {s.TargetText})");
         }

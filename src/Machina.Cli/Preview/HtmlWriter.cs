@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.Globalization;
 using System.Security;
 using System.Text;
@@ -83,23 +84,78 @@ internal static class HtmlWriter
     /// <summary>The path as JSON: segments (kind, line, points), targets, start, end, warnings and colours; coordinates in mm.</summary>
     internal static string Json(PreviewPath path)
     {
-        static double[] A(Vector v) => [Math.Round(v.X, 3), Math.Round(v.Y, 3), Math.Round(v.Z, 3)];
         var colours = PreviewStyle.Kinds.ToDictionary(k => PreviewStyle.Of(k).Name, k => PreviewStyle.Of(k).Colour);
         colours["start"] = PreviewStyle.StartColour;
         colours["end"] = PreviewStyle.EndColour;
         colours["warning"] = PreviewStyle.WarningColour;
-        var document = new
+        // Written by hand (no reflection, so the native tool can trim it), in the order and form the serializer used;
+        // the default encoder escapes <, > and &, so the JSON cannot close its script element.
+        var buffer = new ArrayBufferWriter<byte>(4096);
+        using (var w = new Utf8JsonWriter(buffer))
         {
-            units = "mm",
-            segments = path.Segments.Select(s => new { kind = PreviewStyle.Of(s.Kind).Name, line = s.Line, points = s.Points.Select(A).ToArray() }),
-            targets = path.Targets.Select(A),
-            start = path.Start is Vector s0 ? A(s0) : null,
-            end = path.End is Vector e0 ? A(e0) : null,
-            warnings = path.Warnings.Select(w => new { at = w.At is Vector at ? A(at) : null, line = w.Line, instruction = w.Instruction, message = w.Message }),
-            colours,
-        };
-        // The default encoder escapes <, > and &, so the JSON cannot close its script element.
-        return JsonSerializer.Serialize(document);
+            w.WriteStartObject();
+            w.WriteString("units", "mm");
+            w.WriteStartArray("segments");
+            foreach (PathSegment segment in path.Segments)
+            {
+                w.WriteStartObject();
+                w.WriteString("kind", PreviewStyle.Of(segment.Kind).Name);
+                w.WriteNumber("line", segment.Line);
+                w.WriteStartArray("points");
+                foreach (Vector point in segment.Points)
+                {
+                    Point(w, point);
+                }
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
+            w.WriteStartArray("targets");
+            foreach (Vector target in path.Targets)
+            {
+                Point(w, target);
+            }
+            w.WriteEndArray();
+            w.WritePropertyName("start");
+            Point(w, path.Start);
+            w.WritePropertyName("end");
+            Point(w, path.End);
+            w.WriteStartArray("warnings");
+            foreach (PathWarning warning in path.Warnings)
+            {
+                w.WriteStartObject();
+                w.WritePropertyName("at");
+                Point(w, warning.At);
+                w.WriteNumber("line", warning.Line);
+                w.WriteString("instruction", warning.Instruction);
+                w.WriteString("message", warning.Message);
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
+            w.WriteStartObject("colours");
+            foreach (KeyValuePair<string, string> colour in colours)
+            {
+                w.WriteString(colour.Key, colour.Value);
+            }
+            w.WriteEndObject();
+            w.WriteEndObject();
+        }
+        return Encoding.UTF8.GetString(buffer.WrittenSpan);
+    }
+
+    /// <summary>One point as <c>[x,y,z]</c> rounded to 0.001 mm, or <c>null</c> when there is none.</summary>
+    private static void Point(Utf8JsonWriter w, Vector? point)
+    {
+        if (point is not Vector v)
+        {
+            w.WriteNullValue();
+            return;
+        }
+        w.WriteStartArray();
+        w.WriteNumberValue(Math.Round(v.X, 3));
+        w.WriteNumberValue(Math.Round(v.Y, 3));
+        w.WriteNumberValue(Math.Round(v.Z, 3));
+        w.WriteEndArray();
     }
 
     private static readonly Lazy<string> Script = new(() =>

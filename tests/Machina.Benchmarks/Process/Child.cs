@@ -34,6 +34,12 @@ internal static class Child
                 case "stream":
                     Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), extra);
                     break;
+                case "issue-text":
+                    IssueText(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
+                    break;
+                case "format-floor":
+                    FormatFloor(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
+                    break;
                 case "write-input":
                     Workloads.WriteInstructionFile(a["file"], int.Parse(a["lines"], System.Globalization.CultureInfo.InvariantCulture));
                     break;
@@ -112,6 +118,39 @@ internal static class Child
             default:
                 throw new ArgumentException($"Unknown compile path \"{path}\".");
         }
+    }
+
+    /// <summary>Issues <paramref name="moves"/> relative moves on an ABB robot, compiles them in memory and takes every file's text.</summary>
+    private static void IssueText(int moves, Dictionary<string, object?> extra)
+    {
+        RobotProgram program = Workloads.IssueToolpath("ABB", moves).Compile();
+        long characters = 0;
+        foreach (RobotProgramFile file in program.Files)
+        {
+            characters += file.ToText().Length;
+        }
+        extra["characters"] = characters;
+    }
+
+    /// <summary>Formats the three coordinates of <paramref name="moves"/> moves of the benchmark file (same random values) with the shortest round-trip text.</summary>
+    private static void FormatFloor(int moves, Dictionary<string, object?> extra)
+    {
+        var random = new Random(6);
+        double[] values = new double[moves * 3];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = Math.Round((random.NextDouble() - 0.5) * 20, 3);
+        }
+        Span<char> buffer = stackalloc char[32];
+        long characters = 0;
+        long start = Stopwatch.GetTimestamp();
+        foreach (double value in values)
+        {
+            value.TryFormat(buffer, out int written, "R", System.Globalization.CultureInfo.InvariantCulture);
+            characters += written;
+        }
+        extra["formatSeconds"] = Stopwatch.GetElapsedTime(start).TotalSeconds;
+        extra["characters"] = characters;
     }
 
     /// <summary>HelloRobot online: connect, set a speed, move to a start point and stream <paramref name="count"/> relative moves, wait until all are executed.</summary>

@@ -25,10 +25,22 @@ internal static class ProcessSuite
         return all;
     }
 
+    /// <summary>Scenarios run only when named with --scenario: the built tools timed from outside (the native one may not be built).</summary>
+    public static IReadOnlyList<ProcessScenario> Named()
+    {
+        RobotType[] languages = [RobotType.ABB, RobotType.UR, RobotType.KUKA, RobotType.ZMORPH, RobotType.MARLIN, RobotType.HUMAN, RobotType.MACHINA];
+        var named = new List<ProcessScenario>();
+        named.AddRange(languages.Select(l => new ExternalToolScenario(l, native: true)));
+        named.AddRange(languages.Select(l => new ExternalToolScenario(l, native: false)));
+        named.Add(new IssueTextProcessScenario());
+        named.Add(new FormatFloorProcessScenario());
+        return named;
+    }
+
     /// <summary>Runs the selected scenarios; returns the results (also printed unless <paramref name="print"/> is false). Exit code 1 when one failed.</summary>
     public static (int ExitCode, List<ProcessResult> Results) Run(Options options, bool print = true)
     {
-        List<ProcessScenario> selected = [.. All().Where(s => options.Scenarios.Count == 0 || options.Scenarios.Any(n =>
+        List<ProcessScenario> selected = [.. All().Concat(options.Scenarios.Count == 0 ? [] : Named()).Where(s => options.Scenarios.Count == 0 || options.Scenarios.Any(n =>
             s.Name.Equals(n, StringComparison.OrdinalIgnoreCase) || s.Name.StartsWith(n + "-", StringComparison.OrdinalIgnoreCase)))];
         bool quick = options.Quick;
         bool scaling = options.Scaling ?? (!quick && options.Size is null);

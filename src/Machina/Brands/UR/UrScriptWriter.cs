@@ -11,6 +11,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     private const string Indent = "  ";
 
     private readonly StringBuilder _sb = new(256);
+    private readonly StringBuilder _warning = new(320);
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
     private int _target;
@@ -194,11 +195,18 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     }
 
     /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
+    /// <remarks>
+    /// A long program of short moves warns on every motion, so the comment line is built once in a builder, numbers formatted in
+    /// place (G15, as <see cref="Num.G"/>): only the action's text is made comment-safe, since the rest is fixed text and numbers.
+    /// The warning's own string is made only while the job keeps warnings.
+    /// </remarks>
     private void WarnBlend(RobotAction action, double radius, double length, string which)
     {
-        string text = $"the blend radius of {Num.G(radius)} mm is more than half of {which} motion ({Num.G(Math.Round(length, 3))} mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo({Num.G(Math.Floor(length / 2 * 1000) / 1000)}) or less around short motions.";
-        job.Warn(action, $"{text}");
-        sink.Add(Indent + "# WARNING: " + UrScriptText.CommentText(action.ToInstruction() + " " + text));
+        StringBuilder line = _warning.Clear().Append(Indent).Append("# WARNING: ").Append(UrScriptText.CommentText(action.ToInstruction())).Append(' ');
+        int start = line.Length;
+        line.Append(Num.Inv, $"the blend radius of {Num.Clean(radius):G15} mm is more than half of {which} motion ({Num.Clean(Math.Round(length, 3)):G15} mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo({Num.Clean(Math.Floor(length / 2 * 1000) / 1000):G15}) or less around short motions.");
+        job.Warn(action, $"{line.ToString(start, line.Length - start)}");
+        sink.Add(line);
     }
 
     /// <summary>
