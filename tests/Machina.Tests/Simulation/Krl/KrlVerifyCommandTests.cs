@@ -1,0 +1,41 @@
+// The command-line tool is .NET 10 only (see Machina.Tests.csproj): these tests run with the net10.0 build.
+#if NET10_0_OR_GREATER
+using Machina.Tests.Cli;
+
+namespace Machina.Tests.Simulation.Krl;
+
+public class KrlVerifyCommandTests
+{
+    [Fact]
+    public async Task Verify_Program_RunsItsCompiledKrlOnTheTwin_AndAgreesStepByStep()
+    {
+        using var cli = new CliRunner();
+        cli.Write("square.machina", "SpeedTo(100);\nMoveTo(400, 0, 400);\nMove(50, 0, 0);\nMove(0, 50, 0);\nWriteDigital(2, true);\n");
+
+        CliResult result = await cli.RunAsync("verify", "square.machina", "--brand", "kuka");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.StartsWith("Running the compiled program on a KRL twin of a KUKA KR 6 R900 sixx and comparing it with square.machina.\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains(" ok   Move(50,0,0);\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains(" ok   WriteDigital(2,True);\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"OK: 4 steps agree; the program runs in [0-9.]+ s\n$", result.Stdout);
+    }
+
+    [Fact]
+    public async Task Verify_SourceAlone_ListsItsSteps_OrRefusesModWithItsLine()
+    {
+        using var cli = new CliRunner();
+        cli.Write("ok.src", "DEF ok( )\n  PTP {AXIS: A1 0, A2 -90, A3 90, A4 0, A5 90, A6 0}\nEND\n");
+        cli.Write("bad.src", "DEF bad( )\n  DECL INT i\n  i = 5 MOD 2\nEND\n");
+
+        CliResult ok = await cli.RunAsync("verify", "ok.src", "--brand", "kuka");
+        CliResult bad = await cli.RunAsync("verify", "bad.src", "--brand", "kuka");
+
+        Assert.True(ok.Exit == 0, ok.Stdout + ok.Stderr);
+        Assert.Contains("  line 2         0.000 s  PTP (BCO run): TCP", ok.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("OK: the program ran to its end in 0 s\n", ok.Stdout, StringComparison.Ordinal);
+        Assert.Equal(1, bad.Exit);
+        Assert.Equal("FAILED: bad.src, line 3: KRL has no operator MOD: its arithmetic operators are + - * / (INT division with / truncates)\n", bad.Stdout);
+    }
+}
+#endif
