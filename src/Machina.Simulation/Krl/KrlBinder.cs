@@ -222,6 +222,10 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
     private void Require(KrlType type, KrlExpr value, string where)
     {
         KrlType actual = Expr(value, type);
+        if (value is KrlLiteral { Value: string one } && one.Length == 1 && type.Kind == KrlKind.Char)
+        {
+            return; // a CHAR constant is written "A"
+        }
         if (value is KrlLiteral { Value: string text } && type.IsText)
         {
             if (type.Sizes[0] > 0 && text.Length > type.Sizes[0])

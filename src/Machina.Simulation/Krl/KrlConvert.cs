@@ -12,6 +12,8 @@ internal static class KrlConvert
                 return KrlValues.ToInt(value);
             case KrlKind.Real:
                 return KrlValues.ToReal(value);
+            case KrlKind.Char when value is string one:
+                return one[0];
             case KrlKind.Struct when value is KrlStructValue s:
             {
                 if (s.Type == type)
