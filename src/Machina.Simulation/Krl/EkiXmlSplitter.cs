@@ -20,32 +20,40 @@ internal sealed class EkiXmlSplitter
     /// <summary>Adds received text and reports every complete item; throws <see cref="FormatException"/> for malformed XML.</summary>
     public void Append(string text)
     {
-        _pending.Append(text);
-        string all = _pending.ToString();
         int at = 0;
-        while (at < all.Length)
+        while (at < text.Length)
         {
-            int open = all.IndexOf('<', at);
+            if (_pending.Length > 0 && _pending[0] == '<')
+            {
+                int close = text.IndexOf('>', at);
+                if (close < 0)
+                {
+                    _pending.Append(text, at, text.Length - at);
+                    break;
+                }
+                _pending.Append(text, at, close - at);
+                string tag = _pending.ToString(1, _pending.Length - 1);
+                _pending.Clear();
+                Tag(tag);
+                at = close + 1;
+                continue;
+            }
+            int open = text.IndexOf('<', at);
             if (open < 0)
             {
-                Text(all[at..]);
-                at = all.Length;
+                _pending.Append(text, at, text.Length - at);
                 break;
             }
-            if (open > at)
+            if (open > at || _pending.Length > 0)
             {
-                Text(all[at..open]);
+                _pending.Append(text, at, open - at);
+                string content = _pending.ToString();
+                _pending.Clear();
+                Text(content);
             }
-            int close = all.IndexOf('>', open);
-            if (close < 0)
-            {
-                at = open;
-                break;
-            }
-            Tag(all[(open + 1)..close]);
-            at = close + 1;
+            _pending.Append('<');
+            at = open + 1;
         }
-        _pending.Clear().Append(all, at, all.Length - at);
         if (_pending.Length > 1 << 20)
         {
             throw new FormatException("an XML element longer than 1 MB");

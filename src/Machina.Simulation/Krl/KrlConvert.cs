@@ -9,11 +9,11 @@ internal static class KrlConvert
         switch (type.Kind)
         {
             case KrlKind.Int:
-                return KrlValues.ToInt(value);
+                return value is int ? value : KrlValues.Box(KrlValues.ToInt(value));
             case KrlKind.Real:
-                return KrlValues.ToReal(value);
+                return value is double ? value : KrlValues.ToReal(value);
             case KrlKind.Char when value is string one:
-                return one[0];
+                return KrlValues.Box(one[0]);
             case KrlKind.Struct when value is KrlStructValue s:
             {
                 if (s.Type == type)

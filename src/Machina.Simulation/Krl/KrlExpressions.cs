@@ -82,8 +82,13 @@ internal sealed class KrlUnary(int line, string op, KrlExpr operand) : KrlExpr(l
 /// <summary>An arithmetic, logic or comparison operation.</summary>
 internal sealed class KrlBinary(int line, string op, KrlExpr left, KrlExpr right) : KrlExpr(line)
 {
+    private static readonly string[] Ops = ["+", "-", "*", "/", "AND", "OR", "EXOR", "B_AND", "B_OR", "B_EXOR", "==", "<>", "<", "<=", ">", ">="];
+
     /// <summary>The operator (upper case for words).</summary>
     public string Op { get; } = op;
+
+    /// <summary>The operator's index in + - * / AND OR EXOR B_AND B_OR B_EXOR == &lt;&gt; &lt; &lt;= &gt; &gt;= (fast to switch on).</summary>
+    public int Code { get; } = Array.IndexOf(Ops, op);
 
     /// <summary>The left operand.</summary>
     public KrlExpr Left { get; } = left;

@@ -14,15 +14,23 @@ internal sealed partial class KrlMachine
                 return name.Slot >= 0 ? frame[name.Slot] : name.Cell!.Value;
             case KrlMember member:
                 return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
+            case KrlIndex index when index.Indices.Count == 0:
+                return Eval(index.Target, frame);
+            case KrlIndex { Target: KrlName } index when index.Indices[^1] is not null:
+            {
+                var array = (KrlArrayValue)Eval(index.Target, frame);
+                return array.Items[Flat(index, array, frame)];
+            }
             case KrlIndex index:
-                return index.Indices.Count == 0 ? Eval(index.Target, frame) : Place(index, frame).Get();
+                return Place(index, frame).Get();
             case KrlCall call:
+                _writes++;
                 return Call(call, frame)!;
             case KrlUnary unary:
                 object operand = Eval(unary.Operand, frame);
                 return unary.Op switch
                 {
-                    "NOT" => !(bool)operand,
+                    "NOT" => KrlValues.Box(!(bool)operand),
                     "B_NOT" => ~(int)operand,
                     _ => operand is int i ? -i : -(double)operand,
                 };
@@ -89,6 +97,47 @@ internal sealed partial class KrlMachine
         }
     }
 
+    /// <summary>Stores <paramref name="value"/> in <paramref name="target"/> (locals and plain array elements without a place object).</summary>
+    private void Assign(KrlExpr target, object value, object[] frame)
+    {
+        switch (target)
+        {
+            case KrlName { Slot: >= 0 } local:
+                frame[local.Slot] = KrlConvert.To(local.Type, value, frame[local.Slot]);
+                return;
+            case KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Indices.Count > 0 && index.Indices[^1] is not null:
+            {
+                var array = (KrlArrayValue)Eval(index.Target, frame);
+                int flat = Flat(index, array, frame);
+                array.Items[flat] = KrlConvert.To(index.Type, value, array.Items[flat]);
+                _writes++;
+                return;
+            }
+            default:
+                Place(target, frame).Set(value);
+                _writes++;
+                return;
+        }
+    }
+
+    /// <summary>The element of <paramref name="array"/> that the (complete) indices of <paramref name="index"/> select.</summary>
+    private int Flat(KrlIndex index, KrlArrayValue array, object[] frame)
+    {
+        IReadOnlyList<int> sizes = array.Type.Sizes;
+        int flat = 0;
+        for (int d = 0; d < index.Indices.Count; d++)
+        {
+            int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
+            int i = KrlValues.ToInt(Eval(index.Indices[d]!, frame));
+            if (i < 1 || i > size)
+            {
+                throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
+            }
+            flat = flat * size + (i - 1);
+        }
+        return flat;
+    }
+
     private static string Describe(KrlExpr expr) => expr switch
     {
         KrlName n => n.Name,
@@ -117,56 +166,57 @@ internal sealed partial class KrlMachine
 
     private static object Binary(KrlBinary binary, object left, object right)
     {
-        switch (binary.Op)
+        int code = binary.Code;
+        switch (code)
         {
-            case "AND":
-                return (bool)left && (bool)right;
-            case "OR":
-                return (bool)left || (bool)right;
-            case "EXOR":
-                return (bool)left ^ (bool)right;
-            case "B_AND":
+            case 4:
+                return KrlValues.Box((bool)left && (bool)right);
+            case 5:
+                return KrlValues.Box((bool)left || (bool)right);
+            case 6:
+                return KrlValues.Box((bool)left ^ (bool)right);
+            case 7:
                 return (int)left & (int)right;
-            case "B_OR":
+            case 8:
                 return (int)left | (int)right;
-            case "B_EXOR":
+            case 9:
                 return (int)left ^ (int)right;
-            case "==":
-                return Equal(left, right);
-            case "<>":
-                return !Equal(left, right);
+            case 10:
+                return KrlValues.Box(Equal(left, right));
+            case 11:
+                return KrlValues.Box(!Equal(left, right));
         }
         if (left is char cl && right is char cr)
         {
-            return Compare(binary.Op, cl.CompareTo(cr));
+            return KrlValues.Box(Compare(code, cl.CompareTo(cr)));
         }
         if (left is int a && right is int b)
         {
-            return binary.Op switch
+            return code switch
             {
-                "+" => a + b,
-                "-" => a - b,
-                "*" => a * b,
-                "/" => b == 0 ? throw new KrlRuntimeException("Division by 0") : a / b,
-                _ => Compare(binary.Op, a.CompareTo(b)),
+                0 => KrlValues.Box(a + b),
+                1 => KrlValues.Box(a - b),
+                2 => KrlValues.Box(a * b),
+                3 => b == 0 ? throw new KrlRuntimeException("Division by 0") : KrlValues.Box(a / b),
+                _ => KrlValues.Box(Compare(code, a.CompareTo(b))),
             };
         }
         double x = KrlValues.ToReal(left), y = KrlValues.ToReal(right);
-        return binary.Op switch
+        return code switch
         {
-            "+" => x + y,
-            "-" => x - y,
-            "*" => x * y,
-            "/" => y == 0 ? throw new KrlRuntimeException("Division by 0") : x / y,
-            _ => Compare(binary.Op, x.CompareTo(y)),
+            0 => x + y,
+            1 => x - y,
+            2 => x * y,
+            3 => y == 0 ? throw new KrlRuntimeException("Division by 0") : x / y,
+            _ => KrlValues.Box(Compare(code, x.CompareTo(y))),
         };
     }
 
-    private static bool Compare(string op, int sign) => op switch
+    private static bool Compare(int code, int sign) => code switch
     {
-        "<" => sign < 0,
-        "<=" => sign <= 0,
-        ">" => sign > 0,
+        12 => sign < 0,
+        13 => sign <= 0,
+        14 => sign > 0,
         _ => sign >= 0,
     };
 

@@ -15,6 +15,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     private readonly Dictionary<int, (KrlInterruptDecl Declaration, object[] Frame, bool On, bool Last)> _interrupts = [];
     private int _interruptsOn;
+    private int[] _interruptOrder = [];
+    private long _writes;
+    private long _checkedWrites = -1;
+    private long _checkedInputs = -1;
     private bool _inInterrupt;
     private object? _returned;
     private KrlRoutine _routine = null!;
@@ -94,8 +98,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             KrlStmt statement = body[i];
             Line = statement.Line;
             Controller.Line = statement.Line;
-            if (_interruptsOn > 0 && !_inInterrupt)
+            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs))
             {
+                // An interrupt's condition reads global and system variables only: it can only change after such a write or an input.
+                _checkedWrites = _writes;
+                _checkedInputs = Controller.InputsVersion;
                 CheckInterrupts();
             }
             Flow flow = Statement(statement, frame);
@@ -112,10 +119,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         switch (statement)
         {
             case KrlAssign assign:
-                Place(assign.Target, frame).Set(Eval(assign.Value, frame));
+                Assign(assign.Target, Eval(assign.Value, frame), frame);
                 return Flow.Next;
             case KrlCallStmt call:
                 Call(call.Call, frame);
+                _writes++;
                 return Flow.Next;
             case KrlIf branch:
                 return Block((bool)Eval(branch.Condition, frame) ? branch.Then : branch.Else, frame);
@@ -135,7 +143,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             case KrlJump jump:
                 return Jump(jump, frame);
             case KrlInterruptDecl declaration:
+                if (_interrupts.TryGetValue(declaration.Priority, out var old) && old.On)
+                {
+                    _interruptsOn--;
+                }
                 _interrupts[declaration.Priority] = (declaration, frame, false, false);
+                _interruptOrder = [.. _interrupts.Keys.Order()];
                 return Flow.Next;
             case KrlInterruptSwitch change:
                 SwitchInterrupts(change);
@@ -183,7 +196,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         }
         for (int i = from; step > 0 ? i <= to : i >= to; i += step)
         {
-            counter.Set(i);
+            counter.Set(KrlValues.Box(i));
             Flow flow = Block(loop.Body, frame);
             if (flow == Flow.Exit)
             {
@@ -276,7 +289,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// <summary>Runs the handler of each switched-on interrupt whose condition has just become TRUE (edge), highest priority first.</summary>
     private void CheckInterrupts()
     {
-        foreach (int priority in _interrupts.Keys.Order().ToList())
+        foreach (int priority in _interruptOrder)
         {
             var entry = _interrupts[priority];
             if (!entry.On)
@@ -284,7 +297,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 continue;
             }
             bool now = (bool)Eval(entry.Declaration.Condition, entry.Frame);
-            _interrupts[priority] = entry with { Last = now };
+            if (now != entry.Last)
+            {
+                _interrupts[priority] = entry with { Last = now };
+            }
             if (now && !entry.Last)
             {
                 _inInterrupt = true;

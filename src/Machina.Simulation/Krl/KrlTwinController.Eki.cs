@@ -85,7 +85,7 @@ internal sealed partial class KrlTwinController
     private static string Str(object value) => value is string s ? s : KrlValues.Text((KrlArrayValue)value);
 
     private static KrlStructValue Status(int buffered, int read, int error, bool connected) =>
-        new(KrlTypes.EkiStatus, [buffered, read, error, connected, 0]);
+        new(KrlTypes.EkiStatus, [KrlValues.Box(buffered), KrlValues.Box(read), KrlValues.Box(error), KrlValues.Box(connected), KrlValues.Box(0)]);
 
     private EkiChannel Channel(string name)
     {

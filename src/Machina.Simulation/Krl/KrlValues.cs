@@ -27,7 +27,15 @@ internal sealed class KrlStructValue(KrlType type, object[] values)
     public object[] Values { get; } = values;
 
     /// <summary>A deep copy (KRL structures are values).</summary>
-    public KrlStructValue Copy() => new(Type, [.. Values.Select(KrlValues.Copy)]);
+    public KrlStructValue Copy()
+    {
+        var values = new object[Values.Length];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = KrlValues.Copy(Values[i]);
+        }
+        return new KrlStructValue(Type, values);
+    }
 
     /// <summary>The REAL (or INT) component <paramref name="field"/>, 0 when the type has none.</summary>
     public double Number(string field) => Type.FieldIndex(field) is int i and >= 0 ? KrlValues.ToReal(Values[i]) : 0;
@@ -49,12 +57,35 @@ internal sealed class KrlArrayValue(KrlType type, object[] items)
     public object[] Items { get; } = items;
 
     /// <summary>A deep copy.</summary>
-    public KrlArrayValue Copy() => new(Type, [.. Items.Select(KrlValues.Copy)]);
+    public KrlArrayValue Copy()
+    {
+        var items = new object[Items.Length];
+        for (int i = 0; i < items.Length; i++)
+        {
+            items[i] = KrlValues.Copy(Items[i]);
+        }
+        return new KrlArrayValue(Type, items);
+    }
 }
 
 /// <summary>Making, copying and converting KRL values (boxed int, double, bool, char, enum, structure, array).</summary>
 internal static class KrlValues
 {
+    private static readonly object[] SmallInts = [.. Enumerable.Range(-1, 4098).Select(i => (object)i)];
+    private static readonly object[] Chars = [.. Enumerable.Range(0, 256).Select(i => (object)(char)i)];
+
+    /// <summary>A boxed INT, shared for -1 to 4096 (array indices, ids, counters) so that loops do not allocate.</summary>
+    public static object Box(int value) => value is >= -1 and <= 4096 ? SmallInts[value + 1] : value;
+
+    /// <summary>A boxed BOOL, shared (conditions are evaluated on every statement an interrupt watches).</summary>
+    public static object Box(bool value) => value ? True : False;
+
+    private static readonly object True = true;
+    private static readonly object False = false;
+
+    /// <summary>A boxed CHAR, shared for the first 256 characters.</summary>
+    public static object Box(char value) => value < 256 ? Chars[value] : value;
+
     /// <summary>The initial value of a variable of <paramref name="type"/> (0, FALSE, empty).</summary>
     public static object Default(KrlType type) => type.Kind switch
     {
