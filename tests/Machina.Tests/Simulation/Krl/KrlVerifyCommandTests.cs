@@ -37,5 +37,26 @@ public class KrlVerifyCommandTests
         Assert.Equal(1, bad.Exit);
         Assert.Equal("FAILED: bad.src, line 3: KRL has no operator MOD: its arithmetic operators are + - * / (INT division with / truncates)\n", bad.Stdout);
     }
+
+    [Fact]
+    public async Task SimKukaLoad_RunsACompiledProgramOnTheTwin_AndListsItsSteps_OrTheStop()
+    {
+        using var cli = new CliRunner();
+        Directory.CreateDirectory(Path.Combine(cli.Folder, "prog"));
+        Directory.CreateDirectory(Path.Combine(cli.Folder, "ok"));
+        cli.Write("prog/prog.src", "DEF prog( )\n  PTP $AXIS_ACT\n  $OUT[7] = TRUE\n  PTP {AXIS: A1 175}\nEND\n");
+        cli.Write("ok/ok.src", "DEF ok( )\n  PTP $AXIS_ACT\n  $OUT[7] = flag\nEND\n");
+        cli.Write("ok/ok.dat", "DEFDAT ok\n  DECL BOOL flag=TRUE\nENDDAT\n");
+
+        CliResult ok = await cli.RunAsync("sim", "kuka", "--load", "ok");
+        CliResult stopped = await cli.RunAsync("sim", "kuka", "--load", "prog/prog.src");
+
+        Assert.True(ok.Exit == 0, ok.Stdout + ok.Stderr);
+        Assert.StartsWith("Running ok (ok.src, ok.dat) on a KRL twin of a KUKA KR 6 R900 sixx in real time.", ok.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  line 3         0.000 s  $OUT[7] = TRUE: TCP", ok.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("OK: the program ran to its end in 0 s\n", ok.Stdout, StringComparison.Ordinal);
+        Assert.Equal(1, stopped.Exit);
+        Assert.EndsWith("FAILED: Software limit switch A1 +: the target 175 deg is beyond 170 deg (prog.src, line 4)\n", stopped.Stdout, StringComparison.Ordinal);
+    }
 }
 #endif
