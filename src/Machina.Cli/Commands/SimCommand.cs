@@ -4,7 +4,7 @@ using Machina.Cli.Simulation;
 namespace Machina.Cli.Commands;
 
 /// <summary><c>machina sim</c>: a standalone virtual controller until Ctrl+C, logging what it receives.</summary>
-internal static class SimCommand
+internal static partial class SimCommand
 {
     /// <summary>The port the ABB driver listens on by default, and so the default here.</summary>
     internal const int DefaultPort = 7000;
@@ -14,6 +14,7 @@ internal static class SimCommand
         "Start a virtual robot controller to try any Machina host without a robot",
         $"""
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
+               machina sim kuka --load PROGRAM [--model M]
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
@@ -29,18 +30,24 @@ internal static class SimCommand
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
           --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
+          --load PROGRAM    KUKA: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
+                            time and list each step it makes, then stop (exit code 1 when the controller stops it)
 
         Example:
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model"],
+        Options: ["--port", "--bind", "--speed-factor", "--model", "--load"],
         Flags: ["--quiet"],
         RunAsync);
 
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
+        if (args.Value("--load") is { } load && brand == RobotType.KUKA)
+        {
+            return await RunKrlAsync(load, Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, brand)!, context).ConfigureAwait(false);
+        }
         int port = args.Port("--port", DefaultPort, allowZero: true);
         string bindText = args.Value("--bind") ?? "127.0.0.1";
         if (!IPAddress.TryParse(bindText, out IPAddress? bind))

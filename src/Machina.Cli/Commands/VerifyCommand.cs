@@ -9,9 +9,9 @@ internal static partial class VerifyCommand
 {
     internal static readonly CliCommand Command = new(
         "verify",
-        "Run a compiled UR or ABB program on a twin controller and compare it with the library",
+        "Run a compiled UR, ABB or KUKA program on a twin controller and compare it with the library",
         """
-        Usage: machina verify PROGRAM --brand ur|abb [--script FILE] [--model M]
+        Usage: machina verify PROGRAM --brand ur|abb|kuka [--script FILE] [--model M]
 
         PROGRAM is a text file of Machina instructions. It is compiled to URScript (or FILE, a URScript program compiled from
         it earlier, is taken instead), and the script runs on the URScript twin: a controller that interprets URScript as
@@ -27,15 +27,21 @@ internal static partial class VerifyCommand
         compiled RAPID program: a .pgf file, a .mod file or a folder holding them. PROGRAM may also be such a
         .pgf/.mod file or folder alone: main runs and each step is listed.
 
+        With --brand kuka the program is compiled to KRL and its main routine runs on the KRL twin, which interprets KRL
+        (.src routines, .dat data lists, motion in $BASE/$TOOL, software limit switches, outputs) with the arm model's
+        kinematics. --script is then the compiled KRL program: a .src file (its .dat beside it is loaded too) or a folder.
+        PROGRAM may also be such a .src file or folder alone: its main routine runs and each step is listed.
+
         Options:
-          --brand ur|abb     the controller (UR: URScript twin; ABB: RAPID twin)
+          --brand ur|abb|kuka  the controller (UR: URScript twin; ABB: RAPID twin; KUKA: KRL twin)
           --script FILE      the compiled program to check, instead of compiling PROGRAM now
-          --model M          the arm model (default UR5e for UR, IRB 120 for ABB; machina models lists them)
+          --model M          the arm model (default UR5e for UR, IRB 120 for ABB, KR 6 R900 sixx for KUKA; machina models lists them)
 
         Examples:
           machina verify square.machina --brand ur
           machina verify square.machina --brand abb --model "IRB 1200-5/0.9"
           machina verify out/Square --brand abb
+          machina verify square.machina --brand kuka
         Exit code: 0 when the program runs to its end and every step agrees, 1 when it does not, 2 for a command-line mistake.
         """,
         Options: ["--brand", "--script", "--model"],
@@ -47,9 +53,14 @@ internal static partial class VerifyCommand
         string path = args.Single("a PROGRAM file (Machina instructions, a .script, or a RAPID .pgf/.mod file or folder)");
         // The brands with a twin controller: URScript and RAPID.
         BrandDefinition twinBrand = UrBrand.Definition;
-        if (Brands.Parse(args.Required("--brand", "(ur or abb: the brands with a twin controller)"), [twinBrand.Type, AbbBrand.Definition.Type]) == AbbBrand.Definition.Type)
+        RobotType brand = Brands.Parse(args.Required("--brand", "(ur, abb or kuka: the brands with a twin controller)"), [twinBrand.Type, AbbBrand.Definition.Type, KukaBrand.Definition.Type]);
+        if (brand == AbbBrand.Definition.Type)
         {
             return await RunAbbAsync(path, args, context).ConfigureAwait(false);
+        }
+        if (brand == KukaBrand.Definition.Type)
+        {
+            return await RunKukaAsync(path, args, context).ConfigureAwait(false);
         }
         RobotModel model = Brands.Model(args.Value("--model") ?? twinBrand.DefaultModel, twinBrand.Type)!;
         var options = new UrTwinOptions { Model = model };

@@ -1,0 +1,319 @@
+using System.Globalization;
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// One EthernetKRL channel of the twin, after EKI_Init: the robot listens (server) on its port and takes one client; each XML
+/// document received is split into the value memories of its RECEIVE elements (all at once when the document is complete),
+/// flags are set as configured, and EKI_Send writes the SEND elements whose values the program set.
+/// </summary>
+internal sealed class EkiChannel(string name, EkiConfiguration configuration, KrlTwinController controller) : IDisposable
+{
+    private readonly Lock _gate = new();
+    private readonly Dictionary<string, LinkedList<string>> _memories = configuration.Receive
+        .Where(e => e.Type is not null).ToDictionary(e => e.Tag, _ => new LinkedList<string>(), StringComparer.Ordinal);
+    private readonly Dictionary<string, string> _toSend = new(StringComparer.Ordinal);
+    private TcpListener? _listener;
+    private TcpClient? _client;
+    private CancellationTokenSource? _stop;
+
+    /// <summary>The channel's name (its configuration file without .xml).</summary>
+    public string Name { get; } = name;
+
+    /// <summary>The configuration.</summary>
+    public EkiConfiguration Configuration { get; } = configuration;
+
+    /// <summary>True while a client is connected.</summary>
+    public bool Connected
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _client is not null;
+            }
+        }
+    }
+
+    /// <summary>EKI_Open: the robot starts listening on <paramref name="port"/> (0: any free port); returns the port.</summary>
+    public int Open(IPAddress address, int port)
+    {
+        if (!Configuration.RobotIsServer)
+        {
+            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} has the robot as client; the twin only listens (TYPE Client)");
+        }
+        lock (_gate)
+        {
+            if (_listener is not null || _client is not null)
+            {
+                throw new KrlRuntimeException($"EthernetKRL: the channel {Name} is already open");
+            }
+            _stop = new CancellationTokenSource();
+            _listener = new TcpListener(address, port);
+            _listener.Start(1);
+        }
+        int bound = ((IPEndPoint)_listener.LocalEndpoint).Port;
+        _ = Task.Run(() => AcceptAsync(_listener, _stop.Token));
+        return bound;
+    }
+
+    private async Task AcceptAsync(TcpListener listener, CancellationToken token)
+    {
+        TcpClient client;
+        try
+        {
+            client = await listener.AcceptTcpClientAsync(token).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException)
+        {
+            return;
+        }
+        client.NoDelay = true;
+        lock (_gate)
+        {
+            listener.Stop();
+            _listener = null;
+            if (token.IsCancellationRequested)
+            {
+                client.Dispose();
+                return;
+            }
+            _client = client;
+        }
+        Alive(true);
+        await ReadAsync(client, token).ConfigureAwait(false);
+    }
+
+    private async Task ReadAsync(TcpClient client, CancellationToken token)
+    {
+        var splitter = new EkiXmlSplitter();
+        var document = new List<(string Tag, string Value)>();
+        var flags = new List<int>();
+        splitter.Value += (tag, value) =>
+        {
+            if (_memories.ContainsKey(tag))
+            {
+                document.Add((tag, value));
+            }
+        };
+        splitter.Ended += (path, topLevel) =>
+        {
+            foreach (EkiReceiveElement element in Configuration.Receive)
+            {
+                if (element.SetFlag > 0 && element.Tag == path)
+                {
+                    flags.Add(element.SetFlag);
+                }
+            }
+            if (topLevel)
+            {
+                Commit(document, flags);
+            }
+        };
+        var bytes = new byte[8192];
+        var decoder = Encoding.UTF8.GetDecoder();
+        var chars = new char[8192];
+        try
+        {
+            Stream stream = client.GetStream();
+            while (true)
+            {
+                int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
+                if (n == 0)
+                {
+                    break;
+                }
+                int count = decoder.GetChars(bytes, 0, n, chars, 0);
+                splitter.Append(new string(chars, 0, count));
+            }
+        }
+        catch (FormatException ex)
+        {
+            controller.Pendant.Log($"EthernetKRL {Name}: received XML it cannot read ({ex.Message}); the connection is closed");
+        }
+        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
+        {
+            // The client left or the channel was closed.
+        }
+        Disconnect(client);
+    }
+
+    /// <summary>Stores a complete document's values, then sets its flags (a memory over its limit closes the connection).</summary>
+    private void Commit(List<(string Tag, string Value)> document, List<int> flags)
+    {
+        bool overflow = false;
+        lock (_gate)
+        {
+            foreach ((string tag, string value) in document)
+            {
+                LinkedList<string> memory = _memories[tag];
+                memory.AddLast(value);
+                overflow |= memory.Count > Configuration.Limit;
+            }
+        }
+        document.Clear();
+        foreach (int flag in flags)
+        {
+            controller.SetFlag(flag, true);
+        }
+        flags.Clear();
+        if (overflow)
+        {
+            controller.Pendant.Log($"EthernetKRL {Name}: a memory holds more than {Configuration.Limit} elements; the connection is closed");
+            TcpClient? client;
+            lock (_gate)
+            {
+                client = _client;
+            }
+            client?.Dispose();
+        }
+    }
+
+    private void Disconnect(TcpClient client)
+    {
+        lock (_gate)
+        {
+            if (_client != client)
+            {
+                return;
+            }
+            _client = null;
+        }
+        client.Dispose();
+        Alive(false);
+    }
+
+    private void Alive(bool value)
+    {
+        if (Configuration.AliveFlag > 0)
+        {
+            controller.SetFlag(Configuration.AliveFlag, value);
+        }
+        else
+        {
+            controller.InputsChanged();
+        }
+    }
+
+    /// <summary>How many elements the memory of <paramref name="tag"/> holds.</summary>
+    public int Count(string tag)
+    {
+        lock (_gate)
+        {
+            return Memory(tag).Count;
+        }
+    }
+
+    /// <summary>Takes the next element of the memory of <paramref name="tag"/> (null when empty); also returns how many remain.</summary>
+    public string? Take(string tag, out int remaining)
+    {
+        lock (_gate)
+        {
+            LinkedList<string> memory = Memory(tag);
+            if (memory.Count == 0)
+            {
+                remaining = 0;
+                return null;
+            }
+            string value;
+            if (Configuration.Fifo)
+            {
+                value = memory.First!.Value;
+                memory.RemoveFirst();
+            }
+            else
+            {
+                value = memory.Last!.Value;
+                memory.RemoveLast();
+            }
+            remaining = memory.Count;
+            return value;
+        }
+    }
+
+    private LinkedList<string> Memory(string tag) => _memories.TryGetValue(tag, out LinkedList<string>? memory)
+        ? memory
+        : throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
+
+    /// <summary>EKI_Set…: keeps the value of <paramref name="tag"/> for the next EKI_Send.</summary>
+    public void Set(string tag, string value)
+    {
+        if (!Configuration.Send.Contains(tag, StringComparer.Ordinal))
+        {
+            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} sends no element {tag} (see its SEND configuration)");
+        }
+        lock (_gate)
+        {
+            _toSend[tag] = value;
+        }
+    }
+
+    /// <summary>EKI_Send: writes the element <paramref name="root"/> with the values set for its attributes; false without a client.</summary>
+    public bool Send(string root)
+    {
+        var xml = new StringBuilder("<").Append(root);
+        TcpClient? client;
+        lock (_gate)
+        {
+            string prefix = root + "/@";
+            foreach (string tag in Configuration.Send)
+            {
+                if (tag.StartsWith(prefix, StringComparison.Ordinal) && _toSend.TryGetValue(tag, out string? value))
+                {
+                    xml.Append(' ').Append(tag, prefix.Length, tag.Length - prefix.Length).Append("=\"").Append(Escape(value)).Append('"');
+                }
+            }
+            client = _client;
+        }
+        if (!Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal)))
+        {
+            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} sends no element {root} (see its SEND configuration)");
+        }
+        if (client is null)
+        {
+            return false;
+        }
+        try
+        {
+            client.GetStream().Write(Encoding.UTF8.GetBytes(xml.Append(" />").ToString()));
+            return true;
+        }
+        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException or InvalidOperationException)
+        {
+            return false;
+        }
+    }
+
+    private static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
+        .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
+
+    /// <summary>EKI_Close: ends the connection and stops listening; the memories keep their elements.</summary>
+    public void Close()
+    {
+        TcpClient? client;
+        lock (_gate)
+        {
+            _stop?.Cancel();
+            _listener?.Stop();
+            _listener = null;
+            client = _client;
+        }
+        if (client is not null)
+        {
+            Disconnect(client);
+        }
+    }
+
+    /// <summary>Formats a REAL as EKI_SetReal sends it.</summary>
+    public static string Format(double value) => value.ToString("0.######", CultureInfo.InvariantCulture);
+
+    /// <inheritdoc/>
+    public void Dispose()
+    {
+        Close();
+        _stop?.Dispose();
+    }
+}

@@ -1,0 +1,22 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>What a built-in routine accepts as one argument.</summary>
+/// <param name="Accepts">The type accepted (null: any value); INT and REAL accept each other.</param>
+/// <param name="IsOut">True for an OUT argument: a variable the routine writes.</param>
+internal sealed record KrlBuiltinParameter(KrlType? Accepts, bool IsOut = false)
+{
+    /// <summary>Any CHAR array (a string).</summary>
+    public static KrlBuiltinParameter Text { get; } = new(KrlType.Array(KrlType.Char, 0));
+
+    /// <summary>A REAL (or INT) value.</summary>
+    public static KrlBuiltinParameter Real { get; } = new(KrlType.Real);
+
+    /// <summary>An INT (or REAL) value.</summary>
+    public static KrlBuiltinParameter Int { get; } = new(KrlType.Int);
+}
+
+/// <summary>
+/// A routine of the KUKA system software or of a technology package (EthernetKRL) that programs call: its parameters, its
+/// return type (null for a subprogram) and what it does on the twin. OUT arguments arrive as <see cref="KrlPlace"/>.
+/// </summary>
+internal sealed record KrlBuiltin(string Name, KrlType? Returns, KrlBuiltinParameter[] Parameters, Func<KrlMachine, object[], object?> Run);

@@ -1,0 +1,69 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// The system routines KRL programs call: BAS (the basic package's initialisation), IR_STOPM (its stop-message interrupt),
+/// INVERSE, StrCopy, Set_KrlMsg, and the mathematical functions.
+/// </summary>
+internal static class KrlBuiltins
+{
+    /// <summary>Adds the system routines (EthernetKRL has its own).</summary>
+    public static void AddTo(KrlEnvironment environment)
+    {
+        void Add(KrlBuiltin builtin) => environment.Builtins[builtin.Name] = builtin;
+        Add(new("BAS", null, [new(KrlType.Enum), KrlBuiltinParameter.Real], (m, a) => Bas(m, (KrlEnumValue)a[0])));
+        Add(new("IR_STOPM", null, [], (_, _) => null));
+        Add(new("INVERSE", KrlTypes.E6Axis, [new(KrlTypes.E6Pos), new(KrlTypes.E6Axis), new(KrlType.Int, IsOut: true)], Inverse));
+        Add(new("StrCopy", KrlType.Bool, [new(KrlType.Array(KrlType.Char, 0), IsOut: true), KrlBuiltinParameter.Text], (_, a) =>
+        {
+            var target = (KrlPlace)a[0];
+            target.Set(a[1] is string s ? s : KrlValues.Text((KrlArrayValue)a[1]));
+            return true;
+        }));
+        Add(new("StrLen", KrlType.Int, [KrlBuiltinParameter.Text], (_, a) => a[0] is string s ? s.Length : KrlValues.Text((KrlArrayValue)a[0]).Length));
+        Add(new("Set_KrlMsg", KrlType.Int, [new(KrlType.Enum), new(KrlTypes.KrlMsg), new(KrlType.Array(KrlTypes.KrlMsgPar, 0)), new(KrlTypes.KrlMsgOpt)], Message));
+        Add(Math1("ABS", Math.Abs));
+        Add(Math1("SQRT", x => x < 0 ? throw new KrlRuntimeException("SQRT of a negative number") : Math.Sqrt(x)));
+        Add(Math1("SIN", x => Math.Sin(x * Math.PI / 180)));
+        Add(Math1("COS", x => Math.Cos(x * Math.PI / 180)));
+        Add(Math1("TAN", x => Math.Tan(x * Math.PI / 180)));
+        Add(Math1("ACOS", x => Math.Acos(x) * 180 / Math.PI));
+        Add(new("ATAN2", KrlType.Real, [KrlBuiltinParameter.Real, KrlBuiltinParameter.Real],
+            (_, a) => Math.Atan2(KrlValues.ToReal(a[0]), KrlValues.ToReal(a[1])) * 180 / Math.PI));
+    }
+
+    private static KrlBuiltin Math1(string name, Func<double, double> f) =>
+        new(name, KrlType.Real, [KrlBuiltinParameter.Real], (_, a) => f(KrlValues.ToReal(a[0])));
+
+    /// <summary>BAS(#INITMOV, 0): axis speeds and accelerations 100 %, the path speed and acceleration of the controller's defaults.</summary>
+    private static object? Bas(KrlMachine machine, KrlEnumValue what)
+    {
+        if (!string.Equals(what.Name, "INITMOV", StringComparison.OrdinalIgnoreCase))
+        {
+            throw new KrlRuntimeException($"BAS(#{what.Name}) is not supported by the twin (only #INITMOV)");
+        }
+        machine.Controller.InitialiseMotion();
+        return null;
+    }
+
+    /// <summary>INVERSE(position, start axes, status): the axis angles of a Cartesian position (in $BASE with $TOOL); status 0 when found.</summary>
+    private static object? Inverse(KrlMachine machine, object[] a)
+    {
+        var status = (KrlPlace)a[2];
+        var start = (KrlStructValue)KrlConvert.To(KrlTypes.E6Axis, a[1], null);
+        var position = (KrlStructValue)KrlConvert.To(KrlTypes.E6Pos, a[0], null);
+        Joints near = KrlTwinController.JointsOf(start);
+        Joints? solution = machine.Controller.Solve(position, near, useStatusTurn: false, out _);
+        status.Set(solution is null ? 1 : 0);
+        return solution is { } j ? KrlTwinController.AxesValue(j) : start;
+    }
+
+    private static object? Message(KrlMachine machine, object[] a)
+    {
+        var kind = (KrlEnumValue)a[0];
+        var message = (KrlStructValue)KrlConvert.To(KrlTypes.KrlMsg, a[1], null);
+        string module = KrlValues.Text((KrlArrayValue)message.Values[0]);
+        string text = KrlValues.Text((KrlArrayValue)message.Values[2]).TrimEnd();
+        machine.Controller.Pendant.Log(FormattableString.Invariant($"{kind.Name.ToUpperInvariant()} {module} {message.Values[1]}: {text}"));
+        return machine.Controller.NextMessageHandle();
+    }
+}

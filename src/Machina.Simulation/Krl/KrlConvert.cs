@@ -1,0 +1,63 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>Assignment conversions of KRL: INT and REAL into each other, structures component by component, strings into CHAR arrays.</summary>
+internal static class KrlConvert
+{
+    /// <summary><paramref name="value"/> as a value of <paramref name="type"/>; <paramref name="old"/> gives the components an aggregate leaves out.</summary>
+    public static object To(KrlType type, object value, object? old)
+    {
+        switch (type.Kind)
+        {
+            case KrlKind.Int:
+                return value is int ? value : KrlValues.Box(KrlValues.ToInt(value));
+            case KrlKind.Real:
+                return value is double ? value : KrlValues.ToReal(value);
+            case KrlKind.Char when value is string one:
+                return KrlValues.Box(one[0]);
+            case KrlKind.Struct when value is KrlStructValue s:
+            {
+                if (s.Type == type)
+                {
+                    return s.Copy();
+                }
+                var result = old is KrlStructValue o && o.Type == type ? o.Copy() : (KrlStructValue)KrlValues.Default(type);
+                for (int i = 0; i < s.Type.Fields.Count; i++)
+                {
+                    int j = type.FieldIndex(s.Type.Fields[i].Name);
+                    if (j >= 0)
+                    {
+                        result.Values[j] = To(type.Fields[j].Type, s.Values[i], result.Values[j]);
+                    }
+                }
+                return result;
+            }
+            case KrlKind.Struct when value is KrlPartialValue p:
+            {
+                var result = old is KrlStructValue o && o.Type == type ? o.Copy() : (KrlStructValue)KrlValues.Default(type);
+                for (int i = 0; i < p.Indexes.Length; i++)
+                {
+                    int j = p.Type == type ? p.Indexes[i] : type.FieldIndex(p.Type.Fields[p.Indexes[i]].Name);
+                    if (j >= 0)
+                    {
+                        result.Values[j] = To(type.Fields[j].Type, p.Values[i], result.Values[j]);
+                    }
+                }
+                return result;
+            }
+            case KrlKind.Array when value is string text:
+            {
+                var array = (KrlArrayValue)KrlValues.Default(type);
+                KrlValues.SetText(array.Items, 0, array.Items.Length, text);
+                return array;
+            }
+            case KrlKind.Array when value is KrlArrayValue a:
+            {
+                var array = (KrlArrayValue)KrlValues.Default(type);
+                Array.Copy(a.Items, array.Items, Math.Min(a.Items.Length, array.Items.Length));
+                return array;
+            }
+            default:
+                return KrlValues.Copy(value);
+        }
+    }
+}

@@ -1,0 +1,230 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>Values, places and calls.</summary>
+internal sealed partial class KrlMachine
+{
+    /// <summary>The value of <paramref name="expr"/> in <paramref name="frame"/>.</summary>
+    public object Eval(KrlExpr expr, object[] frame)
+    {
+        switch (expr)
+        {
+            case KrlLiteral literal:
+                return literal.Value;
+            case KrlName name:
+                return name.Slot >= 0 ? frame[name.Slot] : name.Cell!.Value;
+            case KrlMember member:
+                return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
+            case KrlIndex index when index.Indices.Count == 0:
+                return Eval(index.Target, frame);
+            case KrlIndex { Target: KrlName } index when index.Indices[^1] is not null:
+            {
+                var array = (KrlArrayValue)Eval(index.Target, frame);
+                return array.Items[Flat(index, array, frame)];
+            }
+            case KrlIndex index:
+                return Place(index, frame).Get();
+            case KrlCall call:
+                _writes++;
+                return Call(call, frame)!;
+            case KrlUnary unary:
+                object operand = Eval(unary.Operand, frame);
+                return unary.Op switch
+                {
+                    "NOT" => KrlValues.Box(!(bool)operand),
+                    "B_NOT" => ~(int)operand,
+                    _ => operand is int i ? -i : -(double)operand,
+                };
+            case KrlBinary binary:
+                return Binary(binary, Eval(binary.Left, frame), Eval(binary.Right, frame));
+            case KrlAggregate aggregate:
+            {
+                var values = new object[aggregate.Fields.Count];
+                for (int i = 0; i < values.Length; i++)
+                {
+                    KrlType field = aggregate.Type.Fields[aggregate.FieldIndexes[i]].Type;
+                    values[i] = KrlConvert.To(field, Eval(aggregate.Fields[i].Value, frame), null);
+                }
+                return new KrlPartialValue(aggregate.Type, aggregate.FieldIndexes, values);
+            }
+            default:
+                throw new KrlRuntimeException("an expression the twin cannot evaluate");
+        }
+    }
+
+    /// <summary>Where <paramref name="expr"/> (a variable, element, row or component) is stored.</summary>
+    public KrlPlace Place(KrlExpr expr, object[] frame)
+    {
+        switch (expr)
+        {
+            case KrlName name when name.Slot >= 0:
+                return new KrlPlace(frame, name.Slot, name.Type);
+            case KrlName name:
+                return new KrlPlace(name.Cell!.Box, 0, name.Type) { Root = (name.Cell, -1) };
+            case KrlMember member:
+            {
+                KrlPlace parent = Place(member.Target, frame);
+                var structure = (KrlStructValue)parent.Container[parent.Index];
+                return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null };
+            }
+            case KrlIndex index:
+            {
+                KrlPlace parent = Place(index.Target, frame);
+                if (index.Indices.Count == 0)
+                {
+                    return parent;
+                }
+                var array = (KrlArrayValue)parent.Container[parent.Index];
+                IReadOnlyList<int> sizes = array.Type.Sizes;
+                int flat = 0;
+                for (int d = 0; d < index.Indices.Count; d++)
+                {
+                    int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
+                    int i = index.Indices[d] is { } e ? KrlValues.ToInt(Eval(e, frame)) : 1;
+                    if (i < 1 || i > size)
+                    {
+                        throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
+                    }
+                    flat = flat * size + (i - 1);
+                }
+                if (index.Indices[^1] is null)
+                {
+                    return new KrlPlace(array.Items, flat, index.Type, sizes[^1]) { Root = parent.Root is { } r ? (r.Cell, -1) : null };
+                }
+                return new KrlPlace(array.Items, flat, index.Type) { Root = parent.Root is { } root ? (root.Cell, flat) : null };
+            }
+            default:
+                throw new KrlRuntimeException("only a variable can be written");
+        }
+    }
+
+    /// <summary>Stores <paramref name="value"/> in <paramref name="target"/> (locals and plain array elements without a place object).</summary>
+    private void Assign(KrlExpr target, object value, object[] frame)
+    {
+        switch (target)
+        {
+            case KrlName { Slot: >= 0 } local:
+                frame[local.Slot] = KrlConvert.To(local.Type, value, frame[local.Slot]);
+                return;
+            case KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Indices.Count > 0 && index.Indices[^1] is not null:
+            {
+                var array = (KrlArrayValue)Eval(index.Target, frame);
+                int flat = Flat(index, array, frame);
+                array.Items[flat] = KrlConvert.To(index.Type, value, array.Items[flat]);
+                _writes++;
+                return;
+            }
+            default:
+                Place(target, frame).Set(value);
+                _writes++;
+                return;
+        }
+    }
+
+    /// <summary>The element of <paramref name="array"/> that the (complete) indices of <paramref name="index"/> select.</summary>
+    private int Flat(KrlIndex index, KrlArrayValue array, object[] frame)
+    {
+        IReadOnlyList<int> sizes = array.Type.Sizes;
+        int flat = 0;
+        for (int d = 0; d < index.Indices.Count; d++)
+        {
+            int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
+            int i = KrlValues.ToInt(Eval(index.Indices[d]!, frame));
+            if (i < 1 || i > size)
+            {
+                throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
+            }
+            flat = flat * size + (i - 1);
+        }
+        return flat;
+    }
+
+    private static string Describe(KrlExpr expr) => expr switch
+    {
+        KrlName n => n.Name,
+        KrlMember m => Describe(m.Target) + "." + m.Field,
+        _ => "the array",
+    };
+
+    /// <summary>Calls a routine or a built-in; returns a function's value (null for a subprogram).</summary>
+    public object? Call(KrlCall call, object[] frame)
+    {
+        var arguments = new object[call.Arguments.Count];
+        for (int i = 0; i < arguments.Length; i++)
+        {
+            bool isOut = call.Routine is { } r ? r.Parameters[i].IsOut : call.Builtin!.Parameters[i].IsOut;
+            arguments[i] = isOut ? Place(call.Arguments[i], frame) : Eval(call.Arguments[i], frame);
+        }
+        if (call.Routine is { } routine)
+        {
+            return Invoke(routine, arguments);
+        }
+        int line = Line;
+        object? result = call.Builtin!.Run(this, arguments);
+        Line = line;
+        return result;
+    }
+
+    private static object Binary(KrlBinary binary, object left, object right)
+    {
+        int code = binary.Code;
+        switch (code)
+        {
+            case 4:
+                return KrlValues.Box((bool)left && (bool)right);
+            case 5:
+                return KrlValues.Box((bool)left || (bool)right);
+            case 6:
+                return KrlValues.Box((bool)left ^ (bool)right);
+            case 7:
+                return (int)left & (int)right;
+            case 8:
+                return (int)left | (int)right;
+            case 9:
+                return (int)left ^ (int)right;
+            case 10:
+                return KrlValues.Box(Equal(left, right));
+            case 11:
+                return KrlValues.Box(!Equal(left, right));
+        }
+        if (left is char cl && right is char cr)
+        {
+            return KrlValues.Box(Compare(code, cl.CompareTo(cr)));
+        }
+        if (left is int a && right is int b)
+        {
+            return code switch
+            {
+                0 => KrlValues.Box(a + b),
+                1 => KrlValues.Box(a - b),
+                2 => KrlValues.Box(a * b),
+                3 => b == 0 ? throw new KrlRuntimeException("Division by 0") : KrlValues.Box(a / b),
+                _ => KrlValues.Box(Compare(code, a.CompareTo(b))),
+            };
+        }
+        double x = KrlValues.ToReal(left), y = KrlValues.ToReal(right);
+        return code switch
+        {
+            0 => x + y,
+            1 => x - y,
+            2 => x * y,
+            3 => y == 0 ? throw new KrlRuntimeException("Division by 0") : x / y,
+            _ => KrlValues.Box(Compare(code, x.CompareTo(y))),
+        };
+    }
+
+    private static bool Compare(int code, int sign) => code switch
+    {
+        12 => sign < 0,
+        13 => sign <= 0,
+        14 => sign > 0,
+        _ => sign >= 0,
+    };
+
+    /// <summary>KRL's == : numbers by value (INT against REAL too), the rest by equality.</summary>
+    public static bool Equal(object left, object right) => left switch
+    {
+        int a when right is int b => a == b,
+        int or double when right is int or double => KrlValues.ToReal(left) == KrlValues.ToReal(right),
+        _ => left.Equals(right),
+    };
+}

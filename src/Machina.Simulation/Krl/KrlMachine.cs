@@ -1,0 +1,320 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// The robot interpreter of a KRL twin: runs a routine's statements one line after another, with frames for locals, the
+/// interrupts the program declared, and motions and waits handed to the controller.
+/// </summary>
+internal sealed partial class KrlMachine(KrlTwinController controller, CancellationToken cancellation)
+{
+    private enum Flow
+    {
+        Next,
+        Exit,
+        Return,
+    }
+
+    private readonly Dictionary<int, (KrlInterruptDecl Declaration, object[] Frame, bool On, bool Last)> _interrupts = [];
+    private int _interruptsOn;
+    private int[] _interruptOrder = [];
+    private long _writes;
+    private long _checkedWrites = -1;
+    private long _checkedInputs = -1;
+    private bool _inInterrupt;
+    private object? _returned;
+    private KrlRoutine _routine = null!;
+
+    /// <summary>The controller.</summary>
+    public KrlTwinController Controller { get; } = controller;
+
+    /// <summary>Stops waits and motions when cancelled.</summary>
+    public CancellationToken Cancellation { get; } = cancellation;
+
+    /// <summary>The line being run.</summary>
+    public int Line { get; private set; }
+
+    /// <summary>The file being run.</summary>
+    public string File => _routine?.File ?? "";
+
+    /// <summary>Runs <paramref name="routine"/> (a subprogram without parameters) to its END.</summary>
+    public void Run(KrlRoutine routine) => Invoke(routine, []);
+
+    /// <summary>Runs a routine with its arguments (values for IN, places for OUT); returns a function's value.</summary>
+    public object? Invoke(KrlRoutine routine, object[] arguments)
+    {
+        var frame = new object[routine.Locals.Count];
+        for (int i = 0; i < frame.Length; i++)
+        {
+            KrlType type = routine.Locals[i].Type;
+            if (i < arguments.Length)
+            {
+                object value = arguments[i] is KrlPlace place ? place.Get() : arguments[i];
+                frame[i] = type.Kind == KrlKind.Array && type.Sizes.Any(s => s == 0)
+                    ? KrlConvert.To(value is KrlArrayValue a ? a.Type : KrlType.Array(KrlType.Char, Math.Max(1, ((string)value).Length)), value, null)
+                    : KrlConvert.To(type, value, null);
+            }
+            else
+            {
+                frame[i] = KrlValues.Default(type);
+            }
+        }
+        KrlRoutine caller = _routine;
+        int callerLine = Line;
+        _routine = routine;
+        try
+        {
+            Flow flow = Block(routine.Body, frame);
+            if (routine.ReturnType is not null && flow != Flow.Return)
+            {
+                throw new KrlRuntimeException($"the function {routine.Name} ended without RETURN");
+            }
+            for (int i = 0; i < arguments.Length; i++)
+            {
+                if (arguments[i] is KrlPlace place && routine.Parameters[i].IsOut)
+                {
+                    place.Set(frame[i]);
+                }
+            }
+            object? result = _returned;
+            _returned = null;
+            return result;
+        }
+        catch (KrlRuntimeException ex) when (ex.File is null)
+        {
+            ex.File = routine.File;
+            ex.Line = Line;
+            throw;
+        }
+        finally
+        {
+            _routine = caller;
+            Line = callerLine;
+        }
+    }
+
+    private Flow Block(List<KrlStmt> body, object[] frame)
+    {
+        for (int i = 0; i < body.Count; i++)
+        {
+            KrlStmt statement = body[i];
+            Line = statement.Line;
+            Controller.Line = statement.Line;
+            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs))
+            {
+                // An interrupt's condition reads global and system variables only: it can only change after such a write or an input.
+                _checkedWrites = _writes;
+                _checkedInputs = Controller.InputsVersion;
+                CheckInterrupts();
+            }
+            Flow flow = Statement(statement, frame);
+            if (flow != Flow.Next)
+            {
+                return flow;
+            }
+        }
+        return Flow.Next;
+    }
+
+    private Flow Statement(KrlStmt statement, object[] frame)
+    {
+        switch (statement)
+        {
+            case KrlAssign assign:
+                Assign(assign.Target, Eval(assign.Value, frame), frame);
+                return Flow.Next;
+            case KrlCallStmt call:
+                Call(call.Call, frame);
+                _writes++;
+                return Flow.Next;
+            case KrlIf branch:
+                return Block((bool)Eval(branch.Condition, frame) ? branch.Then : branch.Else, frame);
+            case KrlLoop loop:
+                return Loop(loop, frame);
+            case KrlFor loop:
+                return For(loop, frame);
+            case KrlSwitch choice:
+                return Block(Select(choice, frame), frame);
+            case KrlWait wait:
+                Wait(wait, frame);
+                return Flow.Next;
+            case KrlMotion motion:
+                Controller.Move(motion.Kind, Eval(motion.Target, frame), motion.Auxiliary is null ? null : Eval(motion.Auxiliary, frame),
+                    motion.Approximation, motion.Line, Cancellation);
+                return Flow.Next;
+            case KrlJump jump:
+                return Jump(jump, frame);
+            case KrlInterruptDecl declaration:
+                if (_interrupts.TryGetValue(declaration.Priority, out var old) && old.On)
+                {
+                    _interruptsOn--;
+                }
+                _interrupts[declaration.Priority] = (declaration, frame, false, false);
+                _interruptOrder = [.. _interrupts.Keys.Order()];
+                return Flow.Next;
+            case KrlInterruptSwitch change:
+                SwitchInterrupts(change);
+                return Flow.Next;
+            default:
+                throw new KrlRuntimeException("a statement the twin cannot run");
+        }
+    }
+
+    private Flow Loop(KrlLoop loop, object[] frame)
+    {
+        while (true)
+        {
+            Cancellation.ThrowIfCancellationRequested();
+            if (loop.Kind == KrlLoopKind.While && !(bool)Eval(loop.Condition!, frame))
+            {
+                return Flow.Next;
+            }
+            Flow flow = Block(loop.Body, frame);
+            if (flow == Flow.Exit)
+            {
+                return Flow.Next;
+            }
+            if (flow == Flow.Return)
+            {
+                return flow;
+            }
+            Line = loop.Line;
+            if (loop.Kind == KrlLoopKind.Repeat && (bool)Eval(loop.Condition!, frame))
+            {
+                return Flow.Next;
+            }
+        }
+    }
+
+    private Flow For(KrlFor loop, object[] frame)
+    {
+        KrlPlace counter = Place(loop.Counter, frame);
+        int from = KrlValues.ToInt(Eval(loop.From, frame));
+        int to = KrlValues.ToInt(Eval(loop.To, frame));
+        int step = loop.Step is null ? 1 : KrlValues.ToInt(Eval(loop.Step, frame));
+        if (step == 0)
+        {
+            throw new KrlRuntimeException("FOR with STEP 0 never ends");
+        }
+        for (int i = from; step > 0 ? i <= to : i >= to; i += step)
+        {
+            counter.Set(KrlValues.Box(i));
+            Flow flow = Block(loop.Body, frame);
+            if (flow == Flow.Exit)
+            {
+                return Flow.Next;
+            }
+            if (flow == Flow.Return)
+            {
+                return flow;
+            }
+        }
+        return Flow.Next;
+    }
+
+    private List<KrlStmt> Select(KrlSwitch choice, object[] frame)
+    {
+        object selector = Eval(choice.Selector, frame);
+        foreach ((List<KrlExpr> values, List<KrlStmt> body) in choice.Cases)
+        {
+            foreach (KrlExpr value in values)
+            {
+                if (Equal(selector, Eval(value, frame)))
+                {
+                    return body;
+                }
+            }
+        }
+        return choice.Default ?? [];
+    }
+
+    private void Wait(KrlWait wait, object[] frame)
+    {
+        if (!wait.ForCondition)
+        {
+            double seconds = KrlValues.ToReal(Eval(wait.Value, frame));
+            Controller.WaitSeconds(seconds, wait.Line, Cancellation);
+            return;
+        }
+        while (!(bool)Eval(wait.Value, frame))
+        {
+            long version = Controller.InputsVersion;
+            if (!(bool)Eval(wait.Value, frame))
+            {
+                Controller.WaitForInputs(version, Cancellation);
+                if (_interruptsOn > 0 && !_inInterrupt)
+                {
+                    CheckInterrupts();
+                }
+            }
+        }
+    }
+
+    private Flow Jump(KrlJump jump, object[] frame)
+    {
+        switch (jump.Keyword)
+        {
+            case "EXIT":
+                return Flow.Exit;
+            case "RETURN":
+                _returned = jump.Value is null ? null : KrlConvert.To(_routine.ReturnType!, Eval(jump.Value, frame), null);
+                return Flow.Return;
+            case "HALT":
+                throw new KrlHaltException(jump.Line, _routine.File);
+            default:
+                return Flow.Next;
+        }
+    }
+
+    private void SwitchInterrupts(KrlInterruptSwitch change)
+    {
+        foreach (int priority in _interrupts.Keys.ToList())
+        {
+            if (change.Priority is { } p && p != priority)
+            {
+                continue;
+            }
+            var entry = _interrupts[priority];
+            bool on = change.Action is "ON" or "ENABLE";
+            if (on != entry.On)
+            {
+                _interruptsOn += on ? 1 : -1;
+            }
+            _interrupts[priority] = (entry.Declaration, entry.Frame, on, on && (bool)Eval(entry.Declaration.Condition, entry.Frame));
+        }
+        if (change.Priority is { } missing && !_interrupts.ContainsKey(missing))
+        {
+            throw new KrlRuntimeException($"interrupt {missing} is not declared");
+        }
+    }
+
+    /// <summary>Runs the handler of each switched-on interrupt whose condition has just become TRUE (edge), highest priority first.</summary>
+    private void CheckInterrupts()
+    {
+        foreach (int priority in _interruptOrder)
+        {
+            var entry = _interrupts[priority];
+            if (!entry.On)
+            {
+                continue;
+            }
+            bool now = (bool)Eval(entry.Declaration.Condition, entry.Frame);
+            if (now != entry.Last)
+            {
+                _interrupts[priority] = entry with { Last = now };
+            }
+            if (now && !entry.Last)
+            {
+                _inInterrupt = true;
+                int line = Line;
+                try
+                {
+                    Call(entry.Declaration.Handler, entry.Frame);
+                }
+                finally
+                {
+                    _inInterrupt = false;
+                    Line = line;
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,186 @@
+using System.Globalization;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// KRL expressions. Priority from strongest to weakest, as the KSS manual orders them: NOT B_NOT and the sign; * /; + -;
+/// AND B_AND; EXOR B_EXOR; OR B_OR; the comparisons == &lt;&gt; &lt; &lt;= &gt; &gt;=. There is no MOD.
+/// </summary>
+internal sealed partial class KrlParser
+{
+    private static readonly string[][] Levels =
+    [
+        ["==", "<>", "<", "<=", ">", ">="],
+        ["OR", "B_OR"],
+        ["EXOR", "B_EXOR"],
+        ["AND", "B_AND"],
+        ["+", "-"],
+        ["*", "/"],
+    ];
+
+    private KrlExpr Expression() => Binary(0);
+
+    private KrlExpr Binary(int level)
+    {
+        if (level == Levels.Length)
+        {
+            return Unary();
+        }
+        KrlExpr left = Binary(level + 1);
+        while (Operator(Levels[level]) is string op)
+        {
+            int line = Peek.Line;
+            _at++;
+            left = new KrlBinary(line, op, left, Binary(level + 1));
+        }
+        return left;
+    }
+
+    private string? Operator(string[] ops)
+    {
+        KrlToken token = Peek;
+        if (token.Kind is not (KrlTokenKind.Symbol or KrlTokenKind.Name))
+        {
+            return null;
+        }
+        foreach (string op in ops)
+        {
+            if (token.IsSymbol(op) || token.Is(op))
+            {
+                return op;
+            }
+        }
+        return null;
+    }
+
+    private KrlExpr Unary()
+    {
+        KrlToken token = Peek;
+        if (token.Is("NOT") || token.Is("B_NOT") || token.IsSymbol("-") || token.IsSymbol("+"))
+        {
+            _at++;
+            KrlExpr operand = Unary();
+            if (token.IsSymbol("+"))
+            {
+                return operand;
+            }
+            if (token.IsSymbol("-") && operand is KrlLiteral { Value: int i })
+            {
+                return new KrlLiteral(token.Line, -i);
+            }
+            if (token.IsSymbol("-") && operand is KrlLiteral { Value: double d })
+            {
+                return new KrlLiteral(token.Line, -d);
+            }
+            return new KrlUnary(token.Line, token.Text.ToUpperInvariant(), operand);
+        }
+        return Postfix();
+    }
+
+    private KrlExpr Postfix()
+    {
+        KrlExpr expr = Primary();
+        while (true)
+        {
+            KrlToken token = Peek;
+            if (token.IsSymbol("(") && expr is KrlName name && name.Cell is null)
+            {
+                _at++;
+                var arguments = new List<KrlExpr>();
+                if (!Peek.IsSymbol(")"))
+                {
+                    do
+                    {
+                        arguments.Add(Expression());
+                    }
+                    while (Accept(","));
+                }
+                Expect(")");
+                expr = new KrlCall(token.Line, name.Name, arguments);
+            }
+            else if (token.IsSymbol("["))
+            {
+                _at++;
+                var indices = new List<KrlExpr?>();
+                if (!Peek.IsSymbol("]"))
+                {
+                    do
+                    {
+                        indices.Add(Peek.IsSymbol(",") || Peek.IsSymbol("]") ? null : Expression());
+                    }
+                    while (Accept(","));
+                }
+                Expect("]");
+                expr = new KrlIndex(token.Line, expr, indices);
+            }
+            else if (token.IsSymbol("."))
+            {
+                _at++;
+                expr = new KrlMember(token.Line, expr, Identifier("a structure component"));
+            }
+            else
+            {
+                return expr;
+            }
+        }
+    }
+
+    private KrlExpr Primary()
+    {
+        KrlToken token = Peek;
+        _at++;
+        switch (token.Kind)
+        {
+            case KrlTokenKind.Int:
+                return new KrlLiteral(token.Line, int.Parse(token.Text, CultureInfo.InvariantCulture));
+            case KrlTokenKind.Real:
+                return new KrlLiteral(token.Line, double.Parse(token.Text, CultureInfo.InvariantCulture));
+            case KrlTokenKind.String:
+                return new KrlLiteral(token.Line, token.Text);
+            case KrlTokenKind.Enum:
+                return new KrlLiteral(token.Line, new KrlEnumValue(token.Text));
+            case KrlTokenKind.Name when token.Is("TRUE") || token.Is("FALSE"):
+                return new KrlLiteral(token.Line, token.Is("TRUE"));
+            case KrlTokenKind.Name when !KrlKeywords.IsReserved(token.Text):
+                return new KrlName(token.Line, token.Text);
+            case KrlTokenKind.Symbol when token.Text == "(":
+            {
+                KrlExpr inner = Expression();
+                Expect(")");
+                return inner;
+            }
+            case KrlTokenKind.Symbol when token.Text == "{":
+                return Aggregate(token);
+            default:
+                _at--;
+                throw Error(token, $"expected a value, found {token.Display}");
+        }
+    }
+
+    private KrlAggregate Aggregate(KrlToken open)
+    {
+        string? typeName = null;
+        if (Peek.Kind == KrlTokenKind.Name && PeekAt(1).IsSymbol(":"))
+        {
+            typeName = Peek.Text;
+            _at += 2;
+        }
+        var fields = new List<(string, KrlExpr)>();
+        if (!Peek.IsSymbol("}"))
+        {
+            do
+            {
+                string field = Identifier("a structure component");
+                if (Peek.IsSymbol("["))
+                {
+                    _at++;
+                    Expect("]");
+                }
+                fields.Add((field, Expression()));
+            }
+            while (Accept(","));
+        }
+        Expect("}");
+        return new KrlAggregate(open.Line, typeName, fields);
+    }
+}

@@ -1,0 +1,352 @@
+using System.Globalization;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// Reads a KRL file into a module: a <c>.src</c> file's DEF subprograms and DEFFCT functions (the first one is the file's main
+/// routine) or a <c>.dat</c> file's DEFDAT data list. A syntax error refuses the file with its line.
+/// </summary>
+internal sealed partial class KrlParser
+{
+    private readonly string _file;
+    private readonly List<KrlToken> _tokens;
+    private int _at;
+
+    private KrlParser(string file, string text)
+    {
+        _file = file;
+        _tokens = KrlLexer.Tokenize(file, text);
+    }
+
+    private KrlToken Peek => _tokens[_at];
+
+    private KrlToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Count - 1)];
+
+    /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/>.</summary>
+    public static void ParseSource(string file, string text, KrlModule module)
+    {
+        var parser = new KrlParser(file, text);
+        parser.SkipLines();
+        bool first = true;
+        while (parser.Peek.Kind != KrlTokenKind.End)
+        {
+            module.Routines.Add(parser.Routine(module.Name, first));
+            first = false;
+            parser.SkipLines();
+        }
+        if (first)
+        {
+            throw new KrlLoadException(file, 1, "the file has no DEF or DEFFCT");
+        }
+    }
+
+    /// <summary>Reads the DEFDAT data list of a <c>.dat</c> file; returns its declarations for the binder.</summary>
+    public static KrlDataList ParseData(string file, string text)
+    {
+        var parser = new KrlParser(file, text);
+        parser.SkipLines();
+        KrlToken start = parser.Expect("DEFDAT");
+        string name = parser.Identifier("the data list's name");
+        bool isPublic = false;
+        if (parser.Peek.Is("PUBLIC"))
+        {
+            parser._at++;
+            isPublic = true;
+        }
+        parser.EndOfLine();
+        var list = new KrlDataList(file, name, isPublic, start.Line);
+        while (!parser.Peek.Is("ENDDAT"))
+        {
+            if (parser.Peek.Kind == KrlTokenKind.End)
+            {
+                throw parser.Error(parser.Peek, "ENDDAT is missing");
+            }
+            if (parser.Peek.Is("SIGNAL"))
+            {
+                throw parser.Error(parser.Peek, "SIGNAL declarations belong in $CONFIG.DAT; the twin takes signals from its options");
+            }
+            list.Declarations.AddRange(parser.Declaration(allowInitial: true));
+        }
+        parser._at++;
+        parser.EndOfLine();
+        parser.SkipLines();
+        if (parser.Peek.Kind != KrlTokenKind.End)
+        {
+            throw parser.Error(parser.Peek, $"unexpected {parser.Peek.Display} after ENDDAT");
+        }
+        return list;
+    }
+
+    private KrlRoutine Routine(string module, bool first)
+    {
+        bool global = false;
+        if (Peek.Is("GLOBAL"))
+        {
+            _at++;
+            global = true;
+        }
+        KrlToken def = Peek;
+        KrlType? returns = null;
+        if (def.Is("DEFFCT"))
+        {
+            _at++;
+            returns = TypeName();
+        }
+        else if (def.Is("DEF"))
+        {
+            _at++;
+        }
+        else
+        {
+            throw Error(def, $"expected DEF or DEFFCT, found {def.Display}");
+        }
+        string name = Identifier("the routine's name");
+        var routine = new KrlRoutine(_file, name, def.Line) { Module = module, ReturnType = returns, IsGlobal = global || first };
+        Expect("(");
+        if (!Peek.IsSymbol(")"))
+        {
+            do
+            {
+                string parameter = Identifier("a parameter's name");
+                bool array = false;
+                if (Peek.IsSymbol("["))
+                {
+                    _at++;
+                    Expect("]");
+                    array = true;
+                }
+                bool isOut = false;
+                if (Peek.IsSymbol(":"))
+                {
+                    _at++;
+                    KrlToken how = Peek;
+                    if (how.Is("OUT"))
+                    {
+                        isOut = true;
+                    }
+                    else if (!how.Is("IN"))
+                    {
+                        throw Error(how, $"a parameter is :IN or :OUT, not {how.Display}");
+                    }
+                    _at++;
+                }
+                if (routine.Parameters.Any(p => string.Equals(p.Name, parameter, StringComparison.OrdinalIgnoreCase)))
+                {
+                    throw Error(def, $"the parameter {parameter} is named twice");
+                }
+                routine.Parameters.Add(new KrlParameter(parameter, isOut, array));
+            }
+            while (Accept(","));
+        }
+        Expect(")");
+        EndOfLine();
+        string end = returns is null ? "END" : "ENDFCT";
+        bool declarations = true;
+        var declared = new List<(string Name, KrlType Type, int Line)>();
+        while (!Peek.Is(end))
+        {
+            if (Peek.Kind == KrlTokenKind.End || Peek.Is("DEF") || Peek.Is("DEFFCT"))
+            {
+                throw Error(Peek, $"{end} is missing for {name} (line {def.Line})");
+            }
+            if (IsDeclaration())
+            {
+                if (!declarations)
+                {
+                    throw Error(Peek, "a declaration must come before the first statement of the routine");
+                }
+                foreach (KrlDeclaration d in Declaration(allowInitial: false))
+                {
+                    declared.Add((d.Name, d.Type, d.Line));
+                }
+                continue;
+            }
+            declarations = false;
+            routine.Body.Add(Statement());
+        }
+        _at++;
+        EndOfLine();
+        foreach (KrlParameter parameter in routine.Parameters)
+        {
+            (string Name, KrlType Type, int Line) d = declared.FirstOrDefault(l => string.Equals(l.Name, parameter.Name, StringComparison.OrdinalIgnoreCase));
+            if (d.Name is null)
+            {
+                throw new KrlLoadException(_file, def.Line, $"the parameter {parameter.Name} of {name} has no DECL in the routine");
+            }
+            parameter.Type = d.Type;
+            routine.Locals.Add(d);
+        }
+        foreach ((string Name, KrlType Type, int Line) d in declared)
+        {
+            if (routine.Parameters.Any(p => string.Equals(p.Name, d.Name, StringComparison.OrdinalIgnoreCase)))
+            {
+                continue;
+            }
+            if (routine.SlotOf(d.Name) >= 0)
+            {
+                throw new KrlLoadException(_file, d.Line, $"{d.Name} is declared twice in {name}");
+            }
+            routine.Locals.Add(d);
+        }
+        return routine;
+    }
+
+    /// <summary>True when the line starts a declaration: DECL, or a type name followed by a variable name.</summary>
+    private bool IsDeclaration() => Peek.Is("DECL") || Peek.Is("STRUC") || Peek.Is("ENUM")
+        || (Peek.Kind == KrlTokenKind.Name && KrlTypes.Find(Peek.Text) is not null && PeekAt(1).Kind == KrlTokenKind.Name);
+
+    /// <summary>[DECL] [GLOBAL] [CONST] type name[sizes] [= value], name…</summary>
+    private List<KrlDeclaration> Declaration(bool allowInitial)
+    {
+        if (Peek.Is("STRUC") || Peek.Is("ENUM"))
+        {
+            throw Error(Peek, $"{Peek.Text.ToUpperInvariant()} type declarations are not supported by the twin (the Machina files have none)");
+        }
+        Accept("DECL");
+        bool global = Accept("GLOBAL");
+        Accept("CONST");
+        KrlType element = TypeName();
+        var result = new List<KrlDeclaration>();
+        do
+        {
+            KrlToken nameToken = Peek;
+            string name = Identifier("a variable's name");
+            KrlType type = element;
+            if (Peek.IsSymbol("["))
+            {
+                _at++;
+                var sizes = new List<int>();
+                if (Peek.IsSymbol("]"))
+                {
+                    sizes.Add(0);
+                }
+                else
+                {
+                    do
+                    {
+                        KrlToken size = Peek;
+                        if (size.Kind != KrlTokenKind.Int || int.Parse(size.Text, CultureInfo.InvariantCulture) < 1)
+                        {
+                            throw Error(size, $"an array size must be a whole number above 0, not {size.Display}");
+                        }
+                        sizes.Add(int.Parse(size.Text, CultureInfo.InvariantCulture));
+                        _at++;
+                    }
+                    while (Accept(","));
+                }
+                Expect("]");
+                if (sizes.Count > 3)
+                {
+                    throw Error(nameToken, "KRL arrays have at most 3 dimensions");
+                }
+                type = KrlType.Array(element, [.. sizes]);
+            }
+            KrlExpr? initial = null;
+            if (Peek.IsSymbol("="))
+            {
+                if (!allowInitial)
+                {
+                    throw Error(Peek, "a variable declared in a routine cannot be initialised in its DECL; assign it in a statement");
+                }
+                _at++;
+                initial = Expression();
+            }
+            result.Add(new KrlDeclaration(name, type, initial, global, nameToken.Line));
+        }
+        while (Accept(","));
+        EndOfLine();
+        return result;
+    }
+
+    private KrlType TypeName()
+    {
+        KrlToken token = Peek;
+        KrlType? type = token.Kind == KrlTokenKind.Name ? KrlTypes.Find(token.Text) : null;
+        if (type is null)
+        {
+            throw Error(token, $"unknown data type {token.Display}");
+        }
+        _at++;
+        return type;
+    }
+
+    private string Identifier(string what)
+    {
+        KrlToken token = Peek;
+        if (token.Kind != KrlTokenKind.Name || KrlKeywords.IsReserved(token.Text))
+        {
+            throw Error(token, $"expected {what}, found {token.Display}");
+        }
+        _at++;
+        return token.Text;
+    }
+
+    private KrlToken Expect(string symbolOrWord)
+    {
+        KrlToken token = Peek;
+        if (!(token.IsSymbol(symbolOrWord) || token.Is(symbolOrWord)))
+        {
+            throw Error(token, $"expected '{symbolOrWord}', found {token.Display}");
+        }
+        _at++;
+        return token;
+    }
+
+    private bool Accept(string symbolOrWord)
+    {
+        if (Peek.IsSymbol(symbolOrWord) || Peek.Is(symbolOrWord))
+        {
+            _at++;
+            return true;
+        }
+        return false;
+    }
+
+    private void EndOfLine()
+    {
+        KrlToken token = Peek;
+        if (token.Kind == KrlTokenKind.End)
+        {
+            return;
+        }
+        if (token.Kind != KrlTokenKind.EndOfLine)
+        {
+            throw Error(token, token.Is("MOD")
+                ? "KRL has no operator MOD: its arithmetic operators are + - * / (INT division with / truncates)"
+                : $"unexpected {token.Display}: the statement should end here");
+        }
+        _at++;
+    }
+
+    private void SkipLines()
+    {
+        while (Peek.Kind == KrlTokenKind.EndOfLine)
+        {
+            _at++;
+        }
+    }
+
+    private KrlLoadException Error(KrlToken at, string reason) => new(_file, at.Line, reason);
+}
+
+/// <summary>A variable declaration: name, type, initial value (data lists only), GLOBAL, line.</summary>
+internal sealed record KrlDeclaration(string Name, KrlType Type, KrlExpr? Initial, bool Global, int Line);
+
+/// <summary>A DEFDAT data list as read from its file.</summary>
+internal sealed class KrlDataList(string file, string name, bool isPublic, int line)
+{
+    /// <summary>The file.</summary>
+    public string File { get; } = file;
+
+    /// <summary>The data list's (module's) name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>True for DEFDAT … PUBLIC: its GLOBAL variables are visible to every module.</summary>
+    public bool IsPublic { get; } = isPublic;
+
+    /// <summary>The line of DEFDAT.</summary>
+    public int Line { get; } = line;
+
+    /// <summary>The declarations, in order.</summary>
+    public List<KrlDeclaration> Declarations { get; } = [];
+}

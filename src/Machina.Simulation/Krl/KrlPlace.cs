@@ -1,0 +1,55 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// Where a value is stored: a slot of a frame, cell, structure or array, or a row of a CHAR array (<c>text[i, ]</c>). Assignments
+/// and OUT arguments write through it.
+/// </summary>
+internal sealed class KrlPlace(object[] container, int index, KrlType type, int sliceLength = 0)
+{
+    /// <summary>The array holding the slot (or the row).</summary>
+    public object[] Container { get; } = container;
+
+    /// <summary>The slot (or the row's first element).</summary>
+    public int Index { get; } = index;
+
+    /// <summary>The type stored there.</summary>
+    public KrlType Type { get; } = type;
+
+    /// <summary>For a row of a CHAR array, its length (0 otherwise).</summary>
+    public int SliceLength { get; } = sliceLength;
+
+    /// <summary>The variable the place is part of, told after a write (e.g. <c>$OUT</c>), and the element's index in it.</summary>
+    public (KrlCell Cell, int Element)? Root { get; init; }
+
+    /// <summary>The value stored (a copy of the row for a slice).</summary>
+    public object Get() => SliceLength > 0
+        ? new KrlArrayValue(Type, Container[Index..(Index + SliceLength)])
+        : Container[Index];
+
+    /// <summary>Stores <paramref name="value"/>, converted to the place's type.</summary>
+    public void Set(object value)
+    {
+        if (SliceLength > 0)
+        {
+            if (value is string text)
+            {
+                KrlValues.SetText(Container, Index, SliceLength, text);
+                Root?.Cell.Written?.Invoke(-1);
+                return;
+            }
+            object[] source = ((KrlArrayValue)value).Items;
+            for (int i = 0; i < SliceLength; i++)
+            {
+                Container[Index + i] = i < source.Length ? source[i] : '\0';
+            }
+        }
+        else
+        {
+            Container[Index] = KrlConvert.To(Type, value, Container[Index]);
+        }
+        if (Root is { } root)
+        {
+            root.Cell.Written?.Invoke(root.Element);
+        }
+    }
+}

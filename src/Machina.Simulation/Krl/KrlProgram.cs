@@ -1,0 +1,96 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>A variable of a data list or a system variable: its type and value.</summary>
+internal sealed class KrlCell(string name, KrlType type, object value)
+{
+    /// <summary>The storage: one slot holding the value (places point into it).</summary>
+    public object[] Box { get; } = [value];
+
+    /// <summary>The name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>The type.</summary>
+    public KrlType Type { get; } = type;
+
+    /// <summary>The value (the controller's interpreter owns it).</summary>
+    public object Value
+    {
+        get => Read is null ? Box[0] : Read();
+        set => Box[0] = value;
+    }
+
+    /// <summary>True for a system variable a program may not write (e.g. <c>$POS_ACT</c>).</summary>
+    public bool ReadOnly { get; init; }
+
+    /// <summary>For a system variable the controller computes when read (e.g. <c>$AXIS_ACT</c>), how.</summary>
+    public Func<object>? Read { get; init; }
+
+    /// <summary>Called after a program wrote the variable or an element of it (the element's index, or -1 for all of it).</summary>
+    public Action<int>? Written { get; init; }
+}
+
+/// <summary>A parameter of a routine: name, IN (by value) or OUT (by reference), and its type from the routine's DECL.</summary>
+internal sealed class KrlParameter(string name, bool isOut, bool isArray)
+{
+    /// <summary>The name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>True for <c>:OUT</c>: the caller's variable is changed.</summary>
+    public bool IsOut { get; } = isOut;
+
+    /// <summary>True when written <c>name[]</c>.</summary>
+    public bool IsArray { get; } = isArray;
+
+    /// <summary>The type (set when the routine's declarations are read).</summary>
+    public KrlType Type { get; set; } = KrlType.Int;
+}
+
+/// <summary>A DEF subprogram or a DEFFCT function of a file.</summary>
+internal sealed class KrlRoutine(string file, string name, int line)
+{
+    /// <summary>The file it is in.</summary>
+    public string File { get; } = file;
+
+    /// <summary>Its name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>The line of its DEF or DEFFCT.</summary>
+    public int Line { get; } = line;
+
+    /// <summary>The module (file name without extension) it belongs to.</summary>
+    public string Module { get; init; } = "";
+
+    /// <summary>For a function, its return type (null for a subprogram).</summary>
+    public KrlType? ReturnType { get; init; }
+
+    /// <summary>True when GLOBAL (callable from other modules); the first routine of a file is too.</summary>
+    public bool IsGlobal { get; init; }
+
+    /// <summary>The parameters, in order.</summary>
+    public List<KrlParameter> Parameters { get; } = [];
+
+    /// <summary>Every local variable (parameters first): name, type, line of its DECL.</summary>
+    public List<(string Name, KrlType Type, int Line)> Locals { get; } = [];
+
+    /// <summary>The statements.</summary>
+    public List<KrlStmt> Body { get; } = [];
+
+    /// <summary>The slot of a local or parameter, or -1.</summary>
+    public int SlotOf(string name) => Locals.FindIndex(l => string.Equals(l.Name, name, StringComparison.OrdinalIgnoreCase));
+}
+
+/// <summary>A module: a .src file's routines and its .dat data list of the same name.</summary>
+internal sealed class KrlModule(string name)
+{
+    /// <summary>The module's name.</summary>
+    public string Name { get; } = name;
+
+    /// <summary>The routines, in file order.</summary>
+    public List<KrlRoutine> Routines { get; } = [];
+
+    /// <summary>The data list's variables.</summary>
+    public Dictionary<string, KrlCell> Data { get; } = new(StringComparer.OrdinalIgnoreCase);
+
+    /// <summary>The data list's variables declared GLOBAL in a PUBLIC data list (visible to every module).</summary>
+    public HashSet<string> GlobalData { get; } = new(StringComparer.OrdinalIgnoreCase);
+}

@@ -1,0 +1,56 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// The system variables a KRL twin has: frames ($BASE, $TOOL, $NULLFRAME), motion settings ($VEL, $ACC, $VEL_AXIS, $ACC_AXIS,
+/// $APO, $ADVANCE), IO ($OUT, $IN, $ANOUT, $ANIN, $FLAG), timers, software limit switches and the actual pose ($POS_ACT, $AXIS_ACT).
+/// </summary>
+internal static class KrlSystemVariables
+{
+    /// <summary>Number of digital outputs and inputs ($OUT, $IN).</summary>
+    public const int DigitalCount = 4096;
+
+    /// <summary>Number of analog outputs and inputs ($ANOUT, $ANIN).</summary>
+    public const int AnalogCount = 32;
+
+    /// <summary>Number of flags ($FLAG).</summary>
+    public const int FlagCount = 1024;
+
+    /// <summary>Adds the system variables of <paramref name="controller"/> to <paramref name="environment"/>.</summary>
+    public static void AddTo(KrlEnvironment environment, KrlTwinController controller)
+    {
+        KrlTwinOptions options = controller.Options;
+        void Add(KrlCell cell) => environment.System[cell.Name] = cell;
+        KrlType reals12 = KrlType.Array(KrlType.Real, 12), ints12 = KrlType.Array(KrlType.Int, 12);
+        Add(new KrlCell("$NULLFRAME", KrlTypes.Frame, KrlValues.Default(KrlTypes.Frame)) { ReadOnly = true });
+        Add(new KrlCell("$BASE", KrlTypes.Frame, KrlValues.Default(KrlTypes.Frame)));
+        Add(new KrlCell("$TOOL", KrlTypes.Frame, KrlValues.Default(KrlTypes.Frame)) { Written = _ => controller.ToolChanged() });
+        Add(new KrlCell("$VEL", KrlTypes.Rates, new KrlStructValue(KrlTypes.Rates, [options.DefaultCpVelocity, 400.0, 400.0])));
+        Add(new KrlCell("$ACC", KrlTypes.Rates, new KrlStructValue(KrlTypes.Rates, [options.DefaultCpAcceleration, 1000.0, 1000.0])));
+        Add(new KrlCell("$VEL_AXIS", ints12, Filled(ints12, 100)));
+        Add(new KrlCell("$ACC_AXIS", ints12, Filled(ints12, 100)));
+        Add(new KrlCell("$APO", KrlTypes.Apo, KrlValues.Default(KrlTypes.Apo)));
+        Add(new KrlCell("$ADVANCE", KrlType.Int, 3) { Written = _ => controller.AdvanceChanged() });
+        Add(new KrlCell("$OV_PRO", KrlType.Int, 100));
+        Add(new KrlCell("$OUT", KrlType.Array(KrlType.Bool, DigitalCount), KrlValues.Default(KrlType.Array(KrlType.Bool, DigitalCount)))
+        {
+            Written = i => controller.OutputWritten("$OUT", i),
+        });
+        Add(new KrlCell("$IN", KrlType.Array(KrlType.Bool, DigitalCount), KrlValues.Default(KrlType.Array(KrlType.Bool, DigitalCount))) { ReadOnly = true });
+        Add(new KrlCell("$ANOUT", KrlType.Array(KrlType.Real, AnalogCount), KrlValues.Default(KrlType.Array(KrlType.Real, AnalogCount)))
+        {
+            Written = i => controller.OutputWritten("$ANOUT", i),
+        });
+        Add(new KrlCell("$ANIN", KrlType.Array(KrlType.Real, AnalogCount), KrlValues.Default(KrlType.Array(KrlType.Real, AnalogCount))) { ReadOnly = true });
+        Add(new KrlCell("$FLAG", KrlType.Array(KrlType.Bool, FlagCount), KrlValues.Default(KrlType.Array(KrlType.Bool, FlagCount))));
+        Add(new KrlCell("$TIMER", KrlType.Array(KrlType.Int, 64), KrlValues.Default(KrlType.Array(KrlType.Int, 64))));
+        Add(new KrlCell("$TIMER_STOP", KrlType.Array(KrlType.Bool, 64), Filled(KrlType.Array(KrlType.Bool, 64), true)));
+        Add(new KrlCell("$STOPMESS", KrlType.Bool, false) { ReadOnly = true });
+        double[] min = options.Model.MinJoints.ToArray(), max = options.Model.MaxJoints.ToArray();
+        Add(new KrlCell("$SOFTN_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? min[i] : -1e6))])) { ReadOnly = true });
+        Add(new KrlCell("$SOFTP_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? max[i] : 1e6))])) { ReadOnly = true });
+        Add(new KrlCell("$POS_ACT", KrlTypes.E6Pos, null!) { ReadOnly = true, Read = controller.PositionNow });
+        Add(new KrlCell("$AXIS_ACT", KrlTypes.E6Axis, null!) { ReadOnly = true, Read = controller.AxesNow });
+    }
+
+    private static KrlArrayValue Filled(KrlType type, object value) => new(type, [.. Enumerable.Repeat(value, type.Length)]);
+}

@@ -1,0 +1,184 @@
+using System.Globalization;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// EthernetKRL on the twin: channel configurations by name, and the EKI_ functions the Machina driver calls. Errors of a kind
+/// the connection causes (sending without a client, initialising twice) come back in Msg_No; mistakes of the program or the
+/// configuration (an unknown channel or tag) stop the program.
+/// </summary>
+internal sealed partial class KrlTwinController
+{
+    /// <summary>Msg_No when EKI_Send finds no connection.</summary>
+    public const int EkiNoConnection = 9;
+
+    /// <summary>Msg_No when EKI_Init is called for a channel already initialised.</summary>
+    public const int EkiAlreadyInitialised = 23;
+
+    private readonly Dictionary<string, EkiConfiguration> _ekiConfigurations = new(StringComparer.OrdinalIgnoreCase);
+    private readonly Dictionary<string, EkiChannel> _ekiChannels = new(StringComparer.OrdinalIgnoreCase);
+    private readonly Dictionary<string, int> _ekiPorts = new(StringComparer.OrdinalIgnoreCase);
+
+    /// <summary>How many EthernetKRL channels are initialised (a WAIT FOR may wait on them).</summary>
+    public int EkiOpenChannels
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _ekiChannels.Count;
+            }
+        }
+    }
+
+    /// <summary>Adds the XML configuration of channel <paramref name="name"/> (as in C:\KRC\ROBOTER\Config\User\Common\EthernetKRL).</summary>
+    /// <exception cref="FormatException">The configuration is not one the package reads.</exception>
+    public void AddEkiConfiguration(string name, string xml)
+    {
+        EkiConfiguration configuration = EkiConfiguration.Parse(name, xml);
+        lock (_gate)
+        {
+            _ekiConfigurations[name] = configuration;
+        }
+    }
+
+    /// <summary>The port channel <paramref name="name"/> listens on (its configured port, or the one picked for port 0), or 0 before it opened.</summary>
+    public int EkiPort(string name)
+    {
+        lock (_gate)
+        {
+            return _ekiPorts.GetValueOrDefault(name);
+        }
+    }
+
+    private void AddEki()
+    {
+        KrlBuiltinParameter text = KrlBuiltinParameter.Text;
+        KrlType status = KrlTypes.EkiStatus;
+        void Add(string name, KrlBuiltinParameter[] parameters, Func<KrlMachine, object[], object?> run) =>
+            Environment.Builtins[name] = new KrlBuiltin(name, status, parameters, run);
+        Add("EKI_Init", [text], (_, a) => EkiInit(Str(a[0])));
+        Add("EKI_Open", [text], (_, a) => EkiOpen(Str(a[0])));
+        Add("EKI_Close", [text], (_, a) => EkiClose(Str(a[0]), clear: false));
+        Add("EKI_Clear", [text], (_, a) => EkiClose(Str(a[0]), clear: true));
+        Add("EKI_CheckBuffer", [text, text], (_, a) =>
+        {
+            EkiChannel channel = Channel(Str(a[0]));
+            return Status(channel.Count(Str(a[1])), 0, 0, channel.Connected);
+        });
+        Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, v => (int)Math.Round(double.Parse(v, CultureInfo.InvariantCulture))));
+        Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, v => double.Parse(v, CultureInfo.InvariantCulture)));
+        Add("EKI_GetBool", [text, text, new(KrlType.Bool, IsOut: true)], (_, a) => EkiGet(a, v => v is "1" || v.Equals("true", StringComparison.OrdinalIgnoreCase)));
+        Add("EKI_GetString", [text, text, new(KrlType.Array(KrlType.Char, 0), IsOut: true)], (_, a) => EkiGet(a, v => v));
+        Add("EKI_SetInt", [text, text, KrlBuiltinParameter.Int], (_, a) => EkiSet(a, KrlValues.ToInt(a[2]).ToString(CultureInfo.InvariantCulture)));
+        Add("EKI_SetReal", [text, text, KrlBuiltinParameter.Real], (_, a) => EkiSet(a, EkiChannel.Format(KrlValues.ToReal(a[2]))));
+        Add("EKI_SetBool", [text, text, new(KrlType.Bool)], (_, a) => EkiSet(a, (bool)a[2] ? "1" : "0"));
+        Add("EKI_SetString", [text, text, text], (_, a) => EkiSet(a, Str(a[2])));
+        Add("EKI_Send", [text, text], (_, a) =>
+        {
+            EkiChannel channel = Channel(Str(a[0]));
+            bool sent = channel.Send(Str(a[1]));
+            return Status(0, 0, sent ? 0 : EkiNoConnection, channel.Connected);
+        });
+    }
+
+    private static string Str(object value) => value is string s ? s : KrlValues.Text((KrlArrayValue)value);
+
+    private static KrlStructValue Status(int buffered, int read, int error, bool connected) =>
+        new(KrlTypes.EkiStatus, [KrlValues.Box(buffered), KrlValues.Box(read), KrlValues.Box(error), KrlValues.Box(connected), KrlValues.Box(0)]);
+
+    private EkiChannel Channel(string name)
+    {
+        lock (_gate)
+        {
+            return _ekiChannels.TryGetValue(name, out EkiChannel? channel)
+                ? channel
+                : throw new KrlRuntimeException($"EthernetKRL: the channel {name} is not initialised (EKI_Init)");
+        }
+    }
+
+    private KrlStructValue EkiInit(string name)
+    {
+        lock (_gate)
+        {
+            if (_ekiChannels.ContainsKey(name))
+            {
+                return Status(0, 0, EkiAlreadyInitialised, _ekiChannels[name].Connected);
+            }
+            if (!_ekiConfigurations.TryGetValue(name, out EkiConfiguration? configuration))
+            {
+                throw new KrlRuntimeException($"EthernetKRL: no configuration {name}.xml on the controller");
+            }
+            _ekiChannels[name] = new EkiChannel(name, configuration, this);
+        }
+        InputsChanged();
+        return Status(0, 0, 0, false);
+    }
+
+    private KrlStructValue EkiOpen(string name)
+    {
+        EkiChannel channel = Channel(name);
+        int port = EkiPort(name) is > 0 and var known && channel.Configuration.Port == 0 ? known : channel.Configuration.Port;
+        int bound = channel.Open(Options.ListenAddress, port);
+        lock (_gate)
+        {
+            _ekiPorts[name] = bound;
+        }
+        return Status(0, 0, 0, channel.Connected);
+    }
+
+    private KrlStructValue EkiClose(string name, bool clear)
+    {
+        EkiChannel channel = Channel(name);
+        channel.Close();
+        if (clear)
+        {
+            lock (_gate)
+            {
+                _ekiChannels.Remove(name);
+            }
+            channel.Dispose();
+            InputsChanged();
+        }
+        return Status(0, 0, 0, false);
+    }
+
+    private KrlStructValue EkiGet(object[] a, Func<string, object> convert)
+    {
+        EkiChannel channel = Channel(Str(a[0]));
+        string? value = channel.Take(Str(a[1]), out int remaining);
+        if (value is not null)
+        {
+            try
+            {
+                ((KrlPlace)a[2]).Set(convert(value));
+            }
+            catch (FormatException)
+            {
+                throw new KrlRuntimeException($"EthernetKRL: the value \"{value}\" of {Str(a[1])} is not a number");
+            }
+        }
+        return Status(remaining, value is null ? 0 : 1, 0, channel.Connected);
+    }
+
+    private KrlStructValue EkiSet(object[] a, string value)
+    {
+        EkiChannel channel = Channel(Str(a[0]));
+        channel.Set(Str(a[1]), value);
+        return Status(0, 0, 0, channel.Connected);
+    }
+
+    private void CloseEki()
+    {
+        List<EkiChannel> channels;
+        lock (_gate)
+        {
+            channels = [.. _ekiChannels.Values];
+            _ekiChannels.Clear();
+        }
+        foreach (EkiChannel channel in channels)
+        {
+            channel.Dispose();
+        }
+    }
+}

@@ -1,0 +1,72 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>Outputs, signals and the inputs a WAIT FOR waits on.</summary>
+internal sealed partial class KrlTwinController
+{
+    private readonly SemaphoreSlim _inputsChanged = new(0);
+    private long _inputsVersion;
+
+    /// <summary>The program line the robot interpreter runs now (traces of outputs carry it).</summary>
+    public int Line { get; set; }
+
+    /// <summary>How many times inputs, flags or channels changed (a WAIT FOR compares it before it sleeps).</summary>
+    public long InputsVersion => Interlocked.Read(ref _inputsVersion);
+
+    /// <summary>True while something outside the program can change what a WAIT FOR waits on (an open EthernetKRL channel).</summary>
+    public bool HasExternalInputs => EkiOpenChannels > 0;
+
+    /// <summary>Tells waiting programs that an input, a flag or a channel changed.</summary>
+    public void InputsChanged()
+    {
+        Interlocked.Increment(ref _inputsVersion);
+        _inputsChanged.Release();
+    }
+
+    /// <summary>Sleeps until something changes after <paramref name="version"/>.</summary>
+    public void WaitForInputs(long version, CancellationToken cancellation)
+    {
+        while (InputsVersion == version)
+        {
+            if (!HasExternalInputs)
+            {
+                throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin");
+            }
+            _inputsChanged.Wait(TimeSpan.FromMilliseconds(100), cancellation);
+        }
+    }
+
+    /// <summary>Sets flag <paramref name="number"/> (1-based) and wakes a waiting program.</summary>
+    public void SetFlag(int number, bool value)
+    {
+        object[] flags = ((KrlArrayValue)Environment.System["$FLAG"].Value).Items;
+        flags[number - 1] = value;
+        InputsChanged();
+    }
+
+    private bool Out(int number) => (bool)((KrlArrayValue)Environment.System["$OUT"].Value).Items[number - 1];
+
+    /// <summary>An element of $OUT or $ANOUT was written (index -1: the whole array).</summary>
+    public void OutputWritten(string array, int index)
+    {
+        object[] items = ((KrlArrayValue)Environment.System[array].Value).Items;
+        if (index < 0)
+        {
+            return;
+        }
+        if (array == "$ANOUT" && KrlValues.ToReal(items[index]) is < -1 or > 1)
+        {
+            throw new KrlRuntimeException("Value assignment inadmissible: $ANOUT takes values from -1 to 1");
+        }
+        Arm.Record(Line, TwinTraceKind.Output, FormattableString.Invariant($"{array}[{index + 1}] = {KrlValues.Format(items[index])}"));
+    }
+
+    private void SignalWritten(string name, int output)
+    {
+        var cell = Environment.Signals[name];
+        object[] items = ((KrlArrayValue)Environment.System["$OUT"].Value).Items;
+        items[output - 1] = cell.Box[0];
+        Arm.Record(Line, TwinTraceKind.Output, $"{name} = {KrlValues.Format(cell.Box[0])}");
+    }
+}

@@ -1,0 +1,220 @@
+using System.Globalization;
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// Motion on the twin arm: PTP, LIN and CIRC to axis or Cartesian targets in $BASE with $TOOL, software limit switches
+/// ($SOFTN_END/$SOFTP_END) checked before the motion starts, and motion time from $VEL/$ACC (paths) and $VEL_AXIS/$ACC_AXIS (axes).
+/// </summary>
+internal sealed partial class KrlTwinController
+{
+    /// <summary>How the trace marks the first motion of a run, the BCO run that brings the robot onto the program's path.</summary>
+    public const string BcoRun = "(BCO run)";
+
+    private static readonly string[] AxisNames = ["A1", "A2", "A3", "A4", "A5", "A6"];
+    private int _coincident;
+
+    /// <summary>Joints of an AXIS or E6AXIS value.</summary>
+    public static Joints JointsOf(KrlStructValue axes) => new(axes.Number("A1"), axes.Number("A2"), axes.Number("A3"), axes.Number("A4"), axes.Number("A5"), axes.Number("A6"));
+
+    /// <summary>An E6AXIS value of <paramref name="joints"/>.</summary>
+    public static KrlStructValue AxesValue(Joints joints)
+    {
+        var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Axis);
+        for (int i = 0; i < 6; i++)
+        {
+            value.Values[i] = joints[i];
+        }
+        return value;
+    }
+
+    /// <summary>$AXIS_ACT: the axes now.</summary>
+    public object AxesNow() => AxesValue(Arm.Joints);
+
+    /// <summary>$POS_ACT: the TCP now in $BASE, with S and T of the axes.</summary>
+    public object PositionNow()
+    {
+        Pose pose = FrameOf("$BASE").Inverse() * Arm.Tcp;
+        YawPitchRoll abc = pose.Rotation.ToYawPitchRoll();
+        KukaConfiguration configuration = KukaConfiguration.From(Options.Model, Arm.Joints);
+        var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Pos);
+        object[] v = value.Values;
+        (v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) = (pose.Position.X, pose.Position.Y, pose.Position.Z, abc.Yaw, abc.Pitch, abc.Roll, configuration.Status, configuration.Turn);
+        return value;
+    }
+
+    /// <summary>BAS(#INITMOV): axis speeds and accelerations 100 %, path speed and acceleration to the defaults.</summary>
+    public void InitialiseMotion()
+    {
+        foreach (string name in new[] { "$VEL_AXIS", "$ACC_AXIS" })
+        {
+            object[] items = ((KrlArrayValue)Environment.System[name].Value).Items;
+            Array.Fill(items, 100);
+        }
+        ((KrlStructValue)Environment.System["$VEL"].Value).Values[0] = Options.DefaultCpVelocity;
+        ((KrlStructValue)Environment.System["$ACC"].Value).Values[0] = Options.DefaultCpAcceleration;
+    }
+
+    /// <summary>$ADVANCE was written: KRL allows 0 to 5.</summary>
+    public void AdvanceChanged()
+    {
+        if ((int)Environment.System["$ADVANCE"].Value is < 0 or > 5)
+        {
+            throw new KrlRuntimeException("Value assignment inadmissible: $ADVANCE takes 0 to 5");
+        }
+    }
+
+    /// <summary>$TOOL was written: the arm's TCP follows it.</summary>
+    public void ToolChanged()
+    {
+        Arm.ToolCenter = FrameOf("$TOOL");
+        Arm.Record(Line, TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Environment.System["$TOOL"].Value));
+    }
+
+    private Pose FrameOf(string name) => PoseOf((KrlStructValue)Environment.System[name].Value);
+
+    private static Pose PoseOf(KrlStructValue frame) =>
+        new(frame.Number("X"), frame.Number("Y"), frame.Number("Z"), Rotation.FromYawPitchRoll(frame.Number("A"), frame.Number("B"), frame.Number("C")));
+
+    /// <summary>
+    /// The axes that put the TCP at <paramref name="position"/> (in $BASE with $TOOL), nearest to <paramref name="near"/>; with
+    /// <paramref name="useStatusTurn"/> only those of the position's S and T. Null when none is within the software limit switches.
+    /// </summary>
+    public Joints? Solve(KrlStructValue position, Joints near, bool useStatusTurn, out string why)
+    {
+        Pose flange = FrameOf("$BASE") * PoseOf(position) * FrameOf("$TOOL").Inverse();
+        IKinematics kinematics = Options.Model.Kinematics;
+        why = "";
+        if (useStatusTurn)
+        {
+            var wanted = new KukaConfiguration((int)position.Values[6], (int)position.Values[7]);
+            Joints? best = kinematics.InverseAllTurns(flange)
+                .Where(j => Options.Model.IsWithinLimits(j) && KukaConfiguration.From(Options.Model, j) == wanted)
+                .Select(j => (Joints?)j)
+                .MinBy(j => (j!.Value - near).NormSq());
+            if (best is not null)
+            {
+                return best;
+            }
+            why = $"no axis position with S {wanted.StatusText} and T {wanted.TurnText} within the software limit switches reaches it";
+            return null;
+        }
+        Joints? solution = kinematics.Closest(flange, near);
+        if (solution is null)
+        {
+            why = kinematics.WhyNoSolution(flange) is { Kind: KinematicIssueKind.JointLimit } issue
+                ? $"the axis position that reaches it is beyond the software limit switches ({issue})"
+                : "it is outside the robot's workspace";
+        }
+        return solution;
+    }
+
+    /// <summary>Runs a motion statement: checks the target before the motion starts, then moves the arm and traces the end.</summary>
+    public void Move(string kind, object target, object? auxiliary, string? approximation, int line, CancellationToken cancellation)
+    {
+        Joints start = Arm.Joints;
+        Joints end;
+        double pathMm = 0, turnDegrees = 0;
+        KrlStructValue? axes = ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true);
+        if (axes is not null)
+        {
+            end = JointsOf(axes);
+            RequireSoftLimits(end);
+        }
+        else
+        {
+            var current = (KrlStructValue)PositionNow();
+            KrlStructValue position = ToStruct(target, current, KrlTypes.E6Pos, axesOnly: false)!;
+            bool statusTurn = kind == "PTP" && Given(target, "S") && Given(target, "T");
+            end = Solve(position, start, statusTurn, out string why)
+                ?? throw new KrlRuntimeException($"Target not reachable: {kind} {DescribeXyz(position)}: {why}");
+            RequireSoftLimits(end);
+            Pose from = PoseOf(current), to = PoseOf(position);
+            pathMm = (to.Position - from.Position).Length;
+            turnDegrees = TwinRotation.AngleDegrees(from.Rotation, to.Rotation);
+            if (kind == "CIRC" && auxiliary is not null)
+            {
+                Pose via = PoseOf(ToStruct(auxiliary, current, KrlTypes.E6Pos, axesOnly: false)!);
+                pathMm = (via.Position - from.Position).Length + (to.Position - via.Position).Length;
+            }
+        }
+        double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
+        bool bco = Interlocked.Exchange(ref _coincident, 1) == 0;
+        Arm.MoveTo(end, seconds, line, kind + (approximation is null ? "" : " " + approximation) + (bco ? " " + BcoRun : ""), cancellation);
+    }
+
+    private static bool Given(object target, string field) => target switch
+    {
+        KrlPartialValue p => p.Indexes.Any(i => string.Equals(p.Type.Fields[i].Name, field, StringComparison.OrdinalIgnoreCase)),
+        KrlStructValue s => s.Type.FieldIndex(field) >= 0,
+        _ => false,
+    };
+
+    /// <summary>The target as <paramref name="type"/>, the components it leaves out from <paramref name="current"/>; null when it is not of that family.</summary>
+    private static KrlStructValue? ToStruct(object target, KrlStructValue current, KrlType type, bool axesOnly)
+    {
+        KrlType actual = target is KrlPartialValue p ? p.Type : ((KrlStructValue)target).Type;
+        if (axesOnly != KrlTypes.IsAxes(actual))
+        {
+            return null;
+        }
+        return (KrlStructValue)KrlConvert.To(type, target, current);
+    }
+
+    private void RequireSoftLimits(Joints joints)
+    {
+        object[] min = ((KrlArrayValue)Environment.System["$SOFTN_END"].Value).Items;
+        object[] max = ((KrlArrayValue)Environment.System["$SOFTP_END"].Value).Items;
+        for (int i = 0; i < 6; i++)
+        {
+            if (joints[i] < (double)min[i] - 1e-9 || joints[i] > (double)max[i] + 1e-9)
+            {
+                bool below = joints[i] < (double)min[i];
+                throw new KrlRuntimeException(string.Create(CultureInfo.InvariantCulture,
+                    $"Software limit switch {AxisNames[i]} {(below ? "-" : "+")}: the target {joints[i]:0.###} deg is beyond {(below ? min[i] : max[i]):0.###} deg"));
+            }
+        }
+    }
+
+    private static string DescribeXyz(KrlStructValue position) => string.Create(CultureInfo.InvariantCulture,
+        $"{{X {position.Number("X"):0.###}, Y {position.Number("Y"):0.###}, Z {position.Number("Z"):0.###}, A {position.Number("A"):0.###}, B {position.Number("B"):0.###}, C {position.Number("C"):0.###}}}");
+
+    /// <summary>PTP time: the slowest axis at $VEL_AXIS % of its speed, ramping at $ACC_AXIS %.</summary>
+    private double AxisSeconds(Joints from, Joints to)
+    {
+        object[] vel = ((KrlArrayValue)Environment.System["$VEL_AXIS"].Value).Items;
+        object[] acc = ((KrlArrayValue)Environment.System["$ACC_AXIS"].Value).Items;
+        double seconds = 0;
+        for (int i = 0; i < 6; i++)
+        {
+            double full = Options.Model.MaxJointSpeeds is { } speeds ? speeds[i] : Options.DefaultAxisSpeed;
+            double speed = full * Math.Clamp((int)vel[i], 1, 100) / 100.0;
+            double acceleration = full / Options.AxisRampSeconds * Math.Clamp((int)acc[i], 1, 100) / 100.0;
+            seconds = Math.Max(seconds, TwinMotion.TrapezoidSeconds(Math.Abs(to[i] - from[i]), speed, acceleration));
+        }
+        return seconds;
+    }
+
+    /// <summary>LIN and CIRC time: the path at $VEL.CP with $ACC.CP, or the turn at $VEL.ORI1 with $ACC.ORI1 if slower.</summary>
+    private double PathSeconds(double mm, double degrees)
+    {
+        var vel = (KrlStructValue)Environment.System["$VEL"].Value;
+        var acc = (KrlStructValue)Environment.System["$ACC"].Value;
+        double cp = KrlValues.ToReal(vel.Values[0]);
+        if (!(cp > 0) && mm > 0)
+        {
+            throw new KrlRuntimeException("Programmed path velocity $VEL.CP is 0: the motion would never end");
+        }
+        double path = mm > 0 ? TwinMotion.TrapezoidSeconds(mm / 1000, cp, Math.Max(KrlValues.ToReal(acc.Values[0]), 1e-6)) : 0;
+        double turn = TwinMotion.TrapezoidSeconds(degrees, Math.Max(KrlValues.ToReal(vel.Values[1]), 1e-6), Math.Max(KrlValues.ToReal(acc.Values[1]), 1e-6));
+        return Math.Max(path, turn);
+    }
+
+    /// <summary>WAIT SEC: the program waits (the twin's advance run ends here, as on the controller).</summary>
+    public void WaitSeconds(double seconds, int line, CancellationToken cancellation)
+    {
+        Clock.Wait(seconds, cancellation);
+        Arm.Record(line, TwinTraceKind.Wait, FormattableString.Invariant($"WAIT SEC {seconds}"));
+    }
+}

@@ -1,0 +1,241 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// A KUKA controller that runs KRL: <c>.src</c> and <c>.dat</c> files are loaded as the controller loads them (a mistake refuses
+/// them with file and line), a main routine runs on the robot interpreter with the arm model's kinematics, and an error stops
+/// the program with the controller's message.
+/// </summary>
+internal sealed partial class KrlTwinController : IDisposable
+{
+    private readonly Lock _gate = new();
+    private readonly Dictionary<string, KrlModule> _modules = new(StringComparer.OrdinalIgnoreCase);
+    private KrlProgramState _state;
+    private string? _error;
+    private int _messageHandle;
+
+    /// <summary>A controller with <paramref name="options"/> (KR 6 R900 sixx, not real-time, by default).</summary>
+    public KrlTwinController(KrlTwinOptions? options = null)
+    {
+        Options = options ?? new KrlTwinOptions();
+        Clock = new TwinClock(Options.Time, Options.RealTime);
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock);
+        KrlSystemVariables.AddTo(Environment, this);
+        KrlBuiltins.AddTo(Environment);
+        AddEki();
+        foreach ((string name, int output) in Options.Signals)
+        {
+            if (output < 1 || output > KrlSystemVariables.DigitalCount)
+            {
+                throw new ArgumentException($"The signal {name} is mapped to $OUT[{output}], which does not exist (1 to {KrlSystemVariables.DigitalCount}).", nameof(options));
+            }
+            Environment.Signals[name] = new KrlCell(name, KrlType.Bool, false)
+            {
+                Read = () => Out(output),
+                Written = _ => SignalWritten(name, output),
+            };
+        }
+    }
+
+    /// <summary>The settings.</summary>
+    public KrlTwinOptions Options { get; }
+
+    /// <summary>The controller's clock.</summary>
+    public TwinClock Clock { get; }
+
+    /// <summary>The arm.</summary>
+    public TwinArm Arm { get; }
+
+    /// <summary>The messages window and logbook.</summary>
+    public TwinPendant Pendant { get; } = new();
+
+    /// <summary>The system variables, signals and built-in routines.</summary>
+    public KrlEnvironment Environment { get; } = new();
+
+    /// <summary>The loaded modules, by name.</summary>
+    public IReadOnlyDictionary<string, KrlModule> Modules => _modules;
+
+    /// <summary>The main routine of the first file loaded (null before a load).</summary>
+    public string? MainRoutine { get; private set; }
+
+    /// <summary>How the last run ended.</summary>
+    public KrlProgramState State
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _state;
+            }
+        }
+    }
+
+    /// <summary>The message of the error that stopped the last run (null when none did).</summary>
+    public string? Error
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _error;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Loads files (name with extension, text): each <c>.src</c> with the <c>.dat</c> of the same name. Throws
+    /// <see cref="KrlLoadException"/> for the first syntax error, unknown name or type error; nothing is loaded then.
+    /// </summary>
+    public void Load(params (string Name, string Text)[] files)
+    {
+        var modules = new Dictionary<string, KrlModule>(_modules, StringComparer.OrdinalIgnoreCase);
+        var data = new List<KrlDataList>();
+        string? main = null;
+        foreach ((string name, string text) in files)
+        {
+            string module = Path.GetFileNameWithoutExtension(name);
+            string extension = Path.GetExtension(name).ToLowerInvariant();
+            if (extension == ".dat")
+            {
+                KrlDataList list = KrlParser.ParseData(name, text);
+                if (!string.Equals(list.Name, module, StringComparison.OrdinalIgnoreCase))
+                {
+                    throw new KrlLoadException(name, list.Line, $"DEFDAT {list.Name} must have the name of its file ({module})");
+                }
+                data.Add(list);
+            }
+            else if (extension == ".src")
+            {
+                var parsed = new KrlModule(module);
+                KrlParser.ParseSource(name, text, parsed);
+                if (!string.Equals(parsed.Routines[0].Name, module, StringComparison.OrdinalIgnoreCase))
+                {
+                    throw new KrlLoadException(name, parsed.Routines[0].Line, $"the first routine {parsed.Routines[0].Name} must have the name of its file ({module})");
+                }
+                modules[module] = parsed;
+                main ??= parsed.Routines[0].Name;
+            }
+            else
+            {
+                throw new KrlLoadException(name, 1, "the controller loads .src and .dat files");
+            }
+        }
+        var binder = new KrlBinder(modules, Environment);
+        foreach (KrlDataList list in data)
+        {
+            if (!modules.TryGetValue(list.Name, out KrlModule? module))
+            {
+                module = new KrlModule(list.Name);
+                modules[list.Name] = module;
+            }
+            foreach (KrlDeclaration declaration in list.Declarations)
+            {
+                if (module.Data.ContainsKey(declaration.Name))
+                {
+                    throw new KrlLoadException(list.File, declaration.Line, $"{declaration.Name} is declared twice in the data list");
+                }
+                object value = KrlValues.Default(declaration.Type);
+                if (declaration.Initial is { } initial)
+                {
+                    binder.BindConstant(list.File, initial, declaration.Type);
+                    value = KrlConvert.To(declaration.Type, new KrlMachine(this, default).Eval(initial, []), value);
+                }
+                module.Data[declaration.Name] = new KrlCell(declaration.Name, declaration.Type, value);
+                if (declaration.Global)
+                {
+                    if (!list.IsPublic)
+                    {
+                        throw new KrlLoadException(list.File, declaration.Line, $"GLOBAL {declaration.Name} needs a PUBLIC data list (DEFDAT {list.Name} PUBLIC)");
+                    }
+                    module.GlobalData.Add(declaration.Name);
+                }
+            }
+        }
+        binder.BindAll();
+        lock (_gate)
+        {
+            foreach ((string name, KrlModule module) in modules)
+            {
+                _modules[name] = module;
+            }
+            MainRoutine ??= main;
+        }
+    }
+
+    /// <summary>Loads a <c>.src</c> file with its <c>.dat</c>, or every <c>.src</c> and <c>.dat</c> file of a folder.</summary>
+    public void LoadFrom(string path) => Load([.. ProgramFiles(path).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))]);
+
+    /// <summary>The files of a program path (see <see cref="LoadFrom"/>), <c>.src</c> files first.</summary>
+    public static IReadOnlyList<string> ProgramFiles(string path)
+    {
+        if (Directory.Exists(path))
+        {
+            string[] sources = Directory.GetFiles(path, "*.src");
+            Array.Sort(sources, StringComparer.Ordinal);
+            string[] data = Directory.GetFiles(path, "*.dat");
+            Array.Sort(data, StringComparer.Ordinal);
+            return sources.Length > 0 ? [.. sources, .. data] : throw new FileNotFoundException($"The folder \"{path}\" has no .src file.");
+        }
+        string dat = Path.ChangeExtension(path, ".dat");
+        return File.Exists(dat) && !string.Equals(dat, path, StringComparison.OrdinalIgnoreCase) ? [path, dat] : [path];
+    }
+
+    /// <summary>
+    /// Runs <paramref name="entry"/> (default: the main routine of the first file loaded) to its END. HALT or cancellation stop it;
+    /// an error stops it with the controller's message (also in the logbook).
+    /// </summary>
+    public KrlProgramState Run(string? entry = null, CancellationToken cancellation = default)
+    {
+        string name = entry ?? MainRoutine ?? "";
+        KrlRoutine? routine = KrlBinder.FindRoutine(_modules, null, name);
+        if (routine is null || routine.Parameters.Count > 0 || routine.ReturnType is not null)
+        {
+            return Finish(KrlProgramState.Failed, $"Program {name} not found: no subprogram without parameters of that name is loaded");
+        }
+        lock (_gate)
+        {
+            _state = KrlProgramState.Running;
+            _error = null;
+        }
+        Interlocked.Exchange(ref _coincident, 0);
+        var machine = new KrlMachine(this, cancellation);
+        try
+        {
+            machine.Run(routine);
+            return Finish(KrlProgramState.Finished, null);
+        }
+        catch (KrlHaltException)
+        {
+            return Finish(KrlProgramState.Stopped, null);
+        }
+        catch (KrlRuntimeException ex)
+        {
+            return Finish(KrlProgramState.Failed, FormattableString.Invariant($"{ex.Message} ({ex.File ?? machine.File}, line {(ex.Line > 0 ? ex.Line : machine.Line)})"));
+        }
+        catch (OperationCanceledException)
+        {
+            return Finish(KrlProgramState.Stopped, null);
+        }
+    }
+
+    /// <summary>A new message handle for Set_KrlMsg.</summary>
+    public int NextMessageHandle() => Interlocked.Increment(ref _messageHandle);
+
+    private KrlProgramState Finish(KrlProgramState state, string? error)
+    {
+        lock (_gate)
+        {
+            _state = state;
+            _error = error;
+        }
+        if (error is not null)
+        {
+            Pendant.Log(error);
+        }
+        return state;
+    }
+
+    /// <inheritdoc/>
+    public void Dispose() => CloseEki();
+}

@@ -1,0 +1,161 @@
+using System.Globalization;
+using System.Text;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>An enumeration value such as <c>#QUIT</c> (names compare without case).</summary>
+/// <param name="Name">The name without the <c>#</c>.</param>
+internal sealed record KrlEnumValue(string Name)
+{
+    /// <inheritdoc/>
+    public bool Equals(KrlEnumValue? other) => other is not null && string.Equals(Name, other.Name, StringComparison.OrdinalIgnoreCase);
+
+    /// <inheritdoc/>
+    public override int GetHashCode() => StringComparer.OrdinalIgnoreCase.GetHashCode(Name);
+
+    /// <inheritdoc/>
+    public override string ToString() => "#" + Name;
+}
+
+/// <summary>A structure value: its type and one value per component.</summary>
+internal sealed class KrlStructValue(KrlType type, object[] values)
+{
+    /// <summary>The structure type.</summary>
+    public KrlType Type { get; } = type;
+
+    /// <summary>The component values, in the type's order.</summary>
+    public object[] Values { get; } = values;
+
+    /// <summary>A deep copy (KRL structures are values).</summary>
+    public KrlStructValue Copy()
+    {
+        var values = new object[Values.Length];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = KrlValues.Copy(Values[i]);
+        }
+        return new KrlStructValue(Type, values);
+    }
+
+    /// <summary>The REAL (or INT) component <paramref name="field"/>, 0 when the type has none.</summary>
+    public double Number(string field) => Type.FieldIndex(field) is int i and >= 0 ? KrlValues.ToReal(Values[i]) : 0;
+}
+
+/// <summary>An aggregate's value: the components it gives (the others keep the value of what it is assigned to).</summary>
+/// <param name="Type">The structure type.</param>
+/// <param name="Indexes">The components given.</param>
+/// <param name="Values">Their values.</param>
+internal sealed record KrlPartialValue(KrlType Type, int[] Indexes, object[] Values);
+
+/// <summary>An array value: its type and its elements (row by row for 2 and 3 dimensions).</summary>
+internal sealed class KrlArrayValue(KrlType type, object[] items)
+{
+    /// <summary>The array type.</summary>
+    public KrlType Type { get; } = type;
+
+    /// <summary>The elements.</summary>
+    public object[] Items { get; } = items;
+
+    /// <summary>A deep copy.</summary>
+    public KrlArrayValue Copy()
+    {
+        var items = new object[Items.Length];
+        for (int i = 0; i < items.Length; i++)
+        {
+            items[i] = KrlValues.Copy(Items[i]);
+        }
+        return new KrlArrayValue(Type, items);
+    }
+}
+
+/// <summary>Making, copying and converting KRL values (boxed int, double, bool, char, enum, structure, array).</summary>
+internal static class KrlValues
+{
+    private static readonly object[] SmallInts = [.. Enumerable.Range(-1, 4098).Select(i => (object)i)];
+    private static readonly object[] Chars = [.. Enumerable.Range(0, 256).Select(i => (object)(char)i)];
+
+    /// <summary>A boxed INT, shared for -1 to 4096 (array indices, ids, counters) so that loops do not allocate.</summary>
+    public static object Box(int value) => value is >= -1 and <= 4096 ? SmallInts[value + 1] : value;
+
+    /// <summary>A boxed BOOL, shared (conditions are evaluated on every statement an interrupt watches).</summary>
+    public static object Box(bool value) => value ? True : False;
+
+    private static readonly object True = true;
+    private static readonly object False = false;
+
+    /// <summary>A boxed CHAR, shared for the first 256 characters.</summary>
+    public static object Box(char value) => value < 256 ? Chars[value] : value;
+
+    /// <summary>The initial value of a variable of <paramref name="type"/> (0, FALSE, empty).</summary>
+    public static object Default(KrlType type) => type.Kind switch
+    {
+        KrlKind.Int => 0,
+        KrlKind.Real => 0.0,
+        KrlKind.Bool => false,
+        KrlKind.Char => '\0',
+        KrlKind.Enum => new KrlEnumValue(""),
+        KrlKind.Struct => new KrlStructValue(type, [.. type.Fields.Select(f => Default(f.Type))]),
+        _ => new KrlArrayValue(type, [.. Enumerable.Range(0, type.Length).Select(_ => Default(type.Element!))]),
+    };
+
+    /// <summary>A copy of a value (structures and arrays deep, the rest as is).</summary>
+    public static object Copy(object value) => value switch
+    {
+        KrlStructValue s => s.Copy(),
+        KrlArrayValue a => a.Copy(),
+        _ => value,
+    };
+
+    /// <summary>A number as REAL.</summary>
+    public static double ToReal(object value) => value switch
+    {
+        int i => i,
+        double d => d,
+        _ => throw new InvalidCastException($"{value} is not a number"),
+    };
+
+    /// <summary>A number as INT: a REAL is rounded to the nearest whole number, as KRL assigns REAL to INT.</summary>
+    public static int ToInt(object value) => value switch
+    {
+        int i => i,
+        double d => (int)Math.Round(d, MidpointRounding.AwayFromZero),
+        _ => throw new InvalidCastException($"{value} is not a number"),
+    };
+
+    /// <summary>The text of a CHAR array: its characters up to the first unset one.</summary>
+    public static string Text(KrlArrayValue array)
+    {
+        var text = new StringBuilder(array.Items.Length);
+        foreach (object item in array.Items)
+        {
+            char c = (char)item;
+            if (c == '\0')
+            {
+                break;
+            }
+            text.Append(c);
+        }
+        return text.ToString();
+    }
+
+    /// <summary>Copies <paramref name="text"/> into a CHAR array (the rest unset); characters beyond its size are cut.</summary>
+    public static void SetText(object[] items, int start, int length, string text)
+    {
+        for (int i = 0; i < length; i++)
+        {
+            items[start + i] = i < text.Length ? text[i] : '\0';
+        }
+    }
+
+    /// <summary>A value as the trace and messages write it.</summary>
+    public static string Format(object value) => value switch
+    {
+        bool b => b ? "TRUE" : "FALSE",
+        double d => d.ToString("0.######", CultureInfo.InvariantCulture),
+        int i => i.ToString(CultureInfo.InvariantCulture),
+        char c => c.ToString(),
+        KrlArrayValue a when a.Type.Element!.Kind == KrlKind.Char => "\"" + Text(a) + "\"",
+        KrlStructValue s => "{" + string.Join(", ", s.Type.Fields.Select((f, i) => f.Name + " " + Format(s.Values[i]))) + "}",
+        _ => value.ToString() ?? "",
+    };
+}

@@ -1,0 +1,62 @@
+// The command-line tool is .NET 10 only (see Machina.Tests.csproj): these tests run with the net10.0 build.
+#if NET10_0_OR_GREATER
+using Machina.Tests.Cli;
+
+namespace Machina.Tests.Simulation.Krl;
+
+public class KrlVerifyCommandTests
+{
+    [Fact]
+    public async Task Verify_Program_RunsItsCompiledKrlOnTheTwin_AndAgreesStepByStep()
+    {
+        using var cli = new CliRunner();
+        cli.Write("square.machina", "SpeedTo(100);\nMoveTo(400, 0, 400);\nMove(50, 0, 0);\nMove(0, 50, 0);\nWriteDigital(2, true);\n");
+
+        CliResult result = await cli.RunAsync("verify", "square.machina", "--brand", "kuka");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.StartsWith("Running the compiled program on a KRL twin of a KUKA KR 6 R900 sixx and comparing it with square.machina.\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains(" ok   Move(50,0,0);\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains(" ok   WriteDigital(2,True);\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"OK: 4 steps agree; the program runs in [0-9.]+ s\n$", result.Stdout);
+    }
+
+    [Fact]
+    public async Task Verify_SourceAlone_ListsItsSteps_OrRefusesModWithItsLine()
+    {
+        using var cli = new CliRunner();
+        cli.Write("ok.src", "DEF ok( )\n  PTP {AXIS: A1 0, A2 -90, A3 90, A4 0, A5 90, A6 0}\nEND\n");
+        cli.Write("bad.src", "DEF bad( )\n  DECL INT i\n  i = 5 MOD 2\nEND\n");
+
+        CliResult ok = await cli.RunAsync("verify", "ok.src", "--brand", "kuka");
+        CliResult bad = await cli.RunAsync("verify", "bad.src", "--brand", "kuka");
+
+        Assert.True(ok.Exit == 0, ok.Stdout + ok.Stderr);
+        Assert.Contains("  line 2         0.000 s  PTP (BCO run): TCP", ok.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("OK: the program ran to its end in 0 s\n", ok.Stdout, StringComparison.Ordinal);
+        Assert.Equal(1, bad.Exit);
+        Assert.Equal("FAILED: bad.src, line 3: KRL has no operator MOD: its arithmetic operators are + - * / (INT division with / truncates)\n", bad.Stdout);
+    }
+
+    [Fact]
+    public async Task SimKukaLoad_RunsACompiledProgramOnTheTwin_AndListsItsSteps_OrTheStop()
+    {
+        using var cli = new CliRunner();
+        Directory.CreateDirectory(Path.Combine(cli.Folder, "prog"));
+        Directory.CreateDirectory(Path.Combine(cli.Folder, "ok"));
+        cli.Write("prog/prog.src", "DEF prog( )\n  PTP $AXIS_ACT\n  $OUT[7] = TRUE\n  PTP {AXIS: A1 175}\nEND\n");
+        cli.Write("ok/ok.src", "DEF ok( )\n  PTP $AXIS_ACT\n  $OUT[7] = flag\nEND\n");
+        cli.Write("ok/ok.dat", "DEFDAT ok\n  DECL BOOL flag=TRUE\nENDDAT\n");
+
+        CliResult ok = await cli.RunAsync("sim", "kuka", "--load", "ok");
+        CliResult stopped = await cli.RunAsync("sim", "kuka", "--load", "prog/prog.src");
+
+        Assert.True(ok.Exit == 0, ok.Stdout + ok.Stderr);
+        Assert.StartsWith("Running ok (ok.src, ok.dat) on a KRL twin of a KUKA KR 6 R900 sixx in real time.", ok.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  line 3         0.000 s  $OUT[7] = TRUE: TCP", ok.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("OK: the program ran to its end in 0 s\n", ok.Stdout, StringComparison.Ordinal);
+        Assert.Equal(1, stopped.Exit);
+        Assert.EndsWith("FAILED: Software limit switch A1 +: the target 175 deg is beyond 170 deg (prog.src, line 4)\n", stopped.Stdout, StringComparison.Ordinal);
+    }
+}
+#endif
