@@ -321,7 +321,7 @@ internal sealed partial class RapidParser
         switch (t.Kind)
         {
             case RapidTokenKind.Number:
-                return new RapidLiteral(t.Line, t.Number);
+                return new RapidLiteral(t.Line, Boxed(t.Number));
             case RapidTokenKind.String:
                 return new RapidLiteral(t.Line, t.Text);
             case RapidTokenKind.Name when t.Is("TRUE") || t.Is("FALSE"):

@@ -112,6 +112,13 @@ internal sealed partial class RapidTwinController
         return joined;
     }
 
+    /// <summary>Waits up to <paramref name="timeout"/> for every task started by <see cref="StartTasks"/> to end by itself, then stops them; false when one had to be stopped.</summary>
+    public bool StopTasksWhenEnded(TimeSpan timeout)
+    {
+        bool ended = _threads.All(t => t.Join(timeout));
+        return StopTasks(TimeSpan.FromSeconds(10)) && ended;
+    }
+
     /// <summary>Runs <paramref name="entry"/> of <paramref name="task"/> to its end and records how it ended (see <see cref="Run"/>).</summary>
     public RapidProgramState RunTask(RapidTask task, string entry, CancellationToken cancellation)
     {
