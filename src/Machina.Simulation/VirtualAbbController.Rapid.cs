@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Net.Sockets;
 using Machina.Simulation.Rapid;
 
@@ -21,13 +22,13 @@ public sealed partial class VirtualAbbController
             Time = Clock,
             RealTime = !_options.InstantExecution,
         });
-        double rate = Math.Clamp(1 / _options.MonitorPeriod.TotalSeconds, 0.01, 250);
-        foreach ((string file, string text) in AbbDriverModules.Create("127.0.0.1", Port, rate))
+        // The shipped files with their placeholders filled, as an installer writes them (the host's AbbDriverModules does the same).
+        string interval = Math.Max(0.004, _options.MonitorPeriod.TotalSeconds).ToString("0.###", CultureInfo.InvariantCulture);
+        foreach ((string file, string task, int port) in new[] { ("machina_abb_driver.mod", RapidTwinController.MotionTask, Port), ("machina_abb_monitor.mod", MonitorTask, MonitorPort) })
         {
-            if (file.EndsWith(".mod", StringComparison.Ordinal))
-            {
-                twin.Task(file.Contains("monitor", StringComparison.Ordinal) ? MonitorTask : RapidTwinController.MotionTask).Load([(file, text)]);
-            }
+            string text = DriverFiles.Fill(DriverFiles.Read("abb", file),
+                ("HOSTNAME", "127.0.0.1"), ("PORT", port.ToString(CultureInfo.InvariantCulture)), ("MONITOR_INTERVAL", interval));
+            twin.Task(task).Load([(file, text)]);
         }
         twin.Pendant.Logged += line =>
         {
