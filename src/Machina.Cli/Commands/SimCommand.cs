@@ -14,6 +14,7 @@ internal static class SimCommand
         "Start a virtual robot controller to try any Machina host without a robot",
         $"""
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
+               machina sim abb --load PROGRAM [--model M]
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
@@ -29,12 +30,14 @@ internal static class SimCommand
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
           --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
+          --load PROGRAM    abb: load a compiled RAPID program (.mod, .pgf or a folder) and run its main in real time, as a
+                            controller would, telling its pendant messages, until it ends or Ctrl+C (listens on no port)
 
         Example:
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model"],
+        Options: ["--port", "--bind", "--speed-factor", "--model", "--load"],
         Flags: ["--quiet"],
         RunAsync);
 
@@ -50,6 +53,12 @@ internal static class SimCommand
         double speed = args.Positive("--speed-factor", 1);
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");
+        if (args.Value("--load") is string load)
+        {
+            return brand == RobotType.ABB
+                ? await SimLoad.RunAbbAsync(load, model, context).ConfigureAwait(false)
+                : throw new UsageException($"--load runs compiled RAPID programs: use it with abb, not {Brands.Name(brand)}.");
+        }
 
         var gate = new Lock();
         void Log(string line)
