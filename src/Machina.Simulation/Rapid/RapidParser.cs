@@ -23,6 +23,10 @@ internal sealed partial class RapidParser
     // One boxed value per number: a compiled module repeats the same few numbers (0, 1, 9E9…) hundreds of thousands of times.
     private readonly Dictionary<double, object> _numbers = [];
 
+    // Lists for the items of aggregates and the arguments of calls being read, kept for the next ones (one per nesting level).
+    private readonly Stack<List<RapidExpr>> _spareItems = new();
+    private readonly Stack<List<RapidArg>> _spareArgs = new();
+
     /// <summary>Parses one module; throws <see cref="RapidLoadException"/> at the first syntax error.</summary>
     public static RapidModule Parse(string text) => new RapidParser(text).Module();
 
