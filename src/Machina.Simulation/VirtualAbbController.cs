@@ -51,6 +51,11 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
         (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
+        if (_options.RunsRapid)
+        {
+            StartTwin(_driverListener, _monitorListener);
+            return Task.CompletedTask;
+        }
         Run(token => ServeDriverClientsAsync(_driverListener, GreetAsync, ReadRequestsAsync, token));
         Run(token => ServeClientsAsync(_monitorListener, ReportAsync, token));
         return Task.CompletedTask;
@@ -58,6 +63,7 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
 
     private protected override void StopListening()
     {
+        StopTwin();
         _driverListener?.Stop();
         _monitorListener?.Stop();
     }

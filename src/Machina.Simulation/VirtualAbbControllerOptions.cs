@@ -19,6 +19,14 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
     /// <summary>Driver version sent in the handshake. Default 1.6.0, the version of Machina's RAPID driver; below 1.6 the handshake has no progress (<c>$25</c>).</summary>
     public Version DriverVersion { get; init; } = new(1, 6, 0);
 
+    /// <summary>
+    /// True: the controller runs Machina's RAPID driver and monitor (drivers/abb) on a RAPID interpreter, in two tasks, as an IRC5
+    /// would; the pendant and errors show what the program did. Needs a <c>Model</c>. The fault plan, <c>State</c>, answering
+    /// pauses and request inspection (<c>ReceivedRequests</c>, <c>ExecutedIds</c>…) do not apply. False (default): Machina's driver
+    /// is imitated in C#.
+    /// </summary>
+    public bool RunsRapid { get; init; }
+
     /// <summary>Where the robot starts without a model: (374, 0, 630), tool pointing down (quaternion 0, 0, 1, 0).</summary>
     internal static Pose DefaultStart => new(new Vector(374, 0, 630), Rotation.FromQuaternion(0, 0, 1, 0));
 
@@ -30,5 +38,9 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
             throw new ArgumentException("MonitorPeriod must be positive.", nameof(MonitorPeriod));
         }
         ArgumentNullException.ThrowIfNull(DriverVersion);
+        if (RunsRapid && Model is null)
+        {
+            throw new ArgumentException("A virtual ABB that runs RAPID needs a robot model (the interpreter moves its kinematics); set Model.");
+        }
     }
 }

@@ -14,7 +14,7 @@ internal static partial class SimCommand
         "Start a virtual robot controller to try any Machina host without a robot",
         $"""
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
-               machina sim kuka --load PROGRAM [--model M]
+               machina sim abb|kuka --load PROGRAM [--model M]
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
@@ -30,7 +30,9 @@ internal static partial class SimCommand
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
           --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
-          --load PROGRAM    KUKA: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
+          --load PROGRAM    abb: load a compiled RAPID program (.mod, .pgf or a folder) and run its main in real time, as a
+                            controller would, telling its pendant messages, until it ends or Ctrl+C (listens on no port)
+                            kuka: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
                             time and list each step it makes, then stop (exit code 1 when the controller stops it)
 
         Example:
@@ -57,6 +59,12 @@ internal static partial class SimCommand
         double speed = args.Positive("--speed-factor", 1);
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");
+        if (args.Value("--load") is string load)
+        {
+            return brand == RobotType.ABB
+                ? await SimLoad.RunAbbAsync(load, model, context).ConfigureAwait(false)
+                : throw new UsageException($"--load runs compiled programs on abb (RAPID) and kuka (KRL), not on {Brands.Name(brand)}.");
+        }
 
         var gate = new Lock();
         void Log(string line)

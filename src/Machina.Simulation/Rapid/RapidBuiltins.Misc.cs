@@ -16,6 +16,12 @@ internal static partial class RapidBuiltins
                 throw ArgumentError(call, $"WaitTime: the time {RapidValues.FormatNumber(seconds)} s is negative");
             }
             RapidTwinController c = call.Machine.Task.Controller;
+            if (!call.Machine.Task.IsMotionTask)
+            {
+                // A background task (the monitor) waits on the wall clock: its period is real, it adds nothing to program time.
+                Task.Delay(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), c.Clock.Time, call.Machine.Task.CancellationToken).GetAwaiter().GetResult();
+                return;
+            }
             c.Clock.Wait(seconds, call.Machine.Task.CancellationToken);
             c.Arm.Record(call.Line, TwinTraceKind.Wait, string.Create(CultureInfo.InvariantCulture, $"WaitTime {seconds}"));
         }),

@@ -23,6 +23,7 @@ internal static partial class RapidBuiltins
                 throw call.Error(RapidErrorNumbers.SockAddrInUse, "SocketCreate: the socket is already created");
             }
             s.Status = 1;
+            call.Machine.Task.Controller.Track(s);
         }),
         Instruction("SocketBind", [P("Socket", "socketdev"), P("LocalAddress", "string"), P("LocalPort", "num")], call =>
         {
@@ -43,7 +44,7 @@ internal static partial class RapidBuiltins
             }
             try
             {
-                s.Listener = new TcpListener(s.Bound);
+                s.Listener = call.Machine.Task.Controller.TakeReserved(s.Bound) ?? new TcpListener(s.Bound);
                 s.Listener.Start(1);
             }
             catch (SocketException ex)
@@ -61,6 +62,10 @@ internal static partial class RapidBuiltins
             if (!Wait(call, accept, call.Has(3) ? call.Num(3) : DefaultSocketSeconds))
             {
                 throw call.Error(RapidErrorNumbers.SockTimeout, "SocketAccept: no client connected in time");
+            }
+            if (accept.IsFaulted)
+            {
+                throw call.Error(RapidErrorNumbers.SockClosed, "SocketAccept: the socket was closed");
             }
             client.Connection = accept.Result;
             client.Connection.NoDelay = true;
@@ -117,9 +122,21 @@ internal static partial class RapidBuiltins
 
     private static IEnumerable<RapidBuiltin> Interrupts() =>
     [
-        Instruction("IDelete", [P("Interrupt", "intnum")], _ => { }),
-        Instruction("IError", [P("ErrorDomain", "num"), Opt("ErrorId", "num"), P("ErrorType", "num"), P("Interrupt", "intnum")], _ => { }),
-        Instruction("GetTrapData", [P("TrapEvent", "trapdata", true)], _ => { }),
+        Instruction("IDelete", [P("Interrupt", "intnum")], call => call.Machine.Task.DeleteInterrupt((int)call.Num(0))),
+        Instruction("IError", [P("ErrorDomain", "num"), Opt("ErrorId", "num"), P("ErrorType", "num"), P("Interrupt", "intnum")], call =>
+        {
+            int number = call.Has(1) ? (int)call.Num(1) : -1;
+            if (!call.Machine.Task.OrderErrorInterrupt((int)call.Num(3), (int)call.Num(0), number, (int)call.Num(2)))
+            {
+                throw call.Error(RapidErrorNumbers.ArgValErr, "IError: the interrupt is not connected to a trap (CONNECT it first)");
+            }
+        }),
+        Instruction("GetTrapData", [P("TrapEvent", "trapdata", true)], call =>
+        {
+            RapidTrapData data = call.Machine.Task.CurrentTrapData
+                ?? throw call.Error(RapidErrorNumbers.ArgValErr, "GetTrapData is used outside a trap routine");
+            call.Set(0, new RapidTrapData { Domain = data.Domain, Number = data.Number, Kind = data.Kind });
+        }),
         Instruction("ReadErrData", [P("TrapEvent", "trapdata"), P("ErrorDomain", "errdomain", true), P("ErrorId", "num", true), P("ErrorType", "errtype", true)], call =>
         {
             var data = (RapidTrapData)call.Value(0);
@@ -140,11 +157,17 @@ internal static partial class RapidBuiltins
         CancellationToken cancellation = call.Machine.Task.CancellationToken;
         try
         {
-            return operation.Wait(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
+            operation.Wait(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
         }
-        catch (AggregateException) when (operation.IsFaulted)
+        catch (AggregateException) when (operation.IsFaulted || operation.IsCanceled)
         {
-            return true;
+            // Looked at below.
         }
+        cancellation.ThrowIfCancellationRequested();
+        if (operation.IsCanceled)
+        {
+            throw new OperationCanceledException("The socket operation was cancelled.");
+        }
+        return operation.IsCompleted;
     }
 }

@@ -7,77 +7,106 @@ namespace Machina.Simulation.Rapid;
 /// Splits a RAPID module into tokens: names, numbers (<c>9E9</c>, <c>0.5</c>), strings (<c>""</c> is a quote, <c>\\</c> a
 /// backslash, <c>\hh</c> a character by its hexadecimal code) and symbols; <c>!</c> starts a comment to the end of the line.
 /// </summary>
-internal static class RapidLexer
+internal sealed class RapidLexer(string text)
 {
     private const string Singles = "+-*/<>=()[]{},;:.\\|%";
 
     private static readonly string[] SingleTexts = [.. Singles.Select(c => c.ToString())];
 
+    private readonly Dictionary<int, string> _names = [];
+    private int _line = 1;
+    private int _i;
+
     /// <summary>The tokens of <paramref name="text"/>, ending with an <see cref="RapidTokenKind.End"/> token.</summary>
     /// <exception cref="RapidLoadException">A character that RAPID does not have, or an unterminated string.</exception>
     public static List<RapidToken> Tokenize(string text)
     {
-        var tokens = new List<RapidToken>(Math.Min(text.Length / 4, 1 << 16));
-        int line = 1, i = 0, n = text.Length;
-        while (i < n)
+        var lexer = new RapidLexer(text);
+        var tokens = new List<RapidToken>();
+        RapidToken token;
+        do
         {
-            char c = text[i];
+            token = lexer.Next();
+            tokens.Add(token);
+        }
+        while (token.Kind != RapidTokenKind.End);
+        return tokens;
+    }
+
+    /// <summary>The next token (an <see cref="RapidTokenKind.End"/> token at the end, again and again).</summary>
+    /// <exception cref="RapidLoadException">A character that RAPID does not have, or an unterminated string.</exception>
+    public RapidToken Next()
+    {
+        int n = text.Length;
+        while (_i < n)
+        {
+            char c = text[_i];
             if (c == '\n')
             {
-                line++;
-                i++;
+                _line++;
+                _i++;
             }
             else if (c is ' ' or '\t' or '\r' or '\f')
             {
-                i++;
+                _i++;
             }
             else if (c == '!')
             {
-                while (i < n && text[i] != '\n')
+                while (_i < n && text[_i] != '\n')
                 {
-                    i++;
+                    _i++;
                 }
             }
             else if (char.IsAsciiLetter(c))
             {
-                int start = i;
-                while (i < n && (char.IsAsciiLetterOrDigit(text[i]) || text[i] == '_'))
+                int start = _i;
+                while (_i < n && (char.IsAsciiLetterOrDigit(text[_i]) || text[_i] == '_'))
                 {
-                    i++;
+                    _i++;
                 }
-                tokens.Add(new RapidToken(RapidTokenKind.Name, text[start..i], 0, line));
+                return new RapidToken(RapidTokenKind.Name, Name(start, _i - start), 0, _line);
             }
-            else if (char.IsAsciiDigit(c) || (c == '.' && i + 1 < n && char.IsAsciiDigit(text[i + 1])))
+            else if (char.IsAsciiDigit(c) || (c == '.' && _i + 1 < n && char.IsAsciiDigit(text[_i + 1])))
             {
-                tokens.Add(Number(text, ref i, line));
+                return Number(text, ref _i, _line);
             }
             else if (c == '"')
             {
-                tokens.Add(String(text, ref i, line));
+                return String(text, ref _i, _line);
             }
             else
             {
-                char d = i + 1 < n ? text[i + 1] : '\0';
+                char d = _i + 1 < n ? text[_i + 1] : '\0';
                 string? two = (c, d) switch { (':', '=') => ":=", ('<', '>') => "<>", ('<', '=') => "<=", ('>', '=') => ">=", _ => null };
                 int single = Singles.IndexOf(c, StringComparison.Ordinal);
                 if (two is not null)
                 {
-                    tokens.Add(new RapidToken(RapidTokenKind.Symbol, two, 0, line));
-                    i += 2;
+                    _i += 2;
+                    return new RapidToken(RapidTokenKind.Symbol, two, 0, _line);
                 }
-                else if (single >= 0)
+                if (single >= 0)
                 {
-                    tokens.Add(new RapidToken(RapidTokenKind.Symbol, SingleTexts[single], 0, line));
-                    i++;
+                    _i++;
+                    return new RapidToken(RapidTokenKind.Symbol, SingleTexts[single], 0, _line);
                 }
-                else
-                {
-                    throw new RapidLoadException(line, RapidLoadException.Syntax($"unexpected character '{c}'"));
-                }
+                throw new RapidLoadException(_line, RapidLoadException.Syntax($"unexpected character '{c}'"));
             }
         }
-        tokens.Add(new RapidToken(RapidTokenKind.End, "end of module", 0, line));
-        return tokens;
+        return new RapidToken(RapidTokenKind.End, "end of module", 0, _line);
+    }
+
+    /// <summary>The name at <paramref name="start"/>, one string per spelling: a long module repeats few names.</summary>
+    private string Name(int start, int length)
+    {
+        ReadOnlySpan<char> span = text.AsSpan(start, length);
+        int key = string.GetHashCode(span);
+        if (_names.TryGetValue(key, out string? known) && span.SequenceEqual(known))
+        {
+            return known;
+        }
+        string name = span.ToString();
+        _names[key] = name;
+        return name;
     }
 
     private static RapidToken Number(string text, ref int i, int line)

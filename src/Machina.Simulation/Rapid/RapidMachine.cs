@@ -25,6 +25,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         int i = 0;
         while (i < body.Count)
         {
+            Task.RunPendingTraps();
             RapidFlow flow = frame.Routine.ErrorHandler is null || frame.Handling is not null
                 ? Execute(body[i], frame)
                 : ExecuteGuarded(body[i], frame);

@@ -215,7 +215,7 @@ internal sealed partial class RapidParser
     /// <summary>Arguments up to <paramref name="end"/>: positional ones separated by commas; <c>\Name:=value</c> and <c>\Switch</c> need no comma.</summary>
     private RapidArg[] Arguments(string end)
     {
-        var args = new List<RapidArg>();
+        List<RapidArg> args = _spareArgs.Count > 0 ? _spareArgs.Pop() : [];
         while (true)
         {
             int line = Peek.Line;
@@ -230,7 +230,10 @@ internal sealed partial class RapidParser
             }
             if (Peek.IsSymbol(end))
             {
-                return [.. args];
+                RapidArg[] result = [.. args];
+                args.Clear();
+                _spareArgs.Push(args);
+                return result;
             }
             if (!Accept(",") && !Peek.IsSymbol("\\"))
             {
@@ -321,7 +324,7 @@ internal sealed partial class RapidParser
         switch (t.Kind)
         {
             case RapidTokenKind.Number:
-                return new RapidLiteral(t.Line, t.Number);
+                return new RapidLiteral(t.Line, Boxed(t.Number));
             case RapidTokenKind.String:
                 return new RapidLiteral(t.Line, t.Text);
             case RapidTokenKind.Name when t.Is("TRUE") || t.Is("FALSE"):
@@ -342,7 +345,7 @@ internal sealed partial class RapidParser
             }
             case RapidTokenKind.Symbol when t.Text == "[":
             {
-                var items = new List<RapidExpr>();
+                List<RapidExpr> items = _spareItems.Count > 0 ? _spareItems.Pop() : [];
                 if (!Peek.IsSymbol("]"))
                 {
                     do
@@ -352,7 +355,10 @@ internal sealed partial class RapidParser
                     while (Accept(","));
                 }
                 Expect("]");
-                return Postfix(new RapidAggregate(t.Line, [.. items]));
+                RapidExpr[] values = [.. items];
+                items.Clear();
+                _spareItems.Push(items);
+                return Postfix(new RapidAggregate(t.Line, values));
             }
             default:
                 throw Error($"an expression expected, found '{t.Text}'", t);

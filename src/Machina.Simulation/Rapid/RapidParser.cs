@@ -8,19 +8,60 @@ internal sealed partial class RapidParser
 {
     private static readonly string[] BodyEnds = ["ERROR", "BACKWARD", "UNDO", "ENDFUNC", "ENDTRAP", "ENDPROC"];
 
-    private readonly RapidToken[] _tokens;
-    private int _at;
+    // The lexer runs one token ahead of the parser: the grammar needs one token of lookahead, never more, and never goes back.
+    private readonly RapidLexer _lexer;
+    private RapidToken _current;
+    private RapidToken _following;
 
-    private RapidParser(List<RapidToken> tokens) => _tokens = [.. tokens];
+    private RapidParser(string text)
+    {
+        _lexer = new RapidLexer(text);
+        _current = _lexer.Next();
+        _following = _lexer.Next();
+    }
+
+    // One boxed value per number: a compiled module repeats the same few numbers (0, 1, 9E9…) hundreds of thousands of times.
+    private readonly Dictionary<double, object> _numbers = [];
+
+    // Lists for the items of aggregates and the arguments of calls being read, kept for the next ones (one per nesting level).
+    private readonly Stack<List<RapidExpr>> _spareItems = new();
+    private readonly Stack<List<RapidArg>> _spareArgs = new();
 
     /// <summary>Parses one module; throws <see cref="RapidLoadException"/> at the first syntax error.</summary>
-    public static RapidModule Parse(string text) => new RapidParser(RapidLexer.Tokenize(text)).Module();
+    public static RapidModule Parse(string text) => new RapidParser(text).Module();
 
-    private ref readonly RapidToken Peek => ref _tokens[_at];
+    private ref readonly RapidToken Peek => ref _current;
 
-    private RapidToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Length - 1)];
+    private RapidToken PeekAt(int ahead) => ahead == 0 ? _current : _following;
 
-    private RapidToken Next() => _tokens[_at < _tokens.Length - 1 ? _at++ : _at];
+    private RapidToken Next()
+    {
+        RapidToken token = _current;
+        Advance();
+        return token;
+    }
+
+    private object Boxed(double number)
+    {
+        if (!_numbers.TryGetValue(number, out object? boxed))
+        {
+            boxed = number;
+            if (_numbers.Count < 4096)
+            {
+                _numbers[number] = boxed;
+            }
+        }
+        return boxed;
+    }
+
+    private void Advance()
+    {
+        if (_current.Kind != RapidTokenKind.End)
+        {
+            _current = _following;
+            _following = _following.Kind == RapidTokenKind.End ? _following : _lexer.Next();
+        }
+    }
 
     private RapidLoadException Error(string what, RapidToken? at = null) =>
         new((at ?? Peek).Line, RapidLoadException.Syntax(what));
@@ -56,7 +97,7 @@ internal sealed partial class RapidParser
     {
         if (Peek.IsSymbol(symbol))
         {
-            _at++;
+            Advance();
             return true;
         }
         return false;
@@ -66,7 +107,7 @@ internal sealed partial class RapidParser
     {
         if (Peek.Is(word))
         {
-            _at++;
+            Advance();
             return true;
         }
         return false;

@@ -19,7 +19,8 @@ internal static class RapidPredefined
 
     private static readonly (string Name, double Value)[] Constants =
     [
-        ("pi", Math.PI), ("MOTION_ERR", 1), ("TYPE_ERR", 3), ("TYPE_WARN", 2), ("TYPE_STATE", 1), ("TYPE_ALL", 0),
+        ("pi", Math.PI), ("COMMON_ERR", 0), ("OP_STATE", 1), ("SYSTEM_ERR", 2), ("HARDWARE_ERR", 3), ("PROGRAM_ERR", 4), ("MOTION_ERR", 5),
+        ("IO_COM_ERR", 7), ("USER_DEF_ERR", 8), ("TYPE_ERR", 3), ("TYPE_WARN", 2), ("TYPE_STATE", 1), ("TYPE_ALL", 0),
         ("SOCKET_CREATED", 1), ("SOCKET_CONNECTED", 2), ("SOCKET_BOUND", 3), ("SOCKET_LISTENING", 4), ("SOCKET_CLOSED", 5),
         ("high", 1), ("low", 0), ("edge", 2),
     ];

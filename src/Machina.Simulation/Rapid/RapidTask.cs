@@ -23,9 +23,8 @@ internal enum RapidProgramState
 /// A RAPID task of the twin controller (e.g. T_ROB1): its loaded modules, their data, the machine that runs them and the motion
 /// settings that instructions such as VelSet, AccSet and ConfL change.
 /// </summary>
-internal sealed class RapidTask
+internal sealed partial class RapidTask
 {
-    private readonly List<RapidRoutine> _interrupts = [];
     private int _ticks;
 
     /// <summary>A task named <paramref name="name"/> of <paramref name="controller"/>.</summary>
@@ -110,16 +109,6 @@ internal sealed class RapidTask
         if (++_ticks % 256 == 0)
         {
             CancellationToken.ThrowIfCancellationRequested();
-        }
-    }
-
-    /// <summary>CONNECT: a new interrupt number for <paramref name="trap"/>.</summary>
-    public int Connect(RapidRoutine trap)
-    {
-        lock (_interrupts)
-        {
-            _interrupts.Add(trap);
-            return _interrupts.Count;
         }
     }
 }

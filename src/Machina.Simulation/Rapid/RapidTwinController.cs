@@ -8,7 +8,7 @@ namespace Machina.Simulation.Rapid;
 /// module, with its line), <c>main</c> runs on the twin arm with the model's kinematics, and an error that no handler takes
 /// stops the task with the controller's message, as in the event log.
 /// </summary>
-internal sealed class RapidTwinController
+internal sealed partial class RapidTwinController
 {
     /// <summary>The name of the motion task.</summary>
     public const string MotionTask = "T_ROB1";
@@ -141,48 +141,17 @@ internal sealed class RapidTwinController
     /// </summary>
     public RapidProgramState Run(string entry = "main", CancellationToken cancellation = default)
     {
-        RapidTask task = Task();
-        RapidRoutine? main = task.Program.Find(entry);
-        if (main is not { Kind: RapidRoutineKind.Proc } || main.Parameters.Count > 0)
-        {
-            return Finish(RapidProgramState.Failed, $"Execution error: the task {task.Name} has no procedure '{entry}' without parameters");
-        }
         lock (_gate)
         {
             _state = RapidProgramState.Running;
             _error = null;
         }
-        task.CancellationToken = cancellation;
-        try
-        {
-            task.Machine.Run(main);
-            return Finish(RapidProgramState.Finished, null);
-        }
-        catch (RapidHaltException halt)
-        {
-            return Finish(halt.Exit ? RapidProgramState.Finished : RapidProgramState.Stopped, null);
-        }
-        catch (RapidRuntimeException ex)
-        {
-            string message = ex.Event > 0 ? $"{ex.Event} {ex.Reason} (line {ex.Line}, task {task.Name})" : $"{ex.Message} (task {task.Name})";
-            return Finish(RapidProgramState.Failed, message);
-        }
-        catch (OperationCanceledException)
-        {
-            return Finish(RapidProgramState.Stopped, null);
-        }
-    }
-
-    private RapidProgramState Finish(RapidProgramState state, string? error)
-    {
+        RapidTask task = Task();
+        RapidProgramState state = RunTask(task, entry, cancellation);
         lock (_gate)
         {
             _state = state;
-            _error = error;
-        }
-        if (error is not null)
-        {
-            Pendant.Log(error);
+            _error = task.Error;
         }
         return state;
     }

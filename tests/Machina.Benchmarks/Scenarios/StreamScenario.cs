@@ -6,7 +6,8 @@ namespace Machina.Benchmarks;
 /// Streams moves online to a virtual controller (ABB, or UR with <paramref name="ur"/>) on loopback that executes every
 /// instruction at once, and times from the first issued move until the controller has acknowledged the last one. With
 /// <paramref name="wideWindow"/> the release window is widened (100 actions per block) to show what the link can carry;
-/// otherwise the defaults are used. With <paramref name="twin"/> the virtual UR runs the driver script on its URScript interpreter.
+/// otherwise the defaults are used. With <paramref name="twin"/> the virtual UR runs the driver script on its URScript interpreter, the
+/// virtual ABB the driver and monitor modules on its RAPID interpreter.
 /// </summary>
 internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin = false) : Scenario
 {
@@ -15,8 +16,10 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin
 
     public override string Name => (ur ? "stream-ur" : "stream") + (twin ? "-twin" : "") + (wideWindow ? "-wide" : "");
 
-    public override string Title => $"Stream moves to the virtual {(ur ? "UR" : "ABB")} controller{(twin ? " running the driver script" : "")}, instant execution, "
+    public override string Title => $"Stream moves to the virtual {(ur ? "UR" : "ABB")} controller{TwinText}, instant execution, "
         + (wideWindow ? "window 100/100" : "default window");
+
+    private string TwinText => !twin ? "" : ur ? " running the driver script" : " running the driver modules";
 
     public override int TargetSize => 100_000;
 
@@ -37,7 +40,9 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin
         }
         else
         {
-            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true });
+            // The RAPID twin runs the driver modules on a model; an IRB 1600 reaches every point of the square below.
+            var options = new VirtualAbbControllerOptions { InstantExecution = true };
+            var controller = new VirtualAbbController(twin ? options with { RunsRapid = true, Model = RobotModels.Get("IRB 1600-8/1.45") } : options);
             controller.StartAsync().GetAwaiter().GetResult();
             (_controller, port) = (controller, controller.Port);
         }

@@ -1,0 +1,114 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Interrupts of a task (RAPID "Interrupts"): CONNECT ties an interrupt number to a TRAP, IError orders it for controller errors of a
+/// domain and type, IDelete cancels it. An ordered interrupt queues its trap; the task runs the trap between two statements.
+/// </summary>
+internal sealed partial class RapidTask
+{
+    private readonly Lock _interruptGate = new();
+    private readonly Dictionary<int, RapidRoutine> _connections = [];
+    private readonly List<(int Interrupt, int Domain, int Number, int Type)> _errorOrders = [];
+    private readonly Queue<(RapidRoutine Trap, RapidTrapData Data)> _pending = new();
+    private volatile bool _hasPending;
+    private bool _inTrap;
+    private int _nextInterrupt;
+
+    /// <summary>The event data of the trap running now (GetTrapData), or null outside a trap.</summary>
+    public RapidTrapData? CurrentTrapData { get; private set; }
+
+    /// <summary>CONNECT: a new interrupt number for <paramref name="trap"/>.</summary>
+    public int Connect(RapidRoutine trap)
+    {
+        lock (_interruptGate)
+        {
+            int number = ++_nextInterrupt;
+            _connections[number] = trap;
+            return number;
+        }
+    }
+
+    /// <summary>IError: interrupt <paramref name="interrupt"/> for errors of <paramref name="domain"/> (0: all), number (-1: any) and type (0: all).</summary>
+    public bool OrderErrorInterrupt(int interrupt, int domain, int number, int type)
+    {
+        lock (_interruptGate)
+        {
+            if (!_connections.ContainsKey(interrupt))
+            {
+                return false;
+            }
+            _errorOrders.Add((interrupt, domain, number, type));
+            return true;
+        }
+    }
+
+    /// <summary>IDelete: cancels interrupt <paramref name="interrupt"/> (nothing happens for an unknown number, as for a new intnum).</summary>
+    public void DeleteInterrupt(int interrupt)
+    {
+        lock (_interruptGate)
+        {
+            _connections.Remove(interrupt);
+            _errorOrders.RemoveAll(o => o.Interrupt == interrupt);
+        }
+    }
+
+    /// <summary>A controller error (event domain * 10000 + number, of <paramref name="type"/>): queues the traps ordered for it.</summary>
+    public void PostError(int domain, int number, int type)
+    {
+        lock (_interruptGate)
+        {
+            foreach ((int interrupt, int d, int n, int t) in _errorOrders)
+            {
+                if ((d == 0 || d == domain) && (n < 0 || n == number) && (t == 0 || t == type) && _connections.TryGetValue(interrupt, out RapidRoutine? trap))
+                {
+                    _pending.Enqueue((trap, new RapidTrapData { Domain = domain, Number = number, Kind = type }));
+                    _hasPending = true;
+                }
+            }
+        }
+    }
+
+    /// <summary>Runs the queued traps (none while a trap runs: an interrupt waits for the trap before it to end).</summary>
+    public void RunPendingTraps()
+    {
+        if (!_hasPending || _inTrap)
+        {
+            return;
+        }
+        while (true)
+        {
+            (RapidRoutine Trap, RapidTrapData Data) next;
+            lock (_interruptGate)
+            {
+                if (!_pending.TryDequeue(out next))
+                {
+                    _hasPending = false;
+                    return;
+                }
+            }
+            _inTrap = true;
+            CurrentTrapData = next.Data;
+            try
+            {
+                Machine.Run(next.Trap);
+            }
+            finally
+            {
+                _inTrap = false;
+                CurrentTrapData = null;
+            }
+        }
+    }
+
+    /// <summary>Forgets every interrupt (the program pointer moved to main).</summary>
+    public void ResetInterrupts()
+    {
+        lock (_interruptGate)
+        {
+            _connections.Clear();
+            _errorOrders.Clear();
+            _pending.Clear();
+            _hasPending = false;
+        }
+    }
+}

@@ -1,0 +1,43 @@
+// The command-line tool is .NET 10 only (see Machina.Tests.csproj): these tests run with the net10.0 build.
+#if NET10_0_OR_GREATER
+using Machina.Tests.Cli;
+
+namespace Machina.Tests.Simulation.Rapid;
+
+public class RapidSimLoadCommandTests
+{
+    [Fact]
+    public async Task SimAbbLoad_RunsMainInRealTime_TellsThePendant_AndTheEnd()
+    {
+        using var cli = new CliRunner();
+        cli.Write("hello.mod", "MODULE hello\nPROC main()\n  TPWrite \"hello\";\n  MoveAbsJ [[0, 0, 0, 0, 80, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v100, fine, tool0 \\T:=0.05;\n  TPWrite \"there\";\nENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "hello.mod");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Equal(
+            "Running hello.mod on a virtual ABB IRB 120 (RAPID, task T_ROB1) in real time. Press Ctrl+C to stop.\n  pendant: hello\n  pendant: there\n"
+            + "The program ended after 0.05 s of program time.\n",
+            result.Stdout);
+    }
+
+    [Fact]
+    public async Task SimAbbLoad_UnknownInstruction_RefusedWithItsLine_UnreachableMove_FailsWithTheEvent()
+    {
+        using var cli = new CliRunner();
+        cli.Write("bad.mod", "MODULE bad\nPROC main()\n  MoveLL p10, v100, z5, tool0;\nENDPROC\nENDMODULE\n");
+        cli.Write("far.mod", "MODULE far\nPROC main()\n  MoveL [[3000, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v100, fine, tool0;\nENDPROC\nENDMODULE\n");
+
+        CliResult bad = await cli.RunAsync("sim", "abb", "--load", "bad.mod");
+        CliResult far = await cli.RunAsync("sim", "abb", "--load", "far.mod");
+        CliResult ur = await cli.RunAsync("sim", "ur", "--load", "far.mod");
+
+        Assert.Equal(1, bad.Exit);
+        Assert.Equal("FAILED: bad.mod: Load error: line 3: Reference error: 'MoveLL' is not a procedure (unknown instruction)\n", bad.Stdout);
+        Assert.Equal(1, far.Exit);
+        Assert.Matches(@"\nFAILED: 50050 Position outside reach: .* \(line 3, task T_ROB1\)\n$", far.Stdout);
+        Assert.Equal(2, ur.Exit);
+        Assert.Contains("--load runs compiled programs on abb (RAPID) and kuka (KRL), not on ur.", ur.Stderr, StringComparison.Ordinal);
+    }
+}
+#endif
