@@ -41,7 +41,7 @@ public sealed partial class VirtualUrController
         {
             if (Twin is { } twin)
             {
-                return RuntimeOf(twin);
+                return TwinRuntime(twin);
             }
             lock (Gate)
             {
@@ -87,10 +87,6 @@ public sealed partial class VirtualUrController
 
     private bool SafetyStop(int status, string text)
     {
-        if (Twin is not null)
-        {
-            return false; // not modelled on the interpreter yet
-        }
         lock (Gate)
         {
             if (_safety != Normal)
@@ -98,12 +94,20 @@ public sealed partial class VirtualUrController
                 return false;
             }
             _safety = status;
+
             if (_runtime == Playing)
             {
                 _runtime = Paused;
             }
         }
-        Halt();
+        if (Twin is { } twin)
+        {
+            twin.Hold(); // the motion stops where the arm is; the program waits until it is played again
+        }
+        else
+        {
+            Halt();
+        }
         Pendant(text);
         WakeRtde();
         return true;
@@ -175,15 +179,11 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>The text of the last runtime error that stopped a program (what the pendant shows), or null.</summary>
+    /// <summary>The text of the runtime error that stopped the last program (what the pendant and the script ports show after its line), or null.</summary>
     public string? LastRuntimeException
     {
         get
         {
-            if (Twin is { } twin)
-            {
-                return twin.State == UrScript.UrProgramState.Failed ? twin.Error : null;
-            }
             lock (Gate)
             {
                 return _runtimeException;
@@ -295,6 +295,10 @@ public sealed partial class VirtualUrController
 
     private protected override async Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token)
     {
+        if (request is TwinAck ack)
+        {
+            return await AcknowledgeTwinAsync(ack, token).ConfigureAwait(false);
+        }
         var r = (UrRequest)request;
         if (r.Program != CurrentProgram)
         {
@@ -317,7 +321,10 @@ public sealed partial class VirtualUrController
     /// </summary>
     private protected override bool FailsProgram(object request, string reason)
     {
-        var r = (UrRequest)request;
+        if (request is not UrRequest r)
+        {
+            return false;
+        }
         if (r.Program != CurrentProgram || r.Halts)
         {
             return false;
@@ -377,6 +384,10 @@ public sealed partial class VirtualUrController
 
     private protected override VirtualStep Plan(VirtualUrState s, object request)
     {
+        if (Twin is { } twin)
+        {
+            return new(TwinState(twin, s), 0); // the twin's arm already ran it: the acknowledgement reports where it is
+        }
         var r = (UrRequest)request;
         if (r.Program != CurrentProgram || r.Halts)
         {

@@ -6,6 +6,9 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
+    /// <summary>How many steps of the arm's trace the controller keeps: a stream of millions of moves must not keep every pose.</summary>
+    internal const int MaxTraceSteps = 10_000;
+
     /// <summary>The URScript controller that runs what arrives on the script ports (<see cref="VirtualUrControllerOptions.RunsScripts"/>), else null.</summary>
     internal UrTwinController? Twin { get; private set; }
 
@@ -14,15 +17,18 @@ public sealed partial class VirtualUrController
     {
         var twin = new UrTwinController(new UrTwinOptions
         {
-            Model = Model!,
+            Model = Model ?? RobotModels.Get("UR5e"),
+            Seam = this,
+            MaxTrace = MaxTraceSteps,
             StartJoints = State.Joints,
-            Time = Clock,
+            Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
         });
         twin.ProgramReceived += program =>
         {
             lock (Gate)
             {
+                _runtimeException = null; // a new program: the error of the last one is history
                 _scripts.Add(program);
                 if (_scripts.Count > MaxKeptTexts)
                 {
@@ -63,6 +69,9 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>RTDE runtime_state of the interpreter: 2 playing while a program runs, else 1 stopped.</summary>
-    private static uint RuntimeOf(UrTwinController twin) => twin.State == UrProgramState.Running ? Playing : Stopped;
+    /// <summary>RTDE runtime_state of the interpreter: 2 playing while a program runs, 4 while it is held (paused or protective stop), else 1 stopped.</summary>
+    private uint TwinRuntime(UrTwinController twin) => twin.State != UrProgramState.Running ? Stopped : TwinHeld ? Paused : Playing;
+
+    /// <summary>The robot now: where the twin's arm is, with its outputs.</summary>
+    public new VirtualUrState State => Twin is { } twin ? TwinState(twin, base.State) : base.State;
 }

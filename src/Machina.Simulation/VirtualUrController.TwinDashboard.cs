@@ -7,8 +7,8 @@ public sealed partial class VirtualUrController
     /// <summary>The output integer register Machina's driver writes its instance number to (docs/protocol-ur.md).</summary>
     private const int InstanceRegisterNumber = 26;
 
-    /// <summary>The dashboard answers about the interpreter's program (the commands a host uses; play and pause are not modelled).</summary>
-    private static string TwinDashboard(UrTwinController twin, string command)
+    /// <summary>The dashboard answers about the interpreter's program (the commands a host uses): play and pause release and hold the program at its next read.</summary>
+    private string TwinDashboard(UrTwinController twin, string command)
     {
         bool running = twin.State == UrProgramState.Running;
         switch (command)
@@ -16,10 +16,17 @@ public sealed partial class VirtualUrController
             case "stop":
                 twin.StopProgram();
                 return "Stopped";
-            case "play" or "pause":
-                return "Failed to execute: " + command;
+            case "play":
+                return running && SafetyStatus == Normal && ReleaseTwin() ? "Starting program" : "Failed to execute: play";
+            case "pause":
+                if (running && HoldTwin())
+                {
+                    WakeRtde();
+                    return "Pausing program";
+                }
+                return "Failed to execute: pause";
             case "unlock protective stop":
-                return "Protective stop releasing";
+                return UnlockProtectiveStop();
             case "close safety popup":
                 return "closing safety popup";
             case "quit":
@@ -27,13 +34,12 @@ public sealed partial class VirtualUrController
             case "robotmode":
                 return "Robotmode: RUNNING";
             case "programState":
-                return (running ? "PLAYING" : "STOPPED") + (twin.ProgramsStarted == 0 ? " <unnamed>" : " " + (twin.ProgramName ?? "<unnamed>"));
+                return (!running ? "STOPPED" : TwinHeld ? "PAUSED" : "PLAYING") + (twin.ProgramsStarted == 0 ? " <unnamed>" : " " + (twin.ProgramName ?? "<unnamed>"));
             case "running":
-                return "Program running: " + (running ? "true" : "false");
-            case "safetystatus":
-                return "Safetystatus: NORMAL";
-            case "safetymode":
-                return "Safetymode: NORMAL";
+                return "Program running: " + (running && !TwinHeld ? "true" : "false");
+            case "safetystatus" or "safetymode":
+                string name = SafetyStatus switch { ProtectiveStopped => "PROTECTIVE_STOP", RobotEmergencyStopped => "ROBOT_EMERGENCY_STOP", _ => "NORMAL" };
+                return (command == "safetystatus" ? "Safetystatus: " : "Safetymode: ") + name;
             default:
                 return $"could not understand: '{command}'";
         }

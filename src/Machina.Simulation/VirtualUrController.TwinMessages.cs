@@ -38,6 +38,7 @@ public sealed partial class VirtualUrController
         NetworkStream[] streams;
         lock (Gate)
         {
+            _runtimeException = reason;
             streams = [.. _scriptStreams];
         }
         foreach (NetworkStream stream in streams)

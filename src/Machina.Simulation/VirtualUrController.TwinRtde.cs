@@ -12,7 +12,7 @@ public sealed partial class VirtualUrController
     private byte[] TwinDataPayload(UrTwinController twin, byte recipe, string[] names)
     {
         var payload = new List<byte>(1 + names.Length * 48) { recipe };
-        Joints joints = twin.Arm.Joints;
+        Joints joints = twin.JointsNow(); // part-way through a motion, on its speed profile
         Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * twin.Arm.ToolCenter;
         Vector rv = RotationVectorOf(tcp.Rotation);
         double[] pose = [tcp.Position.X / 1000, tcp.Position.Y / 1000, tcp.Position.Z / 1000, rv.X, rv.Y, rv.Z];
@@ -23,7 +23,7 @@ public sealed partial class VirtualUrController
             switch (name)
             {
                 case "timestamp":
-                    AddDouble(payload, twin.Clock.RealTime ? Clock.GetElapsedTime(0).TotalSeconds : twin.Clock.Seconds);
+                    AddDouble(payload, Clock.GetElapsedTime(0).TotalSeconds); // controller time, as a UR reports it
                     break;
                 case "actual_q" or "target_q":
                     AddDoubles(payload, q);
@@ -38,10 +38,10 @@ public sealed partial class VirtualUrController
                     AddInt(payload, 7); // RUNNING
                     break;
                 case "safety_mode" or "safety_status":
-                    AddInt(payload, Normal);
+                    AddInt(payload, SafetyStatus);
                     break;
                 case "runtime_state":
-                    AddInt(payload, (int)RuntimeOf(twin));
+                    AddInt(payload, (int)TwinRuntime(twin));
                     break;
                 case "speed_scaling" or "target_speed_fraction":
                     AddDouble(payload, 1);

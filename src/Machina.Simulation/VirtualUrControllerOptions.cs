@@ -27,11 +27,11 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     public int DashboardPort { get; init; }
 
     /// <summary>
-    /// True: the controller runs what arrives on its script ports with its URScript interpreter (the twin), as a UR does, and
-    /// RTDE and the dashboard report the twin's arm, registers and program. Needs a <c>Model</c>; the fault plan, protective
-    /// stops and request inspection do not apply. False (default): Machina's driver is recognised and imitated.
+    /// Always true (the default): the controller runs what arrives on its script ports with its URScript interpreter, as a UR
+    /// does, and RTDE and the dashboard report the interpreter's arm, registers and program. Kept so that code setting it
+    /// compiles; false is refused (the imitation of the driver it selected is gone). Without a <c>Model</c> the arm is a UR5e.
     /// </summary>
-    public bool RunsScripts { get; init; }
+    public bool RunsScripts { get; init; } = true;
 
     /// <summary>The controller software version RTDE reports; from 5 on RTDE runs up to 500 Hz, before up to 125 Hz. Default 5.11.0.</summary>
     public Version ControllerVersion { get; init; } = new(5, 11, 0);
@@ -47,9 +47,9 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
         base.Validate();
         ArgumentNullException.ThrowIfNull(ControllerVersion);
         ArgumentNullException.ThrowIfNull(ExtraScriptPorts);
-        if (RunsScripts && Model is null)
+        if (!RunsScripts)
         {
-            throw new ArgumentException("A virtual UR that runs scripts needs a robot model (the interpreter moves its kinematics); set Model.");
+            throw new ArgumentException("The virtual UR always runs what arrives on its script ports with its URScript interpreter, as a UR does; RunsScripts = false (the former imitation of the driver) is no longer available.");
         }
         foreach (int port in ExtraScriptPorts.Append(ScriptPort).Append(RtdePort).Append(DashboardPort))
         {

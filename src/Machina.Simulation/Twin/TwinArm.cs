@@ -43,6 +43,12 @@ internal sealed class TwinArm
     /// <summary>The active tool centre point, relative to the flange (mm).</summary>
     public Pose ToolCenter { get; set; } = Pose.Identity;
 
+    /// <summary>
+    /// How many trace entries are kept, the oldest dropped first (0, the default: all). A controller that serves a stream of
+    /// millions of moves sets it so that its memory stays bounded; a verification keeps all.
+    /// </summary>
+    public int MaxTrace { get; init; }
+
     /// <summary>The payload mass in kg.</summary>
     public double PayloadKg { get; set; }
 
@@ -113,6 +119,10 @@ internal sealed class TwinArm
         lock (_gate)
         {
             _trace.Add(entry);
+            if (MaxTrace > 0 && _trace.Count >= 2 * MaxTrace)
+            {
+                _trace.RemoveRange(0, _trace.Count - MaxTrace); // in batches: each entry is moved at most once per MaxTrace added
+            }
         }
     }
 }

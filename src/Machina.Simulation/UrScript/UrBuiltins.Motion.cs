@@ -62,14 +62,14 @@ internal static partial class UrBuiltins
         }
     }
 
-    private static void Move(UrMachine m, int line, Joints target, double seconds, string function)
+    private static void Move(UrMachine m, int line, Joints target, double seconds, string function, double rampSeconds = 0, Func<double, Joints>? path = null)
     {
         CancellationToken token = m.Cancellation;
         try
         {
             m.Unlocked(() =>
             {
-                m.Controller.Arm.MoveTo(target, seconds, line, function, token);
+                m.Controller.Move(target, seconds, rampSeconds, path, line, function, token);
                 return 0;
             });
         }
@@ -87,7 +87,7 @@ internal static partial class UrBuiltins
             ? Solve(m, line, "movej", UrGeometry.ToPose(pose.Values, line), from)
             : UrGeometry.ToJoints(Six(a, 0, line, "movej", "q"), line);
         double distance = (to - from).ToArray().Max(Math.Abs) * Math.PI / 180;
-        Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), "movej");
+        Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), "movej", time > 0 ? 0 : v / acc);
         return UrNone.Value;
     }
 
@@ -98,11 +98,25 @@ internal static partial class UrBuiltins
             ? m.Controller.Arm.Model.Kinematics.Forward(UrGeometry.ToJoints(Six(a, 0, line, function, "pose"), line)) * m.Controller.Arm.ToolCenter
             : UrGeometry.ToPose(Six(a, 0, line, function, "pose"), line);
         Pose start = m.Controller.Arm.Tcp;
-        Joints last = FollowLine(m, line, function, start, target, t => new Pose(
-            start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t)));
+        Joints first = m.Controller.Arm.Joints;
+        Func<double, Pose> at = t => new Pose(start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t));
+        Joints last = FollowLine(m, line, function, start, target, at);
         double metres = (target.Position - start.Position).Length / 1000;
         double distance = metres > 1e-6 ? metres : TwinRotation.AngleBetween(start.Rotation, target.Rotation);
-        Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function);
+        TwinArm arm = m.Controller.Arm;
+        Joints Along(double f)
+        {
+            Joints near = UrMotion.Lerp(first, last, f);
+            try
+            {
+                return f >= 1 ? last : arm.Solve(at(f), near);
+            }
+            catch (TwinMotionException)
+            {
+                return near;
+            }
+        }
+        Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function, time > 0 ? 0 : v / acc, Along);
         return UrNone.Value;
     }
 

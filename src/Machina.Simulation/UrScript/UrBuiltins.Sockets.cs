@@ -50,7 +50,11 @@ internal static partial class UrBuiltins
             return m.Unlocked(() => socket.ReadString(timeout, token));
         }, O("socket_name", DefaultSocket), O("prefix", ""), O("suffix", ""), O("interpret_escape", "False"), O("timeout", 2));
         Add(t, "socket_send_int", (m, line, a) =>
-            UrValue.Box(Socket(m, line, a, 1, "socket_send_int").SendInt(Int(a, 0, line, "socket_send_int", "value"))),
+        {
+            UrSocket socket = Socket(m, line, a, 1, "socket_send_int");
+            int value = Int(a, 0, line, "socket_send_int", "value");
+            return UrValue.Box(m.Unlocked(() => socket.SendInt(value)));
+        },
             R("value"), O("socket_name", DefaultSocket));
         Add(t, "socket_send_byte", (m, line, a) =>
             UrValue.Box(Socket(m, line, a, 1, "socket_send_byte").Send([(byte)Int(a, 0, line, "socket_send_byte", "value")])),
@@ -84,6 +88,16 @@ internal static partial class UrBuiltins
             return UrValue.Box(false);
         }
         m.Controller.Sockets[name] = socket;
+        if (m.Controller.Options.Seam is { } seam)
+        {
+            socket.Seam = seam;
+            socket.Program = token;
+            m.Unlocked(() =>
+            {
+                seam.Opened(socket, token);
+                return 0;
+            });
+        }
         return UrValue.Box(true);
     }
 

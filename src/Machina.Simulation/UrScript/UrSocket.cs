@@ -17,6 +17,30 @@ internal sealed class UrSocket(Socket socket) : IDisposable
 
     private int Buffered => _end - _start;
 
+    /// <summary>The connection itself (the virtual UR attaches it as its driver connection).</summary>
+    internal Socket Connection => socket;
+
+    /// <summary>Who watches this socket's reads and carries its writes, or null (writes go straight out).</summary>
+    internal IUrSocketSeam? Seam { get; set; }
+
+    private bool IsDisposed
+    {
+        get
+        {
+            try
+            {
+                return socket.SafeHandle.IsClosed;
+            }
+            catch (ObjectDisposedException)
+            {
+                return true;
+            }
+        }
+    }
+
+    /// <summary>Cancelled when the program that opened this socket stops (a write the seam holds ends then).</summary>
+    internal CancellationToken Program { get; set; }
+
     private ReadOnlySpan<byte> Pending => _buffer.AsSpan(_start, _end - _start);
 
     private void Consume(int count) => _start += count;
@@ -57,13 +81,29 @@ internal sealed class UrSocket(Socket socket) : IDisposable
     /// <summary>Waits until <paramref name="count"/> bytes are buffered or the time is up; true when they are.</summary>
     private bool Fill(int count, double timeoutSeconds, CancellationToken cancellation)
     {
+        if (!_closed && IsDisposed)
+        {
+            // Closed by the controller (a dropped connection): what was buffered cannot be read any more.
+            _closed = true;
+            _start = _end = 0;
+        }
         long deadline = Environment.TickCount64 + (long)(Math.Max(0, timeoutSeconds) * 1000);
         while (Buffered < count && !_closed)
         {
             cancellation.ThrowIfCancellationRequested();
             long left = deadline - Environment.TickCount64;
             int slice = (int)Math.Clamp(left, 0, 50);
-            if (!socket.Poll(slice * 1000, SelectMode.SelectRead))
+            bool readable;
+            try
+            {
+                readable = socket.Poll(slice * 1000, SelectMode.SelectRead);
+            }
+            catch (Exception e) when (e is ObjectDisposedException or SocketException)
+            {
+                _closed = true;
+                break;
+            }
+            if (!readable)
             {
                 if (left <= 0)
                 {
@@ -80,7 +120,7 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             {
                 read = socket.Receive(_buffer, _end, _buffer.Length - _end, SocketFlags.None);
             }
-            catch (SocketException)
+            catch (Exception e) when (e is SocketException or ObjectDisposedException)
             {
                 read = 0;
             }
@@ -90,6 +130,11 @@ internal sealed class UrSocket(Socket socket) : IDisposable
                 break;
             }
             _end += read;
+        }
+        if (Buffered < count && _closed)
+        {
+            // A program that reads a closed connection in a loop would spin; on the twin each such read takes its timeout.
+            cancellation.WaitHandle.WaitOne(TimeSpan.FromSeconds(Math.Clamp(timeoutSeconds, 0, 1)));
         }
         return Buffered >= count;
     }
@@ -116,7 +161,9 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             items[i + 1] = BinaryPrimitives.ReadInt32BigEndian(Pending.Slice(4 * i, 4));
         }
         Consume(4 * count);
-        return new UrList(items);
+        var read = new UrList(items);
+        Seam?.Read(this, read);
+        return read;
     }
 
     /// <summary><c>socket_read_string</c>: the text that arrives within the timeout (empty when none does).</summary>
@@ -169,8 +216,11 @@ internal sealed class UrSocket(Socket socket) : IDisposable
         return new UrList(items);
     }
 
-    /// <summary>Sends bytes; false when the connection is gone.</summary>
-    public bool Send(ReadOnlySpan<byte> bytes)
+    /// <summary>Sends bytes for the program, through the <see cref="Seam"/> when there is one; false when the connection is gone.</summary>
+    public bool Send(ReadOnlySpan<byte> bytes) => Seam is { } seam ? seam.Send(this, bytes.ToArray(), Program) : SendDirect(bytes);
+
+    /// <summary>Sends bytes straight to the connection; false when it is gone.</summary>
+    internal bool SendDirect(ReadOnlySpan<byte> bytes)
     {
         try
         {

@@ -8,7 +8,7 @@ namespace Machina.Simulation.UrScript;
 /// Text arrives as on the controller's script port: a program starts as soon as its top-level <c>def … end</c> is complete,
 /// and a new program stops the one running.
 /// </summary>
-internal sealed class UrTwinController : IDisposable
+internal sealed partial class UrTwinController : IDisposable
 {
     /// <summary>Largest program text accepted (a program above this size is refused).</summary>
     public const int MaxProgramLength = 16 * 1024 * 1024;
@@ -27,7 +27,7 @@ internal sealed class UrTwinController : IDisposable
     {
         Options = options ?? new UrTwinOptions();
         Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock);
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace };
         Random = new Random(Options.RandomSeed);
         Io = new TwinIo();
         Io.AddBits(UrIoBanks.StandardIn, 8);

@@ -18,6 +18,12 @@ internal sealed class UrTwinOptions
     /// <summary>The seed of <c>random()</c>.</summary>
     public int RandomSeed { get; init; } = 1;
 
+    /// <summary>Who watches the program's sockets and carries their writes (the virtual UR's fault and inspection seam), or null.</summary>
+    public IUrSocketSeam? Seam { get; init; }
+
+    /// <summary>How many steps the arm's trace keeps (0: all, for a verification; a controller serving streams keeps the last few).</summary>
+    public int MaxTrace { get; init; }
+
     /// <summary>How long <c>socket_open</c> tries to connect (the Script Manual says 2 s).</summary>
     public TimeSpan SocketOpenTimeout { get; init; } = TimeSpan.FromSeconds(2);
 }

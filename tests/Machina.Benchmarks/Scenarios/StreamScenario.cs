@@ -34,7 +34,7 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin
         int port;
         if (ur)
         {
-            var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, RunsScripts = twin });
+            var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
             controller.StartAsync().GetAwaiter().GetResult();
             (_controller, port) = (controller, controller.Port);
         }

@@ -44,7 +44,7 @@ public class UrTwinOnlineTests
             Assert.Equal(1, controller.ScriptsReceived);
             Assert.StartsWith("def machina_ur_driver():", controller.LastScript, StringComparison.Ordinal);
             Assert.Empty(controller.Errors);
-            Assert.Equal(0, controller.RequestsReceived); // nothing imitated: the base buffer is never used
+            Assert.Equal(6, controller.RequestsReceived); // what the driver read on its socket and acknowledged (ids 2 to 7: action 1 sends nothing)
         }
         finally
         {
@@ -166,7 +166,8 @@ public class UrTwinOnlineTests
             Assert.True(e.Position is Vector stoppedAt && stoppedAt.IsSimilar(at + new Vector(0, 0, -20), 0.1), e.Position?.ToString());
             Assert.Equal([1, 2], executed);
             Assert.Equal(1u, controller.RuntimeState);
-            Assert.StartsWith("Runtime error: line ", controller.LastRuntimeException, StringComparison.Ordinal);
+            Assert.Equal("movel: no inverse kinematics solution: the target pose is out of reach", controller.LastRuntimeException);
+            Assert.Contains(controller.Errors, m => m.StartsWith("Runtime error: line ", StringComparison.Ordinal));
             Assert.Equal(2.0, controller.Twin!.Io.GetNumber(Machina.Simulation.UrScript.UrIoBanks.OutputIntRegisters, 24));
         }
         finally

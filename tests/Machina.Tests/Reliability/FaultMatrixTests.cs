@@ -210,10 +210,11 @@ public class FaultMatrixTests
         var w = rig.CreateRobot();
         await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
         IssueProgram(w.Bot, 12);
-        await EventuallyAsync(() => controller.BufferedRequestCount >= 7, "the first block to reach the controller");
+        // The first move (to Start) runs on the controller's clock: its timer is set when it starts.
+        await EventuallyAsync(() => controller.MotionDuration is TimeSpan d && clock.HasTimerDueIn(Machina.Tests.Online.UrStateTests.WholeMilliseconds(d)), "the first move to start");
         controller.CloseConnectionAfter(0);
         await EventuallyAsync(() => !w.Faults.IsEmpty, "the host to see the connection lost");
-        // The first move (to Start) runs on the controller's clock; the stop comes half-way through it.
+        // The stop comes part-way through that move.
         clock.Advance(TimeSpan.FromMilliseconds(1));
         Assert.True(controller.ProtectiveStop());
 

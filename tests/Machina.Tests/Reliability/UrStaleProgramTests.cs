@@ -32,20 +32,20 @@ public class UrStaleProgramTests
             await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
             Assert.NotEqual(VirtualUrController.InstanceOf(held), controller.InstanceRegister);
 
-            // Moves reach the controller (as many as the session streams ahead); it runs them all, but the host sees only the
-            // first acknowledgement before its link drops.
+            // Moves reach the controller (as many as the session streams ahead); the driver runs the first, its acknowledgement
+            // leaves and the link drops: the moves after it were in the dropped connection, so the driver never reads them.
             controller.StopAnswering();
             controller.CloseConnectionAfter(1);
             for (int i = 0; i < 10; i++)
             {
                 bot.MoveTo(400 + i, 0, 300);
             }
-            await OnlineTestSupport.EventuallyAsync(() => controller.RequestsReceived >= 2, "moves to reach the controller");
+            await OnlineTestSupport.EventuallyAsync(() => controller.RequestsReceived >= 1, "the first move to run (its acknowledgement is held)");
             controller.ResumeAnswering();
             await OnlineTestSupport.EventuallyAsync(() => !lost.IsEmpty && controller.BufferedRequestCount == 0 && controller.ExecutedIds.Count == controller.RequestsReceived,
                 "the link to drop and the program to run what it received");
             int[] ran = [.. controller.ExecutedIds];
-            Assert.True(ran.Length >= 2, "the controller ran fewer than two moves");
+            Assert.True(ran.Length >= 1, "the controller ran no move");
 
             // The held script arrives now: its program replaces the idle one and cannot connect back (that server is gone).
             using (var late = new TcpClient())

@@ -11,43 +11,23 @@ public class VirtualUrControllerTests
 {
     private static readonly TimeSpan Timeout = TimeSpan.FromSeconds(15);
 
-    /// <summary>The shape of the original Machina.NET driver script: what the virtual UR must recognise (its body is irrelevant here).</summary>
-    private static string OriginalScript(int port) =>
-        "# A Universal Robot driver script\ndef machina_ur_driver():\n  MACHINA_DRIVER_VERSION = \"1.2.0\"\n  HOSTNAME = \"127.0.0.1\"\n"
-        + $"  PORT = {port}\n  socket_open(HOSTNAME, PORT)\nend\n\n\n# Kickstart the driver\nmachina_ur_driver()\n";
+    /// <summary>Our driver as the original Machina.NET host uploads a driver: a call line after its end, and no final line break.</summary>
+    private static string UploadedTheOriginalWay(int port) =>
+        UrDriverScript.For("127.0.0.1", port, instance: 77).TrimEnd('\n') + "\n\n\n# Kickstart the driver\nmachina_ur_driver()";
 
     [Fact]
-    public async Task OriginalDriverScript_Recognised_ConnectsBackAndSpeaksTheOriginalProtocol()
+    public async Task Script_CallingAnUnknownFunction_RefusedWithItsLine_NothingRuns()
     {
-        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
-        await controller.StartAsync();
-        using var link = await HostAsync(controller, OriginalScript);
-        var stream = link.Driver.GetStream();
-
-        // No version response from the original driver: the full pose first, 14 ints.
-        int[] pose = await WireInts.ReadAsync(stream, 14, Timeout);
-        Assert.Equal((-54, int.MinValue), (pose[0], pose[13]));
-        Assert.Equal(15708, pose[11]); // J5 = 90° in 1e-4 rad
-        // Original host bytes: speed 50 mm/s, then a move to (400, 0, 300) mm with the tool down (rotation vector [π, 0, 0]).
-        await WireInts.WriteAsync(stream, [1, 15, 500, 2, 1, 4000, 0, 3000, 31416, 0, 0]);
-        Assert.Equal(new int[] { 1, 2 }, await WireInts.ReadAsync(stream, 2, Timeout));
-        Assert.Equal(50, controller.State.Speed);
-        Assert.True(controller.State.Position.IsSimilar(new Vector(400, 0, 300), 1e-9), controller.State.Position.ToString());
-        Assert.Contains("Started Machina driver (original 1.x)", controller.PendantMessages);
-        Assert.Empty(controller.Errors);
-    }
-
-    [Fact]
-    public async Task Script_NotAMachinaDriver_RefusedWithAClearLogLine()
-    {
+        // A controller compiles a program before it runs it: a call of something that does not exist refuses the whole program.
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
         await controller.StartAsync();
         using var script = new TcpClient();
         await script.ConnectAsync(IPAddress.Loopback, controller.Port);
-        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes("def hello():\n  textmsg(\"hi\")\nend\n"));
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes("def hello():\n  textmsg(\"hi\")\n  no_such_thing(1)\nend\n"));
         await WaitUntilAsync(() => controller.Errors.Count == 1);
 
-        Assert.Equal("refused a script that is not Machina's driver (no machina_ur_driver with its version, HOSTNAME and PORT); it begins \"def hello():\".", controller.Errors[0]);
+        Assert.Equal("Compile error: line 3: unknown function 'no_such_thing'", controller.Errors[0]);
+        Assert.DoesNotContain("hi", controller.PendantMessages);
         Assert.False(controller.IsProgramRunning);
         Assert.Equal(1, controller.ScriptsReceived);
     }
@@ -72,36 +52,39 @@ public class VirtualUrControllerTests
         Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
         await WireInts.ReadAsync(stream, 14, Timeout);
         await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(call));
-        await WaitUntilAsync(() => controller.LastScript == definition + call);
+        // The call line belongs to the program that just started: it is neither a new program nor kept as one.
+        await WaitUntilAsync(() => controller.PendantMessages.Contains("Machina driver 2.0.0 connected to 127.0.0.1"));
 
         Assert.Equal(1, controller.ScriptsReceived);
         Assert.True(controller.IsProgramRunning);
         Assert.Empty(controller.Errors);
         await WireInts.WriteAsync(stream, [1, 8, 20]); // id 1: blend code 8 with 20 on the wire, as in OurDriver_UnknownCode_…
         Assert.Equal(new int[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));
-        Assert.Equal(2, controller.State.Zone);
+        Assert.Equal(["1 8 20"], controller.ReceivedRequests); // what the driver read on its socket: id, code, the blend
+        Assert.Equal(1, controller.ScriptsReceived);
         server.Stop();
     }
 
     [Theory]
     [InlineData(true)]
     [InlineData(false)]
-    public async Task Script_WithoutAFinalLineBreak_Starts(bool original)
+    public async Task Script_WithoutAFinalLineBreak_Starts(bool originalHost)
     {
         // Script manual: a program is complete at its "end" in column 1. The original host sends its call line after it with no
         // line break at all; our driver's upload ends with "end". Either way the program starts with the connection left open.
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
         await controller.StartAsync();
-        using var link = await HostAsync(controller, port => original
-            ? OriginalScript(port).TrimEnd('\n')
+        using var link = await HostAsync(controller, port => originalHost
+            ? UploadedTheOriginalWay(port)
             : UrDriverScript.For("127.0.0.1", port, instance: 77).TrimEnd('\n'));
         var stream = link.Driver.GetStream();
-        int[] greeting = await WireInts.ReadAsync(stream, original ? 14 : 19, Timeout);
+        int[] greeting = await WireInts.ReadAsync(stream, 19, Timeout);
 
-        Assert.Equal(-54, greeting[original ? 0 : 5]);
+        Assert.Equal(new[] { -50, 2, 0, 0, int.MinValue, -54 }, greeting[..6]);
         Assert.True(controller.IsProgramRunning);
         Assert.Equal(2u, controller.RuntimeState);
-        Assert.Equal(original ? 0 : 77, controller.InstanceRegister);
+        Assert.Equal(77, controller.InstanceRegister);
+        Assert.Equal(1, controller.ScriptsReceived);
         Assert.Empty(controller.Errors);
     }
 
@@ -169,8 +152,10 @@ public class VirtualUrControllerTests
         await WireInts.WriteAsync(stream, [1, 8, 20, 2, 99]);
         Assert.Equal(new int[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));
         await WaitUntilAsync(() => !controller.IsProgramRunning);
-        Assert.Equal("unknown instruction code 99 (id 2): the driver cannot read on, its program stops.", Assert.Single(controller.Errors));
-        Assert.Equal(2, controller.State.Zone);
+        // The driver itself says so on the pendant and halts: a halt is the program's end, not an error of the controller.
+        Assert.Contains("Machina: unknown instruction code, stopping: 99", controller.PendantMessages);
+        Assert.Empty(controller.Errors);
+        Assert.Equal(["1 8 20"], controller.ReceivedRequests); // instruction 2 was read but never acknowledged
     }
 
     /// <summary>Plays the host: opens a server, sends the script made for its port, and takes the connection the driver opens back.</summary>

@@ -45,8 +45,7 @@ public class VirtualUrRuntimeErrorTests
         Assert.False(controller.IsProgramRunning);
         Assert.True(controller.State.Position.IsSimilar(reachable, 0.05), controller.State.Position.ToString());
         string error = controller.LastRuntimeException!;
-        Assert.StartsWith("movel: the UR5e cannot reach ", error, StringComparison.Ordinal);
-        Assert.EndsWith("(outside its reach or joint limits).", error, StringComparison.Ordinal);
+        Assert.Equal("movel: no inverse kinematics solution: the target pose is out of reach", error);
 
         // The script port (a client interface) carried the runtime exception: robot message 20, runtime exception 10, the text.
         byte[] package = await ReadPackageAsync(script.GetStream());
@@ -77,7 +76,7 @@ public class VirtualUrRuntimeErrorTests
         Assert.Equal(new[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));
         Assert.Equal(0, await stream.ReadAsync(new byte[4]).AsTask().WaitAsync(Timeout));
         Assert.Equal(new[] { 1 }, controller.ExecutedIds);
-        Assert.Equal("movej: the joint speed is 0, so the move would never end.", controller.LastRuntimeException);
+        Assert.Equal("movej: speed 'v' and acceleration 'a' must be positive", controller.LastRuntimeException);
         server.Stop();
     }
 
@@ -108,7 +107,7 @@ public class VirtualUrRuntimeErrorTests
             var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync().WaitAsync(Timeout));
 
             Assert.Equal(lastGood + 1, e.Action.Id);
-            Assert.StartsWith("movel: the UR5e cannot reach ", e.Reason, StringComparison.Ordinal);
+            Assert.StartsWith("movel: no inverse kinematics solution: the target pose is out of reach (driver script line ", e.Reason, StringComparison.Ordinal);
             Assert.Same(e.Action, thrown.Action);
             Assert.Equal(new[] { lastGood + 2 }, e.CancelledActions.Select(a => a.Id));
             Assert.True(e.Position is Vector stoppedAt && stoppedAt.IsSimilar(at + new Vector(0, 0, -20), 0.05), e.Position?.ToString());

@@ -1,0 +1,59 @@
+namespace Machina.Simulation.UrScript;
+
+/// <summary>
+/// One motion of the arm in progress: from where it started to its target, the part of the whole way already behind when it
+/// started (after a stop), when it started, how long it takes and how long its speed ramps take, and the path it follows.
+/// </summary>
+internal sealed class UrMotion(Joints from, Joints target, double doneBefore, long started, double seconds, double rampSeconds, Func<double, Joints>? path)
+{
+    /// <summary>When the motion started, as a timestamp of the controller's time.</summary>
+    public long Started { get; } = started;
+
+    /// <summary>How long it takes, in seconds (0: it ends at once).</summary>
+    public TimeSpan Duration => TimeSpan.FromSeconds(seconds);
+
+    /// <summary>The fraction of the whole way (0 to 1) reached <paramref name="elapsed"/> after the start, on the trapezoid profile.</summary>
+    public double FractionAt(TimeSpan elapsed)
+    {
+        double own = seconds <= 0 ? 1 : Profile(Math.Clamp(elapsed.TotalSeconds, 0, seconds));
+        return doneBefore + (1 - doneBefore) * own;
+    }
+
+    /// <summary>The joints <paramref name="elapsed"/> after the start.</summary>
+    public Joints At(TimeSpan elapsed)
+    {
+        double f = FractionAt(elapsed);
+        if (path is not null)
+        {
+            return path(f);
+        }
+        double own = doneBefore >= 1 ? 1 : (f - doneBefore) / (1 - doneBefore);
+        return Lerp(from, target, own);
+    }
+
+    /// <summary>The joints <paramref name="t"/> of the way from <paramref name="a"/> to <paramref name="b"/>, each joint straight.</summary>
+    public static Joints Lerp(Joints a, Joints b, double t) =>
+        new(a.J1 + (b.J1 - a.J1) * t, a.J2 + (b.J2 - a.J2) * t, a.J3 + (b.J3 - a.J3) * t, a.J4 + (b.J4 - a.J4) * t, a.J5 + (b.J5 - a.J5) * t, a.J6 + (b.J6 - a.J6) * t);
+
+    /// <summary>The part of this motion's own way done at <paramref name="t"/> seconds: accelerate, cruise, decelerate.</summary>
+    private double Profile(double t)
+    {
+        double ramp = rampSeconds;
+        if (ramp <= 0)
+        {
+            return t / seconds;
+        }
+        double peak = 1 / (seconds - ramp); // the cruise speed that covers the whole way
+        double acceleration = peak / ramp;
+        if (t < ramp)
+        {
+            return 0.5 * acceleration * t * t;
+        }
+        if (t <= seconds - ramp)
+        {
+            return 0.5 * acceleration * ramp * ramp + peak * (t - ramp);
+        }
+        double left = seconds - t;
+        return 1 - 0.5 * acceleration * left * left;
+    }
+}

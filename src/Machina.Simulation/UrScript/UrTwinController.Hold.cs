@@ -1,0 +1,139 @@
+namespace Machina.Simulation.UrScript;
+
+internal sealed partial class UrTwinController
+{
+    private readonly Lock _holdGate = new();
+    private TaskCompletionSource? _held;
+    private CancellationTokenSource _holdStop = new();
+    private UrMotion? _motion;
+
+    /// <summary>True while the program is held (a protective stop or a pause): the arm stands, the program waits.</summary>
+    public bool IsHeld
+    {
+        get
+        {
+            lock (_holdGate)
+            {
+                return _held is not null;
+            }
+        }
+    }
+
+    /// <summary>The motion in progress, or null.</summary>
+    public UrMotion? Motion
+    {
+        get
+        {
+            lock (_holdGate)
+            {
+                return _motion;
+            }
+        }
+    }
+
+    /// <summary>The joints now: part-way through the motion in progress (on its speed profile), or where the arm stands.</summary>
+    public Joints JointsNow()
+    {
+        UrMotion? motion = Motion;
+        return motion is null ? Arm.Joints : motion.At(Options.Time.GetElapsedTime(motion.Started));
+    }
+
+    /// <summary>
+    /// Holds the program, as a protective stop or a pause does: a motion in progress stops where the arm is, and the program
+    /// waits before its next motion or socket read until <see cref="Release"/>. False when it is already held.
+    /// </summary>
+    public bool Hold()
+    {
+        CancellationTokenSource stop;
+        lock (_holdGate)
+        {
+            if (_held is not null)
+            {
+                return false;
+            }
+            _held = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+            stop = _holdStop;
+        }
+        stop.Cancel();
+        StateChanged?.Invoke();
+        return true;
+    }
+
+    /// <summary>Ends <see cref="Hold"/>: the program goes on (an interrupted motion finishes from where it stopped). False when not held.</summary>
+    public bool Release()
+    {
+        TaskCompletionSource? held;
+        lock (_holdGate)
+        {
+            held = _held;
+            if (held is null)
+            {
+                return false;
+            }
+            _held = null;
+            _holdStop = new CancellationTokenSource();
+        }
+        held.TrySetResult();
+        StateChanged?.Invoke();
+        return true;
+    }
+
+    /// <summary>Waits while the program is held (cancelled when the program stops).</summary>
+    public void WaitWhileHeld(CancellationToken cancellation)
+    {
+        Task? held;
+        lock (_holdGate)
+        {
+            held = _held?.Task;
+        }
+        held?.Wait(cancellation);
+    }
+
+    /// <summary>
+    /// Moves the arm from where it is to <paramref name="target"/> in <paramref name="seconds"/>, along <paramref name="path"/>
+    /// (joints at a fraction of the way; null: straight in joint space) with a trapezoid profile whose ramps take
+    /// <paramref name="rampSeconds"/>. A hold stops it part-way; once released it finishes from there.
+    /// </summary>
+    public void Move(Joints target, double seconds, double rampSeconds, Func<double, Joints>? path, int line, string function, CancellationToken cancellation)
+    {
+        Arm.RequireWithinLimits(target);
+        Joints from = Arm.Joints;
+        double done = 0; // fraction of the way already behind
+        while (true)
+        {
+            WaitWhileHeld(cancellation);
+            CancellationToken hold;
+            double span = seconds * (1 - done);
+            var motion = new UrMotion(from, target, done, Options.Time.GetTimestamp(), Clock.RealTime ? span : 0, Clock.RealTime ? Math.Min(rampSeconds, span / 2) : 0, path);
+            lock (_holdGate)
+            {
+                hold = _holdStop.Token;
+                _motion = motion;
+            }
+            using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, hold);
+            try
+            {
+                Arm.MoveTo(target, span, line, function, both.Token);
+                return;
+            }
+            catch (OperationCanceledException) when (!cancellation.IsCancellationRequested)
+            {
+                // Held part-way: the arm stands where the motion had brought it.
+                Joints at = motion.At(Options.Time.GetElapsedTime(motion.Started));
+                done = motion.FractionAt(Options.Time.GetElapsedTime(motion.Started));
+                Arm.MoveTo(at, 0, line, function + " (stopped)", cancellation);
+                from = at;
+            }
+            finally
+            {
+                lock (_holdGate)
+                {
+                    if (ReferenceEquals(_motion, motion))
+                    {
+                        _motion = null;
+                    }
+                }
+            }
+        }
+    }
+}

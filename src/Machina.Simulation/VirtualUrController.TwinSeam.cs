@@ -1,0 +1,184 @@
+using System.Buffers.Binary;
+using System.Net.Sockets;
+using System.Text;
+using Machina.Simulation.UrScript;
+
+namespace Machina.Simulation;
+
+/// <summary>
+/// The virtual UR's faults and inspection, at the seams a real controller has: the connection the running program opens back
+/// to its host. Every <c>socket_open</c> of a program becomes the driver connection; what the program reads there is what it
+/// received, and its write of a single integer outside a response (a negative code up to <c>RES_END</c>) is the acknowledgement
+/// of what its arm just did: that write goes through the controller's fault plan (held, delayed, cut, lost, followed by a drop
+/// or a protective stop) and is counted as executed. A protective stop holds the program at its next read until it is played.
+/// </summary>
+public sealed partial class VirtualUrController : IUrSocketSeam
+{
+    /// <summary>A response's last value (Machina's driver: RES_END).</summary>
+    private const int ResponseEnd = int.MinValue;
+
+    private UrSocket? _driver;
+    private int _driverProgram;
+    private bool _inResponse;
+    private bool _awaitingHeader;
+    private StringBuilder? _reading;
+
+    /// <summary>An acknowledgement the program is writing: executed by the arm already, sent (or not) by the fault plan.</summary>
+    private sealed record TwinAck(int Id, int Program, TaskCompletionSource<bool> Done);
+
+    void IUrSocketSeam.Opened(UrSocket socket, CancellationToken program)
+    {
+        lock (Gate)
+        {
+            _driver = socket;
+            _driverProgram++;
+            _inResponse = false;
+            _awaitingHeader = true;
+            _reading = null;
+        }
+        var client = new TcpClient();
+        client.Client.Dispose();
+        client.Client = socket.Connection;
+        if (!AttachClientAsync(client, (_, _) => Task.CompletedTask, program).GetAwaiter().GetResult())
+        {
+            Pendant("the connection back to the host was refused");
+        }
+        // RTDE sends now what the program wrote before it connected (its registers): a host reads them as it greets it.
+        WakeRtde();
+    }
+
+    void IUrSocketSeam.Read(UrSocket socket, UrList values)
+    {
+        if (values.Items[0] is not int n || n == 0)
+        {
+            return;
+        }
+        lock (Gate)
+        {
+            if (!ReferenceEquals(socket, _driver))
+            {
+                return;
+            }
+            if (_awaitingHeader && n == 2)
+            {
+                _reading = new StringBuilder().Append(Num.Inv, $"{values.Items[1]} {values.Items[2]}");
+                _awaitingHeader = false;
+            }
+            else if (_reading is not null)
+            {
+                for (int i = 1; i <= n; i++)
+                {
+                    _reading.Append(Num.Inv, $" {values.Items[i]}");
+                }
+            }
+        }
+        // A protective stop or a pause: the program waits here, before it runs what it read, until it is played again.
+        Twin?.WaitWhileHeld(socket.Program);
+    }
+
+    bool IUrSocketSeam.Send(UrSocket socket, byte[] bytes, CancellationToken program)
+    {
+        if (bytes.Length != 4)
+        {
+            return socket.SendDirect(bytes);
+        }
+        int value = BinaryPrimitives.ReadInt32BigEndian(bytes);
+        string text;
+        int generation;
+        lock (Gate)
+        {
+            if (!ReferenceEquals(socket, _driver))
+            {
+                return socket.SendDirect(bytes);
+            }
+            if (_inResponse || value < -1)
+            {
+                _inResponse = value != ResponseEnd;
+                return socket.SendDirect(bytes);
+            }
+            text = _reading?.ToString() ?? value.ToString(Num.Inv);
+            _reading = null;
+            _awaitingHeader = true;
+            generation = _driverProgram;
+        }
+        var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
+        EnqueueAsync(new TwinAck(value, generation, done), Math.Max(value, 0), text, program).AsTask().GetAwaiter().GetResult();
+        return done.Task.WaitAsync(program).GetAwaiter().GetResult();
+    }
+
+    /// <summary>Sends an executed acknowledgement through the fault plan, unless its program was replaced since (nobody listens for it then).</summary>
+    private async Task<bool> AcknowledgeTwinAsync(TwinAck ack, CancellationToken token)
+    {
+        try
+        {
+            bool current;
+            lock (Gate)
+            {
+                current = ack.Program == _driverProgram;
+            }
+            if (current)
+            {
+                await AcknowledgeAsync(AcknowledgementBytes(ack.Id), Math.Max(ack.Id, 0), token).ConfigureAwait(false);
+            }
+            ack.Done.TrySetResult(current);
+        }
+        finally
+        {
+            ack.Done.TrySetResult(false);
+        }
+        return true;
+    }
+
+    /// <summary>Holds the twin's program (a protective stop or pause): its motion stops where the arm is; false when already held.</summary>
+    private bool HoldTwin() => Twin?.Hold() ?? false;
+
+    /// <summary>Lets the twin's held program go on; false when it was not held.</summary>
+    private bool ReleaseTwin() => Twin?.Release() ?? false;
+
+    private bool TwinHeld => Twin?.IsHeld ?? false;
+
+    /// <summary>How long the twin's motion in progress takes (a test waits for its timer), or null when the arm stands.</summary>
+    internal TimeSpan? MotionDuration => Twin?.Motion?.Duration;
+
+    /// <summary>The robot as the twin's arm and outputs have it now (speeds and blend are the driver's own variables: kept from the start).</summary>
+    private VirtualUrState TwinState(UrTwinController twin, VirtualUrState basis)
+    {
+        Joints joints = twin.JointsNow();
+        Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * twin.Arm.ToolCenter;
+        var digital = new Dictionary<string, bool>();
+        for (int i = 0; i < 8; i++)
+        {
+            if (twin.Io.GetBit(UrIoBanks.StandardOut, i))
+            {
+                digital[i.ToString(Num.Inv)] = true;
+            }
+        }
+        for (int i = 0; i < 2; i++)
+        {
+            if (twin.Io.GetBit(UrIoBanks.ToolOut, i))
+            {
+                digital["tool " + i.ToString(Num.Inv)] = true;
+            }
+        }
+        var analog = new Dictionary<string, double>();
+        for (int i = 0; i < 2; i++)
+        {
+            double v = twin.Io.GetNumber(UrIoBanks.AnalogOut, i);
+            if (v != 0)
+            {
+                analog[i.ToString(Num.Inv)] = v;
+            }
+        }
+        Pose tool = twin.Arm.ToolCenter;
+        return basis with
+        {
+            Position = tcp.Position,
+            Rotation = tcp.Rotation,
+            Joints = joints,
+            Tool = tool.Position == Vector.Zero && tool.Rotation.IsSimilar(Rotation.Identity, 1e-9) ? null : tool,
+            Payload = twin.Arm.PayloadKg,
+            DigitalOutputs = digital,
+            AnalogOutputs = analog,
+        };
+    }
+}

@@ -1,0 +1,31 @@
+namespace Machina.Simulation;
+
+/// <summary>
+/// The time the virtual UR's interpreter waits on when the options' <c>SpeedFactor</c> is not 1: a wait of d on it is a wait of
+/// d / factor on the controller's clock, so the robot's motion and sleeps run that many times faster (its program time adds up
+/// unscaled). Timestamps run that many times faster from its creation, and the due time of a new timer is scaled (what a motion's
+/// or a sleep's wait uses).
+/// </summary>
+internal sealed class VirtualUrScaledTime(TimeProvider inner, double factor) : TimeProvider
+{
+    private readonly long _origin = inner.GetTimestamp();
+
+    /// <inheritdoc/>
+    public override long TimestampFrequency => inner.TimestampFrequency;
+
+    /// <inheritdoc/>
+    public override TimeZoneInfo LocalTimeZone => inner.LocalTimeZone;
+
+    /// <inheritdoc/>
+    public override long GetTimestamp() => _origin + (long)Math.Min((inner.GetTimestamp() - _origin) * factor, long.MaxValue / 4.0);
+
+    /// <inheritdoc/>
+    public override DateTimeOffset GetUtcNow() => inner.GetUtcNow();
+
+    /// <inheritdoc/>
+    public override ITimer CreateTimer(TimerCallback callback, object? state, TimeSpan dueTime, TimeSpan period) =>
+        inner.CreateTimer(callback, state, Scale(dueTime), Scale(period));
+
+    private TimeSpan Scale(TimeSpan span) =>
+        span == Timeout.InfiniteTimeSpan || span <= TimeSpan.Zero ? span : TimeSpan.FromTicks(Math.Max(1, (long)(span.Ticks / factor)));
+}
