@@ -46,9 +46,9 @@ internal static partial class SimCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
-        if (args.Value("--load") is { } load && brand == RobotType.KUKA)
+        if (args.Value("--load") is { } krlProgram && brand == RobotType.KUKA)
         {
-            return await RunKrlAsync(load, Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, brand)!, context).ConfigureAwait(false);
+            return await RunKrlAsync(krlProgram, Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, brand)!, context).ConfigureAwait(false);
         }
         int port = args.Port("--port", DefaultPort, allowZero: true);
         string bindText = args.Value("--bind") ?? "127.0.0.1";
