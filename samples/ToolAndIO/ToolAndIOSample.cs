@@ -60,12 +60,12 @@ public static class ToolAndIOSample
             DefineAndAttach(bot);
             SwitchOn(bot, online);
             await WaitAsync(bot, cancellationToken);
-            output.WriteLine($"With the tool attached and the outputs on, the controller reports: {Report(controller)}");
+            output.WriteLine($"With the tool attached and the outputs on, the controller reports: {Report(controller, online)}");
             bool onAsProgrammed = controller.State is not { } on || IsSet(on, online, true, 0.5);
 
             SwitchOffAndDetach(bot, online);
             await WaitAsync(bot, cancellationToken);
-            output.WriteLine($"After switching off and detaching, the controller reports: {Report(controller)}");
+            output.WriteLine($"After switching off and detaching, the controller reports: {Report(controller, online)}");
             bool offAsProgrammed = controller.State is not { } off || IsSet(off, online, false, 0) && off.Tool is null;
             foreach (string refusal in controller.Errors)
             {
@@ -130,19 +130,23 @@ public static class ToolAndIOSample
         new[] { "gripper", "Detach all tools", "digital IO", "analog IO", "[Wait", "load data" }.Any(word => line.Contains(word, StringComparison.Ordinal));
 
     private static bool IsSet(Machina.Simulation.VirtualRobotState state, RobotType brand, bool digital, double analog) =>
-        state.DigitalOutputs.TryGetValue(DigitalOutput(brand), out bool d) && d == digital
-        && state.AnalogOutputs.TryGetValue(AnalogOutput(brand), out double a) && Math.Abs(a - analog) < 1e-6;
+        // An output a controller does not list is off (0): the virtual UR lists only the outputs that are on.
+        state.DigitalOutputs.GetValueOrDefault(DigitalOutput(brand)) == digital
+        && Math.Abs(state.AnalogOutputs.GetValueOrDefault(AnalogOutput(brand)) - analog) < 1e-6;
 
-    /// <summary>The tool and outputs as the virtual controller has them (nothing for a real controller: look at its pendant).</summary>
-    private static string Report(SampleController controller)
+    /// <summary>
+    /// The tool and the outputs this sample uses as the virtual controller has them (nothing for a real controller: look at its
+    /// pendant). An output the controller does not list is off (0): the virtual UR lists only the outputs that are on.
+    /// </summary>
+    private static string Report(SampleController controller, RobotType brand)
     {
         if (controller.State is not { } state)
         {
             return "(a real controller: see its pendant)";
         }
         string tool = state.Tool is { } t ? $"tool tip at {t.Position} from the flange" : "no tool";
-        string digital = string.Join(", ", state.DigitalOutputs.OrderBy(p => p.Key, StringComparer.Ordinal).Select(p => $"{p.Key} = {(p.Value ? "on" : "off")}"));
-        string analog = string.Join(", ", state.AnalogOutputs.OrderBy(p => p.Key, StringComparer.Ordinal).Select(p => $"{p.Key} = {p.Value:0.###}"));
-        return $"{tool}; digital outputs: {(digital.Length > 0 ? digital : "none")}; analog outputs: {(analog.Length > 0 ? analog : "none")}.";
+        bool digital = state.DigitalOutputs.GetValueOrDefault(DigitalOutput(brand));
+        double analog = state.AnalogOutputs.GetValueOrDefault(AnalogOutput(brand));
+        return $"{tool}; digital outputs: {DigitalOutput(brand)} = {(digital ? "on" : "off")}; analog outputs: {AnalogOutput(brand)} = {analog:0.###}.";
     }
 }

@@ -26,7 +26,7 @@ public sealed partial class VirtualAbbController
         string interval = Math.Max(0.004, _options.MonitorPeriod.TotalSeconds).ToString("0.###", CultureInfo.InvariantCulture);
         foreach ((string file, string task, int port) in new[] { ("machina_abb_driver.mod", RapidTwinController.MotionTask, Port), ("machina_abb_monitor.mod", MonitorTask, MonitorPort) })
         {
-            string text = DriverFiles.Fill(DriverFiles.Read("abb", file),
+            string text = DriverFiles.Fill(DriverFiles.Read(file),
                 ("HOSTNAME", "127.0.0.1"), ("PORT", port.ToString(CultureInfo.InvariantCulture)), ("MONITOR_INTERVAL", interval));
             twin.Task(task).Load([(file, text)]);
         }

@@ -46,7 +46,7 @@ internal static partial class SimCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
-        if (args.Value("--load") is { } krlProgram && brand == RobotType.KUKA)
+        if (args.Value("--load") is { } krlProgram && brand == KukaBrand.Definition.Type)
         {
             return await RunKrlAsync(krlProgram, Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, brand)!, context).ConfigureAwait(false);
         }
@@ -61,7 +61,7 @@ internal static partial class SimCommand
         bool quiet = args.Has("--quiet");
         if (args.Value("--load") is string load)
         {
-            return brand == RobotType.ABB
+            return brand == AbbBrand.Definition.Type
                 ? await SimLoad.RunAbbAsync(load, model, context).ConfigureAwait(false)
                 : throw new UsageException($"--load runs compiled programs on abb (RAPID) and kuka (KRL), not on {Brands.Name(brand)}.");
         }

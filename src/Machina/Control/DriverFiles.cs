@@ -15,6 +15,17 @@ internal static class DriverFiles
         return reader.ReadToEnd();
     }
 
+    /// <summary>One shipped driver file found by its name alone (the file names are unique across brands), placeholders unfilled.</summary>
+    internal static string Read(string file)
+    {
+        string suffix = "." + file;
+        string[] names = [.. typeof(DriverFiles).Assembly.GetManifestResourceNames()
+            .Where(n => n.StartsWith("Machina.Drivers.", StringComparison.Ordinal) && n.EndsWith(suffix, StringComparison.Ordinal))];
+        return names.Length == 1
+            ? Read(names[0]["Machina.Drivers.".Length..^suffix.Length], file)
+            : throw new InvalidOperationException($"The embedded driver file {file} is {(names.Length == 0 ? "missing from" : "ambiguous in")} the Machina library.");
+    }
+
     /// <summary><paramref name="text"/> with every <c>{{NAME}}</c> of <paramref name="values"/> replaced by its value.</summary>
     internal static string Fill(string text, params (string Name, string Value)[] values)
     {
