@@ -21,6 +21,9 @@ public class KukaFailureOnlineTests
             int lastGood = controller.ExecutedIds[^1];
             Joints stoppedAt = controller.State.Joints;
             Vector stoppedPosition = (Vector)bot.GetCurrentPosition()!.Value;
+            // The monitor reports on its own channel: a pose it sampled before the move ended can arrive after the move's
+            // acknowledgement. Wait for a report of where the robot stopped, so the failure below reads that one, not an older one.
+            await EventuallyAsync(() => bot.GetMotionState()?.Position is Vector live && live.IsSimilar(stoppedPosition, 0.05), "a live pose at the stopped position");
 
             // Both under one issue lock: the controller's failure, reported as soon as the move is sent, cannot come between them.
             bot.Do("MoveTo(2000, 0, 300); AxesTo(0, -90, 90, 0, 90, 0);");
