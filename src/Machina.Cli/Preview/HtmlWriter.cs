@@ -61,6 +61,10 @@ internal static class HtmlWriter
         html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"background:{PreviewStyle.StartColour}\"></span>start {P(path.Start)}</div>\n");
         html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"background:{PreviewStyle.EndColour};border-radius:0\"></span>end {P(path.End)}</div>\n");
         html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"border:2px solid {PreviewStyle.WarningColour};width:9px;height:9px\"></span>warning, with its line ({path.Warnings.Count})</div>\n");
+        if (path.Arms.Count > 0)
+        {
+            html.Append("<div class=\"key\"><span class=\"dot\" style=\"background:#c3cad4;border-radius:2px;width:22px;height:6px\"></span>the arm at the start (light) and the end (dark), base at 0,0,0</div>\n");
+        }
         html.Append("<p id=\"grid\" class=\"help\"></p>\n");
         if (path.Warnings.Count > 0)
         {
@@ -81,7 +85,7 @@ internal static class HtmlWriter
         return html.ToString();
     }
 
-    /// <summary>The path as JSON: segments (kind, line, points), targets, start, end, warnings and colours; coordinates in mm.</summary>
+    /// <summary>The path as JSON: segments (kind, line, points), targets, start, end, warnings, arms (label, joints) and colours; coordinates in mm.</summary>
     internal static string Json(PreviewPath path)
     {
         var colours = PreviewStyle.Kinds.ToDictionary(k => PreviewStyle.Of(k).Name, k => PreviewStyle.Of(k).Colour);
@@ -129,6 +133,20 @@ internal static class HtmlWriter
                 w.WriteNumber("line", warning.Line);
                 w.WriteString("instruction", warning.Instruction);
                 w.WriteString("message", warning.Message);
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
+            w.WriteStartArray("arms");
+            foreach (ArmPose arm in path.Arms)
+            {
+                w.WriteStartObject();
+                w.WriteString("label", arm.Label);
+                w.WriteStartArray("points");
+                foreach (Vector joint in arm.Points)
+                {
+                    Point(w, joint);
+                }
+                w.WriteEndArray();
                 w.WriteEndObject();
             }
             w.WriteEndArray();

@@ -11,6 +11,7 @@
   var all = [];
   data.segments.forEach(function (s) { s.points.forEach(function (p) { all.push(p); }); });
   data.targets.forEach(function (p) { all.push(p); });
+  (data.arms || []).forEach(function (a) { a.points.forEach(function (p) { all.push(p); }); });
   if (all.length === 0) { all.push([0, 0, 0]); }
   var min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
   all.forEach(function (p) { for (var i = 0; i < 3; i++) { min[i] = Math.min(min[i], p[i]); max[i] = Math.max(max[i], p[i]); } });
@@ -104,6 +105,16 @@
     ctx.fillStyle = '#ffffff'; ctx.fillRect(0, 0, w, h);
     floorGrid();
     picks = [];
+    (data.arms || []).forEach(function (a) {
+      var colour = a.label === 'start' ? '#c3cad4' : a.label === 'end' ? '#8d97a5' : '#f2aaa7';
+      line(a.points, colour, 7, null);
+      a.points.forEach(function (p) { var s = project(p); ctx.beginPath(); ctx.arc(s[0], s[1], 3, 0, 2 * Math.PI); ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = '#6b7684'; ctx.lineWidth = 1.2; ctx.stroke(); });
+    });
+    if ((data.arms || []).length > 0) {
+      var b = project([0, 0, 0]);
+      ctx.fillStyle = '#5f6b7a'; ctx.fillRect(b[0] - 9, b[1] - 4, 18, 8);
+      ctx.font = '11px sans-serif'; ctx.fillText('base', b[0] - 12, b[1] + 18);
+    }
     data.segments.forEach(function (s) {
       line(s.points, colours[s.kind], s.kind === 'travel' ? 1.5 : 2.4, s.kind === 'joint' ? [7, 5] : s.kind === 'travel' ? [2, 5] : null);
     });

@@ -135,6 +135,16 @@ public class PreviewCommandTests
         Assert.Equal([0, 0], Points(arms[0]).First());   // from the base
         Assert.Equal(3, svg.Descendants(Svg + "g").Count(g => (string?)g.Attribute("class") == "base"));
         Assert.Contains("the arm at the start (light) and the end (dark), base at 0,0,0", svg.ToString(), StringComparison.Ordinal);
+
+        // The 3D page carries the same arms in its JSON (rounded to 0.001 mm).
+        CliResult page = await cli.RunProgramAsync("preview", "MoveTo(300, 0, 400);\nMoveTo(250, 250, 300);\n", "--model", "IRB 120", "--out", "p.html");
+        Assert.Equal(0, page.Exit);
+        using JsonDocument data = PathData(File.ReadAllText(cli.PathOf("p.html")));
+        JsonElement[] jsonArms = [.. data.RootElement.GetProperty("arms").EnumerateArray()];
+        Assert.Equal(["start", "end"], jsonArms.Select(a => a.GetProperty("label").GetString()));
+        double[][] endPoints = Vectors(jsonArms[1].GetProperty("points"));
+        Vector flange = RobotModels.Get("IRB 120").Kinematics.Forward(end).Position;
+        Assert.Equal([Math.Round(flange.X, 3), Math.Round(flange.Y, 3), Math.Round(flange.Z, 3)], endPoints[^1]);
     }
 
     [Fact]

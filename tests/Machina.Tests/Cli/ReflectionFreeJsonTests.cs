@@ -21,6 +21,7 @@ public sealed class ReflectionFreeJsonTests
         path.Segments.Add(new PathSegment(SegmentKind.Arc, 4, [new Vector(1e21, 2.5, 0), new Vector(-7, 8, 9)]));
         path.Warnings.Add(new PathWarning(null, 5, 1, "Move(1, 2, 3);", "not applied: <the arm & \"its\" reach> é"));
         path.Warnings.Add(new PathWarning(new Vector(1, 2, 3), 6, 2, "Rotate(0, 0, 1, 90);", "a kinematic issue"));
+        path.Arms.Add(new ArmPose("start", [Vector.Zero, new Vector(0, 0, 290), new Vector(374.0004, 1.0 / 3, 630)]));
 
         string expected = JsonSerializer.Serialize(OldDocument(path));
 
@@ -34,7 +35,7 @@ public sealed class ReflectionFreeJsonTests
         var path = new PreviewPath();
 
         Assert.Equal(JsonSerializer.Serialize(OldDocument(path)), HtmlWriter.Json(path));
-        Assert.StartsWith("{\"units\":\"mm\",\"segments\":[],\"targets\":[],\"start\":null,\"end\":null,\"warnings\":[],\"colours\":{", HtmlWriter.Json(path), StringComparison.Ordinal);
+        Assert.StartsWith("{\"units\":\"mm\",\"segments\":[],\"targets\":[],\"start\":null,\"end\":null,\"warnings\":[],\"arms\":[],\"colours\":{", HtmlWriter.Json(path), StringComparison.Ordinal);
     }
 
     [Theory]
@@ -65,6 +66,7 @@ public sealed class ReflectionFreeJsonTests
             start = path.Start is Vector s0 ? A(s0) : null,
             end = path.End is Vector e0 ? A(e0) : null,
             warnings = path.Warnings.Select(w => new { at = w.At is Vector at ? A(at) : null, line = w.Line, instruction = w.Instruction, message = w.Message }),
+            arms = path.Arms.Select(a => new { label = a.Label, points = a.Points.Select(A) }),
             colours,
         };
     }
