@@ -105,12 +105,7 @@ internal static class HtmlWriter
                 w.WriteStartObject();
                 w.WriteString("kind", PreviewStyle.Of(segment.Kind).Name);
                 w.WriteNumber("line", segment.Line);
-                w.WriteStartArray("points");
-                foreach (Vector point in segment.Points)
-                {
-                    Point(w, point);
-                }
-                w.WriteEndArray();
+                Points(w, segment.Points);
                 w.WriteEndObject();
             }
             w.WriteEndArray();
@@ -141,12 +136,7 @@ internal static class HtmlWriter
             {
                 w.WriteStartObject();
                 w.WriteString("label", arm.Label);
-                w.WriteStartArray("points");
-                foreach (Vector joint in arm.Points)
-                {
-                    Point(w, joint);
-                }
-                w.WriteEndArray();
+                Points(w, arm.Points);
                 w.WriteEndObject();
             }
             w.WriteEndArray();
@@ -159,6 +149,17 @@ internal static class HtmlWriter
             w.WriteEndObject();
         }
         return Encoding.UTF8.GetString(buffer.WrittenSpan);
+    }
+
+    /// <summary>A <c>points</c> property: the points in order, each as <see cref="Point"/> writes it.</summary>
+    private static void Points(Utf8JsonWriter w, IReadOnlyList<Vector> points)
+    {
+        w.WriteStartArray("points");
+        foreach (Vector point in points)
+        {
+            Point(w, point);
+        }
+        w.WriteEndArray();
     }
 
     /// <summary>One point as <c>[x,y,z]</c> rounded to 0.001 mm, or <c>null</c> when there is none.</summary>
