@@ -64,8 +64,7 @@ public sealed class ProgramTrial
     public RobotState State => _cursor.Snapshot();
 
     /// <summary>True for the actions that move the robot (translations, rotations, transformations, joint moves, arcs).</summary>
-    public static bool IsMotion(RobotAction action) =>
-        action is ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion;
+    public static bool IsMotion(RobotAction action) => RobotCursor.IsMotion(action);
 
     /// <summary>
     /// Tries <paramref name="action"/> after the actions applied so far: applied when it can be (the state moves on), else refused

@@ -16,7 +16,8 @@ internal sealed partial class RobotCursor
     /// <summary>The joint values used as reference when a Cartesian target is solved and the previous joints are unknown: all zero.</summary>
     internal static readonly Joints ReferenceJoints = new(0, 0, 0, 0, 0, 0);
 
-    private static bool IsMotion(RobotAction action) =>
+    /// <summary>True for the actions that move the robot (translations, rotations, transformations, joint moves, arcs).</summary>
+    internal static bool IsMotion(RobotAction action) =>
         action is ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion;
 
     /// <summary>The motion fields a motion action changes, saved so that a strict refusal can restore them.</summary>
