@@ -63,7 +63,7 @@ internal static class HtmlWriter
         html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"border:2px solid {PreviewStyle.WarningColour};width:9px;height:9px\"></span>warning, with its line ({path.Warnings.Count})</div>\n");
         if (path.Arms.Count > 0)
         {
-            html.Append("<div class=\"key\"><span class=\"dot\" style=\"background:#c3cad4;border-radius:2px;width:22px;height:6px\"></span>the arm at the start (light) and the end (dark), base at 0,0,0</div>\n");
+            html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"background:{PreviewStyle.ArmStartColour};border-radius:2px;width:22px;height:6px\"></span>the arm at the start (light) and the end (dark), base at 0,0,0</div>\n");
         }
         html.Append("<p id=\"grid\" class=\"help\"></p>\n");
         if (path.Warnings.Count > 0)
@@ -92,6 +92,9 @@ internal static class HtmlWriter
         colours["start"] = PreviewStyle.StartColour;
         colours["end"] = PreviewStyle.EndColour;
         colours["warning"] = PreviewStyle.WarningColour;
+        colours["arm-start"] = PreviewStyle.ArmStartColour;
+        colours["arm-end"] = PreviewStyle.ArmEndColour;
+        colours["arm-warning"] = PreviewStyle.ArmWarningColour;
         // Written by hand (no reflection, so the native tool can trim it), in the order and form the serializer used;
         // the default encoder escapes <, > and &, so the JSON cannot close its script element.
         var buffer = new ArrayBufferWriter<byte>(4096);

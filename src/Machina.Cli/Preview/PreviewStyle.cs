@@ -12,6 +12,9 @@ internal static class PreviewStyle
     /// <summary>Colour of the warning markers.</summary>
     internal const string WarningColour = "#e53935";
 
+    /// <summary>Colours of the arm drawn at the start, at the end and where a warning is.</summary>
+    internal const string ArmStartColour = "#c3cad4", ArmEndColour = "#8d97a5", ArmWarningColour = "#f2aaa7";
+
     /// <summary>The class name and CSS colour of a kind.</summary>
     internal static (string Name, string Colour, string Label) Of(SegmentKind kind) => kind switch
     {

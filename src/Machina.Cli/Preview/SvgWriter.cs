@@ -39,7 +39,7 @@ internal static class SvgWriter
         }
         svg.Append(".joint{stroke-dasharray:7 5}.travel{stroke-dasharray:2 5;stroke-width:1.5}");
         svg.Append(".arm{fill:none;stroke-width:7;stroke-linejoin:round;stroke-linecap:round;vector-effect:non-scaling-stroke;opacity:.75}");
-        svg.Append(".arm-start{stroke:#c3cad4}.arm-end{stroke:#8d97a5}.arm-warning{stroke:#f2aaa7}");
+        svg.Append(CultureInfo.InvariantCulture, $".arm-start{{stroke:{PreviewStyle.ArmStartColour}}}.arm-end{{stroke:{PreviewStyle.ArmEndColour}}}.arm-warning{{stroke:{PreviewStyle.ArmWarningColour}}}");
         svg.Append(".arm-joint{fill:#fff;stroke:#6b7684;stroke-width:1.2;vector-effect:non-scaling-stroke}");
         svg.Append(".target{fill:#fff;stroke:#5f6b7a;stroke-width:1;vector-effect:non-scaling-stroke}");
         svg.Append("text{fill:#2b2f36;font-size:13px}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
@@ -220,8 +220,8 @@ internal static class SvgWriter
         if (path.Arms.Count > 0)
         {
             ty += 21;
-            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 32)}\" y2=\"{F(ty - 4)}\" stroke=\"#c3cad4\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
-            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 36)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" stroke=\"#8d97a5\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 32)}\" y2=\"{F(ty - 4)}\" stroke=\"{PreviewStyle.ArmStartColour}\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 36)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" stroke=\"{PreviewStyle.ArmEndColour}\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
             svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 62)}\" y=\"{F(ty)}\">the arm at the start (light) and the end (dark), base at 0,0,0</text>\n");
         }
         ty += 24;

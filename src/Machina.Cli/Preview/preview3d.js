@@ -106,7 +106,7 @@
     floorGrid();
     picks = [];
     (data.arms || []).forEach(function (a) {
-      var colour = a.label === 'start' ? '#c3cad4' : a.label === 'end' ? '#8d97a5' : '#f2aaa7';
+      var colour = colours[a.label === 'start' || a.label === 'end' ? 'arm-' + a.label : 'arm-warning'];
       line(a.points, colour, 7, null);
       a.points.forEach(function (p) { var s = project(p); ctx.beginPath(); ctx.arc(s[0], s[1], 3, 0, 2 * Math.PI); ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = '#6b7684'; ctx.lineWidth = 1.2; ctx.stroke(); });
     });

@@ -58,6 +58,9 @@ public sealed class ReflectionFreeJsonTests
         colours["start"] = PreviewStyle.StartColour;
         colours["end"] = PreviewStyle.EndColour;
         colours["warning"] = PreviewStyle.WarningColour;
+        colours["arm-start"] = PreviewStyle.ArmStartColour;
+        colours["arm-end"] = PreviewStyle.ArmEndColour;
+        colours["arm-warning"] = PreviewStyle.ArmWarningColour;
         return new
         {
             units = "mm",
