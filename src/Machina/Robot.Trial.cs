@@ -11,7 +11,8 @@ public sealed partial class Robot
     {
         lock (_issueLock)
         {
-            return new ProgramTrial(_issueCursor, _session);
+            MotionTiming timing = BrandRegistry.For(Brand).Timing;
+            return new ProgramTrial(_issueCursor, _session, timing == MotionTiming.Generic ? ProgramTrial.TimingOf(_issueCursor.Model) : timing);
         }
     }
 }

@@ -43,12 +43,14 @@ internal static class CheckCommand
         await output.WriteLineAsync("   LINE:COL RESULT   INSTRUCTION").ConfigureAwait(false);
         Dictionary<(int Line, int Column), List<string>> brandWarnings = BrandWarnings(reader.FilePath, model, context.Cancellation);
         var trial = new ProgramTrial(model);
+        var cycle = new CycleTime();
         var problems = new List<string>();
         int motions = 0, withProblems = 0, refused = 0, refusedMotions = 0;
         bool anyProblem = false;
         foreach (InstructionStatement statement in reader.Read(context.Cancellation))
         {
             TrialStep step = trial.Try(statement.Action);
+            cycle.Add(step);
             string? refusal = step.Refusal;
             Problems(step, problems);
             if (refusal is null && brandWarnings.TryGetValue((statement.Line, statement.Column), out List<string>? warnings))
@@ -84,6 +86,7 @@ internal static class CheckCommand
         int fine = motions - withProblems - refusedMotions;
         await output.WriteLineAsync($"{motions} motion{(motions == 1 ? "" : "s")} checked: {fine} ok, {withProblems} with problems, {refused} refused" +
             $" (of {trial.AppliedCount + refused} actions).").ConfigureAwait(false);
+        await output.WriteLineAsync(cycle.ToText($"the {model.Brand} {model.Name}")).ConfigureAwait(false);
         return refused == 0 && !anyProblem ? ExitCodes.Ok : ExitCodes.Failed;
     }
 

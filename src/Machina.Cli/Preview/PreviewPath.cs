@@ -58,6 +58,9 @@ internal sealed class PreviewPath
     /// <summary>Where the tool path ends.</summary>
     internal Vector? End => Targets.Count > 0 ? Targets[^1] : null;
 
+    /// <summary>The program's estimated cycle time on the model's brand of controller (or a generic one).</summary>
+    internal CycleTime CycleTime { get; } = new();
+
     /// <summary>Actions read.</summary>
     internal int Actions { get; private set; }
 
@@ -77,6 +80,7 @@ internal sealed class PreviewPath
         {
             path.Actions++;
             TrialStep step = trial.Try(statement.Action);
+            path.CycleTime.Add(step);
             CheckCommand.Problems(step, problems);
             if (step.Refusal is string refusal)
             {

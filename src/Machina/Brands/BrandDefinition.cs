@@ -39,6 +39,9 @@ internal sealed record BrandDefinition(RobotType Type, string Name, BrandKind Ki
     /// <summary>The name of the instruction a driver request of this brand carries (e.g. "MoveL"), or null when it is not recognised.</summary>
     internal Func<string, string?> InstructionName { get; init; } = _ => null;
 
+    /// <summary>How the brand's controller times a motion, for cycle-time estimates (<see cref="MotionTiming.Generic"/> unless the brand knows better).</summary>
+    internal MotionTiming Timing { get; init; } = MotionTiming.Generic;
+
     /// <summary>The brand as Machina writes it in messages (e.g. "ABB", "UR").</summary>
     internal string DisplayName => Type.ToString();
 

@@ -13,16 +13,22 @@ public sealed class ProgramTrial
     private readonly RobotCursor _cursor;
     private readonly IActionStream? _stream;
     private readonly List<string> _warnings = [];
+    private readonly MotionTiming _timing;
+    private double _seconds;
 
-    /// <summary>A trial from Machina's initial state (no position or joints known yet), with the arm model <paramref name="model"/> (or none).</summary>
+    /// <summary>
+    /// A trial from Machina's initial state (no position or joints known yet), with the arm model <paramref name="model"/> (or none);
+    /// durations are those of the model's brand of controller.
+    /// </summary>
     public ProgramTrial(RobotModel? model)
-        : this(new RobotCursor { Model = model }, null)
+        : this(new RobotCursor { Model = model }, null, TimingOf(model))
     {
     }
 
-    /// <summary>A trial from <paramref name="start"/> (copied, model included), checked also by what an online robot's <paramref name="stream"/> cannot run.</summary>
-    internal ProgramTrial(RobotCursor start, IActionStream? stream)
+    /// <summary>A trial from <paramref name="start"/> (copied, model included), checked also by what an online robot's <paramref name="stream"/> cannot run, timed by <paramref name="timing"/>.</summary>
+    internal ProgramTrial(RobotCursor start, IActionStream? stream, MotionTiming timing)
     {
+        _timing = timing;
         _cursor = new RobotCursor();
         _cursor.CopyFrom(start);
         _cursor.Strict = false;
@@ -32,6 +38,15 @@ public sealed class ProgramTrial
 
     /// <summary>How many actions were applied so far (refused ones are not counted).</summary>
     public int AppliedCount { get; private set; }
+
+    /// <summary>
+    /// The estimated time of the actions applied so far: each motion at the program's speed and acceleration as the brand's
+    /// controller runs it (joint moves from the arm's joint speeds where the brand does), plus the waits. Blends are not shortened.
+    /// </summary>
+    public TimeSpan EstimatedDuration => TimeSpan.FromSeconds(_seconds);
+
+    /// <summary>How many applied motions the estimate leaves out because a pose or the joints they are timed by were not known.</summary>
+    public int UntimedMotions { get; private set; }
 
     /// <summary>The arm model the motions are checked with, or null (then no kinematics).</summary>
     public RobotModel? Model => _cursor.Model;
@@ -76,12 +91,47 @@ public sealed class ProgramTrial
     {
         ArgumentNullException.ThrowIfNull(action);
         _warnings.Clear();
+        (Vector? position, Rotation? rotation, Joints? axes) = (_cursor.Position, _cursor.Rotation, _cursor.Axes);
         string? refusal = _stream?.WhyCannotStream(action) ?? _cursor.TryApply(action) ?? _stream?.WhyCannotSend(action, _cursor);
         if (refusal is not null)
         {
             return new TrialStep(action, refusal, [], []);
         }
         AppliedCount++;
-        return new TrialStep(action, null, _warnings.Count == 0 ? [] : [.. _warnings], _cursor.LastIssues);
+        double? seconds = SecondsOf(action, position, rotation, axes);
+        if (seconds is double s)
+        {
+            _seconds += s;
+        }
+        else
+        {
+            UntimedMotions++;
+        }
+        return new TrialStep(action, null, _warnings.Count == 0 ? [] : [.. _warnings], _cursor.LastIssues)
+        {
+            Duration = seconds is double d ? TimeSpan.FromSeconds(d) : null,
+        };
     }
+
+    /// <summary>Seconds the applied <paramref name="action"/> takes from the pose it started at; 0 for an action that takes no time, null for a motion that cannot be timed.</summary>
+    private double? SecondsOf(RobotAction action, Vector? position, Rotation? rotation, Joints? axes)
+    {
+        if (action is ActionWait wait)
+        {
+            return wait.Millis / 1000.0;
+        }
+        if (!RobotCursor.IsMotion(action))
+        {
+            return 0;
+        }
+        bool joint = action is ActionAxes || (_cursor.MotionType == MotionType.Joint && action is not ActionArcMotion);
+        var motion = new TimedMotion(position, rotation, axes, _cursor.Position, _cursor.Rotation, _cursor.Axes,
+            joint ? null : _cursor.LastPathLength, joint, _cursor.Speed, _cursor.Acceleration);
+        return _timing.Seconds(motion, _cursor.Model);
+    }
+
+    /// <summary>The timing of the brand that makes <paramref name="model"/>, or the generic one.</summary>
+    internal static MotionTiming TimingOf(RobotModel? model) =>
+        model is null ? MotionTiming.Generic
+            : BrandRegistry.All.FirstOrDefault(b => string.Equals(b.ModelBrand, model.Brand, StringComparison.OrdinalIgnoreCase))?.Timing ?? MotionTiming.Generic;
 }

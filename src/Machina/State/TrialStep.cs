@@ -10,6 +10,9 @@ public sealed record TrialStep(RobotAction Action, string? Refusal, IReadOnlyLis
     /// <summary>True when the action was applied (not refused).</summary>
     public bool Applied => Refusal is null;
 
+    /// <summary>The estimated time the action takes on the controller (zero for one that takes none), or null when it was refused or is a motion that could not be timed (a pose or the joints were not known).</summary>
+    public TimeSpan? Duration { get; init; }
+
     /// <summary>True when the action moves the robot.</summary>
     public bool IsMotion => ProgramTrial.IsMotion(Action);
 

@@ -35,7 +35,11 @@ public class PreviewCommandTests
         CliResult result = await cli.RunProgramAsync("preview", Program, "--out", "pics/p.svg");
 
         Assert.Equal(0, result.Exit);
-        Assert.Equal("pics/p.svg", result.Lines.Single());
+        // At Machina's 20 mm/s: 100 + 150 mm, the joint move's 200 mm (no model: timed by its straight line), the arc's 329.47 mm,
+        // the 10° turn at 20°/s and 150 mm: 46.97 s; the first move starts from wherever the robot stands.
+        Assert.Equal(["pics/p.svg", "Estimated cycle time on a generic controller (no --model): 47.0 s (motion 47.0 s, waits 0.00 s; " +
+            "blends not shortened); 1 motion not timed: where it starts is not known (before the first absolute position, or joints without a --model)."],
+            result.Lines);
         XDocument svg = XDocument.Load(cli.PathOf("pics/p.svg"));
         foreach ((string view, int h, int v) in new[] { ("top", 0, 1), ("front", 0, 2), ("side", 1, 2) })
         {

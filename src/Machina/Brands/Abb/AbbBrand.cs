@@ -13,6 +13,7 @@ internal static partial class AbbBrand
         ModelBrand = "ABB",
         Family = KinematicFamily.Opw,
         DefaultModel = "IRB 120",
+        Timing = new AbbMotionTiming(),
         DefaultPort = 7000,
         DriverNextSteps = NextSteps,
         InstructionName = Instruction,
