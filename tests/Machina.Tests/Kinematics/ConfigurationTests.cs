@@ -20,7 +20,9 @@ public class ConfigurationTests
     [InlineData(0, -90, 90, 0, 45, 0, "S 'B010' T 'B000010'")]
     [InlineData(0, -90, 90, 0, 0, 0, "S 'B010' T 'B000010'")] // home: A5 = 0 is not a hand flip
     [InlineData(-10, -90, 90, 0, -45, -20, "S 'B110' T 'B110011'")]
-    [InlineData(0, -90, -20, 0, 45, 0, "S 'B001' T 'B000110'")] // forearm folded back over the top: A3 below the stretched angle (elbow bit cleared) and wrist point behind A1 (x ≈ −151 mm)
+    [InlineData(0, -90, -20, 0, 45, 0, "S 'B001' T 'B000110'")]
+    [InlineData(-1e-13, -90, 90, -1e-14, 45, -2e-12, "S 'B010' T 'B000010'")] // the inverse kinematics' noise around 0 is 0, not negative
+    [InlineData(-1e-6, -90, 90, 0, -1e-6, 0, "S 'B110' T 'B010011'")] // a real millionth of a degree below 0 is negative // forearm folded back over the top: A3 below the stretched angle (elbow bit cleared) and wrist point behind A1 (x ≈ −151 mm)
     public void KukaConfiguration_KnownJoints_GivesStatusAndTurn(double a1, double a2, double a3, double a4, double a5, double a6, string expected)
     {
         KukaConfiguration c = KukaConfiguration.From(Kr6, new Joints(a1, a2, a3, a4, a5, a6));

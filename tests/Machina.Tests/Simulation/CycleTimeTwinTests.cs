@@ -38,7 +38,7 @@ public class CycleTimeTwinTests(ITestOutputHelper output)
         {
             Assert.True(trial.Try(action).Applied, action.ToInstruction());
         }
-        RobotProgram program = BrandRegistry.For(brand).CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default));
+        RobotProgram program = BrandRegistry.For(brand).CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model });
 
         double twin = TwinSeconds(brand, program, actions, model);
 
