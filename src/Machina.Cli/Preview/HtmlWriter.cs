@@ -65,6 +65,10 @@ internal static class HtmlWriter
         {
             html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"dot\" style=\"background:{PreviewStyle.ArmStartColour};border-radius:2px;width:22px;height:6px\"></span>the arm at the start (light) and the end (dark), base at 0,0,0</div>\n");
         }
+        if (path.Reach is ReachEnvelope reach)
+        {
+            html.Append(CultureInfo.InvariantCulture, $"<div class=\"key\"><span class=\"swatch\" style=\"border-top-color:{PreviewStyle.ReachColour};border-top-style:dashed\"></span>reach: the flange cannot get beyond these lines (up to {reach.Radius.ToString("0", CultureInfo.InvariantCulture)} mm out)</div>\n");
+        }
         html.Append("<p id=\"grid\" class=\"help\"></p>\n");
         if (path.Warnings.Count > 0)
         {
@@ -95,6 +99,7 @@ internal static class HtmlWriter
         colours["arm-start"] = PreviewStyle.ArmStartColour;
         colours["arm-end"] = PreviewStyle.ArmEndColour;
         colours["arm-warning"] = PreviewStyle.ArmWarningColour;
+        colours["reach"] = PreviewStyle.ReachColour;
         // Written by hand (no reflection, so the native tool can trim it), in the order and form the serializer used;
         // the default encoder escapes <, > and &, so the JSON cannot close its script element.
         var buffer = new ArrayBufferWriter<byte>(4096);
@@ -141,6 +146,17 @@ internal static class HtmlWriter
                 w.WriteString("label", arm.Label);
                 Points(w, arm.Points);
                 w.WriteEndObject();
+            }
+            w.WriteEndArray();
+            w.WriteStartArray("reach");
+            if (path.Reach is ReachEnvelope reach)
+            {
+                foreach (IReadOnlyList<Vector> outline in new[] { reach.InPlane(0), reach.InPlane(90), reach.Circle(reach.RadiusHeight) })
+                {
+                    w.WriteStartObject();
+                    Points(w, outline);
+                    w.WriteEndObject();
+                }
             }
             w.WriteEndArray();
             w.WriteStartObject("colours");

@@ -49,6 +49,9 @@ internal sealed class PreviewPath
     /// <summary>The arm at the start, at the end and where the first warnings with known joints are (with a model only).</summary>
     internal List<ArmPose> Arms { get; } = [];
 
+    /// <summary>Where the model's flange can get (with a model only), drawn as an outline in each view; not part of the framing.</summary>
+    internal ReachEnvelope? Reach { get; private set; }
+
     /// <summary>Most arms drawn where a warning is.</summary>
     internal const int MaxWarningArms = 2;
 
@@ -70,7 +73,7 @@ internal sealed class PreviewPath
     /// </summary>
     internal static PreviewPath Build(ProgramReader reader, RobotModel? model, bool printer, CancellationToken cancellationToken)
     {
-        var path = new PreviewPath { JointsFollowTheArm = model is not null };
+        var path = new PreviewPath { JointsFollowTheArm = model is not null, Reach = model is null ? null : ReachEnvelope.Of(model) };
         var trial = new ProgramTrial(model);
         var problems = new List<string>();
         Vector? last = null;

@@ -15,6 +15,9 @@ internal static class PreviewStyle
     /// <summary>Colours of the arm drawn at the start, at the end and where a warning is.</summary>
     internal const string ArmStartColour = "#c3cad4", ArmEndColour = "#8d97a5", ArmWarningColour = "#f2aaa7";
 
+    /// <summary>Colour of the reach envelope's outline.</summary>
+    internal const string ReachColour = "#7f8c9b";
+
     /// <summary>The class name and CSS colour of a kind.</summary>
     internal static (string Name, string Colour, string Label) Of(SegmentKind kind) => kind switch
     {

@@ -40,6 +40,7 @@ internal static class SvgWriter
         svg.Append(".joint{stroke-dasharray:7 5}.travel{stroke-dasharray:2 5;stroke-width:1.5}");
         svg.Append(".arm{fill:none;stroke-width:7;stroke-linejoin:round;stroke-linecap:round;vector-effect:non-scaling-stroke;opacity:.75}");
         svg.Append(CultureInfo.InvariantCulture, $".arm-start{{stroke:{PreviewStyle.ArmStartColour}}}.arm-end{{stroke:{PreviewStyle.ArmEndColour}}}.arm-warning{{stroke:{PreviewStyle.ArmWarningColour}}}");
+        svg.Append(CultureInfo.InvariantCulture, $".reach{{fill:none;stroke:{PreviewStyle.ReachColour};stroke-width:1.3;stroke-dasharray:9 4 2 4;vector-effect:non-scaling-stroke}}");
         svg.Append(".arm-joint{fill:#fff;stroke:#6b7684;stroke-width:1.2;vector-effect:non-scaling-stroke}");
         svg.Append(".target{fill:#fff;stroke:#5f6b7a;stroke-width:1;vector-effect:non-scaling-stroke}");
         svg.Append("text{fill:#2b2f36;font-size:13px}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
@@ -104,6 +105,7 @@ internal static class SvgWriter
             svg.Append(CultureInfo.InvariantCulture, $"<line class=\"{(Math.Abs(v) < step / 1000 ? "axis" : "grid")}\" x1=\"{F(mu - halfU)}\" y1=\"{F(v)}\" x2=\"{F(mu + halfU)}\" y2=\"{F(v)}\"/>");
         }
         svg.Append("</g>\n");
+        WriteReach(svg, path, view);
         WriteArms(svg, path, view, scale);
         foreach ((SegmentKind kind, List<Vector> points) in Runs(path.Segments))
         {
@@ -133,7 +135,7 @@ internal static class SvgWriter
                 svg.Append(CultureInfo.InvariantCulture,
                     $"<g class=\"warning\"><title>line {warning.Line}: {Esc(warning.Instruction)} {Esc(warning.Message)}</title>" +
                     $"<circle cx=\"{F(sx)}\" cy=\"{F(sy)}\" r=\"7\" fill=\"none\" stroke=\"{PreviewStyle.WarningColour}\" stroke-width=\"2.5\"/>" +
-                    $"<text x=\"{F(sx + 8)}\" y=\"{F(sy - 8)}\" fill=\"{PreviewStyle.WarningColour}\" font-size=\"11\" font-weight=\"700\">!{warning.Line}</text></g>\n");
+                    $"<text x=\"{F(sx - 8)}\" y=\"{F(sy - 8)}\" text-anchor=\"end\" fill=\"{PreviewStyle.WarningColour}\" font-size=\"11\" font-weight=\"700\">!{warning.Line}</text></g>\n");
             }
         }
         if (path.Arms.Count > 0)
@@ -162,6 +164,28 @@ internal static class SvgWriter
         svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(bx)}\" y1=\"{F(by - 4)}\" x2=\"{F(bx)}\" y2=\"{F(by + 1)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/><line x1=\"{F(bx + barPx)}\" y1=\"{F(by - 4)}\" x2=\"{F(bx + barPx)}\" y2=\"{F(by + 1)}\" stroke=\"#2b2f36\" stroke-width=\"2\"/>");
         svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(bx + barPx + 6)}\" y=\"{F(by + 4)}\" class=\"small\">{G(step)} mm (grid)</text></g>\n");
         svg.Append("</g>\n");
+    }
+
+    /// <summary>The reach envelope's outline as this view sees it (in millimetres, inside the view's transform): a circle from above, the outline from the front or the side.</summary>
+    private static void WriteReach(StringBuilder svg, PreviewPath path, View view)
+    {
+        if (path.Reach is not ReachEnvelope reach)
+        {
+            return;
+        }
+        IReadOnlyList<Vector> points = view.Name switch
+        {
+            "top" => reach.Circle(reach.RadiusHeight),
+            "front" => reach.InPlane(0),
+            _ => reach.InPlane(90),
+        };
+        svg.Append(CultureInfo.InvariantCulture, $"<polyline class=\"reach\" data-reach=\"{view.Name}\" points=\"");
+        for (int i = 0; i < points.Count; i++)
+        {
+            (double u, double v) = view.Project(points[i]);
+            svg.Append(i == 0 ? "" : " ").Append(F(u)).Append(',').Append(F(v));
+        }
+        svg.Append("\"/>\n");
     }
 
     /// <summary>The arm at its drawn moments, in millimetres (inside the view's transform): a thick grey line through its joints.</summary>
@@ -223,6 +247,12 @@ internal static class SvgWriter
             svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 32)}\" y2=\"{F(ty - 4)}\" stroke=\"{PreviewStyle.ArmStartColour}\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
             svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 36)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" stroke=\"{PreviewStyle.ArmEndColour}\" stroke-width=\"6\" stroke-linecap=\"round\"/>");
             svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 62)}\" y=\"{F(ty)}\">the arm at the start (light) and the end (dark), base at 0,0,0</text>\n");
+        }
+        if (path.Reach is ReachEnvelope reach)
+        {
+            ty += 21;
+            svg.Append(CultureInfo.InvariantCulture, $"<line x1=\"{F(x + 16)}\" y1=\"{F(ty - 4)}\" x2=\"{F(x + 52)}\" y2=\"{F(ty - 4)}\" class=\"reach\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 62)}\" y=\"{F(ty)}\">reach: the flange cannot get beyond this line (up to {reach.Radius:0} mm out)</text>\n");
         }
         ty += 24;
         svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">Extent: X {G(min.X)} to {G(max.X)}, Y {G(min.Y)} to {G(max.Y)}, Z {G(min.Z)} to {G(max.Z)} mm</text>\n");

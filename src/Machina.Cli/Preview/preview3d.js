@@ -96,7 +96,11 @@
     else { ctx.fillStyle = colours[kind]; ctx.fill(); ctx.strokeStyle = '#fff'; ctx.lineWidth = 2; ctx.stroke(); }
     ctx.fillStyle = kind === 'warning' ? colours.warning : colours[kind];
     ctx.font = 'bold 12px sans-serif';
-    ctx.fillText(label, s[0] + 10, s[1] - 9);
+    // Labels in separate corners, so that they stay apart when the start, the end and a warning are at one point:
+    // the start below right, the end above right, a warning above left.
+    ctx.textAlign = kind === 'warning' ? 'right' : 'left';
+    ctx.fillText(label, kind === 'warning' ? s[0] - 10 : s[0] + 10, kind === 'start' ? s[1] + 17 : s[1] - 9);
+    ctx.textAlign = 'left';
   }
 
   function draw() {
@@ -105,6 +109,7 @@
     ctx.fillStyle = '#ffffff'; ctx.fillRect(0, 0, w, h);
     floorGrid();
     picks = [];
+    (data.reach || []).forEach(function (r) { line(r.points, colours.reach, 1.2, [9, 4, 2, 4]); });
     (data.arms || []).forEach(function (a) {
       var colour = colours[a.label === 'start' || a.label === 'end' ? 'arm-' + a.label : 'arm-warning'];
       line(a.points, colour, 7, null);

@@ -35,7 +35,7 @@ public sealed class ReflectionFreeJsonTests
         var path = new PreviewPath();
 
         Assert.Equal(JsonSerializer.Serialize(OldDocument(path)), HtmlWriter.Json(path));
-        Assert.StartsWith("{\"units\":\"mm\",\"segments\":[],\"targets\":[],\"start\":null,\"end\":null,\"warnings\":[],\"arms\":[],\"colours\":{", HtmlWriter.Json(path), StringComparison.Ordinal);
+        Assert.StartsWith("{\"units\":\"mm\",\"segments\":[],\"targets\":[],\"start\":null,\"end\":null,\"warnings\":[],\"arms\":[],\"reach\":[],\"colours\":{", HtmlWriter.Json(path), StringComparison.Ordinal);
     }
 
     [Theory]
@@ -61,6 +61,7 @@ public sealed class ReflectionFreeJsonTests
         colours["arm-start"] = PreviewStyle.ArmStartColour;
         colours["arm-end"] = PreviewStyle.ArmEndColour;
         colours["arm-warning"] = PreviewStyle.ArmWarningColour;
+        colours["reach"] = PreviewStyle.ReachColour;
         return new
         {
             units = "mm",
@@ -70,6 +71,7 @@ public sealed class ReflectionFreeJsonTests
             end = path.End is Vector e0 ? A(e0) : null,
             warnings = path.Warnings.Select(w => new { at = w.At is Vector at ? A(at) : null, line = w.Line, instruction = w.Instruction, message = w.Message }),
             arms = path.Arms.Select(a => new { label = a.Label, points = a.Points.Select(A) }),
+            reach = (path.Reach is ReachEnvelope r ? new[] { r.InPlane(0), r.InPlane(90), r.Circle(r.RadiusHeight) } : []).Select(o => new { points = o.Select(A) }),
             colours,
         };
     }
