@@ -144,13 +144,19 @@ public sealed partial class BridgeServer : IAsyncDisposable
                 $"The bridge has no virtual controller for {Robot.Brand} robots yet; connect to a real controller with a host and port instead.");
             _embedded = await start(_options, cancellationToken).ConfigureAwait(false);
             (host, port) = ("127.0.0.1", _embedded.Port);
+            if (Robot.Model is null && _embedded.Model is RobotModel model)
+            {
+                // The robot learns the arm it drives, as from a real controller named with its model: a joint move then has a
+                // known pose (forward kinematics), so a client's MoveTo after an AxesTo is not refused for an unknown orientation.
+                Robot.SetModel(model);
+            }
         }
         Robot.ControlMode(ControlType.Online);
         Subscribe();
         await Robot.ConnectAsync(host, port, cancellationToken).ConfigureAwait(false);
         Robot.Logger.Info(_embedded is null
             ? $"Bridge: connected to the {Robot.Brand} controller at {host}:{port}."
-            : $"Bridge: connected to a virtual {Robot.Brand} controller (speed ×{_options.SimulationSpeed}).");
+            : $"Bridge: connected to a virtual {Robot.Brand} controller{(Robot.Model is { } m ? $" ({m})" : "")} (speed ×{_options.SimulationSpeed}).");
     }
 
     /// <summary>

@@ -2,8 +2,8 @@ using Machina.Simulation;
 
 namespace Machina.Bridge;
 
-/// <summary>A virtual controller running inside the bridge, and the loopback port its driver listens on.</summary>
-internal sealed record EmbeddedController(int Port, IAsyncDisposable Owner);
+/// <summary>A virtual controller running inside the bridge, the loopback port its driver listens on, and the arm it moves like.</summary>
+internal sealed record EmbeddedController(int Port, IAsyncDisposable Owner, RobotModel? Model);
 
 /// <summary>
 /// The virtual controllers the bridge can start in place of a real one: those of <see cref="VirtualControllerRegistry"/>, so that a
@@ -34,6 +34,6 @@ internal static class EmbeddedControllers
             settings = settings with { Model = demo };
         }
         RunningVirtualController controller = await VirtualControllerRegistry.StartAsync(brand, settings, cancellationToken).ConfigureAwait(false);
-        return new EmbeddedController(controller.Port, controller.Controller);
+        return new EmbeddedController(controller.Port, controller.Controller, controller.Model);
     }
 }

@@ -27,9 +27,10 @@ public class BridgePageTests
         byte[] png = await browser.ScreenshotAsync();
         await File.WriteAllBytesAsync(Path.Combine(AppContext.BaseDirectory, "bridge-page.png"), png);
 
-        // The executed path holds the program's points in order: the start, MoveTo(400,300,500), then Move(0,0,250); AxesTo ends the segment.
-        Assert.Equal("[[[451,0,807.1],[400,300,500],[400,300,750]],[]]", drawn.GetProperty("executed").GetRawText());
-        Assert.Equal("[[[451,0,807.1],[400,300,500],[400,300,750]],[]]", drawn.GetProperty("issued").GetRawText());
+        // The executed path holds the program's points in order: the start, MoveTo(400,300,500), Move(0,0,250), and AxesTo back
+        // home (the robot knows the controller's arm, so the joint move has a pose).
+        Assert.Equal("[[[451,0,807.1],[400,300,500],[400,300,750],[451,0,807.1]]]", drawn.GetProperty("executed").GetRawText());
+        Assert.Equal("[[[451,0,807.1],[400,300,500],[400,300,750],[451,0,807.1]]]", drawn.GetProperty("issued").GetRawText());
         Assert.Equal(drawn.GetProperty("executed").GetRawText(), JsonDocument.Parse(drawn.GetProperty("data").GetString()!).RootElement.GetProperty("executed").GetRawText());
         string[] names = [.. drawn.GetProperty("names").EnumerateArray().Select(n => n.GetString()!)];
         Assert.Equal(7, names.Count(n => n == "action-issued"));

@@ -17,7 +17,7 @@ public class BridgeServerTests
 
     /// <summary>The spec's §7 T2 example, byte for byte.</summary>
     private const string ExecutedMoveLine =
-        "{\"event\":\"action-executed\",\"last\":\"Move(0,0,250);\",\"id\":5,\"pendDev\":2,\"pendTot\":2,\"pos\":[400,300,750],\"ori\":[0,0,-1,0,1,0],\"quat\":[0.7071,0,0.7071,0],\"axes\":null,\"extax\":null,\"conf\":null}";
+        "{\"event\":\"action-executed\",\"last\":\"Move(0,0,250);\",\"id\":5,\"pendDev\":2,\"pendTot\":2,\"pos\":[400,300,750],\"ori\":[0,0,-1,0,1,0],\"quat\":[0.7071,0,0.7071,0],\"axes\":[43.332,-0.672,18.367,-107.858,46.134,114.935],\"extax\":null,\"conf\":null}";
 
     [Fact]
     public async Task Grasshopper_OneFramePerAction_EventsInOrderWithTheFieldsClientsRead()
@@ -89,22 +89,50 @@ public class BridgeServerTests
         Assert.Equal("[0,0,0,0,90,0]", executed[0].Raw("axes"));
         Assert.Equal("[451,0,807.1]", executed[1].Raw("pos"));
         Assert.Equal("[400,300,500]", executed[2].Raw("pos"));
-        Assert.Equal("null", executed[2].Raw("axes"));
+        // The robot knows the controller's arm, so every pose has its joints (inverse kinematics) and every joint move its pose.
+        Assert.Equal("[36.87,15.7,22.876,0,51.424,36.87]", executed[2].Raw("axes"));
         Assert.Equal("[0,0,-1,0,1,0]", executed[3].Raw("ori"));
         Assert.Equal("[0.7071,0,0.7071,0]", executed[3].Raw("quat"));
         Assert.Equal(ExecutedMoveLine, executed[4].GetRawText());
         Assert.Equal("[400,300,750]", executed[5].Raw("pos"));
-        Assert.Equal("null", executed[6].Raw("pos"));
-        Assert.Equal("null", executed[6].Raw("ori"));
-        Assert.Equal("null", executed[6].Raw("quat"));
+        Assert.Equal("[451,0,807.1]", executed[6].Raw("pos"));
+        Assert.Equal("[-1,0,0,0,1,0]", executed[6].Raw("ori"));
+        Assert.Equal("[0,0,1,0]", executed[6].Raw("quat"));
         Assert.Equal("[0,0,0,0,90,0]", executed[6].Raw("axes"));
 
         // Difference from the original (docs/bridge.md): action-issued and action-released carry the action's own target.
         Assert.Equal("[400,300,500]", issued[2].Raw("pos"));
         Assert.Equal("[400,300,750]", issued[4].Raw("pos"));
         Assert.Equal("[0.7071,0,0.7071,0]", released[3].Raw("quat"));
-        Assert.Equal("null", issued[6].Raw("pos"));
+        Assert.Equal("[451,0,807.1]", issued[6].Raw("pos"));
         Assert.Equal("[0,0,0,0,90,0]", issued[6].Raw("axes"));
+    }
+
+    /// <summary>
+    /// Issue 24: a page's Hello Robot ends with AxesTo, and a Python client's MoveTo that followed was refused ("orientation is
+    /// not known"). The robot learns the embedded controller's arm, so the joint move has a pose and the MoveTo runs.
+    /// </summary>
+    [Fact]
+    public async Task EmbeddedController_GivesTheRobotItsArm_SoAMoveToAfterAnAxesToRuns()
+    {
+        await using BridgeServer bridge = await StartAsync();
+        await using TestClient client = await TestClient.ConnectAsync(bridge);
+
+        Assert.Equal("ABB IRB 1200-5/0.9", bridge.Robot.Model?.ToString());
+        await client.SendAsync("AxesTo(0,0,0,0,90,0);");
+        await client.SendAsync("MoveTo(400,300,500);");
+        var executed = new List<string>();
+        while (executed.Count < 2)
+        {
+            string text = await client.ReceiveTextAsync() ?? throw new InvalidOperationException("closed");
+            Assert.DoesNotContain("refused", text, StringComparison.OrdinalIgnoreCase);
+            if (text.Contains("\"action-executed\"", StringComparison.Ordinal))
+            {
+                executed.Add(text);
+            }
+        }
+        Assert.Contains("\"last\":\"MoveTo(400,300,500);\"", executed[1], StringComparison.Ordinal);
+        Assert.Contains("\"pos\":[400,300,500]", executed[1], StringComparison.Ordinal);
     }
 
     [Fact]
@@ -146,7 +174,7 @@ public class BridgeServerTests
             ("Wait(2000.5);", "error", "parse"),
             ("Detach()", "action-issued", "DetachTool();"),
             ("AxesTo(0,0,0,0,90,0);", "action-issued", "AxesTo(0,0,0,0,90,0);"),
-            ("Move(0.0,0.0,10.0);", "error", "refused"),
+            ("AttachTool(\"ghost\");", "error", "refused"),
         ];
         foreach ((string sent, string expectedEvent, string detail) in cases)
         {
@@ -158,7 +186,8 @@ public class BridgeServerTests
             await python.CloseAsync();
         }
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), bridge.Robot.GetIssuedState().Axes);
-        Assert.Null(bridge.Robot.GetIssuedState().Position);
+        // The robot knows the embedded controller's arm (an IRB 1200-5/0.9), so the joint move has a pose: its home, tool down.
+        Assert.True(bridge.Robot.GetIssuedState().Position!.Value.IsSimilar(new Vector(451, 0, 807.1), 0.05), $"{bridge.Robot.GetIssuedState().Position}");
     }
 
     [Fact]
@@ -169,13 +198,13 @@ public class BridgeServerTests
         await using TestClient other = await TestClient.ConnectAsync(bridge, "?name=B");
         await EventuallyAsync(() => bridge.ClientCount == 2, "both clients to be registered");
 
-        await sender.SendAsync("SpeedTo(50); AxesTo(0,0,0,0,90,0); Move(0,0,250);");
+        await sender.SendAsync("SpeedTo(50); AxesTo(0,0,0,0,90,0); AttachTool(\"ghost\");");
         JsonElement error = await sender.ReceiveAsync();
         Assert.Equal(["event", "kind", "message", "instruction"], error.Keys());
         Assert.Equal("error", error.Event());
         Assert.Equal("refused", error.GetProperty("kind").GetString());
-        Assert.Equal("Move(0,0,250);", error.GetProperty("instruction").GetString());
-        Assert.StartsWith("Cannot apply \"Move(0,0,250);\": ", error.GetProperty("message").GetString(), StringComparison.Ordinal);
+        Assert.Equal("AttachTool(\"ghost\");", error.GetProperty("instruction").GetString());
+        Assert.StartsWith("Cannot apply \"AttachTool(\"ghost\");\": no tool named \"ghost\" is defined", error.GetProperty("message").GetString(), StringComparison.Ordinal);
 
         // Nothing of the refused frame was issued, and no id was used: the next action is number 1, and both clients see it.
         await other.SendAsync("SpeedTo(20);");
