@@ -214,7 +214,7 @@ public sealed partial class VirtualUrController
             using var both = CancellationTokenSource.CreateLinkedTokenSource(token, wake);
             try
             {
-                await Task.Delay(wait > TimeSpan.Zero ? wait : TimeSpan.Zero, Clock, both.Token).ConfigureAwait(false);
+                await Task.Delay(WholeMillisecondsUp(wait), Clock, both.Token).ConfigureAwait(false);
             }
             catch (OperationCanceledException) when (!token.IsCancellationRequested)
             {
@@ -226,6 +226,14 @@ public sealed partial class VirtualUrController
             }
         }
     }
+
+    /// <summary>
+    /// A wait rounded up to whole milliseconds (0 for none). Task.Delay counts whole milliseconds and drops the rest: a wait of
+    /// 0.7 ms would end at once, before the package is due, and the sender would spin without the clock moving (on a test's
+    /// manual clock, forever inside the timer callback that woke it).
+    /// </summary>
+    internal static TimeSpan WholeMillisecondsUp(TimeSpan wait) =>
+        wait > TimeSpan.Zero ? TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)) : TimeSpan.Zero;
 
     /// <summary>One data package of the subscriber's recipe: its id, then each value big-endian in UR's units (m, rad).</summary>
     private byte[] DataPackage(RtdeSubscriber s)
