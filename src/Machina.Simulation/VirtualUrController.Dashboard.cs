@@ -38,52 +38,12 @@ public sealed partial class VirtualUrController
                     _dashboardCommands.RemoveAt(0);
                 }
             }
-            string answer = Dashboard(command);
+            string answer = TwinDashboard(Twin, command);
             await stream.WriteAsync(Encoding.ASCII.GetBytes(answer + "\n"), token).ConfigureAwait(false);
             if (command == "quit")
             {
                 return;
             }
-        }
-    }
-
-    /// <summary>The answer of the dashboard server to one command (the commands a host uses).</summary>
-    private string Dashboard(string command)
-    {
-        if (Twin is { } twin)
-        {
-            return TwinDashboard(twin, command);
-        }
-        switch (command)
-        {
-            case "play":
-                return Play();
-            case "pause":
-                return Pause();
-            case "stop":
-                StopProgram("stopped from the dashboard");
-                return "Stopped";
-            case "unlock protective stop":
-                return UnlockProtectiveStop();
-            case "close safety popup":
-                return "closing safety popup";
-            case "quit":
-                return "Disconnected";
-            case "robotmode":
-                return "Robotmode: RUNNING";
-            case "programState":
-                lock (Gate)
-                {
-                    string state = _runtime switch { Playing => "PLAYING", Paused => "PAUSED", _ => "STOPPED" };
-                    return state + (_kind == DriverKind.None ? " <unnamed>" : " machina_ur_driver");
-                }
-            case "running":
-                return "Program running: " + (RuntimeState == Playing ? "true" : "false");
-            case "safetystatus" or "safetymode":
-                string name = SafetyStatus switch { ProtectiveStopped => "PROTECTIVE_STOP", RobotEmergencyStopped => "ROBOT_EMERGENCY_STOP", _ => "NORMAL" };
-                return (command == "safetystatus" ? "Safetystatus: " : "Safetymode: ") + name;
-            default:
-                return $"could not understand: '{command}'";
         }
     }
 }

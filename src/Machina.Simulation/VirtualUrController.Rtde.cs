@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.Net.Sockets;
 using System.Text;
+using Packages = Machina.Simulation.VirtualUrRtdePackages;
 
 namespace Machina.Simulation;
 
@@ -43,7 +44,7 @@ public sealed partial class VirtualUrController
         const string register = "output_int_register_";
         return name.StartsWith(register, StringComparison.Ordinal) && int.TryParse(name.AsSpan(register.Length), System.Globalization.NumberStyles.None, Num.Inv, out int n) && n is >= 0 and <= 47
             ? "INT32"
-            : Rtde.NotFound;
+            : Packages.NotFound;
     }
 
     private Task AcceptRtdeClientsAsync(CancellationToken token) => AcceptAsync(_rtdeListener!, ServeRtdeAsync, token);
@@ -53,7 +54,7 @@ public sealed partial class VirtualUrController
     {
         var stream = client.GetStream();
         var subscriber = new RtdeSubscriber(stream);
-        var reader = new RtdePackageReader();
+        var reader = new VirtualUrRtdeReader();
         var bytes = new byte[4096];
         ushort protocol = 1;
         try
@@ -76,7 +77,7 @@ public sealed partial class VirtualUrController
                 }
             }
         }
-        catch (RobotConnectionException e)
+        catch (InvalidDataException e)
         {
             RecordError("RTDE: " + e.Message);
         }
@@ -94,29 +95,29 @@ public sealed partial class VirtualUrController
     {
         switch (type)
         {
-            case Rtde.RequestProtocolVersion:
+            case Packages.RequestProtocolVersion:
                 ushort asked = payload.Length >= 2 ? BinaryPrimitives.ReadUInt16BigEndian(payload) : (ushort)0;
                 bool accepted = asked is 1 or 2;
                 if (accepted)
                 {
                     protocol = asked;
                 }
-                return Rtde.Package(type, [accepted ? (byte)1 : (byte)0]);
-            case Rtde.GetControllerVersion:
+                return Packages.Package(type, [accepted ? (byte)1 : (byte)0]);
+            case Packages.GetControllerVersion:
                 var version = new byte[16];
                 BinaryPrimitives.WriteUInt32BigEndian(version, (uint)_options.ControllerVersion.Major);
                 BinaryPrimitives.WriteUInt32BigEndian(version.AsSpan(4), (uint)_options.ControllerVersion.Minor);
                 BinaryPrimitives.WriteUInt32BigEndian(version.AsSpan(8), (uint)Math.Max(0, _options.ControllerVersion.Build));
                 BinaryPrimitives.WriteUInt32BigEndian(version.AsSpan(12), 0);
-                return Rtde.Package(type, version);
-            case Rtde.SetupOutputs:
+                return Packages.Package(type, version);
+            case Packages.SetupOutputs:
                 return SetupOutputs(payload, subscriber, protocol);
-            case Rtde.SetupInputs:
+            case Packages.SetupInputs:
                 // No inputs are simulated: every name is unknown.
                 string names = Encoding.ASCII.GetString(payload);
-                return Rtde.Package(type, [0, .. Encoding.ASCII.GetBytes(string.Join(',', names.Split(',').Select(_ => Rtde.NotFound)))]);
-            case Rtde.Start:
-                bool ok = subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Rtde.NotFound);
+                return Packages.Package(type, [0, .. Encoding.ASCII.GetBytes(string.Join(',', names.Split(',').Select(_ => Packages.NotFound)))]);
+            case Packages.Start:
+                bool ok = subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Packages.NotFound);
                 if (ok)
                 {
                     lock (_rtdeGate)
@@ -125,14 +126,14 @@ public sealed partial class VirtualUrController
                     }
                     WakeRtde();
                 }
-                return Rtde.Package(type, [ok ? (byte)1 : (byte)0]);
-            case Rtde.Pause:
+                return Packages.Package(type, [ok ? (byte)1 : (byte)0]);
+            case Packages.Pause:
                 lock (_rtdeGate)
                 {
                     _subscribers.Remove(subscriber);
                 }
-                return Rtde.Package(type, [1]);
-            case Rtde.TextMessage:
+                return Packages.Package(type, [1]);
+            case Packages.TextMessage:
                 return [];
             default:
                 RecordError($"RTDE: unknown package type {type}.");
@@ -147,7 +148,7 @@ public sealed partial class VirtualUrController
         {
             if (payload.Length < 8)
             {
-                return Rtde.Package(Rtde.SetupOutputs, [0]);
+                return Packages.Package(Packages.SetupOutputs, [0]);
             }
             frequency = BinaryPrimitives.ReadDoubleBigEndian(payload);
             payload = payload[8..];
@@ -157,10 +158,10 @@ public sealed partial class VirtualUrController
         if (!(frequency > 0 && frequency <= _options.MaxRtdeFrequency))
         {
             RecordError($"RTDE: refused an output frequency of {Num.G(frequency)} Hz (1 to {Num.G(_options.MaxRtdeFrequency)}).");
-            return Rtde.Package(Rtde.SetupOutputs, [0, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
+            return Packages.Package(Packages.SetupOutputs, [0, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
         }
         subscriber.Configure(names, types, frequency);
-        return Rtde.Package(Rtde.SetupOutputs, [subscriber.RecipeId, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
+        return Packages.Package(Packages.SetupOutputs, [subscriber.RecipeId, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
     }
 
     /// <summary>Wakes the RTDE sender: a client started, or the robot's program or safety state changed (reported at once).</summary>
@@ -214,7 +215,7 @@ public sealed partial class VirtualUrController
             using var both = CancellationTokenSource.CreateLinkedTokenSource(token, wake);
             try
             {
-                await Task.Delay(wait > TimeSpan.Zero ? wait : TimeSpan.Zero, Clock, both.Token).ConfigureAwait(false);
+                await Task.Delay(WholeMillisecondsUp(wait), Clock, both.Token).ConfigureAwait(false);
             }
             catch (OperationCanceledException) when (!token.IsCancellationRequested)
             {
@@ -227,85 +228,16 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>One data package of the subscriber's recipe: its id, then each value big-endian in UR's units (m, rad).</summary>
-    private byte[] DataPackage(RtdeSubscriber s)
-    {
-        if (Twin is { } twin)
-        {
-            return Rtde.Package(Rtde.DataPackage, TwinDataPayload(twin, s.RecipeId, s.Names));
-        }
-        VirtualUrState state = State;
-        int runtime, safety, instance;
-        bool registers;
-        lock (Gate)
-        {
-            runtime = (int)_runtime;
-            safety = _safety;
-            instance = _instanceRegister;
-            registers = _kind != DriverKind.Original; // the original driver writes none
-        }
-        var payload = new byte[1 + s.Types.Sum(Rtde.SizeOf)];
-        payload[0] = s.RecipeId;
-        int at = 1;
-        RotationVector rv = state.Rotation.ToRotationVector();
-        double[] pose = [state.Position.X * UrScriptText.Mm, state.Position.Y * UrScriptText.Mm, state.Position.Z * UrScriptText.Mm, rv.X * UrScriptText.Rad, rv.Y * UrScriptText.Rad, rv.Z * UrScriptText.Rad];
-        double[] q = [.. Enumerable.Range(0, Joints.Count).Select(i => state.Joints[i] * UrScriptText.Rad)];
-        for (int i = 0; i < s.Names.Length; i++)
-        {
-            Span<byte> to = payload.AsSpan(at);
-            switch (s.Names[i])
-            {
-                case "timestamp":
-                    BinaryPrimitives.WriteDoubleBigEndian(to, Clock.GetElapsedTime(0).TotalSeconds);
-                    break;
-                case "actual_q" or "target_q":
-                    WriteVector(to, q);
-                    break;
-                case "actual_TCP_pose" or "target_TCP_pose":
-                    WriteVector(to, pose);
-                    break;
-                case "actual_qd" or "actual_TCP_speed":
-                    WriteVector(to, [0, 0, 0, 0, 0, 0]);
-                    break;
-                case "robot_mode":
-                    BinaryPrimitives.WriteInt32BigEndian(to, 7); // RUNNING
-                    break;
-                case "safety_mode" or "safety_status":
-                    BinaryPrimitives.WriteInt32BigEndian(to, safety);
-                    break;
-                case "runtime_state":
-                    BinaryPrimitives.WriteUInt32BigEndian(to, (uint)runtime);
-                    break;
-                case "speed_scaling" or "target_speed_fraction":
-                    BinaryPrimitives.WriteDoubleBigEndian(to, 1);
-                    break;
-                case "actual_digital_output_bits":
-                    BinaryPrimitives.WriteUInt64BigEndian(to, 0);
-                    break;
-                default: // output_int_register_N: our driver's progress on 24 and 25, its instance on 26, else 0
-                    int register = int.Parse(s.Names[i].AsSpan("output_int_register_".Length), Num.Inv);
-                    int value = !registers ? 0 : register switch
-                    {
-                        UrWire.ExecutedRegister => LastExecutedId,
-                        UrWire.ReceivedRegister => LastReceivedId,
-                        UrWire.InstanceRegister => instance,
-                        _ => 0,
-                    };
-                    BinaryPrimitives.WriteInt32BigEndian(to, value);
-                    break;
-            }
-            at += Rtde.SizeOf(s.Types[i]);
-        }
-        return Rtde.Package(Rtde.DataPackage, payload);
-    }
+    /// <summary>
+    /// A wait rounded up to whole milliseconds (0 for none). Task.Delay counts whole milliseconds and drops the rest: a wait of
+    /// 0.7 ms would end at once, before the package is due, and the sender would spin without the clock moving (on a test's
+    /// manual clock, forever inside the timer callback that woke it).
+    /// </summary>
+    internal static TimeSpan WholeMillisecondsUp(TimeSpan wait) =>
+        wait > TimeSpan.Zero ? TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)) : TimeSpan.Zero;
 
-    private static void WriteVector(Span<byte> to, ReadOnlySpan<double> values)
-    {
-        for (int i = 0; i < values.Length; i++)
-        {
-            BinaryPrimitives.WriteDoubleBigEndian(to[(i * 8)..], values[i]);
-        }
-    }
+    /// <summary>One data package of the subscriber's recipe: its id, then each value big-endian in UR's units (m, rad).</summary>
+    private byte[] DataPackage(RtdeSubscriber s) => Packages.Package(Packages.DataPackage, TwinDataPayload(Twin, s.RecipeId, s.Names));
 
     /// <summary>One RTDE client: its output recipe, frequency and when it last got data.</summary>
     private sealed class RtdeSubscriber(NetworkStream stream)

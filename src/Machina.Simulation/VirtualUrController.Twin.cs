@@ -9,18 +9,18 @@ public sealed partial class VirtualUrController
     /// <summary>How many steps of the arm's trace the controller keeps: a stream of millions of moves must not keep every pose.</summary>
     internal const int MaxTraceSteps = 10_000;
 
-    /// <summary>The URScript controller that runs what arrives on the script ports (<see cref="VirtualUrControllerOptions.RunsScripts"/>), else null.</summary>
-    internal UrTwinController? Twin { get; private set; }
+    /// <summary>The URScript controller that runs what arrives on the script ports.</summary>
+    internal UrTwinController Twin { get; }
 
     /// <summary>Makes the interpreter that runs the scripts, starting at the controller's starting joints.</summary>
-    private void CreateTwin()
+    private UrTwinController CreateTwin()
     {
         var twin = new UrTwinController(new UrTwinOptions
         {
             Model = Model ?? RobotModels.Get("UR5e"),
             Seam = this,
             MaxTrace = MaxTraceSteps,
-            StartJoints = State.Joints,
+            StartJoints = base.State.Joints, // the options' starting joints (State asks the twin, not made yet)
             Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
         });
@@ -49,7 +49,7 @@ public sealed partial class VirtualUrController
         };
         twin.StateChanged += WakeRtde;
         twin.RuntimeError += SendTwinRuntimeError;
-        Twin = twin;
+        return twin;
     }
 
     /// <summary>Feeds what one script connection sends to the interpreter, which starts each program as soon as it is complete.</summary>
@@ -73,5 +73,5 @@ public sealed partial class VirtualUrController
     private uint TwinRuntime(UrTwinController twin) => twin.State != UrProgramState.Running ? Stopped : TwinHeld ? Paused : Playing;
 
     /// <summary>The robot now: where the twin's arm is, with its outputs.</summary>
-    public new VirtualUrState State => Twin is { } twin ? TwinState(twin, base.State) : base.State;
+    public new VirtualUrState State => TwinState(Twin, base.State);
 }

@@ -4,9 +4,6 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
-    /// <summary>The output integer register Machina's driver writes its instance number to (docs/protocol-ur.md).</summary>
-    private const int InstanceRegisterNumber = 26;
-
     /// <summary>The dashboard answers about the interpreter's program (the commands a host uses): play and pause release and hold the program at its next read.</summary>
     private string TwinDashboard(UrTwinController twin, string command)
     {

@@ -4,11 +4,10 @@ using System.Net.Sockets;
 namespace Machina.Simulation;
 
 /// <summary>
-/// A stand-in for a Universal Robots controller, listening on 127.0.0.1: it takes a driver script on its script port(s),
-/// recognises Machina's URScript driver (and the original Machina.NET driver, whose protocol ours keeps), connects back to
-/// the host address and port written in the script, and runs the instructions it reads there with the shared motion model,
-/// acknowledging each by id. It serves RTDE (UR's package layout, any RTDE client reads it) and the dashboard commands a
-/// host uses, and can be told to enter a protective stop. Made for tests and demos.
+/// A stand-in for a Universal Robots controller, listening on 127.0.0.1: it runs the URScript programs that arrive on its
+/// script port(s) with its interpreter, as a UR does (Machina's driver, the original Machina.NET driver or a compiled
+/// program), on a twin arm with the model's kinematics. It serves RTDE (UR's package layout, any RTDE client reads it) and
+/// the dashboard commands a host uses, and can be told to enter a protective stop. Made for tests and demos.
 /// </summary>
 public sealed partial class VirtualUrController : VirtualController<VirtualUrState>
 {
@@ -35,10 +34,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         })
     {
         _options = options;
-        if (options.RunsScripts)
-        {
-            CreateTwin();
-        }
+        Twin = CreateTwin();
     }
 
     /// <summary>The port that takes driver scripts (what a host gives to Connect); 0 until started.</summary>
@@ -82,15 +78,14 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         }
         _rtdeListener?.Stop();
         _dashboardListener?.Stop();
-        StopProgram("the controller stops");
-        Twin?.Dispose();
+        Twin.Dispose(); // stops the running program and closes its sockets
         WakeRtde();
     }
 
     private static int PortOf(TcpListener listener) => ((IPEndPoint)listener.LocalEndpoint).Port;
 
     /// <summary>The given ports, or three consecutive OS-chosen ones (script, RTDE, dashboard) for those left at 0.</summary>
-    private (TcpListener Script, TcpListener Rtde, TcpListener Dashboard) Bind()
+    private (TcpListener Script, TcpListener RtdeServer, TcpListener DashboardServer) Bind()
     {
         if (_options.ScriptPort != 0 || _options.RtdePort != 0 || _options.DashboardPort != 0)
         {

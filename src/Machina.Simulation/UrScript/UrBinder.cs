@@ -27,6 +27,7 @@ internal sealed class UrBinder
     private readonly IReadOnlyDictionary<string, UrBuiltin> _builtins;
     private readonly Dictionary<string, UrFunction> _functions = new(StringComparer.Ordinal);
     private readonly Dictionary<string, int> _globals = new(StringComparer.Ordinal);
+    private readonly Dictionary<object, UrConst> _defaults = new(ReferenceEqualityComparer.Instance);
     private Dictionary<string, int>? _locals;
 
     private UrBinder(IReadOnlyDictionary<string, UrBuiltin> builtins) => _builtins = builtins;
@@ -294,7 +295,7 @@ internal sealed class UrBinder
         }
         foreach ((string key, UrExpr value) in call.Named)
         {
-            int at = Array.FindIndex(parameters, p => p.Name == key);
+            int at = IndexOf(parameters, key);
             if (at < 0)
             {
                 throw new UrCompileException(call.Line, $"{call.Name} has no parameter '{key}'");
@@ -313,11 +314,35 @@ internal sealed class UrBinder
                 {
                     null => throw new UrCompileException(call.Line, $"{call.Name} is missing its argument '{parameters[i].Name}'"),
                     UrExpr e => e,
-                    object constant => new UrConst(call.Line, constant),
+                    object constant => DefaultNode(call.Line, constant),
                 };
             }
             BindExpr(arguments[i]!);
+            arguments[i] = UrConstPose.Fold(arguments[i]!);
         }
         call.Arguments = arguments!;
+    }
+
+    /// <summary>The node of a built-in's default value, made once for all calls (a constant never fails, so its line is not read).</summary>
+    private UrConst DefaultNode(int line, object constant)
+    {
+        if (!_defaults.TryGetValue(constant, out UrConst? node))
+        {
+            node = new UrConst(line, constant);
+            _defaults[constant] = node;
+        }
+        return node;
+    }
+
+    private static int IndexOf((string Name, object? Default)[] parameters, string name)
+    {
+        for (int i = 0; i < parameters.Length; i++)
+        {
+            if (parameters[i].Name == name)
+            {
+                return i;
+            }
+        }
+        return -1;
     }
 }

@@ -128,7 +128,7 @@ internal static class UrLexer
             }
         }
         string literal = words.Get(text, start, i - start);
-        double value = double.Parse(literal, NumberStyles.Float, CultureInfo.InvariantCulture);
+        double value = words.Number(literal);
         if (!isFloat && (value > int.MaxValue + 1.0))
         {
             throw new UrCompileException(line, $"the integer {literal} is out of range");
@@ -140,6 +140,18 @@ internal static class UrLexer
     private sealed class TextCache
     {
         private readonly Dictionary<string, string> _texts = new(StringComparer.Ordinal);
+        private readonly Dictionary<string, double> _numbers = new(ReferenceEqualityComparer.Instance);
+
+        /// <summary>The value of a number literal given by <see cref="Get"/> (parsed once per distinct literal).</summary>
+        public double Number(string literal)
+        {
+            if (!_numbers.TryGetValue(literal, out double value))
+            {
+                value = double.Parse(literal, NumberStyles.Float, CultureInfo.InvariantCulture);
+                _numbers[literal] = value;
+            }
+            return value;
+        }
 
         public string Get(string text, int start, int length)
         {

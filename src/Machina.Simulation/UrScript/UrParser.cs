@@ -34,6 +34,9 @@ internal sealed class UrParser
 {
     private readonly UrTokenWindow _tokens;
     private readonly UrSyntaxTree _tree = new();
+
+    /// <summary>The value of each literal met (text, negated), boxed once: a long program repeats few numbers.</summary>
+    private readonly Dictionary<(string Text, bool Negate), object> _literals = [];
     private int _at;
     private int _depth;
 
@@ -391,18 +394,26 @@ internal sealed class UrParser
         return Postfix(Primary());
     }
 
-    private static UrConst Literal(UrToken token, bool negate)
+    private UrConst Literal(UrToken token, bool negate)
     {
-        double value = negate ? -token.Number : token.Number;
-        if (token.Kind == UrTokenKind.Float)
+        if (!_literals.TryGetValue((token.Text, negate), out object? boxed))
         {
-            return new UrConst(token.Line, value);
+            double value = negate ? -token.Number : token.Number;
+            if (token.Kind == UrTokenKind.Float)
+            {
+                boxed = value;
+            }
+            else if (value > int.MaxValue || value < int.MinValue)
+            {
+                throw new UrCompileException(token.Line, $"the integer {token.Text} is out of range");
+            }
+            else
+            {
+                boxed = (int)value;
+            }
+            _literals[(token.Text, negate)] = boxed;
         }
-        if (value > int.MaxValue || value < int.MinValue)
-        {
-            throw new UrCompileException(token.Line, $"the integer {token.Text} is out of range");
-        }
-        return new UrConst(token.Line, (int)value);
+        return new UrConst(token.Line, boxed);
     }
 
     private UrExpr Postfix(UrExpr expr)

@@ -50,6 +50,16 @@ internal sealed class UrScriptIntake
             bool complete = newline >= 0;
             int next = _scanAt + (complete ? newline + 1 : rest.Length);
             ReadOnlySpan<char> raw = complete ? rest[..newline] : rest;
+            if (_programStart >= 0 && (raw.IsEmpty || raw[0] != 'e'))
+            {
+                // Inside a program only an "end" in column 1 matters: the other lines are passed over without making a string.
+                if (!complete)
+                {
+                    return null;
+                }
+                _scanAt = next;
+                continue;
+            }
             string line = new string(raw).TrimEnd('\r');
             string code = StripComment(line).TrimEnd();
             if (_programStart < 0)

@@ -23,11 +23,6 @@ public class SimulationCodecTests
         ["VirtualKukaController.cs"] = ["KukaElement", "KukaInstruction", "KukaMessages", "KukaProtocol", "KukaXmlReader"],
         ["VirtualKukaController.Execution.cs"] = ["KrlFormat", "KukaActionCode", "KukaActionEncoder", "KukaInstruction", "KukaMessages", "KukaValues"],
         ["VirtualKukaController.Failures.cs"] = ["KukaFailure"],
-        // The UR imitation of Machina's driver, still the default until the fault plan runs on the interpreter.
-        ["VirtualUrController.cs"] = ["Rtde"],
-        ["VirtualUrController.Program.cs"] = ["UrWire"],
-        ["VirtualUrController.Rtde.cs"] = ["Rtde", "RtdePackageReader", "UrScriptText", "UrWire"],
-        ["VirtualUrController.Script.cs"] = ["UrRobotMessage", "UrWire"],
     };
 
     private static readonly Regex Declaration = new(

@@ -157,11 +157,22 @@ public class UrDriverRulesPropertyTests
         Assert.Throws<InvalidOperationException>(() => UrActionEncoder.Encode(action, cursor, new int[UrActionEncoder.MaxValues]));
     }
 
+    /// <summary>How many integers follow an instruction's id and code (spec online §7.3).</summary>
+    private static int ParametersOf(int code) => code switch
+    {
+        1 or 2 or 3 or 17 => 6,
+        4 or 5 or 6 or 7 or 8 or 9 or 15 or 16 => 1,
+        12 => 7,
+        13 => 3,
+        14 => 2,
+        _ => throw new ArgumentOutOfRangeException(nameof(code), code, "not an instruction code of the protocol"),
+    };
+
     /// <summary>Gives the action's last instruction <paramref name="id"/> (the one that carries the action's id), helpers keep 0.</summary>
     private static void Renumber(Span<int> values, int id)
     {
         int last = 0;
-        for (int at = 0; at < values.Length; at += 2 + VirtualUrController.ParameterCount(values[at + 1], VirtualUrController.DriverKind.Ours))
+        for (int at = 0; at < values.Length; at += 2 + ParametersOf(values[at + 1]))
         {
             last = at;
             if (values[at] != 0)

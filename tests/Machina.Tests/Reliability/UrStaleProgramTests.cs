@@ -30,7 +30,7 @@ public class UrStaleProgramTests
             string held = controller.LastScript!; // the first upload, as a slow link could still be holding a copy of it
             await bot.DisconnectAsync();
             await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
-            Assert.NotEqual(VirtualUrController.InstanceOf(held), controller.InstanceRegister);
+            Assert.NotEqual(InstanceOf(held), controller.InstanceRegister);
 
             // Moves reach the controller (as many as the session streams ahead); the driver runs the first, its acknowledgement
             // leaves and the link drops: the moves after it were in the dropped connection, so the driver never reads them.
@@ -52,7 +52,7 @@ public class UrStaleProgramTests
             {
                 await late.ConnectAsync(IPAddress.Loopback, controller.Port);
                 await late.GetStream().WriteAsync(Encoding.ASCII.GetBytes(held));
-                await OnlineTestSupport.EventuallyAsync(() => controller.InstanceRegister == VirtualUrController.InstanceOf(held) && !controller.IsProgramRunning, "the late program to start and stop");
+                await OnlineTestSupport.EventuallyAsync(() => controller.InstanceRegister == InstanceOf(held) && !controller.IsProgramRunning, "the late program to start and stop");
             }
 
             await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(OnlineTestSupport.Limit);
@@ -69,5 +69,13 @@ public class UrStaleProgramTests
         {
             await bot.DisconnectAsync();
         }
+    }
+
+    /// <summary>The instance number a driver script publishes (its <c>INSTANCE = n</c> line).</summary>
+    private static int InstanceOf(string script)
+    {
+        System.Text.RegularExpressions.Match m = System.Text.RegularExpressions.Regex.Match(script, @"^[ \t]*INSTANCE[ \t]*=[ \t]*(-?[0-9]+)", System.Text.RegularExpressions.RegexOptions.Multiline);
+        Assert.True(m.Success, "the driver script has no INSTANCE line");
+        return int.Parse(m.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
     }
 }

@@ -88,58 +88,6 @@ public class VirtualUrControllerTests
         Assert.Empty(controller.Errors);
     }
 
-    [Theory]
-    [InlineData("def p():\n  x = 1\nend", false, "def p():\n  x = 1\nend")]
-    [InlineData("def p():\n  x = 1\nend\nmore", false, "def p():\n  x = 1\nend\n")]
-    [InlineData("# c\n\ndef p():\n  x = 1\nen", false, null)]
-    [InlineData("def p():\n  x = 1\n  end\n", false, null)]
-    [InlineData("textmsg(1)", false, null)]
-    [InlineData("textmsg(1)", true, "textmsg(1)")]
-    [InlineData("textmsg(1)\ndef p():\n", false, "textmsg(1)\n")]
-    [InlineData("sec s():\n  x = 1\nend\r\n", false, "sec s():\n  x = 1\nend\r\n")]
-    public void TakeScript_ProgramCompleteAtItsEnd_OneLinerAtItsLineBreak(string text, bool closed, string? expected)
-    {
-        Assert.Equal(expected, VirtualUrController.TakeScript(text, closed)?.Script);
-    }
-
-    [Theory]
-    [InlineData("def prog():\n  textmsg(1)\nend\n", "prog")]
-    [InlineData("# header\ndef machina_ur_driver():\n  x = 1\nend\n\n\n", "machina_ur_driver")]
-    [InlineData("def prog():\n  textmsg(1)\nend\nprog()\n", null)]
-    [InlineData("textmsg(1)\n", null)]
-    public void DefinedWithoutCall_ScriptEndingWithADefinition_NamesIt(string script, string? expected)
-    {
-        Assert.Equal(expected, VirtualUrController.DefinedWithoutCall(script));
-    }
-
-    [Theory]
-    [InlineData("machina_ur_driver()\n", true)]
-    [InlineData("\n\n# Kickstart the driver\nmachina_ur_driver()\n", true)]
-    [InlineData("machina_ur_driver( )\n", true)]
-    [InlineData("other()\n", false)]
-    [InlineData("machina_ur_driver()\nhalt\n", false)]
-    [InlineData("  textmsg(1)\nmachina_ur_driver()\n", false)]
-    public void IsOnlyCallOf_ScriptOfJustTheCall_IsRecognised(string script, bool expected)
-    {
-        Assert.Equal(expected, VirtualUrController.IsOnlyCallOf(script, "machina_ur_driver"));
-    }
-
-    [Theory]
-    [InlineData("  MACHINA_DRIVER_VERSION = [2, 0, 0]\n", "Ours")]
-    [InlineData("  MACHINA_DRIVER_VERSION = \"1.2.0\"\n", "Original")]
-    [InlineData("  MACHINA_DRIVER_VERSION = \"3.0.0\"\n", "None")]
-    [InlineData("", "None")]
-    public void Recognise_VersionLine_TellsTheDriver(string versionLine, string kind)
-    {
-        string script = "def machina_ur_driver():\n" + versionLine + "  HOSTNAME = \"10.0.0.5\"\n  PORT = 51234   # the host\nend\nmachina_ur_driver()\n";
-        var (k, host, port) = VirtualUrController.Recognise(script);
-        Assert.Equal(kind, k.ToString());
-        if (kind != "None")
-        {
-            Assert.Equal(("10.0.0.5", 51234), (host, port));
-        }
-    }
-
     [Fact]
     public async Task OurDriver_UnknownCode_RecordedAndProgramStops()
     {

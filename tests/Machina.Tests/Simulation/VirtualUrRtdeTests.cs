@@ -33,6 +33,15 @@ public class VirtualUrRtdeTests
         Assert.Equal((7L, 1L, 1L), ((long)data["robot_mode"], (long)data["safety_status"], (long)data["runtime_state"])); // running, normal, stopped (no program)
     }
 
+    [Theory]
+    [InlineData(0, 0)]
+    [InlineData(-5_000, 0)]
+    [InlineData(6_667, 10_000)] // 0.67 ms: Task.Delay would make it 0 and the sender would spin without the clock moving
+    [InlineData(16_667, 20_000)]
+    [InlineData(200_000, 200_000)]
+    public void Rtde_SenderWait_IsRoundedUpToWholeMilliseconds(long ticks, long expected) =>
+        Assert.Equal(TimeSpan.FromTicks(expected), VirtualUrController.WholeMillisecondsUp(TimeSpan.FromTicks(ticks)));
+
     [Fact]
     public async Task Rtde_ManualClock_PackagesAtTheConfiguredRate()
     {
