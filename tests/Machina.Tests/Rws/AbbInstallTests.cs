@@ -84,6 +84,32 @@ public sealed class AbbInstallTests : IAsyncLifetime
     }
 
     [Fact]
+    public async Task ConnectionManagerMachina_Reconnect_LeavesTheRunningDriverAlone()
+    {
+        Robot bot = NewRobot();
+        Assert.True(bot.ConnectionManager("machina"));
+        await bot.ConnectAsync("127.0.0.1", _port).WaitAsync(OnlineTestSupport.Limit);
+        await bot.DisconnectAsync();
+        _rws.OperationMode = "MANR";   // a reinstall would be refused now: the second Connect must not try one
+
+        await bot.ConnectAsync("127.0.0.1", _port).WaitAsync(OnlineTestSupport.Limit);
+        try
+        {
+            bot.SpeedTo(100);
+            bot.Move(0, 0, 10);
+            await bot.WaitForCompletionAsync().WaitAsync(OnlineTestSupport.Limit);
+
+            Assert.Single(_rws.EventLog, e => e.Code == 10002 && e.Title.Contains("T_ROB1", StringComparison.Ordinal));
+            Assert.Equal(RapidProgramState.Running, _twin.Task().State);
+            Assert.Equal(["MoveL"], _twin.Arm.Trace.Where(t => t.Kind == Machina.Simulation.Twin.TwinTraceKind.Motion).Select(t => t.Text));
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+
+    [Fact]
     public async Task ConnectionManagerMachina_ManualMode_ConnectRefusedWithTheReason_NothingUploaded()
     {
         _rws.OperationMode = "MANR";

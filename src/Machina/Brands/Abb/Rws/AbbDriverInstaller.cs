@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace Machina;
 
 /// <summary>
@@ -14,6 +16,9 @@ internal static class AbbDriverInstaller
     /// <summary>The task the monitor is loaded into, when the controller has it (the Multitasking option, configured by the user).</summary>
     public const string MonitorTask = "T_MACHINA_MONITOR";
 
+    /// <summary>The name of the driver's module (MODULE Machina_Driver in drivers/abb).</summary>
+    public const string DriverModule = "Machina_Driver";
+
     /// <summary>
     /// Installs and starts the driver listening on <paramref name="host"/>:<paramref name="port"/> (the monitor on port + 1),
     /// logging each step; throws <see cref="RobotWebServicesException"/> with the reason when a check or a step fails.
@@ -22,6 +27,12 @@ internal static class AbbDriverInstaller
         CancellationToken cancellationToken)
     {
         IReadOnlyDictionary<string, string> modules = AbbDriverModules.Create(host, port);
+        if (await IsRunningAsync(client, host, port, modules["machina_abb_driver.mod"], cancellationToken).ConfigureAwait(false))
+        {
+            // A reconnection: the running driver holds the actions it was given and reports its progress; reinstalling would lose them.
+            log.Info($"Machina's driver already runs on the controller, listening on {host}:{port}: it is left running, not installed again.");
+            return;
+        }
         await CheckSafeToStartAsync(client, options, log, cancellationToken).ConfigureAwait(false);
         IReadOnlyList<string> tasks = await client.GetTasksAsync(cancellationToken).ConfigureAwait(false);
         string motionTask = tasks.Contains(MotionTask, StringComparer.OrdinalIgnoreCase) ? MotionTask
@@ -53,6 +64,32 @@ internal static class AbbDriverInstaller
         finally
         {
             await ReleaseQuietlyAsync(client, log).ConfigureAwait(false);
+        }
+    }
+
+    /// <summary>True when RAPID runs and T_ROB1 holds this very driver (same version, address and port).</summary>
+    private static async Task<bool> IsRunningAsync(RwsClient client, string host, int port, string driver, CancellationToken cancellationToken)
+    {
+        if (await client.GetExecutionStateAsync(cancellationToken).ConfigureAwait(false) != "running")
+        {
+            return false;
+        }
+        try
+        {
+            foreach (string name in new[] { "DRIVER_VERSION_MAJOR", "DRIVER_VERSION_MINOR", "DRIVER_VERSION_PATCH" })
+            {
+                string value = await client.GetSymbolAsync(MotionTask, DriverModule, name, cancellationToken).ConfigureAwait(false);
+                if (!driver.Contains($"CONST string {name} := {value};", StringComparison.Ordinal))
+                {
+                    return false;
+                }
+            }
+            return await client.GetSymbolAsync(MotionTask, DriverModule, "SERVER_IP", cancellationToken).ConfigureAwait(false) == $"\"{host}\""
+                && await client.GetSymbolAsync(MotionTask, DriverModule, "SERVER_PORT", cancellationToken).ConfigureAwait(false) == port.ToString(CultureInfo.InvariantCulture);
+        }
+        catch (RobotWebServicesException ex) when (ex.HttpStatus is 400 or 404)
+        {
+            return false; // the task runs something else
         }
     }
 
