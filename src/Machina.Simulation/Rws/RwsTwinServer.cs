@@ -22,10 +22,15 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
     private readonly string _password;
     private Task? _accepting;
 
-    /// <summary>A server for <paramref name="twin"/> accepting <paramref name="user"/> with <paramref name="password"/> (ABB's default user by default).</summary>
-    public RwsTwinServer(RapidTwinController twin, string user = "Default User", string password = "robotics")
+    /// <summary>
+    /// A server for <paramref name="twin"/> accepting <paramref name="user"/> with <paramref name="password"/> (ABB's default user by
+    /// default); with <paramref name="rws2"/>, what RWS 2.0 changes for a client: basic authentication and the <c>v=2.0</c> media
+    /// types (over plain HTTP: the twin serves no TLS).
+    /// </summary>
+    public RwsTwinServer(RapidTwinController twin, string user = "Default User", string password = "robotics", bool rws2 = false)
     {
         Twin = twin;
+        Rws2 = rws2;
         _user = user;
         _password = password;
         twin.TaskEnded += task =>
@@ -36,6 +41,9 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
             }
         };
     }
+
+    /// <summary>True when the server speaks RWS 2.0 (basic authentication, <c>v=2.0</c> media types).</summary>
+    public bool Rws2 { get; }
 
     /// <summary>The twin the services act on.</summary>
     public RapidTwinController Twin { get; }
@@ -107,7 +115,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
             NetworkStream stream = client.GetStream();
             while (await RwsHttp.ReadAsync(stream, cancellationToken).ConfigureAwait(false) is { } request)
             {
-                RwsResponse response = Authenticate(request, out string? session, out bool opened) ?? Handle(request, session!);
+                RwsResponse response = Authenticate(request, out string? session, out bool opened) ?? MediaRefusal(request) ?? Handle(request, session!);
                 if (opened)
                 {
                     response.Headers.Add(("Set-Cookie", $"-http-session-={session}; path=/; httponly"));
@@ -143,20 +151,46 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 session = cookie;
                 return null;
             }
-            if (RwsDigest.Verify(request.Headers.GetValueOrDefault("Authorization"), request.Method, _user, _password, _nonces.Contains))
+            string? authorization = request.Headers.GetValueOrDefault("Authorization");
+            if (Rws2 ? RwsBasic.Verify(authorization, _user, _password)
+                : RwsDigest.Verify(authorization, request.Method, _user, _password, _nonces.Contains))
             {
                 session = RwsDigest.NewNonce();
                 _sessions.Add(session);
                 opened = true;
                 return null;
             }
-            string nonce = RwsDigest.NewNonce();
-            _nonces.Add(nonce);
             session = null;
             var challenge = RwsXhtmlWriter.Error(401, "Unauthorized", null, "Authentication required.");
+            if (Rws2)
+            {
+                challenge.Headers.Add(("WWW-Authenticate", "Basic realm=\"RWS\""));
+                return challenge;
+            }
+            string nonce = RwsDigest.NewNonce();
+            _nonces.Add(nonce);
             challenge.Headers.Add(("WWW-Authenticate", RwsDigest.Challenge(nonce)));
             return challenge;
         }
+    }
+
+    /// <summary>RWS 2.0: a 406 when the client does not accept the v=2.0 XHTML, a 415 when its form is not the v=2.0 one; else null.</summary>
+    private RwsResponse? MediaRefusal(RwsRequest request)
+    {
+        if (!Rws2)
+        {
+            return null;
+        }
+        if (!(request.Headers.GetValueOrDefault("Accept") ?? "").Contains("v=2.0", StringComparison.Ordinal))
+        {
+            return RwsXhtmlWriter.Error(406, "Not Acceptable", null, "RWS 2.0 answers application/xhtml+xml;v=2.0 (or application/hal+json;v=2.0); the request's Accept does not ask for it.");
+        }
+        if (request.Method == "POST" && request.Body.Length > 0
+            && !(request.Headers.GetValueOrDefault("Content-Type") ?? "").Contains("v=2.0", StringComparison.Ordinal))
+        {
+            return RwsXhtmlWriter.Error(415, "Unsupported Media Type", null, "RWS 2.0 takes forms as application/x-www-form-urlencoded;v=2.0.");
+        }
+        return null;
     }
 
     private static int LeadingCode(string error) =>

@@ -24,6 +24,9 @@ public sealed class RobotWebServicesOptions
     /// </summary>
     public int MaxSpeedRatio { get; init; } = 100;
 
+    /// <summary>RWS 2.0 over plain HTTP: only for the RAPID twin in tests (the twin serves no TLS); never for a controller.</summary>
+    internal bool Rws2OverHttp { get; init; }
+
     /// <summary>How long one request to the controller may take (default 10 s).</summary>
     public TimeSpan Timeout { get; init; } = TimeSpan.FromSeconds(10);
 }

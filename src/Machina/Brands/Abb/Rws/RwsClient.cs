@@ -23,7 +23,8 @@ internal sealed partial class RwsClient : IDisposable
         ArgumentException.ThrowIfNullOrWhiteSpace(host);
         ArgumentNullException.ThrowIfNull(options);
         _rws2 = options.UseRws2;
-        var address = new UriBuilder(_rws2 ? "https" : "http", host, options.Port ?? (_rws2 ? 443 : 80)).Uri;
+        string scheme = _rws2 && !options.Rws2OverHttp ? "https" : "http";
+        var address = new UriBuilder(scheme, host, options.Port ?? (_rws2 ? 443 : 80)).Uri;
         var credential = new NetworkCredential(options.UserName, options.Password);
         var handler = new SocketsHttpHandler
         {
