@@ -157,7 +157,7 @@ public sealed partial class Robot
             _installsDriver = false;
             return true;
         }
-        if (Brand == RobotType.ABB)
+        if (AbbDriverInstaller.Supports(Brand))
         {
             _installsDriver = true;
             return true;
@@ -239,7 +239,7 @@ public sealed partial class Robot
         ThrowIfDisposed("connect");
         OnlineSession session = RequireSession("connect");
         session.ResponseTimeout = ResponseTimeout;
-        return _installsDriver && Brand == RobotType.ABB
+        return _installsDriver && AbbDriverInstaller.Supports(Brand)
             ? InstallThenConnectAsync(session, host, port, cancellationToken)
             : session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);
     }

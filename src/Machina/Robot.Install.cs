@@ -37,7 +37,7 @@ public sealed partial class Robot
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(host);
         ThrowIfDisposed("install the driver");
-        if (Brand != RobotType.ABB)
+        if (!AbbDriverInstaller.Supports(Brand))
         {
             throw new NotSupportedException($"Machina installs its driver through Robot Web Services on ABB controllers only; this robot is a {Brand}.");
         }

@@ -7,7 +7,7 @@ internal static partial class DriversCommand
 {
     private static async Task<int> InstallAsync(RobotType brand, string host, CliArgs args, CliContext context)
     {
-        if (brand != RobotType.ABB)
+        if (!AbbDriverInstaller.Supports(brand))
         {
             throw new UsageException($"machina drivers --install works on ABB controllers only (through Robot Web Services), not {brand}. See: machina drivers --help");
         }

@@ -10,6 +10,9 @@ namespace Machina;
 /// </summary>
 internal static class AbbDriverInstaller
 {
+    /// <summary>True for the brand whose driver Machina can install through Robot Web Services (ABB).</summary>
+    public static bool Supports(RobotType brand) => brand == RobotType.ABB;
+
     /// <summary>The motion task the driver is loaded into.</summary>
     public const string MotionTask = "T_ROB1";
 
