@@ -2,9 +2,8 @@ using System.Net;
 using Machina.Simulation;
 using Machina.Simulation.Rapid;
 using Machina.Simulation.Rws;
-using Machina.Tests.Cli;
 
-namespace Machina.Tests.Rws;
+namespace Machina.Tests.Cli;
 
 /// <summary><c>machina drivers abb --install</c> installs and starts the driver through the twin's Robot Web Services.</summary>
 public sealed class DriversInstallCliTests : IAsyncLifetime
