@@ -144,23 +144,33 @@ public sealed partial class Robot
     /// <summary>Chooses "offline" or "online" ("stream" is an old name of online), any letter case.</summary>
     public bool ControlMode(string mode) => ControlMode(EnumText.Parse<ControlType>(mode, "control mode"));
 
-    /// <summary>Who starts the driver on the controller. Only <see cref="ConnectionType.User"/> is available: load and start the driver yourself.</summary>
-    /// <returns>True for User; false (with a warning in the log) for Machina.</returns>
+    /// <summary>
+    /// Who starts the driver on the controller: <see cref="ConnectionType.User"/> (you load and start it) or, on an ABB,
+    /// <see cref="ConnectionType.Machina"/>: each <see cref="ConnectAsync"/> first installs and starts the driver through the
+    /// controller's Robot Web Services (see <see cref="InstallDriverAsync"/> and <see cref="WebServices"/>).
+    /// </summary>
+    /// <returns>True when set; false (with a warning in the log) for Machina on a UR or KUKA.</returns>
     public bool ConnectionManager(ConnectionType type)
     {
         if (EnumText.RequireDefined(type, nameof(type)) == ConnectionType.User)
         {
+            _installsDriver = false;
+            return true;
+        }
+        if (AbbDriverInstaller.Supports(Brand))
+        {
+            _installsDriver = true;
             return true;
         }
         Logger.Warning(MachinaManagerRefused);
         return false;
     }
 
-    /// <summary>The warning for ConnectionManager("machina"): what to do instead, and where it is explained.</summary>
+    /// <summary>The warning for ConnectionManager("machina") on a UR or KUKA: what to do instead, and where it is explained.</summary>
     internal const string MachinaManagerRefused =
-        "ConnectionManager(\"machina\") is not available, so nothing changed: Machina does not load or start the driver on an ABB or " +
-        "KUKA controller. Load and start the driver by hand (its files come from \"machina drivers\" or GetDeviceDriverModules), " +
-        "then Connect; on a UR there is nothing to load, Connect sends the driver script itself. " +
+        "ConnectionManager(\"machina\") is available on ABB controllers only, so nothing changed: Machina does not load or start the driver " +
+        "on a KUKA controller (load and start it by hand; its files come from \"machina drivers\" or GetDeviceDriverModules, then Connect); " +
+        "on a UR there is nothing to load, Connect sends the driver script itself. " +
         "See docs/migrating.md#the-driver-is-loaded-by-hand.";
 
     /// <summary>Same as <see cref="ConnectionManager(ConnectionType)"/> with "user" or "machina" (any letter case).</summary>
@@ -229,7 +239,16 @@ public sealed partial class Robot
         ThrowIfDisposed("connect");
         OnlineSession session = RequireSession("connect");
         session.ResponseTimeout = ResponseTimeout;
-        return session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);
+        return _installsDriver && AbbDriverInstaller.Supports(Brand)
+            ? InstallThenConnectAsync(session, host, port, cancellationToken)
+            : session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);
+    }
+
+    /// <summary>ConnectionManager("machina"): installs and starts the driver through Robot Web Services, then connects as usual.</summary>
+    private async Task InstallThenConnectAsync(OnlineSession session, string host, int port, CancellationToken cancellationToken)
+    {
+        await InstallDriverAsync(host, port, cancellationToken).ConfigureAwait(false);
+        await session.ConnectAsync(host, port, ConnectTimeout, cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Closes the connection. Actions sent but not confirmed as executed are kept as pending (the robot may still run them).</summary>

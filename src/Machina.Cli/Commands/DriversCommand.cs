@@ -3,13 +3,14 @@ using System.Globalization;
 namespace Machina.Cli.Commands;
 
 /// <summary><c>machina drivers</c>: writes the controller-side driver files with the connection filled in.</summary>
-internal static class DriversCommand
+internal static partial class DriversCommand
 {
     internal static readonly CliCommand Command = new(
         "drivers",
         "Write the driver files to load on the robot controller",
         """
         Usage: machina drivers abb|ur|kuka --host H --port P --out DIR
+               machina drivers abb --install --host H [--port P] [--rws-port N] [--user U] [--max-speed-ratio R]
 
         Writes the files of Machina's driver, the program that runs on the robot controller and receives the streamed
         actions, with the address and port filled in, and says what to do with them:
@@ -26,17 +27,32 @@ internal static class DriversCommand
                      UR: the computer's port the script connects back to
           --out DIR  the folder to write into (created if needed)
 
-        Example:
+        With --install (ABB only), nothing is written here: Machina installs the driver on the controller itself through its
+        Robot Web Services (RWS 1.0, digest authentication), in automatic mode with the motors on: it uploads the modules to
+        $HOME, loads them into T_ROB1 (and T_MACHINA_MONITOR when the controller has that task), resets the program pointer
+        and starts RAPID. It refuses, saying why, in a manual mode, with the motors off, with a speed ratio above
+        --max-speed-ratio (default 100) or when the FlexPendant holds mastership. See docs/rws.md.
+          --port P             the driver's port (default 7000)
+          --rws-port N         the controller's Robot Web Services port (default 80)
+          --user U             the controller user (default "Default User"); the password is read from the environment
+                               variable MACHINA_RWS_PASSWORD (default "robotics")
+
+        Examples:
           machina drivers abb --host 192.168.125.1 --port 7000 --out driver
+          machina drivers abb --install --host 192.168.125.1
         """,
-        Options: ["--host", "--port", "--out"],
-        Flags: [],
+        Options: ["--host", "--port", "--out", "--rws-port", "--user", "--max-speed-ratio"],
+        Flags: ["--install"],
         RunAsync);
 
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), Brands.Online, "drivers");
         string host = args.Required("--host", "(the controller's address, e.g. 192.168.125.1)");
+        if (args.Has("--install"))
+        {
+            return await InstallAsync(brand, host, args, context).ConfigureAwait(false);
+        }
         int port = args.Port("--port", 0);
         if (port == 0)
         {

@@ -5,6 +5,6 @@ public enum ConnectionType
 {
     /// <summary>The user loads and starts the driver on the controller, then connects (default).</summary>
     User,
-    /// <summary>Machina loads the driver itself (not available in this version).</summary>
+    /// <summary>Machina installs and starts the driver itself on an ABB, through its Robot Web Services, at each Connect (see Robot.InstallDriverAsync).</summary>
     Machina,
 }

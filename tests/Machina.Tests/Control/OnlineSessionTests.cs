@@ -450,8 +450,9 @@ public class OnlineSessionTests
         Assert.Throws<InvalidOperationException>(() => bot.Connect("127.0.0.1", 7000));
         Assert.True(bot.ControlMode("Stream"));
         Assert.Equal(ControlType.Online, bot.GetControlMode());
-        Assert.False(bot.ConnectionManager("machina"));
+        Assert.True(bot.ConnectionManager("machina"));   // an ABB: Connect installs the driver through Robot Web Services
         Assert.True(bot.ConnectionManager(ConnectionType.User));
+        Assert.False(Robot.Create("K", "KUKA").ConnectionManager("machina"));
         Assert.Throws<ArgumentException>(() => Robot.Create("H", "HUMAN").ControlMode("online"));
         Assert.Throws<ArgumentException>(() => Robot.Create("Z", "ZMORPH").ControlMode("online"));
         foreach (string arm in new[] { "UR", "KUKA" })

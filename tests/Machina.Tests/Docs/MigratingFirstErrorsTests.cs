@@ -4,9 +4,9 @@ namespace Machina.Tests.Docs;
 public sealed class MigratingFirstErrorsTests
 {
     [Fact]
-    public void ConnectionManagerMachina_ReturnsFalse_AndWarnsThatTheDriverIsLoadedByHand()
+    public void ConnectionManagerMachina_OnAKuka_ReturnsFalse_AndWarnsThatTheDriverIsLoadedByHand()
     {
-        var bot = Robot.Create("Port", "ABB");
+        var bot = Robot.Create("Port", "KUKA");
         var log = new List<LogEntry>();
         bot.Logger.Logged += (_, e) => log.Add(e);
 
@@ -16,9 +16,9 @@ public sealed class MigratingFirstErrorsTests
         LogEntry warning = Assert.Single(log);
         Assert.Equal(LogLevel.WARNING, warning.Level);
         Assert.Equal(
-            "ConnectionManager(\"machina\") is not available, so nothing changed: Machina does not load or start the driver on an ABB or " +
-            "KUKA controller. Load and start the driver by hand (its files come from \"machina drivers\" or GetDeviceDriverModules), " +
-            "then Connect; on a UR there is nothing to load, Connect sends the driver script itself. " +
+            "ConnectionManager(\"machina\") is available on ABB controllers only, so nothing changed: Machina does not load or start the driver " +
+            "on a KUKA controller (load and start it by hand; its files come from \"machina drivers\" or GetDeviceDriverModules, then Connect); " +
+            "on a UR there is nothing to load, Connect sends the driver script itself. " +
             "See docs/migrating.md#the-driver-is-loaded-by-hand.",
             warning.Message);
         Assert.True(bot.ConnectionManager("user"));
@@ -38,7 +38,7 @@ public sealed class MigratingFirstErrorsTests
     [InlineData("`using Machina.Types.Geometry;`", "CS0234")]
     [InlineData("**`ActionCompleted` and `RemainingActions`**", "PendingExecutionTotal")]
     [InlineData("**`Compile()` on an online robot**", "Compile works in offline mode; this robot is streaming its actions to a controller.")]
-    [InlineData("**`ConnectionManager(\"machina\")`**", "returns `false`")]
+    [InlineData("**`ConnectionManager(\"machina\")`**", "Robot Web Services")]
     public void Migrating_FirstErrors_SaysWhatToWriteInstead(string topic, string answer)
     {
         string text = string.Join(" ", DocText.ReadLines("docs/migrating.md").Select(l => l.Trim()));

@@ -12,7 +12,7 @@ internal static class ExtremeValues
     private static readonly HashSet<string> NotVerbs =
     [
         nameof(Robot.IsBrand), nameof(Robot.ControlMode), nameof(Robot.ConnectionManager), nameof(Robot.Connect),
-        nameof(Robot.Disconnect), nameof(Robot.WaitForCompletion), nameof(Robot.SaveProgram), nameof(Robot.StreamConfiguration), nameof(Robot.Resume),
+        nameof(Robot.Disconnect), nameof(Robot.WaitForCompletion), nameof(Robot.SaveProgram), nameof(Robot.StreamConfiguration), nameof(Robot.Resume), nameof(Robot.SetUser),
     ];
 
     /// <summary>A million characters: longer than any line a controller takes.</summary>
