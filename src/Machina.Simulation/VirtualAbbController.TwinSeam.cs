@@ -250,6 +250,26 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         return int.TryParse(body, NumberStyles.Integer, CultureInfo.InvariantCulture, out _) ? 0 : null;
     }
 
+    /// <summary>
+    /// The tool our driver holds in its PERS <c>cursorTool</c> (set by requests 8 and 9, used by its next move), or null when the
+    /// loaded program has none: a controller's state shows the tool the program selected, before a move uses it.
+    /// </summary>
+    private static Pose? DriverTool(RapidTwinController twin)
+    {
+        if (twin.Persistents.TryGetValue("cursorTool", out RapidCell? cell) && cell.Value is RapidRecord { Fields: [_, RapidRecord frame, ..] })
+        {
+            try
+            {
+                return RapidGeometry.ToPose(frame, 0);
+            }
+            catch (Exception e) when (e is RapidRuntimeException or ArgumentException)
+            {
+                return null; // not a rotation (the driver's data as the host sent it): its next move refuses it
+            }
+        }
+        return null;
+    }
+
     /// <summary>The robot as the twin's arm has it now.</summary>
     private static VirtualAbbState TwinState(RapidTwinController twin, VirtualAbbState basis)
     {
@@ -267,7 +287,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
             }
         }
         Joints joints = twin.Arm.Joints;
-        Pose tool = twin.Arm.ToolCenter;
+        Pose tool = DriverTool(twin) ?? twin.Arm.ToolCenter;
         Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * tool;
         return basis with
         {
