@@ -7,6 +7,10 @@ public sealed partial class VirtualAbbController
 {
     private protected override async Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token)
     {
+        if (request is TwinRequest twin)
+        {
+            return await AcknowledgeTwinAsync(twin, token).ConfigureAwait(false);
+        }
         var r = (AbbRequest)request;
         if (r.Code == (int)AbbInstructionCode.GetInfo)
         {
@@ -26,6 +30,10 @@ public sealed partial class VirtualAbbController
     /// <summary>The state after <paramref name="request"/> and how long it takes in real seconds (before the speed factor).</summary>
     private protected override VirtualStep Plan(VirtualAbbState s, object request)
     {
+        if (Twin is { } twin)
+        {
+            return new(TwinState(twin, s), 0); // the twin's arm already ran it: the acknowledgement reports where it is
+        }
         var r = (AbbRequest)request;
         switch (r.Instruction)
         {
@@ -97,6 +105,9 @@ public sealed partial class VirtualAbbController
                 return new(s, 0);
         }
     }
+
+    /// <summary>A request the RAPID driver read and never acknowledged (its parser refused it, or its client was gone) was not executed.</summary>
+    private protected override bool IsStale(object request) => request is TwinRequest twin && NeverAcknowledged(twin);
 
     /// <summary>Seconds for a move: the TCP travels at the speed in mm/s and turns at the same number in °/s (the driver copies v_tcp into v_ori).</summary>
     private static double MoveSeconds(double millimetres, double degrees, double speed) => Math.Max(millimetres, degrees) / Positive(speed, "speed");

@@ -17,9 +17,12 @@ public sealed partial class VirtualAbbController
     {
         var twin = new RapidTwinController(new RapidTwinOptions
         {
-            Model = Model!,
-            StartJoints = _options.InitialJoints,
-            Time = Clock,
+            Model = Model ?? RobotModels.Get(FallbackModel),
+            Seam = this,
+            Signals = Signals,
+            StartJoints = TwinStartJoints(),
+            // Robot time runs SpeedFactor times faster than the controller's clock (the UR twin's scaled clock, brand-neutral).
+            Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
         });
         // The shipped files with their placeholders filled, as an installer writes them (the host's AbbDriverModules does the same).
@@ -47,11 +50,39 @@ public sealed partial class VirtualAbbController
         twin.StartTasks();
     }
 
+    /// <summary>The arm the RAPID twin moves when the options give no model: it reaches the targets of the examples (Hello Robot).</summary>
+    internal const string FallbackModel = "IRB 1600-8/1.45";
+
+    /// <summary>The IO configuration of the twin: one DSQC 652-like board, DO_1…DO_16 and DI_1…DI_16, with AO_1…AO_4 and AI_1…AI_4.</summary>
+    internal static readonly IReadOnlyList<(string Name, string Type)> Signals =
+    [
+        .. Enumerable.Range(1, 16).Select(i => ($"DO_{i}", "signaldo")),
+        .. Enumerable.Range(1, 16).Select(i => ($"DI_{i}", "signaldi")),
+        .. Enumerable.Range(1, 4).Select(i => ($"AO_{i}", "signalao")),
+        .. Enumerable.Range(1, 4).Select(i => ($"AI_{i}", "signalai")),
+    ];
+
+    /// <summary>
+    /// Where the twin's arm starts: the joints of the start point; without a model, the fallback arm's closest solution for the
+    /// initial pose when one is given (else the initial joints).
+    /// </summary>
+    private Joints TwinStartJoints()
+    {
+        if (Model is not null || (_options.InitialPosition is null && _options.InitialRotation is null))
+        {
+            return State.Joints;
+        }
+        VirtualAbbState start = State;
+        return RobotModels.Get(FallbackModel).Kinematics.Closest(new Pose(start.Position, start.Rotation), _options.InitialJoints)
+            ?? throw new ArgumentException($"The {FallbackModel} (the arm without a model) cannot reach the initial pose {new Pose(start.Position, start.Rotation)}.");
+    }
+
     /// <summary>The name of the monitor's task, as in the monitor's .pgf and the controller's configuration.</summary>
     internal const string MonitorTask = "T_MACHINA_MONITOR";
 
     private void StopTwin()
     {
+        ReleaseTwinRequests();
         if (Twin is { } twin && !twin.StopTasks(TimeSpan.FromSeconds(10)))
         {
             RecordError("stopping: a RAPID task did not end within 10 s");

@@ -20,12 +20,11 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
     public Version DriverVersion { get; init; } = new(1, 6, 0);
 
     /// <summary>
-    /// True: the controller runs Machina's RAPID driver and monitor (drivers/abb) on a RAPID interpreter, in two tasks, as an IRC5
-    /// would; the pendant and errors show what the program did. Needs a <c>Model</c>. The fault plan, <c>State</c>, answering
-    /// pauses and request inspection (<c>ReceivedRequests</c>, <c>ExecutedIds</c>…) do not apply. False (default): Machina's driver
-    /// is imitated in C#.
+    /// True (default): the controller runs Machina's RAPID driver and monitor (drivers/abb) on a RAPID interpreter, in two tasks, as
+    /// an IRC5 would, on <c>Model</c> (an IRB 1600-8/1.45 when null); faults and inspection act on the driver task's socket. False: Machina's
+    /// driver is imitated in C# (to be removed).
     /// </summary>
-    public bool RunsRapid { get; init; }
+    public bool RunsRapid { get; init; } = true;
 
     /// <summary>Where the robot starts without a model: (374, 0, 630), tool pointing down (quaternion 0, 0, 1, 0).</summary>
     internal static Pose DefaultStart => new(new Vector(374, 0, 630), Rotation.FromQuaternion(0, 0, 1, 0));
@@ -38,9 +37,5 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
             throw new ArgumentException("MonitorPeriod must be positive.", nameof(MonitorPeriod));
         }
         ArgumentNullException.ThrowIfNull(DriverVersion);
-        if (RunsRapid && Model is null)
-        {
-            throw new ArgumentException("A virtual ABB that runs RAPID needs a robot model (the interpreter moves its kinematics); set Model.");
-        }
     }
 }

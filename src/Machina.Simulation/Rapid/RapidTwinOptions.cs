@@ -20,4 +20,7 @@ internal sealed class RapidTwinOptions
 
     /// <summary>The TCP acceleration (m/s²) motion time assumes when the program sets no WorldAccLim.</summary>
     public double Acceleration { get; init; } = 5;
+
+    /// <summary>Where a hosting controller watches and disturbs the program's sockets (faults, inspection); null: direct sockets.</summary>
+    public IRapidSocketSeam? Seam { get; init; }
 }

@@ -121,7 +121,8 @@ internal sealed class StreamProcessScenario : ProcessScenario
         var rates = new List<double>();
         for (int i = 0; i < runs; i++)
         {
-            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true });
+            // The C# imitation (RunsRapid = false), as this row always measured, until it is deleted.
+            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, RunsRapid = false });
             try
             {
                 controller.StartAsync().GetAwaiter().GetResult();

@@ -42,7 +42,8 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin
         {
             // The RAPID twin runs the driver modules on a model; an IRB 1600 reaches every point of the square below.
             var options = new VirtualAbbControllerOptions { InstantExecution = true };
-            var controller = new VirtualAbbController(twin ? options with { RunsRapid = true, Model = RobotModels.Get("IRB 1600-8/1.45") } : options);
+            // Without the twin: the C# imitation (RunsRapid = false), as this row always measured, until it is deleted.
+            var controller = new VirtualAbbController(twin ? options with { RunsRapid = true, Model = RobotModels.Get("IRB 1600-8/1.45") } : options with { RunsRapid = false });
             controller.StartAsync().GetAwaiter().GetResult();
             (_controller, port) = (controller, controller.Port);
         }

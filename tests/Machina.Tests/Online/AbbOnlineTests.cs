@@ -53,7 +53,9 @@ public class AbbOnlineTests
     [Fact]
     public async Task Release_BlockSizeFourPendingTwo_ControllerNeverHoldsMoreThanFive()
     {
-        await using var controller = await StartControllerAsync();
+        // The imitation (RunsRapid = false) reads every block at once; the RAPID driver reads 80 characters at a time, and only
+        // when it has run what it read, so what it holds while paused is not the host's window.
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, RunsRapid = false });
         Robot bot = await ConnectAsync(controller, b => { b.BlockSize = 4; b.PendingCount = 2; });
         controller.StopAnswering();
         bot.MoveTo(400, 0, 400);
@@ -97,7 +99,8 @@ public class AbbOnlineTests
         // until the host has seen the report it caused: the order of events is then the same on every machine.
         var clock = new ManualClock();
         var period = TimeSpan.FromMilliseconds(10);
-        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { MonitorPeriod = period, TimeProvider = clock, Model = null });
+        // The imitation (RunsRapid = false): its monitor counts each report it sends for this step-by-step clock.
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { MonitorPeriod = period, TimeProvider = clock, Model = null, RunsRapid = false });
         var log = new ConcurrentQueue<(string Kind, int Id, Vector? Position)>();
         int updates = 0;
         Robot bot = await ConnectAsync(controller, b =>
@@ -170,9 +173,11 @@ public class AbbOnlineTests
         Assert.Equal(Enumerable.Range(4, 17), bot.GetPendingActions().Select(a => a.Id));
         Assert.Equal(new Vector(400, 0, 420), bot.GetExecutedState().Position);
 
-        // A fresh controller where the robot stopped; the kept actions are sent again and each executed once.
+        // A fresh controller where the robot stopped; the kept actions are sent again and each executed once. The imitation
+        // (RunsRapid = false): the RAPID twin's IRB 120 refuses (400, 0, 560) with the tool flipped, which the imitation accepts.
         await using var second = await StartControllerAsync(new VirtualAbbControllerOptions
         {
+            RunsRapid = false,
             InstantExecution = true,
             InitialPosition = new Vector(400, 0, 420),
             InitialRotation = Rotation.FlippedAroundY,
@@ -327,6 +332,7 @@ public class AbbOnlineWireTests
         await using var controller = await OnlineTestSupport.StartControllerAsync(new VirtualAbbControllerOptions
         {
             InstantExecution = true,
+            RunsRapid = false, // the imitation: a RAPID driver reports the joints its arm has, never a pose chosen apart from them
             Model = null, // joints and pose chosen apart, to see each reported as received
             InitialPosition = new Vector(500, -20, 600),
             InitialJoints = new Joints(10, 20, 30, 40, 50, 60),

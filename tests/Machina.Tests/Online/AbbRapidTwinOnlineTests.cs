@@ -70,10 +70,12 @@ public class AbbRapidTwinOnlineTests
     }
 
     [Fact]
-    public void RunsRapid_WithoutModel_IsRefused()
+    public async Task RunsRapid_WithoutModel_RunsOnAnIrb1600()
     {
-        var ex = Assert.Throws<ArgumentException>(() => new VirtualAbbController(new VirtualAbbControllerOptions { RunsRapid = true, Model = null }));
+        await using var controller = new VirtualAbbController(new VirtualAbbControllerOptions { RunsRapid = true, Model = null, InstantExecution = true });
+        await controller.StartAsync();
 
-        Assert.Equal("A virtual ABB that runs RAPID needs a robot model (the interpreter moves its kinematics); set Model.", ex.Message);
+        Assert.Equal("IRB 1600-8/1.45", controller.Twin!.Arm.Model.Name);
+        Assert.Null(controller.Model);
     }
 }

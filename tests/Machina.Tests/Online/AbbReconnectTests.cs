@@ -9,10 +9,12 @@ public class AbbReconnectTests : ReconnectContract<VirtualAbbController, Virtual
 {
     protected override string Brand => "ABB";
 
-    protected override Task<VirtualAbbController> StartAsync() => StartControllerAsync();
+    // The imitation (RunsRapid = false): the contract pauses the controller and expects it to hold every released request;
+    // the RAPID driver reads only when it has run what it read (80 characters at a time), and its version is the module's.
+    protected override Task<VirtualAbbController> StartAsync() => StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, RunsRapid = false });
 
     protected override Task<VirtualAbbController> StartWithoutProgressAsync() =>
-        StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, DriverVersion = new Version(1, 5, 0), Model = null });
+        StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, DriverVersion = new Version(1, 5, 0), Model = null, RunsRapid = false });
 
     protected override Task<Robot> ConnectAsync(VirtualAbbController controller, Action<Robot> configure) =>
         OnlineTestSupport.ConnectAsync(controller, configure);

@@ -63,7 +63,10 @@ internal sealed class FaultRig : IAsyncDisposable
         {
             case "ABB":
             {
-                var c = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity });
+                // A restart that loses the buffer needs the driver task's program pointer reset, which the RAPID twin's seam does not
+                // do yet: those plans run on the C# imitation until it does.
+                bool imitation = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
+                var c = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, RunsRapid = !imitation });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
             }

@@ -8,7 +8,8 @@ public class VirtualAbbControllerTests
 {
     // These tests check the protocol with raw values (poses outside an IRB 120's reach, joints that do not match the pose),
     // so the controller keeps joints and pose apart; VirtualControllerCoreTests check the robot model.
-    private static readonly VirtualAbbControllerOptions Instant = new() { InstantExecution = true, Model = null };
+    // The C# imitation of the driver (RunsRapid = false), kept until it is deleted; VirtualAbbTwinSeamTests test the default.
+    private static readonly VirtualAbbControllerOptions Instant = new() { InstantExecution = true, Model = null, RunsRapid = false };
 
     [Fact]
     public async Task StartAsync_OsChosenPorts_MonitorIsDriverPortPlusOne()
@@ -112,6 +113,7 @@ public class VirtualAbbControllerTests
         var clock = new ManualClock();
         await using var controller = new VirtualAbbController(new VirtualAbbControllerOptions
         {
+            RunsRapid = false,
             Model = null,
             InitialPosition = new Vector(0, 0, 0),
             InitialRotation = Rotation.Identity,

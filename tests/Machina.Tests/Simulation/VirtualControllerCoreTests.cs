@@ -124,7 +124,9 @@ public class VirtualControllerCoreTests
     private static async Task<VirtualAbbController> StartAsync(bool instant = true)
     {
         // Not instant: a real clock, but every instruction here is either refused or takes no time.
-        var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = instant });
+        // The core's own planning and refusals, seen through the ABB imitation (RunsRapid = false); the RAPID twin plans nothing
+        // itself (its driver does: VirtualAbbTwinSeamTests, AbbRapidTwinOnlineTests).
+        var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = instant, RunsRapid = false });
         await controller.StartAsync();
         return controller;
     }

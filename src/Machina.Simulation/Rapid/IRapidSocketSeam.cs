@@ -1,0 +1,19 @@
+using System.Net.Sockets;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Where a controller that hosts the twin watches and disturbs the program's own sockets, at the points a real controller's
+/// network has: a connection accepted, text received, text sent. Without a seam the sockets work directly.
+/// </summary>
+internal interface IRapidSocketSeam
+{
+    /// <summary>A connection was accepted on <paramref name="localPort"/>; false refuses it (it is closed and SocketAccept waits on).</summary>
+    bool Accepted(int localPort, Socket connection, CancellationToken task);
+
+    /// <summary>The program received <paramref name="text"/> on <paramref name="connection"/> (SocketReceive returns it next).</summary>
+    void Received(Socket connection, string text, CancellationToken task);
+
+    /// <summary>The program sends <paramref name="bytes"/> on <paramref name="connection"/>; false when the connection is closed (ERR_SOCK_CLOSED).</summary>
+    bool Send(Socket connection, byte[] bytes, CancellationToken task);
+}
