@@ -15,6 +15,11 @@ public sealed partial class VirtualKukaController
 
     private protected override async Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token)
     {
+        if (request is TwinAction twinAction)
+        {
+            // Planned means acknowledged by the driver already.
+            return await AcknowledgeTwinAsync(await twinAction.Acknowledged.Task.ConfigureAwait(false), token).ConfigureAwait(false);
+        }
         byte[] ack = Encoding.ASCII.GetBytes(KukaMessages.Acknowledgement(id));
         switch (_options.AcknowledgementWrites)
         {
@@ -41,6 +46,12 @@ public sealed partial class VirtualKukaController
     /// <summary>The state after <paramref name="request"/> and how long it takes in real seconds (before the speed factor).</summary>
     private protected override VirtualStep Plan(VirtualKukaState s, object request)
     {
+        if (request is TwinAction twinAction)
+        {
+            AwaitTwinAction(twinAction, _twinToken);
+            // The twin's driver ran it on its arm already: the state the controller keeps is the twin's now.
+            return new(Twin is { } twin ? TwinState(twin, s) : s, 0);
+        }
         var a = (KukaInstruction)request;
         KukaValues v = a.Values;
         switch (a.Code)

@@ -12,6 +12,10 @@ public sealed partial class VirtualKukaController
     /// </summary>
     private protected override async Task<bool> StopsOnRefusalAsync(object request, int id, VirtualRefusalException refusal, CancellationToken token)
     {
+        if (request is TwinAction)
+        {
+            return true; // the twin's driver sent its failure and halted
+        }
         int? code = refusal.Kind switch
         {
             VirtualRefusalKind.Reach => KukaFailure.NotReachable,

@@ -1,6 +1,7 @@
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
+using Machina.Simulation.Krl;
 
 namespace Machina.Simulation;
 
@@ -52,6 +53,10 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
     {
         get
         {
+            if (Twin is { } twin)
+            {
+                return TimeSpan.FromMilliseconds(KrlValues.ToInt(twin.Modules[MonitorChannel].Data["mon_ms"].Value));
+            }
             lock (Gate)
             {
                 return _monitorPeriod;
@@ -88,6 +93,11 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
         (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
+        if (_options.RunsKrl)
+        {
+            StartTwin(_driverListener, _monitorListener, token);
+            return Task.CompletedTask;
+        }
         // Like the KRL driver: whatever the last client sent is in the ring before the next one gets the state.
         Run(token => ServeDriverClientsAsync(_driverListener, GreetAsync, ReadBatchesAsync, token));
         Run(token => ServeClientsAsync(_monitorListener, ServeMonitorAsync, token));

@@ -32,6 +32,13 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
     /// <summary>How acknowledgements are written. Default: one write each.</summary>
     public AcknowledgementWrites AcknowledgementWrites { get; init; } = AcknowledgementWrites.Whole;
 
+    /// <summary>
+    /// True (default): the controller runs Machina's KRL driver and monitor (drivers/kuka, unchanged) on a KRL interpreter with
+    /// EthernetKRL, the monitor in the submit interpreter, as a KR C4 would; faults act on the EthernetKRL channels. False: the
+    /// driver is imitated in C# (needed for a <see cref="DriverVersion"/> other than 2.0, which the shipped driver is).
+    /// </summary>
+    public bool RunsKrl { get; init; } = true;
+
     /// <summary>Where the robot starts without a model: (455, 0, 935) with the tool pointing down.</summary>
     internal static Pose DefaultStart => new(new Vector(455, 0, 935), Rotation.FlippedAroundY);
 
@@ -43,5 +50,13 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
             throw new ArgumentException("MonitorPeriod must be positive.", nameof(MonitorPeriod));
         }
         ArgumentNullException.ThrowIfNull(DriverVersion);
+        if (RunsKrl && DriverVersion != new Version(2, 0))
+        {
+            throw new ArgumentException($"A virtual KUKA that runs KRL runs the shipped driver, version 2.0, not {DriverVersion}; set RunsKrl to false to imitate another.", nameof(DriverVersion));
+        }
+        if (RunsKrl && Faults.Kinds.Contains(VirtualFault.RestartLosingBuffer) && (Faults.Chance > 0 || Faults.After > 0))
+        {
+            throw new ArgumentException("A virtual KUKA that runs KRL cannot lose its buffer and keep its progress (RestartLosingBuffer): the driver's ring and its progress are both in the program, which a restart starts afresh; set RunsKrl to false to imitate it.", nameof(Faults));
+        }
     }
 }

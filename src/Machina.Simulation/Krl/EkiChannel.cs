@@ -19,6 +19,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     private TcpListener? _listener;
     private TcpClient? _client;
     private CancellationTokenSource? _stop;
+    private TcpListener? _reserved;
 
     /// <summary>The channel's name (its configuration file without .xml).</summary>
     public string Name { get; } = name;
@@ -38,13 +39,15 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         }
     }
 
-    /// <summary>EKI_Open: the robot starts listening on <paramref name="port"/> (0: any free port); returns the port.</summary>
+    /// <summary>EKI_Open: the robot starts listening on <paramref name="port"/> (0: any free port, or its reserved socket); returns the port.</summary>
     public int Open(IPAddress address, int port)
     {
         if (!Configuration.RobotIsServer)
         {
             throw new KrlRuntimeException($"EthernetKRL: the channel {Name} has the robot as client; the twin only listens (TYPE Client)");
         }
+        TcpListener listener;
+        CancellationToken stop;
         lock (_gate)
         {
             if (_listener is not null || _client is not null)
@@ -52,29 +55,51 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
                 throw new KrlRuntimeException($"EthernetKRL: the channel {Name} is already open");
             }
             _stop = new CancellationTokenSource();
-            _listener = new TcpListener(address, port);
-            _listener.Start(1);
+            stop = _stop.Token;
+            _reserved = controller.Reserved(Name);
+            if (_reserved is null)
+            {
+                _listener = new TcpListener(address, port);
+                _listener.Start(1);
+            }
+            else
+            {
+                _listener = _reserved;
+            }
+            listener = _listener;
         }
-        int bound = ((IPEndPoint)_listener.LocalEndpoint).Port;
-        _ = Task.Run(() => AcceptAsync(_listener, _stop.Token));
+        int bound = ((IPEndPoint)listener.LocalEndpoint).Port;
+        _ = Task.Run(() => AcceptAsync(listener, stop));
         return bound;
     }
 
     private async Task AcceptAsync(TcpListener listener, CancellationToken token)
     {
         TcpClient client;
-        try
+        while (true)
         {
-            client = await listener.AcceptTcpClientAsync(token).ConfigureAwait(false);
+            try
+            {
+                client = await listener.AcceptTcpClientAsync(token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException or InvalidOperationException)
+            {
+                return;
+            }
+            client.NoDelay = true;
+            if (token.IsCancellationRequested || controller.Options.Seam?.Accepted(this, client) != false)
+            {
+                break;
+            }
+            // Refused by the seam (a fault): closed at once, and the channel listens on.
+            client.Dispose();
         }
-        catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException)
-        {
-            return;
-        }
-        client.NoDelay = true;
         lock (_gate)
         {
-            listener.Stop();
+            if (!ReferenceEquals(listener, _reserved))
+            {
+                listener.Stop();
+            }
             _listener = null;
             if (token.IsCancellationRequested)
             {
@@ -144,6 +169,8 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     /// <summary>Stores a complete document's values, then sets its flags (a memory over its limit closes the connection).</summary>
     private void Commit(List<(string Tag, string Value)> document, List<int> flags)
     {
+        // The seam sees the document before the program can take any of its values.
+        controller.Options.Seam?.Received(this, [.. document]);
         bool overflow = false;
         lock (_gate)
         {
@@ -183,6 +210,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             _client = null;
         }
         client.Dispose();
+        controller.Options.Seam?.Closed(this, client);
         Alive(false);
     }
 
@@ -272,13 +300,30 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         {
             throw new KrlRuntimeException($"EthernetKRL: the channel {Name} sends no element {root} (see its SEND configuration)");
         }
+        string text = xml.Append(" />").ToString();
+        if (controller.Options.Seam is { } seam)
+        {
+            // The seam sees every send, also one without a connection (it counts what was lost).
+            return seam.Send(this, root, text);
+        }
+        return client is not null && SendDirect(Encoding.UTF8.GetBytes(text));
+    }
+
+    /// <summary>Writes <paramref name="bytes"/> to the channel's client; false without one or when the connection broke.</summary>
+    public bool SendDirect(ReadOnlySpan<byte> bytes)
+    {
+        TcpClient? client;
+        lock (_gate)
+        {
+            client = _client;
+        }
         if (client is null)
         {
             return false;
         }
         try
         {
-            client.GetStream().Write(Encoding.UTF8.GetBytes(xml.Append(" />").ToString()));
+            client.GetStream().Write(bytes);
             return true;
         }
         catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException or InvalidOperationException)
@@ -297,7 +342,10 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         lock (_gate)
         {
             _stop?.Cancel();
-            _listener?.Stop();
+            if (!ReferenceEquals(_listener, _reserved))
+            {
+                _listener?.Stop();
+            }
             _listener = null;
             client = _client;
         }

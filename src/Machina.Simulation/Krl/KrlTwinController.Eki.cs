@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Net.Sockets;
 
 namespace Machina.Simulation.Krl;
 
@@ -18,6 +19,7 @@ internal sealed partial class KrlTwinController
     private readonly Dictionary<string, EkiConfiguration> _ekiConfigurations = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, EkiChannel> _ekiChannels = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, int> _ekiPorts = new(StringComparer.OrdinalIgnoreCase);
+    private readonly Dictionary<string, TcpListener> _ekiReserved = new(StringComparer.OrdinalIgnoreCase);
 
     /// <summary>How many EthernetKRL channels are initialised (a WAIT FOR may wait on them).</summary>
     public int EkiOpenChannels
@@ -48,6 +50,28 @@ internal sealed partial class KrlTwinController
         lock (_gate)
         {
             return _ekiPorts.GetValueOrDefault(name);
+        }
+    }
+
+    /// <summary>
+    /// Gives channel <paramref name="name"/> a socket bound already (its port known before the program opens it): EKI_Open accepts
+    /// on it, and it keeps listening after EKI_Close (the owner stops it).
+    /// </summary>
+    public void Reserve(string name, TcpListener listener)
+    {
+        lock (_gate)
+        {
+            _ekiReserved[name] = listener;
+            _ekiPorts[name] = ((System.Net.IPEndPoint)listener.LocalEndpoint).Port;
+        }
+    }
+
+    /// <summary>The socket reserved for channel <paramref name="name"/>, or null.</summary>
+    internal TcpListener? Reserved(string name)
+    {
+        lock (_gate)
+        {
+            return _ekiReserved.GetValueOrDefault(name);
         }
     }
 

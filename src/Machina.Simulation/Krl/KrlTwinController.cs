@@ -20,7 +20,7 @@ internal sealed partial class KrlTwinController : IDisposable
     {
         Options = options ?? new KrlTwinOptions();
         Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock);
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace };
         KrlSystemVariables.AddTo(Environment, this);
         KrlBuiltins.AddTo(Environment);
         AddEki();

@@ -33,6 +33,12 @@ internal sealed class KrlTwinOptions
     /// <summary>The folder that holds the EthernetKRL XML configurations (null: the drivers/kuka configurations are given to the controller directly).</summary>
     public string? EkiConfigurationFolder { get; init; }
 
+    /// <summary>How many steps of the arm's trace are kept at least (0: all of them).</summary>
+    public int MaxTrace { get; init; }
+
+    /// <summary>Where a controller around the twin watches and shapes the EthernetKRL channels (null: none).</summary>
+    public IEkiSeam? Seam { get; init; }
+
     /// <summary>The address EthernetKRL server channels listen on (loopback for tests).</summary>
     public System.Net.IPAddress ListenAddress { get; init; } = System.Net.IPAddress.Loopback;
 }

@@ -37,7 +37,8 @@ public class KukaOnlineTests
         Assert.Equal("<A ID=\"7\" T=\"3\" V1=\"0\" V2=\"0\" V3=\"0\" V4=\"0\" V5=\"90\" V6=\"0\" V7=\"0\" M=\"\"/>", controller.ReceivedRequests[6]);
         await EventuallyAsync(() => controller.AcknowledgementsSent == 7, "the controller to count its acknowledgements");
         Assert.Empty(controller.Errors);
-        Assert.Contains("Hello Robot!", controller.PendantMessages);
+        // The driver's notification message, as the smartPAD's message window shows it: module, number, text.
+        Assert.Contains("NOTIFY Machina 1: Hello Robot!", controller.PendantMessages);
         // The arm went where the host said, in the host's pose convention: after the rotation and the lift the tool is
         // at (400, 300, 750) with the host's orientation, then the axes.
         Pose final = RobotModels.Get("KR 6 R900 sixx").Kinematics.Forward(new Joints(0, 0, 0, 0, 90, 0));
@@ -58,7 +59,7 @@ public class KukaOnlineTests
         bot.Move(0, 0, 250);
         await bot.WaitForCompletionAsync().WaitAsync(Limit);
 
-        Assert.Equal(new Vector(400, 300, 750), controller.State.Position);
+        Assert.True(Vector.Distance(new Vector(400, 300, 750), controller.State.Position) < 1e-6, $"{controller.State.Position}");
         Assert.True(controller.State.Rotation.AngleTo(bot.GetCurrentRotation()!.Value) < 1e-3);
         Assert.Empty(controller.Errors);
         await bot.DisconnectAsync();
@@ -105,7 +106,8 @@ public class KukaOnlineTests
         Assert.Equal(received.Count, controller.RequestsExecuted);
         Assert.InRange(received.Count, 900, issued);
         Assert.InRange(controller.MaxUnacknowledged, 1, KukaProtocol.Capacity);
-        Assert.Equal(expectedMessages, controller.PendantMessages.Where(m => m.StartsWith('#')));
+        const string Notify = "NOTIFY Machina 1: ";
+        Assert.Equal(expectedMessages, controller.PendantMessages.Where(m => m.StartsWith(Notify + "#", StringComparison.Ordinal)).Select(m => m[Notify.Length..]));
         Assert.Empty(controller.Errors);
         Assert.True(Vector.Distance(bot.GetCurrentPosition()!.Value, controller.State.Position) < 1e-6);
         Assert.True(bot.GetCurrentRotation()!.Value.AngleTo(controller.State.Rotation) < 1e-3);
@@ -159,7 +161,7 @@ public class KukaOnlineTests
 
         Assert.Equal(Enumerable.Range(1, 60), executed);
         Assert.Equal(Enumerable.Range(1, 60), ReceivedIds(controller));
-        Assert.Equal(new Vector(400, 10, 500), controller.State.Position);
+        Assert.True(Vector.Distance(new Vector(400, 10, 500), controller.State.Position) < 1e-6, $"{controller.State.Position}");
         await bot.DisconnectAsync();
     }
 
@@ -205,7 +207,7 @@ public class KukaOnlineTests
         bot.AttachTool("gripper");
         await bot.WaitForCompletionAsync().WaitAsync(Limit);
 
-        Assert.Contains(new string('a', 70) + " and the r", controller.PendantMessages);
+        Assert.Contains("NOTIFY Machina 1: " + new string('a', 70) + " and the r", controller.PendantMessages);
         Assert.Contains(log, e => e.Level == LogLevel.WARNING && e.Message.Contains("messages hold 80 characters", StringComparison.Ordinal));
         Assert.Contains(log, e => e.Level == LogLevel.WARNING && e.Message.Contains("tool \"gripper\" are not sent", StringComparison.Ordinal));
         Assert.Equal(new Pose(new Vector(0, 0, 120), Rotation.Identity), controller.State.Tool);

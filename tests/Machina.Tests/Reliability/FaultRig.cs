@@ -78,7 +78,13 @@ internal sealed class FaultRig : IAsyncDisposable
             }
             case "KUKA":
             {
-                var c = new VirtualKukaController(new VirtualKukaControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites });
+                // RestartLosingBuffer cannot happen to the KRL driver (its ring and its progress restart together), so only the
+                // imitation injects it; every other fault acts on the KRL twin's EthernetKRL channel.
+                bool losesBuffer = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
+                var c = new VirtualKukaController(new VirtualKukaControllerOptions
+                {
+                    InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites, RunsKrl = !losesBuffer,
+                });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
             }

@@ -3,6 +3,7 @@ using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation;
 using Machina.Tests.Online;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Simulation;
 
@@ -23,8 +24,11 @@ public class VirtualKukaControllerTests
         Assert.Equal(new DeviceProgress(0, 0), KukaState.Parse(state).Progress);
     }
 
+    /// <summary>The driver's quit message for <paramref name="text"/>, as the smartPAD's message window shows it (80 characters at most).</summary>
+    private static string Quit(string text) => "QUIT Machina 2: " + text[..Math.Min(80, text.Length)];
+
     [Fact]
-    public async Task Batch_MoreActionsThanTheRingHolds_RefusedAndTheClientDropped()
+    public async Task Batch_MoreActionsThanTheRingHolds_DriverQuitsAndHaltsBeforeRunningAny()
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
         controller.StopAnswering();
@@ -34,26 +38,43 @@ public class VirtualKukaControllerTests
         KukaInstruction.AppendBatch(sb, Enumerable.Range(1, KukaProtocol.Capacity + 1).Select(id => new KukaInstruction(id, KukaActionCode.Wait, new KukaValues(), "")));
         await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(sb.ToString()));
 
-        using var cts = new CancellationTokenSource(Timeout);
-        Assert.Equal(0, await client.GetStream().ReadAsync(new byte[16], cts.Token));
-        Assert.Equal(KukaProtocol.Capacity, controller.RequestsReceived);
-        Assert.Contains($"the host sent action {KukaProtocol.Capacity + 1} while the {KukaProtocol.Capacity} slots of the ring hold actions not executed", Assert.Single(controller.Errors), StringComparison.Ordinal);
+        // machina_take finds slot 1 still holding action 1 when it reaches action 101: the driver stops rather than overwrite it.
+        await Eventually.TrueAsync(() => controller.PendantMessages.Contains(Quit("Machina sent more than 100 actions not executed yet; the driver stops.")), "the quit message", Timeout);
+        Assert.Equal(KukaProtocol.Capacity + 1, controller.RequestsReceived);
+        controller.ResumeAnswering();
+        Assert.Empty(controller.ExecutedIds);
+        Assert.Equal(0, controller.AcknowledgementsSent);
     }
 
     [Theory]
-    [InlineData("<DT><DR><A ID=\"1\"/></DR></DT>", "has no attribute")]
-    [InlineData("<XX/>", "expected a batch")]
-    [InlineData("<DT><DR><A ID=\"1\" T=\"99\" V1=\"0\" V2=\"0\" V3=\"0\" V4=\"0\" V5=\"0\" V6=\"0\" V7=\"0\" M=\"\"/></DR></DT>", "T=\"99\"")]
-    public async Task Batch_Malformed_ErrorKeptAndClientDropped(string batch, string expected)
+    [InlineData("<DT><DR><A ID=\"1\"/></DR></DT>")]
+    [InlineData("<DT><DR><A ID=\"1\" T=\"99\" V1=\"0\" V2=\"0\" V3=\"0\" V4=\"0\" V5=\"0\" V6=\"0\" V7=\"0\" M=\"\"/></DR></DT>")]
+    public async Task Batch_ActionOfNoKnownType_DriverQuitsAndHaltsWithoutAcknowledging(string batch)
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
         using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
         await KukaTestSupport.ReadElementAsync(client, new KukaXmlReader());
         await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(batch));
 
-        using var cts = new CancellationTokenSource(Timeout);
-        Assert.Equal(0, await client.GetStream().ReadAsync(new byte[16], cts.Token));
-        Assert.Contains(expected, Assert.Single(controller.Errors), StringComparison.Ordinal);
-        Assert.Equal(0, controller.RequestsReceived);
+        // Without T (the EthernetKRL memory is empty, the slot keeps its 0) or with 99, the driver's SWITCH reaches DEFAULT.
+        await Eventually.TrueAsync(() => controller.PendantMessages.Contains(Quit("Machina sent an action type this driver does not know; load the driver that matches Machina.")), "the quit message", Timeout);
+        Assert.Equal(1, controller.RequestsReceived);
+        Assert.Empty(controller.ExecutedIds);
+        Assert.Equal(0, controller.AcknowledgementsSent);
+    }
+
+    [Fact]
+    public async Task Document_NotInTheChannelsConfiguration_IgnoredAndTheNextBatchRuns()
+    {
+        await using var controller = await KukaTestSupport.StartKukaAsync();
+        using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
+        var reader = new KukaXmlReader();
+        await KukaTestSupport.ReadElementAsync(client, reader);
+        await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes("<XX/><DT><DR><A ID=\"1\" T=\"7\" V1=\"0\" V2=\"0\" V3=\"0\" V4=\"0\" V5=\"0\" V6=\"0\" V7=\"0\" M=\"\"/></DR></DT>"));
+
+        KukaElement ack = await KukaTestSupport.ReadElementAsync(client, reader);
+        Assert.Equal(("R", 1), (ack.Name, ack.Integer("ID")));
+        Assert.Equal([1], controller.ExecutedIds);
+        Assert.Empty(controller.Errors);
     }
 }

@@ -38,7 +38,10 @@ public class VirtualKukaFailureTests
         Assert.Equal((KukaProtocol.Failure, 2, code.ToString(Num.Inv), text), (second.Name, second.Integer("ID"), second.Attribute("Code"), second.Attribute("Text")));
         Assert.Equal([1], controller.ExecutedIds);
         Assert.Equal(new Joints(0, -80, 90, 0, 90, 0), controller.State.Joints);
-        Assert.Contains("Machina: " + text, controller.PendantMessages);
+        // The driver's quit message (module, number, text of at most 80 characters), shown after it sent the failure.
+        string quit = "QUIT Machina 2: " + text[..Math.Min(80, text.Length)];
+        await Machina.Tests.Support.Eventually.TrueAsync(() => controller.PendantMessages.Contains(quit) && controller.Errors.Count > 0, "the quit message and the error", Timeout);
+        Assert.Equal("refused: " + text, Assert.Single(controller.Errors));
         await controller.StopAsync();
         Assert.Equal([1], controller.ExecutedIds);
         Assert.Equal(1, controller.AcknowledgementsSent);

@@ -1,0 +1,23 @@
+using System.Net.Sockets;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// Where a controller around the KRL twin watches and shapes an EthernetKRL channel, at the points a real controller's network
+/// has: a client connecting, a document arriving, the program's EKI_Send, the connection ending. Used for fault injection and
+/// inspection; without a seam the channel talks to its client directly.
+/// </summary>
+internal interface IEkiSeam
+{
+    /// <summary>A client connected to <paramref name="channel"/>; false refuses it (the channel closes it and listens on).</summary>
+    bool Accepted(EkiChannel channel, TcpClient client);
+
+    /// <summary>A whole document arrived on <paramref name="channel"/>: its values in order (before the program can read them).</summary>
+    void Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values);
+
+    /// <summary>The program's EKI_Send of <paramref name="root"/> as <paramref name="xml"/>; true when it was sent (use <see cref="EkiChannel.SendDirect"/>).</summary>
+    bool Send(EkiChannel channel, string root, string xml);
+
+    /// <summary>The connection of <paramref name="client"/> to <paramref name="channel"/> ended.</summary>
+    void Closed(EkiChannel channel, TcpClient client);
+}

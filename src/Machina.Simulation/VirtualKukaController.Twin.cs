@@ -1,0 +1,136 @@
+using System.Globalization;
+using System.Net.Sockets;
+using Machina.Simulation.Krl;
+
+namespace Machina.Simulation;
+
+public sealed partial class VirtualKukaController
+{
+    /// <summary>The EthernetKRL channel of the driver, as its configuration file is named.</summary>
+    internal const string DriverChannel = "machina_kuka_server";
+
+    /// <summary>The EthernetKRL channel of the monitor, as its configuration file is named.</summary>
+    internal const string MonitorChannel = "machina_kuka_monitor";
+
+    /// <summary>
+    /// The driver's $ADVANCE on the virtual KUKA: 0 (<c>machina drivers kuka</c> can write it), what the twin does anyway (its
+    /// motion runs in the robot interpreter's thread): an acknowledged motion has arrived.
+    /// </summary>
+    private const string DefaultAdvance = "0";
+
+    /// <summary>How often the submit interpreter calls the monitor (sps.sub's loop); its $TIMER decides when a report goes out.</summary>
+    internal static readonly TimeSpan SubmitCycle = TimeSpan.FromMilliseconds(4);
+
+    /// <summary>How many steps of the arm's trace the controller keeps: a stream of millions of moves must not keep every pose.</summary>
+    internal const int MaxTraceSteps = 10_000;
+
+    /// <summary>The KRL controller that runs Machina's driver and monitor (<see cref="VirtualKukaControllerOptions.RunsKrl"/>), else null.</summary>
+    internal KrlTwinController? Twin { get; private set; }
+
+    /// <summary>
+    /// Loads drivers/kuka as <c>machina drivers kuka</c> writes them (driver channel on <see cref="Port"/>, monitor on port + 1),
+    /// starts the driver on the robot interpreter and the monitor in the submit interpreter; the channels accept on the sockets
+    /// bound here.
+    /// </summary>
+    private void StartTwin(TcpListener driver, TcpListener monitor, CancellationToken token)
+    {
+        _twinToken = token;
+        var twin = new KrlTwinController(new KrlTwinOptions
+        {
+            Model = Model ?? RobotModels.Get("KR 6 R900 sixx"),
+            StartJoints = base.State.Joints,
+            Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
+            RealTime = !_options.InstantExecution,
+            Seam = this,
+            MaxTrace = MaxTraceSteps,
+        });
+        // The shipped files with their placeholders filled, as an installer writes them: driver on Port, monitor on Port + 1.
+        string Fill(string file, int port) => DriverFiles.Fill(DriverFiles.Read("kuka", file),
+            ("HOSTNAME", "127.0.0.1"), ("PORT", port.ToString(CultureInfo.InvariantCulture)), ("ADVANCE", DefaultAdvance));
+        twin.AddEkiConfiguration(DriverChannel, Fill(DriverChannel + ".xml", Port));
+        twin.AddEkiConfiguration(MonitorChannel, Fill(MonitorChannel + ".xml", MonitorPort));
+        twin.Load([.. new[] { "machina_kuka_driver.src", "machina_kuka_driver.dat", "machina_kuka_monitor.src", "machina_kuka_monitor.dat" }
+            .Select(name => (name, Fill(name, Port)))]);
+        // The monitor's first rate, as if its data list had been edited before loading (the host sends its own with MON).
+        twin.Modules[MonitorChannel].Data["mon_ms"].Value = (int)Math.Clamp(_options.MonitorPeriod.TotalMilliseconds, 1, 3_600_000);
+        twin.Pendant.Logged += line =>
+        {
+            if (line.StartsWith("EthernetKRL", StringComparison.Ordinal) || line.StartsWith("Submit interpreter stopped", StringComparison.Ordinal))
+            {
+                RecordError(line);
+            }
+            else
+            {
+                Pendant(line);
+            }
+        };
+        twin.Reserve(DriverChannel, driver);
+        twin.Reserve(MonitorChannel, monitor);
+        Twin = twin;
+        Run(_ => RunTwinAsync(twin, token));
+    }
+
+    /// <summary>The driver on the robot interpreter and the monitor in the submit interpreter, each on a thread of its own, until the controller stops.</summary>
+    private async Task RunTwinAsync(KrlTwinController twin, CancellationToken token)
+    {
+        Task program = Task.Factory.StartNew(() =>
+        {
+            if (twin.Run("machina_kuka_driver", token) == KrlProgramState.Failed && !token.IsCancellationRequested)
+            {
+                RecordError(twin.Error ?? "the driver stopped");
+            }
+        }, CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        Task submit = Task.Factory.StartNew(() => twin.RunSubmit("machina_kuka_monitor", SubmitCycle, token),
+            CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        try
+        {
+            await Task.WhenAll(program, submit).ConfigureAwait(false);
+        }
+        finally
+        {
+            twin.Dispose();
+        }
+    }
+
+    /// <summary>The robot now: where the twin's arm is, with the driver's settings and the outputs.</summary>
+    public new VirtualKukaState State => Twin is { } twin ? TwinState(twin, base.State) : base.State;
+
+    private static VirtualKukaState TwinState(KrlTwinController twin, VirtualKukaState basis)
+    {
+        Joints joints = twin.Arm.Joints;
+        Pose tool = twin.Arm.ToolCenter;
+        Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * tool;
+        var digital = new Dictionary<string, bool>();
+        object[] outs = ((KrlArrayValue)twin.Environment.System["$OUT"].Value).Items;
+        for (int i = 0; i < outs.Length; i++)
+        {
+            if ((bool)outs[i])
+            {
+                digital[(i + 1).ToString(CultureInfo.InvariantCulture)] = true;
+            }
+        }
+        var analog = new Dictionary<string, double>();
+        object[] anouts = ((KrlArrayValue)twin.Environment.System["$ANOUT"].Value).Items;
+        for (int i = 0; i < anouts.Length; i++)
+        {
+            double v = KrlValues.ToReal(anouts[i]);
+            if (v != 0)
+            {
+                analog[(i + 1).ToString(CultureInfo.InvariantCulture)] = v;
+            }
+        }
+        var vel = (KrlStructValue)twin.Environment.System["$VEL"].Value;
+        var apo = (KrlStructValue)twin.Environment.System["$APO"].Value;
+        return basis with
+        {
+            Position = tcp.Position,
+            Rotation = tcp.Rotation,
+            Joints = joints,
+            Tool = tool.Position == Vector.Zero && tool.Rotation.IsSimilar(Rotation.Identity, 1e-9) ? null : tool,
+            Speed = KrlValues.ToReal(vel.Values[0]) * 1000,
+            Zone = apo.Number("CDIS"),
+            DigitalOutputs = digital,
+            AnalogOutputs = analog,
+        };
+    }
+}

@@ -1,0 +1,284 @@
+using System.Globalization;
+using System.Net.Sockets;
+using System.Text;
+using Machina.Simulation.Krl;
+
+namespace Machina.Simulation;
+
+/// <summary>
+/// The virtual KUKA's faults and inspection, at the seams a KR C4 has: its EthernetKRL channels. A client that connects to the
+/// driver channel becomes the driver connection (or is refused by the fault plan); each document the host sends is logged as
+/// received, action by action; the driver's EKI_Send of an acknowledgement (<c>R</c>) goes through the controller's fault plan
+/// (held, delayed, cut, lost, followed by a drop) and is counted as executed, the driver waiting there as on a slow network.
+/// The monitor's reports (<c>P</c>) are counted.
+/// </summary>
+public sealed partial class VirtualKukaController : IEkiSeam
+{
+    private readonly Dictionary<int, TaskCompletionSource<TwinAck>> _acks = [];
+    private CancellationToken _twinToken;
+    private byte[]? _heldTwinAcknowledgement;
+
+    /// <summary>An action the driver received: it enters the controller's buffer and is executed when the driver acknowledges it.</summary>
+    private sealed record TwinAction(int Id, TaskCompletionSource<TwinAck> Acknowledged);
+
+    /// <summary>
+    /// An acknowledgement the driver is sending (its action ran, the fault plan decides what reaches the host), or with
+    /// <paramref name="Failure"/> the text of the failure it sent instead.
+    /// </summary>
+    private sealed record TwinAck(int Id, byte[] Bytes, TaskCompletionSource<bool> Done, string? Failure = null)
+    {
+        /// <summary>True when the driver ran the action and never sent its acknowledgement (its state told the host instead).</summary>
+        public bool Unsent { get; init; }
+    }
+
+    bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client) =>
+        !IsDriver(channel) || AttachClientAsync(client, (_, _) => Task.CompletedTask, _twinToken).GetAwaiter().GetResult();
+
+    void IEkiSeam.Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
+    {
+        if (!IsDriver(channel))
+        {
+            return;
+        }
+        // Each action's values, from its ID to the next ID, as the element the host wrote.
+        var actions = new List<(int Id, string Text)>();
+        StringBuilder? action = null;
+        int id = 0;
+        foreach ((string tag, string value) in values)
+        {
+            if (tag == "DT/DR/A/@ID")
+            {
+                if (action is not null)
+                {
+                    actions.Add((id, action.Append("/>").ToString()));
+                }
+                action = new StringBuilder("<A");
+                id = int.TryParse(value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
+            }
+            int at = tag.LastIndexOf('@');
+            action?.Append(' ').Append(tag, at + 1, tag.Length - at - 1).Append("=\"").Append(Escape(value)).Append('"');
+        }
+        if (action is not null)
+        {
+            actions.Add((id, action.Append("/>").ToString()));
+        }
+        try
+        {
+            foreach ((int actionId, string text) in actions)
+            {
+                EnqueueAsync(new TwinAction(actionId, Acknowledgement(actionId)), actionId, text, _twinToken).AsTask().GetAwaiter().GetResult();
+            }
+        }
+        catch (Exception e) when (e is OperationCanceledException or System.Threading.Channels.ChannelClosedException)
+        {
+            // Stopping.
+        }
+    }
+
+    /// <summary>Where the acknowledgement of action <paramref name="id"/> meets its entry in the buffer.</summary>
+    private TaskCompletionSource<TwinAck> Acknowledgement(int id)
+    {
+        lock (Gate)
+        {
+            if (!_acks.TryGetValue(id, out TaskCompletionSource<TwinAck>? ack))
+            {
+                ack = new TaskCompletionSource<TwinAck>(TaskCreationOptions.RunContinuationsAsynchronously);
+                _acks[id] = ack;
+            }
+            return ack;
+        }
+    }
+
+    private static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
+        .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
+
+    bool IEkiSeam.Send(EkiChannel channel, string root, string xml)
+    {
+        byte[] bytes = Encoding.UTF8.GetBytes(xml);
+        if (!IsDriver(channel))
+        {
+            bool sent = channel.SendDirect(bytes);
+            if (sent && root == "P")
+            {
+                Interlocked.Increment(ref _monitorReportsSent);
+            }
+            return sent;
+        }
+        try
+        {
+            if (root == "F")
+            {
+                FailureSent(xml);
+            }
+            else if (root == "S")
+            {
+                StateSent(xml);
+            }
+            if (root != "R")
+            {
+                return SendToClientAsync(bytes, _twinToken).GetAwaiter().GetResult();
+            }
+            TaskCompletionSource<TwinAck>? entry;
+            int id = IdOf(xml);
+            lock (Gate)
+            {
+                _acks.Remove(id, out entry);
+            }
+            if (entry is null)
+            {
+                // An action the controller's buffer never held: sent as it is.
+                return SendToClientAsync(bytes, _twinToken).GetAwaiter().GetResult();
+            }
+            var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
+            entry.TrySetResult(new TwinAck(id, bytes, done));
+            return done.Task.WaitAsync(_twinToken).GetAwaiter().GetResult();
+        }
+        catch (Exception e) when (e is OperationCanceledException or System.Threading.Channels.ChannelClosedException)
+        {
+            throw new OperationCanceledException("the controller stops", e, _twinToken);
+        }
+    }
+
+    /// <summary>
+    /// The buffer reached an action: it counts as executed when the driver acknowledges it (the execution loop waits for that);
+    /// a refusal with the driver's text when the driver sent a failure instead.
+    /// </summary>
+    private static TwinAck AwaitTwinAction(TwinAction action, CancellationToken token)
+    {
+        TwinAck ack = action.Acknowledged.Task.WaitAsync(token).GetAwaiter().GetResult()!;
+        return ack.Failure is { } failure ? throw new VirtualRefusalException(failure) : ack;
+    }
+
+    void IEkiSeam.Closed(EkiChannel channel, TcpClient client)
+    {
+        if (IsDriver(channel))
+        {
+            DropClient(client);
+        }
+    }
+
+    private static bool IsDriver(EkiChannel channel) => string.Equals(channel.Name, DriverChannel, StringComparison.OrdinalIgnoreCase);
+
+    /// <summary>The ID attribute of an element the driver sends (0 when it has none).</summary>
+    private static int IdOf(string xml) => IntegerOf(xml, " ID=\"");
+
+    /// <summary>The integer after <paramref name="attribute"/> (name, equals sign and opening quote) in <paramref name="xml"/>, or 0.</summary>
+    private static int IntegerOf(string xml, string attribute)
+    {
+        int start = xml.IndexOf(attribute, StringComparison.Ordinal);
+        if (start < 0)
+        {
+            return 0;
+        }
+        start += attribute.Length;
+        int end = xml.IndexOf('"', start);
+        return int.TryParse(xml.AsSpan(start, end - start), NumberStyles.Integer, CultureInfo.InvariantCulture, out int id) ? id : 0;
+    }
+
+    /// <summary>
+    /// The driver greets a connection with its progress: the actions it ran up to Executed whose acknowledgement it did not send
+    /// (no greeted connection then) are executed for the buffer too, with nothing sent; a held acknowledgement is now history.
+    /// </summary>
+    private void StateSent(string xml)
+    {
+        int executed = IntegerOf(xml, " Executed=\"");
+        List<(int Id, TaskCompletionSource<TwinAck> Entry)> ran;
+        lock (Gate)
+        {
+            _heldTwinAcknowledgement = null;
+            ran = [.. _acks.Where(a => a.Key <= executed).Select(a => (a.Key, a.Value))];
+            foreach ((int id, _) in ran)
+            {
+                _acks.Remove(id);
+            }
+        }
+        foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran.OrderBy(r => r.Id))
+        {
+            entry.TrySetResult(new TwinAck(id, [], new TaskCompletionSource<bool>()) { Unsent = true });
+        }
+    }
+
+    /// <summary>The Text attribute of a failure the driver sends, unescaped.</summary>
+    private static string TextOf(string xml)
+    {
+        int start = xml.IndexOf("Text=\"", StringComparison.Ordinal);
+        if (start < 0)
+        {
+            return xml;
+        }
+        start += 6;
+        int end = xml.IndexOf('"', start);
+        return System.Net.WebUtility.HtmlDecode(xml[start..end]);
+    }
+
+    /// <summary>The driver reports a failure: an acknowledgement held back goes first, and the failure is kept as an error.</summary>
+    private void FailureSent(string xml)
+    {
+        TaskCompletionSource<TwinAck>? entry;
+        lock (Gate)
+        {
+            _acks.Remove(IdOf(xml), out entry);
+        }
+        entry?.TrySetResult(new TwinAck(IdOf(xml), [], new TaskCompletionSource<bool>(), TextOf(xml)));
+        byte[]? held;
+        lock (Gate)
+        {
+            held = _heldTwinAcknowledgement;
+            _heldTwinAcknowledgement = null;
+        }
+        if (held is not null)
+        {
+            SendToClientAsync(held, _twinToken).GetAwaiter().GetResult();
+        }
+    }
+
+    /// <summary>Sends an acknowledgement of the twin's driver as the options write it, through the fault plan.</summary>
+    private async Task<bool> AcknowledgeTwinAsync(TwinAck ack, CancellationToken token)
+    {
+        try
+        {
+            if (ack.Unsent)
+            {
+                return true;
+            }
+            switch (_options.AcknowledgementWrites)
+            {
+                case AcknowledgementWrites.Split:
+                    // The first part records the action as executed; the rest completes the element.
+                    await SendToClientAsync(ack.Bytes.AsMemory(0, 4), token, executedId: ack.Id).ConfigureAwait(false);
+                    await AcknowledgeAsync(ack.Bytes.AsMemory(4), ack.Id, token).ConfigureAwait(false);
+                    break;
+                case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is null && TwinRingCount() > 0:
+                    // Held until the driver acknowledges the next action, which it runs now.
+                    lock (Gate)
+                    {
+                        _heldTwinAcknowledgement = ack.Bytes;
+                    }
+                    break;
+                case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is not null:
+                    byte[] held;
+                    lock (Gate)
+                    {
+                        held = _heldTwinAcknowledgement!;
+                        _heldTwinAcknowledgement = null;
+                    }
+                    await AcknowledgeAsync(held.Concat(ack.Bytes).ToArray(), ack.Id, token).ConfigureAwait(false);
+                    break;
+                default:
+                    await AcknowledgeAsync(ack.Bytes, ack.Id, token).ConfigureAwait(false);
+                    break;
+            }
+            ack.Done.TrySetResult(true);
+        }
+        finally
+        {
+            ack.Done.TrySetResult(false);
+        }
+        return true;
+    }
+
+    /// <summary>How many actions the driver's ring holds (its slot_count), or 0 without a twin.</summary>
+    private int TwinRingCount() => Twin is { } twin && twin.Modules.TryGetValue("machina_kuka_driver", out KrlModule? module)
+        ? KrlValues.ToInt(module.Data["slot_count"].Value)
+        : 0;
+}
