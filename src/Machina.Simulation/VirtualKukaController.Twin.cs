@@ -45,7 +45,7 @@ public sealed partial class VirtualKukaController
             MaxTrace = MaxTraceSteps,
         });
         // The shipped files with their placeholders filled, as an installer writes them: driver on Port, monitor on Port + 1.
-        string Fill(string file, int port) => DriverFiles.Fill(DriverFiles.Read("kuka", file),
+        string Fill(string file, int port) => DriverFiles.Fill(DriverFiles.Read(file),
             ("HOSTNAME", "127.0.0.1"), ("PORT", port.ToString(CultureInfo.InvariantCulture)), ("ADVANCE", DefaultAdvance));
         twin.AddEkiConfiguration(DriverChannel, Fill(DriverChannel + ".xml", Port));
         twin.AddEkiConfiguration(MonitorChannel, Fill(MonitorChannel + ".xml", MonitorPort));

@@ -37,15 +37,15 @@ public class FaultProxyTests
 
     /// <summary>
     /// The driver connection cut twice at a seeded byte towards the host: the first connection while it streams (past its
-    /// handshake, before its last acknowledgement: ABB sends 352 bytes and KUKA 723 for the whole program), the second inside
-    /// its handshake (under 100 bytes). Each cut is reported, and reconnecting through the proxy resumes.
+    /// handshake, before its last acknowledgement: ABB's imitation sends 352 bytes and KUKA 723 for the whole program), the
+    /// second inside its handshake (under 100 bytes). Each cut is reported, and reconnecting through the proxy resumes.
     /// </summary>
     [Theory]
     [InlineData("ABB")]
     [InlineData("KUKA")]
     public async Task DriverConnectionCut_ReconnectThroughTheProxy_EveryActionOnce(string brand)
     {
-        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults(), abbImitationReason: ProxyCutOnTheRapidTwin);
         await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14302, CloseConnections = 2, CloseAfterBytes = [Streaming(brand), (40, 100)] });
         var w = rig.CreateRobot(port: proxy.Port);
         FaultMatrixTests.IssueProgram(w.Bot);
@@ -70,7 +70,7 @@ public class FaultProxyTests
     [InlineData("KUKA", "<Garbage></Garbage>")]
     public async Task GarbageTowardsTheHost_ProtocolErrorThenResume_EveryActionOnce(string brand, string garbage)
     {
-        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults(), abbImitationReason: ProxyCutOnTheRapidTwin);
         await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions
         {
             Seed = 14303, GarbageConnections = 1, CloseAfterBytes = [Streaming(brand)], Garbage = System.Text.Encoding.ASCII.GetBytes(garbage),
@@ -87,6 +87,14 @@ public class FaultProxyTests
         Assert.IsType(brand == "ABB" ? typeof(AbbProtocolException) : typeof(KukaProtocolException), reported);
         await w.Bot.DisconnectAsync();
     }
+
+    /// <summary>
+    /// Why the two ABB rows above still run the C# imitation of the driver: on the RAPID twin, after the proxy cuts the driver's
+    /// connection in the middle of the stream, the next connections get no handshake (the proxy accepts 5, 0 bytes come back),
+    /// although a plain close and reconnect between actions works. Not yet known whether the twin's socket seam or the driver
+    /// waits on the cut socket; issue 22 lists it.
+    /// </summary>
+    private const string ProxyCutOnTheRapidTwin = "a mid-stream cut through the proxy does not resume on the RAPID twin yet";
 
     /// <summary>UR: the RTDE connection cut mid-program only costs the live state (a warning); the driver link carries on.</summary>
     [Fact]
@@ -108,10 +116,11 @@ public class FaultProxyTests
 
     /// <summary>
     /// Bytes towards the host after the handshake and before the last acknowledgement of the 40-action program: ABB's
-    /// handshake is about 180 bytes and its acknowledgements 5 or 6 (about 410 in all); KUKA's state is about 250 bytes and
-    /// its acknowledgements 15 or 16 (about 870 in all).
+    /// imitation's handshake is about 180 bytes and its acknowledgements 5 or 6 (352 in all; the RAPID driver's handshake is
+    /// 88 bytes and its whole run 240, for when these rows move to the twin); KUKA's state is about 250 bytes and its
+    /// acknowledgements 15 or 16 (723 in all).
     /// </summary>
-    private static (int Min, int Max) Streaming(string brand) => brand == "ABB" ? (150, 300) : (450, 600); // of 352 (ABB) and 723 (KUKA) bytes in a whole run
+    private static (int Min, int Max) Streaming(string brand) => brand == "ABB" ? (150, 300) : (450, 600);
 
     /// <summary>The controller's consecutive ports: driver and monitor (ABB, KUKA), or script, RTDE and dashboard (UR).</summary>
     private static int[] Ports(FaultRig rig) => rig.Controller switch

@@ -57,7 +57,8 @@ internal sealed class FaultRig : IAsyncDisposable
     /// Starts a controller of <paramref name="brand"/> with instant execution, no robot model (targets are taken as they
     /// are), the given faults and room in its logs for <paramref name="logCapacity"/> requests.
     /// </summary>
-    public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole)
+    public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole,
+        string? abbImitationReason = null)
     {
         switch (brand)
         {
@@ -65,7 +66,7 @@ internal sealed class FaultRig : IAsyncDisposable
             {
                 // A restart that loses the buffer needs the driver task's program pointer reset, which the RAPID twin's seam does not
                 // do yet: those plans run on the C# imitation until it does.
-                bool imitation = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
+                bool imitation = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer) || abbImitationReason is not null;
                 var c = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, RunsRapid = !imitation });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
