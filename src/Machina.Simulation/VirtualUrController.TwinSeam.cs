@@ -109,6 +109,9 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         return done.Task.Result;
     }
 
+    /// <summary>The driver writes its acknowledgement after the instruction ran: a restart that loses it loses only the acknowledgement.</summary>
+    private protected override bool RanBeforeQueued(object request) => request is TwinAck;
+
     /// <summary>Sends an executed acknowledgement through the fault plan, unless its program was replaced since (nobody listens for it then).</summary>
     private async Task<bool> AcknowledgeTwinAsync(TwinAck ack, CancellationToken token)
     {
