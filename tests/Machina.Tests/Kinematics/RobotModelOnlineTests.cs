@@ -1,4 +1,5 @@
 using Machina.Tests.Control;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Kinematics;
 
@@ -18,6 +19,8 @@ public class RobotModelOnlineTests
             Assert.Contains("before connecting", ex.Message);
             bot.AxesTo(0, 0, 0, 0, 1, 0);
             bot.Move(0, 0, -10);
+            // The session's loop sends them on its own thread: wait for the second before reading what was sent.
+            await Eventually.TrueAsync(() => driver.Sent.Count == 2, "both actions to be sent", OnlineRobot.Timeout);
             Assert.Equal(["AxesTo(0,0,0,0,1,0);", "Move(0,0,-10);"], driver.Sent.Select(a => a.ToInstruction()));
             ProgramWarning w = Assert.Single(bot.GetWarnings(), x => x.ActionId == 1);
             Assert.Equal(KinematicIssueKind.WristSingularity, w.Kind);
