@@ -222,10 +222,10 @@ public sealed partial class NativeToolTests
     /// "executed #…" lines (acknowledgements are grouped as they arrive). The counts and the end pose are compared apart.
     /// </summary>
     private static string[] Sorted(string text) =>
-        [.. Steady(text).Split('\n').Where(l => !AfterTheHostLeftPattern().IsMatch(l)).Order(StringComparer.Ordinal)];
+        [.. Steady(text).Split('\n').Where(l => !TimingDependentLinePattern().IsMatch(l)).Order(StringComparer.Ordinal)];
 
     [GeneratedRegex(@"^\s*(pendant: Machina (client disconnected|driver waiting for a client)|executed  #)")]
-    private static partial Regex AfterTheHostLeftPattern();
+    private static partial Regex TimingDependentLinePattern();
 
     [GeneratedRegex(@"^\s*\d+%\s")]
     private static partial Regex ProgressPattern();
