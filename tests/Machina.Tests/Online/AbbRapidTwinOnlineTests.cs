@@ -55,6 +55,9 @@ public class AbbRapidTwinOnlineTests
         Robot bot = await OnlineTestSupport.ConnectAsync(controller, b => b.ActionFailed += (_, e) => failed.TrySetResult(e));
         try
         {
+            // The failure report travels on the monitor's connection: wait until the monitor serves the host (it may connect
+            // a moment after the driver). A failure before that is not reported yet: see issue 22's notes.
+            await Eventually.TrueAsync(() => controller.MonitorReportsSent > 0, "the monitor to serve the host", OnlineTestSupport.Limit);
             bot.MoveTo(4000, 0, 600);
             ActionFailedArgs e = await failed.Task.WaitAsync(OnlineTestSupport.Limit);
 
