@@ -264,7 +264,7 @@ internal sealed partial class UrTwinController : IDisposable
 
     private void RunBound(UrBoundProgram program, CancellationToken cancellation)
     {
-        UrProgramState end;
+        UrProgramState end = UrProgramState.Failed;
         string? error = null;
         using (var machine = new UrMachine(program, this, cancellation))
         {
@@ -285,6 +285,16 @@ internal sealed partial class UrTwinController : IDisposable
             }
             finally
             {
+                // The program has stopped before its sockets close, as on a UR: whoever sees a socket close and asks
+                // the controller finds the program already stopped.
+                lock (_gate)
+                {
+                    if (_state == UrProgramState.Running)
+                    {
+                        _state = end;
+                        _error = error;
+                    }
+                }
                 foreach (UrSocket socket in Sockets.Values)
                 {
                     socket.Dispose();
@@ -295,14 +305,6 @@ internal sealed partial class UrTwinController : IDisposable
         if (error is not null)
         {
             Pendant.Log(error);
-        }
-        lock (_gate)
-        {
-            if (_state == UrProgramState.Running)
-            {
-                _state = end;
-                _error = error;
-            }
         }
         StateChanged?.Invoke();
     }
