@@ -28,12 +28,6 @@ public abstract partial class VirtualController<TState>
     private protected virtual Task<bool> StopsOnRefusalAsync(object request, int id, VirtualRefusalException refusal, CancellationToken token) =>
         Task.FromResult(false);
 
-    /// <summary>
-    /// True for a request the robot ran before it was queued here (a twin's driver acknowledging a motion it finished): when a
-    /// restart loses it from the buffer, only its acknowledgement is lost, and it still enters the execution log.
-    /// </summary>
-    private protected virtual bool RanBeforeQueued(object request) => false;
-
     /// <summary>True for a request the brand's driver will skip (a UR program replaced since it was read); it is not logged as executed.</summary>
     private protected virtual bool IsStale(object request) => false;
 
@@ -57,12 +51,6 @@ public abstract partial class VirtualController<TState>
                 }
                 if (IsLost(queued.Generation))
                 {
-                    if (RanBeforeQueued(queued.Request))
-                    {
-                        // The robot already did it (only its acknowledgement was waiting here): it is in the execution log.
-                        LogExecuted(queued.Id);
-                        Interlocked.Increment(ref _requestsExecuted);
-                    }
                     continue;
                 }
                 var (runs, refusal) = await ExecuteAsync(queued.Request, token).ConfigureAwait(false);

@@ -42,7 +42,7 @@ public abstract partial class VirtualController<TState>
     public int MaxUnacknowledged => Volatile.Read(ref _maxUnacknowledged);
 
     /// <summary>Requests waiting in the instruction buffer right now (at most the options' <c>BufferCapacity</c>).</summary>
-    public int BufferedRequestCount => _buffer.Reader.Count;
+    public int BufferedRequestCount => _buffer.Reader.Count + Volatile.Read(ref _waitingOnCaller);
 
     /// <summary>The last received requests, as text (bounded by the options' <c>RequestLogCapacity</c>).</summary>
     public IReadOnlyList<string> ReceivedRequests
@@ -85,12 +85,17 @@ public abstract partial class VirtualController<TState>
     {
         get
         {
+            TState kept;
             lock (Gate)
             {
-                return _motion is null ? _state : (TState)_motion.At(Clock, Clock.GetTimestamp());
+                kept = _motion is null ? _state : (TState)_motion.At(Clock, Clock.GetTimestamp());
             }
+            return Observe(kept);
         }
     }
+
+    /// <summary>The state as the brand's arm has it now, from the one the controller kept (a twin reads its own arm and outputs).</summary>
+    private protected virtual TState Observe(TState kept) => kept;
 
     private void LogExecuted(int id)
     {

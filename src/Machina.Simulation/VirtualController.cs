@@ -244,6 +244,13 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         {
             return; // read from a client a restart cut off: lost with the rest of the buffer
         }
+        CountReceived(logText);
+        await _buffer.Writer.WriteAsync(new Queued(request, id, generation), token).ConfigureAwait(false);
+    }
+
+    /// <summary>Counts and logs a request received (and the most received but not yet executed).</summary>
+    private void CountReceived(string logText)
+    {
         if (_options.RequestLogCapacity > 0)
         {
             lock (Gate)
@@ -258,7 +265,6 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             && Interlocked.CompareExchange(ref _maxUnacknowledged, unacknowledged, seen) != seen)
         {
         }
-        await _buffer.Writer.WriteAsync(new Queued(request, id, generation), token).ConfigureAwait(false);
     }
 
     /// <summary>Keeps a text the driver would show on the teach pendant.</summary>

@@ -20,7 +20,7 @@ public sealed partial class VirtualUrController
             Model = Model ?? RobotModels.Get("UR5e"),
             Seam = this,
             MaxTrace = MaxTraceSteps,
-            StartJoints = base.State.Joints, // the options' starting joints (State asks the twin, not made yet)
+            StartJoints = base.State.Joints, // the options' starting joints (Observe keeps them until the twin is made)
             Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
         });
@@ -72,6 +72,6 @@ public sealed partial class VirtualUrController
     /// <summary>RTDE runtime_state of the interpreter: 2 playing while a program runs, 4 while it is held (paused or protective stop), else 1 stopped.</summary>
     private uint TwinRuntime(UrTwinController twin) => twin.State != UrProgramState.Running ? Stopped : TwinHeld ? Paused : Playing;
 
-    /// <summary>The robot now: where the twin's arm is, with its outputs.</summary>
-    public new VirtualUrState State => TwinState(Twin, base.State);
+    /// <summary>The robot now (<see cref="VirtualController{TState}.State"/>): where the twin's arm is, with its outputs.</summary>
+    private protected override VirtualUrState Observe(VirtualUrState kept) => Twin is null ? kept : TwinState(Twin, kept);
 }

@@ -101,16 +101,14 @@ public sealed partial class VirtualUrController : IUrSocketSeam
             _awaitingHeader = true;
             generation = _driverProgram;
         }
-        // The program's thread blocks until the acknowledgement went through the fault plan. Its completion wakes this thread
-        // directly (no continuation queued to the thread pool, no task made by WaitAsync): one thread hop less per instruction.
+        // The program's own thread takes the acknowledgement through the fault plan (a held or delayed acknowledgement holds
+        // the program, as a blocked socket write would): no hand-off to another thread per instruction. One that a restart
+        // lost is never sent: the program waits there until it is replaced.
         var done = new TaskCompletionSource<bool>();
-        EnqueueAsync(new TwinAck(value, generation, done), Math.Max(value, 0), text, program).AsTask().GetAwaiter().GetResult();
+        AcknowledgeOnCaller(new TwinAck(value, generation, done), Math.Max(value, 0), text, program);
         done.Task.Wait(program);
         return done.Task.Result;
     }
-
-    /// <summary>The driver writes its acknowledgement after the instruction ran: a restart that loses it loses only the acknowledgement.</summary>
-    private protected override bool RanBeforeQueued(object request) => request is TwinAck;
 
     /// <summary>Sends an executed acknowledgement through the fault plan, unless its program was replaced since (nobody listens for it then).</summary>
     private async Task<bool> AcknowledgeTwinAsync(TwinAck ack, CancellationToken token)
