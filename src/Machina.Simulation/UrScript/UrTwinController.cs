@@ -295,16 +295,16 @@ internal sealed partial class UrTwinController : IDisposable
                         _error = error;
                     }
                 }
+                if (error is not null)
+                {
+                    Pendant.Log(error);
+                }
                 foreach (UrSocket socket in Sockets.Values)
                 {
                     socket.Dispose();
                 }
                 Sockets.Clear();
             }
-        }
-        if (error is not null)
-        {
-            Pendant.Log(error);
         }
         StateChanged?.Invoke();
     }
