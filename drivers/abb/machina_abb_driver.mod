@@ -102,12 +102,16 @@ MODULE Machina_Driver
         isMachinaDriverAvailable := TRUE;
     ENDPROC
 
+    ! After a lost client the server socket still listens: only the client socket is closed, so that a host reconnecting while
+    ! this task ran its buffer waits in the listen queue (closing the server socket would reset that connection).
     PROC ServerStart()
-        SocketClose serverSocket;
         SocketClose clientSocket;
-        SocketCreate serverSocket;
-        SocketBind serverSocket, SERVER_IP, SERVER_PORT;
-        SocketListen serverSocket;
+        IF SocketGetStatus(serverSocket) <> SOCKET_LISTENING THEN
+            SocketClose serverSocket;
+            SocketCreate serverSocket;
+            SocketBind serverSocket, SERVER_IP, SERVER_PORT;
+            SocketListen serverSocket;
+        ENDIF
         TPWrite "Machina driver waiting for a client on " + SERVER_IP + ":" + NumToStr(SERVER_PORT, 0);
         SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
         clientConnected := TRUE;

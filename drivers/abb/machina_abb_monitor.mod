@@ -27,23 +27,28 @@ MODULE Machina_Monitor
             TPWrite "Machina monitor: the Machina driver is not loaded";
             EXIT;
         ENDIF
-        ServerStart;
-        ! A motion error stops the motion task before it can say anything: this task reports it for the driver.
+        ! A motion error stops the motion task before it can say anything: this task reports it for the driver. The trap is
+        ! ordered before the first client is awaited: a move that fails before a host watches is kept in failureReport and
+        ! sent to the first client that connects.
         IDelete motionError;
         CONNECT motionError WITH MotionErrorTrap;
         IError MOTION_ERR, TYPE_ERR, motionError;
+        ServerStart;
         WHILE TRUE DO
             Report;
             WaitTime monitorUpdateInterval;
         ENDWHILE
     ENDPROC
 
+    ! As in the driver: after a lost client only the client socket is closed; the server socket keeps listening (its queue).
     PROC ServerStart()
-        SocketClose serverSocket;
         SocketClose clientSocket;
-        SocketCreate serverSocket;
-        SocketBind serverSocket, SERVER_IP, MONITOR_PORT;
-        SocketListen serverSocket;
+        IF SocketGetStatus(serverSocket) <> SOCKET_LISTENING THEN
+            SocketClose serverSocket;
+            SocketCreate serverSocket;
+            SocketBind serverSocket, SERVER_IP, MONITOR_PORT;
+            SocketListen serverSocket;
+        ENDIF
         SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
     ERROR
         IF ERRNO = ERR_SOCK_TIMEOUT THEN

@@ -14,6 +14,18 @@ internal sealed partial class RapidTask
     private bool _inTrap;
     private int _nextInterrupt;
 
+    /// <summary>True once the task ordered an interrupt for controller errors (IError) that is still connected.</summary>
+    public bool OrdersErrorInterrupts
+    {
+        get
+        {
+            lock (_interruptGate)
+            {
+                return _errorOrders.Count > 0;
+            }
+        }
+    }
+
     /// <summary>The event data of the trap running now (GetTrapData), or null outside a trap.</summary>
     public RapidTrapData? CurrentTrapData { get; private set; }
 

@@ -34,11 +34,12 @@ internal sealed partial class RapidTask
         }
     }
 
-    /// <summary>Records how the run ended (or that it runs).</summary>
-    internal void SetState(RapidProgramState state, string? error)
+    /// <summary>Records how the run ended (or that it runs); <paramref name="meanwhile"/> runs in the same step (nobody sees the state between).</summary>
+    internal void SetState(RapidProgramState state, string? error, Action? meanwhile = null)
     {
         lock (_runGate)
         {
+            meanwhile?.Invoke();
             _state = state;
             _error = error;
         }

@@ -157,23 +157,27 @@ internal sealed partial class RapidTwinController
 
     private RapidProgramState End(RapidTask task, RapidProgramState state, string? error, int eventNumber)
     {
-        task.SetState(state, error);
         if (error is not null)
         {
             Pendant.Log(error);
         }
+        RapidTask[] others = [];
         if (eventNumber > 0)
         {
-            RapidTask[] tasks;
             lock (_gate)
             {
-                tasks = [.. _tasks.Values];
+                others = [.. _tasks.Values.Where(t => t != task)];
             }
-            foreach (RapidTask other in tasks.Where(t => t != task))
+        }
+        // One step for whoever looks: the other tasks' error interrupts are queued as the task shows stopped. A monitor client
+        // that saw the task stopped finds the trap ordered, and a host told by the trap finds the task stopped.
+        task.SetState(state, error, () =>
+        {
+            foreach (RapidTask other in others)
             {
                 other.PostError(eventNumber / 10_000, eventNumber % 10_000, 3);
             }
-        }
+        });
         TaskEnded?.Invoke(task);
         return state;
     }

@@ -55,9 +55,8 @@ public class AbbRapidTwinOnlineTests
         Robot bot = await OnlineTestSupport.ConnectAsync(controller, b => b.ActionFailed += (_, e) => failed.TrySetResult(e));
         try
         {
-            // The failure report travels on the monitor's connection: wait until the monitor serves the host (it may connect
-            // a moment after the driver). A failure before that is not reported yet: see issue 22's notes.
-            await Eventually.TrueAsync(() => controller.MonitorReportsSent > 0, "the monitor to serve the host", OnlineTestSupport.Limit);
+            // The failure report travels on the monitor's connection, which the host may open a moment after the driver's: the
+            // monitor keeps a report until a client takes it, so the move is issued at once (either order is reported).
             bot.MoveTo(4000, 0, 600);
             ActionFailedArgs e = await failed.Task.WaitAsync(OnlineTestSupport.Limit);
 
@@ -70,6 +69,31 @@ public class AbbRapidTwinOnlineTests
         {
             await bot.DisconnectAsync();
         }
+    }
+
+    /// <summary>
+    /// A move that fails while nobody watches the monitor: its task keeps the report ("$26 id code;") and sends it, before the
+    /// first state report, to the client that connects afterwards.
+    /// </summary>
+    [Fact]
+    public async Task MoveFailsBeforeTheMonitorHasAClient_FirstMonitorClientLearnsIt()
+    {
+        await using VirtualAbbController controller = await StartAsync();
+        using var driver = await Simulation.RawAbbClient.ConnectAsync(controller.Port);
+        await driver.ReadHandshakeAsync();
+        // The monitor task orders its error interrupt as it starts (on an IRC5 long before a host connects).
+        await Eventually.TrueAsync(() => controller.Twin!.Task(VirtualAbbController.MonitorTask).OrdersErrorInterrupts, "the monitor to order its error interrupt", OnlineTestSupport.Limit);
+
+        await driver.SendAsync("@7 1 4000 0 600 0 0 1 0;");
+        await Eventually.TrueAsync(() => controller.Twin!.Task().State == RapidProgramState.Failed, "the driver task to stop on the move", OnlineTestSupport.Limit);
+        using var monitor = await Simulation.RawAbbClient.ConnectAsync(controller.MonitorPort);
+        List<AbbMessage> messages = await monitor.ReadMessagesAsync(2);
+
+        Assert.StartsWith("$26 7 50050;$24 ", monitor.RawText, StringComparison.Ordinal);
+        Assert.Equal(26, messages[0].Code);
+        Assert.Equal([7, 50050], messages[0].Values.ToArray());
+        Assert.Equal(24, messages[1].Code);
+        Assert.StartsWith("50050 Position outside reach", controller.Twin!.Task().Error, StringComparison.Ordinal);
     }
 
     [Fact]

@@ -45,7 +45,7 @@ public class FaultProxyTests
     [InlineData("KUKA")]
     public async Task DriverConnectionCut_ReconnectThroughTheProxy_EveryActionOnce(string brand)
     {
-        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults(), imitationReason: brand == "ABB" ? ProxyCutOnTheRapidTwin : null);
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
         await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14302, CloseConnections = 2, CloseAfterBytes = [Streaming(brand), (40, 100)] });
         var w = rig.CreateRobot(port: proxy.Port);
         FaultMatrixTests.IssueProgram(w.Bot);
@@ -72,7 +72,7 @@ public class FaultProxyTests
     {
         // KUKA: the same gap as FaultMatrixTests.Drop_ThenClearPendingActions (actions read before the cut sometimes never run on
         // the KRL twin under load; issue 23).
-        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults(), imitationReason: brand == "ABB" ? ProxyCutOnTheRapidTwin : "actions read before a cut sometimes never run on the KRL twin under load");
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults(), imitationReason: brand == "ABB" ? null : "actions read before a cut sometimes never run on the KRL twin under load");
         await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions
         {
             Seed = 14303, GarbageConnections = 1, CloseAfterBytes = [Streaming(brand)], Garbage = System.Text.Encoding.ASCII.GetBytes(garbage),
@@ -89,14 +89,6 @@ public class FaultProxyTests
         Assert.IsType(brand == "ABB" ? typeof(AbbProtocolException) : typeof(KukaProtocolException), reported);
         await w.Bot.DisconnectAsync();
     }
-
-    /// <summary>
-    /// Why the two ABB rows above still run the C# imitation of the driver: on the RAPID twin, after the proxy cuts the driver's
-    /// connection in the middle of the stream, the next connections get no handshake (the proxy accepts 5, 0 bytes come back),
-    /// although a plain close and reconnect between actions works. Not yet known whether the twin's socket seam or the driver
-    /// waits on the cut socket; issue 22 lists it.
-    /// </summary>
-    private const string ProxyCutOnTheRapidTwin = "a mid-stream cut through the proxy does not resume on the RAPID twin yet";
 
     /// <summary>UR: the RTDE connection cut mid-program only costs the live state (a warning); the driver link carries on.</summary>
     [Fact]
@@ -117,12 +109,11 @@ public class FaultProxyTests
     }
 
     /// <summary>
-    /// Bytes towards the host after the handshake and before the last acknowledgement of the 40-action program: ABB's
-    /// imitation's handshake is about 180 bytes and its acknowledgements 5 or 6 (352 in all; the RAPID driver's handshake is
-    /// 88 bytes and its whole run 240, for when these rows move to the twin); KUKA's state is about 250 bytes and its
+    /// Bytes towards the host after the handshake and before the last acknowledgement of the 40-action program: the RAPID
+    /// driver's handshake is 88 bytes and its acknowledgements 5 or 6 (240 in all); KUKA's state is about 250 bytes and its
     /// acknowledgements 15 or 16 (723 in all).
     /// </summary>
-    private static (int Min, int Max) Streaming(string brand) => brand == "ABB" ? (150, 300) : (450, 600);
+    private static (int Min, int Max) Streaming(string brand) => brand == "ABB" ? (100, 230) : (450, 600);
 
     /// <summary>The controller's consecutive ports: driver and monitor (ABB, KUKA), or script, RTDE and dashboard (UR).</summary>
     private static int[] Ports(FaultRig rig) => rig.Controller switch
