@@ -24,6 +24,7 @@ internal static class KukaActionEncoder
         ActionTemperature or ActionExtrusion or ActionExtrusionRate or ActionInitialization =>
             Refuse(action, "a KUKA arm has no extruder or heated parts; this is for 3D printers."),
         ActionIODigital digital => WhyNotOutput(action, digital.PinName, digital.IsToolPin, DigitalOutputs, "$OUT"),
+        ActionWaitDigital => Refuse(action, "the driver does not wait for inputs yet; compile the program offline (WAIT FOR)."),
         ActionIOAnalog analog => WhyNotOutput(action, analog.PinName, analog.IsToolPin, AnalogOutputs, "$ANOUT")
             ?? (analog.Value is < -1 or > 1 ? Refuse(action, $"KRL analog outputs take values from -1 to 1, and {Num.G(analog.Value)} is outside that range.") : null),
         _ => null,
