@@ -139,7 +139,7 @@ public class WaitForDigitalOfflineTests
     }
 
     [Fact]
-    public void OnlineEncoders_AbbRequest20_UrInstruction18_KukaRefused()
+    public void OnlineEncoders_AbbRequest20_UrInstruction18_KukaAction14()
     {
         var cursor = new RobotCursor();
         var wait = new ActionWaitDigital("DI_Door", false, 2500, false) { Id = 4 };
@@ -154,7 +154,11 @@ public class WaitForDigitalOfflineTests
         Assert.Equal("\"Wait for digital input 9 ON\" cannot be streamed to a UR robot: UR robots have standard digital inputs 0 to 7; input 9 does not exist.",
             UrActionEncoder.WhyNot(new ActionWaitDigital("9", true, 0, false)));
 
-        Assert.Equal("WaitDigital (WaitForDigital(1,True);) is not supported online on KUKA: the driver does not wait for inputs yet; compile the program offline (WAIT FOR).",
-            KukaActionEncoder.WhyCannotStream(new ActionWaitDigital("1", true, 0, false)));
+        KukaInstruction kuka = KukaActionEncoder.Encode(new ActionWaitDigital("12", true, 2000, false), 9, cursor)!.Value;
+        var xml = new System.Text.StringBuilder();
+        kuka.AppendTo(xml);
+        Assert.Equal("<A ID=\"9\" T=\"14\" V1=\"12\" V2=\"1\" V3=\"2000\" V4=\"0\" V5=\"0\" V6=\"0\" V7=\"0\" M=\"\"/>", xml.ToString());
+        Assert.Equal("WaitDigital (WaitForDigital(\"DI_Part\",True);) is not supported online on KUKA: the driver reads inputs by number ($IN[1] to $IN[4096]); a signal name such as \"DI_Part\" exists only in the controller's configuration.",
+            KukaActionEncoder.WhyCannotStream(new ActionWaitDigital("DI_Part", true, 0, false)));
     }
 }

@@ -154,4 +154,53 @@ public class WaitForDigitalTwinTests
             await bot.DisconnectAsync();
         }
     }
+
+    [Fact]
+    public async Task Kuka_InputSetLater_ReleasesTheWait_ThenTheNextActionRuns()
+    {
+        await using VirtualKukaController controller = await KukaTestSupport.StartKukaAsync(new VirtualKukaControllerOptions());
+        var (bot, executed, _) = await KukaTestSupport.ConnectKukaAsync(controller);
+        try
+        {
+            bot.WriteDigital(1, true);
+            bot.WaitForDigital(7, true);
+            bot.WriteDigital(2, true);
+            await OnlineTestSupport.EventuallyAsync(() => executed.Contains(1), "the first output to be set");
+            await Task.Delay(Blocked);
+            Assert.Equal([1], executed);
+
+            controller.SetDigitalInput(7, true);
+            await bot.WaitForCompletionAsync().WaitAsync(OnlineTestSupport.Limit);
+
+            Assert.Equal([1, 2, 3], executed);
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
+
+    [Fact]
+    public async Task Kuka_Timeout_FailsTheActionWithCode6_NothingAfterRuns()
+    {
+        await using VirtualKukaController controller = await KukaTestSupport.StartKukaAsync(new VirtualKukaControllerOptions());
+        var failed = new TaskCompletionSource<ActionFailedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var (bot, executed, _) = await KukaTestSupport.ConnectKukaAsync(controller, b => b.ActionFailed += (_, e) => failed.TrySetResult(e));
+        try
+        {
+            bot.WaitForDigital(8, true, 300);
+            bot.WriteDigital(2, true);
+            ActionFailedArgs e = await failed.Task.WaitAsync(OnlineTestSupport.Limit);
+
+            Assert.Equal(1, e.Action.Id);
+            Assert.Equal("6", e.Failure.ControllerCode);
+            Assert.Equal("Input did not change within the time limit: the wait for $IN timed out.", e.Reason);
+            Assert.Equal([2], e.CancelledActions.Select(a => a.Id));
+            Assert.Empty(executed);
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
 }
