@@ -69,6 +69,7 @@ MODULE Machina_Driver
     VAR zonedata cursorZone;
     VAR signaldo outDigital;
     VAR signalao outAnalog;
+    VAR signaldi inDigital;
 
     PROC Main()
         TPErase;
@@ -339,6 +340,14 @@ MODULE Machina_Driver
             cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7]]];
         CASE 19:
             cursorWObj := wobj0;
+        CASE 20:
+            ! Wait for a digital input; with a time limit (s), ERR_WAIT_MAXTIME is reported as failure code 3.
+            AliasIO r.s1, inDigital;
+            IF r.p2 > 0 THEN
+                WaitDI inDigital, r.p1 \MaxTime:=r.p2;
+            ELSE
+                WaitDI inDigital, r.p1;
+            ENDIF
         CASE 30:
             cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
             MoveC [[r.p8, r.p9, r.p10], [1, 0, 0, 0], [0, 0, 0, 0], cursorTarget.extax], cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
@@ -371,6 +380,9 @@ MODULE Machina_Driver
                 EXIT;
             ENDIF
             STOP;
+        ENDIF
+        IF ERRNO = ERR_WAIT_MAXTIME THEN
+            Fail r, 3;
         ENDIF
         RAISE;
     ENDPROC

@@ -33,8 +33,24 @@ internal sealed partial class KrlTwinController
             {
                 throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin");
             }
-            _inputsChanged.Wait(TimeSpan.FromMilliseconds(100), cancellation);
+            // A running timer ($TIMER_STOP FALSE) changes too: look again after one interpreter cycle, as a KRC does.
+            bool timing = TimersRunning();
+            _inputsChanged.Wait(TimeSpan.FromMilliseconds(timing ? 12 : 100), cancellation);
+            if (timing)
+            {
+                return;
+            }
         }
+    }
+
+    private bool TimersRunning() => Array.Exists(((KrlArrayValue)Environment.System["$TIMER_STOP"].Value).Items, s => !(bool)s);
+
+    /// <summary>Sets digital input <c>$IN[number]</c> (1-based), as a sensor wired to it would, and wakes a waiting program.</summary>
+    public void SetInput(int number, bool value)
+    {
+        object[] inputs = ((KrlArrayValue)Environment.System["$IN"].Value).Items;
+        inputs[number - 1] = value;
+        InputsChanged();
     }
 
     /// <summary>Sets flag <paramref name="number"/> (1-based) and wakes a waiting program.</summary>

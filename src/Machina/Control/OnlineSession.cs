@@ -201,6 +201,8 @@ internal sealed partial class OnlineSession : IActionStream
     private static double ExpectedMilliseconds(RobotAction action, RobotCursor after) => action switch
     {
         ActionWait w => w.Millis,
+        // A wait for an input may last as long as its limit, or as long as it takes when it has none: not a silent controller.
+        ActionWaitDigital d => d.TimeoutMillis > 0 ? d.TimeoutMillis : double.PositiveInfinity,
         _ when after.LastPathLength is double length && after.Speed > 0 => 1000 * length / after.Speed,
         _ => 0,
     };

@@ -57,4 +57,6 @@ public enum ActionType
     ArmAngle = 25,
     /// <summary>Circular motion.</summary>
     ArcMotion = 26,
+    /// <summary>Wait for a digital input.</summary>
+    WaitDigital = 27,
 }

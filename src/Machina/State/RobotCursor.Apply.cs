@@ -44,6 +44,7 @@ internal sealed partial class RobotCursor
             ActionIODigital a => SetOutput(DigitalOutputs, a.IsToolPin, a.PinName, a.On),
             ActionIOAnalog a => CheckAnalog(a) ?? SetOutput(AnalogOutputs, a.IsToolPin, a.PinName, a.Value),
             ActionWait a => CheckWait(a),
+            ActionWaitDigital a => CheckWaitDigital(a),
             ActionMessage or ActionComment or ActionCustomCode or ActionInitialization => null,
             _ => $"Machina does not know how to apply a {action.GetType().Name}.",
         };

@@ -23,6 +23,11 @@ internal sealed partial class RobotCursor
             ? null
             : $"a wait of {Num.I(a.Millis)} ms is refused: waits are limited to 1,000,000,000 ms (1,000,000 s, about 11.6 days), the longest every robot language's timer holds.";
 
+    private static string? CheckWaitDigital(ActionWaitDigital a) =>
+        a.TimeoutMillis <= MaxWaitMillis
+            ? null
+            : $"a wait for input {a.PinName} of at most {Num.I(a.TimeoutMillis)} ms is refused: waits are limited to 1,000,000,000 ms (1,000,000 s, about 11.6 days), the longest every robot language's timer holds.";
+
     private static string? CheckAnalog(ActionIOAnalog a) =>
         Math.Abs(a.Value) <= MaxSetting
             ? null

@@ -198,6 +198,12 @@ internal static class ReferenceExamples
         bot.WriteDigital("DO_Gripper", false);
     }
 
+    internal static void WaitForDigital(Robot bot)
+    {
+        bot.WaitForDigital(1, true);
+        bot.WaitForDigital("DI_Part", false, 2500);
+    }
+
     internal static void WriteAnalog(Robot bot)
     {
         bot.WriteAnalog(1, 0.5);

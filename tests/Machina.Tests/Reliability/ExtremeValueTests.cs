@@ -70,7 +70,8 @@ public class HugeTextTests
         run.AssertNoProblems();
         Assert.InRange(run.Cases, 15, 1_000);
         Assert.InRange(run.Issued, 4, run.Cases);
-        Assert.InRange(run.Refused, run.Cases / 2, run.Cases);
+        // The IO verbs (WriteDigital, WriteAnalog, WaitForDigital) take a pin name of any length: the brands refuse it later.
+        Assert.InRange(run.Refused, run.Cases / 3, run.Cases);
         Assert.Equal(run.Cases * ExtremeRun.Languages.Length, run.Compiled);
     }
 }

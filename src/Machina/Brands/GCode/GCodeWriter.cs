@@ -121,6 +121,9 @@ internal sealed class GCodeWriter
             case ActionRotation:
                 NotApplicable(action, "a 3D printer cannot turn its tool.");
                 break;
+            case ActionWaitDigital:
+                NotApplicable(action, "Machina's G-code programs do not wait for inputs.");
+                break;
             case ActionAxes:
                 NotApplicable(action, "a 3D printer has no robot joints to move.");
                 break;

@@ -189,6 +189,9 @@ internal sealed class KrlWriter
             case ActionIODigital digital:
                 EmitOutput(action, digital.PinName, digital.IsToolPin, digital.On ? "TRUE" : "FALSE", "$OUT", 4096);
                 break;
+            case ActionWaitDigital wait:
+                EmitWaitDigital(wait);
+                break;
             case ActionIOAnalog analog:
                 if (analog.Value < -1 || analog.Value > 1)
                 {
@@ -309,6 +312,55 @@ internal sealed class KrlWriter
         _src.Add(Indent + $"; WARNING: set the load data (weight {Num.G(tool.Weight)} kg) of tool \"{tool.Name}\" on the controller.");
         Code("$TOOL = " + KrlFormat.ToolFrame(tool), action);
     }
+
+    /// <summary>
+    /// WAIT FOR on the input; with a time limit, timer 15 counts the wait ($TIMER in ms, started by $TIMER_STOP = FALSE) and
+    /// an input still not reached when it passes the limit HALTs the program.
+    /// </summary>
+    private void EmitWaitDigital(ActionWaitDigital wait)
+    {
+        string input;
+        if (IOPin.TryNumber(wait.PinName, out int number))
+        {
+            if (wait.IsToolPin)
+            {
+                Error(wait, "KUKA controllers have no separate tool inputs; declare a SIGNAL for it in $config.dat and use its name.");
+                return;
+            }
+            if (number < 1 || number > 4096)
+            {
+                Error(wait, $"$IN inputs are numbered 1 to 4096, so input {Num.I(number)} does not exist.");
+                return;
+            }
+            input = "$IN[" + Num.I(number) + "]";
+        }
+        else if (KrlText.IsValidName(wait.PinName))
+        {
+            input = wait.PinName;
+        }
+        else
+        {
+            Error(wait, $"\"{wait.PinName}\" is neither an input number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
+            return;
+        }
+        string reached = (wait.On ? "" : "NOT ") + input;
+        if (wait.TimeoutMillis == 0)
+        {
+            Code("WAIT FOR " + reached, wait);
+            return;
+        }
+        string timer = "$TIMER[" + Num.I(WaitTimer) + "]";
+        Code(timer + " = 0", wait);
+        _src.Add(Indent + "$TIMER_STOP[" + Num.I(WaitTimer) + "] = FALSE");
+        _src.Add(Indent + "WAIT FOR " + reached + " OR (" + timer + " >= " + Num.I(wait.TimeoutMillis) + ")");
+        _src.Add(Indent + "$TIMER_STOP[" + Num.I(WaitTimer) + "] = TRUE");
+        _src.Add(Indent + "IF " + (wait.On ? "NOT " : "") + input + " THEN");
+        _src.Add(Indent + "  HALT ; " + KrlText.Comment(wait.Describe()) + ": timed out");
+        _src.Add(Indent + "ENDIF");
+    }
+
+    /// <summary>The timer a wait with a time limit uses (the driver's monitor uses 16).</summary>
+    internal const int WaitTimer = 15;
 
     private void EmitOutput(RobotAction action, string pin, bool toolPin, string value, string array, int count)
     {

@@ -137,6 +137,9 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
             case ActionIOAnalog io:
                 WriteAnalog(io);
                 break;
+            case ActionWaitDigital wait:
+                WriteWaitDigital(wait);
+                break;
             case ActionCustomCode { IsDeclaration: false } code:
                 Code(action, Indent + code.Statement);
                 break;
@@ -267,6 +270,36 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         }
         string function = io.IsToolPin ? "set_tool_digital_out(" : "set_standard_digital_out(";
         Code(io, Indent + function + Num.I(io.PinNumber) + ", " + (io.On ? "True" : "False") + ")");
+    }
+
+    /// <summary>
+    /// A loop that reads the input once per controller step (sync); with a time limit it counts the steps' time
+    /// (get_steptime) and, when the limit passes, shows an error popup and halts the program.
+    /// </summary>
+    private void WriteWaitDigital(ActionWaitDigital wait)
+    {
+        if (UrInputs.WhyNot(wait) is string problem)
+        {
+            Unsupported(wait, problem);
+            return;
+        }
+        string read = UrInputs.ReadCall(wait) + " != " + (wait.On ? "True" : "False");
+        if (wait.TimeoutMillis == 0)
+        {
+            Code(wait, Indent + "while " + read + ":");
+            sink.Add(Indent + "  sync()");
+            sink.Add(Indent + "end");
+            return;
+        }
+        Code(wait, Indent + "machina_waited = 0");
+        sink.Add(Indent + "while " + read + ":");
+        sink.Add(Indent + "  if machina_waited >= " + ProgramText.Seconds(wait.TimeoutMillis) + ":");
+        sink.Add(Indent + "    popup(\"" + UrInputs.TimeoutText(wait) + "\", \"Machina\", error=True)");
+        sink.Add(Indent + "    halt");
+        sink.Add(Indent + "  end");
+        sink.Add(Indent + "  sync()");
+        sink.Add(Indent + "  machina_waited = machina_waited + get_steptime()");
+        sink.Add(Indent + "end");
     }
 
     private void WriteAnalog(ActionIOAnalog io)

@@ -54,6 +54,9 @@ internal static class AbbActionEncoder
             case ActionIOAnalog analog:
                 into.Add(AbbRequest.SetAO(id, analog.PinName, analog.Value));
                 break;
+            case ActionWaitDigital wait:
+                into.Add(AbbRequest.WaitDI(id, wait.PinName, wait.On, wait.TimeoutMillis));
+                break;
             case ActionPushPop { Push: false }:
                 EncodePop(id, after, into);
                 break;

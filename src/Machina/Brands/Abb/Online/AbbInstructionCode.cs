@@ -22,6 +22,7 @@ internal enum AbbInstructionCode
     CustomAction = 17,
     WorkObject = 18,
     NoWorkObject = 19,
+    WaitDI = 20,
     MoveC = 30,
     StopExecution = 100,
     GetInfo = 101,

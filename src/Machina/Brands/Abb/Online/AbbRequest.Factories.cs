@@ -67,6 +67,13 @@ internal readonly partial struct AbbRequest
     public static AbbRequest SetDO(int id, string signal, bool on) =>
         new(id, (int)AbbInstructionCode.SetDO, signal, [on ? 1 : 0]);
 
+    /// <summary>
+    /// Code 20: wait until the digital input named <paramref name="signal"/> is on (off), at most <paramref name="timeoutMillis"/>
+    /// ms (sent in seconds; 0 = no limit). A wait that times out is reported as failure code 3 (<see cref="AbbFailure.WaitTimedOut"/>).
+    /// </summary>
+    public static AbbRequest WaitDI(int id, string signal, bool on, long timeoutMillis) =>
+        new(id, (int)AbbInstructionCode.WaitDI, signal, [on ? 1 : 0, timeoutMillis / 1000.0]);
+
     /// <summary>Code 11: set the analog output named <paramref name="signal"/> to a value, unrounded (sent once: fix of bug A3).</summary>
     public static AbbRequest SetAO(int id, string signal, double value) =>
         new(id, (int)AbbInstructionCode.SetAO, signal, [value]);

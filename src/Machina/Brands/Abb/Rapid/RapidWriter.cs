@@ -140,6 +140,10 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
             case ActionIOAnalog io:
                 WriteSignal(action, io.PinName, "SetAO ", new StringBuilder(16).AppendFixed(io.Value, 6).ToString());
                 break;
+            case ActionWaitDigital wait:
+                // WaitDI without \TimeFlag: when \MaxTime passes, the error ERR_WAIT_MAXTIME stops the program.
+                WriteSignal(action, wait.PinName, "WaitDI ", (wait.On ? "1" : "0") + (wait.TimeoutMillis > 0 ? "\\MaxTime:=" + ProgramText.Seconds(wait.TimeoutMillis) : ""));
+                break;
             case ActionCustomCode { IsDeclaration: false } code:
                 Code(action, Indent + code.Statement);
                 break;

@@ -22,6 +22,9 @@ internal static class KukaFailure
     /// <summary>An analog value outside -1..1, the range of <c>$ANOUT</c>.</summary>
     public const int AnalogRange = 5;
 
+    /// <summary>An input still not at its value when the wait's time limit passed (timer 15).</summary>
+    public const int WaitTimedOut = 6;
+
     /// <summary>The text the driver sends (and shows in its quit message) for a code.</summary>
     public static string Describe(int code) => code switch
     {
@@ -30,6 +33,7 @@ internal static class KukaFailure
         NoSpeed => "The speed ($VEL.CP) is 0: the motion would never end.",
         NoSuchOutput => "Output does not exist: the number is outside the controller's outputs.",
         AnalogRange => "Analog value out of range: $ANOUT takes values from -1 to 1.",
+        WaitTimedOut => "Input did not change within the time limit: the wait for $IN timed out.",
         _ => "The driver could not run the action and halted.",
     };
 

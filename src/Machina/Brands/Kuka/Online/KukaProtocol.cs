@@ -92,4 +92,7 @@ internal enum KukaActionCode
 
     /// <summary>Speed V1 (m/s), acceleration V2 (m/s², 0 = default) and precision V3 (mm) at once: settings restored by a pop.</summary>
     Settings = 13,
+
+    /// <summary>Wait until <c>$IN[V1]</c> is V2 (1 true, 0 false), at most V3 ms (0 = no limit; timer 15 counts).</summary>
+    WaitInput = 14,
 }

@@ -23,6 +23,7 @@ internal static class UrActionEncoder
             $"\"{action}\" cannot be streamed to a UR robot: Machina's UR driver has no instruction for it.",
         ActionIODigital d when UrOutputs.WhyNot(d) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         ActionIOAnalog a when UrOutputs.WhyNot(a) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
+        ActionWaitDigital w when UrInputs.WhyNot(w) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         _ => null,
     };
 
@@ -80,6 +81,8 @@ internal static class UrActionEncoder
                 return Put(into, id, UrInstructionCode.SetDigitalOut, digital.PinNumber, digital.On ? 1 : 0, digital.IsToolPin ? 1 : 0);
             case ActionIOAnalog analog:
                 return Put(into, id, UrInstructionCode.SetAnalogOut, analog.PinNumber, wire.Scale(analog.Value * UrWire.FactorAnalog));
+            case ActionWaitDigital w:
+                return Put(into, id, UrInstructionCode.WaitDigitalIn, w.PinNumber, w.On ? 1 : 0, w.IsToolPin ? 1 : 0, wire.Scale(w.TimeoutMillis));
             case ActionPushPop { Push: false }:
                 return Pop(into, id, after, ref wire);
             default:

@@ -47,4 +47,7 @@ internal enum UrInstructionCode
 
     /// <summary><c>movep</c> to a pose.</summary>
     MoveP = 17,
+
+    /// <summary>Wait for a digital input: pin, value (0/1), tool (0/1), time limit (ms, 0 = none).</summary>
+    WaitDigitalIn = 18,
 }
