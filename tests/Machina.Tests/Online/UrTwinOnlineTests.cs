@@ -66,8 +66,8 @@ public class UrTwinOnlineTests
             {
                 bot.Move(i % 2 == 0 ? 10 : -10, 0, 0);
             }
-            await bot.WaitForCompletionAsync().WaitAsync(TimeSpan.FromSeconds(120));
-            await bot.FlushEventsAsync().WaitAsync(Limit);
+            await bot.WaitForCompletionAsync().WaitAsync(TimeSpan.FromMinutes(3));
+            await bot.FlushEventsAsync().WaitAsync(TimeSpan.FromMinutes(1));
 
             Assert.Equal(Enumerable.Range(1, 10_000), executed);
             Assert.Empty(controller.Errors);
