@@ -178,6 +178,8 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// <summary>
     /// The driver greets a connection with its progress: the actions it ran up to Executed whose acknowledgement it did not send
     /// (no greeted connection then) are executed for the buffer too, with nothing sent; a held acknowledgement is now history.
+    /// The state leaves only once the controller's execution log holds them: a host that reads the log as soon as the state
+    /// arrived finds there what the state says (under load the buffer's loop logged them after the host had looked).
     /// </summary>
     private void StateSent(string xml)
     {
@@ -192,10 +194,17 @@ public sealed partial class VirtualKukaController : IEkiSeam
                 _acks.Remove(id);
             }
         }
+        var logged = new List<Task<bool>>(ran.Count);
         foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran.OrderBy(r => r.Id))
         {
-            entry.TrySetResult(new TwinAck(id, [], new TaskCompletionSource<bool>()) { Unsent = true });
+            var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
+            if (entry.TrySetResult(new TwinAck(id, [], done) { Unsent = true }))
+            {
+                logged.Add(done.Task);
+            }
         }
+        // The buffer's loop sets Done after it logged the action as executed (before its acknowledgement step, which sends nothing).
+        Task.WhenAll(logged).WaitAsync(_twinToken).GetAwaiter().GetResult();
     }
 
     /// <summary>The Text attribute of a failure the driver sends, unescaped.</summary>

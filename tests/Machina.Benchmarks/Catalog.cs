@@ -20,6 +20,7 @@ internal static class Catalog
         scenarios.Add(new StreamScenario(wideWindow: true, ur: true, twin: true));
         scenarios.Add(new UrTwinLoadScenario());
         scenarios.Add(new KrlTwinStreamScenario());
+        scenarios.Add(new KrlTwinStreamScenario(wideWindow: false));
         scenarios.Add(new StreamScenario(wideWindow: false, twin: true));
         scenarios.Add(new StreamScenario(wideWindow: true, twin: true));
         scenarios.Add(new RapidLoadScenario());

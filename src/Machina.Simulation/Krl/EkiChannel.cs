@@ -18,6 +18,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     private readonly Dictionary<string, string> _toSend = new(StringComparer.Ordinal);
     private TcpListener? _listener;
     private TcpClient? _client;
+    private EkiOutbox? _outbox;
     private CancellationTokenSource? _stop;
     private TcpListener? _reserved;
 
@@ -107,6 +108,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
                 return;
             }
             _client = client;
+            _outbox = new EkiOutbox(client.GetStream());
         }
         Alive(true);
         await ReadAsync(client, token).ConfigureAwait(false);
@@ -208,6 +210,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
                 return;
             }
             _client = null;
+            _outbox = null;
         }
         client.Dispose();
         controller.Options.Seam?.Closed(this, client);
@@ -283,7 +286,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     public bool Send(string root)
     {
         var xml = new StringBuilder("<").Append(root);
-        TcpClient? client;
+        EkiOutbox? outbox;
         lock (_gate)
         {
             string prefix = root + "/@";
@@ -294,7 +297,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
                     xml.Append(' ').Append(tag, prefix.Length, tag.Length - prefix.Length).Append("=\"").Append(Escape(value)).Append('"');
                 }
             }
-            client = _client;
+            outbox = _outbox;
         }
         if (!Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal)))
         {
@@ -306,7 +309,8 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             // The seam sees every send, also one without a connection (it counts what was lost).
             return seam.Send(this, root, text);
         }
-        return client is not null && SendDirect(Encoding.UTF8.GetBytes(text));
+        // Handed to the channel's writer: the program goes on while it is written (in order, several sends in one write).
+        return outbox is not null && outbox.Post(Encoding.UTF8.GetBytes(text));
     }
 
     /// <summary>Writes <paramref name="bytes"/> to the channel's client; false without one or when the connection broke.</summary>
@@ -335,9 +339,15 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     private static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
         .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
 
-    /// <summary>EKI_Close: ends the connection and stops listening; the memories keep their elements.</summary>
+    /// <summary>EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements.</summary>
     public void Close()
     {
+        EkiOutbox? outbox;
+        lock (_gate)
+        {
+            outbox = _outbox;
+        }
+        outbox?.Drain();
         TcpClient? client;
         lock (_gate)
         {

@@ -4,18 +4,21 @@ namespace Machina.Benchmarks;
 
 /// <summary>
 /// Streams moves online to the KRL twin running Machina's unchanged KRL driver (drivers/kuka) on EthernetKRL over loopback,
-/// not in real time, and times from the first issued move until the driver has acknowledged the last one (issue 23).
+/// not in real time, and times from the first issued move until the driver has acknowledged the last one (issue 23). With
+/// <paramref name="wideWindow"/> the robot sends blocks of 100 with 100 pending (<c>stream-kuka-twin</c>), otherwise it keeps
+/// Machina's default window (<c>stream-kuka-twin-default</c>).
 /// </summary>
-internal sealed class KrlTwinStreamScenario : Scenario
+internal sealed class KrlTwinStreamScenario(bool wideWindow = true) : Scenario
 {
     private KrlTwinController? _twin;
     private CancellationTokenSource? _stop;
     private Task? _program;
     private Robot? _bot;
 
-    public override string Name => "stream-kuka-twin";
+    public override string Name => wideWindow ? "stream-kuka-twin" : "stream-kuka-twin-default";
 
-    public override string Title => "Stream moves to the KRL twin running the KRL driver on EthernetKRL, instant execution, window 100/100";
+    public override string Title => "Stream moves to the KRL twin running the KRL driver on EthernetKRL, instant execution, "
+        + (wideWindow ? "window 100/100" : "default window");
 
     public override int TargetSize => 100_000;
 
@@ -50,8 +53,11 @@ internal sealed class KrlTwinStreamScenario : Scenario
         var bot = Robot.Create("Stream", "KUKA");
         _bot = bot;
         bot.ControlMode("online");
-        bot.BlockSize = 100;
-        bot.PendingCount = 100;
+        if (wideWindow)
+        {
+            bot.BlockSize = 100;
+            bot.PendingCount = 100;
+        }
         bot.ConnectAsync("127.0.0.1", twin.EkiPort("machina_kuka_server")).GetAwaiter().GetResult();
         bot.SpeedTo(1000);
         bot.TransformTo(400, 0, 500, -1, 0, 0, 0, 1, 0);

@@ -167,11 +167,7 @@ public class FaultMatrixTests
     [InlineData("KUKA")]
     public async Task Drop_ThenClearPendingActions_ReleasedRunOnceCancelledNever(string brand)
     {
-        // KUKA: on the KRL twin under a loaded machine (full suite, both frameworks at once), the actions the driver had read before
-        // the drop sometimes never ran after the reconnection (ids 4..8 missing): not yet known whether the twin's EthernetKRL
-        // channel or the driver loses them (issue 23). Alone the row passes on the twin; until the cause is found it runs the imitation.
-        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { After = 3, Kinds = [VirtualFault.Drop], Seed = 14103 },
-            imitationReason: brand == "KUKA" ? "actions read before a drop sometimes never run on the KRL twin under load" : null);
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { After = 3, Kinds = [VirtualFault.Drop], Seed = 14103 });
         var w = rig.CreateRobot();
         await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
         IssueProgram(w.Bot);

@@ -70,9 +70,7 @@ public class FaultProxyTests
     [InlineData("KUKA", "<Garbage></Garbage>")]
     public async Task GarbageTowardsTheHost_ProtocolErrorThenResume_EveryActionOnce(string brand, string garbage)
     {
-        // KUKA: the same gap as FaultMatrixTests.Drop_ThenClearPendingActions (actions read before the cut sometimes never run on
-        // the KRL twin under load; issue 23).
-        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults(), imitationReason: brand == "ABB" ? null : "actions read before a cut sometimes never run on the KRL twin under load");
+        await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
         await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions
         {
             Seed = 14303, GarbageConnections = 1, CloseAfterBytes = [Streaming(brand)], Garbage = System.Text.Encoding.ASCII.GetBytes(garbage),
