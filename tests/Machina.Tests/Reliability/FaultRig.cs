@@ -55,11 +55,10 @@ internal sealed class FaultRig : IAsyncDisposable
 
     /// <summary>
     /// Starts a controller of <paramref name="brand"/> with instant execution, no robot model (targets are taken as they
-    /// are), the given faults and room in its logs for <paramref name="logCapacity"/> requests. An ABB or KUKA rig runs the C#
-    /// imitation of the driver instead of the twin when <paramref name="imitationReason"/> says why (a known gap of the twin).
+    /// are), the given faults and room in its logs for <paramref name="logCapacity"/> requests. ABB and KUKA run their driver on
+    /// the twin, except for a plan with a restart that loses the buffer (the twins cannot reset a program pointer yet).
     /// </summary>
-    public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole,
-        string? imitationReason = null)
+    public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole)
     {
         switch (brand)
         {
@@ -67,7 +66,7 @@ internal sealed class FaultRig : IAsyncDisposable
             {
                 // A restart that loses the buffer needs the driver task's program pointer reset, which the RAPID twin's seam does not
                 // do yet: those plans run on the C# imitation until it does.
-                bool imitation = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer) || imitationReason is not null;
+                bool imitation = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
                 var c = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, RunsRapid = !imitation });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
@@ -85,7 +84,7 @@ internal sealed class FaultRig : IAsyncDisposable
                 bool losesBuffer = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
                 var c = new VirtualKukaController(new VirtualKukaControllerOptions
                 {
-                    InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites, RunsKrl = !losesBuffer && imitationReason is null,
+                    InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites, RunsKrl = !losesBuffer,
                 });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
