@@ -390,7 +390,7 @@ internal sealed class KrlWriter
     {
         if (_human)
         {
-            line.Append("  ; [").Append(KrlText.Comment(action.Describe())).Append(']');
+            line.Append("  ; [").AppendDescription(action, oneLine: true).Append(']');
         }
         _src.Add(line);
     }

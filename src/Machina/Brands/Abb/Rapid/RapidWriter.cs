@@ -191,7 +191,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         if (_human)
         {
-            _sb.Append("  ! [").Append(RapidText.CommentText(action.Describe())).Append(']');
+            _sb.Append("  ! [").AppendDescription(action).Append(']');
         }
         sink.Add(_sb);
     }
