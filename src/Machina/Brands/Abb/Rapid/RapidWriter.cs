@@ -18,6 +18,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     private readonly StringBuilder _sb = new(256);
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
+    private readonly RapidTargetText _targets = new();
     private int _target;
 
     /// <summary>Second pass (declared targets only): one <c>CONST robtarget|jointtarget targetN</c> per target; returns how many.</summary>
@@ -170,7 +171,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         if (_inline)
         {
-            _sb.RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
+            _targets.Append(_sb, position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
         }
         else
         {
