@@ -28,13 +28,24 @@ public sealed record ActionTranslation : RobotAction
     /// <inheritdoc/>
     public override string Describe()
     {
-        // Written into one buffer: compilers with human comments describe every move of a program of millions.
+        Span<char> buffer = stackalloc char[MaxDescriptionChars];
+        return new string(buffer[..WriteDescription(buffer)]);
+    }
+
+    /// <summary>Characters enough for <see cref="WriteDescription"/>.</summary>
+    internal const int MaxDescriptionChars = 16 + Vector.MaxTextChars;
+
+    /// <summary>
+    /// Writes the text of <see cref="Describe"/> into <paramref name="destination"/> and returns its length: compilers with human
+    /// comments describe every move of a program of millions, and copy it into their line without a string in between.
+    /// </summary>
+    internal int WriteDescription(Span<char> destination)
+    {
         ReadOnlySpan<char> verb = Relative ? "Move " : "Move to ";
-        Span<char> buffer = stackalloc char[16 + Vector.MaxTextChars];
-        verb.CopyTo(buffer);
+        verb.CopyTo(destination);
         int at = verb.Length;
-        at += Translation.WriteText(buffer[at..], ", ");
-        " mm".CopyTo(buffer[at..]);
-        return new string(buffer[..(at + 3)]);
+        at += Translation.WriteText(destination[at..], ", ");
+        " mm".CopyTo(destination[at..]);
+        return at + 3;
     }
 }

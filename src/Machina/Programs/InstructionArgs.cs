@@ -55,7 +55,7 @@ internal sealed class InstructionArgs
     internal double D(int i)
     {
         // Quoted numbers ("12.5") are accepted because the original stripped quotes from every argument.
-        if (double.TryParse(Value(i), NumberStyles.Float, CultureInfo.InvariantCulture, out double v) && double.IsFinite(v))
+        if (NumParse.TryParse(Value(i), out double v) && double.IsFinite(v))
         {
             return v;
         }

@@ -220,7 +220,7 @@ internal sealed class InstructionParser
             {
                 break;
             }
-            if (IsCommentStart(_pos) && (_pos == start || char.IsWhiteSpace(_text[_pos - 1])))
+            if (c == '/' && IsCommentStart(_pos) && (_pos == start || char.IsWhiteSpace(_text[_pos - 1])))
             {
                 // "1 // note" ends the value; "http://host" stays text.
                 break;

@@ -43,6 +43,22 @@ internal static class ProgramText
         });
     }
 
+    /// <summary>
+    /// Appends the action's description (<see cref="RobotAction.Describe"/>) safe inside a one-line comment: as
+    /// <see cref="CommentText"/>, or as <see cref="OneLine"/> with <paramref name="oneLine"/>. A move's description (digits and
+    /// fixed words only) is written straight into the line, without a string in between.
+    /// </summary>
+    internal static System.Text.StringBuilder AppendDescription(this System.Text.StringBuilder sb, RobotAction action, bool oneLine = false)
+    {
+        if (action is ActionTranslation translation)
+        {
+            Span<char> buffer = stackalloc char[ActionTranslation.MaxDescriptionChars];
+            return sb.Append(buffer[..translation.WriteDescription(buffer)]);
+        }
+        string text = action.Describe();
+        return sb.Append(oneLine ? OneLine(text) : CommentText(text));
+    }
+
     /// <summary>Milliseconds as exact decimal seconds, never in exponent form: 1500 → "1.5", 1 → "0.001", 0 → "0".</summary>
     internal static string Seconds(long millis)
     {

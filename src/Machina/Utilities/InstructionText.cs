@@ -55,6 +55,7 @@ internal static class InstructionText
         var text = new DefaultInterpolatedStringHandler(0, 0, Num.Inv, stackalloc char[256]);
         text.AppendLiteral(name);
         text.AppendLiteral("(");
+        Span<char> number = stackalloc char[NumAppend.MaxChars];
         bool separate = false;
         if (first is not null)
         {
@@ -67,7 +68,7 @@ internal static class InstructionText
             {
                 text.AppendLiteral(",");
             }
-            text.AppendFormatted(Num.Clean(value), "R");
+            text.AppendFormatted(number[..NumShortest.WriteRoundTrip(number, value)]);
             separate = true;
         }
         if (last is not null)

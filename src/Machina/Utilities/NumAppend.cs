@@ -41,16 +41,23 @@ internal static class NumAppend
         {
             return -1;
         }
-        long m = (long)scaled;
+        return WriteDecimal(destination, scaled < 0, (long)Math.Abs(scaled), decimals);
+    }
+
+    /// <summary>
+    /// Writes <paramref name="mantissa"/> · 10^−<paramref name="decimals"/> (0–9 decimals; the mantissa below 10^18) in plain
+    /// decimal notation, trailing zeros of the fraction removed, '-' first when <paramref name="negative"/> and the number is not
+    /// 0; returns the number of characters. Digits are written by hand: the general integer formatter took about 5 % of a RAPID compile.
+    /// </summary>
+    internal static int WriteDecimal(Span<char> destination, bool negative, long mantissa, int decimals)
+    {
         int at = 0;
-        if (m < 0)
+        if (negative && mantissa != 0)
         {
             destination[at++] = '-';
-            m = -m;
         }
-        long whole = Math.DivRem(m, Pow10L[decimals], out long fraction);
-        whole.TryFormat(destination[at..], out int length, default, Num.Inv);
-        at += length;
+        long whole = Math.DivRem(mantissa, Pow10L[decimals], out long fraction);
+        at += WriteDigits(destination[at..], whole, 1);
         if (fraction == 0)
         {
             return at;
@@ -62,12 +69,25 @@ internal static class NumAppend
             digits--;
         }
         destination[at++] = '.';
-        for (long p = Pow10L[digits - 1]; p > fraction && p > 1; p /= 10)
+        return at + WriteDigits(destination[at..], fraction, digits);
+    }
+
+    /// <summary>Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.</summary>
+    private static int WriteDigits(Span<char> destination, long value, int minDigits)
+    {
+        int count = 1;
+        for (long rest = value / 10; rest != 0; rest /= 10)
         {
-            destination[at++] = '0';
+            count++;
         }
-        fraction.TryFormat(destination[at..], out length, default, Num.Inv);
-        return at + length;
+        count = Math.Max(count, minDigits);
+        for (int i = count - 1; i >= 0; i--)
+        {
+            long next = value / 10;
+            destination[i] = (char)('0' + (int)(value - next * 10));
+            value = next;
+        }
+        return count;
     }
 
     /// <summary>

@@ -59,9 +59,13 @@ internal static class KrlFormat
     /// Appends <c>X …, Y …, Z …, A …, B …, C …</c>, then <c>, S 'B…', T 'B…'</c> when <paramref name="config"/> is given (joints known
     /// from a robot model), and <c>, E1 …</c> for each external axis that has a value.
     /// </summary>
-    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
+    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null) =>
+        AppendPose(sb, position, Abc(rotation), external, config);
+
+    /// <summary>As <see cref="AppendPose(StringBuilder, Vector, Rotation, ExternalAxes?, KukaConfiguration?)"/>, with the orientation's <see cref="Abc"/> already known.</summary>
+    internal static void AppendPose(StringBuilder sb, Vector position, (double A, double B, double C) abc, ExternalAxes? external, KukaConfiguration? config = null)
     {
-        (double a, double b, double c) = Abc(rotation);
+        (double a, double b, double c) = abc;
         AppendMm(sb.Append("X "), position.X);
         AppendMm(sb.Append(", Y "), position.Y);
         AppendMm(sb.Append(", Z "), position.Z);

@@ -410,9 +410,20 @@ internal sealed class KrlWriter
 
     private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
-        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, rotation, external, config);
+        if (!_abcKnown || rotation != _abcOf)
+        {
+            // A toolpath keeps its orientation over many moves: its Euler angles are computed once.
+            _abc = KrlFormat.Abc(rotation);
+            _abcOf = rotation;
+            _abcKnown = true;
+        }
+        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, _abc, external, config);
         EndTarget(line);
     }
+
+    private bool _abcKnown;
+    private Rotation _abcOf;
+    private (double A, double B, double C) _abc;
 
     /// <summary>Where a target's values go: straight into the line (inline), or into a declaration for the .dat file.</summary>
     private StringBuilder BeginTarget(StringBuilder line, string type)
@@ -442,7 +453,7 @@ internal sealed class KrlWriter
     {
         if (_human)
         {
-            line.Append("  ; [").Append(KrlText.Comment(action.Describe())).Append(']');
+            line.Append("  ; [").AppendDescription(action, oneLine: true).Append(']');
         }
         _src.Add(line);
     }

@@ -200,14 +200,16 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
     /// <remarks>
     /// A long program of short moves warns on every motion, so the comment line is built once in a builder, numbers formatted in
-    /// place (G15, as <see cref="Num.G"/>): only the action's text is made comment-safe, since the rest is fixed text and numbers.
+    /// place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>): only the action's text is made comment-safe, since the rest is fixed text and numbers.
     /// The warning's own string is made only while the job keeps warnings.
     /// </remarks>
     private void WarnBlend(RobotAction action, double radius, double length, string which)
     {
         StringBuilder line = _warning.Clear().Append(Indent).Append("# WARNING: ").Append(UrScriptText.CommentText(action.ToInstruction())).Append(' ');
         int start = line.Length;
-        line.Append(Num.Inv, $"the blend radius of {Num.Clean(radius):G15} mm is more than half of {which} motion ({Num.Clean(Math.Round(length, 3)):G15} mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo({Num.Clean(Math.Floor(length / 2 * 1000) / 1000):G15}) or less around short motions.");
+        line.Append("the blend radius of ").AppendGeneral(radius).Append(" mm is more than half of ").Append(which).Append(" motion (")
+            .AppendGeneral(Math.Round(length, 3)).Append(" mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(")
+            .AppendGeneral(Math.Floor(length / 2 * 1000) / 1000).Append(") or less around short motions.");
         job.Warn(action, $"{line.ToString(start, line.Length - start)}");
         sink.Add(line);
     }
@@ -323,7 +325,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     {
         if (_human)
         {
-            _sb.Append("  # [").Append(UrScriptText.CommentText(action.Describe())).Append(']');
+            _sb.Append("  # [").AppendDescription(action).Append(']');
         }
         sink.Add(_sb);
     }

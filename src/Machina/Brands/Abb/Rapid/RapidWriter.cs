@@ -18,6 +18,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     private readonly StringBuilder _sb = new(256);
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
+    private readonly RapidTargetText _targets = new();
     private int _target;
 
     /// <summary>Second pass (declared targets only): one <c>CONST robtarget|jointtarget targetN</c> per target; returns how many.</summary>
@@ -174,7 +175,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         if (_inline)
         {
-            _sb.RobTarget(position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
+            _targets.Append(_sb, position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
         }
         else
         {
@@ -195,7 +196,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         if (_human)
         {
-            _sb.Append("  ! [").Append(RapidText.CommentText(action.Describe())).Append(']');
+            _sb.Append("  ! [").AppendDescription(action).Append(']');
         }
         sink.Add(_sb);
     }

@@ -1,0 +1,81 @@
+namespace Machina;
+
+/// <summary>
+/// Fast text for the numbers users wrote (12.5, -0.125): the same characters as .NET's lossless <c>"R"</c> and 15-digit
+/// <c>"G15"</c> formatting, found without the general algorithm when the number has at most 9 decimals and 15 digits. A
+/// compile that warns on every move prints millions of such numbers.
+/// </summary>
+internal static class NumShortest
+{
+    private static readonly double[] Pow10 = [1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
+
+    /// <summary>
+    /// Writes the fewest decimals that read back as exactly <paramref name="value"/> into <paramref name="destination"/> (at
+    /// least <see cref="NumAppend.MaxChars"/> long) and returns the number of characters, or −1 when the value needs more
+    /// than 9 decimals or 15 digits, or is below 0.0001 or from 10^14 on in size (where "R" and "G15" write E notation), and
+    /// the caller must format it the general way. Zero (also −0) is "0".
+    /// </summary>
+    internal static int TryWrite(Span<char> destination, double value)
+    {
+        if (value == 0)
+        {
+            destination[0] = '0';
+            return 1;
+        }
+        double size = Math.Abs(value);
+        if (!(size >= 1e-4 && size < 1e14))
+        {
+            return -1;
+        }
+        for (int decimals = 0; decimals < Pow10.Length; decimals++)
+        {
+            double scaled = Math.Round(size * Pow10[decimals]);
+            if (scaled >= 1e15)
+            {
+                return -1;
+            }
+            // Both are exact doubles, so the division is correctly rounded: it is the double that reading
+            // "scaled · 10^-decimals" gives. The first number of decimals for which it is the value is the shortest text.
+            if (scaled / Pow10[decimals] == size)
+            {
+                return NumAppend.WriteDecimal(destination, value < 0, (long)scaled, decimals);
+            }
+        }
+        return -1;
+    }
+
+    /// <summary>Writes exactly what <c>Num.Clean(value).ToString("R", invariant)</c> writes; returns the number of characters.</summary>
+    internal static int WriteRoundTrip(Span<char> destination, double value)
+    {
+        int written = TryWrite(destination, value);
+        if (written >= 0)
+        {
+            return written;
+        }
+        Num.Clean(value).TryFormat(destination, out written, "R", Num.Inv);
+        return written;
+    }
+
+    /// <summary>Writes exactly what <c>Num.Clean(value).ToString("G15", invariant)</c> writes; returns the number of characters.</summary>
+    /// <remarks>
+    /// A value that reads back from at most 15 digits is within half a unit in the last place of that decimal, far less than
+    /// half a step of the 15th digit, so G15 rounds it to the same decimal and prints the same text.
+    /// </remarks>
+    internal static int WriteGeneral(Span<char> destination, double value)
+    {
+        int written = TryWrite(destination, value);
+        if (written >= 0)
+        {
+            return written;
+        }
+        Num.Clean(value).TryFormat(destination, out written, "G15", Num.Inv);
+        return written;
+    }
+
+    /// <summary>Appends the text of <see cref="WriteGeneral"/> (G15, −0 as 0).</summary>
+    internal static System.Text.StringBuilder AppendGeneral(this System.Text.StringBuilder sb, double value)
+    {
+        Span<char> buffer = stackalloc char[NumAppend.MaxChars];
+        return sb.Append(buffer[..WriteGeneral(buffer, value)]);
+    }
+}
