@@ -86,6 +86,18 @@ public class ReferenceDocTests
     }
 
     [Fact]
+    public void Added_LineEqualToTheProgramsClosingOne_CountsWhereItStands()
+    {
+        // A UR wait loop's "end" before an unsupported line, then the program's own "end": the loop keeps its "end".
+        string[] before = ["def p():", "movel(a)", "end"];
+        string[] after = ["def p():", "movel(a)", "while x:", "sync()", "end", "# NOT SUPPORTED", "end"];
+
+        Assert.Equal(["while x:", "sync()", "end", "# NOT SUPPORTED"], ReferenceGenerator.Added(before, after));
+        Assert.Equal(["b"], ReferenceGenerator.Added(["a", "c"], ["a", "b", "c"]));
+        Assert.Empty(ReferenceGenerator.Added(["a", "b"], ["a", "b"]));
+    }
+
+    [Fact]
     public void NativeTable_MoveTo_HasTheExactLinesOfEachBrand()
     {
         // The generator itself must be able to fail: a known example gives known lines (values checked by hand against

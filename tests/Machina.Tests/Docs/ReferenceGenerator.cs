@@ -150,26 +150,50 @@ internal static class ReferenceGenerator
             return [$"refused with {ex.GetType().Name}: {ex.Message}"];
         }
         var options = new CompileOptions { HumanComments = false };
-        var remaining = before.Compile(brand, options).Files.SelectMany(f => f.Lines).Select(l => l.Trim())
-            .GroupBy(l => l, StringComparer.Ordinal).ToDictionary(g => g.Key, g => g.Count(), StringComparer.Ordinal);
-        var added = new List<string>();
-        foreach (string line in after.Compile(brand, options).Files.SelectMany(f => f.Lines).Select(l => l.Trim()))
-        {
-            if (remaining.TryGetValue(line, out int count) && count > 0)
-            {
-                remaining[line] = count - 1;
-            }
-            else if (line.Length > 0)
-            {
-                added.Add(line);
-            }
-        }
+        string[] old = [.. before.Compile(brand, options).Files.SelectMany(f => f.Lines).Select(l => l.Trim())];
+        string[] now = [.. after.Compile(brand, options).Files.SelectMany(f => f.Lines).Select(l => l.Trim())];
+        List<string> added = [.. Added(old, now).Where(l => l.Length > 0)];
         if (added.Count > MaxLinesShown)
         {
             // A long run (a printer's arc as straight segments): the first lines, how many are left out, and the last.
             added = [.. added.Take(MaxLinesShown - 2), $"(… {added.Count - MaxLinesShown + 1} more lines …)", added[^1]];
         }
         return added.Count > 0 ? added : ["(no line)"];
+    }
+
+    /// <summary>
+    /// The lines of <paramref name="now"/> that are not in a longest common subsequence with <paramref name="old"/>, in order:
+    /// a line equal to one of the program's own (a loop's <c>end</c>) counts where it stands, not where it first fits.
+    /// </summary>
+    internal static IEnumerable<string> Added(string[] old, string[] now)
+    {
+        // kept[i, j]: the longest common subsequence of old[i..] and now[j..].
+        var kept = new int[old.Length + 1, now.Length + 1];
+        for (int i = old.Length - 1; i >= 0; i--)
+        {
+            for (int j = now.Length - 1; j >= 0; j--)
+            {
+                kept[i, j] = string.Equals(old[i], now[j], StringComparison.Ordinal) ? kept[i + 1, j + 1] + 1 : Math.Max(kept[i + 1, j], kept[i, j + 1]);
+            }
+        }
+        // Each old line is matched as late as it can be: the example's lines come before the program's closing ones.
+        int a = 0, b = 0;
+        while (b < now.Length)
+        {
+            if (kept[a, b + 1] == kept[a, b])
+            {
+                yield return now[b++];
+            }
+            else if (string.Equals(old[a], now[b], StringComparison.Ordinal))
+            {
+                a++;
+                b++;
+            }
+            else
+            {
+                a++;
+            }
+        }
     }
 
     /// <summary>The wire text each example action is sent as, replayed on a cursor as the release cursor sees it, or the refusal.</summary>
