@@ -1,35 +1,25 @@
-using System.Net;
-using Machina.Simulation;
 using Machina.Simulation.Rapid;
 using Machina.Simulation.Rws;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Cli;
 
 /// <summary><c>machina drivers abb --install</c> installs and starts the driver through the twin's Robot Web Services.</summary>
 public sealed class DriversInstallCliTests : IAsyncLifetime
 {
-    private readonly RapidTwinController _twin = new(new RapidTwinOptions { Model = RobotModels.Get("IRB 1600-8/1.45") });
+    private readonly RwsTwinRig _rig = new(withMonitorTask: false);
+    private readonly RapidTwinController _twin;
     private readonly RwsTwinServer _rws;
     private readonly int _port;
 
     public DriversInstallCliTests()
     {
-        (System.Net.Sockets.TcpListener driver, System.Net.Sockets.TcpListener monitor) = LoopbackPorts.BindPair();
-        _port = ((IPEndPoint)driver.LocalEndpoint).Port;
-        _twin.Task();
-        _twin.Reserve(driver);
-        _twin.Reserve(monitor);
-        _rws = new RwsTwinServer(_twin);
-        _rws.Start();
+        (_twin, _rws, _port) = (_rig.Twin, _rig.Rws, _rig.Port);
     }
 
     public Task InitializeAsync() => Task.CompletedTask;
 
-    public async Task DisposeAsync()
-    {
-        await _rws.DisposeAsync();
-        Assert.True(_twin.StopTasks(TimeSpan.FromSeconds(10)), "the RAPID tasks to stop");
-    }
+    public async Task DisposeAsync() => await _rig.DisposeAsync();
 
     [Fact]
     public async Task DriversAbbInstall_LoadsAndStartsTheDriver_AndSaysHowToConnect()

@@ -1,6 +1,4 @@
 using System.Collections.Concurrent;
-using System.Net;
-using Machina.Simulation;
 using Machina.Simulation.Rapid;
 using Machina.Simulation.Rws;
 using Machina.Tests.Online;
@@ -14,31 +12,20 @@ namespace Machina.Tests.Rws;
 /// </summary>
 public sealed class AbbInstallTests : IAsyncLifetime
 {
-    private const string Monitor = "T_MACHINA_MONITOR";
+    private const string Monitor = RwsTwinRig.MonitorTask;
+    private readonly RwsTwinRig _rig = new(withMonitorTask: true);
     private readonly RapidTwinController _twin;
     private readonly RwsTwinServer _rws;
     private readonly int _port;
 
     public AbbInstallTests()
     {
-        (System.Net.Sockets.TcpListener driver, System.Net.Sockets.TcpListener monitor) = LoopbackPorts.BindPair();
-        _port = ((IPEndPoint)driver.LocalEndpoint).Port;
-        _twin = new RapidTwinController(new RapidTwinOptions { Model = RobotModels.Get("IRB 1600-8/1.45") });
-        _twin.Task();          // the controller's motion task
-        _twin.Task(Monitor);   // configured by the user in the system parameters (docs/rws.md)
-        _twin.Reserve(driver);
-        _twin.Reserve(monitor);
-        _rws = new RwsTwinServer(_twin);
-        _rws.Start();
+        (_twin, _rws, _port) = (_rig.Twin, _rig.Rws, _rig.Port);
     }
 
     public Task InitializeAsync() => Task.CompletedTask;
 
-    public async Task DisposeAsync()
-    {
-        await _rws.DisposeAsync();
-        Assert.True(_twin.StopTasks(TimeSpan.FromSeconds(10)), "the RAPID tasks to stop");
-    }
+    public async Task DisposeAsync() => await _rig.DisposeAsync();
 
     private Robot NewRobot(Action<Robot>? configure = null)
     {
