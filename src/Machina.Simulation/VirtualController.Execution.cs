@@ -59,24 +59,7 @@ public abstract partial class VirtualController<TState>
                     Interlocked.Increment(ref _requestsExecuted);
                     return;
                 }
-                if (runs)
-                {
-                    LogExecuted(queued.Id);
-                }
-                Interlocked.Increment(ref _requestsExecuted);
-                // Before the acknowledgement goes out: whoever sees it also sees the pause it may start.
-                CountTowardsPause();
-                bool goesOn;
-                try
-                {
-                    goesOn = await AfterExecutedAsync(queued.Request, queued.Id, token).ConfigureAwait(false);
-                }
-                catch (Exception e) when (e is not OperationCanceledException)
-                {
-                    RecordError($"answering request {queued.Id.ToString(CultureInfo.InvariantCulture)} failed: {e.Message}");
-                    goesOn = true;
-                }
-                if (!goesOn)
+                if (!await CompleteAsync(queued.Request, queued.Id, runs, token).ConfigureAwait(false))
                 {
                     return;
                 }
@@ -85,6 +68,30 @@ public abstract partial class VirtualController<TState>
         catch (Exception e) when (e is OperationCanceledException or ChannelClosedException)
         {
             // Stopping.
+        }
+    }
+
+    /// <summary>
+    /// What follows a request the robot is done with: logs it executed (unless its driver skipped it), counts it, then runs
+    /// <see cref="AfterExecutedAsync"/> (an answer that fails is recorded, and the controller serves on). False ends the driver program.
+    /// </summary>
+    private async Task<bool> CompleteAsync(object request, int id, bool runs, CancellationToken token)
+    {
+        if (runs)
+        {
+            LogExecuted(id);
+        }
+        Interlocked.Increment(ref _requestsExecuted);
+        // Before the acknowledgement goes out: whoever sees it also sees the pause it may start.
+        CountTowardsPause();
+        try
+        {
+            return await AfterExecutedAsync(request, id, token).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is not OperationCanceledException)
+        {
+            RecordError($"answering request {id.ToString(CultureInfo.InvariantCulture)} failed: {e.Message}");
+            return true;
         }
     }
 

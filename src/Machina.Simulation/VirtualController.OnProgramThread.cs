@@ -1,5 +1,3 @@
-using System.Globalization;
-
 namespace Machina.Simulation;
 
 public abstract partial class VirtualController<TState>
@@ -11,13 +9,13 @@ public abstract partial class VirtualController<TState>
     /// program's) what the execution loop does for it: waits while the controller stops answering, logs it executed, and runs
     /// <see cref="AfterExecutedAsync"/> (the fault plan and the acknowledgement). No hand-off to another thread, so a streamed
     /// instruction costs no thread switch here. A controller uses this or <see cref="EnqueueAsync"/> for its acknowledgements,
-    /// never both (their order would not be kept). Returns false when a restart lost the request (nothing was sent).
+    /// never both (their order would not be kept). A request a restart lost is not sent.
     /// </summary>
-    private protected bool AcknowledgeOnCaller(object request, int id, string logText, CancellationToken token)
+    private protected void AcknowledgeOnCaller(object request, int id, string logText, CancellationToken token)
     {
         if (!Receives(id, out int generation))
         {
-            return false; // read from a client a restart cut off: lost with the rest of the buffer
+            return; // read from a client a restart cut off: lost with the rest of the buffer
         }
         CountReceived(logText);
         // Waiting while the controller does not answer, it counts as buffered (as a queued request would).
@@ -35,20 +33,8 @@ public abstract partial class VirtualController<TState>
             // The robot already did it: only its acknowledgement is lost; it is in the execution log.
             LogExecuted(id);
             Interlocked.Increment(ref _requestsExecuted);
-            return false;
+            return;
         }
-        LogExecuted(id);
-        Interlocked.Increment(ref _requestsExecuted);
-        // Before the acknowledgement goes out: whoever sees it also sees the pause it may start.
-        CountTowardsPause();
-        try
-        {
-            AfterExecutedAsync(request, id, token).GetAwaiter().GetResult();
-        }
-        catch (Exception e) when (e is not OperationCanceledException)
-        {
-            RecordError($"answering request {id.ToString(CultureInfo.InvariantCulture)} failed: {e.Message}");
-        }
-        return true;
+        CompleteAsync(request, id, runs: true, token).GetAwaiter().GetResult();
     }
 }

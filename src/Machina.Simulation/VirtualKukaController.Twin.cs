@@ -38,7 +38,7 @@ public sealed partial class VirtualKukaController
         var twin = new KrlTwinController(new KrlTwinOptions
         {
             Model = Model ?? RobotModels.Get("KR 6 R900 sixx"),
-            StartJoints = base.State.Joints,
+            StartJoints = base.State.Joints, // the options' starting joints (Observe keeps them until the twin is made)
             Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
             Seam = this,
@@ -92,8 +92,8 @@ public sealed partial class VirtualKukaController
         }
     }
 
-    /// <summary>The robot now: where the twin's arm is, with the driver's settings and the outputs.</summary>
-    public new VirtualKukaState State => Twin is { } twin ? TwinState(twin, base.State) : base.State;
+    /// <summary>The robot now (<see cref="VirtualController{TState}.State"/>): where the twin's arm is, with the driver's settings and the outputs.</summary>
+    private protected override VirtualKukaState Observe(VirtualKukaState kept) => Twin is { } twin ? TwinState(twin, kept) : kept;
 
     private static VirtualKukaState TwinState(KrlTwinController twin, VirtualKukaState basis)
     {
