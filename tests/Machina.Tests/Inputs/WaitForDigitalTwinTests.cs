@@ -188,8 +188,7 @@ public class WaitForDigitalTwinTests
         var (bot, executed, _) = await KukaTestSupport.ConnectKukaAsync(controller, b => b.ActionFailed += (_, e) => failed.TrySetResult(e));
         try
         {
-            bot.WaitForDigital(8, true, 300);
-            bot.WriteDigital(2, true);
+            bot.Do("WaitForDigital(8, true, 300); WriteDigital(2, true);"); // issued together: the write is cancelled, never issued after the failure
             ActionFailedArgs e = await failed.Task.WaitAsync(OnlineTestSupport.Limit);
 
             Assert.Equal(1, e.Action.Id);
