@@ -23,6 +23,7 @@ public sealed partial class VirtualUrController
             StartJoints = base.State.Joints, // the options' starting joints (Observe keeps them until the twin is made)
             Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
+            Route = _options.OutboundRoute,
         });
         twin.ProgramReceived += program =>
         {

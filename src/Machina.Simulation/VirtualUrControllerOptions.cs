@@ -36,6 +36,12 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     /// <summary>The controller software version RTDE reports; from 5 on RTDE runs up to 500 Hz, before up to 125 Hz. Default 5.11.0.</summary>
     public Version ControllerVersion { get; init; } = new(5, 11, 0);
 
+    /// <summary>
+    /// Where a program's <c>socket_open</c> really connects, given where it asks: the network between the controller and the
+    /// computer it calls (a router, or a test's proxy that delays or cuts that link). Default null: where it asks.
+    /// </summary>
+    public Func<System.Net.DnsEndPoint, System.Net.DnsEndPoint>? OutboundRoute { get; init; }
+
     /// <summary>Where the robot starts without a model: (492, -133, 488) mm with the tool down, about where a UR5e is at those joints.</summary>
     internal static Pose DefaultStart => new(new Vector(492, -133, 488), Rotation.FromQuaternion(0, 1, 0, 0));
 

@@ -80,6 +80,11 @@ internal static partial class UrBuiltins
         {
             old.Dispose();
         }
+        if (m.Controller.Options.Route is { } route)
+        {
+            System.Net.DnsEndPoint to = route(new System.Net.DnsEndPoint(address, port));
+            (address, port) = (to.Host, to.Port);
+        }
         CancellationToken token = m.Cancellation;
         TimeSpan timeout = m.Controller.Options.SocketOpenTimeout;
         UrSocket? socket = m.Unlocked(() => UrSocket.Connect(address, port, timeout, token));

@@ -71,9 +71,11 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             socket.ConnectAsync(address, port, cts.Token).AsTask().GetAwaiter().GetResult();
             return new UrSocket(socket);
         }
-        catch (Exception e) when (e is SocketException or OperationCanceledException or ArgumentException && !cancellation.IsCancellationRequested)
+        catch (Exception e) when (e is SocketException or OperationCanceledException or ArgumentException)
         {
+            // A program stopped while it connects stops (whatever the connect said); otherwise socket_open gives False.
             socket.Dispose();
+            cancellation.ThrowIfCancellationRequested();
             return null;
         }
     }

@@ -24,6 +24,9 @@ internal sealed class UrTwinOptions
     /// <summary>How many steps the arm's trace keeps (0: all, for a verification; a controller serving streams keeps the last few).</summary>
     public int MaxTrace { get; init; }
 
+    /// <summary>Where <c>socket_open</c> really connects, given where the program asks (the network in between), or null.</summary>
+    public Func<System.Net.DnsEndPoint, System.Net.DnsEndPoint>? Route { get; init; }
+
     /// <summary>How long <c>socket_open</c> tries to connect (the Script Manual says 2 s).</summary>
     public TimeSpan SocketOpenTimeout { get; init; } = TimeSpan.FromSeconds(2);
 }

@@ -34,6 +34,28 @@ internal sealed record FaultProxyOptions
 
     /// <summary>Write every byte on its own, in both directions, on every channel. Default false.</summary>
     public bool SplitIntoBytes { get; init; }
+
+    /// <summary>
+    /// Hold the bytes towards the controller on this many of the fault channel's first connections, from
+    /// <see cref="HoldAfterBytes"/> on, until <see cref="FaultProxy.ReleaseHeldAsync"/>: a slow link that still delivers them
+    /// after the host has given up (the controller side stays open until then). Default 0.
+    /// </summary>
+    public int HoldConnections { get; init; }
+
+    /// <summary>
+    /// Every fault-channel connection can be held later: <see cref="FaultProxy.HoldNow"/> holds what follows on the live ones,
+    /// <see cref="FaultProxy.HoldNext"/> the next ones from their first byte. Default false.
+    /// </summary>
+    public bool Holdable { get; init; }
+
+    /// <summary>Bytes that pass before a held connection starts holding. Default 0 (hold everything).</summary>
+    public int HoldAfterBytes { get; init; }
+
+    /// <summary>
+    /// Hold the bytes towards the side that connected instead (for a proxy a controller connects through, e.g. a UR driver
+    /// program calling the host back: the host's instructions to it). Default false.
+    /// </summary>
+    public bool HoldTowardsConnector { get; init; }
 }
 
 /// <summary>
@@ -42,14 +64,14 @@ internal sealed record FaultProxyOptions
 /// into single bytes and injects garbage towards the host, deterministically from a seed. Every wait is bounded; dispose it
 /// at the end of the test (it closes everything and waits for its loops).
 /// </summary>
-internal sealed class FaultProxy : IAsyncDisposable
+internal sealed partial class FaultProxy : IAsyncDisposable
 {
     private const int MaxPortAttempts = 50;
     private static readonly TimeSpan StopLimit = TimeSpan.FromSeconds(10);
 
     private readonly FaultProxyOptions _options;
     private readonly TcpListener[] _listeners;
-    private readonly int[] _targets;
+    private readonly int[] _targets; // a channel's target can change (Retarget) before its next connection
     private readonly CancellationTokenSource _stopping = new();
     private readonly ConcurrentBag<TcpClient> _sockets = [];
     private readonly List<Task> _loops = [];
@@ -59,12 +81,14 @@ internal sealed class FaultProxy : IAsyncDisposable
     private int _closed;
     private int _garbage;
     private int _accepted;
+    private readonly int[] _acceptedOn;
 
     private FaultProxy(FaultProxyOptions options, TcpListener[] listeners, int[] targets)
     {
         _options = options;
         _listeners = listeners;
         _targets = targets;
+        _acceptedOn = new int[listeners.Length];
         for (int i = 0; i < listeners.Length; i++)
         {
             int channel = i;
@@ -77,6 +101,9 @@ internal sealed class FaultProxy : IAsyncDisposable
 
     /// <summary>Connections accepted on all channels.</summary>
     public int Accepted => Volatile.Read(ref _accepted);
+
+    /// <summary>Connections accepted on one channel (0 = the first port).</summary>
+    public int AcceptedOn(int channel) => Volatile.Read(ref _acceptedOn[channel]);
 
     /// <summary>Connections the proxy closed as a fault.</summary>
     public int Closed => Volatile.Read(ref _closed);
@@ -95,6 +122,9 @@ internal sealed class FaultProxy : IAsyncDisposable
 
     /// <summary>Times garbage was injected.</summary>
     public int GarbageInjected => Volatile.Read(ref _garbage);
+
+    /// <summary>Points <paramref name="channel"/> at another port from its next connection on (a port the other side chooses late).</summary>
+    public void Retarget(int channel, int port) => Volatile.Write(ref _targets[channel], port);
 
     /// <summary>Starts a proxy for the controller ports <paramref name="targetPorts"/> (consecutive on the proxy side too).</summary>
     public static FaultProxy Start(IReadOnlyList<int> targetPorts, FaultProxyOptions options)
@@ -145,6 +175,7 @@ internal sealed class FaultProxy : IAsyncDisposable
                 break;
             }
             Interlocked.Increment(ref _accepted);
+            Interlocked.Increment(ref _acceptedOn[channel]);
             served.Add(ServeAsync(host, channel, number++, token));
         }
         await Task.WhenAll(served);
@@ -160,7 +191,7 @@ internal sealed class FaultProxy : IAsyncDisposable
         {
             using var connect = CancellationTokenSource.CreateLinkedTokenSource(token);
             connect.CancelAfter(StopLimit);
-            await controller.ConnectAsync(IPAddress.Loopback, _targets[channel], connect.Token);
+            await controller.ConnectAsync(IPAddress.Loopback, Volatile.Read(ref _targets[channel]), connect.Token);
         }
         catch (Exception e) when (e is SocketException or OperationCanceledException or ObjectDisposedException)
         {
@@ -183,9 +214,21 @@ internal sealed class FaultProxy : IAsyncDisposable
         int closeAt = faultNumber >= 0 && faultNumber < _options.CloseConnections ? random.Next(min, max + 1) : -1;
         int garbageAt = faultNumber >= 0 && faultNumber < _options.GarbageConnections ? random.Next(min, max + 1) : -1;
         using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
-        Task up = PumpAsync(host, controller, new Random(seed + 1), -1, -1, both.Token);
-        Task<long> down = PumpAsync(controller, host, new Random(seed + 2), closeAt, garbageAt, both.Token);
-        await Task.WhenAny(up, down);
+        bool held = faultNumber >= 0 && (faultNumber < _options.HoldConnections || _options.Holdable);
+        long holdAt = held && (faultNumber < _options.HoldConnections || TakeNextHold()) ? _options.HoldAfterBytes : long.MaxValue;
+        HeldLink? hold = !held ? null : _options.HoldTowardsConnector ? AddHeld(controller, host, holdAt) : AddHeld(host, controller, holdAt);
+        Task<long> up = hold is not null && !_options.HoldTowardsConnector
+            ? hold.PumpAsync(both.Token)
+            : PumpAsync(host, controller, new Random(seed + 1), -1, -1, both.Token);
+        Task<long> down = hold is not null && _options.HoldTowardsConnector
+            ? hold.PumpAsync(both.Token)
+            : PumpAsync(controller, host, new Random(seed + 2), closeAt, garbageAt, both.Token);
+        Task first = await Task.WhenAny(up, down);
+        if (hold is not null && hold.Holding)
+        {
+            // The sender is gone and the receiver still listens: what the link holds arrives when the test releases it.
+            await (_options.HoldTowardsConnector ? down : up);
+        }
         await both.CancelAsync();
         host.Dispose();
         controller.Dispose();
@@ -262,6 +305,7 @@ internal sealed class FaultProxy : IAsyncDisposable
     public async ValueTask DisposeAsync()
     {
         await _stopping.CancelAsync();
+        ReleaseOnStop();
         foreach (TcpListener listener in _listeners)
         {
             listener.Stop();

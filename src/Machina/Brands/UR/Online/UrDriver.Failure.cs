@@ -11,8 +11,11 @@ internal sealed partial class UrDriver : ILinkReceiver
     /// <summary>How long a closed driver connection waits for RTDE to say whether the program stopped on an error.</summary>
     private static readonly TimeSpan StopEvidenceTimeout = TimeSpan.FromSeconds(2);
 
-    /// <summary>How long a failure waits for the runtime error's text from a client interface before reporting without it.</summary>
-    private static readonly TimeSpan ReasonTimeout = TimeSpan.FromSeconds(2);
+    /// <summary>
+    /// How long a stopped program's failure waits for the runtime error's text from a client interface, or for RTDE to show
+    /// another program playing (the driver program was replaced, not failed), before it is reported without a text.
+    /// </summary>
+    private static readonly TimeSpan ReplacementTimeout = TimeSpan.FromSeconds(5);
 
     private readonly Queue<int> _unacknowledged = new();
     private readonly TaskCompletionSource<string> _runtimeException = new(TaskCreationOptions.RunContinuationsAsynchronously);
@@ -93,23 +96,78 @@ internal sealed partial class UrDriver : ILinkReceiver
         _ = ReportFailureAsync(failed, sample);
     }
 
+    /// <summary>
+    /// Reports the action in flight failed with the controller's words, unless another program took the controller: then the
+    /// driver program did not fail, it was replaced (a script delivered late, a program started at the pendant), and the
+    /// link is lost instead, so that connecting again resumes from the registers.
+    /// </summary>
     private async Task ReportFailureAsync(int id, RtdeSample sample)
     {
         string? text = null;
-        if (ScriptPortSendsMessages)
+        Task<string> reason = ScriptPortSendsMessages ? _runtimeException.Task : new TaskCompletionSource<string>().Task;
+        using var done = new CancellationTokenSource();
+        Task<int> replaced = OtherProgramAsync(done.Token);
+        try
         {
-            try
+            Task first = await Task.WhenAny(reason, replaced).WaitAsync(ReplacementTimeout, Time).ConfigureAwait(false);
+            if (first == reason)
             {
-                text = await _runtimeException.Task.WaitAsync(ReasonTimeout, Time).ConfigureAwait(false);
+                text = await reason.ConfigureAwait(false);
             }
-            catch (TimeoutException)
+            else
             {
-                // The controller sent no text: the reason names what RTDE showed.
+                int other = await replaced.ConfigureAwait(false);
+                Log.Warning($"The UR driver program (instance {_instance.ToString(Num.Inv)}) was replaced by another program (instance {other.ToString(Num.Inv)}).");
+                OnClosed(new RobotConnectionException($"another program (instance {other.ToString(Num.Inv)}) replaced the driver program on the controller"));
+                return;
             }
         }
-        string reason = text ?? $"the program stopped (RTDE runtime_state {sample.RuntimeState.ToString(Num.Inv)}, safety status {sample.SafetyName}) without running it";
-        Log.Error($"The UR controller could not run action {id.ToString(Num.Inv)}: {reason}");
-        Listener?.OnFailed(id, reason, null);
+        catch (TimeoutException)
+        {
+            // No text and no other program: the reason names what RTDE showed.
+        }
+        finally
+        {
+            await done.CancelAsync().ConfigureAwait(false);
+        }
+        string because = text ?? $"the program stopped (RTDE runtime_state {sample.RuntimeState.ToString(Num.Inv)}, safety status {sample.SafetyName}) without running it";
+        Log.Error($"The UR controller could not run action {id.ToString(Num.Inv)}: {because}");
+        Listener?.OnFailed(id, because, null);
+    }
+
+    /// <summary>
+    /// Completes with the instance number of another program once RTDE shows it playing, or with 0 when
+    /// <paramref name="cancellationToken"/> is cancelled (a broken RTDE link shows nothing more). Never throws.
+    /// </summary>
+    private async Task<int> OtherProgramAsync(CancellationToken cancellationToken)
+    {
+        while (true)
+        {
+            Task<RtdeSample> next;
+            lock (_rtdeGate)
+            {
+                if (_latest is RtdeSample s && s.RuntimeState == RtdeSample.Playing && s.Instance != _instance)
+                {
+                    return s.Instance;
+                }
+                next = _nextSample.Task;
+            }
+            try
+            {
+                try
+                {
+                    await next.WaitAsync(cancellationToken).ConfigureAwait(false);
+                }
+                catch (RobotConnectionException)
+                {
+                    await Task.Delay(Timeout.Infinite, cancellationToken).ConfigureAwait(false);
+                }
+            }
+            catch (OperationCanceledException)
+            {
+                return 0;
+            }
+        }
     }
 
     /// <summary>A runtime error's text from a client interface (the script port); the first is kept.</summary>

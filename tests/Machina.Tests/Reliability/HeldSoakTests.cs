@@ -1,0 +1,221 @@
+using System.Diagnostics;
+using System.Net;
+using Machina.Simulation;
+using Machina.Tests.Support;
+using Xunit.Abstractions;
+using static Machina.Tests.Online.OnlineTestSupport;
+
+namespace Machina.Tests.Reliability;
+
+/// <summary>
+/// The soak's stall schedules (issue 28), per brand: a long random program streamed through a <see cref="FaultProxy"/> that,
+/// at seeded points, holds the host's requests in the network, cuts the host's link and delivers what it held to the old
+/// connection before or while the host connects again; on UR it also holds a driver script, which arrives after the host's
+/// next attempt streams and replaces that program. Every action is executed exactly once and in order, on the controller
+/// and on the host, and the robot ends where the program leaves it.
+/// </summary>
+public class HeldSoakTests(ITestOutputHelper output)
+{
+    private const int Actions = 20_000;
+    private const int Events = 8;
+    private static readonly TimeSpan WaitLimit = TimeSpan.FromSeconds(120);
+
+    [Theory]
+    [InlineData("ABB", 14211)]
+    [InlineData("UR", 14212)]
+    [InlineData("KUKA", 14213)]
+    public async Task Soak_HeldInstructionsAndScripts_EachExecutedOnceInOrder(string brand, int seed)
+    {
+        var watch = Stopwatch.StartNew();
+        var random = new Random(seed);
+        bool ur = brand == "UR";
+        // ABB, KUKA: the driver connection passes the proxy. UR: the driver program's call back passes `back`, the script port `front`.
+        await using FaultProxy? back = ur ? FaultProxy.Start([1], new FaultProxyOptions { Seed = seed, Holdable = true, HoldTowardsConnector = true }) : null;
+        await using FaultRig rig = ur ? await StartUrThroughAsync(back!) : await FaultRig.StartAsync(brand, new VirtualFaults(), logCapacity: Actions);
+        await using FaultProxy front = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = seed, Holdable = true });
+        FaultProxy requests = back ?? front;
+        var w = rig.CreateRobot(b => { b.BlockSize = 50; b.PendingCount = 40; }, port: front.Port);
+        await rig.RecoverAsync(w);
+        Vector end = IssueRandomProgram(w.Bot, random);
+        int heldInstructions = 0, releasedDuring = 0, heldScripts = 0, recoveries = 0;
+        bool scriptHeld = false;
+
+        string step = "start";
+        try
+        {
+        for (int k = 1; k <= Events; k++)
+        {
+            step = $"event {k}: advancing";
+            await AdvanceAsync(rig, w, k * Actions / (Events + 1));
+            step = $"event {k}: holding";
+            if (scriptHeld)
+            {
+                // The script held at the last event arrives now, after the attempt that followed it streams: its program replaces
+                // the host's, and the host connects again.
+                int before = w.Faults.Count;
+                step = $"event {k}: a late script";
+                await front.ReleaseHeldAsync().WaitAsync(Limit);
+                scriptHeld = false;
+                await Eventually.TrueAsync(() => w.Faults.Count > before, "the host to lose the program the late script replaced", WaitLimit);
+                await rig.RecoverAsync(w);
+                await AdvanceAsync(rig, w, rig.ExecutedIds.Count + 1);
+            }
+            requests.HoldNow();
+            await Eventually.TrueAsync(() => requests.HeldBytes > 0, "requests to be held", WaitLimit);
+            int lost = w.Faults.Count;
+            step = $"event {k}: cutting";
+            requests.CutHeldSenders();
+            await Eventually.TrueAsync(() => w.Faults.Count > lost, "the host to see its link cut", WaitLimit);
+            heldInstructions++;
+            step = $"event {k}: recovering";
+            if (ur && random.Next(2) == 0)
+            {
+                // The next script is held too: that attempt times out and the one after it streams.
+                front.HoldNext();
+                scriptHeld = true;
+                heldScripts++;
+                await requests.ReleaseHeldAsync().WaitAsync(Limit);
+                w.Bot.ConnectTimeout = TimeSpan.FromSeconds(5);
+                await rig.RecoverAsync(w);
+                w.Bot.ConnectTimeout = Limit;
+            }
+            else if (random.Next(2) == 0)
+            {
+                await requests.ReleaseHeldAsync().WaitAsync(Limit);
+                await rig.RecoverAsync(w);
+            }
+            else
+            {
+                int attempts = NextAttemptCount(rig, front);
+                Task reconnect = rig.RecoverAsync(w);
+                await Eventually.TrueAsync(() => NextAttemptCount(rig, front) > attempts || reconnect.IsCompleted, "the host's next attempt", WaitLimit);
+                await requests.ReleaseHeldAsync().WaitAsync(Limit);
+                await reconnect.WaitAsync(WaitLimit);
+                releasedDuring++;
+            }
+        }
+        if (scriptHeld)
+        {
+            await front.ReleaseHeldAsync().WaitAsync(Limit);
+        }
+        step = "completing";
+        recoveries = await rig.RunToCompletionAsync(w, WaitLimit, maxRecoveries: 100);
+        }
+        catch (Exception e) when (e is TimeoutException or MachinaException or Xunit.Sdk.XunitException)
+        {
+            IReadOnlyList<string> pendant = rig.Controller switch
+            {
+                VirtualUrController c => c.PendantMessages,
+                VirtualAbbController c => c.PendantMessages,
+                VirtualKukaController c => c.PendantMessages,
+                _ => [],
+            };
+            Assert.Fail($"{step}: {e.GetType().Name}: {e.Message}\nhost executed {w.Executed.Count}, controller {rig.ExecutedIds.Count}, state {w.Bot.ConnectionState}, "
+                + $"pending {w.Bot.GetPendingActions().Count}\nfaults: {string.Join(" | ", w.Faults.TakeLast(5).Select(f => f.Message))}"
+                + $"\nretried: {string.Join(" | ", w.RecoveryErrors.TakeLast(5).Select(f => f.Message))}\npendant: {string.Join(" | ", pendant.TakeLast(12))}");
+        }
+        watch.Stop();
+
+        Assert.True(w.Executed.SequenceEqual(Enumerable.Range(1, Actions)), "The host saw actions executed out of order, twice or not at all.");
+        IReadOnlyList<int> log = rig.ExecutedIds;
+        Assert.Equal(Actions, log.Count);
+        Assert.True(log.SequenceEqual(Enumerable.Range(1, Actions)), $"The controller executed out of order or twice: first difference at {FirstDifference(log)}.");
+        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"{brand} ended at {rig.Position}, expected {end}");
+        Assert.Empty(rig.Errors);
+        Assert.Equal(Events, heldInstructions);
+        output.WriteLine($"{brand}: {Actions} actions, {heldInstructions} held instruction streams ({releasedDuring} released while reconnecting), "
+            + $"{heldScripts} held scripts, {recoveries} late recoveries, {w.RecoveryErrors.Count} retried attempts, {watch.Elapsed.TotalSeconds:F2} s");
+        await w.Bot.DisconnectAsync();
+    }
+
+    /// <summary>
+    /// Issues <see cref="Actions"/> actions, each one request on every brand: an absolute move now and then, relative moves of
+    /// up to 5 mm per axis in between (turned back at the edges of a box every brand's arm reaches with the tool down), a
+    /// speed change now and then. Returns where the last one leaves the robot.
+    /// </summary>
+    private static Vector IssueRandomProgram(Robot bot, Random random)
+    {
+        var low = new Vector(300, -80, 420);
+        var high = new Vector(420, 80, 560);
+        var at = new Vector(360, 0, 480);
+        bot.MoveTo(at.X, at.Y, at.Z);
+        for (int i = 1; i < Actions; i++)
+        {
+            switch (random.Next(10))
+            {
+                case 0:
+                    bot.SpeedTo(random.Next(10, 200));
+                    break;
+                case 1:
+                    at = new Vector(random.Next((int)low.X, (int)high.X), random.Next((int)low.Y, (int)high.Y), random.Next((int)low.Z, (int)high.Z));
+                    bot.MoveTo(at.X, at.Y, at.Z);
+                    break;
+                default:
+                    var by = new Vector(Step(random, at.X, low.X, high.X), Step(random, at.Y, low.Y, high.Y), Step(random, at.Z, low.Z, high.Z));
+                    at += by;
+                    bot.Move(by.X, by.Y, by.Z);
+                    break;
+            }
+        }
+        return at;
+    }
+
+    /// <summary>A step of -5 to 5 mm that keeps <paramref name="at"/> inside [low, high].</summary>
+    private static int Step(Random random, double at, double low, double high)
+    {
+        int step = random.Next(-5, 6);
+        return at + step < low || at + step > high ? -step : step;
+    }
+
+    /// <summary>Waits until the host saw <paramref name="executed"/> actions executed, connecting again whenever the link is lost.</summary>
+    private static async Task AdvanceAsync(FaultRig rig, FaultRig.Watched w, int executed)
+    {
+        long start = Stopwatch.GetTimestamp();
+        // The controller's count: the host's events may lag behind it, and the host streams at most a window ahead of it.
+        while (rig.ExecutedIds.Count < executed)
+        {
+            Assert.True(Stopwatch.GetElapsedTime(start) < WaitLimit, $"only {rig.ExecutedIds.Count} of {executed} actions executed within {WaitLimit}");
+            if (w.Bot.ConnectionState is ConnectionState.Disconnected or ConnectionState.Stopped)
+            {
+                await rig.RecoverAsync(w);
+            }
+            await Task.Delay(20);
+        }
+    }
+
+    private static int FirstDifference(IReadOnlyList<int> log)
+    {
+        int i = 0;
+        while (i < log.Count && log[i] == i + 1)
+        {
+            i++;
+        }
+        return i;
+    }
+
+    /// <summary>How many attempts reached the controller: driver connections at the proxy, or UR scripts received.</summary>
+    private static int NextAttemptCount(FaultRig rig, FaultProxy front) =>
+        rig.Controller is VirtualUrController ur ? ur.ScriptsReceived : front.AcceptedOn(0);
+
+    private static async Task<FaultRig> StartUrThroughAsync(FaultProxy back)
+    {
+        var c = new VirtualUrController(new VirtualUrControllerOptions
+        {
+            InstantExecution = true, Model = null, RequestLogCapacity = Actions,
+            OutboundRoute = to =>
+            {
+                back.Retarget(0, to.Port); // the host's call-back port, chosen when it connects
+                return new DnsEndPoint("127.0.0.1", back.Port);
+            },
+        });
+        await c.StartAsync();
+        return FaultRig.Of("UR", c.Port, c);
+    }
+
+    /// <summary>The controller's consecutive ports: driver and monitor (ABB, KUKA), or script, RTDE and dashboard (UR).</summary>
+    private static int[] Ports(FaultRig rig) => rig.Controller switch
+    {
+        VirtualUrController ur => [ur.Port, ur.RtdePort, ur.DashboardPort],
+        _ => [rig.Port, rig.Port + 1],
+    };
+}
