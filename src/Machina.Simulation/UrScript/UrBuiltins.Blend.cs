@@ -5,11 +5,14 @@ namespace Machina.Simulation.UrScript;
 /// <summary>Linear motions and their blends (<see cref="BlendModel"/>): <c>movel</c> and <c>movep</c> with a blend radius <c>r</c>.</summary>
 internal static partial class UrBuiltins
 {
-    /// <summary>Lets the arm finish a pending blend of this program thread (it stops at the waypoint): before a wait, a non-linear motion or a tool change.</summary>
-    private static void FinishBlend(UrMachine m, int line)
+    /// <summary>
+    /// Lets the arm finish a pending blend (it stops at the waypoint): before a wait of the program thread that moved, or before any
+    /// thread's non-linear motion, tool change or motion that cannot blend (<paramref name="anyThread"/>).
+    /// </summary>
+    private static void FinishBlend(UrMachine m, int line, bool anyThread = true)
     {
         UrBlend? blend = m.Controller.PendingBlend;
-        if (blend is null || blend.Thread != Environment.CurrentManagedThreadId || m.Controller.TakeBlend() is not { } taken)
+        if (blend is null || (!anyThread && blend.Thread != Environment.CurrentManagedThreadId) || m.Controller.TakeBlend() is not { } taken)
         {
             return;
         }
@@ -33,7 +36,7 @@ internal static partial class UrBuiltins
     {
         if (m.Controller.PendingBlend is not null && !socket.HasData)
         {
-            FinishBlend(m, line);
+            FinishBlend(m, line, anyThread: false);
         }
     }
 
