@@ -86,7 +86,7 @@ internal static class CheckCommand
         int fine = motions - withProblems - refusedMotions;
         await output.WriteLineAsync($"{motions} motion{(motions == 1 ? "" : "s")} checked: {fine} ok, {withProblems} with problems, {refused} refused" +
             $" (of {trial.AppliedCount + refused} actions).").ConfigureAwait(false);
-        await output.WriteLineAsync(cycle.ToText($"the {model.Brand} {model.Name}")).ConfigureAwait(false);
+        await output.WriteLineAsync(cycle.ToText($"the {model.Brand} {model.Name}", model)).ConfigureAwait(false);
         return refused == 0 && !anyProblem ? ExitCodes.Ok : ExitCodes.Failed;
     }
 

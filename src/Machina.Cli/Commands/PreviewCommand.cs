@@ -59,7 +59,7 @@ internal static class PreviewCommand
         }
         await File.WriteAllTextAsync(full, text, context.Cancellation).ConfigureAwait(false);
         await context.Stdout.WriteLineAsync(CompileCommand.Display(full, context)).ConfigureAwait(false);
-        await context.Stdout.WriteLineAsync(preview.CycleTime.ToText(model is not null ? $"the {model.Brand} {model.Name}" : "a generic controller (no --model)")).ConfigureAwait(false);
+        await context.Stdout.WriteLineAsync(preview.CycleTime.ToText(model is not null ? $"the {model.Brand} {model.Name}" : "a generic controller (no --model)", model)).ConfigureAwait(false);
         foreach (PathWarning warning in preview.Warnings)
         {
             await context.Stderr.WriteLineAsync($"{reader.DisplayName}:{warning.Line}:{warning.Column}: warning: {warning.Instruction} {warning.Message}").ConfigureAwait(false);

@@ -43,10 +43,14 @@ internal sealed class CycleTime
         ? seconds.ToString(seconds < 10 ? "0.00" : "0.0", CultureInfo.InvariantCulture) + " s"
         : string.Create(CultureInfo.InvariantCulture, $"{Math.Floor(seconds / 60):0} min {seconds % 60:00.0} s");
 
-    /// <summary>The line both commands print, naming whose controller timed it.</summary>
-    internal string ToText(string controller)
+    /// <summary>
+    /// The line both commands print, naming whose controller timed it; for a controller whose blends are not modelled
+    /// (<paramref name="model"/>'s brand, or none) it says that blended paths were timed as exact ones.
+    /// </summary>
+    internal string ToText(string controller, RobotModel? model)
     {
-        string text = $"Estimated cycle time on {controller}: {Short(TotalSeconds)} (motion {Short(MotionSeconds)}, waits {Short(WaitSeconds)}; blends not shortened)";
+        string blends = ProgramTrial.TimingOf(model).NewBlendTiming() is null ? "; blends not shortened" : "";
+        string text = $"Estimated cycle time on {controller}: {Short(TotalSeconds)} (motion {Short(MotionSeconds)}, waits {Short(WaitSeconds)}{blends})";
         return Untimed == 0 ? text + "."
             : text + $"; {Untimed} motion{(Untimed == 1 ? "" : "s")} not timed: where {(Untimed == 1 ? "it starts" : "they start")} is not known (before the first absolute position, or joints without a --model).";
     }

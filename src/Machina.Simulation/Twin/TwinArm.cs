@@ -99,8 +99,11 @@ internal sealed class TwinArm
         }
     }
 
-    /// <summary>Moves to <paramref name="target"/> joints in <paramref name="seconds"/>, then traces the step at <paramref name="line"/>.</summary>
-    public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation)
+    /// <summary>
+    /// Moves to <paramref name="target"/> joints in <paramref name="seconds"/>, then traces the step at <paramref name="line"/>: at
+    /// <paramref name="traced"/> joints when given (the waypoint of a motion that blends before it), none when <paramref name="trace"/> is false.
+    /// </summary>
+    public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true)
     {
         RequireWithinLimits(target);
         Clock.Wait(seconds, cancellation);
@@ -108,13 +111,16 @@ internal sealed class TwinArm
         {
             _joints = target;
         }
-        Record(line, TwinTraceKind.Motion, text);
+        if (trace)
+        {
+            Record(line, TwinTraceKind.Motion, text, traced);
+        }
     }
 
-    /// <summary>Adds a step to the trace, with the arm's joints and TCP now.</summary>
-    public void Record(int line, TwinTraceKind kind, string text)
+    /// <summary>Adds a step to the trace, with the arm's joints and TCP now (or those of <paramref name="at"/> joints).</summary>
+    public void Record(int line, TwinTraceKind kind, string text, Joints? at = null)
     {
-        Joints joints = Joints;
+        Joints joints = at ?? Joints;
         var entry = new TwinTraceEntry(line, kind, joints, Model.Kinematics.Forward(joints) * ToolCenter, text, Clock.Seconds);
         lock (_gate)
         {

@@ -29,6 +29,7 @@ internal static partial class UrBuiltins
             {
                 throw new UrRuntimeException(line, "sleep: the time 't' must be zero or positive");
             }
+            FinishBlend(m, line, anyThread: false);
             CancellationToken token = m.Cancellation;
             m.Unlocked(() =>
             {
@@ -40,6 +41,7 @@ internal static partial class UrBuiltins
         }, R("t"));
         Add(t, "sync", (m, line, a) =>
         {
+            FinishBlend(m, line, anyThread: false);
             CancellationToken token = m.Cancellation;
             m.Unlocked(() =>
             {

@@ -14,8 +14,16 @@ internal static partial class UrBuiltins
         Add(t, "movep", (m, line, a) => MoveLinear(m, line, [a[0], a[1], a[2], 0, a[3]], "movep"), R("pose"), O("a", 1.2), O("v", 0.25), O("r", 0));
         Add(t, "movec", MoveC, R("pose_via"), R("pose_to"), O("a", 1.2), O("v", 0.25), O("r", 0), O("mode", 0));
         Add(t, "servoj", ServoJ, R("q"), O("a", 0), O("v", 0), O("t", 0.002), O("lookahead_time", 0.1), O("gain", 300));
-        Add(t, "stopj", (m, line, a) => Positive(Num(a, 0, line, "stopj", "a"), line, "stopj", "a"), R("a"));
-        Add(t, "stopl", (m, line, a) => Positive(Num(a, 0, line, "stopl", "a"), line, "stopl", "a"), R("a"), O("aRot", NotGiven));
+        Add(t, "stopj", (m, line, a) =>
+        {
+            FinishBlend(m, line);
+            return Positive(Num(a, 0, line, "stopj", "a"), line, "stopj", "a");
+        }, R("a"));
+        Add(t, "stopl", (m, line, a) =>
+        {
+            FinishBlend(m, line);
+            return Positive(Num(a, 0, line, "stopl", "a"), line, "stopl", "a");
+        }, R("a"), O("aRot", NotGiven));
         Add(t, "get_actual_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
         Add(t, "get_target_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
         Add(t, "get_actual_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
@@ -82,41 +90,13 @@ internal static partial class UrBuiltins
     private static object MoveJ(UrMachine m, int line, object[] a)
     {
         (double acc, double v, double time, _) = Profile(a, line, "movej");
+        FinishBlend(m, line); // the twin blends linear motions only: the arm stops at the last waypoint first
         Joints from = m.Controller.Arm.Joints;
         Joints to = a[0] is UrPose pose
             ? Solve(m, line, "movej", UrGeometry.ToPose(pose.Values, line), from)
             : UrGeometry.ToJoints(Six(a, 0, line, "movej", "q"), line);
         double distance = (to - from).ToArray().Max(Math.Abs) * Math.PI / 180;
         Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), "movej", time > 0 ? 0 : v / acc);
-        return UrNone.Value;
-    }
-
-    private static object MoveLinear(UrMachine m, int line, object[] a, string function)
-    {
-        (double acc, double v, double time, _) = Profile(a, line, function);
-        Pose target = a[0] is UrList list && list.Items.Length == 6 && a[0] is not UrPose
-            ? m.Controller.Arm.Model.Kinematics.Forward(UrGeometry.ToJoints(Six(a, 0, line, function, "pose"), line)) * m.Controller.Arm.ToolCenter
-            : UrGeometry.ToPose(Six(a, 0, line, function, "pose"), line);
-        Pose start = m.Controller.Arm.Tcp;
-        Joints first = m.Controller.Arm.Joints;
-        Func<double, Pose> at = t => new Pose(start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t));
-        Joints last = FollowLine(m, line, function, start, target, at);
-        double metres = (target.Position - start.Position).Length / 1000;
-        double distance = metres > 1e-6 ? metres : TwinRotation.AngleBetween(start.Rotation, target.Rotation);
-        TwinArm arm = m.Controller.Arm;
-        Joints Along(double f)
-        {
-            Joints near = UrMotion.Lerp(first, last, f);
-            try
-            {
-                return f >= 1 ? last : arm.Solve(at(f), near);
-            }
-            catch (TwinMotionException)
-            {
-                return near;
-            }
-        }
-        Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function, time > 0 ? 0 : v / acc, Along);
         return UrNone.Value;
     }
 
@@ -154,6 +134,7 @@ internal static partial class UrBuiltins
     private static object MoveC(UrMachine m, int line, object[] a)
     {
         (double acc, double v, _, _) = Profile([null!, a[2], a[3], 0, a[4]], line, "movec");
+        FinishBlend(m, line);
         Pose via = UrGeometry.ToPose(Six(a, 0, line, "movec", "pose_via"), line);
         Pose to = UrGeometry.ToPose(Six(a, 1, line, "movec", "pose_to"), line);
         Pose start = m.Controller.Arm.Tcp;
@@ -189,6 +170,7 @@ internal static partial class UrBuiltins
         {
             throw new UrRuntimeException(line, "servoj: argument 't' must be positive");
         }
+        FinishBlend(m, line);
         Joints from = m.Controller.Arm.Joints;
         if (m.Controller.Arm.Model.MaxJointSpeeds is { } max)
         {
@@ -208,6 +190,7 @@ internal static partial class UrBuiltins
 
     private static object SetTcp(UrMachine m, int line, object[] a)
     {
+        FinishBlend(m, line);
         m.Controller.Arm.ToolCenter = UrGeometry.ToPose(Six(a, 0, line, "set_tcp", "pose"), line);
         m.Controller.Arm.Record(line, TwinTraceKind.Tool, "set_tcp");
         return UrNone.Value;

@@ -27,6 +27,7 @@ internal static partial class UrBuiltins
             }
             UrSocket socket = Socket(m, line, a, 1, "socket_read_binary_integer");
             double timeout = Num(a, 2, line, "socket_read_binary_integer", "timeout");
+            FinishBlendBeforeWaiting(m, line, socket);
             CancellationToken token = m.Cancellation;
             return m.Unlocked(() => socket.ReadIntegers(count, timeout, token));
         }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
@@ -39,6 +40,7 @@ internal static partial class UrBuiltins
             }
             UrSocket socket = Socket(m, line, a, 1, "socket_read_ascii_float");
             double timeout = Num(a, 2, line, "socket_read_ascii_float", "timeout");
+            FinishBlendBeforeWaiting(m, line, socket);
             CancellationToken token = m.Cancellation;
             return m.Unlocked(() => socket.ReadAsciiFloats(count, timeout, token));
         }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
@@ -46,6 +48,7 @@ internal static partial class UrBuiltins
         {
             UrSocket socket = Socket(m, line, a, 0, "socket_read_string");
             double timeout = Num(a, 4, line, "socket_read_string", "timeout");
+            FinishBlendBeforeWaiting(m, line, socket);
             CancellationToken token = m.Cancellation;
             return m.Unlocked(() => socket.ReadString(timeout, token));
         }, O("socket_name", DefaultSocket), O("prefix", ""), O("suffix", ""), O("interpret_escape", "False"), O("timeout", 2));

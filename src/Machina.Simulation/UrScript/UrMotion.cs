@@ -2,9 +2,11 @@ namespace Machina.Simulation.UrScript;
 
 /// <summary>
 /// One motion of the arm in progress: from where it started to its target, the part of the whole way already behind when it
-/// started (after a stop), when it started, how long it takes and how long its speed ramps take, and the path it follows.
+/// started (after a stop), when it started, how long it takes and how long its speed ramps take (or its own speed profile: the
+/// part of its own way done after some seconds), and the path it follows.
 /// </summary>
-internal sealed class UrMotion(Joints from, Joints target, double doneBefore, long started, double seconds, double rampSeconds, Func<double, Joints>? path)
+internal sealed class UrMotion(Joints from, Joints target, double doneBefore, long started, double seconds, double rampSeconds, Func<double, Joints>? path,
+    Func<double, double>? profile = null)
 {
     /// <summary>When the motion started, as a timestamp of the controller's time.</summary>
     public long Started { get; } = started;
@@ -15,7 +17,8 @@ internal sealed class UrMotion(Joints from, Joints target, double doneBefore, lo
     /// <summary>The fraction of the whole way (0 to 1) reached <paramref name="elapsed"/> after the start, on the trapezoid profile.</summary>
     public double FractionAt(TimeSpan elapsed)
     {
-        double own = seconds <= 0 ? 1 : Profile(Math.Clamp(elapsed.TotalSeconds, 0, seconds));
+        double t = Math.Clamp(elapsed.TotalSeconds, 0, seconds);
+        double own = seconds <= 0 ? 1 : profile is not null ? Math.Clamp(profile(t), 0, 1) : Profile(t);
         return doneBefore + (1 - doneBefore) * own;
     }
 

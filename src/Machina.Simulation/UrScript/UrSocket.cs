@@ -80,6 +80,22 @@ internal sealed class UrSocket(Socket socket) : IDisposable
         }
     }
 
+    /// <summary>True when something is there to read without waiting.</summary>
+    public bool HasData
+    {
+        get
+        {
+            try
+            {
+                return Buffered > 0 || (!IsDisposed && socket.Available > 0);
+            }
+            catch (Exception e) when (e is ObjectDisposedException or SocketException)
+            {
+                return false;
+            }
+        }
+    }
+
     /// <summary>Waits until <paramref name="count"/> bytes are buffered or the time is up; true when they are.</summary>
     private bool Fill(int count, double timeoutSeconds, CancellationToken cancellation)
     {

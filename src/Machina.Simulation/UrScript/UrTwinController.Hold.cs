@@ -94,17 +94,29 @@ internal sealed partial class UrTwinController
     /// (joints at a fraction of the way; null: straight in joint space) with a trapezoid profile whose ramps take
     /// <paramref name="rampSeconds"/>. A hold stops it part-way; once released it finishes from there.
     /// </summary>
-    public void Move(Joints target, double seconds, double rampSeconds, Func<double, Joints>? path, int line, string function, CancellationToken cancellation)
+    public void Move(Joints target, double seconds, double rampSeconds, Func<double, Joints>? path, int line, string function, CancellationToken cancellation) =>
+        Move(target, seconds, rampSeconds, null, path, line, function, cancellation, null, true);
+
+    /// <summary>
+    /// As the other <c>Move</c>, with the motion's own speed <paramref name="profile"/> (seconds after the start to the part of the
+    /// way done; null: the trapezoid), traced at <paramref name="traced"/> joints (null: the target) or not at all when
+    /// <paramref name="trace"/> is false. A motion that a hold interrupted finishes from rest on the trapezoid.
+    /// </summary>
+    /// <returns>True when the motion ran as planned, false when a hold interrupted it (it then ends at rest).</returns>
+    public bool Move(Joints target, double seconds, double rampSeconds, Func<double, double>? profile, Func<double, Joints>? path, int line, string function,
+        CancellationToken cancellation, Joints? traced, bool trace)
     {
         Arm.RequireWithinLimits(target);
         Joints from = Arm.Joints;
         double done = 0; // fraction of the way already behind
+        bool planned = true;
         while (true)
         {
             WaitWhileHeld(cancellation);
             CancellationToken hold;
             double span = seconds * (1 - done);
-            var motion = new UrMotion(from, target, done, Options.Time.GetTimestamp(), Clock.RealTime ? span : 0, Clock.RealTime ? Math.Min(rampSeconds, span / 2) : 0, path);
+            var motion = new UrMotion(from, target, done, Options.Time.GetTimestamp(), Clock.RealTime ? span : 0, Clock.RealTime ? Math.Min(rampSeconds, span / 2) : 0, path,
+                planned ? profile : null);
             lock (_holdGate)
             {
                 hold = _holdStop.Token;
@@ -113,8 +125,8 @@ internal sealed partial class UrTwinController
             using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, hold);
             try
             {
-                Arm.MoveTo(target, span, line, function, both.Token);
-                return;
+                Arm.MoveTo(target, span, line, function, both.Token, traced, trace);
+                return planned;
             }
             catch (OperationCanceledException) when (!cancellation.IsCancellationRequested)
             {
@@ -123,6 +135,7 @@ internal sealed partial class UrTwinController
                 done = motion.FractionAt(Options.Time.GetElapsedTime(motion.Started));
                 Arm.MoveTo(at, 0, line, function + " (stopped)", cancellation);
                 from = at;
+                planned = false;
             }
             finally
             {

@@ -266,11 +266,16 @@ internal sealed partial class UrTwinController : IDisposable
     {
         UrProgramState end = UrProgramState.Failed;
         string? error = null;
+        PendingBlend = null;
         using (var machine = new UrMachine(program, this, cancellation))
         {
             try
             {
                 machine.Run();
+                if (TakeBlend() is { } blend)
+                {
+                    FinishBlend(blend, cancellation); // the program's last motion ends at its waypoint
+                }
                 end = UrProgramState.Finished;
             }
             catch (UrRuntimeException e)
@@ -285,6 +290,7 @@ internal sealed partial class UrTwinController : IDisposable
             }
             finally
             {
+                PendingBlend = null;
                 // The program has stopped before its sockets close, as on a UR: whoever sees a socket close and asks
                 // the controller finds the program already stopped.
                 lock (_gate)

@@ -29,4 +29,11 @@ internal sealed class UrTwinOptions
 
     /// <summary>How long <c>socket_open</c> tries to connect (the Script Manual says 2 s).</summary>
     public TimeSpan SocketOpenTimeout { get; init; } = TimeSpan.FromSeconds(2);
+
+    /// <summary>
+    /// True: a program that has a socket open blends too, when the next instruction has already arrived as its blended motion
+    /// starts (as a UR does when its program reads ahead). False (the default): such a program's motions stop at their waypoints,
+    /// since whether the next instruction has arrived depends on timing that tests cannot control. Programs without sockets always blend.
+    /// </summary>
+    public bool BlendWhileStreaming { get; init; }
 }

@@ -14,6 +14,7 @@ public sealed class ProgramTrial
     private readonly IActionStream? _stream;
     private readonly List<string> _warnings = [];
     private readonly MotionTiming _timing;
+    private readonly BlendTiming? _blends;
     private double _seconds;
 
     /// <summary>
@@ -29,6 +30,7 @@ public sealed class ProgramTrial
     internal ProgramTrial(RobotCursor start, IActionStream? stream, MotionTiming timing)
     {
         _timing = timing;
+        _blends = timing.NewBlendTiming();
         _cursor = new RobotCursor();
         _cursor.CopyFrom(start);
         _cursor.Strict = false;
@@ -41,7 +43,8 @@ public sealed class ProgramTrial
 
     /// <summary>
     /// The estimated time of the actions applied so far: each motion at the program's speed and acceleration as the brand's
-    /// controller runs it (joint moves from the arm's joint speeds where the brand does), plus the waits. Blends are not shortened.
+    /// controller runs it (joint moves from the arm's joint speeds where the brand does), plus the waits. Blends shorten it where the
+    /// brand's blends are modelled (UR): the arm does not stop at a blended waypoint.
     /// </summary>
     public TimeSpan EstimatedDuration => TimeSpan.FromSeconds(_seconds);
 
@@ -116,18 +119,16 @@ public sealed class ProgramTrial
     /// <summary>Seconds the applied <paramref name="action"/> takes from the pose it started at; 0 for an action that takes no time, null for a motion that cannot be timed.</summary>
     private double? SecondsOf(RobotAction action, Vector? position, Rotation? rotation, Joints? axes)
     {
-        if (action is ActionWait wait)
-        {
-            return wait.Millis / 1000.0;
-        }
         if (!RobotCursor.IsMotion(action))
         {
-            return 0;
+            _blends?.NotMotion(action);
+            return action is ActionWait wait ? wait.Millis / 1000.0 : 0;
         }
         bool joint = action is ActionAxes || (_cursor.MotionType == MotionType.Joint && action is not ActionArcMotion);
         var motion = new TimedMotion(position, rotation, axes, _cursor.Position, _cursor.Rotation, _cursor.Axes,
             joint ? null : _cursor.LastPathLength, joint, _cursor.Speed, _cursor.Acceleration);
-        return _timing.Seconds(motion, _cursor.Model);
+        double? plain = _timing.Seconds(motion, _cursor.Model);
+        return _blends is null ? plain : _blends.Seconds(action, motion, _cursor.Precision, plain);
     }
 
     /// <summary>The timing of the brand that makes <paramref name="model"/>, or the generic one.</summary>

@@ -40,6 +40,18 @@ internal sealed class ManualClock : TimeProvider
         return timer;
     }
 
+    /// <summary>How many timers are set and have not fired (or been stopped) yet.</summary>
+    internal int PendingTimers
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _timers.Count;
+            }
+        }
+    }
+
     /// <summary>True when some timer is set to fire exactly <paramref name="dueIn"/> from now.</summary>
     internal bool HasTimerDueIn(TimeSpan dueIn)
     {

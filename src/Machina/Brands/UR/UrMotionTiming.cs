@@ -15,6 +15,8 @@ internal sealed class UrMotionTiming : MotionTiming
 
     private const double DegreesToRadians = Math.PI / 180;
 
+    internal override BlendTiming NewBlendTiming() => new UrBlendTiming();
+
     internal override double? Seconds(in TimedMotion motion, RobotModel? model)
     {
         if (motion.IsJoint)

@@ -2,8 +2,8 @@ namespace Machina;
 
 /// <summary>
 /// How a brand's controller turns a motion and the program's speed settings into seconds (docs/cycle-time.md). Each arm brand
-/// declares its own in its folder (<see cref="BrandDefinition.Timing"/>); the others use <see cref="Generic"/>. Blends are not
-/// shortened: a blended path takes about the time of its exact one.
+/// declares its own in its folder (<see cref="BrandDefinition.Timing"/>); the others use <see cref="Generic"/>. A brand that
+/// models its blends gives a <see cref="BlendTiming"/> per estimate; the others time a blended path as its exact one.
 /// </summary>
 internal abstract class MotionTiming
 {
@@ -12,6 +12,9 @@ internal abstract class MotionTiming
 
     /// <summary>Seconds <paramref name="motion"/> takes on the arm <paramref name="model"/> (or an unknown arm), or null when the motion lacks what this controller times it by (a pose or joints not known).</summary>
     internal abstract double? Seconds(in TimedMotion motion, RobotModel? model);
+
+    /// <summary>A new follower of blends for one estimate, or null when this controller's blends are not modelled (then not shortened).</summary>
+    internal virtual BlendTiming? NewBlendTiming() => null;
 
     /// <summary>
     /// Seconds to travel <paramref name="distance"/> from rest to rest, accelerating at <paramref name="acceleration"/> up to

@@ -17,7 +17,7 @@ public class VerifyCommandTests
         Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
         Assert.True(result.Stdout.Contains("   2 line 9     ok   Move(50,0,0);\n", StringComparison.Ordinal), result.Stdout);
         Assert.True(result.Stdout.Contains("   3 line 10    ok   WriteDigital(2,True);\n", StringComparison.Ordinal), result.Stdout);
-        Assert.EndsWith("OK: 4 steps agree; the program runs in 1.168 s\n", result.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("OK: 4 steps agree; the program runs in 1.066 s\n", result.Stdout, StringComparison.Ordinal);
     }
 
     [Fact]

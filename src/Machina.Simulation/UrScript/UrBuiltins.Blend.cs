@@ -1,0 +1,137 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.UrScript;
+
+/// <summary>Linear motions and their blends (<see cref="BlendModel"/>): <c>movel</c> and <c>movep</c> with a blend radius <c>r</c>.</summary>
+internal static partial class UrBuiltins
+{
+    /// <summary>
+    /// Lets the arm finish a pending blend (it stops at the waypoint): before a wait of the program thread that moved, or before any
+    /// thread's non-linear motion, tool change or motion that cannot blend (<paramref name="anyThread"/>).
+    /// </summary>
+    private static void FinishBlend(UrMachine m, int line, bool anyThread = true)
+    {
+        UrBlend? blend = m.Controller.PendingBlend;
+        if (blend is null || (!anyThread && blend.Thread != Environment.CurrentManagedThreadId) || m.Controller.TakeBlend() is not { } taken)
+        {
+            return;
+        }
+        CancellationToken token = m.Cancellation;
+        try
+        {
+            m.Unlocked(() =>
+            {
+                m.Controller.FinishBlend(taken, token);
+                return 0;
+            });
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{taken.Function}: {e.Message}");
+        }
+    }
+
+    /// <summary>A read that finds nothing to read waits: the arm finishes its pending blend first.</summary>
+    private static void FinishBlendBeforeWaiting(UrMachine m, int line, UrSocket socket)
+    {
+        if (m.Controller.PendingBlend is not null && !socket.HasData)
+        {
+            FinishBlend(m, line, anyThread: false);
+        }
+    }
+
+    /// <summary>True when this motion may end in a blend: always in a program without sockets, else only when asked and the next instruction is there.</summary>
+    private static bool MayBlend(UrMachine m) =>
+        m.Controller.Sockets.Count == 0 || (m.Controller.Options.BlendWhileStreaming && m.Controller.Sockets.Values.Any(s => s.HasData));
+
+    private static object MoveLinear(UrMachine m, int line, object[] a, string function)
+    {
+        (double acc, double v, double time, double r) = Profile(a, line, function);
+        TwinArm arm = m.Controller.Arm;
+        Pose target = a[0] is UrList list && list.Items.Length == 6 && a[0] is not UrPose
+            ? arm.Model.Kinematics.Forward(UrGeometry.ToJoints(Six(a, 0, line, function, "pose"), line)) * arm.ToolCenter
+            : UrGeometry.ToPose(Six(a, 0, line, function, "pose"), line);
+        UrBlend? blend = m.Controller.PendingBlend;
+        if (blend is not null && (time > 0 || (target.Position - blend.Corner.Position).Length / 1000 < BlendModel.MinLength))
+        {
+            FinishBlend(m, line); // a timed motion or one that only turns the tool does not blend: the arm stops first
+        }
+        blend = m.Controller.TakeBlend();
+        Pose start = blend?.Corner ?? arm.Tcp; // where the segment begins: the waypoint the arm blends around, or where it stands
+        Joints first = blend?.CornerJoints ?? arm.Joints;
+        Func<double, Pose> straightAt = t => new Pose(start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t));
+        Joints last = FollowLine(m, line, function, start, target, straightAt);
+        double lengthMm = (target.Position - start.Position).Length;
+        double metres = lengthMm / 1000;
+        if (metres < BlendModel.MinLength)
+        {
+            double angle = TwinRotation.AngleBetween(start.Rotation, target.Rotation);
+            Joints Turn(double f) => f >= 1 ? last : Near(arm, straightAt(f), UrMotion.Lerp(first, last, f));
+            Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(angle, v, acc), function, time > 0 ? 0 : v / acc, Turn);
+            return UrNone.Value;
+        }
+        // The blend around the last waypoint (m): from the zone's entry past the waypoint to the exit leg along this segment.
+        double exitLeg = blend is null ? 0 : Math.Min(blend.Radius, metres / 2);
+        double blendLength = blend is null ? 0 : BlendModel.Length(blend.Entry.Position / 1000, start.Position / 1000, straightAt(exitLeg / metres).Position / 1000);
+        double startSpeed = blend?.Speed ?? 0;
+        double blendSeconds = blend is null ? 0 : blendLength / startSpeed;
+        // This motion's own zone, where it returns to the program.
+        double radius = time > 0 || !MayBlend(m) ? 0 : BlendModel.Radius(r, metres);
+        double straight = metres - exitLeg - radius;
+        double entrySpeed = radius > 0 ? BlendModel.EntrySpeed(straight, startSpeed, v, acc, radius) : 0;
+        if (!(entrySpeed > 0))
+        {
+            radius = 0;
+            straight = metres - exitLeg;
+        }
+        SpeedProfile profile = SpeedProfile.Plan(straight, startSpeed, v, radius > 0 ? entrySpeed : 0, acc);
+        double total = blendLength + straight;
+        Pose At(double s) // s: metres along this motion's way
+        {
+            if (s < blendLength && blend is not null)
+            {
+                Pose exit = straightAt(exitLeg / metres);
+                Vector point = BlendModel.PointAtDistance(blend.Entry.Position / 1000, start.Position / 1000, exit.Position / 1000, s) * 1000;
+                return new Pose(point, UrGeometry.Slerp(blend.Entry.Rotation, exit.Rotation, s / blendLength));
+            }
+            return straightAt(Math.Min(1, (exitLeg + s - blendLength) / metres));
+        }
+        Joints end = radius > 0 ? Near(arm, At(total), UrMotion.Lerp(first, last, (metres - radius) / metres)) : last;
+        Joints startJoints = arm.Joints;
+        Joints Along(double f) => f >= 1 ? end : Near(arm, At(f * total), UrMotion.Lerp(startJoints, end, f));
+        double Done(double t) => total <= 0 ? 1 : (t < blendSeconds ? startSpeed * t : blendLength + profile.DistanceAt(t - blendSeconds)) / total;
+        double seconds = time > 0 ? time : blendSeconds + profile.Seconds;
+        CancellationToken token = m.Cancellation;
+        bool planned;
+        try
+        {
+            planned = m.Unlocked(() => m.Controller.Move(end, seconds, time > 0 ? 0 : v / acc, time > 0 ? null : Done, Along, line, function, token, last, true));
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{function}: {e.Message}");
+        }
+        if (radius > 0)
+        {
+            m.Controller.PendingBlend = new UrBlend(At(total), target, last, radius, planned ? entrySpeed : 0, v, acc, Environment.CurrentManagedThreadId, line, function);
+            if (!planned)
+            {
+                FinishBlend(m, line); // a hold stopped the arm: it goes on to its waypoint from rest
+            }
+        }
+        return UrNone.Value;
+    }
+
+    /// <summary>The joints that put the tool at <paramref name="pose"/>, nearest to <paramref name="near"/> (those joints when there are none).</summary>
+    private static Joints Near(TwinArm arm, Pose pose, Joints near)
+    {
+        try
+        {
+            return arm.Solve(pose, near);
+        }
+        catch (TwinMotionException)
+        {
+            return near;
+        }
+    }
+}
