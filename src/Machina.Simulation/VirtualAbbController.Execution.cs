@@ -106,8 +106,8 @@ public sealed partial class VirtualAbbController
         }
     }
 
-    /// <summary>A request the RAPID driver read and never acknowledged (its parser refused it, or its client was gone) was not executed.</summary>
-    private protected override bool IsStale(object request) => request is TwinRequest twin && NeverAcknowledged(twin);
+    /// <summary>The robot as the RAPID twin's arm has it now (the options' starting state until the twin is made).</summary>
+    private protected override VirtualAbbState Observe(VirtualAbbState kept) => Twin is { } twin ? TwinState(twin, kept) : kept;
 
     /// <summary>Seconds for a move: the TCP travels at the speed in mm/s and turns at the same number in °/s (the driver copies v_tcp into v_ori).</summary>
     private static double MoveSeconds(double millimetres, double degrees, double speed) => Math.Max(millimetres, degrees) / Positive(speed, "speed");

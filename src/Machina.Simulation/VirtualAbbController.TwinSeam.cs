@@ -8,10 +8,11 @@ namespace Machina.Simulation;
 /// <summary>
 /// The virtual ABB's faults and inspection when it runs RAPID, at the seams a real controller has: the driver task's socket.
 /// The connection its SocketAccept takes becomes the driver connection (refused by the fault plan as a busy network would);
-/// each statement its SocketReceive reads is a request received (counted, logged, buffered); its SocketSend of an
-/// acknowledgement (<c>@id code;</c>, or <c>code;</c> for id 0) is what its arm just executed: that write goes through the
-/// fault plan (held, delayed, cut, lost, followed by a drop) and is counted as executed. Everything else it sends (handshake,
-/// information, failure reports) and the monitor task's sockets go straight to the wire.
+/// each statement its SocketReceive reads is a request received (counted, logged, buffered until acknowledged); its SocketSend
+/// of an acknowledgement (<c>@id code;</c>, or <c>code;</c> for id 0) is what its arm just executed: on the driver task's own
+/// thread, that write goes through the fault plan (held while the controller stops answering, delayed, cut, lost, followed by
+/// a drop) and is counted as executed, with no hand-off to another thread. Everything else it sends (handshake, information,
+/// failure reports) and the monitor task's sockets go straight to the wire.
 /// </summary>
 public sealed partial class VirtualAbbController : IRapidSocketSeam
 {
@@ -21,22 +22,15 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     private Socket? _driverSocket;
     private Socket? _monitorSocket;
 
-    /// <summary>A request the driver task read; its acknowledgement (null: the driver never sent one) and whether it reached the host.</summary>
-    private sealed class TwinRequest(int id, Socket connection)
+    /// <summary>A request the driver task read, from the client of <paramref name="generation"/>; its acknowledgement once the driver writes one.</summary>
+    private sealed class TwinRequest(int id, int generation)
     {
         public int Id { get; } = id;
 
-        public Socket Connection { get; } = connection;
+        public int Generation { get; } = generation;
 
-        public TaskCompletionSource<byte[]?> Acked { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
-
-        public TaskCompletionSource<bool> Done { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
-
-        public void Skip()
-        {
-            Acked.TrySetResult(null);
-            Done.TrySetResult(false);
-        }
+        /// <summary>The acknowledgement the driver wrote for it; null: none goes to the host (skipped, or run while nobody listened).</summary>
+        public byte[]? Acknowledgement { get; set; }
     }
 
     bool IRapidSocketSeam.Accepted(int localPort, Socket connection, CancellationToken task)
@@ -65,8 +59,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         // sent and was not acknowledged ran while nobody listened. It counts as executed, without an acknowledgement.
         foreach (TwinRequest orphan in orphans)
         {
-            orphan.Acked.TrySetResult([]);
-            orphan.Done.TrySetResult(false);
+            CompleteReceivedOnCaller(orphan, Math.Max(orphan.Id, 0), orphan.Generation, runs: true, task);
         }
         var client = new TcpClient();
         client.Client.Dispose();
@@ -76,7 +69,6 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
 
     void IRapidSocketSeam.Received(Socket connection, string text, CancellationToken task)
     {
-        var read = new List<(TwinRequest Request, string Text)>();
         lock (Gate)
         {
             if (!ReferenceEquals(connection, _driverSocket))
@@ -98,25 +90,23 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
                 _statement.Clear();
                 if (statement.Length > 0)
                 {
-                    var request = new TwinRequest(IdOf(statement), connection);
-                    _awaiting.Enqueue(request);
-                    read.Add((request, statement + ";"));
+                    int id = IdOf(statement);
+                    if (ReceiveOnCaller(id, statement + ";", out int generation))
+                    {
+                        _awaiting.Enqueue(new TwinRequest(id, generation));
+                    }
                 }
             }
-        }
-        foreach ((TwinRequest request, string statement) in read)
-        {
-            EnqueueAsync(request, request.Id, statement, task).AsTask().GetAwaiter().GetResult();
         }
     }
 
     bool IRapidSocketSeam.Send(Socket connection, byte[] bytes, CancellationToken task)
     {
         TwinRequest? acknowledged = null;
-        var skipped = new List<TwinRequest>();
+        List<TwinRequest>? skipped = null;
         lock (Gate)
         {
-            if (ReferenceEquals(connection, _driverSocket) && AcknowledgedId(bytes) is int id && _awaiting.Any(r => r.Id == id))
+            if (ReferenceEquals(connection, _driverSocket) && _awaiting.Count > 0 && AcknowledgedId(bytes) is int id && Awaits(id))
             {
                 while (acknowledged is null)
                 {
@@ -127,14 +117,17 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
                     }
                     else
                     {
-                        skipped.Add(r); // read but refused by the driver's parser: never executed
+                        (skipped ??= []).Add(r); // read but refused by the driver's parser: never executed
                     }
                 }
             }
         }
-        foreach (TwinRequest r in skipped)
+        if (skipped is not null)
         {
-            r.Skip();
+            foreach (TwinRequest r in skipped)
+            {
+                CompleteReceivedOnCaller(r, Math.Max(r.Id, 0), r.Generation, runs: false, task);
+            }
         }
         if (acknowledged is null)
         {
@@ -145,42 +138,38 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
             }
             return sent;
         }
-        acknowledged.Acked.TrySetResult(bytes);
-        // The execution loop sends it through the fault plan; a paused controller holds the driver here, at its SocketSend.
-        while (!acknowledged.Done.Task.Wait(TimeSpan.FromMilliseconds(100), task))
-        {
-            if (!StillConnected(connection))
-            {
-                return false;
-            }
-        }
-        return acknowledged.Done.Task.Result;
+        acknowledged.Acknowledgement = bytes;
+        // Only the driver task sends acknowledgements: the count moves when this one reached the host. A paused controller holds
+        // the driver here, at its SocketSend.
+        int before = AcknowledgementsSent;
+        CompleteReceivedOnCaller(acknowledged, Math.Max(acknowledged.Id, 0), acknowledged.Generation, runs: true, task);
+        return AcknowledgementsSent != before;
     }
 
-    /// <summary>Executes a request of the twin: waits until the driver acknowledged it (true when it never will: not executed).</summary>
-    private static bool NeverAcknowledged(TwinRequest request) => request.Acked.Task.GetAwaiter().GetResult() is null;
-
-    /// <summary>Sends the driver's acknowledgement through the fault plan and lets the driver go on.</summary>
-    private async Task<bool> AcknowledgeTwinAsync(TwinRequest request, CancellationToken token)
+    /// <summary>True when a request with <paramref name="id"/> was read and not yet acknowledged (called under the gate).</summary>
+    private bool Awaits(int id)
     {
-        try
+        foreach (TwinRequest r in _awaiting)
         {
-            if (await request.Acked.Task.ConfigureAwait(false) is { Length: > 0 } bytes)
+            if (r.Id == id)
             {
-                // Only this loop sends acknowledgements: the count moves when this one reached the host.
-                int sent = AcknowledgementsSent;
-                await AcknowledgeAsync(bytes, Math.Max(request.Id, 0), token).ConfigureAwait(false);
-                request.Done.TrySetResult(AcknowledgementsSent != sent);
+                return true;
             }
         }
-        finally
+        return false;
+    }
+
+    /// <summary>Sends the driver's acknowledgement of <paramref name="request"/> through the fault plan (none for a request it skipped).</summary>
+    private async Task<bool> AcknowledgeTwinAsync(TwinRequest request, CancellationToken token)
+    {
+        if (request.Acknowledgement is { Length: > 0 } bytes)
         {
-            request.Done.TrySetResult(false);
+            await AcknowledgeAsync(bytes, Math.Max(request.Id, 0), token).ConfigureAwait(false);
         }
         return true;
     }
 
-    /// <summary>Lets every request waiting for an acknowledgement go (the controller stops).</summary>
+    /// <summary>Lets every request waiting for an acknowledgement go (the controller stops): counted executed, never acknowledged.</summary>
     private void ReleaseTwinRequests()
     {
         TwinRequest[] waiting;
@@ -192,20 +181,15 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
         foreach (TwinRequest r in waiting)
         {
-            r.Skip();
-        }
-    }
-
-    private bool StillConnected(Socket connection)
-    {
-        lock (Gate)
-        {
-            if (!ReferenceEquals(connection, _driverSocket))
+            try
             {
-                return false;
+                CompleteReceivedOnCaller(r, Math.Max(r.Id, 0), r.Generation, runs: false, new CancellationToken(canceled: true));
+            }
+            catch (OperationCanceledException)
+            {
+                // Paused when stopped: it stays unexecuted.
             }
         }
-        return HasClient;
     }
 
     private static bool SendDirect(Socket connection, byte[] bytes)
@@ -236,18 +220,38 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     /// <summary>The id an acknowledgement the driver writes is for (<c>@id code;</c>, or <c>code;</c> for id 0), or null for anything else.</summary>
     private static int? AcknowledgedId(byte[] bytes)
     {
-        string text = Encoding.Latin1.GetString(bytes).Trim();
-        if (text.Length < 2 || text[^1] != ';')
+        ReadOnlySpan<byte> text = bytes.AsSpan().Trim(" \t\r\n"u8);
+        if (text.Length < 2 || text[^1] != (byte)';')
         {
             return null;
         }
-        string body = text[..^1];
-        if (body[0] == '@')
+        ReadOnlySpan<byte> body = text[..^1];
+        if (body[0] == (byte)'@')
         {
-            string[] parts = body[1..].Split(' ');
-            return parts.Length == 2 && int.TryParse(parts[0], NumberStyles.Integer, CultureInfo.InvariantCulture, out int id) ? id : null;
+            int space = body.IndexOf((byte)' ');
+            return space > 1 && Digits(body[1..space]) is int id && Digits(body[(space + 1)..]) is not null ? id : null;
         }
-        return int.TryParse(body, NumberStyles.Integer, CultureInfo.InvariantCulture, out _) ? 0 : null;
+        return Digits(body) is not null ? 0 : null;
+    }
+
+    /// <summary>The value of an optionally signed run of ASCII digits, or null when it is anything else (or too long for an int).</summary>
+    private static int? Digits(ReadOnlySpan<byte> text)
+    {
+        int start = text.Length > 0 && (text[0] == (byte)'-' || text[0] == (byte)'+') ? 1 : 0;
+        if (text.Length == start || text.Length - start > 10)
+        {
+            return null;
+        }
+        long value = 0;
+        for (int i = start; i < text.Length; i++)
+        {
+            if (text[i] is < (byte)'0' or > (byte)'9')
+            {
+                return null;
+            }
+            value = value * 10 + (text[i] - '0');
+        }
+        return value > int.MaxValue ? null : (int)(text[0] == (byte)'-' ? -value : value);
     }
 
     /// <summary>

@@ -38,3 +38,49 @@ public abstract partial class VirtualController<TState>
         CompleteAsync(request, id, runs: true, token).GetAwaiter().GetResult();
     }
 }
+
+public abstract partial class VirtualController<TState>
+{
+    /// <summary>
+    /// For a twin whose program reads a request now and acknowledges it later on the same thread (the RAPID driver: SocketReceive,
+    /// then SocketSend): counts it received and buffered until <see cref="CompleteReceivedOnCaller"/>. False when a restart cut
+    /// off the client it came from (lost with the rest of the buffer: nothing more to do for it).
+    /// </summary>
+    private protected bool ReceiveOnCaller(int id, string logText, out int generation)
+    {
+        if (!Receives(id, out generation))
+        {
+            return false;
+        }
+        CountReceived(logText);
+        Interlocked.Increment(ref _waitingOnCaller);
+        return true;
+    }
+
+    /// <summary>
+    /// Completes on the caller's thread a request <see cref="ReceiveOnCaller"/> counted: waits while the controller stops
+    /// answering, then logs it executed (unless <paramref name="runs"/> is false: the program skipped it) and runs
+    /// <see cref="AfterExecutedAsync"/> (the fault plan and the acknowledgement). A request a restart lost is counted executed, unsent.
+    /// </summary>
+    private protected void CompleteReceivedOnCaller(object request, int id, int generation, bool runs, CancellationToken token)
+    {
+        try
+        {
+            WhileStoppedAsync(token).GetAwaiter().GetResult();
+        }
+        finally
+        {
+            Interlocked.Decrement(ref _waitingOnCaller);
+        }
+        if (IsLost(generation))
+        {
+            if (runs)
+            {
+                LogExecuted(id);
+            }
+            Interlocked.Increment(ref _requestsExecuted);
+            return;
+        }
+        CompleteAsync(request, id, runs, token).GetAwaiter().GetResult();
+    }
+}

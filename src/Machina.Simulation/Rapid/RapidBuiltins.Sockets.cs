@@ -110,20 +110,24 @@ internal static partial class RapidBuiltins
                 throw ArgumentError(call, "SocketReceive: the twin receives \\Str only");
             }
             var buffer = new byte[RapidMachine.MaxStringLength];
-            Task<int> receive;
-            try
+            int count = ReceiveReady(connection, buffer);
+            if (count < 0)
             {
-                receive = connection.ReceiveAsync(buffer, SocketFlags.None, call.Machine.Task.CancellationToken).AsTask();
+                Task<int> receive;
+                try
+                {
+                    receive = connection.ReceiveAsync(buffer, SocketFlags.None, call.Machine.Task.CancellationToken).AsTask();
+                }
+                catch (ObjectDisposedException)
+                {
+                    receive = Task.FromResult(0); // closed by the controller (a fault a test injected): as closed by the other end
+                }
+                if (!Wait(call, receive, call.Has(6) ? call.Num(6) : DefaultSocketSeconds))
+                {
+                    throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
+                }
+                count = receive.IsFaulted ? 0 : receive.Result;
             }
-            catch (ObjectDisposedException)
-            {
-                receive = Task.FromResult(0); // closed by the controller (a fault a test injected): as closed by the other end
-            }
-            if (!Wait(call, receive, call.Has(6) ? call.Num(6) : DefaultSocketSeconds))
-            {
-                throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
-            }
-            int count = receive.IsFaulted ? 0 : receive.Result;
             if (count == 0)
             {
                 Device(call).Status = 5;
@@ -172,6 +176,26 @@ internal static partial class RapidBuiltins
             call.Set(3, data.Kind);
         }),
     ];
+
+    /// <summary>
+    /// Reads what already arrived without waiting (no task for the common case of a host streaming ahead): the count, 0 when the
+    /// connection is closed, or -1 when nothing is there yet (the caller waits for it).
+    /// </summary>
+    private static int ReceiveReady(Socket connection, byte[] buffer)
+    {
+        try
+        {
+            return connection.Available > 0 ? connection.Receive(buffer, SocketFlags.None) : -1;
+        }
+        catch (ObjectDisposedException)
+        {
+            return 0;
+        }
+        catch (SocketException)
+        {
+            return 0;
+        }
+    }
 
     private static RapidSocketDevice Device(RapidCall call) => (RapidSocketDevice)call.Value(0);
 

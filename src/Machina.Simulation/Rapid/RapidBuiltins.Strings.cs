@@ -7,7 +7,7 @@ internal static partial class RapidBuiltins
 {
     private static IEnumerable<RapidBuiltin> Strings() =>
     [
-        Function("StrLen", "num", [P("Str", "string")], call => (double)call.Str(0).Length),
+        Function("StrLen", "num", [P("Str", "string")], call => RapidBoxes.Num(call.Str(0).Length)),
         Function("StrPart", "string", [P("Str", "string"), P("ChPos", "num"), P("Len", "num")], call =>
         {
             string s = call.Str(0);
@@ -16,7 +16,7 @@ internal static partial class RapidBuiltins
             {
                 throw ArgumentError(call, $"StrPart: characters {RapidValues.FormatNumber(pos)} to {RapidValues.FormatNumber(pos + len - 1)} are outside the string of length {s.Length}");
             }
-            return s.Substring((int)pos - 1, (int)len);
+            return len == 1 ? RapidBoxes.Char(s[(int)pos - 1]) : s.Substring((int)pos - 1, (int)len);
         }),
         Function("StrFind", "num", [P("Str", "string"), P("ChPos", "num"), P("Set", "string"), Sw("NotInSet")], call =>
         {

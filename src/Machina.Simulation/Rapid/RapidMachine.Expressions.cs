@@ -34,9 +34,9 @@ internal sealed partial class RapidMachine
                 object v = Evaluate(u.Operand, frame);
                 return u.Op switch
                 {
-                    "NOT" => !(bool)v,
+                    "NOT" => RapidBoxes.Bool(!(bool)v),
                     "-" when v is RapidRecord p => RapidGeometry.ToPosRecord(-RapidGeometry.ToVector(p)),
-                    "-" => -(double)v,
+                    "-" => RapidBoxes.Num(-(double)v),
                     _ => v,
                 };
             }
@@ -109,34 +109,34 @@ internal sealed partial class RapidMachine
         switch (b.Op)
         {
             case "AND":
-                return (bool)l && (bool)Evaluate(b.Right, frame);
+                return RapidBoxes.Bool((bool)l && (bool)Evaluate(b.Right, frame));
             case "OR":
-                return (bool)l || (bool)Evaluate(b.Right, frame);
+                return RapidBoxes.Bool((bool)l || (bool)Evaluate(b.Right, frame));
         }
         object r = Evaluate(b.Right, frame);
         switch (b.Op)
         {
             case "XOR":
-                return (bool)l ^ (bool)r;
+                return RapidBoxes.Bool((bool)l ^ (bool)r);
             case "=":
-                return RapidValues.AreEqual(l, r);
+                return RapidBoxes.Bool(RapidValues.AreEqual(l, r));
             case "<>":
-                return !RapidValues.AreEqual(l, r);
+                return RapidBoxes.Bool(!RapidValues.AreEqual(l, r));
         }
         if (l is double x && r is double y)
         {
             return b.Op switch
             {
-                "+" => Checked(x + y, b),
-                "-" => Checked(x - y, b),
-                "*" => Checked(x * y, b),
-                "/" => y == 0 ? throw DivZero(b) : Checked(x / y, b),
-                "DIV" => y == 0 ? throw DivZero(b) : Math.Truncate(Integer(x, b) / Integer(y, b)),
-                "MOD" => y == 0 ? throw DivZero(b) : Integer(x, b) % Integer(y, b),
-                "<" => x < y,
-                ">" => x > y,
-                "<=" => x <= y,
-                _ => x >= y,
+                "+" => RapidBoxes.Num(Checked(x + y, b)),
+                "-" => RapidBoxes.Num(Checked(x - y, b)),
+                "*" => RapidBoxes.Num(Checked(x * y, b)),
+                "/" => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Checked(x / y, b)),
+                "DIV" => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Math.Truncate(Integer(x, b) / Integer(y, b))),
+                "MOD" => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Integer(x, b) % Integer(y, b)),
+                "<" => RapidBoxes.Bool(x < y),
+                ">" => RapidBoxes.Bool(x > y),
+                "<=" => RapidBoxes.Bool(x <= y),
+                _ => RapidBoxes.Bool(x >= y),
             };
         }
         if (l is string ls && r is string rs)

@@ -154,7 +154,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         for (double v = from; step > 0 ? v <= to : v >= to; v += step)
         {
             Task.Tick();
-            cell.Value = v;
+            cell.Value = RapidBoxes.Num(v);
             RapidFlow flow = ExecuteBlock(f.Body, frame);
             if (flow != RapidFlow.Next)
             {
@@ -247,7 +247,7 @@ internal sealed partial class RapidMachine(RapidTask task)
             foreach (RapidDataDecl decl in routine.Data)
             {
                 RapidDataType type = routine.SlotTypes[slot];
-                int[] dims = [.. decl.Dimensions.Select(d => (int)(double)Evaluate(d, frame))];
+                int[] dims = decl.Dimensions.Length == 0 ? [] : [.. decl.Dimensions.Select(d => (int)(double)Evaluate(d, frame))];
                 object value = decl.Initial is null ? RapidValues.Default(type, dims) : RapidValues.Copy(Evaluate(decl.Initial, frame));
                 cells[slot++] = new RapidCell(decl.Name, type, decl.Storage, value);
             }

@@ -56,7 +56,8 @@ internal sealed class FaultRig : IAsyncDisposable
     /// <summary>
     /// Starts a controller of <paramref name="brand"/> with instant execution, no robot model (targets are taken as they
     /// are), the given faults and room in its logs for <paramref name="logCapacity"/> requests. ABB and KUKA run their driver on
-    /// the twin, except for a plan with a restart that loses the buffer (the twins cannot reset a program pointer yet).
+    /// the twin; KUKA, with a restart that loses the buffer, its imitation. On the RAPID twin that restart loses what the driver
+    /// task had not read from its socket (it reports what it read in its progress, so the host sends only the rest again).
     /// </summary>
     public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole)
     {
@@ -64,10 +65,7 @@ internal sealed class FaultRig : IAsyncDisposable
         {
             case "ABB":
             {
-                // A restart that loses the buffer needs the driver task's program pointer reset, which the RAPID twin's seam does not
-                // do yet: those plans run on the C# imitation until it does.
-                bool imitation = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
-                var c = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, RunsRapid = !imitation });
+                var c = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);
             }
