@@ -49,6 +49,9 @@ internal interface IDeviceListener
     /// <summary>The controller finished the action with this id.</summary>
     void OnAcknowledged(int id);
 
+    /// <summary>The controller finished the read with this id and sent the value it read (a digital input: 1 or 0).</summary>
+    void OnAcknowledged(int id, double value) => OnAcknowledged(id);
+
     /// <summary>The controller reported where the robot is now.</summary>
     void OnMotion(in MotionSample sample);
 
@@ -62,7 +65,7 @@ internal interface IDeviceListener
     void OnResumed();
 
     /// <summary>
-    /// The controller could not run the action with this id (its wire id, as in <see cref="OnAcknowledged"/>) and stopped its
+    /// The controller could not run the action with this id (its wire id, as in <see cref="OnAcknowledged(int)"/>) and stopped its
     /// program: <paramref name="reason"/> in the controller's words, <paramref name="code"/> its error number or null. Everything
     /// acknowledged before it ran; nothing after it will run.
     /// </summary>
