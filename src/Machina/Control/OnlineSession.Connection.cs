@@ -184,6 +184,12 @@ internal sealed partial class OnlineSession
         {
             return;
         }
+        if (ReferenceEquals(_stoppedByUser, link))
+        {
+            // The program the user stopped ended and closed its link: that is the stop, not a lost connection.
+            WithIssueCursor(issue => StopPending(link, issue));
+            return;
+        }
         Detach(error);
         _lastFault = error;
         Log(LogLevel.ERROR, $"Connection to \"{_host.Name}\" lost: {error.Message}");
