@@ -70,6 +70,7 @@ MODULE Machina_Driver
     VAR signaldo outDigital;
     VAR signalao outAnalog;
     VAR signaldi inDigital;
+    VAR signalai inAnalog;
 
     PROC Main()
         TPErase;
@@ -348,6 +349,14 @@ MODULE Machina_Driver
             ELSE
                 WaitDI inDigital, r.p1;
             ENDIF
+        CASE 21:
+            ! Read a digital input: "$27 id value;" just before the acknowledgement.
+            AliasIO r.s1, inDigital;
+            SendIfConnected "$27 " + NumToStr(r.id, 0) + " " + NumToStr(DInput(inDigital), 0) + ";";
+        CASE 22:
+            ! Read an analog input: "$27 id value;" just before the acknowledgement.
+            AliasIO r.s1, inAnalog;
+            SendIfConnected "$27 " + NumToStr(r.id, 0) + " " + NumToStr(AInput(inAnalog), 6) + ";";
         CASE 30:
             cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
             MoveC [[r.p8, r.p9, r.p10], [1, 0, 0, 0], [0, 0, 0, 0], cursorTarget.extax], cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;

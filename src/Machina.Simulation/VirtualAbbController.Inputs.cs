@@ -17,4 +17,25 @@ public sealed partial class VirtualAbbController
         }
         twin.Io.SetBit(input.Bank, input.Index, on);
     }
+
+    /// <summary>
+    /// Sets an analog input of the twin's IO configuration (AI_1 … AI_4) to a value, as a sensor wired to it would; the RAPID
+    /// driver's AInput sees it. Only a controller that runs RAPID (<see cref="VirtualAbbControllerOptions.RunsRapid"/>) has inputs.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The controller does not run RAPID, is not started, or has no such input.</exception>
+    /// <exception cref="ArgumentOutOfRangeException">The value is not a finite number.</exception>
+    public void SetAnalogInput(string signal, double value)
+    {
+        ArgumentNullException.ThrowIfNull(signal);
+        if (!double.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(nameof(value), value, "An analog input holds a finite number.");
+        }
+        var twin = Twin ?? throw new InvalidOperationException("Only a started virtual ABB controller that runs RAPID (RunsRapid) has inputs to set.");
+        if (twin.Signal(signal) is not { Bank: "ai" } input)
+        {
+            throw new InvalidOperationException($"The virtual ABB controller has no analog input \"{signal}\"; its analog inputs are AI_1 to AI_4.");
+        }
+        twin.Io.SetNumber(input.Bank, input.Index, value);
+    }
 }

@@ -15,4 +15,22 @@ public sealed partial class VirtualKukaController
         var twin = Twin ?? throw new InvalidOperationException("Only a started virtual KUKA controller that runs KRL (RunsKrl) has inputs to set.");
         twin.SetInput(number, on);
     }
+
+    /// <summary>
+    /// Sets analog input <c>$ANIN[number]</c> (1 to 32) to a value from −1 to 1 (a fraction of the input's range), as a sensor
+    /// wired to it would. Only a started controller that runs KRL (<see cref="VirtualKukaControllerOptions.RunsKrl"/>) has inputs.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The controller does not run KRL or is not started.</exception>
+    /// <exception cref="ArgumentOutOfRangeException">There is no such input, or the value is outside −1 to 1.</exception>
+    public void SetAnalogInput(int number, double value)
+    {
+        ArgumentOutOfRangeException.ThrowIfLessThan(number, 1);
+        ArgumentOutOfRangeException.ThrowIfGreaterThan(number, 32);
+        if (!(value >= -1 && value <= 1))
+        {
+            throw new ArgumentOutOfRangeException(nameof(value), value, "$ANIN holds values from -1 to 1.");
+        }
+        var twin = Twin ?? throw new InvalidOperationException("Only a started virtual KUKA controller that runs KRL (RunsKrl) has inputs to set.");
+        twin.SetAnalogInput(number, value);
+    }
 }

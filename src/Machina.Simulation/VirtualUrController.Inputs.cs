@@ -19,4 +19,24 @@ public sealed partial class VirtualUrController
         }
         Twin.Io.SetBit(bank, pin, on);
     }
+
+    /// <summary>
+    /// Sets standard analog input <paramref name="pin"/> (0–1), or tool analog input 0–1 when <paramref name="toolPin"/>, to a value
+    /// (volts or amperes, as the input is configured); the driver script's get_standard_analog_in / get_tool_analog_in see it.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">The controller has no such input, or the value is not a finite number.</exception>
+    public void SetAnalogInput(int pin, double value, bool toolPin = false)
+    {
+        string bank = toolPin ? UrIoBanks.ToolAnalogIn : UrIoBanks.AnalogIn;
+        int count = Twin.Io.Count(bank);
+        if (pin < 0 || pin >= count)
+        {
+            throw new ArgumentOutOfRangeException(nameof(pin), pin, $"The virtual UR has {(toolPin ? "tool" : "standard")} analog inputs 0 to {count - 1}.");
+        }
+        if (!double.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(nameof(value), value, "An analog input holds a finite number.");
+        }
+        Twin.Io.SetNumber(bank, pin, value);
+    }
 }

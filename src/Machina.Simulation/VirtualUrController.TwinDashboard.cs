@@ -4,6 +4,23 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
+    /// <summary>
+    /// A UR's stop decelerates the arm on its path and ends the program: the twin holds its motion first, so the arm stands
+    /// where the motion had brought it (not back at the motion's start), then ends the program and clears the hold.
+    /// </summary>
+    private static void StopTwin(UrTwinController twin)
+    {
+        if (twin.State == UrProgramState.Running && twin.Hold())
+        {
+            // The program's thread records where the arm stands when the hold reaches the motion (bounded: it does at once).
+            SpinWait.SpinUntil(() => twin.Motion is null, TimeSpan.FromSeconds(5));
+            twin.StopProgram();
+            twin.Release();
+            return;
+        }
+        twin.StopProgram();
+    }
+
     /// <summary>The dashboard answers about the interpreter's program (the commands a host uses): play and pause release and hold the program at its next read.</summary>
     private string TwinDashboard(UrTwinController twin, string command)
     {
@@ -11,13 +28,15 @@ public sealed partial class VirtualUrController
         switch (command)
         {
             case "stop":
-                twin.StopProgram();
+                StopTwin(twin);
                 return "Stopped";
             case "play":
                 return running && SafetyStatus == Normal && ReleaseTwin() ? "Starting program" : "Failed to execute: play";
             case "pause":
                 if (running && HoldTwin())
                 {
+                    // Answered once the arm stands: the program's thread records where the hold stopped the motion at once.
+                    SpinWait.SpinUntil(() => twin.Motion is null, TimeSpan.FromSeconds(5));
                     WakeRtde();
                     return "Pausing program";
                 }

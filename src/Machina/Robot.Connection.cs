@@ -193,8 +193,8 @@ public sealed partial class Robot
     public ConnectionState ConnectionState => _session?.State ?? ConnectionState.Disconnected;
 
     /// <summary>
-    /// Asks a controller that stopped on its own (see <see cref="ControllerStopped"/>) to run again, once its cause is cleared,
-    /// and waits until it does. The actions it holds run once each; the rest are sent after them.
+    /// Asks a controller that stopped on its own (see <see cref="ControllerStopped"/>) or that <see cref="Pause"/> held to run
+    /// again, once its cause is cleared, and waits until it does. The actions it holds run once each; the rest are sent after them.
     /// </summary>
     /// <exception cref="InvalidOperationException">The robot is not stopped.</exception>
     /// <exception cref="MachinaException">The controller refused or could not be reached.</exception>

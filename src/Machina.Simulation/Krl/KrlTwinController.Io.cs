@@ -53,6 +53,14 @@ internal sealed partial class KrlTwinController
         InputsChanged();
     }
 
+    /// <summary>Sets analog input <c>$ANIN[number]</c> (1-based), as a sensor wired to it would, and wakes a waiting program.</summary>
+    public void SetAnalogInput(int number, double value)
+    {
+        object[] inputs = ((KrlArrayValue)Environment.System["$ANIN"].Value).Items;
+        inputs[number - 1] = value;
+        InputsChanged();
+    }
+
     /// <summary>Sets flag <paramref name="number"/> (1-based) and wakes a waiting program.</summary>
     public void SetFlag(int number, bool value)
     {

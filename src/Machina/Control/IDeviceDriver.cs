@@ -41,6 +41,20 @@ internal interface IDeviceDriver : IAsyncDisposable
     /// </summary>
     Task ResumeAsync(CancellationToken cancellationToken) =>
         Task.FromException(new NotSupportedException("This controller does not report stops, so there is nothing to resume."));
+
+    /// <summary>
+    /// Holds the program on the controller, out of band: a motion in progress stops on its path, nothing more runs until
+    /// <see cref="ResumeAsync"/>, which goes on where it stopped. Completes once the controller holds it.
+    /// </summary>
+    Task PauseAsync(CancellationToken cancellationToken) =>
+        Task.FromException(new NotSupportedException("Pausing is not available for this brand yet (UR only); ClearPendingActions drops what is not sent."));
+
+    /// <summary>
+    /// Stops the program on the controller now, out of band: a motion in progress stops where the arm is and nothing after it
+    /// runs. Completes once the controller stopped; the program must be started again to go on.
+    /// </summary>
+    Task StopMotionAsync(CancellationToken cancellationToken) =>
+        Task.FromException(new NotSupportedException("Stopping the motion is not available for this brand yet (UR only); ClearPendingActions drops what is not sent."));
 }
 
 /// <summary>Receives what a device driver hears from its controller. Calls may come from the driver's receive loops.</summary>
@@ -48,6 +62,9 @@ internal interface IDeviceListener
 {
     /// <summary>The controller finished the action with this id.</summary>
     void OnAcknowledged(int id);
+
+    /// <summary>The controller finished the read with this id and sent the value it read (a digital input: 1 or 0).</summary>
+    void OnAcknowledged(int id, double value) => OnAcknowledged(id);
 
     /// <summary>The controller reported where the robot is now.</summary>
     void OnMotion(in MotionSample sample);
@@ -62,7 +79,7 @@ internal interface IDeviceListener
     void OnResumed();
 
     /// <summary>
-    /// The controller could not run the action with this id (its wire id, as in <see cref="OnAcknowledged"/>) and stopped its
+    /// The controller could not run the action with this id (its wire id, as in <see cref="OnAcknowledged(int)"/>) and stopped its
     /// program: <paramref name="reason"/> in the controller's words, <paramref name="code"/> its error number or null. Everything
     /// acknowledged before it ran; nothing after it will run.
     /// </summary>

@@ -184,6 +184,12 @@ internal sealed partial class OnlineSession
         {
             return;
         }
+        if (ReferenceEquals(_stoppedByUser, link))
+        {
+            // The program the user stopped ended and closed its link: that is the stop, not a lost connection.
+            WithIssueCursor(issue => StopPending(link, issue));
+            return;
+        }
         Detach(error);
         _lastFault = error;
         Log(LogLevel.ERROR, $"Connection to \"{_host.Name}\" lost: {error.Message}");
@@ -206,16 +212,19 @@ internal sealed partial class OnlineSession
         }
     }
 
-    private void OnAcknowledged(Connection link, int id)
+    private void OnAcknowledged(Connection link, int id, double? readValue)
     {
-        if (ReferenceEquals(_link, link) && Acknowledge(id) is MachinaException fault)
+        if (ReferenceEquals(_link, link) && Acknowledge(id, readValue) is MachinaException fault)
         {
             Fault(link, fault);
         }
     }
 
-    /// <summary>Executes the acknowledged action and everything released before it; a fault for an unknown id.</summary>
-    private MachinaException? Acknowledge(int id)
+    /// <summary>
+    /// Executes the acknowledged action and everything released before it; a fault for an unknown id. <paramref name="readValue"/>
+    /// is the value the controller read when the action is a read.
+    /// </summary>
+    private MachinaException? Acknowledge(int id, double? readValue)
     {
         int index = 0, found = -1;
         foreach (InFlight f in _inFlight)
@@ -232,10 +241,12 @@ internal sealed partial class OnlineSession
             return new RobotConnectionException(
                 $"The controller acknowledged action {id}, which is not waiting for execution (never sent, or already executed).", $"@{id}");
         }
-        for (int i = 0; i <= found; i++)
+        for (int i = 0; i < found; i++)
         {
             Execute(_inFlight.Dequeue());
         }
+        InFlight acknowledged = _inFlight.Dequeue();
+        Execute(acknowledged, _inFlight.Count, _inFlight.Count + _buffer.Count, readValue);
         _lastAcknowledgedId = id;
         _liveOnLink = false; // a live pose from before this acknowledgement is older than the target it confirms
         _lastProgress = _time.GetTimestamp();

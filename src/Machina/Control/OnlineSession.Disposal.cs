@@ -15,6 +15,7 @@ internal sealed partial class OnlineSession
         {
             _disposed = true;
             List<(string What, TaskCompletionSource Signal)> waiting = TakeWaiters();
+            FailReadWaiters(Disposed("read an input"), direct: true);   // the event pump stops below: signal them here
             Connection? current = _link;
             if (current is not null)
             {

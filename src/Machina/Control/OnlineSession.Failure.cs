@@ -18,6 +18,11 @@ internal sealed partial class OnlineSession
         {
             return;
         }
+        if (ReferenceEquals(_stoppedByUser, link))
+        {
+            // The controller reports the program the user stopped as a failure of the action it ran: say who stopped it.
+            (reason, code) = (StoppedByUser, StoppedCode);
+        }
         MachinaException? unknown = null;
         WithIssueCursor(issue => unknown = Fail(link, wireId, reason, code, issue));
         if (unknown is not null)
@@ -68,6 +73,17 @@ internal sealed partial class OnlineSession
             int after = ran.Count - 1 - i;
             Execute(ran[i], after, after);
         }
+        Abandon(failedAction, cancelled, reason, code, issue);
+        return null;
+    }
+
+    /// <summary>
+    /// The end of a failure (on the loop, under the issue lock; nothing waits any more): the cursors go back to where the robot
+    /// is, <paramref name="failedAction"/> raises <c>ActionFailed</c> with the <paramref name="cancelled"/> actions after it,
+    /// waiters fail and the link is forgotten.
+    /// </summary>
+    private void Abandon(RobotAction failedAction, List<RobotAction> cancelled, string reason, string? code, RobotCursor issue)
+    {
         if (_liveOnLink && _motion is { Position: Vector at, Rotation: Rotation facing, Axes: Joints axes } live)
         {
             _execution.StopAtReported(at, facing, axes, live.ExternalAxesCartesian);
@@ -88,6 +104,5 @@ internal sealed partial class OnlineSession
         {
             _events.Post(new ControllerStoppedArgs(true, failure, [], _execution.Snapshot()));
         }
-        return null;
     }
 }

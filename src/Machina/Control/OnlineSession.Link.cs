@@ -21,8 +21,12 @@ internal sealed partial class OnlineSession
         internal IDeviceDriver Driver { get; } = driver;
 
         // Before the link is current the driver cannot map a controller's id to an action yet: it is mapped once it is.
-        public void OnAcknowledged(int id) =>
-            session.Report(this, () => session.OnAcknowledged(this, id), () => session.OnAcknowledged(this, session.ActionIdOf(this, id)));
+        public void OnAcknowledged(int id) => OnAcknowledged(id, null);
+
+        public void OnAcknowledged(int id, double value) => OnAcknowledged(id, (double?)value);
+
+        private void OnAcknowledged(int id, double? value) =>
+            session.Report(this, () => session.OnAcknowledged(this, id, value), () => session.OnAcknowledged(this, session.ActionIdOf(this, id), value));
 
         public void OnMotion(in MotionSample sample)
         {

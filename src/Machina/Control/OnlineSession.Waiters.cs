@@ -82,6 +82,7 @@ internal sealed partial class OnlineSession
             _events.PostSignal(signal, reason);
         }
         _pendingWaiters.Clear();
+        FailReadWaiters(reason);
     }
 
     /// <summary>Takes every waiter away with what it waits for (disposal fails them directly: the event pump stops).</summary>

@@ -218,7 +218,7 @@ internal sealed partial class OnlineSession : IActionStream
     private void Execute(InFlight entry) => Execute(entry, _inFlight.Count, _inFlight.Count + _buffer.Count);
 
     /// <summary>Applies an executed action to the execution cursor and reports it with the counts still pending after it.</summary>
-    private void Execute(InFlight entry, int pendingOnDevice, int pendingTotal)
+    private void Execute(InFlight entry, int pendingOnDevice, int pendingTotal, double? readValue = null)
     {
         string? refusal = _execution.TryApply(entry.Action);
         if (refusal is not null)
@@ -227,7 +227,14 @@ internal sealed partial class OnlineSession : IActionStream
         }
         if (_host.IsListening(OnlineEvent.Executed))
         {
-            _events.Post(new ActionExecutedArgs(entry.Action, pendingOnDevice, pendingTotal, _execution.Snapshot()));
+            _events.Post(new ActionExecutedArgs(entry.Action, pendingOnDevice, pendingTotal, _execution.Snapshot())
+            {
+                ReadValue = entry.Action is ActionReadInput ? readValue : null,
+            });
+        }
+        if (entry.Action is ActionReadInput)
+        {
+            Delivered(entry.Action, readValue);
         }
     }
 

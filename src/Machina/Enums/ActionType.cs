@@ -59,4 +59,6 @@ public enum ActionType
     ArcMotion = 26,
     /// <summary>Wait for a digital input.</summary>
     WaitDigital = 27,
+    /// <summary>Read a digital or analog input.</summary>
+    ReadInput = 28,
 }

@@ -22,6 +22,9 @@ public sealed class ActionExecutedArgs : MachinaEventArgs
     /// <summary>All issued actions not executed yet (sent or still waiting).</summary>
     public int PendingExecutionTotal { get; }
 
+    /// <summary>For a read (<see cref="ActionReadInput"/>), the value the controller read (a digital input: 1 or 0); else null.</summary>
+    public double? ReadValue { get; init; }
+
     /// <inheritdoc/>
     public override string ToJsonString()
     {
@@ -29,6 +32,10 @@ public sealed class ActionExecutedArgs : MachinaEventArgs
         AppendHead(sb, "action-executed", LastAction);
         sb.Append(",\"pendDev\":").Append(Num.I(PendingExecutionOnDevice))
           .Append(",\"pendTot\":").Append(Num.I(PendingExecutionTotal)).Append(',');
+        if (ReadValue is double value)
+        {
+            sb.Append("\"value\":").Append(Num.R(value)).Append(',');
+        }
         AppendPose(sb);
         return sb.Append('}').ToString();
     }

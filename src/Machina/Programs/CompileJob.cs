@@ -35,7 +35,7 @@ internal sealed class CompileJob
     /// <summary>Compile options.</summary>
     internal CompileOptions Options { get; }
 
-    private (List<string> Declarations, bool SetsAcceleration)? _survey;
+    private (List<string> Declarations, bool SetsAcceleration, bool ReadsDigital, bool ReadsAnalog)? _survey;
 
     /// <summary>The statements of the custom-code declarations (<c>CustomCode(..., true)</c>), in order, from one pass over the actions.</summary>
     internal IReadOnlyList<string> CustomDeclarations => Survey().Declarations;
@@ -43,23 +43,29 @@ internal sealed class CompileJob
     /// <summary>True when any action sets the acceleration (same pass as <see cref="CustomDeclarations"/>).</summary>
     internal bool SetsAcceleration => Survey().SetsAcceleration;
 
+    /// <summary>True when any action reads a digital input (same pass as <see cref="CustomDeclarations"/>).</summary>
+    internal bool ReadsDigital => Survey().ReadsDigital;
+
+    /// <summary>True when any action reads an analog input (same pass as <see cref="CustomDeclarations"/>).</summary>
+    internal bool ReadsAnalog => Survey().ReadsAnalog;
+
     /// <summary>
     /// Text that every statement the survey looks for contains: <c>CustomCode</c>, and <c>Acceleration</c> in both
-    /// <c>Acceleration</c> and <c>AccelerationTo</c> (instruction names are case-sensitive).
+    /// <c>Acceleration</c> and <c>AccelerationTo</c>, <c>Read</c> in <c>ReadDigital</c> and <c>ReadAnalog</c> (instruction names are case-sensitive).
     /// </summary>
-    private static readonly string[] SurveyedInstructions = ["CustomCode", "Acceleration"];
+    private static readonly string[] SurveyedInstructions = ["CustomCode", "Acceleration", "Read"];
 
-    private (List<string> Declarations, bool SetsAcceleration) Survey()
+    private (List<string> Declarations, bool SetsAcceleration, bool ReadsDigital, bool ReadsAnalog) Survey()
     {
         if (_survey is null && Source is not null && !Source.MayContain(SurveyedInstructions))
         {
             // A text that never names the statements the survey looks for has none of them: no pass needed.
-            _survey = ([], false);
+            _survey = ([], false, false, false);
         }
         if (_survey is null)
         {
             var declarations = new List<string>();
-            bool acceleration = false;
+            bool acceleration = false, digital = false, analog = false;
             foreach (RobotAction action in Actions)
             {
                 if (action is ActionCustomCode { IsDeclaration: true } custom)
@@ -67,8 +73,10 @@ internal sealed class CompileJob
                     declarations.Add(custom.Statement);
                 }
                 acceleration |= action is ActionAcceleration;
+                digital |= action is ActionReadInput { IsAnalog: false };
+                analog |= action is ActionReadInput { IsAnalog: true };
             }
-            _survey = (declarations, acceleration);
+            _survey = (declarations, acceleration, digital, analog);
         }
         return _survey.Value;
     }

@@ -92,6 +92,8 @@ internal static class InstructionCatalog
         Add("DetachTool", 0, 0, "DetachTool()", _ => new ActionDetachTool());
         Add("WriteDigital", 2, 3, "WriteDigital(pin, on[, toolPin])", a => new ActionIODigital(a.S(0), a.B(1, false), a.B(2, false)));
         Add("WaitForDigital", 2, 4, "WaitForDigital(pin, on[, timeoutMillis[, toolPin]])", a => new ActionWaitDigital(a.S(0), a.B(1, false), a.Count > 2 ? a.L(2) : 0, a.B(3, false)));
+        Add("ReadDigital", 1, 2, "ReadDigital(pin[, toolPin])", a => new ActionReadInput(a.S(0), false, a.B(1, false)));
+        Add("ReadAnalog", 1, 2, "ReadAnalog(pin[, toolPin])", a => new ActionReadInput(a.S(0), true, a.B(1, false)));
         Add("WriteAnalog", 2, 3, "WriteAnalog(pin, value[, toolPin])", a => new ActionIOAnalog(a.S(0), a.D(1), a.B(2, false)));
         Add("Temperature", 2, 3, "Temperature(increment, \"extruder\"|\"bed\"|\"chamber\"[, wait])", a => Temperature(a, true));
         Add("TemperatureTo", 2, 3, "TemperatureTo(celsius, \"extruder\"|\"bed\"|\"chamber\"[, wait])", a => Temperature(a, false));

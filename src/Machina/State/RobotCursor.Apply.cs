@@ -45,7 +45,7 @@ internal sealed partial class RobotCursor
             ActionIOAnalog a => CheckAnalog(a) ?? SetOutput(AnalogOutputs, a.IsToolPin, a.PinName, a.Value),
             ActionWait a => CheckWait(a),
             ActionWaitDigital a => CheckWaitDigital(a),
-            ActionMessage or ActionComment or ActionCustomCode or ActionInitialization => null,
+            ActionMessage or ActionComment or ActionCustomCode or ActionInitialization or ActionReadInput => null,
             _ => $"Machina does not know how to apply a {action.GetType().Name}.",
         };
         if (refusal is null)

@@ -44,7 +44,7 @@ public class ConventionTests
     {
         var actionTypes = Library.GetExportedTypes().Where(t => t.IsSubclassOf(typeof(RobotAction))).ToArray();
 
-        Assert.Equal(27, actionTypes.Length);
+        Assert.Equal(28, actionTypes.Length);
         Assert.All(actionTypes, t => Assert.True(t.IsSealed, t.Name));
     }
 

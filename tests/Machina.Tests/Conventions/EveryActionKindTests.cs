@@ -23,7 +23,7 @@ public class EveryActionKindTests
         ExternalAxisTo(1, 100); ExternalAxis(1, 10);
         ArmAngleTo(10); ArmAngle(5);
         Wait(100); Message("hello"); Comment("a comment"); CustomCode("x := 1;");
-        WriteDigital(1, true); WriteAnalog(2, 0.5); WaitForDigital(1, true, 100);
+        WriteDigital(1, true); WriteAnalog(2, 0.5); WaitForDigital(1, true, 100); ReadDigital(1); ReadAnalog(1);
         TemperatureTo(200, "extruder"); Temperature(10, "bed");
         ExtrusionRateTo(0.5); ExtrusionRate(0.1); Extrude(true); Extrude(false);
         DetachTool();
@@ -39,7 +39,7 @@ public class EveryActionKindTests
             .Where(t => t.IsSubclassOf(typeof(RobotAction)) && !t.IsAbstract)
             .Select(t => t.Name).Order().ToList();
         Assert.Equal(kinds, Actions().Select(a => a.GetType().Name).Distinct().Order().ToList());
-        Assert.Equal(27, kinds.Count);
+        Assert.Equal(28, kinds.Count);
     }
 
     public static TheoryData<RobotType> Languages() => new(Enum.GetValues<RobotType>());

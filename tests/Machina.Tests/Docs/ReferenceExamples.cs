@@ -204,6 +204,18 @@ internal static class ReferenceExamples
         bot.WaitForDigital("DI_Part", false, 2500);
     }
 
+    internal static void ReadDigital(Robot bot)
+    {
+        bot.ReadDigital(1);
+        bot.ReadDigital("DI_Part");
+    }
+
+    internal static void ReadAnalog(Robot bot)
+    {
+        bot.ReadAnalog(1);
+        bot.ReadAnalog("AI_Flow");
+    }
+
     internal static void WriteAnalog(Robot bot)
     {
         bot.WriteAnalog(1, 0.5);

@@ -167,6 +167,7 @@ public class UrDriverRulesPropertyTests
         13 => 3,
         14 => 2,
         18 => 4,
+        19 or 20 => 2,
         _ => throw new ArgumentOutOfRangeException(nameof(code), code, "not an instruction code of the protocol"),
     };
 
@@ -214,6 +215,7 @@ public class UrDriverRulesPropertyTests
             NetworkStream stream = _driver.GetStream();
             await stream.WriteAsync(bytes);
             var ack = new byte[4];
+            bool inResponse = false;   // a read's value response (-60 id value End) comes before its acknowledgement
             while (true)
             {
                 int read = 0;
@@ -226,7 +228,16 @@ public class UrDriverRulesPropertyTests
                     }
                     read += n;
                 }
-                if (BinaryPrimitives.ReadInt32BigEndian(ack) == id)
+                int value = BinaryPrimitives.ReadInt32BigEndian(ack);
+                if (inResponse)
+                {
+                    inResponse = value != UrWire.End;
+                }
+                else if (value < -1)
+                {
+                    inResponse = true;
+                }
+                else if (value == id)
                 {
                     return true;
                 }

@@ -124,6 +124,9 @@ internal sealed class GCodeWriter
             case ActionWaitDigital:
                 NotApplicable(action, "Machina's G-code programs do not wait for inputs.");
                 break;
+            case ActionReadInput:
+                NotApplicable(action, "Machina's G-code programs do not read inputs.");
+                break;
             case ActionAxes:
                 NotApplicable(action, "a 3D printer has no robot joints to move.");
                 break;

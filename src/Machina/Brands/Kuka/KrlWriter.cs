@@ -99,6 +99,16 @@ internal sealed class KrlWriter
             src.Add(Indent + "DECL REAL " + AccDefaultVariable);
             declared = true;
         }
+        if (_job.ReadsDigital)
+        {
+            src.Add(Indent + "DECL BOOL machina_di");
+            declared = true;
+        }
+        if (_job.ReadsAnalog)
+        {
+            src.Add(Indent + "DECL REAL machina_ai");
+            declared = true;
+        }
         if (declared)
         {
             src.Add("");
@@ -191,6 +201,9 @@ internal sealed class KrlWriter
                 break;
             case ActionWaitDigital wait:
                 EmitWaitDigital(wait);
+                break;
+            case ActionReadInput read:
+                EmitRead(read);
                 break;
             case ActionIOAnalog analog:
                 if (analog.Value < -1 || analog.Value > 1)
@@ -357,6 +370,37 @@ internal sealed class KrlWriter
         _src.Add(Indent + "IF " + (wait.On ? "NOT " : "") + input + " THEN");
         _src.Add(Indent + "  HALT ; " + KrlText.Comment(wait.Describe()) + ": timed out");
         _src.Add(Indent + "ENDIF");
+    }
+
+    /// <summary>machina_di = $IN[n] (or a SIGNAL's name), machina_ai = $ANIN[n]: the program's variables declared at its start.</summary>
+    private void EmitRead(ActionReadInput read)
+    {
+        string array = read.IsAnalog ? "$ANIN" : "$IN";
+        int count = read.IsAnalog ? KukaActionEncoder.AnalogOutputs : KukaActionEncoder.DigitalOutputs;
+        string variable = read.IsAnalog ? "machina_ai = " : "machina_di = ";
+        if (IOPin.TryNumber(read.PinName, out int number))
+        {
+            if (read.IsToolPin)
+            {
+                Error(read, "KUKA controllers have no separate tool inputs; declare a SIGNAL for it in $config.dat and use its name.");
+            }
+            else if (number < 1 || number > count)
+            {
+                Error(read, $"{array} inputs are numbered 1 to {Num.I(count)}, so input {Num.I(number)} does not exist.");
+            }
+            else
+            {
+                Code(variable + array + "[" + Num.I(number) + "]", read);
+            }
+        }
+        else if (KrlText.IsValidName(read.PinName))
+        {
+            Code(variable + read.PinName, read);
+        }
+        else
+        {
+            Error(read, $"\"{read.PinName}\" is neither an input number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
+        }
     }
 
     /// <summary>The timer a wait with a time limit uses (the driver's monitor uses 16).</summary>

@@ -140,6 +140,14 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
             case ActionWaitDigital wait:
                 WriteWaitDigital(wait);
                 break;
+            case ActionReadInput read:
+                if (UrInputs.WhyNot(read) is string problem)
+                {
+                    Unsupported(read, problem);
+                    break;
+                }
+                Code(read, Indent + (read.IsAnalog ? "machina_ai = " : "machina_di = ") + UrInputs.ReadCall(read));
+                break;
             case ActionCustomCode { IsDeclaration: false } code:
                 Code(action, Indent + code.Statement);
                 break;

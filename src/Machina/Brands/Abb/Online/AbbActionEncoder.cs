@@ -54,6 +54,9 @@ internal static class AbbActionEncoder
             case ActionIOAnalog analog:
                 into.Add(AbbRequest.SetAO(id, analog.PinName, analog.Value));
                 break;
+            case ActionReadInput read:
+                into.Add(AbbRequest.ReadInput(id, read.PinName, read.IsAnalog));
+                break;
             case ActionWaitDigital wait:
                 into.Add(AbbRequest.WaitDI(id, wait.PinName, wait.On, wait.TimeoutMillis));
                 break;

@@ -29,6 +29,9 @@ internal sealed partial class AbbDriver
             case AbbResponseCode.Failure:
                 OnFailure(message);
                 return;
+            case AbbResponseCode.InputRead when message.Values.Length == 2:
+                _read = ((int)message.Values[0], message.Values[1]);
+                return;
             case AbbResponseCode.FullPose:
                 Listener?.OnMotion(Sample(message.ToMonitorUpdate()));
                 return;

@@ -20,6 +20,9 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     private bool _hasExternalAxes;
     private DeviceProgress? _progress;
 
+    /// <summary>The last <c>$27 id value;</c> (a read's value), handed over with the acknowledgement of that id.</summary>
+    private (int WireId, double Value)? _read;
+
     /// <summary>Creates a driver that logs to the robot's log and measures its timeouts with <paramref name="time"/>.</summary>
     internal AbbDriver(RobotLogger log, TimeProvider time)
         : base(log, time, new AbbMessageReader(), "controller")
@@ -118,6 +121,12 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     private void Acknowledge(int wireId)
     {
         int actionId = _awaiting.Resolve(wireId);
+        if (_read is (int readId, double value) && readId == wireId)
+        {
+            _read = null;
+            Listener?.OnAcknowledged(actionId, value);
+            return;
+        }
         Listener?.OnAcknowledged(actionId);
     }
 }

@@ -23,6 +23,8 @@ internal enum AbbInstructionCode
     WorkObject = 18,
     NoWorkObject = 19,
     WaitDI = 20,
+    ReadDI = 21,
+    ReadAI = 22,
     MoveC = 30,
     StopExecution = 100,
     GetInfo = 101,

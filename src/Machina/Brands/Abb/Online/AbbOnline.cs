@@ -18,6 +18,7 @@ internal sealed class AbbOnline : IOnlineBrand
     public string? WhyCannotStream(RobotAction action) => action switch
     {
         ActionIODigital digital => Refuse(action, AbbRequest.WhyTextCannotBeSent(digital.PinName) ?? RapidNames.WhyNotSignal(digital.PinName)),
+        ActionReadInput read => Refuse(action, AbbRequest.WhyTextCannotBeSent(read.PinName) ?? RapidNames.WhyNotSignal(read.PinName)),
         ActionWaitDigital wait => Refuse(action, AbbRequest.WhyTextCannotBeSent(wait.PinName) ?? RapidNames.WhyNotSignal(wait.PinName)),
         ActionIOAnalog analog => Refuse(action, AbbRequest.WhyTextCannotBeSent(analog.PinName) ?? RapidNames.WhyNotSignal(analog.PinName)),
         ActionCustomCode { IsDeclaration: false } custom => Refuse(action, AbbRequest.WhyStatementCannotBeSent(custom.Statement)),

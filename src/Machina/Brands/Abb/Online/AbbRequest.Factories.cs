@@ -74,6 +74,13 @@ internal readonly partial struct AbbRequest
     public static AbbRequest WaitDI(int id, string signal, bool on, long timeoutMillis) =>
         new(id, (int)AbbInstructionCode.WaitDI, signal, [on ? 1 : 0, timeoutMillis / 1000.0]);
 
+    /// <summary>
+    /// Code 21 (digital) or 22 (analog): read the input named <paramref name="signal"/>; the driver answers <c>$27 id value;</c>
+    /// (<see cref="AbbResponseCode.InputRead"/>) just before the acknowledgement.
+    /// </summary>
+    public static AbbRequest ReadInput(int id, string signal, bool analog) =>
+        new(id, (int)(analog ? AbbInstructionCode.ReadAI : AbbInstructionCode.ReadDI), signal, []);
+
     /// <summary>Code 11: set the analog output named <paramref name="signal"/> to a value, unrounded (sent once: fix of bug A3).</summary>
     public static AbbRequest SetAO(int id, string signal, double value) =>
         new(id, (int)AbbInstructionCode.SetAO, signal, [value]);

@@ -14,4 +14,7 @@ internal enum AbbResponseCode
 
     /// <summary><c>$26 id code;</c>, the request with that id could not run and the driver stopped (<see cref="AbbFailure"/>).</summary>
     Failure = 26,
+
+    /// <summary><c>$27 id value;</c>, driver 1.7 on: the value read by the read request with that id, sent just before its acknowledgement.</summary>
+    InputRead = 27,
 }

@@ -51,6 +51,7 @@ internal sealed class RapidCompiler : Compiler
         }
         AddBlock(mod, plan.DataLines, "");
         AddBlock(mod, plan.CustomDeclarations, "  ");
+        AddBlock(mod, ReadDeclarations(plan), "  ");
 
         var writer = new RapidWriter(job, plan, mod);
         if (!job.Options.InlineTargets && writer.DeclareTargets() > 0)
@@ -67,6 +68,21 @@ internal sealed class RapidCompiler : Compiler
         mod.Add("  ENDPROC");
         mod.Add("");
         mod.Add("ENDMODULE");
+    }
+
+    /// <summary>The variables ReadDigital and ReadAnalog store their value in (DInput returns a dionum, AInput a num).</summary>
+    private static List<string> ReadDeclarations(RapidPlan plan)
+    {
+        var lines = new List<string>(2);
+        if (plan.ReadsDigital)
+        {
+            lines.Add("VAR dionum machina_di := 0;");
+        }
+        if (plan.ReadsAnalog)
+        {
+            lines.Add("VAR num machina_ai := 0;");
+        }
+        return lines;
     }
 
     private static void AddBlock(LineSink sink, List<string> lines, string indent)

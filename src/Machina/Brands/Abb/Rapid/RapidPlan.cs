@@ -37,6 +37,12 @@ internal sealed class RapidPlan
     /// <summary>True when the program sets IO signals.</summary>
     internal bool UsesIO { get; private set; }
 
+    /// <summary>True when the program reads a digital input (into machina_di).</summary>
+    internal bool ReadsDigital { get; private set; }
+
+    /// <summary>True when the program reads an analog input (into machina_ai).</summary>
+    internal bool ReadsAnalog { get; private set; }
+
     /// <summary>Declaration lines for speeds, zones and tools.</summary>
     internal List<string> DataLines { get; } = [];
 
@@ -127,6 +133,11 @@ internal sealed class RapidPlan
                 break;
             case ActionIODigital or ActionIOAnalog:
                 UsesIO = true;
+                break;
+            case ActionReadInput read:
+                UsesIO = true;
+                ReadsDigital |= !read.IsAnalog;
+                ReadsAnalog |= read.IsAnalog;
                 break;
         }
     }

@@ -141,6 +141,10 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
             case ActionIOAnalog io:
                 WriteSignal(action, io.PinName, "SetAO ", new StringBuilder(16).AppendFixed(io.Value, 6).ToString());
                 break;
+            case ActionReadInput read:
+                // DInput and AInput return the signal's value; the module declares machina_di (dionum) and machina_ai (num).
+                WriteSignal(action, read.PinName, read.IsAnalog ? "machina_ai := AInput(" : "machina_di := DInput(", null);
+                break;
             case ActionWaitDigital wait:
                 // WaitDI without \TimeFlag: when \MaxTime passes, the error ERR_WAIT_MAXTIME stops the program.
                 WriteSignal(action, wait.PinName, "WaitDI ", (wait.On ? "1" : "0") + (wait.TimeoutMillis > 0 ? "\\MaxTime:=" + ProgramText.Seconds(wait.TimeoutMillis) : ""));
@@ -251,14 +255,15 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         Code(action, Indent + "! Tool \"" + name + "\" attached");
     }
 
-    private void WriteSignal(RobotAction action, string pin, string instruction, string value)
+    /// <summary>An IO instruction on a named signal (<paramref name="value"/> after it), or a function call on it when <paramref name="value"/> is null.</summary>
+    private void WriteSignal(RobotAction action, string pin, string instruction, string? value)
     {
         if (RapidNames.WhyNotSignal(pin) is string why)
         {
             Unsupported(action, why);
             return;
         }
-        Code(action, Indent + instruction + pin + ", " + value + ";");
+        Code(action, Indent + instruction + pin + (value is null ? ");" : ", " + value + ";"));
     }
 
     private void WarnArmAngleConflict(RobotAction action, RobotCursor cursor)

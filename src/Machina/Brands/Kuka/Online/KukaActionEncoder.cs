@@ -24,23 +24,24 @@ internal static class KukaActionEncoder
         ActionTemperature or ActionExtrusion or ActionExtrusionRate or ActionInitialization =>
             Refuse(action, "a KUKA arm has no extruder or heated parts; this is for 3D printers."),
         ActionIODigital digital => WhyNotOutput(action, digital.PinName, digital.IsToolPin, DigitalOutputs, "$OUT"),
-        ActionWaitDigital wait => WhyNotInput(action, wait),
+        ActionWaitDigital wait => WhyNotInput(action, wait.PinName, wait.IsToolPin, DigitalOutputs, "$IN"),
+        ActionReadInput read => WhyNotInput(action, read.PinName, read.IsToolPin, read.IsAnalog ? AnalogOutputs : DigitalOutputs, read.IsAnalog ? "$ANIN" : "$IN"),
         ActionIOAnalog analog => WhyNotOutput(action, analog.PinName, analog.IsToolPin, AnalogOutputs, "$ANOUT")
             ?? (analog.Value is < -1 or > 1 ? Refuse(action, $"KRL analog outputs take values from -1 to 1, and {Num.G(analog.Value)} is outside that range.") : null),
         _ => null,
     };
 
-    private static string? WhyNotInput(RobotAction action, ActionWaitDigital wait)
+    private static string? WhyNotInput(RobotAction action, string pin, bool toolPin, int count, string array)
     {
-        if (wait.IsToolPin)
+        if (toolPin)
         {
             return Refuse(action, "KUKA controllers have no separate tool inputs; use the number of the controller input wired to the tool.");
         }
-        if (!IOPin.TryNumber(wait.PinName, out int number))
+        if (!IOPin.TryNumber(pin, out int number))
         {
-            return Refuse(action, $"the driver reads inputs by number ($IN[1] to $IN[{Num.I(DigitalOutputs)}]); a signal name such as \"{wait.PinName}\" exists only in the controller's configuration.");
+            return Refuse(action, $"the driver reads inputs by number ({array}[1] to {array}[{Num.I(count)}]); a signal name such as \"{pin}\" exists only in the controller's configuration.");
         }
-        return number < 1 || number > DigitalOutputs ? Refuse(action, $"$IN inputs are numbered 1 to {Num.I(DigitalOutputs)}, so input {Num.I(number)} does not exist.") : null;
+        return number < 1 || number > count ? Refuse(action, $"{array} inputs are numbered 1 to {Num.I(count)}, so input {Num.I(number)} does not exist.") : null;
     }
 
     private static string? WhyNotOutput(RobotAction action, string pin, bool toolPin, int count, string array)
@@ -127,6 +128,10 @@ internal static class KukaActionEncoder
                 v[0] = wait.PinNumber;
                 v[1] = wait.On ? 1 : 0;
                 v[2] = wait.TimeoutMillis;
+                break;
+            case ActionReadInput read:
+                code = read.IsAnalog ? KukaActionCode.ReadAnalog : KukaActionCode.ReadDigital;
+                v[0] = read.PinNumber;
                 break;
             case ActionIOAnalog analog:
                 code = KukaActionCode.AnalogOutput;

@@ -110,7 +110,7 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
         switch (element.Name)
         {
             case KukaProtocol.Acknowledgement:
-                Acknowledge(element.Integer("ID"));
+                Acknowledge(element.Integer("ID"), ReadValue(element));
                 break;
             case KukaProtocol.Failure:
                 Fail(element.Integer("ID"), element.Attribute("Text") ?? KukaFailure.Describe(0), element.Attribute("Code"));
@@ -135,7 +135,13 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
         Listener?.OnFailed(id, reason, code);
     }
 
-    private void Acknowledge(int wireId)
+    /// <summary>The value a read's acknowledgement carries (<c>V=""</c>), or null when there is none.</summary>
+    private static double? ReadValue(in KukaElement element) =>
+        element.Attribute("V") is string text && double.TryParse(text, System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture, out double value) && double.IsFinite(value)
+            ? value
+            : null;
+
+    private void Acknowledge(int wireId, double? readValue)
     {
         int actionId = wireId;
         lock (_gate)
@@ -159,7 +165,13 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
                 actionId = _awaiting.Dequeue();
             }
         }
-        // Outside the lock: the session's loop may call Send while handling it.
+        // Outside the lock: the session's loop may call Send while handling it. Every acknowledgement after a read carries
+        // V (EthernetKRL keeps the value set last); the session keeps it for reads only.
+        if (readValue is double value)
+        {
+            Listener?.OnAcknowledged(actionId, value);
+            return;
+        }
         Listener?.OnAcknowledged(actionId);
     }
 

@@ -44,6 +44,9 @@ internal static class KukaMessages
     /// <summary><c>&lt;R ID="id"&gt;&lt;/R&gt;</c>: the driver executed the action with this id.</summary>
     public static string Acknowledgement(int id) => "<R ID=\"" + Num.I(id) + "\"></R>";
 
+    /// <summary><c>&lt;R ID="…" V="…"&gt;&lt;/R&gt;</c>: the acknowledgement of a read, with the value read.</summary>
+    public static string ReadAcknowledgement(int id, double value) => "<R ID=\"" + Num.I(id) + "\" V=\"" + Num.R(value) + "\"></R>";
+
     /// <summary><c>&lt;P A1…A6=… X Y Z A B C=…&gt;&lt;/P&gt;</c>: a live pose report from the monitor.</summary>
     public static string Pose(Joints axes, Vector position, Rotation rotation)
     {

@@ -95,4 +95,10 @@ internal enum KukaActionCode
 
     /// <summary>Wait until <c>$IN[V1]</c> is V2 (1 true, 0 false), at most V3 ms (0 = no limit; timer 15 counts).</summary>
     WaitInput = 14,
+
+    /// <summary>Read <c>$IN[V1]</c>: its acknowledgement carries the value, <c>&lt;R ID="" V="1"/&gt;</c> (1 true, 0 false).</summary>
+    ReadDigital = 15,
+
+    /// <summary>Read <c>$ANIN[V1]</c> (−1 to 1): its acknowledgement carries the value, <c>&lt;R ID="" V=""/&gt;</c>.</summary>
+    ReadAnalog = 16,
 }

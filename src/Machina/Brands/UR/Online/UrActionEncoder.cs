@@ -24,6 +24,7 @@ internal static class UrActionEncoder
         ActionIODigital d when UrOutputs.WhyNot(d) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         ActionIOAnalog a when UrOutputs.WhyNot(a) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         ActionWaitDigital w when UrInputs.WhyNot(w) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
+        ActionReadInput r when UrInputs.WhyNot(r) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         _ => null,
     };
 
@@ -81,6 +82,8 @@ internal static class UrActionEncoder
                 return Put(into, id, UrInstructionCode.SetDigitalOut, digital.PinNumber, digital.On ? 1 : 0, digital.IsToolPin ? 1 : 0);
             case ActionIOAnalog analog:
                 return Put(into, id, UrInstructionCode.SetAnalogOut, analog.PinNumber, wire.Scale(analog.Value * UrWire.FactorAnalog));
+            case ActionReadInput r:
+                return Put(into, id, r.IsAnalog ? UrInstructionCode.ReadAnalogIn : UrInstructionCode.ReadDigitalIn, r.PinNumber, r.IsToolPin ? 1 : 0);
             case ActionWaitDigital w:
                 return Put(into, id, UrInstructionCode.WaitDigitalIn, w.PinNumber, w.On ? 1 : 0, w.IsToolPin ? 1 : 0, wire.Scale(w.TimeoutMillis));
             case ActionPushPop { Push: false }:

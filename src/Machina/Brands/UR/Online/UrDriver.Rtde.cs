@@ -21,6 +21,9 @@ internal readonly record struct RtdeSample(Vector Position, Rotation Rotation, J
     /// <summary>runtime_state of a running program.</summary>
     public const uint Playing = 2;
 
+    /// <summary>runtime_state of a paused program (held, dashboard <c>pause</c>).</summary>
+    public const uint Paused = 4;
+
     /// <summary>True when a safety function stopped the robot (protective, safeguard or emergency stop, violation, fault).</summary>
     public bool IsSafetyStop => SafetyStatus is 3 or 5 or 6 or 7 or 8 or 9 or 12 or 13;
 

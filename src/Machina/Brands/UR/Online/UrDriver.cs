@@ -16,6 +16,9 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     private readonly int[] _values = new int[UrActionEncoder.MaxValues];
     private readonly byte[] _encoded = new byte[UrActionEncoder.MaxValues * 4];
     private string _version = "1.2.0";
+
+    /// <summary>The last read value response (id, value × FactorAnalog), handed over with the acknowledgement of that id.</summary>
+    private (int Id, int Raw)? _read;
     private UrPorts _ports;
     private string _host = "";
 
@@ -121,6 +124,9 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
             case UrWire.ResponseVersion when response.Length == 4:
                 _version = $"{response[1]}.{response[2]}.{response[3]}";
                 break;
+            case UrWire.ResponseInput when response.Length == 3:
+                _read = (response[1], response[2]);
+                break;
             case UrWire.ResponseFullPose when response.Length == 13:
                 Handshake(new DeviceHandshake(_version, null, null, null, null)); // the pose comes from RTDE
                 break;
@@ -134,6 +140,13 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     {
         int actionId = _awaiting.Resolve(id);
         Acknowledged(id);
+        if (_read is (int readId, int raw) && readId == id)
+        {
+            // Digital and analog values alike travel × FactorAnalog (a digital input: 0 or 1,000,000).
+            _read = null;
+            Listener?.OnAcknowledged(actionId, raw / UrWire.FactorAnalog);
+            return;
+        }
         Listener?.OnAcknowledged(actionId);
     }
 }

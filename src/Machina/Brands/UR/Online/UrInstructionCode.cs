@@ -50,4 +50,10 @@ internal enum UrInstructionCode
 
     /// <summary>Wait for a digital input: pin, value (0/1), tool (0/1), time limit (ms, 0 = none).</summary>
     WaitDigitalIn = 18,
+
+    /// <summary>Read a digital input: pin, tool (0/1); answered with <see cref="UrWire.ResponseInput"/> before the acknowledgement.</summary>
+    ReadDigitalIn = 19,
+
+    /// <summary>Read an analog input: pin, tool (0/1); answered with <see cref="UrWire.ResponseInput"/> before the acknowledgement.</summary>
+    ReadAnalogIn = 20,
 }

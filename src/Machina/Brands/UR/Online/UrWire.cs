@@ -29,6 +29,9 @@ internal static class UrWire
     /// <summary>Response code of the full pose: X Y Z RX RY RZ J1..J6, then <see cref="End"/>.</summary>
     public const int ResponseFullPose = -54;
 
+    /// <summary>Response code of a read input: the read's id, the value × <see cref="FactorAnalog"/> (a digital input: 0 or 1,000,000), then <see cref="End"/>; just before the read's acknowledgement.</summary>
+    public const int ResponseInput = -60;
+
     /// <summary>Ends a response.</summary>
     public const int End = int.MinValue;
 
