@@ -54,9 +54,5 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
         {
             throw new ArgumentException($"A virtual KUKA that runs KRL runs the shipped driver, version 2.0, not {DriverVersion}; set RunsKrl to false to imitate another.", nameof(DriverVersion));
         }
-        if (RunsKrl && Faults.Kinds.Contains(VirtualFault.RestartLosingBuffer) && (Faults.Chance > 0 || Faults.After > 0))
-        {
-            throw new ArgumentException("A virtual KUKA that runs KRL cannot lose its buffer and keep its progress (RestartLosingBuffer): the driver's ring and its progress are both in the program, which a restart starts afresh; set RunsKrl to false to imitate it.", nameof(Faults));
-        }
     }
 }

@@ -30,8 +30,6 @@ public class SoakTests(ITestOutputHelper output)
     public async Task Soak_HundredThousandActionsWithRandomFaults_EachExecutedOnceInOrder(string brand, int seed)
     {
         var watch = Stopwatch.StartNew();
-        // KUKA with RestartLosingBuffer among the faults runs the imitation of its driver (FaultRig): the KRL driver's ring and
-        // progress restart together, so it cannot lose its buffer and keep its progress.
         VirtualFault[] kinds = brand == "UR" ? [.. Kinds, VirtualFault.ProtectiveStop] : Kinds;
         var faults = new VirtualFaults { Seed = seed, Chance = FaultChance, Kinds = kinds, Delay = TimeSpan.FromMilliseconds(1) };
         await using var rig = await FaultRig.StartAsync(brand, faults, logCapacity: Actions);
