@@ -47,6 +47,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
         }
     }
 
+    /// <summary>True while the driver's EthernetKRL channel has a client (false once it saw a client leave).</summary>
+    internal bool DriverChannelConnected => Twin?.EkiConnected(DriverChannel) == true;
+
     bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client) =>
         !IsDriver(channel) || AttachClientAsync(client, (_, _) => Task.CompletedTask, _twinToken).GetAwaiter().GetResult();
 

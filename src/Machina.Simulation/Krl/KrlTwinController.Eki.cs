@@ -167,6 +167,15 @@ internal sealed partial class KrlTwinController
         return Status(0, 0, 0, false);
     }
 
+    /// <summary>True while channel <paramref name="name"/> is initialised and has a client connected.</summary>
+    public bool EkiConnected(string name)
+    {
+        lock (_gate)
+        {
+            return _ekiChannels.TryGetValue(name, out EkiChannel? channel) && channel.Connected;
+        }
+    }
+
     /// <summary>
     /// What a program reset does to a channel linked to the robot interpreter (ENVIRONMENT Program): as EKI_Clear, the connection
     /// ends and the memories are emptied; the program initialises it again. Nothing when it is not initialised.

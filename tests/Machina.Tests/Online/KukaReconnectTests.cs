@@ -34,8 +34,9 @@ public class KukaReconnectTests
         Assert.Equal((3, released - 3), (controller.RequestsExecuted, controller.BufferedRequestCount));
 
         // The held program greets the new connection when it goes on.
+        int connections = controller.ConnectionCount;
         Task connecting = bot.ConnectAsync("127.0.0.1", controller.Port);
-        await ConnectionArrivedAsync(controller, connecting);
+        await ConnectionArrivedAsync(controller, connecting, connections);
         controller.ResumeAnswering();
         await connecting.WaitAsync(Limit);
         Assert.Equal(2, controller.ConnectionCount);
@@ -77,15 +78,20 @@ public class KukaReconnectTests
         owner.MoveTo(Start.X, Start.Y, Start.Z);
         owner.Move(0, 0, 10);
         await EventuallyAsync(() => controller.BufferedRequestCount == 2, "both actions to reach the controller");
+        // The driver ran action 1 while the owner was connected, so it waits at that action's acknowledgement.
+        await EventuallyAsync(() => controller.State.Position.IsSimilar(Start, 1e-6), "the driver to run action 1");
         await owner.DisconnectAsync();
+        // The driver's channel saw the owner leave: the driver will open it again at the top of its loop, not send action 2 to it.
+        await EventuallyAsync(() => !controller.DriverChannelConnected, "the driver's channel to see the owner leave");
 
         // The stranger waits at the port while the program is held after action 1; once it goes on, the driver's loop finds the
         // owner gone, opens the channel again, takes the stranger and reports action 2 received and not executed.
         var stranger = Robot.Create("Stranger", "KUKA");
         stranger.ControlMode("online");
         stranger.ConnectTimeout = Limit;
+        int connections = controller.ConnectionCount;
         Task connecting = stranger.ConnectAsync("127.0.0.1", controller.Port);
-        await ConnectionArrivedAsync(controller, connecting);
+        await ConnectionArrivedAsync(controller, connecting, connections);
         controller.ResumeAnswering(1);
         var refused = await Assert.ThrowsAsync<RobotConnectionException>(() => connecting.WaitAsync(Limit));
         Assert.Contains("still executing requests this robot did not send (last executed 1, last received 2)", refused.Message, StringComparison.Ordinal);
@@ -119,8 +125,9 @@ public class KukaReconnectTests
         await lost.Task.WaitAsync(Limit);
 
         // 97 actions wait in the ring, 50 never left the host.
+        int connections = controller.ConnectionCount;
         Task connecting = bot.ConnectAsync("127.0.0.1", controller.Port);
-        await ConnectionArrivedAsync(controller, connecting);
+        await ConnectionArrivedAsync(controller, connecting, connections);
         controller.ResumeAnswering();
         await connecting.WaitAsync(Limit);
         await bot.WaitForCompletionAsync().WaitAsync(Limit);
@@ -139,12 +146,9 @@ public class KukaReconnectTests
     /// Waits until a connection started by <paramref name="connecting"/> reached the controller: waiting at the driver's port
     /// (the program is held before the top of its loop), taken by the driver's channel (it got there while idle), or done.
     /// </summary>
-    private static Task ConnectionArrivedAsync(VirtualKukaController controller, Task connecting)
-    {
-        int before = controller.ConnectionCount;
-        return EventuallyAsync(() => controller.ClientWaiting || controller.ConnectionCount > before || connecting.IsCompleted,
+    private static Task ConnectionArrivedAsync(VirtualKukaController controller, Task connecting, int before) =>
+        EventuallyAsync(() => controller.ClientWaiting || controller.ConnectionCount > before || connecting.IsCompleted,
             "the connection to reach the driver's port");
-    }
 
     /// <summary>Issues MoveTo(400, 0, 400) and 19 moves of +10 mm in Z with the controller paused; returns how many reached it.</summary>
     private static async Task<int> IssueTwentyWhilePausedAsync(Robot bot, VirtualKukaController controller)
