@@ -24,8 +24,11 @@ public sealed partial class VirtualKukaController
     /// <summary>How many steps of the arm's trace the controller keeps: a stream of millions of moves must not keep every pose.</summary>
     internal const int MaxTraceSteps = 10_000;
 
-    /// <summary>The KRL controller that runs Machina's driver and monitor (<see cref="VirtualKukaControllerOptions.RunsKrl"/>), else null.</summary>
+    /// <summary>The KRL controller that runs Machina's driver and monitor, once started (null before).</summary>
     internal KrlTwinController? Twin { get; private set; }
+
+    /// <summary>Cancels the driver's current run for a program reset; null between runs.</summary>
+    private CancellationTokenSource? _driverRun;
 
     /// <summary>
     /// Loads drivers/kuka as <c>machina drivers kuka</c> writes them (driver channel on <see cref="Port"/>, monitor on port + 1),
@@ -73,13 +76,7 @@ public sealed partial class VirtualKukaController
     /// <summary>The driver on the robot interpreter and the monitor in the submit interpreter, each on a thread of its own, until the controller stops.</summary>
     private async Task RunTwinAsync(KrlTwinController twin, CancellationToken token)
     {
-        Task program = Task.Factory.StartNew(() =>
-        {
-            if (twin.Run("machina_kuka_driver", token) == KrlProgramState.Failed && !token.IsCancellationRequested)
-            {
-                RecordError(twin.Error ?? "the driver stopped");
-            }
-        }, CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        Task program = Task.Factory.StartNew(() => RunDriver(twin, token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
         Task submit = Task.Factory.StartNew(() => twin.RunSubmit("machina_kuka_monitor", SubmitCycle, token),
             CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
         try
@@ -89,6 +86,57 @@ public sealed partial class VirtualKukaController
         finally
         {
             twin.Dispose();
+        }
+    }
+
+    /// <summary>
+    /// The driver on the robot interpreter until the controller stops; after a program reset (<see cref="ResetDriverProgram"/>)
+    /// it starts again from the top, its EthernetKRL channel (ENVIRONMENT Program) cleared as the reset clears it.
+    /// </summary>
+    private void RunDriver(KrlTwinController twin, CancellationToken token)
+    {
+        while (!token.IsCancellationRequested)
+        {
+            using var run = CancellationTokenSource.CreateLinkedTokenSource(token);
+            lock (Gate)
+            {
+                _driverRun = run;
+            }
+            KrlProgramState state = twin.Run("machina_kuka_driver", run.Token);
+            lock (Gate)
+            {
+                _driverRun = null;
+            }
+            if (token.IsCancellationRequested)
+            {
+                return;
+            }
+            if (!run.IsCancellationRequested)
+            {
+                if (state == KrlProgramState.Failed)
+                {
+                    RecordError(twin.Error ?? "the driver stopped");
+                }
+                return;
+            }
+            twin.ClearEki(DriverChannel);
+            Pendant("program reset: machina_kuka_driver starts again from the top");
+        }
+    }
+
+    /// <summary>
+    /// A program reset (the fault plan's RestartLosingBuffer): the driver stops where it is (between two statements) and runs
+    /// again from its first line. Its ring and progress are data-list variables, which keep their values over a reset, but the
+    /// driver empties them when it starts: the host gets a fresh state (nothing received or executed) and sends again what it
+    /// had not seen acknowledged.
+    /// </summary>
+    private void ResetDriverProgram()
+    {
+        lock (Gate)
+        {
+            _driverRun?.Cancel();
+            _acks.Clear();
+            _heldTwinAcknowledgement = null;
         }
     }
 

@@ -31,6 +31,25 @@ public sealed partial class VirtualKukaController : IEkiSeam
         public bool Unsent { get; init; }
     }
 
+    /// <summary>True while a client waits at the driver's port for the program to open its channel again (a held program greets it when it goes on).</summary>
+    internal bool ClientWaiting
+    {
+        get
+        {
+            try
+            {
+                return _driverListener?.Pending() == true;
+            }
+            catch (Exception e) when (e is InvalidOperationException or ObjectDisposedException or SocketException)
+            {
+                return false;
+            }
+        }
+    }
+
+    /// <summary>True while the driver's EthernetKRL channel has a client (false once it saw a client leave).</summary>
+    internal bool DriverChannelConnected => Twin?.EkiConnected(DriverChannel) == true;
+
     bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client) =>
         !IsDriver(channel) || AttachClientAsync(client, (_, _) => Task.CompletedTask, _twinToken).GetAwaiter().GetResult();
 
@@ -255,7 +274,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
                 case AcknowledgementWrites.Split:
                     // The first part records the action as executed; the rest completes the element.
                     await SendToClientAsync(ack.Bytes.AsMemory(0, 4), token, executedId: ack.Id).ConfigureAwait(false);
-                    await AcknowledgeAsync(ack.Bytes.AsMemory(4), ack.Id, token).ConfigureAwait(false);
+                    await AcknowledgeTwinPartAsync(ack.Bytes.AsMemory(4), ack.Id, token).ConfigureAwait(false);
                     break;
                 case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is null && TwinRingCount() > 0:
                     // Held until the driver acknowledges the next action, which it runs now.
@@ -271,10 +290,10 @@ public sealed partial class VirtualKukaController : IEkiSeam
                         held = _heldTwinAcknowledgement!;
                         _heldTwinAcknowledgement = null;
                     }
-                    await AcknowledgeAsync(held.Concat(ack.Bytes).ToArray(), ack.Id, token).ConfigureAwait(false);
+                    await AcknowledgeTwinPartAsync(held.Concat(ack.Bytes).ToArray(), ack.Id, token).ConfigureAwait(false);
                     break;
                 default:
-                    await AcknowledgeAsync(ack.Bytes, ack.Id, token).ConfigureAwait(false);
+                    await AcknowledgeTwinPartAsync(ack.Bytes, ack.Id, token).ConfigureAwait(false);
                     break;
             }
             ack.Done.TrySetResult(true);
@@ -284,6 +303,27 @@ public sealed partial class VirtualKukaController : IEkiSeam
             ack.Done.TrySetResult(false);
         }
         return true;
+    }
+
+    /// <summary>
+    /// Sends an acknowledgement through the fault plan; when the plan restarted the controller losing what it held
+    /// (RestartLosingBuffer, noted last in the injected faults), the driver program is reset before it goes on.
+    /// </summary>
+    private async Task AcknowledgeTwinPartAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token)
+    {
+        if (!_options.Faults.Kinds.Contains(VirtualFault.RestartLosingBuffer))
+        {
+            await AcknowledgeAsync(bytes, id, token).ConfigureAwait(false);
+            return;
+        }
+        int before = InjectedFaults.Count;
+        await AcknowledgeAsync(bytes, id, token).ConfigureAwait(false);
+        IReadOnlyList<VirtualFault> injected = InjectedFaults;
+        // Faults are noted only here (one acknowledgement at a time); the list keeps the last 1000, so past that the last one decides.
+        if ((injected.Count > before || before >= MaxKeptTexts) && injected.Count > 0 && injected[^1] == VirtualFault.RestartLosingBuffer && !HasClient)
+        {
+            ResetDriverProgram();
+        }
     }
 
     /// <summary>How many actions the driver's ring holds (its slot_count), or 0 without a twin.</summary>

@@ -26,16 +26,16 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
     /// <summary>Time between two pose reports on the monitor port until the host asks for another. Default 20 ms (50 Hz).</summary>
     public TimeSpan MonitorPeriod { get; init; } = TimeSpan.FromMilliseconds(20);
 
-    /// <summary>Driver version sent in the state (<c>VR</c>). Default 2.0, Machina's KRL driver; below 2 the state has no progress, like the original's 1.0.</summary>
+    /// <summary>Driver version sent in the state (<c>VR</c>): 2.0, the shipped KRL driver, the only one the controller runs (kept for source compatibility).</summary>
     public Version DriverVersion { get; init; } = new(2, 0);
 
     /// <summary>How acknowledgements are written. Default: one write each.</summary>
     public AcknowledgementWrites AcknowledgementWrites { get; init; } = AcknowledgementWrites.Whole;
 
     /// <summary>
-    /// True (default): the controller runs Machina's KRL driver and monitor (drivers/kuka, unchanged) on a KRL interpreter with
-    /// EthernetKRL, the monitor in the submit interpreter, as a KR C4 would; faults act on the EthernetKRL channels. False: the
-    /// driver is imitated in C# (needed for a <see cref="DriverVersion"/> other than 2.0, which the shipped driver is).
+    /// True, the only value: the controller runs Machina's KRL driver and monitor (drivers/kuka, unchanged) on a KRL interpreter
+    /// with EthernetKRL, the monitor in the submit interpreter, as a KR C4 would. False is refused (the C# imitation of the
+    /// driver was removed); kept for source compatibility.
     /// </summary>
     public bool RunsKrl { get; init; } = true;
 
@@ -50,13 +50,13 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
             throw new ArgumentException("MonitorPeriod must be positive.", nameof(MonitorPeriod));
         }
         ArgumentNullException.ThrowIfNull(DriverVersion);
-        if (RunsKrl && DriverVersion != new Version(2, 0))
+        if (!RunsKrl)
         {
-            throw new ArgumentException($"A virtual KUKA that runs KRL runs the shipped driver, version 2.0, not {DriverVersion}; set RunsKrl to false to imitate another.", nameof(DriverVersion));
+            throw new ArgumentException("The virtual KUKA runs only Machina's KRL driver (drivers/kuka) on its KRL interpreter; the C# imitation of the driver (RunsKrl = false) was removed.", nameof(RunsKrl));
         }
-        if (RunsKrl && Faults.Kinds.Contains(VirtualFault.RestartLosingBuffer) && (Faults.Chance > 0 || Faults.After > 0))
+        if (DriverVersion != new Version(2, 0))
         {
-            throw new ArgumentException("A virtual KUKA that runs KRL cannot lose its buffer and keep its progress (RestartLosingBuffer): the driver's ring and its progress are both in the program, which a restart starts afresh; set RunsKrl to false to imitate it.", nameof(Faults));
+            throw new ArgumentException($"The virtual KUKA runs the shipped KRL driver, version 2.0, not {DriverVersion}.", nameof(DriverVersion));
         }
     }
 }

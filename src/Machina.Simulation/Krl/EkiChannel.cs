@@ -70,8 +70,42 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             listener = _listener;
         }
         int bound = ((IPEndPoint)listener.LocalEndpoint).Port;
-        _ = Task.Run(() => AcceptAsync(listener, stop));
+        // A client already waiting is connected before EKI_Open returns (the twin's choice among the orders a real network
+        // allows: the program's next statement sees $FLAG of the connection); any other is accepted in the background.
+        TcpClient? waiting = TakeWaiting(listener, stop);
+        if (waiting is not null)
+        {
+            _ = Attach(listener, waiting, stop);
+        }
+        else
+        {
+            _ = Task.Run(() => AcceptAsync(listener, stop));
+        }
         return bound;
+    }
+
+    /// <summary>A client waiting in the listener's queue that the seam accepts, or null (none waits, or it was refused).</summary>
+    private TcpClient? TakeWaiting(TcpListener listener, CancellationToken token)
+    {
+        try
+        {
+            if (token.IsCancellationRequested || !listener.Pending())
+            {
+                return null;
+            }
+            TcpClient client = listener.AcceptTcpClient();
+            client.NoDelay = true;
+            if (controller.Options.Seam?.Accepted(this, client) != false)
+            {
+                return client;
+            }
+            client.Dispose();
+            return null;
+        }
+        catch (Exception e) when (e is SocketException or ObjectDisposedException or InvalidOperationException)
+        {
+            return null;
+        }
     }
 
     private async Task AcceptAsync(TcpListener listener, CancellationToken token)
@@ -95,6 +129,12 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             // Refused by the seam (a fault): closed at once, and the channel listens on.
             client.Dispose();
         }
+        await Attach(listener, client, token).ConfigureAwait(false);
+    }
+
+    /// <summary>Makes <paramref name="client"/> the channel's connection (flag set before this returns) and reads it until it ends.</summary>
+    private Task Attach(TcpListener listener, TcpClient client, CancellationToken token)
+    {
         lock (_gate)
         {
             if (!ReferenceEquals(listener, _reserved))
@@ -105,13 +145,13 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             if (token.IsCancellationRequested)
             {
                 client.Dispose();
-                return;
+                return Task.CompletedTask;
             }
             _client = client;
             _outbox = new EkiOutbox(client.GetStream());
         }
         Alive(true);
-        await ReadAsync(client, token).ConfigureAwait(false);
+        return Task.Run(() => ReadAsync(client, token), CancellationToken.None);
     }
 
     private async Task ReadAsync(TcpClient client, CancellationToken token)

@@ -167,6 +167,34 @@ internal sealed partial class KrlTwinController
         return Status(0, 0, 0, false);
     }
 
+    /// <summary>True while channel <paramref name="name"/> is initialised and has a client connected.</summary>
+    public bool EkiConnected(string name)
+    {
+        lock (_gate)
+        {
+            return _ekiChannels.TryGetValue(name, out EkiChannel? channel) && channel.Connected;
+        }
+    }
+
+    /// <summary>
+    /// What a program reset does to a channel linked to the robot interpreter (ENVIRONMENT Program): as EKI_Clear, the connection
+    /// ends and the memories are emptied; the program initialises it again. Nothing when it is not initialised.
+    /// </summary>
+    public void ClearEki(string name)
+    {
+        EkiChannel? channel;
+        lock (_gate)
+        {
+            if (!_ekiChannels.Remove(name, out channel))
+            {
+                return;
+            }
+        }
+        channel.Close();
+        channel.Dispose();
+        InputsChanged();
+    }
+
     private KrlStructValue EkiGet(object[] a, Func<string, object> convert)
     {
         EkiChannel channel = Channel(Str(a[0]));

@@ -20,9 +20,6 @@ public class SimulationCodecTests
         ["VirtualAbbController.Failures.cs"] = ["AbbFailure"],
         ["VirtualAbbController.Faults.cs"] = ["AbbMessageFormat", "AbbRequest"],
         ["VirtualAbbController.Monitor.cs"] = ["AbbMessageFormat"],
-        ["VirtualKukaController.cs"] = ["KukaElement", "KukaInstruction", "KukaMessages", "KukaProtocol", "KukaXmlReader"],
-        ["VirtualKukaController.Execution.cs"] = ["KrlFormat", "KukaActionCode", "KukaActionEncoder", "KukaInstruction", "KukaMessages", "KukaValues"],
-        ["VirtualKukaController.Failures.cs"] = ["KukaFailure"],
     };
 
     private static readonly Regex Declaration = new(

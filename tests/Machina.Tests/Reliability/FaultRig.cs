@@ -77,12 +77,11 @@ internal sealed class FaultRig : IAsyncDisposable
             }
             case "KUKA":
             {
-                // RestartLosingBuffer cannot happen to the KRL driver (its ring and its progress restart together), so only the
-                // imitation injects it; every other fault acts on the KRL twin's EthernetKRL channel.
-                bool losesBuffer = faults.Kinds.Contains(VirtualFault.RestartLosingBuffer);
+                // Every fault acts on the KRL twin's EthernetKRL channel; RestartLosingBuffer is a program reset: the driver runs
+                // again from its first line with an empty ring and fresh progress.
                 var c = new VirtualKukaController(new VirtualKukaControllerOptions
                 {
-                    InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites, RunsKrl = !losesBuffer,
+                    InstantExecution = true, Model = null, Faults = faults, RequestLogCapacity = logCapacity, AcknowledgementWrites = kukaWrites,
                 });
                 await c.StartAsync();
                 return new FaultRig(brand, c.Port, c, () => c.ExecutedIds, () => c.State.Position, () => c.Errors, () => c.InjectedFaults, c.ResumeAnswering);

@@ -24,6 +24,15 @@ public class VirtualKukaControllerTests
         Assert.Equal(new DeviceProgress(0, 0), KukaState.Parse(state).Progress);
     }
 
+    [Fact]
+    public void Options_ImitationOrAnotherDriverVersion_RefusedSayingTheTwinRunsOnlyTheShippedDriver()
+    {
+        var imitation = Assert.Throws<ArgumentException>(() => new VirtualKukaController(new VirtualKukaControllerOptions { RunsKrl = false }));
+        Assert.Equal("The virtual KUKA runs only Machina's KRL driver (drivers/kuka) on its KRL interpreter; the C# imitation of the driver (RunsKrl = false) was removed. (Parameter 'RunsKrl')", imitation.Message);
+        var older = Assert.Throws<ArgumentException>(() => new VirtualKukaController(new VirtualKukaControllerOptions { DriverVersion = new Version(1, 0) }));
+        Assert.Equal("The virtual KUKA runs the shipped KRL driver, version 2.0, not 1.0. (Parameter 'DriverVersion')", older.Message);
+    }
+
     /// <summary>The driver's quit message for <paramref name="text"/>, as the smartPAD's message window shows it (80 characters at most).</summary>
     private static string Quit(string text) => "QUIT Machina 2: " + text[..Math.Min(80, text.Length)];
 
