@@ -13,6 +13,7 @@ internal static class ExtremeValues
     [
         nameof(Robot.IsBrand), nameof(Robot.ControlMode), nameof(Robot.ConnectionManager), nameof(Robot.Connect),
         nameof(Robot.Disconnect), nameof(Robot.WaitForCompletion), nameof(Robot.SaveProgram), nameof(Robot.StreamConfiguration), nameof(Robot.Resume), nameof(Robot.SetUser),
+        nameof(Robot.Stop), nameof(Robot.Pause), // online controls of the controller, not actions
     ];
 
     /// <summary>A million characters: longer than any line a controller takes.</summary>
