@@ -183,6 +183,9 @@ public class BridgeServerTests
             JsonElement answer = await python.ReceiveAsync();
             Assert.Equal(expectedEvent, answer.Event());
             Assert.Equal(detail, answer.GetProperty(expectedEvent == "error" ? "kind" : "last").GetString());
+            // The statement's later events (its execution) go to this connection, not to the next one's first answer.
+            await bridge.Robot.WaitForCompletionAsync().WaitAsync(Limit);
+            await bridge.Robot.FlushEventsAsync().WaitAsync(Limit);
             await python.CloseAsync();
         }
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), bridge.Robot.GetIssuedState().Axes);

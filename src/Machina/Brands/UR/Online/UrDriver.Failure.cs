@@ -9,7 +9,7 @@ namespace Machina;
 internal sealed partial class UrDriver : ILinkReceiver
 {
     /// <summary>How long a closed driver connection waits for RTDE to say whether the program stopped on an error.</summary>
-    private static readonly TimeSpan StopEvidenceTimeout = TimeSpan.FromSeconds(2);
+    private static readonly TimeSpan StopEvidenceTimeout = TimeSpan.FromSeconds(5);
 
     /// <summary>
     /// How long a stopped program's failure waits for the runtime error's text from a client interface, or for RTDE to show
@@ -44,13 +44,17 @@ internal sealed partial class UrDriver : ILinkReceiver
         _ = AfterCloseAsync(error);
     }
 
-    /// <summary>Waits for RTDE to tell why the program's connection closed, then reports a failure or a link fault. Never throws.</summary>
+    /// <summary>
+    /// Waits for RTDE, or the runtime error's text on a client interface, to tell why the program's connection closed, then
+    /// reports a failure or a link fault. Never throws.
+    /// </summary>
     private async Task AfterCloseAsync(Exception? error)
     {
         long start = Time.GetTimestamp();
+        Task<string> text = ScriptPortSendsMessages ? _runtimeException.Task : new TaskCompletionSource<string>().Task;
         try
         {
-            while (!IsProgramFailed)
+            while (!IsProgramFailed && !text.IsCompleted)
             {
                 Task<RtdeSample> next;
                 lock (_rtdeGate)
@@ -62,7 +66,11 @@ internal sealed partial class UrDriver : ILinkReceiver
                     next = _nextSample.Task;
                 }
                 TimeSpan left = StopEvidenceTimeout - Time.GetElapsedTime(start);
-                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time).ConfigureAwait(false);
+                await Task.WhenAny(next, text).WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time).ConfigureAwait(false);
+                if (next.IsFaulted)
+                {
+                    await next.ConfigureAwait(false); // the RTDE link failed: no news from it
+                }
             }
         }
         catch (Exception e) when (e is TimeoutException or RobotConnectionException)
@@ -71,6 +79,12 @@ internal sealed partial class UrDriver : ILinkReceiver
         }
         if (IsProgramFailed)
         {
+            return;
+        }
+        if (text.IsCompleted && LatestSample is RtdeSample last)
+        {
+            // The controller said why its program stopped (RTDE may still be behind): the action in flight failed.
+            OnProgramStopped(last);
             return;
         }
         if (LatestSample is RtdeSample stopped && stopped.RuntimeState == RtdeSample.Stopped && !stopped.IsSafetyStop && stopped.Instance == _instance)
