@@ -177,7 +177,9 @@ public class HeldScheduleTests
 
     private static void AssertExactlyOnce(FaultRig rig, FaultRig.Watched w)
     {
-        Assert.Equal(Enumerable.Range(1, Actions), w.Executed);
+        Assert.True(Enumerable.Range(1, Actions).SequenceEqual(w.Executed), $"host executed [{string.Join(' ', w.Executed)}], controller [{string.Join(' ', rig.ExecutedIds)}], "
+            + $"state {w.Bot.ConnectionState}, pending {w.Bot.GetPendingActions().Count}; faults: {string.Join(" | ", w.Faults.Select(f => f.Message))}; "
+            + $"retried: {string.Join(" | ", w.RecoveryErrors.Select(f => f.Message))}");
         Assert.Equal(Enumerable.Range(1, Actions), rig.ExecutedIds);
         Assert.True(rig.Position.IsSimilar(End, 1e-6), $"{rig.Brand} ended at {rig.Position}, expected {End}");
         Assert.Empty(rig.Errors);

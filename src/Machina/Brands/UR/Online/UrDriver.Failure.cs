@@ -9,7 +9,7 @@ namespace Machina;
 internal sealed partial class UrDriver : ILinkReceiver
 {
     /// <summary>How long a closed driver connection waits for RTDE to say whether the program stopped on an error.</summary>
-    private static readonly TimeSpan StopEvidenceTimeout = TimeSpan.FromSeconds(5);
+    private static readonly TimeSpan StopEvidenceTimeout = TimeSpan.FromSeconds(2);
 
     /// <summary>
     /// How long a stopped program's failure waits for the runtime error's text from a client interface, or for RTDE to show
