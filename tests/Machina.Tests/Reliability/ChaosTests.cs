@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using System.Globalization;
-using System.Net;
 using Machina.Simulation;
 using Machina.Tests.Support;
 using Xunit.Abstractions;
@@ -61,8 +60,8 @@ public class ChaosTests(ITestOutputHelper output)
         bool stall = mode is Mode.Stall or Mode.Mixed;
         // UR's driver calls the host back: that link passes `back`, where requests are held; ABB's and KUKA's pass `front`.
         await using FaultProxy? back = ur ? FaultProxy.Start([1], new FaultProxyOptions { Seed = seed, Holdable = stall, HoldTowardsConnector = true }) : null;
-        await using FaultRig rig = ur ? await StartUrThroughAsync(back!) : await FaultRig.StartAsync(brand, new VirtualFaults(), logCapacity: Actions);
-        await using FaultProxy front = FaultProxy.Start(Ports(rig), FrontOptions(brand, seed, mode, random));
+        await using FaultRig rig = ur ? await FaultRig.StartUrThroughAsync(back!, logCapacity: Actions) : await FaultRig.StartAsync(brand, new VirtualFaults(), logCapacity: Actions);
+        await using FaultProxy front = FaultProxy.Start(rig.ProxiedPorts, FrontOptions(brand, seed, mode, random));
         FaultProxy requests = back ?? front;
         var w = rig.CreateRobot(b => { b.BlockSize = 20; b.PendingCount = 10; }, port: front.Port);
         if (mode == Mode.Held)
@@ -150,37 +149,13 @@ public class ChaosTests(ITestOutputHelper output)
         bot.MoveTo(at.X, at.Y, at.Z);
         for (int i = 1; i < Actions; i++)
         {
-            var by = new Vector(Step(random, at.X, 300, 420), Step(random, at.Y, -80, 80), Step(random, at.Z, 420, 560));
+            var by = new Vector(FaultRig.StepWithin(random, at.X, 300, 420), FaultRig.StepWithin(random, at.Y, -80, 80), FaultRig.StepWithin(random, at.Z, 420, 560));
             at += by;
             bot.Move(by.X, by.Y, by.Z);
         }
         return at;
     }
 
-    private static int Step(Random random, double at, double low, double high)
-    {
-        int step = random.Next(-5, 6);
-        return at + step < low || at + step > high ? -step : step;
-    }
 
-    private static async Task<FaultRig> StartUrThroughAsync(FaultProxy back)
-    {
-        var c = new VirtualUrController(new VirtualUrControllerOptions
-        {
-            InstantExecution = true, Model = null, RequestLogCapacity = Actions,
-            OutboundRoute = to =>
-            {
-                back.Retarget(0, to.Port);
-                return new DnsEndPoint("127.0.0.1", back.Port);
-            },
-        });
-        await c.StartAsync();
-        return FaultRig.Of("UR", c.Port, c);
-    }
 
-    private static int[] Ports(FaultRig rig) => rig.Controller switch
-    {
-        VirtualUrController ur => [ur.Port, ur.RtdePort, ur.DashboardPort],
-        _ => [rig.Port, rig.Port + 1],
-    };
 }

@@ -21,7 +21,7 @@ public class FaultProxyTests
     public async Task SplitIntoBytesAndDelayed_EveryChannel_EveryActionOnceWithoutFault(string brand)
     {
         await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
-        await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14301, SplitIntoBytes = true, MaxDelay = TimeSpan.FromMilliseconds(2) });
+        await using var proxy = FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions { Seed = 14301, SplitIntoBytes = true, MaxDelay = TimeSpan.FromMilliseconds(2) });
         var w = rig.CreateRobot(port: proxy.Port);
         await w.Bot.ConnectAsync("127.0.0.1", proxy.Port).WaitAsync(Limit);
         FaultMatrixTests.IssueProgram(w.Bot);
@@ -46,7 +46,7 @@ public class FaultProxyTests
     public async Task DriverConnectionCut_ReconnectThroughTheProxy_EveryActionOnce(string brand)
     {
         await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
-        await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14302, CloseConnections = 2, CloseAfterBytes = [Streaming(brand), (40, 100)] });
+        await using var proxy = FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions { Seed = 14302, CloseConnections = 2, CloseAfterBytes = [Streaming(brand), (40, 100)] });
         var w = rig.CreateRobot(port: proxy.Port);
         FaultMatrixTests.IssueProgram(w.Bot);
 
@@ -71,7 +71,7 @@ public class FaultProxyTests
     public async Task GarbageTowardsTheHost_ProtocolErrorThenResume_EveryActionOnce(string brand, string garbage)
     {
         await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
-        await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions
+        await using var proxy = FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions
         {
             Seed = 14303, GarbageConnections = 1, CloseAfterBytes = [Streaming(brand)], Garbage = System.Text.Encoding.ASCII.GetBytes(garbage),
         });
@@ -93,7 +93,7 @@ public class FaultProxyTests
     public async Task UrRtdeCut_StreamingGoesOn_EveryActionOnce()
     {
         await using var rig = await FaultRig.StartAsync("UR", new VirtualFaults());
-        await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14304, FaultChannel = 1, CloseConnections = 1, CloseAfterBytes = [(2000, 2000)] });
+        await using var proxy = FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions { Seed = 14304, FaultChannel = 1, CloseConnections = 1, CloseAfterBytes = [(2000, 2000)] });
         var w = rig.CreateRobot(port: proxy.Port);
         await rig.RecoverAsync(w); // connects, again if the cut came while connecting
         await EventuallyAsync(() => proxy.Closed == 1, "the RTDE connection to be cut");
@@ -113,12 +113,6 @@ public class FaultProxyTests
     /// </summary>
     private static (int Min, int Max) Streaming(string brand) => brand == "ABB" ? (100, 230) : (450, 600);
 
-    /// <summary>The controller's consecutive ports: driver and monitor (ABB, KUKA), or script, RTDE and dashboard (UR).</summary>
-    private static int[] Ports(FaultRig rig) => rig.Controller switch
-    {
-        VirtualUrController ur => [ur.Port, ur.RtdePort, ur.DashboardPort],
-        _ => [rig.Port, rig.Port + 1],
-    };
 
     private static void AssertExactlyOnce(FaultRig rig, FaultRig.Watched w)
     {

@@ -8,7 +8,7 @@ namespace Machina.Tests.Reliability;
 /// One virtual controller of any brand (ABB, UR, KUKA) seen the same way by the fault tests: its port, its execution log,
 /// its robot's position, and the few controls a test needs. Disposing it stops the controller.
 /// </summary>
-internal sealed class FaultRig : IAsyncDisposable
+internal sealed partial class FaultRig : IAsyncDisposable
 {
     /// <summary>The brands with online control, as <c>Robot.Create</c> names them.</summary>
     public static readonly string[] Brands = ["ABB", "UR", "KUKA"];

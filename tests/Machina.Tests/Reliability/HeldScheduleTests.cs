@@ -1,4 +1,3 @@
-using System.Net;
 using Machina.Simulation;
 using Machina.Tests.Support;
 using static Machina.Tests.Online.OnlineTestSupport;
@@ -29,7 +28,7 @@ public class HeldScheduleTests
     public async Task HeldFirstConnection_DeliveredAfterTheHostsNextAttempt_EveryActionOnce(string brand)
     {
         await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults());
-        await using var proxy = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14311, HoldConnections = 1 });
+        await using var proxy = FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions { Seed = 14311, HoldConnections = 1 });
         var w = rig.CreateRobot(port: proxy.Port);
         if (brand == "UR")
         {
@@ -100,9 +99,9 @@ public class HeldScheduleTests
         FaultProxy? back = brand == "UR" ? FaultProxy.Start([1], new FaultProxyOptions { Seed = 14312, HoldConnections = 1, HoldAfterBytes = HoldAfter(brand), HoldTowardsConnector = true }) : null;
         await using var _ = back;
         await using var rig = brand == "UR"
-            ? await StartUrThroughAsync(back!)
+            ? await FaultRig.StartUrThroughAsync(back!)
             : await FaultRig.StartAsync(brand, new VirtualFaults());
-        await using var forward = back is null ? FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = 14312, HoldConnections = 1, HoldAfterBytes = HoldAfter(brand) }) : null;
+        await using var forward = back is null ? FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions { Seed = 14312, HoldConnections = 1, HoldAfterBytes = HoldAfter(brand) }) : null;
         FaultProxy held = back ?? forward!;
         int port = forward?.Port ?? rig.Port;
         var w = rig.CreateRobot(port: port);
@@ -145,20 +144,6 @@ public class HeldScheduleTests
     private static bool NextAttemptArrived(FaultRig rig, FaultProxy? forward) =>
         forward is not null ? forward.AcceptedOn(0) >= 2 : ((VirtualUrController)rig.Controller).ScriptsReceived >= 2;
 
-    private static async Task<FaultRig> StartUrThroughAsync(FaultProxy back)
-    {
-        var c = new VirtualUrController(new VirtualUrControllerOptions
-        {
-            InstantExecution = true, Model = null,
-            OutboundRoute = to =>
-            {
-                back.Retarget(0, to.Port); // the host's call-back port, chosen when it connects
-                return new DnsEndPoint("127.0.0.1", back.Port);
-            },
-        });
-        await c.StartAsync();
-        return FaultRig.Of("UR", c.Port, c);
-    }
 
     private static void IssueRest(Robot bot)
     {
@@ -168,12 +153,6 @@ public class HeldScheduleTests
         }
     }
 
-    /// <summary>The controller's consecutive ports: driver and monitor (ABB, KUKA), or script, RTDE and dashboard (UR).</summary>
-    private static int[] Ports(FaultRig rig) => rig.Controller switch
-    {
-        VirtualUrController ur => [ur.Port, ur.RtdePort, ur.DashboardPort],
-        _ => [rig.Port, rig.Port + 1],
-    };
 
     private static void AssertExactlyOnce(FaultRig rig, FaultRig.Watched w)
     {

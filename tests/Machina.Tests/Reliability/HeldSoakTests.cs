@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Net;
 using Machina.Simulation;
 using Machina.Tests.Support;
 using Xunit.Abstractions;
@@ -31,8 +30,8 @@ public class HeldSoakTests(ITestOutputHelper output)
         bool ur = brand == "UR";
         // ABB, KUKA: the driver connection passes the proxy. UR: the driver program's call back passes `back`, the script port `front`.
         await using FaultProxy? back = ur ? FaultProxy.Start([1], new FaultProxyOptions { Seed = seed, Holdable = true, HoldTowardsConnector = true }) : null;
-        await using FaultRig rig = ur ? await StartUrThroughAsync(back!) : await FaultRig.StartAsync(brand, new VirtualFaults(), logCapacity: Actions);
-        await using FaultProxy front = FaultProxy.Start(Ports(rig), new FaultProxyOptions { Seed = seed, Holdable = true });
+        await using FaultRig rig = ur ? await FaultRig.StartUrThroughAsync(back!, logCapacity: Actions) : await FaultRig.StartAsync(brand, new VirtualFaults(), logCapacity: Actions);
+        await using FaultProxy front = FaultProxy.Start(rig.ProxiedPorts, new FaultProxyOptions { Seed = seed, Holdable = true });
         FaultProxy requests = back ?? front;
         var w = rig.CreateRobot(b => { b.BlockSize = 50; b.PendingCount = 40; }, port: front.Port);
         await rig.RecoverAsync(w);
@@ -151,7 +150,7 @@ public class HeldSoakTests(ITestOutputHelper output)
                     bot.MoveTo(at.X, at.Y, at.Z);
                     break;
                 default:
-                    var by = new Vector(Step(random, at.X, low.X, high.X), Step(random, at.Y, low.Y, high.Y), Step(random, at.Z, low.Z, high.Z));
+                    var by = new Vector(FaultRig.StepWithin(random, at.X, low.X, high.X), FaultRig.StepWithin(random, at.Y, low.Y, high.Y), FaultRig.StepWithin(random, at.Z, low.Z, high.Z));
                     at += by;
                     bot.Move(by.X, by.Y, by.Z);
                     break;
@@ -160,12 +159,6 @@ public class HeldSoakTests(ITestOutputHelper output)
         return at;
     }
 
-    /// <summary>A step of -5 to 5 mm that keeps <paramref name="at"/> inside [low, high].</summary>
-    private static int Step(Random random, double at, double low, double high)
-    {
-        int step = random.Next(-5, 6);
-        return at + step < low || at + step > high ? -step : step;
-    }
 
     /// <summary>Waits until the host saw <paramref name="executed"/> actions executed, connecting again whenever the link is lost.</summary>
     private static async Task AdvanceAsync(FaultRig rig, FaultRig.Watched w, int executed)
@@ -197,25 +190,5 @@ public class HeldSoakTests(ITestOutputHelper output)
     private static int NextAttemptCount(FaultRig rig, FaultProxy front) =>
         rig.Controller is VirtualUrController ur ? ur.ScriptsReceived : front.AcceptedOn(0);
 
-    private static async Task<FaultRig> StartUrThroughAsync(FaultProxy back)
-    {
-        var c = new VirtualUrController(new VirtualUrControllerOptions
-        {
-            InstantExecution = true, Model = null, RequestLogCapacity = Actions,
-            OutboundRoute = to =>
-            {
-                back.Retarget(0, to.Port); // the host's call-back port, chosen when it connects
-                return new DnsEndPoint("127.0.0.1", back.Port);
-            },
-        });
-        await c.StartAsync();
-        return FaultRig.Of("UR", c.Port, c);
-    }
 
-    /// <summary>The controller's consecutive ports: driver and monitor (ABB, KUKA), or script, RTDE and dashboard (UR).</summary>
-    private static int[] Ports(FaultRig rig) => rig.Controller switch
-    {
-        VirtualUrController ur => [ur.Port, ur.RtdePort, ur.DashboardPort],
-        _ => [rig.Port, rig.Port + 1],
-    };
 }
