@@ -28,6 +28,9 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
     /// <summary>True when the monitor connection (live poses) is open.</summary>
     internal bool HasMonitor => _monitor is not null;
 
+    /// <summary>The highest action id acknowledged on this link (acknowledgements come in order).</summary>
+    private int _lastAcknowledged;
+
     /// <summary>Actions sent and not acknowledged yet (at most <see cref="KukaProtocol.Capacity"/>).</summary>
     internal int OnController
     {
@@ -96,11 +99,18 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
     public int WireId(int actionId) => actionId;
 
     /// <inheritdoc/>
+    /// <remarks>
+    /// An action whose acknowledgement already arrived (the controller ran it between its state report and the adoption) is
+    /// not awaited again: it would hold a slot forever and the session would count more room than the controller has.
+    /// </remarks>
     public void Adopt(int actionId)
     {
         lock (_gate)
         {
-            _awaiting.Enqueue(actionId);
+            if (actionId > _lastAcknowledged)
+            {
+                _awaiting.Enqueue(actionId);
+            }
         }
     }
 
@@ -164,6 +174,7 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
             {
                 actionId = _awaiting.Dequeue();
             }
+            _lastAcknowledged = Math.Max(_lastAcknowledged, wireId);
         }
         // Outside the lock: the session's loop may call Send while handling it. Every acknowledgement after a read carries
         // V (EthernetKRL keeps the value set last); the session keeps it for reads only.
