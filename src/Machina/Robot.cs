@@ -86,7 +86,15 @@ public sealed partial class Robot : IOnlineHost
     public bool Issue(RobotAction action)
     {
         ArgumentNullException.ThrowIfNull(action);
-        (string? Report, ActionIssuedArgs? Issued) result = UnderIssueLock(action, static (self, a) => self.IssueLocked(a));
+        (string? Report, ActionIssuedArgs? Issued) result;
+        try
+        {
+            result = UnderIssueLock(action, static (self, a) => self.IssueLocked(a));
+        }
+        finally
+        {
+            _session?.ReleaseIssued();
+        }
         RaiseIssued(result.Report, result.Issued);
         return true;
     }
@@ -115,6 +123,8 @@ public sealed partial class Robot : IOnlineHost
         }
         finally
         {
+            // Online, the issued actions go to the controller once the lock is released (see IActionStream.ReleaseIssued).
+            _session?.ReleaseIssued();
             // Even if an action failed after the dry run, the ones already issued are reported.
             RaiseIssued(raised);
         }

@@ -10,6 +10,12 @@ internal interface IActionStream
     /// </summary>
     void Enqueue(RobotAction action, ActionIssuedArgs? issued);
 
+    /// <summary>
+    /// Releases what <see cref="Enqueue"/> took, as the connection allows. Called after the issue lock is released, never under
+    /// it: the session's loop may run on the calling thread, and a failure it applies there must see every action of the issue.
+    /// </summary>
+    void ReleaseIssued();
+
     /// <summary>Why the controller's driver cannot run <paramref name="action"/>, or null; asked before the action changes anything.</summary>
     string? WhyCannotStream(RobotAction action);
 

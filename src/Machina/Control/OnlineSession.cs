@@ -55,14 +55,18 @@ internal sealed partial class OnlineSession : IActionStream
     /// <inheritdoc/>
     public void Enqueue(RobotAction action, ActionIssuedArgs? issued)
     {
-        // Called under the robot's issue lock: the event and the action are queued in issue order; the loop releases it.
+        // Called under the robot's issue lock: the event and the action are queued in issue order; the loop releases it once
+        // the robot calls ReleaseIssued after the lock. Running the loop here, under the lock, would let it apply a failure
+        // (which takes the same lock, re-entrantly on this thread) between two actions of one Do: the second would miss it.
         if (issued is not null)
         {
             _events.Post(issued);
         }
         _inbox.Enqueue(action);
-        Post(_releaseReady);
     }
+
+    /// <inheritdoc/>
+    public void ReleaseIssued() => Post(_releaseReady);
 
     /// <inheritdoc/>
     public string? WhyCannotStream(RobotAction action) => _brand?.WhyCannotStream(action);

@@ -52,6 +52,35 @@ public class ActionFailureTests
     }
 
     [Fact]
+    public async Task OnFailed_WhileSendingTheFirstActionOfOneDo_CancelsTheSecond_NeverLeavesItPending()
+    {
+        // The controller refuses the first move the moment it is sent, on the session's loop (which runs on the issuing thread):
+        // the failure must still see the second action of the same Do and cancel it, not leave it pending behind a closed link.
+        var driver = new FakeDriver();
+        driver.OnSent = a =>
+        {
+            if (a.Id == 1)
+            {
+                driver.Listener!.OnFailed(1, "Position outside reach.", "50050");
+            }
+        };
+        var bot = CreateRobot([driver]);
+        var seen = new Recorder(bot);
+
+        bot.Do("MoveTo(2000, 0, 500); MoveTo(400, 0, 400);");
+        OnlineRobot.Flush(bot);
+
+        ActionFailedArgs failed = Assert.Single(seen.Failed);
+        Assert.Equal(1, failed.Action.Id);
+        Assert.Equal("Position outside reach.", failed.Reason);
+        Assert.Equal([2], failed.CancelledActions.Select(a => a.Id));
+        Assert.Empty(bot.GetPendingActions());
+        Assert.Empty(seen.Executed);
+        var thrown = await Assert.ThrowsAsync<ActionFailedException>(() => bot.WaitForCompletionAsync());
+        Assert.Same(failed.Failure, thrown);
+    }
+
+    [Fact]
     public async Task OnFailed_MidProgram_BeforeExecuted_FailedReported_RestCancelled_WaitThrows()
     {
         var driver = new FakeDriver();

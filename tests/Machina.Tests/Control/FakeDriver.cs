@@ -91,8 +91,12 @@ internal sealed class FakeDriver : IDeviceDriver
             MaxUnacknowledged = Math.Max(MaxUnacknowledged, now);
             _autoAcks?.Writer.TryWrite(action.Id);
         }
+        OnSent?.Invoke(action);
         return acked;
     }
+
+    /// <summary>Called on the sending thread (the session's loop) after each action is sent, like a controller answering at once.</summary>
+    internal Action<RobotAction>? OnSent { get; set; }
 
     /// <summary>Ids of actions an earlier connection sent that this one was told the controller still holds.</summary>
     internal ConcurrentQueue<int> Adopted { get; } = new();
