@@ -40,23 +40,9 @@ internal sealed partial class UrDriver
                 throw new RobotStoppedException($"The UR controller did not play the driver program again: \"{play}\".", play);
             }
         }
-        long start = Time.GetTimestamp();
-        while (LatestSample is not { IsSafetyStop: false, RuntimeState: RtdeSample.Playing })
+        if (await WaitForSampleAsync(s => !s.IsSafetyStop && s.RuntimeState == RtdeSample.Playing, ResumeTimeout, cancellationToken).ConfigureAwait(false) is null)
         {
-            Task<RtdeSample> next;
-            lock (_rtdeGate)
-            {
-                next = _nextSample.Task;
-            }
-            TimeSpan left = ResumeTimeout - Time.GetElapsedTime(start);
-            try
-            {
-                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time, cancellationToken).ConfigureAwait(false);
-            }
-            catch (TimeoutException)
-            {
-                throw new RobotStoppedException($"The UR controller accepted the resume but its program did not run again within {Num.G(ResumeTimeout.TotalSeconds)} s.");
-            }
+            throw new RobotStoppedException($"The UR controller accepted the resume but its program did not run again within {Num.G(ResumeTimeout.TotalSeconds)} s.");
         }
     }
 }

@@ -77,6 +77,36 @@ internal sealed partial class UrDriver
         }
     }
 
+    /// <summary>
+    /// Waits for the first RTDE sample, the latest one included, for which <paramref name="until"/> holds, and returns it; null
+    /// when <paramref name="timeout"/> passes first. A failed RTDE link throws <see cref="RobotConnectionException"/>.
+    /// </summary>
+    private async Task<RtdeSample?> WaitForSampleAsync(Func<RtdeSample, bool> until, TimeSpan timeout, CancellationToken cancellationToken)
+    {
+        long start = Time.GetTimestamp();
+        while (true)
+        {
+            Task<RtdeSample> next;
+            lock (_rtdeGate)
+            {
+                if (_latest is RtdeSample s && until(s))
+                {
+                    return s;
+                }
+                next = _nextSample.Task;
+            }
+            TimeSpan left = timeout - Time.GetElapsedTime(start);
+            try
+            {
+                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time, cancellationToken).ConfigureAwait(false);
+            }
+            catch (TimeoutException)
+            {
+                return null;
+            }
+        }
+    }
+
     /// <summary>Connects to RTDE, negotiates protocol 2, subscribes to <see cref="Recipe"/> and returns the first package.</summary>
     private async Task<RtdeSample> ConnectRtdeAsync(string host, TimeSpan timeout, CancellationToken cancellationToken)
     {
@@ -147,33 +177,8 @@ internal sealed partial class UrDriver
     /// While the previous driver program still runs requests it received, waits (within <paramref name="left"/>) until it has
     /// run them, so that fewer are sent again. The progress itself is read only once the new program runs (<see cref="ProgressOfAsync"/>).
     /// </summary>
-    private async Task<DeviceProgress> SettledProgressAsync(RtdeSample sample, TimeSpan left, CancellationToken cancellationToken)
-    {
-        long start = Time.GetTimestamp();
-        while (sample.Executed != sample.Received && sample.RuntimeState == RtdeSample.Playing && !sample.IsSafetyStop)
-        {
-            Task<RtdeSample> next;
-            lock (_rtdeGate)
-            {
-                next = _nextSample.Task;
-            }
-            TimeSpan remaining = left - Time.GetElapsedTime(start);
-            if (remaining <= TimeSpan.Zero)
-            {
-                return new DeviceProgress(sample.Executed, sample.Received);
-            }
-            try
-            {
-                sample = await next.WaitAsync(remaining, Time, cancellationToken).ConfigureAwait(false);
-            }
-            catch (TimeoutException)
-            {
-                return new DeviceProgress(sample.Executed, sample.Received);
-            }
-        }
-        // The new program replaces the old one: what it had received but not run is sent again.
-        return new DeviceProgress(sample.Executed, sample.Executed);
-    }
+    private Task SettleAsync(TimeSpan left, CancellationToken cancellationToken) =>
+        WaitForSampleAsync(s => s.Executed == s.Received || s.RuntimeState != RtdeSample.Playing || s.IsSafetyStop, left, cancellationToken);
 
     /// <summary>
     /// The progress to resume from, read once RTDE shows this connection's program (its instance number in register 26):
@@ -182,29 +187,10 @@ internal sealed partial class UrDriver
     /// </summary>
     private async Task<DeviceProgress> ProgressOfAsync(int instance, TimeSpan left, CancellationToken cancellationToken)
     {
-        long start = Time.GetTimestamp();
-        while (true)
-        {
-            Task<RtdeSample> next;
-            lock (_rtdeGate)
-            {
-                if (_latest is RtdeSample s && s.Instance == instance)
-                {
-                    return new DeviceProgress(s.Executed, s.Executed);
-                }
-                next = _nextSample.Task;
-            }
-            TimeSpan remaining = left - Time.GetElapsedTime(start);
-            try
-            {
-                await next.WaitAsync(remaining > TimeSpan.Zero ? remaining : TimeSpan.Zero, Time, cancellationToken).ConfigureAwait(false);
-            }
-            catch (TimeoutException)
-            {
-                throw new RobotConnectionException(
-                    $"The UR driver program connected back but RTDE never showed its instance number {instance.ToString(Num.Inv)} in output_int_register_{UrWire.InstanceRegister.ToString(Num.Inv)}: another program may have replaced it. Nothing was sent; connect again.");
-            }
-        }
+        RtdeSample ours = await WaitForSampleAsync(s => s.Instance == instance, left, cancellationToken).ConfigureAwait(false)
+            ?? throw new RobotConnectionException(
+                $"The UR driver program connected back but RTDE never showed its instance number {instance.ToString(Num.Inv)} in output_int_register_{UrWire.InstanceRegister.ToString(Num.Inv)}: another program may have replaced it. Nothing was sent; connect again.");
+        return new DeviceProgress(ours.Executed, ours.Executed);
     }
 
     private void OnRtdePackage(byte type, ReadOnlySpan<byte> payload)

@@ -30,23 +30,10 @@ internal sealed partial class UrDriver
                 throw new RobotStoppedException($"The UR controller did not {what} the driver program: \"{reply}\".", reply);
             }
         }
-        long start = Time.GetTimestamp();
-        while (runtimeState is not null && LatestSample?.RuntimeState != runtimeState)
+        if (runtimeState is uint state
+            && await WaitForSampleAsync(s => s.RuntimeState == state, ResumeTimeout, cancellationToken).ConfigureAwait(false) is null)
         {
-            Task<RtdeSample> next;
-            lock (_rtdeGate)
-            {
-                next = _nextSample.Task;
-            }
-            TimeSpan left = ResumeTimeout - Time.GetElapsedTime(start);
-            try
-            {
-                await next.WaitAsync(left > TimeSpan.Zero ? left : TimeSpan.Zero, Time, cancellationToken).ConfigureAwait(false);
-            }
-            catch (TimeoutException)
-            {
-                throw new RobotStoppedException($"The UR controller accepted \"{command}\" but RTDE did not show its program {(runtimeState == RtdeSample.Paused ? "paused" : "stopped")} within {Num.G(ResumeTimeout.TotalSeconds)} s.");
-            }
+            throw new RobotStoppedException($"The UR controller accepted \"{command}\" but RTDE did not show its program {(state == RtdeSample.Paused ? "paused" : "stopped")} within {Num.G(ResumeTimeout.TotalSeconds)} s.");
         }
     }
 }

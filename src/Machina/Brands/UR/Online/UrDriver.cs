@@ -40,7 +40,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         _ports = UrPorts.For(port);
         RtdeSample first = await ConnectRtdeAsync(host, timeout, cancellationToken).ConfigureAwait(false);
         // At most half the time: an old program stuck inside an instruction (its link cut mid-way) must not starve the connect.
-        await SettledProgressAsync(first, Left(start, timeout) / 2, cancellationToken).ConfigureAwait(false);
+        await SettleAsync(Left(start, timeout) / 2, cancellationToken).ConfigureAwait(false);
 
         // The address this computer has on the way to the robot (loopback included), and a port the OS chooses.
         IPAddress local = _rtdeLink!.LocalAddress ?? IPAddress.Loopback;
