@@ -70,7 +70,7 @@ public class ChaosTests(ITestOutputHelper output)
         }
         await rig.RecoverAsync(w);
         w.Bot.ConnectTimeout = Limit;
-        Vector end = IssueProgram(w.Bot, random);
+        Vector end = RandomProgram.Issue(w.Bot, random, Actions, RandomProgram.ReachableLow, RandomProgram.ReachableHigh, jumps: false);
 
         bool heldFirst = mode == Mode.Held && !ur; // ABB, KUKA: the first connection's requests are held from a seeded byte on
         if (stall || heldFirst)
@@ -141,21 +141,4 @@ public class ChaosTests(ITestOutputHelper output)
             },
         };
     }
-
-    /// <summary>A move to a start, then relative moves of up to 5 mm per axis inside a box every brand's arm reaches with the tool down.</summary>
-    private static Vector IssueProgram(Robot bot, Random random)
-    {
-        var at = new Vector(360, 0, 480);
-        bot.MoveTo(at.X, at.Y, at.Z);
-        for (int i = 1; i < Actions; i++)
-        {
-            var by = new Vector(FaultRig.StepWithin(random, at.X, 300, 420), FaultRig.StepWithin(random, at.Y, -80, 80), FaultRig.StepWithin(random, at.Z, 420, 560));
-            at += by;
-            bot.Move(by.X, by.Y, by.Z);
-        }
-        return at;
-    }
-
-
-
 }

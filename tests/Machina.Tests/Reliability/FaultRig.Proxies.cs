@@ -31,11 +31,4 @@ internal sealed partial class FaultRig
         await c.StartAsync();
         return Of("UR", c.Port, c);
     }
-
-    /// <summary>A step of -5 to 5 mm (seeded) that keeps <paramref name="at"/> inside [<paramref name="low"/>, <paramref name="high"/>].</summary>
-    public static int StepWithin(Random random, double at, double low, double high)
-    {
-        int step = random.Next(-5, 6);
-        return at + step < low || at + step > high ? -step : step;
-    }
 }

@@ -35,7 +35,7 @@ public class HeldSoakTests(ITestOutputHelper output)
         FaultProxy requests = back ?? front;
         var w = rig.CreateRobot(b => { b.BlockSize = 50; b.PendingCount = 40; }, port: front.Port);
         await rig.RecoverAsync(w);
-        Vector end = IssueRandomProgram(w.Bot, random);
+        Vector end = RandomProgram.Issue(w.Bot, random, Actions, RandomProgram.ReachableLow, RandomProgram.ReachableHigh, jumps: true);
         int heldInstructions = 0, releasedDuring = 0, heldScripts = 0, recoveries = 0;
         bool scriptHeld = false;
 
@@ -126,40 +126,6 @@ public class HeldSoakTests(ITestOutputHelper output)
             + $"{heldScripts} held scripts, {recoveries} late recoveries, {w.RecoveryErrors.Count} retried attempts, {watch.Elapsed.TotalSeconds:F2} s");
         await w.Bot.DisconnectAsync();
     }
-
-    /// <summary>
-    /// Issues <see cref="Actions"/> actions, each one request on every brand: an absolute move now and then, relative moves of
-    /// up to 5 mm per axis in between (turned back at the edges of a box every brand's arm reaches with the tool down), a
-    /// speed change now and then. Returns where the last one leaves the robot.
-    /// </summary>
-    private static Vector IssueRandomProgram(Robot bot, Random random)
-    {
-        var low = new Vector(300, -80, 420);
-        var high = new Vector(420, 80, 560);
-        var at = new Vector(360, 0, 480);
-        bot.MoveTo(at.X, at.Y, at.Z);
-        for (int i = 1; i < Actions; i++)
-        {
-            switch (random.Next(10))
-            {
-                case 0:
-                    bot.SpeedTo(random.Next(10, 200));
-                    break;
-                case 1:
-                    at = new Vector(random.Next((int)low.X, (int)high.X), random.Next((int)low.Y, (int)high.Y), random.Next((int)low.Z, (int)high.Z));
-                    bot.MoveTo(at.X, at.Y, at.Z);
-                    break;
-                default:
-                    var by = new Vector(FaultRig.StepWithin(random, at.X, low.X, high.X), FaultRig.StepWithin(random, at.Y, low.Y, high.Y), FaultRig.StepWithin(random, at.Z, low.Z, high.Z));
-                    at += by;
-                    bot.Move(by.X, by.Y, by.Z);
-                    break;
-            }
-        }
-        return at;
-    }
-
-
     /// <summary>Waits until the host saw <paramref name="executed"/> actions executed, connecting again whenever the link is lost.</summary>
     private static async Task AdvanceAsync(FaultRig rig, FaultRig.Watched w, int executed)
     {

@@ -38,7 +38,8 @@ public class SoakTests(ITestOutputHelper output)
         await rig.RecoverAsync(w);
         // The KUKA twin moves a KR 6 R900 sixx with its tool pointing down, which cannot reach the lowest points near its base
         // (MoveTo(231, -71, 323) is not reachable): its program runs 200 mm further out and 100 mm higher.
-        Vector end = IssueRandomProgram(w.Bot, new Random(seed), brand == "KUKA" ? new Vector(200, 0, 100) : Vector.Zero);
+        Vector shift = brand == "KUKA" ? new Vector(200, 0, 100) : Vector.Zero;
+        Vector end = RandomProgram.Issue(w.Bot, new Random(seed), Actions, new Vector(200, -100, 300) + shift, new Vector(400, 100, 500) + shift, jumps: true);
 
         int recoveries = await rig.RunToCompletionAsync(w, WaitLimit, maxRecoveries: 1000);
         watch.Stop();
@@ -61,36 +62,6 @@ public class SoakTests(ITestOutputHelper output)
         }
         await w.Bot.DisconnectAsync();
     }
-
-    /// <summary>
-    /// Issues <see cref="Actions"/> actions, each one request on every brand: an absolute move now and then, relative moves of
-    /// up to 5 mm per axis in between, a speed change now and then. Returns where the last one leaves the robot.
-    /// </summary>
-    private static Vector IssueRandomProgram(Robot bot, Random random, Vector shift)
-    {
-        var at = new Vector(300, 0, 400) + shift;
-        bot.MoveTo(at.X, at.Y, at.Z);
-        for (int i = 1; i < Actions; i++)
-        {
-            switch (random.Next(10))
-            {
-                case 0:
-                    bot.SpeedTo(random.Next(10, 200));
-                    break;
-                case 1:
-                    at = new Vector(random.Next(200, 400), random.Next(-100, 100), random.Next(300, 500)) + shift;
-                    bot.MoveTo(at.X, at.Y, at.Z);
-                    break;
-                default:
-                    var by = new Vector(random.Next(-5, 6), random.Next(-5, 6), random.Next(1, 6) * (random.Next(2) == 0 ? 1 : -1));
-                    at += by;
-                    bot.Move(by.X, by.Y, by.Z);
-                    break;
-            }
-        }
-        return at;
-    }
-
     private static int FirstDifference(IReadOnlyList<int> log)
     {
         for (int i = 0; i < log.Count; i++)
