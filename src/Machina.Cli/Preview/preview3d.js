@@ -17,7 +17,10 @@
   all.forEach(function (p) { for (var i = 0; i < 3; i++) { min[i] = Math.min(min[i], p[i]); max[i] = Math.max(max[i], p[i]); } });
   var centre = [(min[0] + max[0]) / 2, (min[1] + max[1]) / 2, (min[2] + max[2]) / 2];
   var extent = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2], 1);
-  var cam = { yaw: -35 * deg, pitch: 30 * deg, zoom: 1, panX: 0, panY: 0 };
+  // fit: pixels per mm that frame the whole drawing in this view; offU, offV: the middle of its picture (mm, from centre).
+  var cam = { yaw: -35 * deg, pitch: 30 * deg, zoom: 1, panX: 0, panY: 0, fit: 1, offU: 0, offV: 0 };
+  // Room kept around the drawing for the labels next to its markers (px).
+  var margin = 48;
   var picks = [];
 
   function niceStep(rough) {
@@ -35,23 +38,41 @@
     canvas.style.width = box.width + 'px';
     canvas.style.height = box.height + 'px';
     ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    fit();
     draw();
   }
 
-  function scale() {
-    var w = canvas.width / (window.devicePixelRatio || 1), h = canvas.height / (window.devicePixelRatio || 1);
-    return 0.8 * Math.min(w, h) / extent * cam.zoom;
-  }
+  function scale() { return cam.fit * cam.zoom; }
 
-  // Orthographic camera: turn by yaw about Z, then tilt by pitch (90° looks straight down).
-  function project(p) {
-    var w = canvas.width / (window.devicePixelRatio || 1), h = canvas.height / (window.devicePixelRatio || 1);
+  // Orthographic camera: turn by yaw about Z, then tilt by pitch (90° looks straight down). In mm from the centre: [right, up].
+  function turn(p) {
     var x = p[0] - centre[0], y = p[1] - centre[1], z = p[2] - centre[2];
     var cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw), cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch);
     var x1 = x * cy - y * sy, y1 = x * sy + y * cy;
-    var up = z * cp + y1 * sp;
-    var s = scale();
-    return [w / 2 + cam.panX + x1 * s, h / 2 + cam.panY - up * s];
+    return [x1, z * cp + y1 * sp];
+  }
+
+  function project(p) {
+    var w = canvas.width / (window.devicePixelRatio || 1), h = canvas.height / (window.devicePixelRatio || 1);
+    var t = turn(p), s = scale();
+    return [w / 2 + cam.panX + (t[0] - cam.offU) * s, h / 2 + cam.panY - (t[1] - cam.offV) * s];
+  }
+
+  // Frames the whole drawing (path, targets, arms) as this view sees it, with room for the labels, in the middle of the canvas.
+  function fit() {
+    var w = canvas.width / (window.devicePixelRatio || 1), h = canvas.height / (window.devicePixelRatio || 1);
+    var lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+    all.forEach(function (p) { var t = turn(p); for (var i = 0; i < 2; i++) { lo[i] = Math.min(lo[i], t[i]); hi[i] = Math.max(hi[i], t[i]); } });
+    var du = Math.max(hi[0] - lo[0], extent / 100), dv = Math.max(hi[1] - lo[1], extent / 100);
+    cam.fit = Math.max(1e-6, Math.min(Math.max(w - 2 * margin, 20) / du, Math.max(h - 2 * margin, 20) / dv));
+    cam.offU = (lo[0] + hi[0]) / 2; cam.offV = (lo[1] + hi[1]) / 2;
+  }
+
+  // Where the drawing's points landed on the canvas in the last draw (px): data-drawn="left top right bottom".
+  function recordDrawn() {
+    var lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+    all.forEach(function (p) { var s = project(p); for (var i = 0; i < 2; i++) { lo[i] = Math.min(lo[i], s[i]); hi[i] = Math.max(hi[i], s[i]); } });
+    canvas.setAttribute('data-drawn', [lo[0], lo[1], hi[0], hi[1]].map(function (v) { return Math.round(v * 10) / 10; }).join(' '));
   }
 
   function line(points, colour, width, dash) {
@@ -138,9 +159,10 @@
     if (data.start) { marker(data.start, 'start', 'start'); }
     if (data.end) { marker(data.end, 'end', 'end'); }
     gizmo();
+    recordDrawn();
   }
 
-  function setView(yaw, pitch) { cam.yaw = yaw * deg; cam.pitch = pitch * deg; cam.zoom = 1; cam.panX = 0; cam.panY = 0; draw(); }
+  function setView(yaw, pitch) { cam.yaw = yaw * deg; cam.pitch = pitch * deg; cam.zoom = 1; cam.panX = 0; cam.panY = 0; fit(); draw(); }
   document.getElementById('v-3d').onclick = function () { setView(-35, 30); };
   document.getElementById('v-top').onclick = function () { setView(0, 90); };
   document.getElementById('v-front').onclick = function () { setView(0, 0); };
