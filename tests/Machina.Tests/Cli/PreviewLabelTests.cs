@@ -1,0 +1,66 @@
+#if NET10_0_OR_GREATER
+using System.Text.Json;
+using Machina.Tests.Bridge;
+
+namespace Machina.Tests.Cli;
+
+/// <summary>
+/// The SVG preview's labels (start, end, base and each warning's line) never overlap, even where markers crowd: measured
+/// in headless Chromium from the boxes the browser drew the texts in (getBBox), in each of the three views; and no legend
+/// text runs out of its panel.
+/// </summary>
+public sealed class PreviewLabelTests
+{
+    /// <summary>Three unreachable targets within 5 mm of each other, and an end 5 mm above the start.</summary>
+    private const string Crowded = """
+        MoveTo(300, 0, 400);
+        MoveTo(900, 0, 400);
+        MoveTo(905, 0, 400);
+        MoveTo(900, 5, 405);
+        MoveTo(300, 0, 405);
+        """;
+
+    private const string Overlaps = """
+        (() => {
+          const found = [];
+          let count = 0;
+          for (const view of ['top', 'front', 'side']) {
+            const texts = [...document.getElementById('view-' + view).querySelectorAll('g.warning > text, g.start > text, g.end > text, g.base > text')];
+            count += texts.length;
+            const boxes = texts.map(t => { const b = t.getBBox(); return [t.textContent, b.x, b.y, b.x + b.width, b.y + b.height]; });
+            for (let i = 0; i < boxes.length; i++) {
+              for (let j = i + 1; j < boxes.length; j++) {
+                const a = boxes[i], c = boxes[j];
+                if (a[1] < c[3] && c[1] < a[3] && a[2] < c[4] && c[2] < a[4]) { found.push(view + ': "' + a[0] + '" and "' + c[0] + '"'); }
+              }
+            }
+          }
+          // And no text of the legend runs out of its panel on the right.
+          const legend = document.getElementById('legend'), panel = legend.querySelector('rect').getBBox();
+          for (const t of legend.querySelectorAll('text')) {
+            const b = t.getBBox();
+            if (b.x + b.width > panel.x + panel.width - 4) { found.push('legend: "' + t.textContent + '" runs out of the panel'); }
+          }
+          return JSON.stringify({ count: count, found: found });
+        })()
+        """;
+
+    [ChromiumFact]
+    public async Task Svg_CrowdedMarkers_TheirLabelsDoNotOverlap()
+    {
+        using var cli = new CliRunner();
+        CliResult result = await cli.RunProgramAsync("preview", Crowded, "--model", "IRB 120", "--out", "crowded.svg");
+        Assert.Equal(0, result.Exit);
+        Assert.Equal(3, result.Stderr.Split('\n').Count(l => l.Contains(": warning: ", StringComparison.Ordinal)));
+
+        await using Chromium browser = await Chromium.StartAsync(1200, 900);
+        await browser.NavigateAsync(new Uri(cli.PathOf("crowded.svg")));
+        await browser.WaitForAsync("document.readyState", "complete");
+        using JsonDocument answer = JsonDocument.Parse((await browser.EvaluateAsync(Overlaps)).GetString()!);
+
+        // In each view: the start, the end, the base and three warnings.
+        Assert.Equal(3 * 6, answer.RootElement.GetProperty("count").GetInt32());
+        Assert.Empty(answer.RootElement.GetProperty("found").EnumerateArray().Select(f => f.GetString()));
+    }
+}
+#endif
