@@ -43,7 +43,8 @@ internal static class SvgWriter
         svg.Append(CultureInfo.InvariantCulture, $".reach{{fill:none;stroke:{PreviewStyle.ReachColour};stroke-width:1.3;stroke-dasharray:9 4 2 4;vector-effect:non-scaling-stroke}}");
         svg.Append(".arm-joint{fill:#fff;stroke:#6b7684;stroke-width:1.2;vector-effect:non-scaling-stroke}");
         svg.Append(".target{fill:#fff;stroke:#5f6b7a;stroke-width:1;vector-effect:non-scaling-stroke}");
-        svg.Append("text{fill:#2b2f36;font-size:13px}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
+        // A text's own fill (a label in its marker's colour) wins over the default: a CSS rule would override the attribute.
+        svg.Append("text{font-size:13px}text:not([fill]){fill:#2b2f36}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
         svg.Append("\n</style>\n");
         svg.Append(CultureInfo.InvariantCulture, $"<rect width=\"{Width}\" height=\"{Height}\" fill=\"#f6f7f9\"/>\n");
         svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{Gap}\" y=\"30\" class=\"title\">{Esc(title)}</text>\n");

@@ -46,6 +46,24 @@ public sealed class PreviewLabelTests
         """;
 
     [ChromiumFact]
+    public async Task Svg_LabelsAreDrawnInTheirMarkersColours()
+    {
+        using var cli = new CliRunner();
+        CliResult result = await cli.RunProgramAsync("preview", Crowded, "--model", "IRB 120", "--out", "c.svg");
+        Assert.Equal(0, result.Exit);
+
+        await using Chromium browser = await Chromium.StartAsync(1200, 900);
+        await browser.NavigateAsync(new Uri(cli.PathOf("c.svg")));
+        await browser.WaitForAsync("document.readyState", "complete");
+        async Task<string> FillAsync(string selector) => (await browser.EvaluateAsync($"getComputedStyle(document.querySelector('{selector}')).fill")).GetString()!;
+
+        // The warning's "!2" red (#e53935), the start's label green (#2e7d32), an unlabelled text the default grey-black.
+        Assert.Equal("rgb(229, 57, 53)", await FillAsync("#view-top g.warning > text"));
+        Assert.Equal("rgb(46, 125, 50)", await FillAsync("#view-top g.start > text"));
+        Assert.Equal("rgb(43, 47, 54)", await FillAsync("#view-top > text"));
+    }
+
+    [ChromiumFact]
     public async Task Svg_CrowdedMarkers_TheirLabelsDoNotOverlap()
     {
         using var cli = new CliRunner();
