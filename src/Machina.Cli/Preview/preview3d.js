@@ -109,19 +109,48 @@
     });
   }
 
-  function marker(p, kind, label) {
-    var s = project(p);
+  function marker(s, kind) {
+    if (kind === 'base') { ctx.fillStyle = '#5f6b7a'; ctx.fillRect(s[0] - 9, s[1] - 4, 18, 8); return; }
     ctx.beginPath();
     if (kind === 'end') { ctx.rect(s[0] - 6, s[1] - 6, 12, 12); } else { ctx.arc(s[0], s[1], kind === 'warning' ? 8 : 7, 0, 2 * Math.PI); }
     if (kind === 'warning') { ctx.strokeStyle = colours.warning; ctx.lineWidth = 2.5; ctx.stroke(); }
     else { ctx.fillStyle = colours[kind]; ctx.fill(); ctx.strokeStyle = '#fff'; ctx.lineWidth = 2; ctx.stroke(); }
-    ctx.fillStyle = kind === 'warning' ? colours.warning : colours[kind];
-    ctx.font = 'bold 12px sans-serif';
-    // Labels in separate corners, so that they stay apart when the start, the end and a warning are at one point:
-    // the start below right, the end above right, a warning above left.
-    ctx.textAlign = kind === 'warning' ? 'right' : 'left';
-    ctx.fillText(label, kind === 'warning' ? s[0] - 10 : s[0] + 10, kind === 'start' ? s[1] + 17 : s[1] - 9);
+  }
+
+  // Labels apart: each tries its own corner of its marker first (the start below right, the end above right, a warning
+  // above left, the base below), then the other corners, then further along its side, and keeps the first place free of
+  // the labels placed before it, of the markers and of the axes in the corner. taken: boxes [left, top, right, bottom] in px.
+  function label(s, kind, text, taken) {
+    var size = kind === 'base' ? 11 : 12;
+    ctx.font = (kind === 'base' ? '' : 'bold ') + size + 'px sans-serif';
+    var w = ctx.measureText(text).width + 2;
+    var corners = {
+      b: function (k) { return [s[0], s[1] + 18 + k, 'center']; },
+      ar: function (k) { return [s[0] + 10, s[1] - 9 - k, 'left']; },
+      br: function (k) { return [s[0] + 10, s[1] + 17 + k, 'left']; },
+      al: function (k) { return [s[0] - 10, s[1] - 9 - k, 'right']; },
+      bl: function (k) { return [s[0] - 10, s[1] + 17 + k, 'right']; }
+    };
+    var order = kind === 'end' ? ['ar', 'br', 'al', 'bl'] : kind === 'start' ? ['br', 'ar', 'bl', 'al']
+      : kind === 'base' ? ['b', 'br', 'bl', 'ar', 'al'] : ['al', 'bl', 'ar', 'br'];
+    var first = null, chosen = null;
+    for (var step = 0; step <= 8 && !chosen; step++) {
+      for (var i = 0; i < order.length && !chosen; i++) {
+        var p = corners[order[i]](step * (1.5 * size + 1));
+        var left = p[2] === 'left' ? p[0] : p[2] === 'center' ? p[0] - w / 2 : p[0] - w;
+        var box = [left, p[1] - 1.1 * size, left + w, p[1] + 0.35 * size];
+        first = first || { p: p, box: box };
+        var free = taken.every(function (t) { return !(box[0] < t[2] && t[0] < box[2] && box[1] < t[3] && t[1] < box[3]); });
+        if (free) { chosen = { p: p, box: box }; }
+      }
+    }
+    chosen = chosen || first;
+    taken.push(chosen.box);
+    ctx.fillStyle = kind === 'warning' ? colours.warning : kind === 'base' ? '#5f6b7a' : colours[kind];
+    ctx.textAlign = chosen.p[2];
+    ctx.fillText(text, chosen.p[0], chosen.p[1]);
     ctx.textAlign = 'left';
+    return chosen.box;
   }
 
   function draw() {
@@ -136,11 +165,6 @@
       line(a.points, colour, 7, null);
       a.points.forEach(function (p) { var s = project(p); ctx.beginPath(); ctx.arc(s[0], s[1], 3, 0, 2 * Math.PI); ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = '#6b7684'; ctx.lineWidth = 1.2; ctx.stroke(); });
     });
-    if ((data.arms || []).length > 0) {
-      var b = project([0, 0, 0]);
-      ctx.fillStyle = '#5f6b7a'; ctx.fillRect(b[0] - 9, b[1] - 4, 18, 8);
-      ctx.font = '11px sans-serif'; ctx.fillText('base', b[0] - 12, b[1] + 18);
-    }
     data.segments.forEach(function (s) {
       line(s.points, colours[s.kind], s.kind === 'travel' ? 1.5 : 2.4, s.kind === 'joint' ? [7, 5] : s.kind === 'travel' ? [2, 5] : null);
     });
@@ -150,14 +174,21 @@
       ctx.fillStyle = '#fff'; ctx.fill(); ctx.strokeStyle = '#5f6b7a'; ctx.lineWidth = 1; ctx.stroke();
       picks.push({ s: s, text: 'target ' + (i + 1) + ': [' + p.map(function (v) { return Math.round(v * 100) / 100; }).join(', ') + '] mm' });
     });
+    var marks = [];
+    if (data.start) { marks.push({ s: project(data.start), kind: 'start', text: 'start' }); }
+    if (data.end) { marks.push({ s: project(data.end), kind: 'end', text: 'end' }); }
     data.warnings.forEach(function (wn) {
       if (wn.at) {
-        marker(wn.at, 'warning', '!' + wn.line);
+        marks.push({ s: project(wn.at), kind: 'warning', text: '!' + wn.line });
         picks.push({ s: project(wn.at), text: 'line ' + wn.line + ': ' + wn.instruction + ' ' + wn.message });
       }
     });
-    if (data.start) { marker(data.start, 'start', 'start'); }
-    if (data.end) { marker(data.end, 'end', 'end'); }
+    if ((data.arms || []).length > 0) { marks.push({ s: project([0, 0, 0]), kind: 'base', text: 'base' }); }
+    var taken = marks.map(function (m) { return m.kind === 'base' ? [m.s[0] - 9, m.s[1] - 4, m.s[0] + 9, m.s[1] + 4] : [m.s[0] - 8, m.s[1] - 8, m.s[0] + 8, m.s[1] + 8]; });
+    taken.push([0, h - 96, 100, h]); // the axes, bottom left
+    marks.forEach(function (m) { marker(m.s, m.kind); });
+    var labels = marks.map(function (m) { return [m.text].concat(label(m.s, m.kind, m.text, taken).map(function (v) { return Math.round(v * 10) / 10; })); });
+    canvas.setAttribute('data-labels', JSON.stringify(labels));
     gizmo();
     recordDrawn();
   }

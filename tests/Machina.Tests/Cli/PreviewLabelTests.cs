@@ -6,7 +6,8 @@ namespace Machina.Tests.Cli;
 
 /// <summary>
 /// The SVG preview's labels (start, end, base and each warning's line) never overlap, even where markers crowd: measured
-/// in headless Chromium from the boxes the browser drew the texts in (getBBox), in each of the three views; and no legend
+/// in headless Chromium from the boxes the browser drew the texts in (getBBox; the 3D page records the boxes of its canvas
+/// labels), in each of the three views; and no legend
 /// text runs out of its panel.
 /// </summary>
 public sealed class PreviewLabelTests
@@ -44,6 +45,41 @@ public sealed class PreviewLabelTests
           return JSON.stringify({ count: count, found: found });
         })()
         """;
+
+    [ChromiumFact]
+    public async Task Page3d_CrowdedMarkers_TheirLabelsDoNotOverlap_InEveryView()
+    {
+        using var cli = new CliRunner();
+        CliResult result = await cli.RunProgramAsync("preview", Crowded, "--model", "IRB 120", "--out", "crowded.html");
+        Assert.Equal(0, result.Exit);
+
+        await using Chromium browser = await Chromium.StartAsync(1280, 800);
+        await browser.NavigateAsync(new Uri(cli.PathOf("crowded.html")));
+        await browser.WaitForAsync("document.readyState", "complete");
+        foreach (string button in new[] { "v-3d", "v-top", "v-front", "v-side" })
+        {
+            await browser.EvaluateAsync($"document.getElementById('view').removeAttribute('data-labels'), document.getElementById('{button}').click(), 0");
+            await browser.WaitForAsync("document.getElementById('view').hasAttribute('data-labels')", "true");
+            // The page records each label it drew as [text, left, top, right, bottom] in pixels.
+            string json = (await browser.EvaluateAsync("document.getElementById('view').getAttribute('data-labels')")).GetString()!;
+            using JsonDocument labels = JsonDocument.Parse(json);
+            (string Text, double[] Box)[] boxes = [.. labels.RootElement.EnumerateArray().Select(l =>
+                (l[0].GetString()!, new[] { l[1].GetDouble(), l[2].GetDouble(), l[3].GetDouble(), l[4].GetDouble() }))];
+            Assert.Equal(["start", "end", "!2", "!3", "!4", "base"], boxes.Select(b => b.Text));
+            // Nor over the axes drawn in the bottom left corner (100 x 96 px).
+            double height = (await browser.EvaluateAsync("document.getElementById('view').clientHeight")).GetDouble();
+            Assert.All(boxes, b => Assert.False(b.Box[0] < 100 && b.Box[3] > height - 96, $"{button}: \"{b.Text}\" is over the axes ({json})."));
+            for (int i = 0; i < boxes.Length; i++)
+            {
+                for (int j = i + 1; j < boxes.Length; j++)
+                {
+                    double[] a = boxes[i].Box, c = boxes[j].Box;
+                    bool overlap = a[0] < c[2] && c[0] < a[2] && a[1] < c[3] && c[1] < a[3];
+                    Assert.False(overlap, $"{button}: \"{boxes[i].Text}\" and \"{boxes[j].Text}\" overlap ({json}).");
+                }
+            }
+        }
+    }
 
     [ChromiumFact]
     public async Task Svg_LabelsAreDrawnInTheirMarkersColours()
