@@ -43,7 +43,8 @@ internal static class SvgWriter
         svg.Append(CultureInfo.InvariantCulture, $".reach{{fill:none;stroke:{PreviewStyle.ReachColour};stroke-width:1.3;stroke-dasharray:9 4 2 4;vector-effect:non-scaling-stroke}}");
         svg.Append(".arm-joint{fill:#fff;stroke:#6b7684;stroke-width:1.2;vector-effect:non-scaling-stroke}");
         svg.Append(".target{fill:#fff;stroke:#5f6b7a;stroke-width:1;vector-effect:non-scaling-stroke}");
-        svg.Append("text{fill:#2b2f36;font-size:13px}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
+        // A text's own fill (a label in its marker's colour) wins over the default: a CSS rule would override the attribute.
+        svg.Append("text{font-size:13px}text:not([fill]){fill:#2b2f36}.title{font-size:20px;font-weight:600}.sub{fill:#5f6b7a}.small{font-size:11px;fill:#5f6b7a}");
         svg.Append("\n</style>\n");
         svg.Append(CultureInfo.InvariantCulture, $"<rect width=\"{Width}\" height=\"{Height}\" fill=\"#f6f7f9\"/>\n");
         svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{Gap}\" y=\"30\" class=\"title\">{Esc(title)}</text>\n");
@@ -126,35 +127,61 @@ internal static class SvgWriter
             svg.Append(CultureInfo.InvariantCulture, $"<circle class=\"target\" cx=\"{F(u)}\" cy=\"{F(v)}\" r=\"{F6(r)}\"/>");
         }
         svg.Append("</g>\n</g>\n");
-        // Markers in picture coordinates, so that their size and labels do not depend on the scale.
+        // Markers in picture coordinates, so that their size and labels do not depend on the scale; no two labels overlap.
+        var labels = new LabelPlacer();
         foreach (PathWarning warning in path.Warnings)
         {
             if (warning.At is Vector at)
             {
                 (double sx, double sy) = Screen(at);
+                labels.AddMarker(sx, sy, 8, 8);
+            }
+        }
+        (double X, double Y)? baseAt = path.Arms.Count > 0 ? Screen(Vector.Zero) : null;
+        (double X, double Y)? startAt = path.Start is Vector s0 ? Screen(s0) : null;
+        (double X, double Y)? endAt = path.End is Vector e0 ? Screen(e0) : null;
+        if (baseAt is { } b)
+        {
+            labels.AddMarker(b.X, b.Y, 9, 4);
+        }
+        if (startAt is { } st)
+        {
+            labels.AddMarker(st.X, st.Y, 7.5, 7.5);
+        }
+        if (endAt is { } en)
+        {
+            labels.AddMarker(en.X, en.Y, 6.5, 6.5);
+        }
+        LabelSpot? startLabel = startAt is { } sl ? labels.Place(sl.X, sl.Y, "start", 12, LabelCorner.BelowRight) : null;
+        LabelSpot? endLabel = endAt is { } el ? labels.Place(el.X, el.Y, "end", 12, LabelCorner.AboveRight) : null;
+        foreach (PathWarning warning in path.Warnings)
+        {
+            if (warning.At is Vector at)
+            {
+                (double sx, double sy) = Screen(at);
+                string text = $"!{warning.Line}";
+                LabelSpot spot = labels.Place(sx, sy, text, 11, LabelCorner.AboveLeft);
                 svg.Append(CultureInfo.InvariantCulture,
                     $"<g class=\"warning\"><title>line {warning.Line}: {Esc(warning.Instruction)} {Esc(warning.Message)}</title>" +
                     $"<circle cx=\"{F(sx)}\" cy=\"{F(sy)}\" r=\"7\" fill=\"none\" stroke=\"{PreviewStyle.WarningColour}\" stroke-width=\"2.5\"/>" +
-                    $"<text x=\"{F(sx - 8)}\" y=\"{F(sy - 8)}\" text-anchor=\"end\" fill=\"{PreviewStyle.WarningColour}\" font-size=\"11\" font-weight=\"700\">!{warning.Line}</text></g>\n");
+                    $"<text x=\"{F(spot.X)}\" y=\"{F(spot.Y)}\" text-anchor=\"{spot.Anchor}\" fill=\"{PreviewStyle.WarningColour}\" font-size=\"11\" font-weight=\"700\">{text}</text></g>\n");
             }
         }
-        if (path.Arms.Count > 0)
+        if (baseAt is { } bx0)
         {
-            (double bx0, double by0) = Screen(Vector.Zero);
-            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"base\"><rect x=\"{F(bx0 - 9)}\" y=\"{F(by0 - 4)}\" width=\"18\" height=\"8\" rx=\"2\" fill=\"#5f6b7a\"/>");
-            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(bx0 - 14)}\" y=\"{F(by0 + 18)}\" class=\"small\">base</text></g>\n");
+            LabelSpot spot = labels.Place(bx0.X, bx0.Y, "base", 11, LabelCorner.Below);
+            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"base\"><rect x=\"{F(bx0.X - 9)}\" y=\"{F(bx0.Y - 4)}\" width=\"18\" height=\"8\" rx=\"2\" fill=\"#5f6b7a\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(spot.X)}\" y=\"{F(spot.Y)}\" text-anchor=\"{spot.Anchor}\" class=\"small\">base</text></g>\n");
         }
-        if (path.Start is Vector start)
+        if (startAt is { } sa && startLabel is { } ss)
         {
-            (double sx, double sy) = Screen(start);
-            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"start\"><circle cx=\"{F(sx)}\" cy=\"{F(sy)}\" r=\"6.5\" fill=\"{PreviewStyle.StartColour}\" stroke=\"#fff\" stroke-width=\"2\"/>");
-            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(sx + 9)}\" y=\"{F(sy + 16)}\" fill=\"{PreviewStyle.StartColour}\" font-size=\"12\" font-weight=\"700\">start</text></g>\n");
+            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"start\"><circle cx=\"{F(sa.X)}\" cy=\"{F(sa.Y)}\" r=\"6.5\" fill=\"{PreviewStyle.StartColour}\" stroke=\"#fff\" stroke-width=\"2\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(ss.X)}\" y=\"{F(ss.Y)}\" text-anchor=\"{ss.Anchor}\" fill=\"{PreviewStyle.StartColour}\" font-size=\"12\" font-weight=\"700\">start</text></g>\n");
         }
-        if (path.End is Vector end)
+        if (endAt is { } ea && endLabel is { } es)
         {
-            (double sx, double sy) = Screen(end);
-            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"end\"><rect x=\"{F(sx - 5.5)}\" y=\"{F(sy - 5.5)}\" width=\"11\" height=\"11\" fill=\"{PreviewStyle.EndColour}\" stroke=\"#fff\" stroke-width=\"2\"/>");
-            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(sx + 9)}\" y=\"{F(sy - 8)}\" fill=\"{PreviewStyle.EndColour}\" font-size=\"12\" font-weight=\"700\">end</text></g>\n");
+            svg.Append(CultureInfo.InvariantCulture, $"<g class=\"end\"><rect x=\"{F(ea.X - 5.5)}\" y=\"{F(ea.Y - 5.5)}\" width=\"11\" height=\"11\" fill=\"{PreviewStyle.EndColour}\" stroke=\"#fff\" stroke-width=\"2\"/>");
+            svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(es.X)}\" y=\"{F(es.Y)}\" text-anchor=\"{es.Anchor}\" fill=\"{PreviewStyle.EndColour}\" font-size=\"12\" font-weight=\"700\">end</text></g>\n");
         }
         svg.Append("</g>\n");
         // Scale bar, bottom left.
@@ -260,32 +287,28 @@ internal static class SvgWriter
         {
             ty += 26;
             svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" font-weight=\"600\" fill=\"{PreviewStyle.WarningColour}\">Warnings</text>\n");
+            // Each warning whole or not at all, and a last line that counts the ones left out: no warning is cut or dropped unsaid.
+            int listed = 0;
             foreach (PathWarning warning in path.Warnings.Take(MaxListedWarnings))
             {
-                ty += 17;
-                if (ty > y + h - 12)
+                IReadOnlyList<string> lines = Wrap($"line {warning.Line}: {warning.Instruction} {warning.Message}", WarningLineLength, MaxWarningLines);
+                double needed = 17 + (14 * (lines.Count - 1)) + (listed + 1 < path.Warnings.Count ? 17 : 0);
+                if (ty + needed > y + h - 8)
                 {
                     break;
                 }
-                string text = $"line {warning.Line}: {warning.Instruction} {warning.Message}";
-                IReadOnlyList<string> lines = Wrap(text, WarningLineLength, MaxWarningLines);
                 for (int i = 0; i < lines.Count; i++)
                 {
-                    if (i > 0)
-                    {
-                        ty += 14;
-                    }
-                    if (ty > y + h - 8)
-                    {
-                        break;
-                    }
+                    ty += i == 0 ? 17 : 14;
                     svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + (i == 0 ? 14 : 26))}\" y=\"{F(ty)}\" class=\"small\">{Esc(lines[i])}</text>\n");
                 }
+                listed++;
             }
-            if (path.Warnings.Count > MaxListedWarnings)
+            if (listed < path.Warnings.Count)
             {
                 ty += 17;
-                svg.Append(CultureInfo.InvariantCulture, $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">… and {path.Warnings.Count - MaxListedWarnings} more</text>\n");
+                svg.Append(CultureInfo.InvariantCulture,
+                    $"<text x=\"{F(x + 14)}\" y=\"{F(ty)}\" class=\"small\">… and {path.Warnings.Count - listed} more (every warning is on the command's output, with its line)</text>\n");
             }
         }
         svg.Append("</g>\n");

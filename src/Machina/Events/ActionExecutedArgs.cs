@@ -16,10 +16,13 @@ public sealed class ActionExecutedArgs : MachinaEventArgs
     /// <summary>The action that was executed.</summary>
     public RobotAction LastAction { get; }
 
-    /// <summary>Actions sent to the controller and not executed yet.</summary>
+    /// <summary>Actions sent to the controller and not executed yet, when this one was reported done.</summary>
     public int PendingExecutionOnDevice { get; }
 
-    /// <summary>All issued actions not executed yet (sent or still waiting).</summary>
+    /// <summary>
+    /// Actions issued so far and not executed yet (sent or still waiting), when this one was reported done: it grows again
+    /// when more actions are issued after it, so it reaches 0 at the end of a program only once the program was all issued.
+    /// </summary>
     public int PendingExecutionTotal { get; }
 
     /// <summary>For a read (<see cref="ActionReadInput"/>), the value the controller read (a digital input: 1 or 0); else null.</summary>
