@@ -15,6 +15,15 @@ MODULE Machina_Driver
     ! Id of the motion request being run, shared with the monitor task: its error trap reports it when a motion error
     ! (event 50050 "Position outside reach" and the rest of the motion domain) stops this task ("$26 id code;").
     PERS num machinaMotionId := 0;
+    ! Robot.Stop: set by the monitor task after it held the motion (StopMove); this task's interrupt on it (IPers) clears the
+    ! path, fails the request under way ("$26 id 4;") and drops every request after it until the host connects again.
+    PERS bool machinaStopRequest := FALSE;
+    ! A user error number (1..90) raised from StopTrap into ExecuteNext's error handler.
+    CONST errnum ERR_MACHINA_STOP := 77;
+    VAR intnum stopInterrupt;
+    ! TRUE while ExecuteNext runs a request; TRUE in discarding from a stop until the next client.
+    VAR bool executing := FALSE;
+    VAR bool discarding := FALSE;
     PERS tooldata cursorTool := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];
     PERS wobjdata cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
 
@@ -79,6 +88,10 @@ MODULE Machina_Driver
         ConfL \Off;
         CirPathMode \PathFrame;
         InitializeState;
+        machinaStopRequest := FALSE;
+        IDelete stopInterrupt;
+        CONNECT stopInterrupt WITH StopTrap;
+        IPers machinaStopRequest, stopInterrupt;
         ServerStart;
         WHILE TRUE DO
             IF requestCount = 0 THEN
@@ -117,6 +130,7 @@ MODULE Machina_Driver
         TPWrite "Machina driver waiting for a client on " + SERVER_IP + ":" + NumToStr(SERVER_PORT, 0);
         SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
         clientConnected := TRUE;
+        discarding := FALSE;
         TPWrite "Machina client connected";
         ResetParser;
         SendHandshake;
@@ -276,6 +290,10 @@ MODULE Machina_Driver
         r := requests{readIndex};
         readIndex := readIndex MOD BUFFER_SIZE + 1;
         requestCount := requestCount - 1;
+        IF discarding THEN
+            RETURN;
+        ENDIF
+        executing := TRUE;
         IF r.code = 1 OR r.code = 2 OR r.code = 3 OR r.code = 30 THEN
             CheckMotion r;
         ENDIF
@@ -380,8 +398,16 @@ MODULE Machina_Driver
         DEFAULT:
             TPWrite "Machina: don't understand action code " + NumToStr(r.code, 0);
         ENDTEST
+        executing := FALSE;
         Acknowledge r;
     ERROR
+        IF ERRNO = ERR_MACHINA_STOP THEN
+            executing := FALSE;
+            TPWrite "Machina: stopped by the host";
+            SendIfConnected "$26 " + NumToStr(r.id, 0) + " 4;";
+            DropRequests;
+            RETURN;
+        ENDIF
         IF ERRNO = ERR_ALIASIO_DEF OR ERRNO = ERR_NO_ALIASIO_DEF THEN
             TPWrite "Machina: could not find signal";
             TPWrite r.s1;
@@ -394,6 +420,32 @@ MODULE Machina_Driver
             Fail r, 3;
         ENDIF
         RAISE;
+    ENDPROC
+
+    ! Robot.Stop (see machinaStopRequest): the path is cleared and motion allowed again, then the request under way fails through
+    ! ExecuteNext's error handler (an error raised by a trap's error handler goes to the routine that was running); when no
+    ! request runs, what is buffered is dropped.
+    TRAP StopTrap
+        IF NOT machinaStopRequest THEN
+            RETURN;
+        ENDIF
+        machinaStopRequest := FALSE;
+        ClearPath;
+        StartMove;
+        IF executing THEN
+            RAISE ERR_MACHINA_STOP;
+        ENDIF
+        DropRequests;
+    ERROR
+        RAISE;
+    ENDTRAP
+
+    ! Forgets every buffered request and ignores what still arrives until the next client: nothing after a stop runs.
+    PROC DropRequests()
+        requestCount := 0;
+        readIndex := writeIndex;
+        lastReceivedId := lastExecutedId;
+        discarding := TRUE;
     ENDPROC
 
     ! Before a move: a speed of 0 would never end, so the driver reports "$26 id 1;" and stops instead of starting it.

@@ -3,6 +3,9 @@ MODULE Machina_Monitor
     ! A TCP server on the driver port + 1 that reports the robot state every monitorUpdateInterval seconds as
     ! "$24 x y z q1 q2 q3 q4>" "j1 ... j6>" "e1 ... e6;", and "$26 id code;" when a motion error stops the driver's
     ! task (its error trap). Placeholders are filled by Machina.
+    ! Out of band, while the driver's task moves, it takes one-character commands from the host: "P" pause (StopMove: the arm
+    ! holds on its path), "R" resume (StartMove), "S" stop (the arm holds, then the driver's task fails the move under way and
+    ! drops everything after it), each answered "$28 n;" once done (1 paused, 2 resumed, 3 stopped).
 
     PERS string SERVER_IP := "{{HOSTNAME}}";
     CONST num MONITOR_PORT := {{PORT}};
@@ -11,6 +14,8 @@ MODULE Machina_Monitor
     PERS num monitorUpdateInterval := {{MONITOR_INTERVAL}};
     ! Id of the driver's motion request being run (set by Machina_Driver before each move).
     PERS num machinaMotionId := 0;
+    ! Set by this task on the host's stop; the driver's task has an interrupt on it (IPers) and clears it.
+    PERS bool machinaStopRequest := FALSE;
     PERS tooldata cursorTool := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [1, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];
     PERS wobjdata cursorWObj := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
 
@@ -36,6 +41,7 @@ MODULE Machina_Monitor
         ServerStart;
         WHILE TRUE DO
             Report;
+            Listen;
             WaitTime monitorUpdateInterval;
         ENDWHILE
     ENDPROC
@@ -83,6 +89,40 @@ MODULE Machina_Monitor
             EXIT;
         ENDIF
         STOP;
+    ENDPROC
+
+    ! Commands waiting on the socket (SocketPeek: none, no wait). StopMove and StartMove act on the motion of every motion task
+    ! from this task without motion (\AllMotionTasks); the motion stops on its path, where the arm is.
+    PROC Listen()
+        VAR string commands;
+        VAR string c;
+        IF SocketPeek(clientSocket) <= 0 THEN
+            RETURN;
+        ENDIF
+        SocketReceive clientSocket \Str:=commands \Time:=1;
+        FOR i FROM 1 TO StrLen(commands) DO
+            c := StrPart(commands, i, 1);
+            IF c = "P" THEN
+                StopMove \AllMotionTasks;
+                SocketSend clientSocket \Str:="$28 1;";
+            ELSEIF c = "R" THEN
+                StartMove \AllMotionTasks;
+                SocketSend clientSocket \Str:="$28 2;";
+            ELSEIF c = "S" THEN
+                StopMove \AllMotionTasks;
+                machinaStopRequest := TRUE;
+                SocketSend clientSocket \Str:="$28 3;";
+            ENDIF
+        ENDFOR
+    ERROR
+        IF ERRNO = ERR_SOCK_CLOSED THEN
+            ServerStart;
+            RETURN;
+        ENDIF
+        IF ERRNO = ERR_SOCK_TIMEOUT THEN
+            RETURN;
+        ENDIF
+        RAISE;
     ENDPROC
 
     ! "$26 id code;": the driver's motion request id could not run; code is the event number (domain * 10000 + number,

@@ -28,8 +28,11 @@ internal static class BridgeEvents
         /// <summary>The bridge failed unexpectedly while handling the message (a bug; it is logged).</summary>
         internal const string Internal = "internal";
 
+        /// <summary>A control (<c>#pause</c>, <c>#resume</c>, <c>#stop</c>) could not be done: not connected to a brand that can, or the controller refused.</summary>
+        internal const string Control = "control";
+
         /// <summary>Every kind above.</summary>
-        internal static readonly IReadOnlyList<string> All = [Parse, Refused, Empty, Frame, Internal];
+        internal static readonly IReadOnlyList<string> All = [Parse, Refused, Empty, Frame, Internal, Control];
     }
 
     private static readonly JsonWriterOptions Options = new() { Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping, Indented = false };
@@ -41,6 +44,14 @@ internal static class BridgeEvents
     internal static string ClientDisconnected(string user) => Write(w =>
     {
         w.WriteString("event", "client-disconnected");
+        w.WriteString("user", user);
+    });
+
+    /// <summary><c>{"event":"control","command":"stop","user":"GH"}</c>: the controller did the control that client sent (pause, resume or stop).</summary>
+    internal static string Control(string command, string user) => Write(w =>
+    {
+        w.WriteString("event", "control");
+        w.WriteString("command", command);
         w.WriteString("user", user);
     });
 

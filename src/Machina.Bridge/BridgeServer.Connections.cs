@@ -389,6 +389,11 @@ public sealed partial class BridgeServer
             Reject(client, BridgeEvents.Error(BridgeEvents.Kinds.Frame, "The message is not UTF-8 text."));
             return;
         }
+        if (Controls.Of(text) is string control)
+        {
+            _ = ControlAsync(client, control);
+            return;
+        }
         FrameResult result;
         try
         {

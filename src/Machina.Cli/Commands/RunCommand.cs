@@ -23,6 +23,9 @@ internal static class RunCommand
         model (--model, or always with --sim) every target checked for reach and joint limits. The robot moves only if the
         whole program passes. When the controller reports that it could not run an action, the run stops with its line.
         Ctrl+C stops cleanly: nothing more is sent, and the actions already sent to the controller are listed.
+        While a program file streams, keys act on the controller at once, even during a move: space pauses the robot
+        (the arm holds where it is) and resumes it; s stops it (the move under way stops where the arm is, nothing
+        after it runs). Keys are read from standard input: press the key, then Enter. Online pause and stop: UR and ABB.
         Online control in this build: {VirtualControllers.AvailableNames}.
 
         Options:
@@ -115,6 +118,8 @@ internal static class RunCommand
         private long? _total;
         private long _executed;
         private int _issuingThread;
+        private volatile bool _userStop;
+        private RunKeys? _keys;
         private InstructionStatement _issuing;
 
         internal async Task<int> RunAsync(string host, int port)
@@ -152,6 +157,13 @@ internal static class RunCommand
                 $"axes {robot.GetCurrentAxes()?.ToString() ?? "unknown"}. " + (_total is long t ? $"{reader.DisplayName} checked: {t} action{(t == 1 ? "" : "s")}" +
                 (model is null ? "" : $", every target within the {model.Name}'s reach and limits") + ". Streaming it..." : $"Streaming {reader.DisplayName}...")).ConfigureAwait(false);
             long issued = 0;
+            RunKeys? keys = null;
+            if (check is not null)
+            {
+                // The program comes from a file, so standard input is free for keys.
+                keys = _keys = RunKeys.Start(robot, context, () => _userStop = true);
+                await context.Stdout.WriteLineAsync(RunKeys.Help).ConfigureAwait(false);
+            }
             try
             {
                 foreach (InstructionStatement statement in reader.Read(context.Cancellation))
@@ -160,10 +172,20 @@ internal static class RunCommand
                     Issue(robot, statement);
                     issued++;
                 }
-                Task done = robot.WaitForCompletionAsync(context.Cancellation);
-                await Task.WhenAny(done, _lost.Task, _failed.Task).ConfigureAwait(false);
-                ThrowIfLost();
-                await done.ConfigureAwait(false);
+                try
+                {
+                    await WhilePausedAsync(async () =>
+                    {
+                        Task done = robot.WaitForCompletionAsync(context.Cancellation);
+                        await Task.WhenAny(done, _lost.Task, _failed.Task).ConfigureAwait(false);
+                        ThrowIfLost();
+                        await done.ConfigureAwait(false);
+                    }).ConfigureAwait(false);
+                }
+                catch (ActionFailedException failure)
+                {
+                    throw _userStop && failure.ControllerCode == "stopped" ? StoppedByUser(failure.Action) : FailedError(failure);
+                }
                 _progress.Update(Interlocked.Read(ref _executed), 0);
                 _progress.Finish();
                 RobotState final = robot.GetExecutedState();
@@ -185,6 +207,10 @@ internal static class RunCommand
                         ? $" {sent.Count} were sent and the controller may still run them (first: {sent[0].ToInstruction()})."
                         : "")).ConfigureAwait(false);
                 throw;
+            }
+            finally
+            {
+                keys?.Finish();
             }
         }
 
@@ -224,7 +250,7 @@ internal static class RunCommand
             ThrowIfLost();
             try
             {
-                await robot.WaitForRoomAsync(Window, context.Cancellation).ConfigureAwait(false);
+                await WhilePausedAsync(() => robot.WaitForRoomAsync(Window, context.Cancellation)).ConfigureAwait(false);
             }
             catch (ActionFailedException failure)
             {
@@ -232,7 +258,7 @@ internal static class RunCommand
             }
             catch (RobotConnectionException lost)
             {
-                throw new CliException($"The connection to the controller was lost: {lost.Message}");
+                throw _userStop ? StoppedByUser() : new CliException($"The connection to the controller was lost: {lost.Message}");
             }
         }
 
@@ -248,6 +274,25 @@ internal static class RunCommand
             return RunCommand.FailedError(reader.DisplayName, known ? statement : null, failure);
         }
 
+        /// <summary>Runs a wait again after a pause (space): a paused robot fails waits at once, which is no reason to end the run.</summary>
+        private async Task WhilePausedAsync(Func<Task> wait)
+        {
+            while (true)
+            {
+                Task changed = _keys?.Changed ?? Task.CompletedTask;
+                try
+                {
+                    await wait().ConfigureAwait(false);
+                    return;
+                }
+                catch (RobotStoppedException) when (_keys is { IsPaused: true })
+                {
+                    await Task.WhenAny(changed, _lost.Task, _failed.Task).WaitAsync(context.Cancellation).ConfigureAwait(false);
+                    ThrowIfLost();
+                }
+            }
+        }
+
         private void ThrowIfLost()
         {
             if (_failed.Task.IsCompletedSuccessfully)
@@ -256,7 +301,7 @@ internal static class RunCommand
             }
             if (_lost.Task.IsCompletedSuccessfully)
             {
-                throw new CliException($"The connection to the controller was lost: {_lost.Task.Result.Message}");
+                throw _userStop ? StoppedByUser() : new CliException($"The connection to the controller was lost: {_lost.Task.Result.Message}");
             }
         }
 
@@ -272,7 +317,27 @@ internal static class RunCommand
         }
 
         /// <summary>The controller could not run an action and stopped: the run stops with the action's line and the controller's reason.</summary>
-        private void OnFailed(ActionFailedArgs e) => _failed.TrySetResult(FailedError(e.Failure));
+        private void OnFailed(ActionFailedArgs e) => _failed.TrySetResult(_userStop && e.Failure.ControllerCode == "stopped"
+            ? StoppedByUser(e.Action)
+            : FailedError(e.Failure));
+
+        /// <summary>The run's end after the s key: where the stopped action was, when one was under way.</summary>
+        private CliException StoppedByUser(RobotAction? action = null)
+        {
+            InstructionStatement statement = default;
+            bool known = false;
+            if (action is not null)
+            {
+                lock (_gate)
+                {
+                    known = _lines.TryGetValue(action, out statement);
+                }
+            }
+            string problem = action is null
+                ? "stopped by the user (s); nothing was running."
+                : $"stopped by the user (s): {action.ToInstruction()} stopped where the arm was and nothing after it ran.";
+            return known ? CliException.At(reader.DisplayName, statement.Line, statement.Column, problem) : new CliException($"{reader.DisplayName}: {problem}");
+        }
 
         private void OnLog(LogEntry entry)
         {

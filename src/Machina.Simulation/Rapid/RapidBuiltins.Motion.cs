@@ -83,6 +83,7 @@ internal static partial class RapidBuiltins
             throw MotionError(call, ex.Message);
         }
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
+        arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
         arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken);
     }
 
@@ -105,6 +106,7 @@ internal static partial class RapidBuiltins
         task.WorkObject = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
         Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
         double seconds = Duration(call, p, (goal.Position - start.Position).Length, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
+        arm.Serve = task.RunPendingTraps;
         arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
     }
 

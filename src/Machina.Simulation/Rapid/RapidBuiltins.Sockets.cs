@@ -148,6 +148,18 @@ internal static partial class RapidBuiltins
             s.Listener?.Stop();
             (s.Connection, s.Listener, s.Bound, s.Status) = (null, null, null, 0);
         }),
+        Function("SocketPeek", "num", [P("Socket", "socketdev")], call =>
+        {
+            Socket connection = Connected(call);
+            try
+            {
+                return (double)connection.Available;
+            }
+            catch (Exception ex) when (ex is ObjectDisposedException or SocketException)
+            {
+                throw call.Error(RapidErrorNumbers.SockClosed, "SocketPeek: the connection is closed");
+            }
+        }),
         Function("SocketGetStatus", "socketstatus", [P("Socket", "socketdev")], call => (double)(Device(call).Status == 0 ? 5 : Device(call).Status)),
     ];
 
@@ -160,6 +172,14 @@ internal static partial class RapidBuiltins
             if (!call.Machine.Task.OrderErrorInterrupt((int)call.Num(3), (int)call.Num(0), number, (int)call.Num(2)))
             {
                 throw call.Error(RapidErrorNumbers.ArgValErr, "IError: the interrupt is not connected to a trap (CONNECT it first)");
+            }
+        }),
+        Instruction("IPers", [P("Name", null, true), P("Interrupt", "intnum")], call =>
+        {
+            RapidCall order = call;
+            if (!call.Machine.Task.OrderPersInterrupt((int)call.Num(1), () => order.Value(0)))
+            {
+                throw call.Error(RapidErrorNumbers.ArgValErr, "IPers: the interrupt is not connected to a trap (CONNECT it first)");
             }
         }),
         Instruction("GetTrapData", [P("TrapEvent", "trapdata", true)], call =>

@@ -61,6 +61,10 @@ internal sealed partial class RapidMachine
         {
             case RapidName n:
                 (n.Global ?? frame!.Cells[n.Slot]).Value = value;
+                if (n.Global is { Storage: RapidStorage.Pers } && Task.Controller.WatchesPersistents)
+                {
+                    Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
+                }
                 break;
             case RapidComponent c:
                 ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index] = value;

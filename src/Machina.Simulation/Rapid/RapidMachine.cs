@@ -25,9 +25,8 @@ internal sealed partial class RapidMachine(RapidTask task)
         int i = 0;
         while (i < body.Count)
         {
-            Task.RunPendingTraps();
             RapidFlow flow = frame.Routine.ErrorHandler is null || frame.Handling is not null
-                ? Execute(body[i], frame)
+                ? ExecuteAfterTraps(body[i], frame)
                 : ExecuteGuarded(body[i], frame);
             if (flow == RapidFlow.Next)
             {
@@ -55,7 +54,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         {
             try
             {
-                return Execute(statement, frame);
+                return ExecuteAfterTraps(statement, frame);
             }
             catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null)
             {
@@ -82,6 +81,16 @@ internal sealed partial class RapidMachine(RapidTask task)
                 }
             }
         }
+    }
+
+    /// <summary>
+    /// Serves the queued interrupts, then runs the statement: an error a trap raises (RAISE in its ERROR handler, RAPID's long jump)
+    /// goes to the handler of the routine that was running, as if the statement had raised it.
+    /// </summary>
+    private RapidFlow ExecuteAfterTraps(RapidStmt statement, RapidFrame frame)
+    {
+        Task.RunPendingTraps();
+        return Execute(statement, frame);
     }
 
     private RapidFlow Execute(RapidStmt statement, RapidFrame frame)

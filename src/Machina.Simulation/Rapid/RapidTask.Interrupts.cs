@@ -11,6 +11,7 @@ internal sealed partial class RapidTask
     private readonly List<(int Interrupt, int Domain, int Number, int Type)> _errorOrders = [];
     private readonly Queue<(RapidRoutine Trap, RapidTrapData Data)> _pending = new();
     private volatile bool _hasPending;
+    private readonly List<(int Interrupt, Func<object> Read, object Last)> _persOrders = [];
     private bool _inTrap;
     private int _nextInterrupt;
 
@@ -54,6 +55,43 @@ internal sealed partial class RapidTask
         }
     }
 
+    /// <summary>
+    /// IPers: interrupt <paramref name="interrupt"/> each time the persistent data <paramref name="read"/> returns changes value (checked
+    /// between statements and when a motion is woken: a PERS write of any task wakes the motion).
+    /// </summary>
+    public bool OrderPersInterrupt(int interrupt, Func<object> read)
+    {
+        lock (_interruptGate)
+        {
+            if (!_connections.ContainsKey(interrupt))
+            {
+                return false;
+            }
+            _persOrders.Add((interrupt, read, RapidValues.Copy(read())));
+            _hasPending = true;
+            Controller.WatchesPersistents = true;
+            return true;
+        }
+    }
+
+    /// <summary>Queues the traps of IPers orders whose data changed since they were last looked at.</summary>
+    private void CheckPersOrders()
+    {
+        lock (_interruptGate)
+        {
+            for (int i = 0; i < _persOrders.Count; i++)
+            {
+                (int interrupt, Func<object> read, object last) = _persOrders[i];
+                object now = read();
+                if (!RapidValues.AreEqual(now, last) && _connections.TryGetValue(interrupt, out RapidRoutine? trap))
+                {
+                    _persOrders[i] = (interrupt, read, RapidValues.Copy(now));
+                    _pending.Enqueue((trap, new RapidTrapData()));
+                }
+            }
+        }
+    }
+
     /// <summary>IDelete: cancels interrupt <paramref name="interrupt"/> (nothing happens for an unknown number, as for a new intnum).</summary>
     public void DeleteInterrupt(int interrupt)
     {
@@ -61,6 +99,7 @@ internal sealed partial class RapidTask
         {
             _connections.Remove(interrupt);
             _errorOrders.RemoveAll(o => o.Interrupt == interrupt);
+            _persOrders.RemoveAll(o => o.Interrupt == interrupt);
         }
     }
 
@@ -87,6 +126,10 @@ internal sealed partial class RapidTask
         {
             return;
         }
+        if (_persOrders.Count > 0)
+        {
+            CheckPersOrders();
+        }
         while (true)
         {
             (RapidRoutine Trap, RapidTrapData Data) next;
@@ -94,7 +137,7 @@ internal sealed partial class RapidTask
             {
                 if (!_pending.TryDequeue(out next))
                 {
-                    _hasPending = false;
+                    _hasPending = _persOrders.Count > 0;
                     return;
                 }
             }
@@ -119,6 +162,7 @@ internal sealed partial class RapidTask
         {
             _connections.Clear();
             _errorOrders.Clear();
+            _persOrders.Clear();
             _pending.Clear();
             _hasPending = false;
         }

@@ -24,7 +24,7 @@ internal sealed partial class RapidTwinController
     {
         Options = options ?? new RapidTwinOptions();
         Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock);
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { Interpolates = true };
         foreach ((string name, string type) in Options.Signals)
         {
             string kind = type.ToLowerInvariant();
@@ -53,6 +53,9 @@ internal sealed partial class RapidTwinController
 
     /// <summary>The arm.</summary>
     public TwinArm Arm { get; }
+
+    /// <summary>True once a task ordered an interrupt on persistent data (IPers): PERS writes then wake the motion.</summary>
+    internal bool WatchesPersistents { get; set; }
 
     /// <summary>The signals of the IO configuration: banks do, di, ao, ai, in the order of the options.</summary>
     public TwinIo Io { get; } = new();

@@ -4,7 +4,7 @@ namespace Machina.Simulation.Twin;
 /// The arm of a twin controller: its model's kinematics (shared with the library), the joints it is at, the active tool centre
 /// point and payload, and a trace of what it did. Language interpreters move it; it refuses what the real arm cannot do.
 /// </summary>
-internal sealed class TwinArm
+internal sealed partial class TwinArm
 {
     private readonly Lock _gate = new();
     private readonly List<TwinTraceEntry> _trace = [];
@@ -35,7 +35,7 @@ internal sealed class TwinArm
         {
             lock (_gate)
             {
-                return _joints;
+                return _moving is { } moving ? moving.At(Clock.Time.GetElapsedTime(moving.Started).TotalSeconds) : _joints;
             }
         }
     }
@@ -106,6 +106,11 @@ internal sealed class TwinArm
     public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true)
     {
         RequireWithinLimits(target);
+        if (Interpolates && Clock.RealTime && seconds > 0)
+        {
+            MoveAlongPath(target, seconds, line, text, cancellation, traced, trace);
+            return;
+        }
         Clock.Wait(seconds, cancellation);
         lock (_gate)
         {

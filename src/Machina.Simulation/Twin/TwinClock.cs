@@ -32,4 +32,13 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
         }
         Interlocked.Add(ref _ticks, span.Ticks);
     }
+
+    /// <summary>Adds <paramref name="seconds"/> of program time that was already waited for (a motion that a hold cut into parts).</summary>
+    public void Add(double seconds)
+    {
+        if (seconds > 0)
+        {
+            Interlocked.Add(ref _ticks, TimeSpan.FromSeconds(Math.Min(seconds, 86_400)).Ticks);
+        }
+    }
 }

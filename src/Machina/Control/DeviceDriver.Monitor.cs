@@ -26,6 +26,9 @@ internal abstract partial class DeviceDriver<TMessage>
         return false;
     }
 
+    /// <summary>Handles a monitor message that is not a pose (e.g. the answer to an out-of-band command); false: not known, the monitor stops.</summary>
+    protected virtual bool TryHandleMonitorMessage(in TMessage message) => false;
+
     /// <summary>A message as the log quotes it when the monitor stops on it.</summary>
     protected virtual string Describe(in TMessage message) => message?.ToString() ?? "";
 
@@ -49,7 +52,7 @@ internal abstract partial class DeviceDriver<TMessage>
                     {
                         driver.Listener?.OnMotion(sample);
                     }
-                    else
+                    else if (!driver.TryHandleMonitorMessage(message))
                     {
                         Stop($"it sent {driver.Describe(message)}");
                     }

@@ -36,6 +36,15 @@ internal sealed class CliRunner : IDisposable
         return new CliResult(exit, stdout.Text, stderr.Text);
     }
 
+    /// <summary>Runs a command line whose standard input is <paramref name="stdin"/> (e.g. keys a test types while it runs).</summary>
+    internal async Task<CliResult> RunAsync(string[] args, TextReader stdin, WatchedWriter stdout)
+    {
+        var stderr = new WatchedWriter();
+        var context = new CliContext(stdin, stdout, stderr, CancellationToken.None, false, null, Folder);
+        int exit = await CliApp.RunAsync(args, context).WaitAsync(TimeSpan.FromMinutes(2));
+        return new CliResult(exit, stdout.Text, stderr.Text);
+    }
+
     /// <summary>The full path of a file in the working folder.</summary>
     internal string PathOf(string name) => Path.Combine(Folder, name);
 

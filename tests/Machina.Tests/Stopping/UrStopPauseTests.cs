@@ -93,17 +93,16 @@ public class UrStopPauseTests
     }
 
     [Fact]
-    public async Task StopAndPause_OnAnAbbRobot_AreNotSupportedYet_WithAClearMessage()
+    public async Task StopAndPause_OnAKukaRobot_AreNotSupportedYet_WithAClearMessage()
     {
-        await using var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true });
-        await controller.StartAsync();
-        Robot bot = await OnlineTestSupport.ConnectAsync(controller);
+        await using VirtualKukaController controller = await KukaTestSupport.StartKukaAsync();
+        (Robot bot, _, _) = await KukaTestSupport.ConnectKukaAsync(controller);
         try
         {
             var stop = await Assert.ThrowsAsync<NotSupportedException>(() => bot.StopAsync());
-            Assert.Equal("Stopping the motion is not available for this brand yet (UR only); ClearPendingActions drops what is not sent.", stop.Message);
+            Assert.Equal("Stopping the motion is not available for this brand yet (UR and ABB only); ClearPendingActions drops what is not sent.", stop.Message);
             var pause = await Assert.ThrowsAsync<NotSupportedException>(() => bot.PauseAsync());
-            Assert.Equal("Pausing is not available for this brand yet (UR only); ClearPendingActions drops what is not sent.", pause.Message);
+            Assert.Equal("Pausing is not available for this brand yet (UR and ABB only); ClearPendingActions drops what is not sent.", pause.Message);
             Assert.Equal(ConnectionState.Connected, bot.ConnectionState);
         }
         finally

@@ -74,5 +74,17 @@ internal sealed partial class AbbDriver
     }
 
     /// <inheritdoc/>
+    /// <remarks>The monitor task's answer to an out-of-band command (<c>$28 n;</c>, see <see cref="PauseAsync"/>).</remarks>
+    protected override bool TryHandleMonitorMessage(in AbbMessage message)
+    {
+        if (message.Kind == AbbMessageKind.Data && message.Code == (int)AbbResponseCode.Control && message.Values.Length == 1)
+        {
+            OnControl((int)message.Values[0]);
+            return true;
+        }
+        return false;
+    }
+
+    /// <inheritdoc/>
     protected override string Describe(in AbbMessage message) => $"\"{message}\"";
 }

@@ -22,12 +22,16 @@ internal static class AbbFailure
     /// <summary>The driver's WaitDI reached its \MaxTime before the input did (RAPID error ERR_WAIT_MAXTIME).</summary>
     public const int WaitTimedOut = 3;
 
+    /// <summary>The monitor task held the motion on the host's stop (Robot.Stop) and the driver failed the request under way; nothing after it runs.</summary>
+    public const int StoppedByHost = 4;
+
     /// <summary>The reason for a failure code, in the controller's words (as its event log or the driver's pendant shows it).</summary>
     public static string Describe(int code) => code switch
     {
         OutsideReach => "Position outside reach (event 50050): the target is outside the robot's working range or a joint would pass its limits.",
         NoSpeed => "The speed is 0: the move would never end, so the driver did not start it.",
         WaitTimedOut => "The input did not reach its value within the time limit (WaitDI \\MaxTime, RAPID error ERR_WAIT_MAXTIME); the driver program stopped.",
+        StoppedByHost => "Stopped by the host (Robot.Stop): the motion stopped on its path and nothing after it ran.",
         RapidError => "A RAPID error stopped the driver program (see the controller's event log).",
         _ => $"The controller reported error {code.ToString(CultureInfo.InvariantCulture)} and stopped the driver program.",
     };

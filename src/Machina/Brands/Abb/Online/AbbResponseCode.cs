@@ -17,4 +17,7 @@ internal enum AbbResponseCode
 
     /// <summary><c>$27 id value;</c>, driver 1.7 on: the value read by the read request with that id, sent just before its acknowledgement.</summary>
     InputRead = 27,
+
+    /// <summary><c>$28 n;</c> from the monitor task: it did the host's out-of-band command (1 paused, 2 resumed, 3 stopped).</summary>
+    Control = 28,
 }

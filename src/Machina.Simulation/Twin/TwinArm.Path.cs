@@ -1,0 +1,202 @@
+namespace Machina.Simulation.Twin;
+
+/// <summary>
+/// The motion path of the arm as a controller's path planner holds it: while a motion runs the arm is part-way (straight in joint
+/// space, at constant speed), a hold (RAPID StopMove) stops it where it is until released (StartMove), a cleared path (ClearPath)
+/// ends the motion where the arm stands, and a wake lets the moving task serve its interrupts.
+/// </summary>
+internal sealed partial class TwinArm
+{
+    private Motion? _moving;
+    private TaskCompletionSource? _held;
+    private CancellationTokenSource _interrupt = new();
+    private bool _clear;
+    private double _heldAfter;
+
+    /// <summary>A motion under way: from, to, when it started (timestamp of the clock's time provider) and how long it takes.</summary>
+    private sealed record Motion(Joints From, Joints To, long Started, double Seconds)
+    {
+        /// <summary>The joints <paramref name="elapsed"/> seconds after the start.</summary>
+        public Joints At(double elapsed)
+        {
+            double f = Seconds > 0 ? Math.Clamp(elapsed / Seconds, 0, 1) : 1;
+            double[] a = From.ToArray(), b = To.ToArray();
+            return new Joints(a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f,
+                a[3] + (b[3] - a[3]) * f, a[4] + (b[4] - a[4]) * f, a[5] + (b[5] - a[5]) * f);
+        }
+    }
+
+    /// <summary>
+    /// True: real-time motions are interpolated (the arm is part-way while it moves) and obey <see cref="Hold"/>, <see cref="Release"/>
+    /// and <see cref="ClearPath"/>. False (the default): the arm is at the start until a motion's time has passed, then at its target.
+    /// </summary>
+    public bool Interpolates { get; init; }
+
+    /// <summary>True while the motion is held (<see cref="Hold"/>).</summary>
+    public bool IsHeld
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _held is not null;
+            }
+        }
+    }
+
+    /// <summary>Holds the motion (RAPID StopMove): a motion under way stops where the arm is; none starts until <see cref="Release"/>. False when already held.</summary>
+    public bool Hold()
+    {
+        lock (_gate)
+        {
+            if (_held is not null)
+            {
+                return false;
+            }
+            _held = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+            if (_moving is { } moving)
+            {
+                // The arm stands where it is now, whenever the moving task gets to it.
+                _heldAfter = Math.Min(Clock.Time.GetElapsedTime(moving.Started).TotalSeconds, moving.Seconds);
+                _joints = moving.At(_heldAfter);
+                _moving = null;
+            }
+            _interrupt.Cancel();
+            return true;
+        }
+    }
+
+    /// <summary>Ends <see cref="Hold"/> (RAPID StartMove): a held motion goes on from where it stopped. False when not held.</summary>
+    public bool Release()
+    {
+        TaskCompletionSource? held;
+        lock (_gate)
+        {
+            held = _held;
+            _held = null;
+        }
+        held?.TrySetResult();
+        return held is not null;
+    }
+
+    /// <summary>Clears the path (RAPID ClearPath): the motion under way ends where the arm stands, without reaching its target.</summary>
+    public void ClearPath()
+    {
+        lock (_gate)
+        {
+            _clear = _moving is not null || _held is not null;
+            _interrupt.Cancel();
+        }
+    }
+
+    /// <summary>Wakes a motion under way so that its task serves an interrupt (the motion goes on).</summary>
+    public void Wake()
+    {
+        lock (_gate)
+        {
+            _interrupt.Cancel();
+        }
+    }
+
+    /// <summary>
+    /// A real-time motion along the path: <paramref name="target"/> in <paramref name="seconds"/>, held and released, ended early by a
+    /// cleared path; <see cref="Serve"/> runs each time the motion is woken (an exception it throws leaves the arm where it stands).
+    /// </summary>
+    private void MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace)
+    {
+        Joints from = Joints;
+        double left = seconds;
+        _clear = false;
+        while (true)
+        {
+            CancellationToken interrupt;
+            Task? held;
+            lock (_gate)
+            {
+                if (_interrupt.IsCancellationRequested)
+                {
+                    _interrupt.Dispose();
+                    _interrupt = new CancellationTokenSource();
+                }
+                interrupt = _interrupt.Token;
+                held = _held?.Task;
+            }
+            Serve?.Invoke();
+            lock (_gate)
+            {
+                if (_clear)
+                {
+                    _clear = false;
+                    Record(line, TwinTraceKind.Motion, text + " (path cleared)");
+                    return;
+                }
+            }
+            using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, interrupt);
+            if (held is not null)
+            {
+                try
+                {
+                    held.Wait(both.Token);
+                }
+                catch (OperationCanceledException) when (!cancellation.IsCancellationRequested)
+                {
+                    // Woken while held: serve the interrupt, then wait again.
+                }
+                continue;
+            }
+            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left);
+            lock (_gate)
+            {
+                _moving = motion;
+            }
+            try
+            {
+                Task.Delay(TimeSpan.FromSeconds(Math.Min(left, 86_400)), Clock.Time, both.Token).GetAwaiter().GetResult();
+                lock (_gate)
+                {
+                    _moving = null;
+                    _joints = target;
+                }
+                Clock.Add(left);
+                if (trace)
+                {
+                    Record(line, TwinTraceKind.Motion, text, traced);
+                }
+                return;
+            }
+            catch (OperationCanceledException) when (!cancellation.IsCancellationRequested)
+            {
+                double elapsed;
+                lock (_gate)
+                {
+                    if (ReferenceEquals(_moving, motion))
+                    {
+                        elapsed = Math.Min(Clock.Time.GetElapsedTime(motion.Started).TotalSeconds, left);
+                        _moving = null;
+                        _joints = motion.At(elapsed);
+                    }
+                    else
+                    {
+                        elapsed = _heldAfter; // a hold stopped it and put the arm where it stands
+                    }
+                    from = _joints;
+                }
+                Clock.Add(elapsed);
+                left -= elapsed;
+            }
+            finally
+            {
+                lock (_gate)
+                {
+                    if (ReferenceEquals(_moving, motion))
+                    {
+                        _moving = null;
+                    }
+                }
+            }
+        }
+    }
+
+    /// <summary>What the moving task does when its motion is woken (RAPID: serve its interrupts); null: nothing.</summary>
+    public Action? Serve { get; set; }
+}

@@ -1,0 +1,79 @@
+namespace Machina;
+
+internal sealed partial class AbbDriver
+{
+    /// <summary>How long the monitor task has to answer an out-of-band command (it looks for them between two state reports).</summary>
+    private static readonly TimeSpan ControlTimeout = TimeSpan.FromSeconds(10);
+
+    private readonly object _controlGate = new();
+    private (int Expected, TaskCompletionSource Done)? _control;
+
+    /// <inheritdoc/>
+    /// <remarks>
+    /// "P" on the monitor connection: the monitor task runs <c>StopMove \AllMotionTasks</c>, the motion holds on its path where
+    /// the arm is, and answers <c>$28 1;</c>. <see cref="ResumeAsync"/> sends "R" (<c>StartMove</c>): the held move goes on.
+    /// </remarks>
+    public Task PauseAsync(CancellationToken cancellationToken) => ControlAsync('P', 1, "pause", cancellationToken);
+
+    /// <inheritdoc/>
+    public Task ResumeAsync(CancellationToken cancellationToken) => ControlAsync('R', 2, "resume", cancellationToken);
+
+    /// <inheritdoc/>
+    /// <remarks>
+    /// "S" on the monitor connection: the monitor task holds the motion (<c>StopMove \AllMotionTasks</c>), sets the persistent
+    /// <c>machinaStopRequest</c> and answers <c>$28 3;</c>; the driver's interrupt on it clears the path, fails the request under
+    /// way (<c>$26 id 4;</c>) and drops the rest until the host connects again.
+    /// </remarks>
+    public Task StopMotionAsync(CancellationToken cancellationToken) => ControlAsync('S', 3, "stop", cancellationToken);
+
+    /// <summary>Sends one command to the monitor task and waits for its answer.</summary>
+    private async Task ControlAsync(char command, int answer, string what, CancellationToken cancellationToken)
+    {
+        TcpLink monitor = _monitor ?? throw new NotSupportedException(
+            $"Cannot {what} this ABB robot: its monitor task is not running (the controller needs the Multitasking option and machina_abb_monitor on the next port).");
+        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        lock (_controlGate)
+        {
+            if (_control is not null)
+            {
+                throw new InvalidOperationException($"Cannot {what} now: the controller has not answered the command before it yet.");
+            }
+            _control = (answer, done);
+        }
+        try
+        {
+            monitor.Post([(byte)command]);
+            await done.Task.WaitAsync(ControlTimeout, Time, cancellationToken).ConfigureAwait(false);
+        }
+        catch (TimeoutException)
+        {
+            throw new RobotStoppedException($"The ABB monitor task did not answer the {what} command within {Num.G(ControlTimeout.TotalSeconds)} s (is machina_abb_monitor 1.6 or later loaded?).");
+        }
+        finally
+        {
+            lock (_controlGate)
+            {
+                _control = null;
+            }
+        }
+    }
+
+    /// <summary>A <c>$28 n;</c> from the monitor task: the command it answers is done.</summary>
+    private void OnControl(int done)
+    {
+        TaskCompletionSource? waiter = null;
+        lock (_controlGate)
+        {
+            if (_control is (int expected, TaskCompletionSource tcs) && expected == done)
+            {
+                waiter = tcs;
+            }
+        }
+        if (waiter is null)
+        {
+            Log.Debug($"Ignored from the monitor: $28 {done};");
+            return;
+        }
+        waiter.TrySetResult();
+    }
+}
