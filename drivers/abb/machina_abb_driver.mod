@@ -117,9 +117,18 @@ MODULE Machina_Driver
         isMachinaDriverAvailable := TRUE;
     ENDPROC
 
-    ! After a lost client the server socket still listens: only the client socket is closed, so that a host reconnecting while
-    ! this task ran its buffer waits in the listen queue (closing the server socket would reset that connection).
+    ! Waits for a client that takes the handshake.
     PROC ServerStart()
+        clientConnected := FALSE;
+        WHILE NOT clientConnected DO
+            AcceptClient;
+        ENDWHILE
+    ENDPROC
+
+    ! After a lost client the server socket still listens: only the client socket is closed, so that a host reconnecting while
+    ! this task ran its buffer waits in the listen queue (closing the server socket would reset that connection). A client that
+    ! left before its handshake was written (a host that gave up waiting in that queue) is closed, and the next one accepted.
+    PROC AcceptClient()
         SocketClose clientSocket;
         IF SocketGetStatus(serverSocket) <> SOCKET_LISTENING THEN
             SocketClose serverSocket;
@@ -129,14 +138,17 @@ MODULE Machina_Driver
         ENDIF
         TPWrite "Machina driver waiting for a client on " + SERVER_IP + ":" + NumToStr(SERVER_PORT, 0);
         SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
-        clientConnected := TRUE;
         discarding := FALSE;
         TPWrite "Machina client connected";
         ResetParser;
         SendHandshake;
+        clientConnected := TRUE;
     ERROR
         IF ERRNO = ERR_SOCK_TIMEOUT THEN
             RETRY;
+        ELSEIF ERRNO = ERR_SOCK_CLOSED THEN
+            TPWrite "Machina client left before its handshake";
+            RETURN;
         ENDIF
         RAISE;
     ENDPROC

@@ -1,36 +1,15 @@
-using System.Net.Sockets;
-using System.Text;
-
 namespace Machina.Simulation;
 
 public sealed partial class VirtualAbbController
 {
-    /// <summary>
-    /// Sends <c>$24</c> reports in three chunks, like the RAPID monitor, until the client leaves or the controller stops; a failure
-    /// report (<c>$26</c>, from the monitor's error trap) goes out before the next report.
-    /// </summary>
-    private async Task ReportAsync(NetworkStream stream, CancellationToken token)
-    {
-        try
-        {
-            while (true)
-            {
-                if (TakeFailureReport() is string failure)
-                {
-                    await stream.WriteAsync(Encoding.ASCII.GetBytes(failure), token).ConfigureAwait(false);
-                }
-                var state = State;
-                var (pose, joints, axes) = AbbMessageFormat.MonitorChunks(state.Position, state.Rotation, state.Joints, state.ExternalAxesCartesian);
-                await stream.WriteAsync(Encoding.ASCII.GetBytes(pose), token).ConfigureAwait(false);
-                await stream.WriteAsync(Encoding.ASCII.GetBytes(joints), token).ConfigureAwait(false);
-                await stream.WriteAsync(Encoding.ASCII.GetBytes(axes), token).ConfigureAwait(false);
-                Interlocked.Increment(ref _monitorReportsSent);
-                await Task.Delay(MonitorPeriod, Clock, token).ConfigureAwait(false);
-            }
-        }
-        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
-        {
-            // Client gone or stopping: wait for the next client.
-        }
-    }
+    private int _monitorReportsSent;
+
+    /// <summary>How many state reports (<c>$24</c>) the monitor task has sent on the monitor port.</summary>
+    public int MonitorReportsSent => Volatile.Read(ref _monitorReportsSent);
+
+    /// <summary>Time between two monitor reports now: the driver's <c>monitorUpdateInterval</c> (changed by request 103).</summary>
+    public TimeSpan MonitorPeriod =>
+        Twin is { } twin && twin.Persistents.TryGetValue("monitorUpdateInterval", out var cell) && cell.Value is double seconds && seconds > 0
+            ? TimeSpan.FromSeconds(seconds)
+            : _options.MonitorPeriod;
 }

@@ -6,7 +6,7 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualAbbController
 {
-    /// <summary>The RAPID controller that runs Machina's driver and monitor modules (<see cref="VirtualAbbControllerOptions.RunsRapid"/>), else null.</summary>
+    /// <summary>The RAPID controller that runs Machina's driver and monitor modules, once started; else null.</summary>
     internal RapidTwinController? Twin { get; private set; }
 
     /// <summary>
@@ -31,6 +31,10 @@ public sealed partial class VirtualAbbController
         {
             string text = DriverFiles.Fill(DriverFiles.Read(file),
                 ("HOSTNAME", "127.0.0.1"), ("PORT", port.ToString(CultureInfo.InvariantCulture)), ("MONITOR_INTERVAL", interval));
+            if (task == RapidTwinController.MotionTask)
+            {
+                text = AsDriverVersion(text, _options.DriverVersion);
+            }
             twin.Task(task).Load([(file, text)]);
         }
         twin.Pendant.Logged += line =>
@@ -48,6 +52,23 @@ public sealed partial class VirtualAbbController
         twin.Reserve(monitor);
         Twin = twin;
         twin.StartTasks();
+    }
+
+    /// <summary>
+    /// The driver module as <paramref name="version"/> had it: its version constants, and below 1.6 without the progress report
+    /// (<c>$25</c>) in its handshake, which came in 1.6. The shipped version leaves the module as it is.
+    /// </summary>
+    private static string AsDriverVersion(string module, Version version)
+    {
+        if (version == VirtualAbbControllerOptions.ShippedDriverVersion)
+        {
+            return module;
+        }
+        var lines = module.Split('\n').Where(line => version >= new Version(1, 6) || !line.Contains("\"$25 \"", StringComparison.Ordinal));
+        return string.Join('\n', lines)
+            .Replace("DRIVER_VERSION_MAJOR := \"1\"", $"DRIVER_VERSION_MAJOR := \"{version.Major}\"", StringComparison.Ordinal)
+            .Replace("DRIVER_VERSION_MINOR := \"6\"", $"DRIVER_VERSION_MINOR := \"{version.Minor}\"", StringComparison.Ordinal)
+            .Replace("DRIVER_VERSION_PATCH := \"0\"", $"DRIVER_VERSION_PATCH := \"{Math.Max(0, version.Build)}\"", StringComparison.Ordinal);
     }
 
     /// <summary>The arm the RAPID twin moves when the options give no model: it reaches the targets of the examples (Hello Robot).</summary>

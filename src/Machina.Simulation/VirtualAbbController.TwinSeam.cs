@@ -20,6 +20,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     private readonly StringBuilder _statement = new();
     private bool _inText;
     private Socket? _driverSocket;
+    private RapidInbox? _driverInbox;
     private Socket? _monitorSocket;
 
     /// <summary>A request the driver task read, from the client of <paramref name="generation"/>; its acknowledgement once the driver writes one.</summary>
@@ -54,6 +55,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
             _inText = false;
             orphans = [.. _awaiting];
             _awaiting.Clear();
+            _driverInbox = null;
         }
         // The driver accepts again only once it ran everything it read (its ReadRequests found the link closed): what the last client
         // sent and was not acknowledged ran while nobody listened. It counts as executed, without an acknowledgement.
@@ -64,10 +66,86 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         var client = new TcpClient();
         client.Client.Dispose();
         client.Client = connection;
-        return AttachClientAsync(client, (_, _) => Task.CompletedTask, task).GetAwaiter().GetResult();
+        if (!AttachClientAsync(client, (_, _) => Task.CompletedTask, task).GetAwaiter().GetResult())
+        {
+            return false;
+        }
+        var inbox = new RapidInbox();
+        lock (Gate)
+        {
+            _driverInbox = inbox;
+        }
+        Run(token => ReadDriverAsync(connection, inbox, token));
+        return true;
+    }
+
+    void IRapidSocketSeam.Closed(Socket connection, CancellationToken task)
+    {
+        TwinRequest[] ran;
+        lock (Gate)
+        {
+            if (!ReferenceEquals(connection, _driverSocket))
+            {
+                return;
+            }
+            ran = [.. _awaiting];
+            _awaiting.Clear();
+        }
+        // The driver reads only once it ran what it read: finding the link closed, it ran every request it read, and those it
+        // could not acknowledge (the link was gone) ran while nobody listened. They count as executed, without an acknowledgement.
+        foreach (TwinRequest r in ran)
+        {
+            CompleteReceivedOnCaller(r, Math.Max(r.Id, 0), r.Generation, runs: true, task);
+        }
+    }
+
+    RapidInbox? IRapidSocketSeam.Inbox(Socket connection)
+    {
+        lock (Gate)
+        {
+            return ReferenceEquals(connection, _driverSocket) ? _driverInbox : null;
+        }
     }
 
     void IRapidSocketSeam.Received(Socket connection, string text, CancellationToken task)
+    {
+        // The driver's connection is read by ReadDriverAsync; the monitor's receives nothing the controller counts.
+    }
+
+    /// <summary>
+    /// Reads the driver connection as data arrives, as a controller's network stack does: each statement is counted received
+    /// (and buffered until its acknowledgement) on arrival, and the text waits in <paramref name="inbox"/> until the driver's
+    /// SocketReceive takes it, 80 characters at a time. When the host closes, what arrived stays readable.
+    /// </summary>
+    private async Task ReadDriverAsync(Socket connection, RapidInbox inbox, CancellationToken token)
+    {
+        var buffer = new byte[4096];
+        try
+        {
+            while (true)
+            {
+                int n = await connection.ReceiveAsync(buffer, SocketFlags.None, token).ConfigureAwait(false);
+                if (n == 0)
+                {
+                    return;
+                }
+                string text = Encoding.Latin1.GetString(buffer, 0, n);
+                CountStatements(connection, text);
+                inbox.Add(text);
+            }
+        }
+        catch (Exception e) when (e is SocketException or ObjectDisposedException or OperationCanceledException)
+        {
+            // Closed by the host, by a fault or by the controller stopping.
+        }
+        finally
+        {
+            inbox.Close();
+        }
+    }
+
+    /// <summary>Counts each complete statement of <paramref name="text"/> received (a ';' outside a quoted text ends one).</summary>
+    private void CountStatements(Socket connection, string text)
     {
         lock (Gate)
         {

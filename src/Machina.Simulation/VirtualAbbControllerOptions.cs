@@ -10,19 +10,25 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
         InitialJoints = new Joints(0, 0, 0, 0, 90, 0);
     }
 
-    /// <summary>External axes at start. Default: none (reported as 9E9).</summary>
+    /// <summary>External axes at start. The twin's arm has none: only the default (none, reported as 9E9) is accepted.</summary>
     public ExternalAxes InitialExternalAxes { get; init; } = ExternalAxes.None;
 
     /// <summary>Time between two state reports on the monitor port. Default 20 ms (50 Hz).</summary>
     public TimeSpan MonitorPeriod { get; init; } = TimeSpan.FromMilliseconds(20);
 
-    /// <summary>Driver version sent in the handshake. Default 1.6.0, the version of Machina's RAPID driver; below 1.6 the handshake has no progress (<c>$25</c>).</summary>
-    public Version DriverVersion { get; init; } = new(1, 6, 0);
+    /// <summary>
+    /// Version of the RAPID driver the controller runs. Default 1.6.0, the shipped driver; an older 1.x runs it as that version
+    /// spoke: its version in the handshake and, below 1.6, no progress report (<c>$25</c>). Newer versions are refused.
+    /// </summary>
+    public Version DriverVersion { get; init; } = ShippedDriverVersion;
+
+    /// <summary>The version of the driver in drivers/abb (its DRIVER_VERSION constants).</summary>
+    internal static Version ShippedDriverVersion { get; } = new(1, 6, 0);
 
     /// <summary>
-    /// True (default): the controller runs Machina's RAPID driver and monitor (drivers/abb) on a RAPID interpreter, in two tasks, as
-    /// an IRC5 would, on <c>Model</c> (an IRB 1600-8/1.45 when null); faults and inspection act on the driver task's socket. False: Machina's
-    /// driver is imitated in C# (to be removed).
+    /// Always true: the controller runs Machina's RAPID driver and monitor (drivers/abb) on a RAPID interpreter, in two tasks, as
+    /// an IRC5 would, on <c>Model</c> (an IRB 1600-8/1.45 when null); faults and inspection act on the driver task's socket. False
+    /// is refused: the C# imitation of the driver it chose was removed.
     /// </summary>
     public bool RunsRapid { get; init; } = true;
 
@@ -37,5 +43,17 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
             throw new ArgumentException("MonitorPeriod must be positive.", nameof(MonitorPeriod));
         }
         ArgumentNullException.ThrowIfNull(DriverVersion);
+        if (!RunsRapid)
+        {
+            throw new ArgumentException("The virtual ABB always runs the RAPID driver (its C# imitation was removed): leave RunsRapid true.", nameof(RunsRapid));
+        }
+        if (InitialExternalAxes != ExternalAxes.None)
+        {
+            throw new ArgumentException("The virtual ABB's arm has no external axes (the RAPID twin reports 9E9): leave InitialExternalAxes at none.", nameof(InitialExternalAxes));
+        }
+        if (DriverVersion.Major != 1 || DriverVersion > ShippedDriverVersion)
+        {
+            throw new ArgumentException($"The virtual ABB runs Machina's RAPID driver {ShippedDriverVersion} or an older 1.x as it spoke, not {DriverVersion}.", nameof(DriverVersion));
+        }
     }
 }

@@ -21,8 +21,6 @@ internal static class Catalog
         scenarios.Add(new UrTwinLoadScenario());
         scenarios.Add(new KrlTwinStreamScenario());
         scenarios.Add(new KrlTwinStreamScenario(wideWindow: false));
-        scenarios.Add(new StreamScenario(wideWindow: false, twin: true));
-        scenarios.Add(new StreamScenario(wideWindow: true, twin: true));
         scenarios.Add(new RapidLoadScenario());
 #else
         scenarios.Add(new MissingScenario("stream", "Stream moves to the virtual ABB controller", 100_000, StreamTarget, "the virtual ABB controller is not in this build."));

@@ -14,6 +14,15 @@ internal interface IRapidSocketSeam
     /// <summary>The program received <paramref name="text"/> on <paramref name="connection"/> (SocketReceive returns it next).</summary>
     void Received(Socket connection, string text, CancellationToken task);
 
+    /// <summary>SocketReceive found <paramref name="connection"/> closed: the program read everything it will read from it.</summary>
+    void Closed(Socket connection, CancellationToken task);
+
+    /// <summary>
+    /// What the controller already read from <paramref name="connection"/> for the program (SocketReceive takes from it, and
+    /// <see cref="Received"/> is not called), or null when the program reads the socket itself.
+    /// </summary>
+    RapidInbox? Inbox(Socket connection);
+
     /// <summary>The program sends <paramref name="bytes"/> on <paramref name="connection"/>; false when the connection is closed (ERR_SOCK_CLOSED).</summary>
     bool Send(Socket connection, byte[] bytes, CancellationToken task);
 }

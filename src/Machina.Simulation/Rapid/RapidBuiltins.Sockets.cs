@@ -109,6 +109,32 @@ internal static partial class RapidBuiltins
             {
                 throw ArgumentError(call, "SocketReceive: the twin receives \\Str only");
             }
+            double seconds = call.Has(6) ? call.Num(6) : DefaultSocketSeconds;
+            IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
+            if (seam?.Inbox(connection) is { } inbox)
+            {
+                // The controller read the socket already: take what it holds, as from a network stack's buffer.
+                string? taken;
+                while ((taken = inbox.TryTake(RapidMachine.MaxStringLength, out Task arrival)) is null)
+                {
+                    if (!Wait(call, arrival, seconds))
+                    {
+                        throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
+                    }
+                }
+                if (taken.Length == 0)
+                {
+                    seam.Closed(connection, call.Machine.Task.CancellationToken);
+                    Device(call).Status = 5;
+                    throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
+                }
+                call.Set(1, taken);
+                if (call.Has(5))
+                {
+                    call.Set(5, (double)taken.Length);
+                }
+                return;
+            }
             var buffer = new byte[RapidMachine.MaxStringLength];
             int count = ReceiveReady(connection, buffer);
             if (count < 0)
@@ -122,7 +148,7 @@ internal static partial class RapidBuiltins
                 {
                     receive = Task.FromResult(0); // closed by the controller (a fault a test injected): as closed by the other end
                 }
-                if (!Wait(call, receive, call.Has(6) ? call.Num(6) : DefaultSocketSeconds))
+                if (!Wait(call, receive, seconds))
                 {
                     throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
                 }
@@ -130,11 +156,12 @@ internal static partial class RapidBuiltins
             }
             if (count == 0)
             {
+                seam?.Closed(connection, call.Machine.Task.CancellationToken);
                 Device(call).Status = 5;
                 throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
             }
             string text = Encoding.Latin1.GetString(buffer, 0, count);
-            call.Machine.Task.Controller.Options.Seam?.Received(connection, text, call.Machine.Task.CancellationToken);
+            seam?.Received(connection, text, call.Machine.Task.CancellationToken);
             call.Set(1, text);
             if (call.Has(5))
             {
@@ -144,6 +171,16 @@ internal static partial class RapidBuiltins
         Instruction("SocketClose", [P("Socket", "socketdev")], call =>
         {
             RapidSocketDevice s = Device(call);
+            try
+            {
+                // A graceful close (FIN), also while the controller's network stack still waits for data on it (a socket disposed
+                // with a receive pending would be reset).
+                s.Connection?.Shutdown(SocketShutdown.Both);
+            }
+            catch (Exception e) when (e is SocketException or ObjectDisposedException)
+            {
+                // Already closed or reset by the other end.
+            }
             s.Connection?.Dispose();
             s.Listener?.Stop();
             (s.Connection, s.Listener, s.Bound, s.Status) = (null, null, null, 0);

@@ -313,6 +313,12 @@ internal sealed partial class RapidParser
         if (Peek.IsSymbol("-") || Peek.IsSymbol("+"))
         {
             RapidToken op = Next();
+            if (Peek.Kind == RapidTokenKind.Number && Peek.Number != 0)
+            {
+                // A signed number literal (-30 in a robtarget) is one literal, as its value and type are the same: one node fewer.
+                RapidToken number = Next();
+                return NumberLiteral(number.Line, op.Text == "-" ? -number.Number : number.Number);
+            }
             return new RapidUnary(op.Line, op.Text, Unary());
         }
         return Primary();
@@ -324,7 +330,7 @@ internal sealed partial class RapidParser
         switch (t.Kind)
         {
             case RapidTokenKind.Number:
-                return new RapidLiteral(t.Line, Boxed(t.Number));
+                return NumberLiteral(t.Line, t.Number);
             case RapidTokenKind.String:
                 return new RapidLiteral(t.Line, t.Text);
             case RapidTokenKind.Name when t.Is("TRUE") || t.Is("FALSE"):

@@ -23,6 +23,10 @@ internal sealed partial class RapidParser
     // One boxed value per number: a compiled module repeats the same few numbers (0, 1, 9E9…) hundreds of thousands of times.
     private readonly Dictionary<double, object> _numbers = [];
 
+    // The number literals of the line being read (see NumberLiteral).
+    private readonly Dictionary<double, RapidLiteral> _lineLiterals = [];
+    private int _literalLine = -1;
+
     // Lists for the items of aggregates and the arguments of calls being read, kept for the next ones (one per nesting level).
     private readonly Stack<List<RapidExpr>> _spareItems = new();
     private readonly Stack<List<RapidArg>> _spareArgs = new();
@@ -52,6 +56,25 @@ internal sealed partial class RapidParser
             }
         }
         return boxed;
+    }
+
+    /// <summary>
+    /// A number literal, one node per value and line: a compiled robtarget repeats 0, 1 and 9E9 on its line, and a literal's
+    /// type (num) and line (for a refusal) are the same wherever it stands on that line.
+    /// </summary>
+    private RapidLiteral NumberLiteral(int line, double value)
+    {
+        if (line != _literalLine)
+        {
+            _lineLiterals.Clear();
+            _literalLine = line;
+        }
+        if (!_lineLiterals.TryGetValue(value, out RapidLiteral? literal))
+        {
+            literal = new RapidLiteral(line, Boxed(value));
+            _lineLiterals[value] = literal;
+        }
+        return literal;
     }
 
     private void Advance()

@@ -121,8 +121,8 @@ internal sealed class StreamProcessScenario : ProcessScenario
         var rates = new List<double>();
         for (int i = 0; i < runs; i++)
         {
-            // The C# imitation (RunsRapid = false), as this row always measured, until it is deleted.
-            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, RunsRapid = false });
+            // The RAPID twin runs the driver modules; an IRB 1600 reaches every point the child streams to.
+            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = RobotModels.Get("IRB 1600-8/1.45") });
             try
             {
                 controller.StartAsync().GetAwaiter().GetResult();

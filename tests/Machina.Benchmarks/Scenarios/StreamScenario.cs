@@ -6,8 +6,8 @@ namespace Machina.Benchmarks;
 /// Streams moves online to a virtual controller (ABB, or UR with <paramref name="ur"/>) on loopback that executes every
 /// instruction at once, and times from the first issued move until the controller has acknowledged the last one. With
 /// <paramref name="wideWindow"/> the release window is widened (100 actions per block) to show what the link can carry;
-/// otherwise the defaults are used. With <paramref name="twin"/> the virtual UR runs the driver script on its URScript interpreter, the
-/// virtual ABB the driver and monitor modules on its RAPID interpreter.
+/// otherwise the defaults are used. With <paramref name="twin"/> the virtual UR runs the driver script on its URScript interpreter; the
+/// virtual ABB always runs the driver and monitor modules on its RAPID interpreter (its C# imitation is gone).
 /// </summary>
 internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin = false) : Scenario
 {
@@ -19,7 +19,7 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin
     public override string Title => $"Stream moves to the virtual {(ur ? "UR" : "ABB")} controller{TwinText}, instant execution, "
         + (wideWindow ? "window 100/100" : "default window");
 
-    private string TwinText => !twin ? "" : ur ? " running the driver script" : " running the driver modules";
+    private string TwinText => !ur ? " running the driver modules" : twin ? " running the driver script" : "";
 
     public override int TargetSize => 100_000;
 
@@ -41,9 +41,7 @@ internal sealed class StreamScenario(bool wideWindow, bool ur = false, bool twin
         else
         {
             // The RAPID twin runs the driver modules on a model; an IRB 1600 reaches every point of the square below.
-            var options = new VirtualAbbControllerOptions { InstantExecution = true };
-            // Without the twin: the C# imitation (RunsRapid = false), as this row always measured, until it is deleted.
-            var controller = new VirtualAbbController(twin ? options with { RunsRapid = true, Model = RobotModels.Get("IRB 1600-8/1.45") } : options with { RunsRapid = false });
+            var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true, Model = RobotModels.Get("IRB 1600-8/1.45") });
             controller.StartAsync().GetAwaiter().GetResult();
             (_controller, port) = (controller, controller.Port);
         }

@@ -14,12 +14,6 @@ public class SimulationCodecTests
     /// <summary>File → host types it still uses. Remove entries as the imitations are replaced; never add one.</summary>
     private static readonly Dictionary<string, string[]> AllowList = new(StringComparer.Ordinal)
     {
-        ["AbbRequestParser.cs"] = ["AbbRequest"],
-        ["VirtualAbbController.cs"] = ["AbbDriverVersion", "AbbMessageFormat"],
-        ["VirtualAbbController.Execution.cs"] = ["AbbInstructionCode", "AbbMessageFormat", "AbbRequest"],
-        ["VirtualAbbController.Failures.cs"] = ["AbbFailure"],
-        ["VirtualAbbController.Faults.cs"] = ["AbbMessageFormat", "AbbRequest"],
-        ["VirtualAbbController.Monitor.cs"] = ["AbbMessageFormat"],
     };
 
     private static readonly Regex Declaration = new(

@@ -53,9 +53,9 @@ public class AbbOnlineTests
     [Fact]
     public async Task Release_BlockSizeFourPendingTwo_ControllerNeverHoldsMoreThanFive()
     {
-        // The imitation (RunsRapid = false) reads every block at once; the RAPID driver reads 80 characters at a time, and only
-        // when it has run what it read, so what it holds while paused is not the host's window.
-        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, RunsRapid = false });
+        // What the host releases while the controller does not answer is its window: one block. The controller's network
+        // stack receives it whole (the RAPID driver then reads it 80 characters at a time, once it ran what it read).
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true });
         Robot bot = await ConnectAsync(controller, b => { b.BlockSize = 4; b.PendingCount = 2; });
         controller.StopAnswering();
         bot.MoveTo(400, 0, 400);
@@ -65,6 +65,8 @@ public class AbbOnlineTests
         }
         await EventuallyAsync(() => controller.RequestsReceived >= 4, "the first block");
         Assert.Equal(4, controller.RequestsReceived);     // one block, then the window is closed
+        Assert.Equal(4, bot.GetReleasedState().LastAction!.Id);
+        Assert.Equal(0, controller.AcknowledgementsSent);
         Assert.Equal(40, bot.GetPendingActions().Count);
 
         controller.ResumeAnswering();
@@ -99,8 +101,8 @@ public class AbbOnlineTests
         // until the host has seen the report it caused: the order of events is then the same on every machine.
         var clock = new ManualClock();
         var period = TimeSpan.FromMilliseconds(10);
-        // The imitation (RunsRapid = false): its monitor counts each report it sends for this step-by-step clock.
-        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { MonitorPeriod = period, TimeProvider = clock, Model = null, RunsRapid = false });
+        // The monitor task's reports are counted as they reach its socket, for this step-by-step clock.
+        await using var controller = await StartControllerAsync(new VirtualAbbControllerOptions { MonitorPeriod = period, TimeProvider = clock, Model = null });
         var log = new ConcurrentQueue<(string Kind, int Id, Vector? Position)>();
         int updates = 0;
         Robot bot = await ConnectAsync(controller, b =>
@@ -132,13 +134,15 @@ public class AbbOnlineTests
         Assert.True(e3 >= 0 && e4 > e3);
         var between = events.Skip(e3 + 1).Take(e4 - e3 - 1).ToList();
         Assert.All(between, x => Assert.Equal("M", x.Kind));
-        // 100 mm at 200 mm/s is 0.5 s, so 50 periods: the moving robot is reported on the segment from (500, 0, 500)
-        // to (500, 100, 500), 2 mm further each period. The reports sent in the same clock step as an acknowledgement
+        // 100 mm at 200 mm/s is 0.5 s, so about 50 periods, each with its report. The twin's arm reaches a move's target at its
+        // end (no pose in between: docs/simulation.md, what differs from an IRC5), so every report shows the start of the
+        // segment, (500, 0, 500), or its end, (500, 100, 500); reports sent in the same clock step as an acknowledgement
         // travel on another socket and may arrive on either side of it, hence the range.
-        var moving = between.Select(x => x.Position!.Value).Where(p => p.Y is > 1e-9 and < 100 - 1e-9).ToList();
-        Assert.InRange(moving.Count, 49, 50);
-        Assert.All(moving, p => Assert.Equal((500.0, 500.0), (Math.Round(p.X, 9), Math.Round(p.Z, 9))));
-        Assert.All(moving.Zip(moving.Skip(1)), pair => Assert.Equal(2.0, pair.Second.Y - pair.First.Y, 6));
+        Assert.InRange(between.Count, 49, 60);
+        Assert.All(between, x => Assert.True(
+            x.Position!.Value.IsSimilar(new Vector(500, 0, 500), 1e-3) || x.Position!.Value.IsSimilar(new Vector(500, 100, 500), 1e-3),
+            x.Position!.Value.ToString()));
+        Assert.True(between.Count(x => x.Position!.Value.IsSimilar(new Vector(500, 0, 500), 1e-3)) >= 48, "the arm is at the start while it moves");
         Assert.NotNull(bot.GetMotionState());
     }
 
@@ -331,14 +335,14 @@ public class AbbOnlineWireTests
     [Fact]
     public async Task Connect_Handshake_PoseJointsAndExternalAxesInEveryCursorAndMotionUpdates()
     {
+        // The driver reports the joints its arm has and the flange pose its kinematics give them (an IRB 120 here); the twin's arm
+        // has no external axes, so every one is reported as 9E9 (none).
+        var joints = new Joints(10, 20, 30, 40, 50, 60);
+        Pose flange = RobotModels.Get("IRB 120").Kinematics.Forward(joints);
         await using var controller = await OnlineTestSupport.StartControllerAsync(new VirtualAbbControllerOptions
         {
             InstantExecution = true,
-            RunsRapid = false, // the imitation: a RAPID driver reports the joints its arm has, never a pose chosen apart from them
-            Model = null, // joints and pose chosen apart, to see each reported as received
-            InitialPosition = new Vector(500, -20, 600),
-            InitialJoints = new Joints(10, 20, 30, 40, 50, 60),
-            InitialExternalAxes = new ExternalAxes(1800, null, -45.5),
+            InitialJoints = joints,
         });
         var bot = Robot.Create("Handshake", "ABB");
         bot.ControlMode("online");
@@ -348,17 +352,17 @@ public class AbbOnlineWireTests
 
         foreach (RobotState s in new[] { bot.GetIssuedState(), bot.GetReleasedState(), bot.GetExecutedState() })
         {
-            Assert.Equal(new Vector(500, -20, 600), s.Position);
-            Assert.Equal(new Joints(10, 20, 30, 40, 50, 60), s.Axes);
-            Assert.Equal(new ExternalAxes(1800, null, -45.5), s.ExternalAxesCartesian);
-            Assert.Equal(new ExternalAxes(1800, null, -45.5), s.ExternalAxesJoints);
+            // The handshake carries millimetres with 3 decimals and joints with 3 decimals.
+            Assert.True(s.Position!.Value.IsSimilar(flange.Position, 1e-3), s.Position.ToString());
+            Assert.Equal(joints, s.Axes);
+            Assert.Null(s.ExternalAxesCartesian);
+            Assert.Null(s.ExternalAxesJoints);
         }
-        Assert.Equal(new Vector(500, -20, 600), (Vector)bot.GetCurrentPosition()!.Value);
+        Assert.True(((Vector)bot.GetCurrentPosition()!.Value).IsSimilar(flange.Position, 1e-3));
         MotionUpdateArgs update = await motion.Task.WaitAsync(OnlineTestSupport.Limit);
-        Assert.Equal(new Joints(10, 20, 30, 40, 50, 60), update.Axes);
-        Assert.Equal(new ExternalAxes(1800, null, -45.5), update.ExternalAxes);
-        Assert.StartsWith("{\"event\":\"motion-update\",\"pos\":[500,-20,600]", update.ToJsonString(), StringComparison.Ordinal);
-        Assert.Contains("\"extax\":[1800,null,-45.5,null,null,null]", update.ToJsonString(), StringComparison.Ordinal);
+        Assert.Equal(joints, update.Axes);
+        Assert.True(update.Position!.Value.IsSimilar(flange.Position, 1e-3), update.Position.ToString());
+        Assert.Null(update.ExternalAxes);
         await bot.DisconnectAsync();
         Assert.False(bot.IsConnected);
         Assert.Equal("", bot.GetIP());

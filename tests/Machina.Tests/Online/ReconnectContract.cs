@@ -52,10 +52,7 @@ public abstract class ReconnectContract<TController, TState>
         Assert.Equal([1, 2, 3], executed);
         Assert.Equal((3, released - 3), (controller.RequestsExecuted, controller.BufferedRequestCount));
 
-        await bot.ConnectAsync("127.0.0.1", PortOf(controller)).WaitAsync(Limit);
-        Assert.Equal(2, controller.ConnectionCount);
-        Assert.Equal(Enumerable.Range(4, 17), bot.GetPendingActions().Select(a => a.Id));
-        controller.ResumeAnswering();
+        await ReconnectWhileHeldAsync(bot, controller);
         await bot.WaitForCompletionAsync().WaitAsync(Limit);
         await bot.FlushEventsAsync().WaitAsync(Limit);
 
@@ -85,7 +82,7 @@ public abstract class ReconnectContract<TController, TState>
         int ranTwice = released - 3;
         Assert.Equal(Enumerable.Range(1, 20), executed);
         Assert.Equal(20 + ranTwice, controller.RequestsExecuted);
-        Assert.Equal(new Vector(400, 0, 590 + 10 * ranTwice), controller.State.Position);
+        AssertNear(new Vector(400, 0, 590 + 10 * ranTwice), controller.State.Position);
         await bot.DisconnectAsync();
     }
 
@@ -100,19 +97,46 @@ public abstract class ReconnectContract<TController, TState>
         await EventuallyAsync(() => controller.BufferedRequestCount == 2, "both actions to reach the controller");
         await owner.DisconnectAsync();
 
+        await ConnectStrangerAsync(controller);
+
+        await ReconnectOwnerAndResumeAsync(owner, controller);
+        await owner.WaitForCompletionAsync().WaitAsync(Limit);
+        await owner.FlushEventsAsync().WaitAsync(Limit);
+        Assert.Equal([1, 2], executed);
+        Assert.Equal(2, controller.RequestsExecuted);
+        AssertNear(new Vector(400, 0, 410), controller.State.Position);
+    }
+
+    /// <summary>
+    /// Another robot connects while the paused controller holds the owner's two actions: refused, from the progress the handshake
+    /// reports. A driver that accepts a client only once it ran what it holds overrides this.
+    /// </summary>
+    protected virtual async Task ConnectStrangerAsync(TController controller)
+    {
         var stranger = Robot.Create("Stranger", Brand);
         stranger.ControlMode("online");
         var refused = await Assert.ThrowsAsync<RobotConnectionException>(() => stranger.ConnectAsync("127.0.0.1", PortOf(controller)).WaitAsync(Limit));
         Assert.Contains("still executing requests this robot did not send (last executed 0, last received 2)", refused.Message, StringComparison.Ordinal);
         Assert.False(stranger.IsConnected);
+    }
 
+    /// <summary>
+    /// The robot connects again while the paused controller holds actions 4 and up: it waits for them (only the rest is to send),
+    /// then the controller answers again. A driver that accepts a client only once it ran what it holds overrides this.
+    /// </summary>
+    protected virtual async Task ReconnectWhileHeldAsync(Robot bot, TController controller)
+    {
+        await bot.ConnectAsync("127.0.0.1", PortOf(controller)).WaitAsync(Limit);
+        Assert.Equal(2, controller.ConnectionCount);
+        Assert.Equal(Enumerable.Range(4, 17), bot.GetPendingActions().Select(a => a.Id));
+        controller.ResumeAnswering();
+    }
+
+    /// <summary>The owner connects again to the paused controller, which then answers again.</summary>
+    protected virtual async Task ReconnectOwnerAndResumeAsync(Robot owner, TController controller)
+    {
         await owner.ConnectAsync("127.0.0.1", PortOf(controller)).WaitAsync(Limit);
         controller.ResumeAnswering();
-        await owner.WaitForCompletionAsync().WaitAsync(Limit);
-        await owner.FlushEventsAsync().WaitAsync(Limit);
-        Assert.Equal([1, 2], executed);
-        Assert.Equal(2, controller.RequestsExecuted);
-        Assert.Equal(new Vector(400, 0, 410), controller.State.Position);
     }
 
     /// <summary>A connected robot recording the ids it sees executed and its lost connections.</summary>
@@ -164,12 +188,15 @@ public abstract class ReconnectContract<TController, TState>
         return released;
     }
 
+    /// <summary>The arm's pose comes from its kinematics: equal to a micrometre.</summary>
+    private static void AssertNear(Vector expected, Vector actual) => Assert.True(actual.IsSimilar(expected, 1e-3), $"expected {expected}, was {actual}");
+
     private void AssertEachOnce(TController controller, ConcurrentQueue<int> executed)
     {
         Assert.Equal(Enumerable.Range(1, 20), executed);
         Assert.Equal(20, controller.RequestsExecuted);
         Assert.Equal(Enumerable.Range(1, 20), ReceivedIds(controller));
-        Assert.Equal(new Vector(400, 0, 590), controller.State.Position);
+        AssertNear(new Vector(400, 0, 590), controller.State.Position);
         Assert.Empty(controller.Errors);
     }
 }

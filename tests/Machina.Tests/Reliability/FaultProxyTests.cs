@@ -37,7 +37,7 @@ public class FaultProxyTests
 
     /// <summary>
     /// The driver connection cut twice at a seeded byte towards the host: the first connection while it streams (past its
-    /// handshake, before its last acknowledgement: ABB's imitation sends 352 bytes and KUKA 723 for the whole program), the
+    /// handshake, before its last acknowledgement: ABB's former imitation sent 352 bytes and KUKA 723 for the whole program), the
     /// second inside its handshake (under 100 bytes). Each cut is reported, and reconnecting through the proxy resumes.
     /// </summary>
     [Theory]

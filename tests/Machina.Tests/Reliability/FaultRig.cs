@@ -56,8 +56,8 @@ internal sealed partial class FaultRig : IAsyncDisposable
     /// <summary>
     /// Starts a controller of <paramref name="brand"/> with instant execution, no robot model (targets are taken as they
     /// are), the given faults and room in its logs for <paramref name="logCapacity"/> requests. ABB and KUKA run their driver on
-    /// the twin; KUKA, with a restart that loses the buffer, its imitation. On the RAPID twin that restart loses what the driver
-    /// task had not read from its socket (it reports what it read in its progress, so the host sends only the rest again).
+    /// the twin; KUKA, with a restart that loses the buffer, its imitation. On the RAPID twin that restart drops the client; the
+    /// driver runs what reached the controller and reports it in its progress, so the host sends only the rest again.
     /// </summary>
     public static async Task<FaultRig> StartAsync(string brand, VirtualFaults faults, int logCapacity = 10_000, AcknowledgementWrites kukaWrites = AcknowledgementWrites.Whole)
     {

@@ -16,12 +16,6 @@ public class ProtocolDecoderFuzzTests
         "$24 100.5 -2 300 1 0 0 0>10 20 30 40 50 60>1.800E+03 9E9 9E9 9E9 9E9 9E9;", "$@5 101 2 192.168.125.1 7000;", "$26 3 5;",
     ];
 
-    private static readonly string[] AbbToController =
-    [
-        "@12 1 400 0 500 0 0 1 0", "@18 7 \"Hello world!\"", "@21 10 \"DO_15\" 1", "@23 15 1800 9E9 9E9 9E9 9E9 9E9", "4 100",
-        "@19 8 0 0 100 1 0 0 0 1 0 0 50", "@24 30 600 600 500 0 0.7071 0.7071 0 500 600 500",
-    ];
-
     private static readonly string[] KukaXml =
     [
         "<?xml version=\"1.0\"?>\r\n<S VR=\"2.0\" A1=\"0\" A2=\"-90\" A3=\"90\" A4=\"0\" A5=\"0\" A6=\"0\" X=\"455\" Y=\"0\" Z=\"935\" A=\"0\" B=\"90\" C=\"0\" Executed=\"3\" Received=\"5\"></S>",
@@ -71,25 +65,6 @@ public class ProtocolDecoderFuzzTests
         }));
         Assert.InRange(fed, AbbMessageReader.MaxMessageLength, AbbMessageReader.MaxMessageLength + chunk.Length);
         Assert.StartsWith("$24 1 2 3", error.ReceivedText, StringComparison.Ordinal);
-    }
-
-    [Fact]
-    public async Task AbbRequestParser_RandomAndMutatedStatements_RequestOrReason()
-    {
-        var counts = await RunAsync(14_003, AbbToController, AbbAlphabet, 120, () => 0, (_, bytes) =>
-        {
-            string statement = Encoding.Latin1.GetString(bytes);
-            if (AbbRequestParser.TryParse(statement, out AbbRequest request, out string? error))
-            {
-                Assert.Null(error);
-                Assert.InRange(request.Id, 0, AbbRequest.MaxId);
-                Assert.DoesNotContain('\0', request.ToWireText());
-                return 1;
-            }
-            Assert.False(string.IsNullOrEmpty(error));
-            return 0;
-        }, _ => false);
-        AssertBothOutcomes(counts);
     }
 
     [Fact]

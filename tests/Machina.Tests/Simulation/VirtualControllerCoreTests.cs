@@ -5,8 +5,7 @@ namespace Machina.Tests.Simulation;
 
 /// <summary>
 /// The brand-neutral core of the virtual controllers, seen through the ABB front end: the robot model keeps joints and
-/// pose consistent; a move the simulated robot cannot make stops the ABB driver (nothing more runs), and any other instruction it
-/// cannot execute is refused, logged, acknowledged and survived.
+/// pose consistent, at the start and as the RAPID driver moves the arm.
 /// </summary>
 public class VirtualControllerCoreTests
 {
@@ -69,64 +68,10 @@ public class VirtualControllerCoreTests
         Assert.True(flange.Position.IsSimilar(new Vector(300, 0, 500), 1e-6), flange.Position.ToString());
     }
 
-    [Theory]
-    [InlineData("@1 1 2000 0 300 0 0 1 0;", "cannot reach")]
-    [InlineData("@1 1 1E308 0 300 0 0 1 0;", "is not a place a robot can go")]
-    [InlineData("@1 3 0 0 0 0 170 0;", "beyond the limits")]
-    public async Task Move_RobotCannotMake_RefusedLoggedNotAcknowledgedAndNothingAfterRuns(string request, string reason)
-    {
-        await using var controller = await StartAsync(instant: false);
-        using var client = await ConnectAsync(controller);
-        var before = controller.State;
-        await client.SendAsync("@5 4 30;" + request + "@2 4 50;");
-        Assert.Equal("@5 4;", (await client.ReadMessagesAsync(1))[0].ToString());
-        await Eventually.TrueAsync(() => controller.RequestsExecuted == 2, "the refused move is done with", RawAbbClient.Timeout);
-        Assert.Contains(reason, Assert.Single(controller.Errors), StringComparison.Ordinal);
-        Assert.Equal([5], controller.ExecutedIds);
-        Assert.Equal((before.Position, before.Joints, 30.0), (controller.State.Position, controller.State.Joints, controller.State.Speed));
-        await controller.StopAsync();
-        Assert.Equal(2, controller.RequestsExecuted);
-        Assert.Equal(1, controller.AcknowledgementsSent);
-    }
-
-    [Theory]
-    [InlineData("@1 6 4320000;", "longer than the 49.7 days")]
-    [InlineData("@1 4 1E-9;@9 1 302 0 300 0 0 1 0;", "longer than the 49.7 days")]
-    public async Task Instruction_CannotBeExecuted_RefusedLoggedAcknowledgedAndControllerServesOn(string requests, string reason)
-    {
-        await using var controller = await StartAsync(instant: false);
-        using var client = await ConnectAsync(controller);
-        var before = controller.State;
-        await client.SendAsync(requests + "@2 4 50;");
-        var acks = await client.ReadMessagesAsync(requests.Count(c => c == ';') + 1);
-        Assert.Equal(2, acks[^1].Id);
-        Assert.Contains(reason, Assert.Single(controller.Errors), StringComparison.Ordinal);
-        Assert.Equal((before.Position, before.Joints, 50.0), (controller.State.Position, controller.State.Joints, controller.State.Speed));
-        await controller.StopAsync();
-        Assert.False(controller.IsRunning);
-    }
-
-    [Fact]
-    public async Task Statement_LongerThanTheDriverReads_RefusedAndNextClientServed()
-    {
-        await using var controller = await StartAsync();
-        using (var client = await ConnectAsync(controller))
-        {
-            await client.SendAsync("@1 4 " + new string('1', 5000));
-            Assert.Equal("", await client.ReadToEndAsync());
-        }
-        Assert.Contains("statement longer than", Assert.Single(controller.Errors), StringComparison.Ordinal);
-        using var second = await ConnectAsync(controller);
-        await second.SendAsync("@1 4 10;");
-        Assert.Equal(1, (await second.ReadMessagesAsync(1))[0].Id);
-    }
-
     private static async Task<VirtualAbbController> StartAsync(bool instant = true)
     {
-        // Not instant: a real clock, but every instruction here is either refused or takes no time.
-        // The core's own planning and refusals, seen through the ABB imitation (RunsRapid = false); the RAPID twin plans nothing
-        // itself (its driver does: VirtualAbbTwinSeamTests, AbbRapidTwinOnlineTests).
-        var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = instant, RunsRapid = false });
+        // The RAPID driver moves the model's arm (its refusals: AbbRapidTwinOnlineTests, VirtualAbbTwinSeamTests).
+        var controller = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = instant });
         await controller.StartAsync();
         return controller;
     }
