@@ -76,6 +76,7 @@ public class KukaXmlReaderEdgeTests
     [InlineData("<R ID />", "The attribute ID of <R> has no value.")]
     [InlineData("<R ID=1/>", "The value of attribute ID of <R> is not quoted.")]
     [InlineData("<R M=\"a<b\"/>", "The value of attribute M of <R> contains '<'.")]
+    [InlineData("<R M=\"<b\"/>", "The value of attribute M of <R> contains '<'.")]
     [InlineData("<R></S>", "The element <R> is closed by </S>.")]
     [InlineData("<R></R x>", "The element <R> is closed by </R>.")]
     [InlineData("<>", "The controller sent '<' without an element name after it.")]

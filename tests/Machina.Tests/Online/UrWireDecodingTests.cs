@@ -89,6 +89,16 @@ public class UrWireDecodingTests
         Assert.Equal((Rtde.Start, 1, (byte)1), (type, payload.Length, payload[0]));
     }
 
+    [Fact]
+    public void RtdeReader_LoneHeaderOnlyPackage_Read()
+    {
+        var reader = new RtdePackageReader();
+        reader.Append([0, 3, Rtde.Pause]);
+        Assert.True(reader.TryRead(out byte type, out ReadOnlySpan<byte> payload));
+        Assert.Equal((Rtde.Pause, 0), (type, payload.Length));
+        Assert.False(reader.TryRead(out _, out _));
+    }
+
     [Theory]
     [InlineData(0)]
     [InlineData(1)]
