@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Mutation testing with Stryker.NET (the dotnet-stryker tool of .config/dotnet-tools.json), one area at a time.
-# Usage: tests/mutation/run.sh AREA [extra dotnet-stryker options]   AREA: kuka | parser | release | geometry | bridge
+# Usage: tests/mutation/run.sh AREA [extra dotnet-stryker options]   AREA: kuka | parser | release | geometry | bridge | ur | kukaxml
 # Each area has its own configuration (tests/mutation/AREA.json): the files it mutates, the tests that may kill the mutants
 # (a test-case filter; never the convention tests, which fail under Stryker's instrumentation), net10.0 only, one test
 # process at a time. Reports go to StrykerOutput/AREA/ (not committed): reports/mutation-report.html and .json.
