@@ -84,7 +84,7 @@ internal static partial class RapidBuiltins
         }
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
-        arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken);
+        arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: name == "MoveL");
     }
 
     private static void MoveAbsJ(RapidCall call, MoveParams p)

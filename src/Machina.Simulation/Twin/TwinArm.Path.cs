@@ -1,8 +1,9 @@
 namespace Machina.Simulation.Twin;
 
 /// <summary>
-/// The motion path of the arm as a controller's path planner holds it: while a motion runs the arm is part-way (straight in joint
-/// space, at constant speed), a hold (RAPID StopMove) stops it where it is until released (StartMove), a cleared path (ClearPath)
+/// The motion path of the arm as a controller's path planner holds it: while a motion runs the arm is part-way (at constant speed,
+/// straight in joint space or, for a linear motion, along the tool's straight line), a hold (RAPID StopMove) stops it where it
+/// is until released (StartMove), a cleared path (ClearPath)
 /// ends the motion where the arm stands, and a wake lets the moving task serve its interrupts.
 /// </summary>
 internal sealed partial class TwinArm
@@ -13,16 +14,29 @@ internal sealed partial class TwinArm
     private bool _clear;
     private double _heldAfter;
 
-    /// <summary>A motion under way: from, to, when it started (timestamp of the clock's time provider) and how long it takes.</summary>
-    private sealed record Motion(Joints From, Joints To, long Started, double Seconds)
+    /// <summary>
+    /// A motion under way: from, to, when it started (timestamp of the clock's time provider) and how long it takes. A joint motion
+    /// is straight in joint space; a linear one (<paramref name="Linear"/>) keeps the tool centre point on the straight line and
+    /// turns its orientation evenly, the joints solved at each point nearest to the joint-space interpolation.
+    /// </summary>
+    private sealed record Motion(Joints From, Joints To, long Started, double Seconds, TwinArm? Linear = null)
     {
         /// <summary>The joints <paramref name="elapsed"/> seconds after the start.</summary>
         public Joints At(double elapsed)
         {
             double f = Seconds > 0 ? Math.Clamp(elapsed / Seconds, 0, 1) : 1;
             double[] a = From.ToArray(), b = To.ToArray();
-            return new Joints(a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f,
+            var straight = new Joints(a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f,
                 a[3] + (b[3] - a[3]) * f, a[4] + (b[4] - a[4]) * f, a[5] + (b[5] - a[5]) * f);
+            if (Linear is not { } arm || f <= 0 || f >= 1)
+            {
+                return f >= 1 ? To : f <= 0 ? From : straight;
+            }
+            IKinematics kinematics = arm.Model.Kinematics;
+            Pose tool = arm.ToolCenter;
+            Pose start = kinematics.Forward(From) * tool, end = kinematics.Forward(To) * tool;
+            var tcp = new Pose(start.Position + (end.Position - start.Position) * f, KinematicChecks.Slerp(start.Rotation, end.Rotation, f));
+            return kinematics.Closest(tcp * tool.Inverse(), straight) ?? straight;
         }
     }
 
@@ -102,7 +116,7 @@ internal sealed partial class TwinArm
     /// A real-time motion along the path: <paramref name="target"/> in <paramref name="seconds"/>, held and released, ended early by a
     /// cleared path; <see cref="Serve"/> runs each time the motion is woken (an exception it throws leaves the arm where it stands).
     /// </summary>
-    private void MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace)
+    private void MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear)
     {
         Joints from = Joints;
         double left = seconds;
@@ -144,7 +158,7 @@ internal sealed partial class TwinArm
                 }
                 continue;
             }
-            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left);
+            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left, linear ? this : null);
             lock (_gate)
             {
                 _moving = motion;

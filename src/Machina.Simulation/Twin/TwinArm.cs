@@ -102,13 +102,14 @@ internal sealed partial class TwinArm
     /// <summary>
     /// Moves to <paramref name="target"/> joints in <paramref name="seconds"/>, then traces the step at <paramref name="line"/>: at
     /// <paramref name="traced"/> joints when given (the waypoint of a motion that blends before it), none when <paramref name="trace"/> is false.
+    /// A <paramref name="linear"/> motion keeps the tool on a straight line while it is part-way (when the arm interpolates).
     /// </summary>
-    public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true)
+    public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true, bool linear = false)
     {
         RequireWithinLimits(target);
         if (Interpolates && Clock.RealTime && seconds > 0)
         {
-            MoveAlongPath(target, seconds, line, text, cancellation, traced, trace);
+            MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear);
             return;
         }
         Clock.Wait(seconds, cancellation);

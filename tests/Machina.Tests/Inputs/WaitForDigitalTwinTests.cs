@@ -37,7 +37,8 @@ public class WaitForDigitalTwinTests
             bot.Message("before");
             bot.WaitForDigital("DI_3", true);
             bot.Message("after");
-            await OnlineTestSupport.EventuallyAsync(() => controller.PendantMessages.Contains("before"), "the driver to run the first message");
+            // The driver runs the message, then acknowledges it: wait for both (the host's event may come well after the pendant line).
+            await OnlineTestSupport.EventuallyAsync(() => controller.PendantMessages.Contains("before") && executed.Contains(1), "the driver to run the first message");
             await Task.Delay(Blocked);
             Assert.Equal([1], executed);
             Assert.DoesNotContain("after", controller.PendantMessages);
