@@ -212,6 +212,37 @@ public class KukaXmlReaderEdgeTests
     }
 
     [Fact]
+    public void PendingAtTheBound_AfterAnElementWasRead_CountsOnlyWhatIsLeft()
+    {
+        // One piece: a whole element, then the start of the next with exactly the bound's worth of bytes. Reading the first
+        // element moves the buffer's start; the bound applies to the bytes left, not to where they sit in the buffer.
+        byte[] first = "<R ID=\"1\"/>"u8.ToArray();
+        byte[] next = "<R M='"u8.ToArray();
+        var piece = new List<byte>(first);
+        piece.AddRange(next);
+        piece.AddRange(Encoding.ASCII.GetBytes(new string('a', KukaXmlReader.MaxElementLength - next.Length)));
+        var reader = new KukaXmlReader();
+        reader.Append(piece.ToArray());
+        Assert.True(reader.TryRead(out KukaElement element));
+        Assert.Equal("R(ID=1)[]{}", Show(element));
+        Assert.False(reader.TryRead(out _));
+        Assert.Equal(KukaXmlReader.MaxElementLength, reader.PendingByteCount);
+    }
+
+    [Fact]
+    public void GarbageAfterAnElement_QuotesOnlyTheBytesLeft()
+    {
+        var reader = new KukaXmlReader();
+        reader.Append("<R ID=\"1\"/>junk"u8);
+        Assert.True(reader.TryRead(out KukaElement element));
+        Assert.Equal("R(ID=1)[]{}", Show(element));
+        KukaProtocolException e = Assert.Throws<KukaProtocolException>(() => reader.TryRead(out _));
+        Assert.Equal("The controller sent text outside an XML element: this is not the Machina KUKA driver protocol.", e.Message);
+        Assert.Equal("junk", e.ReceivedText);
+        Assert.Equal(0, reader.PendingByteCount);
+    }
+
+    [Fact]
     public void ElementCompletedByAPieceWithoutGreaterThan_ReadWhenItsEndArrives()
     {
         // The element's last '>' comes in a later piece than its '/': the reader reads it then, not before.
