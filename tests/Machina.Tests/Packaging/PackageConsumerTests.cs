@@ -10,7 +10,7 @@ namespace Machina.Tests.Packaging;
 /// </summary>
 public class PackageConsumerTests
 {
-    private static readonly TimeSpan Limit = TimeSpan.FromMinutes(5);
+    private static readonly TimeSpan Limit = TimeSpan.FromMinutes(15);
 
     private const string HelloRobot = """
         using Machina;
@@ -68,11 +68,13 @@ public class PackageConsumerTests
             string feed = Path.Combine(work, "feed");
             foreach (string project in new[] { "Machina", "Machina.Simulation" })
             {
-                await RunAsync(dotnet, sources, timeout.Token, "pack", $"src/{project}/{project}.csproj", "-c", "Release", "-o", feed);
+                await RunAsync(dotnet, sources, timeout.Token, "pack", $"src/{project}/{project}.csproj", "-c", "Release", "-o", feed, $"-p:MachinaRepositoryUrl={RepositoryUrl}");
             }
             Assert.True(File.Exists(Path.Combine(feed, "Machina.0.1.0.nupkg")), "Machina.0.1.0.nupkg was not made.");
             Assert.True(File.Exists(Path.Combine(feed, "Machina.Simulation.0.1.0.snupkg")), "Machina.Simulation.0.1.0.snupkg was not made.");
             AssertHasIcon(Path.Combine(feed, "Machina.0.1.0.nupkg"), Path.Combine(root, "docs", "icon.png"));
+            AssertHasRepository(Path.Combine(feed, "Machina.0.1.0.nupkg"), RepositoryUrl);
+            AssertHasRepository(Path.Combine(feed, "Machina.Simulation.0.1.0.nupkg"), RepositoryUrl);
 
             // A fresh project, as a newcomer writes it: package references, the folder feed plus the usual sources, and its
             // own packages folder so that an older Machina 0.1.0 in the machine's cache cannot stand in for these.
@@ -208,6 +210,21 @@ public class PackageConsumerTests
         string output = await stdout + await stderr;
         Assert.True(process.ExitCode == 0, $"dotnet {string.Join(' ', arguments)} failed with exit code {process.ExitCode}:\n{output}");
         return output;
+    }
+
+    /// <summary>The address given to <c>dotnet pack</c> as <c>MachinaRepositoryUrl</c> (a clone with a git remote gets its own from Source Link).</summary>
+    private const string RepositoryUrl = "https://git.example/machina/machina.git";
+
+    /// <summary>The package's manifest names the repository (type git, the given address) and the project's page.</summary>
+    private static void AssertHasRepository(string package, string url)
+    {
+        using System.IO.Compression.ZipArchive zip = System.IO.Compression.ZipFile.OpenRead(package);
+        System.IO.Compression.ZipArchiveEntry nuspec = zip.Entries.Single(e => e.FullName.EndsWith(".nuspec", StringComparison.Ordinal));
+        using Stream stream = nuspec.Open();
+        XElement metadata = XDocument.Load(stream).Root!.Elements().Single(e => e.Name.LocalName == "metadata");
+        XElement repository = metadata.Elements().Single(e => e.Name.LocalName == "repository");
+        Assert.Equal(("git", url), ((string?)repository.Attribute("type"), (string?)repository.Attribute("url")));
+        Assert.Equal(url, metadata.Elements().Single(e => e.Name.LocalName == "projectUrl").Value);
     }
 
     /// <summary>The package names icon.png in its manifest and carries the repository's docs/icon.png, a 128 x 128 PNG, byte for byte.</summary>
