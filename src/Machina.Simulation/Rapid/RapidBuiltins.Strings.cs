@@ -46,20 +46,20 @@ internal static partial class RapidBuiltins
             {
                 if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) || !double.IsFinite(value))
                 {
-                    return false;
+                    return RapidBoxes.Bool(false);
                 }
-                call.Set(1, value);
-                return true;
+                call.Set(1, RapidBoxes.Num(value));
+                return RapidBoxes.Bool(true);
             }
             if (type is { Rank: 0, Element.Kind: RapidTypeKind.Bool })
             {
                 bool isTrue = text.Equals("TRUE", StringComparison.OrdinalIgnoreCase);
                 if (!isTrue && !text.Equals("FALSE", StringComparison.OrdinalIgnoreCase))
                 {
-                    return false;
+                    return RapidBoxes.Bool(false);
                 }
-                call.Set(1, isTrue);
-                return true;
+                call.Set(1, RapidBoxes.Bool(isTrue));
+                return RapidBoxes.Bool(true);
             }
             throw ArgumentError(call, $"StrToVal: the twin converts to num, dnum and bool only, not to {type}");
         }),

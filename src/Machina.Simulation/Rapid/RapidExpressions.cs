@@ -76,6 +76,26 @@ internal sealed class RapidBinary(int line, string op, RapidExpr left, RapidExpr
     /// <summary>The operator, upper case.</summary>
     public string Op { get; } = op;
 
+    /// <summary>The operator as a code (the machine switches on it instead of comparing strings).</summary>
+    public RapidOperator Code { get; } = op switch
+    {
+        "AND" => RapidOperator.And,
+        "OR" => RapidOperator.Or,
+        "XOR" => RapidOperator.Xor,
+        "=" => RapidOperator.Equal,
+        "<>" => RapidOperator.NotEqual,
+        "+" => RapidOperator.Add,
+        "-" => RapidOperator.Subtract,
+        "*" => RapidOperator.Multiply,
+        "/" => RapidOperator.Divide,
+        "DIV" => RapidOperator.Div,
+        "MOD" => RapidOperator.Mod,
+        "<" => RapidOperator.Less,
+        ">" => RapidOperator.Greater,
+        "<=" => RapidOperator.LessOrEqual,
+        _ => RapidOperator.GreaterOrEqual,
+    };
+
     /// <summary>The left operand.</summary>
     public RapidExpr Left { get; } = left;
 

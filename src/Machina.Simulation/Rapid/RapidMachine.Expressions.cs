@@ -49,10 +49,16 @@ internal sealed partial class RapidMachine
         }
     }
 
-    /// <summary>Stores a copy of <paramref name="value"/> into the data <paramref name="target"/> refers to.</summary>
-    public void Store(RapidExpr target, RapidFrame? frame, object value)
+    /// <summary>
+    /// Stores a copy of <paramref name="value"/> into the data <paramref name="target"/> refers to; with <paramref name="owned"/>
+    /// the value was just built (an aggregate) and nothing else refers to it, so it is stored as it is.
+    /// </summary>
+    public void Store(RapidExpr target, RapidFrame? frame, object value, bool owned = false)
     {
-        value = RapidValues.Copy(value);
+        if (!owned)
+        {
+            value = RapidValues.Copy(value);
+        }
         if (value is string s && s.Length > MaxStringLength)
         {
             throw new RapidRuntimeException(RapidErrorNumbers.StringTooLong, target.Line, $"the string is longer than {MaxStringLength} characters");
@@ -60,23 +66,54 @@ internal sealed partial class RapidMachine
         switch (target)
         {
             case RapidName n:
-                (n.Global ?? frame!.Cells[n.Slot]).Value = value;
-                if (n.Global is { Storage: RapidStorage.Pers } && Task.Controller.WatchesPersistents)
+            {
+                RapidCell cell = n.Global ?? frame!.Cells[n.Slot];
+                cell.Value = value;
+                if (cell.Storage == RapidStorage.Pers)
                 {
-                    Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
+                    Task.Controller.PersistentWritten();
+                    if (n.Global is not null && Task.Controller.WatchesPersistents)
+                    {
+                        Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
+                    }
                 }
                 break;
+            }
             case RapidComponent c:
                 ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index] = value;
+                CountPersistentWrite(c.Target, frame);
                 break;
             case RapidIndex i:
             {
                 var array = (RapidArray)Evaluate(i.Target, frame);
                 array.Items[Offset(array, i, frame)] = value;
+                CountPersistentWrite(i.Target, frame);
                 break;
             }
             default:
                 throw new RapidRuntimeException(0, target.Line, "only data can be assigned");
+        }
+    }
+
+    /// <summary>Counts the write of a component or element when the data it belongs to is persistent.</summary>
+    private void CountPersistentWrite(RapidExpr data, RapidFrame? frame)
+    {
+        while (true)
+        {
+            switch (data)
+            {
+                case RapidComponent c:
+                    data = c.Target;
+                    continue;
+                case RapidIndex i:
+                    data = i.Target;
+                    continue;
+                case RapidName n when (n.Global ?? frame!.Cells[n.Slot]).Storage == RapidStorage.Pers:
+                    Task.Controller.PersistentWritten();
+                    return;
+                default:
+                    return;
+            }
         }
     }
 
@@ -101,7 +138,8 @@ internal sealed partial class RapidMachine
         var items = new object[a.Items.Length];
         for (int k = 0; k < items.Length; k++)
         {
-            items[k] = RapidValues.Copy(Evaluate(a.Items[k], frame));
+            object item = Evaluate(a.Items[k], frame);
+            items[k] = a.Items[k] is RapidAggregate ? item : RapidValues.Copy(item); // a nested aggregate is new already
         }
         RapidDataType type = a.Type!.Value;
         return type.Rank > 0 ? new RapidArray([items.Length], items) : new RapidRecord(type.Element, items);
@@ -110,36 +148,37 @@ internal sealed partial class RapidMachine
     private object Binary(RapidBinary b, RapidFrame? frame)
     {
         object l = Evaluate(b.Left, frame);
-        switch (b.Op)
+        RapidOperator op = b.Code;
+        switch (op)
         {
-            case "AND":
+            case RapidOperator.And:
                 return RapidBoxes.Bool((bool)l && (bool)Evaluate(b.Right, frame));
-            case "OR":
+            case RapidOperator.Or:
                 return RapidBoxes.Bool((bool)l || (bool)Evaluate(b.Right, frame));
         }
         object r = Evaluate(b.Right, frame);
-        switch (b.Op)
+        switch (op)
         {
-            case "XOR":
+            case RapidOperator.Xor:
                 return RapidBoxes.Bool((bool)l ^ (bool)r);
-            case "=":
+            case RapidOperator.Equal:
                 return RapidBoxes.Bool(RapidValues.AreEqual(l, r));
-            case "<>":
+            case RapidOperator.NotEqual:
                 return RapidBoxes.Bool(!RapidValues.AreEqual(l, r));
         }
         if (l is double x && r is double y)
         {
-            return b.Op switch
+            return op switch
             {
-                "+" => RapidBoxes.Num(Checked(x + y, b)),
-                "-" => RapidBoxes.Num(Checked(x - y, b)),
-                "*" => RapidBoxes.Num(Checked(x * y, b)),
-                "/" => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Checked(x / y, b)),
-                "DIV" => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Math.Truncate(Integer(x, b) / Integer(y, b))),
-                "MOD" => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Integer(x, b) % Integer(y, b)),
-                "<" => RapidBoxes.Bool(x < y),
-                ">" => RapidBoxes.Bool(x > y),
-                "<=" => RapidBoxes.Bool(x <= y),
+                RapidOperator.Add => RapidBoxes.Num(Checked(x + y, b)),
+                RapidOperator.Subtract => RapidBoxes.Num(Checked(x - y, b)),
+                RapidOperator.Multiply => RapidBoxes.Num(Checked(x * y, b)),
+                RapidOperator.Divide => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Checked(x / y, b)),
+                RapidOperator.Div => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Math.Truncate(Integer(x, b) / Integer(y, b))),
+                RapidOperator.Mod => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Integer(x, b) % Integer(y, b)),
+                RapidOperator.Less => RapidBoxes.Bool(x < y),
+                RapidOperator.Greater => RapidBoxes.Bool(x > y),
+                RapidOperator.LessOrEqual => RapidBoxes.Bool(x <= y),
                 _ => RapidBoxes.Bool(x >= y),
             };
         }
@@ -149,7 +188,7 @@ internal sealed partial class RapidMachine
         }
         if (l is RapidRecord lp && r is RapidRecord rp)
         {
-            Vector sum = b.Op == "+" ? RapidGeometry.ToVector(lp) + RapidGeometry.ToVector(rp) : RapidGeometry.ToVector(lp) - RapidGeometry.ToVector(rp);
+            Vector sum = op == RapidOperator.Add ? RapidGeometry.ToVector(lp) + RapidGeometry.ToVector(rp) : RapidGeometry.ToVector(lp) - RapidGeometry.ToVector(rp);
             return RapidGeometry.ToPosRecord(sum);
         }
         return l is RapidRecord p ? RapidGeometry.ToPosRecord(RapidGeometry.ToVector(p) * (double)r) : RapidGeometry.ToPosRecord(RapidGeometry.ToVector((RapidRecord)r) * (double)l);

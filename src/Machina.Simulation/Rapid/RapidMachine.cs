@@ -98,7 +98,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         switch (statement)
         {
             case RapidAssign a:
-                Store(a.Target, frame, Evaluate(a.Value, frame));
+                Store(a.Target, frame, Evaluate(a.Value, frame), owned: a.Value is RapidAggregate);
                 return RapidFlow.Next;
             case RapidProcCall call:
                 Call(call.Target!, call.Args, frame, call.Line);
@@ -244,7 +244,8 @@ internal sealed partial class RapidMachine(RapidTask task)
                 else
                 {
                     RapidExpr arg = args[k].Value!;
-                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, RapidValues.Copy(Evaluate(arg, caller)));
+                    object value = Evaluate(arg, caller);
+                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, arg is RapidAggregate ? value : RapidValues.Copy(value));
                     if (param.Mode != RapidParamMode.In)
                     {
                         (writeBack ??= []).Add((arg, cells[p]));

@@ -11,7 +11,11 @@ internal sealed partial class RapidTask
     private readonly List<(int Interrupt, int Domain, int Number, int Type)> _errorOrders = [];
     private readonly Queue<(RapidRoutine Trap, RapidTrapData Data)> _pending = new();
     private volatile bool _hasPending;
-    private readonly List<(int Interrupt, Func<object> Read, object Last)> _persOrders = [];
+    private volatile bool _queued;
+    private readonly List<RapidPersOrder> _persOrders = [];
+    private volatile RapidPersOrder[] _persSnapshot = [];
+    private RapidPersOrder[] _persChecked = [];
+    private int _persWritesSeen;
     private bool _inTrap;
     private int _nextInterrupt;
 
@@ -67,26 +71,35 @@ internal sealed partial class RapidTask
             {
                 return false;
             }
-            _persOrders.Add((interrupt, read, RapidValues.Copy(read())));
+            _persOrders.Add(new RapidPersOrder(interrupt, read, RapidValues.Copy(read())));
+            _persSnapshot = [.. _persOrders];
             _hasPending = true;
             Controller.WatchesPersistents = true;
             return true;
         }
     }
 
-    /// <summary>Queues the traps of IPers orders whose data changed since they were last looked at.</summary>
-    private void CheckPersOrders()
+    /// <summary>
+    /// Queues the traps of IPers orders whose data changed since they were last looked at. Runs before every statement, so it
+    /// compares without the lock (the orders are a snapshot; only this task's thread reads and updates their last values) and
+    /// takes the lock only to queue a trap.
+    /// </summary>
+    private void CheckPersOrders(RapidPersOrder[] orders)
     {
-        lock (_interruptGate)
+        foreach (RapidPersOrder order in orders)
         {
-            for (int i = 0; i < _persOrders.Count; i++)
+            object now = order.Read();
+            if (RapidValues.AreEqual(now, order.Last))
             {
-                (int interrupt, Func<object> read, object last) = _persOrders[i];
-                object now = read();
-                if (!RapidValues.AreEqual(now, last) && _connections.TryGetValue(interrupt, out RapidRoutine? trap))
+                continue;
+            }
+            lock (_interruptGate)
+            {
+                if (_connections.TryGetValue(order.Interrupt, out RapidRoutine? trap) && _persOrders.Contains(order))
                 {
-                    _persOrders[i] = (interrupt, read, RapidValues.Copy(now));
+                    order.Last = RapidValues.Copy(now);
                     _pending.Enqueue((trap, new RapidTrapData()));
+                    _queued = true;
                 }
             }
         }
@@ -100,6 +113,7 @@ internal sealed partial class RapidTask
             _connections.Remove(interrupt);
             _errorOrders.RemoveAll(o => o.Interrupt == interrupt);
             _persOrders.RemoveAll(o => o.Interrupt == interrupt);
+            _persSnapshot = [.. _persOrders];
         }
     }
 
@@ -113,6 +127,7 @@ internal sealed partial class RapidTask
                 if ((d == 0 || d == domain) && (n < 0 || n == number) && (t == 0 || t == type) && _connections.TryGetValue(interrupt, out RapidRoutine? trap))
                 {
                     _pending.Enqueue((trap, new RapidTrapData { Domain = domain, Number = number, Kind = type }));
+                    _queued = true;
                     _hasPending = true;
                 }
             }
@@ -126,17 +141,23 @@ internal sealed partial class RapidTask
         {
             return;
         }
-        if (_persOrders.Count > 0)
+        // Only when persistent data were written since the last look (or the orders changed): most statements write none.
+        RapidPersOrder[] orders = _persSnapshot;
+        int writes = Controller.PersistentWrites;
+        if (orders.Length > 0 && (writes != _persWritesSeen || !ReferenceEquals(orders, _persChecked)))
         {
-            CheckPersOrders();
+            _persWritesSeen = writes;
+            _persChecked = orders;
+            CheckPersOrders(orders);
         }
-        while (true)
+        while (_queued)
         {
             (RapidRoutine Trap, RapidTrapData Data) next;
             lock (_interruptGate)
             {
                 if (!_pending.TryDequeue(out next))
                 {
+                    _queued = false;
                     _hasPending = _persOrders.Count > 0;
                     return;
                 }
@@ -163,8 +184,23 @@ internal sealed partial class RapidTask
             _connections.Clear();
             _errorOrders.Clear();
             _persOrders.Clear();
+            _persSnapshot = [];
             _pending.Clear();
+            _queued = false;
             _hasPending = false;
         }
     }
+}
+
+/// <summary>An IPers order: the interrupt, how to read the persistent data, and the value it had when last looked at.</summary>
+internal sealed class RapidPersOrder(int interrupt, Func<object> read, object last)
+{
+    /// <summary>The interrupt number.</summary>
+    public int Interrupt { get; } = interrupt;
+
+    /// <summary>Reads the persistent data's value now.</summary>
+    public Func<object> Read { get; } = read;
+
+    /// <summary>The value when last looked at (a copy); only the ordering task's thread reads and writes it.</summary>
+    public object Last { get; set; } = last;
 }

@@ -57,6 +57,14 @@ internal sealed partial class RapidTwinController
     /// <summary>True once a task ordered an interrupt on persistent data (IPers): PERS writes then wake the motion.</summary>
     internal bool WatchesPersistents { get; set; }
 
+    private int _persistentWrites;
+
+    /// <summary>How many times persistent data were written (by any task or RWS): IPers orders look at their data only when it moved.</summary>
+    internal int PersistentWrites => Volatile.Read(ref _persistentWrites);
+
+    /// <summary>Counts a write of persistent data (call it after the value is stored).</summary>
+    internal void PersistentWritten() => Interlocked.Increment(ref _persistentWrites);
+
     /// <summary>The signals of the IO configuration: banks do, di, ao, ai, in the order of the options.</summary>
     public TwinIo Io { get; } = new();
 

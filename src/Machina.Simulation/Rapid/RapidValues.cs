@@ -59,8 +59,8 @@ internal static class RapidValues
         RapidType t = type.Element;
         return t.Kind switch
         {
-            RapidTypeKind.Num or RapidTypeKind.Dnum => 0.0,
-            RapidTypeKind.Bool => false,
+            RapidTypeKind.Num or RapidTypeKind.Dnum => RapidBoxes.Num(0),
+            RapidTypeKind.Bool => RapidBoxes.Bool(false),
             RapidTypeKind.String => "",
             RapidTypeKind.Record => new RapidRecord(t, [.. t.Fields.Select(f => Default(f.Type))]),
             _ => t.Create?.Invoke() ?? new object(),
@@ -88,6 +88,7 @@ internal static class RapidValues
     /// <summary>True when two values are equal (numbers exactly, records component by component).</summary>
     public static bool AreEqual(object a, object b) => (a, b) switch
     {
+        (string x, string y) => string.Equals(x, y, StringComparison.Ordinal),
         (double x, double y) => x == y,
         (RapidRecord x, RapidRecord y) => x.Fields.Length == y.Fields.Length && x.Fields.Zip(y.Fields).All(p => AreEqual(p.First, p.Second)),
         (RapidArray x, RapidArray y) => x.Items.Length == y.Items.Length && x.Items.Zip(y.Items).All(p => AreEqual(p.First, p.Second)),

@@ -110,6 +110,7 @@ internal sealed partial class RwsTwinServer
             string => text.Length >= 2 && text[0] == '"' && text[^1] == '"' ? text[1..^1] : throw new FormatException($"{text} is not a quoted string."),
             _ => throw new FormatException($"The twin sets only num, bool and string data through RWS, not {symbol}."),
         };
+        Twin.PersistentWritten();
         return RwsResponse.NoContent();
     }
 }
