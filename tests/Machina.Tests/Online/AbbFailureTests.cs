@@ -38,16 +38,27 @@ public class AbbFailureTests
         await using var controller = await StartAsync();
         var failed = new TaskCompletionSource<ActionFailedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
         var executed = new ConcurrentQueue<int>();
+        var arrived = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         Robot bot = await OnlineTestSupport.ConnectAsync(controller, b =>
         {
             b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
             b.ActionFailed += (_, e) => failed.TrySetResult(e);
+            b.MotionUpdate += (_, e) =>
+            {
+                if (e.Position is Vector p && p.IsSimilar(new Vector(350, 0, 450), 0.05))
+                {
+                    arrived.TrySetResult();
+                }
+            };
         });
         try
         {
             bot.SpeedTo(100);
             bot.MoveTo(350, 0, 450);
             Assert.True(bot.WaitForCompletion(OnlineTestSupport.Limit));
+            // The failure reports where the monitor last saw the arm: wait for a report of the arm at its target, so that the
+            // position asserted below does not depend on a report arriving between the acknowledgement and the failure.
+            await arrived.Task.WaitAsync(OnlineTestSupport.Limit);
             int lastGood = controller.ExecutedIds[^1];
 
             // Both under one issue lock: the controller's failure, reported as soon as the move is sent, cannot come between them.
