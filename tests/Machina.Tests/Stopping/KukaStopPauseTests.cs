@@ -28,4 +28,37 @@ public class KukaStopPauseTests : StopPauseContract<VirtualKukaController, Virtu
 
     /// <inheritdoc/>
     protected override string OutputKey => "2";
+
+    [Fact]
+    public async Task Stop_WhenNothingRuns_ClosesTheLink_AndANewConnectionRuns()
+    {
+        await using VirtualKukaController controller = await StartAsync();
+        Robot bot = await ConnectAsync(controller);
+        try
+        {
+            bot.Do("SpeedTo(200); Move(0, 0, -10);");
+            await bot.WaitForCompletionAsync().WaitAsync(Long);
+            Vector at = controller.State.Position;
+
+            // The driver waits for actions in its main loop: the interrupt answers the stop with nothing to fail or RESUME.
+            await bot.StopAsync().WaitAsync(Long);
+            Assert.False(bot.IsConnected);
+
+            Robot again = await ConnectAsync(controller);
+            try
+            {
+                again.Do("SpeedTo(200); Move(0, 0, 10);");
+                await again.WaitForCompletionAsync().WaitAsync(Long);
+                Assert.True(controller.State.Position.IsSimilar(at + new Vector(0, 0, 10), 1e-2), controller.State.Position.ToString());
+            }
+            finally
+            {
+                await again.DisconnectAsync();
+            }
+        }
+        finally
+        {
+            await bot.DisconnectAsync();
+        }
+    }
 }
