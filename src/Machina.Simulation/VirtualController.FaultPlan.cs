@@ -173,6 +173,27 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>
+    /// The driver dropped what it held (a stop on the controller): what was received and not executed is dropped, and so is
+    /// what the current client still sends; the progress reports the last executed request as the last received one, and the
+    /// next client is served as usual.
+    /// </summary>
+    private protected void DropBuffer(string why)
+    {
+        lock (Gate)
+        {
+            _generation++;
+            Volatile.Write(ref _lastReceivedId, Volatile.Read(ref _lastExecutedId));
+        }
+        int dropped = 0;
+        while (_buffer.Reader.TryRead(out _))
+        {
+            dropped++;
+        }
+        Interlocked.Add(ref _requestsLost, dropped);
+        Pendant($"{why}: {dropped.ToString(CultureInfo.InvariantCulture)} requests received and not executed are dropped");
+    }
+
+    /// <summary>
     /// Checks that a request read from the current client may enter the buffer and records it as the last received (false
     /// when a restart since that client attached lost it).
     /// </summary>

@@ -29,6 +29,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
     {
         /// <summary>True when the driver ran the action and never sent its acknowledgement (its state told the host instead).</summary>
         public bool Unsent { get; init; }
+
+        /// <summary>True when the failure is Robot.Stop's (code 7): the driver ended the action part-way and keeps serving.</summary>
+        public bool Stopped { get; init; }
     }
 
     /// <summary>True while a client waits at the driver's port for the program to open its channel again (a held program greets it when it goes on).</summary>
@@ -243,11 +246,27 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private void FailureSent(string xml)
     {
         TaskCompletionSource<TwinAck>? entry;
+        bool stopped = IntegerOf(xml, " Code=\"") == StoppedCode;
+        List<TaskCompletionSource<TwinAck>> dropped = [];
         lock (Gate)
         {
             _acks.Remove(IdOf(xml), out entry);
+            if (stopped)
+            {
+                // The driver dropped every other action it held: none of them will be acknowledged.
+                dropped.AddRange(_acks.Values);
+                _acks.Clear();
+            }
         }
-        entry?.TrySetResult(new TwinAck(IdOf(xml), [], new TaskCompletionSource<bool>(), TextOf(xml)));
+        if (stopped)
+        {
+            DropBuffer("stopped by the host (Robot.Stop)");
+        }
+        entry?.TrySetResult(new TwinAck(IdOf(xml), [], new TaskCompletionSource<bool>(), TextOf(xml)) { Stopped = stopped });
+        foreach (TaskCompletionSource<TwinAck> waiting in dropped)
+        {
+            waiting.TrySetCanceled();
+        }
         byte[]? held;
         lock (Gate)
         {

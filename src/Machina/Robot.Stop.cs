@@ -10,7 +10,7 @@ public sealed partial class Robot
     /// from where the arm stopped. Completes once the controller stopped.
     /// </summary>
     /// <exception cref="InvalidOperationException">The robot is offline or not connected.</exception>
-    /// <exception cref="NotSupportedException">The brand's driver cannot stop a motion from outside yet (KUKA).</exception>
+    /// <exception cref="NotSupportedException">The controller's driver cannot stop a motion from outside.</exception>
     /// <exception cref="MachinaException">The controller refused or could not be reached.</exception>
     public Task StopAsync(CancellationToken cancellationToken = default)
     {
@@ -32,7 +32,7 @@ public sealed partial class Robot
     /// it stopped, each action running once.
     /// </summary>
     /// <exception cref="InvalidOperationException">The robot is offline, not connected, or already stopped.</exception>
-    /// <exception cref="NotSupportedException">The brand's driver cannot pause yet (KUKA).</exception>
+    /// <exception cref="NotSupportedException">The controller's driver cannot pause.</exception>
     /// <exception cref="MachinaException">The controller refused or could not be reached.</exception>
     public Task PauseAsync(CancellationToken cancellationToken = default)
     {

@@ -9,7 +9,7 @@ internal static class KrlKeywords
         "FOR", "TO", "STEP", "ENDFOR", "LOOP", "ENDLOOP", "SWITCH", "CASE", "DEFAULT", "ENDSWITCH", "WAIT", "SEC", "EXIT", "HALT",
         "RETURN", "CONTINUE", "GOTO", "INTERRUPT", "DECL", "WHEN", "DO", "ON", "OFF", "ENABLE", "DISABLE", "PTP", "LIN", "CIRC",
         "PTP_REL", "LIN_REL", "CIRC_REL", "AND", "OR", "NOT", "EXOR", "B_AND", "B_OR", "B_NOT", "B_EXOR", "TRUE", "FALSE", "GLOBAL",
-        "PUBLIC", "CONST", "SIGNAL", "STRUC", "ENUM", "C_PTP", "C_DIS", "C_ORI", "C_VEL", "TRIGGER", "BRAKE", "ANIN", "ANOUT",
+        "PUBLIC", "CONST", "SIGNAL", "STRUC", "ENUM", "C_PTP", "C_DIS", "C_ORI", "C_VEL", "TRIGGER", "BRAKE", "RESUME", "ANIN", "ANOUT",
     };
 
     /// <summary>True when <paramref name="word"/> is reserved.</summary>

@@ -20,6 +20,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private long _checkedWrites = -1;
     private long _checkedInputs = -1;
     private bool _inInterrupt;
+    private object[]? _interruptFrame;
     private object? _returned;
     private KrlRoutine _routine = null!;
 
@@ -122,7 +123,14 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 Assign(assign.Target, Eval(assign.Value, frame), frame);
                 return Flow.Next;
             case KrlCallStmt call:
-                Call(call.Call, frame);
+                try
+                {
+                    Call(call.Call, frame);
+                }
+                catch (KrlResumeSignal resume) when (ReferenceEquals(resume.DeclaringFrame, frame))
+                {
+                    // RESUME of an interrupt this routine declared: the call it ran is abandoned and the program goes on after it.
+                }
                 _writes++;
                 return Flow.Next;
             case KrlIf branch:
@@ -259,6 +267,14 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 return Flow.Return;
             case "HALT":
                 throw new KrlHaltException(jump.Line, _routine.File);
+            case "BRAKE":
+            case "BRAKE F":
+                // The twin serves an interrupt with the arm standing where the motion was (see ServeInterrupts): it has braked.
+                return _inInterrupt ? Flow.Next : throw new KrlRuntimeException($"{jump.Keyword} is only allowed in an interrupt routine");
+            case "RESUME":
+                throw _inInterrupt
+                    ? new KrlResumeSignal(_interruptFrame!, jump.Line, _routine.File)
+                    : new KrlRuntimeException("RESUME is only allowed in an interrupt routine");
             default:
                 return Flow.Next;
         }
@@ -286,6 +302,21 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         }
     }
 
+    /// <summary>
+    /// Serves the interrupts while a motion is under way (the arm calls it each time the motion is woken, on this interpreter's
+    /// thread): the arm stands where the motion was while an interrupt routine runs, goes on when it returns, and is left where
+    /// it stands by a RESUME. (A real arm goes on moving during an interrupt routine until its BRAKE.)
+    /// </summary>
+    public void ServeInterrupts()
+    {
+        if (_interruptsOn > 0 && !_inInterrupt)
+        {
+            _checkedWrites = _writes;
+            _checkedInputs = Controller.InputsVersion;
+            CheckInterrupts();
+        }
+    }
+
     /// <summary>Runs the handler of each switched-on interrupt whose condition has just become TRUE (edge), highest priority first.</summary>
     private void CheckInterrupts()
     {
@@ -304,6 +335,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             if (now && !entry.Last)
             {
                 _inInterrupt = true;
+                _interruptFrame = entry.Frame;
                 int line = Line;
                 try
                 {
@@ -312,6 +344,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 finally
                 {
                     _inInterrupt = false;
+                    _interruptFrame = null;
                     Line = line;
                 }
             }

@@ -98,9 +98,22 @@ internal sealed partial class KrlParser
             case "LIN":
             case "CIRC":
                 return Motion();
+            case "BRAKE":
+            {
+                // BRAKE, or BRAKE F (the path-maintaining stop of an emergency brake ramp): the twin stops the same way for both
+                _at++;
+                bool fast = Peek.Is("F");
+                if (fast)
+                {
+                    _at++;
+                }
+                EndOfLine();
+                return new KrlJump(line, fast ? "BRAKE F" : "BRAKE", null);
+            }
             case "EXIT":
             case "HALT":
             case "CONTINUE":
+            case "RESUME":
                 _at++;
                 EndOfLine();
                 return new KrlJump(line, token.Text.ToUpperInvariant(), null);

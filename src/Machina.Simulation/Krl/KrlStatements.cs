@@ -121,10 +121,10 @@ internal sealed class KrlMotion(int line, string kind, KrlExpr target, KrlExpr? 
     public string? Approximation { get; } = approximation;
 }
 
-/// <summary>A statement without operands: EXIT, HALT, CONTINUE, or RETURN with an optional value.</summary>
+/// <summary>A statement without operands: EXIT, HALT, CONTINUE, BRAKE, BRAKE F, RESUME, or RETURN with an optional value.</summary>
 internal sealed class KrlJump(int line, string keyword, KrlExpr? value) : KrlStmt(line)
 {
-    /// <summary>EXIT, HALT, CONTINUE or RETURN.</summary>
+    /// <summary>EXIT, HALT, CONTINUE, BRAKE, BRAKE F, RESUME or RETURN.</summary>
     public string Keyword { get; } = keyword;
 
     /// <summary>RETURN's value in a function (null otherwise).</summary>

@@ -22,6 +22,7 @@ internal sealed partial class KrlTwinController
     {
         Interlocked.Increment(ref _inputsVersion);
         _inputsChanged.Release();
+        Arm.Wake(); // a motion under way serves the interrupts whose condition this may have made TRUE
     }
 
     /// <summary>Sleeps until something changes after <paramref name="version"/>.</summary>

@@ -141,7 +141,7 @@ internal sealed partial class KrlTwinController
         }
         double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
         bool bco = Interlocked.Exchange(ref _coincident, 1) == 0;
-        Arm.MoveTo(end, seconds, line, kind + (approximation is null ? "" : " " + approximation) + (bco ? " " + BcoRun : ""), cancellation);
+        Arm.MoveTo(end, seconds, line, kind + (approximation is null ? "" : " " + approximation) + (bco ? " " + BcoRun : ""), cancellation, linear: kind == "LIN");
     }
 
     private static bool Given(object target, string field) => target switch

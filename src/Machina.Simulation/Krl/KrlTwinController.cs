@@ -20,7 +20,7 @@ internal sealed partial class KrlTwinController : IDisposable
     {
         Options = options ?? new KrlTwinOptions();
         Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace };
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace, Interpolates = true };
         KrlSystemVariables.AddTo(Environment, this);
         KrlBuiltins.AddTo(Environment);
         AddEki();
@@ -200,10 +200,15 @@ internal sealed partial class KrlTwinController : IDisposable
         }
         Interlocked.Exchange(ref _coincident, 0);
         var machine = new KrlMachine(this, cancellation);
+        Arm.Serve = machine.ServeInterrupts;
         try
         {
             machine.Run(routine);
             return Finish(KrlProgramState.Finished, null);
+        }
+        catch (KrlResumeSignal resume)
+        {
+            return Finish(KrlProgramState.Failed, FormattableString.Invariant($"Impermissible program structure for RESUME: the program was in the routine that declared the interrupt ({resume.File}, line {resume.Line})"));
         }
         catch (KrlHaltException)
         {
@@ -216,6 +221,10 @@ internal sealed partial class KrlTwinController : IDisposable
         catch (OperationCanceledException)
         {
             return Finish(KrlProgramState.Stopped, null);
+        }
+        finally
+        {
+            Arm.Serve = null;
         }
     }
 

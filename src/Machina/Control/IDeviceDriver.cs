@@ -47,14 +47,14 @@ internal interface IDeviceDriver : IAsyncDisposable
     /// <see cref="ResumeAsync"/>, which goes on where it stopped. Completes once the controller holds it.
     /// </summary>
     Task PauseAsync(CancellationToken cancellationToken) =>
-        Task.FromException(new NotSupportedException("Pausing is not available for this brand yet (UR and ABB only); ClearPendingActions drops what is not sent."));
+        Task.FromException(new NotSupportedException("Pausing is not available for this controller; ClearPendingActions drops what is not sent."));
 
     /// <summary>
     /// Stops the program on the controller now, out of band: a motion in progress stops where the arm is and nothing after it
     /// runs. Completes once the controller stopped; the program must be started again to go on.
     /// </summary>
     Task StopMotionAsync(CancellationToken cancellationToken) =>
-        Task.FromException(new NotSupportedException("Stopping the motion is not available for this brand yet (UR and ABB only); ClearPendingActions drops what is not sent."));
+        Task.FromException(new NotSupportedException("Stopping the motion is not available for this controller; ClearPendingActions drops what is not sent."));
 }
 
 /// <summary>Receives what a device driver hears from its controller. Calls may come from the driver's receive loops.</summary>

@@ -7,7 +7,8 @@ namespace Machina.Tests.Cli;
 
 /// <summary>
 /// The keys of <c>machina run</c> (space: pause / resume, s: stop), typed on redirected standard input while a slow move (10 mm/s)
-/// runs on the ABB twin that runs the RAPID driver: the key is typed once the arm has left its start, so it acts mid-move.
+/// runs on the ABB twin that runs the RAPID driver (and a stop on the KRL twin that runs drivers/kuka): the key is typed once the
+/// arm has left its start, so it acts mid-move.
 /// </summary>
 public class RunKeysTests
 {
@@ -93,6 +94,38 @@ public class RunKeysTests
             Assert.Contains("Done: 3 actions executed.", result.Stdout, StringComparison.Ordinal);
             Assert.True(controller.State.Position.IsSimilar(start + new Vector(0, 0, -60), 1e-2), controller.State.Position.ToString());
             Assert.True(controller.State.DigitalOutputs["DO_2"]);
+        }
+        finally
+        {
+            keys.End();
+        }
+    }
+
+    [Fact]
+    public async Task Run_SKey_OnKuka_StopsTheMoveWhereTheArmIs_TheRunEndsAtItsLine_NothingAfterRuns()
+    {
+        await using var controller = new VirtualKukaController(new VirtualKukaControllerOptions());
+        await controller.StartAsync().WaitAsync(Long);
+        using var cli = new CliRunner();
+        cli.Write("p.machina", "SpeedTo(10);\nMove(0, 0, -200);\nWriteDigital(2, true);\n");
+        var keys = new Keyboard();
+        var stdout = new WatchedWriter();
+        Vector start = controller.State.Position;
+        try
+        {
+            Task<CliResult> run = cli.RunAsync(["run", "p.machina", "--brand", "kuka", "--host", "127.0.0.1", "--port", controller.Port.ToString(CultureInfo.InvariantCulture)], keys, stdout);
+            await Eventually.TrueAsync(() => Vector.Distance(controller.State.Position, start) > 5, "the arm to leave its start", Long);
+            keys.Press('s');
+            CliResult result = await run.WaitAsync(Long);
+
+            Vector at = controller.State.Position;
+            Assert.True(result.Exit == 1, result.Stderr + result.Stdout);
+            Assert.Contains("Stopping the robot (s)...", result.Stdout, StringComparison.Ordinal);
+            Assert.Matches(@"p\.machina:2:1: error: stopped by the user \(s\): .+ stopped where the arm was and nothing after it ran\.", result.Stderr);
+            Assert.True(Vector.Distance(at, start + new Vector(0, 0, -200)) > 50, $"the arm reached {at}");
+            await Task.Delay(300);
+            Assert.True(Vector.Distance(controller.State.Position, at) < 0.01, controller.State.Position.ToString());
+            Assert.DoesNotContain("2", controller.State.DigitalOutputs.Keys);
         }
         finally
         {

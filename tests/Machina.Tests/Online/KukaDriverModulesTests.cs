@@ -77,8 +77,11 @@ public class KukaDriverModulesTests
         reader.Append(Encoding.ASCII.GetBytes(sb.ToString()));
         Assert.True(reader.TryRead(out KukaElement batch));
         KukaElement action = batch.Children.Single().Children.Single();
-        Assert.Equal(action.Attributes.Select(a => $"{batch.Name}/{batch.Children[0].Name}/{action.Name}/@{a.Key}").Append("DT"), receive);
-        Assert.Equal("2", server.Descendants("ELEMENT").Single(e => e.Attribute("Tag")!.Value == "DT").Attribute("Set_Flag")!.Value);
+        // The batch's attributes, the batch itself (flag 2), then the host's out-of-band commands (flags 4, 5, 6: the driver's interrupts).
+        string[] commands = [.. new[] { KukaProtocol.StopCommand, KukaProtocol.PauseCommand, KukaProtocol.ResumeCommand }.Select(ElementName)];
+        Assert.Equal(action.Attributes.Select(a => $"{batch.Name}/{batch.Children[0].Name}/{action.Name}/@{a.Key}").Append("DT").Concat(commands), receive);
+        string Flag(string tag) => server.Descendants("ELEMENT").Single(e => e.Attribute("Tag")!.Value == tag).Attribute("Set_Flag")!.Value;
+        Assert.Equal(["2", "4", "5", "6"], new[] { "DT" }.Concat(commands).Select(Flag));
     }
 
     [Fact]
@@ -86,7 +89,8 @@ public class KukaDriverModulesTests
     {
         XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
         var expected = AttributePaths(KukaMessages.State(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity, 1, 2))
-            .Concat(AttributePaths(KukaMessages.ReadAcknowledgement(3, 0.5))).Concat(AttributePaths(KukaFailure.Message(4, KukaFailure.NoSpeed)));
+            .Concat(AttributePaths(KukaMessages.ReadAcknowledgement(3, 0.5))).Concat(AttributePaths(KukaFailure.Message(4, KukaFailure.NoSpeed)))
+            .Append($"{KukaProtocol.Control}/@K");
         Assert.Equal(expected, Tags(server, "SEND"));
         XElement monitor = XElement.Parse(KukaDriverModules.Read("machina_kuka_monitor.xml"));
         Assert.Equal(AttributePaths(KukaMessages.Pose(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity)), Tags(monitor, "SEND"));
@@ -119,7 +123,7 @@ public class KukaDriverModulesTests
         string ring = KukaProtocol.Capacity.ToString(Num.Inv);
         Assert.Contains($"DECL INT slot_id[{ring}]", dat, StringComparison.Ordinal);
         Assert.Contains($"DECL CHAR slot_text[{ring},{KukaProtocol.MaxTextLength}]", dat, StringComparison.Ordinal);
-        Assert.Equal(3, Regex.Matches(src, $"_slot > {ring} THEN|FOR i = 1 TO {ring}").Count);
+        Assert.Equal(4, Regex.Matches(src, $"_slot > {ring} THEN|FOR i = 1 TO {ring}").Count);
         Assert.Contains($"\"S/@VR\", \"{KukaProtocol.DriverVersion}\"", src, StringComparison.Ordinal);
         var cases = Regex.Matches(src, @"^\s*CASE ([\d, ]+)$", RegexOptions.Multiline)
             .SelectMany(m => m.Groups[1].Value.Split(',', StringSplitOptions.TrimEntries)).Select(int.Parse).ToHashSet();
@@ -127,6 +131,14 @@ public class KukaDriverModulesTests
         // The KRL compiler's conventions: the INI fold, the BCO run, $ADVANCE.
         Assert.Contains("BAS (#INITMOV,0 )", src, StringComparison.Ordinal);
         Assert.Contains("PTP $AXIS_ACT", src, StringComparison.Ordinal);
+    }
+
+    private static string ElementName(string xml)
+    {
+        var reader = new KukaXmlReader();
+        reader.Append(Encoding.ASCII.GetBytes(xml));
+        Assert.True(reader.TryRead(out KukaElement element));
+        return element.Name;
     }
 
     private static List<string> Tags(XElement config, string section) =>

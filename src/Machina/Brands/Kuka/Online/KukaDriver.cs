@@ -9,7 +9,7 @@ namespace Machina;
 /// unacknowledged, so a batch can never overwrite a slot of the driver's ring that was not executed (fix of bug K7): the
 /// session reads <see cref="Capacity"/> and releases no more; an action sent beyond it is refused here, never held.
 /// </summary>
-internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
+internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
 {
     private readonly double _motionUpdateRate;
     private readonly object _gate = new();
@@ -125,6 +125,9 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
             case KukaProtocol.Failure:
                 Fail(element.Integer("ID"), element.Attribute("Text") ?? KukaFailure.Describe(0), element.Attribute("Code"));
                 break;
+            case KukaProtocol.Control:
+                OnControl(element.Integer("K"));
+                break;
             case KukaProtocol.State when !IsHandshakeOver:
                 KukaState state = KukaState.Parse(element);
                 _version = state.Version;
@@ -134,7 +137,7 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
                 Log.Debug($"Ignored a second state report on one connection: {element}");
                 break;
             default:
-                throw new KukaProtocolException($"The controller sent <{element.Name}>, which is not part of the Machina KUKA driver protocol (S, R, F).", element.ToString());
+                throw new KukaProtocolException($"The controller sent <{element.Name}>, which is not part of the Machina KUKA driver protocol (S, R, F, C).", element.ToString());
         }
     }
 
@@ -143,6 +146,12 @@ internal sealed class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
     {
         Log.Error($"The controller could not run action {id}: {reason}");
         Listener?.OnFailed(id, reason, code);
+        if (code == Num.I(KukaFailure.Stopped))
+        {
+            // The stop's own report: the session closes the link on it, so the <C K="3"/> after it may never be read. The
+            // failure is reported to the session first, so the stop finds it applied.
+            OnControl(3);
+        }
     }
 
     /// <summary>The value a read's acknowledgement carries (<c>V=""</c>), or null when there is none.</summary>

@@ -3,7 +3,8 @@ namespace Machina;
 /// <summary>
 /// The failure report of the KRL driver, <c>&lt;F ID="id" Code="code" Text="text"&gt;&lt;/F&gt;</c>: the action with that id could not
 /// run, so the driver did not start it, sent this instead of its acknowledgement and halted (nothing after it runs). The codes
-/// are the driver's own checks before an action (docs/protocol-kuka.md).
+/// are the driver's own checks before an action (docs/protocol-kuka.md), and <see cref="Stopped"/>: the host stopped the action
+/// under way (the driver then keeps serving the next connection).
 /// </summary>
 internal static class KukaFailure
 {
@@ -25,6 +26,9 @@ internal static class KukaFailure
     /// <summary>An input still not at its value when the wait's time limit passed (timer 15).</summary>
     public const int WaitTimedOut = 6;
 
+    /// <summary>The action that ran when the host stopped the motion (Robot.Stop): it ended where the arm was, the rest was dropped.</summary>
+    public const int Stopped = 7;
+
     /// <summary>The text the driver sends (and shows in its quit message) for a code.</summary>
     public static string Describe(int code) => code switch
     {
@@ -34,6 +38,7 @@ internal static class KukaFailure
         NoSuchOutput => "Output does not exist: the number is outside the controller's outputs.",
         AnalogRange => "Analog value out of range: $ANOUT takes values from -1 to 1.",
         WaitTimedOut => "Input did not change within the time limit: the wait for $IN timed out.",
+        Stopped => "Stopped by Machina (Robot.Stop): the motion stopped where the arm was.",
         _ => "The driver could not run the action and halted.",
     };
 

@@ -38,6 +38,18 @@ internal static class KukaProtocol
     /// <summary>A failure report: attributes <c>ID</c>, <c>Code</c> and <c>Text</c>, the action the driver could not run before it halted.</summary>
     public const string Failure = "F";
 
+    /// <summary>The driver's answer to <see cref="StopCommand"/>, <see cref="PauseCommand"/> or <see cref="ResumeCommand"/>: <c>&lt;C K="n"/&gt;</c> (1 paused, 2 resumed, 3 stopped).</summary>
+    public const string Control = "C";
+
+    /// <summary>Robot.Stop, out of band on the driver's channel: sets $FLAG[4], whose interrupt brakes, fails the action that runs and drops the rest.</summary>
+    public const string StopCommand = "<STOP/>";
+
+    /// <summary>Robot.Pause, out of band: sets $FLAG[5], whose interrupt brakes and holds until <see cref="ResumeCommand"/>.</summary>
+    public const string PauseCommand = "<PAUSE/>";
+
+    /// <summary>Robot.Resume after a pause: sets $FLAG[6]; the held motion goes on.</summary>
+    public const string ResumeCommand = "<RESUME/>";
+
     /// <summary>A live pose report on the monitor channel (driver port + 1).</summary>
     public const string Pose = "P";
 

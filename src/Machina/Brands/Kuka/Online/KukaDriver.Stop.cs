@@ -1,0 +1,82 @@
+using System.Text;
+
+namespace Machina;
+
+internal sealed partial class KukaDriver
+{
+    /// <summary>How long the driver has to answer a stop, pause or resume (its interrupt brakes first, which takes a moment).</summary>
+    private static readonly TimeSpan ControlTimeout = TimeSpan.FromSeconds(10);
+
+    private readonly object _controlGate = new();
+    private (int Expected, TaskCompletionSource Done)? _control;
+
+    /// <inheritdoc/>
+    /// <remarks>
+    /// <c>&lt;PAUSE/&gt;</c> on the driver's channel sets $FLAG[5]; the driver's interrupt BRAKEs the motion where the arm is, answers
+    /// <c>&lt;C K="1"/&gt;</c> and waits in its interrupt routine. <see cref="ResumeAsync"/> sends <c>&lt;RESUME/&gt;</c>: the motion goes on.
+    /// </remarks>
+    public Task PauseAsync(CancellationToken cancellationToken) => ControlAsync(KukaProtocol.PauseCommand, 1, "pause", cancellationToken);
+
+    /// <inheritdoc/>
+    public Task ResumeAsync(CancellationToken cancellationToken) => ControlAsync(KukaProtocol.ResumeCommand, 2, "resume", cancellationToken);
+
+    /// <inheritdoc/>
+    /// <remarks>
+    /// <c>&lt;STOP/&gt;</c> on the driver's channel sets $FLAG[4]; the driver's interrupt BRAKEs the motion, fails the action under way
+    /// (<c>&lt;F Code="7"/&gt;</c>), ends it with RESUME, drops everything else until the next connection and answers <c>&lt;C K="3"/&gt;</c>.
+    /// </remarks>
+    public Task StopMotionAsync(CancellationToken cancellationToken) => ControlAsync(KukaProtocol.StopCommand, 3, "stop", cancellationToken);
+
+    /// <summary>Sends one command on the driver's channel and waits for its answer.</summary>
+    private async Task ControlAsync(string command, int answer, string what, CancellationToken cancellationToken)
+    {
+        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        lock (_controlGate)
+        {
+            if (_control is not null)
+            {
+                throw new InvalidOperationException($"Cannot {what} now: the controller has not answered the command before it yet.");
+            }
+            _control = (answer, done);
+        }
+        try
+        {
+            lock (_gate)
+            {
+                TcpLink link = Link ?? throw new InvalidOperationException($"Cannot {what}: the link is not open.");
+                link.Post(Encoding.ASCII.GetBytes(command));
+            }
+            await done.Task.WaitAsync(ControlTimeout, Time, cancellationToken).ConfigureAwait(false);
+        }
+        catch (TimeoutException)
+        {
+            throw new RobotStoppedException($"The KUKA driver did not answer the {what} command within {Num.G(ControlTimeout.TotalSeconds)} s (is the machina_kuka_driver of this Machina loaded, with STOP, PAUSE and RESUME in machina_kuka_server.xml?).");
+        }
+        finally
+        {
+            lock (_controlGate)
+            {
+                _control = null;
+            }
+        }
+    }
+
+    /// <summary>A <c>&lt;C K="n"/&gt;</c> from the driver: the command it answers is done.</summary>
+    private void OnControl(int done)
+    {
+        TaskCompletionSource? waiter = null;
+        lock (_controlGate)
+        {
+            if (_control is (int expected, TaskCompletionSource tcs) && expected == done)
+            {
+                waiter = tcs;
+            }
+        }
+        if (waiter is null)
+        {
+            Log.Debug($"Ignored from the controller: <C K=\"{done}\"/>");
+            return;
+        }
+        waiter.TrySetResult();
+    }
+}
