@@ -268,7 +268,9 @@ MODULE Machina_Driver
                 requests{writeIndex} := parsing;
                 writeIndex := writeIndex MOD BUFFER_SIZE + 1;
                 requestCount := requestCount + 1;
-                IF parsing.id > 0 THEN
+                ! While discarding after a stop, what still arrives is dropped unrun: it is not counted received either, so
+                ! the next client's handshake ($25) shows an idle driver, not requests it will never run.
+                IF parsing.id > 0 AND NOT discarding THEN
                     lastReceivedId := parsing.id;
                 ENDIF
             ENDIF

@@ -6,6 +6,7 @@ MODULE Machina_Monitor
     ! Out of band, while the driver's task moves, it takes one-character commands from the host: "P" pause (StopMove: the arm
     ! holds on its path), "R" resume (StartMove), "S" stop (the arm holds, then the driver's task fails the move under way and
     ! drops everything after it), each answered "$28 n;" once done (1 paused, 2 resumed, 3 stopped).
+    ! "M" asks which arm this is, answered "$@0 101 3 <GetSysInfo(\RobotType)>;".
 
     PERS string SERVER_IP := "{{HOSTNAME}}";
     CONST num MONITOR_PORT := {{PORT}};
@@ -112,6 +113,9 @@ MODULE Machina_Monitor
                 StopMove \AllMotionTasks;
                 machinaStopRequest := TRUE;
                 SocketSend clientSocket \Str:="$28 3;";
+            ELSEIF c = "M" THEN
+                ! Which arm this controller runs (e.g. "IRB 120-3/0.6"): the host learns its model when it connects.
+                SocketSend clientSocket \Str:="$@0 101 3 " + GetSysInfo(\RobotType) + ";";
             ENDIF
         ENDFOR
     ERROR

@@ -23,11 +23,10 @@ public static class HelloRobotSample
 
         try
         {
-            // With the arm's model, Machina knows the pose after a joint move (forward kinematics) and the joints after a
-            // Cartesian one; without it, the one it was not given stays unknown.
-            Robot bot = controller.Model is RobotModel model
-                ? Robot.Create("HelloRobot", controller.Brand, model)
-                : Robot.Create("HelloRobot", controller.Brand);
+            // No model named here: the robot learns its arm's model from the controller when it connects (Machina's drivers and
+            // the virtual controllers name it), so it knows the pose after a joint move (forward kinematics) and the joints
+            // after a Cartesian one.
+            Robot bot = Robot.Create("HelloRobot", controller.Brand);
             bot.ControlMode("online");
             long lastMotion = 0;
             bot.ActionIssued += (_, e) => output.WriteLine($"  issued    #{e.LastAction.Id} {e.LastAction}");
@@ -37,7 +36,7 @@ public static class HelloRobotSample
             bot.ConnectionLost += (_, e) => output.WriteLine($"  connection lost: {e.Error.Message}");
 
             await bot.ConnectAsync(controller.Host, controller.Port, cancellationToken);
-            output.WriteLine($"Connected to {bot.GetIP()}; the robot is at {bot.GetCurrentPosition()} with axes {bot.GetCurrentAxes()}.");
+            output.WriteLine($"Connected to {bot.GetIP()} ({bot.Model?.Name ?? "arm model unknown"}); the robot is at {bot.GetCurrentPosition()} with axes {bot.GetCurrentAxes()}.");
             // Live poses from the controller's monitor (printed at most every 0.4 s).
             bot.MotionUpdate += (_, e) =>
             {

@@ -144,12 +144,8 @@ public sealed partial class BridgeServer : IAsyncDisposable
                 $"The bridge has no virtual controller for {Robot.Brand} robots yet; connect to a real controller with a host and port instead.");
             _embedded = await start(_options, cancellationToken).ConfigureAwait(false);
             (host, port) = ("127.0.0.1", _embedded.Port);
-            if (Robot.Model is null && _embedded.Model is RobotModel model)
-            {
-                // The robot learns the arm it drives, as from a real controller named with its model: a joint move then has a
-                // known pose (forward kinematics), so a client's MoveTo after an AxesTo is not refused for an unknown orientation.
-                Robot.SetModel(model);
-            }
+            // No model is set here: the robot learns the arm when it connects, from the virtual controller as from a real one
+            // (docs/online.md), so a joint move has a known pose and a client's MoveTo after an AxesTo is not refused.
         }
         Robot.ControlMode(ControlType.Online);
         Subscribe();

@@ -49,6 +49,10 @@ public sealed partial class VirtualUrController
                 return "Disconnected";
             case "robotmode":
                 return "Robotmode: RUNNING";
+            case "get robot model":
+                return DashboardModelName;
+            case "PolyscopeVersion":
+                return DashboardSoftware;
             case "programState":
                 return (!running ? "STOPPED" : TwinHeld ? "PAUSED" : "PLAYING") + (twin.ProgramsStarted == 0 ? " <unnamed>" : " " + (twin.ProgramName ?? "<unnamed>"));
             case "running":
@@ -58,6 +62,31 @@ public sealed partial class VirtualUrController
                 return (command == "safetystatus" ? "Safetystatus: " : "Safetymode: ") + name;
             default:
                 return $"could not understand: '{command}'";
+        }
+    }
+
+    /// <summary>The arm's name as a UR dashboard gives it (<c>get robot model</c>): without the e-Series "e" ("UR5" for a UR5e).</summary>
+    private string DashboardModelName
+    {
+        get
+        {
+            string name = (Model ?? RobotModels.Get("UR5e")).Name;
+            return name.EndsWith('e') ? name[..^1] : name;
+        }
+    }
+
+    /// <summary>
+    /// The software version a UR dashboard gives (<c>PolyscopeVersion</c>): the configured controller version for an e-Series
+    /// arm, 3.15 for a CB-Series arm (UR3, UR5, UR10), which never runs software 5.
+    /// </summary>
+    private string DashboardSoftware
+    {
+        get
+        {
+            string name = (Model ?? RobotModels.Get("UR5e")).Name;
+            bool cbSeries = !name.EndsWith('e') && RobotModels.Find(name + "e") is not null;
+            Version v = cbSeries ? new Version(3, 15, 8) : _options.ControllerVersion;
+            return $"URSoftware {v.Major}.{v.Minor}.{Math.Max(v.Build, 0)}.0 (virtual controller)";
         }
     }
 }

@@ -2,7 +2,7 @@ namespace Machina.Simulation.Krl;
 
 /// <summary>
 /// The system variables a KRL twin has: frames ($BASE, $TOOL, $NULLFRAME), motion settings ($VEL, $ACC, $VEL_AXIS, $ACC_AXIS,
-/// $APO, $ADVANCE), IO ($OUT, $IN, $ANOUT, $ANIN, $FLAG), timers, software limit switches and the actual pose ($POS_ACT, $AXIS_ACT).
+/// $APO, $ADVANCE), IO ($OUT, $IN, $ANOUT, $ANIN, $FLAG), timers, software limit switches, the actual pose ($POS_ACT, $AXIS_ACT) and the arm's name ($MODEL_NAME).
 /// </summary>
 internal static class KrlSystemVariables
 {
@@ -48,9 +48,19 @@ internal static class KrlSystemVariables
         double[] min = options.Model.MinJoints.ToArray(), max = options.Model.MaxJoints.ToArray();
         Add(new KrlCell("$SOFTN_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? min[i] : -1e6))])) { ReadOnly = true });
         Add(new KrlCell("$SOFTP_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? max[i] : 1e6))])) { ReadOnly = true });
+        KrlType name32 = KrlType.Array(KrlType.Char, 32);
+        object[] modelName = new object[32];
+        KrlValues.SetText(modelName, 0, 32, ModelName(options.Model));
+        Add(new KrlCell("$MODEL_NAME", name32, new KrlArrayValue(name32, modelName)) { ReadOnly = true });
         Add(new KrlCell("$POS_ACT", KrlTypes.E6Pos, null!) { ReadOnly = true, Read = controller.PositionNow });
         Add(new KrlCell("$AXIS_ACT", KrlTypes.E6Axis, null!) { ReadOnly = true, Read = controller.AxesNow });
     }
+
+    /// <summary>
+    /// The arm's name as a KR C4 keeps it in <c>$MODEL_NAME[]</c>: '#', the catalogue name in capitals without spaces, then the
+    /// controller (e.g. "#KR6R900SIXX C4" for the KR 6 R900 sixx).
+    /// </summary>
+    internal static string ModelName(RobotModel model) => "#" + model.Name.Replace(" ", "", StringComparison.Ordinal).ToUpperInvariant() + " C4";
 
     private static KrlArrayValue Filled(KrlType type, object value) => new(type, [.. Enumerable.Repeat(value, type.Length)]);
 }

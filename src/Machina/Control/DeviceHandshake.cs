@@ -7,7 +7,14 @@ namespace Machina;
 /// <param name="Axes">Joint angles in degrees, or null when not reported.</param>
 /// <param name="ExternalAxes">External axis values, or null when the robot has none.</param>
 /// <param name="Progress">Where the controller is in the request stream, or null when its driver does not say.</param>
-internal sealed record DeviceHandshake(string Version, Vector? Position, Rotation? Rotation, Joints? Axes, ExternalAxes? ExternalAxes, DeviceProgress? Progress = null);
+internal sealed record DeviceHandshake(string Version, Vector? Position, Rotation? Rotation, Joints? Axes, ExternalAxes? ExternalAxes, DeviceProgress? Progress = null)
+{
+    /// <summary>The arm as the controller names it (UR dashboard, ABB robot type, KUKA <c>$MODEL_NAME[]</c>), or null when it did not say.</summary>
+    public string? ModelName { get; init; }
+
+    /// <summary>The catalogue model that <see cref="ModelName"/> names, or null when there is none (or no name).</summary>
+    public RobotModel? Model { get; init; }
+}
 
 /// <summary>
 /// The wire ids of the last request the controller executed and of the last one it received (0 when none): requests in

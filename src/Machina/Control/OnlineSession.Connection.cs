@@ -99,7 +99,11 @@ internal sealed partial class OnlineSession
             return DisposedRefusal;   // disposed during the handshake: the robot stays disconnected, nothing changes
         }
         string? refusal = null;
-        WithIssueCursor(issue => refusal = Resume(handshake, link.Driver, issue));
+        WithIssueCursor(issue =>
+        {
+            LearnModel(handshake, issue);
+            refusal = Resume(handshake, link.Driver, issue);
+        });
         if (refusal is not null)
         {
             return refusal;

@@ -110,7 +110,8 @@ public class BridgeServerTests
 
     /// <summary>
     /// Issue 24: a page's Hello Robot ends with AxesTo, and a Python client's MoveTo that followed was refused ("orientation is
-    /// not known"). The robot learns the embedded controller's arm, so the joint move has a pose and the MoveTo runs.
+    /// not known"). The robot learns the embedded controller's arm when it connects (the bridge names no model), so the joint
+    /// move has a pose and the MoveTo runs.
     /// </summary>
     [Fact]
     public async Task EmbeddedController_GivesTheRobotItsArm_SoAMoveToAfterAnAxesToRuns()

@@ -37,7 +37,10 @@ public class AbbOnlineTests
         Assert.Equal(new Vector(400, 300, 750), executed[4].Position);
         Assert.Equal(0.7071, executed[4].Rotation!.Value.W, 4);
         Assert.Equal(0.7071, executed[4].Rotation!.Value.Y, 4);
-        Assert.Null(executed[6].Position);
+        // The twin runs an IRB 1600-8/1.45 when no model is given, and says so when asked: the robot learned it on connect,
+        // so the joint move has its forward kinematics pose.
+        Assert.Equal("IRB 1600-8/1.45", bot.Model?.Name);
+        Assert.True(executed[6].Position!.Value.IsSimilar(new Vector(750, 0, 1121.5), 1e-6), executed[6].Position.ToString());
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), executed[6].Axes);
         Assert.Equal(
             ["@1 7 \"Hello Robot!\";", "@2 4 100;", "@3 1 400 300 500 0 0 1 0;", "@4 1 400 300 500 0.7071 0 0.7071 0;",

@@ -88,7 +88,7 @@ public class KukaDriverModulesTests
     public void ServerXml_SendElements_AreWhatTheHostReads()
     {
         XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
-        var expected = AttributePaths(KukaMessages.State(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity, 1, 2))
+        var expected = AttributePaths(KukaMessages.State(new Joints(0, -90, 90, 0, 0, 0), new Vector(1, 2, 3), Rotation.Identity, 1, 2, "#KR6R900SIXX C4"))
             .Concat(AttributePaths(KukaMessages.ReadAcknowledgement(3, 0.5))).Concat(AttributePaths(KukaFailure.Message(4, KukaFailure.NoSpeed)))
             .Append($"{KukaProtocol.Control}/@K");
         Assert.Equal(expected, Tags(server, "SEND"));

@@ -84,7 +84,8 @@ public class UrStateTests
 
         await bot.ResumeAsync().WaitAsync(Limit);
         await resumed.Task.WaitAsync(Limit);
-        Assert.Equal(["safetystatus", "close safety popup", "unlock protective stop", "play"], controller.DashboardCommands);
+        // The connect asked which arm this is (get robot model, PolyscopeVersion) before anything else.
+        Assert.Equal(["get robot model", "PolyscopeVersion", "safetystatus", "close safety popup", "unlock protective stop", "play"], controller.DashboardCommands);
         // Simulated time runs until everything is done (however slowly this machine schedules the controller), bounded in real time.
         Task done = bot.WaitForCompletionAsync();
         long begun = TimeProvider.System.GetTimestamp();
@@ -114,7 +115,7 @@ public class UrStateTests
 
         var refused = await Assert.ThrowsAsync<RobotStoppedException>(() => bot.ResumeAsync().WaitAsync(Limit));
         Assert.Contains("release the emergency stop button", refused.Message, StringComparison.Ordinal);
-        Assert.Equal(["safetystatus"], controller.DashboardCommands);
+        Assert.Equal(["get robot model", "PolyscopeVersion", "safetystatus"], controller.DashboardCommands);
 
         controller.ReleaseEmergencyStop();
         await bot.ResumeAsync().WaitAsync(Limit);

@@ -154,6 +154,8 @@ public sealed class SamplesRunTests
     private static void CheckHelloRobot(string output, string controller, string model)
     {
         Assert.Contains($"Started a virtual {controller}", output, StringComparison.Ordinal);
+        // The sample names no model: the robot learned it from the controller when it connected.
+        Assert.Contains($"({model}); the robot is at", output, StringComparison.Ordinal);
         // The seven actions executed in order, each once, the last with nothing left. (How many are left after the others
         // depends on how fast the controller is, compared with issuing.)
         string[] executed = [.. output.Split('\n').Where(l => l.StartsWith("  executed  #", StringComparison.Ordinal))];

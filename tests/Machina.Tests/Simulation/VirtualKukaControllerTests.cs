@@ -20,8 +20,10 @@ public class VirtualKukaControllerTests
         KukaElement state = await KukaTestSupport.ReadElementAsync(client, new KukaXmlReader());
 
         Pose flange = RobotModels.Get("KR 6 R900 sixx").Kinematics.Forward(new Joints(0, -90, 90, 0, 90, 0));
-        Assert.Equal(KukaMessages.State(new Joints(0, -90, 90, 0, 90, 0), flange.Position, flange.Rotation, 0, 0), state.ToString().Replace("/>", "></S>", StringComparison.Ordinal));
+        Assert.Equal(KukaMessages.State(new Joints(0, -90, 90, 0, 90, 0), flange.Position, flange.Rotation, 0, 0, "#KR6R900SIXX C4"), state.ToString().Replace("/>", "></S>", StringComparison.Ordinal));
         Assert.Equal(new DeviceProgress(0, 0), KukaState.Parse(state).Progress);
+        // The arm's $MODEL_NAME[], which the host maps to the catalogue model.
+        Assert.Equal("KR 6 R900 sixx", KukaState.Parse(state).ToHandshake().Model?.Name);
     }
 
     [Fact]

@@ -82,6 +82,11 @@ internal sealed partial class AbbDriver
             OnControl((int)message.Values[0]);
             return true;
         }
+        if (message.Kind == AbbMessageKind.Information && message.Code == (int)AbbInstructionCode.GetInfo)
+        {
+            OnInformation(message);
+            return true;
+        }
         return false;
     }
 

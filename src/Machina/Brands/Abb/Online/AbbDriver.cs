@@ -35,11 +35,12 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     /// <inheritdoc/>
     protected override async Task<DeviceHandshake> OpenAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
     {
+        long start = Time.GetTimestamp();
         DeviceHandshake handshake = await OpenDriverLinkAsync(host, port, timeout, "handshake", "the Machina driver", cancellationToken).ConfigureAwait(false);
         CheckVersion(_version!.Value);
         _monitor = await OpenMonitorAsync(host, port + 1, new AbbMessageReader(),
             "Real-time monitoring is not available on this controller (no monitor task on the next port); there will be no motion updates.", cancellationToken).ConfigureAwait(false);
-        return handshake;
+        return await WithRobotTypeAsync(handshake, Left(start, timeout), cancellationToken).ConfigureAwait(false);
     }
 
     private void CheckVersion(AbbDriverVersion version)

@@ -8,7 +8,8 @@ namespace Machina;
 /// <param name="Position">TCP position in mm (<c>$POS_ACT</c>).</param>
 /// <param name="Rotation">TCP orientation, from A, B, C.</param>
 /// <param name="Progress">Last executed and last received action ids, or null for a driver that does not report them (1.x).</param>
-internal sealed record KukaState(string Version, Joints Axes, Vector Position, Rotation Rotation, DeviceProgress? Progress)
+/// <param name="ModelName">The arm's <c>$MODEL_NAME[]</c> (<c>Model</c>), or null when the driver does not send it.</param>
+internal sealed record KukaState(string Version, Joints Axes, Vector Position, Rotation Rotation, DeviceProgress? Progress, string? ModelName = null)
 {
     /// <summary>Reads an <c>S</c> element; a protocol error when an attribute is missing or malformed.</summary>
     public static KukaState Parse(KukaElement element)
@@ -18,11 +19,17 @@ internal sealed record KukaState(string Version, Joints Axes, Vector Position, R
         DeviceProgress? progress = element.Attribute("Executed") is null && element.Attribute("Received") is null
             ? null
             : new DeviceProgress(element.Integer("Executed"), element.Integer("Received"));
-        return new KukaState(version, axes, position, rotation, progress);
+        string? model = element.Attribute("Model") is string name && name.Trim().Length > 0 ? name.Trim() : null;
+        return new KukaState(version, axes, position, rotation, progress, model);
     }
 
     /// <summary>The handshake the online session gets (KUKA robots here have no external axes).</summary>
-    public DeviceHandshake ToHandshake() => new(Version, Position, Rotation, Axes, null, Progress);
+    /// <remarks>With the arm's <c>$MODEL_NAME[]</c> (driver 2.0 sends it in <c>Model</c>) and the catalogue model it names.</remarks>
+    public DeviceHandshake ToHandshake() => new(Version, Position, Rotation, Axes, null, Progress)
+    {
+        ModelName = ModelName,
+        Model = ModelName is null ? null : KukaModelName.Find(ModelName),
+    };
 }
 
 /// <summary>
@@ -31,13 +38,17 @@ internal sealed record KukaState(string Version, Joints Axes, Vector Position, R
 /// </summary>
 internal static class KukaMessages
 {
-    /// <summary><c>&lt;S VR=… A1…A6=… X Y Z A B C=… Executed=… Received=…&gt;&lt;/S&gt;</c>: sent on every new connection.</summary>
-    public static string State(Joints axes, Vector position, Rotation rotation, int lastExecutedId, int lastReceivedId)
+    /// <summary><c>&lt;S VR=… A1…A6=… X Y Z A B C=… Executed=… Received=… Model=…&gt;&lt;/S&gt;</c>: sent on every new connection (Model when given).</summary>
+    public static string State(Joints axes, Vector position, Rotation rotation, int lastExecutedId, int lastReceivedId, string? modelName = null)
     {
         var sb = new StringBuilder(256);
         KukaXml.AppendAttribute(KukaXml.AppendStart(sb, KukaProtocol.State), "VR", KukaProtocol.DriverVersion);
         AppendPose(sb, axes, position, rotation);
         sb.Append(" Executed=\"").Append(lastExecutedId).Append("\" Received=\"").Append(lastReceivedId).Append('"');
+        if (modelName is not null)
+        {
+            KukaXml.AppendAttribute(sb, "Model", modelName);
+        }
         return sb.Append("></S>").ToString();
     }
 

@@ -39,6 +39,8 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         _host = host;
         _ports = UrPorts.For(port);
         RtdeSample first = await ConnectRtdeAsync(host, timeout, cancellationToken).ConfigureAwait(false);
+        // Which arm this is, from the dashboard server (at most half the time left: it never fails the connection).
+        (string? Name, RobotModel? Model) arm = await ReadModelAsync(Left(start, timeout) / 2, cancellationToken).ConfigureAwait(false);
         // At most half the time: an old program stuck inside an instruction (its link cut mid-way) must not starve the connect.
         await SettleAsync(Left(start, timeout) / 2, cancellationToken).ConfigureAwait(false);
 
@@ -76,7 +78,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         DeviceProgress progress = await ProgressOfAsync(_instance, Left(start, timeout), cancellationToken).ConfigureAwait(false);
         RtdeSample now = LatestSample ?? first;
         Log.Info($"Connected to the UR driver {driver.Version} at {host}; live state over RTDE at {Num.G(_rtdeFrequency)} Hz.");
-        return new DeviceHandshake(driver.Version, now.Position, now.Rotation, now.Joints, null, progress);
+        return new DeviceHandshake(driver.Version, now.Position, now.Rotation, now.Joints, null, progress) { ModelName = arm.Name, Model = arm.Model };
     }
 
     /// <inheritdoc/>
