@@ -203,6 +203,7 @@ internal sealed partial class KrlTwinController : IDisposable
         try
         {
             machine.Run(routine);
+            EndAdvanceRun(cancellation);
             return Finish(KrlProgramState.Finished, null);
         }
         catch (KrlHaltException)
