@@ -1,5 +1,6 @@
 using Machina.Simulation.Rapid;
 using Machina.Simulation.Twin;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Simulation.Rapid;
 
@@ -98,5 +99,38 @@ public class RapidZoneTests
 
         Assert.Equal(["100"], twin.Pendant.Lines);
         Assert.Equal(4 * (0.1 / 0.25 + 0.25 / 1.2), twin.Clock.Seconds, 4);
+    }
+
+    [Fact]
+    public async Task RealTime_TheArmRoundsTheCornerOnTheParabola()
+    {
+        var clock = new ManualClock();
+        var twin = new RapidTwinController(new RapidTwinOptions { Acceleration = 1.2, Time = clock, RealTime = true });
+        twin.Load(("T.mod", Square("z20")));
+        Pose start = twin.Arm.Tcp;
+        using var stop = new CancellationTokenSource(TimeSpan.FromMinutes(2));
+        Task<RapidProgramState> run = Task.Run(() => twin.Run("main", stop.Token));
+        TimeSpan bound = TimeSpan.FromMinutes(1);
+
+        // The first MoveL waits on the clock's first timer (0.425759 s to its zone); the second MoveL starts on the clock's
+        // second timer, from the zone's entry (80, 0) past the corner (100, 0) to (100, 20), then 60 mm straight on.
+        Assert.True(SpinWait.SpinUntil(() => clock.TimersCreated == 1 && clock.PendingTimers == 1, bound), "the first MoveL did not start");
+        clock.Advance(TimeSpan.FromSeconds(1));
+        Assert.True(SpinWait.SpinUntil(() => clock.TimersCreated == 2 && clock.PendingTimers == 1, bound), "the second MoveL did not start");
+        double blend = BlendModel.Length(new Vector(0.08, 0, 0), new Vector(0.1, 0, 0), new Vector(0.1, 0.02, 0));
+        clock.Advance(TimeSpan.FromSeconds(0.391305 * (blend / 2) / (blend + 0.06))); // half way along the parabola
+        Vector half = twin.Arm.Tcp.Position - start.Position;
+
+        while (!run.IsCompleted)
+        {
+            Assert.True(SpinWait.SpinUntil(() => run.IsCompleted || clock.PendingTimers > 0, bound), "the program stalled");
+            clock.Advance(TimeSpan.FromSeconds(1));
+        }
+
+        Assert.Equal(RapidProgramState.Finished, await run);
+        // The parabola's middle: a quarter of the entry, half of the corner and a quarter of the exit, 7.07 mm inside the corner.
+        Assert.InRange((half - new Vector(95, 5, 0)).Length, 0, 0.05);
+        Assert.Equal(0.425759 + 3 * 0.391305 + 0.182574, twin.Clock.Seconds, 4);
+        Assert.InRange((twin.Arm.Tcp.Position - start.Position).Length, 0, 1e-6);
     }
 }
