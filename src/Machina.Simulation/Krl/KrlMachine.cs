@@ -236,6 +236,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     private void Wait(KrlWait wait, object[] frame)
     {
+        Controller.EndAdvanceRun(Cancellation);
         if (!wait.ForCondition)
         {
             double seconds = KrlValues.ToReal(Eval(wait.Value, frame));

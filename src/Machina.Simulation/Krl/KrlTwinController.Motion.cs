@@ -5,7 +5,8 @@ namespace Machina.Simulation.Krl;
 
 /// <summary>
 /// Motion on the twin arm: PTP, LIN and CIRC to axis or Cartesian targets in $BASE with $TOOL, software limit switches
-/// ($SOFTN_END/$SOFTP_END) checked before the motion starts, and motion time from $VEL/$ACC (paths) and $VEL_AXIS/$ACC_AXIS (axes).
+/// ($SOFTN_END/$SOFTP_END) checked before the motion starts, motion time from $VEL/$ACC (paths) and $VEL_AXIS/$ACC_AXIS (axes), and
+/// approximate positioning between LIN motions in a program without EthernetKRL channels (docs/simulation.md).
 /// </summary>
 internal sealed partial class KrlTwinController
 {
@@ -14,6 +15,7 @@ internal sealed partial class KrlTwinController
 
     private static readonly string[] AxisNames = ["A1", "A2", "A3", "A4", "A5", "A6"];
     private int _coincident;
+    private CancellationToken _motionCancellation;
 
     /// <summary>Joints of an AXIS or E6AXIS value.</summary>
     public static Joints JointsOf(KrlStructValue axes) => new(axes.Number("A1"), axes.Number("A2"), axes.Number("A3"), axes.Number("A4"), axes.Number("A5"), axes.Number("A6"));
@@ -33,11 +35,14 @@ internal sealed partial class KrlTwinController
     public object AxesNow() => AxesValue(Arm.Joints);
 
     /// <summary>$POS_ACT: the TCP now in $BASE, with S and T of the axes.</summary>
-    public object PositionNow()
+    public object PositionNow() => PositionOf(Arm.Tcp, Arm.Joints);
+
+    /// <summary>An E6POS of the TCP at <paramref name="tcp"/> (base frame of the robot) in $BASE, with S and T of <paramref name="joints"/>.</summary>
+    private KrlStructValue PositionOf(Pose tcp, Joints joints)
     {
-        Pose pose = FrameOf("$BASE").Inverse() * Arm.Tcp;
+        Pose pose = FrameOf("$BASE").Inverse() * tcp;
         YawPitchRoll abc = pose.Rotation.ToYawPitchRoll();
-        KukaConfiguration configuration = KukaConfiguration.From(Options.Model, Arm.Joints);
+        KukaConfiguration configuration = KukaConfiguration.From(Options.Model, joints);
         var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Pos);
         object[] v = value.Values;
         (v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) = (pose.Position.X, pose.Position.Y, pose.Position.Z, abc.Yaw, abc.Pitch, abc.Roll, configuration.Status, configuration.Turn);
@@ -65,9 +70,10 @@ internal sealed partial class KrlTwinController
         }
     }
 
-    /// <summary>$TOOL was written: the arm's TCP follows it.</summary>
+    /// <summary>$TOOL was written: the arm's TCP follows it (the advance run ends: the arm stops at its last point first).</summary>
     public void ToolChanged()
     {
+        Arm.FinishBlend(_motionCancellation);
         Arm.ToolCenter = FrameOf("$TOOL");
         Arm.Record(Line, TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Environment.System["$TOOL"].Value));
     }
@@ -110,12 +116,23 @@ internal sealed partial class KrlTwinController
         return solution;
     }
 
-    /// <summary>Runs a motion statement: checks the target before the motion starts, then moves the arm and traces the end.</summary>
+    /// <summary>
+    /// Runs a motion statement: checks the target before the motion starts, then moves the arm and traces the end. A LIN with an
+    /// approximation (C_DIS, C_VEL, C_ORI) and $ADVANCE of 1 or more returns as the arm enters its approximation zone, and the next
+    /// LIN rounds the corner (<see cref="TwinArm.MoveLinear"/>); PTP and CIRC stop exactly, after the arm finished a pending corner.
+    /// </summary>
     public void Move(string kind, object target, object? auxiliary, string? approximation, int line, CancellationToken cancellation)
     {
-        Joints start = Arm.Joints;
+        _motionCancellation = cancellation;
+        if (kind != "LIN")
+        {
+            Arm.FinishBlend(cancellation);
+        }
+        TwinBlend? blend = Arm.PendingBlend;
+        Joints start = blend?.CornerJoints ?? Arm.Joints;
         Joints end;
         double pathMm = 0, turnDegrees = 0;
+        Pose? goal = null;
         KrlStructValue? axes = ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true);
         if (axes is not null)
         {
@@ -124,13 +141,14 @@ internal sealed partial class KrlTwinController
         }
         else
         {
-            var current = (KrlStructValue)PositionNow();
+            KrlStructValue current = blend is null ? (KrlStructValue)PositionNow() : PositionOf(blend.Corner, blend.CornerJoints);
             KrlStructValue position = ToStruct(target, current, KrlTypes.E6Pos, axesOnly: false)!;
             bool statusTurn = kind == "PTP" && Given(target, "S") && Given(target, "T");
             end = Solve(position, start, statusTurn, out string why)
                 ?? throw new KrlRuntimeException($"Target not reachable: {kind} {DescribeXyz(position)}: {why}");
             RequireSoftLimits(end);
             Pose from = PoseOf(current), to = PoseOf(position);
+            goal = FrameOf("$BASE") * to;
             pathMm = (to.Position - from.Position).Length;
             turnDegrees = TwinRotation.AngleDegrees(from.Rotation, to.Rotation);
             if (kind == "CIRC" && auxiliary is not null)
@@ -141,7 +159,43 @@ internal sealed partial class KrlTwinController
         }
         double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
         bool bco = Interlocked.Exchange(ref _coincident, 1) == 0;
-        Arm.MoveTo(end, seconds, line, kind + (approximation is null ? "" : " " + approximation) + (bco ? " " + BcoRun : ""), cancellation, linear: kind == "LIN");
+        string text = kind + (approximation is null ? "" : " " + approximation) + (bco ? " " + BcoRun : "");
+        if (kind == "LIN" && goal is { } tcp && !bco)
+        {
+            (double v, double acceleration) = PathSpeed();
+            double zone = ApproximationMm(approximation, pathMm, turnDegrees, v, acceleration);
+            bool mayBlend = zone > 0 && (int)Environment.System["$ADVANCE"].Value >= 1 && !HasExternalInputs;
+            Arm.MoveLinear(new TwinLinearMove(tcp, end, v, acceleration, seconds, zone, mayBlend), line, text, cancellation);
+            return;
+        }
+        Arm.FinishBlend(cancellation);
+        Arm.MoveTo(end, seconds, line, text, cancellation, linear: kind == "LIN");
+    }
+
+    /// <summary>$VEL.CP (m/s) and $ACC.CP (m/s²).</summary>
+    private (double Speed, double Acceleration) PathSpeed()
+    {
+        var vel = (KrlStructValue)Environment.System["$VEL"].Value;
+        var acc = (KrlStructValue)Environment.System["$ACC"].Value;
+        return (KrlValues.ToReal(vel.Values[0]), Math.Max(KrlValues.ToReal(acc.Values[0]), 1e-6));
+    }
+
+    /// <summary>
+    /// How far before its end point a LIN starts to approximate, in mm (none: exact stop): C_DIS at $APO.CDIS; C_VEL where the
+    /// braking speed falls below $APO.CVEL % of $VEL.CP; C_ORI where the turn left falls below $APO.CORI (the whole way, up to the
+    /// half the blend allows, when the tool does not turn). The twin rounds the corner in the same shape for all three.
+    /// </summary>
+    private double ApproximationMm(string? approximation, double pathMm, double turnDegrees, double speed, double acceleration)
+    {
+        var apo = (KrlStructValue)Environment.System["$APO"].Value;
+        double mm = approximation?.ToUpperInvariant() switch
+        {
+            "C_DIS" => KrlValues.ToReal(apo.Values[2]),
+            "C_VEL" => Math.Pow(speed * Math.Clamp(KrlValues.ToReal(apo.Values[0]), 0, 100) / 100, 2) / (2 * acceleration) * 1000,
+            "C_ORI" => turnDegrees > 0 ? pathMm * Math.Min(1, KrlValues.ToReal(apo.Values[3]) / turnDegrees) : pathMm,
+            _ => 0,
+        };
+        return mm > 0 ? mm : 0;
     }
 
     private static bool Given(object target, string field) => target switch
@@ -211,9 +265,13 @@ internal sealed partial class KrlTwinController
         return Math.Max(path, turn);
     }
 
-    /// <summary>WAIT SEC: the program waits (the twin's advance run ends here, as on the controller).</summary>
+    /// <summary>The advance run ends (WAIT FOR, the end of the program): the arm finishes a pending corner and stops at its point.</summary>
+    public void EndAdvanceRun(CancellationToken cancellation) => Arm.FinishBlend(cancellation);
+
+    /// <summary>WAIT SEC: the program waits (the twin's advance run ends here, as on the controller: the arm stops at its last point first).</summary>
     public void WaitSeconds(double seconds, int line, CancellationToken cancellation)
     {
+        Arm.FinishBlend(cancellation);
         Clock.Wait(seconds, cancellation);
         Arm.Record(line, TwinTraceKind.Wait, FormattableString.Invariant($"WAIT SEC {seconds}"));
     }

@@ -204,6 +204,7 @@ internal sealed partial class KrlTwinController : IDisposable
         try
         {
             machine.Run(routine);
+            EndAdvanceRun(cancellation);
             return Finish(KrlProgramState.Finished, null);
         }
         catch (KrlResumeSignal resume)

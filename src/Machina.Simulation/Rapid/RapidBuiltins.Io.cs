@@ -32,6 +32,10 @@ internal static partial class RapidBuiltins
             (_, int index) = Signal(call, 0, "di");
             bool wanted = call.Num(1) == 1;
             RapidTwinController c = call.Machine.Task.Controller;
+            if (call.Machine.Task.IsMotionTask)
+            {
+                c.Arm.FinishBlend(call.Machine.Task.CancellationToken); // a wait: the arm stops at its last waypoint first
+            }
             double start = c.Clock.Seconds;
             double? max = call.Has(2) ? call.Num(2) : null;
             if (max is null && !c.Clock.RealTime && c.Io.GetBit("di", index) != wanted)

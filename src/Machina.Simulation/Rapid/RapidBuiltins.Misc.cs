@@ -22,6 +22,7 @@ internal static partial class RapidBuiltins
                 Task.Delay(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), c.Clock.Time, call.Machine.Task.CancellationToken).GetAwaiter().GetResult();
                 return;
             }
+            c.Arm.FinishBlend(call.Machine.Task.CancellationToken); // the arm stops at its last waypoint before the wait counts
             c.Clock.Wait(seconds, call.Machine.Task.CancellationToken);
             c.Arm.Record(call.Line, TwinTraceKind.Wait, string.Create(CultureInfo.InvariantCulture, $"WaitTime {seconds}"));
         }),

@@ -3,8 +3,9 @@ using Machina.Simulation.Twin;
 namespace Machina.Simulation.Rapid;
 
 /// <summary>
-/// Motion instructions (MoveL, MoveJ, MoveAbsJ, MoveC) and position functions (CRobT, CJointT, CalcRobT) on the twin arm. Every
-/// move ends at its target (zones are not blended). A target out of reach or beyond a joint limit raises ERR_ROBLIMIT with
+/// Motion instructions (MoveL, MoveJ, MoveAbsJ, MoveC) and position functions (CRobT, CJointT, CalcRobT) on the twin arm. A MoveL
+/// with a zone returns when the arm enters the zone and the next MoveL rounds the corner (<see cref="TwinArm.MoveLinear"/>), in a
+/// program without sockets; every other move, and every move of a program with sockets (our driver), ends at its target. A target out of reach or beyond a joint limit raises ERR_ROBLIMIT with
 /// event 50050, which an ERROR handler may take.
 /// </summary>
 internal static partial class RapidBuiltins
@@ -56,7 +57,14 @@ internal static partial class RapidBuiltins
         TwinArm arm = task.Controller.Arm;
         Pose tool = ToolFrame(call, call.Record(p.Tool));
         Pose wobj = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
-        Pose start = arm.Flange * tool;
+        bool linear = name == "MoveL";
+        if (!linear || call.Has(p.T) || tool != arm.ToolCenter)
+        {
+            arm.FinishBlend(task.CancellationToken); // only a MoveL with the same tool rounds the corner: the arm stops first
+        }
+        TwinBlend? blend = arm.PendingBlend;
+        Pose start = blend?.Corner ?? arm.Flange * tool;
+        Joints near = blend?.CornerJoints ?? arm.Joints;
         Pose goal = wobj * RapidGeometry.ToPose(target, call.Line);
         Joints joints;
         double path;
@@ -67,13 +75,13 @@ internal static partial class RapidBuiltins
             if (via is not null)
             {
                 Pose middle = wobj * RapidGeometry.ToPose(via, call.Line);
-                Joints viaJoints = arm.Solve(middle, arm.Joints);
+                Joints viaJoints = arm.Solve(middle, near);
                 joints = arm.Solve(goal, viaJoints);
                 path = (middle.Position - start.Position).Length + (goal.Position - middle.Position).Length;
             }
             else
             {
-                joints = arm.Solve(goal, arm.Joints);
+                joints = arm.Solve(goal, near);
                 path = (goal.Position - start.Position).Length;
             }
             arm.RequireWithinLimits(joints);
@@ -84,7 +92,29 @@ internal static partial class RapidBuiltins
         }
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
-        arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: name == "MoveL");
+        if (!linear || call.Has(p.T))
+        {
+            arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: linear);
+            return;
+        }
+        (double v, double acceleration, _) = Speeds(call, p);
+        double zone = Zone(call, p);
+        arm.MoveLinear(new TwinLinearMove(goal, joints, v, acceleration, seconds, zone, zone > 0 && !task.Controller.HasSockets), call.Line, name, task.CancellationToken);
+    }
+
+    /// <summary>
+    /// The zone radius of a move in mm (RAPID reference, zonedata): pzone_tcp, or \Z when given; 0 for a stop point (fine, finep
+    /// TRUE, or \Inpos). The twin rounds the TCP path only: pzone_ori and zone_ori do not shorten it.
+    /// </summary>
+    private static double Zone(RapidCall call, MoveParams p)
+    {
+        RapidRecord zone = call.Record(p.T + 1);
+        if ((bool)zone.Fields[0] || call.Has(p.T + 3))
+        {
+            return 0;
+        }
+        double radius = call.Has(p.T + 2) ? call.Num(p.T + 2) : (double)zone.Fields[1];
+        return radius > 0 ? radius : 0;
     }
 
     private static void MoveAbsJ(RapidCall call, MoveParams p)
@@ -93,6 +123,7 @@ internal static partial class RapidBuiltins
         TwinArm arm = task.Controller.Arm;
         Pose tool = ToolFrame(call, call.Record(p.Tool));
         Joints joints = RapidGeometry.ToJoints((RapidRecord)call.Record(1).Fields[0]);
+        arm.FinishBlend(task.CancellationToken); // a joint move does not round the corner: the arm stops at the last waypoint first
         try
         {
             arm.RequireWithinLimits(joints);
@@ -118,6 +149,13 @@ internal static partial class RapidBuiltins
             double t = call.Num(p.T);
             return t > 0 ? t : throw ArgumentError(call, "the time \\T must be positive");
         }
+        (double v, double acceleration, double vOri) = Speeds(call, p);
+        return Math.Max(TwinMotion.TrapezoidSeconds(mm / 1000, v, acceleration), degrees / vOri);
+    }
+
+    /// <summary>The TCP speed (m/s, VelSet's override and maximum applied), acceleration (m/s², WorldAccLim and AccSet) and v_ori (deg/s) of a move.</summary>
+    private static (double Speed, double Acceleration, double Ori) Speeds(RapidCall call, MoveParams p)
+    {
         RapidTask task = call.Machine.Task;
         RapidRecord speed = call.Record(p.Speed);
         double vTcp = call.Has(p.V) ? call.Num(p.V) : (double)speed.Fields[0], vOri = (double)speed.Fields[1];
@@ -127,7 +165,7 @@ internal static partial class RapidBuiltins
         }
         double v = Math.Min(vTcp * task.SpeedOverride / 100, task.MaxSpeed) / 1000;
         double acceleration = (task.AccelerationLimit ?? task.Controller.Options.Acceleration) * task.AccelerationPercent / 100;
-        return Math.Max(TwinMotion.TrapezoidSeconds(mm / 1000, v, acceleration), degrees / vOri);
+        return (v, acceleration, vOri);
     }
 
     private static RapidRuntimeException MotionError(RapidCall call, string detail) =>

@@ -57,6 +57,18 @@ internal sealed partial class RapidTwinController
         }
     }
 
+    /// <summary>True once a program created a socket (our driver): then moves do not blend (docs/simulation.md).</summary>
+    internal bool HasSockets
+    {
+        get
+        {
+            lock (_sockets)
+            {
+                return _sockets.Count > 0;
+            }
+        }
+    }
+
     /// <summary>Starts <paramref name="entry"/> of every task that has it, each on its own thread; <see cref="StopTasks"/> ends them.</summary>
     public void StartTasks(string entry = "main")
     {
@@ -132,10 +144,12 @@ internal sealed partial class RapidTwinController
         try
         {
             task.Machine.Run(main);
+            FinishMotion(task, cancellation);
             return End(task, RapidProgramState.Finished, null, 0);
         }
         catch (RapidHaltException halt)
         {
+            FinishMotion(task, cancellation);
             return End(task, halt.Exit ? RapidProgramState.Finished : RapidProgramState.Stopped, null, 0);
         }
         catch (RapidRuntimeException ex)
@@ -152,6 +166,22 @@ internal sealed partial class RapidTwinController
             // The controller closed a socket under a running instruction while stopping.
             return End(task, cancellation.IsCancellationRequested ? RapidProgramState.Stopped : RapidProgramState.Failed,
                 cancellation.IsCancellationRequested ? null : $"Execution error: {ex.Message} (task {task.Name})", 0);
+        }
+    }
+
+    /// <summary>The program ended after a move with a zone: the arm stops at its waypoint (a real controller makes it a stop point).</summary>
+    private void FinishMotion(RapidTask task, CancellationToken cancellation)
+    {
+        if (task.IsMotionTask && !cancellation.IsCancellationRequested)
+        {
+            try
+            {
+                Arm.FinishBlend(cancellation);
+            }
+            catch (OperationCanceledException)
+            {
+                // Stopped while the arm went to its last waypoint: it stands where it was.
+            }
         }
     }
 

@@ -4,7 +4,7 @@ namespace Machina.Simulation.Twin;
 /// The motion path of the arm as a controller's path planner holds it: while a motion runs the arm is part-way (at constant speed,
 /// straight in joint space or, for a linear motion, along the tool's straight line), a hold (RAPID StopMove) stops it where it
 /// is until released (StartMove), a cleared path (ClearPath)
-/// ends the motion where the arm stands, and a wake lets the moving task serve its interrupts.
+/// ends the motion where the arm stands (and drops a pending blend), and a wake lets the moving task serve its interrupts.
 /// </summary>
 internal sealed partial class TwinArm
 {
@@ -17,26 +17,41 @@ internal sealed partial class TwinArm
     /// <summary>
     /// A motion under way: from, to, when it started (timestamp of the clock's time provider) and how long it takes. A joint motion
     /// is straight in joint space; a linear one (<paramref name="Linear"/>) keeps the tool centre point on the straight line and
-    /// turns its orientation evenly, the joints solved at each point nearest to the joint-space interpolation.
+    /// turns its orientation evenly, the joints solved at each point nearest to the joint-space interpolation; a motion with its own
+    /// <paramref name="Path"/> (a blend: fraction of the way to joints) follows it. The tool poses at the start and the end are
+    /// computed once, when the motion is made, so that reading the joints while it runs solves one pose only.
     /// </summary>
-    private sealed record Motion(Joints From, Joints To, long Started, double Seconds, TwinArm? Linear = null)
+    private sealed record Motion(Joints From, Joints To, long Started, double Seconds, TwinArm? Linear = null, Func<double, Joints>? Path = null)
     {
+        private readonly Pose _tool = Linear?.ToolCenter ?? Pose.Identity;
+        private readonly Pose _start = Linear is null ? Pose.Identity : Linear.Model.Kinematics.Forward(From) * Linear.ToolCenter;
+        private readonly Pose _end = Linear is null ? Pose.Identity : Linear.Model.Kinematics.Forward(To) * Linear.ToolCenter;
+
         /// <summary>The joints <paramref name="elapsed"/> seconds after the start.</summary>
         public Joints At(double elapsed)
         {
             double f = Seconds > 0 ? Math.Clamp(elapsed / Seconds, 0, 1) : 1;
+            if (f >= 1)
+            {
+                return To;
+            }
+            if (f <= 0)
+            {
+                return From;
+            }
+            if (Path is not null)
+            {
+                return Path(f);
+            }
             double[] a = From.ToArray(), b = To.ToArray();
             var straight = new Joints(a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f,
                 a[3] + (b[3] - a[3]) * f, a[4] + (b[4] - a[4]) * f, a[5] + (b[5] - a[5]) * f);
-            if (Linear is not { } arm || f <= 0 || f >= 1)
+            if (Linear is not { } arm)
             {
-                return f >= 1 ? To : f <= 0 ? From : straight;
+                return straight;
             }
-            IKinematics kinematics = arm.Model.Kinematics;
-            Pose tool = arm.ToolCenter;
-            Pose start = kinematics.Forward(From) * tool, end = kinematics.Forward(To) * tool;
-            var tcp = new Pose(start.Position + (end.Position - start.Position) * f, KinematicChecks.Slerp(start.Rotation, end.Rotation, f));
-            return kinematics.Closest(tcp * tool.Inverse(), straight) ?? straight;
+            var tcp = new Pose(_start.Position + (_end.Position - _start.Position) * f, KinematicChecks.Slerp(_start.Rotation, _end.Rotation, f));
+            return arm.Model.Kinematics.Closest(tcp * _tool.Inverse(), straight) ?? straight;
         }
     }
 
@@ -99,6 +114,7 @@ internal sealed partial class TwinArm
         lock (_gate)
         {
             _clear = _moving is not null || _held is not null;
+            _blend = null; // the corner it would have rounded is cleared with the path
             _interrupt.Cancel();
         }
     }
@@ -116,7 +132,7 @@ internal sealed partial class TwinArm
     /// A real-time motion along the path: <paramref name="target"/> in <paramref name="seconds"/>, held and released, ended early by a
     /// cleared path; <see cref="Serve"/> runs each time the motion is woken (an exception it throws leaves the arm where it stands).
     /// </summary>
-    private void MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear)
+    private bool MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear, Func<double, Joints>? path)
     {
         Joints from = Joints;
         double left = seconds;
@@ -142,7 +158,7 @@ internal sealed partial class TwinArm
                 {
                     _clear = false;
                     Record(line, TwinTraceKind.Motion, text + " (path cleared)");
-                    return;
+                    return false;
                 }
             }
             using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, interrupt);
@@ -158,7 +174,7 @@ internal sealed partial class TwinArm
                 }
                 continue;
             }
-            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left, linear ? this : null);
+            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left, linear ? this : null, path);
             lock (_gate)
             {
                 _moving = motion;
@@ -176,7 +192,7 @@ internal sealed partial class TwinArm
                 {
                     Record(line, TwinTraceKind.Motion, text, traced);
                 }
-                return;
+                return true;
             }
             catch (OperationCanceledException) when (!cancellation.IsCancellationRequested)
             {
@@ -197,6 +213,7 @@ internal sealed partial class TwinArm
                 }
                 Clock.Add(elapsed);
                 left -= elapsed;
+                path = null; // cut short: the rest of the way goes straight from where the arm stands
             }
             finally
             {

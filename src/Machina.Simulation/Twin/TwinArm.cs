@@ -102,15 +102,16 @@ internal sealed partial class TwinArm
     /// <summary>
     /// Moves to <paramref name="target"/> joints in <paramref name="seconds"/>, then traces the step at <paramref name="line"/>: at
     /// <paramref name="traced"/> joints when given (the waypoint of a motion that blends before it), none when <paramref name="trace"/> is false.
-    /// A <paramref name="linear"/> motion keeps the tool on a straight line while it is part-way (when the arm interpolates).
+    /// A <paramref name="linear"/> motion keeps the tool on a straight line while it is part-way (when the arm interpolates), a
+    /// motion with a <paramref name="path"/> (fraction of the way to joints: a blend) follows it. False when a cleared path ended it early.
     /// </summary>
-    public void MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true, bool linear = false)
+    public bool MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true, bool linear = false,
+        Func<double, Joints>? path = null)
     {
         RequireWithinLimits(target);
         if (Interpolates && Clock.RealTime && seconds > 0)
         {
-            MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear);
-            return;
+            return MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear, path);
         }
         Clock.Wait(seconds, cancellation);
         lock (_gate)
@@ -121,6 +122,7 @@ internal sealed partial class TwinArm
         {
             Record(line, TwinTraceKind.Motion, text, traced);
         }
+        return true;
     }
 
     /// <summary>Adds a step to the trace, with the arm's joints and TCP now (or those of <paramref name="at"/> joints).</summary>

@@ -103,8 +103,9 @@ public class CommandLineTests
         Assert.Contains("      2:1   ok       MoveTo(300,0,400);", good.Stdout, StringComparison.Ordinal);
         Assert.Contains("      3:18  ok       Move(50,0,0);", good.Stdout, StringComparison.Ordinal);
         Assert.Contains("3 motions checked: 3 ok, 0 with problems, 0 refused (of 4 actions).", good.Stdout, StringComparison.Ordinal);
-        // Two 50 mm moves at 50 mm/s, ramping at the ABB's assumed 5 m/s²: 1 s + 0.01 s each.
-        Assert.Contains("Estimated cycle time on the ABB IRB 120: 2.02 s (motion 2.02 s, waits 0.00 s; blends not shortened); 1 motion not timed: " +
+        // Two 50 mm moves at 50 mm/s, ramping at the ABB's assumed 5 m/s²: 1 s + 0.01 s each exact (2.02 s), but the corner between
+        // them is rounded in Machina's default 5 mm zone (the arm crosses an 8.1 mm parabola at 50 mm/s instead of stopping): 1.97 s.
+        Assert.Contains("Estimated cycle time on the ABB IRB 120: 1.97 s (motion 1.97 s, waits 0.00 s); 1 motion not timed: " +
             "where it starts is not known (before the first absolute position, or joints without a --model).", good.Stdout, StringComparison.Ordinal);
         Assert.Equal(1, bad.Exit);
         Assert.Contains("      2:1   PROBLEM  MoveTo(900,0,400);\n                     Unreachable: the target [900, 0, 400] is out of reach of the ABB IRB 120.", bad.Stdout, StringComparison.Ordinal);

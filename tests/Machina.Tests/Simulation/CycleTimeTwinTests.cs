@@ -49,6 +49,55 @@ public class CycleTimeTwinTests(ITestOutputHelper output)
         Assert.Equal(1, trial.UntimedMotions); // the first motion, from wherever the robot stands (the twin starts there)
     }
 
+    public static TheoryData<RobotType> ZoneBrands() => new() { RobotType.ABB, RobotType.KUKA, RobotType.UR };
+
+    /// <summary>
+    /// A zigzag of ten 44.7 mm moves at 500 mm/s (where Hello Robot goes, which every brand's default arm reaches) whose corners have zones of <paramref name="precision"/> mm (ABB z10, KUKA C_DIS
+    /// with $APO.CDIS 10, UR r=0.01; 0: fine, exact stops).
+    /// </summary>
+    private static IReadOnlyList<RobotAction> ZigZag(RobotType brand, double precision)
+    {
+        Robot bot = Robot.Create("ZigZag", brand);
+        bot.SpeedTo(500);
+        bot.PrecisionTo(precision);
+        bot.MoveTo(300, 300, 500);
+        for (int i = 0; i < 10; i++)
+        {
+            bot.Move(20, i % 2 == 0 ? 40 : -40, 0);
+        }
+        return bot.GetProgramActions();
+    }
+
+    [Theory]
+    [MemberData(nameof(ZoneBrands))]
+    public void ZigZagWithZones_IsEstimatedWithinTenPercent_AndIsMeasurablyFasterThanWithFine(RobotType brand)
+    {
+        RobotModel model = RobotModels.Get(brand == RobotType.ABB ? "IRB 1200-5/0.9" : BrandRegistry.For(brand).DefaultModel!);
+
+        (double estimate, double twin) blended = Measure(brand, ZigZag(brand, 10), model);
+        (double estimate, double twin) fine = Measure(brand, ZigZag(brand, 0), model);
+
+        output.WriteLine($"{brand} zigzag on the {model}: z10 estimate {blended.estimate:0.000} s, twin {blended.twin:0.000} s; fine estimate {fine.estimate:0.000} s, twin {fine.twin:0.000} s");
+        Assert.InRange(blended.estimate, blended.twin * 0.9, blended.twin * 1.1);
+        Assert.InRange(fine.estimate, fine.twin * 0.9, fine.twin * 1.1);
+        // Nine corners where the arm no longer stops: at 500 mm/s the moves are mostly ramps, and the zones save more than a tenth.
+        Assert.InRange(blended.twin, 0.2 * fine.twin, 0.9 * fine.twin);
+        Assert.InRange(blended.estimate, 0.2 * fine.estimate, 0.9 * fine.estimate);
+    }
+
+    /// <summary>The estimate of <paramref name="actions"/> and the time the brand's twin takes to run them compiled.</summary>
+    private static (double Estimate, double Twin) Measure(RobotType brand, IReadOnlyList<RobotAction> actions, RobotModel model)
+    {
+        var trial = new ProgramTrial(model);
+        foreach (RobotAction action in actions)
+        {
+            Assert.True(trial.Try(action).Applied, action.ToInstruction());
+        }
+        Assert.Equal(1, trial.UntimedMotions);
+        RobotProgram program = BrandRegistry.For(brand).CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model });
+        return (trial.EstimatedDuration.TotalSeconds, TwinSeconds(brand, program, actions, model));
+    }
+
     [Fact]
     public void Waits_AddTheirTime_AndJointMovesAreTimedByTheSlowestAxis()
     {

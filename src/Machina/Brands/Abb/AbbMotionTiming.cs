@@ -10,6 +10,8 @@ internal sealed class AbbMotionTiming : MotionTiming
     /// <summary>The TCP acceleration assumed when the program sets none, mm/s². ABB's real value comes from the arm's dynamic model and its load; this is a typical one for a small arm (the virtual ABB uses the same).</summary>
     internal const double DefaultAcceleration = 5000;
 
+    internal override BlendTiming NewBlendTiming() => new AbbBlendTiming();
+
     internal override double? Seconds(in TimedMotion motion, RobotModel? model)
     {
         if (motion.Millimetres is not double mm)

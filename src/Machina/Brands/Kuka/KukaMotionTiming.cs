@@ -16,6 +16,8 @@ internal sealed class KukaMotionTiming : MotionTiming
     /// <summary>An axis' rated speed when the arm model has none, deg/s, and the time an axis takes to reach it, s.</summary>
     internal const double FallbackAxisSpeed = 180, AxisRampSeconds = 0.3;
 
+    internal override BlendTiming NewBlendTiming() => new KukaBlendTiming();
+
     internal override double? Seconds(in TimedMotion motion, RobotModel? model)
     {
         if (motion.IsJoint)

@@ -1,0 +1,131 @@
+namespace Machina.Simulation.Twin;
+
+/// <summary>
+/// Zone blends between linear motions (ABB zonedata, KUKA approximate positioning), shaped as <see cref="BlendModel"/> says so that
+/// the cycle-time estimate and the twin agree: a linear motion with a zone returns to the program when the arm enters the zone of
+/// its waypoint (the controller's program pointer runs ahead); the next linear motion rounds the corner from there; anything else
+/// (<see cref="FinishBlend"/>) first lets the arm slow down within the zone and stop at the waypoint.
+/// </summary>
+internal sealed partial class TwinArm
+{
+    private TwinBlend? _blend;
+
+    /// <summary>The corner the arm may round now (its last linear motion returned in the zone of its waypoint), or null.</summary>
+    public TwinBlend? PendingBlend
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _blend;
+            }
+        }
+    }
+
+    private TwinBlend? TakeBlend()
+    {
+        lock (_gate)
+        {
+            TwinBlend? blend = _blend;
+            _blend = null;
+            return blend;
+        }
+    }
+
+    /// <summary>
+    /// Lets the arm finish a pending blend: from the zone's entry it slows down to stop at the waypoint (a stop point after all:
+    /// the program waits, ends, or its next motion cannot blend). The waypoint was traced when its motion returned; not again.
+    /// </summary>
+    public void FinishBlend(CancellationToken cancellation)
+    {
+        if (TakeBlend() is not { } blend)
+        {
+            return;
+        }
+        double seconds = BlendModel.StopSeconds(blend.Radius, blend.Speed, blend.Acceleration);
+        Joints start = Joints;
+        Joints Along(double f) => Near(new Pose(blend.Entry.Position + (blend.Corner.Position - blend.Entry.Position) * f,
+            KinematicChecks.Slerp(blend.Entry.Rotation, blend.Corner.Rotation, f)), Lerp(start, blend.CornerJoints, f));
+        MoveTo(blend.CornerJoints, seconds, blend.Line, blend.Text + " (to its waypoint)", cancellation, trace: false, path: Along);
+    }
+
+    /// <summary>
+    /// Runs a linear motion that may round corners: it blends from a pending blend (or starts from rest where the arm stands) and,
+    /// when it has a zone, returns as the arm enters it, leaving a pending blend; the trace keeps its waypoint as programmed.
+    /// </summary>
+    public void MoveLinear(TwinLinearMove move, int line, string text, CancellationToken cancellation)
+    {
+        RequireWithinLimits(move.Joints);
+        Pose target = move.Target;
+        double v = move.Speed, a = move.Acceleration;
+        Pose from = PendingBlend?.Corner ?? Tcp;
+        double metres = (target.Position - from.Position).Length / 1000;
+        bool blendable = metres >= BlendModel.MinLength && v > 0 && !TurnDominates(move.PlainSeconds, metres, v, a);
+        if (!blendable)
+        {
+            FinishBlend(cancellation); // the tool only turns, or turns slower than it travels: the arm stops at the last waypoint first
+            MoveTo(move.Joints, move.PlainSeconds, line, text, cancellation, linear: true);
+            return;
+        }
+        TwinBlend? blend = TakeBlend();
+        Pose start = blend?.Corner ?? Tcp;
+        Joints first = blend?.CornerJoints ?? Joints;
+        Pose StraightAt(double t) => new(start.Position + (target.Position - start.Position) * t, KinematicChecks.Slerp(start.Rotation, target.Rotation, t));
+        // The blend around the last waypoint (m): from the zone's entry past the waypoint to the exit leg along this motion.
+        double exitLeg = blend is null ? 0 : Math.Min(blend.Radius, metres / 2);
+        Pose exit = StraightAt(exitLeg / metres);
+        double blendLength = blend is null ? 0 : BlendModel.Length(blend.Entry.Position / 1000, start.Position / 1000, exit.Position / 1000);
+        double startSpeed = blend?.Speed ?? 0;
+        double blendSeconds = blend is null ? 0 : blendLength / startSpeed;
+        // This motion's own zone, where it returns to the program.
+        double radius = move.MayBlend ? BlendModel.Radius(move.ZoneMm / 1000, metres) : 0;
+        double straight = metres - exitLeg - radius;
+        double entrySpeed = radius > 0 ? BlendModel.EntrySpeed(straight, startSpeed, v, a, radius) : 0;
+        if (!(entrySpeed > 0))
+        {
+            radius = 0;
+            straight = metres - exitLeg;
+        }
+        SpeedProfile profile = SpeedProfile.Plan(straight, startSpeed, v, entrySpeed, a);
+        double total = blendLength + straight;
+        Pose At(double s) // s: metres along this motion's way
+        {
+            if (s < blendLength && blend is not null)
+            {
+                Vector point = BlendModel.PointAtDistance(blend.Entry.Position / 1000, start.Position / 1000, exit.Position / 1000, s) * 1000;
+                return new Pose(point, KinematicChecks.Slerp(blend.Entry.Rotation, exit.Rotation, s / blendLength));
+            }
+            return StraightAt(Math.Min(1, (exitLeg + s - blendLength) / metres));
+        }
+        Joints end = radius > 0 ? Near(At(total), Lerp(first, move.Joints, (metres - radius) / metres)) : move.Joints;
+        Joints startJoints = Joints;
+        Joints Along(double f) => Near(At(f * total), Lerp(startJoints, end, f));
+        bool reached = MoveTo(end, blendSeconds + profile.Seconds, line, text, cancellation, traced: move.Joints, linear: true, path: Along);
+        if (radius > 0 && reached) // a cleared path ends it early: the arm stands where it stopped, nothing to blend
+        {
+            lock (_gate)
+            {
+                _blend = new TwinBlend(At(total), target, move.Joints, radius, entrySpeed, a, line, text);
+            }
+        }
+    }
+
+    /// <summary>True when turning the tool takes longer than the straight way (<paramref name="plainSeconds"/> is more than its trapezoid): then the motion does not blend.</summary>
+    internal static bool TurnDominates(double plainSeconds, double metres, double speed, double acceleration) =>
+        plainSeconds > SpeedProfile.Plan(metres, 0, speed, 0, acceleration).Seconds * (1 + 1e-6) + 1e-9;
+
+    private Joints Near(Pose tcp, Joints near)
+    {
+        try
+        {
+            return Solve(tcp, near);
+        }
+        catch (TwinMotionException)
+        {
+            return near;
+        }
+    }
+
+    private static Joints Lerp(Joints a, Joints b, double t) => new(a.J1 + (b.J1 - a.J1) * t, a.J2 + (b.J2 - a.J2) * t, a.J3 + (b.J3 - a.J3) * t,
+        a.J4 + (b.J4 - a.J4) * t, a.J5 + (b.J5 - a.J5) * t, a.J6 + (b.J6 - a.J6) * t);
+}
