@@ -2,11 +2,8 @@ namespace Machina;
 
 internal sealed partial class AbbDriver
 {
-    /// <summary>How long the monitor task has to answer an out-of-band command (it looks for them between two state reports).</summary>
-    private static readonly TimeSpan ControlTimeout = TimeSpan.FromSeconds(10);
-
-    private readonly object _controlGate = new();
-    private (int Expected, TaskCompletionSource Done)? _control;
+    /// <summary>Out-of-band commands to the monitor task and their answers (it looks for commands between two state reports).</summary>
+    private readonly ControlExchange _control;
 
     /// <inheritdoc/>
     /// <remarks>
@@ -27,53 +24,21 @@ internal sealed partial class AbbDriver
     public Task StopMotionAsync(CancellationToken cancellationToken) => ControlAsync('S', 3, "stop", cancellationToken);
 
     /// <summary>Sends one command to the monitor task and waits for its answer.</summary>
-    private async Task ControlAsync(char command, int answer, string what, CancellationToken cancellationToken)
+    private Task ControlAsync(char command, int answer, string what, CancellationToken cancellationToken)
     {
         TcpLink monitor = _monitor ?? throw new NotSupportedException(
             $"Cannot {what} this ABB robot: its monitor task is not running (the controller needs the Multitasking option and machina_abb_monitor on the next port).");
-        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-        lock (_controlGate)
-        {
-            if (_control is not null)
-            {
-                throw new InvalidOperationException($"Cannot {what} now: the controller has not answered the command before it yet.");
-            }
-            _control = (answer, done);
-        }
-        try
-        {
-            monitor.Post([(byte)command]);
-            await done.Task.WaitAsync(ControlTimeout, Time, cancellationToken).ConfigureAwait(false);
-        }
-        catch (TimeoutException)
-        {
-            throw new RobotStoppedException($"The ABB monitor task did not answer the {what} command within {Num.G(ControlTimeout.TotalSeconds)} s (is machina_abb_monitor 1.6 or later loaded?).");
-        }
-        finally
-        {
-            lock (_controlGate)
-            {
-                _control = null;
-            }
-        }
+        return _control.RunAsync(() => monitor.Post([(byte)command]), answer, what,
+            $"The ABB monitor task did not answer the {what} command within {Num.G(_control.Timeout.TotalSeconds)} s (is machina_abb_monitor 1.6 or later loaded?).",
+            cancellationToken);
     }
 
     /// <summary>A <c>$28 n;</c> from the monitor task: the command it answers is done.</summary>
     private void OnControl(int done)
     {
-        TaskCompletionSource? waiter = null;
-        lock (_controlGate)
-        {
-            if (_control is (int expected, TaskCompletionSource tcs) && expected == done)
-            {
-                waiter = tcs;
-            }
-        }
-        if (waiter is null)
+        if (!_control.Answer(done))
         {
             Log.Debug($"Ignored from the monitor: $28 {done};");
-            return;
         }
-        waiter.TrySetResult();
     }
 }

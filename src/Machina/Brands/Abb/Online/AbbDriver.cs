@@ -27,6 +27,7 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     internal AbbDriver(RobotLogger log, TimeProvider time)
         : base(log, time, new AbbMessageReader(), "controller")
     {
+        _control = new ControlExchange(time, TimeSpan.FromSeconds(10));
     }
 
     /// <summary>True when the monitor connection (live poses) is open.</summary>

@@ -4,11 +4,8 @@ namespace Machina;
 
 internal sealed partial class KukaDriver
 {
-    /// <summary>How long the driver has to answer a stop, pause or resume (its interrupt brakes first, which takes a moment).</summary>
-    private static readonly TimeSpan ControlTimeout = TimeSpan.FromSeconds(10);
-
-    private readonly object _controlGate = new();
-    private (int Expected, TaskCompletionSource Done)? _control;
+    /// <summary>Stop, pause and resume on the driver's channel and their answers (its interrupt brakes first, which takes a moment).</summary>
+    private readonly ControlExchange _control;
 
     /// <inheritdoc/>
     /// <remarks>
@@ -28,55 +25,24 @@ internal sealed partial class KukaDriver
     public Task StopMotionAsync(CancellationToken cancellationToken) => ControlAsync(KukaProtocol.StopCommand, 3, "stop", cancellationToken);
 
     /// <summary>Sends one command on the driver's channel and waits for its answer.</summary>
-    private async Task ControlAsync(string command, int answer, string what, CancellationToken cancellationToken)
-    {
-        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-        lock (_controlGate)
-        {
-            if (_control is not null)
+    private Task ControlAsync(string command, int answer, string what, CancellationToken cancellationToken) =>
+        _control.RunAsync(() =>
             {
-                throw new InvalidOperationException($"Cannot {what} now: the controller has not answered the command before it yet.");
-            }
-            _control = (answer, done);
-        }
-        try
-        {
-            lock (_gate)
-            {
-                TcpLink link = Link ?? throw new InvalidOperationException($"Cannot {what}: the link is not open.");
-                link.Post(Encoding.ASCII.GetBytes(command));
-            }
-            await done.Task.WaitAsync(ControlTimeout, Time, cancellationToken).ConfigureAwait(false);
-        }
-        catch (TimeoutException)
-        {
-            throw new RobotStoppedException($"The KUKA driver did not answer the {what} command within {Num.G(ControlTimeout.TotalSeconds)} s (is the machina_kuka_driver of this Machina loaded, with STOP, PAUSE and RESUME in machina_kuka_server.xml?).");
-        }
-        finally
-        {
-            lock (_controlGate)
-            {
-                _control = null;
-            }
-        }
-    }
+                lock (_gate)
+                {
+                    TcpLink link = Link ?? throw new InvalidOperationException($"Cannot {what}: the link is not open.");
+                    link.Post(Encoding.ASCII.GetBytes(command));
+                }
+            }, answer, what,
+            $"The KUKA driver did not answer the {what} command within {Num.G(_control.Timeout.TotalSeconds)} s (is the machina_kuka_driver of this Machina loaded, with STOP, PAUSE and RESUME in machina_kuka_server.xml?).",
+            cancellationToken);
 
     /// <summary>A <c>&lt;C K="n"/&gt;</c> from the driver: the command it answers is done.</summary>
     private void OnControl(int done)
     {
-        TaskCompletionSource? waiter = null;
-        lock (_controlGate)
-        {
-            if (_control is (int expected, TaskCompletionSource tcs) && expected == done)
-            {
-                waiter = tcs;
-            }
-        }
-        if (waiter is null)
+        if (!_control.Answer(done))
         {
             Log.Debug($"Ignored from the controller: <C K=\"{done}\"/>");
-            return;
         }
-        waiter.TrySetResult();
     }
 }

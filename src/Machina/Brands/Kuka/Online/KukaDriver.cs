@@ -23,6 +23,7 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
         : base(context.Logger, context.Time, new KukaXmlReader(), "controller")
     {
         _motionUpdateRate = context.MotionUpdateRate;
+        _control = new ControlExchange(context.Time, TimeSpan.FromSeconds(10));
     }
 
     /// <summary>True when the monitor connection (live poses) is open.</summary>
