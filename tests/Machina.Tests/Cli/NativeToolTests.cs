@@ -218,13 +218,14 @@ public sealed partial class NativeToolTests
 
     /// <summary>
     /// The lines in order, without those whose grouping or presence depends on timing: the RAPID driver's pendant lines after
-    /// the host left ("client disconnected", "waiting for a client": printed or not before the tool is stopped) and the
+    /// the host left ("client disconnected", "waiting for a client": printed or not before the tool is stopped), the relay's
+    /// "disconnected (driver|monitor)" lines (the same: each is printed when its socket's close is seen) and the
     /// "executed #…" lines (acknowledgements are grouped as they arrive). The counts and the end pose are compared apart.
     /// </summary>
     private static string[] Sorted(string text) =>
         [.. Steady(text).Split('\n').Where(l => !TimingDependentLinePattern().IsMatch(l)).Order(StringComparer.Ordinal)];
 
-    [GeneratedRegex(@"^\s*(pendant: Machina (client disconnected|driver waiting for a client)|executed  #)")]
+    [GeneratedRegex(@"^\s*(pendant: Machina (client disconnected|driver waiting for a client)|executed  #|\S+ disconnected \((driver|monitor)\))")]
     private static partial Regex TimingDependentLinePattern();
 
     [GeneratedRegex(@"^\s*\d+%\s")]
