@@ -103,7 +103,8 @@ public class PackageConsumerTests
 
             string[] lines = output.Split('\n', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries);
             Assert.Contains("executed 7", lines);
-            Assert.Contains($"last position {new Vector(400, 300, 750)}", lines);
+            // The robot learns the twin's IRB 1200 when it connects, so the closing AxesTo has a pose (its forward kinematics).
+            Assert.Contains($"last position {new Vector(451, 0, 807.1)}", lines);
             Assert.Contains($"axes {new Joints(0, 0, 0, 0, 90, 0)}", lines);
             Assert.Contains("driver files machina_abb_driver.mod machina_abb_driver.pgf machina_abb_monitor.mod machina_abb_monitor.pgf", lines);
             Assert.True(File.Exists(Path.Combine(work, "packages", "machina", "0.1.0", "lib", "net10.0", "Machina.dll")),
