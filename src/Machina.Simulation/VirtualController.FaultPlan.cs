@@ -40,6 +40,14 @@ public abstract partial class VirtualController<TState>
     /// <summary>Bytes the brand's host cannot read as part of its protocol.</summary>
     private protected abstract byte[] GarbageBytes(Random random);
 
+    /// <summary>
+    /// A restart that loses the buffer begins (on the execution loop, before the client is dropped): a brand whose driver is a
+    /// program on the controller stops it here, so that no client can reach the program as it was before the restart.
+    /// </summary>
+    private protected virtual void RestartingLosingBuffer()
+    {
+    }
+
     /// <summary>Puts the robot in a protective stop, where the brand has one; false otherwise.</summary>
     private protected virtual bool InjectProtectiveStop() => false;
 
@@ -156,6 +164,7 @@ public abstract partial class VirtualController<TState>
     /// </summary>
     private void LoseBuffer()
     {
+        RestartingLosingBuffer();
         lock (Gate)
         {
             _generation++;

@@ -126,9 +126,9 @@ public sealed partial class VirtualKukaController
 
     /// <summary>
     /// A program reset (the fault plan's RestartLosingBuffer): the driver stops where it is (between two statements) and runs
-    /// again from its first line. Its ring and progress are data-list variables, which keep their values over a reset, but the
-    /// driver empties them when it starts: the host gets a fresh state (nothing received or executed) and sends again what it
-    /// had not seen acknowledged.
+    /// again from its first line. Its ring and progress are data-list variables, which keep their values over a reset; the
+    /// driver empties the ring when it starts and keeps the last executed id, so the host learns which actions ran (their
+    /// acknowledgements may have been lost with the connection) and sends again only those the ring lost.
     /// </summary>
     private void ResetDriverProgram()
     {

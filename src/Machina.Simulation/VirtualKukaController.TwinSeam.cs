@@ -324,22 +324,17 @@ public sealed partial class VirtualKukaController : IEkiSeam
         return true;
     }
 
+    /// <summary>Sends an acknowledgement through the fault plan (a restart that loses the buffer resets the driver program first, see <see cref="RestartingLosingBuffer"/>).</summary>
+    private Task AcknowledgeTwinPartAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token) => AcknowledgeAsync(bytes, id, token);
+
     /// <summary>
-    /// Sends an acknowledgement through the fault plan; when the plan restarted the controller losing what it held
-    /// (RestartLosingBuffer, noted last in the injected faults), the driver program is reset before it goes on.
+    /// The fault plan's RestartLosingBuffer is a program reset: the driver program stops (it waits in the EKI_Send of the
+    /// acknowledgement just sent, and stops before its next statement) before the client is dropped, so a host that
+    /// reconnects at once meets the program that starts again from its first line, never the one that was reset.
     /// </summary>
-    private async Task AcknowledgeTwinPartAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token)
+    private protected override void RestartingLosingBuffer()
     {
-        if (!_options.Faults.Kinds.Contains(VirtualFault.RestartLosingBuffer))
-        {
-            await AcknowledgeAsync(bytes, id, token).ConfigureAwait(false);
-            return;
-        }
-        int before = InjectedFaults.Count;
-        await AcknowledgeAsync(bytes, id, token).ConfigureAwait(false);
-        IReadOnlyList<VirtualFault> injected = InjectedFaults;
-        // Faults are noted only here (one acknowledgement at a time); the list keeps the last 1000, so past that the last one decides.
-        if ((injected.Count > before || before >= MaxKeptTexts) && injected.Count > 0 && injected[^1] == VirtualFault.RestartLosingBuffer && !HasClient)
+        if (Twin is not null)
         {
             ResetDriverProgram();
         }

@@ -95,9 +95,10 @@ internal sealed partial class OnlineSession
             _inFlight.Enqueue(f);
         }
         var resend = remaining.Skip(heldCount).Select(f => f.Action).ToList();
+        int resent = resend.Count;   // counted first: PutBackInFront appends the buffer to the list
         PutBackInFront(resend);
         Log(LogLevel.INFO, $"Resumed where the controller is: {executedCount} actions ran while disconnected, {heldCount} are still on the controller, "
-            + $"{resend.Count} are sent again.");
+            + $"{resent} are sent again.");
         if (heldCount == 0 && handshake.Position is Vector at && _execution.Position is Vector expected && Vector.Distance(at, expected) > 1)
         {
             Log(LogLevel.WARNING, $"The robot is at {at}, {Num.F(Vector.Distance(at, expected), 1)} mm from where its last action left it: "

@@ -48,6 +48,15 @@ internal sealed partial class FaultRig : IAsyncDisposable
 
     public IReadOnlyList<VirtualFault> InjectedFaults => _injected();
 
+    /// <summary>What the controller showed on its pendant (faults injected, restarts, errors), the last 1000 lines.</summary>
+    public IReadOnlyList<string> PendantMessages => _controller switch
+    {
+        VirtualAbbController c => c.PendantMessages,
+        VirtualUrController c => c.PendantMessages,
+        VirtualKukaController c => c.PendantMessages,
+        _ => [],
+    };
+
     /// <summary>The controller itself (a <c>VirtualAbbController</c>, <c>VirtualUrController</c> or <c>VirtualKukaController</c>).</summary>
     public object Controller => _controller;
 

@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Diagnostics;
 using Machina.Simulation;
 using Xunit.Abstractions;
@@ -32,9 +33,13 @@ public class SoakTests(ITestOutputHelper output)
         var watch = Stopwatch.StartNew();
         VirtualFault[] kinds = brand == "UR" ? [.. Kinds, VirtualFault.ProtectiveStop] : Kinds;
         var faults = new VirtualFaults { Seed = seed, Chance = FaultChance, Kinds = kinds, Delay = TimeSpan.FromMilliseconds(1) };
-        await using var rig = await FaultRig.StartAsync(brand, faults, logCapacity: Actions);
+        // Room for repeats in the controller's log, so that an action run twice shows where it happened.
+        await using var rig = await FaultRig.StartAsync(brand, faults, logCapacity: 2 * Actions);
         // A wide window (at most 89 actions on the controller: within KUKA's ring of 100).
         var w = rig.CreateRobot(b => { b.BlockSize = 50; b.PendingCount = 40; });
+        // The host's log (warnings and reconnections), shown with the controller's pendant when the controller's log is wrong.
+        var hostLog = new ConcurrentQueue<string>();
+        using var sink = w.Bot.Logger.AddSink(e => hostLog.Enqueue(e.ToString()), LogLevel.INFO);
         await rig.RecoverAsync(w);
         // The KUKA twin moves a KR 6 R900 sixx with its tool pointing down, which cannot reach the lowest points near its base
         // (MoveTo(231, -71, 323) is not reachable): its program runs 200 mm further out and 100 mm higher.
@@ -46,8 +51,14 @@ public class SoakTests(ITestOutputHelper output)
 
         Assert.True(w.Executed.SequenceEqual(Enumerable.Range(1, Actions)), "The host saw actions executed out of order, twice or not at all.");
         IReadOnlyList<int> log = rig.ExecutedIds;
-        Assert.Equal(Actions, log.Count);
-        Assert.True(log.SequenceEqual(Enumerable.Range(1, Actions)), $"The controller executed out of order or twice: first difference at {FirstDifference(log)}.");
+        int at = FirstDifference(log);
+        if (at != Actions || log.Count != Actions)
+        {
+            output.WriteLine("Host log:\n  " + string.Join("\n  ", hostLog.TakeLast(400)));
+            output.WriteLine("Controller pendant:\n  " + string.Join("\n  ", rig.PendantMessages));
+        }
+        Assert.True(at == Actions && log.Count == Actions,
+            $"The controller executed out of order or twice ({log.Count} executions): first difference at {at}: {string.Join(",", log.Skip(Math.Max(0, at - 5)).Take(12))}.");
         Assert.True(rig.Position.IsSimilar(end, 1e-6), $"{brand} ended at {rig.Position}, expected {end}");
         Assert.Empty(rig.Errors);
         Assert.Empty(w.Bot.GetPendingActions());
@@ -64,13 +75,13 @@ public class SoakTests(ITestOutputHelper output)
     }
     private static int FirstDifference(IReadOnlyList<int> log)
     {
-        for (int i = 0; i < log.Count; i++)
+        for (int i = 0; i < log.Count && i < Actions; i++)
         {
             if (log[i] != i + 1)
             {
                 return i;
             }
         }
-        return log.Count;
+        return Math.Min(log.Count, Actions);
     }
 }
