@@ -165,18 +165,8 @@ public abstract partial class VirtualController<TState>
     private void LoseBuffer()
     {
         RestartingLosingBuffer();
-        lock (Gate)
-        {
-            _generation++;
-            Volatile.Write(ref _lastReceivedId, Volatile.Read(ref _lastExecutedId));
-        }
         // Emptied before the client is dropped: a host that reconnects at once must not see its new requests drained.
-        int lost = 0;
-        while (_buffer.Reader.TryRead(out _))
-        {
-            lost++;
-        }
-        Interlocked.Add(ref _requestsLost, lost);
+        int lost = DiscardReceived();
         DropClient();
         Pendant($"restarted: {lost.ToString(CultureInfo.InvariantCulture)} requests received and not executed are lost");
     }
@@ -188,18 +178,29 @@ public abstract partial class VirtualController<TState>
     /// </summary>
     private protected void DropBuffer(string why)
     {
+        int dropped = DiscardReceived();
+        Pendant($"{why}: {dropped.ToString(CultureInfo.InvariantCulture)} requests received and not executed are dropped");
+    }
+
+    /// <summary>
+    /// Forgets what was received and not executed: requests read under the current generation are lost from now on, the
+    /// buffer is emptied and the progress reports the last executed request as the last received one. Returns how many
+    /// requests the buffer held.
+    /// </summary>
+    private int DiscardReceived()
+    {
         lock (Gate)
         {
             _generation++;
             Volatile.Write(ref _lastReceivedId, Volatile.Read(ref _lastExecutedId));
         }
-        int dropped = 0;
+        int discarded = 0;
         while (_buffer.Reader.TryRead(out _))
         {
-            dropped++;
+            discarded++;
         }
-        Interlocked.Add(ref _requestsLost, dropped);
-        Pendant($"{why}: {dropped.ToString(CultureInfo.InvariantCulture)} requests received and not executed are dropped");
+        Interlocked.Add(ref _requestsLost, discarded);
+        return discarded;
     }
 
     /// <summary>
