@@ -60,7 +60,7 @@ internal sealed partial class TwinArm
         double v = move.Speed, a = move.Acceleration;
         Pose from = PendingBlend?.Corner ?? Tcp;
         double metres = (target.Position - from.Position).Length / 1000;
-        bool blendable = metres >= BlendModel.MinLength && v > 0 && !TurnDominates(move.PlainSeconds, metres, v, a);
+        bool blendable = metres >= BlendModel.MinLength && v > 0 && !BlendModel.TurnDominates(move.PlainSeconds, metres, v, a);
         if (!blendable)
         {
             FinishBlend(cancellation); // the tool only turns, or turns slower than it travels: the arm stops at the last waypoint first
@@ -109,10 +109,6 @@ internal sealed partial class TwinArm
             }
         }
     }
-
-    /// <summary>True when turning the tool takes longer than the straight way (<paramref name="plainSeconds"/> is more than its trapezoid): then the motion does not blend.</summary>
-    internal static bool TurnDominates(double plainSeconds, double metres, double speed, double acceleration) =>
-        plainSeconds > SpeedProfile.Plan(metres, 0, speed, 0, acceleration).Seconds * (1 + 1e-6) + 1e-9;
 
     private Joints Near(Pose tcp, Joints near)
     {

@@ -11,5 +11,5 @@ internal sealed class AbbBlendTiming : PathBlendTiming
         (motion.ControllerAcceleration ? AbbMotionTiming.DefaultAcceleration : motion.Acceleration) / 1000;
 
     protected override bool TurnDominates(in TimedMotion motion, double plain, double metres, double speed, double acceleration) =>
-        plain > SpeedProfile.Plan(metres, 0, speed, 0, acceleration).Seconds * (1 + 1e-6) + 1e-9;
+        BlendModel.TurnDominates(plain, metres, speed, acceleration);
 }

@@ -20,6 +20,14 @@ internal static class BlendModel
     /// <summary>Below this length (in m) a motion has no straight part to blend with: it only turns the tool.</summary>
     internal const double MinLength = 1e-6;
 
+    /// <summary>
+    /// True when turning the tool takes longer than travelling <paramref name="metres"/> in a trapezoid at <paramref name="speed"/>
+    /// and <paramref name="acceleration"/> (<paramref name="plainSeconds"/>, the motion's time alone, is longer): such a motion
+    /// does not blend on ABB (v_ori) and KUKA ($VEL.ORI1), whose path planners then stop at the corner.
+    /// </summary>
+    internal static bool TurnDominates(double plainSeconds, double metres, double speed, double acceleration) =>
+        plainSeconds > SpeedProfile.Plan(metres, 0, speed, 0, acceleration).Seconds * (1 + 1e-6) + 1e-9;
+
     /// <summary>The radius a blend at the end of a motion <paramref name="length"/> long can have: at most half of it.</summary>
     internal static double Radius(double radius, double length) => length < MinLength || !(radius > 0) ? 0 : Math.Min(radius, length / 2);
 
