@@ -122,6 +122,21 @@ public class RapidArcTests
         Assert.Equal(Seconds, twin.Clock.Seconds, 4);
     }
 
+    [Fact]
+    public async Task MoveC_WithItsPathCleared_EndsOnTheCircle_WhereTheArmStands()
+    {
+        using var stop = new CancellationTokenSource(TimeSpan.FromMinutes(2));
+        (RapidTwinController twin, ManualClock clock, _, _, ArcProbe probe, Task<RapidProgramState> run) = Start(stop.Token);
+
+        clock.Advance(TimeSpan.FromSeconds(Seconds * 0.5));
+        twin.Arm.ClearPath(); // what ClearPath does: the MoveC ends where the arm stands and the program goes on
+
+        Assert.True(await run.WaitAsync(Bound) == RapidProgramState.Finished, twin.Error);
+        probe.AssertAt(twin.Arm.Tcp.Position, 45, "cleared half way");
+        Assert.Equal("MoveC (path cleared)", twin.Arm.Trace[^1].Text);
+        Assert.Equal(Seconds * 0.5, twin.Clock.Seconds, 4);
+    }
+
     [Theory]
     [InlineData(-50, 50)]          // on the chord from the start to the ToPoint
     [InlineData(0.05, 0)]          // 0.05 mm from the start
