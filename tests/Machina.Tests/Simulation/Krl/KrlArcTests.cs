@@ -110,6 +110,36 @@ public class KrlArcTests
         Assert.Equal(Seconds, twin.Clock.Seconds, 4);
     }
 
+    [Fact]
+    public async Task Circ_WokenByAnInterrupt_BrakesOnTheCircle_AndGoesOnAlongIt()
+    {
+        // $FLAG[4] calls caught( ) while the CIRC runs: the arm brakes where it is, the routine runs, the CIRC goes on along the circle.
+        string program = QuarterCircle()
+            .Replace("  PTP $AXIS_ACT\n", "  INTERRUPT DECL 30 WHEN $FLAG[4] DO caught( )\n  INTERRUPT ON 30\n  PTP $AXIS_ACT\n", StringComparison.Ordinal)
+            + "\n\nDEF caught( )\n  $FLAG[4] = FALSE\n  BRAKE\n  braked = TRUE\nEND\n";
+        Assert.Contains("INTERRUPT ON 30", program, StringComparison.Ordinal);
+        var clock = new ManualClock();
+        var twin = new KrlTwinController(new KrlTwinOptions { Time = clock, RealTime = true });
+        Pose start = twin.Arm.Tcp;
+        var probe = new ArcProbe(start.Position + new Vector(-100, 0, 0), start.Position, start.Position + new Vector(-100, 100, 0));
+        twin.Load(("prog.src", program), ("prog.dat", "DEFDAT prog\nDECL BOOL braked=FALSE\nENDDAT\n"));
+        using var stop = new CancellationTokenSource(TimeSpan.FromMinutes(2));
+        Task<KrlProgramState> run = Task.Factory.StartNew(() => twin.Run(cancellation: stop.Token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        Assert.True(SpinWait.SpinUntil(() => run.IsCompleted || (clock.TimersCreated == 1 && clock.PendingTimers == 1), Bound), "the CIRC did not start");
+        bool Braked() => (bool)twin.Modules["prog"].Data["braked"].Value;
+
+        clock.Advance(TimeSpan.FromSeconds(Seconds * 0.25));
+        twin.SetFlag(4, true);
+        Assert.True(SpinWait.SpinUntil(() => run.IsCompleted || (Braked() && clock.PendingTimers == 1), Bound), $"the CIRC did not go on after the interrupt: {twin.Error}");
+        probe.AssertAt(twin.Arm.Tcp.Position, 22.5, "braked");
+        clock.Advance(TimeSpan.FromSeconds(Seconds * 0.75 / 2));
+        probe.AssertAt(twin.Arm.Tcp.Position, 22.5 + 67.5 / 2, "half way through the rest");
+        await FinishAsync(twin, clock, run);
+
+        Assert.InRange(Vector.Distance(twin.Arm.Tcp.Position, start.Position + new Vector(-100, 100, 0)), 0, 1e-6);
+        Assert.Equal(Seconds, twin.Clock.Seconds, 4);
+    }
+
     [Theory]
     [InlineData(-50, 50)]       // on the chord from the start to the end point
     [InlineData(0, 0.05)]       // 0.05 mm from the start
