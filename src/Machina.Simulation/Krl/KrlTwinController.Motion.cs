@@ -133,6 +133,7 @@ internal sealed partial class KrlTwinController
         Joints end;
         double pathMm = 0, turnDegrees = 0;
         Pose? goal = null;
+        TwinArc? arc = null;
         KrlStructValue? axes = ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true);
         if (axes is not null)
         {
@@ -153,8 +154,13 @@ internal sealed partial class KrlTwinController
             turnDegrees = TwinRotation.AngleDegrees(from.Rotation, to.Rotation);
             if (kind == "CIRC" && auxiliary is not null)
             {
+                // The circle through the start, the auxiliary point and the end, in the robot's base frame; the tool turns evenly
+                // from the start to the end orientation in space ($ORI_TYPE #VAR, $CIRC_TYPE #BASE; the auxiliary point's is not used).
                 Pose via = PoseOf(ToStruct(auxiliary, current, KrlTypes.E6Pos, axesOnly: false)!);
-                pathMm = (via.Position - from.Position).Length + (to.Position - via.Position).Length;
+                Pose frame = FrameOf("$BASE");
+                arc = TwinArc.Through(frame * from, (frame * via).Position, frame * to, TwinArcOrientation.Even) ?? throw new KrlRuntimeException(string.Create(CultureInfo.InvariantCulture,
+                    $"Circle not possible: CIRC: the start, auxiliary and end points do not define a circle (two are closer than {TwinArc.MinPointDistanceMm} mm, or all three are on one line)"));
+                pathMm = arc.LengthMm;
             }
         }
         double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
@@ -169,7 +175,7 @@ internal sealed partial class KrlTwinController
             return;
         }
         Arm.FinishBlend(cancellation);
-        Arm.MoveTo(end, seconds, line, text, cancellation, linear: kind == "LIN");
+        Arm.MoveTo(end, seconds, line, text, cancellation, linear: kind == "LIN", arc: arc);
     }
 
     /// <summary>$VEL.CP (m/s) and $ACC.CP (m/s²).</summary>

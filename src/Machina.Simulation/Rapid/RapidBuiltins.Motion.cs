@@ -3,7 +3,8 @@ using Machina.Simulation.Twin;
 namespace Machina.Simulation.Rapid;
 
 /// <summary>
-/// Motion instructions (MoveL, MoveJ, MoveAbsJ, MoveC) and position functions (CRobT, CJointT, CalcRobT) on the twin arm. A MoveL
+/// Motion instructions (MoveL, MoveJ, MoveAbsJ, MoveC: the tool on the circle through its CirPoint, <see cref="TwinArc"/>) and position
+/// functions (CRobT, CJointT, CalcRobT) on the twin arm. A MoveL
 /// with a zone returns when the arm enters the zone and the next MoveL rounds the corner (<see cref="TwinArm.MoveLinear"/>), in a
 /// program without sockets; every other move, and every move of a program with sockets (our driver), ends at its target. A target out of reach or beyond a joint limit raises ERR_ROBLIMIT with
 /// event 50050, which an ERROR handler may take.
@@ -68,6 +69,7 @@ internal static partial class RapidBuiltins
         Pose goal = wobj * RapidGeometry.ToPose(target, call.Line);
         Joints joints;
         double path;
+        TwinArc? arc = null;
         try
         {
             arm.ToolCenter = tool;
@@ -75,9 +77,10 @@ internal static partial class RapidBuiltins
             if (via is not null)
             {
                 Pose middle = wobj * RapidGeometry.ToPose(via, call.Line);
+                arc = TwinArc.Through(start, middle.Position, goal, TwinArcOrientation.PathRelative) ?? throw CircleError(call);
                 Joints viaJoints = arm.Solve(middle, near);
                 joints = arm.Solve(goal, viaJoints);
-                path = (middle.Position - start.Position).Length + (goal.Position - middle.Position).Length;
+                path = arc.LengthMm;
             }
             else
             {
@@ -94,7 +97,7 @@ internal static partial class RapidBuiltins
         arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
         if (!linear || call.Has(p.T))
         {
-            arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: linear);
+            arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: linear, arc: arc);
             return;
         }
         (double v, double acceleration, _) = Speeds(call, p);
@@ -167,6 +170,10 @@ internal static partial class RapidBuiltins
         double acceleration = (task.AccelerationLimit ?? task.Controller.Options.Acceleration) * task.AccelerationPercent / 100;
         return (v, acceleration, vOri);
     }
+
+    /// <summary>A MoveC whose start, CirPoint and ToPoint do not define a circle (two closer than 0.1 mm, or all on one line).</summary>
+    private static RapidRuntimeException CircleError(RapidCall call) => ArgumentError(call, FormattableString.Invariant(
+        $"MoveC: the start point, CirPoint and ToPoint do not define a circle (two are closer than {TwinArc.MinPointDistanceMm} mm, or all three are on one line)"));
 
     private static RapidRuntimeException MotionError(RapidCall call, string detail) =>
         new(RapidErrorNumbers.RobLimit, call.Line, $"Position outside reach: {detail}") { Event = 50050 };

@@ -2,7 +2,7 @@ namespace Machina.Simulation.Twin;
 
 /// <summary>
 /// The motion path of the arm as a controller's path planner holds it: while a motion runs the arm is part-way (at constant speed,
-/// straight in joint space or, for a linear motion, along the tool's straight line), a hold (RAPID StopMove) stops it where it
+/// straight in joint space or, for a linear or circular motion, along the tool's straight line or arc), a hold (RAPID StopMove) stops it where it
 /// is until released (StartMove), a cleared path (ClearPath)
 /// ends the motion where the arm stands (and drops a pending blend), and a wake lets the moving task serve its interrupts.
 /// </summary>
@@ -16,16 +16,21 @@ internal sealed partial class TwinArm
 
     /// <summary>
     /// A motion under way: from, to, when it started (timestamp of the clock's time provider) and how long it takes. A joint motion
-    /// is straight in joint space; a linear one (<paramref name="Linear"/>) keeps the tool centre point on the straight line and
-    /// turns its orientation evenly, the joints solved at each point nearest to the joint-space interpolation; a motion with its own
-    /// <paramref name="Path"/> (a blend: fraction of the way to joints) follows it. The tool poses at the start and the end are
-    /// computed once, when the motion is made, so that reading the joints while it runs solves one pose only.
+    /// is straight in joint space; a Cartesian one (<paramref name="Cartesian"/>: the arm whose tool moves) keeps the tool centre point
+    /// on the straight line, or on the <paramref name="Arc"/> from the part <paramref name="ArcFrom"/> of it already behind (after a hold
+    /// or a wake), and turns its orientation evenly (an arc's as it says), the joints solved at each point nearest to the joint-space
+    /// interpolation; a motion with its own <paramref name="Path"/> (a blend: fraction of the way to joints) follows it. The tool poses
+    /// at the start and the end are computed once, when the motion is made, so that reading the joints while it runs solves one pose only.
     /// </summary>
-    private sealed record Motion(Joints From, Joints To, long Started, double Seconds, TwinArm? Linear = null, Func<double, Joints>? Path = null)
+    private sealed record Motion(Joints From, Joints To, long Started, double Seconds, TwinArm? Cartesian = null, Func<double, Joints>? Path = null,
+        TwinArc? Arc = null, double ArcFrom = 0)
     {
-        private readonly Pose _tool = Linear?.ToolCenter ?? Pose.Identity;
-        private readonly Pose _start = Linear is null ? Pose.Identity : Linear.Model.Kinematics.Forward(From) * Linear.ToolCenter;
-        private readonly Pose _end = Linear is null ? Pose.Identity : Linear.Model.Kinematics.Forward(To) * Linear.ToolCenter;
+        private readonly Pose _tool = Cartesian?.ToolCenter ?? Pose.Identity;
+        private readonly Pose _start = Cartesian is null || Arc is not null ? Pose.Identity : Cartesian.Model.Kinematics.Forward(From) * Cartesian.ToolCenter;
+        private readonly Pose _end = Cartesian is null || Arc is not null ? Pose.Identity : Cartesian.Model.Kinematics.Forward(To) * Cartesian.ToolCenter;
+
+        /// <summary>The part of the whole arc behind the arm <paramref name="elapsed"/> seconds after this motion started.</summary>
+        public double ArcFractionAt(double elapsed) => ArcFrom + (1 - ArcFrom) * (Seconds > 0 ? Math.Clamp(elapsed / Seconds, 0, 1) : 1);
 
         /// <summary>The joints <paramref name="elapsed"/> seconds after the start.</summary>
         public Joints At(double elapsed)
@@ -46,11 +51,13 @@ internal sealed partial class TwinArm
             double[] a = From.ToArray(), b = To.ToArray();
             var straight = new Joints(a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f,
                 a[3] + (b[3] - a[3]) * f, a[4] + (b[4] - a[4]) * f, a[5] + (b[5] - a[5]) * f);
-            if (Linear is not { } arm)
+            if (Cartesian is not { } arm)
             {
                 return straight;
             }
-            var tcp = new Pose(_start.Position + (_end.Position - _start.Position) * f, KinematicChecks.Slerp(_start.Rotation, _end.Rotation, f));
+            Pose tcp = Arc is { } arc
+                ? arc.At(ArcFrom + (1 - ArcFrom) * f)
+                : new Pose(_start.Position + (_end.Position - _start.Position) * f, KinematicChecks.Slerp(_start.Rotation, _end.Rotation, f));
             return arm.Model.Kinematics.Closest(tcp * _tool.Inverse(), straight) ?? straight;
         }
     }
@@ -132,10 +139,12 @@ internal sealed partial class TwinArm
     /// A real-time motion along the path: <paramref name="target"/> in <paramref name="seconds"/>, held and released, ended early by a
     /// cleared path; <see cref="Serve"/> runs each time the motion is woken (an exception it throws leaves the arm where it stands).
     /// </summary>
-    private bool MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear, Func<double, Joints>? path)
+    private bool MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
+        Func<double, Joints>? path, TwinArc? arc)
     {
         Joints from = Joints;
         double left = seconds;
+        double arcFrom = 0; // the part of the arc behind the arm (a hold or a wake cut the motion short: the rest goes on along the arc)
         _clear = false;
         while (true)
         {
@@ -174,7 +183,7 @@ internal sealed partial class TwinArm
                 }
                 continue;
             }
-            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left, linear ? this : null, path);
+            var motion = new Motion(from, target, Clock.Time.GetTimestamp(), left, linear || arc is not null ? this : null, path, arc, arcFrom);
             lock (_gate)
             {
                 _moving = motion;
@@ -212,8 +221,9 @@ internal sealed partial class TwinArm
                     from = _joints;
                 }
                 Clock.Add(elapsed);
+                arcFrom = motion.ArcFractionAt(elapsed);
                 left -= elapsed;
-                path = null; // cut short: the rest of the way goes straight from where the arm stands
+                path = null; // cut short: the rest of the way goes straight (or on along the arc) from where the arm stands
             }
             finally
             {

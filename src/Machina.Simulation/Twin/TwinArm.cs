@@ -103,15 +103,16 @@ internal sealed partial class TwinArm
     /// Moves to <paramref name="target"/> joints in <paramref name="seconds"/>, then traces the step at <paramref name="line"/>: at
     /// <paramref name="traced"/> joints when given (the waypoint of a motion that blends before it), none when <paramref name="trace"/> is false.
     /// A <paramref name="linear"/> motion keeps the tool on a straight line while it is part-way (when the arm interpolates), a
-    /// motion with a <paramref name="path"/> (fraction of the way to joints: a blend) follows it. False when a cleared path ended it early.
+    /// motion with a <paramref name="path"/> (fraction of the way to joints: a blend) follows it, a circular one keeps the tool on its
+    /// <paramref name="arc"/> (which ends at <paramref name="target"/>). False when a cleared path ended it early.
     /// </summary>
     public bool MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true, bool linear = false,
-        Func<double, Joints>? path = null)
+        Func<double, Joints>? path = null, TwinArc? arc = null)
     {
         RequireWithinLimits(target);
         if (Interpolates && Clock.RealTime && seconds > 0)
         {
-            return MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear, path);
+            return MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear, path, arc);
         }
         Clock.Wait(seconds, cancellation);
         lock (_gate)

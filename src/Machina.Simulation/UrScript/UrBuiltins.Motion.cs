@@ -131,34 +131,31 @@ internal static partial class UrBuiltins
         return joints;
     }
 
+    /// <summary>
+    /// movec: the TCP on the circle from where it is through pose_via's position to pose_to at the tool speed v (a trapezoid with
+    /// acceleration a), the orientation turning evenly from the current pose to pose_to (mode 0, unconstrained) or kept to the arc's
+    /// tangent (mode 1, fixed: pose_to's orientation is not used). A hold stops it on the circle; once released it goes on along it.
+    /// </summary>
     private static object MoveC(UrMachine m, int line, object[] a)
     {
         (double acc, double v, _, _) = Profile([null!, a[2], a[3], 0, a[4]], line, "movec");
         FinishBlend(m, line);
         Pose via = UrGeometry.ToPose(Six(a, 0, line, "movec", "pose_via"), line);
         Pose to = UrGeometry.ToPose(Six(a, 1, line, "movec", "pose_to"), line);
-        Pose start = m.Controller.Arm.Tcp;
-        Vector p0 = start.Position, p1 = via.Position, p2 = to.Position;
-        Vector u = p1 - p0, w = p2 - p0;
-        Vector normal = Vector.Cross(u, w);
-        if (normal.Length < 1e-9 * Math.Max(1, u.Length * w.Length))
+        double mode = Num(a, 5, line, "movec", "mode");
+        if (mode != 0 && mode != 1)
         {
-            throw new UrRuntimeException(line, "movec: the start, via and end points are on one line, so they do not define a circle");
+            throw new UrRuntimeException(line, "movec: argument 'mode' must be 0 (unconstrained) or 1 (fixed)");
         }
-        // Circle centre from the three points; angles measured around the normal.
-        Vector centre = p0 + (Vector.Cross(normal, u) * w.SquaredLength + Vector.Cross(w, normal) * u.SquaredLength) / (2 * normal.SquaredLength);
-        Vector n = normal.Normalized();
-        Vector x = (p0 - centre).Normalized();
-        Vector y = Vector.Cross(n, x);
-        double Angle(Vector p) => (Math.Atan2(Vector.Dot(p - centre, y), Vector.Dot(p - centre, x)) + 2 * Math.PI) % (2 * Math.PI);
-        double sweep = Angle(p2);
-        double radius = (p0 - centre).Length;
-        Joints last = FollowLine(m, line, "movec", start, new Pose(p2, to.Rotation), t =>
-        {
-            double angle = sweep * t;
-            return new Pose(centre + x * (radius * Math.Cos(angle)) + y * (radius * Math.Sin(angle)), UrGeometry.Slerp(start.Rotation, to.Rotation, t));
-        });
-        Move(m, line, last, TwinMotion.TrapezoidSeconds(radius * sweep / 1000, v, acc), "movec");
+        TwinArm arm = m.Controller.Arm;
+        Pose start = arm.Tcp;
+        TwinArc arc = TwinArc.Through(start, via.Position, to, mode == 1 ? TwinArcOrientation.FixedToPath : TwinArcOrientation.Even)
+            ?? throw new UrRuntimeException(line, FormattableString.Invariant(
+                $"movec: the start, via and end points do not define a circle (two are closer than {TwinArc.MinPointDistanceMm} mm, or all three are on one line)"));
+        Joints first = arm.Joints;
+        Joints last = FollowLine(m, line, "movec", start, arc.End, arc.At);
+        Joints Along(double f) => f >= 1 ? last : Near(arm, arc.At(f), UrMotion.Lerp(first, last, f));
+        Move(m, line, last, TwinMotion.TrapezoidSeconds(arc.LengthMm / 1000, v, acc), "movec", v / acc, Along);
         return UrNone.Value;
     }
 
