@@ -12,6 +12,12 @@ public abstract record RobotAction
 
     private int _id = -1;
 
+    /// <summary>
+    /// The joints the last cursor solved for this motion and from which state (a robot with a model applies each motion on its
+    /// issue, release and execution cursors; the later ones reuse the solution when they start from the same state).
+    /// </summary>
+    internal SolvedPose? Solved;
+
     /// <summary>The kind of action.</summary>
     public abstract ActionType Type { get; }
 
@@ -44,6 +50,7 @@ public abstract record RobotAction
     {
         var copy = this with { };
         copy.Id = -1;
+        copy.Solved = null;
         return copy;
     }
 }

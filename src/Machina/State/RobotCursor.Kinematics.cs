@@ -50,7 +50,7 @@ internal sealed partial class RobotCursor
         {
             return refusal;
         }
-        IReadOnlyList<KinematicIssue> issues = action is ActionAxes ? SyncFromJoints(model) : SyncFromPose(model, action);
+        IReadOnlyList<KinematicIssue> issues = action is ActionAxes ? SyncFromJoints(model) : SyncFromPoseOnce(model, action);
         if (Strict && issues.Count > 0)
         {
             RestoreMotion(saved);
@@ -78,6 +78,25 @@ internal sealed partial class RobotCursor
         Pose tcp = TcpOf(model.Kinematics.Forward(target));
         Position = tcp.Position;
         Rotation = tcp.Rotation;
+        return issues;
+    }
+
+    /// <summary>
+    /// <see cref="SyncFromPose"/>, reusing the solution another cursor of the robot found for this action from the same state (the
+    /// release and execution cursors apply what the issue cursor applied): following a line solves the arm many times.
+    /// </summary>
+    private IReadOnlyList<KinematicIssue> SyncFromPoseOnce(RobotModel model, RobotAction action)
+    {
+        bool arc = action is ActionArcMotion;
+        var key = new PoseSolveKey(model, PrevAxes, Position!.Value, Rotation!.Value, Tool, arc ? ArcThrough : null, arc ? ArcThroughRotation : null,
+            MotionType, Speed);
+        if (Volatile.Read(ref action.Solved) is SolvedPose solved && solved.Key == key)
+        {
+            Axes = solved.Axes;
+            return solved.Issues;
+        }
+        IReadOnlyList<KinematicIssue> issues = SyncFromPose(model, action);
+        Volatile.Write(ref action.Solved, new SolvedPose(key, Axes, issues));
         return issues;
     }
 
