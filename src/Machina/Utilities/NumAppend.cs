@@ -56,7 +56,9 @@ internal static class NumAppend
         {
             destination[at++] = '-';
         }
-        long whole = Math.DivRem(mantissa, Pow10L[decimals], out long fraction);
+        // Divisions by constants: the processor's divide by a power chosen at run time cost more than the digits themselves.
+        long whole = DivPow10(mantissa, decimals);
+        long fraction = mantissa - whole * Pow10L[decimals];
         at += WriteDigits(destination[at..], whole, 1);
         if (fraction == 0)
         {
@@ -71,6 +73,22 @@ internal static class NumAppend
         destination[at++] = '.';
         return at + WriteDigits(destination[at..], fraction, digits);
     }
+
+    /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>
+    private static long DivPow10(long value, int decimals) => (long)(decimals switch
+    {
+        0 => (ulong)value,
+        1 => (ulong)value / 10,
+        2 => (ulong)value / 100,
+        3 => (ulong)value / 1_000,
+        4 => (ulong)value / 10_000,
+        5 => (ulong)value / 100_000,
+        6 => (ulong)value / 1_000_000,
+        7 => (ulong)value / 10_000_000,
+        8 => (ulong)value / 100_000_000,
+        9 => (ulong)value / 1_000_000_000,
+        _ => throw new ArgumentOutOfRangeException(nameof(decimals)),
+    });
 
     /// <summary>The digit pairs 00 to 99, for writing two digits per division.</summary>
     private const string DigitPairs =
@@ -97,6 +115,20 @@ internal static class NumAppend
         count = Math.Max(count, minDigits);
         Span<char> digits = destination[..count];
         int at = count;
+        if (rest <= uint.MaxValue)
+        {
+            // Most numbers of a program fit 32 bits, whose divisions are cheaper.
+            uint small = (uint)rest;
+            while (small >= 100)
+            {
+                uint next = small / 100;
+                int pair = (int)(small - next * 100) * 2;
+                digits[--at] = DigitPairs[pair + 1];
+                digits[--at] = DigitPairs[pair];
+                small = next;
+            }
+            rest = small;
+        }
         while (rest >= 100)
         {
             ulong next = rest / 100;
