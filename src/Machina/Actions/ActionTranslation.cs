@@ -25,6 +25,10 @@ public sealed record ActionTranslation : RobotAction
     /// <inheritdoc/>
     public override string ToInstruction() => InstructionText.Call(Relative ? "Move" : "MoveTo", Translation.X, Translation.Y, Translation.Z);
 
+    /// <summary>Appends the text of <see cref="ToInstruction"/> (digits and fixed words only) to <paramref name="sb"/>, without a string in between.</summary>
+    internal System.Text.StringBuilder AppendInstruction(System.Text.StringBuilder sb) =>
+        sb.AppendCall(Relative ? "Move" : "MoveTo", Translation.X, Translation.Y, Translation.Z);
+
     /// <inheritdoc/>
     public override string Describe()
     {

@@ -17,7 +17,7 @@ internal sealed class InstructionArgs
     }
 
     private Arg[] _args = new Arg[20];
-    private string _source = "";
+    private char[] _source = [];
 
     internal int Count { get; private set; }
 
@@ -27,7 +27,7 @@ internal sealed class InstructionArgs
 
     internal int Column { get; private set; }
 
-    internal void Begin(string source, string name, int line, int column)
+    internal void Begin(char[] source, string name, int line, int column)
     {
         _source = source;
         Name = name;

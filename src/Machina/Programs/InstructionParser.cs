@@ -6,7 +6,8 @@ namespace Machina;
 /// </summary>
 internal sealed class InstructionParser
 {
-    private readonly string _text;
+    private readonly char[] _text;
+    private readonly int _length;
     private readonly InstructionArgs _args;
     private readonly bool _final;
     private int _pos;
@@ -14,19 +15,21 @@ internal sealed class InstructionParser
     private int _lineStart;
 
     internal InstructionParser(string text)
-        : this(text, new InstructionArgs(), firstLine: 1, start: 0, isFinal: true)
+        : this((text ?? throw new ArgumentNullException(nameof(text))).ToCharArray(), text.Length, new InstructionArgs(), firstLine: 1, start: 0, isFinal: true)
     {
     }
 
     /// <summary>
-    /// A parser for one piece of a longer text (see <see cref="InstructionReader"/>): <paramref name="text"/> starts at the
-    /// beginning of line <paramref name="firstLine"/> and parsing starts at <paramref name="start"/>. When
+    /// A parser for one piece of a longer text (see <see cref="InstructionReader"/>): the first <paramref name="length"/>
+    /// characters of <paramref name="text"/> (the reader's own buffer, read in place) start at the beginning of line
+    /// <paramref name="firstLine"/> and parsing starts at <paramref name="start"/>. When
     /// <paramref name="isFinal"/> is false more text follows, and a statement cut by the end of this piece throws
     /// <see cref="StatementCutException"/> instead of a parse error.
     /// </summary>
-    internal InstructionParser(string text, InstructionArgs args, int firstLine, int start, bool isFinal)
+    internal InstructionParser(char[] text, int length, InstructionArgs args, int firstLine, int start, bool isFinal)
     {
-        _text = text ?? throw new ArgumentNullException(nameof(text));
+        _text = text;
+        _length = length;
         _args = args;
         _line = firstLine;
         _pos = start;
@@ -34,9 +37,6 @@ internal sealed class InstructionParser
     }
 
     private int Column => _pos - _lineStart + 1;
-
-    /// <summary>The text being parsed.</summary>
-    internal string Text => _text;
 
     /// <summary>The line the parser has reached (after the last statement read).</summary>
     internal int Line => _line;
@@ -55,7 +55,7 @@ internal sealed class InstructionParser
     internal RobotAction? Next()
     {
         SkipSeparators();
-        if (_pos >= _text.Length)
+        if (_pos >= _length)
         {
             return null;
         }
@@ -64,7 +64,7 @@ internal sealed class InstructionParser
         StatementColumn = column;
         StatementLineStart = _lineStart;
         int nameStart = _pos;
-        while (_pos < _text.Length && (char.IsAsciiLetterOrDigit(_text[_pos]) || _text[_pos] == '_'))
+        while (_pos < _length && (char.IsAsciiLetterOrDigit(_text[_pos]) || _text[_pos] == '_'))
         {
             _pos++;
         }
@@ -75,11 +75,11 @@ internal sealed class InstructionParser
         // Known names are looked up in place: the catalogue's own string is used, so no name is allocated per statement.
         if (!InstructionCatalog.TryFind(_text.AsSpan(nameStart, _pos - nameStart), out string name, out InstructionCatalog.Overload[] overloads))
         {
-            name = _text.Substring(nameStart, _pos - nameStart);
+            name = new string(_text, nameStart, _pos - nameStart);
             overloads = Resolve(name, line, column);
         }
         SkipSpaces();
-        if (_pos >= _text.Length || _text[_pos] != '(')
+        if (_pos >= _length || _text[_pos] != '(')
         {
             throw Error(_line, Column, $"expected '(' after {name}.");
         }
@@ -87,7 +87,7 @@ internal sealed class InstructionParser
         _args.Begin(_text, name, line, column);
         ReadArguments(name);
         SkipSpaces();
-        if (_pos < _text.Length && _text[_pos] == ';')
+        if (_pos < _length && _text[_pos] == ';')
         {
             _pos++;
         }
@@ -142,7 +142,7 @@ internal sealed class InstructionParser
     private void ReadArguments(string name)
     {
         SkipGaps();
-        if (_pos < _text.Length && _text[_pos] == ')')
+        if (_pos < _length && _text[_pos] == ')')
         {
             _pos++;
             return;
@@ -150,7 +150,7 @@ internal sealed class InstructionParser
         while (true)
         {
             SkipGaps();
-            if (_pos >= _text.Length)
+            if (_pos >= _length)
             {
                 throw NotClosed(name);
             }
@@ -165,7 +165,7 @@ internal sealed class InstructionParser
             }
             _args.Add(arg);
             SkipGaps();
-            if (_pos >= _text.Length)
+            if (_pos >= _length)
             {
                 throw NotClosed(name);
             }
@@ -184,10 +184,10 @@ internal sealed class InstructionParser
     private void ReadString(ref InstructionArgs.Arg arg)
     {
         int start = ++_pos;
-        while (_pos < _text.Length)
+        while (_pos < _length)
         {
             char c = _text[_pos];
-            if (c == '\\' && _pos + 1 < _text.Length && _text[_pos + 1] != '\n')
+            if (c == '\\' && _pos + 1 < _length && _text[_pos + 1] != '\n')
             {
                 _pos += 2;
                 continue;
@@ -213,7 +213,7 @@ internal sealed class InstructionParser
     private void ReadBare(ref InstructionArgs.Arg arg, string name)
     {
         int start = _pos;
-        while (_pos < _text.Length)
+        while (_pos < _length)
         {
             char c = _text[_pos];
             if (c == ',' || c == ')' || c == '\n' || c == '(' || c == ';' || c == '"')
@@ -242,7 +242,7 @@ internal sealed class InstructionParser
 
     private void SkipSpaces()
     {
-        while (_pos < _text.Length && (_text[_pos] == ' ' || _text[_pos] == '\t'))
+        while (_pos < _length && (_text[_pos] == ' ' || _text[_pos] == '\t'))
         {
             _pos++;
         }
@@ -251,7 +251,7 @@ internal sealed class InstructionParser
     /// <summary>Skips white space, line breaks and <c>//</c> comments between the arguments of a statement.</summary>
     private void SkipGaps()
     {
-        while (_pos < _text.Length)
+        while (_pos < _length)
         {
             if (char.IsWhiteSpace(_text[_pos]))
             {
@@ -268,11 +268,11 @@ internal sealed class InstructionParser
         }
     }
 
-    private bool IsCommentStart(int pos) => _text[pos] == '/' && pos + 1 < _text.Length && _text[pos + 1] == '/';
+    private bool IsCommentStart(int pos) => _text[pos] == '/' && pos + 1 < _length && _text[pos + 1] == '/';
 
     private void SkipComment()
     {
-        while (_pos < _text.Length && _text[_pos] != '\n')
+        while (_pos < _length && _text[_pos] != '\n')
         {
             _pos++;
         }
@@ -280,7 +280,7 @@ internal sealed class InstructionParser
 
     private void SkipSeparators()
     {
-        while (_pos < _text.Length)
+        while (_pos < _length)
         {
             char c = _text[_pos];
             if (char.IsWhiteSpace(c) || c == ';' || c == '\uFEFF')

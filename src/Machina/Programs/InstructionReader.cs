@@ -21,6 +21,7 @@ internal sealed class InstructionReader
     private readonly InstructionArgs _args = new();
     private char[] _buffer = new char[PieceSize * 2];
     private int _buffered;
+    private int _pieceLength;
     private bool _ended;
     private InstructionParser? _parser;
 
@@ -40,7 +41,7 @@ internal sealed class InstructionReader
         {
             if (_parser is null)
             {
-                if (!NextPiece(carry: null, firstLine: 1, start: 0))
+                if (!NextPiece(carryFrom: 0, firstLine: 1, start: 0))
                 {
                     return null;
                 }
@@ -54,8 +55,7 @@ internal sealed class InstructionReader
             catch (StatementCutException)
             {
                 // Read the statement again from the start of its line, with more text after it.
-                string piece = parser.Text;
-                NextPiece(piece.AsSpan(parser.StatementLineStart), parser.StatementLine, parser.StatementColumn - 1);
+                NextPiece(parser.StatementLineStart, parser.StatementLine, parser.StatementColumn - 1);
                 continue;
             }
             if (action is not null)
@@ -68,32 +68,32 @@ internal sealed class InstructionReader
             {
                 return null;
             }
-            NextPiece(carry: null, parser.Line, start: 0);
+            NextPiece(carryFrom: _pieceLength, parser.Line, start: 0);
         }
     }
 
     /// <summary>
-    /// Makes the parser for the next piece: <paramref name="carry"/> (the start of a cut statement's line) followed by text up
-    /// to and including the last line break read. Returns false when there is no text left.
+    /// Makes the parser for the next piece: the text of the current piece from <paramref name="carryFrom"/> on (the start of a
+    /// cut statement's line; the piece's length when nothing is carried), followed by text up to and including the last line
+    /// break read. The parser reads the buffer in place, so no string is made per piece. Returns false when there is no text left.
     /// </summary>
-    private bool NextPiece(ReadOnlySpan<char> carry, int firstLine, int start)
+    private bool NextPiece(int carryFrom, int firstLine, int start)
     {
-        if (carry.Length > MaxLineChars)
+        int carry = _pieceLength - carryFrom;
+        if (carry > MaxLineChars)
         {
             throw new InstructionParseException(firstLine, start + 1,
                 $"this statement is longer than {MaxLineChars} characters, the most Machina reads as one statement (is a quote or a parenthesis left open?)");
         }
-        // The buffer holds, from its start, text read but not yet given to a parser (the tail after the last line break).
-        int needed = carry.Length + _buffered + PieceSize;
+        // The buffer holds, from its start, the piece given to the last parser, then the text read after it. What that parser
+        // was done with goes; the carried line and the text after the piece (contiguous) move to the start.
+        _buffer.AsSpan(carryFrom, _buffered - carryFrom).CopyTo(_buffer);
+        _buffered -= carryFrom;
+        _pieceLength = 0;
+        int needed = _buffered + PieceSize;
         if (needed > _buffer.Length)
         {
             Array.Resize(ref _buffer, Math.Max(needed, _buffer.Length * 2));
-        }
-        if (carry.Length > 0)
-        {
-            _buffer.AsSpan(0, _buffered).CopyTo(_buffer.AsSpan(carry.Length));
-            carry.CopyTo(_buffer);
-            _buffered += carry.Length;
         }
         int end = -1;
         while (!_ended)
@@ -119,7 +119,7 @@ internal sealed class InstructionReader
                     $"this line is longer than {MaxLineChars} characters, the most Machina reads as one line; is the file a program?");
             }
             // (at least as much as was carried, so that a statement over many lines is read again only a few times).
-            if (end >= carry.Length && end >= from && _buffered - carry.Length >= Math.Max(PieceSize, carry.Length))
+            if (end >= carry && end >= from && _buffered - carry >= Math.Max(PieceSize, carry))
             {
                 break;
             }
@@ -130,10 +130,8 @@ internal sealed class InstructionReader
             _parser = null;
             return false;
         }
-        string text = new(_buffer, 0, length);
-        _buffered -= length;
-        _buffer.AsSpan(length, _buffered).CopyTo(_buffer);
-        _parser = new InstructionParser(text, _args, firstLine, start, isFinal: _ended);
+        _pieceLength = length;
+        _parser = new InstructionParser(_buffer, length, _args, firstLine, start, isFinal: _ended);
         return true;
     }
 }

@@ -8,14 +8,17 @@ namespace Machina;
 /// The actions of an instruction text that is read again from its start for every pass a compiler makes, so that no pass
 /// holds the whole program: memory stays the same for ten lines or ten million. Actions get the ids a robot would give them
 /// (1, 2, 3, … in order), and the source remembers where the action it returned last was written, for warnings and errors.
-/// Each pass reads and parses on a thread of its own, a few hundred statements ahead of the compiler (at most
+/// Each pass reads and parses on a thread of its own, a few thousand statements ahead of the compiler (at most
 /// <see cref="BatchesAhead"/> batches), so that on two or more cores parsing and compiling overlap; errors still surface
 /// exactly where the statement is reached.
 /// </summary>
 internal sealed class InstructionSource(Func<TextReader> open, CancellationToken cancellationToken) : IEnumerable<RobotAction>
 {
-    /// <summary>Statements per batch handed from the reading thread to the compiler.</summary>
-    internal const int BatchSize = 512;
+    /// <summary>
+    /// Statements per batch handed from the reading thread to the compiler: each hand-over wakes a thread, which cost about
+    /// 5 % of a 10^6-line compile with batches of 512 (docs/performance.md, "The cold path, third session").
+    /// </summary>
+    internal const int BatchSize = 4096;
 
     /// <summary>Batches the reading thread may be ahead.</summary>
     internal const int BatchesAhead = 4;
@@ -99,7 +102,9 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     {
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         using var batches = new BlockingCollection<Batch>(BatchesAhead);
-        Task reading = Task.Factory.StartNew(() => Read(batches, stop.Token), stop.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        // Batches the compiler is done with go back to the reading thread, so that a pass allocates only a few.
+        var free = new ConcurrentQueue<Batch>();
+        Task reading = Task.Factory.StartNew(() => Read(batches, free, stop.Token), stop.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
         try
         {
             int id = 0;
@@ -116,6 +121,8 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                     yield return action;
                 }
                 batch.Error?.Throw();
+                batch.Count = 0;
+                free.Enqueue(batch);
             }
             cancellationToken.ThrowIfCancellationRequested();
             _current = null;
@@ -140,7 +147,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// The reading thread: parses the text into batches. Whatever stops it (the end, a parse error, a file that cannot be
     /// read) is handed over after the statements before it, so the compiler meets it in order; nothing is silently cut.
     /// </summary>
-    private void Read(BlockingCollection<Batch> batches, CancellationToken stop)
+    private void Read(BlockingCollection<Batch> batches, ConcurrentQueue<Batch> free, CancellationToken stop)
     {
         var batch = new Batch();
         try
@@ -157,7 +164,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                     if (++batch.Count == BatchSize)
                     {
                         batches.Add(batch, stop);
-                        batch = new Batch();
+                        batch = free.TryDequeue(out Batch? done) ? done : new Batch();
                     }
                 }
             }

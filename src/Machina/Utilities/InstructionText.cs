@@ -84,6 +84,25 @@ internal static class InstructionText
     }
 
     /// <summary>
+    /// Appends the text of <see cref="Call(string, ReadOnlySpan{double})"/> to <paramref name="sb"/> without making a string:
+    /// a compiler that quotes the instruction of every move in a comment writes it straight into the comment's line.
+    /// </summary>
+    internal static StringBuilder AppendCall(this StringBuilder sb, string name, params ReadOnlySpan<double> values)
+    {
+        sb.Append(name).Append('(');
+        Span<char> number = stackalloc char[NumAppend.MaxChars];
+        for (int i = 0; i < values.Length; i++)
+        {
+            if (i > 0)
+            {
+                sb.Append(',');
+            }
+            sb.Append(number[..NumShortest.WriteRoundTrip(number, values[i])]);
+        }
+        return sb.Append(");");
+    }
+
+    /// <summary>
     /// A unit axis with the floating-point noise of rotation arithmetic removed (components within 1e-15 of 0 or ±1 become exactly
     /// that), so that <c>RotateTo(0,0,-1,0,1,0)</c> reads back as written instead of with <c>2.220446049250313E-16</c>. The
     /// rotation it describes changes by far less than the 1e-9 degrees within which instructions compare equal.

@@ -36,7 +36,7 @@ internal static class NumAppend
     {
         // Math.Round(value, decimals) scales, rounds to even and scales back; doing the first two steps here gives the
         // same digits as an integer, which prints exactly while it has at most 15 significant digits.
-        double scaled = Math.Round(value * Pow10[decimals]);
+        double scaled = RoundEven(value * Pow10[decimals]);
         if (!(Math.Abs(scaled) < 1e15))
         {
             return -1;
@@ -56,7 +56,9 @@ internal static class NumAppend
         {
             destination[at++] = '-';
         }
-        long whole = Math.DivRem(mantissa, Pow10L[decimals], out long fraction);
+        // Divisions by constants: the processor's divide by a power chosen at run time cost more than the digits themselves.
+        long whole = DivPow10(mantissa, decimals);
+        long fraction = mantissa - whole * Pow10L[decimals];
         at += WriteDigits(destination[at..], whole, 1);
         if (fraction == 0)
         {
@@ -72,23 +74,93 @@ internal static class NumAppend
         return at + WriteDigits(destination[at..], fraction, digits);
     }
 
-    /// <summary>Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.</summary>
+    /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>
+    private static long DivPow10(long value, int decimals) => (long)(decimals switch
+    {
+        0 => (ulong)value,
+        1 => (ulong)value / 10,
+        2 => (ulong)value / 100,
+        3 => (ulong)value / 1_000,
+        4 => (ulong)value / 10_000,
+        5 => (ulong)value / 100_000,
+        6 => (ulong)value / 1_000_000,
+        7 => (ulong)value / 10_000_000,
+        8 => (ulong)value / 100_000_000,
+        9 => (ulong)value / 1_000_000_000,
+        _ => throw new ArgumentOutOfRangeException(nameof(decimals)),
+    });
+
+    /// <summary>The digit pairs 00 to 99, for writing two digits per division.</summary>
+    private const string DigitPairs =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839" +
+        "4041424344454647484950515253545556575859606162636465666768697071727374757677787980" +
+        "81828384858687888990919293949596979899";
+
+    /// <summary>
+    /// Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.
+    /// The digits are counted by comparison and written two at a time, from the last.
+    /// </summary>
     private static int WriteDigits(Span<char> destination, long value, int minDigits)
     {
+        ulong rest = (ulong)value;
         int count = 1;
-        for (long rest = value / 10; rest != 0; rest /= 10)
+        for (ulong power = 10; count < 19 && rest >= power; power *= 10)
         {
             count++;
         }
-        count = Math.Max(count, minDigits);
-        for (int i = count - 1; i >= 0; i--)
+        if (rest >= 10_000_000_000_000_000_000UL)
         {
-            long next = value / 10;
-            destination[i] = (char)('0' + (int)(value - next * 10));
-            value = next;
+            count = 20;
         }
+        count = Math.Max(count, minDigits);
+        Span<char> digits = destination[..count];
+        int at = count;
+        if (rest <= uint.MaxValue)
+        {
+            // Most numbers of a program fit 32 bits, whose divisions are cheaper.
+            uint small = (uint)rest;
+            while (small >= 100)
+            {
+                uint next = small / 100;
+                int pair = (int)(small - next * 100) * 2;
+                digits[--at] = DigitPairs[pair + 1];
+                digits[--at] = DigitPairs[pair];
+                small = next;
+            }
+            rest = small;
+        }
+        while (rest >= 100)
+        {
+            ulong next = rest / 100;
+            int pair = (int)(rest - next * 100) * 2;
+            digits[--at] = DigitPairs[pair + 1];
+            digits[--at] = DigitPairs[pair];
+            rest = next;
+        }
+        if (rest >= 10)
+        {
+            int pair = (int)rest * 2;
+            digits[--at] = DigitPairs[pair + 1];
+            digits[--at] = DigitPairs[pair];
+        }
+        else
+        {
+            digits[--at] = (char)('0' + (int)rest);
+        }
+        digits[..at].Fill('0');
         return count;
     }
+
+    /// <summary>1.5 · 2^52: any double of size below 2^51 plus this lies where doubles are the whole numbers.</summary>
+    private const double RoundingShift = 6755399441055744.0;
+
+    /// <summary>
+    /// <paramref name="value"/> rounded to a whole number, halves to even, as <see cref="Math.Round(double)"/> (which the native
+    /// build calls as a function) for every value of size below 2^51 (about 2.25·10^15), except that −0.4 gives 0, not −0.
+    /// Larger values, infinities and NaN give a number of size 2^51 − 1 or more, or NaN: callers check for 10^15 and fall back.
+    /// </summary>
+    /// <remarks>The processor rounds the sum to the nearest double, ties to even, and there the doubles are whole numbers.</remarks>
+    internal static double RoundEven(double value) => value + RoundingShift - RoundingShift;
 
     /// <summary>
     /// Writes exactly the text of <see cref="Num.F(double, int)"/> (which switches to E notation below 0.0001) into
@@ -99,7 +171,7 @@ internal static class NumAppend
         if ((uint)decimals < (uint)Pow10.Length)
         {
             // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
-            double scaled = Math.Abs(Math.Round(value * Pow10[decimals]));
+            double scaled = Math.Abs(RoundEven(value * Pow10[decimals]));
             if (decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4])
             {
                 int written = TryWriteScaled(destination, value, decimals);

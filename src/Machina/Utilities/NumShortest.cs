@@ -29,7 +29,7 @@ internal static class NumShortest
         }
         for (int decimals = 0; decimals < Pow10.Length; decimals++)
         {
-            double scaled = Math.Round(size * Pow10[decimals]);
+            double scaled = NumAppend.RoundEven(size * Pow10[decimals]);
             if (scaled >= 1e15)
             {
                 return -1;

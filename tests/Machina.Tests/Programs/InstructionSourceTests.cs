@@ -21,6 +21,29 @@ public class InstructionSourceTests
         Assert.False(ReferenceEquals(first[5], second[5]));
     }
 
+    [Fact]
+    public void Enumerate_ManyBatches_EveryActionInOrderAtItsLine()
+    {
+        // Five full batches and a part of one: the batches the compiler is done with are filled again by the reading thread.
+        int count = 5 * InstructionSource.BatchSize + 7;
+        string text = string.Concat(Enumerable.Range(0, count).Select(i => $"MoveTo({i}, {i % 7}, 0);\n"));
+        var source = new InstructionSource(() => new StringReader(text), CancellationToken.None);
+
+        for (int pass = 0; pass < 2; pass++)
+        {
+            int id = 0;
+            foreach (RobotAction action in source)
+            {
+                Assert.Equal(++id, action.Id);
+                var move = Assert.IsType<ActionTranslation>(action);
+                Assert.Equal(new Vector(id - 1, (id - 1) % 7, 0), move.Translation);
+                Assert.Equal((id, 1), source.PositionOf(id));
+            }
+            Assert.Equal(count, id);
+        }
+        Assert.Equal(count, source.Count);
+    }
+
     [Theory]
     [InlineData(0, true)]
     [InlineData(65_530, true)]      // "CustomCode" cut by the end of the first 64 K block

@@ -35,4 +35,52 @@ public class NumAppendTests
             }
         }
     }
+
+    [Theory]
+    [InlineData(1.000000001, 9, "1.000000001")]
+    [InlineData(-0.000000005, 9, "-0.000000005")]
+    [InlineData(123456789012.5, 3, "123456789012.5")]
+    [InlineData(999999999999999, 0, "999999999999999")]
+    [InlineData(100.01, 2, "100.01")]
+    [InlineData(10, 1, "10")]
+    [InlineData(7, 0, "7")]
+    public void AppendFixed_LongAndShortDigitRuns_EveryDigitInPlace(double value, int decimals, string expected)
+    {
+        Assert.Equal(expected, new StringBuilder().AppendFixed(value, decimals).ToString());
+    }
+
+    [Fact]
+    public void RoundEven_ValuesBelow2To51_SameAsMathRound()
+    {
+        var random = new Random(25);
+        for (int i = 0; i < 200_000; i++)
+        {
+            double value = (random.NextDouble() - 0.5) * Math.Pow(10, random.Next(-3, 16));
+            // (Math.Round keeps the sign of a negative value that rounds to 0; RoundEven gives +0: equal numbers.)
+            Assert.Equal(Math.Round(value), NumAppend.RoundEven(value), 0.0);
+        }
+        // Halves go to the even neighbour, as Math.Round does.
+        Assert.Equal([0, 2, 2, -2, -2, 4], new[] { 0.5, 1.5, 2.5, -1.5, -2.5, 3.5 }.Select(NumAppend.RoundEven));
+        Assert.Equal(2251799813685246.0, NumAppend.RoundEven(2251799813685246.5));
+        Assert.Equal(2251799813685244.0, NumAppend.RoundEven(2251799813685244.25));
+    }
+
+    [Theory]
+    [InlineData(1e15)]
+    [InlineData(-1e15)]
+    [InlineData(1e300)]
+    [InlineData(double.PositiveInfinity)]
+    [InlineData(double.NegativeInfinity)]
+    public void RoundEven_HugeValues_StayHugeForTheCallersCheck(double value)
+    {
+        Assert.True(Math.Abs(NumAppend.RoundEven(value)) >= 1e15);
+        Assert.Equal(-1, NumAppend.TryWriteScaled(new char[NumAppend.MaxChars], value, 0));
+    }
+
+    [Fact]
+    public void RoundEven_NaN_IsNaNAndRefusedByTryWriteScaled()
+    {
+        Assert.True(double.IsNaN(NumAppend.RoundEven(double.NaN)));
+        Assert.Equal(-1, NumAppend.TryWriteScaled(new char[NumAppend.MaxChars], double.NaN, 3));
+    }
 }

@@ -208,12 +208,23 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
     /// <remarks>
     /// A long program of short moves warns on every motion, so the comment line is built once in a builder, numbers formatted in
-    /// place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>): only the action's text is made comment-safe, since the rest is fixed text and numbers.
+    /// place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>), a move's instruction too: only the text of other
+    /// actions is made comment-safe, since the rest is fixed text and numbers.
     /// The warning's own string is made only while the job keeps warnings.
     /// </remarks>
     private void WarnBlend(RobotAction action, double radius, double length, string which)
     {
-        StringBuilder line = _warning.Clear().Append(Indent).Append("# WARNING: ").Append(UrScriptText.CommentText(action.ToInstruction())).Append(' ');
+        StringBuilder line = _warning.Clear().Append(Indent).Append("# WARNING: ");
+        if (action is ActionTranslation translation)
+        {
+            // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
+            translation.AppendInstruction(line);
+        }
+        else
+        {
+            line.Append(UrScriptText.CommentText(action.ToInstruction()));
+        }
+        line.Append(' ');
         int start = line.Length;
         line.Append("the blend radius of ").AppendGeneral(radius).Append(" mm is more than half of ").Append(which).Append(" motion (")
             .AppendGeneral(Math.Round(length, 3)).Append(" mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(")

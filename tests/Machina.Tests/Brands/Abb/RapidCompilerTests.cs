@@ -59,6 +59,33 @@ public class RapidCompilerTests
     }
 
     [Fact]
+    public void Emit_SpeedsAndZonesComingBack_EachDeclaredOnceInOrderOfFirstUse()
+    {
+        RobotProgram p = Compile(bot =>
+        {
+            bot.SpeedTo(50);
+            Start(bot);
+            bot.SpeedTo(60);
+            bot.PrecisionTo(7.5);
+            bot.Move(10, 0, 0);
+            bot.SpeedTo(50);
+            bot.PrecisionTo(5);
+            bot.Move(10, 0, 0);
+            bot.SpeedTo(70);
+            bot.PrecisionTo(7.5);
+            bot.Move(10, 0, 0);
+            bot.SpeedTo(60);
+            bot.Move(10, 0, 0);
+        });
+        Assert.Equal(
+            ["  CONST speeddata vel50 := [50,50,50,50];", "  CONST speeddata vel60 := [60,60,60,60];", "  CONST speeddata vel70 := [70,70,70,70];",
+             "  CONST zonedata zone7_5 := [FALSE,7.5,11.25,11.25,0.75,11.25,0.75];"],
+            Declarations(p));
+        Assert.EndsWith(", vel50, z5, Tool0\\WObj:=WObj0;", MainLines(p)[2]);
+        Assert.EndsWith(", vel60, zone7_5, Tool0\\WObj:=WObj0;", MainLines(p)[4]);
+    }
+
+    [Fact]
     public void Emit_SpeedNeverUsedByAMotion_IsNotDeclared()
     {
         RobotProgram p = Compile(bot =>

@@ -121,8 +121,8 @@ internal sealed class RapidPlan
         switch (action)
         {
             case ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion:
-                AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed));
-                AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3));
+                AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
+                AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
                 if (cursor.Tool is Tool tool)
                 {
                     AddTool(tool);
@@ -151,11 +151,19 @@ internal sealed class RapidPlan
         }
     }
 
-    private static void AddOnce(List<double> values, Dictionary<double, string> seen, double value)
+    // The value each motion met last: most motions use the speed and zone of the one before, and skip the dictionary.
+    private double _lastSpeedSeen = double.NaN, _lastZoneSeen = double.NaN;
+
+    /// <summary>Adds <paramref name="value"/> to <paramref name="values"/> the first time it is met (the order of first use).</summary>
+    private static void AddOnce(List<double> values, Dictionary<double, string> seen, double value, ref double last)
     {
-        if ((values.Count == 0 || values[^1] != value) && seen.TryAdd(value, ""))
+        if (value != last)
         {
-            values.Add(value);
+            last = value;
+            if (seen.TryAdd(value, ""))
+            {
+                values.Add(value);
+            }
         }
     }
 
