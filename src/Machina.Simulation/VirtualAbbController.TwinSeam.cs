@@ -169,10 +169,8 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
                 if (statement.Length > 0)
                 {
                     int id = IdOf(statement);
-                    if (ReceiveOnCaller(id, statement + ";", out int generation))
-                    {
-                        _awaiting.Enqueue(new TwinRequest(id, generation));
-                    }
+                    ReceiveOnCaller(id, statement + ";", out int generation);
+                    _awaiting.Enqueue(new TwinRequest(id, generation));
                 }
             }
         }

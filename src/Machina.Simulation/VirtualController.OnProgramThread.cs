@@ -43,18 +43,17 @@ public abstract partial class VirtualController<TState>
 {
     /// <summary>
     /// For a twin whose program reads a request now and acknowledges it later on the same thread (the RAPID driver: SocketReceive,
-    /// then SocketSend): counts it received and buffered until <see cref="CompleteReceivedOnCaller"/>. False when a restart cut
-    /// off the client it came from (lost with the rest of the buffer: nothing more to do for it).
+    /// then SocketSend): counts it received and buffered until <see cref="CompleteReceivedOnCaller"/>. A request that arrives from
+    /// a client a restart cut off is counted too: it arrived on the program's socket, which the program still reads, so it may
+    /// still run; <see cref="CompleteReceivedOnCaller"/> then logs it executed (if it ran) without acknowledging it. (It used to be
+    /// dropped here while the program ran it: the host, told by the driver's progress that it ran, counted it executed and the
+    /// controller's log missed it.)
     /// </summary>
-    private protected bool ReceiveOnCaller(int id, string logText, out int generation)
+    private protected void ReceiveOnCaller(int id, string logText, out int generation)
     {
-        if (!Receives(id, out generation))
-        {
-            return false;
-        }
+        Receives(id, out generation);
         CountReceived(logText);
         Interlocked.Increment(ref _waitingOnCaller);
-        return true;
     }
 
     /// <summary>
