@@ -159,7 +159,7 @@ internal sealed partial class KrlTwinController
                 Pose via = PoseOf(ToStruct(auxiliary, current, KrlTypes.E6Pos, axesOnly: false)!);
                 Pose frame = FrameOf("$BASE");
                 arc = TwinArc.Through(frame * from, (frame * via).Position, frame * to, TwinArcOrientation.Even) ?? throw new KrlRuntimeException(string.Create(CultureInfo.InvariantCulture,
-                    $"Circle not possible: CIRC: the start, auxiliary and end points do not define a circle (two are closer than {TwinArc.MinPointDistanceMm} mm, or all three are on one line)"));
+                    $"Circle not possible: CIRC: the start, auxiliary and end points do not define a circle {TwinArc.NotACircle}"));
                 pathMm = arc.LengthMm;
             }
         }

@@ -173,7 +173,7 @@ internal static partial class RapidBuiltins
 
     /// <summary>A MoveC whose start, CirPoint and ToPoint do not define a circle (two closer than 0.1 mm, or all on one line).</summary>
     private static RapidRuntimeException CircleError(RapidCall call) => ArgumentError(call, FormattableString.Invariant(
-        $"MoveC: the start point, CirPoint and ToPoint do not define a circle (two are closer than {TwinArc.MinPointDistanceMm} mm, or all three are on one line)"));
+        $"MoveC: the start point, CirPoint and ToPoint do not define a circle {TwinArc.NotACircle}"));
 
     private static RapidRuntimeException MotionError(RapidCall call, string detail) =>
         new(RapidErrorNumbers.RobLimit, call.Line, $"Position outside reach: {detail}") { Event = 50050 };

@@ -10,6 +10,9 @@ internal sealed class TwinArc
     /// <summary>Points of an arc closer than this (mm) do not define a circle: the twin refuses them.</summary>
     public const double MinPointDistanceMm = 0.1;
 
+    /// <summary>Why three points make no arc, as each language's refusal ends: "(two are closer than 0.1 mm, or all three are on one line)".</summary>
+    public static readonly string NotACircle = FormattableString.Invariant($"(two are closer than {MinPointDistanceMm} mm, or all three are on one line)");
+
     private readonly Vector _x, _y, _normal; // the circle's plane: x towards the start, y a quarter turn on, the normal they turn about
     private readonly double _sweep; // radians, in (0, 2π)
     private readonly TwinArcOrientation _orientation;

@@ -151,7 +151,7 @@ internal static partial class UrBuiltins
         Pose start = arm.Tcp;
         TwinArc arc = TwinArc.Through(start, via.Position, to, mode == 1 ? TwinArcOrientation.FixedToPath : TwinArcOrientation.Even)
             ?? throw new UrRuntimeException(line, FormattableString.Invariant(
-                $"movec: the start, via and end points do not define a circle (two are closer than {TwinArc.MinPointDistanceMm} mm, or all three are on one line)"));
+                $"movec: the start, via and end points do not define a circle {TwinArc.NotACircle}"));
         Joints first = arm.Joints;
         Joints last = FollowLine(m, line, "movec", start, arc.End, arc.At);
         Joints Along(double f) => f >= 1 ? last : Near(arm, arc.At(f), UrMotion.Lerp(first, last, f));
