@@ -155,7 +155,11 @@ public sealed partial class Robot : IOnlineHost
     /// <summary>Applies and records one action; the caller holds the lock. Returns the log report and the event to raise.</summary>
     private (string? Report, ActionIssuedArgs? Issued) IssueLocked(RobotAction action)
     {
-        ThrowIfDisposed($"issue {action.ToInstruction().TrimEnd(';')}");
+        if (_disposed)
+        {
+            // The action's text is made only for the message: an issue that goes through never writes it.
+            ThrowIfDisposed($"issue {action.ToInstruction().TrimEnd(';')}");
+        }
         // The id is claimed atomically before applying, so that an object issued by two robots at once is never shared.
         if (!action.TryClaimId(_nextId))
         {
