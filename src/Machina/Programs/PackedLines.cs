@@ -48,6 +48,18 @@ internal sealed class PackedLines : IReadOnlyList<string>
             _used += length;
             return (List.Count - 1, start);
         }
+
+        /// <summary>Takes over <paramref name="other"/>'s blocks after this chain's (no copy); returns the index its first block gets here.</summary>
+        internal int Adopt(Blocks<T> other)
+        {
+            int offset = List.Count;
+            if (other.List.Count > 0)
+            {
+                List.AddRange(other.List);
+                _used = other._used;
+            }
+            return offset;
+        }
     }
 
     /// <summary>Number of lines.</summary>
@@ -100,6 +112,23 @@ internal sealed class PackedLines : IReadOnlyList<string>
         }
         CharacterCount += line.Length;
         _longest = Math.Max(_longest, line.Length);
+    }
+
+    /// <summary>
+    /// Appends every line of <paramref name="other"/> by taking over its blocks: no text is copied and no string made.
+    /// <paramref name="other"/> must not be used afterwards.
+    /// </summary>
+    internal void AppendAdopting(PackedLines other)
+    {
+        int asciiOffset = _ascii.Adopt(other._ascii);
+        int otherOffset = _other.Adopt(other._other);
+        _lines.EnsureCapacity(_lines.Count + other._lines.Count);
+        foreach (Line line in other._lines)
+        {
+            _lines.Add(line.IsAscii ? line with { Block = line.Block + asciiOffset } : line with { Block = ~(~line.Block + otherOffset) });
+        }
+        CharacterCount += other.CharacterCount;
+        _longest = Math.Max(_longest, other._longest);
     }
 
     /// <summary>Writes every line followed by <paramref name="newLine"/>, without creating strings.</summary>

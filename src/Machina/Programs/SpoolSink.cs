@@ -23,9 +23,16 @@ internal sealed class MemorySpool : SpoolSink
 
     internal override void MoveTo(LineSink target)
     {
-        foreach (string line in _lines)
+        if (target is ListLineSink list)
         {
-            target.Add(line);
+            list.Lines.AppendAdopting(_lines); // the blocks change hands: no line is copied or made a string
+        }
+        else
+        {
+            foreach (string line in _lines)
+            {
+                target.Add(line);
+            }
         }
         _lines = new();
     }

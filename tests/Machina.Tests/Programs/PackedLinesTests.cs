@@ -135,4 +135,47 @@ public class PackedLinesTests
         Assert.Equal([text.ToString()], list.Lines);
         Assert.Equal([text.ToString()], moved.Lines);
     }
+
+    [Fact]
+    public void AppendAdopting_AfterLinesOfBothKinds_ReadsBackAllLinesAndTakesMoreAfter()
+    {
+        // Both sides span several blocks of ASCII and of other characters, so the block indices of the adopted lines move.
+        List<string> first = SampleLines();
+        first.Add("unicodé ✓ first");
+        List<string> spooled = SampleLines().Select((l, i) => i % 50 == 0 ? "日本 " + l : l).ToList();
+        var target = new PackedLines();
+        var spool = new PackedLines();
+        first.ForEach(l => target.Add(l));
+        spooled.ForEach(l => spool.Add(l));
+
+        target.AppendAdopting(spool);
+        target.Add("after ASCII");
+        target.Add("after ✓");
+
+        List<string> expected = [.. first, .. spooled, "after ASCII", "after ✓"];
+        Assert.Equal(expected, target);
+        Assert.Equal(expected.Sum(l => (long)l.Length), target.CharacterCount);
+        var copied = new char[target.CharacterCount + expected.Count];
+        target.CopyTo(copied, "\n");
+        Assert.Equal(string.Concat(expected.Select(l => l + "\n")), new string(copied));
+    }
+
+    [Fact]
+    public void MemorySpool_MoveToListAfterHeader_KeepsHeaderThenSpooledLines()
+    {
+        var file = new ListLineSink();
+        file.Add("MODULE Header");
+        using var spool = new MemorySpool();
+        spool.Add("  MoveL [[1,2,3]], v100, z5, tool0;");
+        spool.Add("  ! ✓ not ASCII");
+
+        spool.MoveTo(file);
+        spool.Add("  ! the spool is empty again");
+        var second = new ListLineSink();
+        spool.MoveTo(second);
+        file.Add("ENDMODULE");
+
+        Assert.Equal(["MODULE Header", "  MoveL [[1,2,3]], v100, z5, tool0;", "  ! ✓ not ASCII", "ENDMODULE"], file.Lines);
+        Assert.Equal(["  ! the spool is empty again"], second.Lines);
+    }
 }
