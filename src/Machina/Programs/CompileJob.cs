@@ -168,6 +168,10 @@ internal sealed class CompileJob
     /// An action the cursor refuses (impossible for actions issued through a robot) is reported as a warning and skipped; the
     /// first replay also reports the kinematic issues and the cursor's own warnings.
     /// </summary>
+    // AggressiveOptimization here and on the other per-action methods of a compile (cursor, RAPID writer, numbers, packed
+    // lines): a script compiles once per process, and its loop ran mostly as unoptimised first-tier code before the
+    // runtime got round to optimising it (docs/performance.md, "The script path in a fresh process").
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void Replay(Action<RobotAction, RobotCursor> emit)
     {
         RobotCursor cursor = NewCursor();

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Collections;
 using System.Text;
 
@@ -72,6 +73,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
     public string this[int index] => Text(_lines[index]);
 
     /// <summary>Appends the text of a builder as a line, without making a string of it.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void Add(StringBuilder line)
     {
         int length = line.Length;

@@ -1,9 +1,11 @@
+using System.Runtime.CompilerServices;
 namespace Machina;
 
 internal sealed partial class RobotCursor
 {
     /// <summary>Applies an action, or explains why it cannot be applied; on refusal nothing changes.</summary>
     /// <returns>Null on success, else the reason for refusing, in plain words.</returns>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal string? TryApply(RobotAction action)
     {
         _applying = action;

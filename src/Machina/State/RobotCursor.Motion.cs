@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 namespace Machina;
 
 internal sealed partial class RobotCursor
@@ -5,6 +6,7 @@ internal sealed partial class RobotCursor
     private const string PoseUnknown =
         "the current position of the tool is not known yet; start with MoveTo, TransformTo or AxesTo before relative motions";
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private string? ApplyTranslation(ActionTranslation a)
     {
         if (a.Relative)
@@ -162,6 +164,7 @@ internal sealed partial class RobotCursor
     private double? LineLength(Vector target) => Position is Vector p ? Vector.Distance(p, target) : null;
 
     /// <summary>Makes a Cartesian motion the current pose, or refuses it (changing nothing) when a number would overflow.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private string? CommitCartesian(Vector position, Rotation rotation, double? pathLength)
     {
         if (!WithinReach(position))

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -13,6 +14,7 @@ internal static class NumAppend
     private static readonly long[] Pow10L = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000, 1_000_000_000];
 
     /// <summary>Appends <paramref name="value"/> rounded to <paramref name="decimals"/> (0–9) decimals, trailing zeros removed.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static StringBuilder AppendFixed(this StringBuilder sb, double value, int decimals)
     {
         Span<char> buffer = stackalloc char[MaxChars];
@@ -32,6 +34,7 @@ internal static class NumAppend
     /// (at least <see cref="MaxChars"/> long) in plain decimal notation and returns the number of characters, or −1 when the
     /// rounded value has more than 15 significant digits, or is not finite, and the caller must format it another way.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int TryWriteScaled(Span<char> destination, double value, int decimals)
     {
         // Math.Round(value, decimals) scales, rounds to even and scales back; doing the first two steps here gives the
@@ -49,6 +52,7 @@ internal static class NumAppend
     /// decimal notation, trailing zeros of the fraction removed, '-' first when <paramref name="negative"/> and the number is not
     /// 0; returns the number of characters. Digits are written by hand: the general integer formatter took about 5 % of a RAPID compile.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int WriteDecimal(Span<char> destination, bool negative, long mantissa, int decimals)
     {
         int at = 0;
@@ -100,6 +104,7 @@ internal static class NumAppend
     /// Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.
     /// The digits are counted by comparison and written two at a time, from the last.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static int WriteDigits(Span<char> destination, long value, int minDigits)
     {
         ulong rest = (ulong)value;
@@ -166,6 +171,7 @@ internal static class NumAppend
     /// Writes exactly the text of <see cref="Num.F(double, int)"/> (which switches to E notation below 0.0001) into
     /// <paramref name="destination"/> (at least <see cref="MaxChars"/> long) and returns the number of characters.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int WriteF(Span<char> destination, double value, int decimals)
     {
         if ((uint)decimals < (uint)Pow10.Length)

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -17,6 +18,7 @@ internal sealed class RapidTargetText
     private AbbConfiguration? _conf;
 
     /// <summary>Appends the robtarget <c>[[x, y, z], [q1, q2, q3, q4], conf, external axes]</c>; the same text as <see cref="RapidText.RobTarget"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal StringBuilder Append(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? axes, double? armAngle, AbbConfiguration? conf)
     {
         if (!_known || rotation != _rotation || axes != _axes || armAngle != _armAngle || conf != _conf)

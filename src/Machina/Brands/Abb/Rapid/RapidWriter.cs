@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -70,6 +71,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     /// <summary>Final pass: the instruction lines of every action, in order (refused actions are reported as warnings).</summary>
     internal void WriteInstructions() => job.Replay(Write);
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void Write(RobotAction action, RobotCursor cursor)
     {
         if (plan.IsLive)
@@ -175,6 +177,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     }
 
     /// <summary>The target inline or by name; <paramref name="end"/>: the motion's end point, whose confdata is known with a model.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void RobTargetOrName(Vector position, Rotation rotation, RobotCursor cursor, bool end)
     {
         if (_inline)
@@ -196,6 +199,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     }
 
     /// <summary>Adds the action's comment (with human comments) to the line in the builder and writes it.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void EndLine(RobotAction action)
     {
         if (_human)
