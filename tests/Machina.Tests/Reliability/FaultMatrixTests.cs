@@ -1,5 +1,7 @@
+using System.Collections.Concurrent;
 using Machina.Simulation;
 using Machina.Tests.Support;
+using Xunit.Abstractions;
 using static Machina.Tests.Online.OnlineTestSupport;
 
 namespace Machina.Tests.Reliability;
@@ -10,7 +12,7 @@ namespace Machina.Tests.Reliability;
 /// log) and on the host (<c>ActionExecuted</c>), the robot where the program leaves it, and the fault reported with a
 /// clear exception. docs/reliability.md, "Fault matrix and soak", has the table.
 /// </summary>
-public class FaultMatrixTests
+public class FaultMatrixTests(ITestOutputHelper output)
 {
     private const int Actions = 40;
     private const int FaultAfter = 10;
@@ -159,19 +161,47 @@ public class FaultMatrixTests
 
     /// <summary>
     /// After a dropped connection the user cancels what was never sent (<c>ClearPendingActions</c>) and connects again: the
-    /// actions already released run once each (on the controller or after the resume), the cancelled ones never.
+    /// actions already released run once each (on the controller or after the resume), the cancelled ones never, and the next
+    /// move starts from the last released one. <paramref name="issuedBeforeDrop"/> actions are issued while connected, the rest
+    /// of the 40 after the drop: with 3, every released action ran before the drop, so nothing waits and only the explicit
+    /// Connect brings the link back (the test once relied on a resume to reconnect, and failed when the drop came while the
+    /// program was still being issued: docs/reliability.md).
     /// </summary>
     [Theory]
-    [InlineData("ABB")]
-    [InlineData("UR")]
-    [InlineData("KUKA")]
-    public async Task Drop_ThenClearPendingActions_ReleasedRunOnceCancelledNever(string brand)
+    [InlineData("ABB", Actions)]
+    [InlineData("UR", Actions)]
+    [InlineData("KUKA", Actions)]
+    [InlineData("ABB", 3)]
+    [InlineData("UR", 3)]
+    [InlineData("KUKA", 3)]
+    public async Task Drop_ThenClearPendingActions_ReleasedRunOnceCancelledNever(string brand, int issuedBeforeDrop)
     {
         await using var rig = await FaultRig.StartAsync(brand, new VirtualFaults { After = 3, Kinds = [VirtualFault.Drop], Seed = 14103 });
         var w = rig.CreateRobot();
+        // The host's log and the controller's pendant go to the test's output when it fails.
+        var hostLog = new ConcurrentQueue<string>();
+        using var sink = w.Bot.Logger.AddSink(e => hostLog.Enqueue(e.ToString()), LogLevel.DEBUG);
+        try
+        {
+            await DropThenClearAsync(rig, w, issuedBeforeDrop);
+        }
+        catch
+        {
+            output.WriteLine("Host log:\n  " + string.Join("\n  ", hostLog));
+            output.WriteLine("Controller pendant:\n  " + string.Join("\n  ", rig.PendantMessages));
+            throw;
+        }
+    }
+
+    private static async Task DropThenClearAsync(FaultRig rig, FaultRig.Watched w, int issuedBeforeDrop)
+    {
         await w.Bot.ConnectAsync("127.0.0.1", rig.Port).WaitAsync(Limit);
-        IssueProgram(w.Bot);
+        IssueProgram(w.Bot, issuedBeforeDrop);
         await EventuallyAsync(() => !w.Faults.IsEmpty, "the connection to drop");
+        for (int i = issuedBeforeDrop; i < Actions; i++)
+        {
+            w.Bot.Move(0, 0, 5);
+        }
         await Assert.ThrowsAnyAsync<MachinaException>(() => w.Bot.WaitForCompletionAsync().WaitAsync(Limit));
 
         int released = w.Bot.GetReleasedState().LastAction!.Id;
@@ -182,7 +212,10 @@ public class FaultMatrixTests
         {
             Assert.Equal(Enumerable.Range(released - pending.Count + 1, pending.Count), pending); // the sent ones, none cancelled
         }
-        await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 2);
+        Assert.Equal(ConnectionState.Disconnected, w.Bot.ConnectionState);
+        await rig.RecoverAsync(w); // Connect again
+        Assert.Equal(ConnectionState.Connected, w.Bot.ConnectionState);
+        await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 0);
 
         Assert.Equal(Enumerable.Range(1, released), w.Executed);
         Assert.Equal(Enumerable.Range(1, released), rig.ExecutedIds);
