@@ -17,7 +17,6 @@ public class FaultMatrixTests(ITestOutputHelper output)
     private const int Actions = 40;
     private const int FaultAfter = 10;
     private static readonly Vector Start = new(300, 100, 400);
-    private static readonly Vector End = Start + new Vector(0, 0, 5 * (Actions - 1));
 
     /// <summary>Connection drops, lost messages: "closed" (FIN) or "failed" (reset), whichever the socket reports first.</summary>
     private const string LinkBroken = "closed the connection|connection to the (controller|UR driver program) failed";
@@ -217,10 +216,7 @@ public class FaultMatrixTests(ITestOutputHelper output)
         Assert.Equal(ConnectionState.Connected, w.Bot.ConnectionState);
         await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 0);
 
-        Assert.Equal(Enumerable.Range(1, released), w.Executed);
-        Assert.Equal(Enumerable.Range(1, released), rig.ExecutedIds);
-        Vector end = Start + new Vector(0, 0, 5 * (released - 1));
-        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"{rig.Brand} ended at {rig.Position}, expected {end}");
+        Vector end = AssertRanOnce(rig, w, released);
         Assert.Empty(w.Bot.GetPendingActions());
         w.Bot.Move(0, 0, 5); // the issue cursor went back to the released one: the next move starts there
         await w.Bot.WaitForCompletionAsync().WaitAsync(Limit);
@@ -272,11 +268,7 @@ public class FaultMatrixTests(ITestOutputHelper output)
         await done.WaitAsync(Limit);
         await w.Bot.FlushEventsAsync().WaitAsync(Limit);
 
-        Assert.Equal(Enumerable.Range(1, 12), w.Executed);
-        Assert.Equal(Enumerable.Range(1, 12), rig.ExecutedIds);
-        Vector end = Start + new Vector(0, 0, 5 * 11);
-        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"UR ended at {rig.Position}, expected {end}");
-        Assert.Empty(rig.Errors);
+        AssertRanOnce(rig, w, 12);
         await w.Bot.DisconnectAsync();
     }
 
@@ -292,11 +284,22 @@ public class FaultMatrixTests(ITestOutputHelper output)
 
     private static void AssertExactlyOnce(FaultRig rig, FaultRig.Watched w)
     {
-        Assert.Equal(Enumerable.Range(1, Actions), w.Executed);
-        Assert.Equal(Enumerable.Range(1, Actions), rig.ExecutedIds);
-        Assert.True(rig.Position.IsSimilar(End, 1e-6), $"{rig.Brand} ended at {rig.Position}, expected {End}");
-        Assert.Empty(rig.Errors);
+        AssertRanOnce(rig, w, Actions);
         Assert.Empty(w.Bot.GetPendingActions());
+    }
+
+    /// <summary>
+    /// Asserts that the first <paramref name="count"/> actions of <see cref="IssueProgram"/> ran once each, in order, on the
+    /// controller and on the host, that the robot is at the last one's target and that nothing was refused; returns that target.
+    /// </summary>
+    internal static Vector AssertRanOnce(FaultRig rig, FaultRig.Watched w, int count)
+    {
+        Assert.Equal(Enumerable.Range(1, count), w.Executed);
+        Assert.Equal(Enumerable.Range(1, count), rig.ExecutedIds);
+        Vector end = Start + new Vector(0, 0, 5 * (count - 1));
+        Assert.True(rig.Position.IsSimilar(end, 1e-6), $"{rig.Brand} ended at {rig.Position}, expected {end}");
+        Assert.Empty(rig.Errors);
+        return end;
     }
 
     /// <summary>What the user is told about each fault: the exception type and a pattern of its message (no type: nothing to tell).</summary>
