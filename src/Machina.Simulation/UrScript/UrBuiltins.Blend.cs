@@ -42,7 +42,7 @@ internal static partial class UrBuiltins
 
     /// <summary>True when this motion may end in a blend: always in a program without sockets, else only when asked and the next instruction is there.</summary>
     private static bool MayBlend(UrMachine m) =>
-        m.Controller.Sockets.Count == 0 || (m.Controller.Options.BlendWhileStreaming && m.Controller.Sockets.Values.Any(s => s.HasData));
+        m.Sockets.Count == 0 || (m.Controller.Options.BlendWhileStreaming && m.Sockets.Values.Any(s => s.HasData));
 
     private static object MoveLinear(UrMachine m, int line, object[] a, string function)
     {

@@ -12,7 +12,7 @@ internal static partial class UrBuiltins
         Add(t, "socket_close", (m, line, a) =>
         {
             string name = Str(a, 0, line, "socket_close", "socket_name");
-            if (m.Controller.Sockets.Remove(name, out UrSocket? socket))
+            if (m.Sockets.Remove(name, out UrSocket? socket))
             {
                 socket.Dispose();
             }
@@ -79,7 +79,7 @@ internal static partial class UrBuiltins
         {
             throw new UrRuntimeException(line, $"socket_open: port {port} is not 1 to 65535");
         }
-        if (m.Controller.Sockets.Remove(name, out UrSocket? old))
+        if (m.Sockets.Remove(name, out UrSocket? old))
         {
             old.Dispose();
         }
@@ -95,7 +95,7 @@ internal static partial class UrBuiltins
         {
             return UrValue.Box(false);
         }
-        m.Controller.Sockets[name] = socket;
+        m.Sockets[name] = socket;
         if (m.Controller.Options.Seam is { } seam)
         {
             socket.Seam = seam;
@@ -112,7 +112,7 @@ internal static partial class UrBuiltins
     private static UrSocket Socket(UrMachine m, int line, object[] a, int index, string function)
     {
         string name = Str(a, index, line, function, "socket_name");
-        return m.Controller.Sockets.TryGetValue(name, out UrSocket? socket)
+        return m.Sockets.TryGetValue(name, out UrSocket? socket)
             ? socket
             : throw new UrRuntimeException(line, $"{function}: socket '{name}' is not open");
     }

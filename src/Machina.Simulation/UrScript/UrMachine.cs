@@ -45,8 +45,14 @@ internal sealed class UrMachine : IDisposable
     /// <summary>The program.</summary>
     public UrBoundProgram Program { get; }
 
-    /// <summary>The controller the program runs on (arm, IO, sockets, pendant).</summary>
+    /// <summary>The controller the program runs on (arm, IO, pendant).</summary>
     public UrTwinController Controller { get; }
+
+    /// <summary>
+    /// The sockets this program opened, by name. They are the program's own, as on a UR: they close when it ends, and a program
+    /// that replaced it has its own (an old program still winding down never closes or reads the new one's connection).
+    /// </summary>
+    public Dictionary<string, UrSocket> Sockets { get; } = new(StringComparer.Ordinal);
 
     /// <summary>The global variable slots.</summary>
     public object?[] Globals { get; }

@@ -74,8 +74,14 @@ internal sealed partial class UrTwinController : IDisposable
     /// <summary>The source of <c>random()</c> (seeded from the options, so a run can be repeated).</summary>
     internal Random Random { get; }
 
-    /// <summary>The sockets the running program opened, by name.</summary>
-    internal Dictionary<string, UrSocket> Sockets { get; } = new(StringComparer.Ordinal);
+    /// <summary>
+    /// How long a new program waits for the one it replaces (or a stop) to end. A program that takes longer (a loaded machine)
+    /// winds down beside the new one, touching only what is its own: its sockets, never the new program's state.
+    /// </summary>
+    internal TimeSpan StopTimeout { get; set; } = TimeSpan.FromSeconds(10);
+
+    /// <summary>A test's hook: called on a program's thread as it ends, before its sockets close, with the program's number (1 for the first).</summary>
+    internal Action<int>? Ending { get; set; }
 
     /// <summary>Where the program is.</summary>
     public UrProgramState State
@@ -185,18 +191,19 @@ internal sealed partial class UrTwinController : IDisposable
         }
         StopProgram();
         var stop = new CancellationTokenSource();
-        var thread = new Thread(() => RunBound(program, stop.Token)) { IsBackground = true, Name = "URScript program" };
         string header = text.TrimStart();
         int paren = header.IndexOf('(', StringComparison.Ordinal);
         bool named = header.StartsWith("def ", StringComparison.Ordinal) || header.StartsWith("sec ", StringComparison.Ordinal);
+        Thread thread;
         lock (_gate)
         {
+            int number = ++_programs;
+            thread = new Thread(() => RunBound(program, number, stop.Token)) { IsBackground = true, Name = "URScript program" };
             _programName = named && paren > 4 ? header[4..paren].Trim() : null;
             _programStop = stop;
             _programThread = thread;
             _state = UrProgramState.Running;
             _error = null;
-            _programs++;
         }
         thread.Start();
         StateChanged?.Invoke();
@@ -217,13 +224,14 @@ internal sealed partial class UrTwinController : IDisposable
             return UrProgramState.Failed;
         }
         StopProgram();
+        int number;
         lock (_gate)
         {
             _state = UrProgramState.Running;
             _error = null;
-            _programs++;
+            number = ++_programs;
         }
-        RunBound(program, cancellation);
+        RunBound(program, number, cancellation);
         return State;
     }
 
@@ -255,14 +263,16 @@ internal sealed partial class UrTwinController : IDisposable
             return;
         }
         stop.Cancel();
-        if (thread != Thread.CurrentThread)
+        if (thread == Thread.CurrentThread || thread is null || thread.Join(StopTimeout))
         {
-            thread?.Join(TimeSpan.FromSeconds(10));
+            stop.Dispose(); // a program still winding down may still wait on its token
         }
-        stop.Dispose();
     }
 
-    private void RunBound(UrBoundProgram program, CancellationToken cancellation)
+    /// <summary>True while program <paramref name="number"/> is the last one started (call under the gate).</summary>
+    private bool IsCurrent(int number) => _programs == number;
+
+    private void RunBound(UrBoundProgram program, int number, CancellationToken cancellation)
     {
         UrProgramState end = UrProgramState.Failed;
         string? error = null;
@@ -282,7 +292,15 @@ internal sealed partial class UrTwinController : IDisposable
             {
                 end = UrProgramState.Failed;
                 error = e.Message;
-                RuntimeError?.Invoke(e.Line, e.Reason);
+                bool current;
+                lock (_gate)
+                {
+                    current = IsCurrent(number);
+                }
+                if (current)
+                {
+                    RuntimeError?.Invoke(e.Line, e.Reason);
+                }
             }
             catch (OperationCanceledException)
             {
@@ -290,26 +308,33 @@ internal sealed partial class UrTwinController : IDisposable
             }
             finally
             {
-                PendingBlend = null;
+                Ending?.Invoke(number);
                 // The program has stopped before its sockets close, as on a UR: whoever sees a socket close and asks
-                // the controller finds the program already stopped.
+                // the controller finds the program already stopped. A program replaced while it wound down (it outlived
+                // StopTimeout) changes nothing of its successor's: it closes only its own sockets.
+                bool current;
                 lock (_gate)
                 {
-                    if (_state == UrProgramState.Running)
+                    current = IsCurrent(number);
+                    if (current && _state == UrProgramState.Running)
                     {
                         _state = end;
                         _error = error;
                     }
                 }
-                if (error is not null)
+                if (current)
+                {
+                    PendingBlend = null;
+                }
+                if (error is not null && current)
                 {
                     Pendant.Log(error);
                 }
-                foreach (UrSocket socket in Sockets.Values)
+                foreach (UrSocket socket in machine.Sockets.Values)
                 {
                     socket.Dispose();
                 }
-                Sockets.Clear();
+                machine.Sockets.Clear();
             }
         }
         StateChanged?.Invoke();
