@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 namespace Machina;
 
 /// <summary>
@@ -153,6 +154,7 @@ public sealed partial class Robot : IOnlineHost
     }
 
     /// <summary>Applies and records one action; the caller holds the lock. Returns the log report and the event to raise.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private (string? Report, ActionIssuedArgs? Issued) IssueLocked(RobotAction action)
     {
         if (_disposed)

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 namespace Machina;
 
 /// <summary>
@@ -145,6 +146,7 @@ public readonly record struct Vector(double X, double Y, double Z)
     internal const int MaxTextChars = 3 * NumAppend.MaxChars + 8;
 
     /// <summary>Writes <c>[x{separator}y{separator}z]</c> (3 decimals) into <paramref name="destination"/> and returns its length.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal int WriteText(Span<char> destination, ReadOnlySpan<char> separator)
     {
         int at = 0;

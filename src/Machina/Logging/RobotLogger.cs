@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Collections.Immutable;
 
 namespace Machina;
@@ -144,6 +145,7 @@ public sealed class RobotLogger
         }
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private bool AnySinkWants(LogLevel level)
     {
         foreach (Sink sink in _sinks)

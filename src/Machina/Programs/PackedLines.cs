@@ -37,6 +37,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
         private int _used;
 
         /// <summary>Room for <paramref name="length"/> elements: the block index and the start within it.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveOptimization)]
         internal (int Block, int Start) Reserve(int length)
         {
             if (List.Count == 0 || length > List[^1].Length - _used)
@@ -98,6 +99,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
     }
 
     /// <summary>Appends a line.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void Add(ReadOnlySpan<char> line)
     {
         if (Ascii.IsValid(line))

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Buffers;
 
 namespace Machina;
@@ -48,6 +49,7 @@ internal static class ProgramText
     /// <see cref="CommentText"/>, or as <see cref="OneLine"/> with <paramref name="oneLine"/>. A move's description (digits and
     /// fixed words only) is written straight into the line, without a string in between.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static System.Text.StringBuilder AppendDescription(this System.Text.StringBuilder sb, RobotAction action, bool oneLine = false)
     {
         if (action is ActionTranslation translation)

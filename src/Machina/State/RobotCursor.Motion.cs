@@ -155,6 +155,7 @@ internal sealed partial class RobotCursor
     private const string JointLimitText = "joint values are refused beyond 1,000,000 degrees (about 2,778 turns), which no robot reaches.";
 
     /// <summary>True when every coordinate is within <see cref="MaxCoordinate"/> (false for NaN and infinities).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static bool WithinReach(Vector v) => Within(v.X) && Within(v.Y) && Within(v.Z);
 
     private static bool WithinReach(Joints j) => Within(j.J1) && Within(j.J2) && Within(j.J3) && Within(j.J4) && Within(j.J5) && Within(j.J6);

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 namespace Machina;
 
 /// <summary>
@@ -116,6 +117,7 @@ internal sealed class RapidPlan
         names.Claim(RapidNames.LooksLikeTarget(tool.Name) ? "tool_" + tool.Name : tool.Name, "tool_");
 
     /// <summary>Records what <paramref name="action"/> adds to the declarations, with the cursor state after it.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void Observe(RobotAction action, RobotCursor cursor)
     {
         switch (action)
@@ -225,6 +227,7 @@ internal sealed class RapidPlan
     }
 
     /// <summary>The speeddata name for the cursor's speed.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal string SpeedName(double speed)
     {
         double key = SpeedKey(speed);

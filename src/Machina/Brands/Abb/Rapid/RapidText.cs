@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -22,6 +23,7 @@ internal static class RapidText
     internal static StringBuilder Num(this StringBuilder sb, double value, int decimals) => sb.AppendFixed(value, decimals);
 
     /// <summary>Appends <c>[x, y, z]</c> in mm with 3 decimals.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static StringBuilder Position(this StringBuilder sb, Vector p) =>
         sb.Append('[').Num(p.X, Mm).Append(", ").Num(p.Y, Mm).Append(", ").Num(p.Z, Mm).Append(']');
 
@@ -61,6 +63,7 @@ internal static class RapidText
           .ExternalAxes(axes, armAngle).Append(']');
 
     /// <summary>The confdata of the cursor's joints when an ABB model is set and the joints are known, else null.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static AbbConfiguration? Conf(RobotModel? model, RobotCursor cursor) =>
         model is { Brand: "ABB" } && cursor.Axes is Joints j ? AbbConfiguration.From(model, j) : null;
 

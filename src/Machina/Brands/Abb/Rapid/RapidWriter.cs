@@ -191,6 +191,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     }
 
     /// <summary>Ends the move instruction begun in the builder (speed, zone, tool, work object), adds its comment and writes the line.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void MoveCode(RobotAction action, RobotCursor cursor)
     {
         _sb.Append(", ").Append(plan.SpeedName(cursor.Speed)).Append(", ").Append(plan.ZoneName(cursor.Precision))
