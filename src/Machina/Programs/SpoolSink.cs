@@ -21,6 +21,8 @@ internal sealed class MemorySpool : SpoolSink
 
     internal override void Add(StringBuilder line) => _lines.Add(line);
 
+    internal override void Add(ReadOnlySpan<char> line) => _lines.Add(line);
+
     internal override void MoveTo(LineSink target)
     {
         foreach (string line in _lines)
@@ -62,6 +64,13 @@ internal sealed class FileSpool : SpoolSink
     }
 
     internal override void Add(StringBuilder line)
+    {
+        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
+        writer.Write(line);
+        writer.Write(_newLine);
+    }
+
+    internal override void Add(ReadOnlySpan<char> line)
     {
         StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
         writer.Write(line);
