@@ -96,22 +96,24 @@ internal static class NumAppend
         "4041424344454647484950515253545556575859606162636465666768697071727374757677787980" +
         "81828384858687888990919293949596979899";
 
+    /// <summary>10^0 to 10^19: every power of ten an unsigned 64-bit number holds.</summary>
+    private static readonly ulong[] Powers =
+    [
+        1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000, 1_000_000_000, 10_000_000_000, 100_000_000_000,
+        1_000_000_000_000, 10_000_000_000_000, 100_000_000_000_000, 1_000_000_000_000_000, 10_000_000_000_000_000,
+        100_000_000_000_000_000, 1_000_000_000_000_000_000, 10_000_000_000_000_000_000,
+    ];
+
     /// <summary>
     /// Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.
-    /// The digits are counted by comparison and written two at a time, from the last.
+    /// The digits are counted from the highest bit (1233 / 4096 is just above log10 2, so the estimate is the count or one
+    /// more, which one comparison decides) and written two at a time, from the last.
     /// </summary>
     private static int WriteDigits(Span<char> destination, long value, int minDigits)
     {
         ulong rest = (ulong)value;
-        int count = 1;
-        for (ulong power = 10; count < 19 && rest >= power; power *= 10)
-        {
-            count++;
-        }
-        if (rest >= 10_000_000_000_000_000_000UL)
-        {
-            count = 20;
-        }
+        int estimate = (System.Numerics.BitOperations.Log2(rest | 1) + 1) * 1233 >> 12;
+        int count = estimate + ((rest | 1) >= Powers[estimate] ? 1 : 0);
         count = Math.Max(count, minDigits);
         Span<char> digits = destination[..count];
         int at = count;
@@ -147,7 +149,10 @@ internal static class NumAppend
         {
             digits[--at] = (char)('0' + (int)rest);
         }
-        digits[..at].Fill('0');
+        if (at > 0)
+        {
+            digits[..at].Fill('0');
+        }
         return count;
     }
 
@@ -171,14 +176,12 @@ internal static class NumAppend
         if ((uint)decimals < (uint)Pow10.Length)
         {
             // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
-            double scaled = Math.Abs(RoundEven(value * Pow10[decimals]));
-            if (decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4])
+            double rounded = RoundEven(value * Pow10[decimals]);
+            double scaled = Math.Abs(rounded);
+            if ((decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4]) && scaled < 1e15)
             {
-                int written = TryWriteScaled(destination, value, decimals);
-                if (written >= 0)
-                {
-                    return written;
-                }
+                // What TryWriteScaled writes, with the scaled value already at hand.
+                return WriteDecimal(destination, rounded < 0, (long)scaled, decimals);
             }
         }
         Num.Clean(Math.Round(value, decimals)).TryFormat(destination, out int general, "G15", Num.Inv);

@@ -50,6 +50,32 @@ public class NumAppendTests
     }
 
     [Fact]
+    public void WriteDecimal_EveryDigitCount_AsTheIntegerFormatter()
+    {
+        // The digit count comes from the highest bit and one comparison: the numbers on both sides of each power of ten,
+        // and of each power of two, where the estimate changes.
+        var values = new List<long> { 0, long.MaxValue };
+        long power = 1;
+        for (int k = 0; k <= 18; k++, power *= 10)
+        {
+            values.AddRange([power - 1, power, power + 1]);
+        }
+        for (int bit = 0; bit < 63; bit++)
+        {
+            values.AddRange([(1L << bit) - 1, 1L << bit]);
+        }
+        Span<char> buffer = stackalloc char[NumAppend.MaxChars];
+        foreach (long value in values)
+        {
+            var inv = System.Globalization.CultureInfo.InvariantCulture;
+            Assert.Equal(value.ToString(inv), new string(buffer[..NumAppend.WriteDecimal(buffer, false, value, 0)]));
+            string fraction = (value % 1000).ToString("000", inv).TrimEnd('0');
+            string negative = value == 0 ? "0" : "-" + (value / 1000).ToString(inv) + (fraction.Length > 0 ? "." + fraction : "");
+            Assert.Equal(negative, new string(buffer[..NumAppend.WriteDecimal(buffer, true, value, 3)]));
+        }
+    }
+
+    [Fact]
     public void RoundEven_ValuesBelow2To51_SameAsMathRound()
     {
         var random = new Random(25);
