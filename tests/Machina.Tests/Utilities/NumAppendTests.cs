@@ -50,10 +50,10 @@ public class NumAppendTests
     }
 
     [Fact]
-    public void WriteDecimal_EveryDigitCount_AsTheIntegerFormatter()
+    public void WriteDecimal_EveryDigitCountAndDecimals_AsTheIntegerFormatter()
     {
-        // The digit count comes from the highest bit and one comparison: the numbers on both sides of each power of ten,
-        // and of each power of two, where the estimate changes.
+        // The digit count comes from the highest bit and one comparison: the numbers on both sides of each power of ten and
+        // of two, and random ones, at 0 to 9 decimals.
         var values = new List<long> { 0, long.MaxValue };
         long power = 1;
         for (int k = 0; k <= 18; k++, power *= 10)
@@ -64,14 +64,26 @@ public class NumAppendTests
         {
             values.AddRange([(1L << bit) - 1, 1L << bit]);
         }
+        var random = new Random(26);
+        for (int i = 0; i < 20_000; i++)
+        {
+            values.Add(random.NextInt64(0, (long)Math.Pow(10, random.Next(1, 16))));
+        }
         Span<char> buffer = stackalloc char[NumAppend.MaxChars];
         foreach (long value in values)
         {
-            var inv = System.Globalization.CultureInfo.InvariantCulture;
-            Assert.Equal(value.ToString(inv), new string(buffer[..NumAppend.WriteDecimal(buffer, false, value, 0)]));
-            string fraction = (value % 1000).ToString("000", inv).TrimEnd('0');
-            string negative = value == 0 ? "0" : "-" + (value / 1000).ToString(inv) + (fraction.Length > 0 ? "." + fraction : "");
-            Assert.Equal(negative, new string(buffer[..NumAppend.WriteDecimal(buffer, true, value, 3)]));
+            for (int decimals = 0; decimals <= 9; decimals++)
+            {
+                Assert.Equal(Expected(value, decimals, false), new string(buffer[..NumAppend.WriteDecimal(buffer, false, value, decimals)]));
+                Assert.Equal(Expected(value, decimals, true), new string(buffer[..NumAppend.WriteDecimal(buffer, true, value, decimals)]));
+            }
+        }
+
+        static string Expected(long value, int decimals, bool negative)
+        {
+            string digits = value.ToString(System.Globalization.CultureInfo.InvariantCulture).PadLeft(decimals + 1, '0');
+            string whole = digits[..^decimals], fraction = digits[^decimals..].TrimEnd('0');
+            return (negative && value != 0 ? "-" : "") + whole + (fraction.Length > 0 ? "." + fraction : "");
         }
     }
 
