@@ -173,7 +173,7 @@ internal sealed class InstructionParser
             {
                 ReadString(ref arg);
             }
-            else
+            else if (!ReadPlainNumber(ref arg))
             {
                 ReadBare(ref arg, name);
             }
@@ -222,6 +222,27 @@ internal sealed class InstructionParser
             _pos++;
         }
         throw Error(arg.Line, arg.Column, "this text is not closed with a double quote (\"); write a quote inside text as \\\".");
+    }
+
+    /// <summary>
+    /// Reads a plain number that ends its argument (<c>-12.5</c> right before ',' or ')', the form of nearly every argument
+    /// of a toolpath) in one pass, its value as <see cref="NumParse.TryParseShort"/> reads the same characters; false, and
+    /// nothing read, for anything else (which <see cref="ReadBare"/> reads, and <see cref="InstructionArgs.D"/> parses).
+    /// </summary>
+    private bool ReadPlainNumber(ref InstructionArgs.Arg arg)
+    {
+        int read = NumParse.ReadShort(_text.AsSpan(_pos, _length - _pos), out double value);
+        int end = _pos + read;
+        if (read <= 0 || end >= _length || (_text[end] != ',' && _text[end] != ')'))
+        {
+            return false;
+        }
+        arg.Start = _pos;
+        arg.Length = read;
+        arg.Number = value;
+        arg.IsNumber = true;
+        _pos = end;
+        return true;
     }
 
     private void ReadBare(ref InstructionArgs.Arg arg, string name)
