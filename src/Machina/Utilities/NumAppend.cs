@@ -71,7 +71,9 @@ internal static class NumAppend
             digits--;
         }
         destination[at++] = '.';
-        return at + WriteDigits(destination[at..], fraction, digits);
+        // The fraction is below 10^digits: exactly that many digits, leading zeros included, so no count is needed.
+        WriteDigitsOf(destination.Slice(at, digits), (ulong)fraction);
+        return at + digits;
     }
 
     /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>
@@ -107,7 +109,7 @@ internal static class NumAppend
     /// <summary>
     /// Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.
     /// The digits are counted from the highest bit (1233 / 4096 is just above log10 2, so the estimate is the count or one
-    /// more, which one comparison decides) and written two at a time, from the last.
+    /// more, which one comparison decides).
     /// </summary>
     private static int WriteDigits(Span<char> destination, long value, int minDigits)
     {
@@ -115,8 +117,14 @@ internal static class NumAppend
         int estimate = (System.Numerics.BitOperations.Log2(rest | 1) + 1) * 1233 >> 12;
         int count = estimate + ((rest | 1) >= Powers[estimate] ? 1 : 0);
         count = Math.Max(count, minDigits);
-        Span<char> digits = destination[..count];
-        int at = count;
+        WriteDigitsOf(destination[..count], rest);
+        return count;
+    }
+
+    /// <summary>Fills <paramref name="digits"/> with <paramref name="rest"/> (which fits), leading zeros first, two digits at a time from the last.</summary>
+    private static void WriteDigitsOf(Span<char> digits, ulong rest)
+    {
+        int at = digits.Length;
         if (rest <= uint.MaxValue)
         {
             // Most numbers of a program fit 32 bits, whose divisions are cheaper.
@@ -153,7 +161,6 @@ internal static class NumAppend
         {
             digits[..at].Fill('0');
         }
-        return count;
     }
 
     /// <summary>1.5 · 2^52: any double of size below 2^51 plus this lies where doubles are the whole numbers.</summary>
