@@ -15,13 +15,22 @@ internal static class NumAppend
     /// <summary>Appends <paramref name="value"/> rounded to <paramref name="decimals"/> (0–9) decimals, trailing zeros removed.</summary>
     internal static StringBuilder AppendFixed(this StringBuilder sb, double value, int decimals)
     {
-        Span<char> buffer = stackalloc char[MaxChars];
-        int written = TryWriteScaled(buffer, value, decimals);
-        if (written < 0)
+        if (!TryScale(value, decimals, out double scaled))
         {
             return sb.Append(Num.Inv, $"{Num.Clean(Math.Round(value, decimals)):G15}");
         }
-        return sb.Append(buffer[..written]);
+        // Written straight into the builder's free space (ScaledDecimal), not into a buffer and copied.
+        return sb.Append(Num.Inv, $"{new ScaledDecimal(scaled, decimals)}");
+    }
+
+    /// <summary>
+    /// <paramref name="value"/> · 10^<paramref name="decimals"/> (0–9) rounded to a whole number, halves to even, as
+    /// <see cref="TryWriteScaled"/> writes it; false when it is 10^15 or more in size, or not finite.
+    /// </summary>
+    internal static bool TryScale(double value, int decimals, out double scaled)
+    {
+        scaled = RoundEven(value * Pow10[decimals]);
+        return Math.Abs(scaled) < 1e15;
     }
 
     /// <summary>Characters enough for any number this class or <see cref="Num.F(double, int)"/> writes.</summary>
@@ -36,8 +45,7 @@ internal static class NumAppend
     {
         // Math.Round(value, decimals) scales, rounds to even and scales back; doing the first two steps here gives the
         // same digits as an integer, which prints exactly while it has at most 15 significant digits.
-        double scaled = RoundEven(value * Pow10[decimals]);
-        if (!(Math.Abs(scaled) < 1e15))
+        if (!TryScale(value, decimals, out double scaled))
         {
             return -1;
         }

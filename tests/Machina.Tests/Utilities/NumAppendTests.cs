@@ -36,6 +36,30 @@ public class NumAppendTests
         }
     }
 
+    [Fact]
+    public void AppendFixed_OneBuilderFillingUp_SameTextAsSeparateNumbers()
+    {
+        // The digits go straight into the builder's free space when it has room for any number, and through a buffer of
+        // the builder's own when it has not (a fresh builder, a chunk nearly full): both give the number's text.
+        var random = new Random(28);
+        var builder = new StringBuilder(4);
+        var expected = new StringBuilder();
+        for (int i = 0; i < 20_000; i++)
+        {
+            int decimals = i % 10;
+            double value = Math.Round((random.NextDouble() - 0.5) * Math.Pow(10, random.Next(-2, 12)), 9);
+            string alone = new StringBuilder().AppendFixed(value, decimals).ToString();
+            string reference = Num.F(value, decimals);
+            if (!reference.Contains('E', StringComparison.Ordinal))
+            {
+                Assert.Equal(reference, alone);
+            }
+            builder.AppendFixed(value, decimals).Append(i % 7 == 0 ? "|" : "");
+            expected.Append(alone).Append(i % 7 == 0 ? "|" : "");
+        }
+        Assert.Equal(expected.ToString(), builder.ToString());
+    }
+
     [Theory]
     [InlineData(1.000000001, 9, "1.000000001")]
     [InlineData(-0.000000005, 9, "-0.000000005")]
