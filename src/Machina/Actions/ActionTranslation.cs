@@ -25,9 +25,15 @@ public sealed record ActionTranslation : RobotAction
     /// <inheritdoc/>
     public override string ToInstruction() => InstructionText.Call(Relative ? "Move" : "MoveTo", Translation.X, Translation.Y, Translation.Z);
 
-    /// <summary>Appends the text of <see cref="ToInstruction"/> (digits and fixed words only) to <paramref name="sb"/>, without a string in between.</summary>
-    internal System.Text.StringBuilder AppendInstruction(System.Text.StringBuilder sb) =>
-        sb.AppendCall(Relative ? "Move" : "MoveTo", Translation.X, Translation.Y, Translation.Z);
+    /// <summary>
+    /// Writes the text of <see cref="ToInstruction"/> (digits and fixed words only) into <paramref name="destination"/> (at least
+    /// <see cref="MaxInstructionChars"/> long) and returns its length, without a string in between.
+    /// </summary>
+    internal int WriteInstruction(Span<char> destination) =>
+        InstructionText.WriteCall(destination, Relative ? "Move" : "MoveTo", Translation.X, Translation.Y, Translation.Z);
+
+    /// <summary>Characters enough for <see cref="WriteInstruction"/>.</summary>
+    internal const int MaxInstructionChars = 9 + 3 * (NumAppend.MaxChars + 1);
 
     /// <inheritdoc/>
     public override string Describe()

@@ -14,6 +14,12 @@ internal sealed class InstructionArgs
         internal int Column;
         internal bool Quoted;
         internal string? Text;
+
+        /// <summary>True when the parser read the argument as a plain number already (<see cref="Number"/>).</summary>
+        internal bool IsNumber;
+
+        /// <summary>The value of a plain number, as <see cref="NumParse.TryParse"/> reads the argument's text.</summary>
+        internal double Number;
     }
 
     private Arg[] _args = new Arg[20];
@@ -54,6 +60,10 @@ internal sealed class InstructionArgs
     /// <summary>Argument <paramref name="i"/> as a number.</summary>
     internal double D(int i)
     {
+        if (_args[i].IsNumber)
+        {
+            return _args[i].Number;
+        }
         // Quoted numbers ("12.5") are accepted because the original stripped quotes from every argument.
         if (NumParse.TryParse(Value(i), out double v) && double.IsFinite(v))
         {

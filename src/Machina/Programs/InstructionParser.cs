@@ -13,6 +13,8 @@ internal sealed class InstructionParser
     private int _pos;
     private int _line = 1;
     private int _lineStart;
+    private string _lastName = "";
+    private InstructionCatalog.Overload[] _lastOverloads = [];
 
     internal InstructionParser(string text)
         : this((text ?? throw new ArgumentNullException(nameof(text))).ToCharArray(), text.Length, new InstructionArgs(), firstLine: 1, start: 0, isFinal: true)
@@ -72,8 +74,20 @@ internal sealed class InstructionParser
         {
             throw Error(line, column, $"expected an instruction such as MoveTo(400, 300, 500), but found '{Describe(_text[nameStart])}'.");
         }
-        // Known names are looked up in place: the catalogue's own string is used, so no name is allocated per statement.
-        if (!InstructionCatalog.TryFind(_text.AsSpan(nameStart, _pos - nameStart), out string name, out InstructionCatalog.Overload[] overloads))
+        // Known names are looked up in place: the catalogue's own string is used, so no name is allocated per statement. A
+        // toolpath repeats one instruction for long runs: the name found last is compared first, before hashing for the table.
+        ReadOnlySpan<char> found = _text.AsSpan(nameStart, _pos - nameStart);
+        string name;
+        InstructionCatalog.Overload[] overloads;
+        if (found.SequenceEqual(_lastName))
+        {
+            (name, overloads) = (_lastName, _lastOverloads);
+        }
+        else if (InstructionCatalog.TryFind(found, out name, out overloads))
+        {
+            (_lastName, _lastOverloads) = (name, overloads);
+        }
+        else
         {
             name = new string(_text, nameStart, _pos - nameStart);
             overloads = Resolve(name, line, column);
@@ -159,7 +173,7 @@ internal sealed class InstructionParser
             {
                 ReadString(ref arg);
             }
-            else
+            else if (!ReadPlainNumber(ref arg))
             {
                 ReadBare(ref arg, name);
             }
@@ -208,6 +222,27 @@ internal sealed class InstructionParser
             _pos++;
         }
         throw Error(arg.Line, arg.Column, "this text is not closed with a double quote (\"); write a quote inside text as \\\".");
+    }
+
+    /// <summary>
+    /// Reads a plain number that ends its argument (<c>-12.5</c> right before ',' or ')', the form of nearly every argument
+    /// of a toolpath) in one pass, its value as <see cref="NumParse.TryParseShort"/> reads the same characters; false, and
+    /// nothing read, for anything else (which <see cref="ReadBare"/> reads, and <see cref="InstructionArgs.D"/> parses).
+    /// </summary>
+    private bool ReadPlainNumber(ref InstructionArgs.Arg arg)
+    {
+        int read = NumParse.ReadShort(_text.AsSpan(_pos, _length - _pos), out double value);
+        int end = _pos + read;
+        if (read <= 0 || end >= _length || (_text[end] != ',' && _text[end] != ')'))
+        {
+            return false;
+        }
+        arg.Start = _pos;
+        arg.Length = read;
+        arg.Number = value;
+        arg.IsNumber = true;
+        _pos = end;
+        return true;
     }
 
     private void ReadBare(ref InstructionArgs.Arg arg, string name)

@@ -9,6 +9,9 @@ internal abstract class LineSink
     /// <summary>Adds the text of a builder as one line, without making a string of it where the sink can (hot compiler paths).</summary>
     internal virtual void Add(System.Text.StringBuilder line) => Add(line.ToString());
 
+    /// <summary>Adds characters as one line, without making a string of them where the sink can (hot compiler paths).</summary>
+    internal virtual void Add(ReadOnlySpan<char> line) => Add(new string(line));
+
     /// <summary>Adds several lines.</summary>
     internal void AddRange(IEnumerable<string> lines)
     {
@@ -27,6 +30,8 @@ internal sealed class ListLineSink : LineSink
     internal override void Add(string line) => Lines.Add(line);
 
     internal override void Add(System.Text.StringBuilder line) => Lines.Add(line);
+
+    internal override void Add(ReadOnlySpan<char> line) => Lines.Add(line);
 }
 
 /// <summary>Writes lines to a text writer as they come.</summary>
@@ -45,6 +50,12 @@ internal sealed class WriterLineSink(TextWriter writer, string newLine) : LineSi
     }
 
     internal override void Add(System.Text.StringBuilder line)
+    {
+        writer.Write(line);
+        writer.Write(newLine);
+    }
+
+    internal override void Add(ReadOnlySpan<char> line)
     {
         writer.Write(line);
         writer.Write(newLine);

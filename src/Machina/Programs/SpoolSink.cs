@@ -21,6 +21,8 @@ internal sealed class MemorySpool : SpoolSink
 
     internal override void Add(StringBuilder line) => _lines.Add(line);
 
+    internal override void Add(ReadOnlySpan<char> line) => _lines.Add(line);
+
     internal override void MoveTo(LineSink target)
     {
         if (target is ListLineSink list)
@@ -69,6 +71,13 @@ internal sealed class FileSpool : SpoolSink
     }
 
     internal override void Add(StringBuilder line)
+    {
+        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
+        writer.Write(line);
+        writer.Write(_newLine);
+    }
+
+    internal override void Add(ReadOnlySpan<char> line)
     {
         StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
         writer.Write(line);

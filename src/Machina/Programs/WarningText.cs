@@ -34,6 +34,9 @@ internal ref struct WarningText
     /// <summary>Appends a string.</summary>
     public void AppendFormatted(string? value) => _inner.AppendFormatted(value);
 
+    /// <summary>Appends characters (a piece of a line a compiler is writing).</summary>
+    public void AppendFormatted(scoped ReadOnlySpan<char> value) => _inner.AppendFormatted(value);
+
     /// <summary>The text, once.</summary>
     internal string ToStringAndClear() => _inner.ToStringAndClear();
 }

@@ -12,14 +12,12 @@ internal static class FixedPoint
     /// <remarks>The digits are those of <see cref="NumAppend.TryWriteScaled"/>, written into the builder in one piece.</remarks>
     internal static StringBuilder Append(StringBuilder sb, double value, int decimals)
     {
-        Span<char> buffer = stackalloc char[NumAppend.MaxChars];
-        int written = NumAppend.TryWriteScaled(buffer, value, decimals);
-        if (written < 0)
+        if (!NumAppend.TryScale(value, decimals, out double scaled))
         {
             // Huge or not finite: rare enough for the general formatter.
             return sb.Append(Num.Clean(Math.Round(value, decimals)).ToString("0." + new string('#', Math.Max(1, decimals)), Num.Inv));
         }
-        return sb.Append(buffer[..written]);
+        return sb.Append(Num.Inv, $"{new ScaledDecimal(scaled, decimals)}");
     }
 
     /// <summary>The text of <paramref name="value"/> rounded to <paramref name="decimals"/> decimals.</summary>

@@ -84,22 +84,26 @@ internal static class InstructionText
     }
 
     /// <summary>
-    /// Appends the text of <see cref="Call(string, ReadOnlySpan{double})"/> to <paramref name="sb"/> without making a string:
-    /// a compiler that quotes the instruction of every move in a comment writes it straight into the comment's line.
+    /// Writes the text of <see cref="Call(string, ReadOnlySpan{double})"/> into <paramref name="destination"/> (at least
+    /// <paramref name="name"/>'s length + 3 + <see cref="NumAppend.MaxChars"/> + 1 characters per value long) and returns its
+    /// length: a compiler that quotes the instruction of every move in a comment writes it straight into the comment's line.
     /// </summary>
-    internal static StringBuilder AppendCall(this StringBuilder sb, string name, params ReadOnlySpan<double> values)
+    internal static int WriteCall(Span<char> destination, string name, params ReadOnlySpan<double> values)
     {
-        sb.Append(name).Append('(');
-        Span<char> number = stackalloc char[NumAppend.MaxChars];
+        name.CopyTo(destination);
+        int at = name.Length;
+        destination[at++] = '(';
         for (int i = 0; i < values.Length; i++)
         {
             if (i > 0)
             {
-                sb.Append(',');
+                destination[at++] = ',';
             }
-            sb.Append(number[..NumShortest.WriteRoundTrip(number, values[i])]);
+            at += NumShortest.WriteRoundTrip(destination[at..], values[i]);
         }
-        return sb.Append(");");
+        destination[at++] = ')';
+        destination[at++] = ';';
+        return at;
     }
 
     /// <summary>

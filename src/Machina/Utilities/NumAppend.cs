@@ -17,13 +17,22 @@ internal static class NumAppend
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static StringBuilder AppendFixed(this StringBuilder sb, double value, int decimals)
     {
-        Span<char> buffer = stackalloc char[MaxChars];
-        int written = TryWriteScaled(buffer, value, decimals);
-        if (written < 0)
+        if (!TryScale(value, decimals, out double scaled))
         {
             return sb.Append(Num.Inv, $"{Num.Clean(Math.Round(value, decimals)):G15}");
         }
-        return sb.Append(buffer[..written]);
+        // Written straight into the builder's free space (ScaledDecimal), not into a buffer and copied.
+        return sb.Append(Num.Inv, $"{new ScaledDecimal(scaled, decimals)}");
+    }
+
+    /// <summary>
+    /// <paramref name="value"/> · 10^<paramref name="decimals"/> (0–9) rounded to a whole number, halves to even, as
+    /// <see cref="TryWriteScaled"/> writes it; false when it is 10^15 or more in size, or not finite.
+    /// </summary>
+    internal static bool TryScale(double value, int decimals, out double scaled)
+    {
+        scaled = RoundEven(value * Pow10[decimals]);
+        return Math.Abs(scaled) < 1e15;
     }
 
     /// <summary>Characters enough for any number this class or <see cref="Num.F(double, int)"/> writes.</summary>
@@ -39,8 +48,7 @@ internal static class NumAppend
     {
         // Math.Round(value, decimals) scales, rounds to even and scales back; doing the first two steps here gives the
         // same digits as an integer, which prints exactly while it has at most 15 significant digits.
-        double scaled = RoundEven(value * Pow10[decimals]);
-        if (!(Math.Abs(scaled) < 1e15))
+        if (!TryScale(value, decimals, out double scaled))
         {
             return -1;
         }
@@ -75,7 +83,9 @@ internal static class NumAppend
             digits--;
         }
         destination[at++] = '.';
-        return at + WriteDigits(destination[at..], fraction, digits);
+        // The fraction is below 10^digits: exactly that many digits, leading zeros included, so no count is needed.
+        WriteDigitsOf(destination.Slice(at, digits), (ulong)fraction);
+        return at + digits;
     }
 
     /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>
@@ -100,26 +110,34 @@ internal static class NumAppend
         "4041424344454647484950515253545556575859606162636465666768697071727374757677787980" +
         "81828384858687888990919293949596979899";
 
+    /// <summary>10^0 to 10^19: every power of ten an unsigned 64-bit number holds.</summary>
+    private static readonly ulong[] Powers =
+    [
+        1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000, 1_000_000_000, 10_000_000_000, 100_000_000_000,
+        1_000_000_000_000, 10_000_000_000_000, 100_000_000_000_000, 1_000_000_000_000_000, 10_000_000_000_000_000,
+        100_000_000_000_000_000, 1_000_000_000_000_000_000, 10_000_000_000_000_000_000,
+    ];
+
     /// <summary>
     /// Writes a non-negative number with at least <paramref name="minDigits"/> digits (leading zeros); returns their count.
-    /// The digits are counted by comparison and written two at a time, from the last.
+    /// The digits are counted from the highest bit (1233 / 4096 is just above log10 2, so the estimate is the count or one
+    /// more, which one comparison decides).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static int WriteDigits(Span<char> destination, long value, int minDigits)
     {
         ulong rest = (ulong)value;
-        int count = 1;
-        for (ulong power = 10; count < 19 && rest >= power; power *= 10)
-        {
-            count++;
-        }
-        if (rest >= 10_000_000_000_000_000_000UL)
-        {
-            count = 20;
-        }
+        int estimate = (System.Numerics.BitOperations.Log2(rest | 1) + 1) * 1233 >> 12;
+        int count = estimate + ((rest | 1) >= Powers[estimate] ? 1 : 0);
         count = Math.Max(count, minDigits);
-        Span<char> digits = destination[..count];
-        int at = count;
+        WriteDigitsOf(destination[..count], rest);
+        return count;
+    }
+
+    /// <summary>Fills <paramref name="digits"/> with <paramref name="rest"/> (which fits), leading zeros first, two digits at a time from the last.</summary>
+    private static void WriteDigitsOf(Span<char> digits, ulong rest)
+    {
+        int at = digits.Length;
         if (rest <= uint.MaxValue)
         {
             // Most numbers of a program fit 32 bits, whose divisions are cheaper.
@@ -152,8 +170,10 @@ internal static class NumAppend
         {
             digits[--at] = (char)('0' + (int)rest);
         }
-        digits[..at].Fill('0');
-        return count;
+        if (at > 0)
+        {
+            digits[..at].Fill('0');
+        }
     }
 
     /// <summary>1.5 · 2^52: any double of size below 2^51 plus this lies where doubles are the whole numbers.</summary>
@@ -177,14 +197,12 @@ internal static class NumAppend
         if ((uint)decimals < (uint)Pow10.Length)
         {
             // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
-            double scaled = Math.Abs(RoundEven(value * Pow10[decimals]));
-            if (decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4])
+            double rounded = RoundEven(value * Pow10[decimals]);
+            double scaled = Math.Abs(rounded);
+            if ((decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4]) && scaled < 1e15)
             {
-                int written = TryWriteScaled(destination, value, decimals);
-                if (written >= 0)
-                {
-                    return written;
-                }
+                // What TryWriteScaled writes, with the scaled value already at hand.
+                return WriteDecimal(destination, rounded < 0, (long)scaled, decimals);
             }
         }
         Num.Clean(Math.Round(value, decimals)).TryFormat(destination, out int general, "G15", Num.Inv);

@@ -30,6 +30,20 @@ internal static class NumParse
     /// </summary>
     internal static bool TryParseShort(ReadOnlySpan<char> text, out double value)
     {
+        if (ReadShort(text, out value) == text.Length)
+        {
+            return true;
+        }
+        value = 0;
+        return false;
+    }
+
+    /// <summary>
+    /// Reads the plain form of <see cref="TryParseShort"/> from the start of <paramref name="text"/> up to the first character
+    /// that cannot continue it; returns how many characters that is, or −1 when they hold no digit or more than 15.
+    /// </summary>
+    internal static int ReadShort(ReadOnlySpan<char> text, out double value)
+    {
         value = 0;
         int i = 0;
         bool negative = false;
@@ -49,7 +63,7 @@ internal static class NumParse
             {
                 if (++digits > 15)
                 {
-                    return false;
+                    return -1;
                 }
                 mantissa = mantissa * 10 + digit;
                 if (decimals >= 0)
@@ -63,15 +77,15 @@ internal static class NumParse
             }
             else
             {
-                return false;
+                break;
             }
         }
         if (digits == 0)
         {
-            return false;
+            return -1;
         }
         double magnitude = decimals > 0 ? mantissa / Pow10[decimals] : mantissa;
         value = negative ? -magnitude : magnitude;
-        return true;
+        return i;
     }
 }

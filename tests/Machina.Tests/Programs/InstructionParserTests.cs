@@ -16,6 +16,30 @@ public class InstructionParserTests
     }
 
     [Fact]
+    public void Parse_NumbersRightBeforeCommaOrParenthesis_SameValuesAsTheGeneralParser()
+    {
+        // Plain numbers that end their argument are read in one pass with the statement; every other form (spaces, a
+        // comment, exponents, 16 digits, two points) still goes through the general reading. Both give double.Parse's value.
+        string[] forms = ["0", "-0", "+1.5", "1.", ".5", "-.25", "007", "123456789012345", "1234567890123456", "0.000000000000001",
+                          "1e3", "-2.5E-3", " 4.5", "4.5 ", "4.5 // note\n", "9999999999.99999", "12.125", "-300"];
+        var random = new Random(27);
+        var texts = new List<string>(forms);
+        for (int i = 0; i < 3_000; i++)
+        {
+            texts.Add(Math.Round((random.NextDouble() - 0.5) * Math.Pow(10, random.Next(0, 12)), random.Next(0, 9)).ToString("R", System.Globalization.CultureInfo.InvariantCulture));
+        }
+        foreach (string text in texts)
+        {
+            var move = Assert.IsType<ActionTranslation>(Assert.Single(Instructions.Parse($"Move({text},{text},{text});")));
+            double expected = double.Parse(text.Split("//")[0], System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture);
+            Assert.Equal(BitConverter.DoubleToInt64Bits(expected), BitConverter.DoubleToInt64Bits(move.Translation.X));
+            Assert.Equal(BitConverter.DoubleToInt64Bits(expected), BitConverter.DoubleToInt64Bits(move.Translation.Z));
+        }
+        Assert.Throws<InstructionParseException>(() => Instructions.Parse("Move(1.2.3,0,0);"));
+        Assert.Throws<InstructionParseException>(() => Instructions.Parse("Move(-,0,0);"));
+    }
+
+    [Fact]
     public void Parse_CommentsOnTheirOwnLineAndAfterStatements_AreIgnored()
     {
         var actions = Instructions.Parse("// header\nMove(1, 2, 3); // up a bit\n  // indented comment\nWait(5) // no semicolon\n//");

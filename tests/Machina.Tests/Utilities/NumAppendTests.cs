@@ -36,6 +36,30 @@ public class NumAppendTests
         }
     }
 
+    [Fact]
+    public void AppendFixed_OneBuilderFillingUp_SameTextAsSeparateNumbers()
+    {
+        // The digits go straight into the builder's free space when it has room for any number, and through a buffer of
+        // the builder's own when it has not (a fresh builder, a chunk nearly full): both give the number's text.
+        var random = new Random(28);
+        var builder = new StringBuilder(4);
+        var expected = new StringBuilder();
+        for (int i = 0; i < 20_000; i++)
+        {
+            int decimals = i % 10;
+            double value = Math.Round((random.NextDouble() - 0.5) * Math.Pow(10, random.Next(-2, 12)), 9);
+            string alone = new StringBuilder().AppendFixed(value, decimals).ToString();
+            string reference = Num.F(value, decimals);
+            if (!reference.Contains('E', StringComparison.Ordinal))
+            {
+                Assert.Equal(reference, alone);
+            }
+            builder.AppendFixed(value, decimals).Append(i % 7 == 0 ? "|" : "");
+            expected.Append(alone).Append(i % 7 == 0 ? "|" : "");
+        }
+        Assert.Equal(expected.ToString(), builder.ToString());
+    }
+
     [Theory]
     [InlineData(1.000000001, 9, "1.000000001")]
     [InlineData(-0.000000005, 9, "-0.000000005")]
@@ -47,6 +71,44 @@ public class NumAppendTests
     public void AppendFixed_LongAndShortDigitRuns_EveryDigitInPlace(double value, int decimals, string expected)
     {
         Assert.Equal(expected, new StringBuilder().AppendFixed(value, decimals).ToString());
+    }
+
+    [Fact]
+    public void WriteDecimal_EveryDigitCountAndDecimals_AsTheIntegerFormatter()
+    {
+        // The digit count comes from the highest bit and one comparison: the numbers on both sides of each power of ten and
+        // of two, and random ones, at 0 to 9 decimals.
+        var values = new List<long> { 0, long.MaxValue };
+        long power = 1;
+        for (int k = 0; k <= 18; k++, power *= 10)
+        {
+            values.AddRange([power - 1, power, power + 1]);
+        }
+        for (int bit = 0; bit < 63; bit++)
+        {
+            values.AddRange([(1L << bit) - 1, 1L << bit]);
+        }
+        var random = new Random(26);
+        for (int i = 0; i < 20_000; i++)
+        {
+            values.Add(random.NextInt64(0, (long)Math.Pow(10, random.Next(1, 16))));
+        }
+        Span<char> buffer = stackalloc char[NumAppend.MaxChars];
+        foreach (long value in values)
+        {
+            for (int decimals = 0; decimals <= 9; decimals++)
+            {
+                Assert.Equal(Expected(value, decimals, false), new string(buffer[..NumAppend.WriteDecimal(buffer, false, value, decimals)]));
+                Assert.Equal(Expected(value, decimals, true), new string(buffer[..NumAppend.WriteDecimal(buffer, true, value, decimals)]));
+            }
+        }
+
+        static string Expected(long value, int decimals, bool negative)
+        {
+            string digits = value.ToString(System.Globalization.CultureInfo.InvariantCulture).PadLeft(decimals + 1, '0');
+            string whole = digits[..^decimals], fraction = digits[^decimals..].TrimEnd('0');
+            return (negative && value != 0 ? "-" : "") + whole + (fraction.Length > 0 ? "." + fraction : "");
+        }
     }
 
     [Fact]

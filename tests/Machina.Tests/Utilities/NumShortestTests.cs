@@ -51,6 +51,25 @@ public class NumShortestTests
     }
 
     [Fact]
+    public void WriteRoundTrip_AroundTheThreeDecimalProbe_SameTextAsRAndG15()
+    {
+        // The probe at 3 decimals decides for numbers up to 10^12 with up to 3 decimals, and sends the others to the
+        // search: numbers on both sides of 10^12 (where the probe's scaled value reaches 10^15), with 0 to 6 decimals.
+        var random = new Random(23);
+        int probed = 0;
+        for (int i = 0; i < 200_000; i++)
+        {
+            int decimals = random.Next(0, 7);
+            double size = Math.Pow(10, random.Next(-3, 15)) * (1 + random.NextDouble() * 9);
+            double value = Math.Round(size, decimals) * (random.Next(2) == 0 ? 1 : -1);
+            Assert.Equal(R(value), Fast(value, general: false));
+            Assert.Equal(G15(value), Fast(value, general: true));
+            probed += decimals <= 3 && Math.Abs(value) < 1e12 ? 1 : 0;
+        }
+        Assert.True(probed > 50_000, $"only {probed} values were of the probe's kind");
+    }
+
+    [Fact]
     public void WriteGeneral_RandomAndEdgeValues_SameTextAsG15()
     {
         foreach (double value in Values(22))

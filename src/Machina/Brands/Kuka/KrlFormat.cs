@@ -65,10 +65,25 @@ internal static class KrlFormat
     /// <summary>As <see cref="AppendPose(StringBuilder, Vector, Rotation, ExternalAxes?, KukaConfiguration?)"/>, with the orientation's <see cref="Abc"/> already known.</summary>
     internal static void AppendPose(StringBuilder sb, Vector position, (double A, double B, double C) abc, ExternalAxes? external, KukaConfiguration? config = null)
     {
-        (double a, double b, double c) = abc;
+        AppendPosition(sb, position);
+        AppendOrientation(sb, abc, external, config);
+    }
+
+    /// <summary>The first half of <see cref="AppendPose(StringBuilder, Vector, ValueTuple{double, double, double}, ExternalAxes?, KukaConfiguration?)"/>: <c>X …, Y …, Z …</c>.</summary>
+    internal static void AppendPosition(StringBuilder sb, Vector position)
+    {
         AppendMm(sb.Append("X "), position.X);
         AppendMm(sb.Append(", Y "), position.Y);
         AppendMm(sb.Append(", Z "), position.Z);
+    }
+
+    /// <summary>
+    /// The second half of <see cref="AppendPose(StringBuilder, Vector, ValueTuple{double, double, double}, ExternalAxes?, KukaConfiguration?)"/>:
+    /// <c>, A …, B …, C …</c>, then Status and Turn and the external axes that have a value.
+    /// </summary>
+    internal static void AppendOrientation(StringBuilder sb, (double A, double B, double C) abc, ExternalAxes? external, KukaConfiguration? config)
+    {
+        (double a, double b, double c) = abc;
         AppendAngle(sb.Append(", A "), a);
         AppendAngle(sb.Append(", B "), b);
         AppendAngle(sb.Append(", C "), c);

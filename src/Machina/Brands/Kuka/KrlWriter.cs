@@ -454,20 +454,24 @@ internal sealed class KrlWriter
 
     private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
-        if (!_abcKnown || rotation != _abcOf)
+        if (!_tailKnown || rotation != _tailRotation || external != _tailExternal || config != _tailConfig)
         {
-            // A toolpath keeps its orientation over many moves: its Euler angles are computed once.
-            _abc = KrlFormat.Abc(rotation);
-            _abcOf = rotation;
-            _abcKnown = true;
+            // A toolpath keeps its orientation over many moves: its Euler angles are computed and written once, and the
+            // text after the position (angles, Status and Turn, external axes) copied while they stay the same.
+            KrlFormat.AppendOrientation(_poseTail.Clear(), KrlFormat.Abc(rotation), external, config);
+            (_tailKnown, _tailRotation, _tailExternal, _tailConfig) = (true, rotation, external, config);
         }
-        KrlFormat.AppendPose(BeginTarget(line, "E6POS"), position, _abc, external, config);
+        StringBuilder target = BeginTarget(line, "E6POS");
+        KrlFormat.AppendPosition(target, position);
+        target.Append(_poseTail);
         EndTarget(line);
     }
 
-    private bool _abcKnown;
-    private Rotation _abcOf;
-    private (double A, double B, double C) _abc;
+    private readonly StringBuilder _poseTail = new(96);
+    private bool _tailKnown;
+    private Rotation _tailRotation;
+    private ExternalAxes? _tailExternal;
+    private KukaConfiguration? _tailConfig;
 
     /// <summary>Where a target's values go: straight into the line (inline), or into a declaration for the .dat file.</summary>
     private StringBuilder BeginTarget(StringBuilder line, string type)

@@ -24,11 +24,17 @@ internal static class UrScriptText
     internal static StringBuilder Num6(this StringBuilder sb, double value) => sb.AppendFixed(value, 6);
 
     /// <summary>Appends a pose <c>p[x,y,z,rx,ry,rz]</c>: millimetres to metres, rotation to a rotation vector in radians.</summary>
-    internal static StringBuilder Pose(this StringBuilder sb, Vector position, Rotation rotation)
+    internal static StringBuilder Pose(this StringBuilder sb, Vector position, Rotation rotation) => sb.PosePosition(position).PoseOrientation(rotation);
+
+    /// <summary>Appends the first half of a pose, <c>p[x,y,z</c>: millimetres to metres.</summary>
+    internal static StringBuilder PosePosition(this StringBuilder sb, Vector position) =>
+        sb.Append("p[").Num6(position.X * Mm).Append(',').Num6(position.Y * Mm).Append(',').Num6(position.Z * Mm);
+
+    /// <summary>Appends the second half of a pose, <c>,rx,ry,rz]</c>: the rotation as a rotation vector in radians.</summary>
+    internal static StringBuilder PoseOrientation(this StringBuilder sb, Rotation rotation)
     {
         RotationVector rv = rotation.ToRotationVector();
-        return sb.Append("p[").Num6(position.X * Mm).Append(',').Num6(position.Y * Mm).Append(',').Num6(position.Z * Mm)
-                 .Append(',').Num6(rv.X * Rad).Append(',').Num6(rv.Y * Rad).Append(',').Num6(rv.Z * Rad).Append(']');
+        return sb.Append(',').Num6(rv.X * Rad).Append(',').Num6(rv.Y * Rad).Append(',').Num6(rv.Z * Rad).Append(']');
     }
 
     /// <summary>Appends a joint list <c>[j1,…,j6]</c> in radians.</summary>

@@ -11,9 +11,10 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     private const string Indent = "  ";
 
     private readonly StringBuilder _sb = new(256);
-    private readonly StringBuilder _warning = new(320);
+    private char[] _warning = new char[320];
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
+    private readonly UrRepeatedText _repeated = new();
     private int _target;
     private RobotAction? _lastMotion;
     private double _lastRadius;
@@ -28,12 +29,12 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
             switch (action)
             {
                 case ActionTranslation or ActionRotation or ActionTransformation:
-                    Declare(count++).Pose(cursor.Position!.Value, cursor.Rotation!.Value);
+                    _repeated.Pose(Declare(count++), cursor.Position!.Value, cursor.Rotation!.Value);
                     break;
                 case ActionArcMotion:
-                    Declare(count++).Pose(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
+                    _repeated.Pose(Declare(count++), cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
                     sink.Add(_sb.ToString());
-                    Declare(count++).Pose(cursor.Position!.Value, cursor.Rotation!.Value);
+                    _repeated.Pose(Declare(count++), cursor.Position!.Value, cursor.Rotation!.Value);
                     break;
                 case ActionAxes:
                     Declare(count++).JointList(cursor.Axes!.Value);
@@ -74,7 +75,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 bool joint = cursor.MotionType == MotionType.Joint;
                 _sb.Clear().Append(Indent).Append(joint ? "movej(" : "movep(");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
-                _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
+                _repeated.MotionParameters(_sb, cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
                 EndLine(action);
                 break;
             case ActionArcMotion arc:
@@ -86,7 +87,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 PoseOrName(cursor.ArcThrough!.Value, cursor.ArcThroughRotation!.Value);
                 _sb.Append(", ");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
-                _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: false);
+                _repeated.MotionParameters(_sb, cursor.Acceleration, cursor.Speed, cursor.Precision, joint: false);
                 EndLine(action);
                 break;
             case ActionAxes:
@@ -99,7 +100,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 {
                     _sb.Append("target").Append(_target++);
                 }
-                _sb.MotionParameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true);
+                _repeated.MotionParameters(_sb, cursor.Acceleration, cursor.Speed, cursor.Precision, joint: true);
                 EndLine(action);
                 break;
             case ActionSpeed when UrScriptText.RoundsToZero(cursor.Speed):
@@ -207,30 +208,48 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
 
     /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
     /// <remarks>
-    /// A long program of short moves warns on every motion, so the comment line is built once in a builder, numbers formatted in
-    /// place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>), a move's instruction too: only the text of other
-    /// actions is made comment-safe, since the rest is fixed text and numbers.
+    /// A long program of short moves warns on every motion, so the comment line is written once into a reused character buffer
+    /// and from there to the file: numbers formatted in place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>),
+    /// a move's instruction too; only the text of other actions is made comment-safe, since the rest is fixed text and numbers.
     /// The warning's own string is made only while the job keeps warnings.
     /// </remarks>
     private void WarnBlend(RobotAction action, double radius, double length, string which)
     {
-        StringBuilder line = _warning.Clear().Append(Indent).Append("# WARNING: ");
-        if (action is ActionTranslation translation)
+        var translation = action as ActionTranslation;
+        string? instruction = translation is null ? UrScriptText.CommentText(action.ToInstruction()) : null;
+        int most = BlendWarningChars + (instruction?.Length ?? ActionTranslation.MaxInstructionChars);
+        if (_warning.Length < most)
         {
-            // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
-            translation.AppendInstruction(line);
+            _warning = new char[most];
         }
-        else
-        {
-            line.Append(UrScriptText.CommentText(action.ToInstruction()));
-        }
-        line.Append(' ');
-        int start = line.Length;
-        line.Append("the blend radius of ").AppendGeneral(radius).Append(" mm is more than half of ").Append(which).Append(" motion (")
-            .AppendGeneral(Math.Round(length, 3)).Append(" mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(")
-            .AppendGeneral(Math.Floor(length / 2 * 1000) / 1000).Append(") or less around short motions.");
-        job.Warn(action, $"{line.ToString(start, line.Length - start)}");
-        sink.Add(line);
+        Span<char> line = _warning;
+        int at = Put(line, 0, "  # WARNING: ");
+        // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
+        at = translation is null ? Put(line, at, instruction!) : at + translation.WriteInstruction(line[at..]);
+        line[at++] = ' ';
+        int start = at;
+        at = Put(line, at, "the blend radius of ");
+        at += NumShortest.WriteGeneral(line[at..], radius);
+        at = Put(line, at, " mm is more than half of ");
+        at = Put(line, at, which);
+        at = Put(line, at, " motion (");
+        at += NumShortest.WriteGeneral(line[at..], Math.Round(length, 3));
+        at = Put(line, at, " mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(");
+        at += NumShortest.WriteGeneral(line[at..], Math.Floor(length / 2 * 1000) / 1000);
+        at = Put(line, at, ") or less around short motions.");
+        ReadOnlySpan<char> message = line[start..at];
+        job.Warn(action, $"{message}");
+        sink.Add(line[..at]);
+    }
+
+    /// <summary>Characters enough for a blend warning's line besides the instruction it quotes: fixed text and three numbers.</summary>
+    private const int BlendWarningChars = 224 + 3 * NumAppend.MaxChars;
+
+    /// <summary>Copies <paramref name="text"/> into <paramref name="line"/> at <paramref name="at"/>; returns the position after it.</summary>
+    private static int Put(Span<char> line, int at, string text)
+    {
+        text.CopyTo(line[at..]);
+        return at + text.Length;
     }
 
     /// <summary>
@@ -274,7 +293,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     {
         if (_inline)
         {
-            _sb.Pose(position, rotation);
+            _repeated.Pose(_sb, position, rotation);
         }
         else
         {

@@ -1,0 +1,46 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// Writes the parts of URScript motions that repeat from one move to the next as <see cref="UrScriptText"/> does, keeping the
+/// last text: a toolpath keeps its orientation and its speed, acceleration and blend radius over millions of moves, and the
+/// rotation vector's three numbers (and its conversion) and the parameters' two or three are then copied instead of formatted again.
+/// </summary>
+/// <remarks>Values are compared by their bits, so that a text is reused only for exactly the numbers it was written from.</remarks>
+internal sealed class UrRepeatedText
+{
+    private readonly StringBuilder _orientation = new(64);
+    private readonly StringBuilder _parameters = new(64);
+    private bool _orientationKnown;
+    private long _w, _x, _y, _z;
+    private bool _parametersKnown;
+    private long _acceleration, _speed, _precision;
+    private bool _joint;
+
+    /// <summary>Appends the pose <c>p[x,y,z,rx,ry,rz]</c>; the same text as <see cref="UrScriptText.Pose"/>.</summary>
+    internal StringBuilder Pose(StringBuilder sb, Vector position, Rotation rotation)
+    {
+        long w = Bits(rotation.W), x = Bits(rotation.X), y = Bits(rotation.Y), z = Bits(rotation.Z);
+        if (!_orientationKnown || w != _w || x != _x || y != _y || z != _z)
+        {
+            _orientation.Clear().PoseOrientation(rotation);
+            (_orientationKnown, _w, _x, _y, _z) = (true, w, x, y, z);
+        }
+        return sb.PosePosition(position).Append(_orientation);
+    }
+
+    /// <summary>Appends <c>, a=…, v=…, r=…)</c>; the same text as <see cref="UrScriptText.MotionParameters"/>.</summary>
+    internal StringBuilder MotionParameters(StringBuilder sb, double acceleration, double speed, double precision, bool joint)
+    {
+        long a = Bits(acceleration), v = Bits(speed), r = Bits(precision);
+        if (!_parametersKnown || a != _acceleration || v != _speed || r != _precision || joint != _joint)
+        {
+            _parameters.Clear().MotionParameters(acceleration, speed, precision, joint);
+            (_parametersKnown, _acceleration, _speed, _precision, _joint) = (true, a, v, r, joint);
+        }
+        return sb.Append(_parameters);
+    }
+
+    private static long Bits(double value) => BitConverter.DoubleToInt64Bits(value);
+}
