@@ -52,35 +52,30 @@ internal static class NumParse
             negative = text[0] == '-';
             i = 1;
         }
+        // The whole part, then the fraction, each in its own loop; the count of digits is checked once at the end (a longer
+        // number only runs on to its end before it is refused).
         long mantissa = 0;
-        int digits = 0;
-        int decimals = -1;
-        for (; i < text.Length; i++)
+        int start = i;
+        uint digit;
+        while (i < text.Length && (digit = (uint)(text[i] - '0')) <= 9)
         {
-            char c = text[i];
-            uint digit = (uint)(c - '0');
-            if (digit <= 9)
-            {
-                if (++digits > 15)
-                {
-                    return -1;
-                }
-                mantissa = mantissa * 10 + digit;
-                if (decimals >= 0)
-                {
-                    decimals++;
-                }
-            }
-            else if (c == '.' && decimals < 0)
-            {
-                decimals = 0;
-            }
-            else
-            {
-                break;
-            }
+            mantissa = mantissa * 10 + digit;
+            i++;
         }
-        if (digits == 0)
+        int digits = i - start;
+        int decimals = 0;
+        if (i < text.Length && text[i] == '.')
+        {
+            int fraction = ++i;
+            while (i < text.Length && (digit = (uint)(text[i] - '0')) <= 9)
+            {
+                mantissa = mantissa * 10 + digit;
+                i++;
+            }
+            decimals = i - fraction;
+            digits += decimals;
+        }
+        if (digits == 0 || digits > 15)
         {
             return -1;
         }

@@ -281,7 +281,7 @@ internal sealed class GCodeWriter
         }
         if (action is not null && _human)
         {
-            sb.Append("  ; [").Append(GCodeText.Comment(action.Describe())).Append(']');
+            sb.Append("  ; [").AppendDescription(action, oneLine: true).Append(']');
         }
         _file.Add(sb);
     }
@@ -397,7 +397,8 @@ internal sealed class GCodeWriter
 
     private void WarnIfTurned(RobotAction action, RobotCursor c)
     {
-        if (c.PrevRotation is Rotation before && c.Rotation is Rotation after && !after.IsSimilar(before, 1e-6))
+        // An orientation that stays exactly the same (every move of a print) turns by exactly 0: no angle is computed for it.
+        if (c.PrevRotation is Rotation before && c.Rotation is Rotation after && !after.Equals(before) && !after.IsSimilar(before, 1e-6))
         {
             Warning(action, "a 3D printer cannot turn its tool; the change of orientation is ignored.");
         }

@@ -17,9 +17,17 @@ internal sealed class RapidTargetText
     private double? _armAngle;
     private AbbConfiguration? _conf;
 
+    /// <summary>Counts the times the kept text was written anew: the same count means the same <see cref="Tail"/> text.</summary>
+    internal int Version { get; private set; }
+
     /// <summary>Appends the robtarget <c>[[x, y, z], [q1, q2, q3, q4], conf, external axes]</c>; the same text as <see cref="RapidText.RobTarget"/>.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal StringBuilder Append(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? axes, double? armAngle, AbbConfiguration? conf)
+    internal StringBuilder Append(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? axes, double? armAngle, AbbConfiguration? conf) =>
+        sb.Append('[').Position(position).Append(Tail(rotation, axes, armAngle, conf));
+
+    /// <summary>The robtarget's text after the position, <c>, [q1, q2, q3, q4], conf, external axes]</c>, kept while its values stay the same.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal StringBuilder Tail(Rotation rotation, ExternalAxes? axes, double? armAngle, AbbConfiguration? conf)
     {
         if (!_known || rotation != _rotation || axes != _axes || armAngle != _armAngle || conf != _conf)
         {
@@ -30,7 +38,8 @@ internal sealed class RapidTargetText
             _axes = axes;
             _armAngle = armAngle;
             _conf = conf;
+            Version++;
         }
-        return sb.Append('[').Position(position).Append(_tail);
+        return _tail;
     }
 }

@@ -19,7 +19,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     private readonly StringBuilder _sb = new(256);
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
-    private readonly RapidTargetText _targets = new();
+    private readonly RapidMoveLine _moveLine = new();
     private int _target;
 
     /// <summary>Second pass (declared targets only): one <c>CONST robtarget|jointtarget targetN</c> per target; returns how many.</summary>
@@ -81,9 +81,13 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         switch (action)
         {
             case ActionTranslation or ActionRotation or ActionTransformation:
-                _sb.Clear().Append(Indent).Append(cursor.MotionType == MotionType.Joint ? "MoveJ " : "MoveL ");
-                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
-                MoveCode(action, cursor);
+                string start = cursor.MotionType == MotionType.Joint ? Indent + "MoveJ " : Indent + "MoveL ";
+                if (!_inline || !WriteInlineMove(start, action, cursor))
+                {
+                    _sb.Clear().Append(start);
+                    RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
+                    MoveCode(action, cursor);
+                }
                 break;
             case ActionArcMotion arc:
                 if (ArcOrientation.ThroughIsIgnored(arc, cursor))
@@ -182,12 +186,21 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         if (_inline)
         {
-            _targets.Append(_sb, position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
+            _moveLine.Targets.Append(_sb, position, rotation, cursor.ExternalAxesCartesian, cursor.ArmAngle, end ? RapidText.Conf(job.Model, cursor) : null);
         }
         else
         {
             _sb.Append("target").Append(_target++);
         }
+    }
+
+    /// <summary>A linear or joint move with an inline target written as one line by <see cref="RapidMoveLine"/>; false when it could not.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private bool WriteInlineMove(string start, RobotAction action, RobotCursor cursor)
+    {
+        StringBuilder tail = _moveLine.Targets.Tail(cursor.Rotation!.Value, cursor.ExternalAxesCartesian, cursor.ArmAngle, RapidText.Conf(job.Model, cursor));
+        return _moveLine.TryWrite(sink, start, cursor.Position!.Value, tail, plan.SpeedName(cursor.Speed), plan.ZoneName(cursor.Precision),
+                                  plan.ToolName(cursor.Tool), action, _human);
     }
 
     /// <summary>Ends the move instruction begun in the builder (speed, zone, tool, work object), adds its comment and writes the line.</summary>
