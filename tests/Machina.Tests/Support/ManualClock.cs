@@ -61,6 +61,27 @@ internal sealed class ManualClock : TimeProvider
         }
     }
 
+    /// <summary>
+    /// Moves the clock to the earliest pending timer and fires the timers due then, and no later ones: a timer that a woken
+    /// thread sets meanwhile is due after now, so it waits for the next call (with <see cref="Advance"/> past a timer, a
+    /// thread woken quickly enough could set its next timer inside the span and see it fire at once). Returns how far the
+    /// clock moved, or null when no timer is pending.
+    /// </summary>
+    internal TimeSpan? AdvanceToNextTimer()
+    {
+        long by;
+        lock (_gate)
+        {
+            if (_timers.Count == 0)
+            {
+                return null;
+            }
+            by = _timers.Min(t => t.DueAt) - _now;
+        }
+        Advance(TimeSpan.FromTicks(by));
+        return TimeSpan.FromTicks(by);
+    }
+
     /// <summary>Moves the clock forward, firing every timer that falls due on the way, earliest first.</summary>
     internal void Advance(TimeSpan by)
     {
