@@ -20,8 +20,11 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// </summary>
     internal const int BatchSize = 4096;
 
-    /// <summary>Batches the reading thread may be ahead.</summary>
-    internal const int BatchesAhead = 4;
+    /// <summary>
+    /// Batches the reading thread may be ahead. Two keep both cores busy; four held some 2–6 MB more at the peak of a
+    /// 10^6-line compile for no gain in time (docs/performance.md, "The cold path, fifth session").
+    /// </summary>
+    internal const int BatchesAhead = 2;
 
     /// <summary>
     /// Positions of the last actions read, by id (a ring): a compiler may warn about an action it met a little earlier (a UR blend
