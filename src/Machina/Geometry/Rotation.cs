@@ -264,6 +264,11 @@ public readonly struct Rotation : IEquatable<Rotation>
     /// <summary>The angle in degrees of the smallest turn that takes this rotation onto <paramref name="other"/>.</summary>
     public double AngleTo(Rotation other)
     {
+        if (W == other.W && X == other.X && Y == other.Y && Z == other.Z)
+        {
+            // The same rotation (every move of a toolpath that keeps its orientation): the formula below gives exactly 0.
+            return 0;
+        }
         // Relative rotation d = this⁻¹ · other, measured with atan2 for precision at tiny angles.
         double aw = W, ax = -X, ay = -Y, az = -Z, bw = other.W, bx = other.X, by = other.Y, bz = other.Z;
         double w = aw * bw - ax * bx - ay * by - az * bz;

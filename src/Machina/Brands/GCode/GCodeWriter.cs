@@ -397,8 +397,7 @@ internal sealed class GCodeWriter
 
     private void WarnIfTurned(RobotAction action, RobotCursor c)
     {
-        // An orientation that stays exactly the same (every move of a print) turns by exactly 0: no angle is computed for it.
-        if (c.PrevRotation is Rotation before && c.Rotation is Rotation after && !after.Equals(before) && !after.IsSimilar(before, 1e-6))
+        if (c.PrevRotation is Rotation before && c.Rotation is Rotation after && !after.IsSimilar(before, 1e-6))
         {
             Warning(action, "a 3D printer cannot turn its tool; the change of orientation is ignored.");
         }

@@ -59,17 +59,13 @@ internal static class KrlFormat
     /// Appends <c>X …, Y …, Z …, A …, B …, C …</c>, then <c>, S 'B…', T 'B…'</c> when <paramref name="config"/> is given (joints known
     /// from a robot model), and <c>, E1 …</c> for each external axis that has a value.
     /// </summary>
-    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null) =>
-        AppendPose(sb, position, Abc(rotation), external, config);
-
-    /// <summary>As <see cref="AppendPose(StringBuilder, Vector, Rotation, ExternalAxes?, KukaConfiguration?)"/>, with the orientation's <see cref="Abc"/> already known.</summary>
-    internal static void AppendPose(StringBuilder sb, Vector position, (double A, double B, double C) abc, ExternalAxes? external, KukaConfiguration? config = null)
+    internal static void AppendPose(StringBuilder sb, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
         AppendPosition(sb, position);
-        AppendOrientation(sb, abc, external, config);
+        AppendOrientation(sb, Abc(rotation), external, config);
     }
 
-    /// <summary>The first half of <see cref="AppendPose(StringBuilder, Vector, ValueTuple{double, double, double}, ExternalAxes?, KukaConfiguration?)"/>: <c>X …, Y …, Z …</c>.</summary>
+    /// <summary>The first half of <see cref="AppendPose"/>: <c>X …, Y …, Z …</c>.</summary>
     internal static void AppendPosition(StringBuilder sb, Vector position)
     {
         AppendMm(sb.Append("X "), position.X);
@@ -78,8 +74,8 @@ internal static class KrlFormat
     }
 
     /// <summary>
-    /// The second half of <see cref="AppendPose(StringBuilder, Vector, ValueTuple{double, double, double}, ExternalAxes?, KukaConfiguration?)"/>:
-    /// <c>, A …, B …, C …</c>, then Status and Turn and the external axes that have a value.
+    /// The second half of <see cref="AppendPose"/>, with the orientation's <see cref="Abc"/> already known: <c>, A …, B …, C …</c>,
+    /// then Status and Turn and the external axes that have a value.
     /// </summary>
     internal static void AppendOrientation(StringBuilder sb, (double A, double B, double C) abc, ExternalAxes? external, KukaConfiguration? config)
     {

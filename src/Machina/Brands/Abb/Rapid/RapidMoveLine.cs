@@ -51,10 +51,20 @@ internal sealed class RapidMoveLine
         int at = start.Length;
         line[at++] = '[';
         line[at++] = '[';
-        if (!TryNumber(line, ref at, position.X) || !Separator(line, ref at) || !TryNumber(line, ref at, position.Y)
-            || !Separator(line, ref at) || !TryNumber(line, ref at, position.Z))
+        ReadOnlySpan<double> xyz = [position.X, position.Y, position.Z];
+        for (int i = 0; i < xyz.Length; i++)
         {
-            return false;
+            if (i > 0)
+            {
+                line[at++] = ',';
+                line[at++] = ' ';
+            }
+            int written = NumAppend.TryWriteScaled(line[at..], xyz[i], RapidFacts.MillimetreDecimals);
+            if (written < 0)
+            {
+                return false;
+            }
+            at += written;
         }
         line[at++] = ']';
         _rest.CopyTo(line[at..]);
@@ -73,24 +83,6 @@ internal sealed class RapidMoveLine
             line[at++] = ']';
         }
         sink.Add(line[..at]);
-        return true;
-    }
-
-    private static bool TryNumber(Span<char> line, ref int at, double value)
-    {
-        int written = NumAppend.TryWriteScaled(line[at..], value, RapidFacts.MillimetreDecimals);
-        if (written < 0)
-        {
-            return false;
-        }
-        at += written;
-        return true;
-    }
-
-    private static bool Separator(Span<char> line, ref int at)
-    {
-        line[at++] = ',';
-        line[at++] = ' ';
         return true;
     }
 }
