@@ -171,6 +171,13 @@ internal sealed partial class FaultRig : IAsyncDisposable
                 w.RecoveryErrors.Enqueue(e);
                 await Task.Delay(10);
             }
+            catch (MachinaException e)
+            {
+                // What the controller said is what tells a stuck driver program from a slow one: keep it with the failure.
+                throw new InvalidOperationException(
+                    $"No recovery after {attempt + 1} attempts: {e.Message}\nPendant (last 40):\n  "
+                    + string.Join("\n  ", PendantMessages.TakeLast(40)), e);
+            }
         }
     }
 
