@@ -68,6 +68,22 @@ internal static class NumAppend
         {
             destination[at++] = '-';
         }
+        // Millimetres (3 decimals) and metres (6 decimals) below 1000, most numbers of most programs: three digits at a time
+        // (packed characters: the first in the low bits, which is the first in memory on little-endian processors).
+        if (BitConverter.IsLittleEndian && decimals == 3 && (ulong)mantissa < 1_000_000)
+        {
+            uint thousandths = (uint)mantissa;
+            uint units = thousandths / 1000;
+            return WriteFraction(destination, WriteBelowThousand(destination, at, units), thousandths - units * 1000, 0);
+        }
+        if (BitConverter.IsLittleEndian && decimals == 6 && (ulong)mantissa < 1_000_000_000)
+        {
+            uint millionths = (uint)mantissa;
+            uint units = millionths / 1_000_000;
+            uint millionthsOfUnit = millionths - units * 1_000_000;
+            uint high = millionthsOfUnit / 1000;
+            return WriteFraction(destination, WriteBelowThousand(destination, at, units), high, millionthsOfUnit - high * 1000);
+        }
         // Divisions by constants: the processor's divide by a power chosen at run time cost more than the digits themselves.
         long whole = DivPow10(mantissa, decimals);
         long fraction = mantissa - whole * Pow10L[decimals];
@@ -86,6 +102,69 @@ internal static class NumAppend
         // The fraction is below 10^digits: exactly that many digits, leading zeros included, so no count is needed.
         WriteDigitsOf(destination.Slice(at, digits), (ulong)fraction);
         return at + digits;
+    }
+
+    /// <summary>
+    /// "000" to "999", each as four characters packed into one number (the fourth is 0), first digit in the low bits: written with
+    /// one store instead of a copy of one to three characters.
+    /// </summary>
+    private static readonly ulong[] Triples = MakeTriples();
+
+    /// <summary>How many of the three digits of each number below 1000 are left when its trailing zeros are dropped (0 for 0).</summary>
+    private static readonly byte[] TrimmedDigits = MakeTrimmedDigits();
+
+    private static ulong[] MakeTriples()
+    {
+        var triples = new ulong[1000];
+        for (int n = 0; n < triples.Length; n++)
+        {
+            triples[n] = (ulong)(uint)('0' + n / 100) | (ulong)(uint)('0' + n / 10 % 10) << 16 | (ulong)(uint)('0' + n % 10) << 32;
+        }
+        return triples;
+    }
+
+    private static byte[] MakeTrimmedDigits()
+    {
+        var digits = new byte[1000];
+        for (int n = 1; n < digits.Length; n++)
+        {
+            digits[n] = (byte)(n % 10 != 0 ? 3 : n % 100 != 0 ? 2 : 1);
+        }
+        return digits;
+    }
+
+    /// <summary>Stores four packed characters at <paramref name="at"/> (the place must hold them) and returns <paramref name="at"/> + <paramref name="count"/>.</summary>
+    private static int Put(Span<char> destination, int at, ulong packed, int count)
+    {
+        System.Runtime.InteropServices.MemoryMarshal.Write(System.Runtime.InteropServices.MemoryMarshal.AsBytes(destination.Slice(at, 4)), in packed);
+        return at + count;
+    }
+
+    /// <summary>Writes <paramref name="value"/> (below 1000) without leading zeros at <paramref name="at"/>; returns the position after it.</summary>
+    private static int WriteBelowThousand(Span<char> destination, int at, uint value)
+    {
+        int skipped = value >= 100 ? 0 : value >= 10 ? 1 : 2;
+        return Put(destination, at, Triples[value] >> (16 * skipped), 3 - skipped);
+    }
+
+    /// <summary>
+    /// Writes the fraction <c>.first second</c> (each group three digits, below 1000; <paramref name="second"/> 0 for three
+    /// decimals) without its trailing zeros, nothing when it is 0; returns the position after it.
+    /// </summary>
+    private static int WriteFraction(Span<char> destination, int at, uint first, uint second)
+    {
+        if (second != 0)
+        {
+            destination[at] = '.';
+            at = Put(destination, at + 1, Triples[first], 3);
+            return Put(destination, at, Triples[second], TrimmedDigits[second]);
+        }
+        if (first == 0)
+        {
+            return at;
+        }
+        destination[at] = '.';
+        return Put(destination, at + 1, Triples[first], TrimmedDigits[first]);
     }
 
     /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>

@@ -112,6 +112,39 @@ public class NumAppendTests
     }
 
     [Fact]
+    public void WriteDecimal_MillimetresAndMetresBelowThousand_AsTheIntegerFormatter()
+    {
+        // The three-digit groups of 3 and 6 decimals: every mantissa at 3 decimals, and at 6 decimals each fraction with many
+        // whole parts, plus the edges where the groups end.
+        Span<char> buffer = stackalloc char[NumAppend.MaxChars];
+        for (long value = 0; value <= 1_000_001; value++)
+        {
+            Check(buffer, value, 3);
+        }
+        var random = new Random(27);
+        for (long fraction = 0; fraction < 1_000_000; fraction++)
+        {
+            Check(buffer, random.Next(0, 1001) * 1_000_000L + fraction, 6);
+        }
+        foreach (long value in new long[] { 999_999_999, 1_000_000_000, 1_000_000_001, 999_000_000, 1_999_999_999 })
+        {
+            Check(buffer, value, 6);
+        }
+
+        static void Check(Span<char> buffer, long value, int decimals)
+        {
+            string digits = value.ToString(System.Globalization.CultureInfo.InvariantCulture).PadLeft(decimals + 1, '0');
+            string whole = digits[..^decimals], fraction = digits[^decimals..].TrimEnd('0');
+            string expected = whole + (fraction.Length > 0 ? "." + fraction : "");
+            if (!buffer[..NumAppend.WriteDecimal(buffer, false, value, decimals)].SequenceEqual(expected)
+                || !buffer[..NumAppend.WriteDecimal(buffer, true, value, decimals)].SequenceEqual(value == 0 ? expected : "-" + expected))
+            {
+                Assert.Fail($"{value} at {decimals} decimals: expected {expected}, got {new string(buffer[..NumAppend.WriteDecimal(buffer, false, value, decimals)])}");
+            }
+        }
+    }
+
+    [Fact]
     public void RoundEven_ValuesBelow2To51_SameAsMathRound()
     {
         var random = new Random(25);

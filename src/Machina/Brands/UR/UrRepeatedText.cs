@@ -10,8 +10,9 @@ namespace Machina;
 /// <remarks>Values are compared by their bits, so that a text is reused only for exactly the numbers it was written from.</remarks>
 internal sealed class UrRepeatedText
 {
-    private readonly StringBuilder _orientation = new(64);
-    private readonly StringBuilder _parameters = new(64);
+    private readonly StringBuilder _builder = new(64);
+    private char[] _orientation = [];
+    private char[] _parameters = [];
     private bool _orientationKnown;
     private long _w, _x, _y, _z;
     private bool _parametersKnown;
@@ -19,27 +20,42 @@ internal sealed class UrRepeatedText
     private bool _joint;
 
     /// <summary>Appends the pose <c>p[x,y,z,rx,ry,rz]</c>; the same text as <see cref="UrScriptText.Pose"/>.</summary>
-    internal StringBuilder Pose(StringBuilder sb, Vector position, Rotation rotation)
+    internal StringBuilder Pose(StringBuilder sb, Vector position, Rotation rotation) =>
+        sb.PosePosition(position).Append(Orientation(rotation));
+
+    /// <summary>The second half of a pose, <c>,rx,ry,rz]</c>; the same text as <see cref="UrScriptText.PoseOrientation"/>.</summary>
+    internal ReadOnlySpan<char> Orientation(Rotation rotation)
     {
         long w = Bits(rotation.W), x = Bits(rotation.X), y = Bits(rotation.Y), z = Bits(rotation.Z);
         if (!_orientationKnown || w != _w || x != _x || y != _y || z != _z)
         {
-            _orientation.Clear().PoseOrientation(rotation);
+            _orientation = Keep(_builder.Clear().PoseOrientation(rotation));
             (_orientationKnown, _w, _x, _y, _z) = (true, w, x, y, z);
         }
-        return sb.PosePosition(position).Append(_orientation);
+        return _orientation;
     }
 
     /// <summary>Appends <c>, a=…, v=…, r=…)</c>; the same text as <see cref="UrScriptText.MotionParameters"/>.</summary>
-    internal StringBuilder MotionParameters(StringBuilder sb, double acceleration, double speed, double precision, bool joint)
+    internal StringBuilder MotionParameters(StringBuilder sb, double acceleration, double speed, double precision, bool joint) =>
+        sb.Append(Parameters(acceleration, speed, precision, joint));
+
+    /// <summary>The text <c>, a=…, v=…, r=…)</c>; the same as <see cref="UrScriptText.MotionParameters"/>.</summary>
+    internal ReadOnlySpan<char> Parameters(double acceleration, double speed, double precision, bool joint)
     {
         long a = Bits(acceleration), v = Bits(speed), r = Bits(precision);
         if (!_parametersKnown || a != _acceleration || v != _speed || r != _precision || joint != _joint)
         {
-            _parameters.Clear().MotionParameters(acceleration, speed, precision, joint);
+            _parameters = Keep(_builder.Clear().MotionParameters(acceleration, speed, precision, joint));
             (_parametersKnown, _acceleration, _speed, _precision, _joint) = (true, a, v, r, joint);
         }
-        return sb.Append(_parameters);
+        return _parameters;
+    }
+
+    private static char[] Keep(StringBuilder text)
+    {
+        var kept = new char[text.Length];
+        text.CopyTo(0, kept, kept.Length);
+        return kept;
     }
 
     private static long Bits(double value) => BitConverter.DoubleToInt64Bits(value);

@@ -15,6 +15,9 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
     private readonly UrRepeatedText _repeated = new();
+    private readonly TranslationDigits _digits = new();
+    private readonly KeptNumber _radiusText = new(), _lengthText = new(), _halfText = new();
+    private UrMoveLine? _moveLine;
     private int _target;
     private RobotAction? _lastMotion;
     private double _lastRadius;
@@ -73,6 +76,11 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         {
             case ActionTranslation or ActionRotation or ActionTransformation:
                 bool joint = cursor.MotionType == MotionType.Joint;
+                if (_inline && action is ActionTranslation move
+                    && (_moveLine ??= new UrMoveLine(_repeated, _digits)).TryWrite(sink, move, cursor, joint, _human))
+                {
+                    break;
+                }
                 _sb.Clear().Append(Indent).Append(joint ? "movej(" : "movep(");
                 PoseOrName(cursor.Position!.Value, cursor.Rotation!.Value);
                 _repeated.MotionParameters(_sb, cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
@@ -209,8 +217,9 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
     /// <remarks>
     /// A long program of short moves warns on every motion, so the comment line is written once into a reused character buffer
-    /// and from there to the file: numbers formatted in place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>),
-    /// a move's instruction too; only the text of other actions is made comment-safe, since the rest is fixed text and numbers.
+    /// and from there to the file: numbers formatted in place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>; the radius and the
+    /// length kept from the last warning, <see cref="KeptNumber"/>), a move's instruction too (its digits shared with the line's
+    /// description, <see cref="TranslationDigits"/>); only the text of other actions is made comment-safe, since the rest is fixed text and numbers.
     /// The warning's own string is made only while the job keeps warnings.
     /// </remarks>
     private void WarnBlend(RobotAction action, double radius, double length, string which)
@@ -225,17 +234,17 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         Span<char> line = _warning;
         int at = Put(line, 0, "  # WARNING: ");
         // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
-        at = translation is null ? Put(line, at, instruction!) : at + translation.WriteInstruction(line[at..]);
+        at = translation is null ? Put(line, at, instruction!) : at + _digits.WriteInstruction(translation, line[at..]);
         line[at++] = ' ';
         int start = at;
         at = Put(line, at, "the blend radius of ");
-        at += NumShortest.WriteGeneral(line[at..], radius);
+        at = _radiusText.Write(line, at, radius);
         at = Put(line, at, " mm is more than half of ");
         at = Put(line, at, which);
         at = Put(line, at, " motion (");
-        at += NumShortest.WriteGeneral(line[at..], Math.Round(length, 3));
+        at = _lengthText.Write(line, at, Math.Round(length, 3));
         at = Put(line, at, " mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(");
-        at += NumShortest.WriteGeneral(line[at..], Math.Floor(length / 2 * 1000) / 1000);
+        at = _halfText.Write(line, at, Math.Floor(length / 2 * 1000) / 1000);
         at = Put(line, at, ") or less around short motions.");
         ReadOnlySpan<char> message = line[start..at];
         job.Warn(action, $"{message}");
@@ -363,7 +372,17 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     {
         if (_human)
         {
-            _sb.Append("  # [").AppendDescription(action).Append(']');
+            _sb.Append("  # [");
+            if (action is ActionTranslation move)
+            {
+                Span<char> buffer = stackalloc char[ActionTranslation.MaxDescriptionChars];
+                _sb.Append(buffer[.._digits.WriteDescription(move, buffer)]);
+            }
+            else
+            {
+                _sb.AppendDescription(action);
+            }
+            _sb.Append(']');
         }
         sink.Add(_sb);
     }

@@ -1,0 +1,106 @@
+using System.Runtime.CompilerServices;
+
+namespace Machina;
+
+/// <summary>
+/// The three numbers of the last move asked about, as text: a compile that warns on a move quotes it twice, its instruction in
+/// the warning (<see cref="ActionTranslation.WriteInstruction"/>, shortest round-trip numbers) and its description in the line's
+/// comment (<see cref="ActionTranslation.WriteDescription"/>, 3 decimals). When each number reads back exactly from at most 3
+/// decimals the two show the same digits, which are then written once for both.
+/// </summary>
+internal sealed class TranslationDigits
+{
+    private readonly char[] _digits = new char[3 * NumAppend.MaxChars];
+    private int _endX, _endY, _endZ;
+    private ActionTranslation? _move;
+    private bool _shared;
+
+    /// <summary>Writes the text of <see cref="ActionTranslation.WriteInstruction"/> for <paramref name="move"/>; returns its length.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal int WriteInstruction(ActionTranslation move, Span<char> destination)
+    {
+        if (!Prepare(move))
+        {
+            return move.WriteInstruction(destination);
+        }
+        ReadOnlySpan<char> name = move.Relative ? "Move(" : "MoveTo(";
+        name.CopyTo(destination);
+        int at = name.Length;
+        at = Numbers(destination, at, ',');
+        destination[at++] = ')';
+        destination[at++] = ';';
+        return at;
+    }
+
+    /// <summary>Writes the text of <see cref="ActionTranslation.WriteDescription"/> for <paramref name="move"/>; returns its length.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal int WriteDescription(ActionTranslation move, Span<char> destination)
+    {
+        if (!Prepare(move))
+        {
+            return move.WriteDescription(destination);
+        }
+        ReadOnlySpan<char> verb = move.Relative ? "Move [" : "Move to [";
+        verb.CopyTo(destination);
+        int at = verb.Length;
+        at = Numbers(destination, at, ' ');
+        "] mm".CopyTo(destination[at..]);
+        return at + 4;
+    }
+
+    /// <summary>Copies the three numbers at <paramref name="at"/>, separated by ',' (instruction) or ", " (description).</summary>
+    private int Numbers(Span<char> destination, int at, char style)
+    {
+        ReadOnlySpan<char> digits = _digits;
+        digits[.._endX].CopyTo(destination[at..]);
+        at += _endX;
+        at = Separator(destination, at, style);
+        digits[_endX.._endY].CopyTo(destination[at..]);
+        at += _endY - _endX;
+        at = Separator(destination, at, style);
+        digits[_endY.._endZ].CopyTo(destination[at..]);
+        return at + _endZ - _endY;
+    }
+
+    private static int Separator(Span<char> destination, int at, char style)
+    {
+        destination[at++] = ',';
+        if (style == ' ')
+        {
+            destination[at++] = ' ';
+        }
+        return at;
+    }
+
+    /// <summary>Makes the digits of <paramref name="move"/> current; false when its two texts differ and each must be written its own way.</summary>
+    private bool Prepare(ActionTranslation move)
+    {
+        if (ReferenceEquals(move, _move))
+        {
+            return _shared;
+        }
+        _move = move;
+        Vector v = move.Translation;
+        Span<char> digits = _digits;
+        _shared = TryMilli(digits, 0, v.X, out _endX) && TryMilli(digits, _endX, v.Y, out _endY) && TryMilli(digits, _endY, v.Z, out _endZ);
+        return _shared;
+    }
+
+    /// <summary>
+    /// Writes <paramref name="value"/> when it reads back exactly from at most 3 decimals and is below 10^14 in size: then
+    /// <see cref="NumShortest.WriteRoundTrip"/> and <see cref="NumAppend.WriteF"/> with 3 decimals both write
+    /// <see cref="NumAppend.WriteDecimal"/> of the same thousandths (−0 and 0 as "0").
+    /// </summary>
+    private static bool TryMilli(Span<char> digits, int at, double value, out int end)
+    {
+        double size = Math.Abs(value);
+        double milli = NumAppend.RoundEven(size * 1e3);
+        if (!(size < 1e14 && milli / 1e3 == size))
+        {
+            end = at;
+            return false;
+        }
+        end = at + NumAppend.WriteDecimal(digits[at..], value < 0, (long)milli, 3);
+        return true;
+    }
+}

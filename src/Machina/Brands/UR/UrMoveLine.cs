@@ -1,0 +1,64 @@
+using System.Runtime.CompilerServices;
+
+namespace Machina;
+
+/// <summary>
+/// Writes a whole <c>movep</c>/<c>movej</c> line of a move (<see cref="ActionTranslation"/>) with an inline pose into one reused
+/// array, as <see cref="UrScriptWriter"/> writes it through a builder: the position's three numbers, the kept orientation and
+/// parameters (<see cref="UrRepeatedText"/>), then the move's description (<see cref="TranslationDigits"/>). A toolpath changes
+/// only its position from move to move, so a few copies replace a dozen appends to a builder.
+/// </summary>
+internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digits)
+{
+    private const int MostChars = 16 + 3 * (NumAppend.MaxChars + 1) + ActionTranslation.MaxDescriptionChars + 8;
+
+    private char[] _line = new char[256];
+
+    /// <summary>
+    /// Writes the line into <paramref name="sink"/>; false (nothing written) when a coordinate is too large for the fast digits,
+    /// and the caller writes the line the general way.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal bool TryWrite(LineSink sink, ActionTranslation move, RobotCursor cursor, bool joint, bool human)
+    {
+        ReadOnlySpan<char> orientation = repeated.Orientation(cursor.Rotation!.Value);
+        ReadOnlySpan<char> parameters = repeated.Parameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
+        int need = MostChars + orientation.Length + parameters.Length;
+        if (_line.Length < need)
+        {
+            _line = new char[need * 2];
+        }
+        Span<char> line = _line;
+        ReadOnlySpan<char> start = joint ? "  movej(p[" : "  movep(p[";
+        start.CopyTo(line);
+        int at = start.Length;
+        Vector position = cursor.Position!.Value;
+        ReadOnlySpan<double> xyz = [position.X, position.Y, position.Z];
+        for (int i = 0; i < xyz.Length; i++)
+        {
+            if (i > 0)
+            {
+                line[at++] = ',';
+            }
+            int written = NumAppend.TryWriteScaled(line[at..], xyz[i] * UrScriptText.Mm, 6);
+            if (written < 0)
+            {
+                return false;
+            }
+            at += written;
+        }
+        orientation.CopyTo(line[at..]);
+        at += orientation.Length;
+        parameters.CopyTo(line[at..]);
+        at += parameters.Length;
+        if (human)
+        {
+            "  # [".CopyTo(line[at..]);
+            at += 5;
+            at += digits.WriteDescription(move, line[at..]);
+            line[at++] = ']';
+        }
+        sink.Add(line[..at]);
+        return true;
+    }
+}

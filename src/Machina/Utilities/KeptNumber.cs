@@ -1,0 +1,27 @@
+namespace Machina;
+
+/// <summary>
+/// The text of the last number written (<see cref="NumShortest.WriteGeneral"/>, as <see cref="Num.G"/>), kept: a warning
+/// repeated on every short move quotes the same blend radius each time and the same length twice in a row, which are then
+/// copied instead of formatted again.
+/// </summary>
+/// <remarks>Values are compared by their bits, so that a text is reused only for exactly the number it was written from.</remarks>
+internal sealed class KeptNumber
+{
+    private readonly char[] _text = new char[NumAppend.MaxChars];
+    private int _length = -1;
+    private long _bits;
+
+    /// <summary>Writes the text of <paramref name="value"/> at <paramref name="at"/>; returns the position after it.</summary>
+    internal int Write(Span<char> destination, int at, double value)
+    {
+        long bits = BitConverter.DoubleToInt64Bits(value);
+        if (_length < 0 || bits != _bits)
+        {
+            _length = NumShortest.WriteGeneral(_text, value);
+            _bits = bits;
+        }
+        _text.AsSpan(0, _length).CopyTo(destination[at..]);
+        return at + _length;
+    }
+}
