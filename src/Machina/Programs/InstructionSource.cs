@@ -104,14 +104,14 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     public IEnumerator<RobotAction> GetEnumerator()
     {
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
-        using var batches = new BlockingCollection<Batch>(BatchesAhead);
+        using var batches = new BatchHandOff<Batch>(BatchesAhead, stop.Token);
         // Batches the compiler is done with go back to the reading thread, so that a pass allocates only a few.
         var free = new ConcurrentQueue<Batch>();
         Task reading = Task.Factory.StartNew(() => Read(batches, free, stop.Token), stop.Token, TaskCreationOptions.LongRunning, TaskScheduler.Default);
         try
         {
             int id = 0;
-            foreach (Batch batch in batches.GetConsumingEnumerable(cancellationToken))
+            while (batches.TryTake(out Batch batch, cancellationToken))
             {
                 for (int i = 0; i < batch.Count; i++)
                 {
@@ -150,7 +150,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// The reading thread: parses the text into batches. Whatever stops it (the end, a parse error, a file that cannot be
     /// read) is handed over after the statements before it, so the compiler meets it in order; nothing is silently cut.
     /// </summary>
-    private void Read(BlockingCollection<Batch> batches, ConcurrentQueue<Batch> free, CancellationToken stop)
+    private void Read(BatchHandOff<Batch> batches, ConcurrentQueue<Batch> free, CancellationToken stop)
     {
         var batch = new Batch();
         try
@@ -166,7 +166,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                     batch.Columns[batch.Count] = parser.Column;
                     if (++batch.Count == BatchSize)
                     {
-                        batches.Add(batch, stop);
+                        batches.Add(batch);
                         batch = free.TryDequeue(out Batch? done) ? done : new Batch();
                     }
                 }
@@ -177,7 +177,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
             }
             if (batch.Count > 0 || batch.Error is not null)
             {
-                batches.Add(batch, stop);
+                batches.Add(batch);
             }
         }
         catch (OperationCanceledException) when (stop.IsCancellationRequested)
@@ -186,7 +186,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
         }
         finally
         {
-            batches.CompleteAdding();
+            batches.Complete();
         }
     }
 
