@@ -17,35 +17,21 @@ internal sealed class TranslationDigits
 
     /// <summary>Writes the text of <see cref="ActionTranslation.WriteInstruction"/> for <paramref name="move"/>; returns its length.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal int WriteInstruction(ActionTranslation move, Span<char> destination)
-    {
-        if (!Prepare(move))
-        {
-            return move.WriteInstruction(destination);
-        }
-        ReadOnlySpan<char> name = move.Relative ? "Move(" : "MoveTo(";
-        name.CopyTo(destination);
-        int at = name.Length;
-        at = Numbers(destination, at, ',');
-        destination[at++] = ')';
-        destination[at++] = ';';
-        return at;
-    }
+    internal int WriteInstruction(ActionTranslation move, Span<char> destination) =>
+        Prepare(move) ? Quote(destination, move.Relative ? "Move(" : "MoveTo(", ',', ");") : move.WriteInstruction(destination);
 
     /// <summary>Writes the text of <see cref="ActionTranslation.WriteDescription"/> for <paramref name="move"/>; returns its length.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal int WriteDescription(ActionTranslation move, Span<char> destination)
+    internal int WriteDescription(ActionTranslation move, Span<char> destination) =>
+        Prepare(move) ? Quote(destination, move.Relative ? "Move [" : "Move to [", ' ', "] mm") : move.WriteDescription(destination);
+
+    /// <summary>Writes <paramref name="start"/>, the kept numbers and <paramref name="end"/>; returns the length.</summary>
+    private int Quote(Span<char> destination, ReadOnlySpan<char> start, char style, ReadOnlySpan<char> end)
     {
-        if (!Prepare(move))
-        {
-            return move.WriteDescription(destination);
-        }
-        ReadOnlySpan<char> verb = move.Relative ? "Move [" : "Move to [";
-        verb.CopyTo(destination);
-        int at = verb.Length;
-        at = Numbers(destination, at, ' ');
-        "] mm".CopyTo(destination[at..]);
-        return at + 4;
+        start.CopyTo(destination);
+        int at = Numbers(destination, start.Length, style);
+        end.CopyTo(destination[at..]);
+        return at + end.Length;
     }
 
     /// <summary>Copies the three numbers at <paramref name="at"/>, separated by ',' (instruction) or ", " (description).</summary>

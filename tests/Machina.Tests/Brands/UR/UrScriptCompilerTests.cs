@@ -38,6 +38,49 @@ public class UrScriptCompilerTests
     }
 
     [Fact]
+    public void Emit_MovesOfEveryKind_LinesAsTheBuilderWroteThem()
+    {
+        // Moves go through one reused array (UrMoveLine), rotations and coordinates too large for its digits through the
+        // builder; the lines here are the builder's, written before the array existed: short and long decimals, tiny and
+        // negative numbers, joint motion, changed settings, a turn in between, a blend warning, and the largest coordinate allowed (coordinates beyond 1 km are refused).
+        var body = Body(Compile(bot =>
+        {
+            Start(bot);
+            bot.Move(0.0004, -7.25, 1e-7);
+            bot.Move(12.3456789, 0, -0.001);
+            bot.Rotate(0, 0, 1, 30);
+            bot.Move(1, 2, 3);
+            bot.MotionMode("joint");
+            bot.SpeedTo(45);
+            bot.MoveTo(-1.5, 250.125, 600);
+            bot.MotionMode("linear");
+            bot.PrecisionTo(0);
+            bot.MoveTo(999_999.9995, 0, 600);
+        }, CompileOptions.Default));
+        Assert.Equal(ExpectedMoves, body);
+    }
+
+    private static readonly string[] ExpectedMoves =
+    [
+        "  movep(p[0.4,0.3,0.5,0,3.141593,0], v=0.02, r=0.005)  # [Move to [400, 300, 500] mm]",
+        "  # WARNING: MoveTo(400,300,500); the blend radius of 5 mm is more than half of the next motion (7.25 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(3.625) or less around short motions.",
+        "  # WARNING: Move(0.0004,-7.25,1E-07); the blend radius of 5 mm is more than half of this motion (7.25 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(3.625) or less around short motions.",
+        "  movep(p[0.4,0.29275,0.5,0,3.141593,0], v=0.02, r=0.005)  # [Move [0, -7.25, 0] mm]",
+        "  movep(p[0.412346,0.29275,0.499999,0,3.141593,0], v=0.02, r=0.005)  # [Move [12.346, 0, -0.001] mm]",
+        "  # WARNING: Move(12.3456789,0,-0.001); the blend radius of 5 mm is more than half of the next motion (0 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(0) or less around short motions.",
+        "  # WARNING: Rotate(0,0,1,30); the blend radius of 5 mm is more than half of this motion (0 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(0) or less around short motions.",
+        "  movep(p[0.412346,0.29275,0.499999,-0.813104,3.034545,0], v=0.02, r=0.005)  # [Rotate 30 deg around [0, 0, 1]]",
+        "  # WARNING: Move(1,2,3); the blend radius of 5 mm is more than half of this motion (3.742 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(1.87) or less around short motions.",
+        "  movep(p[0.413346,0.29475,0.502999,-0.813104,3.034545,0], v=0.02, r=0.005)  # [Move [1, 2, 3] mm]",
+        "  # [Set motion type to 'Joint']",
+        "  # [Set motion speed to 45 mm/s or deg/s]",
+        "  movej(p[-0.0015,0.250125,0.6,-0.813104,3.034545,0], v=0.785398, r=0.005)  # [Move to [-1.5, 250.125, 600] mm]",
+        "  # [Set motion type to 'Linear']",
+        "  # [Set precision radius to 0 mm]",
+        "  movep(p[1000,0,0.6,-0.813104,3.034545,0], v=0.045, r=0)  # [Move to [1000000, 0, 600] mm]",
+    ];
+
+    [Fact]
     public void Emit_JointMotionMode_WritesMovejWithPoseAndAngularParameters()
     {
         var body = Body(Compile(bot => { bot.MotionMode("joint"); bot.SpeedTo(90); bot.AccelerationTo(180); Start(bot); }));
