@@ -39,6 +39,7 @@ internal sealed class ExternalToolScenario(RobotType brand, bool native) : Proce
         long peak = 0;
         for (int i = 0; i < runs; i++)
         {
+            Settle(folder);
             (double wall, double cpu, long resident) = RunTimed(tool, ["compile", file, "--brand", brand.ToString(), "--out", folder, "--name", "Bench"], Timeout(size));
             walls.Add(wall);
             cpus.Add(cpu);
@@ -78,6 +79,21 @@ internal sealed class ExternalToolScenario(RobotType brand, bool native) : Proce
             folder = Path.GetDirectoryName(folder);
         }
         return folder ?? throw new InvalidOperationException("Machina.sln not found above the benchmarks.");
+    }
+
+    /// <summary>
+    /// Before a run, outside its time: removes the last run's output and waits until the disk has taken what is written
+    /// (<c>sync</c>). Otherwise each run also paid for dropping the last run's file (the URScript file is 313 MB) while the
+    /// kernel was still writing it out, which a compile into an empty folder, or over an old file long on the disk, does not.
+    /// </summary>
+    private static void Settle(string folder)
+    {
+        if (Directory.Exists(folder))
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+        using Process? sync = Process.Start(new ProcessStartInfo("sync") { UseShellExecute = false });
+        sync?.WaitForExit();
     }
 
     /// <summary>Runs <paramref name="tool"/> under /usr/bin/time; its wall time from outside, processor time and peak resident memory.</summary>
