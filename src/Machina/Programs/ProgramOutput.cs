@@ -61,10 +61,33 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
             _createdFolder = true;
         }
         string path = Path.Combine(folder, name + "." + extension);
-        var writer = new StreamWriter(replaceAtEnd ? path + PartialSuffix : path, append: false, encoding, bufferSize: 1 << 16);
+        var writer = new StreamWriter(OpenForWriting(replaceAtEnd ? path + PartialSuffix : path), encoding, bufferSize: 1 << 16);
         _writers.Add(writer);
         Paths.Add(path);
         return new WriterLineSink(writer, newLine);
+    }
+
+    /// <summary>
+    /// Opens a file for writing as <see cref="StreamWriter"/> does, but creates a new file without emptying it: on ext4, emptying
+    /// a file (even a new, empty one, which .NET's <see cref="FileMode.Create"/> does) makes closing it write the whole file out
+    /// at once, in the compile's own time (a tenth of a second for a 313 MB script). An existing file is still emptied, so that
+    /// rewriting it in place keeps that protection; replacing one by renaming over it (<c>replaceAtEnd</c>) has its own.
+    /// </summary>
+    private static FileStream OpenForWriting(string path)
+    {
+        const int buffer = 4096;
+        if (!File.Exists(path))
+        {
+            try
+            {
+                return new FileStream(path, FileMode.CreateNew, FileAccess.Write, FileShare.Read, buffer, FileOptions.SequentialScan);
+            }
+            catch (IOException) when (File.Exists(path))
+            {
+                // Created by someone else since the check: emptied and written over, as before.
+            }
+        }
+        return new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.Read, buffer, FileOptions.SequentialScan);
     }
 
     /// <summary>A spool in a temporary file (not in the output folder), deleted when it is closed.</summary>

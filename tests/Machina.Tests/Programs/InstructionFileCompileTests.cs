@@ -97,6 +97,28 @@ public sealed class InstructionFileCompileTests : IDisposable
     }
 
     [Fact]
+    public void CompileToFolder_OverALongerProgramAndALeftOverPartialFile_ExactlyTheNewBytes()
+    {
+        // New files are created without being emptied, existing ones are emptied: either way nothing of an older, longer file
+        // may remain at the end, neither of the program written before nor of a ".partial" file a killed compile left.
+        string file = Path.Combine(_root, "short.machina");
+        File.WriteAllText(file, "MoveTo(300, 0, 400);\nMove(0, 10, 0);\n");
+        string folder = Path.Combine(_root, "over");
+        FolderCompileResult first = Instructions.CompileToFolder(file, RobotType.UR, folder);
+        byte[] expected = File.ReadAllBytes(Assert.Single(first.Paths));
+        string script = first.Paths[0];
+        File.WriteAllText(script, new string('#', 50_000));
+        File.WriteAllText(script + FolderProgramOutput.PartialSuffix, new string('%', 50_000));
+
+        FolderCompileResult again = Instructions.CompileToFolder(file, RobotType.UR, folder);
+
+        Assert.Equal(script, Assert.Single(again.Paths));
+        Assert.Equal(expected, File.ReadAllBytes(script));
+        Assert.Contains("movep(p[0.3,0.01,0.4,", File.ReadAllText(script), StringComparison.Ordinal);
+        Assert.False(File.Exists(script + FolderProgramOutput.PartialSuffix));
+    }
+
+    [Fact]
     public void CompileToFolder_Warning_CarriesLineAndColumnOfItsStatement()
     {
         string file = Path.Combine(_root, "print.machina");
