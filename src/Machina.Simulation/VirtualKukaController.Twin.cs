@@ -113,15 +113,35 @@ public sealed partial class VirtualKukaController
             }
             if (!run.IsCancellationRequested)
             {
-                if (state == KrlProgramState.Failed)
-                {
-                    RecordError(twin.Error ?? "the driver stopped");
-                }
+                EndDriver(state, twin.Error);
                 return;
             }
             twin.ClearEki(DriverChannel);
             Pendant("program reset: machina_kuka_driver starts again from the top");
         }
+    }
+
+    /// <summary>
+    /// The driver program ended without a reset (a runtime error, a HALT after a failure it reported): it no longer opens its
+    /// channel, so the controller says so on the pendant and stops listening on the driver port, as a KR C4 whose channel is
+    /// closed refuses the connection. A host that connects again is told at once rather than waiting for a state that never comes.
+    /// </summary>
+    private void EndDriver(KrlProgramState state, string? error)
+    {
+        if (state == KrlProgramState.Failed)
+        {
+            RecordError(error ?? "the driver stopped");
+        }
+        try
+        {
+            _driverListener?.Stop();
+        }
+        catch (SocketException e)
+        {
+            RecordError("stopping the driver port: " + e.Message);
+        }
+        // After the port closed: whoever reads this line finds connections refused.
+        Pendant($"machina_kuka_driver ended ({state.ToString().ToLowerInvariant()}): the driver port no longer accepts connections; reset the program to serve again");
     }
 
     /// <summary>

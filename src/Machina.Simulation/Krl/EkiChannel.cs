@@ -13,6 +13,14 @@ namespace Machina.Simulation.Krl;
 internal sealed class EkiChannel(string name, EkiConfiguration configuration, KrlTwinController controller) : IDisposable
 {
     private readonly Lock _gate = new();
+
+    /// <summary>
+    /// Held while the connection changes together with the flags it writes (ALIVE, and a document's Set_Flag): EKI_Close and
+    /// EKI_Clear return only once a disconnection under way has put its flag down, and a connection the channel let go of
+    /// writes no flag after. Without it, a cleared channel's reader could put $FLAG[1] down after the next channel's client
+    /// had put it up: the driver never saw that client, never greeted it and never listened again.
+    /// </summary>
+    private readonly Lock _link = new();
     private readonly Dictionary<string, LinkedList<string>> _memories = configuration.Receive
         .Where(e => e.Type is not null).ToDictionary(e => e.Tag, _ => new LinkedList<string>(), StringComparer.Ordinal);
     private readonly Dictionary<string, string> _toSend = new(StringComparer.Ordinal);
@@ -135,22 +143,25 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     /// <summary>Makes <paramref name="client"/> the channel's connection (flag set before this returns) and reads it until it ends.</summary>
     private Task Attach(TcpListener listener, TcpClient client, CancellationToken token)
     {
-        lock (_gate)
+        lock (_link)
         {
-            if (!ReferenceEquals(listener, _reserved))
+            lock (_gate)
             {
-                listener.Stop();
+                if (!ReferenceEquals(listener, _reserved))
+                {
+                    listener.Stop();
+                }
+                _listener = null;
+                if (token.IsCancellationRequested)
+                {
+                    client.Dispose();
+                    return Task.CompletedTask;
+                }
+                _client = client;
+                _outbox = new EkiOutbox(client.GetStream());
             }
-            _listener = null;
-            if (token.IsCancellationRequested)
-            {
-                client.Dispose();
-                return Task.CompletedTask;
-            }
-            _client = client;
-            _outbox = new EkiOutbox(client.GetStream());
+            Alive(true);
         }
-        Alive(true);
         return Task.Run(() => ReadAsync(client, token), CancellationToken.None);
     }
 
@@ -177,7 +188,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             }
             if (topLevel)
             {
-                Commit(document, flags);
+                Commit(client, document, flags);
             }
         };
         var bytes = new byte[8192];
@@ -208,53 +219,73 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         Disconnect(client);
     }
 
-    /// <summary>Stores a complete document's values, then sets its flags (a memory over its limit closes the connection).</summary>
-    private void Commit(List<(string Tag, string Value)> document, List<int> flags)
+    /// <summary>
+    /// Stores a complete document's values, then sets its flags (a memory over its limit closes the connection). A document
+    /// that arrives on a connection the channel already let go of (closed, cleared) is lost, as on the controller.
+    /// </summary>
+    private void Commit(TcpClient client, List<(string Tag, string Value)> document, List<int> flags)
     {
-        // The seam sees the document before the program can take any of its values.
-        controller.Options.Seam?.Received(this, [.. document]);
         bool overflow = false;
-        lock (_gate)
+        if (IsClient(client))
         {
-            foreach ((string tag, string value) in document)
+            // The seam sees the document before the program can take any of its values.
+            controller.Options.Seam?.Received(this, [.. document]);
+            lock (_link)
             {
-                LinkedList<string> memory = _memories[tag];
-                memory.AddLast(value);
-                overflow |= memory.Count > Configuration.Limit;
+                if (IsClient(client))
+                {
+                    lock (_gate)
+                    {
+                        foreach ((string tag, string value) in document)
+                        {
+                            LinkedList<string> memory = _memories[tag];
+                            memory.AddLast(value);
+                            overflow |= memory.Count > Configuration.Limit;
+                        }
+                    }
+                    foreach (int flag in flags)
+                    {
+                        controller.SetFlag(flag, true);
+                    }
+                }
             }
         }
         document.Clear();
-        foreach (int flag in flags)
-        {
-            controller.SetFlag(flag, true);
-        }
         flags.Clear();
         if (overflow)
         {
             controller.Pendant.Log($"EthernetKRL {Name}: a memory holds more than {Configuration.Limit} elements; the connection is closed");
-            TcpClient? client;
-            lock (_gate)
-            {
-                client = _client;
-            }
-            client?.Dispose();
+            // Only this reader's connection, which was still the channel's when its values were stored.
+            client.Dispose();
         }
     }
 
-    private void Disconnect(TcpClient client)
+    private bool IsClient(TcpClient client)
     {
         lock (_gate)
         {
-            if (_client != client)
-            {
-                return;
-            }
-            _client = null;
-            _outbox = null;
+            return ReferenceEquals(_client, client);
         }
-        client.Dispose();
-        controller.Options.Seam?.Closed(this, client);
-        Alive(false);
+    }
+
+    /// <summary>Ends the connection of <paramref name="client"/> if it is still the channel's, its flag down before this returns.</summary>
+    private void Disconnect(TcpClient client)
+    {
+        lock (_link)
+        {
+            lock (_gate)
+            {
+                if (_client != client)
+                {
+                    return;
+                }
+                _client = null;
+                _outbox = null;
+            }
+            client.Dispose();
+            controller.Options.Seam?.Closed(this, client);
+            Alive(false);
+        }
     }
 
     private void Alive(bool value)
@@ -388,20 +419,24 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             outbox = _outbox;
         }
         outbox?.Drain();
-        TcpClient? client;
-        lock (_gate)
+        // Under the link: a disconnection the reader began is finished (its flag down) before the channel counts as closed.
+        lock (_link)
         {
-            _stop?.Cancel();
-            if (!ReferenceEquals(_listener, _reserved))
+            TcpClient? client;
+            lock (_gate)
             {
-                _listener?.Stop();
+                _stop?.Cancel();
+                if (!ReferenceEquals(_listener, _reserved))
+                {
+                    _listener?.Stop();
+                }
+                _listener = null;
+                client = _client;
             }
-            _listener = null;
-            client = _client;
-        }
-        if (client is not null)
-        {
-            Disconnect(client);
+            if (client is not null)
+            {
+                Disconnect(client);
+            }
         }
     }
 

@@ -48,6 +48,26 @@ public class VirtualKukaFailureTests
     }
 
     [Fact]
+    public async Task DriverHalted_SaysSoOnThePendant_AndTheNextConnectionIsRefused()
+    {
+        await using var controller = await KukaTestSupport.StartKukaAsync();
+        using (var client = await KukaTestSupport.ConnectRawAsync(controller.Port))
+        {
+            var reader = new KukaXmlReader();
+            await KukaTestSupport.ReadElementAsync(client, reader);
+            await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes("<DT><DR>" + Action(1, "3", "0 -90 90 0 170 0") + "</DR></DT>"));
+            Assert.Equal(KukaProtocol.Failure, (await KukaTestSupport.ReadElementAsync(client, reader)).Name);
+        }
+        const string Ended = "machina_kuka_driver ended (stopped): the driver port no longer accepts connections; reset the program to serve again";
+        await Machina.Tests.Support.Eventually.TrueAsync(() => controller.PendantMessages.Contains(Ended), "the driver's end on the pendant", Timeout);
+
+        // A driver that halted never opens its channel again: a host is refused at once, not left waiting for a state.
+        using var late = new TcpClient();
+        var refused = await Assert.ThrowsAsync<SocketException>(() => late.ConnectAsync(IPAddress.Loopback, controller.Port));
+        Assert.Equal(SocketError.ConnectionRefused, refused.SocketErrorCode);
+    }
+
+    [Fact]
     public async Task HostDriver_DecodesFailure_ListenerGetsIdReasonAndCode()
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
