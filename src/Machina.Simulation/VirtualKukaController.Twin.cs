@@ -141,7 +141,7 @@ public sealed partial class VirtualKukaController
             RecordError("stopping the driver port: " + e.Message);
         }
         // After the port closed: whoever reads this line finds connections refused.
-        Pendant($"machina_kuka_driver ended ({state.ToString().ToLowerInvariant()}): the driver port no longer accepts connections; reset the program to serve again");
+        Pendant($"machina_kuka_driver ended ({state.ToString().ToLowerInvariant()}): the driver port no longer accepts connections; restart the virtual controller to serve again (on a KR C4: reset and start the program)");
     }
 
     /// <summary>

@@ -58,7 +58,7 @@ public class VirtualKukaFailureTests
             await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes("<DT><DR>" + Action(1, "3", "0 -90 90 0 170 0") + "</DR></DT>"));
             Assert.Equal(KukaProtocol.Failure, (await KukaTestSupport.ReadElementAsync(client, reader)).Name);
         }
-        const string Ended = "machina_kuka_driver ended (stopped): the driver port no longer accepts connections; reset the program to serve again";
+        const string Ended = "machina_kuka_driver ended (stopped): the driver port no longer accepts connections; restart the virtual controller to serve again (on a KR C4: reset and start the program)";
         await Machina.Tests.Support.Eventually.TrueAsync(() => controller.PendantMessages.Contains(Ended), "the driver's end on the pendant", Timeout);
 
         // A driver that halted never opens its channel again: a host is refused at once, not left waiting for a state.
