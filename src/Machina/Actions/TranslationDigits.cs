@@ -73,15 +73,13 @@ internal sealed class TranslationDigits
     }
 
     /// <summary>
-    /// Writes <paramref name="value"/> when it reads back exactly from at most 3 decimals and is below 10^14 in size: then
+    /// Writes <paramref name="value"/> when it reads back exactly from at most 3 decimals (<see cref="NumShortest.TryThousandths"/>): then
     /// <see cref="NumShortest.WriteRoundTrip"/> and <see cref="NumAppend.WriteF"/> with 3 decimals both write
     /// <see cref="NumAppend.WriteDecimal"/> of the same thousandths (−0 and 0 as "0").
     /// </summary>
     private static bool TryMilli(Span<char> digits, int at, double value, out int end)
     {
-        double size = Math.Abs(value);
-        double milli = NumAppend.RoundEven(size * 1e3);
-        if (!(size < 1e14 && milli / 1e3 == size))
+        if (!NumShortest.TryThousandths(Math.Abs(value), out double milli))
         {
             end = at;
             return false;

@@ -56,6 +56,33 @@ internal static class NumAppend
     }
 
     /// <summary>
+    /// Writes the three coordinates of <paramref name="position"/>, each times <paramref name="scale"/> as <see cref="TryWriteScaled"/>
+    /// writes it, <paramref name="separator"/> between them, at <paramref name="at"/> (room for three numbers and two
+    /// separators); returns the position after them, or −1 when one is too large for these digits and the caller must write
+    /// the line another way. The move lines of RAPID and URScript begin so.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal static int TryWriteCoordinates(Span<char> destination, int at, Vector position, double scale, int decimals, ReadOnlySpan<char> separator)
+    {
+        ReadOnlySpan<double> xyz = [position.X, position.Y, position.Z];
+        for (int i = 0; i < xyz.Length; i++)
+        {
+            if (i > 0)
+            {
+                separator.CopyTo(destination[at..]);
+                at += separator.Length;
+            }
+            int written = TryWriteScaled(destination[at..], xyz[i] * scale, decimals);
+            if (written < 0)
+            {
+                return -1;
+            }
+            at += written;
+        }
+        return at;
+    }
+
+    /// <summary>
     /// Writes <paramref name="mantissa"/> · 10^−<paramref name="decimals"/> (0–9 decimals; the mantissa below 10^18) in plain
     /// decimal notation, trailing zeros of the fraction removed, '-' first when <paramref name="negative"/> and the number is not
     /// 0; returns the number of characters. Digits are written by hand: the general integer formatter took about 5 % of a RAPID compile.

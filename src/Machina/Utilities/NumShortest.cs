@@ -31,16 +31,11 @@ internal static class NumShortest
         // division instead of one per number of decimals tried. It succeeds exactly when some count of decimals up to 3 does
         // (below 10^15 the scaled value rounds to that decimal's digits), and WriteDecimal drops the trailing zeros, so the
         // text is the one the search from 0 decimals finds; when it fails below 10^15, the search can start at 4.
-        double milli = NumAppend.RoundEven(size * 1e3);
-        int first = 0;
-        if (milli < 1e15)
+        if (TryThousandths(size, out double milli))
         {
-            if (milli / 1e3 == size)
-            {
-                return NumAppend.WriteDecimal(destination, value < 0, (long)milli, 3);
-            }
-            first = 4;
+            return NumAppend.WriteDecimal(destination, value < 0, (long)milli, 3);
         }
+        int first = milli < 1e15 ? 4 : 0;
         for (int decimals = first; decimals < Pow10.Length; decimals++)
         {
             double scaled = NumAppend.RoundEven(size * Pow10[decimals]);
@@ -56,6 +51,17 @@ internal static class NumShortest
             }
         }
         return -1;
+    }
+
+    /// <summary>
+    /// True when <paramref name="size"/> (not negative) reads back exactly from at most 3 decimals, with fewer than 10^15
+    /// thousandths: <paramref name="milli"/> is then its count of thousandths (always the size · 1000 rounded to a whole number).
+    /// </summary>
+    internal static bool TryThousandths(double size, out double milli)
+    {
+        milli = NumAppend.RoundEven(size * 1e3);
+        // Both are exact doubles, so the division is correctly rounded: the double that reading the decimal gives.
+        return milli < 1e15 && milli / 1e3 == size;
     }
 
     /// <summary>Writes exactly what <c>Num.Clean(value).ToString("R", invariant)</c> writes; returns the number of characters.</summary>

@@ -32,20 +32,10 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
         ReadOnlySpan<char> start = joint ? "  movej(p[" : "  movep(p[";
         start.CopyTo(line);
         int at = start.Length;
-        Vector position = cursor.Position!.Value;
-        ReadOnlySpan<double> xyz = [position.X, position.Y, position.Z];
-        for (int i = 0; i < xyz.Length; i++)
+        at = NumAppend.TryWriteCoordinates(line, at, cursor.Position!.Value, UrScriptText.Mm, 6, ",");
+        if (at < 0)
         {
-            if (i > 0)
-            {
-                line[at++] = ',';
-            }
-            int written = NumAppend.TryWriteScaled(line[at..], xyz[i] * UrScriptText.Mm, 6);
-            if (written < 0)
-            {
-                return false;
-            }
-            at += written;
+            return false;
         }
         orientation.CopyTo(line[at..]);
         at += orientation.Length;

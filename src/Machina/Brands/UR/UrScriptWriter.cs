@@ -372,17 +372,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     {
         if (_human)
         {
-            _sb.Append("  # [");
-            if (action is ActionTranslation move)
-            {
-                Span<char> buffer = stackalloc char[ActionTranslation.MaxDescriptionChars];
-                _sb.Append(buffer[.._digits.WriteDescription(move, buffer)]);
-            }
-            else
-            {
-                _sb.AppendDescription(action);
-            }
-            _sb.Append(']');
+            _sb.Append("  # [").AppendDescription(action).Append(']');
         }
         sink.Add(_sb);
     }

@@ -51,20 +51,10 @@ internal sealed class RapidMoveLine
         int at = start.Length;
         line[at++] = '[';
         line[at++] = '[';
-        ReadOnlySpan<double> xyz = [position.X, position.Y, position.Z];
-        for (int i = 0; i < xyz.Length; i++)
+        at = NumAppend.TryWriteCoordinates(line, at, position, 1, RapidFacts.MillimetreDecimals, ", ");
+        if (at < 0)
         {
-            if (i > 0)
-            {
-                line[at++] = ',';
-                line[at++] = ' ';
-            }
-            int written = NumAppend.TryWriteScaled(line[at..], xyz[i], RapidFacts.MillimetreDecimals);
-            if (written < 0)
-            {
-                return false;
-            }
-            at += written;
+            return false;
         }
         line[at++] = ']';
         _rest.CopyTo(line[at..]);
