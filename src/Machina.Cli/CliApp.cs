@@ -92,7 +92,9 @@ internal static class CliApp
         }
         catch (CliException ex)
         {
-            await context.Stderr.WriteLineAsync(ex.IsLocated ? ex.Message : "machina: error: " + ex.Message).ConfigureAwait(false);
+            // A failure's message can quote a controller's words (bytes from the wire): printable, escape codes as \x1b.
+            string message = PrintableText.Of(ex.Message, keepLines: true);
+            await context.Stderr.WriteLineAsync(ex.IsLocated ? message : "machina: error: " + message).ConfigureAwait(false);
             return ex.ExitCode;
         }
         catch (OperationCanceledException) when (context.Cancellation.IsCancellationRequested)
@@ -102,7 +104,7 @@ internal static class CliApp
         }
         catch (MachinaException ex)
         {
-            await context.Stderr.WriteLineAsync("machina: error: the robot link failed: " + ex.Message).ConfigureAwait(false);
+            await context.Stderr.WriteLineAsync("machina: error: the robot link failed: " + PrintableText.Of(ex.Message, keepLines: true)).ConfigureAwait(false);
             return ExitCodes.Failed;
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)

@@ -267,20 +267,21 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         }
     }
 
-    /// <summary>Keeps a text the driver would show on the teach pendant.</summary>
+    /// <summary>Keeps a text the driver would show on the teach pendant (made printable: it can carry bytes from the wire).</summary>
     private protected void Pendant(string text)
     {
         lock (Gate)
         {
-            Keep(_pendant, text, MaxKeptTexts);
+            Keep(_pendant, PrintableText.Of(text), MaxKeptTexts);
         }
     }
 
-    /// <summary>Keeps an error (a malformed or refused request) and shows it on the pendant.</summary>
+    /// <summary>Keeps an error (a malformed or refused request) and shows it on the pendant, made printable.</summary>
     private protected void RecordError(string error)
     {
         lock (Gate)
         {
+            error = PrintableText.Of(error);
             Keep(_errors, error, MaxKeptTexts);
             Keep(_pendant, "ERROR: " + error, MaxKeptTexts);
         }

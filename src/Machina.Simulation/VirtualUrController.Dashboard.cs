@@ -1,5 +1,6 @@
 using System.Net.Sockets;
 using System.Text;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -25,9 +26,9 @@ public sealed partial class VirtualUrController
     private async Task ServeDashboardAsync(TcpClient client, CancellationToken token)
     {
         var stream = client.GetStream();
-        using var reader = new StreamReader(stream, Encoding.ASCII);
+        var reader = new TwinLineReader(stream, MaxDashboardLine);
         await stream.WriteAsync(Encoding.ASCII.GetBytes("Connected: Universal Robots Dashboard Server\n"), token).ConfigureAwait(false);
-        while (await reader.ReadLineAsync(token).ConfigureAwait(false) is string line)
+        while (await ReadDashboardLineAsync(reader, stream, token).ConfigureAwait(false) is string line)
         {
             string command = line.Trim();
             lock (Gate)
@@ -44,6 +45,23 @@ public sealed partial class VirtualUrController
             {
                 return;
             }
+        }
+    }
+
+    /// <summary>The longest dashboard command line taken, in bytes (docs/simulation.md, Network limits).</summary>
+    internal const int MaxDashboardLine = 4096;
+
+    /// <summary>The next command line, or null when the client left or sent a line past the cap (answered, then closed).</summary>
+    private static async Task<string?> ReadDashboardLineAsync(TwinLineReader reader, NetworkStream stream, CancellationToken token)
+    {
+        try
+        {
+            return await reader.ReadLineAsync(token).ConfigureAwait(false);
+        }
+        catch (InvalidDataException ex)
+        {
+            await stream.WriteAsync(Encoding.ASCII.GetBytes($"Refused: {ex.Message}; the dashboard server closes the connection\n"), token).ConfigureAwait(false);
+            return null;
         }
     }
 }

@@ -53,9 +53,13 @@ public sealed partial class VirtualUrController
         return twin;
     }
 
-    /// <summary>Feeds what one script connection sends to the interpreter, which starts each program as soon as it is complete.</summary>
+    /// <summary>
+    /// Feeds what one script connection sends to the interpreter, which starts each program as soon as it is complete; the
+    /// connection has its own intake, so a client's unfinished text never joins another client's program.
+    /// </summary>
     private async Task FeedTwinAsync(NetworkStream stream, UrTwinController twin, CancellationToken token)
     {
+        var intake = new UrScriptIntake();
         var bytes = new byte[64 * 1024];
         while (true)
         {
@@ -66,7 +70,7 @@ public sealed partial class VirtualUrController
             }
             // A UR reads its script ports as single-byte text; Latin-1 keeps every byte.
             string text = Encoding.Latin1.GetString(bytes, 0, n);
-            await Task.Run(() => twin.Receive(text), token).ConfigureAwait(false);
+            await Task.Run(() => twin.Receive(text, intake), token).ConfigureAwait(false);
         }
     }
 

@@ -354,7 +354,7 @@ internal static class RunCommand
             {
                 return;
             }
-            context.Stderr.WriteLine($"{where}{(entry.Level == LogLevel.ERROR ? "error" : "warning")}: {entry.Message}");
+            context.Stderr.WriteLine($"{where}{(entry.Level == LogLevel.ERROR ? "error" : "warning")}: {PrintableText.Of(entry.Message, keepLines: true)}");
         }
     }
 

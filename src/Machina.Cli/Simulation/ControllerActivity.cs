@@ -32,7 +32,8 @@ internal sealed class ControllerActivity : IAsyncDisposable
     {
         _brand = brand;
         _look = look;
-        _log = log;
+        // Requests, pendant lines and errors carry text from the wire: shown printable, escape codes as \x1b.
+        _log = line => log(PrintableText.Of(line));
         ControllerView first = look();
         _digital = first.DigitalOutputs;
         _analog = first.AnalogOutputs;

@@ -167,7 +167,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
 
     private async Task ReadAsync(TcpClient client, CancellationToken token)
     {
-        var splitter = new EkiXmlSplitter();
+        var splitter = new EkiXmlSplitter(Configuration.BufferSize);
         var document = new List<(string Tag, string Value)>();
         var flags = new List<int>();
         splitter.Value += (tag, value) =>

@@ -27,6 +27,15 @@ internal sealed class EkiConfiguration
     /// <summary>Most elements one memory holds; more closes the connection.</summary>
     public int Limit { get; private init; } = 16;
 
+    /// <summary>
+    /// BUFFSIZE Limit: the most bytes received without being interpreted (1 to 65534, default 16384, as the manual gives them); on
+    /// the twin, the longest document (top-level element) a client may send; more closes the connection.
+    /// </summary>
+    public int BufferSize { get; private init; } = DefaultBufferSize;
+
+    /// <summary>The manual's default BUFFSIZE Limit.</summary>
+    public const int DefaultBufferSize = 16384;
+
     /// <summary>The $FLAG that is TRUE while the connection is open (0: none).</summary>
     public int AliveFlag { get; private init; }
 
@@ -68,6 +77,8 @@ internal sealed class EkiConfiguration
             Port = port,
             Fifo = !string.Equals((string?)buffering?.Attribute("Mode"), "LIFO", StringComparison.OrdinalIgnoreCase),
             Limit = int.TryParse((string?)buffering?.Attribute("Limit"), CultureInfo.InvariantCulture, out int limit) ? Math.Clamp(limit, 1, 512) : 16,
+            BufferSize = int.TryParse((string?)intern.Element("BUFFSIZE")?.Attribute("Limit"), CultureInfo.InvariantCulture, out int size)
+                ? Math.Clamp(size, 1, 65534) : DefaultBufferSize,
             AliveFlag = int.TryParse((string?)intern.Element("ALIVE")?.Attribute("Set_Flag"), CultureInfo.InvariantCulture, out int alive) ? alive : 0,
             Receive = [.. (root.Element("RECEIVE")?.Element("XML")?.Elements("ELEMENT") ?? []).Select(e => new EkiReceiveElement(
                 (string?)e.Attribute("Tag") ?? throw new FormatException($"an ELEMENT of {name}.xml has no Tag"),

@@ -5,11 +5,28 @@ namespace Machina.Simulation.Krl;
 /// <summary>
 /// Reads the XML an external system sends on an EthernetKRL channel, as bytes arrive: element starts with their attributes,
 /// element ends and text, each with its path (<c>DT/DR/A</c>). Whitespace between elements, declarations and comments are skipped.
+/// Linear in what arrives: a document (a top-level element and what precedes it) is at most <paramref name="maxDocument"/>
+/// characters (the channel's BUFFSIZE), elements nest at most <see cref="MaxDepth"/> deep, and each open element keeps its
+/// whole path, so no path is joined again per element.
 /// </summary>
-internal sealed class EkiXmlSplitter
+internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultBufferSize)
 {
+    /// <summary>The deepest nesting of elements taken (docs/simulation.md, Network limits).</summary>
+    public const int MaxDepth = 64;
+
     private readonly StringBuilder _pending = new();
+
+    /// <summary>The path of each open element (<c>DT</c>, <c>DT/DR</c>, …), the innermost last.</summary>
     private readonly List<string> _path = [];
+
+    /// <summary>Characters of the chunks before the current one.</summary>
+    private long _consumed;
+
+    /// <summary>Where the current document started (after the last complete top-level element), counted like <see cref="_consumed"/>.</summary>
+    private long _documentStart;
+
+    /// <summary>Where in the current chunk the tag being read ends.</summary>
+    private int _tagEnd;
 
     /// <summary>An attribute or text value was read: tag (<c>DT/DR/A/@ID</c> or <c>DT/DR/A</c>) and value.</summary>
     public event Action<string, string>? Value;
@@ -23,6 +40,7 @@ internal sealed class EkiXmlSplitter
         int at = 0;
         while (at < text.Length)
         {
+            CheckDocument(at);
             if (_pending.Length > 0 && _pending[0] == '<')
             {
                 int close = text.IndexOf('>', at);
@@ -34,6 +52,7 @@ internal sealed class EkiXmlSplitter
                 _pending.Append(text, at, close - at);
                 string tag = _pending.ToString(1, _pending.Length - 1);
                 _pending.Clear();
+                _tagEnd = close;
                 Tag(tag);
                 at = close + 1;
                 continue;
@@ -54,9 +73,16 @@ internal sealed class EkiXmlSplitter
             _pending.Append('<');
             at = open + 1;
         }
-        if (_pending.Length > 1 << 20)
+        CheckDocument(text.Length);
+        _consumed += text.Length;
+    }
+
+    /// <summary>Throws when the document under way passed its size at <paramref name="at"/> in the current chunk.</summary>
+    private void CheckDocument(int at)
+    {
+        if (_consumed + at - _documentStart > maxDocument)
         {
-            throw new FormatException("an XML element longer than 1 MB");
+            throw new FormatException($"more than {maxDocument} bytes without a complete document (the channel's BUFFSIZE Limit)");
         }
     }
 
@@ -70,7 +96,7 @@ internal sealed class EkiXmlSplitter
         {
             throw new FormatException($"text outside an element: \"{text.Trim()}\"");
         }
-        Value?.Invoke(string.Join('/', _path), Decode(text.Trim()));
+        Value?.Invoke(_path[^1], Decode(text.Trim()));
     }
 
     private void Tag(string body)
@@ -82,7 +108,7 @@ internal sealed class EkiXmlSplitter
         if (body.StartsWith('/'))
         {
             string name = body[1..].Trim();
-            if (_path.Count == 0 || _path[^1] != name)
+            if (_path.Count == 0 || !ClosesInnermost(name))
             {
                 throw new FormatException($"</{name}> does not close the open element");
             }
@@ -104,8 +130,12 @@ internal sealed class EkiXmlSplitter
         {
             throw new FormatException("an element without a name");
         }
-        _path.Add(element);
-        string path = string.Join('/', _path);
+        if (_path.Count == MaxDepth)
+        {
+            throw new FormatException($"elements nested more than {MaxDepth} deep");
+        }
+        string path = _path.Count == 0 ? element : _path[^1] + "/" + element;
+        _path.Add(path);
         while (true)
         {
             while (i < body.Length && char.IsWhiteSpace(body[i]))
@@ -136,10 +166,21 @@ internal sealed class EkiXmlSplitter
         }
     }
 
+    /// <summary>True when <paramref name="name"/> is the name of the innermost open element (the last part of its path).</summary>
+    private bool ClosesInnermost(string name)
+    {
+        string path = _path[^1];
+        return path.EndsWith(name, StringComparison.Ordinal) && (path.Length == name.Length || path[^(name.Length + 1)] == '/');
+    }
+
     private void End()
     {
-        string path = string.Join('/', _path);
+        string path = _path[^1];
         _path.RemoveAt(_path.Count - 1);
+        if (_path.Count == 0)
+        {
+            _documentStart = _consumed + _tagEnd + 1;
+        }
         Ended?.Invoke(path, _path.Count == 0);
     }
 

@@ -12,31 +12,38 @@ internal static class RwsDigest
     /// <summary>The realm RWS 1.0 controllers name in their challenge.</summary>
     public const string Realm = "validusers@robotcontroller.com";
 
-    /// <summary>The WWW-Authenticate value for <paramref name="nonce"/>.</summary>
-    public static string Challenge(string nonce) => $"Digest realm=\"{Realm}\", domain=\"/\", qop=\"auth\", nonce=\"{nonce}\", algorithm=MD5, stale=FALSE";
+    /// <summary>The WWW-Authenticate value for <paramref name="nonce"/>; <paramref name="stale"/> when the last answer was right but its nonce expired.</summary>
+    public static string Challenge(string nonce, bool stale = false) =>
+        $"Digest realm=\"{Realm}\", domain=\"/\", qop=\"auth\", nonce=\"{nonce}\", algorithm=MD5, stale={(stale ? "TRUE" : "FALSE")}";
 
     /// <summary>A fresh random nonce.</summary>
     public static string NewNonce() => Convert.ToHexString(RandomNumberGenerator.GetBytes(16)).ToLowerInvariant();
 
-    /// <summary>True when <paramref name="authorization"/> answers one of <paramref name="nonces"/> for this user, password and request.</summary>
-    public static bool Verify(string? authorization, string method, string user, string password, Func<string, bool> nonces)
+    /// <summary>
+    /// What <paramref name="authorization"/> is worth for the request <paramref name="method"/> <paramref name="target"/> (the
+    /// request line's target, as the client sent it): Fresh when it answers, for this user and password, a nonce of
+    /// <paramref name="nonces"/> that is alive and counted up, for this very request (RFC 7616 §3.4.6: its <c>uri</c> is the
+    /// request's target); Stale when all is right but the nonce expired; else Unknown. The nonce's count moves only for a right answer.
+    /// </summary>
+    public static RwsNonceState Verify(string? authorization, string method, string target, string user, string password, RwsNonces nonces)
     {
         if (authorization is null || !authorization.StartsWith("Digest ", StringComparison.OrdinalIgnoreCase))
         {
-            return false;
+            return RwsNonceState.Unknown;
         }
         Dictionary<string, string> p = Parameters(authorization[7..]);
-        if (!p.TryGetValue("username", out string? name) || name != user || !p.TryGetValue("nonce", out string? nonce) || !nonces(nonce)
-            || !p.TryGetValue("uri", out string? uri) || !p.TryGetValue("response", out string? response))
+        if (!p.TryGetValue("username", out string? name) || name != user || !p.TryGetValue("nonce", out string? nonce)
+            || !p.TryGetValue("uri", out string? uri) || uri != target || !p.TryGetValue("response", out string? response)
+            || p.GetValueOrDefault("qop") != "auth" || !p.TryGetValue("nc", out string? nc) || !p.TryGetValue("cnonce", out string? cnonce))
         {
-            return false;
+            return RwsNonceState.Unknown;
         }
-        string ha1 = Md5($"{user}:{p.GetValueOrDefault("realm", Realm)}:{password}");
+        string ha1 = Md5($"{user}:{Realm}:{password}");
         string ha2 = Md5($"{method}:{uri}");
-        string expected = p.TryGetValue("qop", out string? qop)
-            ? Md5($"{ha1}:{nonce}:{p.GetValueOrDefault("nc")}:{p.GetValueOrDefault("cnonce")}:{qop}:{ha2}")
-            : Md5($"{ha1}:{nonce}:{ha2}");
-        return CryptographicOperations.FixedTimeEquals(Encoding.ASCII.GetBytes(expected), Encoding.ASCII.GetBytes(response.ToLowerInvariant()));
+        string expected = Md5($"{ha1}:{nonce}:{nc}:{cnonce}:auth:{ha2}");
+        return CryptographicOperations.FixedTimeEquals(Encoding.ASCII.GetBytes(expected), Encoding.ASCII.GetBytes(response.ToLowerInvariant()))
+            ? nonces.Take(nonce, nc)
+            : RwsNonceState.Unknown;
     }
 
     private static Dictionary<string, string> Parameters(string text)

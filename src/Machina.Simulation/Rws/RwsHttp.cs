@@ -23,16 +23,67 @@ internal sealed record RwsResponse(int Status, string Reason, byte[] Body, strin
     public static RwsResponse NoContent() => new(204, "No Content", []);
 }
 
-/// <summary>Reads requests from and writes responses to one connection (HTTP/1.1, Content-Length bodies, kept alive).</summary>
+/// <summary>A request the server refuses to read on (too long, malformed, too slow): the status and reason it answers before it closes.</summary>
+internal sealed class RwsHttpRefusal(int status, string reason, string message) : Exception(message)
+{
+    /// <summary>The HTTP status (400, 408, 413, 431).</summary>
+    public int Status { get; } = status;
+
+    /// <summary>The HTTP reason phrase.</summary>
+    public string Reason { get; } = reason;
+}
+
+/// <summary>
+/// Reads requests from and writes responses to one connection (HTTP/1.1, Content-Length bodies, kept alive), with caps: a head
+/// of at most <see cref="MaxHead"/> bytes, a body of at most <see cref="MaxBody"/>, a request complete within its deadline.
+/// </summary>
 internal static class RwsHttp
 {
-    private const int MaxHeader = 16 * 1024;
-    private const int MaxBody = 8 * 1024 * 1024;
+    /// <summary>The longest request head (request line and headers) read, in bytes.</summary>
+    public const int MaxHead = 16 * 1024;
 
-    /// <summary>The next request on <paramref name="stream"/>, or null when the client closed the connection.</summary>
-    public static async Task<RwsRequest?> ReadAsync(NetworkStream stream, CancellationToken cancellationToken)
+    /// <summary>The longest request body read, in bytes.</summary>
+    public const int MaxBody = 8 * 1024 * 1024;
+
+    /// <summary>
+    /// The next request on <paramref name="stream"/>, or null when the client closed the connection or sent nothing for
+    /// <paramref name="idle"/>. Once its first byte arrived, the request must be complete within <paramref name="deadline"/>.
+    /// Throws <see cref="RwsHttpRefusal"/> for a request the server does not read on.
+    /// </summary>
+    public static async Task<RwsRequest?> ReadAsync(NetworkStream stream, TimeSpan idle, TimeSpan deadline, CancellationToken cancellationToken)
     {
-        var head = new List<byte>();
+        var one = new byte[1];
+        using (var waiting = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken))
+        {
+            waiting.CancelAfter(idle);
+            try
+            {
+                if (await stream.ReadAsync(one, waiting.Token).ConfigureAwait(false) == 0)
+                {
+                    return null;
+                }
+            }
+            catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
+            {
+                return null;
+            }
+        }
+        using var reading = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        reading.CancelAfter(deadline);
+        try
+        {
+            return await ReadRestAsync(stream, one[0], reading.Token).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
+        {
+            throw new RwsHttpRefusal(408, "Request Timeout",
+                $"The request was not complete within {deadline.TotalSeconds.ToString(System.Globalization.CultureInfo.InvariantCulture)} s of its first byte; the connection is closed.");
+        }
+    }
+
+    private static async Task<RwsRequest?> ReadRestAsync(NetworkStream stream, byte first, CancellationToken cancellationToken)
+    {
+        var head = new List<byte> { first };
         var one = new byte[1];
         while (!EndsWithBlankLine(head))
         {
@@ -41,16 +92,16 @@ internal static class RwsHttp
                 return null;
             }
             head.Add(one[0]);
-            if (head.Count > MaxHeader)
+            if (head.Count > MaxHead)
             {
-                throw new InvalidDataException("The request's header is too long.");
+                throw new RwsHttpRefusal(431, "Request Header Fields Too Large", $"The request's head is longer than {MaxHead} bytes.");
             }
         }
         string[] lines = Encoding.Latin1.GetString([.. head]).Split("\r\n");
         string[] start = lines[0].Split(' ');
-        if (start.Length < 3)
+        if (start.Length != 3 || !start[2].StartsWith("HTTP/", StringComparison.Ordinal))
         {
-            throw new InvalidDataException($"Not an HTTP request line: {lines[0]}");
+            throw new RwsHttpRefusal(400, "Bad Request", $"Not an HTTP request line: {lines[0]}");
         }
         var headers = new Dictionary<string, string>(StringComparer.OrdinalIgnoreCase);
         foreach (string line in lines.Skip(1).Where(l => l.Length > 0))
@@ -63,10 +114,15 @@ internal static class RwsHttp
                 headers[name] = headers.TryGetValue(name, out string? old) ? old + "; " + value : value;
             }
         }
-        int length = headers.TryGetValue("Content-Length", out string? l) && int.TryParse(l, out int n) ? n : 0;
-        if (length < 0 || length > MaxBody)
+        long length = 0;
+        if (headers.TryGetValue("Content-Length", out string? l)
+            && !long.TryParse(l, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out length))
         {
-            throw new InvalidDataException("The request's body is too long.");
+            throw new RwsHttpRefusal(400, "Bad Request", $"The Content-Length \"{l}\" is not a number.");
+        }
+        if (length > MaxBody)
+        {
+            throw new RwsHttpRefusal(413, "Content Too Large", $"The request's body is longer than {MaxBody} bytes.");
         }
         byte[] body = new byte[length];
         await stream.ReadExactlyAsync(body, cancellationToken).ConfigureAwait(false);

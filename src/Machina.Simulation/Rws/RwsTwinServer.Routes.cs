@@ -77,8 +77,9 @@ internal sealed partial class RwsTwinServer
                 _ => Error(404, "Not Found", null, $"No resource {request.Method} {request.Path} on the twin's Robot Web Services."),
             };
         }
-        catch (Exception ex) when (ex is FormatException or KeyNotFoundException)
+        catch (Exception ex) when (ex is FormatException or KeyNotFoundException or OverflowException)
         {
+            // A field missing or not a number: refused with the reason, the connection kept.
             return Error(400, "Bad Request", null, ex.Message);
         }
     }
@@ -111,6 +112,10 @@ internal sealed partial class RwsTwinServer
 
     private RwsResponse File(string path, RwsRequest request, bool get)
     {
+        if (FilePathRefusal(path) is { } refusal)
+        {
+            return Error(400, "Bad Request", null, refusal);
+        }
         lock (_gate)
         {
             if (get)
@@ -129,16 +134,31 @@ internal sealed partial class RwsTwinServer
         }
     }
 
+    /// <summary>
+    /// Why the file service refuses <paramref name="path"/>, or null: every part of a path names a file or folder under a
+    /// controller directory, so <c>..</c>, <c>.</c>, empty parts, backslashes and control characters are refused (a key that
+    /// leaves its folder).
+    /// </summary>
+    private static string? FilePathRefusal(string path)
+    {
+        string[] parts = path.Split('/');
+        if (path.Length == 0 || parts.Any(p => p is "" or "." or "..") || path.Any(c => c == '\\' || char.IsControl(c)))
+        {
+            return $"The file path {PrintableText.Of(path)} is not a path under a controller folder (no \"..\", \".\", empty parts or backslashes).";
+        }
+        return null;
+    }
+
     private RwsResponse SetSpeedRatio(RwsRequest request)
     {
         if (!OperationMode.Equals("AUTO", StringComparison.OrdinalIgnoreCase))
         {
             return Error(400, "Bad Request", null, $"The speed ratio can be set only in automatic mode; the controller is in {OperationMode}.");
         }
-        int ratio = int.Parse(request.Form["speed-ratio"], NumberStyles.Integer, CultureInfo.InvariantCulture);
-        if (ratio is < 0 or > 100)
+        string text = request.Form.GetValueOrDefault("speed-ratio") ?? throw new FormatException("The form has no speed-ratio field.");
+        if (!int.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out int ratio) || ratio is < 0 or > 100)
         {
-            return Error(400, "Bad Request", null, $"The speed ratio must be between 0 and 100, not {ratio}.");
+            return Error(400, "Bad Request", null, $"The speed ratio must be a whole number between 0 and 100, not {PrintableText.Of(text)}.");
         }
         SpeedRatio = ratio;
         return RwsResponse.NoContent();

@@ -16,7 +16,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
     private readonly CancellationTokenSource _stop = new();
     private readonly List<TcpClient> _clients = [];
     private readonly Lock _gate = new();
-    private readonly HashSet<string> _nonces = [];
+    private readonly RwsNonces _nonces;
     private readonly HashSet<string> _sessions = [];
     private readonly string _user;
     private readonly string _password;
@@ -27,8 +27,14 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
     /// default); with <paramref name="rws2"/>, what RWS 2.0 changes for a client: basic authentication and the <c>v=2.0</c> media
     /// types (over plain HTTP: the twin serves no TLS).
     /// </summary>
-    public RwsTwinServer(RapidTwinController twin, string user = "Default User", string password = "robotics", bool rws2 = false)
+    /// <param name="twin">The twin the services act on.</param>
+    /// <param name="user">The one user.</param>
+    /// <param name="password">Its password.</param>
+    /// <param name="rws2">True to speak RWS 2.0.</param>
+    /// <param name="time">The clock of the nonces' lifetime (the system's by default; a test's manual clock).</param>
+    public RwsTwinServer(RapidTwinController twin, string user = "Default User", string password = "robotics", bool rws2 = false, TimeProvider? time = null)
     {
+        _nonces = new RwsNonces(time ?? TimeProvider.System);
         Twin = twin;
         Rws2 = rws2;
         _user = user;
@@ -62,6 +68,19 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
 
     /// <summary>Who else holds mastership (e.g. "FlexPendant"), or null when nobody does.</summary>
     public string? MastershipHeldBy { get; set; }
+
+    /// <summary>How long a digest nonce is taken after the server handed it out (default 5 minutes; then the client is told it is stale).</summary>
+    public TimeSpan NonceLifetime
+    {
+        get => _nonces.Lifetime;
+        set => _nonces.Lifetime = value;
+    }
+
+    /// <summary>How long a client may take to send a request's head and body once it started it (default 10 s; then 408 and the connection closes).</summary>
+    public TimeSpan RequestDeadline { get; set; } = TimeSpan.FromSeconds(10);
+
+    /// <summary>How long a connection may stay idle between requests before the server closes it (default 5 minutes).</summary>
+    public TimeSpan IdleDeadline { get; set; } = TimeSpan.FromMinutes(5);
 
     /// <summary>Starts listening and serving.</summary>
     public void Start()
@@ -113,8 +132,25 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
         try
         {
             NetworkStream stream = client.GetStream();
-            while (await RwsHttp.ReadAsync(stream, cancellationToken).ConfigureAwait(false) is { } request)
+            while (true)
             {
+                RwsRequest? request;
+                try
+                {
+                    request = await RwsHttp.ReadAsync(stream, IdleDeadline, RequestDeadline, cancellationToken).ConfigureAwait(false);
+                }
+                catch (RwsHttpRefusal refusal)
+                {
+                    // A request the server cannot read is answered, then the connection closes (what follows it cannot be framed).
+                    RwsResponse answer = RwsXhtmlWriter.Error(refusal.Status, refusal.Reason, null, refusal.Message);
+                    answer.Headers.Add(("Connection", "close"));
+                    await RwsHttp.WriteAsync(stream, answer, cancellationToken).ConfigureAwait(false);
+                    return;
+                }
+                if (request is null)
+                {
+                    return;
+                }
                 RwsResponse response = Authenticate(request, out string? session, out bool opened) ?? MediaRefusal(request) ?? Handle(request, session!);
                 if (opened)
                 {
@@ -124,7 +160,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 await RwsHttp.WriteAsync(stream, response, cancellationToken).ConfigureAwait(false);
             }
         }
-        catch (Exception ex) when (ex is IOException or SocketException or ObjectDisposedException or OperationCanceledException or InvalidDataException)
+        catch (Exception ex) when (ex is IOException or SocketException or ObjectDisposedException or OperationCanceledException)
         {
             // The client or the server closed the connection.
         }
@@ -152,8 +188,9 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 return null;
             }
             string? authorization = request.Headers.GetValueOrDefault("Authorization");
-            if (Rws2 ? RwsBasic.Verify(authorization, _user, _password)
-                : RwsDigest.Verify(authorization, request.Method, _user, _password, _nonces.Contains))
+            RwsNonceState digest = Rws2 ? RwsNonceState.Unknown
+                : RwsDigest.Verify(authorization, request.Method, request.Target, _user, _password, _nonces);
+            if (Rws2 ? RwsBasic.Verify(authorization, _user, _password) : digest == RwsNonceState.Fresh)
             {
                 session = RwsDigest.NewNonce();
                 _sessions.Add(session);
@@ -167,9 +204,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 challenge.Headers.Add(("WWW-Authenticate", "Basic realm=\"RWS\""));
                 return challenge;
             }
-            string nonce = RwsDigest.NewNonce();
-            _nonces.Add(nonce);
-            challenge.Headers.Add(("WWW-Authenticate", RwsDigest.Challenge(nonce)));
+            challenge.Headers.Add(("WWW-Authenticate", RwsDigest.Challenge(_nonces.Issue(), stale: digest == RwsNonceState.Stale)));
             return challenge;
         }
     }

@@ -21,9 +21,10 @@ internal sealed class TwinPendant
         }
     }
 
-    /// <summary>Adds a line.</summary>
+    /// <summary>Adds a line, made printable (a program's text can carry bytes from the wire: escape codes are shown as <c>\x1b</c>).</summary>
     public void Log(string line)
     {
+        line = PrintableText.Of(line);
         lock (_gate)
         {
             _lines.Add(line);

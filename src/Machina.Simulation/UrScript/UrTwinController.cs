@@ -146,21 +146,28 @@ internal sealed partial class UrTwinController : IDisposable
     /// (a line break after it is not needed); the call line that often follows it belongs to that program and is skipped;
     /// another complete line outside a definition runs as a one-line program.
     /// </summary>
-    public void Receive(string text)
+    public void Receive(string text) => Receive(text, _incoming);
+
+    /// <summary>
+    /// Text as it arrives on one connection to a script port, split into programs by that connection's own
+    /// <paramref name="intake"/>: the unfinished text of one client is never joined to another's (as on the controller, which
+    /// reads each connection apart).
+    /// </summary>
+    public void Receive(string text, UrScriptIntake intake)
     {
         List<string> programs = [];
         lock (_gate)
         {
-            _incoming.Append(text);
-            if (_incoming.Length > MaxProgramLength)
+            intake.Append(text);
+            if (intake.Length > MaxProgramLength)
             {
-                _incoming.Clear();
+                intake.Clear();
                 _error = $"Compile error: line 1: the program is longer than {MaxProgramLength} characters";
                 _state = UrProgramState.Failed;
                 Pendant.Log(_error);
                 return;
             }
-            while (_incoming.TakeProgram() is { } program)
+            while (intake.TakeProgram() is { } program)
             {
                 programs.Add(program);
             }

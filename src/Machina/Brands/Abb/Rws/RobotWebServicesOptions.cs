@@ -27,6 +27,12 @@ public sealed class RobotWebServicesOptions
     /// <summary>RWS 2.0 over plain HTTP: only for the RAPID twin in tests (the twin serves no TLS); never for a controller.</summary>
     internal bool Rws2OverHttp { get; init; }
 
-    /// <summary>How long one request to the controller may take (default 10 s).</summary>
+    /// <summary>
+    /// The largest answer read, in bytes (16 MiB; Robot Web Services answers are a few kilobytes): a larger one is refused with a
+    /// <see cref="RobotWebServicesException"/> before it fills the memory. Internal: a test sets it lower.
+    /// </summary>
+    internal long MaxAnswerBytes { get; init; } = 16 * 1024 * 1024;
+
+    /// <summary>How long one request to the controller may take, its answer read (default 10 s).</summary>
     public TimeSpan Timeout { get; init; } = TimeSpan.FromSeconds(10);
 }

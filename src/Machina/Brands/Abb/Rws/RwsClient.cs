@@ -16,6 +16,7 @@ internal sealed partial class RwsClient : IDisposable
     private const string Rws2Form = "application/x-www-form-urlencoded;v=2.0";
     private readonly HttpClient _http;
     private readonly bool _rws2;
+    private readonly long _maxAnswer;
 
     /// <summary>A client of the controller at <paramref name="host"/> with <paramref name="options"/>.</summary>
     public RwsClient(string host, RobotWebServicesOptions options)
@@ -23,6 +24,7 @@ internal sealed partial class RwsClient : IDisposable
         ArgumentException.ThrowIfNullOrWhiteSpace(host);
         ArgumentNullException.ThrowIfNull(options);
         _rws2 = options.UseRws2;
+        _maxAnswer = options.MaxAnswerBytes;
         string scheme = _rws2 && !options.Rws2OverHttp ? "https" : "http";
         var address = new UriBuilder(scheme, host, options.Port ?? (_rws2 ? 443 : 80)).Uri;
         var credential = new NetworkCredential(options.UserName, options.Password);
@@ -80,40 +82,93 @@ internal sealed partial class RwsClient : IDisposable
 
     private async Task<string> SendAsync(HttpRequestMessage request, string what, CancellationToken cancellationToken)
     {
-        HttpResponseMessage response;
+        // One deadline for the whole exchange, the answer's body included (the client's own timeout ends at the headers).
+        using var deadline = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        deadline.CancelAfter(_http.Timeout);
+        HttpResponseMessage? response = null;
         try
         {
-            response = await _http.SendAsync(request, cancellationToken).ConfigureAwait(false);
+            response = await _http.SendAsync(request, HttpCompletionOption.ResponseHeadersRead, deadline.Token).ConfigureAwait(false);
+            string text = await ReadAnswerAsync(response, what, deadline.Token).ConfigureAwait(false);
+            return response.IsSuccessStatusCode ? text : throw Refusal(response, text, what);
         }
         catch (HttpRequestException ex)
         {
             throw new RobotWebServicesException(
-                $"Could not {what}: the controller's Robot Web Services at {Address} did not answer ({ex.Message}). Check the address, " +
+                $"Could not {what}: the controller's Robot Web Services at {Address} did not answer ({PrintableText.Of(ex.Message)}). Check the address, " +
                 "the port and that the computer is on the controller's network.", 0, null, ex);
         }
-        catch (TaskCanceledException ex) when (!cancellationToken.IsCancellationRequested)
+        catch (OperationCanceledException ex) when (!cancellationToken.IsCancellationRequested)
         {
             throw new RobotWebServicesException(
                 $"Could not {what}: the controller's Robot Web Services at {Address} did not answer within {_http.Timeout.TotalSeconds.ToString(CultureInfo.InvariantCulture)} s.", 0, null, ex);
         }
-        using (response)
+        finally
         {
-            string text = await response.Content.ReadAsStringAsync(cancellationToken).ConfigureAwait(false);
-            if (response.IsSuccessStatusCode)
-            {
-                return text;
-            }
-            int status = (int)response.StatusCode;
-            if (response.StatusCode == HttpStatusCode.Unauthorized)
-            {
-                throw new RobotWebServicesException(
-                    $"Could not {what}: the controller refused the user name or password (HTTP 401). Set them in Robot.WebServices " +
-                    "(or SetUser); the user needs the rights listed in docs/rws.md.", status, null);
-            }
-            (long? code, string? message) = RwsXhtml.Status(text);
-            string reason = message ?? (text.Length > 0 ? RwsXhtml.Shorten(text) : response.ReasonPhrase ?? "no reason given");
-            string codeText = code is { } c ? $", code {c.ToString(CultureInfo.InvariantCulture)}" : "";
-            throw new RobotWebServicesException($"Could not {what}: the controller answered HTTP {status}{codeText}: {reason}", status, code);
+            response?.Dispose();
         }
+    }
+
+    /// <summary>
+    /// The answer's text, read up to <see cref="RobotWebServicesOptions.MaxAnswerBytes"/>: a larger answer (declared or sent) is
+    /// refused before it fills the memory of the process (a Rhino or Grasshopper session).
+    /// </summary>
+    private async Task<string> ReadAnswerAsync(HttpResponseMessage response, string what, CancellationToken cancellationToken)
+    {
+        if (response.Content.Headers.ContentLength is long declared && declared > _maxAnswer)
+        {
+            throw TooLarge(response, what, $"declares {declared.ToString(CultureInfo.InvariantCulture)} bytes");
+        }
+        Stream body = await response.Content.ReadAsStreamAsync(cancellationToken).ConfigureAwait(false);
+        await using (body.ConfigureAwait(false))
+        {
+            using var kept = new MemoryStream();
+            byte[] chunk = new byte[16 * 1024];
+            int n;
+            while ((n = await body.ReadAsync(chunk, cancellationToken).ConfigureAwait(false)) > 0)
+            {
+                if (kept.Length + n > _maxAnswer)
+                {
+                    throw TooLarge(response, what, "goes on past that");
+                }
+                kept.Write(chunk, 0, n);
+            }
+            return AnswerEncoding(response).GetString(kept.GetBuffer(), 0, (int)kept.Length);
+        }
+    }
+
+    private RobotWebServicesException TooLarge(HttpResponseMessage response, string what, string how) => new(
+        $"Could not {what}: the controller's answer (HTTP {((int)response.StatusCode).ToString(CultureInfo.InvariantCulture)}) {how}; Machina reads at most " +
+        $"{_maxAnswer.ToString(CultureInfo.InvariantCulture)} bytes of an answer (Robot Web Services answers are a few kilobytes). Check the address: it may not be a controller.",
+        (int)response.StatusCode, null);
+
+    private static Encoding AnswerEncoding(HttpResponseMessage response)
+    {
+        string? charset = response.Content.Headers.ContentType?.CharSet?.Trim('"');
+        try
+        {
+            return charset is null ? Encoding.UTF8 : Encoding.GetEncoding(charset);
+        }
+        catch (ArgumentException)
+        {
+            return Encoding.UTF8;
+        }
+    }
+
+    /// <summary>The refusal of a request, with the controller's reason made printable (its text can carry escape codes).</summary>
+    private static RobotWebServicesException Refusal(HttpResponseMessage response, string text, string what)
+    {
+        int status = (int)response.StatusCode;
+        if (response.StatusCode == HttpStatusCode.Unauthorized)
+        {
+            return new RobotWebServicesException(
+                $"Could not {what}: the controller refused the user name or password (HTTP 401). Set them in Robot.WebServices " +
+                "(or SetUser); the user needs the rights listed in docs/rws.md.", status, null);
+        }
+        (long? code, string? message) = RwsXhtml.Status(text);
+        string reason = message is not null ? PrintableText.Of(message)
+            : text.Length > 0 ? RwsXhtml.Shorten(text) : PrintableText.Of(response.ReasonPhrase ?? "no reason given");
+        string codeText = code is { } c ? $", code {c.ToString(CultureInfo.InvariantCulture)}" : "";
+        return new RobotWebServicesException($"Could not {what}: the controller answered HTTP {status}{codeText}: {reason}", status, code);
     }
 }

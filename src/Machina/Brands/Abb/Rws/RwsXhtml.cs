@@ -10,6 +10,12 @@ namespace Machina;
 /// </summary>
 internal static class RwsXhtml
 {
+    /// <summary>
+    /// The deepest nesting of elements read (an answer is html/body/div/ul/li/span, under ten deep): deeper answers are refused
+    /// before they are walked, which keeps reading them linear in their size.
+    /// </summary>
+    public const int MaxDepth = 32;
+
     /// <summary>The items (<c>li</c>) of an answer, each as its class, title and spans by class.</summary>
     public static IReadOnlyList<RwsItem> Items(string text)
     {
@@ -46,8 +52,8 @@ internal static class RwsXhtml
             ? d
             : throw new RobotWebServicesException($"The controller's {what} \"{value}\" is not a number.", 200, null);
 
-    /// <summary>At most 200 characters of an answer, for a message.</summary>
-    public static string Shorten(string text) => text.Length <= 200 ? text : text[..200] + "…";
+    /// <summary>At most 200 characters of an answer, for a message, made printable (escape codes written as <c>\x1b</c>).</summary>
+    public static string Shorten(string text) => PrintableText.Of(text.Length <= 200 ? text : text[..200] + "…");
 
     private static Dictionary<string, string> Spans(XElement root)
     {
@@ -67,6 +73,18 @@ internal static class RwsXhtml
     {
         try
         {
+            var settings = new XmlReaderSettings { DtdProcessing = DtdProcessing.Prohibit, XmlResolver = null };
+            using (var reader = XmlReader.Create(new StringReader(text), settings))
+            {
+                while (reader.Read())
+                {
+                    if (reader.Depth > MaxDepth)
+                    {
+                        throw new RobotWebServicesException(
+                            $"The controller's answer nests elements more than {MaxDepth} deep; it is not the XHTML of Robot Web Services: {Shorten(text)}", 200, null);
+                    }
+                }
+            }
             return XDocument.Parse(text);
         }
         catch (XmlException ex)
