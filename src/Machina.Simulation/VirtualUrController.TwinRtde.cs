@@ -35,7 +35,7 @@ public sealed partial class VirtualUrController
                     AddDoubles(payload, new double[6]);
                     break;
                 case "robot_mode":
-                    AddInt(payload, 7); // RUNNING
+                    AddInt(payload, RobotMode);
                     break;
                 case "safety_mode" or "safety_status":
                     AddInt(payload, SafetyStatus);
