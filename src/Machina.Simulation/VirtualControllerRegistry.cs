@@ -18,8 +18,16 @@ public static class VirtualControllerRegistry
         }),
         new(UrBrand.Definition, () => new VirtualUrControllerOptions(), o =>
         {
-            var c = new VirtualUrController((VirtualUrControllerOptions)o);
-            return new Running<VirtualUrState>(UrBrand.Definition.Type, c, c.StartAsync, ["script", "RTDE", "dashboard"], () => [c.Port, c.RtdePort, c.DashboardPort], "instructions", "refused");
+            var options = (VirtualUrControllerOptions)o;
+            var c = new VirtualUrController(options);
+            (string Name, bool Served, Func<int> Port)[] ports =
+            [
+                ("script", true, () => c.Port), ("RTDE", true, () => c.RtdePort), ("dashboard", true, () => c.DashboardPort),
+                ("primary", options.PrimaryPort is not null, () => c.PrimaryPort), ("secondary", options.SecondaryPort is not null, () => c.SecondaryPort),
+                ("real-time", options.RealtimePort is not null, () => c.RealtimePort),
+            ];
+            var served = ports.Where(p => p.Served).ToArray();
+            return new Running<VirtualUrState>(UrBrand.Definition.Type, c, c.StartAsync, [.. served.Select(p => p.Name)], () => [.. served.Select(p => p.Port())], "instructions", "refused");
         }),
         new(KukaBrand.Definition, () => new VirtualKukaControllerOptions(), o =>
         {
@@ -112,7 +120,7 @@ public abstract class RunningVirtualController : IAsyncDisposable
     /// <summary>The brand's own controller object (a <see cref="VirtualAbbController"/>, <see cref="VirtualUrController"/> or <see cref="VirtualKukaController"/>).</summary>
     public IAsyncDisposable Controller { get; }
 
-    /// <summary>What each port is for (ABB and KUKA: "driver", "monitor"; UR: "script", "RTDE", "dashboard"), in the order of <see cref="Ports"/>.</summary>
+    /// <summary>What each port is for (ABB and KUKA: "driver", "monitor"; UR: "script", "RTDE", "dashboard", then "primary", "secondary" and "real-time" when served), in the order of <see cref="Ports"/>.</summary>
     public IReadOnlyList<string> PortNames { get; }
 
     /// <summary>The ports it listens on, on 127.0.0.1; the first is the one a Machina host connects to.</summary>

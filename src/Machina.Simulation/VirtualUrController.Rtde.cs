@@ -7,25 +7,6 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
-    /// <summary>The RTDE outputs the virtual controller knows, with their types (UR's RTDE guide); others answer NOT_FOUND.</summary>
-    private static readonly Dictionary<string, string> OutputTypes = new(StringComparer.Ordinal)
-    {
-        ["timestamp"] = "DOUBLE",
-        ["actual_q"] = "VECTOR6D",
-        ["target_q"] = "VECTOR6D",
-        ["actual_qd"] = "VECTOR6D",
-        ["actual_TCP_pose"] = "VECTOR6D",
-        ["target_TCP_pose"] = "VECTOR6D",
-        ["actual_TCP_speed"] = "VECTOR6D",
-        ["robot_mode"] = "INT32",
-        ["safety_mode"] = "INT32",
-        ["safety_status"] = "INT32",
-        ["runtime_state"] = "UINT32",
-        ["speed_scaling"] = "DOUBLE",
-        ["target_speed_fraction"] = "DOUBLE",
-        ["actual_digital_output_bits"] = "UINT64",
-    };
-
     private readonly List<RtdeSubscriber> _subscribers = [];
     private readonly Lock _rtdeGate = new();
     private CancellationTokenSource _rtdeWake = new();
@@ -35,17 +16,7 @@ public sealed partial class VirtualUrController
     public int RtdePackagesSent => Volatile.Read(ref _rtdePackagesSent);
 
     /// <summary>The type of an RTDE output name, or <c>NOT_FOUND</c>.</summary>
-    internal static string TypeOf(string name)
-    {
-        if (OutputTypes.TryGetValue(name, out string? type))
-        {
-            return type;
-        }
-        const string register = "output_int_register_";
-        return name.StartsWith(register, StringComparison.Ordinal) && int.TryParse(name.AsSpan(register.Length), System.Globalization.NumberStyles.None, Num.Inv, out int n) && n is >= 0 and <= 47
-            ? "INT32"
-            : Packages.NotFound;
-    }
+    internal static string TypeOf(string name) => VirtualUrRtdeFields.OutputType(name);
 
     private Task AcceptRtdeClientsAsync(CancellationToken token) => AcceptAsync(_rtdeListener!, ServeRtdeAsync, token);
 
@@ -87,6 +58,7 @@ public sealed partial class VirtualUrController
             {
                 _subscribers.Remove(subscriber);
             }
+            ReleaseInputs(subscriber);
         }
     }
 
@@ -113,11 +85,12 @@ public sealed partial class VirtualUrController
             case Packages.SetupOutputs:
                 return SetupOutputs(payload, subscriber, protocol);
             case Packages.SetupInputs:
-                // No inputs are simulated: every name is unknown.
-                string names = Encoding.ASCII.GetString(payload);
-                return Packages.Package(type, [0, .. Encoding.ASCII.GetBytes(string.Join(',', names.Split(',').Select(_ => Packages.NotFound)))]);
+                return SetupInputs(payload, subscriber);
+            case Packages.DataPackage:
+                ApplyInputs(payload, subscriber);
+                return [];
             case Packages.Start:
-                bool ok = subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Packages.NotFound);
+                bool ok = (subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Packages.NotFound)) || subscriber.HasInputs;
                 if (ok)
                 {
                     lock (_rtdeGate)
@@ -153,7 +126,7 @@ public sealed partial class VirtualUrController
             frequency = BinaryPrimitives.ReadDoubleBigEndian(payload);
             payload = payload[8..];
         }
-        string[] names = Encoding.ASCII.GetString(payload).Split(',');
+        string[] names = VirtualUrRtdeFields.Recipe(Encoding.ASCII.GetString(payload));
         string[] types = names.Select(TypeOf).ToArray();
         if (!(frequency > 0 && frequency <= _options.MaxRtdeFrequency))
         {
@@ -260,9 +233,23 @@ public sealed partial class VirtualUrController
         {
             Names = names;
             Types = types;
-            RecipeId++;
+            RecipeId = NextRecipe();
             Period = TimeSpan.FromSeconds(1 / frequency);
         }
+
+        private byte _lastRecipe;
+
+        /// <summary>The next recipe id of this connection (outputs and inputs count together, from 1).</summary>
+        public byte NextRecipe() => ++_lastRecipe;
+
+        /// <summary>The input recipes of this connection by id: names and types.</summary>
+        public Dictionary<byte, (string[] Names, string[] Types)> InputRecipes { get; } = [];
+
+        /// <summary>The last value this client sent for each input name (masks apply with the last value sent).</summary>
+        public Dictionary<string, double> InputValues { get; } = new(StringComparer.Ordinal);
+
+        /// <summary>True when an input recipe has been set up.</summary>
+        public bool HasInputs => InputRecipes.Count > 0;
 
         public bool IsDue(TimeProvider clock, long now) => !_sentOnce || clock.GetElapsedTime(LastSent, now) >= Period;
 

@@ -21,17 +21,28 @@ public sealed partial class VirtualUrController
         twin.StopProgram();
     }
 
-    /// <summary>The dashboard answers about the interpreter's program (the commands a host uses): play and pause release and hold the program at its next read.</summary>
+    /// <summary>
+    /// The dashboard's answer to one command line, worded as UR's e-Series dashboard server words it, with the controller's state
+    /// behind it: robot mode (power off, idle, running), the loaded program, play, pause and stop of the interpreter's program,
+    /// safety, popups and the log. Commands are matched without regard to letter case, as a UR does.
+    /// </summary>
     private string TwinDashboard(UrTwinController twin, string command)
     {
+        foreach (string prefixed in (string[])["load installation", "set operational mode", "generate flight report", "generate support file", "load", "popup", "addToLog"])
+        {
+            if (command.StartsWith(prefixed, StringComparison.OrdinalIgnoreCase) && (command.Length == prefixed.Length || command[prefixed.Length] == ' '))
+            {
+                return DashboardWithArgument(prefixed, command[prefixed.Length..].Trim());
+            }
+        }
         bool running = twin.State == UrProgramState.Running;
-        switch (command)
+        switch (command.ToLowerInvariant())
         {
             case "stop":
                 StopTwin(twin);
                 return "Stopped";
             case "play":
-                return running && SafetyStatus == Normal && ReleaseTwin() ? "Starting program" : "Failed to execute: play";
+                return Play(twin) ? "Starting program" : "Failed to execute: play";
             case "pause":
                 if (running && HoldTwin())
                 {
@@ -45,25 +56,177 @@ public sealed partial class VirtualUrController
                 return UnlockProtectiveStop();
             case "close safety popup":
                 return "closing safety popup";
+            case "close popup":
+                lock (Gate)
+                {
+                    _popup = null;
+                }
+                return "closing popup";
             case "quit":
                 return "Disconnected";
+            case "shutdown":
+                PowerOff();
+                return "Shutting down";
+            case "power on":
+                PowerOn();
+                return "Powering on";
+            case "power off":
+                PowerOff();
+                return "Powering off";
+            case "brake release":
+                ReleaseBrakes();
+                return "Brake releasing";
+            case "restart safety":
+                ReleaseEmergencyStop();
+                lock (Gate)
+                {
+                    _safety = Normal;
+                }
+                PowerOff();
+                return "Restarting safety";
             case "robotmode":
-                return "Robotmode: RUNNING";
+                return "Robotmode: " + RobotModeName(RobotMode);
             case "get robot model":
                 return DashboardModelName;
-            case "PolyscopeVersion":
+            case "get serial number":
+                return SerialNumber;
+            case "polyscopeversion":
                 return DashboardSoftware;
-            case "programState":
-                return (!running ? "STOPPED" : TwinHeld ? "PAUSED" : "PLAYING") + (twin.ProgramsStarted == 0 ? " <unnamed>" : " " + (twin.ProgramName ?? "<unnamed>"));
+            case "version":
+                Version v = SoftwareVersion;
+                return $"{v.Major}.{v.Minor}.{Math.Max(v.Build, 0)}.{Math.Max(v.Revision, 0)}";
+            case "get loaded program":
+                return LoadedProgram is string loaded ? "Loaded program: " + loaded : "No program loaded";
+            case "isprogramsaved":
+                return "true " + (LoadedProgram ?? "<unnamed>");
+            case "is in remote control":
+                return "true";
+            case "get operational mode":
+                lock (Gate)
+                {
+                    return _operationalMode ?? "NONE";
+                }
+            case "clear operational mode":
+                lock (Gate)
+                {
+                    _operationalMode = null;
+                }
+                return "No longer controlling the operational mode. Current operational mode: 'AUTOMATIC'.";
+            case "savelog":
+                return "Log saved to disk";
+            case "programstate":
+                return (!running ? "STOPPED" : TwinHeld ? "PAUSED" : "PLAYING") + " " + ProgramStateName(twin);
             case "running":
                 return "Program running: " + (running && !TwinHeld ? "true" : "false");
             case "safetystatus" or "safetymode":
                 string name = SafetyStatus switch { ProtectiveStopped => "PROTECTIVE_STOP", RobotEmergencyStopped => "ROBOT_EMERGENCY_STOP", _ => "NORMAL" };
-                return (command == "safetystatus" ? "Safetystatus: " : "Safetymode: ") + name;
+                return (command.Equals("safetystatus", StringComparison.OrdinalIgnoreCase) ? "Safetystatus: " : "Safetymode: ") + name;
             default:
                 return $"could not understand: '{command}'";
         }
     }
+
+    /// <summary>The answer to a dashboard command that takes an argument (the text after the command).</summary>
+    private string DashboardWithArgument(string command, string argument)
+    {
+        switch (command)
+        {
+            case "load":
+                if (!argument.EndsWith(".urp", StringComparison.OrdinalIgnoreCase))
+                {
+                    return "File not found: " + argument;
+                }
+                StopTwin(Twin);
+                lock (Gate)
+                {
+                    _loadedProgram = argument;
+                }
+                return "Loading program: " + argument;
+            case "load installation":
+                return argument.Length == 0 ? "File not found: " : "Loading installation: " + argument;
+            case "popup":
+                lock (Gate)
+                {
+                    _popup = argument;
+                }
+                return "showing popup";
+            case "addToLog":
+                if (argument.Length == 0)
+                {
+                    return "No log message to add";
+                }
+                lock (Gate)
+                {
+                    _userLog.Add(argument);
+                    if (_userLog.Count > MaxKeptTexts)
+                    {
+                        _userLog.RemoveAt(0);
+                    }
+                }
+                Pendant(argument);
+                return "Added log message";
+            case "set operational mode":
+                string mode = argument.ToUpperInvariant();
+                if (mode is not ("MANUAL" or "AUTOMATIC"))
+                {
+                    return "Failed setting operational mode. Please specify manual or automatic";
+                }
+                lock (Gate)
+                {
+                    _operationalMode = mode;
+                }
+                return $"Operational mode {mode} is set";
+            default: // the flight report and support file need a robot's disk
+                return $"could not understand: '{command} {argument}'";
+        }
+    }
+
+    /// <summary>
+    /// Dashboard play: releases a paused program, or starts the loaded program when none runs. A .urp program is a PolyScope
+    /// program the twin cannot read: it runs in its place a program that waits until stopped (approximated). Refused unless the
+    /// arm is running (brakes released) and safe.
+    /// </summary>
+    private bool Play(UrTwinController twin)
+    {
+        if (RobotMode != RunningMode || SafetyStatus != Normal)
+        {
+            return false;
+        }
+        if (twin.State == UrProgramState.Running)
+        {
+            return ReleaseTwin();
+        }
+        string? loaded = LoadedProgram;
+        if (loaded is null)
+        {
+            return false;
+        }
+        bool started = twin.Start("def loaded_program():\n  while True:\n    sleep(1)\n  end\nend\n");
+        if (started)
+        {
+            lock (Gate)
+            {
+                _playingLoaded = twin.ProgramsStarted;
+            }
+        }
+        return started;
+    }
+
+    /// <summary>The program programState names: the loaded one while it plays, else the last script's name.</summary>
+    private string ProgramStateName(UrTwinController twin)
+    {
+        lock (Gate)
+        {
+            if (_loadedProgram is not null && (_playingLoaded == twin.ProgramsStarted || twin.ProgramsStarted == 0))
+            {
+                return _loadedProgram;
+            }
+        }
+        return twin.ProgramsStarted == 0 ? "<unnamed>" : twin.ProgramName ?? "<unnamed>";
+    }
+
+    /// <summary>The serial number the dashboard gives (UR's begin with the year of make).</summary>
+    private const string SerialNumber = "20245500001";
 
     /// <summary>The arm's name as a UR dashboard gives it (<c>get robot model</c>): without the e-Series "e" ("UR5" for a UR5e).</summary>
     private string DashboardModelName
@@ -83,10 +246,19 @@ public sealed partial class VirtualUrController
     {
         get
         {
+            Version v = SoftwareVersion;
+            return $"URSoftware {v.Major}.{v.Minor}.{Math.Max(v.Build, 0)}.{Math.Max(v.Revision, 0)} (virtual controller)";
+        }
+    }
+
+    /// <summary>The software version the controller reports everywhere: the configured one for an e-Series arm, 3.15.8 for a CB-Series arm (UR3, UR5, UR10), which never runs software 5.</summary>
+    private Version SoftwareVersion
+    {
+        get
+        {
             string name = (Model ?? RobotModels.Get("UR5e")).Name;
             bool cbSeries = !name.EndsWith('e') && RobotModels.Find(name + "e") is not null;
-            Version v = cbSeries ? new Version(3, 15, 8) : _options.ControllerVersion;
-            return $"URSoftware {v.Major}.{v.Minor}.{Math.Max(v.Build, 0)}.0 (virtual controller)";
+            return cbSeries ? new Version(3, 15, 8) : _options.ControllerVersion;
         }
     }
 }

@@ -41,6 +41,7 @@ public sealed partial class VirtualUrController
             _runtimeException = reason;
             streams = [.. _scriptStreams];
         }
+        SendToStateClients(bytes);
         foreach (NetworkStream stream in streams)
         {
             try

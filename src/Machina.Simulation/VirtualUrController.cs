@@ -67,6 +67,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         Run(AcceptRtdeClientsAsync);
         Run(AcceptDashboardClientsAsync);
         Run(SendRtdeAsync);
+        ListenClientInterfaces();
         return Task.CompletedTask;
     }
 
@@ -78,6 +79,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         }
         _rtdeListener?.Stop();
         _dashboardListener?.Stop();
+        StopClientInterfaces();
         Twin.Dispose(); // stops the running program and closes its sockets
         WakeRtde();
     }

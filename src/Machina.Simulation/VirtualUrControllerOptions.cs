@@ -27,6 +27,18 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     public int DashboardPort { get; init; }
 
     /// <summary>
+    /// Primary client interface port (a real controller: 30001): the version message on connect, robot state at 10 Hz, robot
+    /// messages, and scripts and primary commands in. 0 = OS-chosen; null (the default) = not served.
+    /// </summary>
+    public int? PrimaryPort { get; init; }
+
+    /// <summary>Secondary client interface port (a real controller: 30002): as the primary, without primary commands. 0 = OS-chosen; null (the default) = not served.</summary>
+    public int? SecondaryPort { get; init; }
+
+    /// <summary>Real-time client interface port (a real controller: 30003): the real-time package at 500 Hz (125 Hz before software 5), and scripts in. 0 = OS-chosen; null (the default) = not served.</summary>
+    public int? RealtimePort { get; init; }
+
+    /// <summary>
     /// Always true (the default): the controller runs what arrives on its script ports with its URScript interpreter, as a UR
     /// does, and RTDE and the dashboard report the interpreter's arm, registers and program. Kept so that code setting it
     /// compiles; false is refused (the imitation of the driver it selected is gone). Without a <c>Model</c> the arm is a UR5e.
@@ -57,7 +69,7 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
         {
             throw new ArgumentException("The virtual UR always runs what arrives on its script ports with its URScript interpreter, as a UR does; RunsScripts = false (the former imitation of the driver) is no longer available.");
         }
-        foreach (int port in ExtraScriptPorts.Append(ScriptPort).Append(RtdePort).Append(DashboardPort))
+        foreach (int port in ExtraScriptPorts.Append(ScriptPort).Append(RtdePort).Append(DashboardPort).Append(PrimaryPort ?? 0).Append(SecondaryPort ?? 0).Append(RealtimePort ?? 0))
         {
             if (port is < 0 or > 65535)
             {

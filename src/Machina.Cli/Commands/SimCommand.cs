@@ -25,7 +25,9 @@ internal static partial class SimCommand
 
         Options:
           --port P          the port hosts connect to (default {DefaultPort}; 0 picks a free one). ABB and KUKA: the driver's port,
-                            P + 1 the monitor's; UR: the script port, P + 1 RTDE and P + 2 the dashboard
+                            P + 1 the monitor's; UR: the script port, P + 1 RTDE and P + 2 the dashboard. Without --port a UR
+                            listens where a UR does: primary 30001, secondary 30002,
+                            real-time 30003, RTDE 30004, dashboard 29999
           --bind ADDRESS    the address to listen on (default 127.0.0.1, this computer only; 0.0.0.0 for every network)
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
@@ -50,7 +52,8 @@ internal static partial class SimCommand
         {
             return await RunKrlAsync(krlProgram, Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, brand)!, context).ConfigureAwait(false);
         }
-        int port = args.Port("--port", DefaultPort, allowZero: true);
+        bool urLayout = brand == UrBrand.Definition.Type && args.Value("--port") is null;
+        int port = urLayout ? UrLayout[0].Port : args.Port("--port", DefaultPort, allowZero: true);
         string bindText = args.Value("--bind") ?? "127.0.0.1";
         if (!IPAddress.TryParse(bindText, out IPAddress? bind))
         {
@@ -80,10 +83,11 @@ internal static partial class SimCommand
             }
         }
 
-        await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model), context.Cancellation).ConfigureAwait(false);
-        await using TcpRelay relay = TcpRelay.Start(bind, port, controller, Log);
+        await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model, urLayout), context.Cancellation).ConfigureAwait(false);
+        RelayRoute[] routes = urLayout ? UrRoutes(controller) : controller.CompactRoutes;
+        await using TcpRelay relay = TcpRelay.Start(bind, port, routes, Log);
         await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
-        Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(controller, relay.Port)}" +
+        Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(routes, relay.Ports)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +
             $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {relay.Port}");
@@ -101,12 +105,20 @@ internal static partial class SimCommand
     }
 
     /// <summary>Every port named for what it is, e.g. "(script port; RTDE on 7001, dashboard on 7002)".</summary>
-    internal static string Ports(RunningController controller, int port)
+    internal static string Ports(IReadOnlyList<RelayRoute> routes, IReadOnlyList<int> ports)
     {
-        string others = string.Join(", ", controller.PortOffsets.Skip(1).Select((offset, i) =>
-            $"{controller.PortNames[i + 1]} on {(port + offset).ToString(System.Globalization.CultureInfo.InvariantCulture)}"));
-        return $"({controller.PortNames[0]} port{(others.Length > 0 ? "; " + others : "")})";
+        string others = string.Join(", ", routes.Skip(1).Select((route, i) =>
+            $"{route.Name} on {ports[i + 1].ToString(System.Globalization.CultureInfo.InvariantCulture)}"));
+        return $"({routes[0].Name} port{(others.Length > 0 ? "; " + others : "")})";
     }
+
+    /// <summary>Where a UR listens (its client interfaces, RTDE and dashboard), the layout of <c>machina sim ur</c> without --port; the first is where a host sends scripts.</summary>
+    internal static readonly (string Name, int Port)[] UrLayout =
+        [("primary", 30001), ("secondary", 30002), ("real-time", 30003), ("RTDE", 30004), ("dashboard", 29999)];
+
+    /// <summary>The UR layout's routes to the controller's own ports (its compact script port is not relayed: the client interfaces take scripts).</summary>
+    private static RelayRoute[] UrRoutes(RunningController controller) =>
+        [.. UrLayout.Select(p => new RelayRoute(p.Port - UrLayout[0].Port, controller.Ports[Array.IndexOf(controller.PortNames, p.Name)], p.Name))];
 
     private static string Num(double value) => value.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture);
 }

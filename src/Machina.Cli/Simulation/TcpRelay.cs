@@ -12,17 +12,15 @@ internal sealed class TcpRelay : IAsyncDisposable
 {
     private const int MaxPortAttempts = 50;
     private readonly List<TcpListener> _listeners;
-    private readonly int _targetPort;
     private readonly Action<string> _log;
     private readonly CancellationTokenSource _stopping = new();
     private readonly List<Task> _tasks = [];
     private readonly Lock _gate = new();
     private readonly List<TcpClient> _clients = [];
 
-    private TcpRelay(List<TcpListener> listeners, int targetPort, Action<string> log)
+    private TcpRelay(List<TcpListener> listeners, Action<string> log)
     {
         _listeners = listeners;
-        _targetPort = targetPort;
         _log = log;
         Port = ((IPEndPoint)listeners[0].LocalEndpoint).Port;
     }
@@ -31,26 +29,28 @@ internal sealed class TcpRelay : IAsyncDisposable
     internal int Port { get; }
 
     /// <summary>
-    /// Listens on <paramref name="address"/> at <paramref name="port"/> (0: the system chooses) plus each of the controller's port
-    /// offsets, relaying to <paramref name="controller"/>. <paramref name="log"/> receives one line per event (thread-safe use is the caller's).
+    /// Listens on <paramref name="address"/> at <paramref name="port"/> (0: the system chooses) plus each route's offset, relaying each
+    /// to its controller port on 127.0.0.1. <paramref name="log"/> receives one line per event (thread-safe use is the caller's).
     /// </summary>
     /// <exception cref="CliException">The ports are taken or the address is not on this computer.</exception>
-    internal static TcpRelay Start(IPAddress address, int port, RunningController controller, Action<string> log)
+    internal static TcpRelay Start(IPAddress address, int port, IReadOnlyList<RelayRoute> routes, Action<string> log)
     {
-        List<TcpListener> listeners = Listen(address, port, controller.PortOffsets);
-        var relay = new TcpRelay(listeners, controller.Port, log);
+        List<TcpListener> listeners = Listen(address, port, [.. routes.Select(r => r.Offset)]);
+        var relay = new TcpRelay(listeners, log);
         for (int i = 0; i < listeners.Count; i++)
         {
-            int offset = controller.PortOffsets[i];
-            string name = controller.PortNames[i];
+            RelayRoute route = routes[i];
             TcpListener listener = listeners[i];
             lock (relay._gate)
             {
-                relay._tasks.Add(Task.Run(() => relay.AcceptAsync(listener, offset, name)));
+                relay._tasks.Add(Task.Run(() => relay.AcceptAsync(listener, route.Target, route.Name)));
             }
         }
         return relay;
     }
+
+    /// <summary>Every port listened on, in the order of the routes.</summary>
+    internal int[] Ports => [.. _listeners.Select(l => ((IPEndPoint)l.LocalEndpoint).Port)];
 
     private static List<TcpListener> Listen(IPAddress address, int port, int[] offsets)
     {
@@ -87,7 +87,7 @@ internal sealed class TcpRelay : IAsyncDisposable
         }
     }
 
-    private async Task AcceptAsync(TcpListener listener, int offset, string name)
+    private async Task AcceptAsync(TcpListener listener, int target, string name)
     {
         CancellationToken token = _stopping.Token;
         while (!token.IsCancellationRequested)
@@ -104,19 +104,19 @@ internal sealed class TcpRelay : IAsyncDisposable
             lock (_gate)
             {
                 _clients.Add(client);
-                _tasks.Add(Task.Run(() => ServeAsync(client, offset, name, token)));
+                _tasks.Add(Task.Run(() => ServeAsync(client, target, name, token)));
             }
         }
     }
 
-    private async Task ServeAsync(TcpClient client, int offset, string what, CancellationToken token)
+    private async Task ServeAsync(TcpClient client, int target, string what, CancellationToken token)
     {
         string who = client.Client.RemoteEndPoint?.ToString() ?? "a host";
         using var upstream = new TcpClient { NoDelay = true };
         try
         {
             client.NoDelay = true;
-            await upstream.ConnectAsync(IPAddress.Loopback, _targetPort + offset, token).ConfigureAwait(false);
+            await upstream.ConnectAsync(IPAddress.Loopback, target, token).ConfigureAwait(false);
             _log($"{who} connected ({what})");
             using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
             Task toController = PumpAsync(client.GetStream(), upstream.GetStream(), both.Token);
@@ -177,3 +177,6 @@ internal sealed class TcpRelay : IAsyncDisposable
         _stopping.Dispose();
     }
 }
+
+/// <summary>One port a <see cref="TcpRelay"/> listens on: its offset from the relay's first port, the controller's port it relays to, and what it is for.</summary>
+internal readonly record struct RelayRoute(int Offset, int Target, string Name);

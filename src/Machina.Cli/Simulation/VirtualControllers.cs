@@ -5,7 +5,8 @@ namespace Machina.Cli.Simulation;
 /// <summary>How a virtual controller started by the command line behaves.</summary>
 /// <param name="SpeedFactor">How much faster than real time it moves (1 = real time).</param>
 /// <param name="Model">The arm it moves like, or null (joints and pose then stay independent).</param>
-internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null);
+/// <param name="UrClientInterfaces">A UR also serves its primary, secondary and real-time client interfaces (as on 30001–30003).</param>
+internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false);
 
 /// <summary>A virtual controller listening on 127.0.0.1, until disposed: one of <see cref="VirtualControllerRegistry"/>, as the command line shows it.</summary>
 internal sealed class RunningController(RunningVirtualController controller) : IAsyncDisposable
@@ -22,8 +23,14 @@ internal sealed class RunningController(RunningVirtualController controller) : I
     /// <summary>Every port it listens on, as offsets from <see cref="Port"/> (ABB: 0 for the driver, 1 for the monitor).</summary>
     internal int[] PortOffsets => [.. controller.Ports.Select(p => p - controller.Port)];
 
-    /// <summary>What each port is for (ABB: "driver", "monitor"; UR: "script", "RTDE", "dashboard"), in the order of <see cref="PortOffsets"/>.</summary>
+    /// <summary>What each port is for (ABB: "driver", "monitor"; UR: "script", "RTDE", "dashboard", and "primary", "secondary", "real-time" when served), in the order of <see cref="PortOffsets"/>.</summary>
     internal string[] PortNames => [.. controller.PortNames];
+
+    /// <summary>Every port it listens on, on 127.0.0.1, in the order of <see cref="PortNames"/>.</summary>
+    internal int[] Ports => [.. controller.Ports];
+
+    /// <summary>Relays to every port, each at its offset from the first (the compact layout of <c>--port P</c>).</summary>
+    internal RelayRoute[] CompactRoutes => [.. Ports.Select((p, i) => new RelayRoute(p - Port, p, PortNames[i]))];
 
     /// <summary>What it did: requests received and executed.</summary>
     internal string Summary() => controller.Summary();
@@ -76,6 +83,10 @@ internal static class VirtualControllers
     {
         Machina.Simulation.VirtualControllerOptions settings = defaults;
         settings = settings with { SpeedFactor = options.SpeedFactor, RequestLogCapacity = RequestsKept };
+        if (options.UrClientInterfaces && settings is VirtualUrControllerOptions ur)
+        {
+            settings = ur with { PrimaryPort = 0, SecondaryPort = 0, RealtimePort = 0 };
+        }
         if (options.Model is RobotModel model)
         {
             settings = settings with { Model = model };

@@ -1,0 +1,289 @@
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+using Machina.Simulation.UrScript;
+
+namespace Machina.Simulation;
+
+public sealed partial class VirtualUrController
+{
+    /// <summary>How long a client interface waits for a client to take a package before it drops that client.</summary>
+    private const int ClientSendTimeoutMs = 2000;
+
+    private readonly List<ClientConnection> _primaryClients = [];
+    private readonly List<ClientConnection> _realtimeClients = [];
+    private readonly List<TcpListener> _clientListeners = [];
+    private VirtualUrArmFacts? _armFacts;
+
+    /// <summary>The primary client interface port (a UR: 30001), or 0 when not served or not started.</summary>
+    public int PrimaryPort { get; private set; }
+
+    /// <summary>The secondary client interface port (a UR: 30002), or 0 when not served or not started.</summary>
+    public int SecondaryPort { get; private set; }
+
+    /// <summary>The real-time client interface port (a UR: 30003), or 0 when not served or not started.</summary>
+    public int RealtimePort { get; private set; }
+
+    /// <summary>Starts the client interfaces the options ask for.</summary>
+    private void ListenClientInterfaces()
+    {
+        _armFacts = VirtualUrArmFacts.Of(Model ?? RobotModels.Get("UR5e"));
+        if (_options.PrimaryPort is int primary)
+        {
+            PrimaryPort = ListenClients(primary, (c, t) => ServeStateClientAsync(c, primary: true, t));
+        }
+        if (_options.SecondaryPort is int secondary)
+        {
+            SecondaryPort = ListenClients(secondary, (c, t) => ServeStateClientAsync(c, primary: false, t));
+        }
+        if (_options.RealtimePort is int realtime)
+        {
+            RealtimePort = ListenClients(realtime, ServeRealtimeClientAsync);
+        }
+        if (_options.PrimaryPort is not null || _options.SecondaryPort is not null)
+        {
+            Run(token => SendClientPackagesAsync(_primaryClients, TimeSpan.FromMilliseconds(100), () => VirtualUrClientPackages.State(ClientState(), _armFacts), token));
+        }
+        if (_options.RealtimePort is not null)
+        {
+            double rate = SoftwareVersion.Major >= 5 ? 500 : 125;
+            Run(token => SendClientPackagesAsync(_realtimeClients, TimeSpan.FromSeconds(1 / rate), () => VirtualUrClientPackages.Realtime(ClientState(), SoftwareVersion), token));
+        }
+    }
+
+    private int ListenClients(int port, Func<TcpClient, CancellationToken, Task> serve)
+    {
+        TcpListener listener = Listen(port);
+        _clientListeners.Add(listener);
+        Run(token => AcceptAsync(listener, serve, token));
+        return PortOf(listener);
+    }
+
+    private void StopClientInterfaces()
+    {
+        foreach (TcpListener listener in _clientListeners)
+        {
+            listener.Stop();
+        }
+    }
+
+    /// <summary>
+    /// A primary or secondary client: the version message first, then robot state at 10 Hz and robot messages (text, runtime
+    /// exceptions); what it sends is URScript, and on the primary port also the controller's primary commands.
+    /// </summary>
+    private async Task ServeStateClientAsync(TcpClient client, bool primary, CancellationToken token)
+    {
+        var connection = new ClientConnection(client);
+        connection.Send(VirtualUrClientPackages.Version(Timestamp, SoftwareVersion));
+        connection.Send(VirtualUrClientPackages.State(ClientState(), _armFacts!));
+        lock (Gate)
+        {
+            _primaryClients.Add(connection);
+        }
+        try
+        {
+            var commands = primary ? new VirtualUrPrimaryCommands(PrimaryCommand) : null;
+            await FeedClientAsync(client.GetStream(), commands, token).ConfigureAwait(false);
+        }
+        finally
+        {
+            lock (Gate)
+            {
+                _primaryClients.Remove(connection);
+            }
+        }
+    }
+
+    /// <summary>A real-time client: the real-time package at the controller's rate; what it sends is URScript.</summary>
+    private async Task ServeRealtimeClientAsync(TcpClient client, CancellationToken token)
+    {
+        var connection = new ClientConnection(client);
+        lock (Gate)
+        {
+            _realtimeClients.Add(connection);
+        }
+        try
+        {
+            await FeedClientAsync(client.GetStream(), null, token).ConfigureAwait(false);
+        }
+        finally
+        {
+            lock (Gate)
+            {
+                _realtimeClients.Remove(connection);
+            }
+        }
+    }
+
+    /// <summary>Feeds what a client interface connection sends to the interpreter, less the primary commands it takes out.</summary>
+    private async Task FeedClientAsync(NetworkStream stream, VirtualUrPrimaryCommands? commands, CancellationToken token)
+    {
+        var bytes = new byte[64 * 1024];
+        while (true)
+        {
+            int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
+            if (n == 0)
+            {
+                return;
+            }
+            string text = Encoding.Latin1.GetString(bytes, 0, n);
+            if (commands is not null)
+            {
+                text = commands.Filter(text);
+            }
+            if (text.Length > 0)
+            {
+                await Task.Run(() => Twin.Receive(text), token).ConfigureAwait(false);
+            }
+        }
+    }
+
+    /// <summary>A primary command: power, brakes, protective stop, program stop.</summary>
+    private void PrimaryCommand(string command)
+    {
+        Pendant("Primary interface: " + command);
+        switch (command)
+        {
+            case "power on":
+                PowerOn();
+                break;
+            case "power off":
+                PowerOff();
+                break;
+            case "set robotmode run":
+                ReleaseBrakes();
+                break;
+            case "set unlock protective stop":
+                UnlockProtectiveStop();
+                break;
+            default: // stop program
+                StopTwin(Twin);
+                break;
+        }
+    }
+
+    /// <summary>Sends a fresh package to every client of one interface each period, while it has clients.</summary>
+    private async Task SendClientPackagesAsync(List<ClientConnection> clients, TimeSpan period, Func<byte[]> package, CancellationToken token)
+    {
+        using var timer = new PeriodicTimer(period, Clock);
+        try
+        {
+            while (await timer.WaitForNextTickAsync(token).ConfigureAwait(false))
+            {
+                ClientConnection[] now;
+                lock (Gate)
+                {
+                    now = [.. clients];
+                }
+                if (now.Length == 0)
+                {
+                    continue;
+                }
+                byte[] bytes = package();
+                foreach (ClientConnection client in now)
+                {
+                    client.Send(bytes);
+                }
+            }
+        }
+        catch (OperationCanceledException)
+        {
+        }
+    }
+
+    /// <summary>Sends a robot message (a runtime exception or a text) to every primary and secondary client.</summary>
+    private void SendToStateClients(byte[] message)
+    {
+        ClientConnection[] now;
+        lock (Gate)
+        {
+            now = [.. _primaryClients];
+        }
+        foreach (ClientConnection client in now)
+        {
+            client.Send(message);
+        }
+    }
+
+    /// <summary>Milliseconds since the controller started, as robot messages stamp them.</summary>
+    private ulong Timestamp => (ulong)Clock.GetElapsedTime(0).TotalMilliseconds;
+
+    /// <summary>What the client interfaces report now: the twin's arm, program, I/O and the controller's modes.</summary>
+    private VirtualUrClientState ClientState()
+    {
+        UrTwinController twin = Twin;
+        Joints joints = twin.JointsNow();
+        Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * twin.Arm.ToolCenter;
+        Vector rv = RotationVectorOf(tcp.Rotation);
+        Pose tool = twin.Arm.ToolCenter;
+        Vector toolRv = RotationVectorOf(tool.Rotation);
+        bool running = twin.State == UrProgramState.Running;
+        return new VirtualUrClientState
+        {
+            Time = Clock.GetElapsedTime(0).TotalSeconds,
+            Q = [.. joints.ToArray().Select(d => d * Math.PI / 180)],
+            Tcp = [tcp.Position.X / 1000, tcp.Position.Y / 1000, tcp.Position.Z / 1000, rv.X, rv.Y, rv.Z],
+            TcpOffset = [tool.Position.X / 1000, tool.Position.Y / 1000, tool.Position.Z / 1000, toolRv.X, toolRv.Y, toolRv.Z],
+            RobotMode = RobotMode,
+            SafetyMode = SafetyStatus,
+            ProgramRunning = running,
+            ProgramPaused = running && TwinHeld,
+            DigitalInputs = DigitalBits(twin, UrIoBanks.StandardIn, UrIoBanks.ConfigurableIn, UrIoBanks.ToolIn),
+            DigitalOutputs = DigitalBits(twin, UrIoBanks.StandardOut, UrIoBanks.ConfigurableOut, UrIoBanks.ToolOut),
+            AnalogIn = [twin.Io.GetNumber(UrIoBanks.AnalogIn, 0), twin.Io.GetNumber(UrIoBanks.AnalogIn, 1)],
+            AnalogOut = [twin.Io.GetNumber(UrIoBanks.AnalogOut, 0), twin.Io.GetNumber(UrIoBanks.AnalogOut, 1)],
+            ToolAnalogIn = [twin.Io.GetNumber(UrIoBanks.ToolAnalogIn, 0), twin.Io.GetNumber(UrIoBanks.ToolAnalogIn, 1)],
+            SpeedFraction = SpeedSlider,
+        };
+    }
+
+    /// <summary>Digital bits as UR packs them: standard 0–7, configurable 8–15, tool 16–17.</summary>
+    private static uint DigitalBits(UrTwinController twin, string standard, string configurable, string tool)
+    {
+        uint bits = 0;
+        for (int i = 0; i < 8; i++)
+        {
+            bits |= (twin.Io.GetBit(standard, i) ? 1u : 0) << i;
+            bits |= (twin.Io.GetBit(configurable, i) ? 1u : 0) << (8 + i);
+        }
+        for (int i = 0; i < 2; i++)
+        {
+            bits |= (twin.Io.GetBit(tool, i) ? 1u : 0) << (16 + i);
+        }
+        return bits;
+    }
+
+    /// <summary>One client of a client interface: its writes, one at a time, and dropped when it stops reading.</summary>
+    private sealed class ClientConnection
+    {
+        private readonly Lock _write = new();
+        private readonly TcpClient _client;
+        private bool _gone;
+
+        public ClientConnection(TcpClient client)
+        {
+            _client = client;
+            client.SendTimeout = ClientSendTimeoutMs;
+        }
+
+        public void Send(byte[] bytes)
+        {
+            lock (_write)
+            {
+                if (_gone)
+                {
+                    return;
+                }
+                try
+                {
+                    _client.GetStream().Write(bytes);
+                }
+                catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException or InvalidOperationException)
+                {
+                    _gone = true;
+                    _client.Close(); // a client that stopped reading is dropped, as a controller does
+                }
+            }
+        }
+    }
+}
