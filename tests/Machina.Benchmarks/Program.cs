@@ -26,6 +26,11 @@ if (options.Help)
     return 0;
 }
 
+if (options.Differential)
+{
+    return Machina.Benchmarks.Differential.DifferentialSuite.Run(options.Size ?? 2000, options.Seed, options.Brands, Console.Out);
+}
+
 if (options.Process)
 {
     foreach ((string key, string value) in options.ChildEnvironment)
