@@ -24,7 +24,8 @@ internal sealed record Options
           --differential    the differential property instead of timings (issue 46): each program compiled and run on the
                             brand's twin, and streamed through Machina's driver to the same twin, must reach the same poses,
                             joints and outputs and end the same way; --size N random programs per brand (default 2000) with
-                            --seed S (default 1), plus samples/programs; --brand abb|ur|kuka (repeatable; default all three)
+                            --seed S (default 1), plus samples/programs; --brand abb|ur|kuka (repeatable; default all three);
+                            --program SEED shows the program of one seed (as a DISAGREE line names it) and both runs' steps
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -38,6 +39,7 @@ internal sealed record Options
     public bool Process { get; init; }
     public bool Differential { get; init; }
     public int Seed { get; init; } = 1;
+    public int? Program { get; init; }
     public List<string> Brands { get; init; } = [];
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
@@ -63,6 +65,7 @@ internal sealed record Options
                 "--process" => options with { Process = true },
                 "--differential" => options with { Differential = true },
                 "--seed" => options with { Seed = NonNegative(args, ref i) },
+                "--program" => options with { Program = NonNegative(args, ref i) },
                 "--brand" => options with { Brands = [.. options.Brands, .. Value(args, ref i).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)] },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
                 "--native" => options with { NativeTool = Value(args, ref i) },

@@ -28,7 +28,9 @@ if (options.Help)
 
 if (options.Differential)
 {
-    return Machina.Benchmarks.Differential.DifferentialSuite.Run(options.Size ?? 2000, options.Seed, options.Brands, Console.Out);
+    return options.Program is int program
+        ? Machina.Benchmarks.Differential.DifferentialSuite.Show(program, options.Brands, Console.Out)
+        : Machina.Benchmarks.Differential.DifferentialSuite.Run(options.Size ?? 2000, options.Seed, options.Brands, Console.Out);
 }
 
 if (options.Process)

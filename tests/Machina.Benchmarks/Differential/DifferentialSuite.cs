@@ -15,7 +15,7 @@ internal static class DifferentialSuite
     /// <summary>Runs the property; <paramref name="brands"/> empty means ABB, UR and KUKA.</summary>
     internal static int Run(int programs, int seed, IReadOnlyList<string> brands, TextWriter output)
     {
-        RobotType[] selected = [.. DifferentialPrograms.Brands.Where(b => brands.Count == 0 || brands.Any(n => n.Equals(b.ToString(), StringComparison.OrdinalIgnoreCase)))];
+        RobotType[] selected = Selected(brands);
         string? samples = SamplesFolder();
         output.WriteLine($"Differential run: {programs} random programs per brand from seed {seed}, and the sample programs in {samples ?? "(not found)"}.");
         bool disagreed = false;
@@ -67,6 +67,31 @@ internal static class DifferentialSuite
         }
         return disagreed ? 1 : 0;
     }
+
+    /// <summary>The program of <paramref name="seed"/> for each selected brand, its verdict and both runs' steps.</summary>
+    internal static int Show(int seed, IReadOnlyList<string> brands, TextWriter output)
+    {
+        bool disagreed = false;
+        foreach (RobotType brand in Selected(brands))
+        {
+            string program = DifferentialPrograms.Random(brand, seed);
+            DifferentialCheck.Result result = DifferentialCheck.RunAsync(brand, program, CancellationToken.None).GetAwaiter().GetResult();
+            disagreed |= result.Verdict == DifferentialVerdict.Disagreed;
+            output.WriteLine($"{brand} seed {seed}:\n{program}{result.Verdict}: {result.Detail}");
+            foreach ((string side, TwinRun? run) in new[] { ("compiled", result.Offline), ("streamed", result.Online) })
+            {
+                output.WriteLine($"  {side}: {run?.End} {run?.Why}");
+                foreach (Machina.Simulation.Twin.TwinTraceEntry e in run?.Steps ?? [])
+                {
+                    output.WriteLine($"    line {e.Line} {e.Text}: TCP {e.Tcp.Position} {e.Tcp.Rotation.ToQuaternionString()}, joints {e.Joints}");
+                }
+            }
+        }
+        return disagreed ? 1 : 0;
+    }
+
+    private static RobotType[] Selected(IReadOnlyList<string> brands) =>
+        [.. DifferentialPrograms.Brands.Where(b => brands.Count == 0 || brands.Any(n => n.Equals(b.ToString(), StringComparison.OrdinalIgnoreCase)))];
 
     /// <summary>samples/programs of the repository this runs in (looked for upwards from the working directory and the binary).</summary>
     internal static string? SamplesFolder()
