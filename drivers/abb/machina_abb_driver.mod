@@ -76,6 +76,9 @@ MODULE Machina_Driver
     VAR jointtarget cursorJoints;
     VAR speeddata cursorSpeed;
     VAR zonedata cursorZone;
+    ! The orientation of the next arc's through point (request 31, sent just before its MoveC, 30); without one, the current.
+    VAR orient arcThroughRot;
+    VAR bool arcThroughGiven := FALSE;
     VAR signaldo outDigital;
     VAR signalao outAnalog;
     VAR signaldi inDigital;
@@ -114,6 +117,7 @@ MODULE Machina_Driver
         cursorJoints := CJointT();
         cursorSpeed := v20;
         cursorZone := z5;
+        arcThroughGiven := FALSE;
         isMachinaDriverAvailable := TRUE;
     ENDPROC
 
@@ -139,6 +143,7 @@ MODULE Machina_Driver
         TPWrite "Machina driver waiting for a client on " + SERVER_IP + ":" + NumToStr(SERVER_PORT, 0);
         SocketAccept serverSocket, clientSocket \Time:=WAIT_MAX;
         discarding := FALSE;
+        arcThroughGiven := FALSE;
         TPWrite "Machina client connected";
         ResetParser;
         SendHandshake;
@@ -390,8 +395,16 @@ MODULE Machina_Driver
             AliasIO r.s1, inAnalog;
             SendIfConnected "$27 " + NumToStr(r.id, 0) + " " + NumToStr(AInput(inAnalog), 6) + ";";
         CASE 30:
+            ! The through point has the orientation request 31 gave (what a compiled MoveC's CirPoint has), else the current one.
+            IF NOT arcThroughGiven THEN
+                arcThroughRot := CRobT(\Tool:=cursorTool \WObj:=cursorWObj).rot;
+            ENDIF
+            arcThroughGiven := FALSE;
             cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
-            MoveC [[r.p8, r.p9, r.p10], [1, 0, 0, 0], [0, 0, 0, 0], cursorTarget.extax], cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
+            MoveC [[r.p8, r.p9, r.p10], arcThroughRot, [0, 0, 0, 0], cursorTarget.extax], cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
+        CASE 31:
+            arcThroughRot := [r.p1, r.p2, r.p3, r.p4];
+            arcThroughGiven := TRUE;
         CASE 100:
             Acknowledge r;
             SocketClose clientSocket;

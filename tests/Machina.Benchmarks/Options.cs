@@ -21,6 +21,11 @@ internal sealed record Options
           --child-exe PATH  (with --process) run another build of this program as the child, e.g. a ReadyToRun publish
           --native PATH     (with --process) the native machina the cold-native-… scenarios run (default: where
                             dotnet publish src/Machina.Cli -p:PublishProfile=linux-x64 puts it)
+          --differential    the differential property instead of timings (issue 46): each program compiled and run on the
+                            brand's twin, and streamed through Machina's driver to the same twin, must reach the same poses,
+                            joints and outputs and end the same way; --size N random programs per brand (default 2000) with
+                            --seed S (default 1), plus samples/programs; --brand abb|ur|kuka (repeatable; default all three);
+                            --program SEED shows the program of one seed (as a DISAGREE line names it) and both runs' steps
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -32,6 +37,10 @@ internal sealed record Options
     public int Runs { get; init; } = 3;
     public bool RunsGiven { get; init; }
     public bool Process { get; init; }
+    public bool Differential { get; init; }
+    public int Seed { get; init; } = 1;
+    public int? Program { get; init; }
+    public List<string> Brands { get; init; } = [];
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
     public string? NativeTool { get; init; }
@@ -54,6 +63,10 @@ internal sealed record Options
                 "--size" or "-n" => options with { Size = Positive(args, ref i) },
                 "--runs" => options with { Runs = Positive(args, ref i), RunsGiven = true },
                 "--process" => options with { Process = true },
+                "--differential" => options with { Differential = true },
+                "--seed" => options with { Seed = NonNegative(args, ref i) },
+                "--program" => options with { Program = NonNegative(args, ref i) },
+                "--brand" => options with { Brands = [.. options.Brands, .. Value(args, ref i).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)] },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
                 "--native" => options with { NativeTool = Value(args, ref i) },
                 "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },

@@ -26,6 +26,13 @@ if (options.Help)
     return 0;
 }
 
+if (options.Differential)
+{
+    return options.Program is int program
+        ? Machina.Benchmarks.Differential.DifferentialSuite.Show(program, options.Brands, Console.Out)
+        : Machina.Benchmarks.Differential.DifferentialSuite.Run(options.Size ?? 2000, options.Seed, options.Brands, Console.Out);
+}
+
 if (options.Process)
 {
     foreach ((string key, string value) in options.ChildEnvironment)

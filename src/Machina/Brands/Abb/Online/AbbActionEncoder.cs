@@ -21,6 +21,7 @@ internal static class AbbActionEncoder
                 into.Add(AbbRequest.Move(id, after.MotionType == MotionType.Linear, Known(after.Position, action), Known(after.Rotation, action)));
                 break;
             case ActionArcMotion:
+                into.Add(AbbRequest.ArcThroughOrientation(Known(after.ArcThroughRotation, action)));
                 into.Add(AbbRequest.MoveC(id, Known(after.Position, action), Known(after.Rotation, action), Known(after.ArcThrough, action)));
                 break;
             case ActionAxes:

@@ -26,6 +26,7 @@ internal enum AbbInstructionCode
     ReadDI = 21,
     ReadAI = 22,
     MoveC = 30,
+    ArcThroughOrientation = 31,
     StopExecution = 100,
     GetInfo = 101,
     SetConfiguration = 102,

@@ -33,6 +33,16 @@ internal readonly partial struct AbbRequest
             R(through.X, MillimetreDecimals), R(through.Y, MillimetreDecimals), R(through.Z, MillimetreDecimals),
         ]);
 
+    /// <summary>
+    /// Code 31: the orientation of the next MoveC's through point, quaternion W X Y Z (4 decimals), as the RAPID compiler writes
+    /// its CirPoint; sent with id 0 just before the arc's code 30.
+    /// </summary>
+    public static AbbRequest ArcThroughOrientation(Rotation rotation) =>
+        new(0, (int)AbbInstructionCode.ArcThroughOrientation, null,
+        [
+            R(rotation.W, QuaternionDecimals), R(rotation.X, QuaternionDecimals), R(rotation.Y, QuaternionDecimals), R(rotation.Z, QuaternionDecimals),
+        ]);
+
     /// <summary>Code 4: TCP speed in mm/s, unrounded.</summary>
     public static AbbRequest Speed(int id, double millimetresPerSecond) => One(id, AbbInstructionCode.Speed, millimetresPerSecond);
 
