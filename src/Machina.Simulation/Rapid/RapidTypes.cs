@@ -76,6 +76,7 @@ internal static class RapidTypes
             Loaddata, Tooldata, Wobjdata,
             new("errnum", RapidTypeKind.Num, "num"), new("intnum", RapidTypeKind.Num, "num"), new("errdomain", RapidTypeKind.Num, "num"),
             new("errtype", RapidTypeKind.Num, "num"), new("socketstatus", RapidTypeKind.Num, "num"), new("errstr", RapidTypeKind.String, "string"),
+            new("dionum", RapidTypeKind.Num, "num"),
             new("socketdev", RapidTypeKind.Opaque, create: () => new RapidSocketDevice()),
             new("clock", RapidTypeKind.Opaque, create: () => new RapidClock()),
             new("trapdata", RapidTypeKind.Opaque, create: () => new RapidTrapData()),

@@ -5,7 +5,7 @@ namespace Machina.Benchmarks.Differential;
 /// <summary>
 /// Seeded random programs (Machina instruction text) over every verb a brand's driver takes: motions of every kind (linear,
 /// joint, absolute and relative, world and local, rotations, joint targets), arcs (through points only, with planes, relative),
-/// tools, speeds, accelerations, zones, outputs, waits, messages and settings stacks. The targets stay in a box every brand's
+/// tools, speeds, accelerations, zones, outputs, waits (timed, and for inputs), input reads, messages and settings stacks. The targets stay in a box every brand's
 /// arm reaches with the tool pointing down (or tilted up to 20°), so most programs run to their end; some do not, and both runs
 /// must then stop at the same action. The same seed gives the same program.
 /// </summary>
@@ -153,6 +153,9 @@ internal static class DifferentialPrograms
                     break;
                 case 27:
                     Emit(random.Next(2) == 0 ? "MotionMode(\"joint\")" : "MotionMode(\"linear\")");
+                    break;
+                case 28:
+                    Input();
                     break;
                 default:
                     MoveBy(new Vector(random.Next(-15, 16), random.Next(-15, 16), random.Next(-15, 16)));
@@ -311,6 +314,23 @@ internal static class DifferentialPrograms
                 _ => analog ? $"WriteAnalog({random.Next(1, 5)}, {N(random.Next(-100, 101) / 100.0)})" : $"WriteDigital({random.Next(1, 17)}, {B(on)})",
             };
             Emit(line);
+        }
+
+        /// <summary>A wait for an input the twins hold at 0 (so it passes at once), with or without a time limit, or a read of one.</summary>
+        private void Input()
+        {
+            string pin = brand switch
+            {
+                RobotType.ABB => $"\"DI_{random.Next(1, 17)}\"",
+                RobotType.UR => $"{random.Next(0, 8)}",
+                _ => $"{random.Next(1, 17)}",
+            };
+            Emit(random.Next(3) switch
+            {
+                0 => $"WaitForDigital({pin}, false)",
+                1 => $"WaitForDigital({pin}, false, {random.Next(100, 1000)})",
+                _ => $"ReadDigital({pin})",
+            });
         }
 
         private static string B(bool on) => on ? "true" : "false";
