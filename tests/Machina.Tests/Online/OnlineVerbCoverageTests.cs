@@ -35,7 +35,7 @@ public class OnlineVerbCoverageTests
     {
         { new ActionExternalAxis(1, 100, ExternalAxesTarget.All, false), "a UR arm has six joints and no external axes to move." },
         { new ActionArmAngle(10, false), "UR arms have six joints and no arm angle" },
-        { new ActionCustomCode("textmsg(1)", false), "URScript cannot run text that arrives while a program runs (it has no eval)" },
+        { new ActionCustomCode("textmsg(1)", false), "the driver cannot run URScript text sent while it runs: URScript has no eval" },
         { new ActionTemperature(200, RobotPartType.Extruder, false, false), "a UR robot has no heaters to control." },
         { new ActionExtrusion(true), "a UR robot has no extruder" },
         { new ActionExtrusionRate(10, false), "a UR robot has no extruder" },

@@ -21,7 +21,7 @@ internal static class UrActionEncoder
         // What a UR controller cannot do online at all (docs/online.md, "What cannot be streamed").
         ActionExternalAxis => Cannot(action, "a UR arm has six joints and no external axes to move."),
         ActionArmAngle => Cannot(action, "UR arms have six joints and no arm angle (it exists only on 7-axis robots)."),
-        ActionCustomCode => Cannot(action, "URScript cannot run text that arrives while a program runs (it has no eval), and a script sent to the controller replaces the running program, Machina's driver; compile the program to include custom code."),
+        ActionCustomCode => Cannot(action, "the driver cannot run URScript text sent while it runs: URScript has no eval, a script sent to the controller replaces the running program (the driver), and the driver does not use Interpreter Mode (software 5.10 and later); compile the program to include custom code."),
         ActionTemperature => Cannot(action, "a UR robot has no heaters to control."),
         ActionExtrusion or ActionExtrusionRate => Cannot(action, "a UR robot has no extruder; use IO to drive one."),
         ActionIODigital d when UrOutputs.WhyNot(d) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
