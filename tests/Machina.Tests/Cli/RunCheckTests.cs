@@ -8,16 +8,16 @@ namespace Machina.Tests.Cli;
 public class RunCheckTests
 {
     [Fact]
-    public async Task Run_UR_ArcMotion_RefusedWithItsLine_NothingSent()
+    public async Task Run_UR_ExternalAxis_RefusedWithItsLine_NothingSent()
     {
         using var cli = new CliRunner();
-        string program = "SpeedTo(100);\nMoveTo(300, 0, 400);\n" + string.Concat(Enumerable.Repeat("Move(0, 0, 1);\n", 11)) + "ArcMotionTo(375, 0, 360, 300, 100, 300);\nMove(0, 0, 1);\n";
+        string program = "SpeedTo(100);\nMoveTo(300, 0, 400);\n" + string.Concat(Enumerable.Repeat("Move(0, 0, 1);\n", 11)) + "ExternalAxisTo(1, 10);\nMove(0, 0, 1);\n";
 
         CliResult result = await cli.RunProgramAsync("run", program, "--brand", "ur", "--sim", "--speed-factor", "1000");
 
         Assert.Equal(1, result.Exit);
-        Assert.Equal("p.machina:14:1: error: ArcMotionTo(375,0,360,300,100,300); cannot be applied: \"Arc motion through [375,0,360] to [300,100,300]\" " +
-            "cannot be streamed to a UR robot: Machina's UR driver has no instruction for it. Nothing was sent; the robot did not move.", result.Stderr.TrimEnd());
+        Assert.StartsWith("p.machina:14:1: error: ExternalAxisTo(1,10); cannot be applied: ", result.Stderr, StringComparison.Ordinal);
+        Assert.EndsWith("cannot be streamed to a UR robot: a UR arm has six joints and no external axes to move. Nothing was sent; the robot did not move.", result.Stderr.TrimEnd(), StringComparison.Ordinal);
         Assert.DoesNotContain("Streaming", result.Stdout, StringComparison.Ordinal);
         Assert.DoesNotContain("%", result.Stdout, StringComparison.Ordinal); // no action executed
     }

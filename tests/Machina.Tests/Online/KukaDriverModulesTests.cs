@@ -72,14 +72,16 @@ public class KukaDriverModulesTests
         XElement server = XElement.Parse(KukaDriverModules.Read("machina_kuka_server.xml"));
         var receive = Tags(server, "RECEIVE");
         var sb = new StringBuilder();
-        KukaInstruction.AppendBatch(sb, [new KukaInstruction(1, KukaActionCode.Message, new KukaValues(), "x")]);
+        KukaInstruction.AppendBatch(sb, [new KukaInstruction(1, KukaActionCode.Message, new KukaValues(), "x"), new KukaInstruction(2, KukaActionCode.Circular, new KukaValues(), "")]);
         var reader = new KukaXmlReader();
         reader.Append(Encoding.ASCII.GetBytes(sb.ToString()));
         Assert.True(reader.TryRead(out KukaElement batch));
-        KukaElement action = batch.Children.Single().Children.Single();
+        // Every action's attributes, then the six only a CIRC carries (V8 ... V13, its auxiliary point).
+        string[] attributes = [.. batch.Children.Single().Children.SelectMany(a => a.Attributes.Select(p => $"{batch.Name}/{batch.Children[0].Name}/{a.Name}/@{p.Key}")).Distinct()];
+        Assert.Equal(16, attributes.Length);
         // The batch's attributes, the batch itself (flag 2), then the host's out-of-band commands (flags 4, 5, 6: the driver's interrupts).
         string[] commands = [.. new[] { KukaProtocol.StopCommand, KukaProtocol.PauseCommand, KukaProtocol.ResumeCommand }.Select(ElementName)];
-        Assert.Equal(action.Attributes.Select(a => $"{batch.Name}/{batch.Children[0].Name}/{action.Name}/@{a.Key}").Append("DT").Concat(commands), receive);
+        Assert.Equal(attributes.Append("DT").Concat(commands), receive);
         string Flag(string tag) => server.Descendants("ELEMENT").Single(e => e.Attribute("Tag")!.Value == tag).Attribute("Set_Flag")!.Value;
         Assert.Equal(["2", "4", "5", "6"], new[] { "DT" }.Concat(commands).Select(Flag));
     }

@@ -167,7 +167,6 @@ public class KukaOnlineTests
 
     public static TheoryData<string, Action<Robot>> Refusals => new()
     {
-        { "ArcMotion", b => b.ArcMotion(10, 10, 0, 20, 0, 0) },
         { "ExternalAxis", b => b.ExternalAxis(1, 10) },
         { "CustomCode", b => b.CustomCode("$OUT[1] = TRUE") },
         { "signal name", b => b.WriteDigital("DO_Gripper", true) },

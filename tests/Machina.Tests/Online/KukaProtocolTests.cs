@@ -97,7 +97,6 @@ public class KukaProtocolTests
 
     public static TheoryData<RobotAction, string> Refused => new()
     {
-        { new ActionArcMotion(new Plane(new Vector(10, 10, 0), Rotation.Identity), new Plane(new Vector(20, 0, 0), Rotation.Identity), true, true), "ArcMotion" },
         { new ActionExternalAxis(1, 100, ExternalAxesTarget.All, false), "ExternalAxis" },
         { new ActionArmAngle(10, false), "ArmAngle" },
         { new ActionCustomCode("$OUT[1] = TRUE", false), "CustomCode" },
@@ -105,7 +104,6 @@ public class KukaProtocolTests
         { new ActionTemperature(200, RobotPartType.Extruder, false, false), "Temperature" },
         { new ActionExtrusion(true), "Extrusion" },
         { new ActionExtrusionRate(10, false), "ExtrusionRate" },
-        { new ActionInitialization(true), "Initialization" },
         { new ActionIODigital("DO_gripper", true, false), "signal name" },
         { new ActionIODigital("1", true, true), "tool outputs" },
         { new ActionIODigital("5000", true, false), "numbered 1 to 4096" },

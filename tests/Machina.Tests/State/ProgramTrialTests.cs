@@ -56,11 +56,11 @@ public sealed class ProgramTrialTests
         robot.AxesTo(0, -90, 90, -90, -90, 0);
         ProgramTrial trial = robot.StartTrial();
 
-        TrialStep arc = trial.Try(Instructions.Parse("ArcMotionTo(300, 100, 400, 300, 200, 400);")[0]);
+        TrialStep axis = trial.Try(Instructions.Parse("ExternalAxisTo(1, 10);")[0]);
         TrialStep output = trial.Try(Instructions.Parse("WriteDigital(12, true);")[0]);
 
-        Assert.False(arc.Applied);
-        Assert.EndsWith("cannot be streamed to a UR robot: Machina's UR driver has no instruction for it.", arc.Refusal, StringComparison.Ordinal);
+        Assert.False(axis.Applied);
+        Assert.EndsWith("cannot be streamed to a UR robot: a UR arm has six joints and no external axes to move.", axis.Refusal, StringComparison.Ordinal);
         Assert.False(output.Applied);
         Assert.Contains("cannot be streamed to a UR robot", output.Refusal, StringComparison.Ordinal);
         Assert.Equal(0, trial.AppliedCount);

@@ -17,11 +17,10 @@ internal static class KukaActionEncoder
     /// <summary>Why the KRL driver cannot run <paramref name="action"/>, naming it, or null when it can (or when there is nothing to send).</summary>
     public static string? WhyCannotStream(RobotAction action) => action switch
     {
-        ActionArcMotion => Refuse(action, "the driver has no CIRC motion yet; split the arc into linear moves, or compile it offline."),
         ActionExternalAxis => Refuse(action, "the driver does not move external axes; compile the program offline for E1 to E6."),
         ActionArmAngle => Refuse(action, "KUKA arms of this kind have no arm angle to set."),
-        ActionCustomCode => Refuse(action, "the driver cannot run KRL text sent at run time; compile the program offline to include custom code."),
-        ActionTemperature or ActionExtrusion or ActionExtrusionRate or ActionInitialization =>
+        ActionCustomCode => Refuse(action, "KRL cannot run text sent at run time: the controller compiles a program when it is selected, and EthernetKRL carries values into declared variables, never statements; compile the program offline to include custom code."),
+        ActionTemperature or ActionExtrusion or ActionExtrusionRate =>
             Refuse(action, "a KUKA arm has no extruder or heated parts; this is for 3D printers."),
         ActionIODigital digital => WhyNotOutput(action, digital.PinName, digital.IsToolPin, DigitalOutputs, "$OUT"),
         ActionWaitDigital wait => WhyNotInput(action, wait.PinName, wait.IsToolPin, DigitalOutputs, "$IN"),
@@ -81,6 +80,13 @@ internal static class KukaActionEncoder
             case ActionTranslation or ActionRotation or ActionTransformation:
                 code = after.MotionType == MotionType.Joint ? KukaActionCode.JointToPose : KukaActionCode.Linear;
                 SetFrame(ref v, Known(after.Position, action), Known(after.Rotation, action));
+                break;
+            case ActionArcMotion:
+                // CIRC auxiliary, target: the points of the KRL compiler's CIRC (the auxiliary point's orientation as it writes it).
+                code = KukaActionCode.Circular;
+                Rotation end = Known(after.Rotation, action);
+                SetFrame(ref v, Known(after.Position, action), end);
+                SetFrame(ref v, Known(after.ArcThrough, action), after.ArcThroughRotation ?? end, KukaProtocol.ValueCount);
                 break;
             case ActionAxes:
                 code = KukaActionCode.JointToAxes;
@@ -149,7 +155,8 @@ internal static class KukaActionEncoder
                 v[2] = Math.Round(after.Precision, 3);
                 break;
             default:
-                // Push, DefineTool, MotionMode, Coordinates, Comment: they change only Machina's state.
+                // Push, DefineTool, MotionMode, Coordinates, Comment: they change only Machina's state. Initialize and Terminate:
+                // a KUKA program needs no start-up or shut-down sequence (the KRL compiler writes a comment).
                 return null;
         }
         return new KukaInstruction(id, code, v, text);
@@ -167,15 +174,16 @@ internal static class KukaActionEncoder
 
     private static double Acceleration(double mmPerSecond2) => Settings.MeansControllerAcceleration(mmPerSecond2) ? 0 : KrlFormat.PerMetre(mmPerSecond2);
 
-    private static void SetFrame(ref KukaValues v, Vector position, Rotation rotation)
+    /// <summary>X, Y, Z (mm) and A, B, C (degrees, 3 decimals) of a frame into <paramref name="v"/> from index <paramref name="first"/>.</summary>
+    private static void SetFrame(ref KukaValues v, Vector position, Rotation rotation, int first = 0)
     {
         (double a, double b, double c) = KrlFormat.Abc(rotation);
-        v[0] = Math.Round(position.X, 3);
-        v[1] = Math.Round(position.Y, 3);
-        v[2] = Math.Round(position.Z, 3);
-        v[3] = Math.Round(KrlFormat.Degrees(a), 3);
-        v[4] = Math.Round(KrlFormat.Degrees(b), 3);
-        v[5] = Math.Round(KrlFormat.Degrees(c), 3);
+        v[first] = Math.Round(position.X, 3);
+        v[first + 1] = Math.Round(position.Y, 3);
+        v[first + 2] = Math.Round(position.Z, 3);
+        v[first + 3] = Math.Round(KrlFormat.Degrees(a), 3);
+        v[first + 4] = Math.Round(KrlFormat.Degrees(b), 3);
+        v[first + 5] = Math.Round(KrlFormat.Degrees(c), 3);
     }
 
     private static T Known<T>(T? value, RobotAction action) where T : struct =>

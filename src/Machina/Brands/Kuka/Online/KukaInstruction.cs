@@ -3,27 +3,30 @@ using System.Text;
 
 namespace Machina;
 
-/// <summary>The seven parameters of a KUKA action (<c>V1</c>…<c>V7</c>), in KRL units.</summary>
-[InlineArray(KukaProtocol.ValueCount)]
+/// <summary>The parameters of a KUKA action (<c>V1</c>…<c>V7</c>, and a CIRC's auxiliary point in <c>V8</c>…<c>V13</c>), in KRL units.</summary>
+[InlineArray(KukaProtocol.CircularValueCount)]
 internal struct KukaValues
 {
     private double _first;
 }
 
-/// <summary>One action as the KRL driver reads it: <c>&lt;A ID="…" T="…" V1="…" … V7="…" M="…"/&gt;</c>.</summary>
+/// <summary>One action as the KRL driver reads it: <c>&lt;A ID="…" T="…" V1="…" … V7="…" M="…"/&gt;</c> (a CIRC: V1 … V13).</summary>
 /// <param name="Id">The action's id (acknowledged by the driver).</param>
 /// <param name="Code">What the driver does.</param>
 /// <param name="Values">Parameters in KRL units (mm, degrees, m/s, seconds), unused ones 0.</param>
 /// <param name="Text">The message text (empty for every other action).</param>
 internal readonly record struct KukaInstruction(int Id, KukaActionCode Code, KukaValues Values, string Text)
 {
-    /// <summary>Appends the action's element. Every action carries every attribute (the driver reads each attribute from its own queue).</summary>
+    /// <summary>
+    /// Appends the action's element. Every action carries every attribute up to V7 (the driver reads each attribute from its own
+    /// queue); a CIRC also carries V8…V13, which the driver reads only for a CIRC.
+    /// </summary>
     public void AppendTo(StringBuilder sb)
     {
         KukaXml.AppendStart(sb, KukaProtocol.Action);
         sb.Append(" ID=\"").Append(Id).Append("\" T=\"").Append((int)Code).Append('"');
         KukaValues values = Values;
-        for (int i = 0; i < KukaProtocol.ValueCount; i++)
+        for (int i = 0; i < KukaProtocol.ValueCountOf(Code); i++)
         {
             KukaXml.AppendAttribute(sb, KukaProtocol.ValueNames[i], values[i]);
         }
@@ -44,15 +47,15 @@ internal readonly record struct KukaInstruction(int Id, KukaActionCode Code, Kuk
     /// <summary>Reads an action element back (the virtual controller's side); a protocol error when an attribute is missing or malformed.</summary>
     public static KukaInstruction Parse(KukaElement element)
     {
-        var values = new KukaValues();
-        for (int i = 0; i < KukaProtocol.ValueCount; i++)
-        {
-            values[i] = element.Number(KukaProtocol.ValueNames[i]);
-        }
         int code = element.Integer("T");
         if (!Enum.IsDefined((KukaActionCode)code))
         {
             throw new KukaProtocolException($"The action type T=\"{code}\" is not one the driver knows.", element.ToString());
+        }
+        var values = new KukaValues();
+        for (int i = 0; i < KukaProtocol.ValueCountOf((KukaActionCode)code); i++)
+        {
+            values[i] = element.Number(KukaProtocol.ValueNames[i]);
         }
         return new KukaInstruction(element.Integer("ID"), (KukaActionCode)code, values,
             element.Attribute("M") ?? throw new KukaProtocolException("The action has no message attribute M.", element.ToString()));

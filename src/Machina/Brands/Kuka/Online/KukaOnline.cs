@@ -21,7 +21,7 @@ internal sealed class KukaOnline : IOnlineBrand
             return null;
         }
         KukaValues values = instruction.Values;
-        for (int i = 0; i < KukaProtocol.ValueCount; i++)
+        for (int i = 0; i < KukaProtocol.ValueCountOf(instruction.Code); i++)
         {
             if (Math.Abs(values[i]) > float.MaxValue)
             {

@@ -17,8 +17,14 @@ internal static class KukaProtocol
     /// <summary>Longest message text the driver shows (KRL's message text is a CHAR[80]).</summary>
     public const int MaxTextLength = 80;
 
-    /// <summary>Number of parameters of an action (<c>V1</c>…<c>V7</c>).</summary>
+    /// <summary>Number of parameters every action carries (<c>V1</c>…<c>V7</c>).</summary>
     public const int ValueCount = 7;
+
+    /// <summary>Number of parameters of a <see cref="KukaActionCode.Circular"/> action: <c>V1</c>…<c>V7</c>, then its auxiliary point in <c>V8</c>…<c>V13</c>.</summary>
+    public const int CircularValueCount = 13;
+
+    /// <summary>How many parameters an action of <paramref name="code"/> carries: 13 for a CIRC, 7 for every other.</summary>
+    public static int ValueCountOf(KukaActionCode code) => code == KukaActionCode.Circular ? CircularValueCount : ValueCount;
 
     /// <summary>Root of a batch of actions, host to driver: <c>&lt;DT&gt;&lt;DR&gt;&lt;A …/&gt;…&lt;/DR&gt;&lt;/DT&gt;</c>.</summary>
     public const string Batch = "DT";
@@ -26,7 +32,7 @@ internal static class KukaProtocol
     /// <summary>The list of actions inside a batch.</summary>
     public const string Actions = "DR";
 
-    /// <summary>One action: attributes <c>ID</c>, <c>T</c>, <c>V1</c>…<c>V7</c>, <c>M</c>.</summary>
+    /// <summary>One action: attributes <c>ID</c>, <c>T</c>, <c>V1</c>…<c>V7</c> (a CIRC: …<c>V13</c>), <c>M</c>.</summary>
     public const string Action = "A";
 
     /// <summary>The driver's state, sent on every connection: version, axes, pose and progress.</summary>
@@ -59,8 +65,8 @@ internal static class KukaProtocol
     /// <summary>Attribute names of a state or pose report: the axes in degrees, then the pose (mm, degrees).</summary>
     public static readonly ImmutableArray<string> AxisNames = ["A1", "A2", "A3", "A4", "A5", "A6"];
 
-    /// <summary>Attribute names of the action parameters.</summary>
-    public static readonly ImmutableArray<string> ValueNames = ["V1", "V2", "V3", "V4", "V5", "V6", "V7"];
+    /// <summary>Attribute names of the action parameters (the last six only on a CIRC).</summary>
+    public static readonly ImmutableArray<string> ValueNames = ["V1", "V2", "V3", "V4", "V5", "V6", "V7", "V8", "V9", "V10", "V11", "V12", "V13"];
 }
 
 /// <summary>What the KRL driver does with an action (<c>A/@T</c>); the parameters <c>V1</c>…<c>V7</c> are listed per code.</summary>
@@ -113,4 +119,10 @@ internal enum KukaActionCode
 
     /// <summary>Read <c>$ANIN[V1]</c> (−1 to 1): its acknowledgement carries the value, <c>&lt;R ID="" V=""/&gt;</c>.</summary>
     ReadAnalog = 16,
+
+    /// <summary>
+    /// <c>CIRC</c> through the auxiliary point X, Y, Z, A, B, C in V8…V13 to X, Y, Z, A, B, C in V1…V6, as the KRL compiler writes
+    /// an arc (the controller does not use the auxiliary point's orientation). Only this action carries V8…V13.
+    /// </summary>
+    Circular = 17,
 }

@@ -9,7 +9,7 @@ namespace Machina;
 /// </summary>
 internal static class UrActionEncoder
 {
-    /// <summary>Most integers one action produces (a pop of three settings: 3 × 3).</summary>
+    /// <summary>Most integers one action produces (an arc: id, code and two poses, 14; a pop of three settings: 3 × 3).</summary>
     public const int MaxValues = 16;
 
     /// <summary>
@@ -18,15 +18,20 @@ internal static class UrActionEncoder
     /// </summary>
     public static string? WhyNot(RobotAction action) => action switch
     {
-        ActionArcMotion or ActionExternalAxis or ActionArmAngle or ActionCustomCode or ActionCoordinates
-            or ActionTemperature or ActionExtrusion or ActionExtrusionRate =>
-            $"\"{action}\" cannot be streamed to a UR robot: Machina's UR driver has no instruction for it.",
+        // What a UR controller cannot do online at all (docs/online.md, "What cannot be streamed").
+        ActionExternalAxis => Cannot(action, "a UR arm has six joints and no external axes to move."),
+        ActionArmAngle => Cannot(action, "UR arms have six joints and no arm angle (it exists only on 7-axis robots)."),
+        ActionCustomCode => Cannot(action, "the driver cannot run URScript text sent while it runs: URScript has no eval, a script sent to the controller replaces the running program (the driver), and the driver does not use Interpreter Mode (software 5.10 and later); compile the program to include custom code."),
+        ActionTemperature => Cannot(action, "a UR robot has no heaters to control."),
+        ActionExtrusion or ActionExtrusionRate => Cannot(action, "a UR robot has no extruder; use IO to drive one."),
         ActionIODigital d when UrOutputs.WhyNot(d) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         ActionIOAnalog a when UrOutputs.WhyNot(a) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         ActionWaitDigital w when UrInputs.WhyNot(w) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         ActionReadInput r when UrInputs.WhyNot(r) is string problem => $"\"{action}\" cannot be streamed to a UR robot: {problem}",
         _ => null,
     };
+
+    private static string Cannot(RobotAction action, string why) => $"\"{action}\" cannot be streamed to a UR robot: {why}";
 
     /// <summary>
     /// Writes the instructions for <paramref name="action"/> into <paramref name="into"/> (<paramref name="count"/> integers, 0 =
@@ -57,6 +62,13 @@ internal static class UrActionEncoder
             case ActionTranslation or ActionRotation or ActionTransformation:
                 return Pose(into, id, after.MotionType == MotionType.Linear ? UrInstructionCode.MoveL : UrInstructionCode.MoveJPose,
                     Known(after.Position, action), Known(after.Rotation, action), ref wire);
+            case ActionArcMotion:
+                // The via pose and the target as the compiler's movec has them: the through point with its orientation, then the end.
+                into[0] = id;
+                into[1] = (int)UrInstructionCode.MoveC;
+                PoseValues(into[2..], Known(after.ArcThrough, action), Known(after.ArcThroughRotation, action), ref wire);
+                PoseValues(into[8..], Known(after.Position, action), Known(after.Rotation, action), ref wire);
+                return 14;
             case ActionAxes:
                 Joints j = Known(after.Axes, action);
                 return Put(into, id, UrInstructionCode.MoveJJoints,
@@ -89,15 +101,25 @@ internal static class UrActionEncoder
             case ActionPushPop { Push: false }:
                 return Pop(into, id, after, ref wire);
             default:
-                // Message, Comment, MotionMode, Push, Initialization: nothing the robot does.
+                // Message, Comment, MotionMode, Coordinates, Push, Initialization: nothing the robot does.
                 return 0;
         }
     }
 
     private static int Pose(Span<int> into, int id, UrInstructionCode code, Vector p, Rotation r, ref Wire wire)
     {
+        into[0] = id;
+        into[1] = (int)code;
+        PoseValues(into[2..], p, r, ref wire);
+        return 8;
+    }
+
+    /// <summary>The six integers of a pose: X Y Z (0.1 mm) and the rotation vector RX RY RZ (1e-4 rad).</summary>
+    private static void PoseValues(Span<int> into, Vector p, Rotation r, ref Wire wire)
+    {
         RotationVector rv = r.ToRotationVector();
-        return Put(into, id, code, wire.Millimetres(p.X), wire.Millimetres(p.Y), wire.Millimetres(p.Z), wire.Degrees(rv.X), wire.Degrees(rv.Y), wire.Degrees(rv.Z));
+        (into[0], into[1], into[2]) = (wire.Millimetres(p.X), wire.Millimetres(p.Y), wire.Millimetres(p.Z));
+        (into[3], into[4], into[5]) = (wire.Degrees(rv.X), wire.Degrees(rv.Y), wire.Degrees(rv.Z));
     }
 
     private static int Tool(Span<int> into, int id, Vector p, Rotation r, double kg, ref Wire wire)

@@ -56,4 +56,10 @@ internal enum UrInstructionCode
 
     /// <summary>Read an analog input: pin, tool (0/1); answered with <see cref="UrWire.ResponseInput"/> before the acknowledgement.</summary>
     ReadAnalogIn = 20,
+
+    /// <summary>
+    /// <c>movec</c> through a pose to a pose (an arc): the via pose X Y Z RX RY RZ, then the target pose X Y Z RX RY RZ, run as
+    /// <c>movec(via, to, a, v, r, mode=0)</c> with the current tool speed, acceleration and blend, as the URScript compiler writes it.
+    /// </summary>
+    MoveC = 21,
 }
