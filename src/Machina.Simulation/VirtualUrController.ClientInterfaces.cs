@@ -24,6 +24,18 @@ public sealed partial class VirtualUrController
     /// <summary>The real-time client interface port (a UR: 30003), or 0 when not served or not started.</summary>
     public int RealtimePort { get; private set; }
 
+    /// <summary>How many clients the real-time interface has now.</summary>
+    internal int RealtimeClients
+    {
+        get
+        {
+            lock (Gate)
+            {
+                return _realtimeClients.Count;
+            }
+        }
+    }
+
     /// <summary>Starts the client interfaces the options ask for.</summary>
     private void ListenClientInterfaces()
     {

@@ -61,6 +61,38 @@ internal sealed class GuideRtdeClient : IDisposable
         return _types;
     }
 
+    /// <summary>'O' (79) with the recipe text as given (e.g. with a trailing comma, as some clients send it); the names are those of the types answered.</summary>
+    internal async Task<string[]> SetupOutputsTextAsync(double frequency, string recipe)
+    {
+        byte[] text = Encoding.ASCII.GetBytes(recipe);
+        var payload = new byte[8 + text.Length];
+        BinaryPrimitives.WriteDoubleBigEndian(payload, frequency);
+        text.CopyTo(payload, 8);
+        var (_, reply) = await RequestAsync(79, payload);
+        RecipeId = reply[0];
+        _types = Encoding.ASCII.GetString(reply, 1, reply.Length - 1).Split(',');
+        _names = recipe.Split(',')[.._types.Length];
+        return _types;
+    }
+
+    /// <summary>'I' (73): the input names joined by commas; the reply is the input recipe id (0 when refused) and the types.</summary>
+    internal async Task<(byte Id, string[] Types)> SetupInputsAsync(params string[] names)
+    {
+        var (_, reply) = await RequestAsync(73, Encoding.ASCII.GetBytes(string.Join(",", names)));
+        return (reply[0], Encoding.ASCII.GetString(reply, 1, reply.Length - 1).Split(','));
+    }
+
+    /// <summary>'U' (85) from the client: an input recipe's id, then its values as the caller wrote them (big-endian); the controller does not answer.</summary>
+    internal async Task SendInputsAsync(byte recipe, byte[] values)
+    {
+        var package = new byte[4 + values.Length];
+        BinaryPrimitives.WriteUInt16BigEndian(package, (ushort)package.Length);
+        package[2] = 85;
+        package[3] = recipe;
+        values.CopyTo(package, 4);
+        await _stream.WriteAsync(package);
+    }
+
     /// <summary>'S' (83): start; the reply's uint8 is 1 when accepted.</summary>
     internal async Task<bool> StartAsync()
     {
@@ -100,6 +132,14 @@ internal sealed class GuideRtdeClient : IDisposable
                     case "UINT32":
                         values[_names[i]] = (long)BinaryPrimitives.ReadUInt32BigEndian(payload.AsSpan(at));
                         at += 4;
+                        break;
+                    case "UINT64":
+                        values[_names[i]] = (long)BinaryPrimitives.ReadUInt64BigEndian(payload.AsSpan(at));
+                        at += 8;
+                        break;
+                    case "BOOL" or "UINT8":
+                        values[_names[i]] = (long)payload[at];
+                        at += 1;
                         break;
                     default:
                         throw new InvalidOperationException("type not used by these tests: " + _types[i]);

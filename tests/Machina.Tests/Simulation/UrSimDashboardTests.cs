@@ -1,0 +1,124 @@
+using System.Net.Sockets;
+using System.Text;
+using Machina.Simulation;
+
+namespace Machina.Tests.Simulation;
+
+/// <summary>
+/// The virtual UR's dashboard server with a controller state behind it: each answer worded as UR's e-Series dashboard server
+/// words it, in the order a client such as UR's client library sends the commands.
+/// </summary>
+public class UrSimDashboardTests
+{
+    private static readonly TimeSpan Timeout = TimeSpan.FromSeconds(15);
+
+    [Fact]
+    public async Task Dashboard_PowerBrakesLoadPlayPauseStop_AnsweredAsTheManualWordsThem()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, ControllerVersion = new Version(5, 11, 3, 1234) });
+        await controller.StartAsync();
+        using var dashboard = await DashboardAsync(controller.DashboardPort);
+
+        (string Command, string Answer)[] talk =
+        [
+            ("robotmode", "Robotmode: RUNNING"),
+            ("power off", "Powering off"),
+            ("robotmode", "Robotmode: POWER_OFF"),
+            ("play", "Failed to execute: play"),
+            ("power on", "Powering on"),
+            ("robotmode", "Robotmode: IDLE"),
+            ("brake release", "Brake releasing"),
+            ("robotmode", "Robotmode: RUNNING"),
+            ("get loaded program", "No program loaded"),
+            ("play", "Failed to execute: play"),
+            ("load wait_program", "File not found: wait_program"),
+            ("load wait_program.urp", "Loading program: wait_program.urp"),
+            ("get loaded program", "Loaded program: wait_program.urp"),
+            ("programState", "STOPPED wait_program.urp"),
+            ("play", "Starting program"),
+            ("programState", "PLAYING wait_program.urp"),
+            ("running", "Program running: true"),
+            ("pause", "Pausing program"),
+            ("programState", "PAUSED wait_program.urp"),
+            ("play", "Starting program"),
+            ("stop", "Stopped"),
+            ("programState", "STOPPED wait_program.urp"),
+            ("running", "Program running: false"),
+            ("isProgramSaved", "true wait_program.urp"),
+            ("safetystatus", "Safetystatus: NORMAL"),
+            ("safetymode", "Safetymode: NORMAL"),
+            ("is in remote control", "true"),
+            ("get operational mode", "NONE"),
+            ("set operational mode manual", "Operational mode MANUAL is set"),
+            ("get operational mode", "MANUAL"),
+            ("get serial number", "20245500001"),
+            ("get robot model", "UR5"),
+            ("PolyscopeVersion", "URSoftware 5.11.3.1234 (virtual controller)"),
+            ("version", "5.11.3.1234"),
+            ("popup hello there", "showing popup"),
+            ("close popup", "closing popup"),
+            ("addToLog a line", "Added log message"),
+            ("addToLog", "No log message to add"),
+            ("close safety popup", "closing safety popup"),
+            ("unlock protective stop", "Protective stop releasing"),
+            ("load installation default.installation", "Loading installation: default.installation"),
+            ("saveLog", "Log saved to disk"),
+            ("restart safety", "Restarting safety"),
+            ("robotmode", "Robotmode: POWER_OFF"),
+            ("fly", "could not understand: 'fly'"),
+            ("shutdown", "Shutting down"),
+            ("quit", "Disconnected"),
+        ];
+        var answers = new List<string>();
+        foreach ((string command, _) in talk)
+        {
+            answers.Add(await AskAsync(dashboard, command));
+        }
+
+        Assert.Equal(talk.Select(t => t.Answer), answers);
+        Assert.Equal(["a line"], controller.UserLog);
+        Assert.Null(controller.Popup);
+        Assert.Equal("wait_program.urp", controller.LoadedProgram);
+    }
+
+    [Fact]
+    public async Task Dashboard_ProtectiveStop_PlayRefusedUntilUnlocked()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var dashboard = await DashboardAsync(controller.DashboardPort);
+        Assert.Equal("Loading program: p.urp", await AskAsync(dashboard, "load p.urp"));
+        Assert.Equal("Starting program", await AskAsync(dashboard, "play"));
+        Assert.True(controller.ProtectiveStop());
+
+        Assert.Equal("Safetystatus: PROTECTIVE_STOP", await AskAsync(dashboard, "safetystatus"));
+        Assert.Equal("Failed to execute: play", await AskAsync(dashboard, "play"));
+        Assert.Equal("Protective stop releasing", await AskAsync(dashboard, "unlock protective stop"));
+        Assert.Equal("Starting program", await AskAsync(dashboard, "play"));
+        Assert.Equal("PLAYING p.urp", await AskAsync(dashboard, "programState"));
+    }
+
+    private static async Task<DashboardLine> DashboardAsync(int port)
+    {
+        var client = new TcpClient();
+        await client.ConnectAsync("127.0.0.1", port).WaitAsync(Timeout);
+        var reader = new StreamReader(client.GetStream(), Encoding.ASCII);
+        Assert.Equal("Connected: Universal Robots Dashboard Server", await reader.ReadLineAsync().WaitAsync(Timeout));
+        return new DashboardLine(client, reader);
+    }
+
+    private sealed record DashboardLine(TcpClient Client, StreamReader Reader) : IDisposable
+    {
+        public void Dispose()
+        {
+            Reader.Dispose();
+            Client.Dispose();
+        }
+    }
+
+    private static async Task<string> AskAsync(DashboardLine dashboard, string command)
+    {
+        await dashboard.Client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(command + "\n"));
+        return await dashboard.Reader.ReadLineAsync().WaitAsync(Timeout) ?? "(closed)";
+    }
+}
