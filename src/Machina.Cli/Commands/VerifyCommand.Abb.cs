@@ -10,7 +10,7 @@ internal static partial class VerifyCommand
     private static async Task<int> RunAbbAsync(string path, CliArgs args, CliContext context)
     {
         RobotModel model = Brands.Model(args.Value("--model") ?? AbbBrand.Definition.DefaultModel, AbbBrand.Definition.Type)!;
-        var options = new RapidTwinOptions { Model = model };
+        var options = new RapidTwinOptions { Model = model, Limits = VerifyLimits(args) };
         TextWriter output = context.Stdout;
         if (IsRapid(context.FullPath(path)) && args.Value("--script") is null)
         {
@@ -45,7 +45,7 @@ internal static partial class VerifyCommand
     {
         try
         {
-            return [.. RapidTwinController.ModuleFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))];
+            return [.. RapidTwinController.ModuleFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), ReadProgramText(f)))];
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or System.Xml.XmlException)
         {

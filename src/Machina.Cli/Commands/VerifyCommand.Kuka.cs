@@ -10,7 +10,7 @@ internal static partial class VerifyCommand
     private static async Task<int> RunKukaAsync(string path, CliArgs args, CliContext context)
     {
         RobotModel model = Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, KukaBrand.Definition.Type)!;
-        var options = new KrlTwinOptions { Model = model };
+        var options = new KrlTwinOptions { Model = model, Limits = VerifyLimits(args) };
         TextWriter output = context.Stdout;
         if (IsKrl(context.FullPath(path)) && args.Value("--script") is null)
         {
@@ -45,7 +45,7 @@ internal static partial class VerifyCommand
     {
         try
         {
-            return [.. KrlTwinController.ProgramFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))];
+            return [.. KrlTwinController.ProgramFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), ReadProgramText(f)))];
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {

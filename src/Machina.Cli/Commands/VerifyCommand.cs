@@ -11,7 +11,7 @@ internal static partial class VerifyCommand
         "verify",
         "Run a compiled UR, ABB or KUKA program on a twin controller and compare it with the library",
         """
-        Usage: machina verify PROGRAM --brand ur|abb|kuka [--script FILE] [--model M]
+        Usage: machina verify PROGRAM --brand ur|abb|kuka [--script FILE] [--model M] [--max-steps N]
 
         PROGRAM is a text file of Machina instructions. It is compiled to URScript (or FILE, a URScript program compiled from
         it earlier, is taken instead), and the script runs on the URScript twin: a controller that interprets URScript as
@@ -36,6 +36,8 @@ internal static partial class VerifyCommand
           --brand ur|abb|kuka  the controller (UR: URScript twin; ABB: RAPID twin; KUKA: KRL twin)
           --script FILE      the compiled program to check, instead of compiling PROGRAM now
           --model M          the arm model (default UR5e for UR, IRB 120 for ABB, KR 6 R900 sixx for KUKA; machina models lists them)
+          --max-steps N      the statements the program may run before it is stopped as endless (default 50,000,000);
+                             the other budgets (nesting, calls, arrays, strings, file size) are in docs/simulation.md, "Limits"
 
         Examples:
           machina verify square.machina --brand ur
@@ -44,7 +46,7 @@ internal static partial class VerifyCommand
           machina verify square.machina --brand kuka
         Exit code: 0 when the program runs to its end and every step agrees, 1 when it does not, 2 for a command-line mistake.
         """,
-        Options: ["--brand", "--script", "--model"],
+        Options: ["--brand", "--script", "--model", "--max-steps"],
         Flags: [],
         RunAsync);
 
@@ -63,7 +65,7 @@ internal static partial class VerifyCommand
             return await RunKukaAsync(path, args, context).ConfigureAwait(false);
         }
         RobotModel model = Brands.Model(args.Value("--model") ?? twinBrand.DefaultModel, twinBrand.Type)!;
-        var options = new UrTwinOptions { Model = model };
+        var options = new UrTwinOptions { Model = model, Limits = VerifyLimits(args) };
         TextWriter output = context.Stdout;
         if (path.EndsWith(".script", StringComparison.OrdinalIgnoreCase) && args.Value("--script") is null)
         {
@@ -106,11 +108,32 @@ internal static partial class VerifyCommand
         return state == UrProgramState.Finished ? ExitCodes.Ok : ExitCodes.Failed;
     }
 
+    /// <summary>The twin's budgets for a verification: the default ones, with the step budget of <c>--max-steps</c>.</summary>
+    private static TwinLimits VerifyLimits(CliArgs args)
+    {
+        if (args.Value("--max-steps") is not { } text)
+        {
+            return TwinLimits.Verify;
+        }
+        return long.TryParse(text, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out long steps) && steps > 0
+            ? TwinLimits.Verify with { MaxSteps = steps }
+            : throw new CliException($"--max-steps must be a whole number above 0, not \"{text}\"", ExitCodes.Usage);
+    }
+
+    /// <summary>The text of a program file, refused before it is read when it is larger than the twins take.</summary>
+    private static string ReadProgramText(string fullPath)
+    {
+        long most = TwinLimits.Default.MaxProgramChars;
+        return new FileInfo(fullPath).Length > most
+            ? throw new IOException($"the file is larger than {most} bytes, the most a twin loads")
+            : File.ReadAllText(fullPath);
+    }
+
     private static string ReadFile(CliContext context, string path)
     {
         try
         {
-            return File.ReadAllText(context.FullPath(path));
+            return ReadProgramText(context.FullPath(path));
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {

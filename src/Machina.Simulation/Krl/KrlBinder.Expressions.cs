@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Krl;
 
 /// <summary>Names, calls and the types of expressions.</summary>
@@ -6,6 +8,10 @@ internal sealed partial class KrlBinder
     /// <summary>The type of <paramref name="expr"/> (an aggregate without a type name takes <paramref name="expected"/>).</summary>
     private KrlType Expr(KrlExpr expr, KrlType? expected)
     {
+        if (TwinLimits.StackLow)
+        {
+            throw Error(expr.Line, "the expression is nested too deeply");
+        }
         expr.Type = expr switch
         {
             KrlLiteral literal => literal.Value switch

@@ -25,8 +25,10 @@ internal sealed partial class KrlMachine
                 return Place(index, frame).Get();
             case KrlCall call:
                 _writes++;
+                CheckStack();
                 return Call(call, frame)!;
             case KrlUnary unary:
+                CheckStack();
                 object operand = Eval(unary.Operand, frame);
                 return unary.Op switch
                 {
@@ -35,6 +37,7 @@ internal sealed partial class KrlMachine
                     _ => operand is int i ? -i : -(double)operand,
                 };
             case KrlBinary binary:
+                CheckStack();
                 return Binary(binary, Eval(binary.Left, frame), Eval(binary.Right, frame));
             case KrlAggregate aggregate:
             {

@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Krl;
 
 /// <summary>
@@ -23,6 +25,23 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private object[]? _interruptFrame;
     private object? _returned;
     private KrlRoutine _routine = null!;
+    private int _depth;
+    private long _steps;
+
+    /// <summary>The array elements of the routines' local data now (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
+    private long _localElements;
+
+    /// <summary>The interpreter's budgets.</summary>
+    public TwinLimits Limits => Controller.Options.Limits;
+
+    /// <summary>Throws the interpreter's error when the running thread has too little stack left for one more level.</summary>
+    private static void CheckStack()
+    {
+        if (TwinLimits.StackLow)
+        {
+            throw new KrlRuntimeException("stack overflow: the subprogram calls and expressions are nested too deeply");
+        }
+    }
 
     /// <summary>The controller.</summary>
     public KrlTwinController Controller { get; } = controller;
@@ -41,6 +60,38 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     /// <summary>Runs a routine with its arguments (values for IN, places for OUT); returns a function's value.</summary>
     public object? Invoke(KrlRoutine routine, object[] arguments)
+    {
+        if (_depth >= Limits.MaxCallDepth)
+        {
+            throw new KrlRuntimeException($"the subprogram calls are nested deeper than {Limits.MaxCallDepth} levels ({routine.Name})");
+        }
+        CheckStack();
+        long elements = 0;
+        foreach ((_, KrlType type, _) in routine.Locals)
+        {
+            if (type.Kind == KrlKind.Array)
+            {
+                elements += type.Length;
+            }
+        }
+        if (_localElements + elements > Limits.MaxTotalElements)
+        {
+            throw new KrlRuntimeException($"the subprograms' local data hold more than {Limits.MaxTotalElements:N0} array elements (the twin's limit)");
+        }
+        _depth++;
+        _localElements += elements;
+        try
+        {
+            return InvokeWithin(routine, arguments);
+        }
+        finally
+        {
+            _depth--;
+            _localElements -= elements;
+        }
+    }
+
+    private object? InvokeWithin(KrlRoutine routine, object[] arguments)
     {
         var frame = new object[routine.Locals.Count];
         for (int i = 0; i < frame.Length; i++)
@@ -98,6 +149,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             KrlStmt statement = body[i];
             Line = statement.Line;
+            Step();
             Controller.Line = statement.Line;
             if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs))
             {
@@ -166,11 +218,21 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         }
     }
 
+    /// <summary>Counts one statement or loop turn against the step budget.</summary>
+    private void Step()
+    {
+        if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
+        {
+            throw new KrlRuntimeException($"the program ran more than {Limits.MaxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
+        }
+    }
+
     private Flow Loop(KrlLoop loop, object[] frame)
     {
         while (true)
         {
             Cancellation.ThrowIfCancellationRequested();
+            Step();
             if (loop.Kind == KrlLoopKind.While && !(bool)Eval(loop.Condition!, frame))
             {
                 return Flow.Next;
@@ -202,9 +264,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             throw new KrlRuntimeException("FOR with STEP 0 never ends");
         }
-        for (int i = from; step > 0 ? i <= to : i >= to; i += step)
+        // A long counter: a loop up to the largest INT ends instead of wrapping round.
+        for (long i = from; step > 0 ? i <= to : i >= to; i += step)
         {
-            counter.Set(KrlValues.Box(i));
+            Cancellation.ThrowIfCancellationRequested();
+            Step();
+            counter.Set(KrlValues.Box((int)i));
             Flow flow = Block(loop.Body, frame);
             if (flow == Flow.Exit)
             {

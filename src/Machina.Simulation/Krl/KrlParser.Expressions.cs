@@ -18,7 +18,18 @@ internal sealed partial class KrlParser
         ["*", "/"],
     ];
 
-    private KrlExpr Expression() => Binary(0);
+    private KrlExpr Expression()
+    {
+        if (_expressions++ == 0)
+        {
+            _operators = 0;
+        }
+        Deeper();
+        KrlExpr expr = Binary(0);
+        _nesting--;
+        _expressions--;
+        return expr;
+    }
 
     private KrlExpr Binary(int level)
     {
@@ -31,6 +42,7 @@ internal sealed partial class KrlParser
         {
             int line = Peek.Line;
             _at++;
+            Operator();
             left = new KrlBinary(line, op, left, Binary(level + 1));
         }
         return left;
@@ -59,7 +71,10 @@ internal sealed partial class KrlParser
         if (token.Is("NOT") || token.Is("B_NOT") || token.IsSymbol("-") || token.IsSymbol("+"))
         {
             _at++;
+            Operator();
+            Deeper();
             KrlExpr operand = Unary();
+            _nesting--;
             if (token.IsSymbol("+"))
             {
                 return operand;
@@ -86,6 +101,7 @@ internal sealed partial class KrlParser
             if (token.IsSymbol("(") && expr is KrlName name && name.Cell is null)
             {
                 _at++;
+                Operator();
                 var arguments = new List<KrlExpr>();
                 if (!Peek.IsSymbol(")"))
                 {

@@ -140,6 +140,7 @@ internal sealed partial class KrlParser
 
     private List<KrlStmt> Block(params string[] ends)
     {
+        Deeper();
         var body = new List<KrlStmt>();
         while (!ends.Any(e => Peek.Is(e)))
         {
@@ -153,6 +154,7 @@ internal sealed partial class KrlParser
             }
             body.Add(Statement());
         }
+        _nesting--;
         return body;
     }
 

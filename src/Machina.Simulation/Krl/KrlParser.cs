@@ -1,3 +1,4 @@
+using Machina.Simulation.Twin;
 using System.Globalization;
 
 namespace Machina.Simulation.Krl;
@@ -10,12 +11,48 @@ internal sealed partial class KrlParser
 {
     private readonly string _file;
     private readonly List<KrlToken> _tokens;
+    private readonly TwinLimits _limits;
     private int _at;
 
-    private KrlParser(string file, string text)
+    /// <summary>How deep the parser is in brackets, signs and blocks (bounded by <see cref="TwinLimits.MaxNesting"/>).</summary>
+    private int _nesting;
+
+    /// <summary>How deep the parser is in expressions: the operators are counted from the outermost one.</summary>
+    private int _expressions;
+
+    /// <summary>The operators and calls of the expression being read (bounded by <see cref="TwinLimits.MaxExpressionOperators"/>).</summary>
+    private int _operators;
+
+    /// <summary>The array elements the file's declarations hold (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
+    private long _elements;
+
+    private KrlParser(string file, string text, TwinLimits? limits)
     {
         _file = file;
+        _limits = limits ?? TwinLimits.Default;
+        if (text.Length > _limits.MaxProgramChars)
+        {
+            throw new KrlLoadException(file, 1, $"the file is longer than {_limits.MaxProgramChars} characters (the twin's limit)");
+        }
         _tokens = KrlLexer.Tokenize(file, text);
+    }
+
+    /// <summary>One level deeper (a bracket, a sign, a block): past the budget the file is refused.</summary>
+    private void Deeper()
+    {
+        if (++_nesting > _limits.MaxNesting)
+        {
+            throw Error(Peek, $"the file is nested more than {_limits.MaxNesting} levels deep (brackets, signs and blocks)");
+        }
+    }
+
+    /// <summary>One operator or call more in the expression: past the budget the file is refused.</summary>
+    private void Operator()
+    {
+        if (++_operators > _limits.MaxExpressionOperators)
+        {
+            throw Error(Peek, $"the expression has more than {_limits.MaxExpressionOperators} operators and calls");
+        }
     }
 
     private KrlToken Peek => _tokens[_at];
@@ -23,9 +60,9 @@ internal sealed partial class KrlParser
     private KrlToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Count - 1)];
 
     /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/>.</summary>
-    public static void ParseSource(string file, string text, KrlModule module)
+    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null)
     {
-        var parser = new KrlParser(file, text);
+        var parser = new KrlParser(file, text, limits);
         parser.SkipLines();
         bool first = true;
         while (parser.Peek.Kind != KrlTokenKind.End)
@@ -41,9 +78,9 @@ internal sealed partial class KrlParser
     }
 
     /// <summary>Reads the DEFDAT data list of a <c>.dat</c> file; returns its declarations for the binder.</summary>
-    public static KrlDataList ParseData(string file, string text)
+    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null)
     {
-        var parser = new KrlParser(file, text);
+        var parser = new KrlParser(file, text, limits);
         parser.SkipLines();
         KrlToken start = parser.Expect("DEFDAT");
         string name = parser.Identifier("the data list's name");
@@ -238,6 +275,11 @@ internal sealed partial class KrlParser
                 if (sizes.Count > 3)
                 {
                     throw Error(nameToken, "KRL arrays have at most 3 dimensions");
+                }
+                long count = _limits.Elements(sizes) ?? throw Error(nameToken, $"{nameToken.Text}: {_limits.ArrayTooLarge(sizes)}");
+                if ((_elements += count) > _limits.MaxTotalElements)
+                {
+                    throw Error(nameToken, $"the file's data hold more than {_limits.MaxTotalElements:N0} array elements (the twin's limit)");
                 }
                 type = KrlType.Array(element, [.. sizes]);
             }

@@ -98,7 +98,7 @@ internal sealed partial class KrlTwinController : IDisposable
             string extension = Path.GetExtension(name).ToLowerInvariant();
             if (extension == ".dat")
             {
-                KrlDataList list = KrlParser.ParseData(name, text);
+                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits);
                 if (!string.Equals(list.Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, list.Line, $"DEFDAT {list.Name} must have the name of its file ({module})");
@@ -108,7 +108,7 @@ internal sealed partial class KrlTwinController : IDisposable
             else if (extension == ".src")
             {
                 var parsed = new KrlModule(module);
-                KrlParser.ParseSource(name, text, parsed);
+                KrlParser.ParseSource(name, text, parsed, Options.Limits);
                 if (!string.Equals(parsed.Routines[0].Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, parsed.Routines[0].Line, $"the first routine {parsed.Routines[0].Name} must have the name of its file ({module})");
@@ -164,7 +164,16 @@ internal sealed partial class KrlTwinController : IDisposable
     }
 
     /// <summary>Loads a <c>.src</c> file with its <c>.dat</c>, or every <c>.src</c> and <c>.dat</c> file of a folder.</summary>
-    public void LoadFrom(string path) => Load([.. ProgramFiles(path).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))]);
+    public void LoadFrom(string path) => Load([.. ProgramFiles(path).Select(f => (Path.GetFileName(f), ReadFile(f)))]);
+
+    /// <summary>The text of program file <paramref name="file"/>, refused before it is read when it is larger than the limit allows.</summary>
+    private string ReadFile(string file)
+    {
+        long most = Options.Limits.MaxProgramChars;
+        return new FileInfo(file).Length > most
+            ? throw new KrlLoadException(Path.GetFileName(file), 1, $"the file is larger than {most} bytes (the twin's limit)")
+            : File.ReadAllText(file);
+    }
 
     /// <summary>The files of a program path (see <see cref="LoadFrom"/>), <c>.src</c> files first.</summary>
     public static IReadOnlyList<string> ProgramFiles(string path)

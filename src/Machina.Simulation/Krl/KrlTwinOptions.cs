@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Krl;
 
 /// <summary>Settings of a KRL twin controller.</summary>
@@ -41,4 +43,7 @@ internal sealed class KrlTwinOptions
 
     /// <summary>The address EthernetKRL server channels listen on (loopback for tests).</summary>
     public System.Net.IPAddress ListenAddress { get; init; } = System.Net.IPAddress.Loopback;
+
+    /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, arrays, file size).</summary>
+    public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

@@ -21,7 +21,7 @@ internal static class KrlVerifier
     public static TwinVerification<KrlProgramState> Verify(IReadOnlyList<(string Name, string Text)> files, IEnumerable<RobotAction> actions,
         KrlTwinOptions? options = null, CancellationToken cancellation = default)
     {
-        options ??= new KrlTwinOptions();
+        options ??= new KrlTwinOptions { Limits = TwinLimits.Verify };
         List<RobotAction> all = [.. actions];
         List<TwinExpectation> expected = TwinComparison.Expect(all, options.Model, OutputOf);
         List<string> named = [.. all.OfType<ActionIODigital>().Where(d => !d.IsDigit).Select(d => d.PinName)
@@ -30,7 +30,7 @@ internal static class KrlVerifier
         {
             Model = options.Model, StartJoints = TwinComparison.StartOf(expected, options.Model, options.StartJoints) ?? options.StartJoints, Time = options.Time,
             RealTime = options.RealTime, DefaultCpVelocity = options.DefaultCpVelocity, DefaultCpAcceleration = options.DefaultCpAcceleration,
-            DefaultAxisSpeed = options.DefaultAxisSpeed, AxisRampSeconds = options.AxisRampSeconds,
+            DefaultAxisSpeed = options.DefaultAxisSpeed, AxisRampSeconds = options.AxisRampSeconds, Limits = options.Limits,
             // Named outputs are SIGNALs of $CONFIG.DAT on a real controller: the twin maps each to one of the last outputs.
             Signals = [.. options.Signals, .. named.Select((n, i) => (n, KrlSystemVariables.DigitalCount - i))],
         };

@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>Expressions, data references and calls.</summary>
@@ -44,6 +46,10 @@ internal sealed partial class RapidBinder
 
     private RapidDataType? BindExpression(RapidExpr e, RapidDataType? expected, RapidScope scope)
     {
+        if (TwinLimits.StackLow)
+        {
+            throw Refuse(e.Line, RapidLoadException.Syntax("the expression is nested too deeply"));
+        }
         RapidDataType? type = e switch
         {
             RapidLiteral { Value: double } => NumType,

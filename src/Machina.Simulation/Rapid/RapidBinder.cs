@@ -12,6 +12,9 @@ internal sealed partial class RapidBinder
     private readonly Dictionary<string, RapidCell> _persistents;
     private readonly Dictionary<RapidModule, Dictionary<string, RapidCell>> _localData = [];
     private readonly Dictionary<RapidModule, Dictionary<string, RapidRoutine>> _localRoutines = [];
+
+    /// <summary>The array elements of the module data bound so far (bounded by <see cref="Twin.TwinLimits.MaxTotalElements"/>).</summary>
+    private long _elements;
     private RapidModule _module = null!;
 
     private RapidBinder(RapidProgram program, RapidMachine machine, IReadOnlyDictionary<string, RapidBuiltin> builtins, Dictionary<string, RapidCell> persistents)
@@ -112,6 +115,10 @@ internal sealed partial class RapidBinder
             }
             var type = new RapidDataType(TypeNamed(decl.TypeName, decl.Line), decl.Dimensions.Length);
             int[] dims = Dimensions(decl, null);
+            if (dims.Length > 0 && (_elements += _machine.Limits.Elements(dims) ?? 0) > _machine.Limits.MaxTotalElements)
+            {
+                throw Refuse(decl.Line, RapidLoadException.Type($"the data of the modules hold more than {_machine.Limits.MaxTotalElements:N0} array elements (the twin's limit)"));
+            }
             RapidCell cell;
             if (decl.Storage == RapidStorage.Pers && _persistents.TryGetValue(decl.Name, out RapidCell? shared))
             {
@@ -150,7 +157,11 @@ internal sealed partial class RapidBinder
             {
                 throw Refuse(decl.Line, RapidLoadException.Type($"the size of '{decl.Name}' must be a positive integer, not {RapidValues.FormatNumber(size)}"));
             }
-            dims[i] = (int)size;
+            dims[i] = size <= int.MaxValue ? (int)size : int.MaxValue;
+        }
+        if (_machine.Limits.Elements(dims) is null)
+        {
+            throw Refuse(decl.Line, RapidLoadException.Type($"'{decl.Name}': {_machine.Limits.ArrayTooLarge(dims)}"));
         }
         return dims;
     }

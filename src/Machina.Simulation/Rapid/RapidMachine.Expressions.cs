@@ -31,6 +31,7 @@ internal sealed partial class RapidMachine
                 return Aggregate(a, frame);
             case RapidUnary u:
             {
+                CheckStack(u.Line);
                 object v = Evaluate(u.Operand, frame);
                 return u.Op switch
                 {
@@ -41,8 +42,10 @@ internal sealed partial class RapidMachine
                 };
             }
             case RapidBinary b:
+                CheckStack(b.Line);
                 return Binary(b, frame);
             case RapidCallExpr call:
+                CheckStack(call.Line);
                 return Call(call.Target!, call.Args, frame, call.Line)!;
             default:
                 throw new InvalidOperationException($"Unknown expression {e.GetType().Name}.");

@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>
@@ -12,10 +14,26 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// <summary>The task this machine runs.</summary>
     public RapidTask Task { get; } = task;
 
-    /// <summary>How deep routine calls may nest before the controller stops the task.</summary>
-    public const int MaxDepth = 256;
-
     private int _depth;
+    private long _steps;
+
+    /// <summary>The array elements of the routines' local data now (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
+    private long _localElements;
+
+    /// <summary>The interpreter's budgets.</summary>
+    public TwinLimits Limits => Task.Controller.Options.Limits;
+
+    /// <summary>The error of a budget of the twin: no ERROR handler takes it, the task stops.</summary>
+    internal static RapidRuntimeException Budget(int line, string message) => new(0, line, message) { Fatal = true };
+
+    /// <summary>Throws the task's error when the running thread has too little stack left for one more level.</summary>
+    internal static void CheckStack(int line)
+    {
+        if (TwinLimits.StackLow)
+        {
+            throw Budget(line, "stack overflow: the routine calls and expressions are nested too deeply");
+        }
+    }
 
     /// <summary>Calls a routine with no arguments (main, or a trap).</summary>
     public void Run(RapidRoutine routine) => Invoke(routine, [], new RapidCallTarget(null, routine, []), null, routine.Line);
@@ -25,6 +43,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         int i = 0;
         while (i < body.Count)
         {
+            Step(body[i].Line);
             RapidFlow flow = frame.Routine.ErrorHandler is null || frame.Handling is not null
                 ? ExecuteAfterTraps(body[i], frame)
                 : ExecuteGuarded(body[i], frame);
@@ -44,6 +63,15 @@ internal sealed partial class RapidMachine(RapidTask task)
         return RapidFlow.Next;
     }
 
+    /// <summary>Counts one statement or loop turn against the step budget.</summary>
+    private void Step(int line)
+    {
+        if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
+        {
+            throw Budget(line, $"the task ran more than {Limits.MaxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
+        }
+    }
+
     private static int LabelIn(List<RapidStmt> body, string label) =>
         body.FindIndex(s => s is RapidJump { Kind: RapidJumpKind.Label } j && j.Label!.Equals(label, StringComparison.OrdinalIgnoreCase));
 
@@ -56,7 +84,7 @@ internal sealed partial class RapidMachine(RapidTask task)
             {
                 return ExecuteAfterTraps(statement, frame);
             }
-            catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null)
+            catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null && !ex.Fatal)
             {
                 frame.Handling = ex;
                 Task.Program.Errno.Value = (double)ex.ErrorNumber;
@@ -116,6 +144,7 @@ internal sealed partial class RapidMachine(RapidTask task)
                 while ((bool)Evaluate(w.Condition, frame))
                 {
                     Task.Tick();
+                    Step(w.Line);
                     RapidFlow flow = ExecuteBlock(w.Body, frame);
                     if (flow != RapidFlow.Next)
                     {
@@ -163,6 +192,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         for (double v = from; step > 0 ? v <= to : v >= to; v += step)
         {
             Task.Tick();
+            Step(f.Line);
             cell.Value = RapidBoxes.Num(v);
             RapidFlow flow = ExecuteBlock(f.Body, frame);
             if (flow != RapidFlow.Next)
@@ -215,11 +245,13 @@ internal sealed partial class RapidMachine(RapidTask task)
 
     private object? Invoke(RapidRoutine routine, RapidArg[] args, RapidCallTarget target, RapidFrame? caller, int line)
     {
-        if (++_depth > MaxDepth)
+        if (++_depth > Limits.MaxCallDepth)
         {
             _depth = 0;
-            throw new RapidRuntimeException(0, line, $"the routine calls are nested deeper than {MaxDepth} levels");
+            throw Budget(line, $"the routine calls are nested deeper than {Limits.MaxCallDepth} levels");
         }
+        CheckStack(line);
+        long elements = 0;
         try
         {
             var cells = new RapidCell[routine.FrameSize];
@@ -257,7 +289,17 @@ internal sealed partial class RapidMachine(RapidTask task)
             foreach (RapidDataDecl decl in routine.Data)
             {
                 RapidDataType type = routine.SlotTypes[slot];
-                int[] dims = decl.Dimensions.Length == 0 ? [] : [.. decl.Dimensions.Select(d => (int)(double)Evaluate(d, frame))];
+                int[] dims = decl.Dimensions.Length == 0 ? [] : [.. decl.Dimensions.Select(d => (int)Math.Clamp((double)Evaluate(d, frame), 0, int.MaxValue))];
+                if (dims.Length > 0)
+                {
+                    long count = Limits.Elements(dims) ?? throw Budget(decl.Line, $"'{decl.Name}': {Limits.ArrayTooLarge(dims)}");
+                    elements += count;
+                    _localElements += count;
+                    if (_localElements > Limits.MaxTotalElements)
+                    {
+                        throw Budget(decl.Line, $"the routines' local data hold more than {Limits.MaxTotalElements:N0} array elements (the twin's limit)");
+                    }
+                }
                 object value = decl.Initial is null ? RapidValues.Default(type, dims) : RapidValues.Copy(Evaluate(decl.Initial, frame));
                 cells[slot++] = new RapidCell(decl.Name, type, decl.Storage, value);
             }
@@ -282,6 +324,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         finally
         {
             _depth--;
+            _localElements -= elements;
         }
     }
 }

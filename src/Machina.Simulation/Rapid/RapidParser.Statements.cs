@@ -5,6 +5,7 @@ internal sealed partial class RapidParser
 {
     private List<RapidStmt> Statements(params string[] ends)
     {
+        Deeper();
         var list = new List<RapidStmt>();
         while (!IsAny(Peek, ends))
         {
@@ -16,8 +17,10 @@ internal sealed partial class RapidParser
             {
                 throw Error($"'{ends[^1]}' expected, found '{Peek.Text}'");
             }
+            _operators = 0;
             list.Add(Statement());
         }
+        _nesting--;
         return list;
     }
 
@@ -245,12 +248,15 @@ internal sealed partial class RapidParser
     /// <summary>An expression: OR/XOR below AND below comparisons below + - below * / DIV MOD; NOT applies to a comparison.</summary>
     private RapidExpr Expression()
     {
+        Deeper();
         RapidExpr left = And();
         while (Peek.Is("OR") || Peek.Is("XOR"))
         {
             RapidToken op = Next();
+            Operator();
             left = new RapidBinary(op.Line, op.Text.ToUpperInvariant(), left, And());
         }
+        _nesting--;
         return left;
     }
 
@@ -260,6 +266,7 @@ internal sealed partial class RapidParser
         while (Peek.Is("AND"))
         {
             RapidToken op = Next();
+            Operator();
             left = new RapidBinary(op.Line, "AND", left, Not());
         }
         return left;
@@ -270,7 +277,11 @@ internal sealed partial class RapidParser
         if (Peek.Is("NOT"))
         {
             RapidToken op = Next();
-            return new RapidUnary(op.Line, "NOT", Not());
+            Operator();
+            Deeper();
+            var not = new RapidUnary(op.Line, "NOT", Not());
+            _nesting--;
+            return not;
         }
         return Comparison();
     }
@@ -281,6 +292,7 @@ internal sealed partial class RapidParser
         while (Peek.Kind == RapidTokenKind.Symbol && Peek.Text is "=" or "<>" or "<" or ">" or "<=" or ">=")
         {
             RapidToken op = Next();
+            Operator();
             left = new RapidBinary(op.Line, op.Text, left, Sum());
         }
         return left;
@@ -292,6 +304,7 @@ internal sealed partial class RapidParser
         while (Peek.IsSymbol("+") || Peek.IsSymbol("-"))
         {
             RapidToken op = Next();
+            Operator();
             left = new RapidBinary(op.Line, op.Text, left, Product());
         }
         return left;
@@ -303,6 +316,7 @@ internal sealed partial class RapidParser
         while (Peek.IsSymbol("*") || Peek.IsSymbol("/") || Peek.Is("DIV") || Peek.Is("MOD"))
         {
             RapidToken op = Next();
+            Operator();
             left = new RapidBinary(op.Line, op.Text.ToUpperInvariant(), left, Unary());
         }
         return left;
@@ -319,7 +333,11 @@ internal sealed partial class RapidParser
                 RapidToken number = Next();
                 return NumberLiteral(number.Line, op.Text == "-" ? -number.Number : number.Number);
             }
-            return new RapidUnary(op.Line, op.Text, Unary());
+            Operator();
+            Deeper();
+            var sign = new RapidUnary(op.Line, op.Text, Unary());
+            _nesting--;
+            return sign;
         }
         return Primary();
     }
@@ -338,6 +356,7 @@ internal sealed partial class RapidParser
             case RapidTokenKind.Name when !IsReserved(t.Text):
                 if (Accept("("))
                 {
+                    Operator();
                     RapidArg[] args = Peek.IsSymbol(")") ? [] : Arguments(")");
                     Expect(")");
                     return Postfix(new RapidCallExpr(t.Line, t.Text, args));

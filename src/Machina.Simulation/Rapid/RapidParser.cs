@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>
@@ -13,8 +15,17 @@ internal sealed partial class RapidParser
     private RapidToken _current;
     private RapidToken _following;
 
-    private RapidParser(string text)
+    private readonly TwinLimits _limits;
+
+    /// <summary>How deep the parser is in brackets, signs and blocks (bounded by <see cref="TwinLimits.MaxNesting"/>).</summary>
+    private int _nesting;
+
+    /// <summary>The operators and calls of the statement or declaration being read (bounded by <see cref="TwinLimits.MaxExpressionOperators"/>).</summary>
+    private int _operators;
+
+    private RapidParser(string text, TwinLimits limits)
     {
+        _limits = limits;
         _lexer = new RapidLexer(text);
         _current = _lexer.Next();
         _following = _lexer.Next();
@@ -31,8 +42,34 @@ internal sealed partial class RapidParser
     private readonly Stack<List<RapidExpr>> _spareItems = new();
     private readonly Stack<List<RapidArg>> _spareArgs = new();
 
-    /// <summary>Parses one module; throws <see cref="RapidLoadException"/> at the first syntax error.</summary>
-    public static RapidModule Parse(string text) => new RapidParser(text).Module();
+    /// <summary>Parses one module within <paramref name="limits"/> (the default ones when null); throws <see cref="RapidLoadException"/> at the first syntax error.</summary>
+    public static RapidModule Parse(string text, TwinLimits? limits = null)
+    {
+        limits ??= TwinLimits.Default;
+        if (text.Length > limits.MaxProgramChars)
+        {
+            throw new RapidLoadException(1, RapidLoadException.Syntax($"the module is longer than {limits.MaxProgramChars} characters (the twin's limit)"));
+        }
+        return new RapidParser(text, limits).Module();
+    }
+
+    /// <summary>One level deeper (a bracket, a sign, a block): past the budget the module is refused.</summary>
+    private void Deeper()
+    {
+        if (++_nesting > _limits.MaxNesting)
+        {
+            throw Error($"the module is nested more than {_limits.MaxNesting} levels deep (brackets, signs and blocks)");
+        }
+    }
+
+    /// <summary>One operator or call more in the statement: past the budget the module is refused.</summary>
+    private void Operator()
+    {
+        if (++_operators > _limits.MaxExpressionOperators)
+        {
+            throw Error($"the statement has more than {_limits.MaxExpressionOperators} operators and calls");
+        }
+    }
 
     private ref readonly RapidToken Peek => ref _current;
 
@@ -207,6 +244,7 @@ internal sealed partial class RapidParser
 
     private RapidDataDecl DataDecl(bool local)
     {
+        _operators = 0;
         RapidToken head = Next();
         RapidStorage storage = head.Is("CONST") ? RapidStorage.Const : head.Is("PERS") ? RapidStorage.Pers : RapidStorage.Var;
         string type = Identifier("a data type");

@@ -84,7 +84,7 @@ internal sealed partial class RapidTask
         {
             try
             {
-                RapidModule module = RapidParser.Parse(text);
+                RapidModule module = RapidParser.Parse(text, Controller.Options.Limits);
                 files[module.Name] = name;
                 parsed.Add(module);
             }

@@ -43,7 +43,7 @@ internal sealed partial class RapidTwinController
         RapidModule parsed;
         try
         {
-            parsed = RapidParser.Parse(text);
+            parsed = RapidParser.Parse(text, Options.Limits);
         }
         catch (RapidLoadException ex)
         {

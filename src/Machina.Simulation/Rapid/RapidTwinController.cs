@@ -122,7 +122,18 @@ internal sealed partial class RapidTwinController
     /// Loads a program as the controller does: a <c>.pgf</c> file lists its modules (<c>&lt;Module&gt;name.mod&lt;/Module&gt;</c>), a
     /// <c>.mod</c> file is one module, a folder holds one <c>.pgf</c> or its <c>.mod</c> files.
     /// </summary>
-    public void LoadFrom(string path) => Load([.. ModuleFiles(path).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))]);
+    public void LoadFrom(string path) => Load([.. ModuleFiles(path).Select(f => (Path.GetFileName(f), ReadModule(f)))]);
+
+    /// <summary>The text of module file <paramref name="file"/>, refused before it is read when it is longer than the limit allows.</summary>
+    private string ReadModule(string file)
+    {
+        long most = Options.Limits.MaxProgramChars;
+        if (new FileInfo(file).Length > most)
+        {
+            throw new RapidLoadException(1, RapidLoadException.Syntax($"the module file is larger than {most} bytes (the twin's limit)")) { Module = Path.GetFileName(file) };
+        }
+        return File.ReadAllText(file);
+    }
 
     /// <summary>The module files of a program path (see <see cref="LoadFrom"/>).</summary>
     public static IReadOnlyList<string> ModuleFiles(string path)

@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>Settings of a RAPID twin controller.</summary>
@@ -23,4 +25,7 @@ internal sealed class RapidTwinOptions
 
     /// <summary>Where a hosting controller watches and disturbs the program's sockets (faults, inspection); null: direct sockets.</summary>
     public IRapidSocketSeam? Seam { get; init; }
+
+    /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, arrays, module size).</summary>
+    public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

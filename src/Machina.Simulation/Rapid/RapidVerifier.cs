@@ -20,13 +20,13 @@ internal static class RapidVerifier
     public static TwinVerification<RapidProgramState> Verify(IReadOnlyList<(string Name, string Text)> modules, IEnumerable<RobotAction> actions,
         RapidTwinOptions? options = null, CancellationToken cancellation = default)
     {
-        options ??= new RapidTwinOptions();
+        options ??= new RapidTwinOptions { Limits = TwinLimits.Verify };
         List<RobotAction> all = [.. actions];
         List<TwinExpectation> expected = TwinComparison.Expect(all, options.Model, OutputOf);
         options = new RapidTwinOptions
         {
             Model = options.Model, StartJoints = TwinComparison.StartOf(expected, options.Model, options.StartJoints) ?? options.StartJoints, Time = options.Time,
-            RealTime = options.RealTime, Acceleration = options.Acceleration,
+            RealTime = options.RealTime, Acceleration = options.Acceleration, Limits = options.Limits,
             Signals = [.. options.Signals, .. SignalsOf(all).Where(s => !options.Signals.Any(o => o.Name.Equals(s.Name, StringComparison.OrdinalIgnoreCase)))],
         };
         var twin = new RapidTwinController(options);

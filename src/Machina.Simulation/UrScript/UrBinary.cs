@@ -15,6 +15,7 @@ internal sealed class UrBinary(int line, string op, UrExpr left, UrExpr right) :
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
+        UrStack.Check(Line);
         object a = Left.Eval(frame);
         object b = Right.Eval(frame);
         switch (Op)

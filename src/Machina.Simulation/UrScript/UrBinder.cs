@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 /// <summary>A program ready to run: every name resolved to a slot, every call to a built-in or a function of the program.</summary>
@@ -214,6 +216,10 @@ internal sealed class UrBinder
 
     private void BindExpr(UrExpr expr)
     {
+        if (TwinLimits.StackLow)
+        {
+            throw new UrCompileException(expr.Line, "the expression is nested too deeply");
+        }
         switch (expr)
         {
             case UrName name:

@@ -36,8 +36,9 @@ internal static partial class UrBuiltins
             string s => s.Length,
             _ => throw new UrRuntimeException(line, $"length: {UrValue.TypeName(a[0])} has no length"),
         }, R("v"));
-        Add(t, "to_str", (m, line, a) => UrValue.ToText(a[0]), R("val"));
-        Add(t, "str_cat", (m, line, a) => UrValue.ToText(a[0]) + UrValue.ToText(a[1]), R("op1"), R("op2"));
+        Add(t, "to_str", (m, line, a) => UrValue.ToText(a[0], UrValue.TextLength(a[0]), m.Limits.MaxStringLength, line, "to_str"), R("val"));
+        Add(t, "str_cat", (m, line, a) => UrValue.ToText(a[0], UrValue.TextLength(a[0]) + UrValue.TextLength(a[1]), m.Limits.MaxStringLength, line, "str_cat")
+            + UrValue.ToText(a[1]), R("op1"), R("op2"));
         Add(t, "str_len", (m, line, a) => Str(a, 0, line, "str_len", "str").Length, R("str"));
         Add(t, "str_find", (m, line, a) =>
         {

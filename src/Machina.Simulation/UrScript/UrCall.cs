@@ -24,6 +24,7 @@ internal sealed class UrCall(int line, string name, List<UrExpr> positional, Lis
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
+        UrStack.Check(Line);
         var values = new object[Arguments.Length];
         for (int i = 0; i < values.Length; i++)
         {

@@ -99,6 +99,7 @@ internal sealed class UrIndex(int line, UrExpr target, UrExpr index) : UrExpr(li
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
+        UrStack.Check(Line);
         object target = Target.Eval(frame);
         int i = UrValue.Int(Index.Eval(frame), Line, "an index");
         return target switch
@@ -138,6 +139,7 @@ internal sealed class UrUnary(int line, string op, UrExpr operand) : UrExpr(line
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
+        UrStack.Check(Line);
         object value = Operand.Eval(frame);
         if (op == "not")
         {
@@ -165,6 +167,7 @@ internal sealed class UrLogical(int line, bool isAnd, UrExpr left, UrExpr right)
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
+        UrStack.Check(Line);
         bool l = UrValue.Bool(Left.Eval(frame), Line, isAnd ? "the operand of 'and'" : "the operand of 'or'");
         if (isAnd ? !l : l)
         {

@@ -1,11 +1,10 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 /// <summary>A function (<c>def</c>) or thread (<c>thread</c>) of a program.</summary>
 internal sealed class UrFunction(int line, string name, string[] parameters, UrExpr?[] defaults, List<UrStmt> body, bool isThread)
 {
-    /// <summary>Deepest nesting of calls before the program is stopped.</summary>
-    public const int MaxDepth = 256;
-
     /// <summary>The 1-based line of the definition.</summary>
     public int Line { get; } = line;
 
@@ -33,10 +32,12 @@ internal sealed class UrFunction(int line, string name, string[] parameters, UrE
     /// <summary>Runs the function with one value per parameter and gives what it returns.</summary>
     public object Invoke(UrMachine machine, int line, object[] args, int depth)
     {
-        if (depth > MaxDepth)
+        int most = machine.Limits.MaxCallDepth;
+        if (depth > most)
         {
-            throw new UrRuntimeException(line, $"too many nested calls (more than {MaxDepth}) in '{Name}'");
+            throw new UrRuntimeException(line, $"too many nested calls (more than {most}) in '{Name}'");
         }
+        UrStack.Check(line);
         var frame = new UrFrame(machine, new object?[LocalCount], depth);
         Array.Copy(args, frame.Locals, args.Length);
         UrStmt.Run(Body, frame);
@@ -58,4 +59,17 @@ internal sealed class UrFrame(UrMachine machine, object?[] locals, int depth)
 
     /// <summary>The value of the <c>return</c> that ended the call.</summary>
     public object? ReturnValue { get; set; }
+}
+
+/// <summary>The guard of the interpreter's own stack: a program nested past it stops with an error, never the process.</summary>
+internal static class UrStack
+{
+    /// <summary>Throws the program's error when the running thread has too little stack left for one more level.</summary>
+    public static void Check(int line)
+    {
+        if (TwinLimits.StackLow)
+        {
+            throw new UrRuntimeException(line, "stack overflow: the calls and expressions are nested too deeply");
+        }
+    }
 }

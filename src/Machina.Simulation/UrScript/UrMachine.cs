@@ -32,11 +32,14 @@ internal sealed class UrMachine : IDisposable
     private readonly List<UrThreadHandle> _threads = [];
     private Exception? _threadError;
     private int _turns;
+    private long _steps;
+    private int _liveThreads;
 
     /// <summary>A machine for <paramref name="program"/> on <paramref name="controller"/>.</summary>
     public UrMachine(UrBoundProgram program, UrTwinController controller, CancellationToken cancellation)
     {
         Program = program;
+        Limits = controller.Options.Limits;
         Controller = controller;
         Globals = new object?[program.Globals.Length];
         _stop = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
@@ -59,6 +62,19 @@ internal sealed class UrMachine : IDisposable
 
     /// <summary>The line being run (for messages).</summary>
     public int CurrentLine { get; set; }
+
+    /// <summary>The interpreter's budgets.</summary>
+    public TwinLimits Limits { get; }
+
+    /// <summary>Called before each statement: the line being run, and the program's step budget.</summary>
+    public void Step(int line)
+    {
+        CurrentLine = line;
+        if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
+        {
+            throw new UrRuntimeException(line, $"the program ran more than {Limits.MaxSteps:N0} statements (the verification's step budget): an endless loop?");
+        }
+    }
 
     /// <summary>Cancelled when the program or the calling thread is stopped.</summary>
     public CancellationToken Cancellation => _token.IsValueCreated ? _token.Value : _stop.Token;
@@ -127,6 +143,11 @@ internal sealed class UrMachine : IDisposable
     /// <summary>Starts <paramref name="thread"/> and gives its handle.</summary>
     public UrThreadHandle StartThread(UrFunction thread, int line)
     {
+        if (_liveThreads >= Limits.MaxThreads)
+        {
+            throw new UrRuntimeException(line, $"more than {Limits.MaxThreads} threads are running (the twin's limit): join or kill one before starting '{thread.Name}'");
+        }
+        _liveThreads++;
         var handle = new UrThreadHandle(thread.Name, CancellationTokenSource.CreateLinkedTokenSource(_stop.Token));
         var worker = new Thread(() => ThreadBody(thread, handle)) { IsBackground = true, Name = "URScript thread " + thread.Name };
         handle.Thread = worker;
@@ -144,6 +165,7 @@ internal sealed class UrMachine : IDisposable
             {
                 thread.Invoke(this, thread.Line, [], 0);
             }
+
             catch (OperationCanceledException)
             {
             }
@@ -155,6 +177,10 @@ internal sealed class UrMachine : IDisposable
             {
                 _threadError ??= e;
                 _stop.Cancel();
+            }
+            finally
+            {
+                _liveThreads--;
             }
         }
     }

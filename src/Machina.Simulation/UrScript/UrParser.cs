@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 /// <summary>A parsed program: its functions and threads (nested ones too) and the statements outside any definition.</summary>
@@ -37,16 +39,27 @@ internal sealed class UrParser
 
     /// <summary>The value of each literal met (text, negated), boxed once: a long program repeats few numbers.</summary>
     private readonly Dictionary<(string Text, bool Negate), object> _literals = [];
+    private readonly TwinLimits _limits;
     private int _at;
     private int _depth;
 
-    private UrParser(UrTokenWindow tokens) => _tokens = tokens;
+    /// <summary>How deep the parser is in brackets, signs and blocks (bounded by <see cref="TwinLimits.MaxNesting"/>).</summary>
+    private int _nesting;
 
-    /// <summary>Parses a whole program.</summary>
-    /// <exception cref="UrCompileException">A syntax error, with its line.</exception>
-    public static UrSyntaxTree Parse(string text)
+    /// <summary>The operators and calls of the statement being read (bounded by <see cref="TwinLimits.MaxExpressionOperators"/>).</summary>
+    private int _operators;
+
+    private UrParser(UrTokenWindow tokens, TwinLimits limits)
     {
-        var parser = new UrParser(new UrTokenWindow(UrLexer.Tokens(text)));
+        _tokens = tokens;
+        _limits = limits;
+    }
+
+    /// <summary>Parses a whole program within <paramref name="limits"/> (the default ones when null).</summary>
+    /// <exception cref="UrCompileException">A syntax error, with its line.</exception>
+    public static UrSyntaxTree Parse(string text, TwinLimits? limits = null)
+    {
+        var parser = new UrParser(new UrTokenWindow(UrLexer.Tokens(text)), limits ?? TwinLimits.Default);
         parser.SkipNewlines();
         while (parser.Peek.Kind != UrTokenKind.End)
         {
@@ -61,6 +74,24 @@ internal sealed class UrParser
     }
 
     private UrToken Peek => _tokens[_at];
+
+    /// <summary>One level deeper (a bracket, a sign, a block): past the budget the program is refused.</summary>
+    private void Deeper()
+    {
+        if (++_nesting > _limits.MaxNesting)
+        {
+            throw new UrCompileException(Peek.Line, $"the program is nested more than {_limits.MaxNesting} levels deep (brackets, signs and blocks)");
+        }
+    }
+
+    /// <summary>One operator or call more in the statement: past the budget the program is refused.</summary>
+    private void Operator(int line)
+    {
+        if (++_operators > _limits.MaxExpressionOperators)
+        {
+            throw new UrCompileException(line, $"the statement has more than {_limits.MaxExpressionOperators} operators and calls");
+        }
+    }
 
     private UrToken Next() => _tokens[_at++];
 
@@ -116,6 +147,7 @@ internal sealed class UrParser
     /// <summary>Statements up to (not including) one of the closing keywords.</summary>
     private List<UrStmt> Block(params string[] closers)
     {
+        Deeper();
         var block = new List<UrStmt>();
         SkipNewlines();
         while (!(Peek.Kind == UrTokenKind.Name && closers.Contains(Peek.Text)))
@@ -131,11 +163,13 @@ internal sealed class UrParser
             }
             SkipNewlines();
         }
+        _nesting--;
         return block;
     }
 
     private UrStmt? Statement()
     {
+        _operators = 0;
         UrToken token = Peek;
         int line = token.Line;
         if (token.Kind == UrTokenKind.Name)
@@ -307,7 +341,13 @@ internal sealed class UrParser
         return new UrIf(line, branches, otherwise);
     }
 
-    private UrExpr Expression() => Or();
+    private UrExpr Expression()
+    {
+        Deeper();
+        UrExpr expr = Or();
+        _nesting--;
+        return expr;
+    }
 
     private UrExpr Or()
     {
@@ -315,6 +355,7 @@ internal sealed class UrParser
         while (Peek.Is("or"))
         {
             int line = Next().Line;
+            Operator(line);
             left = new UrLogical(line, false, left, And());
         }
         return left;
@@ -326,6 +367,7 @@ internal sealed class UrParser
         while (Peek.Is("and"))
         {
             int line = Next().Line;
+            Operator(line);
             left = new UrLogical(line, true, left, Not());
         }
         return left;
@@ -336,7 +378,11 @@ internal sealed class UrParser
         if (Peek.Is("not"))
         {
             int line = Next().Line;
-            return new UrUnary(line, "not", Not());
+            Operator(line);
+            Deeper();
+            var not = new UrUnary(line, "not", Not());
+            _nesting--;
+            return not;
         }
         return Comparison();
     }
@@ -347,6 +393,7 @@ internal sealed class UrParser
         while (Peek.Kind == UrTokenKind.Symbol && Peek.Text is "==" or "!=" or "<" or ">" or "<=" or ">=")
         {
             UrToken op = Next();
+            Operator(op.Line);
             left = new UrBinary(op.Line, op.Text, left, Additive());
         }
         return left;
@@ -358,6 +405,7 @@ internal sealed class UrParser
         while (Peek.Kind == UrTokenKind.Symbol && Peek.Text is "+" or "-")
         {
             UrToken op = Next();
+            Operator(op.Line);
             left = new UrBinary(op.Line, op.Text, left, Multiplicative());
         }
         return left;
@@ -369,6 +417,7 @@ internal sealed class UrParser
         while (Peek.Kind == UrTokenKind.Symbol && Peek.Text is "*" or "/" or "%")
         {
             UrToken op = Next();
+            Operator(op.Line);
             left = new UrBinary(op.Line, op.Text, left, Unary());
         }
         return left;
@@ -384,12 +433,19 @@ internal sealed class UrParser
                 UrToken literal = Next();
                 return Postfix(Literal(literal, negate: true));
             }
-            return new UrUnary(line, "-", Unary());
+            Operator(line);
+            Deeper();
+            var minus = new UrUnary(line, "-", Unary());
+            _nesting--;
+            return minus;
         }
         if (Peek.Is("+"))
         {
-            Next();
-            return Unary();
+            Operator(Next().Line);
+            Deeper();
+            UrExpr plus = Unary();
+            _nesting--;
+            return plus;
         }
         return Postfix(Primary());
     }
@@ -421,6 +477,7 @@ internal sealed class UrParser
         while (Peek.Is("["))
         {
             int line = Next().Line;
+            Operator(line);
             UrExpr index = Expression();
             Expect("]");
             expr = new UrIndex(line, expr, index);
@@ -487,6 +544,7 @@ internal sealed class UrParser
             return new UrName(token.Line, token.Text);
         }
         Next();
+        Operator(token.Line);
         var positional = new List<UrExpr>();
         var named = new List<(string, UrExpr)>();
         while (!Peek.Is(")"))

@@ -19,14 +19,14 @@ internal static class UrScriptVerifier
     /// <summary>Runs <paramref name="script"/> on a twin with <paramref name="options"/> and compares it with <paramref name="actions"/>.</summary>
     public static TwinVerification<UrProgramState> Verify(string script, IEnumerable<RobotAction> actions, UrTwinOptions? options = null, CancellationToken cancellation = default)
     {
-        options ??= new UrTwinOptions();
+        options ??= new UrTwinOptions { Limits = TwinLimits.Verify };
         List<TwinExpectation> expected = TwinComparison.Expect(actions, options.Model, OutputOf);
         if (TwinComparison.StartOf(expected, options.Model, options.StartJoints) is { } start)
         {
             options = new UrTwinOptions
             {
                 Model = options.Model, StartJoints = start, Time = options.Time, RealTime = options.RealTime,
-                RandomSeed = options.RandomSeed, SocketOpenTimeout = options.SocketOpenTimeout,
+                RandomSeed = options.RandomSeed, SocketOpenTimeout = options.SocketOpenTimeout, Limits = options.Limits,
             };
         }
         using var twin = new UrTwinController(options);

@@ -31,7 +31,7 @@ internal abstract class UrStmt(int line)
         for (int i = 0; i < block.Count; i++)
         {
             UrStmt statement = block[i];
-            frame.Machine.CurrentLine = statement.Line;
+            frame.Machine.Step(statement.Line);
             UrFlow flow = statement.Exec(frame);
             if (flow != UrFlow.Next)
             {

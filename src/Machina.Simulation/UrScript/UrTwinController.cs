@@ -131,14 +131,16 @@ internal sealed partial class UrTwinController : IDisposable
         }
     }
 
-    /// <summary>Parses and binds a program; throws <see cref="UrCompileException"/> for the first mistake.</summary>
-    public static UrBoundProgram Compile(string text)
+    /// <summary>Parses and binds a program within <paramref name="limits"/> (the default ones when null); throws <see cref="UrCompileException"/> for the first mistake.</summary>
+    public static UrBoundProgram Compile(string text, TwinLimits? limits = null)
     {
-        if (text.Length > MaxProgramLength)
+        limits ??= TwinLimits.Default;
+        long most = Math.Min(MaxProgramLength, limits.MaxProgramChars);
+        if (text.Length > most)
         {
-            throw new UrCompileException(1, $"the program is longer than {MaxProgramLength} characters");
+            throw new UrCompileException(1, $"the program is longer than {most} characters");
         }
-        return UrBinder.Bind(UrParser.Parse(text), UrBuiltins.All);
+        return UrBinder.Bind(UrParser.Parse(text, limits), UrBuiltins.All);
     }
 
     /// <summary>
@@ -189,7 +191,7 @@ internal sealed partial class UrTwinController : IDisposable
         UrBoundProgram program;
         try
         {
-            program = Compile(text);
+            program = Compile(text, Options.Limits);
         }
         catch (UrCompileException e)
         {
@@ -223,7 +225,7 @@ internal sealed partial class UrTwinController : IDisposable
         UrBoundProgram program;
         try
         {
-            program = Compile(text);
+            program = Compile(text, Options.Limits);
         }
         catch (UrCompileException e)
         {

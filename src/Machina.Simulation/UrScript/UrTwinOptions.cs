@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 /// <summary>Settings of a URScript twin controller.</summary>
@@ -36,4 +38,7 @@ internal sealed class UrTwinOptions
     /// since whether the next instruction has arrived depends on timing that tests cannot control. Programs without sockets always blend.
     /// </summary>
     public bool BlendWhileStreaming { get; init; }
+
+    /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, strings, threads, program size).</summary>
+    public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

@@ -112,6 +112,23 @@ internal static class UrValue
         _ => value.ToString() ?? "",
     };
 
+    /// <summary>An upper bound of the length of <see cref="ToText(object?)"/> of <paramref name="value"/>, without building it.</summary>
+    public static long TextLength(object? value) => value switch
+    {
+        string s => s.Length,
+        UrList list => 2 + list.Items.Sum(item => TextLength(item) + 2),
+        UrPose => 6 * 32,
+        _ => 32,
+    };
+
+    /// <summary>
+    /// <see cref="ToText(object?)"/> of <paramref name="value"/> when <paramref name="length"/> (the text <paramref name="function"/>
+    /// builds) stays within <paramref name="most"/> characters; the program's error otherwise.
+    /// </summary>
+    public static string ToText(object? value, long length, int most, int line, string function) => length <= most
+        ? ToText(value)
+        : throw new UrRuntimeException(line, $"{function}: the string would be longer than {most} characters (the twin's limit)");
+
     /// <summary>A float as the controller prints it (up to 6 decimals).</summary>
     public static string FormatNumber(double d) => d.ToString("0.######", CultureInfo.InvariantCulture);
 
