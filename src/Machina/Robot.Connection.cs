@@ -132,7 +132,7 @@ public sealed partial class Robot
             int dropped = old?.GetPendingActions().Count ?? 0;
             if (dropped > 0)
             {
-                Logger.Warning($"Going offline dropped {dropped} actions that were not executed by the controller.");
+                Logger.Warning($"Going offline dropped {Counted.Of(dropped, "action")} that {(dropped == 1 ? "was" : "were")} not executed by the controller.");
             }
             // Events that already happened are still raised, before this returns: no handler runs after going offline.
             old?.CloseAsync(raiseQueued: true).GetAwaiter().GetResult();

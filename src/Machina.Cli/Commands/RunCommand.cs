@@ -189,7 +189,7 @@ internal static class RunCommand
                 _progress.Update(Interlocked.Read(ref _executed), 0);
                 _progress.Finish();
                 RobotState final = robot.GetExecutedState();
-                await context.Stdout.WriteLineAsync($"Done: {Interlocked.Read(ref _executed)} actions executed. The robot is at " +
+                await context.Stdout.WriteLineAsync($"Done: {Counted.Of(Interlocked.Read(ref _executed), "action")} executed. The robot is at " +
                     $"{final.Position?.ToString() ?? "an unknown position"}, axes {final.Axes?.ToString() ?? "unknown"}.").ConfigureAwait(false);
                 await robot.DisconnectAsync().ConfigureAwait(false);
                 return ExitCodes.Ok;

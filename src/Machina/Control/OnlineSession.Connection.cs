@@ -301,7 +301,7 @@ internal sealed partial class OnlineSession
         _state = ConnectionState.Connected;
         _stopReason = null;
         _lastProgress = _time.GetTimestamp();
-        Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
+        Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {Counted.Of(_inFlight.Count + _buffer.Count, "action")} {(_inFlight.Count + _buffer.Count == 1 ? "waits" : "wait")}.");
         if (_host.IsListening(OnlineEvent.StopChanged))
         {
             _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
@@ -379,7 +379,7 @@ internal sealed partial class OnlineSession
         if (silent.TotalMilliseconds > timeout.TotalMilliseconds + expected)
         {
             Fault(link, new RobotConnectionException(
-                $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {_inFlight.Count} actions wait for execution."));
+                $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {Counted.Of(_inFlight.Count, "action")} {(_inFlight.Count == 1 ? "waits" : "wait")} for execution."));
         }
     }
 }
