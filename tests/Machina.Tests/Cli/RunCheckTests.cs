@@ -16,7 +16,7 @@ public class RunCheckTests
         CliResult result = await cli.RunProgramAsync("run", program, "--brand", "ur", "--sim", "--speed-factor", "1000");
 
         Assert.Equal(1, result.Exit);
-        Assert.Equal("p.machina:14:1: error: ArcMotionTo(375,0,360,300,100,300); cannot be applied: \"Arc motion through [375,0,360] to [300,100,300]\" " +
+        Assert.Equal("p.machina:14:1: error: ArcMotionTo(375,0,360,300,100,300); cannot be applied: \"Arc motion through [375, 0, 360] to [300, 100, 300]\" " +
             "cannot be streamed to a UR robot: Machina's UR driver has no instruction for it. Nothing was sent; the robot did not move.", result.Stderr.TrimEnd());
         Assert.DoesNotContain("Streaming", result.Stdout, StringComparison.Ordinal);
         Assert.DoesNotContain("%", result.Stdout, StringComparison.Ordinal); // no action executed
