@@ -274,7 +274,8 @@ internal sealed partial class OnlineSession
     }
 
     /// <summary>The controller stopped on its own: nothing more is released, waiters fail with the reason, the link stays.</summary>
-    private void OnStopped(Connection link, MachinaException reason)
+    /// <remarks>A pause the user asked for (<paramref name="byUser"/>) is logged as information; a stop of the controller's own as an error.</remarks>
+    private void OnStopped(Connection link, MachinaException reason, bool byUser = false)
     {
         if (!ReferenceEquals(_link, link) || _state != ConnectionState.Connected)
         {
@@ -284,7 +285,7 @@ internal sealed partial class OnlineSession
         _stopReason = reason;
         _credit = 0;
         FailWaiters(reason);
-        Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
+        Log(byUser ? LogLevel.INFO : LogLevel.ERROR, $"\"{_host.Name}\" {(byUser ? "paused" : "stopped")}: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
         if (_host.IsListening(OnlineEvent.StopChanged))
         {
             _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
