@@ -146,7 +146,11 @@ internal sealed partial class OnlineSession
         }
     }
 
-    /// <summary>Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.</summary>
+    /// <summary>
+    /// Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.
+    /// Closing it before every issued action was executed (Disconnect right after issuing, as the original's examples did) says
+    /// how many were left, as a warning.
+    /// </summary>
     internal async Task DisconnectAsync()
     {
         Connection? link = await AskAsync(() =>
@@ -154,6 +158,7 @@ internal sealed partial class OnlineSession
             Connection? current = _link;
             if (current is not null)
             {
+                WarnUnexecuted(_inFlight.Count, _buffer.Count);
                 Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
             }
             return current;
@@ -164,6 +169,16 @@ internal sealed partial class OnlineSession
         }
         await link.Driver.DisposeAsync().ConfigureAwait(false);
         Log(LogLevel.INFO, $"Disconnected from {_host.Brand} robot \"{_host.Name}\".");
+    }
+
+    private void WarnUnexecuted(int sent, int unsent)
+    {
+        if (sent + unsent == 0)
+        {
+            return;
+        }
+        Log(LogLevel.WARNING, $"Disconnected from \"{_host.Name}\" with {Counted.Of(sent + unsent, "action")} not executed ({sent} sent and not " +
+            $"confirmed, which the robot may still run; {unsent} never sent). Call WaitForCompletion before Disconnect to let the robot finish them.");
     }
 
     /// <summary>
