@@ -39,7 +39,7 @@ public sealed partial class VirtualAbbController
         }
         twin.Pendant.Logged += line =>
         {
-            if (line.StartsWith("Execution error", StringComparison.Ordinal))
+            if (line.StartsWith("Execution error", StringComparison.Ordinal) || IsEventError(line))
             {
                 RecordError(line);
             }
@@ -52,6 +52,21 @@ public sealed partial class VirtualAbbController
         twin.Reserve(monitor);
         Twin = twin;
         twin.StartTasks();
+    }
+
+    /// <summary>
+    /// True for the event-log form of an error that stopped a task, <c>50050 Position outside reach: … (line N, task T_ROB1)</c>:
+    /// an error, as "Execution error" is (listed in <see cref="VirtualController{TState}.Errors"/> as UR and KUKA list theirs).
+    /// </summary>
+    private static bool IsEventError(string line)
+    {
+        int digits = 0;
+        while (digits < line.Length && char.IsAsciiDigit(line[digits]))
+        {
+            digits++;
+        }
+        return digits >= 4 && digits < line.Length && line[digits] == ' '
+            && line.EndsWith(')') && line.Contains(", task ", StringComparison.Ordinal) && line.Contains("(line ", StringComparison.Ordinal);
     }
 
     /// <summary>

@@ -168,7 +168,7 @@ public abstract partial class VirtualController<TState>
         // Emptied before the client is dropped: a host that reconnects at once must not see its new requests drained.
         int lost = DiscardReceived();
         DropClient();
-        Pendant($"restarted: {lost.ToString(CultureInfo.InvariantCulture)} requests received and not executed are lost");
+        Pendant($"restarted: {Counted.Of(lost, "request")} received and not executed {(lost == 1 ? "is" : "are")} lost");
     }
 
     /// <summary>
@@ -179,7 +179,7 @@ public abstract partial class VirtualController<TState>
     private protected void DropBuffer(string why)
     {
         int dropped = DiscardReceived();
-        Pendant($"{why}: {dropped.ToString(CultureInfo.InvariantCulture)} requests received and not executed are dropped");
+        Pendant($"{why}: {Counted.Of(dropped, "request")} received and not executed {(dropped == 1 ? "is" : "are")} dropped");
     }
 
     /// <summary>

@@ -132,7 +132,7 @@ public sealed partial class Robot
             int dropped = old?.GetPendingActions().Count ?? 0;
             if (dropped > 0)
             {
-                Logger.Warning($"Going offline dropped {dropped} actions that were not executed by the controller.");
+                Logger.Warning($"Going offline dropped {Counted.Of(dropped, "action")} that {(dropped == 1 ? "was" : "were")} not executed by the controller.");
             }
             // Events that already happened are still raised, before this returns: no handler runs after going offline.
             old?.CloseAsync(raiseQueued: true).GetAwaiter().GetResult();
@@ -222,7 +222,27 @@ public sealed partial class Robot
     }
 
     /// <summary>Connects to a driver on this computer (such as RobotStudio's virtual controller) at 127.0.0.1:7000.</summary>
-    public bool Connect() => Connect("127.0.0.1", 7000);
+    /// <returns>True once connected.</returns>
+    /// <exception cref="MachinaException">Nothing answered there (the message says what to pass instead), or it did not answer as expected.</exception>
+    public bool Connect()
+    {
+        try
+        {
+            return Connect(DefaultHost, DefaultPort);
+        }
+        catch (RobotConnectionException ex)
+        {
+            throw new RobotConnectionException(
+                $"Connect() with no arguments connects to {DefaultHost}, port {DefaultPort} (a virtual controller on this computer); " +
+                $"for another controller call Connect(address, port). {ex.Message}", ex);
+        }
+    }
+
+    /// <summary>Where <see cref="Connect()"/> connects: a virtual controller on this computer.</summary>
+    private const string DefaultHost = "127.0.0.1";
+
+    /// <summary>The port <see cref="Connect()"/> uses (RobotStudio's and <c>machina sim</c>'s default).</summary>
+    private const int DefaultPort = 7000;
 
     /// <summary>
     /// Connects to the driver on a controller and waits for its handshake (at most <see cref="ConnectTimeout"/>). The robot's

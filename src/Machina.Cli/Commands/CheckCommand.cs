@@ -85,7 +85,7 @@ internal static class CheckCommand
         await output.WriteLineAsync().ConfigureAwait(false);
         int fine = motions - withProblems - refusedMotions;
         await output.WriteLineAsync($"{motions} motion{(motions == 1 ? "" : "s")} checked: {fine} ok, {withProblems} with problems, {refused} refused" +
-            $" (of {trial.AppliedCount + refused} actions).").ConfigureAwait(false);
+            $" (of {Counted.Of(trial.AppliedCount + refused, "action")}).").ConfigureAwait(false);
         await output.WriteLineAsync(cycle.ToText($"the {model.Brand} {model.Name}", model)).ConfigureAwait(false);
         return refused == 0 && !anyProblem ? ExitCodes.Ok : ExitCodes.Failed;
     }

@@ -48,7 +48,9 @@ internal static partial class DriversCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), Brands.Online, "drivers");
-        string host = args.Required("--host", "(the controller's address, e.g. 192.168.125.1)");
+        string host = args.Required("--host", brand == UrBrand.Definition.Type
+            ? "(this computer's address, which the UR driver script connects back to, e.g. 192.168.56.1)"
+            : "(the controller's address, e.g. 192.168.125.1)");
         if (args.Has("--install"))
         {
             return await InstallAsync(brand, host, args, context).ConfigureAwait(false);
@@ -56,7 +58,9 @@ internal static partial class DriversCommand
         int port = args.Port("--port", 0);
         if (port == 0)
         {
-            throw new UsageException("machina drivers needs --port P (the port the driver listens on, e.g. 7000). See: machina drivers --help");
+            throw new UsageException(brand == UrBrand.Definition.Type
+                ? "machina drivers needs --port P (this computer's port the UR driver script connects back to, e.g. 7000). See: machina drivers --help"
+                : "machina drivers needs --port P (the port the driver listens on, e.g. 7000). See: machina drivers --help");
         }
         string folder = context.FullPath(args.Required("--out", "DIR (the folder to write the files into)"));
         IReadOnlyDictionary<string, string> files;

@@ -49,7 +49,7 @@ internal static class PreviewCommand
         PreviewPath preview = PreviewPath.Build(reader, model, printer, context.Cancellation);
         string title = $"Tool path of {Path.GetFileName(reader.DisplayName)}";
         string device = model is not null ? $"{model.Brand} {model.Name}" : brand is RobotType known ? known.ToString() : "robot arm (no model)";
-        string subtitle = $"{device} · {preview.Actions} actions · {preview.Segments.Count} moves · {preview.Warnings.Count} warning{(preview.Warnings.Count == 1 ? "" : "s")} · about {CycleTime.Short(preview.CycleTime.TotalSeconds)} · units: mm";
+        string subtitle = $"{device} · {Counted.Of(preview.Actions, "action")} · {Counted.Of(preview.Segments.Count, "move")} · {preview.Warnings.Count} warning{(preview.Warnings.Count == 1 ? "" : "s")} · about {CycleTime.Short(preview.CycleTime.TotalSeconds)} · units: mm";
         string text = extension == ".svg" ? SvgWriter.Write(preview, title, subtitle) : HtmlWriter.Write(preview, title, subtitle);
         string full = context.FullPath(output);
         string? folder = Path.GetDirectoryName(full);

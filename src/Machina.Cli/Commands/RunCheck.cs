@@ -55,6 +55,6 @@ internal static class RunCheck
             throw new CliException(problems[0] + " Nothing was sent; the robot did not move.") { IsLocated = true };
         }
         string list = string.Join(Environment.NewLine, problems) + (more > 0 ? $"{Environment.NewLine}{reader.DisplayName}: and {more} more." : "");
-        throw new CliException($"{list}{Environment.NewLine}{problems.Count + more} problems: nothing was sent; the robot did not move.") { IsLocated = true };
+        throw new CliException($"{list}{Environment.NewLine}{Counted.Of(problems.Count + more, "problem")}: nothing was sent; the robot did not move.") { IsLocated = true };
     }
 }

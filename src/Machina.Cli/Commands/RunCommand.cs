@@ -189,7 +189,7 @@ internal static class RunCommand
                 _progress.Update(Interlocked.Read(ref _executed), 0);
                 _progress.Finish();
                 RobotState final = robot.GetExecutedState();
-                await context.Stdout.WriteLineAsync($"Done: {Interlocked.Read(ref _executed)} actions executed. The robot is at " +
+                await context.Stdout.WriteLineAsync($"Done: {Counted.Of(Interlocked.Read(ref _executed), "action")} executed. The robot is at " +
                     $"{final.Position?.ToString() ?? "an unknown position"}, axes {final.Axes?.ToString() ?? "unknown"}.").ConfigureAwait(false);
                 await robot.DisconnectAsync().ConfigureAwait(false);
                 return ExitCodes.Ok;
@@ -199,12 +199,14 @@ internal static class RunCommand
                 _progress.Finish();
                 int cancelled = robot.ClearPendingActions();
                 IReadOnlyList<RobotAction> sent = robot.GetPendingActions();
+                robot.Logger.Level = LogLevel.ERROR;   // the line below says what was left; the library's own warning would repeat it
                 await robot.DisconnectAsync().ConfigureAwait(false);
                 string why = ex is OperationCanceledException ? "Stopped (Ctrl+C)" : "Stopped";
                 long executed = Interlocked.Read(ref _executed);
-                await context.Stderr.WriteLineAsync($"{why} after {executed} of {(_total is long all ? all : issued)} actions were executed " +
-                    $"({issued} issued); {cancelled} not sent yet were cancelled." + (sent.Count > 0
-                        ? $" {sent.Count} were sent and the controller may still run them (first: {sent[0].ToInstruction()})."
+                long of = _total is long all ? all : issued;
+                await context.Stderr.WriteLineAsync($"{why} after {executed} of {Counted.Of(of, "action")} {(of == 1 ? "was" : "were")} executed " +
+                    $"({issued} issued); {cancelled} not sent yet {(cancelled == 1 ? "was" : "were")} cancelled." + (sent.Count > 0
+                        ? $" {sent.Count} {(sent.Count == 1 ? "was" : "were")} sent and the controller may still run {(sent.Count == 1 ? "it" : "them")} (first: {sent[0].ToInstruction()})."
                         : "")).ConfigureAwait(false);
                 throw;
             }

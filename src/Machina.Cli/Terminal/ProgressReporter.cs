@@ -96,7 +96,7 @@ internal sealed class ProgressReporter
                 int filled = (int)Math.Round(fraction * BarWidth);
                 sb.Append('[').Append('#', filled).Append('-', BarWidth - filled).Append("] ");
             }
-            sb.Append(CultureInfo.InvariantCulture, $"{fraction * 100,3:0}%  {executed}/{total} actions");
+            sb.Append(CultureInfo.InvariantCulture, $"{fraction * 100,3:0}%  {executed}/{total} {Counted.Noun(total, "action")}");
             sb.Append(CultureInfo.InvariantCulture, $"  {rate:0.0}/s");
             if (rate > 0 && executed < total)
             {
@@ -105,7 +105,7 @@ internal sealed class ProgressReporter
         }
         else
         {
-            sb.Append(CultureInfo.InvariantCulture, $"{executed} actions  {rate:0.0}/s");
+            sb.Append(CultureInfo.InvariantCulture, $"{Counted.Of(executed, "action")}  {rate:0.0}/s");
         }
         if (line > 0)
         {

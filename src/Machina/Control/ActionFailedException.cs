@@ -12,7 +12,7 @@ public sealed class ActionFailedException : MachinaException
     {
         Action = action ?? throw new ArgumentNullException(nameof(action));
         ControllerReason = controllerReason ?? throw new ArgumentNullException(nameof(controllerReason));
-        ControllerCode = controllerCode;
+        ControllerCode = string.IsNullOrWhiteSpace(controllerCode) ? null : controllerCode;
     }
 
     /// <summary>The action the controller could not run.</summary>
@@ -21,10 +21,10 @@ public sealed class ActionFailedException : MachinaException
     /// <summary>What the controller said, in its own words.</summary>
     public string ControllerReason { get; }
 
-    /// <summary>The controller's error number or code (ABB ERRNO, UR safety status, KUKA message number), or null.</summary>
+    /// <summary>The controller's error number or code (ABB ERRNO, UR safety status, KUKA message number), or null (also when it gave an empty one).</summary>
     public string? ControllerCode { get; }
 
     private static string Describe(RobotAction action, string reason, string? code) =>
         $"The controller could not run {action?.ToInstruction()} (id {action?.Id}): {reason}"
-        + (code is null ? "" : $" (code {code})") + " Nothing after it was executed.";
+        + (string.IsNullOrWhiteSpace(code) ? "" : $" (code {code})") + " Nothing after it was executed.";
 }

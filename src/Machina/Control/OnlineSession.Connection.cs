@@ -146,7 +146,11 @@ internal sealed partial class OnlineSession
         }
     }
 
-    /// <summary>Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.</summary>
+    /// <summary>
+    /// Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.
+    /// Closing it before every issued action was executed (Disconnect right after issuing, as the original's examples did) says
+    /// how many were left, as a warning.
+    /// </summary>
     internal async Task DisconnectAsync()
     {
         Connection? link = await AskAsync(() =>
@@ -154,6 +158,7 @@ internal sealed partial class OnlineSession
             Connection? current = _link;
             if (current is not null)
             {
+                WarnUnexecuted(_inFlight.Count, _buffer.Count);
                 Detach(new RobotConnectionException("The robot was disconnected before every action was executed."));
             }
             return current;
@@ -164,6 +169,16 @@ internal sealed partial class OnlineSession
         }
         await link.Driver.DisposeAsync().ConfigureAwait(false);
         Log(LogLevel.INFO, $"Disconnected from {_host.Brand} robot \"{_host.Name}\".");
+    }
+
+    private void WarnUnexecuted(int sent, int unsent)
+    {
+        if (sent + unsent == 0)
+        {
+            return;
+        }
+        Log(LogLevel.WARNING, $"Disconnected from \"{_host.Name}\" with {Counted.Of(sent + unsent, "action")} not executed ({sent} sent and not " +
+            $"confirmed, which the robot may still run; {unsent} never sent). Call WaitForCompletion before Disconnect to let the robot finish them.");
     }
 
     /// <summary>
@@ -274,7 +289,8 @@ internal sealed partial class OnlineSession
     }
 
     /// <summary>The controller stopped on its own: nothing more is released, waiters fail with the reason, the link stays.</summary>
-    private void OnStopped(Connection link, MachinaException reason)
+    /// <remarks>A pause the user asked for (<paramref name="byUser"/>) is logged as information; a stop of the controller's own as an error.</remarks>
+    private void OnStopped(Connection link, MachinaException reason, bool byUser = false)
     {
         if (!ReferenceEquals(_link, link) || _state != ConnectionState.Connected)
         {
@@ -284,7 +300,7 @@ internal sealed partial class OnlineSession
         _stopReason = reason;
         _credit = 0;
         FailWaiters(reason);
-        Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
+        Log(byUser ? LogLevel.INFO : LogLevel.ERROR, $"\"{_host.Name}\" {(byUser ? "paused" : "stopped")}: {reason.Message} Nothing more is sent until it runs again (Resume, or at the pendant).");
         if (_host.IsListening(OnlineEvent.StopChanged))
         {
             _events.Post(new ControllerStoppedArgs(true, reason, PendingList(), _execution.Snapshot()));
@@ -301,7 +317,7 @@ internal sealed partial class OnlineSession
         _state = ConnectionState.Connected;
         _stopReason = null;
         _lastProgress = _time.GetTimestamp();
-        Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {_inFlight.Count + _buffer.Count} actions wait.");
+        Log(LogLevel.INFO, $"\"{_host.Name}\" runs again; {Counted.Of(_inFlight.Count + _buffer.Count, "action")} {(_inFlight.Count + _buffer.Count == 1 ? "waits" : "wait")}.");
         if (_host.IsListening(OnlineEvent.StopChanged))
         {
             _events.Post(new ControllerStoppedArgs(false, null, PendingList(), _execution.Snapshot()));
@@ -379,7 +395,7 @@ internal sealed partial class OnlineSession
         if (silent.TotalMilliseconds > timeout.TotalMilliseconds + expected)
         {
             Fault(link, new RobotConnectionException(
-                $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {_inFlight.Count} actions wait for execution."));
+                $"The controller stopped answering: no acknowledgement for {Num.F(silent.TotalSeconds, 1)} s while {Counted.Of(_inFlight.Count, "action")} {(_inFlight.Count == 1 ? "waits" : "wait")} for execution."));
         }
     }
 }

@@ -94,7 +94,7 @@ internal sealed partial class OnlineSession
         var failure = new ActionFailedException(failedAction, reason, code);
         _failure = failure;
         Detach(failure);
-        Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {failure.Message} {cancelled.Count} actions after it were cancelled; the link is closed. "
+        Log(LogLevel.ERROR, $"\"{_host.Name}\" stopped: {failure.Message} {Counted.Of(cancelled.Count, "action")} after it {(cancelled.Count == 1 ? "was" : "were")} cancelled; the link is closed. "
             + "Connect again to go on from where the robot is.");
         if (_host.IsListening(OnlineEvent.Failed))
         {

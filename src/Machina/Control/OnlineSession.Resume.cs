@@ -42,9 +42,9 @@ internal sealed partial class OnlineSession
         if (_inFlight.Count > 0)
         {
             Log(LogLevel.WARNING, progress is null
-                ? $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {_inFlight.Count} actions sent "
+                ? $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {Counted.Of(_inFlight.Count, "action")} sent "
                     + "before the connection was lost are sent again, and any the robot already ran will run twice."
-                : $"The controller does not know the {_inFlight.Count} actions sent before the connection was lost (a restarted driver or another "
+                : $"The controller does not know the {Counted.Of(_inFlight.Count, "action")} sent before the connection was lost (a restarted driver or another "
                     + "controller): they are sent again, with targets recomputed from where the robot is.");
             RequeueInFlight();
         }
@@ -97,8 +97,8 @@ internal sealed partial class OnlineSession
         var resend = remaining.Skip(heldCount).Select(f => f.Action).ToList();
         int resent = resend.Count;   // counted first: PutBackInFront appends the buffer to the list
         PutBackInFront(resend);
-        Log(LogLevel.INFO, $"Resumed where the controller is: {executedCount} actions ran while disconnected, {heldCount} are still on the controller, "
-            + $"{resent} are sent again.");
+        Log(LogLevel.INFO, $"Resumed where the controller is: {Counted.Of(executedCount, "action")} ran while disconnected, {heldCount} {(heldCount == 1 ? "is" : "are")} still on the controller, "
+            + $"{resent} {(resent == 1 ? "is" : "are")} sent again.");
         if (heldCount == 0 && handshake.Position is Vector at && _execution.Position is Vector expected && Vector.Distance(at, expected) > 1)
         {
             Log(LogLevel.WARNING, $"The robot is at {at}, {Num.F(Vector.Distance(at, expected), 1)} mm from where its last action left it: "

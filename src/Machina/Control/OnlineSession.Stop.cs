@@ -23,7 +23,7 @@ internal sealed partial class OnlineSession
         await link.Driver.PauseAsync(cancellationToken).ConfigureAwait(false);
         await AskAsync(() =>
         {
-            OnStopped(link, new RobotStoppedException("Paused by the user (Robot.Pause): the motion holds where the arm is; call Resume to go on.", "pause"));
+            OnStopped(link, new RobotStoppedException("Paused by the user (Robot.Pause): the motion holds where the arm is; call Resume to go on.", "pause"), byUser: true);
             return true;
         }).ConfigureAwait(false);
     }

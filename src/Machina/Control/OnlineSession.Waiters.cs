@@ -21,6 +21,9 @@ internal sealed partial class OnlineSession
         await task.WaitAsync(cancellationToken).ConfigureAwait(false);
     }
 
+    /// <summary>"1 action waits" or "N actions wait".</summary>
+    private static string Waiting(int pending) => Counted.Of(pending, "action") + (pending == 1 ? " waits" : " wait");
+
     /// <summary>What a wait for fewer than <paramref name="below"/> pending actions waits for (on the loop).</summary>
     private Task WhenPendingBelow(int below, string what)
     {
@@ -49,11 +52,11 @@ internal sealed partial class OnlineSession
             if (_failure is not null)
             {
                 return Task.FromException(new RobotConnectionException(
-                    $"{pending} actions wait to be executed, but the controller stopped after a failure ({_failure.Message}); connect again to run them.", _failure));
+                    $"{Waiting(pending)} to be executed, but the controller stopped after a failure ({_failure.Message}); connect again to run them.", _failure));
             }
             return Task.FromException(_lastFault is { } fault
-                ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {pending} actions wait to be executed; connect again to resume.", fault)
-                : new RobotConnectionException($"{pending} actions wait to be executed but the robot is not connected; call Connect first."));
+                ? new RobotConnectionException($"The connection was lost ({fault.Message}) while {Waiting(pending)} to be executed; connect again to resume.", fault)
+                : new RobotConnectionException($"{Waiting(pending)} to be executed but the robot is not connected; call Connect first."));
         }
         var signal = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         _pendingWaiters.Add((below, what, signal));

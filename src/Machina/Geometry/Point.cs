@@ -17,6 +17,6 @@ public readonly record struct Point(double X, double Y, double Z)
     /// <summary>Converts a vector to the point it reaches from the origin.</summary>
     public static implicit operator Point(Vector v) => new(v.X, v.Y, v.Z);
 
-    /// <summary>Text such as <c>[400,300,500]</c> (3 decimals).</summary>
-    public override string ToString() => $"[{Num.F(X, 3)},{Num.F(Y, 3)},{Num.F(Z, 3)}]";
+    /// <summary>Text such as <c>[400, 300, 500]</c> (3 decimals), as <see cref="Vector.ToString"/> writes a position.</summary>
+    public override string ToString() => ((Vector)this).ToString();
 }

@@ -36,5 +36,5 @@ public sealed class FolderCompileResult
     public int ActionCount { get; }
 
     /// <summary>Text such as <c>HelloRobot (ABB): 2 files, 1204 actions, 0 warnings</c>.</summary>
-    public override string ToString() => $"{ProgramName} ({Language}): {Paths.Count} files, {ActionCount} actions, {WarningCount} warnings";
+    public override string ToString() => $"{ProgramName} ({Language}): {Counted.Of(Paths.Count, "file")}, {Counted.Of(ActionCount, "action")}, {Counted.Of(WarningCount, "warning")}";
 }

@@ -84,7 +84,7 @@ public sealed class RobotProgram
     }
 
     /// <summary>Text such as <c>Robot Program "HelloRobot" with 2 files.</c>.</summary>
-    public override string ToString() => $"Robot Program \"{Name}\" with {Files.Count} files.";
+    public override string ToString() => $"Robot Program \"{Name}\" with {Counted.Of(Files.Count, "file")}.";
 
     /// <summary>Encoding for robot controller files: 7-bit ASCII; other characters become '?'.</summary>
     internal static Encoding Ascii => Encoding.ASCII;

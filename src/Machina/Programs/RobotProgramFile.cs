@@ -71,5 +71,5 @@ public sealed class RobotProgramFile
     }
 
     /// <summary>Text such as <c>Robot Program File "HelloRobot.mod" with 40 lines of code.</c>.</summary>
-    public override string ToString() => $"Robot Program File \"{FileName}\" with {Lines.Count} lines of code.";
+    public override string ToString() => $"Robot Program File \"{FileName}\" with {Counted.Of(Lines.Count, "line")} of code.";
 }

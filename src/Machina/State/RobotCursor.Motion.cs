@@ -6,6 +6,13 @@ internal sealed partial class RobotCursor
     private const string PoseUnknown =
         "the current position of the tool is not known yet; start with MoveTo, TransformTo or AxesTo before relative motions";
 
+    private const string PoseUnknownAfterAxes =
+        "the position of the tool after a joint motion (AxesTo) is not known without a robot model; give the robot its model " +
+        "(Robot.Create(name, brand, model), or --model on the command line) or use MoveTo or TransformTo before relative motions";
+
+    /// <summary>Why a relative motion cannot be applied now: no pose yet, or joints known but no model to turn them into a pose.</summary>
+    private string PoseUnknownReason => (Axes is not null && Model is null ? PoseUnknownAfterAxes : PoseUnknown) + ".";
+
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private string? ApplyTranslation(ActionTranslation a)
     {
@@ -13,7 +20,7 @@ internal sealed partial class RobotCursor
         {
             if (Position is not Vector pos || Rotation is not Rotation rot)
             {
-                return PoseUnknown + ".";
+                return PoseUnknownReason;
             }
             Vector offset = ReferenceCS == ReferenceCS.Local ? rot * a.Translation : a.Translation;
             return CommitCartesian(pos + offset, rot, offset.Length);
@@ -31,7 +38,7 @@ internal sealed partial class RobotCursor
         {
             if (Position is not Vector pos || Rotation is not Rotation rot)
             {
-                return PoseUnknown + ".";
+                return PoseUnknownReason;
             }
             Rotation next = ReferenceCS == ReferenceCS.Local ? rot * a.Rotation : a.Rotation * rot;
             return CommitCartesian(pos, next, 0);
@@ -51,7 +58,7 @@ internal sealed partial class RobotCursor
         }
         if (Position is not Vector pos || Rotation is not Rotation rot)
         {
-            return PoseUnknown + ".";
+            return PoseUnknownReason;
         }
         Vector newPos;
         Rotation newRot;

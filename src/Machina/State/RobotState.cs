@@ -105,5 +105,5 @@ public sealed class RobotState
 
     /// <summary>Short text with pose, joints and settings.</summary>
     public override string ToString() =>
-        $"State[pos {Position?.ToString() ?? "null"}, rot {Rotation?.ToQuaternionString() ?? "null"}, axes {Axes?.ToString() ?? "null"}, {Settings}]";
+        $"State[position {Position?.ToString() ?? "unknown"}, rotation {Rotation?.ToQuaternionString() ?? "unknown"}, axes {Axes?.ToString() ?? "unknown"}, {Settings}]";
 }

@@ -18,7 +18,12 @@ public readonly record struct Settings(double Speed, double Acceleration, double
     /// </summary>
     internal static bool MeansControllerAcceleration(double acceleration) => acceleration == 0 || acceleration == Default.Acceleration;
 
-    /// <summary>Text such as <c>World Linear 20-30-5 0</c>.</summary>
+    /// <summary>
+    /// Text such as <c>speed 20 mm/s, acceleration 30 mm/s², precision 5 mm, linear motion, world frame</c> (and the extrusion rate
+    /// when there is one).
+    /// </summary>
     public override string ToString() =>
-        $"{ReferenceCS} {MotionType} {Num.G(Speed)}-{Num.G(Acceleration)}-{Num.G(Precision)} {Num.G(ExtrusionRate)}";
+        $"speed {Num.G(Speed)} mm/s, acceleration {Num.G(Acceleration)} mm/s², precision {Num.G(Precision)} mm, " +
+        $"{MotionType.ToString().ToLowerInvariant()} motion, {ReferenceCS.ToString().ToLowerInvariant()} frame" +
+        (ExtrusionRate == 0 ? "" : $", extrusion {Num.G(ExtrusionRate)} mm/mm");
 }

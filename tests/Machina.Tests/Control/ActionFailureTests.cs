@@ -137,7 +137,7 @@ public class ActionFailureTests
         bot.Move(0, 0, 10);   // id 11, issued while disconnected: relative to where the robot is
         Assert.Equal(new Vector(410, 0, 410), bot.GetIssuedState().Position);
         var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.WaitForCompletionAsync());
-        Assert.StartsWith("1 actions wait to be executed, but the controller stopped after a failure (The controller could not run ", error.Message);
+        Assert.StartsWith("1 action waits to be executed, but the controller stopped after a failure (The controller could not run ", error.Message);
         Assert.IsType<ActionFailedException>(error.InnerException);
 
         var next = new FakeDriver

@@ -160,7 +160,7 @@ public class OnlineSeamTests
         driver.Listener!.OnFault(new RobotConnectionException("The controller closed the connection."));
 
         var error = await Assert.ThrowsAsync<RobotConnectionException>(() => bot.WaitForCompletionAsync());
-        Assert.Equal("The connection was lost (The controller closed the connection.) while 1 actions wait to be executed; connect again to resume.", error.Message);
+        Assert.Equal("The connection was lost (The controller closed the connection.) while 1 action waits to be executed; connect again to resume.", error.Message);
         Assert.IsType<RobotConnectionException>(error.InnerException);
     }
 

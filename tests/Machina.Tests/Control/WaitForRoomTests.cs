@@ -84,7 +84,7 @@ public class WaitForRoomTests
         var idle = OnlineRobot.Create(new FakeDriver(), connect: false);
         idle.MoveTo(400, 0, 400);
         var notConnected = await Assert.ThrowsAsync<RobotConnectionException>(() => idle.WaitForRoomAsync(1).WaitAsync(OnlineRobot.Timeout));
-        Assert.Equal("1 actions wait to be executed but the robot is not connected; call Connect first.", notConnected.Message);
+        Assert.Equal("1 action waits to be executed but the robot is not connected; call Connect first.", notConnected.Message);
         await idle.WaitForRoomAsync(2).WaitAsync(OnlineRobot.Timeout);   // room enough: no connection needed to issue more
     }
 

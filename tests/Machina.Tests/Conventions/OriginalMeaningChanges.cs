@@ -30,6 +30,8 @@ internal static class OriginalMeaningChanges
             "returns the scaled quaternion; the original returned an unscaled copy and scaled its argument instead (a bug).",
         [$"{G}AxisAngle.AxisAngle({G}Vector axis, double angleDegs)"] =
             "keeps the axis as given; the original scaled it to unit length. `ToRotation()` and the conversions accept any non-zero axis; use `axis.Normalized()` if you read `Axis` back.",
+        [$"override {G}Point.ToString() -> string"] =
+            "the text is `[400, 300, 500]`, with spaces, as every position Machina writes for people (`Vector`, the log, the events); the original wrote `[400,300,500]`.",
         [$"{G}AxisAngle.Axis {{ get; }} -> {G}Vector"] =
             "the axis as given to the constructor (not normalised, unlike the original).",
     };

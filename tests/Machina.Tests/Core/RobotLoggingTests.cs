@@ -20,7 +20,7 @@ public class RobotLoggingTests
             [
                 "HelloRobot VERBOSE: TCP position at [400, 300, 750]",
                 "HelloRobot VERBOSE: TCP orientation at [[0, -1, 0], [-1, 0, 0], [0, 0, -1]]",
-                "HelloRobot VERBOSE: Settings: World Linear 50-30-5 0",
+                "HelloRobot VERBOSE: Settings: speed 50 mm/s, acceleration 30 mm/s², precision 5 mm, linear motion, world frame",
             ],
             log.Select(e => e.ToString()));
     }

@@ -89,14 +89,14 @@ public class VectorTests
         Assert.Equal("[0.123, -1.5, 0]", new Vector(0.12345, -1.5, -0.0).ToString());
         Assert.Equal("[0, 0, 1234567.891]", new Vector(-0.0001, -0.0, 1234567.8912).ToString());
         Assert.Equal("[400,300,500.5]", new Vector(400, 300, 500.5).ToArrayString());
-        Assert.Equal("[1,-2,0]", ((Point)new Vector(1, -2, -0.0004)).ToString());
+        Assert.Equal("[1, -2, 0]", ((Point)new Vector(1, -2, -0.0004)).ToString());
     }
 
     [Fact]
     public void ToString_UnderGermanCulture_UsesDecimalPoint()
     {
         string text = Oracle.UnderGerman(() => new Vector(1.5, -2.25, 1000.125).ToString() + new Point(0.5, 0, 0));
-        Assert.Equal("[1.5, -2.25, 1000.125][0.5,0,0]", text);
+        Assert.Equal("[1.5, -2.25, 1000.125][0.5, 0, 0]", text);
     }
 
     [Fact]

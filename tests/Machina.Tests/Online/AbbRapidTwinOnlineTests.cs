@@ -62,7 +62,8 @@ public class AbbRapidTwinOnlineTests
 
             Assert.Equal("50050", e.Failure.ControllerCode);
             Assert.Equal(1, e.Action.Id);
-            Assert.Contains(controller.PendantMessages, m => m.StartsWith("50050 Position outside reach", StringComparison.Ordinal) && m.EndsWith("task T_ROB1)", StringComparison.Ordinal));
+            await OnlineTestSupport.EventuallyAsync(() => controller.Errors.Count > 0, "the error in controller.Errors");
+            Assert.Contains(controller.Errors, m => m.StartsWith("50050 Position outside reach", StringComparison.Ordinal) && m.EndsWith("task T_ROB1)", StringComparison.Ordinal));
             Assert.Equal(RapidProgramState.Failed, controller.Twin!.Task().State);
         }
         finally

@@ -26,7 +26,7 @@ public class CursorTextTests
         var bot = Robot.Create("Bot", RobotType.ABB);
         bot.MoveTo(400, 300, 500);
 
-        Assert.Equal("State[pos [400, 300, 500], rot [0, 0, 1, 0], axes null, World Linear 20-30-5 0]", bot.GetCurrentState().ToString());
+        Assert.Equal("State[position [400, 300, 500], rotation [0, 0, 1, 0], axes unknown, speed 20 mm/s, acceleration 30 mm/s², precision 5 mm, linear motion, world frame]", bot.GetCurrentState().ToString());
     }
 
     [Fact]

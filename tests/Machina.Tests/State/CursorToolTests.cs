@@ -138,7 +138,7 @@ public class CursorToolTests
 
         Assert.Equal(1, tool.Weight);
         Assert.Equal(new Vector(0, 0, 25), tool.CenterOfGravity);
-        Assert.Equal("Tool[\"pen\", Tip[0,0,50], Orientation[[1, 0, 0], [0, 1, 0], [0, 0, 1]], 1 kg]", tool.ToString());
+        Assert.Equal("Tool[\"pen\", Tip[0, 0, 50], Orientation[[1, 0, 0], [0, 1, 0], [0, 0, 1]], 1 kg]", tool.ToString());
     }
 
     [Theory]

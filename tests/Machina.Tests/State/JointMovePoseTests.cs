@@ -34,7 +34,7 @@ public sealed class JointMovePoseTests
 
         Assert.Null(bot.GetCurrentPosition());
         var ex = Assert.Throws<ActionRefusedException>(() => bot.Move(0, 0, -100));
-        Assert.Contains("the current position of the tool is not known yet", ex.Message, StringComparison.Ordinal);
+        Assert.Contains("the position of the tool after a joint motion (AxesTo) is not known without a robot model", ex.Message, StringComparison.Ordinal);
     }
 
     [Fact]

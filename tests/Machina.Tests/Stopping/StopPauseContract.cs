@@ -109,10 +109,12 @@ public abstract class StopPauseContract<TController, TState>
         await using TController controller = await StartAsync();
         var executed = new ConcurrentQueue<int>();
         var stopped = new TaskCompletionSource<ControllerStoppedArgs>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var log = new ConcurrentQueue<LogEntry>();
         Robot bot = await ConnectAsync(controller, b =>
         {
             b.ActionExecuted += (_, e) => executed.Enqueue(e.LastAction.Id);
             b.ControllerStopped += (_, e) => stopped.TrySetResult(e);
+            b.Logger.Logged += (_, e) => log.Enqueue(e);
         });
         try
         {
@@ -130,6 +132,9 @@ public abstract class StopPauseContract<TController, TState>
             Assert.True(Vector.Distance(controller.State.Position, held) < 0.01, $"the arm moved from {held} to {controller.State.Position} while paused");
             Assert.True(Vector.Distance(held, target) > 20, $"the arm reached {held}, too near the target {target}");
             Assert.DoesNotContain(2, executed);
+            // A pause the user asked for is information, not an error (issue 46).
+            Assert.Contains(log, e => e.Level == LogLevel.INFO && e.Message.Contains("paused: Paused by the user", StringComparison.Ordinal));
+            Assert.DoesNotContain(log, e => e.Level == LogLevel.ERROR);
 
             await WithLogsAsync(controller, bot.ResumeAsync().WaitAsync(Long));
             await bot.WaitForCompletionAsync().WaitAsync(Long);

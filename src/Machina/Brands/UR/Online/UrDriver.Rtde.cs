@@ -108,10 +108,30 @@ internal sealed partial class UrDriver
     }
 
     /// <summary>Connects to RTDE, negotiates protocol 2, subscribes to <see cref="Recipe"/> and returns the first package.</summary>
+    /// <summary>
+    /// Nothing answered at the address: says so with only what the user gave Connect (the RTDE port is derived from it) and what to
+    /// pass instead.
+    /// </summary>
+    private RobotConnectionException Unreachable(string host, RobotConnectionException ex)
+    {
+        string cause = ex.InnerException is System.Net.Sockets.SocketException socket ? socket.Message : "nothing answered in time";
+        return new RobotConnectionException(
+            $"Could not connect to a UR controller at {host}, port {_ports.Script.ToString(Num.Inv)} ({cause}). Pass Connect the " +
+            $"controller's address and its script port: Connect(\"192.168.1.10\", {UrPorts.StandardScript.ToString(Num.Inv)}) for a real UR " +
+            "(or URSim) at that address, or the port \"machina sim ur\" printed for a virtual one.", ex);
+    }
+
     private async Task<RtdeSample> ConnectRtdeAsync(string host, TimeSpan timeout, CancellationToken cancellationToken)
     {
         long start = Time.GetTimestamp();
-        _rtdeLink = await OpenSideLinkAsync(host, _ports.Rtde, timeout, new RtdeReceiver(this), cancellationToken).ConfigureAwait(false);
+        try
+        {
+            _rtdeLink = await OpenSideLinkAsync(host, _ports.Rtde, timeout, new RtdeReceiver(this), cancellationToken).ConfigureAwait(false);
+        }
+        catch (RobotConnectionException ex)
+        {
+            throw Unreachable(host, ex);
+        }
         byte[] accepted = await RequestAsync(Rtde.RequestProtocolVersion, [0, (byte)Rtde.ProtocolVersion], start, timeout, cancellationToken).ConfigureAwait(false);
         if (accepted.Length != 1 || accepted[0] != 1)
         {
