@@ -1,3 +1,5 @@
+// The harness lives in tests/Machina.Benchmarks, which the suite references in its net10.0 build only.
+#if NET10_0_OR_GREATER
 using Machina.Benchmarks.Differential;
 using Machina.Tests.Support;
 
@@ -121,3 +123,4 @@ public class DifferentialPropertyTests
 
     private static string SamplesFolder() => DifferentialSuite.SamplesFolder() ?? throw new DirectoryNotFoundException("samples/programs");
 }
+#endif
