@@ -148,8 +148,11 @@ internal static class RwsHttp
             head.Append(name).Append(": ").Append(value).Append("\r\n");
         }
         head.Append("\r\n");
-        await stream.WriteAsync(Encoding.Latin1.GetBytes(head.ToString()), cancellationToken).ConfigureAwait(false);
-        await stream.WriteAsync(response.Body, cancellationToken).ConfigureAwait(false);
+        // Head and body in one write: two small writes would wait on the client's delayed acknowledgement.
+        byte[] bytes = new byte[Encoding.Latin1.GetByteCount(head.ToString()) + response.Body.Length];
+        int written = Encoding.Latin1.GetBytes(head.ToString(), bytes);
+        response.Body.CopyTo(bytes, written);
+        await stream.WriteAsync(bytes, cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>The fields of a form or query (<c>a=1&amp;b=x%20y</c>).</summary>

@@ -18,6 +18,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
     private readonly Lock _gate = new();
     private readonly RwsNonces _nonces;
     private readonly HashSet<string> _sessions = [];
+    private readonly Queue<string> _sessionOrder = new();
     private readonly string _user;
     private readonly string _password;
     private Task? _accepting;
@@ -119,6 +120,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
             {
                 return;
             }
+            client.NoDelay = true;
             lock (_gate)
             {
                 _clients.Add(client);
@@ -193,7 +195,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
             if (Rws2 ? RwsBasic.Verify(authorization, _user, _password) : digest == RwsNonceState.Fresh)
             {
                 session = RwsDigest.NewNonce();
-                _sessions.Add(session);
+                OpenSession(session);
                 opened = true;
                 return null;
             }
@@ -207,6 +209,19 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
             challenge.Headers.Add(("WWW-Authenticate", RwsDigest.Challenge(_nonces.Issue(), stale: digest == RwsNonceState.Stale)));
             return challenge;
         }
+    }
+
+    /// <summary>The most sessions kept at once (a log-on past it ends the oldest session, whose client logs on again).</summary>
+    public const int MaxSessions = 1024;
+
+    private void OpenSession(string session)
+    {
+        while (_sessionOrder.Count >= MaxSessions)
+        {
+            _sessions.Remove(_sessionOrder.Dequeue());
+        }
+        _sessions.Add(session);
+        _sessionOrder.Enqueue(session);
     }
 
     /// <summary>RWS 2.0: a 406 when the client does not accept the v=2.0 XHTML, a 415 when its form is not the v=2.0 one; else null.</summary>

@@ -132,8 +132,24 @@ public sealed class RwsTwinLimitsTests : IAsyncLifetime
         Assert.Empty(_rws.Files);
     }
 
-    private async Task<RawAnswer> Get(string path, string? authorization) =>
-        await RawHttp.RequestAsync(_rws.Port, $"GET {path} HTTP/1.1\r\nHost: x\r\n" + (authorization is null ? "" : $"Authorization: {authorization}\r\n") + "\r\n");
+    [Fact]
+    public async Task Sessions_PastTheirCap_TheOldestEnds_TheNewestHolds()
+    {
+        using RawHttp first = await RawHttp.ConnectAsync(_rws.Port);
+        string oldest = await LogInAsync(first);
+        string newest = oldest;
+        for (int i = 0; i < RwsTwinServer.MaxSessions; i++)
+        {
+            newest = await LogInAsync(first);
+        }
+
+        Assert.Equal(401, (await Get(OpMode, null, oldest)).Status);
+        Assert.Equal(200, (await Get(OpMode, null, newest)).Status);
+    }
+
+    private async Task<RawAnswer> Get(string path, string? authorization, string? cookie = null) =>
+        await RawHttp.RequestAsync(_rws.Port, $"GET {path} HTTP/1.1\r\nHost: x\r\n" + (authorization is null ? "" : $"Authorization: {authorization}\r\n")
+            + (cookie is null ? "" : $"Cookie: {cookie}\r\n") + "\r\n");
 
     /// <summary>Authenticates on <paramref name="http"/>'s connection; returns the session cookie.</summary>
     private static async Task<string> LogInAsync(RawHttp http)
