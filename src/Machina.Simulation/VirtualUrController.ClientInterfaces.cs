@@ -203,17 +203,22 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>Sends a robot message (a runtime exception or a text) to every primary and secondary client.</summary>
-    private void SendToStateClients(byte[] message)
+    /// <summary>Sends a robot message (a runtime exception or a text) to every primary and secondary client; made only when there is one.</summary>
+    private void SendToStateClients(Func<byte[]> message)
     {
         ClientConnection[] now;
         lock (Gate)
         {
+            if (_primaryClients.Count == 0)
+            {
+                return;
+            }
             now = [.. _primaryClients];
         }
+        byte[] bytes = message();
         foreach (ClientConnection client in now)
         {
-            client.Send(message);
+            client.Send(bytes);
         }
     }
 

@@ -46,7 +46,7 @@ public sealed partial class VirtualUrController
             else
             {
                 Pendant(line);
-                SendToStateClients(VirtualUrClientPackages.Text(Timestamp, line));
+                SendToStateClients(() => VirtualUrClientPackages.Text(Timestamp, line));
             }
         };
         twin.StateChanged += WakeRtde;

@@ -41,7 +41,7 @@ public sealed partial class VirtualUrController
             _runtimeException = reason;
             streams = [.. _scriptStreams];
         }
-        SendToStateClients(bytes);
+        SendToStateClients(() => bytes);
         foreach (NetworkStream stream in streams)
         {
             try

@@ -55,7 +55,9 @@ internal static partial class UrBuiltins
         Add(t, "socket_send_int", (m, line, a) =>
         {
             UrSocket socket = Socket(m, line, a, 1, "socket_send_int");
-            int value = Int(a, 0, line, "socket_send_int", "value");
+            // A controller converts a float here as it converts to int anywhere, truncating: the original Machina.NET driver sends
+            // socket_send_int(FACTOR_M * pose[0]), which ran on software 3.x.
+            int value = UrValue.Int(a[0], line, "socket_send_int: argument 'value'");
             return UrValue.Box(m.Unlocked(() => socket.SendInt(value)));
         },
             R("value"), O("socket_name", DefaultSocket));

@@ -18,6 +18,7 @@ internal static partial class UrBuiltins
     {
         var table = new Dictionary<string, UrBuiltin>(StringComparer.Ordinal);
         AddMotion(table);
+        AddSpeed(table);
         AddPoseMath(table);
         AddIo(table);
         AddSockets(table);

@@ -17,13 +17,17 @@ internal static class UrLexer
     {
         var words = new TextCache(); // one string per distinct name or number: a long program repeats few of them
         int line = 1, lineStart = 0, i = 0;
+        int open = 0; // brackets open: a statement goes on over line ends inside parentheses or a list, as on a controller
         while (i < text.Length)
         {
             char c = text[i];
             int column = i - lineStart + 1;
             if (c == '\n')
             {
-                yield return new UrToken(UrTokenKind.Newline, "\n", line, column);
+                if (open == 0)
+                {
+                    yield return new UrToken(UrTokenKind.Newline, "\n", line, column);
+                }
                 line++;
                 lineStart = ++i;
             }
@@ -73,6 +77,7 @@ internal static class UrLexer
             }
             else if (Symbols.IndexOf(c, StringComparison.Ordinal) is int symbol and >= 0)
             {
+                open = c is '(' or '[' ? open + 1 : c is ')' or ']' ? Math.Max(0, open - 1) : open;
                 yield return new UrToken(UrTokenKind.Symbol, SymbolTexts[symbol], line, column);
                 i++;
             }

@@ -527,6 +527,9 @@ internal sealed class UrParser
                 }
                 return new UrPoseExpr(token.Line, [.. items]);
             }
+            case "enter_critical" or "exit_critical" when !Peek.Is("("):
+                // A statement of its own on a controller; the twin takes it as a call of its built-in of the same name.
+                return new UrCall(token.Line, token.Text, [], []);
             case "run":
             {
                 string name = ExpectName();
