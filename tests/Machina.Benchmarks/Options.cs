@@ -21,6 +21,7 @@ internal sealed record Options
           --child-exe PATH  (with --process) run another build of this program as the child, e.g. a ReadyToRun publish
           --native PATH     (with --process) the native machina the cold-native-… scenarios run (default: where
                             dotnet publish src/Machina.Cli -p:PublishProfile=linux-x64 puts it)
+          --fuzz ...        the interpreters' fuzz run instead (first argument; --fuzz --help for its options)
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
