@@ -146,4 +146,22 @@ public class KrlLimitsTests
             Directory.Delete(folder, recursive: true);
         }
     }
+
+    [Fact]
+    public void TheSmallestIntDividedByMinusOne_IsTheProgramsError_NotAnOverflowException()
+    {
+        string error = Failed("DEF prog( )\n  DECL INT i\n  i = -2147483647 - 1\n  i = i / -1\nEND\n");
+
+        Assert.Equal("Arithmetic overflow: -2147483648 / -1 is not an INT (prog.src, line 4)", error);
+    }
+
+    [Fact]
+    public void AnExponentWithoutDigits_IsRefusedAtLoad_NotAnException()
+    {
+        // Found by the fuzz run: double.Parse threw FormatException for "1E-" out of the parser.
+        KrlLoadException ex = Refused("DEF prog( )\n  DECL REAL r\n  r = 1E-\nEND\n");
+
+        Assert.Equal(3, ex.Line);
+        Assert.EndsWith("is not a REAL number", ex.Reason, StringComparison.Ordinal);
+    }
 }

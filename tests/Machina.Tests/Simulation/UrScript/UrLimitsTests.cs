@@ -148,4 +148,15 @@ public class UrLimitsTests
         Assert.Equal(UrProgramState.Failed, state);
         Assert.Equal("Compile error: line 101: the program is nested more than 100 levels deep (brackets, signs and blocks)", error);
     }
+
+    [Fact]
+    public void TheSmallestIntModuloMinusOne_IsZero_NotAnOverflowException()
+    {
+        // Found by the fuzz run: .NET throws OverflowException for -2147483648 % -1, which ended the process hosting the twin.
+        using var twin = new UrTwinController();
+        UrProgramState state = twin.Run("def p():\n  x = -2147483648\n  textmsg(x % -1)\nend\n", CancellationToken.None);
+
+        Assert.True(state == UrProgramState.Finished, twin.Error);
+        Assert.Equal(["0"], twin.Pendant.Lines);
+    }
 }
