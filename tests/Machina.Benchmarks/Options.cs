@@ -26,6 +26,7 @@ internal sealed record Options
                             joints and outputs and end the same way; --size N random programs per brand (default 2000) with
                             --seed S (default 1), plus samples/programs; --brand abb|ur|kuka (repeatable; default all three);
                             --program SEED shows the program of one seed (as a DISAGREE line names it) and both runs' steps
+          --fuzz ...        the interpreters' fuzz run instead (first argument; --fuzz --help for its options)
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text

@@ -3,6 +3,12 @@
 using System.Diagnostics;
 using Machina.Benchmarks;
 
+if (args.Length > 0 && args[0] == "--fuzz")
+{
+    // The interpreters' fuzz run (see Fuzz/FuzzCommand.cs and docs/reliability.md).
+    return Machina.Benchmarks.Fuzz.FuzzCommand.Execute(args[1..]);
+}
+
 if (args.Length > 0 && args[0] == "--child")
 {
     // The process under test of the whole-process scenarios (see Process/Child.cs).

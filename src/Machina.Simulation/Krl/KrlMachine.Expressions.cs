@@ -200,7 +200,9 @@ internal sealed partial class KrlMachine
                 0 => KrlValues.Box(a + b),
                 1 => KrlValues.Box(a - b),
                 2 => KrlValues.Box(a * b),
-                3 => b == 0 ? throw new KrlRuntimeException("Division by 0") : KrlValues.Box(a / b),
+                3 => b == 0 ? throw new KrlRuntimeException("Division by 0")
+                    : a == int.MinValue && b == -1 ? throw new KrlRuntimeException("Arithmetic overflow: -2147483648 / -1 is not an INT")
+                    : KrlValues.Box(a / b),
                 _ => KrlValues.Box(Compare(code, a.CompareTo(b))),
             };
         }

@@ -148,9 +148,13 @@ internal sealed partial class KrlParser
         switch (token.Kind)
         {
             case KrlTokenKind.Int:
-                return new KrlLiteral(token.Line, int.Parse(token.Text, CultureInfo.InvariantCulture));
+                return int.TryParse(token.Text, NumberStyles.Integer, CultureInfo.InvariantCulture, out int whole)
+                    ? new KrlLiteral(token.Line, whole)
+                    : throw Error(token, $"the INT {token.Text} is out of range (-2147483648 to 2147483647)");
             case KrlTokenKind.Real:
-                return new KrlLiteral(token.Line, double.Parse(token.Text, CultureInfo.InvariantCulture));
+                return double.TryParse(token.Text, NumberStyles.Float, CultureInfo.InvariantCulture, out double real) && double.IsFinite(real)
+                    ? new KrlLiteral(token.Line, real)
+                    : throw Error(token, $"{token.Display} is not a REAL number");
             case KrlTokenKind.String:
                 return new KrlLiteral(token.Line, token.Text);
             case KrlTokenKind.Enum:

@@ -1,5 +1,3 @@
-using System.Globalization;
-
 namespace Machina.Simulation.Krl;
 
 /// <summary>KRL statements: control structures, waits, motions, interrupts, assignments and calls.</summary>
@@ -251,7 +249,7 @@ internal sealed partial class KrlParser
                 throw Error(Peek, "an interrupt's DO calls a subprogram: name( … )");
             }
             EndOfLine();
-            return new KrlInterruptDecl(line, int.Parse(priority.Text, CultureInfo.InvariantCulture), condition, call);
+            return new KrlInterruptDecl(line, Whole(priority), condition, call);
         }
         if (global)
         {
@@ -266,7 +264,7 @@ internal sealed partial class KrlParser
         int? number = null;
         if (Peek.Kind == KrlTokenKind.Int)
         {
-            number = int.Parse(Peek.Text, CultureInfo.InvariantCulture);
+            number = Whole(Peek);
             _at++;
         }
         EndOfLine();

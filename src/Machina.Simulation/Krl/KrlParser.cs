@@ -1,5 +1,5 @@
-using Machina.Simulation.Twin;
 using System.Globalization;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Krl;
 
@@ -36,6 +36,11 @@ internal sealed partial class KrlParser
         }
         _tokens = KrlLexer.Tokenize(file, text);
     }
+
+    /// <summary>The value of an INT token; one past the INT range refuses the file.</summary>
+    private int Whole(KrlToken token) => int.TryParse(token.Text, NumberStyles.Integer, CultureInfo.InvariantCulture, out int value)
+        ? value
+        : throw Error(token, $"the INT {token.Text} is out of range (-2147483648 to 2147483647)");
 
     /// <summary>One level deeper (a bracket, a sign, a block): past the budget the file is refused.</summary>
     private void Deeper()
@@ -262,11 +267,11 @@ internal sealed partial class KrlParser
                     do
                     {
                         KrlToken size = Peek;
-                        if (size.Kind != KrlTokenKind.Int || int.Parse(size.Text, CultureInfo.InvariantCulture) < 1)
+                        if (size.Kind != KrlTokenKind.Int || Whole(size) < 1)
                         {
                             throw Error(size, $"an array size must be a whole number above 0, not {size.Display}");
                         }
-                        sizes.Add(int.Parse(size.Text, CultureInfo.InvariantCulture));
+                        sizes.Add(Whole(size));
                         _at++;
                     }
                     while (Accept(","));

@@ -232,6 +232,12 @@ internal sealed partial class KrlTwinController : IDisposable
         {
             return Finish(KrlProgramState.Stopped, null);
         }
+        catch (Exception ex) when (ex is ArgumentException or InvalidCastException or ArithmeticException or IndexOutOfRangeException)
+        {
+            // What the binder and the built-ins do not catch yet (the fuzz run found a REAL where B_NOT needs an INT, angles past the
+            // largest double): the program's error, never the process's.
+            return Finish(KrlProgramState.Failed, FormattableString.Invariant($"the twin cannot run this statement: {ex.Message} ({machine.File}, line {machine.Line})"));
+        }
         finally
         {
             Arm.Serve = null;

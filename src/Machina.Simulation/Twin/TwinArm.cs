@@ -75,6 +75,10 @@ internal sealed partial class TwinArm
     public Joints Solve(Pose tcp, Joints near)
     {
         Pose flange = tcp * ToolCenter.Inverse();
+        if (!flange.Position.IsFinite)
+        {
+            throw new TwinMotionException("no inverse kinematics solution: the target pose is out of reach (a coordinate is too large)");
+        }
         Joints? solution = Model.Kinematics.Closest(flange, near);
         if (solution is { } found)
         {

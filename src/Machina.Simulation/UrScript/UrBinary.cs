@@ -33,7 +33,7 @@ internal sealed class UrBinary(int line, string op, UrExpr left, UrExpr right) :
                 "-" => unchecked(x - y),
                 "*" => unchecked(x * y),
                 "/" => y == 0 ? throw DivisionByZero() : (double)x / y,
-                "%" => y == 0 ? throw DivisionByZero() : x % y,
+                "%" => y == 0 ? throw DivisionByZero() : y == -1 ? 0 : x % y, // -2147483648 % -1 would throw in .NET
                 "<" => UrValue.Box(x < y),
                 ">" => UrValue.Box(x > y),
                 "<=" => UrValue.Box(x <= y),

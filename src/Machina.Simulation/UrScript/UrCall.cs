@@ -58,5 +58,16 @@ internal sealed class UrRunExpr(int line, string name) : UrExpr(line)
 internal sealed record UrBuiltin(string Name, (string Name, object? Default)[] Parameters, Func<UrMachine, int, object[], object> Body)
 {
     /// <summary>Runs the built-in.</summary>
-    public object Invoke(UrMachine machine, int line, object[] args) => Body(machine, line, args);
+    public object Invoke(UrMachine machine, int line, object[] args)
+    {
+        try
+        {
+            return Body(machine, line, args);
+        }
+        catch (ArgumentException e)
+        {
+            // A value the geometry refuses (a number past the largest double once in mm or degrees): the program's error.
+            throw new UrRuntimeException(line, $"{Name}: {e.Message}");
+        }
+    }
 }

@@ -15,8 +15,14 @@ internal static class UrGeometry
                 throw new UrRuntimeException(line, "a pose element is not a finite number");
             }
         }
-        return new Pose(new Vector(six[0] * 1000, six[1] * 1000, six[2] * 1000),
-            Rotation.FromRotationVector(new Vector(six[3] * Degrees, six[4] * Degrees, six[5] * Degrees)));
+        // A finite number of metres or radians can still be past the largest double in millimetres or degrees.
+        var position = new Vector(six[0] * 1000, six[1] * 1000, six[2] * 1000);
+        var rotation = new Vector(six[3] * Degrees, six[4] * Degrees, six[5] * Degrees);
+        if (!position.IsFinite || !rotation.IsFinite)
+        {
+            throw new UrRuntimeException(line, "a pose element is too large");
+        }
+        return new Pose(position, Rotation.FromRotationVector(rotation));
     }
 
     /// <summary>A library pose (mm) as a URScript pose (m, rad).</summary>

@@ -14,6 +14,9 @@ internal sealed class UrThreadHandle(string name, CancellationTokenSource stop)
     /// <summary>The .NET thread that runs it.</summary>
     public Thread? Thread { get; set; }
 
+    /// <summary>True once the thread's body ended (set under the machine's lock; its <see cref="Stop"/> may then be disposed).</summary>
+    public bool Finished { get; set; }
+
     /// <inheritdoc/>
     public override string ToString() => $"thread {Name}";
 }
@@ -34,6 +37,9 @@ internal sealed class UrMachine : IDisposable
     private int _turns;
     private long _steps;
     private int _liveThreads;
+
+    /// <summary>True once the program ends: no thread starts any more (set under the machine's lock).</summary>
+    private bool _stopping;
 
     /// <summary>A machine for <paramref name="program"/> on <paramref name="controller"/>.</summary>
     public UrMachine(UrBoundProgram program, UrTwinController controller, CancellationToken cancellation)
@@ -143,6 +149,19 @@ internal sealed class UrMachine : IDisposable
     /// <summary>Starts <paramref name="thread"/> and gives its handle.</summary>
     public UrThreadHandle StartThread(UrFunction thread, int line)
     {
+        if (_stopping)
+        {
+            throw new OperationCanceledException("the program is ending");
+        }
+        // Threads that ended leave the list (their handles stay valid for join and kill): a loop of run and join stays small.
+        _threads.RemoveAll(t =>
+        {
+            if (t.Finished)
+            {
+                t.Stop.Dispose();
+            }
+            return t.Finished;
+        });
         if (_liveThreads >= Limits.MaxThreads)
         {
             throw new UrRuntimeException(line, $"more than {Limits.MaxThreads} threads are running (the twin's limit): join or kill one before starting '{thread.Name}'");
@@ -165,7 +184,6 @@ internal sealed class UrMachine : IDisposable
             {
                 thread.Invoke(this, thread.Line, [], 0);
             }
-
             catch (OperationCanceledException)
             {
             }
@@ -181,6 +199,7 @@ internal sealed class UrMachine : IDisposable
             finally
             {
                 _liveThreads--;
+                handle.Finished = true;
             }
         }
     }
@@ -200,19 +219,28 @@ internal sealed class UrMachine : IDisposable
     }
 
     /// <summary><c>kill</c>: stops the thread (it ends at its next blocking call or loop turn).</summary>
-    public void KillThread(UrThreadHandle handle) => handle.Stop.Cancel();
+    public void KillThread(UrThreadHandle handle)
+    {
+        if (!handle.Finished)
+        {
+            handle.Stop.Cancel();
+        }
+    }
 
     private void StopThreads()
     {
-        foreach (UrThreadHandle thread in _threads)
+        // Under the lock: once _stopping is set no thread starts, so the list below is every thread there will be.
+        _stopping = true;
+        UrThreadHandle[] running = [.. _threads.Where(t => !t.Finished)];
+        foreach (UrThreadHandle thread in running)
         {
             thread.Stop.Cancel();
         }
-        if (_threads.Count > 0)
+        if (running.Length > 0)
         {
             Unlocked(() =>
             {
-                foreach (UrThreadHandle thread in _threads)
+                foreach (UrThreadHandle thread in running)
                 {
                     thread.Thread!.Join(TimeSpan.FromSeconds(5));
                 }
@@ -224,6 +252,10 @@ internal sealed class UrMachine : IDisposable
     /// <inheritdoc/>
     public void Dispose()
     {
+        if (_threads.Any(t => t.Thread!.IsAlive))
+        {
+            return; // a thread that did not stop in time still reads these; the collector takes them after it
+        }
         _stop.Dispose();
         _token.Dispose();
         foreach (UrThreadHandle thread in _threads)
