@@ -32,6 +32,9 @@ internal sealed class BridgeClient
     /// <summary>The name the client gave in its URL (<c>?name=GH</c>), or its address when it gave none.</summary>
     internal string User { get; }
 
+    /// <summary>True when the client asked for the arm's link positions (<c>?arm=1</c>): it then gets the <c>arm</c> messages too.</summary>
+    internal bool WantsArm { get; init; }
+
     /// <summary>The client's WebSocket (received from by the connection's own loop).</summary>
     internal WebSocket Socket => _socket;
 

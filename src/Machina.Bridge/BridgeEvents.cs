@@ -55,6 +55,25 @@ internal static class BridgeEvents
         w.WriteString("user", user);
     });
 
+    /// <summary>
+    /// <c>{"event":"arm","links":[[0,0,0],…]}</c>: where the arm's joints are, base to flange (mm, rounded to 0.1), for the clients
+    /// that asked for it (<c>?arm=1</c>).
+    /// </summary>
+    internal static string Arm(IReadOnlyList<Vector> links) => Write(w =>
+    {
+        w.WriteString("event", "arm");
+        w.WriteStartArray("links");
+        foreach (Vector p in links)
+        {
+            w.WriteStartArray();
+            w.WriteNumberValue(Math.Round(p.X, 1) + 0.0);
+            w.WriteNumberValue(Math.Round(p.Y, 1) + 0.0);
+            w.WriteNumberValue(Math.Round(p.Z, 1) + 0.0);
+            w.WriteEndArray();
+        }
+        w.WriteEndArray();
+    });
+
     /// <summary><c>{"event":"error","kind":"…","message":"…"}</c> plus details, sent only to the client whose message failed.</summary>
     internal static string Error(string kind, string message, Action<Utf8JsonWriter>? details = null) => Write(w =>
     {

@@ -57,7 +57,8 @@ public sealed partial class BridgeServer
             {
                 using (socket)
                 {
-                    await ServeClientAsync(socket, request!.QueryValue("name") is { Length: > 0 } name ? name : remote, remote).ConfigureAwait(false);
+                    await ServeClientAsync(socket, request!.QueryValue("name") is { Length: > 0 } name ? name : remote, remote,
+                        request.QueryValue("arm") == "1").ConfigureAwait(false);
                 }
             }
         }
@@ -268,10 +269,13 @@ public sealed partial class BridgeServer
         await stream.FlushAsync(stop).ConfigureAwait(false);
     }
 
-    /// <summary>Registers a WebSocket client, reads its messages until it leaves, and tells the others that it left.</summary>
-    private async Task ServeClientAsync(WebSocket socket, string user, string remote)
+    /// <summary>
+    /// Registers a WebSocket client, reads its messages until it leaves, and tells the others that it left. A client that asked
+    /// for the arm (<c>?arm=1</c>, the bridge page) also gets the <c>arm</c> messages.
+    /// </summary>
+    private async Task ServeClientAsync(WebSocket socket, string user, string remote, bool wantsArm)
     {
-        var client = new BridgeClient(socket, user, _options.MaxQueuedEvents, OnClientOverflow);
+        var client = new BridgeClient(socket, user, _options.MaxQueuedEvents, OnClientOverflow) { WantsArm = wantsArm };
         lock (_gate)
         {
             if (_state != 1)
@@ -281,6 +285,10 @@ public sealed partial class BridgeServer
             _clients = [.. _clients, client];
         }
         Robot.Logger.Info($"Bridge: client \"{user}\" connected from {remote}.");
+        if (wantsArm && Robot.Model is RobotModel model && Robot.GetExecutedState().Axes is Joints joints)
+        {
+            client.Send(BridgeEvents.Arm(model.LinkPositions(joints)));   // where the arm is now, before it next moves
+        }
         Task sending = Task.Run(() => client.RunSendLoopAsync(CancellationToken.None), CancellationToken.None);
         try
         {

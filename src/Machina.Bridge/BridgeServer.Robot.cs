@@ -23,7 +23,45 @@ public sealed partial class BridgeServer
     }
 
     /// <summary>Action events go to every client as the library writes them (one line of JSON in the original's shape).</summary>
-    private void OnRobotEvent(object? sender, MachinaEventArgs e) => Broadcast(e.ToJsonString());
+    private void OnRobotEvent(object? sender, MachinaEventArgs e)
+    {
+        Broadcast(e.ToJsonString());
+        if (e is ActionExecutedArgs)
+        {
+            SendArm(e.Axes);
+        }
+    }
+
+    /// <summary>
+    /// To the clients that asked for it (<c>?arm=1</c>): where the arm's joints are for <paramref name="axes"/>, from the robot's
+    /// model (<see cref="RobotModel.LinkPositions"/>, as <c>machina preview</c> draws the arm), when it changed. Nothing without a
+    /// model or joints.
+    /// </summary>
+    private void SendArm(Joints? axes)
+    {
+        if (axes is not Joints joints || Robot.Model is not RobotModel model)
+        {
+            return;
+        }
+        string json = BridgeEvents.Arm(model.LinkPositions(joints));
+        if (json == _lastArm)
+        {
+            return;
+        }
+        _lastArm = json;
+        BridgeClient[] clients;
+        lock (_gate)
+        {
+            clients = _clients;
+        }
+        foreach (BridgeClient client in clients)
+        {
+            if (client.WantsArm)
+            {
+                client.Send(json);
+            }
+        }
+    }
 
     /// <summary>A failed action goes to every client as the <c>action-failed</c> event (with the controller's reason), and to the log.</summary>
     private void OnActionFailed(object? sender, ActionFailedArgs e)
@@ -43,6 +81,7 @@ public sealed partial class BridgeServer
         {
             _lastMotion = json;
             Broadcast(json);
+            SendArm(e.Axes);
         }
     }
 

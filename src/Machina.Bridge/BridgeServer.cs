@@ -24,6 +24,7 @@ public sealed partial class BridgeServer : IAsyncDisposable
     private EmbeddedController? _embedded;
     private Task? _reconnecting;
     private string? _lastMotion;
+    private string? _lastArm;
     private int _connectionCount; // WebSocket clients holding a slot (see BridgeOptions.MaxConnections)
     private int _state; // 0 new, 1 starting or running, 2 stopped
 

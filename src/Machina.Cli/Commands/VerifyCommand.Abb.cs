@@ -16,25 +16,14 @@ internal static partial class VerifyCommand
         {
             return await RunRapidAloneAsync(path, options, context).ConfigureAwait(false);
         }
-        List<RobotAction> actions = [];
-        using (ProgramReader reader = ProgramReader.Open(path, context, null))
-        {
-            try
-            {
-                actions.AddRange(reader.Read(context.Cancellation).Select(s => s.Action));
-            }
-            catch (InstructionParseException ex)
-            {
-                throw CliException.At(reader.DisplayName, ex.Line, ex.Column, ex.Problem);
-            }
-        }
+        (List<RobotAction> actions, Func<RobotAction, int?> lineOf) = ReadProgram(path, context);
         List<(string Name, string Text)> modules = args.Value("--script") is { } compiled
             ? ReadRapid(context, compiled)
             : [.. Compilers.For(AbbBrand.Definition.Type).Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files
                 .Where(f => f.Extension.Equals("mod", StringComparison.OrdinalIgnoreCase)).Select(f => (f.FileName, f.ToText("\n")))];
         await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a RAPID twin of an {model} and comparing it with {path}.").ConfigureAwait(false);
         TwinVerification<RapidProgramState> result = RapidVerifier.Verify(modules, actions, options, context.Cancellation);
-        await output.WriteAsync(result.ToText()).ConfigureAwait(false);
+        await output.WriteAsync(result.ToText(lineOf)).ConfigureAwait(false);
         return result.Passed ? ExitCodes.Ok : ExitCodes.Failed;
     }
 

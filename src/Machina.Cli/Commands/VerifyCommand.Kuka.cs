@@ -16,25 +16,14 @@ internal static partial class VerifyCommand
         {
             return await RunKrlAloneAsync(path, options, context).ConfigureAwait(false);
         }
-        List<RobotAction> actions = [];
-        using (ProgramReader reader = ProgramReader.Open(path, context, null))
-        {
-            try
-            {
-                actions.AddRange(reader.Read(context.Cancellation).Select(s => s.Action));
-            }
-            catch (InstructionParseException ex)
-            {
-                throw CliException.At(reader.DisplayName, ex.Line, ex.Column, ex.Problem);
-            }
-        }
+        (List<RobotAction> actions, Func<RobotAction, int?> lineOf) = ReadProgram(path, context);
         List<(string Name, string Text)> files = args.Value("--script") is { } compiled
             ? ReadKrl(context, compiled)
             : [.. Compilers.For(KukaBrand.Definition.Type).Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files
                 .Where(f => f.Extension.Equals("src", StringComparison.OrdinalIgnoreCase) || f.Extension.Equals("dat", StringComparison.OrdinalIgnoreCase)).Select(f => (f.FileName, f.ToText("\n")))];
         await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a KRL twin of a {model} and comparing it with {path}.").ConfigureAwait(false);
         TwinVerification<KrlProgramState> result = KrlVerifier.Verify(files, actions, options, context.Cancellation);
-        await output.WriteAsync(result.ToText()).ConfigureAwait(false);
+        await output.WriteAsync(result.ToText(lineOf)).ConfigureAwait(false);
         return result.Passed ? ExitCodes.Ok : ExitCodes.Failed;
     }
 

@@ -16,7 +16,8 @@ internal static partial class VerifyCommand
         PROGRAM is a text file of Machina instructions. It is compiled to URScript (or FILE, a URScript program compiled from
         it earlier, is taken instead), and the script runs on the URScript twin: a controller that interprets URScript as
         described in UR's Script Manual, with the arm model's kinematics. Each pose the arm reached and each output it set
-        is compared with the library's own trace of the instructions, line by line. A program the controller would refuse
+        is compared with the library's own trace of the instructions, step by step; each step is listed with its line in
+        PROGRAM, or "not reached" when the program stopped before it. A program the controller would refuse
         (an unknown function, a wrong argument) or stop (an unreachable pose, a joint limit) fails with the controller's
         message. The arm starts at the first motion's target.
 
@@ -71,24 +72,13 @@ internal static partial class VerifyCommand
         {
             return await RunAloneAsync(ReadFile(context, path), path, options, context).ConfigureAwait(false);
         }
-        List<RobotAction> actions = [];
-        using (ProgramReader reader = ProgramReader.Open(path, context, null))
-        {
-            try
-            {
-                actions.AddRange(reader.Read(context.Cancellation).Select(s => s.Action));
-            }
-            catch (InstructionParseException ex)
-            {
-                throw CliException.At(reader.DisplayName, ex.Line, ex.Column, ex.Problem);
-            }
-        }
+        (List<RobotAction> actions, Func<RobotAction, int?> lineOf) = ReadProgram(path, context);
         string script = args.Value("--script") is { } scriptPath
             ? ReadFile(context, scriptPath)
             : twinBrand.CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files[0].ToText("\n");
         await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a URScript twin of a {model} and comparing it with {path}.").ConfigureAwait(false);
         TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions, options, context.Cancellation);
-        await output.WriteAsync(result.ToText()).ConfigureAwait(false);
+        await output.WriteAsync(result.ToText(lineOf)).ConfigureAwait(false);
         return result.Passed ? ExitCodes.Ok : ExitCodes.Failed;
     }
 
@@ -127,6 +117,29 @@ internal static partial class VerifyCommand
         return new FileInfo(fullPath).Length > most
             ? throw new IOException($"the file is larger than {most} bytes, the most a twin loads")
             : File.ReadAllText(fullPath);
+    }
+
+    /// <summary>The program's actions, and the line of the file each one came from (the report numbers the file's lines, not the compiled program's).</summary>
+    private static (List<RobotAction> Actions, Func<RobotAction, int?> LineOf) ReadProgram(string path, CliContext context)
+    {
+        var statements = new List<InstructionStatement>();
+        using (ProgramReader reader = ProgramReader.Open(path, context, null))
+        {
+            try
+            {
+                statements.AddRange(reader.Read(context.Cancellation));
+            }
+            catch (InstructionParseException ex)
+            {
+                throw CliException.At(reader.DisplayName, ex.Line, ex.Column, ex.Problem);
+            }
+        }
+        var lines = new Dictionary<RobotAction, int>(ReferenceEqualityComparer.Instance);
+        foreach (InstructionStatement s in statements)
+        {
+            lines.TryAdd(s.Action, s.Line);
+        }
+        return ([.. statements.Select(s => s.Action)], a => lines.TryGetValue(a, out int line) ? line : null);
     }
 
     private static string ReadFile(CliContext context, string path)

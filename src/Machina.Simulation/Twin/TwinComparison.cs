@@ -85,7 +85,7 @@ internal sealed record TwinComparison(double PositionToleranceMm, double AngleTo
                 _ => Compare(e, d),
             };
             result.Steps.Add(new TwinVerifyStep(i + 1, e?.Action.ToInstruction(), d?.Line ?? 0, e is null ? "(no more actions)" : Describe(e),
-                d is null ? "(the program did not get there)" : Describe(d), problem));
+                d is null ? "(the program did not get there)" : Describe(d), problem, e?.Action, d is not null));
         }
     }
 

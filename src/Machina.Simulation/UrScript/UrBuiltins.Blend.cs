@@ -77,6 +77,7 @@ internal static partial class UrBuiltins
         double blendSeconds = blend is null ? 0 : blendLength / startSpeed;
         // This motion's own zone, where it returns to the program.
         double radius = time > 0 || !MayBlend(m) ? 0 : BlendModel.Radius(r, metres);
+        WarnOverlaps(m, line, function, blend, time > 0 || !MayBlend(m) ? 0 : r, lengthMm);
         double straight = metres - exitLeg - radius;
         double entrySpeed = radius > 0 ? BlendModel.EntrySpeed(straight, startSpeed, v, acc, radius) : 0;
         if (!(entrySpeed > 0))
@@ -121,6 +122,28 @@ internal static partial class UrBuiltins
         }
         return UrNone.Value;
     }
+
+    /// <summary>
+    /// Blends cannot overlap: UR's manual says a warning is logged in the Log tab when two do, and the program runs on. The twin
+    /// logs one on its pendant for each radius it shortens to half of this motion of <paramref name="lengthMm"/>: the last
+    /// motion's blend that reaches past this motion's middle, and this motion's own radius <paramref name="r"/> (m) beyond it.
+    /// </summary>
+    private static void WarnOverlaps(UrMachine m, int line, string function, UrBlend? blend, double r, double lengthMm)
+    {
+        double half = lengthMm / 2;
+        if (blend is not null && blend.Radius * 1000 > half)
+        {
+            m.Controller.Pendant.Log($"Warning: line {Machina.Num.I(line)}: {function}: the blend of line {Machina.Num.I(blend.Line)} ({Mm(blend.Radius * 1000)} mm) " +
+                $"overlaps this motion ({Mm(lengthMm)} mm long): blends cannot overlap; it blends with {Mm(half)} mm");
+        }
+        if (r * 1000 > half)
+        {
+            m.Controller.Pendant.Log($"Warning: line {Machina.Num.I(line)}: {function}: the blend radius {Mm(r * 1000)} mm is more than half of this motion " +
+                $"({Mm(lengthMm)} mm long): blends cannot overlap; it blends with {Mm(half)} mm");
+        }
+    }
+
+    private static string Mm(double mm) => Machina.Num.G(Math.Round(mm, 3));
 
     /// <summary>The joints that put the tool at <paramref name="pose"/>, nearest to <paramref name="near"/> (those joints when there are none).</summary>
     private static Joints Near(TwinArm arm, Pose pose, Joints near)

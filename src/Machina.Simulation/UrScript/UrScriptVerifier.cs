@@ -32,6 +32,7 @@ internal static class UrScriptVerifier
         using var twin = new UrTwinController(options);
         UrProgramState state = twin.Run(script, cancellation);
         var result = new TwinVerification<UrProgramState> { State = state, Finished = state == UrProgramState.Finished, Error = twin.Error, Seconds = twin.Clock.Seconds };
+        result.Warnings.AddRange(twin.Pendant.Lines.Where(l => l.StartsWith("Warning:", StringComparison.Ordinal)));
         Comparison.Fill(result, expected, twin.Arm.Trace);
         return result;
     }

@@ -21,7 +21,7 @@ public class BridgePageTests
         // Let the view draw its last frame (it draws on every event; this waits one animation frame for the screenshot).
         await browser.EvaluateAsync("new Promise(r => requestAnimationFrame(() => r(0)))");
 
-        JsonElement drawn = await browser.EvaluateAsync("JSON.parse(JSON.stringify({ executed: bridgePage.executed, issued: bridgePage.issued, " +
+        JsonElement drawn = await browser.EvaluateAsync("JSON.parse(JSON.stringify({ executed: bridgePage.executed, issued: bridgePage.issued, arm: bridgePage.arm, " +
             "names: [...document.querySelectorAll('#events li .name')].map(n => n.textContent), status: document.getElementById('statusText').textContent, " +
             "data: document.getElementById('path-data').textContent }))");
         byte[] png = await browser.ScreenshotAsync();
@@ -39,6 +39,14 @@ public class BridgePageTests
         Assert.Equal("Done", drawn.GetProperty("status").GetString());
         Assert.True(png.Length > 10_000 && png[1] == 'P' && png[2] == 'N' && png[3] == 'G', "the screenshot is a PNG with content");
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), bridge.Robot.GetExecutedState().Axes);
+        // The arm is drawn where the robot is, as machina preview draws it: its joints from the model for the last joint values
+        // (the bridge's "arm" message), base to flange, the flange at the tool's home position.
+        RobotModel arm = bridge.Robot.Model!;
+        string links = "[" + string.Join(",", arm.LinkPositions(new Joints(0, 0, 0, 0, 90, 0)).Select(p =>
+            FormattableString.Invariant($"[{Math.Round(p.X, 1) + 0.0},{Math.Round(p.Y, 1) + 0.0},{Math.Round(p.Z, 1) + 0.0}]"))) + "]";
+        Assert.Equal(links, drawn.GetProperty("arm").GetRawText());
+        Assert.StartsWith("[[0,0,0],", links, StringComparison.Ordinal);
+        Assert.EndsWith(",[451,0,807.1]]", links, StringComparison.Ordinal);
     }
 
     [ChromiumFact]

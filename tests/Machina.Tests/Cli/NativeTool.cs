@@ -37,9 +37,12 @@ internal static class NativeTool
     }
 
     /// <summary>Starts the tool with <paramref name="args"/> in <paramref name="folder"/>, output and errors captured.</summary>
-    internal static NativeProcess Start(string folder, params string[] args)
+    internal static NativeProcess Start(string folder, params string[] args) => StartProgram(Executable, folder, args);
+
+    /// <summary>Starts <paramref name="program"/> with <paramref name="args"/> in <paramref name="folder"/>, output and errors captured.</summary>
+    internal static NativeProcess StartProgram(string program, string folder, IEnumerable<string> args)
     {
-        var info = new ProcessStartInfo(Executable)
+        var info = new ProcessStartInfo(program)
         {
             WorkingDirectory = folder,
             RedirectStandardOutput = true,
@@ -53,7 +56,7 @@ internal static class NativeTool
         {
             info.ArgumentList.Add(arg);
         }
-        return new NativeProcess(Process.Start(info) ?? throw new InvalidOperationException($"Could not start {Executable}."));
+        return new NativeProcess(Process.Start(info) ?? throw new InvalidOperationException($"Could not start {program}."));
     }
 
     /// <summary>Runs the tool to its end (at most two minutes) and returns its exit code and output.</summary>

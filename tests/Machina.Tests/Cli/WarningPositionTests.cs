@@ -14,10 +14,10 @@ public sealed class WarningPositionTests
         """;
 
     private const string NextText =
-        "the blend radius of 5 mm is more than half of the next motion (8 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(4) or less around short motions.";
+        "the blend radius of 5 mm is more than half of the next motion (8 mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(4) or less around short motions.";
 
     private const string ThisText =
-        "the blend radius of 5 mm is more than half of this motion (8 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(4) or less around short motions.";
+        "the blend radius of 5 mm is more than half of this motion (8 mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(4) or less around short motions.";
 
     [Fact]
     public void CompileToFolder_BlendWarningAboutThePreviousMotion_CarriesThatMotionsLine()

@@ -41,7 +41,7 @@ public class GettingStartedCommandTests
     }
 
     /// <summary>Splits a shell command line at spaces, keeping "double-quoted" words together.</summary>
-    private static string[] Split(string line)
+    internal static string[] Split(string line)
     {
         var words = new List<string>();
         var word = new StringBuilder();

@@ -185,8 +185,9 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     }
 
     /// <summary>
-    /// A UR controller refuses blends that overlap (a protective stop with "blend radius too large"): a blend radius may be at most
-    /// half of each segment it joins. Checks this motion's segment against its own radius and the previous motion's.
+    /// Blends on a UR cannot overlap: UR's manual (PolyScope, "Blend parameters") says a warning is logged when two do, and the
+    /// program runs on; the twin then blends with half of the shorter segment. A blend radius should be at most half of each
+    /// segment it joins. Checks this motion's segment against its own radius and the previous motion's.
     /// </summary>
     private void CheckBlend(RobotAction action, RobotCursor cursor)
     {
@@ -243,7 +244,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         at = Put(line, at, which);
         at = Put(line, at, " motion (");
         at = _lengthText.Write(line, at, Math.Round(length, 3));
-        at = Put(line, at, " mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(");
+        at = Put(line, at, " mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(");
         at = _halfText.Write(line, at, Math.Floor(length / 2 * 1000) / 1000);
         at = Put(line, at, ") or less around short motions.");
         ReadOnlySpan<char> message = line[start..at];
@@ -252,7 +253,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     }
 
     /// <summary>Characters enough for a blend warning's line besides the instruction it quotes: fixed text and three numbers.</summary>
-    private const int BlendWarningChars = 224 + 3 * NumAppend.MaxChars;
+    private const int BlendWarningChars = 288 + 3 * NumAppend.MaxChars;
 
     /// <summary>Copies <paramref name="text"/> into <paramref name="line"/> at <paramref name="at"/>; returns the position after it.</summary>
     private static int Put(Span<char> line, int at, string text)

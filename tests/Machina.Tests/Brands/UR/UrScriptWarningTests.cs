@@ -28,7 +28,7 @@ public class UrScriptWarningTests
         Assert.Equal(1, blends[0].ActionId);
         Assert.StartsWith("the blend radius of 5 mm is more than half of the next motion (0.4 mm long)", blends[0].Message, StringComparison.Ordinal);
         Assert.Equal(3, blends[1].ActionId);
-        Assert.Equal("the blend radius of 1 mm is more than half of this motion (0.4 mm long); a UR controller refuses blends that overlap and stops the program. Use PrecisionTo(0.2) or less around short motions.", blends[1].Message);
+        Assert.Equal("the blend radius of 1 mm is more than half of this motion (0.4 mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(0.2) or less around short motions.", blends[1].Message);
     }
 
     [Fact]

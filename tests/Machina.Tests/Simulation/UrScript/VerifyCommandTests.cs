@@ -15,8 +15,8 @@ public class VerifyCommandTests
         CliResult result = await cli.RunAsync("verify", "square.machina", "--brand", "ur");
 
         Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
-        Assert.True(result.Stdout.Contains("   2 line 9     ok   Move(50,0,0);\n", StringComparison.Ordinal), result.Stdout);
-        Assert.True(result.Stdout.Contains("   3 line 10    ok   WriteDigital(2,True);\n", StringComparison.Ordinal), result.Stdout);
+        Assert.True(result.Stdout.Contains("   2 line 3     ok   Move(50,0,0);\n", StringComparison.Ordinal), result.Stdout);
+        Assert.True(result.Stdout.Contains("   3 line 4     ok   WriteDigital(2,True);\n", StringComparison.Ordinal), result.Stdout);
         Assert.EndsWith("OK: 4 steps agree; the program runs in 1.066 s\n", result.Stdout, StringComparison.Ordinal);
     }
 
@@ -30,9 +30,44 @@ public class VerifyCommandTests
         CliResult result = await cli.RunAsync("verify", "line.machina", "--brand", "ur", "--script", "line.script");
 
         Assert.Equal(1, result.Exit);
-        Assert.True(result.Stdout.Contains("   2 line 3     DIFF Move(50,0,0);\n", StringComparison.Ordinal), result.Stdout);
+        Assert.True(result.Stdout.Contains("   2 line 2     DIFF Move(50,0,0);\n", StringComparison.Ordinal), result.Stdout);
         Assert.True(result.Stdout.Contains("       the TCP is 2 mm away\n", StringComparison.Ordinal), result.Stdout);
         Assert.EndsWith("FAILED: 1 of 2 steps differ\n", result.Stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task Verify_StopsPartWay_NumbersTheProgramFilesLines_AndSaysNotReached()
+    {
+        using var cli = new CliRunner();
+        cli.Write("far.machina", "// a target out of reach\nMoveTo(400, 0, 300);\n\nMoveTo(4000, 0, 300);\nMove(0, 50, 0);\n");
+
+        CliResult result = await cli.RunAsync("verify", "far.machina", "--brand", "ur");
+
+        Assert.Equal(1, result.Exit);
+        Assert.True(result.Stdout.Contains("   1 line 2     ok   MoveTo(400,0,300);\n", StringComparison.Ordinal), result.Stdout);
+        Assert.True(result.Stdout.Contains("   2 line 4     not reached MoveTo(4000,0,300);\n", StringComparison.Ordinal), result.Stdout);
+        Assert.True(result.Stdout.Contains("   3 line 5     not reached Move(0,50,0);\n", StringComparison.Ordinal), result.Stdout);
+        Assert.DoesNotContain("line 0", result.Stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task OverlappingBlends_CompilerTwinAndVerify_AgreeTheControllerWarnsAndRunsOn()
+    {
+        using var cli = new CliRunner();
+        cli.Write("short.machina", "SpeedTo(100);\nPrecisionTo(5);\nMoveTo(400, 0, 300);\nMove(4, 0, 0);\nMove(0, 50, 0);\n");
+
+        CliResult compiled = await cli.RunAsync("compile", "short.machina", "--brand", "ur", "--out", "build");
+        CliResult verified = await cli.RunAsync("verify", "short.machina", "--brand", "ur");
+
+        Assert.Equal(0, compiled.Exit);
+        Assert.Contains("short.machina:4:1: warning: Move(4,0,0); the blend radius of 5 mm is more than half of this motion (4 mm long); blends cannot overlap: "
+            + "a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(2) or less around short motions.",
+            compiled.Stderr, StringComparison.Ordinal);
+        // The twin runs on, as the manual says a controller does, and logs the warning, which verify prints.
+        Assert.True(verified.Exit == 0, verified.Stdout);
+        Assert.Matches(@"(?m)^controller: Warning: line \d+: move[lp]: the blend radius 5 mm is more than half of this motion \(4 mm long\): "
+            + @"blends cannot overlap; it blends with 2 mm$", verified.Stdout);
+        Assert.Contains("OK: 3 steps agree", verified.Stdout, StringComparison.Ordinal);
     }
 
     [Fact]
