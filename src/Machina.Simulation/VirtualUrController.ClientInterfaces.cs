@@ -128,27 +128,8 @@ public sealed partial class VirtualUrController
     }
 
     /// <summary>Feeds what a client interface connection sends to the interpreter, less the primary commands it takes out.</summary>
-    private async Task FeedClientAsync(NetworkStream stream, VirtualUrPrimaryCommands? commands, CancellationToken token)
-    {
-        var bytes = new byte[64 * 1024];
-        while (true)
-        {
-            int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
-            if (n == 0)
-            {
-                return;
-            }
-            string text = Encoding.Latin1.GetString(bytes, 0, n);
-            if (commands is not null)
-            {
-                text = commands.Filter(text);
-            }
-            if (text.Length > 0)
-            {
-                await Task.Run(() => Twin.Receive(text), token).ConfigureAwait(false);
-            }
-        }
-    }
+    private Task FeedClientAsync(NetworkStream stream, VirtualUrPrimaryCommands? commands, CancellationToken token) =>
+        FeedTwinAsync(stream, Twin, token, commands);
 
     /// <summary>A primary command: power, brakes, protective stop, program stop.</summary>
     private void PrimaryCommand(string command)

@@ -56,9 +56,10 @@ public sealed partial class VirtualUrController
 
     /// <summary>
     /// Feeds what one script connection sends to the interpreter, which starts each program as soon as it is complete; the
-    /// connection has its own intake, so a client's unfinished text never joins another client's program.
+    /// connection has its own intake, so a client's unfinished text never joins another client's program. On the primary
+    /// interface, <paramref name="commands"/> first takes out the primary commands that are not URScript.
     /// </summary>
-    private async Task FeedTwinAsync(NetworkStream stream, UrTwinController twin, CancellationToken token)
+    private async Task FeedTwinAsync(NetworkStream stream, UrTwinController twin, CancellationToken token, VirtualUrPrimaryCommands? commands = null)
     {
         var intake = new UrScriptIntake();
         var bytes = new byte[64 * 1024];
@@ -71,7 +72,14 @@ public sealed partial class VirtualUrController
             }
             // A UR reads its script ports as single-byte text; Latin-1 keeps every byte.
             string text = Encoding.Latin1.GetString(bytes, 0, n);
-            await Task.Run(() => twin.Receive(text, intake), token).ConfigureAwait(false);
+            if (commands is not null)
+            {
+                text = commands.Filter(text);
+            }
+            if (text.Length > 0)
+            {
+                await Task.Run(() => twin.Receive(text, intake), token).ConfigureAwait(false);
+            }
         }
     }
 

@@ -12,20 +12,23 @@ namespace Machina.Tests.Simulation;
 /// </summary>
 public sealed class NetworkIntakeTests
 {
-    [Fact]
-    public async Task UrScriptPort_ASecondClientsUnfinishedBytes_DoNotJoinTheHostsProgram()
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public async Task UrScriptPort_ASecondClientsUnfinishedBytes_DoNotJoinTheHostsProgram(bool primaryInterface)
     {
-        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, PrimaryPort = 0 });
         await controller.StartAsync();
+        int port = primaryInterface ? controller.PrimaryPort : controller.Port;
         using var stranger = new TcpClient();
-        await stranger.ConnectAsync(IPAddress.Loopback, controller.Port);
+        await stranger.ConnectAsync(IPAddress.Loopback, port);
         // A complete line (seen as a program), then three bytes without their line break, in one write.
         await stranger.GetStream().WriteAsync(Encoding.ASCII.GetBytes("textmsg(\"stranger\")\ntex"));
         await WaitUntilAsync(() => controller.ScriptsReceived == 1, "the stranger's line to arrive");
 
         const string program = "def hello():\n  textmsg(\"host\")\nend\n";
         using var host = new TcpClient();
-        await host.ConnectAsync(IPAddress.Loopback, controller.Port);
+        await host.ConnectAsync(IPAddress.Loopback, port);
         await host.GetStream().WriteAsync(Encoding.ASCII.GetBytes(program));
         await WaitUntilAsync(() => controller.PendantMessages.Contains("host"), "the host's program to run");
 
