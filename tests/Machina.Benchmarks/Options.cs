@@ -21,6 +21,9 @@ internal sealed record Options
           --child-exe PATH  (with --process) run another build of this program as the child, e.g. a ReadyToRun publish
           --native PATH     (with --process) the native machina the cold-native-… scenarios run (default: where
                             dotnet publish src/Machina.Cli -p:PublishProfile=linux-x64 puts it)
+          --restarts N      the controller-restart schedule instead: N seeded trials per brand (ABB, UR, KUKA), counting
+                            actions run twice and not sent again (docs/reliability.md, "Controller restarts"); --resend
+                            runs it with ResendAfterControllerRestart
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -32,6 +35,8 @@ internal sealed record Options
     public int Runs { get; init; } = 3;
     public bool RunsGiven { get; init; }
     public bool Process { get; init; }
+    public int? Restarts { get; init; }
+    public bool Resend { get; init; }
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
     public string? NativeTool { get; init; }
@@ -54,6 +59,8 @@ internal sealed record Options
                 "--size" or "-n" => options with { Size = Positive(args, ref i) },
                 "--runs" => options with { Runs = Positive(args, ref i), RunsGiven = true },
                 "--process" => options with { Process = true },
+                "--restarts" => options with { Restarts = Positive(args, ref i) },
+                "--resend" => options with { Resend = true },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
                 "--native" => options with { NativeTool = Value(args, ref i) },
                 "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },

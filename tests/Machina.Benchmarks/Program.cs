@@ -26,6 +26,13 @@ if (options.Help)
     return 0;
 }
 
+#if MACHINA_ONLINE
+if (options.Restarts is int restartTrials)
+{
+    return RestartRun.Run(restartTrials, options.Resend);
+}
+#endif
+
 if (options.Process)
 {
     foreach ((string key, string value) in options.ChildEnvironment)

@@ -15,6 +15,18 @@ public sealed class ActionFailedException : MachinaException
         ControllerCode = controllerCode;
     }
 
+    /// <summary>
+    /// Creates the exception with a message of its own, for an action whose outcome is not the controller's report (a restart
+    /// left it unknown: <c>OnlineSession.RestartedReason</c>).
+    /// </summary>
+    internal ActionFailedException(RobotAction action, string controllerReason, string? controllerCode, string message)
+        : base(message, controllerReason)
+    {
+        Action = action;
+        ControllerReason = controllerReason;
+        ControllerCode = controllerCode;
+    }
+
     /// <summary>The action the controller could not run.</summary>
     public RobotAction Action { get; }
 
