@@ -42,14 +42,20 @@ internal sealed partial class OnlineSession
             return null;
         }
         List<RobotAction> notResent = [];
-        if (_inFlight.Count > 0 && progress is DeviceProgress reported)
+        if (_inFlight.Count > 0 && progress is DeviceProgress reported && (!reported.IsFresh || _lastAcknowledgedId != 0))
         {
             notResent = SettleAfterRestart(reported);
         }
         else if (_inFlight.Count > 0)
         {
-            Log(LogLevel.WARNING, $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {_inFlight.Count} "
-                + "actions sent before the connection was lost are sent again, and any the robot already ran will run twice.");
+            // No progress report, or a controller that says it ran nothing while this robot never saw an acknowledgement: nothing
+            // tells a restart from requests that never arrived (docs/reliability.md, "Controller restarts").
+            Log(LogLevel.WARNING, progress is null
+                ? $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {_inFlight.Count} actions sent "
+                    + "before the connection was lost are sent again, and any the robot already ran will run twice."
+                : $"The controller reports that it ran nothing, and none of the {_inFlight.Count} actions sent before the connection was lost was "
+                    + "acknowledged: they are sent again, with targets recomputed from where the robot is (had the controller run some and restarted, "
+                    + "those would run twice).");
             RequeueInFlight();
         }
         InitialiseCursors(handshake, issue);
