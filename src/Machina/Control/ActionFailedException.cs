@@ -3,6 +3,8 @@ namespace Machina;
 /// <summary>
 /// The controller could not run an action (an unreachable target, a joint beyond its limits, a refused instruction) and
 /// stopped. Nothing after the action was executed. <see cref="Action"/> names it; the message holds the controller's words.
+/// With <see cref="ControllerCode"/> "restarted", a controller restart left the action's outcome unknown and it was not sent
+/// again (<see cref="Robot.ResendAfterControllerRestart"/>).
 /// </summary>
 public sealed class ActionFailedException : MachinaException
 {
