@@ -35,6 +35,7 @@ public sealed partial class VirtualAbbController
             {
                 text = AsDriverVersion(text, _options.DriverVersion);
             }
+            _modules.Add((task, file, text));
             twin.Task(task).Load([(file, text)]);
         }
         twin.Pendant.Logged += line =>
@@ -118,10 +119,13 @@ public sealed partial class VirtualAbbController
 
     private void StopTwin()
     {
-        ReleaseTwinRequests();
-        if (Twin is { } twin && !twin.StopTasks(TimeSpan.FromSeconds(10)))
+        lock (_restartGate)
         {
-            RecordError("stopping: a RAPID task did not end within 10 s");
+            ReleaseTwinRequests();
+            if (Twin is { } twin && !twin.StopTasks(TimeSpan.FromSeconds(10)))
+            {
+                RecordError("stopping: a RAPID task did not end within 10 s");
+            }
         }
     }
 }

@@ -47,6 +47,11 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
             }
             return true;
         }
+        if (IsRestarting)
+        {
+            connection.Dispose();
+            return false; // the program a restart stops greets no one: the host connects again to the one that starts
+        }
         TwinRequest[] orphans;
         lock (Gate)
         {

@@ -28,6 +28,12 @@ public abstract partial class VirtualController<TState>
     private protected virtual Task<bool> StopsOnRefusalAsync(object request, int id, VirtualRefusalException refusal, CancellationToken token) =>
         Task.FromResult(false);
 
+    /// <summary>
+    /// True for a request a restart lost while the execution loop waited for the brand's driver to run it (the KRL twin's): it
+    /// did not run, is neither logged nor acknowledged.
+    /// </summary>
+    private protected virtual bool LostInRestart(object request) => false;
+
     /// <summary>True for a request the brand's driver will skip (a UR program replaced since it was read); it is not logged as executed.</summary>
     private protected virtual bool IsStale(object request) => false;
 
@@ -54,6 +60,11 @@ public abstract partial class VirtualController<TState>
                     continue;
                 }
                 var (runs, refusal) = await ExecuteAsync(queued.Request, token).ConfigureAwait(false);
+                if (LostInRestart(queued.Request))
+                {
+                    Interlocked.Increment(ref _requestsLost);
+                    continue;
+                }
                 if (refusal is not null && await StopsOnRefusalAsync(queued.Request, queued.Id, refusal, token).ConfigureAwait(false))
                 {
                     Interlocked.Increment(ref _requestsExecuted);

@@ -48,6 +48,15 @@ public abstract partial class VirtualController<TState>
     {
     }
 
+    /// <summary>
+    /// A restart that loses the progress begins (on the execution loop or the program's thread, after the buffer was emptied and
+    /// before the client is dropped): the brand's driver program starts again from its beginning with its progress at 0, and no
+    /// client may reach the program as it was.
+    /// </summary>
+    private protected virtual void RestartingLosingProgress()
+    {
+    }
+
     /// <summary>Puts the robot in a protective stop, where the brand has one; false otherwise.</summary>
     private protected virtual bool InjectProtectiveStop() => false;
 
@@ -61,9 +70,13 @@ public abstract partial class VirtualController<TState>
         _refusalsLeft = _options.Faults.RefuseConnections;
     }
 
-    /// <summary>True when the options say to refuse this connection attempt (it is then counted).</summary>
+    /// <summary>True when the options say to refuse this connection attempt (it is then counted), or a restart is under way.</summary>
     private bool RefusesConnection()
     {
+        if (RefusesUntilRestarted())
+        {
+            return true;
+        }
         while (true)
         {
             int left = Volatile.Read(ref _refusalsLeft);
@@ -104,6 +117,10 @@ public abstract partial class VirtualController<TState>
     private protected async Task AcknowledgeAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token)
     {
         VirtualFault fault = NextFault();
+        if (RunsTowardsRestart())
+        {
+            return; // the link is broken: the request ran, its acknowledgement is lost
+        }
         if (fault != VirtualFault.None)
         {
             Note(fault, $"fault: {fault} after request {id.ToString(CultureInfo.InvariantCulture)}");
@@ -119,6 +136,9 @@ public abstract partial class VirtualController<TState>
             case VirtualFault.UnknownAcknowledgement:
                 await SendToClientAsync(AcknowledgementBytes(UnknownId(id)), token).ConfigureAwait(false);
                 break;
+            case VirtualFault.RestartLosingProgress:
+                BeginRestart();
+                return;
             case VirtualFault.Truncate:
                 // The request ran; only part of its acknowledgement leaves before the link breaks.
                 int cut = bytes.Length > 1 ? 1 + _faultRandom!.Next(bytes.Length - 1) : 0;
@@ -169,6 +189,20 @@ public abstract partial class VirtualController<TState>
         int lost = DiscardReceived();
         DropClient();
         Pendant($"restarted: {Counted.Of(lost, "request")} received and not executed {(lost == 1 ? "is" : "are")} lost");
+    }
+
+    /// <summary>
+    /// A restart that loses the buffer and the progress (called where the acknowledgement went out): what was received and not
+    /// executed is lost, the driver program starts afresh and reports 0 executed, 0 received, and the client is dropped. The
+    /// execution log keeps what ran before: a request run again after the restart is there twice.
+    /// </summary>
+    private void LoseProgress()
+    {
+        int lost = DiscardReceived();
+        ResetProgress();
+        RestartingLosingProgress();
+        DropClient();
+        Pendant($"restarted: the driver program starts again with no progress (0 executed, 0 received); {lost.ToString(CultureInfo.InvariantCulture)} requests received and not executed are lost");
     }
 
     /// <summary>

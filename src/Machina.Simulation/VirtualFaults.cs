@@ -35,6 +35,13 @@ public enum VirtualFault
 
     /// <summary>The acknowledgement goes out, then a protective stop (UR only; other brands cannot report one and ignore it).</summary>
     ProtectiveStop,
+
+    /// <summary>
+    /// The acknowledgement goes out, then the controller restarts as after a power cycle or a reloaded program: the connection
+    /// closes, every request received but not executed is lost, and the driver program starts again from its beginning with
+    /// its progress forgotten (it reports 0 executed, 0 received). The host cannot learn which of its unconfirmed requests ran.
+    /// </summary>
+    RestartLosingProgress,
 }
 
 /// <summary>

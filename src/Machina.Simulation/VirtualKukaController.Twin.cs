@@ -30,6 +30,9 @@ public sealed partial class VirtualKukaController
     /// <summary>Cancels the driver's current run for a program reset; null between runs.</summary>
     private CancellationTokenSource? _driverRun;
 
+    /// <summary>Set by a restart that loses the progress: the driver's next run starts with its progress at 0.</summary>
+    private bool _forgetProgress;
+
     /// <summary>
     /// Loads drivers/kuka as <c>machina drivers kuka</c> writes them (driver channel on <see cref="Port"/>, monitor on port + 1),
     /// starts the driver on the robot interpreter and the monitor in the submit interpreter; the channels accept on the sockets
@@ -117,7 +120,25 @@ public sealed partial class VirtualKukaController
                 return;
             }
             twin.ClearEki(DriverChannel);
+            if (TakeForgetProgress())
+            {
+                // What the driver ran with nobody connected is logged before its progress goes: the log keeps every run.
+                KrlModule driver = twin.Modules["machina_kuka_driver"];
+                SettleRestart(KrlValues.ToInt(driver.Data["last_executed"].Value));
+                driver.Data["last_executed"].Value = 0;
+                driver.Data["last_received"].Value = 0;
+            }
             Pendant("program reset: machina_kuka_driver starts again from the top");
+        }
+    }
+
+    private bool TakeForgetProgress()
+    {
+        lock (Gate)
+        {
+            bool forget = _forgetProgress;
+            _forgetProgress = false;
+            return forget;
         }
     }
 

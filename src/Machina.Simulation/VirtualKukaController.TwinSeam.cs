@@ -32,6 +32,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
 
         /// <summary>True when the failure is Robot.Stop's (code 7): the driver ended the action part-way and keeps serving.</summary>
         public bool Stopped { get; init; }
+
+        /// <summary>True for an action a restart that loses the progress lost before the driver ran it.</summary>
+        public bool Lost { get; init; }
     }
 
     /// <summary>True while a client waits at the driver's port for the program to open its channel again (a held program greets it when it goes on).</summary>
@@ -203,9 +206,14 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// The state leaves only once the controller's execution log holds them: a host that reads the log as soon as the state
     /// arrived finds there what the state says (under load the buffer's loop logged them after the host had looked).
     /// </summary>
-    private void StateSent(string xml)
+    private void StateSent(string xml) => CompleteRanUpTo(IntegerOf(xml, " Executed=\""));
+
+    /// <summary>
+    /// Executes for the buffer, with nothing sent, the actions up to <paramref name="executed"/> (the driver's progress) whose
+    /// acknowledgement the driver did not send, and waits until the execution log holds them.
+    /// </summary>
+    private void CompleteRanUpTo(int executed)
     {
-        int executed = IntegerOf(xml, " Executed=\"");
         List<(int Id, TaskCompletionSource<TwinAck> Entry)> ran;
         lock (Gate)
         {
@@ -337,6 +345,46 @@ public sealed partial class VirtualKukaController : IEkiSeam
         if (Twin is not null)
         {
             ResetDriverProgram();
+        }
+    }
+
+    /// <summary>
+    /// The fault plan's RestartLosingProgress: a program reset as above, after which the driver starts with the data list as
+    /// loaded (its progress <c>last_executed</c>, <c>last_received</c> at 0), as after a cold start that reloads the program.
+    /// </summary>
+    private protected override void RestartingLosingProgress()
+    {
+        if (Twin is not null)
+        {
+            lock (Gate)
+            {
+                _forgetProgress = true;
+                _driverRun?.Cancel(); // the buffer learns what ran once the driver stopped (RunDriver)
+                _heldTwinAcknowledgement = null;
+            }
+        }
+    }
+
+    /// <summary>An action a restart lost before the driver ran it: the execution loop that waited for it goes on without it.</summary>
+    private protected override bool LostInRestart(object request) =>
+        request is TwinAction { Acknowledged.Task: { IsCompletedSuccessfully: true, Result.Lost: true } };
+
+    /// <summary>
+    /// After a restart that loses the progress, once the driver stopped: what it ran up to <paramref name="executed"/> with
+    /// nobody connected is executed for the buffer (and logged), every other action it had received is lost.
+    /// </summary>
+    private void SettleRestart(int executed)
+    {
+        CompleteRanUpTo(executed);
+        List<(int Id, TaskCompletionSource<TwinAck> Entry)> lost;
+        lock (Gate)
+        {
+            lost = [.. _acks.Select(a => (a.Key, a.Value))];
+            _acks.Clear();
+        }
+        foreach ((int id, TaskCompletionSource<TwinAck> entry) in lost)
+        {
+            entry.TrySetResult(new TwinAck(id, [], new TaskCompletionSource<bool>()) { Lost = true });
         }
     }
 

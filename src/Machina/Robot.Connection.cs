@@ -186,6 +186,16 @@ public sealed partial class Robot
     /// </summary>
     public TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
 
+    /// <summary>
+    /// What happens, when connecting again, to actions sent before a controller restart and not confirmed: the controller's
+    /// progress was reset (or it is another controller), so whether each ran is unknown. False (the default): they are not
+    /// sent again; each ends failed (<see cref="ActionFailed"/>, reason "the controller restarted; this action may or may not
+    /// have run", code "restarted"), a warning lists their ids, and the next wait for completion throws once; the actions never
+    /// sent run as usual. True: they are sent again, for a program whose actions may safely run twice (absolute moves, outputs).
+    /// Takes effect at the next connection.
+    /// </summary>
+    public bool ResendAfterControllerRestart { get; set; }
+
     /// <summary>True while connected to a controller (also while it is stopped).</summary>
     public bool IsConnected => _session?.IsConnected ?? false;
 
@@ -259,6 +269,7 @@ public sealed partial class Robot
         ThrowIfDisposed("connect");
         OnlineSession session = RequireSession("connect");
         session.ResponseTimeout = ResponseTimeout;
+        session.ResendAfterControllerRestart = ResendAfterControllerRestart;
         return _installsDriver && AbbDriverInstaller.Supports(Brand)
             ? InstallThenConnectAsync(session, host, port, cancellationToken)
             : session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);

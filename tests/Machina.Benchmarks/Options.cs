@@ -27,6 +27,9 @@ internal sealed record Options
                             --seed S (default 1), plus samples/programs; --brand abb|ur|kuka (repeatable; default all three);
                             --program SEED shows the program of one seed (as a DISAGREE line names it) and both runs' steps
           --fuzz ...        the interpreters' fuzz run instead (first argument; --fuzz --help for its options)
+          --restarts N      the controller-restart schedule instead: N seeded trials per brand (ABB, UR, KUKA), counting
+                            actions run twice and not sent again (docs/reliability.md, "Controller restarts"); --resend
+                            runs it with ResendAfterControllerRestart
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -42,6 +45,8 @@ internal sealed record Options
     public int Seed { get; init; } = 1;
     public int? Program { get; init; }
     public List<string> Brands { get; init; } = [];
+    public int? Restarts { get; init; }
+    public bool Resend { get; init; }
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
     public string? NativeTool { get; init; }
@@ -68,6 +73,8 @@ internal sealed record Options
                 "--seed" => options with { Seed = NonNegative(args, ref i) },
                 "--program" => options with { Program = NonNegative(args, ref i) },
                 "--brand" => options with { Brands = [.. options.Brands, .. Value(args, ref i).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)] },
+                "--restarts" => options with { Restarts = Positive(args, ref i) },
+                "--resend" => options with { Resend = true },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
                 "--native" => options with { NativeTool = Value(args, ref i) },
                 "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },

@@ -38,6 +38,12 @@ if (options.Differential)
         ? Machina.Benchmarks.Differential.DifferentialSuite.Show(program, options.Brands, Console.Out)
         : Machina.Benchmarks.Differential.DifferentialSuite.Run(options.Size ?? 2000, options.Seed, options.Brands, Console.Out);
 }
+#if MACHINA_ONLINE
+if (options.Restarts is int restartTrials)
+{
+    return RestartRun.Run(restartTrials, options.Resend);
+}
+#endif
 
 if (options.Process)
 {

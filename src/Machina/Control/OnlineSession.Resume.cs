@@ -15,8 +15,10 @@ internal sealed partial class OnlineSession
     /// them: those it executed count as executed, those it still holds wait for their acknowledgement, the rest are sent
     /// again with unchanged targets. Nothing runs twice.</item>
     /// <item>A controller still busy with requests this robot did not send (another program, or a restarted host): refused.</item>
-    /// <item>Otherwise (first connection, a fresh or different controller, or a driver that does not report progress): the
-    /// controller's pose becomes every cursor's state and everything not confirmed is sent (again).</item>
+    /// <item>A controller that reports its progress but does not know them (it restarted, or it is another controller): whether
+    /// they ran is unknown; by default they end failed and are not sent again (<see cref="SettleAfterRestart"/>).</item>
+    /// <item>Otherwise (first connection, or a driver that does not report progress): the controller's pose becomes every
+    /// cursor's state and everything not confirmed is sent (again).</item>
     /// </list>
     /// </summary>
     private string? Resume(DeviceHandshake handshake, IDeviceDriver driver, RobotCursor issue)
@@ -39,16 +41,25 @@ internal sealed partial class OnlineSession
             ResumeWhereTheControllerIs(executed + 1, held - executed, driver, handshake);
             return null;
         }
-        if (_inFlight.Count > 0)
+        List<RobotAction> notResent = [];
+        if (_inFlight.Count > 0 && progress is DeviceProgress reported && (!reported.IsFresh || _lastAcknowledgedId != 0))
         {
+            notResent = SettleAfterRestart(reported);
+        }
+        else if (_inFlight.Count > 0)
+        {
+            // No progress report, or a controller that says it ran nothing while this robot never saw an acknowledgement: nothing
+            // tells a restart from requests that never arrived (docs/reliability.md, "Controller restarts").
             Log(LogLevel.WARNING, progress is null
                 ? $"The driver does not report which requests it executed (driver {handshake.Version}; 1.6 does): the {Counted.Of(_inFlight.Count, "action")} sent "
                     + "before the connection was lost are sent again, and any the robot already ran will run twice."
-                : $"The controller does not know the {Counted.Of(_inFlight.Count, "action")} sent before the connection was lost (a restarted driver or another "
-                    + "controller): they are sent again, with targets recomputed from where the robot is.");
+                : $"The controller reports that it ran nothing, and none of the {Counted.Of(_inFlight.Count, "action")} sent before the connection was lost was "
+                    + "acknowledged: they are sent again, with targets recomputed from where the robot is (had the controller run some and restarted, "
+                    + "those would run twice).");
             RequeueInFlight();
         }
         InitialiseCursors(handshake, issue);
+        ReportNotResent(notResent);
         return null;
     }
 

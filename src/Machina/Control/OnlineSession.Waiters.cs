@@ -39,6 +39,10 @@ internal sealed partial class OnlineSession
             {
                 return Task.FromException(_failure);
             }
+            if (TakeNotResent() is { } notResent)
+            {
+                return Task.FromException(notResent);   // once: a restart left actions unsent whose outcome is unknown
+            }
             var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
             _events.PostSignal(done, null);
             return done.Task;
@@ -67,11 +71,13 @@ internal sealed partial class OnlineSession
     private void SignalWaiters()
     {
         int pending = PendingCount;
+        Exception? notResent = null;
         foreach ((int below, _, TaskCompletionSource signal) in _pendingWaiters)
         {
             if (pending < below)
             {
-                _events.PostSignal(signal, null);
+                notResent ??= TakeNotResent();
+                _events.PostSignal(signal, notResent);
             }
         }
         _pendingWaiters.RemoveAll(w => pending < w.Below);
