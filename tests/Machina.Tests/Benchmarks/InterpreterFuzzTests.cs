@@ -1,6 +1,6 @@
 using Machina.Benchmarks.Fuzz;
 
-namespace Machina.Tests.Simulation.Twin;
+namespace Machina.Tests.Benchmarks;
 
 /// <summary>
 /// A small seeded subset of the interpreters' fuzz run (the big one is <c>Machina.Benchmarks --fuzz</c>, see docs/reliability.md):
