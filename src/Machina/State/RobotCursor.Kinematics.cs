@@ -132,7 +132,7 @@ internal sealed partial class RobotCursor
         Tool is null ? flange : new Pose(flange.Position + flange.Rotation * Tool.TcpPosition, flange.Rotation * Tool.TcpOrientation);
 
     /// <summary>The flange pose for a TCP pose, with the attached tool (if any).</summary>
-    private Pose FlangePose(Vector tcpPosition, Rotation tcpRotation)
+    internal Pose FlangePose(Vector tcpPosition, Rotation tcpRotation)
     {
         if (Tool is null)
         {

@@ -281,7 +281,7 @@ internal sealed class KrlWriter
             WarnPtpSpeedOnce(action);
         }
         StringBuilder line = BeginLine().Append(ptp ? "PTP " : "LIN ");
-        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian, StatusTurn(c));
+        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian, StatusTurn(c, position, rotation));
         EndLine(line.Append(Approximation(ptp, c.Precision)), action);
     }
 
@@ -294,7 +294,7 @@ internal sealed class KrlWriter
         }
         StringBuilder line = BeginLine().Append("CIRC ");
         AppendPoseTarget(line, through, c.ArcThroughRotation ?? endRotation, c.ExternalAxesCartesian);
-        AppendPoseTarget(line.Append(", "), end, endRotation, c.ExternalAxesCartesian, StatusTurn(c));
+        AppendPoseTarget(line.Append(", "), end, endRotation, c.ExternalAxesCartesian, StatusTurn(c, end, endRotation));
         EndLine(line.Append(Approximation(false, c.Precision)), action);
     }
 
@@ -448,9 +448,46 @@ internal sealed class KrlWriter
 
     private static string Approximation(bool ptp, double precision) => precision > 0 ? (ptp ? " C_PTP" : " C_DIS") : "";
 
-    /// <summary>Status and Turn of the cursor's joints when a KUKA model is set and the joints are known, else null.</summary>
-    private KukaConfiguration? StatusTurn(RobotCursor c) =>
-        _job.Model is { Brand: "KUKA" } model && c.Axes is Joints j ? KukaConfiguration.From(model, j) : null;
+    /// <summary>
+    /// Status and Turn of the target <paramref name="position"/>, <paramref name="rotation"/> as written (3 decimals) when a KUKA
+    /// model is set and the cursor's joints are known, else null. The controller solves the written pose and takes the axis
+    /// position with these S and T: with an axis near 0° (or A5 near the wrist singularity) the rounding can carry it to the other
+    /// sign, so S and T are those of the written pose's solution nearest the cursor's joints, not of the joints themselves.
+    /// </summary>
+    private KukaConfiguration? StatusTurn(RobotCursor c, Vector position, Rotation rotation)
+    {
+        if (_job.Model is not { Brand: "KUKA" } model || c.Axes is not Joints joints)
+        {
+            return null;
+        }
+        if (!NearZero(joints))
+        {
+            return KukaConfiguration.From(model, joints);
+        }
+        (double a, double b, double cc) = KrlFormat.Abc(rotation);
+        var written = new Vector(Written(position.X), Written(position.Y), Written(position.Z));
+        Rotation writtenRotation = KrlFormat.FromAbc(Written(KrlFormat.Degrees(a)), Written(b), Written(cc));
+        Joints solved = model.Kinematics.Closest(c.FlangePose(written, writtenRotation), joints) ?? joints;
+        return KukaConfiguration.From(model, solved);
+    }
+
+    /// <summary>How close to 0° an axis must be for the rounding of the written pose to possibly change its sign, degrees.</summary>
+    private const double RoundingReachDegrees = 1;
+
+    private static bool NearZero(Joints joints)
+    {
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            if (Math.Abs(joints[i]) < RoundingReachDegrees)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>A value (mm or degrees) as the target's text carries it: 3 decimals.</summary>
+    private static double Written(double value) => Math.Round(value, 3);
 
     private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
