@@ -34,7 +34,7 @@ public sealed class SamplesRunTests
             new("two squares", ["--loops", "2", "--speed-factor", "50"], (output, _) =>
             {
                 AssertInOrder(output, "Square 1 done, tool at [400, 0, 400]", "Square 2 done, tool at [400, 0, 400]",
-                    "Stopped after 2 squares at [400,0,400].");
+                    "Stopped after 2 squares at [400, 0, 400].");
                 Assert.DoesNotContain("Square 3", output, StringComparison.Ordinal);
             }),
         ],
