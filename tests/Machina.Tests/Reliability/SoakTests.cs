@@ -46,7 +46,20 @@ public class SoakTests(ITestOutputHelper output)
         Vector shift = brand == "KUKA" ? new Vector(200, 0, 100) : Vector.Zero;
         Vector end = RandomProgram.Issue(w.Bot, new Random(seed), Actions, new Vector(200, -100, 300) + shift, new Vector(400, 100, 500) + shift, jumps: true);
 
-        int recoveries = await rig.RunToCompletionAsync(w, WaitLimit, maxRecoveries: 1000);
+        int recoveries;
+        try
+        {
+            recoveries = await rig.RunToCompletionAsync(w, WaitLimit, maxRecoveries: 1000);
+        }
+        catch (TimeoutException)
+        {
+            // A stalled run says where it stalled: the host's last lines, the controller's pendant and what it executed last.
+            output.WriteLine($"Stalled after {rig.ExecutedIds.Count} executions (last {string.Join(",", rig.ExecutedIds.TakeLast(5))}), "
+                + $"{w.Executed.Count} seen executed by the host.");
+            output.WriteLine("Host log:\n  " + string.Join("\n  ", hostLog.TakeLast(400)));
+            output.WriteLine("Controller pendant:\n  " + string.Join("\n  ", rig.PendantMessages.TakeLast(200)));
+            throw;
+        }
         watch.Stop();
 
         Assert.True(w.Executed.SequenceEqual(Enumerable.Range(1, Actions)), "The host saw actions executed out of order, twice or not at all.");
