@@ -166,6 +166,13 @@ internal sealed partial class FaultRig : IAsyncDisposable
                 }
                 return;
             }
+            catch (TimeoutException e)
+            {
+                // A reconnection or resume that hangs says what the controller showed meanwhile.
+                throw new TimeoutException(
+                    $"No recovery within {RecoverLimit.TotalSeconds} s (the robot is {w.Bot.ConnectionState}).\nPendant (last 40):\n  "
+                    + string.Join("\n  ", PendantMessages.TakeLast(40)), e);
+            }
             catch (MachinaException e) when (attempt < 20)
             {
                 w.RecoveryErrors.Enqueue(e);

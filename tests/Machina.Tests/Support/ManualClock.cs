@@ -116,6 +116,44 @@ internal sealed class ManualClock : TimeProvider
         }
     }
 
+    /// <summary>
+    /// From now until the result is disposed, the clock follows real time (checked every 10 ms): what a test no longer needs
+    /// to hold still (a reconnection after the part it checks) gets its timeouts as on a real clock, never a wait that cannot end.
+    /// </summary>
+    internal IAsyncDisposable RunFreely()
+    {
+        var stop = new CancellationTokenSource();
+        Task running = Task.Run(async () =>
+        {
+            long last = TimeProvider.System.GetTimestamp();
+            while (!stop.IsCancellationRequested)
+            {
+                try
+                {
+                    await Task.Delay(10, stop.Token).ConfigureAwait(false);
+                }
+                catch (OperationCanceledException)
+                {
+                    return;
+                }
+                long now = TimeProvider.System.GetTimestamp();
+                Advance(TimeProvider.System.GetElapsedTime(last, now));
+                last = now;
+            }
+        });
+        return new FreeRun(stop, running);
+    }
+
+    private sealed class FreeRun(CancellationTokenSource stop, Task running) : IAsyncDisposable
+    {
+        public async ValueTask DisposeAsync()
+        {
+            await stop.CancelAsync().ConfigureAwait(false);
+            await running.ConfigureAwait(false);
+            stop.Dispose();
+        }
+    }
+
     private void Schedule(ManualTimer timer, TimeSpan dueTime, TimeSpan period)
     {
         lock (_gate)
