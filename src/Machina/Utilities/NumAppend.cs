@@ -4,10 +4,12 @@ using System.Text;
 namespace Machina;
 
 /// <summary>
-/// Fast, allocation-free number text for compilers that write millions of values. Same digits as
-/// <see cref="Num.F(double, int)"/> (midpoint-to-even rounding, −0 as 0), but always in plain decimal notation
-/// (0.00001, never 1E-05), which every robot language reads.
+/// The one writer of numbers in programs and wire messages: fast, allocation-free, for compilers that write millions of
+/// values. Same digits as <see cref="Num.F(double, int)"/> (midpoint-to-even rounding, −0 as 0) wherever that has 15
+/// significant digits, but always in plain decimal notation (0.00001, never 1E-05; 1E+20 as 100000000000000000000), which
+/// every robot language and G-code reads. A value no language can hold (NaN, an infinity) is refused, never written.
 /// </summary>
+/// <remarks><see cref="Num"/> writes numbers for people (messages, logs), in .NET's general format.</remarks>
 internal static class NumAppend
 {
     private static readonly double[] Pow10 = [1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
@@ -19,10 +21,26 @@ internal static class NumAppend
     {
         if (!TryScale(value, decimals, out double scaled))
         {
-            return sb.Append(Num.Inv, $"{Num.Clean(Math.Round(value, decimals)):G15}");
+            return AppendHuge(sb, value, decimals);
         }
         // Written straight into the builder's free space (ScaledDecimal), not into a buffer and copied.
         return sb.Append(Num.Inv, $"{new ScaledDecimal(scaled, decimals)}");
+    }
+
+    /// <summary>The text <see cref="AppendFixed"/> appends, as a string.</summary>
+    internal static string Format(double value, int decimals) => new StringBuilder(24).AppendFixed(value, decimals).ToString();
+
+    /// <summary>
+    /// A value of 10^15 units of the last decimal or more: its 15 significant digits, then zeros, in plain notation (no
+    /// language reads every exponent form: G-code none). NaN and infinities are refused: a program must never carry them.
+    /// </summary>
+    private static StringBuilder AppendHuge(StringBuilder sb, double value, int decimals)
+    {
+        if (!double.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(nameof(value), value, "A program or message cannot carry a number that is not finite.");
+        }
+        return sb.Append(Num.Clean(Math.Round(value, decimals)).ToString("0." + new string('#', Math.Max(1, decimals)), Num.Inv));
     }
 
     /// <summary>

@@ -58,7 +58,7 @@ internal sealed class GCodeWriter
             case ActionSpeed:
                 if (Math.Round(c.Speed * 60, 3) < MinRate)
                 {
-                    Warning(action, $"feed rates are written in mm/min with 3 decimals; {Num.G(c.Speed)} mm/s would be F0 and was raised to F{FixedPoint.Format(MinRate, 3)}.");
+                    Warning(action, $"feed rates are written in mm/min with 3 decimals; {Num.G(c.Speed)} mm/s would be F0 and was raised to F{NumAppend.Format(MinRate, 3)}.");
                 }
                 if (_flavor.FeedOnMotionLine)
                 {
@@ -158,7 +158,7 @@ internal sealed class GCodeWriter
         {
             if (Math.Round(acceleration, 3) < MinRate)
             {
-                Warning(action, $"accelerations are written in mm/s^2 with 3 decimals; {Num.G(acceleration)} mm/s^2 would be 0 and was raised to {FixedPoint.Format(MinRate, 3)}.");
+                Warning(action, $"accelerations are written in mm/s^2 with 3 decimals; {Num.G(acceleration)} mm/s^2 would be 0 and was raised to {NumAppend.Format(MinRate, 3)}.");
             }
             string a = Rate(acceleration);
             Code("M204 P" + a + " T" + a, action);
@@ -244,7 +244,7 @@ internal sealed class GCodeWriter
         double sent = before - _extrusionOrigin;
         if (e > _flavor.ExtrusionResetLimit && sent > 0)
         {
-            _file.Add("; Homing extrusion length after " + FixedPoint.Format(sent, 5) + " mm (" + Num.G(_flavor.ExtrusionResetLimit) + " mm limit)");
+            _file.Add("; Homing extrusion length after " + NumAppend.Format(sent, 5) + " mm (" + Num.G(_flavor.ExtrusionResetLimit) + " mm limit)");
             _file.Add("G92 E0.0000");
             _extrusionOrigin = before;
             e = after - _extrusionOrigin;
@@ -262,17 +262,17 @@ internal sealed class GCodeWriter
         }
         _highest = Math.Max(_highest, point.Z);
         StringBuilder sb = _sb.Clear();
-        FixedPoint.Append(sb.Append(code).Append(" X"), point.X, 3);
-        FixedPoint.Append(sb.Append(" Y"), point.Y, 3);
-        FixedPoint.Append(sb.Append(" Z"), point.Z, 3);
+        sb.Append(code).Append(" X").AppendFixed(point.X, 3);
+        sb.Append(" Y").AppendFixed(point.Y, 3);
+        sb.Append(" Z").AppendFixed(point.Z, 3);
         if (arcCenterOffset is Vector ij)
         {
-            FixedPoint.Append(sb.Append(" I"), ij.X, 3);
-            FixedPoint.Append(sb.Append(" J"), ij.Y, 3);
+            sb.Append(" I").AppendFixed(ij.X, 3);
+            sb.Append(" J").AppendFixed(ij.Y, 3);
         }
         if (e is double extruder)
         {
-            FixedPoint.Append(sb.Append(" E"), extruder, 5);
+            sb.Append(" E").AppendFixed(extruder, 5);
         }
         if (_flavor.FeedOnMotionLine && feed != _feed)
         {
@@ -293,7 +293,7 @@ internal sealed class GCodeWriter
     internal const double MinRate = 0.001;
 
     /// <summary>A feed rate or acceleration (above 0) with 3 decimals, at least <see cref="MinRate"/>, never in exponent form.</summary>
-    private static string Rate(double value) => FixedPoint.Format(Math.Max(Math.Round(value, 3), MinRate), 3);
+    private static string Rate(double value) => NumAppend.Format(Math.Max(Math.Round(value, 3), MinRate), 3);
 
     private void EmitOutput(RobotAction action, string pin, bool toolPin, string value)
     {
@@ -334,7 +334,7 @@ internal sealed class GCodeWriter
             RobotPartType.Bed => temperature.Wait ? "M190" : "M140",
             _ => temperature.Wait ? "M191" : "M141",
         };
-        Code(code + " S" + FixedPoint.Format(c.Temperatures[(int)temperature.Part], 0), action);
+        Code(code + " S" + NumAppend.Format(c.Temperatures[(int)temperature.Part], 0), action);
     }
 
     private void EmitSequence(RobotAction action, bool start, RobotCursor c)
@@ -382,8 +382,8 @@ internal sealed class GCodeWriter
         if (_flavor.ParkXY is (double x, double y))
         {
             StringBuilder sb = _sb.Clear().Append(_flavor.TravelCode).Append(" X");
-            FixedPoint.Append(sb, x, 3).Append(" Y");
-            _file.Add(FixedPoint.Append(sb, y, 3));
+            sb.AppendFixed(x, 3).Append(" Y");
+            _file.Add(sb.AppendFixed(y, 3));
         }
         _file.AddRange(_flavor.EndShutdown);
     }
@@ -391,8 +391,8 @@ internal sealed class GCodeWriter
     private string RiseLine(double z)
     {
         StringBuilder sb = _sb.Clear().Append(_flavor.TravelCode).Append(" Z");
-        FixedPoint.Append(sb, z, 3).Append(" F");
-        return FixedPoint.Append(sb, RiseFeed, 3).ToString();
+        sb.AppendFixed(z, 3).Append(" F");
+        return sb.AppendFixed(RiseFeed, 3).ToString();
     }
 
     private void WarnIfTurned(RobotAction action, RobotCursor c)
@@ -412,7 +412,7 @@ internal sealed class GCodeWriter
     {
         if (_human)
         {
-            _file.Add("; [" + GCodeText.Comment(action.Describe()) + "]");
+            _file.Add(ProgramNotes.Semicolon.Description(action));
         }
     }
 
@@ -425,12 +425,12 @@ internal sealed class GCodeWriter
     private void NotApplicable(RobotAction action, string reason)
     {
         _job.Warn(action, reason);
-        Code("; ACTION \"" + GCodeText.Comment(action.Describe()) + "\" NOT APPLICABLE TO THIS DEVICE", action);
+        Code(ProgramNotes.Semicolon.NotApplicable(action), action);
     }
 
     private void Error(RobotAction action, string reason)
     {
         _job.Warn(action, reason);
-        Code("; ERROR on \"" + GCodeText.Comment(action.Describe()) + "\": " + reason, action);
+        Code(ProgramNotes.Semicolon.Error(action, reason), action);
     }
 }

@@ -9,10 +9,10 @@ namespace Machina;
 internal static class KrlFormat
 {
     /// <summary>mm and degrees: 3 decimals.</summary>
-    internal static string Mm(double value) => FixedPoint.Format(value, 3);
+    internal static string Mm(double value) => NumAppend.Format(value, 3);
 
     /// <summary>m/s, m/s² and seconds: 6 decimals.</summary>
-    internal static string Fine(double value) => FixedPoint.Format(value, 6);
+    internal static string Fine(double value) => NumAppend.Format(value, 6);
 
     /// <summary>The smallest speed (m/s) or acceleration (m/s²) written: a value above 0 that would print as 0 is raised to it.</summary>
     internal const double MinRate = 0.000001;
@@ -45,7 +45,7 @@ internal static class KrlFormat
     /// <summary>An angle in degrees with 3 decimals; −180 is written as 180 (the same angle).</summary>
     internal static string Angle(double degrees) => AppendAngle(new StringBuilder(12), degrees).ToString();
 
-    private static StringBuilder AppendAngle(StringBuilder sb, double degrees) => FixedPoint.Append(sb, Degrees(degrees), 3);
+    private static StringBuilder AppendAngle(StringBuilder sb, double degrees) => sb.AppendFixed(Degrees(degrees), 3);
 
     /// <summary>An angle with −180 (to 3 decimals) turned into 180, the same angle: how KRL programs and the online driver get it.</summary>
     internal static double Degrees(double degrees) => Math.Round(degrees * 1000) == -180_000 ? 180 : degrees;
@@ -53,7 +53,7 @@ internal static class KrlFormat
     /// <summary>The rotation of KUKA's A, B, C (degrees): the inverse of <see cref="Abc"/>.</summary>
     internal static Rotation FromAbc(double a, double b, double c) => Rotation.FromYawPitchRoll(a, b, c);
 
-    private static StringBuilder AppendMm(StringBuilder sb, double value) => FixedPoint.Append(sb, value, 3);
+    private static StringBuilder AppendMm(StringBuilder sb, double value) => sb.AppendFixed(value, 3);
 
     /// <summary>
     /// Appends <c>X …, Y …, Z …, A …, B …, C …</c>, then <c>, S 'B…', T 'B…'</c> when <paramref name="config"/> is given (joints known

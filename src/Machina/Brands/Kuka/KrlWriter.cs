@@ -237,7 +237,7 @@ internal sealed class KrlWriter
     {
         if (KrlFormat.RoundsToZero(value))
         {
-            _job.Warn(action, $"KRL {what}s are written in {krlUnit} with 6 decimals; {Num.G(value)} {unit} would be 0 and was raised to {FixedPoint.Format(KrlFormat.MinRate, 6)} {krlUnit}.");
+            _job.Warn(action, $"KRL {what}s are written in {krlUnit} with 6 decimals; {Num.G(value)} {unit} would be 0 and was raised to {NumAppend.Format(KrlFormat.MinRate, 6)} {krlUnit}.");
         }
     }
 
@@ -517,7 +517,7 @@ internal sealed class KrlWriter
         {
             return line.Append('{').Append(type).Append(": ");
         }
-        FixedPoint.Append(_declaration.Clear().Append("DECL ").Append(type).Append(" target"), ++_targetCount, 0);
+        _declaration.Clear().Append("DECL ").Append(type).Append(" target").AppendFixed(++_targetCount, 0);
         return _declaration.Append("={");
     }
 
@@ -529,7 +529,7 @@ internal sealed class KrlWriter
             return;
         }
         _dat!.Add(_declaration.Append('}'));
-        FixedPoint.Append(line.Append("target"), _targetCount, 0);
+        line.Append("target").AppendFixed(_targetCount, 0);
     }
 
     private StringBuilder BeginLine() => _line.Clear().Append(Indent);
@@ -549,19 +549,19 @@ internal sealed class KrlWriter
     {
         if (_human)
         {
-            _src.Add(Indent + "; [" + KrlText.Comment(action.Describe()) + "]");
+            _src.Add(Indent + ProgramNotes.Semicolon.Description(action));
         }
     }
 
     private void NotApplicable(RobotAction action, string reason)
     {
         _job.Warn(action, reason);
-        Code("; ACTION \"" + KrlText.Comment(action.Describe()) + "\" NOT APPLICABLE TO THIS DEVICE", action);
+        Code(ProgramNotes.Semicolon.NotApplicable(action), action);
     }
 
     private void Error(RobotAction action, string reason)
     {
         _job.Warn(action, reason);
-        Code("; ERROR on \"" + KrlText.Comment(action.Describe()) + "\": " + reason, action);
+        Code(ProgramNotes.Semicolon.Error(action, reason), action);
     }
 }

@@ -110,6 +110,9 @@ internal static class UrScriptText
     /// <summary>A text safe inside a <c>#</c> comment: line breaks and control characters become spaces.</summary>
     internal static string CommentText(string text) => ProgramText.CommentText(text);
 
+    /// <summary>The comment lines of actions without code, as <c>#</c> comments.</summary>
+    internal static readonly ProgramNotes Notes = new("#", CommentText);
+
     /// <summary>The program name as a URScript function name: ASCII letters, digits and '_', a letter first, not a keyword or a function this program calls.</summary>
     internal static string FunctionName(string programName)
     {

@@ -112,11 +112,11 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
                 EndLine(action);
                 break;
             case ActionSpeed when UrScriptText.RoundsToZero(cursor.Speed):
-                job.Warn(action, $"URScript speeds are written in m/s with 6 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {FixedPoint.Format(UrScriptText.MinRate, 6)} m/s.");
+                job.Warn(action, $"URScript speeds are written in m/s with 6 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {NumAppend.Format(UrScriptText.MinRate, 6)} m/s.");
                 NoCode(action);
                 break;
             case ActionAcceleration when UrScriptText.RoundsToZero(cursor.Acceleration):
-                job.Warn(action, $"URScript accelerations are written in m/s^2 with 6 decimals; {Num.G(cursor.Acceleration)} mm/s^2 would be 0 and was raised to {FixedPoint.Format(UrScriptText.MinRate, 6)} m/s^2.");
+                job.Warn(action, $"URScript accelerations are written in m/s^2 with 6 decimals; {Num.G(cursor.Acceleration)} mm/s^2 would be 0 and was raised to {NumAppend.Format(UrScriptText.MinRate, 6)} m/s^2.");
                 NoCode(action);
                 break;
             case ActionMessage m:
@@ -388,7 +388,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     {
         if (_human)
         {
-            sink.Add(Indent + "# [" + UrScriptText.CommentText(action.Describe()) + "]");
+            sink.Add(Indent + UrScriptText.Notes.Description(action));
         }
     }
 }

@@ -153,4 +153,7 @@ internal static class RapidText
 
     /// <summary>A text safe inside a one-line comment: line breaks and control characters become spaces.</summary>
     internal static string CommentText(string text) => ProgramText.CommentText(text);
+
+    /// <summary>The comment lines of actions without code, as <c>!</c> comments.</summary>
+    internal static readonly ProgramNotes Notes = new("!", CommentText);
 }

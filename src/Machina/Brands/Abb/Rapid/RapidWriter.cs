@@ -308,7 +308,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         if (_human)
         {
-            sink.Add(Indent + "! [" + RapidText.CommentText(action.Describe()) + "]");
+            sink.Add(Indent + RapidText.Notes.Description(action));
         }
     }
 }

@@ -18,7 +18,7 @@ internal static class KukaXml
 
     /// <summary>Appends <c> name="number"</c>, the number with at most 6 decimals, never in exponent form and never "-0".</summary>
     public static StringBuilder AppendAttribute(StringBuilder sb, string name, double value) =>
-        FixedPoint.Append(sb.Append(' ').Append(name).Append("=\""), value, 6).Append('"');
+        sb.Append(' ').Append(name).Append("=\"").AppendFixed(value, 6).Append('"');
 
     /// <summary>Appends text escaped for an attribute value or element content.</summary>
     public static StringBuilder AppendText(StringBuilder sb, string text)
