@@ -13,7 +13,7 @@ internal sealed class UrScriptCompiler : Compiler
     internal override void Emit(CompileJob job, ProgramOutput output)
     {
         string function = UrScriptText.FunctionName(job.ProgramName);
-        LineSink script = output.OpenFile(job.ProgramName, "script", RobotProgram.Ascii, CommentPrefix);
+        var script = new WarningRuns(output.OpenFile(job.ProgramName, "script", RobotProgram.Ascii, CommentPrefix), "  # ");
         script.AddRange(Header(job));
         script.Add("");
         script.Add("def " + function + "():");

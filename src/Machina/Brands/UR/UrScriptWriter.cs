@@ -6,7 +6,7 @@ namespace Machina;
 /// Writes the URScript lines of each action from the cursor state after it: motions with inline or variable targets,
 /// tool changes (TCP and payload), messages, waits, IO, comments, and comment lines plus warnings for what a UR robot cannot do.
 /// </summary>
-internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
+internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
 {
     private const string Indent = "  ";
 
@@ -63,7 +63,11 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
     }
 
     /// <summary>Final pass: the instruction lines of every action, in order (refused actions are reported as warnings).</summary>
-    internal void WriteInstructions() => job.Replay(Write);
+    internal void WriteInstructions()
+    {
+        job.Replay(Write);
+        sink.EndRun();
+    }
 
     private void Write(RobotAction action, RobotCursor cursor)
     {
@@ -71,6 +75,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         {
             CheckBlend(action, cursor);
             CheckJointSpeed(action, cursor);
+            sink.Motion();
         }
         switch (action)
         {
@@ -233,7 +238,7 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
             _warning = new char[most];
         }
         Span<char> line = _warning;
-        int at = Put(line, 0, "  # WARNING: ");
+        int at = Put(line, 0, WarningStart);
         // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
         at = translation is null ? Put(line, at, instruction!) : at + _digits.WriteInstruction(translation, line[at..]);
         line[at++] = ' ';
@@ -249,8 +254,12 @@ internal sealed class UrScriptWriter(CompileJob job, LineSink sink)
         at = Put(line, at, ") or less around short motions.");
         ReadOnlySpan<char> message = line[start..at];
         job.Warn(action, $"{message}");
-        sink.Add(line[..at]);
+        // Consecutive motions with this warning get one comment after them (WarningRuns), not one each.
+        sink.Warn("blend", line[..at]);
     }
+
+    /// <summary>How a warning's comment line begins.</summary>
+    private const string WarningStart = "  # WARNING: ";
 
     /// <summary>Characters enough for a blend warning's line besides the instruction it quotes: fixed text and three numbers.</summary>
     private const int BlendWarningChars = 288 + 3 * NumAppend.MaxChars;

@@ -43,7 +43,7 @@ public class UrScriptCompilerTests
         // Moves go through one reused array (UrMoveLine), rotations and coordinates too large for its digits through the
         // builder; the lines here are the builder's, written before the array existed: short and long decimals, tiny and
         // negative numbers, joint motion, changed settings, a turn in between, a blend warning, and the largest coordinate allowed (coordinates beyond 1 km are refused).
-        var body = Body(Compile(bot =>
+        RobotProgram program = Compile(bot =>
         {
             Start(bot);
             bot.Move(0.0004, -7.25, 1e-7);
@@ -56,8 +56,13 @@ public class UrScriptCompilerTests
             bot.MotionMode("linear");
             bot.PrecisionTo(0);
             bot.MoveTo(999_999.9995, 0, 600);
-        }, CompileOptions.Default));
-        Assert.Equal(ExpectedMoves, body);
+        }, CompileOptions.Default);
+        // The turn and the move after it draw the same warning: one comment after them names their lines in the file.
+        var file = program.GetFile("script")!.Lines.ToList();
+        int first = file.FindIndex(l => l.EndsWith("# [Rotate 30 deg around [0, 0, 1]]", StringComparison.Ordinal)) + 1;
+        int last = file.FindIndex(l => l.EndsWith("# [Move [1, 2, 3] mm]", StringComparison.Ordinal)) + 1;
+        Assert.Equal(first + 1, last);
+        Assert.Equal(ExpectedMoves.Select(l => l.Replace("LINES", $"{first} to {last}", StringComparison.Ordinal)), Body(program));
     }
 
     private static readonly string[] ExpectedMoves =
@@ -70,10 +75,10 @@ public class UrScriptCompilerTests
         "  # WARNING: Move(12.3456789,0,-0.001); the blend radius of 5 mm is more than half of the next motion (0 mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(0) or less around short motions.",
         "  # WARNING: Rotate(0,0,1,30); the blend radius of 5 mm is more than half of this motion (0 mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(0) or less around short motions.",
         "  movep(p[0.412346,0.29275,0.499999,-0.813104,3.034545,0], v=0.02, r=0.005)  # [Rotate 30 deg around [0, 0, 1]]",
-        "  # WARNING: Move(1,2,3); the blend radius of 5 mm is more than half of this motion (3.742 mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(1.87) or less around short motions.",
         "  movep(p[0.413346,0.29475,0.502999,-0.813104,3.034545,0], v=0.02, r=0.005)  # [Move [1, 2, 3] mm]",
         "  # [Set motion type to 'Joint']",
         "  # [Set motion speed to 45 mm/s or deg/s]",
+        "  # WARNING: the same warning for 2 motions in a row, lines LINES (written once, above the first)",
         "  movej(p[-0.0015,0.250125,0.6,-0.813104,3.034545,0], v=0.785398, r=0.005)  # [Move to [-1.5, 250.125, 600] mm]",
         "  # [Set motion type to 'Linear']",
         "  # [Set precision radius to 0 mm]",

@@ -1,0 +1,102 @@
+using System.Text;
+
+namespace Machina;
+
+/// <summary>
+/// The lines of a program file on their way to it, counted, with the warning comments of consecutive motions grouped: the
+/// first motion of a run that draws one warning keeps its comment just before it, as always; the motions after it in a row
+/// that draw the same warning get none, and one comment after the run names its first and last lines and how many motions
+/// it holds. A program of 10^6 short moves says so twice, not 10^6 times (a reader cannot use the copies).
+/// </summary>
+/// <remarks>
+/// Lines stream straight to the file (nothing is held back or rewritten). The warnings themselves still reach the compile job
+/// one by one (<see cref="CompileJob.Warnings"/>).
+/// </remarks>
+internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSink
+{
+    // The run under way: its warning's kind, how many motions, the lines of its first and last motion.
+    private string? _kind;
+    private int _count;
+    private int _firstLine;
+    private int _lastLine;
+
+    // The warnings of the motion about to be written that do not continue the run.
+    private readonly List<(string Kind, string Line)> _pending = [];
+    private bool _continues;
+
+    /// <summary>Lines that reached the file so far: the next line written is number <see cref="LinesWritten"/> + 1.</summary>
+    internal int LinesWritten { get; private set; }
+
+    /// <summary>
+    /// Gives a warning comment of the motion about to be written (before <see cref="Motion"/>): <paramref name="kind"/> names
+    /// the warning (the same kind on consecutive motions makes a run), <paramref name="line"/> is the whole comment line.
+    /// </summary>
+    internal void Warn(string kind, ReadOnlySpan<char> line)
+    {
+        if (_count > 0 && kind == _kind)
+        {
+            _continues = true; // the run goes on: this copy is not written
+            return;
+        }
+        _pending.Add((kind, new string(line)));
+    }
+
+    /// <summary>A motion begins: its warnings were given with <see cref="Warn"/>; its lines follow.</summary>
+    internal void Motion()
+    {
+        if (_continues)
+        {
+            _count++;
+            // The motion's first line comes after the run's closing comment and its own other warnings, when it has them.
+            _lastLine = LinesWritten + 1 + (_pending.Count > 0 ? 1 + _pending.Count : 0);
+            _continues = false;
+            if (_pending.Count == 0)
+            {
+                return;
+            }
+        }
+        EndRun();
+        foreach ((_, string line) in _pending)
+        {
+            Write(line);
+        }
+        if (_pending.Count > 0)
+        {
+            (_kind, _count) = (_pending[0].Kind, 1);
+            _firstLine = _lastLine = LinesWritten + 1;
+            _pending.Clear();
+        }
+    }
+
+    /// <summary>Ends the run under way (also called after the last motion): a run of two motions or more gets its closing comment.</summary>
+    internal void EndRun()
+    {
+        if (_count > 1)
+        {
+            Write(new StringBuilder(128).Append(commentPrefix).Append("WARNING: the same warning for ").Append(_count.ToString(Num.Inv))
+                .Append(" motions in a row, lines ").Append(_firstLine.ToString(Num.Inv)).Append(" to ").Append(_lastLine.ToString(Num.Inv))
+                .Append(" (written once, above the first)").ToString());
+        }
+        (_kind, _count) = (null, 0);
+    }
+
+    private void Write(string line)
+    {
+        file.Add(line);
+        LinesWritten++;
+    }
+
+    internal override void Add(string line) => Write(line);
+
+    internal override void Add(StringBuilder line)
+    {
+        file.Add(line);
+        LinesWritten++;
+    }
+
+    internal override void Add(ReadOnlySpan<char> line)
+    {
+        file.Add(line);
+        LinesWritten++;
+    }
+}
