@@ -23,7 +23,7 @@ internal sealed class GCodeWriter
     private readonly ProgramOutput _output;
     private readonly bool _human;
     private readonly StringBuilder _sb = new(96);
-    private LineSink _file = null!;
+    private WarningRuns _file = null!;
     private double _extrusionOrigin;
     private double _feed = double.NaN;
     private double _highest = double.NegativeInfinity;
@@ -42,13 +42,14 @@ internal sealed class GCodeWriter
     {
         // The preamble sets the extruder position to 0 at the filament length the program starts with.
         _extrusionOrigin = _job.NewCursor().ExtrudedLength;
-        _file = _output.OpenFile(_job.ProgramName, "gcode", RobotProgram.Ascii, _compiler.CommentPrefix);
+        _file = new WarningRuns(_output.OpenFile(_job.ProgramName, "gcode", RobotProgram.Ascii, _compiler.CommentPrefix), "; ");
         _file.AddRange(_compiler.Header(_job));
         _file.Add("");
         _file.AddRange(_flavor.Preamble);
         _file.AddRange(_job.CustomDeclarations);
         _file.Add("");
         _job.Replay(EmitAction);
+        _file.EndRun();
     }
 
     private void EmitAction(RobotAction action, RobotCursor c)
@@ -199,9 +200,10 @@ internal sealed class GCodeWriter
         bool extrude = c.IsExtruding;
         if (extrude && c.LastPathLength is null)
         {
-            Warning(action, "this motion does not extrude: its length is unknown because the position before it was unknown.");
+            MotionWarning(action, "unknown length", "this motion does not extrude: its length is unknown because the position before it was unknown.");
             extrude = false;
         }
+        _file.Motion();
         double? e = extrude ? ExtruderPosition(c.PrevExtrudedLength, c.ExtrudedLength) : null;
         Motion(extrude ? "G1" : _flavor.TravelCode, position, e, c.Speed, action);
     }
@@ -215,6 +217,7 @@ internal sealed class GCodeWriter
             return;
         }
         WarnIfTurned(action, c);
+        _file.Motion();
         bool extrude = c.IsExtruding;
         string code = extrude ? "G1" : _flavor.TravelCode;
         double before = c.PrevExtrudedLength, total = c.ExtrudedLength - before;
@@ -399,7 +402,7 @@ internal sealed class GCodeWriter
     {
         if (c.PrevRotation is Rotation before && c.Rotation is Rotation after && !after.IsSimilar(before, 1e-6))
         {
-            Warning(action, "a 3D printer cannot turn its tool; the change of orientation is ignored.");
+            MotionWarning(action, "turned", "a 3D printer cannot turn its tool; the change of orientation is ignored.");
         }
     }
 
@@ -420,6 +423,13 @@ internal sealed class GCodeWriter
     {
         _job.Warn(action, reason);
         _file.Add("; WARNING: " + reason);
+    }
+
+    /// <summary>A warning of the motion about to be written: motions in a row with the same <paramref name="kind"/> share its comment (<see cref="WarningRuns"/>).</summary>
+    private void MotionWarning(RobotAction action, string kind, string reason)
+    {
+        _job.Warn(action, reason);
+        _file.Warn(kind, "; WARNING: " + reason);
     }
 
     private void NotApplicable(RobotAction action, string reason)

@@ -341,6 +341,28 @@ public class GCodeCompilerTests
     }
 
     [Fact]
+    public void Compile_TurnsInARow_OneWarningAboveAndOneAfterTheRun()
+    {
+        var bot = NewBot(RobotType.ZMORPH);
+        bot.MoveTo(0, 0, 10);
+        bot.TransformTo(5, 0, 10, 0, 1, 0, 1, 0, 0);
+        bot.TransformTo(6, 0, 10, 1, 0, 0, 0, 1, 0);
+        bot.TransformTo(7, 0, 10, 0, 1, 0, 1, 0, 0);
+        bot.MoveTo(8, 0, 10);
+
+        RobotProgram program = Compile(bot, RobotType.ZMORPH);
+        var file = program.Files[0].Lines.ToList();
+        int first = file.IndexOf("G1 X5 Y0 Z10") + 1;
+
+        Assert.Equal(
+            ["G1 F1200", "G1 X0 Y0 Z10", "; WARNING: a 3D printer cannot turn its tool; the change of orientation is ignored.", "G1 X5 Y0 Z10",
+             "G1 X6 Y0 Z10", "G1 X7 Y0 Z10", $"; WARNING: the same warning for 3 motions in a row, lines {first} to {first + 2} (written once, above the first)",
+             "G1 X8 Y0 Z10"],
+            Body(bot, RobotType.ZMORPH));
+        Assert.Equal(3, program.Warnings.Count); // the program's warnings keep one per motion
+    }
+
+    [Fact]
     public void Compile_UserText_CannotBreakOutOfMessagesOrComments()
     {
         foreach (RobotType brand in new[] { RobotType.ZMORPH, RobotType.MARLIN })
