@@ -44,10 +44,6 @@ internal static class DifferentialSuite
                     string verb = result.Verb ?? "?";
                     refusedVerbs[verb] = refusedVerbs.GetValueOrDefault(verb) + 1;
                 }
-                if (result.Verdict == DifferentialVerdict.Coarse && counts[result.Verdict] <= 3)
-                {
-                    output.WriteLine($"  COARSE {brand} {name}: {result.Detail}");
-                }
                 if (result.Verdict == DifferentialVerdict.Disagreed)
                 {
                     disagreed = true;
@@ -56,7 +52,7 @@ internal static class DifferentialSuite
             }
             int total = counts.Values.Sum();
             output.WriteLine($"{brand}: {total} programs in {clock.Elapsed.TotalSeconds:0} s: " +
-                $"{counts.GetValueOrDefault(DifferentialVerdict.Finished)} agreed to the end, {counts.GetValueOrDefault(DifferentialVerdict.Coarse)} agreed within the wire's resolution only, {counts.GetValueOrDefault(DifferentialVerdict.Stopped)} agreed stopped by the controller, " +
+                $"{counts.GetValueOrDefault(DifferentialVerdict.Finished)} agreed to the end, {counts.GetValueOrDefault(DifferentialVerdict.Stopped)} agreed stopped by the controller, " +
                 $"{counts.GetValueOrDefault(DifferentialVerdict.Unreachable)} agreed unreachable (pre-check), {counts.GetValueOrDefault(DifferentialVerdict.Refused)} refused by the pre-check, " +
                 $"{counts.GetValueOrDefault(DifferentialVerdict.Disagreed)} disagreements.");
             if (refusedVerbs.Count > 0)

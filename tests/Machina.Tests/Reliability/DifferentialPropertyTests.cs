@@ -84,7 +84,7 @@ public class DifferentialPropertyTests
             verdicts.Add(result.Verdict);
         }
         // Most random programs run to their end on both sides: the property is about programs that move.
-        Assert.True(verdicts.Count(v => v is DifferentialVerdict.Finished or DifferentialVerdict.Coarse) >= RandomPrograms / 3,
+        Assert.True(verdicts.Count(v => v is DifferentialVerdict.Finished) >= RandomPrograms / 3,
             $"{brand}: {string.Join(", ", verdicts.GroupBy(v => v).Select(g => $"{g.Key} {g.Count()}"))}");
     }
 
@@ -110,8 +110,8 @@ public class DifferentialPropertyTests
 
     private static void AssertAgree(string brand, string what, DifferentialCheck.Result result)
     {
-        // UR's wire carries 0.1 mm and 1e-4 rad (docs/protocol-ur.md): there, a difference within it is the protocol's, not a drift.
-        bool agreed = result.Verdict != DifferentialVerdict.Disagreed && (result.Verdict != DifferentialVerdict.Coarse || brand == "UR");
+        // Every brand to 0.01 mm and 0.01°: UR's wire carries 0.001 mm and 1e-6 rad since driver 3.0 (docs/protocol-ur.md).
+        bool agreed = result.Verdict != DifferentialVerdict.Disagreed;
         Assert.True(agreed, $"{brand} {what}: {result.Verdict}: {result.Detail}");
         if (result.Verdict is DifferentialVerdict.Refused or DifferentialVerdict.Unreachable)
         {
