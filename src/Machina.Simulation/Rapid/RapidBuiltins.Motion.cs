@@ -84,6 +84,7 @@ internal static partial class RapidBuiltins
                 }
                 Joints viaJoints = arm.Solve(middle, near);
                 joints = arm.Solve(goal, viaJoints);
+                RapidCircle.RequireReachable(arm, arc, near);
                 path = arc.LengthMm;
             }
             else

@@ -88,6 +88,24 @@ public class DifferentialPropertyTests
             $"{brand}: {string.Join(", ", verdicts.GroupBy(v => v).Select(g => $"{g.Key} {g.Count()}"))}");
     }
 
+    /// <summary>
+    /// The last ABB disagreement of the benchmark (seed 1001871): a relative arc whose CirPoint lies behind its start sweeps a circle
+    /// that leaves the IRB 120's reach. The pre-check refuses it before anything moves; the compiled program now stops at that arc
+    /// too (the RAPID twin plans the circle, RapidCircle), where before it ran to its end.
+    /// </summary>
+    [Fact]
+    public async Task AbbSeed1001871_ArcLeavingTheReach_BothSidesStop()
+    {
+        string program = DifferentialPrograms.Random(RobotType.ABB, 1001871);
+
+        DifferentialCheck.Result result = await DifferentialCheck.RunAsync(RobotType.ABB, program, CancellationToken.None);
+
+        Assert.Equal(DifferentialVerdict.Unreachable, result.Verdict);
+        Assert.StartsWith("action 5 (ArcMotion(7.5,-10.5,1,-13,17,0);)", result.Detail, StringComparison.Ordinal);
+        Assert.Contains("offline: 50050 Position outside reach: ", result.Detail, StringComparison.Ordinal);
+        Assert.Empty(result.Online!.Steps);
+    }
+
     /// <summary>The differential check tells a drift apart: a motion 0.02 mm off, or an output set differently, is a disagreement.</summary>
     [Fact]
     public void Compare_ReportsAPoseOffByMoreThanTheTolerance_AndAnOutputThatDiffers()

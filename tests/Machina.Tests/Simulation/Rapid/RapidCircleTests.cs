@@ -66,6 +66,33 @@ public class RapidCircleTests
         Assert.True(twin.Arm.Tcp.Position.IsSimilar(start.Position + new Vector(-100, 100, 0), 1e-6), twin.Arm.Tcp.ToString());
     }
 
+    /// <summary>
+    /// ABB seed 1001871's fifth action: from (329, 21, 510) through a CirPoint behind the start (175° from the ToPoint seen from the
+    /// start) to (316, 38, 510), a circle of about 1 m across that leaves the IRB 120's reach. The controller plans the circle and
+    /// stops at its start with 50050; before, out of real time, the twin checked the CirPoint and the ToPoint only and ran it.
+    /// </summary>
+    [Fact]
+    public void MoveC_CircleLeavingTheReachBetweenItsPoints_StopsWithPositionOutsideReach_BeforeTheArmMoves()
+    {
+        var twin = new RapidTwinController(new RapidTwinOptions { Model = RobotModels.Get("IRB 120"), Acceleration = 1.2 });
+        twin.Load(("T.mod", """
+            MODULE T
+              CONST speeddata s100 := [100, 500, 5000, 1000];
+              PROC main()
+                MoveL [[329, 21, 510], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], s100, fine, tool0;
+                MoveC [[336.5, 10.5, 511], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], [[316, 38, 510], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], s100, fine, tool0;
+              ENDPROC
+            ENDMODULE
+            """));
+
+        Assert.Equal(RapidProgramState.Failed, twin.Run());
+
+        Assert.StartsWith("50050 Position outside reach: ", twin.Error, StringComparison.Ordinal);
+        Assert.EndsWith("(line 5, task T_ROB1)", twin.Error, StringComparison.Ordinal);
+        Assert.True(twin.Arm.Tcp.Position.IsSimilar(new Vector(329, 21, 510), 1e-6), twin.Arm.Tcp.ToString());
+        Assert.Equal(["MoveL"], twin.Arm.Trace.Select(t => t.Text));
+    }
+
     [Fact]
     public void AngleDegrees_SeenFromTheStart()
     {
