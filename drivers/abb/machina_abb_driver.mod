@@ -4,7 +4,7 @@ MODULE Machina_Driver
     ! after each one. A request that cannot run is never acknowledged: "$26 id code;" reports it and the program stops. Protocol: docs/protocol-abb.md in the Machina repository. Placeholders are filled by Machina.
 
     CONST string DRIVER_VERSION_MAJOR := "1";
-    CONST string DRIVER_VERSION_MINOR := "6";
+    CONST string DRIVER_VERSION_MINOR := "7";
     CONST string DRIVER_VERSION_PATCH := "0";
 
     PERS string SERVER_IP := "{{HOSTNAME}}";

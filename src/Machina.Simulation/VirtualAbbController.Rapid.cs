@@ -83,7 +83,7 @@ public sealed partial class VirtualAbbController
         var lines = module.Split('\n').Where(line => version >= new Version(1, 6) || !line.Contains("\"$25 \"", StringComparison.Ordinal));
         return string.Join('\n', lines)
             .Replace("DRIVER_VERSION_MAJOR := \"1\"", $"DRIVER_VERSION_MAJOR := \"{version.Major}\"", StringComparison.Ordinal)
-            .Replace("DRIVER_VERSION_MINOR := \"6\"", $"DRIVER_VERSION_MINOR := \"{version.Minor}\"", StringComparison.Ordinal)
+            .Replace("DRIVER_VERSION_MINOR := \"7\"", $"DRIVER_VERSION_MINOR := \"{version.Minor}\"", StringComparison.Ordinal)
             .Replace("DRIVER_VERSION_PATCH := \"0\"", $"DRIVER_VERSION_PATCH := \"{Math.Max(0, version.Build)}\"", StringComparison.Ordinal);
     }
 

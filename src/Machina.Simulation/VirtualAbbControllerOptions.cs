@@ -17,13 +17,13 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
     public TimeSpan MonitorPeriod { get; init; } = TimeSpan.FromMilliseconds(20);
 
     /// <summary>
-    /// Version of the RAPID driver the controller runs. Default 1.6.0, the shipped driver; an older 1.x runs it as that version
+    /// Version of the RAPID driver the controller runs. Default 1.7.0, the shipped driver; an older 1.x runs it as that version
     /// spoke: its version in the handshake and, below 1.6, no progress report (<c>$25</c>). Newer versions are refused.
     /// </summary>
     public Version DriverVersion { get; init; } = ShippedDriverVersion;
 
     /// <summary>The version of the driver in drivers/abb (its DRIVER_VERSION constants).</summary>
-    internal static Version ShippedDriverVersion { get; } = new(1, 6, 0);
+    internal static Version ShippedDriverVersion { get; } = new(1, 7, 0);
 
     /// <summary>
     /// Always true: the controller runs Machina's RAPID driver and monitor (drivers/abb) on a RAPID interpreter, in two tasks, as

@@ -56,7 +56,7 @@ public sealed partial class VirtualKukaController
         twin.AddEkiConfiguration(DriverChannel, Fill(DriverChannel + ".xml", Port));
         twin.AddEkiConfiguration(MonitorChannel, Fill(MonitorChannel + ".xml", MonitorPort));
         twin.Load([.. new[] { "machina_kuka_driver.src", "machina_kuka_driver.dat", "machina_kuka_monitor.src", "machina_kuka_monitor.dat" }
-            .Select(name => (name, Fill(name, Port)))]);
+            .Select(name => (name, AsDriverVersion(Fill(name, Port), _options.DriverVersion)))]);
         // The monitor's first rate, as if its data list had been edited before loading (the host sends its own with MON).
         twin.Modules[MonitorChannel].Data["mon_ms"].Value = (int)Math.Clamp(_options.MonitorPeriod.TotalMilliseconds, 1, 3_600_000);
         twin.Pendant.Logged += line =>

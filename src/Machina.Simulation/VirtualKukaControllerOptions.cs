@@ -26,8 +26,14 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
     /// <summary>Time between two pose reports on the monitor port until the host asks for another. Default 20 ms (50 Hz).</summary>
     public TimeSpan MonitorPeriod { get; init; } = TimeSpan.FromMilliseconds(20);
 
-    /// <summary>Driver version sent in the state (<c>VR</c>): 2.0, the shipped KRL driver, the only one the controller runs (kept for source compatibility).</summary>
-    public Version DriverVersion { get; init; } = new(2, 0);
+    /// <summary>
+    /// Driver version sent in the state (<c>VR</c>): by default 2.1, the shipped KRL driver. An older 2.x runs the shipped driver
+    /// reporting that version, as an installed older driver would greet a host (2.0 ran no CIRC).
+    /// </summary>
+    public Version DriverVersion { get; init; } = ShippedDriverVersion;
+
+    /// <summary>The version of the driver in drivers/kuka (its <c>S/@VR</c>).</summary>
+    internal static Version ShippedDriverVersion { get; } = new(2, 1);
 
     /// <summary>How acknowledgements are written. Default: one write each.</summary>
     public AcknowledgementWrites AcknowledgementWrites { get; init; } = AcknowledgementWrites.Whole;
@@ -54,9 +60,9 @@ public sealed record VirtualKukaControllerOptions : VirtualControllerOptions
         {
             throw new ArgumentException("The virtual KUKA runs only Machina's KRL driver (drivers/kuka) on its KRL interpreter; the C# imitation of the driver (RunsKrl = false) was removed.", nameof(RunsKrl));
         }
-        if (DriverVersion != new Version(2, 0))
+        if (DriverVersion.Major != 2 || DriverVersion > ShippedDriverVersion)
         {
-            throw new ArgumentException($"The virtual KUKA runs the shipped KRL driver, version 2.0, not {DriverVersion}.", nameof(DriverVersion));
+            throw new ArgumentException($"The virtual KUKA runs the shipped KRL driver, version {ShippedDriverVersion}, or an older 2.x as it greeted a host, not {DriverVersion}.", nameof(DriverVersion));
         }
     }
 }

@@ -78,8 +78,13 @@ internal static partial class RapidBuiltins
             {
                 Pose middle = wobj * RapidGeometry.ToPose(via, call.Line);
                 arc = TwinArc.Through(start, middle.Position, goal, TwinArcOrientation.PathRelative) ?? throw CircleError(call);
+                if (RapidCircle.Uncertain(call, start.Position, middle.Position, goal.Position) is RapidRuntimeException uncertain)
+                {
+                    throw uncertain;
+                }
                 Joints viaJoints = arm.Solve(middle, near);
                 joints = arm.Solve(goal, viaJoints);
+                RapidCircle.RequireReachable(arm, arc, near);
                 path = arc.LengthMm;
             }
             else

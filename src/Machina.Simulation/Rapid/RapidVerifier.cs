@@ -56,12 +56,18 @@ internal static class RapidVerifier
         _ => null,
     };
 
-    /// <summary>The named signals the actions set (numbered pins do not exist on an ABB controller and are not compiled).</summary>
-    private static IEnumerable<(string Name, string Type)> SignalsOf(List<RobotAction> actions) => actions
+    /// <summary>
+    /// The named signals the actions set, wait for or read, as the controller's IO configuration must declare them for the compiled
+    /// program to load: outputs, and the inputs of WaitForDigital, ReadDigital and ReadAnalog (issue 46; numbered pins do not exist
+    /// on an ABB controller and are not compiled). The inputs read 0 on the twin until something sets them.
+    /// </summary>
+    internal static IEnumerable<(string Name, string Type)> SignalsOf(IEnumerable<RobotAction> actions) => actions
         .Select(a => a switch
         {
             ActionIODigital d when !d.IsDigit => (d.PinName, "signaldo"),
             ActionIOAnalog an when !an.IsDigit => (an.PinName, "signalao"),
+            ActionWaitDigital w when !w.IsDigit => (w.PinName, "signaldi"),
+            ActionReadInput r when !r.IsDigit => (r.PinName, r.IsAnalog ? "signalai" : "signaldi"),
             _ => ((string, string)?)null,
         })
         .OfType<(string, string)>()

@@ -12,12 +12,6 @@ internal enum DifferentialVerdict
     /// <summary>The controller stopped both runs after the same steps (an unreachable target, a joint limit).</summary>
     Stopped,
 
-    /// <summary>
-    /// Both ended the same way through the same outputs, but a pose or joint differs by more than 0.01 mm or 0.01° and no more
-    /// than the driver's wire carries (UR: 0.1 mm and 1e-4 rad, docs/protocol-ur.md): a difference the protocol makes, counted apart.
-    /// </summary>
-    Coarse,
-
     /// <summary>The online pre-check found a target out of reach before anything moved, and the compiled program stopped on the twin.</summary>
     Unreachable,
 
@@ -40,13 +34,6 @@ internal static class DifferentialCheck
 
     /// <summary>Largest orientation or joint difference accepted between the two runs, degrees.</summary>
     internal const double AngleToleranceDegrees = 0.01;
-
-    /// <summary>
-    /// How far apart the runs may be on a brand whose driver's wire is coarser than the compiled program (UR: positions in 0.1 mm,
-    /// angles in 1e-4 rad, so a joint target is off by up to 0.003° and the TCP by up to 0.3 mm at full reach); null for ABB and KUKA,
-    /// whose drivers carry what the compiled program does.
-    /// </summary>
-    internal static (double Mm, double Degrees)? WireResolution(RobotType brand) => brand == RobotType.UR ? (0.3, 0.05) : null;
 
     /// <summary>One program's outcome: the verdict, and for a disagreement or refusal what happened.</summary>
     internal sealed record Result(DifferentialVerdict Verdict, string Detail, TwinRun? Offline, TwinRun? Online)
@@ -94,8 +81,8 @@ internal static class DifferentialCheck
         }
         if (FirstDifference(offline.Steps, online.Steps, (PositionToleranceMm, AngleToleranceDegrees)) is string difference)
         {
-            bool coarse = WireResolution(brand) is { } wire && FirstDifference(offline.Steps, online.Steps, wire) is null;
-            return new Result(coarse ? DifferentialVerdict.Coarse : DifferentialVerdict.Disagreed, difference, offline, online);
+            // Every brand to 0.01 mm and 0.01°: UR's driver carries 0.001 mm and 1e-6 rad since 3.0 (its 0.1 mm and 1e-4 rad were counted apart before).
+            return new Result(DifferentialVerdict.Disagreed, difference, offline, online);
         }
         return offline.End == TwinRunEnd.Finished
             ? new Result(DifferentialVerdict.Finished, "", offline, online)

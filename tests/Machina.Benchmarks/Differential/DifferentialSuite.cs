@@ -23,6 +23,7 @@ internal static class DifferentialSuite
         {
             var counts = new Dictionary<DifferentialVerdict, int>();
             var refusedVerbs = new Dictionary<string, int>();
+            var stopReasons = new Dictionary<string, (int Count, string First)>();
             var clock = Stopwatch.StartNew();
             IEnumerable<(string Name, string Text)> all = (samples is null ? [] : Directory.GetFiles(samples, "*.machina").Order(StringComparer.Ordinal)
                     .Select(f => (Path.GetFileName(f), File.ReadAllText(f))))
@@ -44,9 +45,11 @@ internal static class DifferentialSuite
                     string verb = result.Verb ?? "?";
                     refusedVerbs[verb] = refusedVerbs.GetValueOrDefault(verb) + 1;
                 }
-                if (result.Verdict == DifferentialVerdict.Coarse && counts[result.Verdict] <= 3)
+                if (result.Verdict == DifferentialVerdict.Stopped && result.Offline?.Why is string why)
                 {
-                    output.WriteLine($"  COARSE {brand} {name}: {result.Detail}");
+                    string reason = ReasonOf(why);
+                    (int count, string first) = stopReasons.GetValueOrDefault(reason, (0, name));
+                    stopReasons[reason] = (count + 1, first);
                 }
                 if (result.Verdict == DifferentialVerdict.Disagreed)
                 {
@@ -56,16 +59,27 @@ internal static class DifferentialSuite
             }
             int total = counts.Values.Sum();
             output.WriteLine($"{brand}: {total} programs in {clock.Elapsed.TotalSeconds:0} s: " +
-                $"{counts.GetValueOrDefault(DifferentialVerdict.Finished)} agreed to the end, {counts.GetValueOrDefault(DifferentialVerdict.Coarse)} agreed within the wire's resolution only, {counts.GetValueOrDefault(DifferentialVerdict.Stopped)} agreed stopped by the controller, " +
+                $"{counts.GetValueOrDefault(DifferentialVerdict.Finished)} agreed to the end, {counts.GetValueOrDefault(DifferentialVerdict.Stopped)} agreed stopped by the controller, " +
                 $"{counts.GetValueOrDefault(DifferentialVerdict.Unreachable)} agreed unreachable (pre-check), {counts.GetValueOrDefault(DifferentialVerdict.Refused)} refused by the pre-check, " +
                 $"{counts.GetValueOrDefault(DifferentialVerdict.Disagreed)} disagreements.");
             if (refusedVerbs.Count > 0)
             {
                 output.WriteLine($"  refused verbs: {string.Join(", ", refusedVerbs.OrderByDescending(p => p.Value).Select(p => $"{p.Key} {p.Value}"))}");
             }
+            if (stopReasons.Count > 0)
+            {
+                output.WriteLine($"  stopped by: {string.Join(", ", stopReasons.OrderByDescending(p => p.Value.Count).Select(p => $"{p.Key} {p.Value.Count} (first: {p.Value.First})"))}");
+            }
             output.Flush();
         }
         return disagreed ? 1 : 0;
+    }
+
+    /// <summary>What stopped a compiled program, without its details: the controller's words up to the first colon or parenthesis.</summary>
+    private static string ReasonOf(string why)
+    {
+        int end = why.IndexOfAny([':', '(']);
+        return (end > 0 ? why[..end] : why).Trim();
     }
 
     /// <summary>The program of <paramref name="seed"/> for each selected brand, its verdict and both runs' steps.</summary>

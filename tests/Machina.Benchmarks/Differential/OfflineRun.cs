@@ -50,19 +50,10 @@ internal static class OfflineRun
         return Ended(state == UrProgramState.Finished, twin.Error, twin.Arm.Trace);
     }
 
-    /// <summary>
-    /// The RAPID twin with the virtual ABB's IO configuration (DO_1…DO_16, DI_1…DI_16, AO_1…AO_4, AI_1…AI_4), so both runs have the
-    /// same signals, and the other outputs the program sets, as <c>machina verify</c> configures them. (verify declares only
-    /// outputs: a compiled program that waits for or reads a named input stops at load there, "'DI_1' is unknown".)
-    /// </summary>
+    /// <summary>The RAPID twin with the signals the program sets, waits for and reads declared, as <c>machina verify</c> declares them.</summary>
     private static TwinRun Rapid(List<(string Name, string Text)> modules, IReadOnlyList<RobotAction> actions, RobotModel model, Joints start, CancellationToken cancellation)
     {
-        IEnumerable<(string, string)> signals = Machina.Simulation.VirtualAbbController.Signals.Concat(actions.Select(a => a switch
-        {
-            ActionIODigital d when !d.IsDigit => (d.PinName, "signaldo"),
-            ActionIOAnalog an when !an.IsDigit => (an.PinName, "signalao"),
-            _ => ((string, string)?)null,
-        }).OfType<(string, string)>()).DistinctBy(s => s.Item1, StringComparer.OrdinalIgnoreCase);
+        IEnumerable<(string, string)> signals = RapidVerifier.SignalsOf(actions);
         var twin = new RapidTwinController(new RapidTwinOptions { Model = model, StartJoints = start, Signals = [.. signals] });
         try
         {

@@ -54,7 +54,7 @@ internal sealed class FakeAbbController : IDisposable
         {
             using Socket client = _listener.AcceptSocket();
             client.NoDelay = true;
-            client.Send(Encoding.ASCII.GetBytes("$20 1 6 0;$21 374 0 630 0 0 1 0;$22 0 0 0 0 90 0;$23 9E9 9E9 9E9 9E9 9E9 9E9;$25 0 0;"));
+            client.Send(Encoding.ASCII.GetBytes("$20 1 7 0;$21 374 0 630 0 0 1 0;$22 0 0 0 0 90 0;$23 9E9 9E9 9E9 9E9 9E9 9E9;$25 0 0;"));
             var buffer = new byte[1 << 16];
             var request = new StringBuilder();
             var acks = new StringBuilder();

@@ -37,7 +37,7 @@ public sealed class SimActivityTests
         Assert.Contains($"Virtual UR controller listening on 127.0.0.1:{port} (script port; RTDE on {port + 1}, dashboard on {port + 2})", lines[0], StringComparison.Ordinal);
         Assert.DoesNotContain("monitor on", result.Stdout, StringComparison.Ordinal);
         // The driver's own textmsg, as the URScript twin runs it (a real UR shows it in its log).
-        Assert.Contains(lines, l => l.StartsWith("  pendant: Machina driver 2.0.0 connected to ", StringComparison.Ordinal));
+        Assert.Contains(lines, l => l.StartsWith("  pendant: Machina driver 3.0.0 connected to ", StringComparison.Ordinal));
         Assert.DoesNotContain(lines, l => l.Contains("def machina_ur_driver", StringComparison.Ordinal) || l.Contains("#1 received", StringComparison.Ordinal));
         string stopping = lines.Single(l => l.StartsWith("Stopping: ", StringComparison.Ordinal));
         int received = int.Parse(stopping["Stopping: ".Length..].Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
@@ -47,7 +47,7 @@ public sealed class SimActivityTests
         string lastExecuted = lines.Last(l => l.StartsWith("  executed  ", StringComparison.Ordinal));
         Assert.Contains($"the tool is now at {state.Position} mm", lastExecuted, StringComparison.Ordinal);
         Assert.Contains("  output    digital 1 on", lines);
-        Assert.Contains(lines, l => l.StartsWith("  received  MoveL           ", StringComparison.Ordinal) && l.EndsWith(" 1 3000 1000 3500 0 31416 0", StringComparison.Ordinal));
+        Assert.Contains(lines, l => l.StartsWith("  received  MoveL           ", StringComparison.Ordinal) && l.EndsWith(" 1 300000 100000 350000 0 3141593 0", StringComparison.Ordinal));
         Assert.Contains(lines, l => l.StartsWith("  received  SetDigitalOut   ", StringComparison.Ordinal));
         Assert.True(Array.IndexOf(lines, "  output    digital 1 on") < Array.IndexOf(lines, stopping));
     }

@@ -12,9 +12,6 @@ public class AbbReconnectTests : ReconnectContract<VirtualAbbController, Virtual
 
     protected override Task<VirtualAbbController> StartAsync() => StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true });
 
-    protected override Task<VirtualAbbController> StartWithoutProgressAsync() =>
-        StartControllerAsync(new VirtualAbbControllerOptions { InstantExecution = true, DriverVersion = new Version(1, 5, 0), Model = null });
-
     /// <summary>
     /// The RAPID driver accepts a client only once it ran everything it read: while it is held at the owner's first acknowledgement,
     /// a stranger waits in the listen queue and never gets a handshake (its robot's clock, moved here, ends the wait).

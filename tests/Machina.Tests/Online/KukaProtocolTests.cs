@@ -230,7 +230,7 @@ public class KukaProtocolTests
     {
         Rotation down = Rotation.FromAxisAngle(0, 1, 0, 90);
         string xml = KukaMessages.State(new Joints(0, -90, 90, 0, 0, 0), new Vector(455, 0, 935), down, 7, 9);
-        Assert.Equal("<S VR=\"2.0\" A1=\"0\" A2=\"-90\" A3=\"90\" A4=\"0\" A5=\"0\" A6=\"0\" X=\"455\" Y=\"0\" Z=\"935\" A=\"0\" B=\"90\" C=\"0\" Executed=\"7\" Received=\"9\"></S>", xml);
+        Assert.Equal("<S VR=\"2.1\" A1=\"0\" A2=\"-90\" A3=\"90\" A4=\"0\" A5=\"0\" A6=\"0\" X=\"455\" Y=\"0\" Z=\"935\" A=\"0\" B=\"90\" C=\"0\" Executed=\"7\" Received=\"9\"></S>", xml);
         var reader = new KukaXmlReader();
         reader.Append(Encoding.ASCII.GetBytes(xml));
         KukaState state = KukaState.Parse(Assert.Single(ReadAll(reader)));

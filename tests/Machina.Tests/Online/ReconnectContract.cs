@@ -26,9 +26,6 @@ public abstract class ReconnectContract<TController, TState>
     /// <summary>A virtual controller with instant execution and the current driver, started on loopback.</summary>
     protected abstract Task<TController> StartAsync();
 
-    /// <summary>A virtual controller with instant execution and a driver from before the progress report.</summary>
-    protected abstract Task<TController> StartWithoutProgressAsync();
-
     /// <summary>A robot of this brand connected to <paramref name="controller"/>, set up by <paramref name="configure"/> first.</summary>
     protected abstract Task<Robot> ConnectAsync(TController controller, Action<Robot> configure);
 
@@ -69,20 +66,6 @@ public abstract class ReconnectContract<TController, TState>
         // Before the progress report (ABB driver 1.6) these actions ran twice and the rest of the program was shifted by
         // their motion; the original's KUKA driver sent its state once per program run, so a reconnection timed out.
         AssertEachOnce(controller, executed);
-        await bot.DisconnectAsync();
-    }
-
-    [Fact]
-    public async Task Reconnect_DriverWithoutProgress_SendsUnconfirmedAgainFromTheReportedPose()
-    {
-        await using var controller = await StartWithoutProgressAsync();
-        var (bot, executed, released) = await RunWhileDisconnectedAndReconnectAsync(controller);
-
-        // The documented limit of old drivers: the host cannot know what ran, so it sends it again.
-        int ranTwice = released - 3;
-        Assert.Equal(Enumerable.Range(1, 20), executed);
-        Assert.Equal(20 + ranTwice, controller.RequestsExecuted);
-        AssertNear(new Vector(400, 0, 590 + 10 * ranTwice), controller.State.Position);
         await bot.DisconnectAsync();
     }
 

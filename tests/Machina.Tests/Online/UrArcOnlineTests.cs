@@ -38,14 +38,14 @@ public class UrArcOnlineTests
         var values = new int[UrActionEncoder.MaxValues];
         int count = UrActionEncoder.Encode(arc, cursor, values);
 
-        // Tool down: the rotation vector (0, π, 0) rad = (0, 31416, 0) in 1e-4 rad, at the via point and at the target.
-        int[] expected = [2, 21, 3750, 0, 3601, 0, 31416, 0, 3000, 1000, 3000, 0, 31416, 0];
+        // Tool down: the rotation vector (0, π, 0) rad = (0, 3141593, 0) in 1e-6 rad, at the via point and at the target.
+        int[] expected = [2, 21, 375_000, 0, 360_100, 0, 3_141_593, 0, 300_000, 100_000, 300_000, 0, 3_141_593, 0];
         Assert.Equal(expected, values[..count]);
         var bytes = new byte[count * 4];
         Assert.Equal(56, UrWire.Write(values.AsSpan(0, count), bytes));
-        Assert.Equal([0, 0, 0, 2, 0, 0, 0, 21, 0, 0, 0x0E, 0xA6], bytes[..12]);
-        Assert.Equal(3601, BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(16)));
-        Assert.Equal(31416, BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(48)));
+        Assert.Equal([0, 0, 0, 2, 0, 0, 0, 21, 0, 0x05, 0xB8, 0xD8], bytes[..12]);
+        Assert.Equal(360_100, BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(16)));
+        Assert.Equal(3_141_593, BinaryPrimitives.ReadInt32BigEndian(bytes.AsSpan(48)));
         Assert.Null(new UrOnline().WhyCannotStream(arc));
     }
 

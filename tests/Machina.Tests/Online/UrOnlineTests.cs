@@ -30,16 +30,16 @@ public class UrOnlineTests
         Assert.Equal([1, 2, 3, 4, 5, 6, 7], released);
         Assert.Equal([1, 2, 3, 4, 5, 6, 7], executed.Select(e => e.LastAction.Id));
         // Message has nothing to run on a UR: it completes in order without being sent.
-        Assert.Equal(["2 15 1000", "3 1 4000 3000 5000"], controller.ReceivedRequests.Take(2).Select(r => string.Join(' ', r.Split(' ').Take(5))));
+        Assert.Equal(["2 15 100000", "3 1 400000 300000 500000"], controller.ReceivedRequests.Take(2).Select(r => string.Join(' ', r.Split(' ').Take(5))));
         Assert.Equal("6 9 2000", controller.ReceivedRequests[4]);
-        Assert.Equal("7 3 0 0 0 0 15708 0", controller.ReceivedRequests[5]);
+        Assert.Equal("7 3 0 0 0 0 1570796 0", controller.ReceivedRequests[5]);
         Assert.Equal(6, controller.RequestsReceived);
         Assert.Empty(controller.Errors);
         var end = controller.State;
-        // The wire carries 1e-4 rad: 90° arrives as 1.5708 rad = 90.0002°.
+        // The wire carries 1e-6 rad: 90° arrives as 1.570796 rad = 89.99998°.
         Assert.True(end.Joints.IsSimilar(new Joints(0, 0, 0, 0, 90, 0), 0.001), end.Joints.ToString());
         Assert.True(end.Pose.IsSimilar(Ur5e.Kinematics.Forward(end.Joints), 1e-6, 1e-6));
-        // The speed (100 mm/s) is the driver's own variable on the robot: its request, "2 15 1000", is checked above.
+        // The speed (100 mm/s) is the driver's own variable on the robot: its request, "2 15 100000", is checked above.
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), bot.GetExecutedState().Axes);
         await bot.DisconnectAsync();
     }

@@ -34,11 +34,11 @@ public class UrTwinOnlineTests
             await bot.FlushEventsAsync().WaitAsync(Limit);
 
             Assert.Equal([1, 2, 3, 4, 5, 6, 7], executed);
-            // The wire carries 1e-4 rad: 90° arrives as 1.5708 rad.
+            // The wire carries 1e-6 rad: 90° arrives as 1.570796 rad.
             Joints end = controller.Twin!.Arm.Joints;
             Assert.True(end.IsSimilar(new Joints(0, 0, 0, 0, 90, 0), 0.001), end.ToString());
             Assert.Equal(7.0, controller.Twin.Io.GetNumber(Machina.Simulation.UrScript.UrIoBanks.OutputIntRegisters, 24)); // the driver's own progress register
-            Assert.Contains("Machina driver 2.0.0 connected to 127.0.0.1", controller.PendantMessages);
+            Assert.Contains("Machina driver 3.0.0 connected to 127.0.0.1", controller.PendantMessages);
             Assert.True(controller.IsProgramRunning);
             Assert.Equal(2u, controller.RuntimeState);
             Assert.Equal(1, controller.ScriptsReceived);

@@ -177,26 +177,40 @@ public class UrWireDecodingTests
 
     [Theory]
     [InlineData(0.0, 0)]
-    [InlineData(1.0, 10)]
-    [InlineData(-1.0, -10)]
-    [InlineData(0.05, 1)] // 0.5 wire units round away from zero
-    [InlineData(-0.05, -1)]
-    [InlineData(0.04, 0)]
-    [InlineData(400.0, 4_000)]
-    [InlineData(-123.456, -1_235)]
-    public void Millimetres_TenthsOfAMillimetre_RoundedAwayFromZero(double mm, int wire) => Assert.Equal(wire, UrWire.Millimetres(mm));
+    [InlineData(1.0, 1_000)]
+    [InlineData(-1.0, -1_000)]
+    [InlineData(0.0005, 1)] // 0.5 wire units round away from zero
+    [InlineData(-0.0005, -1)]
+    [InlineData(0.0004, 0)]
+    [InlineData(0.01, 10)]
+    [InlineData(400.0, 400_000)]
+    [InlineData(-123.4567, -123_457)]
+    [InlineData(2_000_000.0, 2_000_000_000)] // 2 km: still within int32
+    public void Millimetres_ThousandthsOfAMillimetre_RoundedAwayFromZero(double mm, int wire) => Assert.Equal(wire, UrWire.Millimetres(mm));
 
     [Fact]
-    public void Degrees_TenThousandthsOfARadian()
+    public void Degrees_MillionthsOfARadian()
     {
-        Assert.Equal(15_708, UrWire.Degrees(90));
-        Assert.Equal(-31_416, UrWire.Degrees(-180));
+        Assert.Equal(1_570_796, UrWire.Degrees(90));
+        Assert.Equal(-3_141_593, UrWire.Degrees(-180));
         Assert.Equal(0, UrWire.Degrees(0));
-        Assert.Equal(90.0, UrWire.ToDegrees(15_708), 2);
-        Assert.Equal(-180.0, UrWire.ToDegrees(-31_416), 2);
-        Assert.Equal(15_708 / 10_000.0 * 180 / Math.PI, UrWire.ToDegrees(15_708), 12);
-        Assert.Equal(400.0, UrWire.ToMillimetres(4_000), 12);
-        Assert.Equal(-0.1, UrWire.ToMillimetres(-1), 12);
+        Assert.Equal(175, UrWire.Degrees(0.01)); // 0.01° = 174.5 µrad: the wire carries a hundredth of a degree
+        Assert.Equal(90.0, UrWire.ToDegrees(1_570_796), 4);
+        Assert.Equal(-180.0, UrWire.ToDegrees(-3_141_593), 4);
+        Assert.Equal(1_570_796 / 1_000_000.0 * 180 / Math.PI, UrWire.ToDegrees(1_570_796), 12);
+        Assert.Equal(400.0, UrWire.ToMillimetres(400_000), 12);
+        Assert.Equal(-0.001, UrWire.ToMillimetres(-1), 12);
+    }
+
+    [Fact]
+    public void Wire_EveryReachableValue_FitsInt32_AndBeyondIsRefused()
+    {
+        // Any position or speed a robot reaches (a few metres, a few m/s) and any joint angle (±6,000°) fits with room to spare.
+        Assert.Equal(-100_000_000, UrWire.Millimetres(-100_000));
+        Assert.Equal(104_719_755, UrWire.Degrees(6_000));
+        Assert.Equal(2_147_483_000, UrWire.Millimetres(2_147_483));
+        Assert.Throws<ArgumentOutOfRangeException>(() => UrWire.Millimetres(2_147_484));
+        Assert.Throws<ArgumentOutOfRangeException>(() => UrWire.Degrees(123_042));
     }
 
     [Theory]

@@ -72,7 +72,7 @@ public class ExtremeValueOnlineTests
 
     /// <summary>
     /// Values the state reaches through a relative action (or a setting) that the brand's encoding cannot carry: UR's 32-bit
-    /// integers (0.1 mm), the 32-bit floats of RAPID's num and KRL's REAL. The general bounds (1 km for targets, 1,000,000 in its
+    /// integers (0.001 mm), the 32-bit floats of RAPID's num and KRL's REAL. The general bounds (1 km for targets, 1,000,000 in its
     /// unit for a setting) now refuse them first, with the same words online and offline. Each is refused at issue time with the
     /// reason, nothing is sent, the state is unchanged, and the link then runs a normal move.
     /// </summary>

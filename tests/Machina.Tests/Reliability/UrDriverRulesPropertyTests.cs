@@ -134,11 +134,12 @@ public class UrDriverRulesPropertyTests
             || error.Contains("do not define a circle", StringComparison.Ordinal));
 
     [Theory]
-    [InlineData("SpeedTo(0.004);", "a speed of 0.004 mm/s is 0 in its driver's 0.1 mm/s steps")]
-    [InlineData("AccelerationTo(0.01);", "an acceleration of 0.01 mm/s² is 0 in its driver's 0.1 mm/s² steps")]
+    [InlineData("SpeedTo(0.0004);", "a speed of 0.0004 mm/s is 0 in its driver's 0.001 mm/s steps")]
+    [InlineData("AccelerationTo(0.0001);", "an acceleration of 0.0001 mm/s² is 0 in its driver's 0.001 mm/s² steps")]
     [InlineData("WriteDigital(2147483647, true);", "UR robots have standard digital outputs 0 to 7; output 2147483647 does not exist.")]
     [InlineData("WriteDigital(2, true, true);", "UR robots have tool digital outputs 0 to 1; output 2 does not exist.")]
     [InlineData("WriteAnalog(0, 1.5);", "UR analog outputs take a value from 0 to 1")]
+    [InlineData("AxesTo(0, -90, 130000, 0, 0, 0);", "a value is beyond its driver's 32-bit numbers (lengths and speeds up to ±2147483 mm, angles ±123041°, times 2147483 s)")]
     public void UrDriverRules_WhatTheDriverCannotRun_RefusedWithTheReason(string instruction, string reason)
     {
         Robot bot = Robot.Create("Rules", "UR");

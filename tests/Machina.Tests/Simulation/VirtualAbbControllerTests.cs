@@ -89,7 +89,7 @@ public class VirtualAbbControllerTests
         await client.ReadHandshakeAsync();
         await client.SendAsync("@3 101 1;");
         var messages = await client.ReadMessagesAsync(2);
-        Assert.Equal((AbbMessageKind.Information, "1 1.6.0"), (messages[0].Kind, messages[0].Text));
+        Assert.Equal((AbbMessageKind.Information, "1 1.7.0"), (messages[0].Kind, messages[0].Text));
         Assert.Equal(new AbbAcknowledgement(3, 101), messages[1].ToAcknowledgement());
     }
 
@@ -119,8 +119,8 @@ public class VirtualAbbControllerTests
             Assert.Throws<ArgumentException>(() => new VirtualAbbController(new VirtualAbbControllerOptions { RunsRapid = false })).Message);
         Assert.Equal("The virtual ABB's arm has no external axes (the RAPID twin reports 9E9): leave InitialExternalAxes at none. (Parameter 'InitialExternalAxes')",
             Assert.Throws<ArgumentException>(() => new VirtualAbbController(new VirtualAbbControllerOptions { InitialExternalAxes = new ExternalAxes(1800) })).Message);
-        Assert.Equal("The virtual ABB runs Machina's RAPID driver 1.6.0 or an older 1.x as it spoke, not 1.7.0. (Parameter 'DriverVersion')",
-            Assert.Throws<ArgumentException>(() => new VirtualAbbController(new VirtualAbbControllerOptions { DriverVersion = new Version(1, 7, 0) })).Message);
+        Assert.Equal("The virtual ABB runs Machina's RAPID driver 1.7.0 or an older 1.x as it spoke, not 1.8.0. (Parameter 'DriverVersion')",
+            Assert.Throws<ArgumentException>(() => new VirtualAbbController(new VirtualAbbControllerOptions { DriverVersion = new Version(1, 8, 0) })).Message);
         Assert.Throws<ArgumentException>(() => new VirtualAbbController(new VirtualAbbControllerOptions { BufferCapacity = 0 }));
     }
 }

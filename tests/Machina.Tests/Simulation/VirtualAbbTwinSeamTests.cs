@@ -20,7 +20,7 @@ public class VirtualAbbTwinSeamTests
         var messages = await client.ReadHandshakeAsync();
 
         Assert.Equal("IRB 120", controller.Twin!.Arm.Model.Name);
-        Assert.StartsWith("$20 1 6 0;", client.RawText, StringComparison.Ordinal);
+        Assert.StartsWith("$20 1 7 0;", client.RawText, StringComparison.Ordinal);
         Assert.Equal(new Joints(0, 0, 0, 0, 90, 0), messages[2].ToJoints());
         Assert.Equal(new Vector(302, 0, 558), messages[1].ToPose().Position);
         Assert.Equal(1, controller.ConnectionCount);

@@ -32,7 +32,7 @@ public class VirtualKukaControllerTests
         var imitation = Assert.Throws<ArgumentException>(() => new VirtualKukaController(new VirtualKukaControllerOptions { RunsKrl = false }));
         Assert.Equal("The virtual KUKA runs only Machina's KRL driver (drivers/kuka) on its KRL interpreter; the C# imitation of the driver (RunsKrl = false) was removed. (Parameter 'RunsKrl')", imitation.Message);
         var older = Assert.Throws<ArgumentException>(() => new VirtualKukaController(new VirtualKukaControllerOptions { DriverVersion = new Version(1, 0) }));
-        Assert.Equal("The virtual KUKA runs the shipped KRL driver, version 2.0, not 1.0. (Parameter 'DriverVersion')", older.Message);
+        Assert.Equal("The virtual KUKA runs the shipped KRL driver, version 2.1, or an older 2.x as it greeted a host, not 1.0. (Parameter 'DriverVersion')", older.Message);
     }
 
     /// <summary>The driver's quit message for <paramref name="text"/>, as the smartPAD's message window shows it (80 characters at most).</summary>

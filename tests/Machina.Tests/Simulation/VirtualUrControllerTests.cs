@@ -49,11 +49,11 @@ public class VirtualUrControllerTests
         await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(definition));
         using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
         var stream = driver.GetStream();
-        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
+        Assert.Equal(new int[] { -50, 3, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
         await WireInts.ReadAsync(stream, 14, Timeout);
         await scriptClient.GetStream().WriteAsync(Encoding.ASCII.GetBytes(call));
         // The call line belongs to the program that just started: it is neither a new program nor kept as one.
-        await WaitUntilAsync(() => controller.PendantMessages.Contains("Machina driver 2.0.0 connected to 127.0.0.1"));
+        await WaitUntilAsync(() => controller.PendantMessages.Contains("Machina driver 3.0.0 connected to 127.0.0.1"));
 
         Assert.Equal(1, controller.ScriptsReceived);
         Assert.True(controller.IsProgramRunning);
@@ -80,7 +80,7 @@ public class VirtualUrControllerTests
         var stream = link.Driver.GetStream();
         int[] greeting = await WireInts.ReadAsync(stream, 19, Timeout);
 
-        Assert.Equal(new[] { -50, 2, 0, 0, int.MinValue, -54 }, greeting[..6]);
+        Assert.Equal(new[] { -50, 3, 0, 0, int.MinValue, -54 }, greeting[..6]);
         Assert.True(controller.IsProgramRunning);
         Assert.Equal(2u, controller.RuntimeState);
         Assert.Equal(77, controller.InstanceRegister);
@@ -95,7 +95,7 @@ public class VirtualUrControllerTests
         await controller.StartAsync();
         using var link = await HostAsync(controller, port => UrDriverScript.For("127.0.0.1", port));
         var stream = link.Driver.GetStream();
-        Assert.Equal(new int[] { -50, 2, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
+        Assert.Equal(new int[] { -50, 3, 0, 0, int.MinValue }, await WireInts.ReadAsync(stream, 5, Timeout));
         await WireInts.ReadAsync(stream, 14, Timeout);
         await WireInts.WriteAsync(stream, [1, 8, 20, 2, 99]);
         Assert.Equal(new int[] { 1 }, await WireInts.ReadAsync(stream, 1, Timeout));

@@ -36,7 +36,7 @@ public class VirtualUrRuntimeErrorTests
             [id, 1, UrWire.Millimetres(p.X), UrWire.Millimetres(p.Y), UrWire.Millimetres(p.Z), UrWire.Degrees(rv.X), UrWire.Degrees(rv.Y), UrWire.Degrees(rv.Z)];
         Vector reachable = start.Position + new Vector(0, 0, -20);
 
-        await WireInts.WriteAsync(stream, [.. new[] { 1, 15, 1000 }, .. Move(2, reachable), .. Move(3, new Vector(2000, 0, 500)), .. Move(4, start.Position)]);
+        await WireInts.WriteAsync(stream, [.. new[] { 1, 15, 100_000 }, .. Move(2, reachable), .. Move(3, new Vector(2000, 0, 500)), .. Move(4, start.Position)]);
 
         Assert.Equal(new[] { 1, 2 }, await WireInts.ReadAsync(stream, 2, Timeout));
         Assert.Equal(0, await stream.ReadAsync(new byte[4]).AsTask().WaitAsync(Timeout)); // closed: 3 is never acknowledged

@@ -130,11 +130,13 @@ public class AbbMessageReaderTests
     }
 
     [Fact]
-    public void IsSupported_Versions_AcceptsSameMajorAndNewerMinor()
+    public void IsSupported_Versions_AcceptsTheShippedMinorOrNewerOfTheSameMajor()
     {
-        Assert.True(new AbbDriverVersion(1, 4, 2).IsSupported);
-        Assert.True(new AbbDriverVersion(1, 5, 0).IsSupported);
-        Assert.False(new AbbDriverVersion(1, 3, 9).IsSupported);
+        Assert.True(new AbbDriverVersion(1, 7, 0).IsSupported);
+        Assert.True(new AbbDriverVersion(1, 7, 3).IsSupported);
+        Assert.True(new AbbDriverVersion(1, 8, 0).IsSupported);
+        Assert.False(new AbbDriverVersion(1, 6, 0).IsSupported); // no request 31: an arc's through point would point the tool up
+        Assert.False(new AbbDriverVersion(1, 4, 2).IsSupported);
         Assert.False(new AbbDriverVersion(2, 0, 0).IsSupported);
     }
 

@@ -19,20 +19,20 @@ public class UrActionEncoderTests
     [Fact]
     public void Encode_MotionActions_ExactIntegers()
     {
-        // Tool down: quaternion (0, 0, 1, 0) is the rotation vector (0, π, 0) rad = (0, 31416, 0) in 1e-4 rad.
-        Assert.Equal([1, 1, 4000, 0, 5000, 0, 31416, 0], Wire(new ActionTransformation(new Vector(400, 0, 500), Rotation.FromQuaternion(0, 0, 1, 0), false, true)));
-        Assert.Equal([2, 1, 4505, 0, 5000, 0, 31416, 0], Wire(new ActionTranslation(new Vector(50.5, 0, 0), true)));
+        // Tool down: quaternion (0, 0, 1, 0) is the rotation vector (0, π, 0) rad = (0, 3141593, 0) in 1e-6 rad.
+        Assert.Equal([1, 1, 400_000, 0, 500_000, 0, 3_141_593, 0], Wire(new ActionTransformation(new Vector(400, 0, 500), Rotation.FromQuaternion(0, 0, 1, 0), false, true)));
+        Assert.Equal([2, 1, 450_500, 0, 500_000, 0, 3_141_593, 0], Wire(new ActionTranslation(new Vector(50.5, 0, 0), true)));
         Wire(new ActionMotionMode(MotionType.Joint));
-        Assert.Equal([4, 2, 4505, 0, 4500, 0, 31416, 0], Wire(new ActionTranslation(new Vector(0, 0, -50), true)));
-        Assert.Equal([5, 3, 0, -15708, 0, 0, 15708, 0], Wire(new ActionAxes(new Joints(0, -90, 0, 0, 90, 0), false)));
+        Assert.Equal([4, 2, 450_500, 0, 450_000, 0, 3_141_593, 0], Wire(new ActionTranslation(new Vector(0, 0, -50), true)));
+        Assert.Equal([5, 3, 0, -1_570_796, 0, 0, 1_570_796, 0], Wire(new ActionAxes(new Joints(0, -90, 0, 0, 90, 0), false)));
     }
 
     [Fact]
     public void Encode_Settings_ExactIntegers()
     {
-        Assert.Equal([1, 15, 1000], Wire(new ActionSpeed(100, false)));
-        Assert.Equal([2, 16, 5000], Wire(new ActionAcceleration(500, false)));
-        Assert.Equal([3, 8, 20], Wire(new ActionPrecision(2, false)));
+        Assert.Equal([1, 15, 100_000], Wire(new ActionSpeed(100, false)));
+        Assert.Equal([2, 16, 500_000], Wire(new ActionAcceleration(500, false)));
+        Assert.Equal([3, 8, 2_000], Wire(new ActionPrecision(2, false)));
         Assert.Equal([4, 9, 1500], Wire(new ActionWait(1500)));
         Assert.Empty(Wire(new ActionMessage("Hello world!")));
         Assert.Equal([6, 13, 7, 1, 0], Wire(new ActionIODigital("7", true, false)));
@@ -46,7 +46,7 @@ public class UrActionEncoderTests
         Wire(new ActionPushPop(true));
         Wire(new ActionSpeed(50, false));
         Wire(new ActionPrecision(3, false));
-        Assert.Equal([0, 15, 200, 4, 8, 50], Wire(new ActionPushPop(false)));
+        Assert.Equal([0, 15, 20_000, 4, 8, 5_000], Wire(new ActionPushPop(false)));
         Wire(new ActionPushPop(true));
         Assert.Empty(Wire(new ActionPushPop(false)));
     }

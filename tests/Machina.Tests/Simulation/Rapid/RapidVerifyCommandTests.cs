@@ -20,6 +20,24 @@ public class RapidVerifyCommandTests
         Assert.Matches(@"OK: 3 steps agree; the program runs in [0-9.]+ s\n$", result.Stdout);
     }
 
+    /// <summary>
+    /// A program that waits for and reads named inputs (issue 46): verify declares them in the twin's IO configuration as it
+    /// declares the outputs, so the compiled module loads and runs (before: "Load error: … 'DI_Part' is unknown").
+    /// </summary>
+    [Fact]
+    public async Task Verify_ProgramWithNamedInputs_DeclaresThem_AndRuns()
+    {
+        using var cli = new CliRunner();
+        cli.Write("inputs.machina", "SpeedTo(100);\nMoveTo(300, 0, 300);\nWaitForDigital(\"DI_Part\", false, 500);\nReadDigital(\"DI_Part\");\nReadAnalog(\"AI_Flow\");\nWriteDigital(\"DO_Done\", true);\nMove(0, 50, 0);\n");
+
+        CliResult result = await cli.RunAsync("verify", "inputs.machina", "--brand", "abb");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.DoesNotContain("unknown", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains(" ok   WriteDigital(\"DO_Done\",True);\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"OK: 3 steps agree; the program runs in [0-9.]+ s\n$", result.Stdout);
+    }
+
     [Fact]
     public async Task Verify_ModuleAlone_ListsItsSteps_OrRefusesAnUnknownInstructionWithItsLine()
     {

@@ -7,7 +7,7 @@ namespace Machina.Tests.Simulation.UrScript;
 
 /// <summary>
 /// Machina's URScript driver (drivers/ur, filled as for a robot) runs unchanged on the twin, against a small host written here
-/// from docs/protocol-ur.md: big-endian int32 values, 1e-4 m and 1e-4 rad per unit (not the library's UrWire).
+/// from docs/protocol-ur.md: big-endian int32 values, 1e-6 m and 1e-6 rad per unit (driver 3.0) (not the library's UrWire).
 /// </summary>
 public class UrDriverOnTwinTests
 {
@@ -27,15 +27,15 @@ public class UrDriverOnTwinTests
             using TcpClient client = await listener.AcceptTcpClientAsync(timeout.Token);
             NetworkStream stream = client.GetStream();
 
-            Assert.Equal(new[] { ResVersion, 2, 0, 0, ResEnd }, await ReadInts(stream, 5, timeout.Token));
+            Assert.Equal(new[] { ResVersion, 3, 0, 0, ResEnd }, await ReadInts(stream, 5, timeout.Token));
             int[] pose = await ReadInts(stream, 14, timeout.Token);
             Assert.Equal(ResFullPose, pose[0]);
-            Assert.Equal(new[] { 0, -15708, 15708, -15708, -15708, 0 }, pose[7..13]);
+            Assert.Equal(new[] { 0, -1_570_796, 1_570_796, -1_570_796, -1_570_796, 0 }, pose[7..13]);
             Assert.Equal(ResEnd, pose[13]);
 
             // id 1: movej to joints; id 2: movej to pose p[0.4, -0.1, 0.4, 0, pi, 0]; id 3: standard digital out 2 on.
-            await Send(stream, [1, 3, 0, -12000, 16000, -19708, -15708, 0], timeout.Token);
-            await Send(stream, [2, 2, 4000, -1000, 4000, 0, 31416, 0], timeout.Token);
+            await Send(stream, [1, 3, 0, -1_200_000, 1_600_000, -1_970_796, -1_570_796, 0], timeout.Token);
+            await Send(stream, [2, 2, 400_000, -100_000, 400_000, 0, 3_141_593, 0], timeout.Token);
             await Send(stream, [3, 13, 2, 1, 0], timeout.Token);
             int[] acks;
             try
@@ -56,7 +56,7 @@ public class UrDriverOnTwinTests
             Assert.Equal(400, tcp.Position.X, 3);
             Assert.Equal(-100, tcp.Position.Y, 3);
             Assert.Equal(400, tcp.Position.Z, 3);
-            Assert.Contains("Machina driver 2.0.0 connected to 127.0.0.1", twin.Pendant.Lines);
+            Assert.Contains("Machina driver 3.0.0 connected to 127.0.0.1", twin.Pendant.Lines);
             Assert.Equal(UrProgramState.Running, twin.State);
         }
         finally

@@ -38,19 +38,16 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     {
         long start = Time.GetTimestamp();
         DeviceHandshake handshake = await OpenDriverLinkAsync(host, port, timeout, "handshake", "the Machina driver", cancellationToken).ConfigureAwait(false);
-        CheckVersion(_version!.Value);
+        Requirement.Check(handshake.Version);
         _monitor = await OpenMonitorAsync(host, port + 1, new AbbMessageReader(),
             "Real-time monitoring is not available on this controller (no monitor task on the next port); there will be no motion updates.", cancellationToken).ConfigureAwait(false);
         return await WithRobotTypeAsync(handshake, Left(start, timeout), cancellationToken).ConfigureAwait(false);
     }
 
-    private void CheckVersion(AbbDriverVersion version)
-    {
-        if (!version.IsSupported)
-        {
-            Log.Warning($"The driver on the controller is version {version}; this Machina needs {AbbDriverVersion.MinimumSupported.Major}.x from {AbbDriverVersion.MinimumSupported}. Load the driver from GetDeviceDriverModules.");
-        }
-    }
+    /// <summary>The RAPID driver this host needs: the one it ships (drivers/abb), or a later 1.x.</summary>
+    internal static DriverRequirement Requirement { get; } = new("ABB", AbbMessageFormat.DriverVersion.ToVersion(),
+        "Install this Machina's driver with \"machina drivers abb --install --host H\", or load the modules \"machina drivers abb --host H --port P --out DIR\" writes " +
+        "(Robot.GetDeviceDriverModules) into the motion task and start it; then connect again.");
 
     /// <inheritdoc/>
     public bool Send(RobotAction action, RobotCursor releaseState)

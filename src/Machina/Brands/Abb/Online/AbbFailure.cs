@@ -13,6 +13,9 @@ internal static class AbbFailure
     /// <summary>Event 50050, "Position outside reach": a target outside the arm's working range or a joint beyond its limits.</summary>
     public const int OutsideReach = 50050;
 
+    /// <summary>Event 50063, "Circle uncertain": a MoveC whose CirPoint and ToPoint are less than 1° apart seen from its start point.</summary>
+    public const int CircleUncertain = 50063;
+
     /// <summary>The driver's own check: a move with a speed (v_tcp) of 0 or less would never end, so it is not started.</summary>
     public const int NoSpeed = 1;
 
@@ -29,6 +32,7 @@ internal static class AbbFailure
     public static string Describe(int code) => code switch
     {
         OutsideReach => "Position outside reach (event 50050): the target is outside the robot's working range or a joint would pass its limits.",
+        CircleUncertain => "Circle uncertain (event 50063): the arc's start point, through point and end are almost on one line (MoveC needs its through point and end at least 1° apart seen from the start).",
         NoSpeed => "The speed is 0: the move would never end, so the driver did not start it.",
         WaitTimedOut => "The input did not reach its value within the time limit (WaitDI \\MaxTime, RAPID error ERR_WAIT_MAXTIME); the driver program stopped.",
         StoppedByHost => "Stopped by the host (Robot.Stop): the motion stopped on its path and nothing after it ran.",

@@ -8,8 +8,8 @@ namespace Machina;
 /// </summary>
 internal static class AbbMessageFormat
 {
-    /// <summary>The version our RAPID driver module declares (protocol 1.4, with the fixes listed in docs/protocol-abb.md).</summary>
-    public static AbbDriverVersion DriverVersion => new(1, 6, 0);
+    /// <summary>The version our RAPID driver module declares (protocol 1.4, with the fixes listed in docs/protocol-abb.md; 1.7 reads request 31, an arc's through-point orientation).</summary>
+    public static AbbDriverVersion DriverVersion => new(1, 7, 0);
 
     /// <summary>The first driver version whose handshake ends with <c>$25</c> (its progress).</summary>
     public static AbbDriverVersion FirstWithProgress => new(1, 6, 0);

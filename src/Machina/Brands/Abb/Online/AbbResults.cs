@@ -6,11 +6,11 @@ internal readonly record struct AbbAcknowledgement(int Id, int Code);
 /// <summary>Version the RAPID driver reports in its handshake (<c>$20 major minor patch;</c>).</summary>
 internal readonly record struct AbbDriverVersion(int Major, int Minor, int Patch)
 {
-    /// <summary>Oldest driver protocol this host speaks.</summary>
-    public static AbbDriverVersion MinimumSupported => new(1, 4, 0);
+    /// <summary>True when the host can talk to this driver: same major version, minor at least the shipped one's (<see cref="AbbDriver.Requirement"/>; fix of bug A5).</summary>
+    public bool IsSupported => AbbDriver.Requirement.Accepts(ToVersion());
 
-    /// <summary>True when the host can talk to this driver: same major version, minor at least the minimum (fix of bug A5).</summary>
-    public bool IsSupported => Major == MinimumSupported.Major && Minor >= MinimumSupported.Minor;
+    /// <summary>The version as a <see cref="Version"/>.</summary>
+    public Version ToVersion() => new(Major, Minor, Patch);
 
     /// <summary>True when the handshake of this driver ends with its progress (<c>$25</c>, from 1.6).</summary>
     public bool ReportsProgress => Major == 1 && Minor >= 6;

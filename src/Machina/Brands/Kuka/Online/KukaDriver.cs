@@ -16,7 +16,6 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
     private readonly Queue<int> _awaiting = new();
     private readonly StringBuilder _batch = new(1024);
     private TcpLink? _monitor;
-    private string _version = "";
 
     /// <summary>Creates a driver that logs to the robot's log, measures its timeouts with its clock and asks for its motion update rate.</summary>
     internal KukaDriver(DeviceContext context)
@@ -48,15 +47,17 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
     protected override async Task<DeviceHandshake> OpenAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
     {
         DeviceHandshake handshake = await OpenDriverLinkAsync(host, port, timeout, "state", "machina_kuka_driver", cancellationToken).ConfigureAwait(false);
-        if (handshake.Progress is null)
-        {
-            Log.Warning($"The KRL driver on the controller is version {_version}; this Machina ships {KukaProtocol.DriverVersion}, which reports its progress so that a reconnection resumes exactly. Load the driver from GetDeviceDriverModules.");
-        }
+        Requirement.Check(handshake.Version);
         _monitor = await OpenMonitorAsync(host, port + 1, new KukaXmlReader(),
             "Live poses are not available from this controller (no machina_kuka_monitor on the next port); there will be no motion updates.", cancellationToken).ConfigureAwait(false);
         _monitor?.Post(Encoding.ASCII.GetBytes(KukaMessages.MonitorRate(_motionUpdateRate)));
         return handshake;
     }
+
+    /// <summary>The KRL driver this host needs: the one it ships (drivers/kuka), or a later 2.x.</summary>
+    internal static DriverRequirement Requirement { get; } = new("KUKA", Version.Parse(KukaProtocol.DriverVersion),
+        "Copy the files \"machina drivers kuka --host H --port P --out DIR\" writes (Robot.GetDeviceDriverModules) to the controller and start the driver again " +
+        "(docs/getting-started.md); then connect again.");
 
     /// <inheritdoc/>
     public bool Send(RobotAction action, RobotCursor releaseState)
@@ -131,7 +132,6 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
                 break;
             case KukaProtocol.State when !IsHandshakeOver:
                 KukaState state = KukaState.Parse(element);
-                _version = state.Version;
                 Handshake(state.ToHandshake());
                 break;
             case KukaProtocol.State:

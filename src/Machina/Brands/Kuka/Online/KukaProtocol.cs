@@ -8,8 +8,8 @@ namespace Machina;
 /// </summary>
 internal static class KukaProtocol
 {
-    /// <summary>Version of the KRL driver this Machina ships (<c>S/@VR</c>); 2.x reports its progress, 1.0 was the original's.</summary>
-    public const string DriverVersion = "2.0";
+    /// <summary>Version of the KRL driver this Machina ships (<c>S/@VR</c>); 2.x reports its progress, 2.1 runs a CIRC (action 17), 1.0 was the original's.</summary>
+    public const string DriverVersion = "2.1";
 
     /// <summary>Slots of the driver's action ring: the host never has more actions sent and unacknowledged than this.</summary>
     public const int Capacity = 100;

@@ -114,7 +114,7 @@ internal static class UrActionEncoder
         return 8;
     }
 
-    /// <summary>The six integers of a pose: X Y Z (0.1 mm) and the rotation vector RX RY RZ (1e-4 rad).</summary>
+    /// <summary>The six integers of a pose: X Y Z (0.001 mm) and the rotation vector RX RY RZ (1e-6 rad).</summary>
     private static void PoseValues(Span<int> into, Vector p, Rotation r, ref Wire wire)
     {
         RotationVector rv = r.ToRotationVector();
@@ -173,13 +173,13 @@ internal static class UrActionEncoder
 
         public int Degrees(double degrees) => Scale(degrees * UrScriptText.Rad * UrWire.FactorRadian);
 
-        /// <summary>A speed or acceleration in mm units: at least one step of the wire (0.1 mm), or a problem (the driver would run it as 0).</summary>
+        /// <summary>A speed or acceleration in mm units: at least one step of the wire (0.001 mm), or a problem (the driver would run it as 0).</summary>
         public int Positive(double mm, string what, string unit)
         {
             int value = Millimetres(mm);
             if (value <= 0 && Problem is null)
             {
-                Problem = $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: {what} of {Num.G(mm)} {unit} is 0 in its driver's 0.1 {unit} steps, and the robot would never get anywhere.";
+                Problem = $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: {what} of {Num.G(mm)} {unit} is 0 in its driver's {Num.G(MillimetreStep)} {unit} steps, and the robot would never get anywhere.";
             }
             return value;
         }
@@ -190,9 +190,16 @@ internal static class UrActionEncoder
             {
                 return (int)Math.Round(scaled, MidpointRounding.AwayFromZero);
             }
-            Problem ??= $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: a value is too large for its driver's 32-bit numbers.";
+            Problem ??= $"\"{Abbreviate(action.ToInstruction())}\" cannot be streamed to a UR robot: a value is beyond its driver's 32-bit numbers ({Limits}).";
             return 0;
         }
+
+        /// <summary>One step of the wire in millimetres (0.001 mm).</summary>
+        private static double MillimetreStep => 1 / (UrScriptText.Mm * UrWire.FactorMetre);
+
+        /// <summary>What the wire carries at most, in the user's units.</summary>
+        private static string Limits =>
+            $"lengths and speeds up to ±{Num.G(Math.Floor(int.MaxValue / (UrScriptText.Mm * UrWire.FactorMetre)))} mm, angles ±{Num.G(Math.Floor(int.MaxValue / (UrScriptText.Rad * UrWire.FactorRadian)))}°, times {Num.G(Math.Floor(int.MaxValue / UrWire.FactorSecond))} s";
 
         private static string Abbreviate(string text) => text.Length <= 60 ? text : text[..57] + "...";
     }

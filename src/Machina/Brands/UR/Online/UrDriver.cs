@@ -15,7 +15,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     private readonly AwaitedAcknowledgements _awaiting = new(id => id);
     private readonly int[] _values = new int[UrActionEncoder.MaxValues];
     private readonly byte[] _encoded = new byte[UrActionEncoder.MaxValues * 4];
-    private string _version = "1.2.0";
+    private string _version = "";
 
     /// <summary>The last read value response (id, value × FactorAnalog), handed over with the acknowledgement of that id.</summary>
     private (int Id, int Raw)? _read;
@@ -75,11 +75,19 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         StartLink(TcpLink.Adopt(socket, $"{host}:{_ports.Script}"));
         DeviceHandshake driver = await HandshakeAsync(Left(start, timeout),
             () => $"The UR driver program at {host} connected back but did not report its pose in time.", cancellationToken).ConfigureAwait(false);
+        Requirement.Check(driver.Version);
         DeviceProgress progress = await ProgressOfAsync(_instance, Left(start, timeout), cancellationToken).ConfigureAwait(false);
         RtdeSample now = LatestSample ?? first;
         Log.Info($"Connected to the UR driver {driver.Version} at {host}; live state over RTDE at {Num.G(_rtdeFrequency)} Hz.");
         return new DeviceHandshake(driver.Version, now.Position, now.Rotation, now.Joints, null, progress) { ModelName = arm.Name, Model = arm.Model };
     }
+
+    /// <summary>
+    /// The URScript driver this host needs: the one it sends (drivers/ur), whose wire carries 0.001 mm and 1e-6 rad (3.0; 2.x
+    /// carried 0.1 mm and 1e-4 rad, which this host would misread a hundredfold).
+    /// </summary>
+    internal static DriverRequirement Requirement { get; } = new("UR", Version.Parse(UrDriverScript.Version),
+        "This Machina sends its own driver program on every connection, so another program connected back in its place: is another Machina driving this robot? Stop it, then connect again.");
 
     /// <inheritdoc/>
     public bool Send(RobotAction action, RobotCursor releaseState)

@@ -7,7 +7,7 @@ internal static class UrDriverScript
     public const string FileName = "machina_ur_driver.script";
 
     /// <summary>The version the script declares.</summary>
-    public const string Version = "2.0.0";
+    public const string Version = "3.0.0";
 
     /// <summary>
     /// The script with <c>{{HOSTNAME}}</c> and <c>{{PORT}}</c> replaced (where it connects back to) and <c>{{INSTANCE}}</c>, the

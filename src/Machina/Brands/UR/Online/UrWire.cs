@@ -8,11 +8,11 @@ namespace Machina;
 /// </summary>
 internal static class UrWire
 {
-    /// <summary>Integers per metre (1 = 0.1 mm).</summary>
-    public const double FactorMetre = 10_000;
+    /// <summary>Integers per metre (1 = 0.001 mm, driver 3.0; int32 holds ±2,147 m).</summary>
+    public const double FactorMetre = 1_000_000;
 
-    /// <summary>Integers per radian.</summary>
-    public const double FactorRadian = 10_000;
+    /// <summary>Integers per radian (1 = 1e-6 rad, driver 3.0; int32 holds ±2,147 rad).</summary>
+    public const double FactorRadian = 1_000_000;
 
     /// <summary>Integers per second (1 = 1 ms).</summary>
     public const double FactorSecond = 1_000;
@@ -44,16 +44,16 @@ internal static class UrWire
     /// <summary>The RTDE output integer register where each of our driver programs publishes its instance number when it starts.</summary>
     public const int InstanceRegister = 26;
 
-    /// <summary>Millimetres to wire integers (0.1 mm).</summary>
+    /// <summary>Millimetres to wire integers (0.001 mm).</summary>
     public static int Millimetres(double mm) => Scale(mm * UrScriptText.Mm * FactorMetre);
 
-    /// <summary>Degrees to wire integers (1e-4 rad).</summary>
+    /// <summary>Degrees to wire integers (1e-6 rad).</summary>
     public static int Degrees(double degrees) => Scale(degrees * UrScriptText.Rad * FactorRadian);
 
-    /// <summary>Wire integers (0.1 mm) to millimetres.</summary>
+    /// <summary>Wire integers (0.001 mm) to millimetres.</summary>
     public static double ToMillimetres(int value) => value / FactorMetre / UrScriptText.Mm;
 
-    /// <summary>Wire integers (1e-4 rad) to degrees.</summary>
+    /// <summary>Wire integers (1e-6 rad) to degrees.</summary>
     public static double ToDegrees(int value) => value / FactorRadian / UrScriptText.Rad;
 
     /// <summary>Rounds a scaled value to the nearest integer, refusing what int32 cannot carry.</summary>
