@@ -5,7 +5,7 @@ public sealed partial class VirtualUrController
     /// <summary>Robot modes (client interfaces, RTDE robot_mode, dashboard robotmode): power off 3, idle 5, running 7.</summary>
     internal const int PowerOffMode = 3, IdleMode = 5, RunningMode = 7;
 
-    private int _robotMode = RunningMode;
+    private int _robotMode;
     private string? _loadedProgram;
     private string? _popup;
     private string? _operationalMode;
@@ -26,9 +26,10 @@ public sealed partial class VirtualUrController
     private readonly List<string> _userLog = [];
 
     /// <summary>
-    /// The robot mode now: 7 running (the start: powered, brakes released, so that a script runs at once), 5 idle (powered,
-    /// brakes held), 3 power off. The dashboard's and the primary interface's <c>power on</c>, <c>power off</c> and
-    /// <c>brake release</c> (<c>set robotmode run</c>) change it.
+    /// The robot mode now: 7 running (powered, brakes released: the start, so that a script runs at once, unless
+    /// <see cref="VirtualUrControllerOptions.StartsPoweredOff"/>), 5 idle (powered, brakes held), 3 power off. The dashboard's
+    /// and the primary interface's <c>power on</c>, <c>power off</c> and <c>brake release</c> (<c>set robotmode run</c>)
+    /// change it. Programs run only while it is 7.
     /// </summary>
     public int RobotMode
     {
@@ -108,6 +109,20 @@ public sealed partial class VirtualUrController
         }
         WakeRtde();
     }
+
+    /// <summary>
+    /// Why a program that arrives cannot start now, or null when it can: a UR runs programs only with the arm powered and its
+    /// brakes released (robot mode running). The wording is the twin's: UR's manuals do not give the controller's.
+    /// </summary>
+    private string? StartRefusal()
+    {
+        int mode = RobotMode;
+        return mode == RunningMode ? null
+            : $"{NotReadyPrefix}the robot is {RobotModeName(mode)}: power it on and release the brakes (dashboard \"power on\", \"brake release\") before a program runs";
+    }
+
+    /// <summary>How the refusal of a program while the arm is not running starts (see <see cref="StartRefusal"/>).</summary>
+    internal const string NotReadyPrefix = "Program refused: ";
 
     /// <summary>The robot mode's name as the dashboard gives it.</summary>
     private static string RobotModeName(int mode) => mode switch

@@ -24,6 +24,7 @@ public sealed partial class VirtualUrController
             Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
             Route = _options.OutboundRoute,
+            StartRefusal = StartRefusal,
         });
         twin.ProgramReceived += program =>
         {
@@ -42,6 +43,11 @@ public sealed partial class VirtualUrController
             if (line.StartsWith("Compile error", StringComparison.Ordinal) || line.StartsWith("Runtime error", StringComparison.Ordinal))
             {
                 RecordError(line);
+            }
+            else if (line.StartsWith(NotReadyPrefix, StringComparison.Ordinal))
+            {
+                RecordError(line);
+                SendToStateClients(() => VirtualUrClientPackages.Text(Timestamp, line));
             }
             else
             {

@@ -140,6 +140,7 @@ public sealed partial class VirtualUrController
                 lock (Gate)
                 {
                     _loadedProgram = argument;
+                    _playingLoaded = Twin.ProgramsStarted; // the program now is the loaded one, until a script arrives
                 }
                 return "Loading program: " + argument;
             case "load installation":

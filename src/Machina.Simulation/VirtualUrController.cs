@@ -34,6 +34,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         })
     {
         _options = options;
+        _robotMode = options.StartsPoweredOff ? PowerOffMode : RunningMode;
         Twin = CreateTwin();
     }
 

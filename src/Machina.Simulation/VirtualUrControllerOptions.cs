@@ -45,6 +45,13 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     /// </summary>
     public bool RunsScripts { get; init; } = true;
 
+    /// <summary>
+    /// True: the arm starts powered off (robot mode 3), as URSim and a UR that has just booted do: a program runs only after
+    /// <c>power on</c> and <c>brake release</c> (dashboard or primary interface); until then each program that arrives is refused
+    /// with a message. False (the default, for tests and embedded use): it starts running (mode 7), so a script runs at once.
+    /// </summary>
+    public bool StartsPoweredOff { get; init; }
+
     /// <summary>The controller software version RTDE reports; from 5 on RTDE runs up to 500 Hz, before up to 125 Hz. Default 5.11.0.</summary>
     public Version ControllerVersion { get; init; } = new(5, 11, 0);
 

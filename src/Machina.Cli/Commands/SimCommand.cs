@@ -25,9 +25,10 @@ internal static partial class SimCommand
 
         Options:
           --port P          the port hosts connect to (default {DefaultPort}; 0 picks a free one). ABB and KUKA: the driver's port,
-                            P + 1 the monitor's; UR: the script port, P + 1 RTDE and P + 2 the dashboard. Without --port a UR
-                            listens where a UR does: primary 30001, secondary 30002,
-                            real-time 30003, RTDE 30004, dashboard 29999
+                            P + 1 the monitor's; UR: the script port, P + 1 RTDE and P + 2 the dashboard, ready to run.
+                            Without --port a UR stands in for URSim: it listens where a UR does (primary 30001, secondary
+                            30002, real-time 30003, RTDE 30004, dashboard 29999) and starts powered off, as URSim does:
+                            send "power on" and "brake release" to the dashboard before a program runs
           --bind ADDRESS    the address to listen on (default 127.0.0.1, this computer only; 0.0.0.0 for every network)
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
@@ -91,6 +92,10 @@ internal static partial class SimCommand
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +
             $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {relay.Port}");
+        if (urLayout)
+        {
+            Log("The arm is powered off, as on URSim: send \"power on\" and \"brake release\" to the dashboard (29999) before a program runs.");
+        }
         context.Ready?.Invoke($"{bind}:{relay.Port}");
         try
         {

@@ -5,7 +5,10 @@ namespace Machina.Cli.Simulation;
 /// <summary>How a virtual controller started by the command line behaves.</summary>
 /// <param name="SpeedFactor">How much faster than real time it moves (1 = real time).</param>
 /// <param name="Model">The arm it moves like, or null (joints and pose then stay independent).</param>
-/// <param name="UrClientInterfaces">A UR also serves its primary, secondary and real-time client interfaces (as on 30001–30003).</param>
+/// <param name="UrClientInterfaces">
+/// A UR stands in for URSim: it also serves its primary, secondary and real-time client interfaces (as on 30001–30003) and
+/// starts powered off, as URSim does (a program runs after <c>power on</c> and <c>brake release</c>).
+/// </param>
 internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false);
 
 /// <summary>A virtual controller listening on 127.0.0.1, until disposed: one of <see cref="VirtualControllerRegistry"/>, as the command line shows it.</summary>
@@ -85,7 +88,7 @@ internal static class VirtualControllers
         settings = settings with { SpeedFactor = options.SpeedFactor, RequestLogCapacity = RequestsKept };
         if (options.UrClientInterfaces && settings is VirtualUrControllerOptions ur)
         {
-            settings = ur with { PrimaryPort = 0, SecondaryPort = 0, RealtimePort = 0 };
+            settings = ur with { PrimaryPort = 0, SecondaryPort = 0, RealtimePort = 0, StartsPoweredOff = true };
         }
         if (options.Model is RobotModel model)
         {

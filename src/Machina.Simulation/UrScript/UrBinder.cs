@@ -22,7 +22,8 @@ internal sealed class UrBoundProgram(List<UrStmt> statements, UrFunction? entry,
 /// Resolves a parsed program as the controller's compiler does before anything runs: unknown functions, unknown named
 /// arguments, wrong argument counts and variables that are never assigned are compile errors with their line.
 /// Scopes follow the Script Manual: the variables of the program (a top-level def without parameters) and of the text outside
-/// definitions are global; in another function a variable that is assigned is local unless declared <c>global</c>.
+/// definitions are global, and so is one declared <c>global</c> anywhere; in another function a variable that is assigned
+/// without a qualifier (a free variable) is the global of that name when there is one, else local; <c>local</c> makes it local.
 /// </summary>
 internal sealed class UrBinder
 {
@@ -89,9 +90,9 @@ internal sealed class UrBinder
         {
             var assigned = new Dictionary<string, int>(StringComparer.Ordinal);
             CollectAssigned(function.Body, assigned, declaredGlobal);
-            foreach (string name in assigned.Keys)
+            foreach (string name in assigned.Keys.Where(name => !_globals.ContainsKey(name)))
             {
-                locals.TryAdd(name, locals.Count);
+                locals.TryAdd(name, locals.Count); // a free variable is the global of its name when there is one (the manual's scoping rules)
             }
         }
         foreach (UrExpr? value in function.Defaults)

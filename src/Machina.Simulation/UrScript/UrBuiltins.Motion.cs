@@ -140,8 +140,8 @@ internal static partial class UrBuiltins
     {
         (double acc, double v, _, _) = Profile([null!, a[2], a[3], 0, a[4]], line, "movec");
         FinishBlend(m, line);
-        Pose via = UrGeometry.ToPose(Six(a, 0, line, "movec", "pose_via"), line);
-        Pose to = UrGeometry.ToPose(Six(a, 1, line, "movec", "pose_to"), line);
+        Pose via = TargetPose(m, a, 0, line, "movec", "pose_via");
+        Pose to = TargetPose(m, a, 1, line, "movec", "pose_to");
         double mode = Num(a, 5, line, "movec", "mode");
         if (mode != 0 && mode != 1)
         {
@@ -183,6 +183,16 @@ internal static partial class UrBuiltins
         }
         Move(m, line, to, time, "servoj");
         return UrNone.Value;
+    }
+
+    /// <summary>A motion's target given as a pose, or as joint positions (an array of six), which name the TCP pose they put the arm at.</summary>
+    private static Pose TargetPose(UrMachine m, object[] a, int i, int line, string function, string parameter)
+    {
+        double[] values = Six(a, i, line, function, parameter);
+        TwinArm arm = m.Controller.Arm;
+        return a[i] is UrList
+            ? arm.Model.Kinematics.Forward(UrGeometry.ToJoints(values, line)) * arm.ToolCenter
+            : UrGeometry.ToPose(values, line);
     }
 
     private static object SetTcp(UrMachine m, int line, object[] a)

@@ -50,7 +50,12 @@ internal static partial class UrBuiltins
     /// <summary>The acceleration (positive) and the optional time (zero or positive) of a speed command.</summary>
     private static double SpeedTime(object[] a, int line, string function)
     {
-        Positive(Num(a, 1, line, function, "a"), line, function, "a");
+        double acceleration = Num(a, 1, line, function, "a");
+        if (!(acceleration >= 0) || !double.IsFinite(acceleration))
+        {
+            // Zero is taken: UR's client library passes the largest speed change of a spline step, 0 when the speed holds.
+            throw new UrRuntimeException(line, $"{function}: argument 'a' must be zero or positive");
+        }
         double time = Num(a, 2, line, function, "t");
         return time >= 0 && double.IsFinite(time) ? time : throw new UrRuntimeException(line, $"{function}: argument 't' must be zero or positive");
     }

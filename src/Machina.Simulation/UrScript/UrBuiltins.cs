@@ -24,6 +24,7 @@ internal static partial class UrBuiltins
         AddSockets(table);
         AddMath(table);
         AddMisc(table);
+        AddControl(table);
         return table.ToFrozenDictionary(StringComparer.Ordinal);
     }
 

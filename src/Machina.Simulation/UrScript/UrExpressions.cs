@@ -150,6 +150,12 @@ internal sealed class UrUnary(int line, string op, UrExpr operand) : UrExpr(line
             int i => -i,
             double d => -d,
             UrPose p => new UrPose(p.Values.Select(v => -v).ToArray()),
+            UrList l => new UrList([.. l.Items.Select(v => v switch
+            {
+                int i => (object)-i,
+                double d => -d,
+                _ => throw new UrRuntimeException(Line, $"'-' cannot be applied to an array of {UrValue.TypeName(v)}"),
+            })]),
             _ => throw new UrRuntimeException(Line, $"'-' cannot be applied to {UrValue.TypeName(value)}"),
         };
     }

@@ -18,13 +18,14 @@ internal static class UrLexer
         var words = new TextCache(); // one string per distinct name or number: a long program repeats few of them
         int line = 1, lineStart = 0, i = 0;
         int open = 0; // brackets open: a statement goes on over line ends inside parentheses or a list, as on a controller
+        bool operatorLast = false; // the last token is a binary operator: the expression goes on on the next line
         while (i < text.Length)
         {
             char c = text[i];
             int column = i - lineStart + 1;
             if (c == '\n')
             {
-                if (open == 0)
+                if (open == 0 && !operatorLast)
                 {
                     yield return new UrToken(UrTokenKind.Newline, "\n", line, column);
                 }
@@ -49,11 +50,14 @@ internal static class UrLexer
                 {
                     i++;
                 }
-                yield return new UrToken(UrTokenKind.Name, words.Get(text, start, i - start), line, column);
+                string name = words.Get(text, start, i - start);
+                operatorLast = name is "and" or "or";
+                yield return new UrToken(UrTokenKind.Name, name, line, column);
             }
             else if (char.IsAsciiDigit(c) || (c == '.' && i + 1 < text.Length && char.IsAsciiDigit(text[i + 1])))
             {
                 (UrToken number, i) = ReadNumber(text, i, line, column, words);
+                operatorLast = false;
                 yield return number;
             }
             else if (c == '"' || c == '\'')
@@ -67,17 +71,20 @@ internal static class UrLexer
                 {
                     throw new UrCompileException(line, "the string does not end on its line");
                 }
+                operatorLast = false;
                 yield return new UrToken(UrTokenKind.String, text[start..i], line, column);
                 i++;
             }
             else if (i + 1 < text.Length && text[i + 1] == '=' && c is '=' or '!' or '<' or '>')
             {
+                operatorLast = true;
                 yield return new UrToken(UrTokenKind.Symbol, c switch { '=' => "==", '!' => "!=", '<' => "<=", _ => ">=" }, line, column);
                 i += 2;
             }
             else if (Symbols.IndexOf(c, StringComparison.Ordinal) is int symbol and >= 0)
             {
                 open = c is '(' or '[' ? open + 1 : c is ')' or ']' ? Math.Max(0, open - 1) : open;
+                operatorLast = c is '+' or '-' or '*' or '/' or '%' or '<' or '>';
                 yield return new UrToken(UrTokenKind.Symbol, SymbolTexts[symbol], line, column);
                 i++;
             }

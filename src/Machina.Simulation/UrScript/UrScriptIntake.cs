@@ -64,6 +64,18 @@ internal sealed class UrScriptIntake
             string code = StripComment(line).TrimEnd();
             if (_programStart < 0)
             {
+                if (_startedName is not null && CallOfStarted(line, code, complete) is int call)
+                {
+                    if (call == 0)
+                    {
+                        return null; // what has arrived may still become the call: wait for more
+                    }
+                    // The call of the program just taken belongs to it, line break or not: the original Machina.NET host
+                    // sends its driver without a final line break and its stop program later on the same connection.
+                    _startedName = null;
+                    Consume(_scanAt + call);
+                    continue;
+                }
                 if (code.Trim().Length == 0)
                 {
                     if (!complete)
@@ -107,6 +119,22 @@ internal sealed class UrScriptIntake
             }
             _scanAt = next;
         }
+    }
+
+    /// <summary>
+    /// How many characters of <paramref name="line"/> are the call of the program just taken (<c>name()</c>, after any
+    /// indentation): null when the line is not that call, 0 when it may still become it.
+    /// </summary>
+    private int? CallOfStarted(string line, string code, bool complete)
+    {
+        string call = _startedName + "()";
+        string trimmed = code.TrimStart();
+        int indent = line.Length - line.TrimStart().Length;
+        if (trimmed.StartsWith(call, StringComparison.Ordinal))
+        {
+            return indent + call.Length;
+        }
+        return !complete && trimmed.Length > 0 && call.StartsWith(trimmed, StringComparison.Ordinal) ? 0 : null;
     }
 
     /// <summary>Drops the first <paramref name="count"/> characters (taken or skipped).</summary>

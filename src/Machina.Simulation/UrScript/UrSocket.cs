@@ -105,7 +105,8 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             _closed = true;
             _start = _end = 0;
         }
-        long deadline = Environment.TickCount64 + (long)(Math.Max(0, timeoutSeconds) * 1000);
+        // The Script Manual: a timeout of 0 or less never times out (UR's clients make their first read blocking with 0).
+        long deadline = timeoutSeconds > 0 ? Environment.TickCount64 + (long)(timeoutSeconds * 1000) : long.MaxValue;
         while (Buffered < count && !_closed)
         {
             cancellation.ThrowIfCancellationRequested();

@@ -160,7 +160,7 @@ internal sealed class UrHalt(int line) : UrStmt(line)
     public override UrFlow Exec(UrFrame frame) => throw new UrHaltSignal(Line);
 }
 
-/// <summary><c>join t</c> (wait for a thread to end) or <c>kill t</c> (stop it).</summary>
+/// <summary><c>join t</c> (wait for a thread to end) or <c>kill t</c> (stop it); a handle of 0 (no thread) does nothing.</summary>
 internal sealed class UrThreadControl(int line, bool kill, UrExpr handle) : UrStmt(line)
 {
     /// <summary>The thread handle expression.</summary>
@@ -170,6 +170,10 @@ internal sealed class UrThreadControl(int line, bool kill, UrExpr handle) : UrSt
     public override UrFlow Exec(UrFrame frame)
     {
         object value = Handle.Eval(frame);
+        if (value is 0)
+        {
+            return UrFlow.Next; // no thread: UR's clients start their handles at 0 and join or kill them before any thread ran
+        }
         if (value is not UrThreadHandle thread)
         {
             throw new UrRuntimeException(Line, $"{(kill ? "kill" : "join")} needs a thread handle, not {UrValue.TypeName(value)}");

@@ -59,6 +59,9 @@ internal sealed partial class UrTwinController : IDisposable
     /// <summary>Inputs, outputs and RTDE registers.</summary>
     public TwinIo Io { get; }
 
+    /// <summary>Force mode, freedrive, gravity and the RTDE watchdog as the program set them.</summary>
+    public UrControlModes Modes { get; } = new();
+
     /// <summary>The pendant log: program messages and errors.</summary>
     public TwinPendant Pendant { get; } = new();
 
@@ -198,7 +201,13 @@ internal sealed partial class UrTwinController : IDisposable
             Fail(e.Message);
             return false;
         }
+        if (Options.StartRefusal?.Invoke() is string refusal)
+        {
+            Fail(refusal);
+            return false;
+        }
         StopProgram();
+        Modes.Reset();
         var stop = new CancellationTokenSource();
         string header = text.TrimStart();
         int paren = header.IndexOf('(', StringComparison.Ordinal);

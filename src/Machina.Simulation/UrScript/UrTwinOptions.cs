@@ -39,6 +39,13 @@ internal sealed class UrTwinOptions
     /// </summary>
     public bool BlendWhileStreaming { get; init; }
 
+    /// <summary>
+    /// Asked before each program starts: null lets it start; a message refuses it (it does not run, the running one goes on,
+    /// and <see cref="UrTwinController.Error"/> and the pendant have the message). The virtual UR refuses programs while the
+    /// arm is powered off or its brakes are held. Null (the default): every program that compiles starts.
+    /// </summary>
+    public Func<string?>? StartRefusal { get; init; }
+
     /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, strings, threads, program size).</summary>
     public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

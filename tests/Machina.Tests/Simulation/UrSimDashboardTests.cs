@@ -98,6 +98,53 @@ public class UrSimDashboardTests
         Assert.Equal("PLAYING p.urp", await AskAsync(dashboard, "programState"));
     }
 
+    [Fact]
+    public async Task StartsPoweredOff_AsUrSim_RefusesProgramsUntilPowerOnAndBrakeRelease()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, StartsPoweredOff = true });
+        await controller.StartAsync();
+        using var dashboard = await DashboardAsync(controller.DashboardPort);
+        using var upload = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
+        const string Program = "def p():\n  write_output_integer_register(3, 11)\nend\n";
+        double Register() => controller.Twin.Io.GetNumber(Machina.Simulation.UrScript.UrIoBanks.OutputIntRegisters, 3);
+
+        Assert.Equal(3, controller.RobotMode);
+        Assert.Equal("Robotmode: POWER_OFF", await AskAsync(dashboard, "robotmode"));
+        await upload.GetStream().WriteAsync(Encoding.ASCII.GetBytes(Program));
+        await OnlineWait.UntilAsync(() => controller.Errors.Count == 1, "the program to be refused");
+        Assert.Equal("Program refused: the robot is POWER_OFF: power it on and release the brakes (dashboard \"power on\", \"brake release\") before a program runs", controller.Errors[0]);
+
+        Assert.Equal("Powering on", await AskAsync(dashboard, "power on"));
+        Assert.Equal("Robotmode: IDLE", await AskAsync(dashboard, "robotmode"));
+        await upload.GetStream().WriteAsync(Encoding.ASCII.GetBytes(Program));
+        await OnlineWait.UntilAsync(() => controller.Errors.Count == 2, "the program to be refused again");
+        Assert.StartsWith("Program refused: the robot is IDLE: ", controller.Errors[1], StringComparison.Ordinal);
+        Assert.Equal(0, Register());
+        Assert.False(controller.IsProgramRunning);
+
+        Assert.Equal("Brake releasing", await AskAsync(dashboard, "brake release"));
+        Assert.Equal("Robotmode: RUNNING", await AskAsync(dashboard, "robotmode"));
+        await upload.GetStream().WriteAsync(Encoding.ASCII.GetBytes(Program));
+        await OnlineWait.UntilAsync(() => Register() == 11, "the program to run");
+        Assert.Equal(2, controller.Errors.Count);
+        Assert.Equal(3, controller.ScriptsReceived);
+    }
+
+    [Fact]
+    public async Task Load_AfterAScriptRan_ProgramStateNamesTheLoadedProgram()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var dashboard = await DashboardAsync(controller.DashboardPort);
+        using var upload = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
+        await upload.GetStream().WriteAsync(Encoding.ASCII.GetBytes("def external():\n  textmsg(\"ran\")\nend\n"));
+        await OnlineWait.UntilAsync(() => controller.Twin.ProgramsStarted == 1 && !controller.IsProgramRunning, "the script to end");
+        Assert.Equal("STOPPED external", await AskAsync(dashboard, "programState"));
+
+        Assert.Equal("Loading program: wait_program.urp", await AskAsync(dashboard, "load wait_program.urp"));
+        Assert.Equal("STOPPED wait_program.urp", await AskAsync(dashboard, "programState"));
+    }
+
     private static async Task<DashboardLine> DashboardAsync(int port)
     {
         var client = new TcpClient();

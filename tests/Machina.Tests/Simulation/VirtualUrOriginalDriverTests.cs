@@ -50,15 +50,31 @@ public class VirtualUrOriginalDriverTests
           send_full_pose()
           while True:
             header = socket_read_binary_integer(2, "socket_0", 2)
-            if header[0] == 2:
+            if header[0] == 0:
+              # a timeout: nothing to do (a block of only a comment, as in the original driver)
+            elif header[0] == 2:
               id = header[1]
               code = header[2]
               if code == 1:
                 x = socket_read_binary_integer(6)
                 movel(p[x[1] / FACTOR_M, x[2] / FACTOR_M, x[3] / FACTOR_M, x[4] / FACTOR_RAD, x[5] / FACTOR_RAD, x[6] / FACTOR_RAD], a=acceleration, v=speed, t=0, r=blend)
+              elif code == 2:
+                x = socket_read_binary_integer(6)
+                movej(p[x[1] / FACTOR_M, x[2] / FACTOR_M, x[3] / FACTOR_M, x[4] / FACTOR_RAD, x[5] / FACTOR_RAD, x[6] / FACTOR_RAD], a=joint_acceleration, v=joint_speed, t=0, r=blend)
+              elif code == 3:
+                x = socket_read_binary_integer(6)
+                movej([x[1] / FACTOR_RAD, x[2] / FACTOR_RAD, x[3] / FACTOR_RAD, x[4] / FACTOR_RAD, x[5] / FACTOR_RAD, x[6] / FACTOR_RAD], a=joint_acceleration, v=joint_speed, t=0, r=blend)
               elif code == 8:
                 x = socket_read_binary_integer(1)
                 blend = x[1] / FACTOR_M
+              elif code == 12:
+                x = socket_read_binary_integer(7)
+                set_tcp(p[x[1] / FACTOR_M, x[2] / FACTOR_M, x[3] / FACTOR_M, x[4] / FACTOR_RAD, x[5] / FACTOR_RAD, x[6] / FACTOR_RAD])
+                set_payload(x[7] / 1000)
+              elif code == 15:
+                x = socket_read_binary_integer(1)
+                speed = x[1] / FACTOR_M
+                joint_speed = 1000 * d2r(speed)
               elif code == 9:
                 x = socket_read_binary_integer(1)
                 sleep(x[1] / FACTOR_SEC)
@@ -71,7 +87,7 @@ public class VirtualUrOriginalDriverTests
                 end
               end
               socket_send_int(id)
-            elif header[0] != 0:
+            else:
               textmsg("Incorrectly formatted buffer")
             end
           end
@@ -122,6 +138,59 @@ public class VirtualUrOriginalDriverTests
         Assert.Contains("Started Machina driver", controller.PendantMessages);
         Assert.Equal(1, controller.ScriptsReceived); // the call line belongs to the program: nothing replaced it
         Assert.True(controller.IsProgramRunning);
+        Assert.Empty(controller.Errors);
+    }
+
+    [Fact]
+    public async Task OriginalHost_OnAUrSim_PowersOnUploadsOnTheRealtimePortStreamsAndStops()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, StartsPoweredOff = true, RealtimePort = 0 });
+        await controller.StartAsync();
+        using (var dashboard = new System.Net.Sockets.TcpClient())
+        {
+            // A UR fresh from boot (URSim): the user powers it on and releases the brakes before the host connects.
+            await dashboard.ConnectAsync(System.Net.IPAddress.Loopback, controller.DashboardPort);
+            var lines = new StreamReader(dashboard.GetStream(), System.Text.Encoding.ASCII);
+            await lines.ReadLineAsync().WaitAsync(Timeout);
+            foreach (string command in (string[])["power on", "brake release"])
+            {
+                await dashboard.GetStream().WriteAsync(System.Text.Encoding.ASCII.GetBytes(command + "\n"));
+                await lines.ReadLineAsync().WaitAsync(Timeout);
+            }
+        }
+        using var server = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
+        server.Start();
+        int port = ((System.Net.IPEndPoint)server.LocalEndpoint).Port;
+
+        // The original host uploads on the real-time port (30003 on a robot), without a final line break.
+        using var upload = new System.Net.Sockets.TcpClient();
+        await upload.ConnectAsync(System.Net.IPAddress.Loopback, controller.RealtimePort);
+        await upload.GetStream().WriteAsync(System.Text.Encoding.ASCII.GetBytes(OriginalDriver(port)));
+        using var driver = await server.AcceptTcpClientAsync().WaitAsync(Timeout);
+        server.Stop();
+        var stream = driver.GetStream();
+        Assert.Equal(-54, (await WireInts.ReadAsync(stream, 14, Timeout))[0]);
+
+        // The original host's bytes (spec online §7.4): Speed 100 mm/s, a Translation to (400, -100, 400) mm with the tool
+        // down (rotation vector (0, pi, 0)), Axes (0, -90, 90, -90, -90, 0) deg, AttachTool 100 mm along z and 1.5 kg, then a
+        // joint-interpolated Translation (MOVEJ_P) to (300, 200, 300) mm of the new tool.
+        const int Down = 31416; // pi in 1e-4 rad
+        int deg90 = (int)Math.Round(Math.PI / 2 * 10_000);
+        await WireInts.WriteAsync(stream, [
+            1, 15, 1000,
+            2, 1, 4000, -1000, 4000, 0, Down, 0,
+            3, 3, 0, -deg90, deg90, -deg90, -deg90, 0,
+            4, 12, 0, 0, 1000, 0, 0, 0, 1500,
+            5, 2, 3000, 2000, 3000, 0, Down, 0]);
+        int[] acks = await WireInts.ReadAsync(stream, 5, Timeout).ContinueWith(read => read.IsCompletedSuccessfully ? read.Result : [], TaskScheduler.Default);
+        Assert.True(acks.SequenceEqual([1, 2, 3, 4, 5]), string.Join("; ", controller.Errors));
+        Assert.True(controller.State.Position.IsSimilar(new Vector(300, 200, 300), 1e-3), controller.State.Position.ToString());
+        Assert.Equal(1.5, controller.Twin.Arm.PayloadKg);
+
+        // Disconnect: the host uploads its stop program on the same connection; it replaces the driver and runs.
+        await upload.GetStream().WriteAsync(System.Text.Encoding.ASCII.GetBytes("def machina_stop():\n  textmsg(\"Stopping\")\nend\n"));
+        await OnlineWait.UntilAsync(() => controller.PendantMessages.Contains("Stopping") && !controller.IsProgramRunning, "the stop program to run");
+        Assert.Equal(2, controller.ScriptsReceived);
         Assert.Empty(controller.Errors);
     }
 }

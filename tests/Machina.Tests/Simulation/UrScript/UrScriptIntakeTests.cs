@@ -32,6 +32,27 @@ public class UrScriptIntakeTests
         Assert.Null(intake.TakeProgram());
     }
 
+    [Theory]
+    [InlineData("def machina_ur_driver():\n  x = 1\nend\n\n\n# Kickstart\nmachina_ur_driver()", "def machina_stop():\n  textmsg(\"Stopping\")\nend\n")]
+    [InlineData("def machina_ur_driver():\n  x = 1\nend\nmachina_ur", "_driver()def machina_stop():\n  textmsg(\"Stopping\")\nend\n")]
+    public void TakeProgram_CallWithoutLineBreak_ThenTheNextProgram_AsTheOriginalHostSendsThem(string first, string second)
+    {
+        string[] pieces = [first, second];
+        var intake = new UrScriptIntake();
+        var programs = new List<string>();
+        foreach (string piece in pieces)
+        {
+            intake.Append(piece);
+            while (intake.TakeProgram() is { } program)
+            {
+                programs.Add(program);
+            }
+        }
+        Assert.Equal(2, programs.Count);
+        Assert.StartsWith("def machina_ur_driver():", programs[0], StringComparison.Ordinal);
+        Assert.Equal("def machina_stop():\n  textmsg(\"Stopping\")\nend\n", programs[1]);
+    }
+
     [Fact]
     public void TakeProgram_OtherCallAfterTheDefinition_IsANewProgram()
     {

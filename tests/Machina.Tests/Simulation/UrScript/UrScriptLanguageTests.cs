@@ -48,6 +48,10 @@ public class UrScriptLanguageTests
                 a = 1
                 return a
               end
+              def hide():
+                local a = 7
+                return a
+              end
               def bump(step=2):
                 global counter
                 counter = counter + step
@@ -59,6 +63,7 @@ public class UrScriptLanguageTests
                 return n * fact(n - 1)
               end
               r = shadow()
+              h = hide()
               bump()
               bump(step=10)
               v = [1, 2, 3]
@@ -78,13 +83,16 @@ public class UrScriptLanguageTests
                 end
               end
               textmsg(r, a)
+              textmsg(h, a)
               textmsg(counter, "")
               textmsg(fact(5), "")
               textmsg(v, q)
               textmsg(total, length(v))
             end
             """);
-        Assert.Equal(["15", "12", "120", "[1, 20, 3]p[0, 0, 0.5, 0, 0, 0]", "83"], lines);
+        // The manual's scoping rules: a free variable assigned in a function is the program's variable of that name (a is 1
+        // after shadow()); a local one hides it.
+        Assert.Equal(["11", "71", "12", "120", "[1, 20, 3]p[0, 0, 0.5, 0, 0, 0]", "83"], lines);
     }
 
     [Fact]
