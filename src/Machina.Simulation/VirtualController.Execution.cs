@@ -57,6 +57,7 @@ public abstract partial class VirtualController<TState>
                 }
                 if (IsLost(queued.Generation))
                 {
+                    Dropped(queued.Request);
                     continue;
                 }
                 var (runs, refusal) = await ExecuteAsync(queued.Request, token).ConfigureAwait(false);

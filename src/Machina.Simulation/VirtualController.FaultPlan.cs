@@ -229,9 +229,10 @@ public abstract partial class VirtualController<TState>
             Volatile.Write(ref _lastReceivedId, Volatile.Read(ref _lastExecutedId));
         }
         int discarded = 0;
-        while (_buffer.Reader.TryRead(out _))
+        while (_buffer.Reader.TryRead(out Queued queued))
         {
             discarded++;
+            Dropped(queued.Request);
         }
         Interlocked.Add(ref _requestsLost, discarded);
         return discarded;

@@ -73,6 +73,25 @@ public abstract partial class VirtualController<TState>
         return true;
     }
 
+    /// <summary>
+    /// A request the buffer let go of without executing it (a restart lost it): a brand whose driver holds requests of its own
+    /// and may have run this one already (the KRL driver's ring, with nobody connected) settles it here. Called outside the gate.
+    /// </summary>
+    private protected virtual void Dropped(object request)
+    {
+    }
+
+    /// <summary>
+    /// A request the buffer dropped (<see cref="Dropped"/>) that the brand's driver ran anyway: it enters the execution log and
+    /// counts as executed, no longer as lost. Nothing is acknowledged.
+    /// </summary>
+    private protected void RanOutsideBuffer(int id)
+    {
+        LogExecuted(id);
+        Interlocked.Increment(ref _requestsExecuted);
+        Interlocked.Decrement(ref _requestsLost);
+    }
+
     /// <summary>Ends a pending restart (once): <see cref="LoseProgress"/>.</summary>
     private void Restart()
     {

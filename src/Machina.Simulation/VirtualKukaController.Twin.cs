@@ -177,6 +177,7 @@ public sealed partial class VirtualKukaController
         {
             _driverRun?.Cancel();
             _acks.Clear();
+            _dropped.Clear();
             _heldTwinAcknowledgement = null;
         }
     }

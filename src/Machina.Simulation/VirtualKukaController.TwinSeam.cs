@@ -105,7 +105,8 @@ public sealed partial class VirtualKukaController : IEkiSeam
     {
         lock (Gate)
         {
-            if (!_acks.TryGetValue(id, out TaskCompletionSource<TwinAck>? ack))
+            // An entry of an action the buffer dropped is not shared with the same id sent again (the restart emptied the ring).
+            if (!_acks.TryGetValue(id, out TaskCompletionSource<TwinAck>? ack) || TakeDropped(ack))
             {
                 ack = new TaskCompletionSource<TwinAck>(TaskCreationOptions.RunContinuationsAsynchronously);
                 _acks[id] = ack;
@@ -144,15 +145,23 @@ public sealed partial class VirtualKukaController : IEkiSeam
                 return SendToClientAsync(bytes, _twinToken).GetAwaiter().GetResult();
             }
             TaskCompletionSource<TwinAck>? entry;
+            bool dropped;
             int id = IdOf(xml);
             lock (Gate)
             {
                 _acks.Remove(id, out entry);
+                dropped = TakeDropped(entry);
             }
             if (entry is null)
             {
                 // An action the controller's buffer never held: sent as it is.
                 return SendToClientAsync(bytes, _twinToken).GetAwaiter().GetResult();
+            }
+            if (dropped)
+            {
+                // It ran, but a restart under way dropped it from the buffer: logged here, acknowledged to nobody.
+                RanOutsideBuffer(id);
+                return false;
             }
             var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
             entry.TrySetResult(new TwinAck(id, bytes, done));
@@ -215,26 +224,37 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private void CompleteRanUpTo(int executed)
     {
         List<(int Id, TaskCompletionSource<TwinAck> Entry)> ran;
+        List<int> dropped = [];
         lock (Gate)
         {
             _heldTwinAcknowledgement = null;
-            ran = [.. _acks.Where(a => a.Key <= executed).Select(a => (a.Key, a.Value))];
-            foreach ((int id, _) in ran)
+            ran = [.. _acks.Where(a => a.Key <= executed).OrderBy(a => a.Key).Select(a => (a.Key, a.Value))];
+            foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran)
             {
                 _acks.Remove(id);
+                if (TakeDropped(entry))
+                {
+                    dropped.Add(id);
+                }
             }
         }
         var logged = new List<Task<bool>>(ran.Count);
-        foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran.OrderBy(r => r.Id))
+        foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran)
         {
             var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
-            if (entry.TrySetResult(new TwinAck(id, [], done) { Unsent = true }))
+            if (!dropped.Contains(id) && entry.TrySetResult(new TwinAck(id, [], done) { Unsent = true }))
             {
                 logged.Add(done.Task);
             }
         }
         // The buffer's loop sets Done after it logged the action as executed (before its acknowledgement step, which sends nothing).
         Task.WhenAll(logged).WaitAsync(_twinToken).GetAwaiter().GetResult();
+        // Those a restart dropped from the buffer come after the one its loop held: nobody else logs them (waiting for the loop
+        // to do it was the hang of the restart that loses the progress).
+        foreach (int id in dropped)
+        {
+            RanOutsideBuffer(id);
+        }
     }
 
     /// <summary>The Text attribute of a failure the driver sends, unescaped.</summary>
@@ -381,6 +401,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
         {
             lost = [.. _acks.Select(a => (a.Key, a.Value))];
             _acks.Clear();
+            _dropped.Clear();
         }
         foreach ((int id, TaskCompletionSource<TwinAck> entry) in lost)
         {

@@ -1,3 +1,4 @@
+using System.Globalization;
 using System.Net;
 using System.Net.Sockets;
 
@@ -126,10 +127,21 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         return listener;
     }
 
-    /// <summary>Accepts connections from one listener and serves each with <paramref name="serve"/>, one after another or side by side.</summary>
-    private static async Task AcceptAsync(TcpListener listener, Func<TcpClient, CancellationToken, Task> serve, CancellationToken token)
+    /// <summary>
+    /// The most connections one port of the virtual UR serves at once (dashboard, RTDE, the client interfaces, the script
+    /// ports): a client past it is closed at once and the pendant says so (docs/reliability.md, "Connections per port").
+    /// </summary>
+    internal const int MaxClientsPerPort = 32;
+
+    /// <summary>
+    /// Accepts connections from one listener and serves each with <paramref name="serve"/>, one after another or side by side,
+    /// at most <see cref="MaxClientsPerPort"/> at once.
+    /// </summary>
+    private async Task AcceptAsync(TcpListener listener, Func<TcpClient, CancellationToken, Task> serve, CancellationToken token)
     {
         var served = new List<Task>();
+        var cap = new Twin.ConnectionCap(MaxClientsPerPort);
+        string port = "port " + ((IPEndPoint)listener.LocalEndpoint).Port.ToString(CultureInfo.InvariantCulture);
         while (!token.IsCancellationRequested)
         {
             TcpClient client;
@@ -141,11 +153,29 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
             {
                 break;
             }
-            client.NoDelay = true;
             served.RemoveAll(t => t.IsCompleted);
-            served.Add(ServeAsync(client, serve, token));
+            if (!cap.TryEnter())
+            {
+                Pendant(cap.Refusal(port, client.Client.RemoteEndPoint?.ToString()));
+                client.Dispose();
+                continue;
+            }
+            client.NoDelay = true;
+            served.Add(ServeCountedAsync(client, serve, cap, token));
         }
         await Task.WhenAll(served).ConfigureAwait(false);
+    }
+
+    private static async Task ServeCountedAsync(TcpClient client, Func<TcpClient, CancellationToken, Task> serve, Twin.ConnectionCap cap, CancellationToken token)
+    {
+        try
+        {
+            await ServeAsync(client, serve, token).ConfigureAwait(false);
+        }
+        finally
+        {
+            cap.Leave();
+        }
     }
 
     private static async Task ServeAsync(TcpClient client, Func<TcpClient, CancellationToken, Task> serve, CancellationToken token)

@@ -29,7 +29,7 @@ internal sealed record Options
           --fuzz ...        the interpreters' fuzz run instead (first argument; --fuzz --help for its options)
           --restarts N      the controller-restart schedule instead: N seeded trials per brand (ABB, UR, KUKA), counting
                             actions run twice and not sent again (docs/reliability.md, "Controller restarts"); --resend
-                            runs it with ResendAfterControllerRestart
+                            runs it with ResendAfterControllerRestart; --brand abb|ur|kuka picks brands (default all three)
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text

@@ -41,7 +41,7 @@ if (options.Differential)
 #if MACHINA_ONLINE
 if (options.Restarts is int restartTrials)
 {
-    return RestartRun.Run(restartTrials, options.Resend);
+    return RestartRun.Run(restartTrials, options.Resend, options.Brands);
 }
 #endif
 

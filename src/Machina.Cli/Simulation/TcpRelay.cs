@@ -87,9 +87,16 @@ internal sealed class TcpRelay : IAsyncDisposable
         }
     }
 
+    /// <summary>
+    /// The most connections one relayed port carries at once: a host past it is closed at once and the log says so (each relayed
+    /// connection holds two sockets and a connection to the controller; docs/reliability.md, "Connections per port").
+    /// </summary>
+    internal const int MaxConnectionsPerPort = 32;
+
     private async Task AcceptAsync(TcpListener listener, int target, string name)
     {
         CancellationToken token = _stopping.Token;
+        var cap = new Machina.Simulation.Twin.ConnectionCap(MaxConnectionsPerPort);
         while (!token.IsCancellationRequested)
         {
             TcpClient client;
@@ -101,10 +108,27 @@ internal sealed class TcpRelay : IAsyncDisposable
             {
                 return;
             }
+            if (!cap.TryEnter())
+            {
+                _log(cap.Refusal(name, client.Client.RemoteEndPoint?.ToString()));
+                client.Dispose();
+                continue;
+            }
             lock (_gate)
             {
+                _tasks.RemoveAll(t => t.IsCompleted); // a long session's connections come and go
                 _clients.Add(client);
-                _tasks.Add(Task.Run(() => ServeAsync(client, target, name, token)));
+                _tasks.Add(Task.Run(async () =>
+                {
+                    try
+                    {
+                        await ServeAsync(client, target, name, token).ConfigureAwait(false);
+                    }
+                    finally
+                    {
+                        cap.Leave();
+                    }
+                }));
             }
         }
     }

@@ -10,8 +10,12 @@ internal static class KrlLexer
 {
     private static readonly string[] TwoCharSymbols = ["==", "<>", "<=", ">="];
 
-    /// <summary>The tokens of <paramref name="text"/>; throws <see cref="KrlLoadException"/> for a character KRL does not have.</summary>
-    public static List<KrlToken> Tokenize(string file, string text)
+    /// <summary>
+    /// The tokens of <paramref name="text"/>; throws <see cref="KrlLoadException"/> for a character KRL does not have, and
+    /// <see cref="OperationCanceledException"/> at the next line once <paramref name="cancellation"/> is cancelled (a file of
+    /// megabytes takes a while, longer on a loaded machine).
+    /// </summary>
+    public static List<KrlToken> Tokenize(string file, string text, CancellationToken cancellation = default)
     {
         var tokens = new List<KrlToken>();
         int line = 1;
@@ -22,6 +26,7 @@ internal static class KrlLexer
             char c = text[i];
             if (c == '\n')
             {
+                cancellation.ThrowIfCancellationRequested();
                 Add(tokens, new KrlToken(KrlTokenKind.EndOfLine, "", line));
                 line++;
                 i++;

@@ -26,15 +26,19 @@ internal sealed partial class KrlParser
     /// <summary>The array elements the file's declarations hold (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
     private long _elements;
 
-    private KrlParser(string file, string text, TwinLimits? limits)
+    /// <summary>Stops the reading of a long file (checked at each line).</summary>
+    private readonly CancellationToken _cancellation;
+
+    private KrlParser(string file, string text, TwinLimits? limits, CancellationToken cancellation)
     {
+        _cancellation = cancellation;
         _file = file;
         _limits = limits ?? TwinLimits.Default;
         if (text.Length > _limits.MaxProgramChars)
         {
             throw new KrlLoadException(file, 1, $"the file is longer than {_limits.MaxProgramChars} characters (the twin's limit)");
         }
-        _tokens = KrlLexer.Tokenize(file, text);
+        _tokens = KrlLexer.Tokenize(file, text, cancellation);
     }
 
     /// <summary>The value of an INT token; one past the INT range refuses the file.</summary>
@@ -64,10 +68,10 @@ internal sealed partial class KrlParser
 
     private KrlToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Count - 1)];
 
-    /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/>.</summary>
-    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null)
+    /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/> (until <paramref name="cancellation"/>, checked at each line).</summary>
+    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null, CancellationToken cancellation = default)
     {
-        var parser = new KrlParser(file, text, limits);
+        var parser = new KrlParser(file, text, limits, cancellation);
         parser.SkipLines();
         bool first = true;
         while (parser.Peek.Kind != KrlTokenKind.End)
@@ -82,10 +86,10 @@ internal sealed partial class KrlParser
         }
     }
 
-    /// <summary>Reads the DEFDAT data list of a <c>.dat</c> file; returns its declarations for the binder.</summary>
-    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null)
+    /// <summary>Reads the DEFDAT data list of a <c>.dat</c> file; returns its declarations for the binder (until <paramref name="cancellation"/>).</summary>
+    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null, CancellationToken cancellation = default)
     {
-        var parser = new KrlParser(file, text, limits);
+        var parser = new KrlParser(file, text, limits, cancellation);
         parser.SkipLines();
         KrlToken start = parser.Expect("DEFDAT");
         string name = parser.Identifier("the data list's name");
@@ -362,6 +366,7 @@ internal sealed partial class KrlParser
                 ? "KRL has no operator MOD: its arithmetic operators are + - * / (INT division with / truncates)"
                 : $"unexpected {token.Display}: the statement should end here");
         }
+        _cancellation.ThrowIfCancellationRequested();
         _at++;
     }
 

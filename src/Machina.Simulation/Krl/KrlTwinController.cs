@@ -87,7 +87,14 @@ internal sealed partial class KrlTwinController : IDisposable
     /// Loads files (name with extension, text): each <c>.src</c> with the <c>.dat</c> of the same name. Throws
     /// <see cref="KrlLoadException"/> for the first syntax error, unknown name or type error; nothing is loaded then.
     /// </summary>
-    public void Load(params (string Name, string Text)[] files)
+    public void Load(params (string Name, string Text)[] files) => Load(CancellationToken.None, files);
+
+    /// <summary>
+    /// Loads files as the overload without a token does, but stops with <see cref="OperationCanceledException"/> (nothing loaded)
+    /// once <paramref name="cancellation"/> is cancelled, checked at each line: a caller's deadline covers the reading of a
+    /// long file too.
+    /// </summary>
+    public void Load(CancellationToken cancellation, params (string Name, string Text)[] files)
     {
         var modules = new Dictionary<string, KrlModule>(_modules, StringComparer.OrdinalIgnoreCase);
         var data = new List<KrlDataList>();
@@ -98,7 +105,7 @@ internal sealed partial class KrlTwinController : IDisposable
             string extension = Path.GetExtension(name).ToLowerInvariant();
             if (extension == ".dat")
             {
-                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits);
+                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits, cancellation);
                 if (!string.Equals(list.Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, list.Line, $"DEFDAT {list.Name} must have the name of its file ({module})");
@@ -108,7 +115,7 @@ internal sealed partial class KrlTwinController : IDisposable
             else if (extension == ".src")
             {
                 var parsed = new KrlModule(module);
-                KrlParser.ParseSource(name, text, parsed, Options.Limits);
+                KrlParser.ParseSource(name, text, parsed, Options.Limits, cancellation);
                 if (!string.Equals(parsed.Routines[0].Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, parsed.Routines[0].Line, $"the first routine {parsed.Routines[0].Name} must have the name of its file ({module})");
@@ -152,6 +159,7 @@ internal sealed partial class KrlTwinController : IDisposable
                 }
             }
         }
+        cancellation.ThrowIfCancellationRequested();
         binder.BindAll();
         lock (_gate)
         {

@@ -62,8 +62,9 @@ internal static partial class RapidBuiltins
             Socket accepted;
             do
             {
-                Task<Socket> accept = listener.AcceptSocketAsync(call.Machine.Task.CancellationToken).AsTask();
-                if (!Wait(call, accept, call.Has(3) ? call.Num(3) : DefaultSocketSeconds))
+                using var abandon = CancellationTokenSource.CreateLinkedTokenSource(call.Machine.Task.CancellationToken);
+                Task<Socket> accept = listener.AcceptSocketAsync(abandon.Token).AsTask();
+                if (!WaitForAccept(call, accept, abandon, call.Has(3) ? call.Num(3) : DefaultSocketSeconds))
                 {
                     throw call.Error(RapidErrorNumbers.SockTimeout, "SocketAccept: no client connected in time");
                 }

@@ -121,6 +121,11 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 return;
             }
             client.NoDelay = true;
+            if (!_connections.TryEnter())
+            {
+                await RefuseAsync(client, cancellationToken).ConfigureAwait(false);
+                continue;
+            }
             lock (_gate)
             {
                 _clients.Add(client);
@@ -173,6 +178,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 _clients.Remove(client);
             }
             client.Dispose();
+            _connections.Leave();
         }
     }
 

@@ -53,6 +53,10 @@ internal static class FuzzCommand
             {
                 Console.WriteLine("  CRASH " + crash);
             }
+            foreach (string overrun in report.Overruns.Take(50))
+            {
+                Console.WriteLine("  OVERRUN " + overrun);
+            }
             if (report.Hang is not null)
             {
                 Console.WriteLine("  HANG " + report.Hang);

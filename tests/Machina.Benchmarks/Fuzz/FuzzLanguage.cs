@@ -188,7 +188,7 @@ internal sealed partial class FuzzLanguage
             using var twin = new KrlTwinController(new KrlTwinOptions { Limits = Limits, MaxTrace = 256 });
             try
             {
-                twin.Load((name + ".src", text));
+                twin.Load(token, (name + ".src", text));
             }
             catch (KrlLoadException)
             {

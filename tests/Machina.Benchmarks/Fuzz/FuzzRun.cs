@@ -21,6 +21,9 @@ internal sealed class FuzzReport(string language)
     /// <summary>A case that did not end within its deadline and the grace after it (the run stops there), or null.</summary>
     public string? Hang { get; set; }
 
+    /// <summary>Cases that stopped more than <see cref="FuzzRun.Overrun"/> after their deadline (not hangs: within the grace).</summary>
+    public List<string> Overruns { get; } = [];
+
     /// <summary>The longest case, in milliseconds.</summary>
     public double LongestCaseMs { get; set; }
 
@@ -35,7 +38,7 @@ internal sealed class FuzzReport(string language)
 
     /// <summary>One line per outcome and the totals.</summary>
     public override string ToString() => string.Create(CultureInfo.InvariantCulture,
-        $"{Language}: {Cases:N0} cases in {Seconds:0.0} s; {string.Join(", ", Outcomes.Select(o => $"{o.Key} {o.Value:N0}"))}; crashes {Crashes.Count}, " +
+        $"{Language}: {Cases:N0} cases in {Seconds:0.0} s; {string.Join(", ", Outcomes.Select(o => $"{o.Key} {o.Value:N0}"))}; crashes {Crashes.Count}, overruns {Overruns.Count}, " +
         $"hang {(Hang is null ? "none" : "YES")}; longest case {LongestCaseMs:0} ms; largest heap {LargestHeap / 1048576.0:0} MB; peak working set {PeakWorkingSet / 1048576.0:0} MB");
 }
 
@@ -47,6 +50,9 @@ internal static class FuzzRun
 {
     /// <summary>Each case's cancellation deadline.</summary>
     public static readonly TimeSpan Deadline = TimeSpan.FromSeconds(2);
+
+    /// <summary>How long after its deadline a case may take to stop before it is listed as an overrun (a wait or loop that ignores the cancellation).</summary>
+    public static readonly TimeSpan Overrun = TimeSpan.FromSeconds(1);
 
     /// <summary>How long after its deadline a case may take to stop before it counts as a hang.</summary>
     public static readonly TimeSpan Grace = TimeSpan.FromSeconds(30);
@@ -71,7 +77,12 @@ internal static class FuzzRun
                 report.Cases = i + 1;
                 break;
             }
-            report.LongestCaseMs = Math.Max(report.LongestCaseMs, Stopwatch.GetElapsedTime(started).TotalMilliseconds);
+            TimeSpan took = Stopwatch.GetElapsedTime(started);
+            report.LongestCaseMs = Math.Max(report.LongestCaseMs, took.TotalMilliseconds);
+            if (took > Deadline + Overrun)
+            {
+                report.Overruns.Add(string.Create(CultureInfo.InvariantCulture, $"case {i}: {took.TotalSeconds:0.0} s {Save(saveTo, language.Name, i, "overrun", program)}"));
+            }
             if (error is not null)
             {
                 string where = error.StackTrace?.Split('\n').FirstOrDefault()?.Trim() ?? "";

@@ -21,7 +21,7 @@ public class ControllerRestartTests(ITestOutputHelper output)
     public static TheoryData<string, int> Seeds()
     {
         var data = new TheoryData<string, int>();
-        foreach (string brand in (string[])["ABB", "UR"])
+        foreach (string brand in (string[])["ABB", "UR", "KUKA"])
         {
             foreach (int seed in (int[])[40001, 40002, 40003])
             {
@@ -30,17 +30,6 @@ public class ControllerRestartTests(ITestOutputHelper output)
         }
         return data;
     }
-
-    /// <summary>
-    /// KUKA: passes, but about 1 trial in 30 (and once this seed under load) the virtual KUKA's driver program does not come back
-    /// after the restart and the host's wait times out: a hang of the twin's restart, not found yet (docs/reliability.md,
-    /// "Controller restarts"). Kept out of the suite until it is; the benchmark command runs KUKA's 200 trials.
-    /// </summary>
-    [Theory(Skip = "the virtual KUKA's restart sometimes hangs (docs/reliability.md, Controller restarts)")]
-    [InlineData("KUKA", 40001)]
-    [InlineData("KUKA", 40002)]
-    [InlineData("KUKA", 40003)]
-    public Task Restart_ByDefault_Kuka(string brand, int seed) => Restart_ByDefault_NothingRunsTwice_UnknownOutcomesFailAndAreReported(brand, seed);
 
     [Theory]
     [MemberData(nameof(Seeds))]
@@ -90,6 +79,7 @@ public class ControllerRestartTests(ITestOutputHelper output)
     [Theory]
     [InlineData("ABB", 40001)]
     [InlineData("UR", 40001)]
+    [InlineData("KUKA", 40001)]
     public async Task Restart_ResendPolicy_UnknownOutcomesSentAgain_EveryActionExecuted(string brand, int seed)
     {
         RestartTrial.Result r = await RestartTrial.RunAsync(brand, seed, b => b.ResendAfterControllerRestart = true, Limit);
