@@ -32,8 +32,12 @@ internal static partial class SimCommand
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
           --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
-          --load PROGRAM    abb: load a compiled RAPID program (.mod, .pgf or a folder) and run its main in real time, as a
-                            controller would, telling its pendant messages, until it ends or Ctrl+C (listens on no port)
+          --load [TASK=]PROGRAM
+                            abb: load a RAPID program (.mod, .sys, .pgf or a folder: its .sys then its .mod files) into a task
+                            and run its main in real time, as a controller would, telling its pendant messages, until every
+                            task ends or Ctrl+C. Repeat it for several tasks (--load T_ROB1=driver.mod --load T_MON=monitor.mod):
+                            T_ROB1 moves the arm, the others run in the background, PERS data are shared; without TASK= the
+                            program goes to T_ROB1
                             kuka: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
                             time and list each step it makes, then stop (exit code 1 when the controller stops it)
 
@@ -62,10 +66,10 @@ internal static partial class SimCommand
         double speed = args.Positive("--speed-factor", 1);
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");
-        if (args.Value("--load") is string load)
+        if (args.Value("--load") is not null)
         {
             return brand == AbbBrand.Definition.Type
-                ? await SimLoad.RunAbbAsync(load, model, context).ConfigureAwait(false)
+                ? await SimLoad.RunAbbAsync(args.Values("--load"), model, context).ConfigureAwait(false)
                 : throw new UsageException($"--load runs compiled programs on abb (RAPID) and kuka (KRL), not on {Brands.Name(brand)}.");
         }
 
