@@ -38,6 +38,7 @@ internal static class SimLoad
             Model = model ?? Brands.Model(AbbBrand.Definition.DefaultModel, AbbBrand.Definition.Type)!,
             RealTime = true,
             Time = context.Time,
+            Signals = Machina.Simulation.VirtualAbbController.Signals, // the virtual ABB's IO board: DO_1…DO_16, DI_1…DI_16, AO_1…AO_4, AI_1…AI_4
         };
         var twin = new RapidTwinController(options) { LabelsTasks = tasks.Length > 1 || tasks[0].Task != RapidTwinController.MotionTask };
         TextWriter output = context.Stdout;
