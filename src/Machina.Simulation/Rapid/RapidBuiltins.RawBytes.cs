@@ -167,7 +167,7 @@ internal static partial class RapidBuiltins
         do
         {
             int max = (wanted > 0 ? wanted : RapidRawBytes.Capacity) - received.Count;
-            received.AddRange(ReceiveChunk(call, connection, max, seconds));
+            received.AddRange(Encoding.Latin1.GetBytes(ReceiveText(call, connection, max, seconds)));
         }
         while (wanted > 0 && received.Count < wanted);
         if (call.Has(2))
@@ -191,8 +191,8 @@ internal static partial class RapidBuiltins
         }
     }
 
-    /// <summary>Some bytes (at most <paramref name="max"/>) as they arrive (\Str, \RawData and \Data alike); ERR_SOCK_TIMEOUT or ERR_SOCK_CLOSED as SocketReceive raises them.</summary>
-    private static byte[] ReceiveChunk(RapidCall call, Socket connection, int max, double seconds)
+    /// <summary>Some bytes (at most <paramref name="max"/>, one character each) as they arrive (\Str, \RawData and \Data alike); ERR_SOCK_TIMEOUT or ERR_SOCK_CLOSED as SocketReceive raises them.</summary>
+    private static string ReceiveText(RapidCall call, Socket connection, int max, double seconds)
     {
         IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
         if (seam?.Inbox(connection) is { } inbox)
@@ -212,7 +212,7 @@ internal static partial class RapidBuiltins
                 Device(call).Status = 5;
                 throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
             }
-            return Encoding.Latin1.GetBytes(taken);
+            return taken;
         }
         var buffer = new byte[max];
         int count = ReceiveReady(connection, buffer);
@@ -239,8 +239,9 @@ internal static partial class RapidBuiltins
             Device(call).Status = 5;
             throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
         }
-        seam?.Received(connection, Encoding.Latin1.GetString(buffer, 0, count), call.Machine.Task.CancellationToken);
-        return buffer[..count];
+        string text = Encoding.Latin1.GetString(buffer, 0, count);
+        seam?.Received(connection, text, call.Machine.Task.CancellationToken);
+        return text;
     }
 
     /// <summary>The bytes SocketSend sends: \Str, \RawData (its length, or \NoOfBytes) or \Data (an array of bytes, or \NoOfBytes of them).</summary>

@@ -115,7 +115,7 @@ internal static partial class RapidBuiltins
                 ReceiveRaw(call, connection, seconds);
                 return;
             }
-            string text = Encoding.Latin1.GetString(ReceiveChunk(call, connection, RapidMachine.MaxStringLength, seconds));
+            string text = ReceiveText(call, connection, RapidMachine.MaxStringLength, seconds);
             call.Set(1, text);
             if (call.Has(5))
             {
