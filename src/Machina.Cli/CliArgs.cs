@@ -11,6 +11,10 @@ internal sealed class CliArgs
     private readonly string _command;
     private readonly Dictionary<string, string> _values = new(StringComparer.Ordinal);
     private readonly HashSet<string> _flags = new(StringComparer.Ordinal);
+    private readonly Dictionary<string, List<string>> _repeated = new(StringComparer.Ordinal);
+
+    /// <summary>The options that may be given more than once (each value kept, in order): <c>--load TASK=PATH</c> of <c>machina sim abb</c>.</summary>
+    private static readonly HashSet<string> Repeatable = new(["--load"], StringComparer.Ordinal);
 
     private CliArgs(string command) => _command = command;
 
@@ -53,7 +57,12 @@ internal sealed class CliArgs
                 {
                     throw new UsageException($"{name} needs a value, e.g. {name} {Example(name)}. See: machina {command} --help");
                 }
-                if (!parsed._values.TryAdd(name, value))
+                if (Repeatable.Contains(name))
+                {
+                    (parsed._repeated.TryGetValue(name, out List<string>? all) ? all : parsed._repeated[name] = []).Add(value);
+                    parsed._values.TryAdd(name, value);
+                }
+                else if (!parsed._values.TryAdd(name, value))
                 {
                     throw new UsageException($"{name} is given twice. See: machina {command} --help");
                 }
@@ -71,6 +80,9 @@ internal sealed class CliArgs
         }
         return parsed;
     }
+
+    /// <summary>Every value of a repeatable option, in the order given (empty when it was not given).</summary>
+    internal IReadOnlyList<string> Values(string name) => _repeated.TryGetValue(name, out List<string>? all) ? all : [];
 
     /// <summary>The value of an option, or null when it was not given.</summary>
     internal string? Value(string name) => _values.GetValueOrDefault(name);

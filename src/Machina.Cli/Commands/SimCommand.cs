@@ -32,9 +32,16 @@ internal static partial class SimCommand
           --bind ADDRESS    the address to listen on (default 127.0.0.1, this computer only; 0.0.0.0 for every network)
           --speed-factor F  how much faster than real time the robot moves (default 1; 10 is ten times faster)
           --model M         move like this arm, e.g. "IRB 120" (joints and pose then follow each other)
+          --rws-port N      abb: serve Robot Web Services (RWS 1.0, digest log-on "Default User"/"robotics") on port N (default 0:
+                            a free port, named in the log), in front of the controller's RAPID tasks: "machina drivers abb
+                            --install --host 127.0.0.1 --rws-port N" and RWS clients work against it
           --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
-          --load PROGRAM    abb: load a compiled RAPID program (.mod, .pgf or a folder) and run its main in real time, as a
-                            controller would, telling its pendant messages, until it ends or Ctrl+C (listens on no port)
+          --load [TASK=]PROGRAM
+                            abb: load a RAPID program (.mod, .sys, .pgf or a folder: its .sys then its .mod files) into a task
+                            and run its main in real time, as a controller would, telling its pendant messages, until every
+                            task ends or Ctrl+C. Repeat it for several tasks (--load T_ROB1=driver.mod --load T_MON=monitor.mod):
+                            T_ROB1 moves the arm, the others run in the background, PERS data are shared; without TASK= the
+                            program goes to T_ROB1
                             kuka: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
                             time and list each step it makes, then stop (exit code 1 when the controller stops it)
 
@@ -42,7 +49,7 @@ internal static partial class SimCommand
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model", "--load"],
+        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port"],
         Flags: ["--quiet"],
         RunAsync);
 
@@ -63,10 +70,10 @@ internal static partial class SimCommand
         double speed = args.Positive("--speed-factor", 1);
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");
-        if (args.Value("--load") is string load)
+        if (args.Value("--load") is not null)
         {
             return brand == AbbBrand.Definition.Type
-                ? await SimLoad.RunAbbAsync(load, model, context).ConfigureAwait(false)
+                ? await SimLoad.RunAbbAsync(args.Values("--load"), model, context).ConfigureAwait(false)
                 : throw new UsageException($"--load runs compiled programs on abb (RAPID) and kuka (KRL), not on {Brands.Name(brand)}.");
         }
 
@@ -88,6 +95,7 @@ internal static partial class SimCommand
         RelayRoute[] routes = urLayout ? UrRoutes(controller) : controller.CompactRoutes;
         await using TcpRelay relay = TcpRelay.Start(bind, port, routes, Log);
         await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
+        await using IAsyncDisposable? rws = brand == AbbBrand.Definition.Type ? StartRws(controller, bind, args.Port("--rws-port", 0, allowZero: true), Log) : null;
         Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(routes, relay.Ports)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +

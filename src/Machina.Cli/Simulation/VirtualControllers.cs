@@ -14,6 +14,9 @@ internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotMod
 /// <summary>A virtual controller listening on 127.0.0.1, until disposed: one of <see cref="VirtualControllerRegistry"/>, as the command line shows it.</summary>
 internal sealed class RunningController(RunningVirtualController controller) : IAsyncDisposable
 {
+    /// <summary>The controller itself (for the ABB's Robot Web Services, which act on its RAPID twin).</summary>
+    internal RunningVirtualController Inner => controller;
+
     /// <summary>The brand whose driver it imitates.</summary>
     internal RobotType Brand => controller.Brand;
 

@@ -40,6 +40,16 @@ internal sealed partial class RapidBinder
             scope.InErrorHandler = true;
             CollectLabels(handler, scope.Labels);
             BindBlock(handler, scope);
+            scope.InErrorHandler = false;
+        }
+        foreach (RapidExpr errorNumber in routine.ErrorList ?? [])
+        {
+            BindValue(errorNumber, NumType, scope);
+        }
+        if (routine.UndoHandler is { } undo)
+        {
+            CollectLabels(undo, scope.Labels);
+            BindBlock(undo, scope);
         }
         routine.FrameSize = routine.SlotTypes.Count;
     }

@@ -108,7 +108,8 @@ internal sealed partial class RapidBinder
         Dictionary<string, RapidCell> local = _localData[module];
         foreach (RapidDataDecl decl in module.Data)
         {
-            if (local.ContainsKey(decl.Name) || (!decl.Local && _program.Globals.TryGetValue(decl.Name, out RapidCell? old) && old.Storage != RapidStorage.Pers)
+            if (local.ContainsKey(decl.Name) || (!decl.Local && _program.Globals.TryGetValue(decl.Name, out RapidCell? old) && old.Storage != RapidStorage.Pers
+                && !_program.Predefined.Remove(decl.Name))
                 || _program.Routines.ContainsKey(decl.Name))
             {
                 throw Refuse(decl.Line, RapidLoadException.Reference($"'{decl.Name}' is already defined"));
@@ -142,6 +143,10 @@ internal sealed partial class RapidBinder
                 }
             }
             (decl.Local ? local : _program.Globals)[decl.Name] = cell;
+            if (decl.Local)
+            {
+                _program.ModuleData.TryAdd(decl.Name, cell);
+            }
         }
     }
 

@@ -36,7 +36,7 @@ internal static partial class RapidBuiltins
                     text += RapidValues.ToText(call.Value(p));
                 }
             }
-            call.Machine.Task.Controller.Pendant.Log(text);
+            call.Machine.Task.Controller.Pendant.Log(call.Machine.Task.Controller.TaskLabel(call.Machine.Task) + text);
             call.Machine.Task.Controller.Arm.Record(call.Line, TwinTraceKind.Message, text);
         }),
         Instruction("TPErase", [], _ => { }),

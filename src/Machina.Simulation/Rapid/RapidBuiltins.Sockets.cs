@@ -77,12 +77,16 @@ internal static partial class RapidBuiltins
             while (seam is not null && !seam.Accepted(((IPEndPoint)listener.LocalEndpoint).Port, accepted, call.Machine.Task.CancellationToken));
             client.Connection = accepted;
             client.Connection.NoDelay = true;
+            if (call.Has(2))
+            {
+                call.Set(2, (accepted.RemoteEndPoint as IPEndPoint)?.Address.ToString() ?? "");
+            }
             client.Status = 2;
         }),
-        Instruction("SocketSend", [P("Socket", "socketdev"), Opt("Str", "string"), Opt("RawData", null), Opt("Data", null), Opt("NoOfBytes", "num")], call =>
+        Instruction("SocketSend", [P("Socket", "socketdev"), Opt("Str", "string"), Opt("RawData", "rawbytes"), Opt("Data", null), Opt("NoOfBytes", "num")], call =>
         {
             Socket connection = Connected(call);
-            byte[] bytes = Encoding.Latin1.GetBytes(call.Has(1) ? call.Str(1) : throw ArgumentError(call, "SocketSend: the twin sends \\Str only"));
+            byte[] bytes = SendBytes(call);
             try
             {
                 if (call.Machine.Task.Controller.Options.Seam is { } seam)
@@ -102,71 +106,21 @@ internal static partial class RapidBuiltins
                 throw call.Error(RapidErrorNumbers.SockClosed, $"SocketSend: {ex.Message}");
             }
         }),
-        Instruction("SocketReceive", [P("Socket", "socketdev"), Opt("Str", "string", true), Opt("RawData", null, true), Opt("Data", null, true),
+        Instruction("SocketReceive", [P("Socket", "socketdev"), Opt("Str", "string", true), Opt("RawData", "rawbytes", true), Opt("Data", null, true),
             Opt("ReadNoOfBytes", "num"), Opt("NoRecBytes", "num", true), Opt("Time", "num")], call =>
         {
             Socket connection = Connected(call);
+            double seconds = call.Has(6) ? call.Num(6) : DefaultSocketSeconds;
             if (!call.Has(1))
             {
-                throw ArgumentError(call, "SocketReceive: the twin receives \\Str only");
-            }
-            double seconds = call.Has(6) ? call.Num(6) : DefaultSocketSeconds;
-            IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
-            if (seam?.Inbox(connection) is { } inbox)
-            {
-                // The controller read the socket already: take what it holds, as from a network stack's buffer.
-                string? taken;
-                while ((taken = inbox.TryTake(RapidMachine.MaxStringLength, out Task arrival)) is null)
-                {
-                    if (!Wait(call, arrival, seconds))
-                    {
-                        throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
-                    }
-                }
-                if (taken.Length == 0)
-                {
-                    seam.Closed(connection, call.Machine.Task.CancellationToken);
-                    Device(call).Status = 5;
-                    throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
-                }
-                call.Set(1, taken);
-                if (call.Has(5))
-                {
-                    call.Set(5, (double)taken.Length);
-                }
+                ReceiveRaw(call, connection, seconds);
                 return;
             }
-            var buffer = new byte[RapidMachine.MaxStringLength];
-            int count = ReceiveReady(connection, buffer);
-            if (count < 0)
-            {
-                Task<int> receive;
-                try
-                {
-                    receive = connection.ReceiveAsync(buffer, SocketFlags.None, call.Machine.Task.CancellationToken).AsTask();
-                }
-                catch (ObjectDisposedException)
-                {
-                    receive = Task.FromResult(0); // closed by the controller (a fault a test injected): as closed by the other end
-                }
-                if (!Wait(call, receive, seconds))
-                {
-                    throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
-                }
-                count = receive.IsFaulted ? 0 : receive.Result;
-            }
-            if (count == 0)
-            {
-                seam?.Closed(connection, call.Machine.Task.CancellationToken);
-                Device(call).Status = 5;
-                throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
-            }
-            string text = Encoding.Latin1.GetString(buffer, 0, count);
-            seam?.Received(connection, text, call.Machine.Task.CancellationToken);
+            string text = ReceiveText(call, connection, RapidMachine.MaxStringLength, seconds);
             call.Set(1, text);
             if (call.Has(5))
             {
-                call.Set(5, (double)count);
+                call.Set(5, (double)text.Length);
             }
         }),
         Instruction("SocketClose", [P("Socket", "socketdev")], call =>

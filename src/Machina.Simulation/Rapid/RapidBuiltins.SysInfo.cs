@@ -23,7 +23,7 @@ internal static partial class RapidBuiltins
                 1 => SoftwareVersion,
                 2 => c.Options.Model.Name,
                 3 => "virtual",
-                4 => "127.0.0.1",
+                4 => c.Options.LanIp,
                 5 => "en",
                 _ => "Machina virtual controller",
             };

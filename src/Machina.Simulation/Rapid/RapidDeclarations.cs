@@ -85,6 +85,12 @@ internal sealed class RapidRoutine(int line, RapidRoutineKind kind, string name,
     /// <summary>The ERROR handler's statements, or null.</summary>
     public List<RapidStmt>? ErrorHandler { get; set; }
 
+    /// <summary>The error numbers the ERROR handler takes (<c>ERROR (ERR_A, ERR_B)</c>), or null when it takes every error.</summary>
+    public List<RapidExpr>? ErrorList { get; set; }
+
+    /// <summary>The UNDO handler's statements (run when an error or ExitCycle ends the routine early), or null.</summary>
+    public List<RapidStmt>? UndoHandler { get; set; }
+
     /// <summary>The module it is in.</summary>
     public RapidModule? Module { get; set; }
 

@@ -4,7 +4,7 @@ namespace Machina.Simulation.Rapid;
 /// The predefined error numbers (<c>ERR_…</c>, data type errnum) that the twin raises or that programs test in error handlers.
 /// The names and meanings are RAPID's; the numeric values are the twin's own (programs compare them by name).
 /// </summary>
-internal static class RapidErrorNumbers
+internal static partial class RapidErrorNumbers
 {
     /// <summary>A motion target out of reach or beyond a joint limit.</summary>
     public const int RobLimit = 41001;
@@ -46,11 +46,11 @@ internal static class RapidErrorNumbers
     public const int NotPres = 41013;
 
     /// <summary>The error numbers by name, as the binder offers them.</summary>
-    public static IReadOnlyDictionary<string, int> ByName { get; } = new Dictionary<string, int>(StringComparer.OrdinalIgnoreCase)
+    public static IReadOnlyDictionary<string, int> ByName { get; } = WithCatalog(new Dictionary<string, int>(StringComparer.OrdinalIgnoreCase)
     {
         ["ERR_ROBLIMIT"] = RobLimit, ["ERR_DIVZERO"] = DivZero, ["ERR_OUTOFBND"] = OutOfBounds, ["ERR_SOCK_TIMEOUT"] = SockTimeout,
         ["ERR_SOCK_CLOSED"] = SockClosed, ["ERR_WAIT_MAXTIME"] = WaitMaxTime, ["ERR_ALIASIO_DEF"] = AliasIoDef,
         ["ERR_NO_ALIASIO_DEF"] = NoAliasIoDef, ["ERR_ARGVALERR"] = ArgValErr, ["ERR_STRTOOLNG"] = StringTooLong,
         ["ERR_NUMOVERFLOW"] = NumOverflow, ["ERR_SOCK_ADDR_INUSE"] = SockAddrInUse, ["ERR_NOTPRES"] = NotPres,
-    };
+    });
 }

@@ -84,7 +84,7 @@ internal sealed partial class RapidMachine(RapidTask task)
             {
                 return ExecuteAfterTraps(statement, frame);
             }
-            catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null && !ex.Fatal)
+            catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null && !ex.Fatal && Takes(frame, ex.ErrorNumber))
             {
                 frame.Handling = ex;
                 Task.Program.Errno.Value = (double)ex.ErrorNumber;
@@ -303,7 +303,7 @@ internal sealed partial class RapidMachine(RapidTask task)
                 object value = decl.Initial is null ? RapidValues.Default(type, dims) : RapidValues.Copy(Evaluate(decl.Initial, frame));
                 cells[slot++] = new RapidCell(decl.Name, type, decl.Storage, value);
             }
-            RapidFlow flow = ExecuteBlock(routine.Body, frame);
+            RapidFlow flow = routine.UndoHandler is null ? ExecuteBlock(routine.Body, frame) : ExecuteUndoable(routine, frame);
             if (flow == RapidFlow.Goto)
             {
                 throw new RapidRuntimeException(0, line, $"the label '{frame.GotoLabel}' cannot be reached from its GOTO");

@@ -302,18 +302,23 @@ internal sealed partial class RapidParser
         {
             if (Accept("("))
             {
+                routine.ErrorList = [];
                 do
                 {
-                    Expression();
+                    routine.ErrorList.Add(Expression());
                 }
                 while (Accept(","));
                 Expect(")");
             }
             routine.ErrorHandler = Statements(BodyEnds);
         }
-        if (Peek.Is("BACKWARD") || Peek.Is("UNDO"))
+        if (AcceptWord("UNDO"))
         {
-            throw Error($"{Peek.Text.ToUpperInvariant()} handlers are not supported by the twin");
+            routine.UndoHandler = Statements(BodyEnds);
+        }
+        if (Peek.Is("BACKWARD"))
+        {
+            throw Error("BACKWARD handlers are not supported by the twin");
         }
         string end = kind switch { RapidRoutineKind.Proc => "ENDPROC", RapidRoutineKind.Func => "ENDFUNC", _ => "ENDTRAP" };
         ExpectWord(end);

@@ -4,7 +4,7 @@ namespace Machina.Simulation.Rapid;
 /// The predefined data of a task (RAPID reference manual, "Predefined data"): speeds v5…v7000 and vmax, zones z0…z200 and fine,
 /// tool0, wobj0, load0, the error numbers ERR_…, the interrupt and socket constants, pi, and the IO configuration's signals.
 /// </summary>
-internal static class RapidPredefined
+internal static partial class RapidPredefined
 {
     private static readonly int[] Speeds = [5, 10, 20, 30, 40, 50, 60, 80, 100, 150, 200, 300, 400, 500, 600, 800, 1000, 1500, 2000, 2500, 3000, 4000, 5000, 6000, 7000];
 
@@ -50,6 +50,7 @@ internal static class RapidPredefined
         {
             Add(program, name, RapidTypes.Num, value);
         }
+        AddLanguageConstants(program);
         foreach ((string name, string type) in controller.Options.Signals)
         {
             Add(program, name, RapidTypes.All[type], new RapidSignalRef { Signal = name });
@@ -60,6 +61,9 @@ internal static class RapidPredefined
 
     private static RapidRecord Record(RapidType type, params double[] values) => new(type, [.. values.Select(v => (object)v)]);
 
-    private static void Add(RapidProgram program, string name, RapidType type, object value) =>
+    private static void Add(RapidProgram program, string name, RapidType type, object value)
+    {
         program.Globals[name] = new RapidCell(name, new RapidDataType(type), RapidStorage.Const, value);
+        program.Predefined.Add(name);
+    }
 }

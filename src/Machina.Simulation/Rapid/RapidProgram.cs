@@ -12,6 +12,12 @@ internal sealed class RapidProgram
     /// <summary>The task's global data by name (predefined data included).</summary>
     public Dictionary<string, RapidCell> Globals { get; } = new(StringComparer.OrdinalIgnoreCase);
 
+    /// <summary>The task's LOCAL module data by name (the first module's when two have the same name), for GetDataVal and SetDataVal.</summary>
+    public Dictionary<string, RapidCell> ModuleData { get; } = new(StringComparer.OrdinalIgnoreCase);
+
+    /// <summary>The names of the predefined data: a program's own global data of the same name hides them, as in RAPID's scope rules.</summary>
+    public HashSet<string> Predefined { get; } = new(StringComparer.OrdinalIgnoreCase);
+
     /// <summary>The record types by name (predefined ones included).</summary>
     public Dictionary<string, RapidType> Types { get; } = new(RapidTypes.All, StringComparer.OrdinalIgnoreCase);
 

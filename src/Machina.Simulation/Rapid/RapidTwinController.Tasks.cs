@@ -143,7 +143,7 @@ internal sealed partial class RapidTwinController
         task.CancellationToken = cancellation;
         try
         {
-            task.Machine.Run(main);
+            RunCycles(task, main, cancellation);
             FinishMotion(task, cancellation);
             return End(task, RapidProgramState.Finished, null, 0);
         }

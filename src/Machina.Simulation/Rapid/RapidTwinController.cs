@@ -145,9 +145,12 @@ internal sealed partial class RapidTwinController
             {
                 return ModuleFiles(programs[0]);
             }
+            // System modules (.sys) first, as the controller loads them before the program; then the program's modules.
+            string[] system = Directory.GetFiles(path, "*.sys");
             string[] modules = Directory.GetFiles(path, "*.mod");
+            Array.Sort(system, StringComparer.Ordinal);
             Array.Sort(modules, StringComparer.Ordinal);
-            return modules.Length > 0 ? modules : throw new FileNotFoundException($"The folder \"{path}\" has no .pgf or .mod file.");
+            return system.Length + modules.Length > 0 ? [.. system, .. modules] : throw new FileNotFoundException($"The folder \"{path}\" has no .pgf, .mod or .sys file.");
         }
         if (path.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase))
         {

@@ -26,6 +26,9 @@ internal sealed class RapidTwinOptions
     /// <summary>Where a hosting controller watches and disturbs the program's sockets (faults, inspection); null: direct sockets.</summary>
     public IRapidSocketSeam? Seam { get; init; }
 
+    /// <summary>The address the controller serves on, as GetSysInfo(\LanIp) reports it (default 127.0.0.1).</summary>
+    public string LanIp { get; init; } = "127.0.0.1";
+
     /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, arrays, module size).</summary>
     public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

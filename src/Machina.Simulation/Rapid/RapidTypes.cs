@@ -5,7 +5,7 @@ namespace Machina.Simulation.Rapid;
 /// (pos, orient, pose, confdata, robtarget, jointtarget, speeddata, zonedata, tooldata, loaddata, wobjdata…) and the non-value
 /// types the instructions use (socketdev, signals, clock, intnum…).
 /// </summary>
-internal static class RapidTypes
+internal static partial class RapidTypes
 {
     /// <summary><c>num</c></summary>
     public static readonly RapidType Num = new("num", RapidTypeKind.Num);
@@ -83,6 +83,7 @@ internal static class RapidTypes
             new("signaldi", RapidTypeKind.Opaque, create: () => new RapidSignalRef()), new("signaldo", RapidTypeKind.Opaque, create: () => new RapidSignalRef()),
             new("signalai", RapidTypeKind.Opaque, create: () => new RapidSignalRef()), new("signalao", RapidTypeKind.Opaque, create: () => new RapidSignalRef()),
             new("signalgi", RapidTypeKind.Opaque, create: () => new RapidSignalRef()), new("signalgo", RapidTypeKind.Opaque, create: () => new RapidSignalRef()),
+            .. LanguageTypes(),
         ];
         return types.ToDictionary(t => t.Name, StringComparer.OrdinalIgnoreCase);
     }

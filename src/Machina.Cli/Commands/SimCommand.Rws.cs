@@ -1,0 +1,47 @@
+using System.Net;
+using Machina.Cli.Simulation;
+using Machina.Simulation;
+using Machina.Simulation.Rws;
+
+namespace Machina.Cli.Commands;
+
+/// <summary><c>machina sim abb</c>: Robot Web Services in front of the virtual ABB's RAPID tasks, on the port the log names.</summary>
+internal static partial class SimCommand
+{
+    /// <summary>
+    /// Starts Robot Web Services for the virtual ABB's RAPID twin, reachable on <paramref name="bind"/> at <paramref name="port"/>
+    /// (0: a free one), and names the port; null when the controller runs no RAPID. Disposing stops both.
+    /// </summary>
+    private static IAsyncDisposable? StartRws(RunningController controller, IPAddress bind, int port, Action<string> log)
+    {
+        if (controller.Inner.Controller is not VirtualAbbController { Twin: { } twin })
+        {
+            return null;
+        }
+        var server = new RwsTwinServer(twin);
+        server.Start();
+        TcpRelay relay;
+        try
+        {
+            relay = TcpRelay.Start(bind, port, [new RelayRoute(0, server.Port, "RWS")], log);
+        }
+        catch
+        {
+            server.DisposeAsync().AsTask().GetAwaiter().GetResult();
+            throw;
+        }
+        log($"Robot Web Services (RWS 1.0) on {bind}:{relay.Port}, user \"Default User\", password \"robotics\"; e.g. " +
+            $"machina drivers abb --install --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --rws-port {relay.Port} --port {DefaultPort + 100}");
+        return new RwsEndpoint(server, relay);
+    }
+
+    /// <summary>The RWS server and its relay, stopped together.</summary>
+    private sealed class RwsEndpoint(RwsTwinServer server, TcpRelay relay) : IAsyncDisposable
+    {
+        public async ValueTask DisposeAsync()
+        {
+            await relay.DisposeAsync().ConfigureAwait(false);
+            await server.DisposeAsync().ConfigureAwait(false);
+        }
+    }
+}

@@ -1,0 +1,47 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>Error lists of ERROR handlers and UNDO handlers (RAPID kernel, "Error recovery" and "UNDO").</summary>
+internal sealed partial class RapidMachine
+{
+    /// <summary>True when the ERROR handler of <paramref name="frame"/>'s routine takes error <paramref name="errno"/> (its error list names it, or it has none).</summary>
+    private bool Takes(RapidFrame frame, int errno)
+    {
+        if (frame.Routine.ErrorList is not { } list)
+        {
+            return true;
+        }
+        foreach (RapidExpr e in list)
+        {
+            double listed = (double)Evaluate(e, frame);
+            if (listed == errno || listed == RapidErrorNumbers.LongJumpAll)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>
+    /// Runs a routine's body; when an error or ExitCycle leaves it early, its UNDO handler runs first (an error inside the UNDO
+    /// handler is dropped: the first one goes on).
+    /// </summary>
+    private RapidFlow ExecuteUndoable(RapidRoutine routine, RapidFrame frame)
+    {
+        try
+        {
+            return ExecuteBlock(routine.Body, frame);
+        }
+        catch (Exception ex) when (ex is RapidRuntimeException { Fatal: false } or RapidExitCycleException)
+        {
+            try
+            {
+                ExecuteBlock(routine.UndoHandler!, frame);
+            }
+            catch (RapidRuntimeException undoError) when (!undoError.Fatal)
+            {
+                Task.Controller.Pendant.Log($"{Task.Controller.TaskLabel(Task)}UNDO handler of {routine.Name}: {undoError.Reason} (line {undoError.Line})");
+            }
+            throw;
+        }
+    }
+}
