@@ -151,7 +151,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Line = statement.Line;
             Step();
             Controller.Line = statement.Line;
-            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs))
+            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || Controller.TimersCounting))
             {
                 // An interrupt's condition reads global and system variables only: it can only change after such a write or an input.
                 _checkedWrites = _writes;

@@ -67,7 +67,7 @@ internal sealed partial class KrlParser
     /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/>.</summary>
     public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null)
     {
-        var parser = new KrlParser(file, text, limits);
+        var parser = new KrlParser(file, text, limits) { _externals = module.Externals };
         parser.SkipLines();
         bool first = true;
         while (parser.Peek.Kind != KrlTokenKind.End)
@@ -97,6 +97,7 @@ internal sealed partial class KrlParser
         }
         parser.EndOfLine();
         var list = new KrlDataList(file, name, isPublic, start.Line);
+        parser._externals = list.Externals;
         while (!parser.Peek.Is("ENDDAT"))
         {
             if (parser.Peek.Kind == KrlTokenKind.End)
@@ -233,13 +234,18 @@ internal sealed partial class KrlParser
         return routine;
     }
 
-    /// <summary>True when the line starts a declaration: DECL, or a type name followed by a variable name.</summary>
-    private bool IsDeclaration() => Peek.Is("DECL") || Peek.Is("STRUC") || Peek.Is("ENUM")
+    /// <summary>True when the line starts a declaration: DECL, EXT, EXTFCT, or a type name followed by a variable name.</summary>
+    private bool IsDeclaration() => Peek.Is("DECL") || Peek.Is("STRUC") || Peek.Is("ENUM") || IsExternal()
         || (Peek.Kind == KrlTokenKind.Name && KrlTypes.Find(Peek.Text) is not null && PeekAt(1).Kind == KrlTokenKind.Name);
 
     /// <summary>[DECL] [GLOBAL] [CONST] type name[sizes] [= value], name…</summary>
     private List<KrlDeclaration> Declaration(bool allowInitial)
     {
+        if (IsExternal())
+        {
+            External();
+            return [];
+        }
         if (Peek.Is("STRUC") || Peek.Is("ENUM"))
         {
             throw Error(Peek, $"{Peek.Text.ToUpperInvariant()} type declarations are not supported by the twin (the Machina files have none)");
@@ -396,4 +402,7 @@ internal sealed class KrlDataList(string file, string name, bool isPublic, int l
 
     /// <summary>The declarations, in order.</summary>
     public List<KrlDeclaration> Declarations { get; } = [];
+
+    /// <summary>The routines its EXT and EXTFCT declarations name.</summary>
+    public List<KrlExternal> Externals { get; } = [];
 }

@@ -21,6 +21,9 @@ internal sealed partial class KrlTwinController
     private readonly Dictionary<string, int> _ekiPorts = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, TcpListener> _ekiReserved = new(StringComparer.OrdinalIgnoreCase);
 
+    /// <summary>Raised when a program opens a channel (EKI_Open): its name, and its protocol, role and address.</summary>
+    public event Action<string, string>? EkiOpened;
+
     /// <summary>How many EthernetKRL channels are initialised (a WAIT FOR may wait on them).</summary>
     public int EkiOpenChannels
     {
@@ -148,6 +151,9 @@ internal sealed partial class KrlTwinController
         {
             _ekiPorts[name] = bound;
         }
+        EkiConfiguration configuration = channel.Configuration;
+        EkiOpened?.Invoke(name, FormattableString.Invariant($"{(configuration.Udp ? "UDP" : "TCP")} {(configuration.RobotIsServer
+            ? $"server on {Options.ListenAddress}:{bound}" : $"client of {configuration.Address}:{bound}")}"));
         return Status(0, 0, 0, channel.Connected);
     }
 

@@ -23,6 +23,8 @@ internal sealed partial class KrlTwinController : IDisposable
         Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace, Interpolates = true };
         KrlSystemVariables.AddTo(Environment, this);
         KrlBuiltins.AddTo(Environment);
+        KrlBasicPackage.AddTo(Environment);
+        KrlSystemVariables.AddMeasured(Environment, this);
         AddEki();
         foreach ((string name, int output) in Options.Signals)
         {
@@ -129,6 +131,7 @@ internal sealed partial class KrlTwinController : IDisposable
                 module = new KrlModule(list.Name);
                 modules[list.Name] = module;
             }
+            module.Externals.AddRange(list.Externals);
             foreach (KrlDeclaration declaration in list.Declarations)
             {
                 if (module.Data.ContainsKey(declaration.Name))
@@ -153,6 +156,13 @@ internal sealed partial class KrlTwinController : IDisposable
             }
         }
         binder.BindAll();
+        foreach (KrlExternal external in modules.Values.SelectMany(m => m.Externals))
+        {
+            if (KrlBinder.FindRoutine(modules, null, external.Name) is null && !Environment.Builtins.ContainsKey(external.Name))
+            {
+                throw new KrlLoadException(external.File, external.Line, $"EXT {external.Name}: no routine of that name is loaded and the twin has no system routine {external.Name}");
+            }
+        }
         lock (_gate)
         {
             foreach ((string name, KrlModule module) in modules)
