@@ -139,6 +139,13 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
             case KrlMotion motion:
                 Motion(motion);
                 break;
+            case KrlTrigger trigger:
+                if (!Expr(trigger.Distance, null).IsNumber || !Expr(trigger.Delay, null).IsNumber)
+                {
+                    throw Error(trigger.Line, "TRIGGER's DISTANCE (or PATH) and DELAY are numbers");
+                }
+                Statement(trigger.Action, loops);
+                break;
             case KrlJump jump:
                 Jump(jump, loops);
                 break;

@@ -196,9 +196,14 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             case KrlWait wait:
                 Wait(wait, frame);
                 return Flow.Next;
+            case KrlTrigger trigger:
+                _triggers.Add((trigger, frame));
+                return Flow.Next;
             case KrlMotion motion:
+                RunTriggers(atEnd: false);
                 Controller.Move(motion.Kind, Eval(motion.Target, frame), motion.Auxiliary is null ? null : Eval(motion.Auxiliary, frame),
                     motion.Approximation, motion.Line, Cancellation);
+                RunTriggers(atEnd: true);
                 return Flow.Next;
             case KrlJump jump:
                 return Jump(jump, frame);

@@ -125,6 +125,8 @@ internal sealed partial class KrlParser
             case "GLOBAL":
             case "INTERRUPT":
                 return Interrupt();
+            case "TRIGGER":
+                return Trigger();
             case "GOTO":
                 throw Error(token, "GOTO is not supported by the twin (the Machina files do not use it)");
             default:

@@ -26,6 +26,9 @@ internal sealed partial class KrlParser
     /// <summary>The array elements the file's declarations hold (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
     private long _elements;
 
+    /// <summary>The program's own STRUC and ENUM types (see <see cref="KrlUserTypes"/>), or null.</summary>
+    private IReadOnlyDictionary<string, KrlType>? _userTypes;
+
     private KrlParser(string file, string text, TwinLimits? limits)
     {
         _file = file;
@@ -65,9 +68,9 @@ internal sealed partial class KrlParser
     private KrlToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Count - 1)];
 
     /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/>.</summary>
-    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null)
+    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null, IReadOnlyDictionary<string, KrlType>? types = null)
     {
-        var parser = new KrlParser(file, text, limits) { _externals = module.Externals };
+        var parser = new KrlParser(file, text, limits) { _externals = module.Externals, _userTypes = types };
         parser.SkipLines();
         bool first = true;
         while (parser.Peek.Kind != KrlTokenKind.End)
@@ -83,9 +86,9 @@ internal sealed partial class KrlParser
     }
 
     /// <summary>Reads the DEFDAT data list of a <c>.dat</c> file; returns its declarations for the binder.</summary>
-    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null)
+    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null, IReadOnlyDictionary<string, KrlType>? types = null)
     {
-        var parser = new KrlParser(file, text, limits);
+        var parser = new KrlParser(file, text, limits) { _userTypes = types };
         parser.SkipLines();
         KrlToken start = parser.Expect("DEFDAT");
         string name = parser.Identifier("the data list's name");
@@ -107,6 +110,11 @@ internal sealed partial class KrlParser
             if (parser.Peek.Is("SIGNAL"))
             {
                 throw parser.Error(parser.Peek, "SIGNAL declarations belong in $CONFIG.DAT; the twin takes signals from its options");
+            }
+            if (parser.IsElementInitialiser())
+            {
+                list.Elements.Add(parser.ElementInitialiser());
+                continue;
             }
             list.Declarations.AddRange(parser.Declaration(allowInitial: true));
         }
@@ -236,7 +244,7 @@ internal sealed partial class KrlParser
 
     /// <summary>True when the line starts a declaration: DECL, EXT, EXTFCT, or a type name followed by a variable name.</summary>
     private bool IsDeclaration() => Peek.Is("DECL") || Peek.Is("STRUC") || Peek.Is("ENUM") || IsExternal()
-        || (Peek.Kind == KrlTokenKind.Name && KrlTypes.Find(Peek.Text) is not null && PeekAt(1).Kind == KrlTokenKind.Name);
+        || (Peek.Kind == KrlTokenKind.Name && KrlUserTypes.Find(_userTypes, Peek.Text) is not null && PeekAt(1).Kind == KrlTokenKind.Name);
 
     /// <summary>[DECL] [GLOBAL] [CONST] type name[sizes] [= value], name…</summary>
     private List<KrlDeclaration> Declaration(bool allowInitial)
@@ -246,12 +254,18 @@ internal sealed partial class KrlParser
             External();
             return [];
         }
-        if (Peek.Is("STRUC") || Peek.Is("ENUM"))
-        {
-            throw Error(Peek, $"{Peek.Text.ToUpperInvariant()} type declarations are not supported by the twin (the Machina files have none)");
-        }
         Accept("DECL");
         bool global = Accept("GLOBAL");
+        if (Peek.Is("STRUC") || Peek.Is("ENUM"))
+        {
+            // Read with the other files' types before the files were parsed (KrlUserTypes).
+            while (Peek.Kind is not (KrlTokenKind.EndOfLine or KrlTokenKind.End))
+            {
+                _at++;
+            }
+            EndOfLine();
+            return [];
+        }
         Accept("CONST");
         KrlType element = TypeName();
         var result = new List<KrlDeclaration>();
@@ -314,7 +328,7 @@ internal sealed partial class KrlParser
     private KrlType TypeName()
     {
         KrlToken token = Peek;
-        KrlType? type = token.Kind == KrlTokenKind.Name ? KrlTypes.Find(token.Text) : null;
+        KrlType? type = token.Kind == KrlTokenKind.Name ? KrlUserTypes.Find(_userTypes, token.Text) : null;
         if (type is null)
         {
             throw Error(token, $"unknown data type {token.Display}");
@@ -405,4 +419,7 @@ internal sealed class KrlDataList(string file, string name, bool isPublic, int l
 
     /// <summary>The routines its EXT and EXTFCT declarations name.</summary>
     public List<KrlExternal> Externals { get; } = [];
+
+    /// <summary>The array elements given a value after their array's DECL, in order.</summary>
+    public List<KrlElementInitialiser> Elements { get; } = [];
 }

@@ -94,13 +94,14 @@ internal sealed partial class KrlTwinController : IDisposable
         var modules = new Dictionary<string, KrlModule>(_modules, StringComparer.OrdinalIgnoreCase);
         var data = new List<KrlDataList>();
         string? main = null;
+        IReadOnlyDictionary<string, KrlType> types = KrlUserTypes.Collect(files);
         foreach ((string name, string text) in files)
         {
             string module = Path.GetFileNameWithoutExtension(name);
             string extension = Path.GetExtension(name).ToLowerInvariant();
             if (extension == ".dat")
             {
-                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits);
+                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits, types);
                 if (!string.Equals(list.Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, list.Line, $"DEFDAT {list.Name} must have the name of its file ({module})");
@@ -110,7 +111,7 @@ internal sealed partial class KrlTwinController : IDisposable
             else if (extension == ".src")
             {
                 var parsed = new KrlModule(module);
-                KrlParser.ParseSource(name, text, parsed, Options.Limits);
+                KrlParser.ParseSource(name, text, parsed, Options.Limits, types);
                 if (!string.Equals(parsed.Routines[0].Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, parsed.Routines[0].Line, $"the first routine {parsed.Routines[0].Name} must have the name of its file ({module})");
@@ -154,6 +155,7 @@ internal sealed partial class KrlTwinController : IDisposable
                     module.GlobalData.Add(declaration.Name);
                 }
             }
+            InitialiseElements(list, module, binder);
         }
         binder.BindAll();
         foreach (KrlExternal external in modules.Values.SelectMany(m => m.Externals))
