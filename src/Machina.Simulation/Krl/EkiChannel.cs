@@ -364,6 +364,31 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         ? memory
         : throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
 
+    /// <summary>
+    /// EKI_ClearBuffer: empties the memories of <paramref name="tag"/> and of every element below it (a RECEIVE element that only
+    /// sets a flag has no memory of its own); returns how many elements were dropped.
+    /// </summary>
+    public int ClearBuffer(string tag)
+    {
+        if (!Configuration.Receive.Any(e => e.Tag == tag || e.Tag.StartsWith(tag + "/", StringComparison.Ordinal)))
+        {
+            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
+        }
+        int dropped = 0;
+        lock (_gate)
+        {
+            foreach ((string memoryTag, LinkedList<string> memory) in _memories)
+            {
+                if (memoryTag == tag || memoryTag.StartsWith(tag + "/", StringComparison.Ordinal))
+                {
+                    dropped += memory.Count;
+                    memory.Clear();
+                }
+            }
+        }
+        return dropped;
+    }
+
     /// <summary>EKI_Set…: keeps the value of <paramref name="tag"/> for the next EKI_Send.</summary>
     public void Set(string tag, string value)
     {

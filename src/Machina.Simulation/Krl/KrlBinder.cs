@@ -170,6 +170,10 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
         {
             throw Error(jump.Line, "EXIT is only allowed inside a loop");
         }
+        if (jump.Keyword == "CONFIRM" && !Expr(jump.Value!, null).IsNumber)
+        {
+            throw Error(jump.Line, $"CONFIRM takes a message handle (INT), not {jump.Value!.Type}");
+        }
         if (jump.Keyword != "RETURN")
         {
             return;

@@ -93,6 +93,12 @@ internal sealed partial class KrlTwinController
             EkiChannel channel = Channel(Str(a[0]));
             return Status(channel.Count(Str(a[1])), 0, 0, channel.Connected);
         });
+        Add("EKI_ClearBuffer", [text, text], (_, a) =>
+        {
+            EkiChannel channel = Channel(Str(a[0]));
+            channel.ClearBuffer(Str(a[1]));
+            return Status(0, 0, 0, channel.Connected);
+        });
         Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, v => (int)Math.Round(double.Parse(v, CultureInfo.InvariantCulture))));
         Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, v => double.Parse(v, CultureInfo.InvariantCulture)));
         Add("EKI_GetBool", [text, text, new(KrlType.Bool, IsOut: true)], (_, a) => EkiGet(a, v => v is "1" || v.Equals("true", StringComparison.OrdinalIgnoreCase)));

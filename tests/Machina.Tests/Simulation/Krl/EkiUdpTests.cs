@@ -93,6 +93,40 @@ public class EkiUdpTests
     }
 
     [Fact]
+    public async Task ClearBuffer_DropsTheElementsBelowATag_AndConfirmRuns()
+    {
+        const string program = """
+            DEF clear_buffer( )
+              DECL EKI_STATUS ret
+              ret = EKI_Init("UdpJointServer")
+              ret = EKI_Open("UdpJointServer")
+              WAIT FOR $FLAG[2]
+              ret = EKI_CheckBuffer("UdpJointServer", "Cmd/Pos/@A1")
+              before = ret.Buff
+              ret = EKI_ClearBuffer("UdpJointServer", "Cmd")
+              ret = EKI_CheckBuffer("UdpJointServer", "Cmd/Pos/@A2")
+              after = ret.Buff
+              CONFIRM 0
+              ret = EKI_Clear("UdpJointServer")
+            END
+            """;
+        using var twin = new KrlTwinController();
+        twin.AddEkiConfiguration(Channel, Configuration);
+        twin.Load(("clear_buffer.src", program), ("clear_buffer.dat", "DEFDAT clear_buffer\n  INT before = -1\n  INT after = -1\nENDDAT\n"));
+        using var stop = new CancellationTokenSource(Limit);
+        Task<KrlProgramState> run = Task.Run(() => twin.Run(null, stop.Token));
+        await EventuallyAsync(() => twin.EkiPort(Channel) > 0 || run.IsCompleted, "the channel to be open");
+
+        using var client = new UdpClient(new IPEndPoint(IPAddress.Loopback, 0));
+        await client.SendAsync(Encoding.UTF8.GetBytes("<Cmd><Pos A1=\"1\" A2=\"2\" /></Cmd>"), new IPEndPoint(IPAddress.Loopback, twin.EkiPort(Channel)));
+        KrlProgramState state = await run.WaitAsync(Limit);
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(1, (int)twin.Modules["clear_buffer"].Data["before"].Value);
+        Assert.Equal(0, (int)twin.Modules["clear_buffer"].Data["after"].Value);
+    }
+
+    [Fact]
     public void Configuration_ReadsTheProtocol_AndRefusesOneEthernetKrlDoesNotSpeak()
     {
         Assert.True(EkiConfiguration.Parse(Channel, Configuration).Udp);
