@@ -34,6 +34,20 @@ internal static class EkiSendDocument
     /// <summary>The document of element <paramref name="root"/> (a tag path) from the SEND <paramref name="tags"/> and the values set.</summary>
     public static string Write(string root, IReadOnlyList<string> tags, IReadOnlyDictionary<string, string> values)
     {
+        string prefix = root + "/@";
+        if (!root.Contains('/', StringComparison.Ordinal) && !tags.Any(t => t == root || (t.StartsWith(root + "/", StringComparison.Ordinal) && !IsAttribute(t, prefix))))
+        {
+            // Only attributes of the element (the Machina driver's acknowledgements): written directly, on every action.
+            var flat = new StringBuilder("<").Append(root);
+            foreach (string tag in tags)
+            {
+                if (IsAttribute(tag, prefix) && values.TryGetValue(tag, out string? value))
+                {
+                    flat.Append(' ').Append(tag, prefix.Length, tag.Length - prefix.Length).Append("=\"").Append(EkiChannel.Escape(value)).Append('"');
+                }
+            }
+            return flat.Append(" />").ToString();
+        }
         var top = new Node(root[(root.LastIndexOf('/') + 1)..]);
         foreach (string tag in tags)
         {
@@ -66,6 +80,8 @@ internal static class EkiSendDocument
         Append(xml, top);
         return xml.ToString();
     }
+
+    private static bool IsAttribute(string tag, string prefix) => tag.StartsWith(prefix, StringComparison.Ordinal) && tag.IndexOf('/', prefix.Length) < 0;
 
     private static void Append(StringBuilder xml, Node node)
     {
