@@ -22,12 +22,19 @@ internal static partial class SimCommand
         try
         {
             twin.Load([.. files]);
+            await AddEkiConfigurationsAsync(twin, context.FullPath(path), output).ConfigureAwait(false);
         }
         catch (KrlLoadException ex)
         {
             await output.WriteLineAsync($"FAILED: {ex.Message}").ConfigureAwait(false);
             return ExitCodes.Failed;
         }
+        catch (FormatException ex)
+        {
+            await output.WriteLineAsync($"FAILED: {ex.Message}").ConfigureAwait(false);
+            return ExitCodes.Failed;
+        }
+        twin.EkiOpened += (name, how) => output.WriteLine($"  EthernetKRL channel {name} open: {how}");
         await output.WriteLineAsync($"Running {twin.MainRoutine} ({string.Join(", ", files.Select(f => f.Name))}) on a KRL twin of a {model} in real time. Press Ctrl+C to stop.").ConfigureAwait(false);
         twin.Pendant.Logged += line => output.WriteLine("  pendant: " + line);
         KrlProgramState state = await Task.Run(() => twin.Run(null, context.Cancellation)).ConfigureAwait(false);

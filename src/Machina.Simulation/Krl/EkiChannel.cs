@@ -10,7 +10,7 @@ namespace Machina.Simulation.Krl;
 /// document received is split into the value memories of its RECEIVE elements (all at once when the document is complete),
 /// flags are set as configured, and EKI_Send writes the SEND elements whose values the program set.
 /// </summary>
-internal sealed class EkiChannel(string name, EkiConfiguration configuration, KrlTwinController controller) : IDisposable
+internal sealed partial class EkiChannel(string name, EkiConfiguration configuration, KrlTwinController controller) : IDisposable
 {
     private readonly Lock _gate = new();
 
@@ -43,7 +43,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         {
             lock (_gate)
             {
-                return _client is not null;
+                return _client is not null || _udpPeer is not null;
             }
         }
     }
@@ -51,6 +51,10 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     /// <summary>EKI_Open: the robot starts listening on <paramref name="port"/> (0: any free port, or its reserved socket); returns the port.</summary>
     public int Open(IPAddress address, int port)
     {
+        if (Configuration.Udp)
+        {
+            return OpenUdp(address, port);
+        }
         if (!Configuration.RobotIsServer)
         {
             throw new KrlRuntimeException($"EthernetKRL: the channel {Name} has the robot as client; the twin only listens (TYPE Client)");
@@ -165,7 +169,8 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         return Task.Run(() => ReadAsync(client, token), CancellationToken.None);
     }
 
-    private async Task ReadAsync(TcpClient client, CancellationToken token)
+    /// <summary>A splitter that hands each complete document (its values and the flags it sets) to <paramref name="commit"/>.</summary>
+    private EkiXmlSplitter Splitter(Action<List<(string Tag, string Value)>, List<int>> commit)
     {
         var splitter = new EkiXmlSplitter(Configuration.BufferSize);
         var document = new List<(string Tag, string Value)>();
@@ -188,9 +193,15 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             }
             if (topLevel)
             {
-                Commit(client, document, flags);
+                commit(document, flags);
             }
         };
+        return splitter;
+    }
+
+    private async Task ReadAsync(TcpClient client, CancellationToken token)
+    {
+        EkiXmlSplitter splitter = Splitter((document, flags) => Commit(client, document, flags));
         var bytes = new byte[8192];
         var decoder = Encoding.UTF8.GetDecoder();
         var chars = new char[8192];
@@ -234,19 +245,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             {
                 if (IsClient(client))
                 {
-                    lock (_gate)
-                    {
-                        foreach ((string tag, string value) in document)
-                        {
-                            LinkedList<string> memory = _memories[tag];
-                            memory.AddLast(value);
-                            overflow |= memory.Count > Configuration.Limit;
-                        }
-                    }
-                    foreach (int flag in flags)
-                    {
-                        controller.SetFlag(flag, true);
-                    }
+                    overflow = Store(document, flags, dropExcess: false);
                 }
             }
         }
@@ -258,6 +257,31 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             // Only this reader's connection, which was still the channel's when its values were stored.
             client.Dispose();
         }
+    }
+
+    /// <summary>Stores a document's values in their memories and sets its flags; true when a memory went over its limit.</summary>
+    private bool Store(List<(string Tag, string Value)> document, List<int> flags, bool dropExcess)
+    {
+        bool overflow = false;
+        lock (_gate)
+        {
+            foreach ((string tag, string value) in document)
+            {
+                LinkedList<string> memory = _memories[tag];
+                if (dropExcess && memory.Count >= Configuration.Limit)
+                {
+                    overflow = true;
+                    continue;
+                }
+                memory.AddLast(value);
+                overflow |= memory.Count > Configuration.Limit;
+            }
+        }
+        foreach (int flag in flags)
+        {
+            controller.SetFlag(flag, true);
+        }
+        return overflow;
     }
 
     private bool IsClient(TcpClient client)
@@ -340,6 +364,31 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         ? memory
         : throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
 
+    /// <summary>
+    /// EKI_ClearBuffer: empties the memories of <paramref name="tag"/> and of every element below it (a RECEIVE element that only
+    /// sets a flag has no memory of its own); returns how many elements were dropped.
+    /// </summary>
+    public int ClearBuffer(string tag)
+    {
+        if (!Configuration.Receive.Any(e => e.Tag == tag || e.Tag.StartsWith(tag + "/", StringComparison.Ordinal)))
+        {
+            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
+        }
+        int dropped = 0;
+        lock (_gate)
+        {
+            foreach ((string memoryTag, LinkedList<string> memory) in _memories)
+            {
+                if (memoryTag == tag || memoryTag.StartsWith(tag + "/", StringComparison.Ordinal))
+                {
+                    dropped += memory.Count;
+                    memory.Clear();
+                }
+            }
+        }
+        return dropped;
+    }
+
     /// <summary>EKI_Set…: keeps the value of <paramref name="tag"/> for the next EKI_Send.</summary>
     public void Set(string tag, string value)
     {
@@ -356,29 +405,27 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
     /// <summary>EKI_Send: writes the element <paramref name="root"/> with the values set for its attributes; false without a client.</summary>
     public bool Send(string root)
     {
-        var xml = new StringBuilder("<").Append(root);
         EkiOutbox? outbox;
-        lock (_gate)
-        {
-            string prefix = root + "/@";
-            foreach (string tag in Configuration.Send)
-            {
-                if (tag.StartsWith(prefix, StringComparison.Ordinal) && _toSend.TryGetValue(tag, out string? value))
-                {
-                    xml.Append(' ').Append(tag, prefix.Length, tag.Length - prefix.Length).Append("=\"").Append(Escape(value)).Append('"');
-                }
-            }
-            outbox = _outbox;
-        }
-        if (!Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal)))
+        string text;
+        bool configured = Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal));
+        if (!configured && !root.StartsWith('<'))
         {
             throw new KrlRuntimeException($"EthernetKRL: the channel {Name} sends no element {root} (see its SEND configuration)");
         }
-        string text = xml.Append(" />").ToString();
+        lock (_gate)
+        {
+            // An XML string that is not a configured element is sent as it is (the manual's EKI_Send of "<Robot>…</Robot>").
+            text = configured ? EkiSendDocument.Write(root, Configuration.Send, _toSend) : root;
+            outbox = _outbox;
+        }
         if (controller.Options.Seam is { } seam)
         {
             // The seam sees every send, also one without a connection (it counts what was lost).
             return seam.Send(this, root, text);
+        }
+        if (Configuration.Udp)
+        {
+            return SendDatagram(Encoding.UTF8.GetBytes(text));
         }
         // Handed to the channel's writer: the program goes on while it is written (in order, several sends in one write).
         return outbox is not null && outbox.Post(Encoding.UTF8.GetBytes(text));
@@ -407,7 +454,8 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
         }
     }
 
-    private static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
+    /// <summary>Escapes a value for an XML attribute or element text.</summary>
+    internal static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
         .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
 
     /// <summary>EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements.</summary>
@@ -419,6 +467,7 @@ internal sealed class EkiChannel(string name, EkiConfiguration configuration, Kr
             outbox = _outbox;
         }
         outbox?.Drain();
+        CloseUdp();
         // Under the link: a disconnection the reader began is finished (its flag down) before the channel counts as closed.
         lock (_link)
         {

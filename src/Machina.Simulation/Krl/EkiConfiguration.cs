@@ -21,6 +21,12 @@ internal sealed class EkiConfiguration
     /// <summary>The port.</summary>
     public int Port { get; private init; }
 
+    /// <summary>True for PROTOCOL UDP (datagrams, one document each); false for TCP, the default.</summary>
+    public bool Udp { get; private init; }
+
+    /// <summary>The IP address of the configuration (the robot's own when it listens; the server's when the robot is the client).</summary>
+    public string Address { get; private init; } = "127.0.0.1";
+
     /// <summary>FIFO (first in, first out) or LIFO memories.</summary>
     public bool Fifo { get; private init; } = true;
 
@@ -71,10 +77,17 @@ internal sealed class EkiConfiguration
             throw new FormatException($"the configuration {name}.xml has no valid PORT (\"{portText}\")");
         }
         XElement? buffering = intern.Element("BUFFERING");
+        string protocol = ((string?)intern.Element("PROTOCOL") ?? (string?)external.Element("PROTOCOL") ?? "TCP").Trim();
+        if (!string.Equals(protocol, "TCP", StringComparison.OrdinalIgnoreCase) && !string.Equals(protocol, "UDP", StringComparison.OrdinalIgnoreCase))
+        {
+            throw new FormatException($"the configuration {name}.xml has PROTOCOL \"{protocol}\": EthernetKRL speaks TCP or UDP");
+        }
         return new EkiConfiguration
         {
             RobotIsServer = string.Equals(type, "Client", StringComparison.OrdinalIgnoreCase),
             Port = port,
+            Udp = string.Equals(protocol, "UDP", StringComparison.OrdinalIgnoreCase),
+            Address = ((string?)intern.Element("IP") ?? (string?)external.Element("IP") ?? "127.0.0.1").Trim(),
             Fifo = !string.Equals((string?)buffering?.Attribute("Mode"), "LIFO", StringComparison.OrdinalIgnoreCase),
             Limit = int.TryParse((string?)buffering?.Attribute("Limit"), CultureInfo.InvariantCulture, out int limit) ? Math.Clamp(limit, 1, 512) : 16,
             BufferSize = int.TryParse((string?)intern.Element("BUFFSIZE")?.Attribute("Limit"), CultureInfo.InvariantCulture, out int size)

@@ -206,7 +206,8 @@ internal sealed partial class KrlBinder
         {
             call.Builtin = builtin;
             returns = builtin.Returns;
-            if (call.Arguments.Count != builtin.Parameters.Length)
+            int required = builtin.Parameters.Count(p => !p.Optional);
+            if (call.Arguments.Count < required || call.Arguments.Count > builtin.Parameters.Length)
             {
                 throw Error(call.Line, $"{builtin.Name} takes {builtin.Parameters.Length} argument(s), not {call.Arguments.Count}");
             }

@@ -139,6 +139,13 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
             case KrlMotion motion:
                 Motion(motion);
                 break;
+            case KrlTrigger trigger:
+                if (!Expr(trigger.Distance, null).IsNumber || !Expr(trigger.Delay, null).IsNumber)
+                {
+                    throw Error(trigger.Line, "TRIGGER's DISTANCE (or PATH) and DELAY are numbers");
+                }
+                Statement(trigger.Action, loops);
+                break;
             case KrlJump jump:
                 Jump(jump, loops);
                 break;
@@ -162,6 +169,10 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
         if (jump.Keyword == "EXIT" && loops == 0)
         {
             throw Error(jump.Line, "EXIT is only allowed inside a loop");
+        }
+        if (jump.Keyword == "CONFIRM" && !Expr(jump.Value!, null).IsNumber)
+        {
+            throw Error(jump.Line, $"CONFIRM takes a message handle (INT), not {jump.Value!.Type}");
         }
         if (jump.Keyword != "RETURN")
         {

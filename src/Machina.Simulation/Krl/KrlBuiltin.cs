@@ -3,7 +3,8 @@ namespace Machina.Simulation.Krl;
 /// <summary>What a built-in routine accepts as one argument.</summary>
 /// <param name="Accepts">The type accepted (null: any value); INT and REAL accept each other.</param>
 /// <param name="IsOut">True for an OUT argument: a variable the routine writes.</param>
-internal sealed record KrlBuiltinParameter(KrlType? Accepts, bool IsOut = false)
+/// <param name="Optional">True when a call may leave it out (only the last parameters are optional).</param>
+internal sealed record KrlBuiltinParameter(KrlType? Accepts, bool IsOut = false, bool Optional = false)
 {
     /// <summary>Any CHAR array (a string).</summary>
     public static KrlBuiltinParameter Text { get; } = new(KrlType.Array(KrlType.Char, 0));

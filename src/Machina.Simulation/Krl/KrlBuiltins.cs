@@ -1,7 +1,7 @@
 namespace Machina.Simulation.Krl;
 
 /// <summary>
-/// The system routines KRL programs call: BAS (the basic package's initialisation), IR_STOPM (its stop-message interrupt),
+/// The system routines KRL programs call (BAS is in <see cref="KrlBasicPackage"/>): IR_STOPM (its stop-message interrupt),
 /// INVERSE, StrCopy, Set_KrlMsg, and the mathematical functions.
 /// </summary>
 internal static class KrlBuiltins
@@ -10,7 +10,6 @@ internal static class KrlBuiltins
     public static void AddTo(KrlEnvironment environment)
     {
         void Add(KrlBuiltin builtin) => environment.Builtins[builtin.Name] = builtin;
-        Add(new("BAS", null, [new(KrlType.Enum), KrlBuiltinParameter.Real], (m, a) => Bas(m, (KrlEnumValue)a[0])));
         Add(new("IR_STOPM", null, [], (_, _) => null));
         Add(new("INVERSE", KrlTypes.E6Axis, [new(KrlTypes.E6Pos), new(KrlTypes.E6Axis), new(KrlType.Int, IsOut: true)], Inverse));
         Add(new("StrCopy", KrlType.Bool, [new(KrlType.Array(KrlType.Char, 0), IsOut: true), KrlBuiltinParameter.Text], (_, a) =>
@@ -33,17 +32,6 @@ internal static class KrlBuiltins
 
     private static KrlBuiltin Math1(string name, Func<double, double> f) =>
         new(name, KrlType.Real, [KrlBuiltinParameter.Real], (_, a) => f(KrlValues.ToReal(a[0])));
-
-    /// <summary>BAS(#INITMOV, 0): axis speeds and accelerations 100 %, the path speed and acceleration of the controller's defaults.</summary>
-    private static object? Bas(KrlMachine machine, KrlEnumValue what)
-    {
-        if (!string.Equals(what.Name, "INITMOV", StringComparison.OrdinalIgnoreCase))
-        {
-            throw new KrlRuntimeException($"BAS(#{what.Name}) is not supported by the twin (only #INITMOV)");
-        }
-        machine.Controller.InitialiseMotion();
-        return null;
-    }
 
     /// <summary>INVERSE(position, start axes, status): the axis angles of a Cartesian position (in $BASE with $TOOL); status 0 when found.</summary>
     private static object? Inverse(KrlMachine machine, object[] a)

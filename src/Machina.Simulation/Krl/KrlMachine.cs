@@ -151,7 +151,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Line = statement.Line;
             Step();
             Controller.Line = statement.Line;
-            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs))
+            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || Controller.TimersCounting))
             {
                 // An interrupt's condition reads global and system variables only: it can only change after such a write or an input.
                 _checkedWrites = _writes;
@@ -196,9 +196,14 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             case KrlWait wait:
                 Wait(wait, frame);
                 return Flow.Next;
+            case KrlTrigger trigger:
+                _triggers.Add((trigger, frame));
+                return Flow.Next;
             case KrlMotion motion:
+                RunTriggers(atEnd: false);
                 Controller.Move(motion.Kind, Eval(motion.Target, frame), motion.Auxiliary is null ? null : Eval(motion.Auxiliary, frame),
                     motion.Approximation, motion.Line, Cancellation);
+                RunTriggers(atEnd: true);
                 return Flow.Next;
             case KrlJump jump:
                 return Jump(jump, frame);

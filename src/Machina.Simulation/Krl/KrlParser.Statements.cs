@@ -125,6 +125,16 @@ internal sealed partial class KrlParser
             case "GLOBAL":
             case "INTERRUPT":
                 return Interrupt();
+            case "TRIGGER":
+                return Trigger();
+            case "CONFIRM":
+            {
+                // Acknowledges a message (CONFIRM number, 0: all acknowledgeable ones): the twin keeps none to acknowledge.
+                _at++;
+                KrlExpr handle = Expression();
+                EndOfLine();
+                return new KrlJump(line, "CONFIRM", handle);
+            }
             case "GOTO":
                 throw Error(token, "GOTO is not supported by the twin (the Machina files do not use it)");
             default:

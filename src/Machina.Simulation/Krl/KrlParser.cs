@@ -29,6 +29,9 @@ internal sealed partial class KrlParser
     /// <summary>Stops the reading of a long file (checked at each line).</summary>
     private readonly CancellationToken _cancellation;
 
+    /// <summary>The program's own STRUC and ENUM types (see <see cref="KrlUserTypes"/>), or null.</summary>
+    private IReadOnlyDictionary<string, KrlType>? _userTypes;
+
     private KrlParser(string file, string text, TwinLimits? limits, CancellationToken cancellation)
     {
         _cancellation = cancellation;
@@ -69,9 +72,9 @@ internal sealed partial class KrlParser
     private KrlToken PeekAt(int ahead) => _tokens[Math.Min(_at + ahead, _tokens.Count - 1)];
 
     /// <summary>Reads the routines of a <c>.src</c> file into <paramref name="module"/> (until <paramref name="cancellation"/>, checked at each line).</summary>
-    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null, CancellationToken cancellation = default)
+    public static void ParseSource(string file, string text, KrlModule module, TwinLimits? limits = null, IReadOnlyDictionary<string, KrlType>? types = null, CancellationToken cancellation = default)
     {
-        var parser = new KrlParser(file, text, limits, cancellation);
+        var parser = new KrlParser(file, text, limits, cancellation) { _externals = module.Externals, _userTypes = types };
         parser.SkipLines();
         bool first = true;
         while (parser.Peek.Kind != KrlTokenKind.End)
@@ -87,9 +90,9 @@ internal sealed partial class KrlParser
     }
 
     /// <summary>Reads the DEFDAT data list of a <c>.dat</c> file; returns its declarations for the binder (until <paramref name="cancellation"/>).</summary>
-    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null, CancellationToken cancellation = default)
+    public static KrlDataList ParseData(string file, string text, TwinLimits? limits = null, IReadOnlyDictionary<string, KrlType>? types = null, CancellationToken cancellation = default)
     {
-        var parser = new KrlParser(file, text, limits, cancellation);
+        var parser = new KrlParser(file, text, limits, cancellation) { _userTypes = types };
         parser.SkipLines();
         KrlToken start = parser.Expect("DEFDAT");
         string name = parser.Identifier("the data list's name");
@@ -101,6 +104,7 @@ internal sealed partial class KrlParser
         }
         parser.EndOfLine();
         var list = new KrlDataList(file, name, isPublic, start.Line);
+        parser._externals = list.Externals;
         while (!parser.Peek.Is("ENDDAT"))
         {
             if (parser.Peek.Kind == KrlTokenKind.End)
@@ -110,6 +114,11 @@ internal sealed partial class KrlParser
             if (parser.Peek.Is("SIGNAL"))
             {
                 throw parser.Error(parser.Peek, "SIGNAL declarations belong in $CONFIG.DAT; the twin takes signals from its options");
+            }
+            if (parser.IsElementInitialiser())
+            {
+                list.Elements.Add(parser.ElementInitialiser());
+                continue;
             }
             list.Declarations.AddRange(parser.Declaration(allowInitial: true));
         }
@@ -237,19 +246,30 @@ internal sealed partial class KrlParser
         return routine;
     }
 
-    /// <summary>True when the line starts a declaration: DECL, or a type name followed by a variable name.</summary>
-    private bool IsDeclaration() => Peek.Is("DECL") || Peek.Is("STRUC") || Peek.Is("ENUM")
-        || (Peek.Kind == KrlTokenKind.Name && KrlTypes.Find(Peek.Text) is not null && PeekAt(1).Kind == KrlTokenKind.Name);
+    /// <summary>True when the line starts a declaration: DECL, EXT, EXTFCT, or a type name followed by a variable name.</summary>
+    private bool IsDeclaration() => Peek.Is("DECL") || Peek.Is("STRUC") || Peek.Is("ENUM") || IsExternal()
+        || (Peek.Kind == KrlTokenKind.Name && KrlUserTypes.Find(_userTypes, Peek.Text) is not null && PeekAt(1).Kind == KrlTokenKind.Name);
 
     /// <summary>[DECL] [GLOBAL] [CONST] type name[sizes] [= value], name…</summary>
     private List<KrlDeclaration> Declaration(bool allowInitial)
     {
-        if (Peek.Is("STRUC") || Peek.Is("ENUM"))
+        if (IsExternal())
         {
-            throw Error(Peek, $"{Peek.Text.ToUpperInvariant()} type declarations are not supported by the twin (the Machina files have none)");
+            External();
+            return [];
         }
         Accept("DECL");
         bool global = Accept("GLOBAL");
+        if (Peek.Is("STRUC") || Peek.Is("ENUM"))
+        {
+            // Read with the other files' types before the files were parsed (KrlUserTypes).
+            while (Peek.Kind is not (KrlTokenKind.EndOfLine or KrlTokenKind.End))
+            {
+                _at++;
+            }
+            EndOfLine();
+            return [];
+        }
         Accept("CONST");
         KrlType element = TypeName();
         var result = new List<KrlDeclaration>();
@@ -312,7 +332,7 @@ internal sealed partial class KrlParser
     private KrlType TypeName()
     {
         KrlToken token = Peek;
-        KrlType? type = token.Kind == KrlTokenKind.Name ? KrlTypes.Find(token.Text) : null;
+        KrlType? type = token.Kind == KrlTokenKind.Name ? KrlUserTypes.Find(_userTypes, token.Text) : null;
         if (type is null)
         {
             throw Error(token, $"unknown data type {token.Display}");
@@ -401,4 +421,10 @@ internal sealed class KrlDataList(string file, string name, bool isPublic, int l
 
     /// <summary>The declarations, in order.</summary>
     public List<KrlDeclaration> Declarations { get; } = [];
+
+    /// <summary>The routines its EXT and EXTFCT declarations name.</summary>
+    public List<KrlExternal> Externals { get; } = [];
+
+    /// <summary>The array elements given a value after their array's DECL, in order.</summary>
+    public List<KrlElementInitialiser> Elements { get; } = [];
 }

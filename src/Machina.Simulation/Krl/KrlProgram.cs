@@ -93,4 +93,10 @@ internal sealed class KrlModule(string name)
 
     /// <summary>The data list's variables declared GLOBAL in a PUBLIC data list (visible to every module).</summary>
     public HashSet<string> GlobalData { get; } = new(StringComparer.OrdinalIgnoreCase);
+
+    /// <summary>The routines its EXT and EXTFCT declarations name (each must be loaded or be a system routine).</summary>
+    public List<KrlExternal> Externals { get; } = [];
 }
+
+/// <summary>An EXT or EXTFCT declaration: the routine it names, in a file at a line.</summary>
+internal sealed record KrlExternal(string Name, string File, int Line);

@@ -4,7 +4,7 @@ namespace Machina.Simulation.Krl;
 /// The system variables a KRL twin has: frames ($BASE, $TOOL, $NULLFRAME), motion settings ($VEL, $ACC, $VEL_AXIS, $ACC_AXIS,
 /// $APO, $ADVANCE), IO ($OUT, $IN, $ANOUT, $ANIN, $FLAG), timers, software limit switches, the actual pose ($POS_ACT, $AXIS_ACT) and the arm's name ($MODEL_NAME).
 /// </summary>
-internal static class KrlSystemVariables
+internal static partial class KrlSystemVariables
 {
     /// <summary>Number of digital outputs and inputs ($OUT, $IN).</summary>
     public const int DigitalCount = 4096;
@@ -42,8 +42,16 @@ internal static class KrlSystemVariables
         });
         Add(new KrlCell("$ANIN", KrlType.Array(KrlType.Real, AnalogCount), KrlValues.Default(KrlType.Array(KrlType.Real, AnalogCount))) { ReadOnly = true });
         Add(new KrlCell("$FLAG", KrlType.Array(KrlType.Bool, FlagCount), KrlValues.Default(KrlType.Array(KrlType.Bool, FlagCount))));
-        Add(new KrlCell("$TIMER", KrlType.Array(KrlType.Int, 64), KrlValues.Default(KrlType.Array(KrlType.Int, 64))));
-        Add(new KrlCell("$TIMER_STOP", KrlType.Array(KrlType.Bool, 64), Filled(KrlType.Array(KrlType.Bool, 64), true)));
+        // A timer is counted up to now when it is read, started or stopped (KrlTwinController.Timers.cs).
+        Add(new KrlCell("$TIMER", KrlType.Array(KrlType.Int, 64), KrlValues.Default(KrlType.Array(KrlType.Int, 64)))
+        {
+            Read = () =>
+            {
+                controller.CountTimers();
+                return environment.System["$TIMER"].Box[0];
+            },
+        });
+        Add(new KrlCell("$TIMER_STOP", KrlType.Array(KrlType.Bool, 64), Filled(KrlType.Array(KrlType.Bool, 64), true)) { Written = _ => controller.CountTimers() });
         Add(new KrlCell("$STOPMESS", KrlType.Bool, false) { ReadOnly = true });
         double[] min = options.Model.MinJoints.ToArray(), max = options.Model.MaxJoints.ToArray();
         Add(new KrlCell("$SOFTN_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? min[i] : -1e6))])) { ReadOnly = true });

@@ -21,6 +21,9 @@ internal sealed partial class KrlTwinController
     private readonly Dictionary<string, int> _ekiPorts = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, TcpListener> _ekiReserved = new(StringComparer.OrdinalIgnoreCase);
 
+    /// <summary>Raised when a program opens a channel (EKI_Open): its name, and its protocol, role and address.</summary>
+    public event Action<string, string>? EkiOpened;
+
     /// <summary>How many EthernetKRL channels are initialised (a WAIT FOR may wait on them).</summary>
     public int EkiOpenChannels
     {
@@ -90,6 +93,12 @@ internal sealed partial class KrlTwinController
             EkiChannel channel = Channel(Str(a[0]));
             return Status(channel.Count(Str(a[1])), 0, 0, channel.Connected);
         });
+        Add("EKI_ClearBuffer", [text, text], (_, a) =>
+        {
+            EkiChannel channel = Channel(Str(a[0]));
+            channel.ClearBuffer(Str(a[1]));
+            return Status(0, 0, 0, channel.Connected);
+        });
         Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, v => (int)Math.Round(double.Parse(v, CultureInfo.InvariantCulture))));
         Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, v => double.Parse(v, CultureInfo.InvariantCulture)));
         Add("EKI_GetBool", [text, text, new(KrlType.Bool, IsOut: true)], (_, a) => EkiGet(a, v => v is "1" || v.Equals("true", StringComparison.OrdinalIgnoreCase)));
@@ -148,6 +157,9 @@ internal sealed partial class KrlTwinController
         {
             _ekiPorts[name] = bound;
         }
+        EkiConfiguration configuration = channel.Configuration;
+        EkiOpened?.Invoke(name, FormattableString.Invariant($"{(configuration.Udp ? "UDP" : "TCP")} {(configuration.RobotIsServer
+            ? $"server on {Options.ListenAddress}:{bound}" : $"client of {configuration.Address}:{bound}")}"));
         return Status(0, 0, 0, channel.Connected);
     }
 

@@ -30,9 +30,9 @@ internal sealed partial class KrlTwinController
     {
         while (InputsVersion == version)
         {
-            if (!HasExternalInputs)
+            if (!HasExternalInputs && !TimersRunning())
             {
-                throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin");
+                throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin (no channel open, no timer running)");
             }
             // A running timer ($TIMER_STOP FALSE) changes too: look again after one interpreter cycle, as a KRC does.
             bool timing = TimersRunning();

@@ -2,13 +2,10 @@ namespace Machina.Simulation.Krl;
 
 /// <summary>
 /// The submit interpreter: a second KRL program that runs beside the robot program, cyclically (as sps.sub's loop calls the
-/// user's PLC routines), and the timers ($TIMER) that count up on the controller's clock while not stopped ($TIMER_STOP).
+/// user's PLC routines); it counts the timers (see KrlTwinController.Timers.cs) before each cycle.
 /// </summary>
 internal sealed partial class KrlTwinController
 {
-    private long _timersAt = -1;
-    private double _timerFraction;
-
     /// <summary>
     /// Calls <paramref name="routine"/> (a subprogram without parameters) once every <paramref name="cycle"/> of the controller's
     /// time until <paramref name="cancellation"/>, counting the timers up before each call. An error stops the submit interpreter
@@ -43,30 +40,6 @@ internal sealed partial class KrlTwinController
         catch (OperationCanceledException)
         {
             // The controller stops.
-        }
-    }
-
-    /// <summary>Adds the milliseconds since the last count to every running timer ($TIMER_STOP[i] FALSE).</summary>
-    public void CountTimers()
-    {
-        long now = Options.Time.GetTimestamp();
-        long last = Interlocked.Exchange(ref _timersAt, now);
-        if (last < 0)
-        {
-            return;
-        }
-        // Whole milliseconds; the rest carries over to the next count.
-        double elapsed = Options.Time.GetElapsedTime(last, now).TotalMilliseconds + _timerFraction;
-        int ms = (int)Math.Min(Math.Floor(elapsed), int.MaxValue);
-        _timerFraction = elapsed - ms;
-        object[] timers = ((KrlArrayValue)Environment.System["$TIMER"].Value).Items;
-        object[] stopped = ((KrlArrayValue)Environment.System["$TIMER_STOP"].Value).Items;
-        for (int i = 0; i < timers.Length; i++)
-        {
-            if (!(bool)stopped[i])
-            {
-                timers[i] = KrlValues.Box((int)Math.Min((long)(int)timers[i] + ms, int.MaxValue));
-            }
         }
     }
 }

@@ -23,6 +23,8 @@ internal sealed partial class KrlTwinController : IDisposable
         Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace, Interpolates = true };
         KrlSystemVariables.AddTo(Environment, this);
         KrlBuiltins.AddTo(Environment);
+        KrlBasicPackage.AddTo(Environment);
+        KrlSystemVariables.AddMeasured(Environment, this);
         AddEki();
         foreach ((string name, int output) in Options.Signals)
         {
@@ -99,13 +101,14 @@ internal sealed partial class KrlTwinController : IDisposable
         var modules = new Dictionary<string, KrlModule>(_modules, StringComparer.OrdinalIgnoreCase);
         var data = new List<KrlDataList>();
         string? main = null;
+        IReadOnlyDictionary<string, KrlType> types = KrlUserTypes.Collect(files);
         foreach ((string name, string text) in files)
         {
             string module = Path.GetFileNameWithoutExtension(name);
             string extension = Path.GetExtension(name).ToLowerInvariant();
             if (extension == ".dat")
             {
-                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits, cancellation);
+                KrlDataList list = KrlParser.ParseData(name, text, Options.Limits, types, cancellation);
                 if (!string.Equals(list.Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, list.Line, $"DEFDAT {list.Name} must have the name of its file ({module})");
@@ -115,7 +118,7 @@ internal sealed partial class KrlTwinController : IDisposable
             else if (extension == ".src")
             {
                 var parsed = new KrlModule(module);
-                KrlParser.ParseSource(name, text, parsed, Options.Limits, cancellation);
+                KrlParser.ParseSource(name, text, parsed, Options.Limits, types, cancellation);
                 if (!string.Equals(parsed.Routines[0].Name, module, StringComparison.OrdinalIgnoreCase))
                 {
                     throw new KrlLoadException(name, parsed.Routines[0].Line, $"the first routine {parsed.Routines[0].Name} must have the name of its file ({module})");
@@ -136,6 +139,7 @@ internal sealed partial class KrlTwinController : IDisposable
                 module = new KrlModule(list.Name);
                 modules[list.Name] = module;
             }
+            module.Externals.AddRange(list.Externals);
             foreach (KrlDeclaration declaration in list.Declarations)
             {
                 if (module.Data.ContainsKey(declaration.Name))
@@ -158,9 +162,17 @@ internal sealed partial class KrlTwinController : IDisposable
                     module.GlobalData.Add(declaration.Name);
                 }
             }
+            InitialiseElements(list, module, binder);
         }
         cancellation.ThrowIfCancellationRequested();
         binder.BindAll();
+        foreach (KrlExternal external in modules.Values.SelectMany(m => m.Externals))
+        {
+            if (KrlBinder.FindRoutine(modules, null, external.Name) is null && !Environment.Builtins.ContainsKey(external.Name))
+            {
+                throw new KrlLoadException(external.File, external.Line, $"EXT {external.Name}: no routine of that name is loaded and the twin has no system routine {external.Name}");
+            }
+        }
         lock (_gate)
         {
             foreach ((string name, KrlModule module) in modules)

@@ -57,6 +57,8 @@ internal static class KrlTypes
         ["INT"] = KrlType.Int, ["REAL"] = KrlType.Real, ["BOOL"] = KrlType.Bool, ["CHAR"] = KrlType.Char,
         ["FRAME"] = Frame, ["POS"] = Pos, ["E6POS"] = E6Pos, ["AXIS"] = Axis, ["E6AXIS"] = E6Axis,
         ["EKI_STATUS"] = EkiStatus, ["KrlMsg_T"] = KrlMsg, ["KrlMsgPar_T"] = KrlMsgPar, ["KrlMsgOpt_T"] = KrlMsgOpt,
+        ["PDAT"] = KrlTemplateTypes.Pdat, ["LDAT"] = KrlTemplateTypes.Ldat, ["FDAT"] = KrlTemplateTypes.Fdat,
+        ["BASIS_SUGG_T"] = KrlTemplateTypes.BasisSuggestions,
     };
 
     /// <summary>The predefined type called <paramref name="name"/>, or null.</summary>

@@ -1,0 +1,170 @@
+using System.Net;
+using System.Net.Sockets;
+using System.Text;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// EthernetKRL over UDP (PROTOCOL UDP): each datagram is one XML document. As server (TYPE Client) the robot binds its port and
+/// answers whoever sent the last datagram; the channel counts as connected (its ALIVE flag up) from the first datagram. As client
+/// (TYPE Server) it sends to the configured IP and PORT and counts as connected from EKI_Open. A memory at its limit drops the
+/// datagram's further values (UDP has no connection to close) and says so in the logbook.
+/// </summary>
+internal sealed partial class EkiChannel
+{
+    private UdpClient? _udp;
+    private IPEndPoint? _udpPeer;
+
+    /// <summary>EKI_Open of a UDP channel: binds <paramref name="address"/>:<paramref name="port"/> (server) or any port (client); returns the port bound.</summary>
+    private int OpenUdp(IPAddress address, int port)
+    {
+        UdpClient udp;
+        CancellationToken stop;
+        bool client = !Configuration.RobotIsServer;
+        lock (_gate)
+        {
+            if (_udp is not null)
+            {
+                throw new KrlRuntimeException($"EthernetKRL: the channel {Name} is already open");
+            }
+            if (client && !IPAddress.TryParse(Configuration.Address, out _))
+            {
+                throw new KrlRuntimeException($"EthernetKRL: the channel {Name} has no server IP address it can send to (\"{Configuration.Address}\")");
+            }
+            _stop = new CancellationTokenSource();
+            stop = _stop.Token;
+            udp = new UdpClient(new IPEndPoint(address, client ? 0 : port));
+            _udp = udp;
+            _udpPeer = client ? new IPEndPoint(IPAddress.Parse(Configuration.Address), port) : null;
+        }
+        if (client)
+        {
+            lock (_link)
+            {
+                Alive(true);
+            }
+        }
+        _ = Task.Run(() => ReceiveDatagramsAsync(udp, stop), CancellationToken.None);
+        return client ? port : ((IPEndPoint)udp.Client.LocalEndPoint!).Port;
+    }
+
+    private async Task ReceiveDatagramsAsync(UdpClient udp, CancellationToken token)
+    {
+        while (true)
+        {
+            UdpReceiveResult datagram;
+            try
+            {
+                datagram = await udp.ReceiveAsync(token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is OperationCanceledException or SocketException or ObjectDisposedException)
+            {
+                return;
+            }
+            bool first;
+            lock (_gate)
+            {
+                if (!ReferenceEquals(_udp, udp))
+                {
+                    return;
+                }
+                first = _udpPeer is null;
+                if (Configuration.RobotIsServer)
+                {
+                    _udpPeer = datagram.RemoteEndPoint;
+                }
+            }
+            if (first)
+            {
+                lock (_link)
+                {
+                    Alive(true);
+                }
+            }
+            EkiXmlSplitter splitter = Splitter((document, flags) => CommitDatagram(udp, document, flags));
+            try
+            {
+                splitter.Append(Encoding.UTF8.GetString(datagram.Buffer));
+            }
+            catch (FormatException ex)
+            {
+                controller.Pendant.Log($"EthernetKRL {Name}: received a datagram it cannot read ({ex.Message}); it is dropped");
+            }
+        }
+    }
+
+    private void CommitDatagram(UdpClient udp, List<(string Tag, string Value)> document, List<int> flags)
+    {
+        controller.Options.Seam?.Received(this, [.. document]);
+        bool overflow = false;
+        lock (_link)
+        {
+            bool current;
+            lock (_gate)
+            {
+                current = ReferenceEquals(_udp, udp);
+            }
+            if (current)
+            {
+                overflow = Store(document, flags, dropExcess: true);
+            }
+        }
+        document.Clear();
+        flags.Clear();
+        if (overflow)
+        {
+            controller.Pendant.Log($"EthernetKRL {Name}: a memory holds {Configuration.Limit} elements (its limit); the datagram's further values are lost");
+        }
+    }
+
+    /// <summary>Sends one datagram to the peer; false before a peer is known or when the socket is closed.</summary>
+    private bool SendDatagram(byte[] bytes)
+    {
+        UdpClient? udp;
+        IPEndPoint? peer;
+        lock (_gate)
+        {
+            udp = _udp;
+            peer = _udpPeer;
+        }
+        if (udp is null || peer is null)
+        {
+            return false;
+        }
+        try
+        {
+            udp.Send(bytes, bytes.Length, peer);
+            return true;
+        }
+        catch (Exception e) when (e is SocketException or ObjectDisposedException)
+        {
+            return false;
+        }
+    }
+
+    /// <summary>EKI_Close of a UDP channel: the socket is closed and the ALIVE flag goes down.</summary>
+    private void CloseUdp()
+    {
+        lock (_link)
+        {
+            UdpClient? udp;
+            bool alive;
+            lock (_gate)
+            {
+                udp = _udp;
+                alive = _udpPeer is not null;
+                _udp = null;
+                _udpPeer = null;
+                if (udp is not null)
+                {
+                    _stop?.Cancel();
+                }
+            }
+            udp?.Dispose();
+            if (alive)
+            {
+                Alive(false);
+            }
+        }
+    }
+}

@@ -1,0 +1,109 @@
+using System.Text;
+
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// The XML document EKI_Send writes for an element of the SEND configuration: the element, its attributes whose values the
+/// program set (in the configuration's order), and its configured child elements, nested as their tags say
+/// (<c>RobotState/Pos/@A1</c> is attribute A1 of element Pos in RobotState). An element with a value set carries it as text.
+/// </summary>
+internal static class EkiSendDocument
+{
+    private sealed class Node(string name)
+    {
+        public string Name { get; } = name;
+
+        public List<(string Name, string Value)> Attributes { get; } = [];
+
+        public List<Node> Children { get; } = [];
+
+        public string? Text { get; set; }
+
+        public Node Child(string name)
+        {
+            Node? child = Children.Find(c => c.Name == name);
+            if (child is null)
+            {
+                child = new Node(name);
+                Children.Add(child);
+            }
+            return child;
+        }
+    }
+
+    /// <summary>The document of element <paramref name="root"/> (a tag path) from the SEND <paramref name="tags"/> and the values set.</summary>
+    public static string Write(string root, IReadOnlyList<string> tags, IReadOnlyDictionary<string, string> values)
+    {
+        string prefix = root + "/@";
+        if (!root.Contains('/', StringComparison.Ordinal) && !tags.Any(t => t == root || (t.StartsWith(root + "/", StringComparison.Ordinal) && !IsAttribute(t, prefix))))
+        {
+            // Only attributes of the element (the Machina driver's acknowledgements): written directly, on every action.
+            var flat = new StringBuilder("<").Append(root);
+            foreach (string tag in tags)
+            {
+                if (IsAttribute(tag, prefix) && values.TryGetValue(tag, out string? value))
+                {
+                    flat.Append(' ').Append(tag, prefix.Length, tag.Length - prefix.Length).Append("=\"").Append(EkiChannel.Escape(value)).Append('"');
+                }
+            }
+            return flat.Append(" />").ToString();
+        }
+        var top = new Node(root[(root.LastIndexOf('/') + 1)..]);
+        foreach (string tag in tags)
+        {
+            if (tag != root && !tag.StartsWith(root + "/", StringComparison.Ordinal))
+            {
+                continue;
+            }
+            Node node = top;
+            string[] steps = tag.Length > root.Length ? tag[(root.Length + 1)..].Split('/') : [];
+            bool set = values.TryGetValue(tag, out string? value);
+            for (int i = 0; i < steps.Length; i++)
+            {
+                if (steps[i].StartsWith('@'))
+                {
+                    if (set)
+                    {
+                        node.Attributes.Add((steps[i][1..], value!));
+                    }
+                    node = null!;
+                    break;
+                }
+                node = node.Child(steps[i]);
+            }
+            if (node is not null && set)
+            {
+                node.Text = value;
+            }
+        }
+        var xml = new StringBuilder();
+        Append(xml, top);
+        return xml.ToString();
+    }
+
+    private static bool IsAttribute(string tag, string prefix) => tag.StartsWith(prefix, StringComparison.Ordinal) && tag.IndexOf('/', prefix.Length) < 0;
+
+    private static void Append(StringBuilder xml, Node node)
+    {
+        xml.Append('<').Append(node.Name);
+        foreach ((string name, string value) in node.Attributes)
+        {
+            xml.Append(' ').Append(name).Append("=\"").Append(EkiChannel.Escape(value)).Append('"');
+        }
+        if (node.Children.Count == 0 && node.Text is null)
+        {
+            xml.Append(" />");
+            return;
+        }
+        xml.Append('>');
+        if (node.Text is not null)
+        {
+            xml.Append(EkiChannel.Escape(node.Text));
+        }
+        foreach (Node child in node.Children)
+        {
+            Append(xml, child);
+        }
+        xml.Append("</").Append(node.Name).Append('>');
+    }
+}
