@@ -10,9 +10,10 @@ internal static partial class SimCommand
 {
     /// <summary>
     /// Starts Robot Web Services for the virtual ABB's RAPID twin, reachable on <paramref name="bind"/> at <paramref name="port"/>
-    /// (0: a free one), and names the port; null when the controller runs no RAPID. Disposing stops both.
+    /// (0: a free one), and names the port through <paramref name="announce"/> (the relay's events go to <paramref name="log"/>); null
+    /// when the controller runs no RAPID. Disposing stops both.
     /// </summary>
-    private static IAsyncDisposable? StartRws(RunningController controller, IPAddress bind, int port, Action<string> log)
+    private static IAsyncDisposable? StartRws(RunningController controller, IPAddress bind, int port, Action<string> log, Action<string> announce)
     {
         if (controller.Inner.Controller is not VirtualAbbController { Twin: { } twin })
         {
@@ -30,7 +31,7 @@ internal static partial class SimCommand
             server.DisposeAsync().AsTask().GetAwaiter().GetResult();
             throw;
         }
-        log($"Robot Web Services (RWS 1.0) on {bind}:{relay.Port}, user \"Default User\", password \"robotics\"; e.g. " +
+        announce($"Robot Web Services (RWS 1.0) on {bind}:{relay.Port}, user \"Default User\", password \"robotics\"; e.g. " +
             $"machina drivers abb --install --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --rws-port {relay.Port} --port {DefaultPort + 100}");
         return new RwsEndpoint(server, relay);
     }

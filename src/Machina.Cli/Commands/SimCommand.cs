@@ -95,9 +95,12 @@ internal static partial class SimCommand
         RelayRoute[] routes = urLayout ? UrRoutes(controller) : controller.CompactRoutes;
         await using TcpRelay relay = TcpRelay.Start(bind, port, routes, Log);
         await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
-        await using IAsyncDisposable? rws = brand == AbbBrand.Definition.Type ? StartRws(controller, bind, args.Port("--rws-port", 0, allowZero: true), Log) : null;
+        // RWS is named after the controller's first line, which says "listening" and where (scripts and tests read it).
+        var rwsLines = new List<string>();
+        await using IAsyncDisposable? rws = brand == AbbBrand.Definition.Type ? StartRws(controller, bind, args.Port("--rws-port", 0, allowZero: true), Log, rwsLines.Add) : null;
         Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(routes, relay.Ports)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
+        rwsLines.ForEach(Log);
         Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +
             $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {relay.Port}");
         if (urLayout)

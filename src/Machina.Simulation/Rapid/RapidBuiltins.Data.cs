@@ -170,7 +170,7 @@ internal static partial class RapidBuiltins
         else
         {
             c.Clock.Wait(seconds, task.CancellationToken);
-            Thread.Sleep(1); // another task may be the one to make the condition true
+            task.CancellationToken.WaitHandle.WaitOne(1); // another task may be the one to make the condition true (ends at once when stopped)
         }
         task.CancellationToken.ThrowIfCancellationRequested();
     }

@@ -105,7 +105,7 @@ public class ReferenceDocTests
         List<string> table = ReferenceGenerator.NativeTable(bot => bot.MoveTo(300, 200, 400));
 
         Assert.Equal("| ABB | `MoveL [[300, 200, 400], [0, 0, 1, 0], [0,0,0,0], [9E9,9E9,9E9,9E9,9E9,9E9]], vel20, z5, Tool0\\WObj:=WObj0;` | `@2 1 300 200 400 0 0 1 0;` |", table[2]);
-        Assert.Equal("| UR | `movep(p[0.3,0.2,0.4,0,3.141593,0], v=0.02, r=0.005)` | `2 1 3000 2000 4000 0 31416 0` |", table[3]);
+        Assert.Equal("| UR | `movep(p[0.3,0.2,0.4,0,3.141593,0], v=0.02, r=0.005)` | `2 1 300000 200000 400000 0 3141593 0` |", table[3]);
         Assert.Equal("| Marlin | `G0 X300 Y200 Z400` | no online control |", table[6]);
     }
 
