@@ -127,7 +127,9 @@ public class KrlTemplateTests
         Assert.True((bool)((KrlArrayValue)twin.Environment.System["$OUT"].Value).Items[6]);
     }
 
-    [Fact]
+    [Fact(Skip = "Timing race, hung a CI run (net8.0): the interrupt on $TIMER_FLAG[1] fires on the flag's rising edge, which the "
+        + "robot interpreter samples; on a loaded machine more than the timer's 30 ms can pass between two samples, the FALSE "
+        + "period is missed and WAIT FOR waits forever. Timers must count per interpreter cycle first (issue 43).")]
     public void TimerFlagInterrupt_FiresEachTimeTheTimerPassesZero()
     {
         const string source = """
