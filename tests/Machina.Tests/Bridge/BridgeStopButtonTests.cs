@@ -64,8 +64,11 @@ public class BridgeStopButtonTests
 
         JsonElement shown = await browser.EvaluateAsync("JSON.parse(JSON.stringify({ names: [...document.querySelectorAll('#events li .name')].map(n => n.textContent), " +
             "failed: [...document.querySelectorAll('#events li.ev-action-failed')].map(n => n.textContent), " +
-            "control: [...document.querySelectorAll('#events li.ev-control')].map(n => n.textContent), status: document.getElementById('statusText').textContent }))");
+            "control: [...document.querySelectorAll('#events li.ev-control')].map(n => n.textContent), status: document.getElementById('statusText').textContent, " +
+            "pending: document.getElementById('rPend').textContent }))");
         Assert.Equal("Stopped", shown.GetProperty("status").GetString());
+        // After Stop nothing is left to execute: the move under way failed and the one after it was cancelled (it said "2" before).
+        Assert.Equal("0 (stopped; 1 cancelled)", shown.GetProperty("pending").GetString());
         string failed = Assert.Single(shown.GetProperty("failed").EnumerateArray()).GetString()!;
         Assert.Contains("stopped by the user (Robot.Stop)", failed, StringComparison.Ordinal);
         Assert.Contains("(stopped)", failed, StringComparison.Ordinal);
