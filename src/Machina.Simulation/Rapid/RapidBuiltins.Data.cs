@@ -165,7 +165,7 @@ internal static partial class RapidBuiltins
         RapidTwinController c = task.Controller;
         if (!task.IsMotionTask || c.Options.RealTime)
         {
-            Task.Delay(TimeSpan.FromSeconds(seconds), c.Clock.Time, task.CancellationToken).GetAwaiter().GetResult();
+            c.Clock.WaitAside(seconds, task.CancellationToken);
         }
         else
         {

@@ -19,7 +19,7 @@ internal static partial class RapidBuiltins
             if (!call.Machine.Task.IsMotionTask)
             {
                 // A background task (the monitor) waits on the wall clock: its period is real, it adds nothing to program time.
-                Task.Delay(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), c.Clock.Time, call.Machine.Task.CancellationToken).GetAwaiter().GetResult();
+                c.Clock.WaitAside(seconds, call.Machine.Task.CancellationToken);
                 return;
             }
             c.Arm.FinishBlend(call.Machine.Task.CancellationToken); // the arm stops at its last waypoint before the wait counts

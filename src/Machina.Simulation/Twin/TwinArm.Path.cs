@@ -190,7 +190,7 @@ internal sealed partial class TwinArm
             }
             try
             {
-                Task.Delay(TimeSpan.FromSeconds(Math.Min(left, 86_400)), Clock.Time, both.Token).GetAwaiter().GetResult();
+                Clock.WaitAside(left, both.Token); // the motion takes its time; the caller counts it as program time
                 lock (_gate)
                 {
                     _moving = null;

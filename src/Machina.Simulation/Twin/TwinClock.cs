@@ -25,13 +25,23 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
         {
             return;
         }
-        TimeSpan span = TimeSpan.FromSeconds(Math.Min(seconds, 86_400));
+        TimeSpan span = Span(seconds);
         if (RealTime)
         {
             Task.Delay(span, Time, cancellation).GetAwaiter().GetResult();
         }
         Interlocked.Add(ref _ticks, span.Ticks);
     }
+
+    /// <summary>
+    /// Waits <paramref name="seconds"/> (at most a day) on <see cref="Time"/> whatever the mode, adding nothing to the program
+    /// time: a background task's wait, whose period is real and which moves no arm.
+    /// </summary>
+    public void WaitAside(double seconds, CancellationToken cancellation) =>
+        Task.Delay(Span(seconds), Time, cancellation).GetAwaiter().GetResult();
+
+    /// <summary>A wait's length, capped at a day (a longer one is no use on a twin and would overflow the timer).</summary>
+    private static TimeSpan Span(double seconds) => TimeSpan.FromSeconds(Math.Min(seconds, 86_400));
 
     /// <summary>Adds <paramref name="seconds"/> of program time that was already waited for (a motion that a hold cut into parts).</summary>
     public void Add(double seconds)
