@@ -12,7 +12,8 @@ namespace Machina.Tests.Reliability;
 /// <see cref="FaultProxy"/>s with one fault mode (connections closed at a seeded byte, requests held and the link cut, bytes
 /// split and delayed, garbage towards the host, a held driver script on UR, or a mix), recovered the user's way. No action
 /// may be lost or run twice. The suite runs one trial per mode and brand; <c>MACHINA_CHAOS_TRIALS=N</c> runs N per brand
-/// (the modes in turn, seeds from <see cref="FirstSeed"/> on), and docs/reliability.md reports such a run with its seeds.
+/// (the modes in turn, seeds from <see cref="FirstSeed"/> on, or from S with <c>MACHINA_CHAOS_SEED=S</c>: a seed always takes
+/// the same mode), and docs/reliability.md reports such a run with its seeds.
 /// </summary>
 public class ChaosTests(ITestOutputHelper output)
 {
@@ -31,13 +32,14 @@ public class ChaosTests(ITestOutputHelper output)
     {
         Mode[] modes = Enum.GetValues<Mode>();
         int trials = int.TryParse(Environment.GetEnvironmentVariable("MACHINA_CHAOS_TRIALS"), NumberStyles.Integer, CultureInfo.InvariantCulture, out int n) && n > 0 ? n : modes.Length;
+        int first = int.TryParse(Environment.GetEnvironmentVariable("MACHINA_CHAOS_SEED"), NumberStyles.Integer, CultureInfo.InvariantCulture, out int s) && s >= FirstSeed ? s : FirstSeed;
         var problems = new List<string>();
         var watch = Stopwatch.StartNew();
         int recoveries = 0;
         for (int t = 0; t < trials; t++)
         {
-            int seed = FirstSeed + t;
-            Mode mode = modes[t % modes.Length];
+            int seed = first + t;
+            Mode mode = modes[(seed - FirstSeed) % modes.Length];
             try
             {
                 recoveries += await RunTrialAsync(brand, seed, mode);
@@ -47,7 +49,7 @@ public class ChaosTests(ITestOutputHelper output)
                 problems.Add($"seed {seed} ({mode}): {e.GetType().Name}: {e.Message}");
             }
         }
-        output.WriteLine($"{brand}: {trials} trials of {Actions} actions (seeds {FirstSeed}-{FirstSeed + trials - 1}), {problems.Count} failed, "
+        output.WriteLine($"{brand}: {trials} trials of {Actions} actions (seeds {first}-{first + trials - 1}), {problems.Count} failed, "
             + $"{recoveries} recoveries, {watch.Elapsed.TotalSeconds:F1} s");
         Assert.True(problems.Count == 0, string.Join("\n", problems));
     }
@@ -81,9 +83,12 @@ public class ChaosTests(ITestOutputHelper output)
                 await Eventually.TrueAsync(() => rig.ExecutedIds.Count >= at || w.Bot.ConnectionState != ConnectionState.Connected, "the stall point", WaitLimit);
                 requests.HoldNow();
             }
+            int acceptedAtHold = requests.Accepted;
             if (w.Bot.ConnectionState == ConnectionState.Connected)
             {
-                await Eventually.TrueAsync(() => requests.HeldBytes > 0 || w.Bot.ConnectionState != ConnectionState.Connected, "requests to be held", WaitLimit);
+                await Eventually.TrueAsync(() => requests.HeldBytes > 0 || w.Bot.ConnectionState != ConnectionState.Connected, "requests to be held", WaitLimit,
+                    () => $"The host is {w.Bot.ConnectionState}, the controller ran {rig.ExecutedIds.Count} and the host saw {w.Executed.Count}; "
+                        + $"{requests.Accepted} request links ({acceptedAtHold} when held), {w.Faults.Count} faults: {string.Join(" | ", w.Faults.Select(f => f.Message))}");
                 int lost = w.Faults.Count;
                 requests.CutHeldSenders();
                 await Eventually.TrueAsync(() => w.Faults.Count > lost || w.Bot.ConnectionState != ConnectionState.Connected, "the host to see its link cut", WaitLimit);
