@@ -87,7 +87,7 @@ internal static class CompileCommand
         if (result.WarningCount > result.Warnings.Count)
         {
             int more = result.WarningCount - result.Warnings.Count;
-            context.Stderr.WriteLine($"{reader.DisplayName}: and {more} more warning{(more == 1 ? "" : "s")} (each is a comment in the program).");
+            context.Stderr.WriteLine($"{reader.DisplayName}: and {more} more warning{(more == 1 ? "" : "s")} (the program notes each as a comment; a run of the same warning shares one).");
         }
         return Task.FromResult(new CompileResult(result.Paths, result.ActionCount, result.WarningCount));
     }

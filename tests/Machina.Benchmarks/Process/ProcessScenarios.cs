@@ -206,10 +206,10 @@ internal sealed class ProcessInputs : IDisposable
 {
     private readonly string _root = Path.Combine(Path.GetTempPath(), $"machina-process-bench-{Environment.ProcessId}");
 
-    /// <summary>An instruction file of <paramref name="lines"/> lines: an absolute start, then the mix of the in-process parse scenario.</summary>
-    public string InstructionFile(int lines)
+    /// <summary>An instruction file of <paramref name="lines"/> lines: an absolute start, then lines of <paramref name="shape"/> (by default the mix of the in-process parse scenario).</summary>
+    public string InstructionFile(int lines, InputShape shape = InputShape.Mixed)
     {
-        string path = Path.Combine(_root, $"input-{lines}.machina");
+        string path = Path.Combine(_root, $"input-{lines}{InputShapes.Suffix(shape)}.machina");
         if (!File.Exists(path))
         {
             Directory.CreateDirectory(_root);
@@ -219,7 +219,7 @@ internal sealed class ProcessInputs : IDisposable
                 writer.Write("MoveTo(300, 0, 500);\n");
                 for (int i = 1; i < lines; i++)
                 {
-                    writer.Write(Workloads.Line(i, random));
+                    writer.Write(InputShapes.Line(shape, i, random));
                     writer.Write('\n');
                 }
             }

@@ -30,8 +30,10 @@ internal static class ProcessSuite
     {
         RobotType[] languages = [RobotType.ABB, RobotType.UR, RobotType.KUKA, RobotType.ZMORPH, RobotType.MARLIN, RobotType.HUMAN, RobotType.MACHINA];
         var named = new List<ProcessScenario>();
-        named.AddRange(languages.Select(l => new ExternalToolScenario(l, native: true)));
-        named.AddRange(languages.Select(l => new ExternalToolScenario(l, native: false)));
+        foreach (bool native in (bool[])[true, false])
+        {
+            named.AddRange(languages.SelectMany(l => Enum.GetValues<InputShape>().Select(shape => new ExternalToolScenario(l, native, shape))));
+        }
         named.Add(new IssueTextProcessScenario());
         named.Add(new FormatFloorProcessScenario());
         return named;
