@@ -411,6 +411,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 try
                 {
                     Call(entry.Declaration.Handler, entry.Frame);
+                    // The condition as the routine left it (a timer set back, a flag reset): the controller's next cycle sees it so,
+                    // however long the twin's thread waits before its next look, and its next rising edge is not lost.
+                    if (_interrupts.TryGetValue(priority, out var after) && after.On && ReferenceEquals(after.Declaration, entry.Declaration))
+                    {
+                        _interrupts[priority] = after with { Last = (bool)Eval(after.Declaration.Condition, after.Frame) };
+                    }
                 }
                 finally
                 {
