@@ -57,7 +57,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         }
         if (!Configuration.RobotIsServer)
         {
-            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} has the robot as client; the twin only listens (TYPE Client)");
+            return Connect();
         }
         TcpListener listener;
         CancellationToken stop;
@@ -145,13 +145,13 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     }
 
     /// <summary>Makes <paramref name="client"/> the channel's connection (flag set before this returns) and reads it until it ends.</summary>
-    private Task Attach(TcpListener listener, TcpClient client, CancellationToken token)
+    private Task Attach(TcpListener? listener, TcpClient client, CancellationToken token)
     {
         lock (_link)
         {
             lock (_gate)
             {
-                if (!ReferenceEquals(listener, _reserved))
+                if (listener is not null && !ReferenceEquals(listener, _reserved))
                 {
                     listener.Stop();
                 }
@@ -175,15 +175,24 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         var splitter = new EkiXmlSplitter(Configuration.BufferSize);
         var document = new List<(string Tag, string Value)>();
         var flags = new List<int>();
+        var frames = new Dictionary<string, string[]>(StringComparer.Ordinal);
         splitter.Value += (tag, value) =>
         {
-            if (_memories.ContainsKey(tag))
+            if (!FramePart(frames, tag, value) && _memories.ContainsKey(tag) && !(FrameTags.Count > 0 && FrameTags.Contains(tag)))
             {
                 document.Add((tag, value));
             }
         };
         splitter.Ended += (path, topLevel) =>
         {
+            if (frames.Remove(path, out string[]? frame))
+            {
+                document.Add((path, string.Join(' ', frame)));
+            }
+            else if (FrameTags.Count > 0 && FrameTags.Contains(path))
+            {
+                document.Add((path, "0 0 0 0 0 0")); // a FRAME element without components
+            }
             foreach (EkiReceiveElement element in Configuration.Receive)
             {
                 if (element.SetFlag > 0 && element.Tag == path)

@@ -75,6 +75,17 @@ internal static class EkiSendDocument
             {
                 node.Text = value;
             }
+            if (node is not null)
+            {
+                // A FRAME element's components (EKI_SetFrame) are its attributes.
+                foreach (string component in EkiChannel.FrameComponents)
+                {
+                    if (values.TryGetValue(tag + "/@" + component, out string? part) && !tags.Contains(tag + "/@" + component))
+                    {
+                        node.Attributes.Add((component, part));
+                    }
+                }
+            }
         }
         var xml = new StringBuilder();
         Append(xml, top);

@@ -218,7 +218,7 @@ internal sealed partial class KrlBinder
         }
         else
         {
-            throw Error(call.Line, $"unknown routine {call.Name}: no DEF or DEFFCT of that name in the loaded files, and not a system function");
+            throw Error(call.Line, KrlUnsupported.Routine(call.Name) ?? $"unknown routine {call.Name}: no DEF or DEFFCT of that name in the loaded files, and not a system function");
         }
         if (!statement && returns is null)
         {
@@ -230,6 +230,14 @@ internal sealed partial class KrlBinder
     private void Argument(KrlCall call, int i, KrlType? accepts, bool isOut)
     {
         KrlExpr argument = call.Arguments[i];
+        if (argument is KrlOmitted)
+        {
+            if (call.Builtin is not null)
+            {
+                throw Error(argument.Line, $"argument {i + 1} of {call.Name} cannot be left out on the twin");
+            }
+            return;
+        }
         KrlType actual = isOut ? Place(argument, $"passed as OUT argument {i + 1} of {call.Name}") : Expr(argument, accepts);
         if (accepts is null)
         {

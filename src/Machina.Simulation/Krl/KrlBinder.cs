@@ -158,6 +158,11 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
                 }
                 break;
             case KrlInterruptSwitch:
+            case KrlLabel:
+                break;
+            case KrlGoto jump when !KrlLabel.Within(_routine!.Body, jump.Label):
+                throw Error(jump.Line, $"GOTO {jump.Label}: the routine {_routine.Name} has no label {jump.Label}:");
+            case KrlGoto:
                 break;
             default:
                 throw Error(statement.Line, "a statement the twin does not know");

@@ -14,6 +14,10 @@ internal static class KrlConvert
                 return value is double ? value : KrlValues.ToReal(value);
             case KrlKind.Char when value is string one:
                 return KrlValues.Box(one[0]);
+            case KrlKind.Char when value is int code:
+                return code is >= 0 and <= 255
+                    ? KrlValues.Box((char)code)
+                    : throw new KrlRuntimeException($"Value assignment inadmissible: a CHAR takes a character code from 0 to 255, not {code}");
             case KrlKind.Struct when value is KrlStructValue s:
             {
                 if (s.Type == type)

@@ -10,6 +10,9 @@ internal abstract class KrlExpr(int line)
     public KrlType Type { get; set; } = KrlType.Int;
 }
 
+/// <summary>An argument left out of a call (<c>f(a, , c)</c>): the parameter gets no value from the caller.</summary>
+internal sealed class KrlOmitted(int line) : KrlExpr(line);
+
 /// <summary>A constant: INT, REAL, BOOL, an enumeration value or a string (a CHAR array).</summary>
 internal sealed class KrlLiteral(int line, object value) : KrlExpr(line)
 {

@@ -155,7 +155,8 @@ internal sealed partial class KrlMachine
         for (int i = 0; i < arguments.Length; i++)
         {
             bool isOut = call.Routine is { } r ? r.Parameters[i].IsOut : call.Builtin!.Parameters[i].IsOut;
-            arguments[i] = isOut ? Place(call.Arguments[i], frame) : Eval(call.Arguments[i], frame);
+            KrlExpr argument = call.Arguments[i];
+            arguments[i] = argument is KrlOmitted ? null! : isOut ? Place(argument, frame) : Eval(argument, frame);
         }
         if (call.Routine is { } routine)
         {

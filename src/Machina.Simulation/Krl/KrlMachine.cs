@@ -13,6 +13,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         Next,
         Exit,
         Return,
+        Goto,
     }
 
     private readonly Dictionary<int, (KrlInterruptDecl Declaration, object[] Frame, bool On, bool Last)> _interrupts = [];
@@ -24,6 +25,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private bool _inInterrupt;
     private object[]? _interruptFrame;
     private object? _returned;
+    private string? _gotoLabel;
     private KrlRoutine _routine = null!;
     private int _depth;
     private long _steps;
@@ -97,7 +99,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         for (int i = 0; i < frame.Length; i++)
         {
             KrlType type = routine.Locals[i].Type;
-            if (i < arguments.Length)
+            if (i < arguments.Length && arguments[i] is not null)
             {
                 object value = arguments[i] is KrlPlace place ? place.Get() : arguments[i];
                 frame[i] = type.Kind == KrlKind.Array && type.Sizes.Any(s => s == 0)
@@ -115,6 +117,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         try
         {
             Flow flow = Block(routine.Body, frame);
+            if (flow == Flow.Goto)
+            {
+                throw new KrlRuntimeException($"GOTO {_gotoLabel}: a jump into a control structure (IF, loop, SWITCH) from outside it is not allowed");
+            }
             if (routine.ReturnType is not null && flow != Flow.Return)
             {
                 throw new KrlRuntimeException($"the function {routine.Name} ended without RETURN");
@@ -161,6 +167,14 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Flow flow = Statement(statement, frame);
             if (flow != Flow.Next)
             {
+                if (flow == Flow.Goto && KrlLabel.IndexIn(body, _gotoLabel!) is >= 0 and var label)
+                {
+                    // The label is in this block: go on after it (a GOTO out of nested blocks ends them on the way here).
+                    _gotoLabel = null;
+                    Cancellation.ThrowIfCancellationRequested();
+                    i = label;
+                    continue;
+                }
                 return flow;
             }
         }
@@ -207,6 +221,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 return Flow.Next;
             case KrlJump jump:
                 return Jump(jump, frame);
+            case KrlGoto jump:
+                _gotoLabel = jump.Label;
+                return Flow.Goto;
+            case KrlLabel:
+                return Flow.Next;
             case KrlInterruptDecl declaration:
                 if (_interrupts.TryGetValue(declaration.Priority, out var old) && old.On)
                 {
@@ -247,7 +266,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 return Flow.Next;
             }
-            if (flow == Flow.Return)
+            if (flow != Flow.Next)
             {
                 return flow;
             }
@@ -280,7 +299,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 return Flow.Next;
             }
-            if (flow == Flow.Return)
+            if (flow != Flow.Next)
             {
                 return flow;
             }
@@ -411,6 +430,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 try
                 {
                     Call(entry.Declaration.Handler, entry.Frame);
+                    // The condition as the routine left it (a timer set back, a flag reset): the controller's next cycle sees it so,
+                    // however long the twin's thread waits before its next look, and its next rising edge is not lost.
+                    if (_interrupts.TryGetValue(priority, out var after) && after.On && ReferenceEquals(after.Declaration, entry.Declaration))
+                    {
+                        _interrupts[priority] = after with { Last = (bool)Eval(after.Declaration.Condition, after.Frame) };
+                    }
                 }
                 finally
                 {

@@ -15,6 +15,14 @@ internal sealed partial class KrlParser
         KrlToken name = Peek;
         _at += 2;
         var indices = new List<int>();
+        if (Accept("]"))
+        {
+            // NAME[] = "text": a whole CHAR array given its text.
+            Expect("=");
+            KrlExpr text = Expression();
+            EndOfLine();
+            return new KrlElementInitialiser(name.Text, [], text, name.Line);
+        }
         do
         {
             KrlToken index = Peek;
@@ -34,5 +42,5 @@ internal sealed partial class KrlParser
     }
 }
 
-/// <summary>NAME[indices] = value in a data list.</summary>
+/// <summary>NAME[indices] = value in a data list (no indices: NAME[] = "text", a whole CHAR array).</summary>
 internal sealed record KrlElementInitialiser(string Name, int[] Indices, KrlExpr Value, int Line);

@@ -107,7 +107,8 @@ internal sealed partial class KrlParser
                 {
                     do
                     {
-                        arguments.Add(Expression());
+                        // An argument left out (MsgNotify(text[], "INFO", , value[])): the parameter is not given a value.
+                        arguments.Add(Peek.IsSymbol(",") || Peek.IsSymbol(")") ? new KrlOmitted(Peek.Line) : Expression());
                     }
                     while (Accept(","));
                 }
@@ -132,7 +133,7 @@ internal sealed partial class KrlParser
             else if (token.IsSymbol("."))
             {
                 _at++;
-                expr = new KrlMember(token.Line, expr, Identifier("a structure component"));
+                expr = new KrlMember(token.Line, expr, Component());
             }
             else
             {
@@ -190,7 +191,7 @@ internal sealed partial class KrlParser
         {
             do
             {
-                string field = Identifier("a structure component");
+                string field = Component();
                 if (Peek.IsSymbol("["))
                 {
                     _at++;

@@ -136,8 +136,12 @@ internal sealed partial class KrlParser
                 return new KrlJump(line, "CONFIRM", handle);
             }
             case "GOTO":
-                throw Error(token, "GOTO is not supported by the twin (the Machina files do not use it)");
+                return Goto();
             default:
+                if (IsLabel())
+                {
+                    return Label();
+                }
                 if (KrlKeywords.IsReserved(token.Text))
                 {
                     throw Error(token, $"{token.Text.ToUpperInvariant()} cannot start a statement here");

@@ -146,6 +146,18 @@ internal sealed partial class KrlParser
         {
             _at++;
             returns = TypeName();
+            if (returns.Kind == KrlKind.Char && Accept("["))
+            {
+                // DEFFCT CHAR[n] name( ): a function that returns a string.
+                KrlToken size = Peek;
+                if (size.Kind != KrlTokenKind.Int || Whole(size) < 1)
+                {
+                    throw Error(size, $"an array size must be a whole number above 0, not {size.Display}");
+                }
+                _at++;
+                Expect("]");
+                returns = KrlType.Array(KrlType.Char, Whole(size));
+            }
         }
         else if (def.Is("DEF"))
         {
@@ -335,10 +347,22 @@ internal sealed partial class KrlParser
         KrlType? type = token.Kind == KrlTokenKind.Name ? KrlUserTypes.Find(_userTypes, token.Text) : null;
         if (type is null)
         {
-            throw Error(token, $"unknown data type {token.Display}");
+            throw Error(token, (token.Kind == KrlTokenKind.Name ? KrlUnsupported.Type(token.Text) : null) ?? $"unknown data type {token.Display}");
         }
         _at++;
         return type;
+    }
+
+    /// <summary>A structure component's name after '.' or in an aggregate: any name, also a word KRL reserves elsewhere (STEP, TYPE).</summary>
+    private string Component()
+    {
+        KrlToken token = Peek;
+        if (token.Kind != KrlTokenKind.Name || token.Text.StartsWith('$'))
+        {
+            throw Error(token, $"expected a structure component, found {token.Display}");
+        }
+        _at++;
+        return token.Text;
     }
 
     private string Identifier(string what)

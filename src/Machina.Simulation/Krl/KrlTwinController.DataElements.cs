@@ -12,6 +12,16 @@ internal sealed partial class KrlTwinController
                 throw new KrlLoadException(list.File, element.Line, $"{element.Name} is not an array declared in the data list");
             }
             IReadOnlyList<int> sizes = cell.Type.Sizes;
+            if (element.Indices.Length == 0)
+            {
+                if (cell.Type.Element!.Kind != KrlKind.Char || sizes.Count != 1 || element.Value is not KrlLiteral { Value: string text })
+                {
+                    throw new KrlLoadException(list.File, element.Line, $"{element.Name}[] = takes a string, for a CHAR array");
+                }
+                binder.BindConstant(list.File, element.Value, cell.Type);
+                cell.Value = KrlConvert.To(cell.Type, text, cell.Value);
+                continue;
+            }
             if (element.Indices.Length != sizes.Count)
             {
                 throw new KrlLoadException(list.File, element.Line, $"{element.Name} has {sizes.Count} dimension(s), not {element.Indices.Length}");

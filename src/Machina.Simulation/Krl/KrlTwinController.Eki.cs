@@ -99,10 +99,29 @@ internal sealed partial class KrlTwinController
             channel.ClearBuffer(Str(a[1]));
             return Status(0, 0, 0, channel.Connected);
         });
-        Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, v => (int)Math.Round(double.Parse(v, CultureInfo.InvariantCulture))));
-        Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, v => double.Parse(v, CultureInfo.InvariantCulture)));
-        Add("EKI_GetBool", [text, text, new(KrlType.Bool, IsOut: true)], (_, a) => EkiGet(a, v => v is "1" || v.Equals("true", StringComparison.OrdinalIgnoreCase)));
+        Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, EkiInt));
+        Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, EkiReal));
+        Add("EKI_GetBool", [text, text, new(KrlType.Bool, IsOut: true)], (_, a) => EkiGet(a, EkiBool));
         Add("EKI_GetString", [text, text, new(KrlType.Array(KrlType.Char, 0), IsOut: true)], (_, a) => EkiGet(a, v => v));
+        foreach ((string suffix, KrlType element, Func<string, object> convert) in new (string, KrlType, Func<string, object>)[]
+        {
+            ("Int", KrlType.Int, EkiInt), ("Real", KrlType.Real, EkiReal), ("Bool", KrlType.Bool, EkiBool),
+        })
+        {
+            Add($"EKI_Get{suffix}Array", [text, text, new(KrlType.Array(element, 0), IsOut: true)], (_, a) => EkiGetArray(a, convert));
+        }
+        Add("EKI_GetFrame", [text, text, new(KrlTypes.Frame, IsOut: true)], (_, a) => EkiGet(a, v =>
+        {
+            double[] parts = EkiChannel.ParseFrame(v);
+            return new KrlStructValue(KrlTypes.Frame, [.. parts.Select(p => (object)p)]);
+        }));
+        Add("EKI_SetFrame", [text, text, new(KrlTypes.Frame)], (_, a) =>
+        {
+            EkiChannel channel = Channel(Str(a[0]));
+            var frame = (KrlStructValue)KrlConvert.To(KrlTypes.Frame, a[2], KrlValues.Default(KrlTypes.Frame));
+            channel.SetFrame(Str(a[1]), [.. EkiChannel.FrameComponents.Select(frame.Number)]);
+            return Status(0, 0, 0, channel.Connected);
+        });
         Add("EKI_SetInt", [text, text, KrlBuiltinParameter.Int], (_, a) => EkiSet(a, KrlValues.ToInt(a[2]).ToString(CultureInfo.InvariantCulture)));
         Add("EKI_SetReal", [text, text, KrlBuiltinParameter.Real], (_, a) => EkiSet(a, EkiChannel.Format(KrlValues.ToReal(a[2]))));
         Add("EKI_SetBool", [text, text, new(KrlType.Bool)], (_, a) => EkiSet(a, (bool)a[2] ? "1" : "0"));
@@ -223,6 +242,39 @@ internal sealed partial class KrlTwinController
             }
         }
         return Status(remaining, value is null ? 0 : 1, 0, channel.Connected);
+    }
+
+    private static object EkiInt(string value) => (int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture));
+
+    private static object EkiReal(string value) => double.Parse(value, CultureInfo.InvariantCulture);
+
+    private static object EkiBool(string value) => value is "1" || value.Equals("true", StringComparison.OrdinalIgnoreCase);
+
+    /// <summary>
+    /// EKI_GetIntArray, EKI_GetRealArray, EKI_GetBoolArray: the next values of the tag's memory into the array from its first
+    /// element, until the array is full or the memory empty (the elements after the last read keep their values); Read is how
+    /// many were read, Buff how many remain.
+    /// </summary>
+    private KrlStructValue EkiGetArray(object[] a, Func<string, object> convert)
+    {
+        EkiChannel channel = Channel(Str(a[0]));
+        var place = (KrlPlace)a[2];
+        var array = (KrlArrayValue)place.Get();
+        object[] items = (object[])array.Items.Clone();
+        int read = 0, remaining = channel.Count(Str(a[1]));
+        while (read < items.Length && channel.Take(Str(a[1]), out remaining) is { } value)
+        {
+            try
+            {
+                items[read++] = convert(value);
+            }
+            catch (FormatException)
+            {
+                throw new KrlRuntimeException($"EthernetKRL: the value \"{value}\" of {Str(a[1])} is not a number");
+            }
+        }
+        place.Set(new KrlArrayValue(array.Type, items));
+        return Status(remaining, read, 0, channel.Connected);
     }
 
     private KrlStructValue EkiSet(object[] a, string value)

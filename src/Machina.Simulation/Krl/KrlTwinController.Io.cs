@@ -25,20 +25,34 @@ internal sealed partial class KrlTwinController
         Arm.Wake(); // a motion under way serves the interrupts whose condition this may have made TRUE
     }
 
-    /// <summary>Sleeps until something changes after <paramref name="version"/>.</summary>
+    /// <summary>
+    /// Sleeps until something changes after <paramref name="version"/>. While a timer runs ($TIMER_STOP FALSE) it returns after one
+    /// interpreter cycle, as a KRC looks again: outside real-time mode that cycle is program time (at once when nothing outside the
+    /// program can change anything, else the time waited for the outside, at most one cycle), so the timers move by at most one
+    /// cycle between two looks and a program's timer values do not depend on the machine's load.
+    /// </summary>
     public void WaitForInputs(long version, CancellationToken cancellation)
     {
         while (InputsVersion == version)
         {
-            if (!HasExternalInputs && !TimersRunning())
+            bool timing = TimersRunning();
+            if (!HasExternalInputs && !timing)
             {
                 throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin (no channel open, no timer running)");
             }
-            // A running timer ($TIMER_STOP FALSE) changes too: look again after one interpreter cycle, as a KRC does.
-            bool timing = TimersRunning();
-            _inputsChanged.Wait(TimeSpan.FromMilliseconds(timing ? 12 : 100), cancellation);
+            if (timing && !Clock.RealTime && !HasExternalInputs)
+            {
+                Clock.Wait(InterpreterCycle.TotalSeconds, cancellation);
+                return;
+            }
+            long started = Options.Time.GetTimestamp();
+            _inputsChanged.Wait(timing ? InterpreterCycle : TimeSpan.FromMilliseconds(100), cancellation);
             if (timing)
             {
+                if (!Clock.RealTime)
+                {
+                    Clock.Add(Math.Min(Options.Time.GetElapsedTime(started).TotalSeconds, InterpreterCycle.TotalSeconds));
+                }
                 return;
             }
         }

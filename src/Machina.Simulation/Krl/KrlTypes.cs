@@ -81,6 +81,7 @@ internal static class KrlTypes
         {
             KrlKind.Int or KrlKind.Real => from.IsNumber,
             KrlKind.Enum => from.Kind == KrlKind.Enum,
+            KrlKind.Char => from.Kind == KrlKind.Int, // an ASCII code (EOL[1] = 13)
             KrlKind.Struct => (IsCartesian(to) && IsCartesian(from)) || (IsAxes(to) && IsAxes(from)),
             KrlKind.Array => from.Kind == KrlKind.Array && from.Element!.Kind == to.Element!.Kind && from.Sizes.Count == to.Sizes.Count,
             _ => false,

@@ -1,0 +1,162 @@
+using Machina.Simulation.Krl;
+
+namespace Machina.Tests.Simulation.Krl;
+
+/// <summary>
+/// What published KRL programs needed that the twin refused (issue 43, the corpus in docs/simulation.md): GOTO and labels, an
+/// argument left out of a call, a CHAR array given its text in a data list, structure components named like keywords, a CHAR
+/// given a character code, and clear refusals of CWRITE and RSI.
+/// </summary>
+public class KrlCorpusFeatureTests
+{
+    private static object Data(KrlTwinController twin, string module, string name) => twin.Modules[module].Data[name].Value;
+
+    [Fact]
+    public void Goto_JumpsBack_AndOutOfALoop_ToALabelOfTheRoutine()
+    {
+        const string source = """
+            DEF jumps( )
+              INT i
+              i = 0
+            again:
+              i = i + 1
+              IF i < 3 THEN
+                GOTO again
+              ENDIF
+              LOOP
+                count = count + 1
+                IF count >= 5 THEN
+                  GOTO done
+                ENDIF
+              ENDLOOP
+              count = -1
+            done:
+              total = i * 100 + count
+            END
+            """;
+        using var twin = new KrlTwinController();
+        twin.Load(("jumps.src", source), ("jumps.dat", "DEFDAT jumps\n  INT count = 0\n  INT total = 0\nENDDAT\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(305, (int)Data(twin, "jumps", "total"));
+    }
+
+    [Fact]
+    public void Goto_ToALabelTheRoutineLacks_IsRefusedAtLoad()
+    {
+        using var twin = new KrlTwinController();
+        KrlLoadException ex = Assert.Throws<KrlLoadException>(() => twin.Load(("prog.src", "DEF prog( )\n  GOTO nowhere\nEND\n")));
+
+        Assert.Equal(2, ex.Line);
+        Assert.Contains("GOTO nowhere: the routine prog has no label nowhere:", ex.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Goto_IntoABlockFromOutside_StopsTheProgram()
+    {
+        using var twin = new KrlTwinController();
+        twin.Load(("prog.src", "DEF prog( )\n  GOTO inside\n  IF TRUE THEN\n  inside:\n    $OUT[1] = TRUE\n  ENDIF\nEND\n"));
+
+        Assert.Equal(KrlProgramState.Failed, twin.Run());
+        Assert.Equal("GOTO inside: a jump into a control structure (IF, loop, SWITCH) from outside it is not allowed (prog.src, line 2)", twin.Error);
+    }
+
+    [Fact]
+    public void ArgumentLeftOut_TheOthersArePassed()
+    {
+        const string source = """
+            DEF omit( )
+              show(1, , 3)
+            END
+
+            DEF show(a :IN, b :IN, c :IN)
+              INT a, b, c
+              got = a * 10 + c
+            END
+            """;
+        using var twin = new KrlTwinController();
+        twin.Load(("omit.src", source), ("omit.dat", "DEFDAT omit\n  INT got = 0\nENDDAT\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(13, (int)Data(twin, "omit", "got"));
+    }
+
+    [Fact]
+    public void ArgumentLeftOut_OfASystemFunction_IsRefusedAtLoad()
+    {
+        using var twin = new KrlTwinController();
+        KrlLoadException ex = Assert.Throws<KrlLoadException>(() => twin.Load(("prog.src", "DEF prog( )\n  REAL r\n  r = ATAN2( , 1)\nEND\n")));
+
+        Assert.Contains("argument 1 of ATAN2 cannot be left out on the twin", ex.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void DataList_CharArrayGivenItsText_HasIt()
+    {
+        using var twin = new KrlTwinController();
+        twin.Load(("names.src", "DEF names( )\nEND\n"), ("names.dat", "DEFDAT names PUBLIC\n  CONST CHAR LABEL_NAME[16]\n  LABEL_NAME[] = \"AxisCorr_1\"\nENDDAT\n"));
+
+        Assert.Equal("AxisCorr_1", KrlValues.Text((KrlArrayValue)Data(twin, "names", "LABEL_NAME")));
+    }
+
+    [Fact]
+    public void StructComponentsNamedLikeKeywords_AreReadAndWritten()
+    {
+        const string data = """
+            DEFDAT keys
+              STRUC cmd_t INT id, step, type
+              DECL cmd_t c = {id 1, step 2, type 3}
+              INT got = 0
+            ENDDAT
+            """;
+        using var twin = new KrlTwinController();
+        twin.Load(("keys.src", "DEF keys( )\n  c.step = c.step + 5\n  got = c.id * 100 + c.step * 10 + c.type\nEND\n"), ("keys.dat", data));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(173, (int)Data(twin, "keys", "got"));
+    }
+
+    [Fact]
+    public void CharGivenACharacterCode_HoldsThatCharacter()
+    {
+        using var twin = new KrlTwinController();
+        twin.Load(("eol.src", "DEF eol( )\n  line[1] = 13\n  line[2] = 10\nEND\n"), ("eol.dat", "DEFDAT eol\n  DECL CHAR line[2]\nENDDAT\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(new object[] { '\r', '\n' }, ((KrlArrayValue)Data(twin, "eol", "line")).Items);
+    }
+
+    [Fact]
+    public void CharGivenACodeAbove255_StopsTheProgram()
+    {
+        using var twin = new KrlTwinController();
+        twin.Load(("prog.src", "DEF prog( )\n  CHAR c\n  c = 300\nEND\n"));
+
+        Assert.Equal(KrlProgramState.Failed, twin.Run());
+        Assert.Equal("Value assignment inadmissible: a CHAR takes a character code from 0 to 255, not 300 (prog.src, line 3)", twin.Error);
+    }
+
+    [Theory]
+    [InlineData("DEF prog( )\n  INT state, mode\n  CWRITE($CMD, state, mode, \"RUN /R1/other()\")\nEND\n", 3,
+        "CWRITE is not supported by the twin: it reads or writes the controller's command and serial channels")]
+    [InlineData("DEF prog( )\n  DECL RSIERR err\nEND\n", 2,
+        "the data type RSIERR is not supported by the twin: the Robot Sensor Interface (RSI, a KUKA option) is not on the twin")]
+    [InlineData("DEF prog( )\n  INT ret\n  ret = RSI_CREATE(\"ros_rsi.rsi\", 1, TRUE)\nEND\n", 3,
+        "RSI_CREATE is not supported by the twin: the Robot Sensor Interface (RSI, a KUKA option) is not on the twin")]
+    public void ControllerOptionsTheTwinLacks_AreRefusedAtLoad_WithWhy(string source, int line, string why)
+    {
+        using var twin = new KrlTwinController();
+        KrlLoadException ex = Assert.Throws<KrlLoadException>(() => twin.Load(("prog.src", source)));
+
+        Assert.Equal(line, ex.Line);
+        Assert.Contains(why, ex.Message, StringComparison.Ordinal);
+    }
+}
