@@ -10,6 +10,9 @@ internal static class BrandRegistry
     internal static IReadOnlyList<BrandDefinition> All { get; } =
         [AbbBrand.Definition, UrBrand.Definition, KukaBrand.Definition, ZMorphBrand.Definition, MarlinBrand.Definition, HumanBrand.Definition, MachinaTextBrand.Definition];
 
+    /// <summary>The order of the brands' arms in <see cref="RobotModels.All"/> (and so in <c>machina models</c>): UR's first, as it always was.</summary>
+    internal static IReadOnlyList<BrandDefinition> Catalogue { get; } = [UrBrand.Definition, AbbBrand.Definition, KukaBrand.Definition];
+
     /// <summary>The brands that can be controlled online, in the order of <see cref="All"/>.</summary>
     internal static IReadOnlyList<BrandDefinition> Online { get; } = [.. All.Where(b => b.Online is not null)];
 

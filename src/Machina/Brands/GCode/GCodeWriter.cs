@@ -211,7 +211,7 @@ internal sealed class GCodeWriter
     private void EmitArc(RobotAction action, RobotCursor c)
     {
         if (c.PrevPosition is not Vector start || c.Position is not Vector end || c.ArcThrough is not Vector through
-            || !GCodeArc.TryCreate(start, through, end, out GCodeArc arc))
+            || !CircleArc.TryCreate(start, through, end, out CircleArc arc))
         {
             Error(action, "the arc's points are not known or do not define a circle, so no motion can be written.");
             return;
