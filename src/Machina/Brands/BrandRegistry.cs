@@ -2,7 +2,8 @@ namespace Machina;
 
 /// <summary>
 /// THE list of brands (docs/architecture.md, "Brands"): one <see cref="BrandDefinition"/> per brand, declared in the brand's folder.
-/// Adding a brand is a folder with its definition and one line here; nothing else in Machina names a brand.
+/// Adding a brand is a folder with its definition and one line here (two for an arm: <see cref="Catalogue"/>); nothing else in
+/// Machina names a brand but the few exceptions <c>tests/Machina.Tests/Brands/Registry/BrandCodeTests.cs</c> lists with their reasons.
 /// </summary>
 internal static class BrandRegistry
 {

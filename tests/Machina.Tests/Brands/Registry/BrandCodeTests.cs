@@ -1,13 +1,16 @@
 using System.Text;
 using System.Text.RegularExpressions;
+using Machina.Tests.Conventions;
 
-namespace Machina.Tests.Conventions;
+namespace Machina.Tests.Brands.Registry;
 
 /// <summary>
 /// A brand lives in its folder (src/Machina/Brands/NAME) and the registries (docs/architecture.md, "Brands"): no other code of the
-/// library names one, in an identifier or a string, except the few files listed here with their reason. Comments may name brands.
+/// library names one, in an identifier (AbbDriverInstaller, GCodeArc, UrBrand) or anywhere in a string, except the few files
+/// listed here with their reason. Comments may name brands. (<see cref="BrandNameTests"/> checks the whole tree for brand names
+/// chosen as text and RobotType members; this checks the library's code for any brand's types and names.)
 /// </summary>
-public partial class BrandNamesTests
+public partial class BrandCodeTests
 {
     /// <summary>The files outside Brands/ that may name a brand, each with why (paths under src/Machina).</summary>
     private static readonly Dictionary<string, string> Exceptions = new(StringComparer.Ordinal)
