@@ -157,7 +157,7 @@ public sealed partial class Robot
             _installsDriver = false;
             return true;
         }
-        if (AbbDriverInstaller.Supports(Brand))
+        if (BrandRegistry.For(Brand).InstallDriver is not null)
         {
             _installsDriver = true;
             return true;
@@ -270,7 +270,7 @@ public sealed partial class Robot
         OnlineSession session = RequireSession("connect");
         session.ResponseTimeout = ResponseTimeout;
         session.ResendAfterControllerRestart = ResendAfterControllerRestart;
-        return _installsDriver && AbbDriverInstaller.Supports(Brand)
+        return _installsDriver && BrandRegistry.For(Brand).InstallDriver is not null
             ? InstallThenConnectAsync(session, host, port, cancellationToken)
             : session.ConnectAsync(host, port, ConnectTimeout, cancellationToken);
     }

@@ -37,12 +37,11 @@ public sealed partial class Robot
     {
         ArgumentException.ThrowIfNullOrWhiteSpace(host);
         ThrowIfDisposed("install the driver");
-        if (!AbbDriverInstaller.Supports(Brand))
+        if (BrandRegistry.For(Brand).InstallDriver is not { } install)
         {
-            throw new NotSupportedException($"Machina installs its driver through Robot Web Services on ABB controllers only; this robot is a {Brand}.");
+            string installable = string.Join(" and ", BrandRegistry.All.Where(b => b.InstallDriver is not null).Select(b => b.DisplayName));
+            throw new NotSupportedException($"Machina installs its driver through Robot Web Services on {installable} controllers only; this robot is a {Brand}.");
         }
-        using var client = new RwsClient(host, WebServices);
-        Logger.Info($"Installing the driver on {client.Address} (Robot Web Services {(WebServices.UseRws2 ? "2.0" : "1.0")}).");
-        await AbbDriverInstaller.InstallAsync(client, host, port, WebServices, Logger, cancellationToken).ConfigureAwait(false);
+        await install(host, port, WebServices, Logger, cancellationToken).ConfigureAwait(false);
     }
 }

@@ -7,7 +7,7 @@ internal static partial class DriversCommand
 {
     private static async Task<int> InstallAsync(RobotType brand, string host, CliArgs args, CliContext context)
     {
-        if (!AbbDriverInstaller.Supports(brand))
+        if (BrandRegistry.For(brand).InstallDriver is null)
         {
             throw new UsageException($"machina drivers --install works on ABB controllers only (through Robot Web Services), not {brand}. See: machina drivers --help");
         }

@@ -6,7 +6,7 @@ namespace Machina.Cli.Commands;
 /// <summary><c>machina sim kuka --load PROGRAM</c>: a compiled KRL program on the KRL twin, in real time.</summary>
 internal static partial class SimCommand
 {
-    private static async Task<int> RunKrlAsync(string path, RobotModel model, CliContext context)
+    internal static async Task<int> RunKrlAsync(string path, RobotModel model, CliContext context)
     {
         List<(string Name, string Text)> files;
         try

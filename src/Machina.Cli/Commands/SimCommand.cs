@@ -1,5 +1,6 @@
 using System.Net;
 using Machina.Cli.Simulation;
+using Machina.Cli.Twins;
 
 namespace Machina.Cli.Commands;
 
@@ -56,9 +57,11 @@ internal static partial class SimCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
-        if (args.Value("--load") is { } krlProgram && brand == KukaBrand.Definition.Type)
+        if (args.Value("--load") is not null)
         {
-            return await RunKrlAsync(krlProgram, Brands.Model(args.Value("--model") ?? KukaBrand.Definition.DefaultModel, brand)!, context).ConfigureAwait(false);
+            return TwinPrograms.Loading.FirstOrDefault(t => t.Brand.Type == brand) is { RunLoaded: { } runLoaded } twin
+                ? await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, context).ConfigureAwait(false)
+                : throw new UsageException($"--load runs compiled programs on {LoadingNames()}, not on {Brands.Name(brand)}.");
         }
         bool urLayout = brand == UrBrand.Definition.Type && args.Value("--port") is null;
         int port = urLayout ? UrLayout[0].Port : args.Port("--port", DefaultPort, allowZero: true);
@@ -70,12 +73,6 @@ internal static partial class SimCommand
         double speed = args.Positive("--speed-factor", 1);
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");
-        if (args.Value("--load") is not null)
-        {
-            return brand == AbbBrand.Definition.Type
-                ? await SimLoad.RunAbbAsync(args.Values("--load"), model, context).ConfigureAwait(false)
-                : throw new UsageException($"--load runs compiled programs on abb (RAPID) and kuka (KRL), not on {Brands.Name(brand)}.");
-        }
 
         var gate = new Lock();
         void Log(string line)
@@ -97,7 +94,7 @@ internal static partial class SimCommand
         await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
         // RWS is named after the controller's first line, which says "listening" and where (scripts and tests read it).
         var rwsLines = new List<string>();
-        await using IAsyncDisposable? rws = brand == AbbBrand.Definition.Type ? StartRws(controller, bind, args.Port("--rws-port", 0, allowZero: true), Log, rwsLines.Add) : null;
+        await using IAsyncDisposable? rws = StartRws(controller, bind, () => args.Port("--rws-port", 0, allowZero: true), Log, rwsLines.Add);
         Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(routes, relay.Ports)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         rwsLines.ForEach(Log);
@@ -135,6 +132,13 @@ internal static partial class SimCommand
     /// <summary>The UR layout's routes to the controller's own ports (its compact script port is not relayed: the client interfaces take scripts).</summary>
     private static RelayRoute[] UrRoutes(RunningController controller) =>
         [.. UrLayout.Select(p => new RelayRoute(p.Port - UrLayout[0].Port, controller.Ports[Array.IndexOf(controller.PortNames, p.Name)], p.Name))];
+
+    /// <summary>The brands whose twin loads programs, with their language, e.g. "abb (RAPID) and kuka (KRL)".</summary>
+    private static string LoadingNames()
+    {
+        string[] names = [.. TwinPrograms.Loading.Select(t => $"{t.Brand.Name} ({t.Language})")];
+        return names.Length < 2 ? string.Concat(names) : string.Join(", ", names[..^1]) + " and " + names[^1];
+    }
 
     private static string Num(double value) => value.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture);
 }

@@ -1,11 +1,11 @@
 using Machina.Cli.Programs;
+using Machina.Cli.Twins;
 using Machina.Simulation.Twin;
-using Machina.Simulation.UrScript;
 
 namespace Machina.Cli.Commands;
 
 /// <summary><c>machina verify</c>: runs a compiled URScript or RAPID program on a twin controller and checks where the arm got.</summary>
-internal static partial class VerifyCommand
+internal static class VerifyCommand
 {
     internal static readonly CliCommand Command = new(
         "verify",
@@ -54,48 +54,53 @@ internal static partial class VerifyCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         string path = args.Single("a PROGRAM file (Machina instructions, a .script, or a RAPID .pgf/.mod file or folder)");
-        // The brands with a twin controller: URScript and RAPID.
-        BrandDefinition twinBrand = UrBrand.Definition;
-        RobotType brand = Brands.Parse(args.Required("--brand", "(ur, abb or kuka: the brands with a twin controller)"), [twinBrand.Type, AbbBrand.Definition.Type, KukaBrand.Definition.Type]);
-        if (brand == AbbBrand.Definition.Type)
+        RobotType brand = Brands.Parse(args.Required("--brand", $"({Or(TwinPrograms.Brands.Select(Brands.Name))}: the brands with a twin controller)"), TwinPrograms.Brands);
+        ITwinProgram twin = TwinPrograms.For(brand);
+        RobotModel model = Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!;
+        TwinLimits limits = VerifyLimits(args);
+        if (twin.IsProgram(context.FullPath(path)) && args.Value("--script") is null)
         {
-            return await RunAbbAsync(path, args, context).ConfigureAwait(false);
-        }
-        if (brand == KukaBrand.Definition.Type)
-        {
-            return await RunKukaAsync(path, args, context).ConfigureAwait(false);
-        }
-        RobotModel model = Brands.Model(args.Value("--model") ?? twinBrand.DefaultModel, twinBrand.Type)!;
-        var options = new UrTwinOptions { Model = model, Limits = VerifyLimits(args) };
-        TextWriter output = context.Stdout;
-        if (path.EndsWith(".script", StringComparison.OrdinalIgnoreCase) && args.Value("--script") is null)
-        {
-            return await RunAloneAsync(ReadFile(context, path), path, options, context).ConfigureAwait(false);
+            return await RunAloneAsync(twin, ReadFiles(twin, context, path), path, model, limits, context).ConfigureAwait(false);
         }
         (List<RobotAction> actions, Func<RobotAction, int?> lineOf) = ReadProgram(path, context);
-        string script = args.Value("--script") is { } scriptPath
-            ? ReadFile(context, scriptPath)
-            : twinBrand.CreateCompiler().Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files[0].ToText("\n");
-        await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a URScript twin of a {model} and comparing it with {path}.").ConfigureAwait(false);
-        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(script, actions, options, context.Cancellation);
+        IReadOnlyList<(string Name, string Text)> files = args.Value("--script") is { } compiled
+            ? ReadFiles(twin, context, compiled)
+            : [.. Compilers.For(brand).Compile(new CompileJob("Program", actions, CompileOptions.Default) { Model = model }).Files
+                .Where(twin.Loads).Select(f => (f.FileName, f.ToText("\n")))];
+        TextWriter output = context.Stdout;
+        await output.WriteLineAsync($"Running {(args.Value("--script") ?? "the compiled program")} on a {twin.Language} twin of {twin.Article} {model} and comparing it with {path}.").ConfigureAwait(false);
+        TwinCheck result = twin.Verify(files, actions, model, limits, context.Cancellation);
         await output.WriteAsync(result.ToText(lineOf)).ConfigureAwait(false);
         return result.Passed ? ExitCodes.Ok : ExitCodes.Failed;
     }
 
-    private static async Task<int> RunAloneAsync(string script, string path, UrTwinOptions options, CliContext context)
+    /// <summary>A compiled program run on the twin with nothing to compare it with: each step it makes, and how it ended.</summary>
+    private static async Task<int> RunAloneAsync(ITwinProgram twin, IReadOnlyList<(string Name, string Text)> files, string path, RobotModel model, TwinLimits limits, CliContext context)
     {
-        using var twin = new UrTwinController(options);
-        UrProgramState state = twin.Run(script, context.Cancellation);
-        await context.Stdout.WriteLineAsync($"Ran {path} on a URScript twin of a {options.Model}, from joints {options.StartJoints}.").ConfigureAwait(false);
-        foreach (Machina.Simulation.Twin.TwinTraceEntry step in twin.Arm.Trace)
+        TextWriter output = context.Stdout;
+        TwinRun run = twin.Run(files, model, limits, context.Cancellation);
+        if (run.LoadError is not null)
         {
-            await context.Stdout.WriteLineAsync(FormattableString.Invariant(
+            await output.WriteLineAsync($"FAILED: {run.LoadError}").ConfigureAwait(false);
+            return ExitCodes.Failed;
+        }
+        await output.WriteLineAsync($"Ran {path} on a {twin.Language} twin of {twin.Article} {model}, from {twin.JointsWord} {run.StartJoints}.").ConfigureAwait(false);
+        foreach (TwinTraceEntry step in run.Trace)
+        {
+            await output.WriteLineAsync(FormattableString.Invariant(
                 $"  line {step.Line,-5} {step.Seconds,9:0.000} s  {step.Text}: TCP {step.Tcp.Position}, joints {step.Joints}")).ConfigureAwait(false);
         }
-        await context.Stdout.WriteLineAsync(state == UrProgramState.Finished
-            ? FormattableString.Invariant($"OK: the program ran to its end in {twin.Clock.Seconds:0.###} s")
-            : $"FAILED: {twin.Error ?? "the program was stopped"}").ConfigureAwait(false);
-        return state == UrProgramState.Finished ? ExitCodes.Ok : ExitCodes.Failed;
+        await output.WriteLineAsync(run.Finished
+            ? FormattableString.Invariant($"OK: the program ran to its end in {run.Seconds:0.###} s")
+            : $"FAILED: {run.Error ?? "the program was stopped"}").ConfigureAwait(false);
+        return run.Finished ? ExitCodes.Ok : ExitCodes.Failed;
+    }
+
+    /// <summary>"a, b or c".</summary>
+    private static string Or(IEnumerable<string> names)
+    {
+        string[] all = [.. names];
+        return all.Length < 2 ? string.Concat(all) : string.Join(", ", all[..^1]) + " or " + all[^1];
     }
 
     /// <summary>The twin's budgets for a verification: the default ones, with the step budget of <c>--max-steps</c>.</summary>
@@ -142,15 +147,16 @@ internal static partial class VerifyCommand
         return ([.. statements.Select(s => s.Action)], a => lines.TryGetValue(a, out int line) ? line : null);
     }
 
-    private static string ReadFile(CliContext context, string path)
+    /// <summary>The files of the compiled program at <paramref name="path"/> (a file or a folder), each refused when larger than the twins take.</summary>
+    private static List<(string Name, string Text)> ReadFiles(ITwinProgram twin, CliContext context, string path)
     {
         try
         {
-            return ReadProgramText(context.FullPath(path));
+            return [.. twin.ProgramFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), ReadProgramText(f)))];
         }
-        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or System.Xml.XmlException)
         {
-            throw new CliException($"Cannot read \"{path}\": {ex.Message}");
+            throw new CliException(twin.ProgramNoun is { } noun ? $"Cannot read {noun} \"{path}\": {ex.Message}" : $"Cannot read \"{path}\": {ex.Message}");
         }
     }
 }

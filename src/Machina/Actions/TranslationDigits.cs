@@ -72,19 +72,11 @@ internal sealed class TranslationDigits
         return _shared;
     }
 
-    /// <summary>
-    /// Writes <paramref name="value"/> when it reads back exactly from at most 3 decimals (<see cref="NumShortest.TryThousandths"/>): then
-    /// <see cref="NumShortest.WriteRoundTrip"/> and <see cref="NumAppend.WriteF"/> with 3 decimals both write
-    /// <see cref="NumAppend.WriteDecimal"/> of the same thousandths (−0 and 0 as "0").
-    /// </summary>
+    /// <summary>Writes <paramref name="value"/> when both texts show it alike (<see cref="NumShortest.TryWriteThousandths"/>); false otherwise.</summary>
     private static bool TryMilli(Span<char> digits, int at, double value, out int end)
     {
-        if (!NumShortest.TryThousandths(Math.Abs(value), out double milli))
-        {
-            end = at;
-            return false;
-        }
-        end = at + NumAppend.WriteDecimal(digits[at..], value < 0, (long)milli, 3);
-        return true;
+        int written = NumShortest.TryWriteThousandths(digits[at..], value, out _);
+        end = at + Math.Max(written, 0);
+        return written >= 0;
     }
 }

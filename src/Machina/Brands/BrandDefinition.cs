@@ -21,6 +21,9 @@ internal sealed record BrandDefinition(RobotType Type, string Name, BrandKind Ki
     /// <summary>The brand as the model catalogue writes it (<see cref="RobotModel.Brand"/>, e.g. "ABB"); null when it takes no arm model.</summary>
     internal string? ModelBrand { get; init; }
 
+    /// <summary>The brand's arms in the built-in catalogue (<see cref="RobotModels"/>), made when the catalogue is first read; none by default.</summary>
+    internal Func<IEnumerable<RobotModel>> Models { get; init; } = () => [];
+
     /// <summary>The joint layout of the brand's arms (OPW for ABB and KUKA, Universal Robots for UR); null for a device that is not an arm.</summary>
     internal KinematicFamily? Family { get; init; }
 
@@ -35,6 +38,12 @@ internal sealed record BrandDefinition(RobotType Type, string Name, BrandKind Ki
 
     /// <summary>What a user does with the driver files once written, given their count, the host and the port; null when the brand has no driver.</summary>
     internal Func<int, string, int, string>? DriverNextSteps { get; init; }
+
+    /// <summary>
+    /// Installs and starts Machina's driver on a controller of the brand (host, port, how to reach its web services, the log), for
+    /// <c>Robot.InstallDriverAsync</c> and <c>ConnectionManager("machina")</c>; null when Machina does not install the brand's driver.
+    /// </summary>
+    internal Func<string, int, RobotWebServicesOptions, RobotLogger, CancellationToken, Task>? InstallDriver { get; init; }
 
     /// <summary>The name of the instruction a driver request of this brand carries (e.g. "MoveL"), or null when it is not recognised.</summary>
     internal Func<string, string?> InstructionName { get; init; } = _ => null;

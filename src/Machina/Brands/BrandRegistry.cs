@@ -2,13 +2,17 @@ namespace Machina;
 
 /// <summary>
 /// THE list of brands (docs/architecture.md, "Brands"): one <see cref="BrandDefinition"/> per brand, declared in the brand's folder.
-/// Adding a brand is a folder with its definition and one line here; nothing else in Machina names a brand.
+/// Adding a brand is a folder with its definition and one line here (two for an arm: <see cref="Catalogue"/>); nothing else in
+/// Machina names a brand but the few exceptions <c>tests/Machina.Tests/Brands/Registry/BrandCodeTests.cs</c> lists with their reasons.
 /// </summary>
 internal static class BrandRegistry
 {
     /// <summary>Every brand, in the order help texts list them: the arms, the printers, then the listings.</summary>
     internal static IReadOnlyList<BrandDefinition> All { get; } =
         [AbbBrand.Definition, UrBrand.Definition, KukaBrand.Definition, ZMorphBrand.Definition, MarlinBrand.Definition, HumanBrand.Definition, MachinaTextBrand.Definition];
+
+    /// <summary>The order of the brands' arms in <see cref="RobotModels.All"/> (and so in <c>machina models</c>): UR's first, as it always was.</summary>
+    internal static IReadOnlyList<BrandDefinition> Catalogue { get; } = [UrBrand.Definition, AbbBrand.Definition, KukaBrand.Definition];
 
     /// <summary>The brands that can be controlled online, in the order of <see cref="All"/>.</summary>
     internal static IReadOnlyList<BrandDefinition> Online { get; } = [.. All.Where(b => b.Online is not null)];

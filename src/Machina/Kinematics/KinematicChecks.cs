@@ -131,8 +131,8 @@ public static class KinematicChecks
         // The controller moves the tool tip on the path (the flange swings around it when the tool turns): sample the tip's path and
         // solve for the flange of each sample; the speed is the tip's.
         Pose from = kin.Forward(start) * tool, to = target * tool, toTool = tool.Inverse();
-        GCodeArc arc = default;
-        bool isArc = arcThrough is Vector through && GCodeArc.TryCreate(from.Position, through, to.Position, out arc);
+        CircleArc arc = default;
+        bool isArc = arcThrough is Vector through && CircleArc.TryCreate(from.Position, through, to.Position, out arc);
         double length = isArc ? arc.Length : Vector.Distance(from.Position, to.Position);
         double turn = from.Rotation.AngleTo(to.Rotation);
         double sweepSteps = isArc ? arc.Sweep * Angles.ToDegrees / ArcStepDegrees : 0;

@@ -6,7 +6,7 @@ namespace Machina;
 /// </summary>
 public static class RobotModels
 {
-    private static readonly RobotModel[] Models = [.. UniversalRobotsCatalog.Build(), .. CatalogTable.Load("abb-arms.txt"), .. CatalogTable.Load("kuka-arms.txt")];
+    private static readonly RobotModel[] Models = [.. BrandRegistry.Catalogue.SelectMany(b => b.Models())];
 
     // Names used by earlier versions, kept so that users' code goes on working: old name → catalogue name.
     private static readonly (string Old, string Name)[] Aliases = [("KR 16", "KR 16-2")];

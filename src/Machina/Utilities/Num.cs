@@ -3,8 +3,9 @@ using System.Globalization;
 namespace Machina;
 
 /// <summary>
-/// Culture-independent number formatting shared by every text Machina writes: instructions, programs, wire messages.
-/// Negative zero is always printed as 0.
+/// Culture-independent number formatting for text people read (messages, warnings, logs, events) and for the wire messages that
+/// print numbers as the original host did. Negative zero is always printed as 0. A program's numbers are written by
+/// <see cref="NumAppend"/>, whose one policy (plain notation; NaN and infinities refused) every language shares.
 /// </summary>
 internal static class Num
 {

@@ -4,16 +4,24 @@ using System.Text;
 namespace Machina;
 
 /// <summary>
-/// The one writer of numbers in programs and wire messages: fast, allocation-free, for compilers that write millions of
-/// values. Same digits as <see cref="Num.F(double, int)"/> (midpoint-to-even rounding, −0 as 0) wherever that has 15
-/// significant digits, but always in plain decimal notation (0.00001, never 1E-05; 1E+20 as 100000000000000000000), which
-/// every robot language and G-code reads. A value no language can hold (NaN, an infinity) is refused, never written.
+/// The one writer of numbers in programs: fast, allocation-free, for compilers that write millions of values. Its one policy
+/// for every language: rounded to the language's decimals (midpoint to even, −0 as 0), always in plain decimal notation
+/// (0.00001, never 1E-05; a value of 10^15 units of the last decimal or more as its 15 significant digits then zeros, 1E+20
+/// as 100000000000000000000), which every robot language and G-code reads; a value no language can hold (NaN, an infinity)
+/// is refused, never written. The same digits as <see cref="Num.F(double, int)"/> wherever that writes plain notation.
 /// </summary>
-/// <remarks><see cref="Num"/> writes numbers for people (messages, logs), in .NET's general format.</remarks>
+/// <remarks>
+/// <see cref="Num"/> writes numbers for people (messages, logs) in .NET's general format; <see cref="NumShortest"/> writes the
+/// shortest text of a user's number (instructions, warnings), and <see cref="NumParse"/> reads it back. All four share
+/// <see cref="WriteDecimal"/> and the powers of ten here.
+/// </remarks>
 internal static class NumAppend
 {
-    private static readonly double[] Pow10 = [1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
-    private static readonly long[] Pow10L = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000, 1_000_000_000];
+    /// <summary>10^0 to 10^15 as doubles, all exact: the scales of <see cref="MaxDecimals"/> decimals and the divisors <see cref="NumParse"/> needs.</summary>
+    internal static readonly double[] Pow10 = [1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15];
+
+    /// <summary>The most decimals this writer writes (its scaled values are whole numbers below 10^15 written with them).</summary>
+    internal const int MaxDecimals = 9;
 
     /// <summary>Appends <paramref name="value"/> rounded to <paramref name="decimals"/> (0–9) decimals, trailing zeros removed.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
@@ -131,7 +139,7 @@ internal static class NumAppend
         }
         // Divisions by constants: the processor's divide by a power chosen at run time cost more than the digits themselves.
         long whole = DivPow10(mantissa, decimals);
-        long fraction = mantissa - whole * Pow10L[decimals];
+        long fraction = mantissa - whole * (long)Powers[decimals];
         at += WriteDigits(destination[at..], whole, 1);
         if (fraction == 0)
         {
@@ -318,16 +326,12 @@ internal static class NumAppend
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int WriteF(Span<char> destination, double value, int decimals)
     {
-        if ((uint)decimals < (uint)Pow10.Length)
+        // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
+        if ((uint)decimals <= MaxDecimals && TryScale(value, decimals, out double rounded)
+            && (decimals <= 4 || rounded == 0 || Math.Abs(rounded) >= Pow10[decimals - 4]))
         {
-            // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
-            double rounded = RoundEven(value * Pow10[decimals]);
-            double scaled = Math.Abs(rounded);
-            if ((decimals <= 4 || scaled == 0 || scaled >= Pow10[decimals - 4]) && scaled < 1e15)
-            {
-                // What TryWriteScaled writes, with the scaled value already at hand.
-                return WriteDecimal(destination, rounded < 0, (long)scaled, decimals);
-            }
+            // What TryWriteScaled writes, with the scaled value already at hand.
+            return WriteDecimal(destination, rounded < 0, (long)Math.Abs(rounded), decimals);
         }
         Num.Clean(Math.Round(value, decimals)).TryFormat(destination, out int general, "G15", Num.Inv);
         return general;

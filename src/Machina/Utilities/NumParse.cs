@@ -8,8 +8,6 @@ namespace Machina;
 /// </summary>
 internal static class NumParse
 {
-    private static readonly double[] Pow10 = [1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15];
-
     /// <summary>
     /// Reads <paramref name="text"/> as <c>double.TryParse(text, NumberStyles.Float, invariant)</c> does; returns false where
     /// that returns false.
@@ -79,7 +77,7 @@ internal static class NumParse
         {
             return -1;
         }
-        double magnitude = decimals > 0 ? mantissa / Pow10[decimals] : mantissa;
+        double magnitude = decimals > 0 ? mantissa / NumAppend.Pow10[decimals] : mantissa;
         value = negative ? -magnitude : magnitude;
         return i;
     }

@@ -7,8 +7,6 @@ namespace Machina;
 /// </summary>
 internal static class NumShortest
 {
-    private static readonly double[] Pow10 = [1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
-
     /// <summary>
     /// Writes the fewest decimals that read back as exactly <paramref name="value"/> into <paramref name="destination"/> (at
     /// least <see cref="NumAppend.MaxChars"/> long) and returns the number of characters, or −1 when the value needs more
@@ -31,27 +29,36 @@ internal static class NumShortest
         // division instead of one per number of decimals tried. It succeeds exactly when some count of decimals up to 3 does
         // (below 10^15 the scaled value rounds to that decimal's digits), and WriteDecimal drops the trailing zeros, so the
         // text is the one the search from 0 decimals finds; when it fails below 10^15, the search can start at 4.
-        if (TryThousandths(size, out double milli))
+        int written = TryWriteThousandths(destination, value, out double milli);
+        if (written >= 0)
         {
-            return NumAppend.WriteDecimal(destination, value < 0, (long)milli, 3);
+            return written;
         }
         int first = milli < 1e15 ? 4 : 0;
-        for (int decimals = first; decimals < Pow10.Length; decimals++)
+        for (int decimals = first; decimals <= NumAppend.MaxDecimals; decimals++)
         {
-            double scaled = NumAppend.RoundEven(size * Pow10[decimals]);
+            double scaled = NumAppend.RoundEven(size * NumAppend.Pow10[decimals]);
             if (scaled >= 1e15)
             {
                 return -1;
             }
             // Both are exact doubles, so the division is correctly rounded: it is the double that reading
             // "scaled · 10^-decimals" gives. The first number of decimals for which it is the value is the shortest text.
-            if (scaled / Pow10[decimals] == size)
+            if (scaled / NumAppend.Pow10[decimals] == size)
             {
                 return NumAppend.WriteDecimal(destination, value < 0, (long)scaled, decimals);
             }
         }
         return -1;
     }
+
+    /// <summary>
+    /// Writes <paramref name="value"/> when it reads back exactly from at most 3 decimals (<see cref="TryThousandths"/>) and returns the
+    /// number of characters, the text both <see cref="WriteRoundTrip"/> and <see cref="NumAppend.WriteF"/> with 3 decimals write
+    /// (−0 as 0); −1 otherwise. <paramref name="milli"/> is the size · 1000 rounded to a whole number either way.
+    /// </summary>
+    internal static int TryWriteThousandths(Span<char> destination, double value, out double milli) =>
+        TryThousandths(Math.Abs(value), out milli) ? NumAppend.WriteDecimal(destination, value < 0, (long)milli, 3) : -1;
 
     /// <summary>
     /// True when <paramref name="size"/> (not negative) reads back exactly from at most 3 decimals, with fewer than 10^15

@@ -13,9 +13,11 @@ internal static partial class AbbBrand
         ModelBrand = "ABB",
         Family = KinematicFamily.Opw,
         DefaultModel = "IRB 120",
+        Models = () => CatalogTable.Load("abb-arms.txt"),
         Timing = new AbbMotionTiming(),
         DefaultPort = 7000,
         DriverNextSteps = NextSteps,
+        InstallDriver = AbbDriverInstaller.InstallAsync,
         InstructionName = Instruction,
     };
 

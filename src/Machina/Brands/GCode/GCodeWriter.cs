@@ -20,6 +20,7 @@ internal sealed class GCodeWriter
     private readonly GCodeCompiler _compiler;
     private readonly GCodeFlavor _flavor;
     private readonly CompileJob _job;
+    private readonly LineNotes _notes;
     private readonly ProgramOutput _output;
     private readonly bool _human;
     private readonly StringBuilder _sb = new(96);
@@ -33,6 +34,7 @@ internal sealed class GCodeWriter
         _compiler = compiler;
         _flavor = compiler.Flavor;
         _job = job;
+        _notes = new LineNotes(job, ProgramNotes.Semicolon, "", () => _file, Code);
         _output = output;
         _human = job.Options.HumanComments;
     }
@@ -63,7 +65,7 @@ internal sealed class GCodeWriter
                 }
                 if (_flavor.FeedOnMotionLine)
                 {
-                    NoCode(action);
+                    _notes.NoCode(action);
                 }
                 else
                 {
@@ -113,32 +115,32 @@ internal sealed class GCodeWriter
                 EmitSequence(action, init.Initialize, c);
                 break;
             case ActionMotionMode { MotionType: MotionType.Joint }:
-                NotApplicable(action, "a 3D printer always moves in straight lines; joint motion does not apply.");
+                _notes.NotApplicable(action, "a 3D printer always moves in straight lines; joint motion does not apply.");
                 break;
             case ActionPushPop or ActionMotionMode or ActionCoordinates or ActionExtrusion or ActionExtrusionRate or ActionDefineTool or ActionCustomCode:
                 // Custom declarations are written at the top of the file.
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             case ActionRotation:
-                NotApplicable(action, "a 3D printer cannot turn its tool.");
+                _notes.NotApplicable(action, "a 3D printer cannot turn its tool.");
                 break;
             case ActionWaitDigital:
-                NotApplicable(action, "Machina's G-code programs do not wait for inputs.");
+                _notes.NotApplicable(action, "Machina's G-code programs do not wait for inputs.");
                 break;
             case ActionReadInput:
-                NotApplicable(action, "Machina's G-code programs do not read inputs.");
+                _notes.NotApplicable(action, "Machina's G-code programs do not read inputs.");
                 break;
             case ActionAxes:
-                NotApplicable(action, "a 3D printer has no robot joints to move.");
+                _notes.NotApplicable(action, "a 3D printer has no robot joints to move.");
                 break;
             case ActionPrecision:
-                NotApplicable(action, "a 3D printer follows its path exactly and has no blend radius.");
+                _notes.NotApplicable(action, "a 3D printer follows its path exactly and has no blend radius.");
                 break;
             case ActionAttachTool or ActionDetachTool:
-                NotApplicable(action, "a 3D printer has no tool frame; motions keep the tool-tip positions Machina computed.");
+                _notes.NotApplicable(action, "a 3D printer has no tool frame; motions keep the tool-tip positions Machina computed.");
                 break;
             case ActionExternalAxis or ActionArmAngle:
-                NotApplicable(action, "a 3D printer has no external axes or arm angle.");
+                _notes.NotApplicable(action, "a 3D printer has no external axes or arm angle.");
                 break;
             default:
                 throw ActionKinds.Unhandled(action, "The G-code writer");
@@ -149,11 +151,11 @@ internal sealed class GCodeWriter
     {
         if (!_flavor.SupportsAcceleration)
         {
-            NotApplicable(action, "this printer's acceleration is set in its firmware.");
+            _notes.NotApplicable(action, "this printer's acceleration is set in its firmware.");
         }
         else if (acceleration == 0)
         {
-            Error(action, "acceleration 0 means the device's default, which G-code cannot restore; the printer keeps its current acceleration.");
+            _notes.Error(action, "acceleration 0 means the device's default, which G-code cannot restore; the printer keeps its current acceleration.");
         }
         else
         {
@@ -185,7 +187,7 @@ internal sealed class GCodeWriter
         }
         if (!wrote)
         {
-            NoCode(action);
+            _notes.NoCode(action);
         }
     }
 
@@ -193,7 +195,7 @@ internal sealed class GCodeWriter
     {
         if (c.Position is not Vector position)
         {
-            Error(action, "the target position is not known, so no motion can be written.");
+            _notes.Error(action, "the target position is not known, so no motion can be written.");
             return;
         }
         WarnIfTurned(action, c);
@@ -211,9 +213,9 @@ internal sealed class GCodeWriter
     private void EmitArc(RobotAction action, RobotCursor c)
     {
         if (c.PrevPosition is not Vector start || c.Position is not Vector end || c.ArcThrough is not Vector through
-            || !GCodeArc.TryCreate(start, through, end, out GCodeArc arc))
+            || !CircleArc.TryCreate(start, through, end, out CircleArc arc))
         {
-            Error(action, "the arc's points are not known or do not define a circle, so no motion can be written.");
+            _notes.Error(action, "the arc's points are not known or do not define a circle, so no motion can be written.");
             return;
         }
         WarnIfTurned(action, c);
@@ -302,11 +304,11 @@ internal sealed class GCodeWriter
     {
         if (toolPin)
         {
-            Error(action, "a 3D printer has no separate tool outputs.");
+            _notes.Error(action, "a 3D printer has no separate tool outputs.");
         }
         else if (!IOPin.TryNumber(pin, out int number))
         {
-            Error(action, $"G-code addresses outputs by pin number, and \"{pin}\" is not a number.");
+            _notes.Error(action, $"G-code addresses outputs by pin number, and \"{pin}\" is not a number.");
         }
         else
         {
@@ -318,7 +320,7 @@ internal sealed class GCodeWriter
     {
         if (analog.Value < 0 || analog.Value > 255)
         {
-            Error(action, $"printer outputs take values from 0 to 255, and {Num.G(analog.Value)} is outside that range.");
+            _notes.Error(action, $"printer outputs take values from 0 to 255, and {Num.G(analog.Value)} is outside that range.");
             return;
         }
         double rounded = Math.Round(analog.Value, MidpointRounding.AwayFromZero);
@@ -366,7 +368,7 @@ internal sealed class GCodeWriter
             _feed = Feed(c.Speed);
             _file.Add("G1 F" + Rate(_feed));
         }
-        NoCode(action);
+        _notes.NoCode(action);
     }
 
     /// <summary>
@@ -411,14 +413,6 @@ internal sealed class GCodeWriter
         _file.Add(_human ? line + "  ; [" + GCodeText.Comment(action.Describe()) + "]" : line);
     }
 
-    private void NoCode(RobotAction action)
-    {
-        if (_human)
-        {
-            _file.Add(ProgramNotes.Semicolon.Description(action));
-        }
-    }
-
     private void Warning(RobotAction action, string reason)
     {
         _job.Warn(action, reason);
@@ -430,17 +424,5 @@ internal sealed class GCodeWriter
     {
         _job.Warn(action, reason);
         _file.Warn(kind, "; WARNING: " + reason);
-    }
-
-    private void NotApplicable(RobotAction action, string reason)
-    {
-        _job.Warn(action, reason);
-        Code(ProgramNotes.Semicolon.NotApplicable(action), action);
-    }
-
-    private void Error(RobotAction action, string reason)
-    {
-        _job.Warn(action, reason);
-        Code(ProgramNotes.Semicolon.Error(action, reason), action);
     }
 }

@@ -15,6 +15,7 @@ internal sealed class KrlWriter
 
     private readonly Compiler _compiler;
     private readonly CompileJob _job;
+    private readonly LineNotes _notes;
     private readonly ProgramOutput _output;
     private readonly bool _human;
     private readonly bool _inline;
@@ -30,6 +31,7 @@ internal sealed class KrlWriter
     {
         _compiler = compiler;
         _job = job;
+        _notes = new LineNotes(job, ProgramNotes.Semicolon, Indent, () => _src, Code);
         _output = output;
         _human = job.Options.HumanComments;
         _inline = job.Options.InlineTargets;
@@ -208,7 +210,7 @@ internal sealed class KrlWriter
             case ActionIOAnalog analog:
                 if (analog.Value < -1 || analog.Value > 1)
                 {
-                    Error(action, $"KRL analog outputs take values from -1 to 1, and {Num.G(analog.Value)} is outside that range.");
+                    _notes.Error(action, $"KRL analog outputs take values from -1 to 1, and {Num.G(analog.Value)} is outside that range.");
                 }
                 else
                 {
@@ -217,16 +219,16 @@ internal sealed class KrlWriter
                 break;
             case ActionDefineTool or ActionExternalAxis or ActionMotionMode or ActionCoordinates or ActionPushPop or ActionCustomCode:
                 // Custom declarations are written in the declaration section.
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             case ActionArmAngle:
-                NotApplicable(action, "KUKA arms of this kind have no arm angle to set.");
+                _notes.NotApplicable(action, "KUKA arms of this kind have no arm angle to set.");
                 break;
             case ActionTemperature or ActionExtrusion or ActionExtrusionRate:
-                NotApplicable(action, "a KUKA arm has no extruder or heated parts; this is for 3D printers.");
+                _notes.NotApplicable(action, "a KUKA arm has no extruder or heated parts; this is for 3D printers.");
                 break;
             case ActionInitialization:
-                NotApplicable(action, "a KUKA program needs no start-up or shut-down sequence; this is for 3D printers.");
+                _notes.NotApplicable(action, "a KUKA program needs no start-up or shut-down sequence; this is for 3D printers.");
                 break;
             default:
                 throw ActionKinds.Unhandled(action, "The KRL writer");
@@ -264,7 +266,7 @@ internal sealed class KrlWriter
         }
         if (!wrote)
         {
-            NoCode(action);
+            _notes.NoCode(action);
         }
     }
 
@@ -272,7 +274,7 @@ internal sealed class KrlWriter
     {
         if (c.Position is not Vector position || c.Rotation is not Rotation rotation)
         {
-            Error(action, "the target pose is not known, so no motion can be written.");
+            _notes.Error(action, "the target pose is not known, so no motion can be written.");
             return;
         }
         bool ptp = c.MotionType == MotionType.Joint;
@@ -289,7 +291,7 @@ internal sealed class KrlWriter
     {
         if (c.Position is not Vector end || c.Rotation is not Rotation endRotation || c.ArcThrough is not Vector through)
         {
-            Error(action, "the arc's points are not known, so no motion can be written.");
+            _notes.Error(action, "the arc's points are not known, so no motion can be written.");
             return;
         }
         StringBuilder line = BeginLine().Append("CIRC ");
@@ -302,7 +304,7 @@ internal sealed class KrlWriter
     {
         if (c.Axes is not Joints joints)
         {
-            Error(action, "the joint target is not known, so no motion can be written.");
+            _notes.Error(action, "the joint target is not known, so no motion can be written.");
             return;
         }
         WarnPtpSpeedOnce(action);
@@ -318,7 +320,7 @@ internal sealed class KrlWriter
     {
         if (c.Tool is not Tool tool)
         {
-            Error(action, "no tool is attached after this action.");
+            _notes.Error(action, "no tool is attached after this action.");
             return;
         }
         _job.Warn(action, $"the weight and centre of gravity of tool \"{tool.Name}\" are not sent; set its load data on the controller.");
@@ -337,12 +339,12 @@ internal sealed class KrlWriter
         {
             if (wait.IsToolPin)
             {
-                Error(wait, "KUKA controllers have no separate tool inputs; declare a SIGNAL for it in $config.dat and use its name.");
+                _notes.Error(wait, "KUKA controllers have no separate tool inputs; declare a SIGNAL for it in $config.dat and use its name.");
                 return;
             }
             if (number < 1 || number > 4096)
             {
-                Error(wait, $"$IN inputs are numbered 1 to 4096, so input {Num.I(number)} does not exist.");
+                _notes.Error(wait, $"$IN inputs are numbered 1 to 4096, so input {Num.I(number)} does not exist.");
                 return;
             }
             input = "$IN[" + Num.I(number) + "]";
@@ -353,7 +355,7 @@ internal sealed class KrlWriter
         }
         else
         {
-            Error(wait, $"\"{wait.PinName}\" is neither an input number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
+            _notes.Error(wait, $"\"{wait.PinName}\" is neither an input number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
             return;
         }
         string reached = (wait.On ? "" : "NOT ") + input;
@@ -382,11 +384,11 @@ internal sealed class KrlWriter
         {
             if (read.IsToolPin)
             {
-                Error(read, "KUKA controllers have no separate tool inputs; declare a SIGNAL for it in $config.dat and use its name.");
+                _notes.Error(read, "KUKA controllers have no separate tool inputs; declare a SIGNAL for it in $config.dat and use its name.");
             }
             else if (number < 1 || number > count)
             {
-                Error(read, $"{array} inputs are numbered 1 to {Num.I(count)}, so input {Num.I(number)} does not exist.");
+                _notes.Error(read, $"{array} inputs are numbered 1 to {Num.I(count)}, so input {Num.I(number)} does not exist.");
             }
             else
             {
@@ -399,7 +401,7 @@ internal sealed class KrlWriter
         }
         else
         {
-            Error(read, $"\"{read.PinName}\" is neither an input number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
+            _notes.Error(read, $"\"{read.PinName}\" is neither an input number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
         }
     }
 
@@ -412,11 +414,11 @@ internal sealed class KrlWriter
         {
             if (toolPin)
             {
-                Error(action, $"KUKA controllers have no separate tool outputs; declare a SIGNAL for it in $config.dat and use its name.");
+                _notes.Error(action, $"KUKA controllers have no separate tool outputs; declare a SIGNAL for it in $config.dat and use its name.");
             }
             else if (number < 1 || number > count)
             {
-                Error(action, $"{array} outputs are numbered 1 to {Num.I(count)}, so output {Num.I(number)} does not exist.");
+                _notes.Error(action, $"{array} outputs are numbered 1 to {Num.I(count)}, so output {Num.I(number)} does not exist.");
             }
             else
             {
@@ -430,7 +432,7 @@ internal sealed class KrlWriter
         }
         else
         {
-            Error(action, $"\"{pin}\" is neither an output number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
+            _notes.Error(action, $"\"{pin}\" is neither an output number nor a valid KRL signal name (letters, digits and '_', at most 24 characters).");
         }
     }
 
@@ -544,24 +546,4 @@ internal sealed class KrlWriter
     }
 
     private void Code(string code, RobotAction action) => EndLine(BeginLine().Append(code), action);
-
-    private void NoCode(RobotAction action)
-    {
-        if (_human)
-        {
-            _src.Add(Indent + ProgramNotes.Semicolon.Description(action));
-        }
-    }
-
-    private void NotApplicable(RobotAction action, string reason)
-    {
-        _job.Warn(action, reason);
-        Code(ProgramNotes.Semicolon.NotApplicable(action), action);
-    }
-
-    private void Error(RobotAction action, string reason)
-    {
-        _job.Warn(action, reason);
-        Code(ProgramNotes.Semicolon.Error(action, reason), action);
-    }
 }

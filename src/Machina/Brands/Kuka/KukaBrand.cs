@@ -14,6 +14,7 @@ internal static partial class KukaBrand
         Family = KinematicFamily.Opw,
         MirroredOpwJoints = true,
         DefaultModel = "KR 6 R900 sixx",
+        Models = () => CatalogTable.Load("kuka-arms.txt"),
         Timing = new KukaMotionTiming(),
         DefaultPort = 7000,
         DriverNextSteps = NextSteps,

@@ -14,6 +14,7 @@ internal static partial class UrBrand
         ModelBrand = "UR",
         Family = KinematicFamily.UniversalRobots,
         DefaultModel = "UR5e",
+        Models = UniversalRobotsCatalog.Build,
         Timing = new UrMotionTiming(),
         DefaultPort = UrPorts.StandardScript,
         DriverNextSteps = NextSteps,

@@ -14,6 +14,7 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
     private char[] _warning = new char[320];
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
+    private readonly LineNotes _notes = new(job, UrScriptText.Notes, Indent, () => sink);
     private readonly UrRepeatedText _repeated = new();
     private readonly TranslationDigits _digits = new();
     private readonly KeptNumber _radiusText = new(), _lengthText = new(), _halfText = new();
@@ -118,11 +119,11 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
                 break;
             case ActionSpeed when UrScriptText.RoundsToZero(cursor.Speed):
                 job.Warn(action, $"URScript speeds are written in m/s with 6 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {NumAppend.Format(UrScriptText.MinRate, 6)} m/s.");
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             case ActionAcceleration when UrScriptText.RoundsToZero(cursor.Acceleration):
                 job.Warn(action, $"URScript accelerations are written in m/s^2 with 6 decimals; {Num.G(cursor.Acceleration)} mm/s^2 would be 0 and was raised to {NumAppend.Format(UrScriptText.MinRate, 6)} m/s^2.");
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             case ActionMessage m:
                 string literal = UrScriptText.StringLiteral(m.Message, out bool changed);
@@ -182,7 +183,7 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
                 break;
             case ActionSpeed or ActionAcceleration or ActionPrecision or ActionMotionMode or ActionCoordinates or ActionPushPop or ActionCustomCode:
                 // Settings travel as the next motion's a, v and r arguments; declarations are written at the top.
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             default:
                 throw ActionKinds.Unhandled(action, "The URScript writer");
@@ -391,13 +392,5 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
     {
         _sb.Clear().Append(line);
         EndLine(action);
-    }
-
-    private void NoCode(RobotAction action)
-    {
-        if (_human)
-        {
-            sink.Add(Indent + UrScriptText.Notes.Description(action));
-        }
     }
 }

@@ -3,7 +3,7 @@ using System.Globalization;
 namespace Machina;
 
 /// <summary>
-/// Reads a maker's table of OPW arms (an embedded text file next to this one, e.g. abb-arms.txt): a "brand" line, "source key = text"
+/// Reads a maker's table of OPW arms (an embedded text file in the brand's folder, e.g. Brands/Abb/abb-arms.txt): a "brand" line, "source key = text"
 /// lines naming the public descriptions, then one arm a line, "name | a1 a2 c1 c2 c3 c4 | lowest joints | highest joints | speeds |
 /// source", with "#" comments. More OPW arms (ABB or KUKA joint conventions) are more lines of data, not code.
 /// </summary>

@@ -94,13 +94,13 @@ internal static class RapidText
     /// <summary>speeddata <c>[v,v,v,v]</c>: TCP mm/s, reorientation deg/s, linear and rotating external axes (Machina's "mm/s or deg/s").</summary>
     internal static string SpeedData(double speed)
     {
-        string v = Machina.Num.F(speed, 3);
+        string v = NumAppend.Format(speed, 3);
         return $"[{v},{v},{v},{v}]";
     }
 
     /// <summary>zonedata for a blend radius p (mm): <c>[FALSE,p,1.5p,1.5p,0.1p,1.5p,0.1p]</c>.</summary>
     internal static string ZoneData(double p) =>
-        ZoneData(Machina.Num.F(p, 4), Machina.Num.F(1.5 * p, 4), Machina.Num.F(0.1 * p, 4));
+        ZoneData(NumAppend.Format(p, 4), NumAppend.Format(1.5 * p, 4), NumAppend.Format(0.1 * p, 4));
 
     private static string ZoneData(string tcp, string wide, string ori) => $"[FALSE,{tcp},{wide},{wide},{ori},{wide},{ori}]";
 

@@ -19,6 +19,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     private readonly StringBuilder _sb = new(256);
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
+    private readonly LineNotes _notes = new(job, RapidText.Notes, Indent, () => sink);
     private readonly RapidMoveLine _moveLine = new();
     private int _target;
 
@@ -65,7 +66,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         {
             return Indent + "WorldAccLim \\Off;";
         }
-        return Indent + "WorldAccLim \\On := " + Num.F(Math.Max(acc / 1000, MinWorldAcc), 6) + ";";
+        return Indent + "WorldAccLim \\On := " + NumAppend.Format(Math.Max(acc / 1000, MinWorldAcc), 6) + ";";
     }
 
     /// <summary>Final pass: the instruction lines of every action, in order (refused actions are reported as warnings).</summary>
@@ -121,7 +122,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 break;
             case ActionSpeed when Math.Round(cursor.Speed, 3) < RapidPlan.MinSpeed:
                 job.Warn(action, $"RAPID speeddata is written with 3 decimals; {Num.G(cursor.Speed)} mm/s would be 0 and was raised to {Num.G(RapidPlan.MinSpeed)} mm/s.");
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             case ActionMessage m:
                 WriteMessage(m);
@@ -169,11 +170,11 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                 break;
             case ActionExternalAxis or ActionArmAngle:
                 WarnArmAngleConflict(action, cursor);
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             case ActionSpeed or ActionPrecision or ActionMotionMode or ActionCoordinates or ActionPushPop or ActionCustomCode:
                 // Settings travel in the next motion's speeddata and zonedata; declarations are written at the top.
-                NoCode(action);
+                _notes.NoCode(action);
                 break;
             default:
                 throw ActionKinds.Unhandled(action, "The RAPID writer");
@@ -236,7 +237,7 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
                              $"{Num.G(acceleration)} mm/s^2 was raised to that minimum.");
             perSecond = MinWorldAcc;
         }
-        return Indent + "WorldAccLim \\On := " + Num.F(perSecond, 6) + ";";
+        return Indent + "WorldAccLim \\On := " + NumAppend.Format(perSecond, 6) + ";";
     }
 
     private void WriteMessage(ActionMessage m)
@@ -302,13 +303,5 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     {
         _sb.Clear().Append(line);
         EndLine(action);
-    }
-
-    private void NoCode(RobotAction action)
-    {
-        if (_human)
-        {
-            sink.Add(Indent + RapidText.Notes.Description(action));
-        }
     }
 }

@@ -10,9 +10,6 @@ namespace Machina;
 /// </summary>
 internal static class AbbDriverInstaller
 {
-    /// <summary>True for the brand whose driver Machina can install through Robot Web Services (ABB).</summary>
-    public static bool Supports(RobotType brand) => brand == RobotType.ABB;
-
     /// <summary>The motion task the driver is loaded into.</summary>
     public const string MotionTask = "T_ROB1";
 
@@ -21,6 +18,17 @@ internal static class AbbDriverInstaller
 
     /// <summary>The name of the driver's module (MODULE Machina_Driver in drivers/abb).</summary>
     public const string DriverModule = "Machina_Driver";
+
+    /// <summary>
+    /// Installs and starts the driver on the controller at <paramref name="host"/> through its Robot Web Services (<see cref="AbbBrand"/>'s
+    /// <see cref="BrandDefinition.InstallDriver"/>), listening on <paramref name="port"/>.
+    /// </summary>
+    public static async Task InstallAsync(string host, int port, RobotWebServicesOptions options, RobotLogger log, CancellationToken cancellationToken)
+    {
+        using var client = new RwsClient(host, options);
+        log.Info($"Installing the driver on {client.Address} (Robot Web Services {(options.UseRws2 ? "2.0" : "1.0")}).");
+        await InstallAsync(client, host, port, options, log, cancellationToken).ConfigureAwait(false);
+    }
 
     /// <summary>
     /// Installs and starts the driver listening on <paramref name="host"/>:<paramref name="port"/> (the monitor on port + 1),

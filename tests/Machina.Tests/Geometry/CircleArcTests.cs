@@ -1,11 +1,11 @@
-namespace Machina.Tests.Brands.GCode;
+namespace Machina.Tests.Geometry;
 
-public class GCodeArcTests
+public class CircleArcTests
 {
     [Fact]
     public void TryCreate_HalfCircleClockwiseFromAbove_CentreRadiusSweepAndNormal()
     {
-        Assert.True(GCodeArc.TryCreate(new Vector(0, 0, 0), new Vector(10, 10, 0), new Vector(20, 0, 0), out GCodeArc arc));
+        Assert.True(CircleArc.TryCreate(new Vector(0, 0, 0), new Vector(10, 10, 0), new Vector(20, 0, 0), out CircleArc arc));
 
         Assert.True(arc.Center.IsSimilar(new Vector(10, 0, 0), 1e-9));
         Assert.Equal(10, arc.Radius, 9);
@@ -19,7 +19,7 @@ public class GCodeArcTests
     public void TryCreate_ThreeQuarterTurn_SweepsThroughTheMiddlePoint()
     {
         // Start (10,0), through (-10,0), end (0,-10) on the unit-10 circle around the origin, counter-clockwise: 270 degrees.
-        Assert.True(GCodeArc.TryCreate(new Vector(10, 0, 3), new Vector(-10, 0, 3), new Vector(0, -10, 3), out GCodeArc arc));
+        Assert.True(CircleArc.TryCreate(new Vector(10, 0, 3), new Vector(-10, 0, 3), new Vector(0, -10, 3), out CircleArc arc));
 
         Assert.Equal(1.5 * Math.PI, arc.Sweep, 9);
         Assert.Equal(15 * Math.PI, arc.Length, 9);
@@ -30,14 +30,14 @@ public class GCodeArcTests
     [Fact]
     public void TryCreate_PointsOnALine_False()
     {
-        Assert.False(GCodeArc.TryCreate(new Vector(0, 0, 0), new Vector(1, 1, 1), new Vector(2, 2, 2), out _));
-        Assert.False(GCodeArc.TryCreate(new Vector(0, 0, 0), new Vector(0, 0, 0), new Vector(2, 2, 2), out _));
+        Assert.False(CircleArc.TryCreate(new Vector(0, 0, 0), new Vector(1, 1, 1), new Vector(2, 2, 2), out _));
+        Assert.False(CircleArc.TryCreate(new Vector(0, 0, 0), new Vector(0, 0, 0), new Vector(2, 2, 2), out _));
     }
 
     [Fact]
     public void SegmentCount_ChordTolerance_BoundsTheError()
     {
-        Assert.True(GCodeArc.TryCreate(new Vector(0, 0, 0), new Vector(10, 10, 0), new Vector(20, 0, 0), out GCodeArc arc));
+        Assert.True(CircleArc.TryCreate(new Vector(0, 0, 0), new Vector(10, 10, 0), new Vector(20, 0, 0), out CircleArc arc));
 
         int n = arc.SegmentCount(0.01);
 

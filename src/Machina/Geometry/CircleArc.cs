@@ -1,15 +1,15 @@
 namespace Machina;
 
 /// <summary>
-/// The circle through a start, a through and an end point, as a 3D printer needs it: centre, turning direction and swept angle,
+/// The circle through a start, a through and an end point, as G-code and the reach checks need it: centre, turning direction and swept angle,
 /// and points along the way for printers that draw arcs as short straight segments.
 /// </summary>
-internal readonly struct GCodeArc
+internal readonly struct CircleArc
 {
     private readonly Vector _u, _v;
     private readonly double _startAngle;
 
-    private GCodeArc(Vector center, Vector u, Vector v, double radius, double startAngle, double sweep)
+    private CircleArc(Vector center, Vector u, Vector v, double radius, double startAngle, double sweep)
     {
         Center = center;
         _u = u;
@@ -35,7 +35,7 @@ internal readonly struct GCodeArc
     internal double Length => Radius * Sweep;
 
     /// <summary>The circle from <paramref name="start"/> through <paramref name="through"/> to <paramref name="end"/>; false when the points are on one line.</summary>
-    internal static bool TryCreate(Vector start, Vector through, Vector end, out GCodeArc arc)
+    internal static bool TryCreate(Vector start, Vector through, Vector end, out CircleArc arc)
     {
         arc = default;
         Vector toThrough = through - start, toEnd = end - start;
@@ -67,7 +67,7 @@ internal readonly struct GCodeArc
         {
             sweep -= 2 * Math.PI;
         }
-        arc = new GCodeArc(start + u * cx + v * cy, u, v, Math.Sqrt(cx * cx + cy * cy), startAngle, sweep);
+        arc = new CircleArc(start + u * cx + v * cy, u, v, Math.Sqrt(cx * cx + cy * cy), startAngle, sweep);
         return true;
     }
 
