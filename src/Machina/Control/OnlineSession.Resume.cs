@@ -72,7 +72,7 @@ internal sealed partial class OnlineSession
         int index = 0, found = Unknown;
         foreach (InFlight f in _inFlight)
         {
-            if (f.Acked && driver.WireId(f.Action.Id) == controllerId)
+            if (f.Acked && f.WireId == controllerId)
             {
                 found = index;
             }

@@ -49,8 +49,11 @@ internal sealed partial class OnlineSession : IActionStream
     /// <summary>How long the controller may stay silent beyond the expected duration of the action it works on.</summary>
     internal TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
 
-    /// <summary>A released action waiting for execution; <c>Acked</c> when the controller will acknowledge it.</summary>
-    private readonly record struct InFlight(RobotAction Action, bool Acked, double ExpectedMs);
+    /// <summary>
+    /// A released action waiting for execution; <c>Acked</c> when the controller will acknowledge it, by <c>WireId</c> (the id the
+    /// controller knows it by: the session alone maps a driver's reports back to actions).
+    /// </summary>
+    private readonly record struct InFlight(RobotAction Action, bool Acked, double ExpectedMs, int WireId);
 
     /// <inheritdoc/>
     public void Enqueue(RobotAction action, ActionIssuedArgs? issued)
@@ -185,7 +188,7 @@ internal sealed partial class OnlineSession : IActionStream
         {
             _lastProgress = _time.GetTimestamp();
         }
-        _inFlight.Enqueue(new InFlight(action, acknowledged, ExpectedMilliseconds(action, _release)));
+        _inFlight.Enqueue(new InFlight(action, acknowledged, ExpectedMilliseconds(action, _release), link.Driver.WireId(action.Id)));
         if (_host.IsListening(OnlineEvent.Released))
         {
             _events.Post(new ActionReleasedArgs(action, _buffer.Count, _release.Snapshot()));

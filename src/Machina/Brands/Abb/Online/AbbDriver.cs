@@ -6,7 +6,6 @@ namespace Machina;
 /// </summary>
 internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDriver
 {
-    private readonly AwaitedAcknowledgements _awaiting = new(WireId);
     private readonly List<AbbRequest> _requests = new(4);
     private byte[] _encoded = new byte[1024];
     private TcpLink? _monitor;
@@ -71,10 +70,6 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
             length += request.EncodeTo(_encoded.AsSpan(length));
             acknowledged |= request.Id == wireId;
         }
-        if (acknowledged)
-        {
-            Adopt(action.Id);
-        }
         link.Post(_encoded.AsSpan(0, length));
         return acknowledged;
     }
@@ -94,10 +89,9 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     int IDeviceDriver.WireId(int actionId) => WireId(actionId);
 
     /// <inheritdoc/>
-    /// <remarks>Also how <see cref="Send"/> records an action it sent: its acknowledgement is awaited in order.</remarks>
+    /// <remarks>Nothing to do: the session keeps what is in flight and maps the wire ids this driver reports.</remarks>
     public void Adopt(int actionId)
     {
-        _awaiting.Expect(actionId);
     }
 
     /// <inheritdoc/>
@@ -119,13 +113,12 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
 
     private void Acknowledge(int wireId)
     {
-        int actionId = _awaiting.Resolve(wireId);
         if (_read is (int readId, double value) && readId == wireId)
         {
             _read = null;
-            Listener?.OnAcknowledged(actionId, value);
+            Listener?.OnAcknowledged(wireId, value);
             return;
         }
-        Listener?.OnAcknowledged(actionId);
+        Listener?.OnAcknowledged(wireId);
     }
 }

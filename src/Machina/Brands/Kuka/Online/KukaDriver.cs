@@ -13,7 +13,6 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
 {
     private readonly double _motionUpdateRate;
     private readonly object _gate = new();
-    private readonly Queue<int> _awaiting = new();
     private readonly StringBuilder _batch = new(1024);
     private TcpLink? _monitor;
 
@@ -27,21 +26,6 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
 
     /// <summary>True when the monitor connection (live poses) is open.</summary>
     internal bool HasMonitor => _monitor is not null;
-
-    /// <summary>The highest action id acknowledged on this link (acknowledgements come in order).</summary>
-    private int _lastAcknowledged;
-
-    /// <summary>Actions sent and not acknowledged yet (at most <see cref="KukaProtocol.Capacity"/>).</summary>
-    internal int OnController
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _awaiting.Count;
-            }
-        }
-    }
 
     /// <inheritdoc/>
     protected override async Task<DeviceHandshake> OpenAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
@@ -80,12 +64,7 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
         }
         lock (_gate)
         {
-            if (_awaiting.Count >= KukaProtocol.Capacity)
-            {
-                // The session releases no more than Capacity; a send beyond it would overwrite a slot not yet executed.
-                throw new InvalidOperationException($"the controller's {KukaProtocol.Capacity} slots hold actions not executed yet; action {action.Id} cannot be sent now.");
-            }
-            _awaiting.Enqueue(action.Id);
+            // The session releases no more than Capacity (it keeps what is in flight): a slot not executed is never overwritten.
             _batch.Clear();
             KukaInstruction.AppendBatch(_batch, [instruction]);
             Link.Post(Encoding.ASCII.GetBytes(_batch.ToString()));
@@ -101,19 +80,9 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
     public int WireId(int actionId) => actionId;
 
     /// <inheritdoc/>
-    /// <remarks>
-    /// An action whose acknowledgement already arrived (the controller ran it between its state report and the adoption) is
-    /// not awaited again: it would hold a slot forever and the session would count more room than the controller has.
-    /// </remarks>
+    /// <remarks>Nothing to do: the session keeps what is in flight, counts the slots and maps the ids this driver reports.</remarks>
     public void Adopt(int actionId)
     {
-        lock (_gate)
-        {
-            if (actionId > _lastAcknowledged)
-            {
-                _awaiting.Enqueue(actionId);
-            }
-        }
     }
 
     /// <inheritdoc/>
@@ -163,37 +132,13 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
 
     private void Acknowledge(int wireId, double? readValue)
     {
-        int actionId = wireId;
-        lock (_gate)
-        {
-            int sent = _awaiting.Count, index = 0, found = -1;
-            foreach (int awaiting in _awaiting)
-            {
-                if (index == sent)
-                {
-                    break;
-                }
-                if (awaiting == wireId)
-                {
-                    found = index;
-                    break;
-                }
-                index++;
-            }
-            for (int i = 0; i <= found; i++)
-            {
-                actionId = _awaiting.Dequeue();
-            }
-            _lastAcknowledged = Math.Max(_lastAcknowledged, wireId);
-        }
-        // Outside the lock: the session's loop may call Send while handling it. Every acknowledgement after a read carries
-        // V (EthernetKRL keeps the value set last); the session keeps it for reads only.
+        // Every acknowledgement after a read carries V (EthernetKRL keeps the value set last); the session keeps it for reads only.
         if (readValue is double value)
         {
-            Listener?.OnAcknowledged(actionId, value);
+            Listener?.OnAcknowledged(wireId, value);
             return;
         }
-        Listener?.OnAcknowledged(actionId);
+        Listener?.OnAcknowledged(wireId);
     }
 
     /// <inheritdoc/>
