@@ -133,11 +133,11 @@ internal sealed partial class OnlineSession
         int count = _buffer.Count;
         for (int i = 0; i < count; i++)
         {
-            RobotAction action = _buffer.Dequeue();
+            RobotAction action = _buffer.Dequeue().Action;
             string? refusal = issue.TryApply(action);
             if (refusal is null)
             {
-                _buffer.Enqueue(action);
+                _buffer.Enqueue(new Pending(action, null));   // re-targeted: encoded again when released
             }
             else
             {

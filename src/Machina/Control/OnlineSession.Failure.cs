@@ -65,7 +65,7 @@ internal sealed partial class OnlineSession
         RobotAction failedAction = _inFlight.Dequeue().Action;
         var cancelled = new List<RobotAction>(_inFlight.Count + _buffer.Count);
         cancelled.AddRange(_inFlight.Select(f => f.Action));
-        cancelled.AddRange(_buffer);
+        cancelled.AddRange(_buffer.Select(p => p.Action));
         _inFlight.Clear();
         _buffer.Clear();
         for (int i = 0; i < ran.Count; i++)

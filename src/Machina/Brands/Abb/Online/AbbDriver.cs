@@ -6,8 +6,6 @@ namespace Machina;
 /// </summary>
 internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDriver
 {
-    private readonly List<AbbRequest> _requests = new(4);
-    private byte[] _encoded = new byte[1024];
     private TcpLink? _monitor;
 
     // Handshake parts ($20..$23, and $25 from driver 1.6), filled by the receive loop.
@@ -48,39 +46,10 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
         "Install this Machina's driver with \"machina drivers abb --install --host H\", or load the modules \"machina drivers abb --host H --port P --out DIR\" writes " +
         "(Robot.GetDeviceDriverModules) into the motion task and start it; then connect again.");
 
-    /// <inheritdoc/>
-    public bool Send(RobotAction action, RobotCursor releaseState)
-    {
-        TcpLink link = Link ?? throw new InvalidOperationException("the link is not open");
-        int wireId = WireId(action.Id);
-        _requests.Clear();
-        int count = AbbActionEncoder.Encode(wireId == action.Id ? action : WithId(action, wireId), releaseState, _requests);
-        if (count == 0)
-        {
-            return false;
-        }
-        int length = 0;
-        bool acknowledged = false;
-        foreach (AbbRequest request in _requests)
-        {
-            if (_encoded.Length - length < request.MaxEncodedLength)
-            {
-                Array.Resize(ref _encoded, Math.Max(_encoded.Length * 2, length + request.MaxEncodedLength));
-            }
-            length += request.EncodeTo(_encoded.AsSpan(length));
-            acknowledged |= request.Id == wireId;
-        }
-        link.Post(_encoded.AsSpan(0, length));
-        return acknowledged;
-    }
+    /// <summary>Encodes <paramref name="action"/> from <paramref name="after"/> with the ABB codec and sends it (a driver used without a session).</summary>
+    internal bool Send(RobotAction action, RobotCursor after) => Send(action, Codec.Encode(action, after, out _));
 
-    /// <summary>A copy of an action carrying the id to send (only for ids beyond what RAPID reads exactly).</summary>
-    private static RobotAction WithId(RobotAction action, int wireId)
-    {
-        RobotAction copy = action.CloneUnissued();
-        copy.Id = wireId;
-        return copy;
-    }
+    private static AbbOnline Codec { get; } = new();
 
     /// <summary>The id sent on the wire: RAPID reads ids as 32-bit floats, so they wrap below 2^23 (fix of bug A10).</summary>
     internal static int WireId(int actionId) => ((actionId - 1) % AbbRequest.MaxId) + 1;

@@ -7,13 +7,11 @@ namespace Machina;
 /// <c>S</c> and acknowledgements <c>R</c> in) and, when the controller runs the monitor, a second client on port + 1 that
 /// receives live poses (<c>P</c>). Never more than <see cref="KukaProtocol.Capacity"/> actions are on the controller
 /// unacknowledged, so a batch can never overwrite a slot of the driver's ring that was not executed (fix of bug K7): the
-/// session reads <see cref="Capacity"/> and releases no more; an action sent beyond it is refused here, never held.
+/// session, which alone keeps what is in flight, reads <see cref="Capacity"/> and releases no more.
 /// </summary>
 internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
 {
     private readonly double _motionUpdateRate;
-    private readonly object _gate = new();
-    private readonly StringBuilder _batch = new(1024);
     private TcpLink? _monitor;
 
     /// <summary>Creates a driver that logs to the robot's log, measures its timeouts with its clock and asks for its motion update rate.</summary>
@@ -43,34 +41,10 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
         "Copy the files \"machina drivers kuka --host H --port P --out DIR\" writes (Robot.GetDeviceDriverModules) to the controller and start the driver again " +
         "(docs/getting-started.md); then connect again.");
 
-    /// <inheritdoc/>
-    public bool Send(RobotAction action, RobotCursor releaseState)
-    {
-        if (Link is null)
-        {
-            throw new InvalidOperationException("the link is not open");
-        }
-        if (KukaActionEncoder.Encode(action, action.Id, releaseState) is not KukaInstruction instruction)
-        {
-            return false;
-        }
-        if (action is ActionMessage message && KukaActionEncoder.IsTruncated(message.Message))
-        {
-            Log.Warning($"KUKA messages hold {KukaProtocol.MaxTextLength} characters: the message of action {action.Id} is shown cut to \"{instruction.Text}\".");
-        }
-        if (action is ActionAttachTool && releaseState.Tool is Tool tool)
-        {
-            Log.Warning($"The weight and centre of gravity of tool \"{tool.Name}\" are not sent to KUKA controllers; set its load data on the controller.");
-        }
-        lock (_gate)
-        {
-            // The session releases no more than Capacity (it keeps what is in flight): a slot not executed is never overwritten.
-            _batch.Clear();
-            KukaInstruction.AppendBatch(_batch, [instruction]);
-            Link.Post(Encoding.ASCII.GetBytes(_batch.ToString()));
-        }
-        return true;
-    }
+    /// <summary>Encodes <paramref name="action"/> from <paramref name="after"/> with the KUKA codec and sends it (a driver used without a session).</summary>
+    internal bool Send(RobotAction action, RobotCursor after) => Send(action, Codec.Encode(action, after, out _));
+
+    private static KukaOnline Codec { get; } = new();
 
     /// <inheritdoc/>
     public int? Capacity => KukaProtocol.Capacity;

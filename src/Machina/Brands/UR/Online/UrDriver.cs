@@ -12,8 +12,6 @@ namespace Machina;
 internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
 {
     private readonly DeviceContext _context;
-    private readonly int[] _values = new int[UrActionEncoder.MaxValues];
-    private readonly byte[] _encoded = new byte[UrActionEncoder.MaxValues * 4];
     private string _version = "";
 
     /// <summary>The last read value response (id, value × FactorAnalog), handed over with the acknowledgement of that id.</summary>
@@ -87,21 +85,6 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     /// </summary>
     internal static DriverRequirement Requirement { get; } = new("UR", Version.Parse(UrDriverScript.Version),
         "This Machina sends its own driver program on every connection, so another program connected back in its place: is another Machina driving this robot? Stop it, then connect again.");
-
-    /// <inheritdoc/>
-    public bool Send(RobotAction action, RobotCursor releaseState)
-    {
-        TcpLink link = Link ?? throw new InvalidOperationException("the link is not open");
-        int count = UrActionEncoder.Encode(action, releaseState, _values);
-        if (count == 0)
-        {
-            return false;
-        }
-        int length = UrWire.Write(_values.AsSpan(0, count), _encoded);
-        Adopt(action.Id);
-        link.Post(_encoded.AsSpan(0, length));
-        return true;
-    }
 
     /// <inheritdoc/>
     public int WireId(int actionId) => actionId;
