@@ -189,7 +189,8 @@ public sealed partial class Robot : IOnlineHost
             action.Id = -1;
             throw;
         }
-        if (refusal is null && _session?.WhyCannotSend(action, _issueCursor) is string unsendable)
+        ActionFrame? frame = null;
+        if (refusal is null && _session?.Encode(action, _issueCursor, out frame) is string unsendable)
         {
             _issueCursor.CopyFrom(_undoCursor);
             refusal = unsendable;
@@ -212,7 +213,7 @@ public sealed partial class Robot : IOnlineHost
         if (_session is not null)
         {
             // Online, the stream raises ActionIssued on its event loop, before any later event about this action.
-            _session.Enqueue(action, issued);
+            _session.Enqueue(action, issued, frame);
             issued = null;
         }
         else

@@ -22,6 +22,7 @@ internal static class Catalog
         scenarios.Add(new KrlTwinStreamScenario());
         scenarios.Add(new KrlTwinStreamScenario(wideWindow: false));
         scenarios.Add(new RapidLoadScenario());
+        scenarios.AddRange(new[] { RobotType.ABB, RobotType.UR, RobotType.KUKA }.Select(b => new PlainProgramScenario(b)));
 #else
         scenarios.Add(new MissingScenario("stream", "Stream moves to the virtual ABB controller", 100_000, StreamTarget, "the virtual ABB controller is not in this build."));
 #endif
@@ -39,6 +40,9 @@ internal static class Catalog
 
     /// <summary>The streaming target: at least 20,000 actions per second acknowledged.</summary>
     public static Target StreamTarget { get; } = Target.PerSecond(20_000, ">= 20,000 actions/s acknowledged");
+
+    /// <summary>Issue 45's target for the plain program: at most 20 µs of processor time per action, host and twin together.</summary>
+    public static Target PlainProgramTarget { get; } = Target.CpuMicroseconds(20, "<= 20 us CPU per action (host + twin)");
 
     /// <summary>The inverse kinematics target: all solutions of one pose in at most 5 µs.</summary>
     public static Target IkTarget { get; } = Target.Microseconds(5, "<= 5 us per pose");

@@ -36,11 +36,14 @@ internal sealed record Measurement
     public string? Note { get; init; }
 
     public double NanosecondsPerUnit => Size > 0 ? MedianSeconds * 1e9 / Size : 0;
+    /// <summary>Processor time per unit (all threads) during the median run, ns.</summary>
+    public double CpuNanosecondsPerUnit => Size > 0 ? CpuSeconds * 1e9 / Size : 0;
     public double UnitsPerSecond => MedianSeconds > 0 ? Size / MedianSeconds : 0;
     public double BytesPerUnit => Size > 0 ? (double)AllocatedBytes / Size : 0;
 
     /// <summary>Measured time per unit over the target's (at most 1 means met; for throughput targets, target rate over measured rate).</summary>
-    public double? TimeRatio => Target is null || Runs == 0 ? null : NanosecondsPerUnit / Target.NanosecondsPerUnit;
+    public double? TimeRatio => Target is null || Runs == 0 ? null
+        : (Target.OnProcessorTime ? CpuNanosecondsPerUnit : NanosecondsPerUnit) / Target.NanosecondsPerUnit;
 
     /// <summary>Measured allocations per unit over the target's, when the target limits allocations.</summary>
     public double? AllocationRatio => Target?.BytesPerUnit is double limit && Runs > 0 ? BytesPerUnit / limit : null;

@@ -28,6 +28,7 @@ internal static class Report
             ["gcPauseSeconds"] = m.GcPauseSeconds,
             ["pageFaults"] = m.PageFaults,
             ["nsPerUnit"] = m.NanosecondsPerUnit,
+            ["cpuNsPerUnit"] = m.CpuNanosecondsPerUnit,
             ["unitsPerSecond"] = m.UnitsPerSecond,
             ["allocatedBytes"] = m.AllocatedBytes,
             ["allocatedBytesPerUnit"] = m.BytesPerUnit,
@@ -49,11 +50,11 @@ internal static class Report
     /// <summary>The results table: one row per scenario at its size, with the ratio to the target (at most 1 means met).</summary>
     public static string Results(IReadOnlyList<Measurement> rows)
     {
-        string[] header = ["scenario", "size", "median", "min", "cpu", "gc pause", "gc 0/1/2", "faults", "per unit", "rate /s", "alloc/unit", "peak heap", "retained", "target", "ratio", "status"];
+        string[] header = ["scenario", "size", "median", "min", "cpu", "gc pause", "gc 0/1/2", "faults", "per unit", "cpu/unit", "rate /s", "alloc/unit", "peak heap", "retained", "target", "ratio", "status"];
         var lines = rows.Select(m => m.Runs == 0
-            ? new[] { m.Scenario, Count(m.Size), "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", m.Target?.Text ?? "-", "-", $"{m.Status}: {m.Note}" }
+            ? new[] { m.Scenario, Count(m.Size), "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", m.Target?.Text ?? "-", "-", $"{m.Status}: {m.Note}" }
             : [
-                m.Scenario, Count(m.Size), Time(m.MedianSeconds), Time(m.MinSeconds), Time(m.CpuSeconds), Time(m.GcPauseSeconds), m.Collections, Count(m.PageFaults), Time(m.NanosecondsPerUnit / 1e9), Count(m.UnitsPerSecond),
+                m.Scenario, Count(m.Size), Time(m.MedianSeconds), Time(m.MinSeconds), Time(m.CpuSeconds), Time(m.GcPauseSeconds), m.Collections, Count(m.PageFaults), Time(m.NanosecondsPerUnit / 1e9), Time(m.CpuNanosecondsPerUnit / 1e9), Count(m.UnitsPerSecond),
                 Bytes(m.BytesPerUnit), Bytes(m.PeakBytes), Bytes(m.RetainedBytes), m.Target?.Text ?? "-", Ratio(m), m.Status,
             ]).ToList();
         return Table(header, lines);

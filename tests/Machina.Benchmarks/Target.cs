@@ -7,6 +7,12 @@ namespace Machina.Benchmarks;
 /// </summary>
 internal sealed record Target(double NanosecondsPerUnit, double? BytesPerUnit, string Text)
 {
+    /// <summary>True when the limit is on processor time per unit (the whole process, every thread), not wall time.</summary>
+    public bool OnProcessorTime { get; init; }
+
+    /// <summary>A processor-time limit per unit, e.g. 20 µs of CPU per streamed action, host and twin together.</summary>
+    public static Target CpuMicroseconds(double microseconds, string text) => new(microseconds * 1e3, null, text) { OnProcessorTime = true };
+
     /// <summary>A time limit for a whole batch of <paramref name="units"/> units, e.g. 0.5 s for 1,000,000 moves.</summary>
     public static Target Seconds(double seconds, int units, string text, double? bytesPerUnit = null) =>
         new(seconds * 1e9 / units, bytesPerUnit, text);

@@ -6,7 +6,8 @@ namespace Machina;
 /// receive loop that turns bytes into the brand's messages, failing exactly once (the handshake's waiter before it arrived,
 /// <see cref="IDeviceListener.OnFault"/> after) and closing every link on disposal. A brand supplies its reader, what each
 /// message means (<see cref="OnMessage"/>) and how it connects (<see cref="OpenAsync"/>), and implements the rest of
-/// <see cref="IDeviceDriver"/> itself (<c>Send</c>, <c>WireId</c>, <c>Adopt</c>, and <c>ResumeAsync</c> if its controller stops).
+/// <see cref="IDeviceDriver"/> itself (<c>WireId</c>, <c>Adopt</c>, and <c>ResumeAsync</c> if its controller stops); <c>Send</c> is
+/// shared: it puts the frame the brand encoded on the link.
 /// </summary>
 /// <typeparam name="TMessage">One message the controller sends on the driver link.</typeparam>
 internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDisposable
@@ -58,6 +59,31 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
     {
         Listener = listener;
         return OpenAsync(host, port, timeout, cancellationToken);
+    }
+
+    /// <inheritdoc cref="IDeviceDriver.Send"/>
+    /// <remarks>A driver is codec and link: the brand encoded the frame when the action was issued; this only puts it on the link.</remarks>
+    public bool Send(RobotAction action, ActionFrame frame)
+    {
+        TcpLink link = Link ?? throw new InvalidOperationException("the link is not open");
+        if (frame.Note is string note)
+        {
+            Log.Warning(note);
+        }
+        if (frame.Bytes.Length > 0)
+        {
+            link.Post(frame.Bytes);
+        }
+        if (frame.Acknowledged)
+        {
+            Sent(action.Id);
+        }
+        return frame.Acknowledged;
+    }
+
+    /// <summary>An action the controller will acknowledge was put on the link (a driver that names unacknowledged actions keeps it).</summary>
+    protected virtual void Sent(int actionId)
+    {
     }
 
     /// <summary>Opens the links of this brand and returns the handshake; throws <see cref="MachinaException"/> on failure.</summary>

@@ -13,11 +13,11 @@ internal interface IDeviceDriver : IAsyncDisposable
     Task<DeviceHandshake> ConnectAsync(string host, int port, IDeviceListener listener, TimeSpan timeout, CancellationToken cancellationToken);
 
     /// <summary>
-    /// Encodes a released action with the release cursor's state after it and queues the bytes for sending. Returns true when
-    /// the controller will acknowledge the action, false when it produced nothing to send (it then counts as executed as
-    /// soon as everything released before it is executed). Called on the session's loop: it must not block.
+    /// Queues the frame of a released action (encoded by the brand when it was issued) for sending. Returns true when the
+    /// controller will acknowledge the action, false when there is nothing to send (it then counts as executed as soon as
+    /// everything released before it is executed). Called on the session's loop: it must not block.
     /// </summary>
-    bool Send(RobotAction action, RobotCursor releaseState);
+    bool Send(RobotAction action, ActionFrame frame);
 
     /// <summary>
     /// The most actions the controller's driver holds sent and not yet acknowledged (its buffer), or null when it has no

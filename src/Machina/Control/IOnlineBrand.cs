@@ -20,14 +20,27 @@ internal interface IOnlineBrand
     string? WhyCannotStream(RobotAction action);
 
     /// <summary>
-    /// Why the driver's encoding cannot carry what would be sent for <paramref name="action"/> from <paramref name="after"/>, the
-    /// state it leads to (a relative move or speed beyond the wire's numbers), or null. Asked once the action is applied to the
-    /// issue cursor; a refusal undoes it, so nothing is accepted that would fail when it is sent.
+    /// Encodes <paramref name="action"/> for the wire from <paramref name="after"/>, the state it leads to: the frame the driver
+    /// sends. <paramref name="refusal"/> says why the wire cannot carry it (a relative move or speed beyond the wire's numbers),
+    /// or is null. Called once the action is applied to the issue cursor (a refusal undoes it, so nothing is accepted that would
+    /// fail when it is sent; the frame travels with the action) and again only when a reconnect re-targets the action.
     /// </summary>
-    string? WhyCannotSend(RobotAction action, RobotCursor after);
+    /// <exception cref="NotSupportedException">The driver has no instruction for the action (issuing refuses those first).</exception>
+    ActionFrame Encode(RobotAction action, RobotCursor after, out string? refusal);
 
     /// <summary>The controller-side driver files by file name, with the connection parameters (HOSTNAME, PORT…) filled in.</summary>
     IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters);
+}
+
+/// <summary>Questions asked of a brand's codec.</summary>
+internal static class OnlineBrandExtensions
+{
+    /// <summary>Why the wire cannot carry <paramref name="action"/> from <paramref name="after"/>, the state it leads to, or null (the frame is dropped).</summary>
+    internal static string? WhyCannotSend(this IOnlineBrand brand, RobotAction action, RobotCursor after)
+    {
+        brand.Encode(action, after, out string? refusal);
+        return refusal;
+    }
 }
 
 /// <summary>What a device driver gets from its robot: where to log, which clock to use, and the robot's settings.</summary>

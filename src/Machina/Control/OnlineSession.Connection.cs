@@ -133,11 +133,11 @@ internal sealed partial class OnlineSession
         int count = _buffer.Count;
         for (int i = 0; i < count; i++)
         {
-            RobotAction action = _buffer.Dequeue();
+            RobotAction action = _buffer.Dequeue().Action;
             string? refusal = issue.TryApply(action);
             if (refusal is null)
             {
-                _buffer.Enqueue(action);
+                _buffer.Enqueue(new Pending(action, null));   // re-targeted: encoded again when released
             }
             else
             {
@@ -240,15 +240,16 @@ internal sealed partial class OnlineSession
     }
 
     /// <summary>
-    /// Executes the acknowledged action and everything released before it; a fault for an unknown id. <paramref name="readValue"/>
-    /// is the value the controller read when the action is a read.
+    /// Executes the action acknowledged by its wire id <paramref name="id"/> and everything released before it (the controller
+    /// acknowledges in order; a skipped acknowledgement is covered by a later one); a fault for an id nothing in flight has.
+    /// <paramref name="readValue"/> is the value the controller read when the action is a read.
     /// </summary>
     private MachinaException? Acknowledge(int id, double? readValue)
     {
         int index = 0, found = -1;
         foreach (InFlight f in _inFlight)
         {
-            if (f.Acked && f.Action.Id == id)
+            if (f.Acked && f.WireId == id)
             {
                 found = index;
                 break;
@@ -266,7 +267,7 @@ internal sealed partial class OnlineSession
         }
         InFlight acknowledged = _inFlight.Dequeue();
         Execute(acknowledged, _inFlight.Count, _inFlight.Count + _buffer.Count, readValue);
-        _lastAcknowledgedId = id;
+        _lastAcknowledgedId = acknowledged.Action.Id;
         _liveOnLink = false; // a live pose from before this acknowledgement is older than the target it confirms
         _lastProgress = _time.GetTimestamp();
         ReleaseReady();

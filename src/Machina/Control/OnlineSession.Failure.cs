@@ -24,7 +24,7 @@ internal sealed partial class OnlineSession
             (reason, code) = (StoppedByUser, StoppedCode);
         }
         MachinaException? unknown = null;
-        WithIssueCursor(issue => unknown = Fail(link, wireId, reason, code, issue));
+        WithIssueCursor(issue => unknown = Fail(wireId, reason, code, issue));
         if (unknown is not null)
         {
             Fault(link, unknown);
@@ -40,12 +40,12 @@ internal sealed partial class OnlineSession
     /// <c>ActionFailed</c>, everything after it is cancelled, the cursors go back to where the robot is, waiters fail and the
     /// link is forgotten (the controller's program stopped). Returns a link fault instead when no action waits with that id.
     /// </summary>
-    private MachinaException? Fail(Connection link, int wireId, string reason, string? code, RobotCursor issue)
+    private MachinaException? Fail(int wireId, string reason, string? code, RobotCursor issue)
     {
         int found = -1, index = 0;
         foreach (InFlight f in _inFlight)
         {
-            if (f.Acked && link.Driver.WireId(f.Action.Id) == wireId)
+            if (f.Acked && f.WireId == wireId)
             {
                 found = index;
                 break;
@@ -65,7 +65,7 @@ internal sealed partial class OnlineSession
         RobotAction failedAction = _inFlight.Dequeue().Action;
         var cancelled = new List<RobotAction>(_inFlight.Count + _buffer.Count);
         cancelled.AddRange(_inFlight.Select(f => f.Action));
-        cancelled.AddRange(_buffer);
+        cancelled.AddRange(_buffer.Select(p => p.Action));
         _inFlight.Clear();
         _buffer.Clear();
         for (int i = 0; i < ran.Count; i++)

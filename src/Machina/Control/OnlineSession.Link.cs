@@ -20,13 +20,12 @@ internal sealed partial class OnlineSession
     {
         internal IDeviceDriver Driver { get; } = driver;
 
-        // Before the link is current the driver cannot map a controller's id to an action yet: it is mapped once it is.
+        // The driver reports the id on the wire; the session maps it to an action (held while connecting, mapped once current).
         public void OnAcknowledged(int id) => OnAcknowledged(id, null);
 
         public void OnAcknowledged(int id, double value) => OnAcknowledged(id, (double?)value);
 
-        private void OnAcknowledged(int id, double? value) =>
-            session.Report(this, () => session.OnAcknowledged(this, id, value), () => session.OnAcknowledged(this, session.ActionIdOf(this, id), value));
+        private void OnAcknowledged(int id, double? value) => session.Report(this, () => session.OnAcknowledged(this, id, value));
 
         public void OnMotion(in MotionSample sample)
         {
@@ -44,28 +43,14 @@ internal sealed partial class OnlineSession
     }
 
     /// <summary>
-    /// Posts a driver's report: on the loop it is handled when <paramref name="link"/> is current, held (as
-    /// <paramref name="whenHeld"/> if given; a live pose, <paramref name="isMotion"/>, replaces the one held before) while
-    /// <paramref name="link"/> is being connected, and ignored otherwise. Returns once it is handled, as a call into the
-    /// session did before the loop (a driver's loops hold no lock of theirs when they report); a report made from inside
-    /// the loop (a driver answering in <c>Send</c>) is handled right after the message under way.
+    /// Posts a driver's report to the loop and returns: it is handled there, in the order posted, when <paramref name="link"/>
+    /// is current, held while <paramref name="link"/> is being connected (a live pose, <paramref name="isMotion"/>, replaces the
+    /// one held before) and ignored otherwise. The driver's thread never waits for the loop: when the loop is idle it runs it
+    /// (as any poster does), else it goes on reading while the loop's owner handles the report.
     /// </summary>
-    private void Report(Connection link, Action handle, Action? whenHeld = null, bool isMotion = false)
-    {
-        Action message = () => Receive(link, handle, whenHeld, isMotion);
-        if (IsOnLoop)
-        {
-            Post(message);
-            return;
-        }
-        Ask(() =>
-        {
-            message();
-            return true;
-        });
-    }
+    private void Report(Connection link, Action handle, bool isMotion = false) => Post(() => Receive(link, handle, isMotion));
 
-    private void Receive(Connection link, Action handle, Action? whenHeld, bool isMotion)
+    private void Receive(Connection link, Action handle, bool isMotion)
     {
         if (ReferenceEquals(_link, link))
         {
@@ -77,20 +62,7 @@ internal sealed partial class OnlineSession
             {
                 _held.RemoveAll(static h => h.IsMotion);
             }
-            _held.Add((whenHeld ?? handle, isMotion));
+            _held.Add((handle, isMotion));
         }
-    }
-
-    /// <summary>The action id a controller's id stands for among the actions in flight (held acknowledgements), else the id itself.</summary>
-    private int ActionIdOf(Connection link, int controllerId)
-    {
-        foreach (InFlight f in _inFlight)
-        {
-            if (f.Acked && link.Driver.WireId(f.Action.Id) == controllerId)
-            {
-                return f.Action.Id;
-            }
-        }
-        return controllerId;
     }
 }

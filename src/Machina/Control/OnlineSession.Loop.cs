@@ -17,7 +17,7 @@ internal sealed partial class OnlineSession
     private readonly ConcurrentQueue<Action> _mailbox = new();
 
     /// <summary>Actions issued and not moved into <see cref="_buffer"/> yet: the robot adds them under its issue lock.</summary>
-    private readonly ConcurrentQueue<RobotAction> _inbox = new();
+    private readonly ConcurrentQueue<Pending> _inbox = new();
 
     /// <summary>The managed thread id of the thread running the loop, 0 while it is idle.</summary>
     private int _owner;
@@ -89,9 +89,9 @@ internal sealed partial class OnlineSession
     /// <summary>Moves the issued actions into the buffer, in issue order (on the loop; under the issue lock it takes them all).</summary>
     private void TakeIssued()
     {
-        while (_inbox.TryDequeue(out RobotAction? action))
+        while (_inbox.TryDequeue(out Pending pending))
         {
-            _buffer.Enqueue(action);
+            _buffer.Enqueue(pending);
         }
     }
 

@@ -45,7 +45,7 @@ internal sealed partial class OnlineSession
         {
             return double.IsNaN(value) ? throw LostRead(actionId) : (value, null);
         }
-        if (!_inFlight.Any(f => f.Action.Id == actionId) && !_buffer.Any(a => a.Id == actionId))
+        if (!_inFlight.Any(f => f.Action.Id == actionId) && !_buffer.Any(p => p.Action.Id == actionId))
         {
             throw _failure is not null
                 ? new RobotConnectionException($"The read (id {actionId}) did not run: {_failure.Message}", _failure)

@@ -42,7 +42,7 @@ internal sealed partial class OnlineSession
             RequeueInFlight();
             return [];
         }
-        var kept = _inFlight.Where(f => !f.Acked).Select(f => f.Action).ToList();
+        var kept = _inFlight.Where(f => !f.Acked).Select(f => new Pending(f.Action, f.Frame)).ToList();
         _inFlight.Clear();
         PutBackInFront(kept);
         _notResent.AddRange(unknown);

@@ -72,7 +72,7 @@ internal sealed partial class OnlineSession
         int index = 0, found = Unknown;
         foreach (InFlight f in _inFlight)
         {
-            if (f.Acked && driver.WireId(f.Action.Id) == controllerId)
+            if (f.Acked && f.WireId == controllerId)
             {
                 found = index;
             }
@@ -105,7 +105,7 @@ internal sealed partial class OnlineSession
             }
             _inFlight.Enqueue(f);
         }
-        var resend = remaining.Skip(heldCount).Select(f => f.Action).ToList();
+        var resend = remaining.Skip(heldCount).Select(f => new Pending(f.Action, f.Frame)).ToList();   // unchanged targets, same frames
         int resent = resend.Count;   // counted first: PutBackInFront appends the buffer to the list
         PutBackInFront(resend);
         Log(LogLevel.INFO, $"Resumed where the controller is: {Counted.Of(executedCount, "action")} ran while disconnected, {heldCount} {(heldCount == 1 ? "is" : "are")} still on the controller, "
@@ -120,12 +120,12 @@ internal sealed partial class OnlineSession
     /// <summary>Moves every action in flight back to the front of the buffer, to be released again.</summary>
     private void RequeueInFlight()
     {
-        var actions = _inFlight.Select(f => f.Action).ToList();
+        var actions = _inFlight.Select(f => new Pending(f.Action, f.Frame)).ToList();
         _inFlight.Clear();
         PutBackInFront(actions);
     }
 
-    private void PutBackInFront(List<RobotAction> actions)
+    private void PutBackInFront(List<Pending> actions)
     {
         if (actions.Count == 0)
         {
@@ -133,9 +133,9 @@ internal sealed partial class OnlineSession
         }
         actions.AddRange(_buffer);
         _buffer.Clear();
-        foreach (RobotAction a in actions)
+        foreach (Pending p in actions)
         {
-            _buffer.Enqueue(a);
+            _buffer.Enqueue(p);
         }
     }
 }

@@ -74,7 +74,7 @@ internal sealed partial class OnlineSession
         }
         var pending = new List<RobotAction>(_inFlight.Count + _buffer.Count);
         pending.AddRange(_inFlight.Select(f => f.Action));
-        pending.AddRange(_buffer);
+        pending.AddRange(_buffer.Select(p => p.Action));
         _inFlight.Clear();
         _buffer.Clear();
         if (pending.Count == 0)

@@ -15,7 +15,7 @@ internal sealed partial class OnlineSession : IActionStream
     private readonly IOnlineBrand? _brand;
     private readonly TimeProvider _time;
     private readonly EventPump _events;
-    private readonly Queue<RobotAction> _buffer = new();
+    private readonly Queue<Pending> _buffer = new();
     private readonly Queue<InFlight> _inFlight = new();
     private readonly RobotCursor _release = new();
     private readonly RobotCursor _execution = new();
@@ -49,11 +49,21 @@ internal sealed partial class OnlineSession : IActionStream
     /// <summary>How long the controller may stay silent beyond the expected duration of the action it works on.</summary>
     internal TimeSpan ResponseTimeout { get; set; } = TimeSpan.FromSeconds(30);
 
-    /// <summary>A released action waiting for execution; <c>Acked</c> when the controller will acknowledge it.</summary>
-    private readonly record struct InFlight(RobotAction Action, bool Acked, double ExpectedMs);
+    /// <summary>
+    /// A released action waiting for execution; <c>Acked</c> when the controller will acknowledge it, by <c>WireId</c> (the id the
+    /// controller knows it by: the session alone maps a driver's reports back to actions). <c>Frame</c> is what was sent, kept
+    /// for a resend with unchanged targets.
+    /// </summary>
+    private readonly record struct InFlight(RobotAction Action, bool Acked, double ExpectedMs, int WireId, ActionFrame? Frame);
+
+    /// <summary>
+    /// An action issued and not released yet, with its frame: encoded when it was issued, null once a reconnect re-targeted it
+    /// (or when the robot has no codec): it is then encoded when it is released.
+    /// </summary>
+    private readonly record struct Pending(RobotAction Action, ActionFrame? Frame);
 
     /// <inheritdoc/>
-    public void Enqueue(RobotAction action, ActionIssuedArgs? issued)
+    public void Enqueue(RobotAction action, ActionIssuedArgs? issued, ActionFrame? frame)
     {
         // Called under the robot's issue lock: the event and the action are queued in issue order; the loop releases it once
         // the robot calls ReleaseIssued after the lock. Running the loop here, under the lock, would let it apply a failure
@@ -62,7 +72,7 @@ internal sealed partial class OnlineSession : IActionStream
         {
             _events.Post(issued);
         }
-        _inbox.Enqueue(action);
+        _inbox.Enqueue(new Pending(action, frame));
     }
 
     /// <inheritdoc/>
@@ -72,7 +82,15 @@ internal sealed partial class OnlineSession : IActionStream
     public string? WhyCannotStream(RobotAction action) => _brand?.WhyCannotStream(action);
 
     /// <inheritdoc/>
-    public string? WhyCannotSend(RobotAction action, RobotCursor after) => _brand?.WhyCannotSend(action, after);
+    public string? WhyCannotSend(RobotAction action, RobotCursor after) => Encode(action, after, out _);
+
+    /// <inheritdoc/>
+    public string? Encode(RobotAction action, RobotCursor after, out ActionFrame? frame)
+    {
+        string? refusal = null;
+        frame = _brand?.Encode(action, after, out refusal);
+        return refusal;
+    }
 
     /// <summary>Actions issued and not executed yet, oldest first: first those sent to the controller, then those waiting.</summary>
     internal IReadOnlyList<RobotAction> GetPendingActions() => Ask(PendingList);
@@ -84,7 +102,10 @@ internal sealed partial class OnlineSession : IActionStream
         {
             list.Add(f.Action);
         }
-        list.AddRange(_buffer);
+        foreach (Pending p in _buffer)
+        {
+            list.Add(p.Action);
+        }
         return list;
     }
 
@@ -162,30 +183,34 @@ internal sealed partial class OnlineSession : IActionStream
     }
 
     /// <summary>Sends one action; false when the link failed doing so (then nothing more is released).</summary>
-    private bool ReleaseOne(Connection link, RobotAction action)
+    private bool ReleaseOne(Connection link, Pending pending)
     {
         // Neither failure below can happen while the cursors agree and the brand refuses at issue time what its driver cannot
         // run; if one does, the action is never skipped silently: it goes back to the front of the buffer and the link is
         // closed, with nothing after it sent.
+        RobotAction action = pending.Action;
         string? refusal = _release.TryApply(action);
         if (refusal is not null)
         {
-            return FailRelease(link, action, $"the state sent so far does not allow it: {refusal}", null);
+            return FailRelease(link, pending, $"the state sent so far does not allow it: {refusal}", null);
         }
+        ActionFrame frame;
         bool acknowledged;
         try
         {
-            acknowledged = link.Driver.Send(action, _release);
+            // The frame encoded at issue, from the same state as the release cursor's now; re-encoded only after a re-target.
+            frame = pending.Frame ?? Reencode(action);
+            acknowledged = link.Driver.Send(action, frame);
         }
         catch (Exception ex) when (ex is NotSupportedException or ArgumentException or InvalidOperationException)
         {
-            return FailRelease(link, action, $"it could not be encoded for the controller: {ex.Message}", ex);
+            return FailRelease(link, pending with { Frame = null }, $"it could not be encoded for the controller: {ex.Message}", ex);
         }
         if (_inFlight.Count == 0)
         {
             _lastProgress = _time.GetTimestamp();
         }
-        _inFlight.Enqueue(new InFlight(action, acknowledged, ExpectedMilliseconds(action, _release)));
+        _inFlight.Enqueue(new InFlight(action, acknowledged, ExpectedMilliseconds(action, _release), link.Driver.WireId(action.Id), frame));
         if (_host.IsListening(OnlineEvent.Released))
         {
             _events.Post(new ActionReleasedArgs(action, _buffer.Count, _release.Snapshot()));
@@ -193,9 +218,21 @@ internal sealed partial class OnlineSession : IActionStream
         return true;
     }
 
-    private bool FailRelease(Connection link, RobotAction action, string why, Exception? cause)
+    /// <summary>Encodes an action whose frame a reconnect dropped, from the release cursor (the state after it).</summary>
+    private ActionFrame Reencode(RobotAction action)
     {
-        PutBackInFront([action]);
+        if (_brand is null)
+        {
+            return ActionFrame.Nothing;   // no codec (a test's driver): the driver decides
+        }
+        ActionFrame frame = _brand.Encode(action, _release, out string? refusal);
+        return refusal is null ? frame : throw new ArgumentException(refusal);
+    }
+
+    private bool FailRelease(Connection link, Pending pending, string why, Exception? cause)
+    {
+        RobotAction action = pending.Action;
+        PutBackInFront([pending]);
         Fault(link, new RobotConnectionException(
             $"{action.ToInstruction()} (id {action.Id}) was not sent: {why} Nothing after it was sent; remove it with ClearPendingActions.", cause));
         return false;

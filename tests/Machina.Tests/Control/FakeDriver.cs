@@ -77,7 +77,7 @@ internal sealed class FakeDriver : IDeviceDriver
         return Resume(Listener!);
     }
 
-    public bool Send(RobotAction action, RobotCursor releaseState)
+    public bool Send(RobotAction action, ActionFrame frame)
     {
         if (CannotEncode(action))
         {

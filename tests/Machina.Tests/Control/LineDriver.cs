@@ -49,8 +49,6 @@ internal sealed class LineDriver(RobotLogger log, TimeProvider time, string? mon
         return isPose;
     }
 
-    public bool Send(RobotAction action, RobotCursor releaseState) => false;
-
     public int WireId(int actionId) => actionId;
 
     public void Adopt(int actionId)

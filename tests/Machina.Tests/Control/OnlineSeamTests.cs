@@ -14,7 +14,11 @@ public class OnlineSeamTests
         public string? WhyCannotStream(RobotAction action) =>
             action is ActionIOAnalog ? $"{action.ToInstruction()} is not supported online on this test brand." : null;
 
-        public string? WhyCannotSend(RobotAction action, RobotCursor after) => null;
+        public ActionFrame Encode(RobotAction action, RobotCursor after, out string? refusal)
+        {
+            refusal = null;
+            return ActionFrame.Nothing;
+        }
 
         public IReadOnlyDictionary<string, string> DriverModules(IReadOnlyDictionary<string, string> parameters) => new Dictionary<string, string>();
     }

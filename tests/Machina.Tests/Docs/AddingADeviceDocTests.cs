@@ -35,7 +35,6 @@ public partial class AddingADeviceDocTests
         (typeof(BrandDefinition), ["CreateCompiler", "Online", "DefaultPort", "DriverNextSteps"]),
         (typeof(VirtualControllerRegistry), []),
         (typeof(OnlineSession), []),
-        (typeof(AwaitedAcknowledgements), []),
         (typeof(DriverParameters), []),
         (typeof(TcpLink), []),
         (typeof(KukaOnline), []),

@@ -50,9 +50,8 @@ internal sealed partial class AbbDriver
     private void OnFailure(in AbbMessage message)
     {
         var (wireId, code) = message.ToFailure();
-        int actionId = _awaiting.Resolve(wireId);
-        Log.Error($"The controller could not run action {actionId}: {AbbFailure.Describe(code)}");
-        Listener?.OnFailed(actionId, AbbFailure.Describe(code), code.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        Log.Error($"The controller could not run action {wireId}: {AbbFailure.Describe(code)}");
+        Listener?.OnFailed(wireId, AbbFailure.Describe(code), code.ToString(System.Globalization.CultureInfo.InvariantCulture));
     }
 
     private static MotionSample Sample(AbbMonitorUpdate update) =>

@@ -6,9 +6,6 @@ namespace Machina;
 /// </summary>
 internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDriver
 {
-    private readonly AwaitedAcknowledgements _awaiting = new(WireId);
-    private readonly List<AbbRequest> _requests = new(4);
-    private byte[] _encoded = new byte[1024];
     private TcpLink? _monitor;
 
     // Handshake parts ($20..$23, and $25 from driver 1.6), filled by the receive loop.
@@ -49,43 +46,10 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
         "Install this Machina's driver with \"machina drivers abb --install --host H\", or load the modules \"machina drivers abb --host H --port P --out DIR\" writes " +
         "(Robot.GetDeviceDriverModules) into the motion task and start it; then connect again.");
 
-    /// <inheritdoc/>
-    public bool Send(RobotAction action, RobotCursor releaseState)
-    {
-        TcpLink link = Link ?? throw new InvalidOperationException("the link is not open");
-        int wireId = WireId(action.Id);
-        _requests.Clear();
-        int count = AbbActionEncoder.Encode(wireId == action.Id ? action : WithId(action, wireId), releaseState, _requests);
-        if (count == 0)
-        {
-            return false;
-        }
-        int length = 0;
-        bool acknowledged = false;
-        foreach (AbbRequest request in _requests)
-        {
-            if (_encoded.Length - length < request.MaxEncodedLength)
-            {
-                Array.Resize(ref _encoded, Math.Max(_encoded.Length * 2, length + request.MaxEncodedLength));
-            }
-            length += request.EncodeTo(_encoded.AsSpan(length));
-            acknowledged |= request.Id == wireId;
-        }
-        if (acknowledged)
-        {
-            Adopt(action.Id);
-        }
-        link.Post(_encoded.AsSpan(0, length));
-        return acknowledged;
-    }
+    /// <summary>Encodes <paramref name="action"/> from <paramref name="after"/> with the ABB codec and sends it (a driver used without a session).</summary>
+    internal bool Send(RobotAction action, RobotCursor after) => Send(action, Codec.Encode(action, after, out _));
 
-    /// <summary>A copy of an action carrying the id to send (only for ids beyond what RAPID reads exactly).</summary>
-    private static RobotAction WithId(RobotAction action, int wireId)
-    {
-        RobotAction copy = action.CloneUnissued();
-        copy.Id = wireId;
-        return copy;
-    }
+    private static AbbOnline Codec { get; } = new();
 
     /// <summary>The id sent on the wire: RAPID reads ids as 32-bit floats, so they wrap below 2^23 (fix of bug A10).</summary>
     internal static int WireId(int actionId) => ((actionId - 1) % AbbRequest.MaxId) + 1;
@@ -94,10 +58,9 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
     int IDeviceDriver.WireId(int actionId) => WireId(actionId);
 
     /// <inheritdoc/>
-    /// <remarks>Also how <see cref="Send"/> records an action it sent: its acknowledgement is awaited in order.</remarks>
+    /// <remarks>Nothing to do: the session keeps what is in flight and maps the wire ids this driver reports.</remarks>
     public void Adopt(int actionId)
     {
-        _awaiting.Expect(actionId);
     }
 
     /// <inheritdoc/>
@@ -119,13 +82,12 @@ internal sealed partial class AbbDriver : DeviceDriver<AbbMessage>, IDeviceDrive
 
     private void Acknowledge(int wireId)
     {
-        int actionId = _awaiting.Resolve(wireId);
         if (_read is (int readId, double value) && readId == wireId)
         {
             _read = null;
-            Listener?.OnAcknowledged(actionId, value);
+            Listener?.OnAcknowledged(wireId, value);
             return;
         }
-        Listener?.OnAcknowledged(actionId);
+        Listener?.OnAcknowledged(wireId);
     }
 }

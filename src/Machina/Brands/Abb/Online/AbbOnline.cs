@@ -26,22 +26,40 @@ internal sealed class AbbOnline : IOnlineBrand
     };
 
     /// <inheritdoc/>
-    /// <remarks>The driver reads every number into a RAPID <c>num</c>, a 32-bit float: a value beyond ±3.4E+38 is refused.</remarks>
-    public string? WhyCannotSend(RobotAction action, RobotCursor after)
+    /// <remarks>
+    /// The requests carry the wire id (RAPID reads ids as 32-bit floats, <see cref="AbbDriver.WireId(int)"/>). The driver reads
+    /// every number into a RAPID <c>num</c>, a 32-bit float: a value beyond ±3.4E+38 is refused.
+    /// </remarks>
+    public ActionFrame Encode(RobotAction action, RobotCursor after, out string? refusal)
     {
+        refusal = null;
         var requests = new List<AbbRequest>(2);
-        AbbActionEncoder.Encode(action.Id is >= 0 and <= AbbRequest.MaxId ? action : WithWireId(action), after, requests);
+        int wireId = action.Id < 0 ? 0 : AbbDriver.WireId(action.Id);
+        if (AbbActionEncoder.Encode(action.Id is >= 0 and <= AbbRequest.MaxId ? action : WithWireId(action), after, requests) == 0)
+        {
+            return ActionFrame.Nothing;
+        }
+        int length = 0;
+        bool acknowledged = false;
         foreach (AbbRequest request in requests)
         {
-            for (int i = 0; i < request.ParameterCount; i++)
+            for (int i = 0; i < request.ParameterCount && refusal is null; i++)
             {
                 if (Math.Abs(request[i]) > float.MaxValue)
                 {
-                    return Refuse(action, $"{Num.G(request[i])} is beyond what a RAPID number holds (±3.4E+38).");
+                    refusal = Refuse(action, $"{Num.G(request[i])} is beyond what a RAPID number holds (±3.4E+38).");
                 }
             }
+            length += request.MaxEncodedLength;
+            acknowledged |= request.Id == wireId;
         }
-        return null;
+        byte[] bytes = new byte[length];
+        length = 0;
+        foreach (AbbRequest request in requests)
+        {
+            length += request.EncodeTo(bytes.AsSpan(length));
+        }
+        return new ActionFrame(length == bytes.Length ? bytes : bytes[..length], acknowledged);
     }
 
     /// <summary>

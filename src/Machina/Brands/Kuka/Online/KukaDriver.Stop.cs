@@ -28,11 +28,8 @@ internal sealed partial class KukaDriver
     private Task ControlAsync(string command, int answer, string what, CancellationToken cancellationToken) =>
         _control.RunAsync(() =>
             {
-                lock (_gate)
-                {
-                    TcpLink link = Link ?? throw new InvalidOperationException($"Cannot {what}: the link is not open.");
-                    link.Post(Encoding.ASCII.GetBytes(command));
-                }
+                TcpLink link = Link ?? throw new InvalidOperationException($"Cannot {what}: the link is not open.");
+                link.Post(Encoding.ASCII.GetBytes(command));
             }, answer, what,
             $"The KUKA driver did not answer the {what} command within {Num.G(_control.Timeout.TotalSeconds)} s (is the machina_kuka_driver of this Machina loaded, with STOP, PAUSE and RESUME in machina_kuka_server.xml?).",
             cancellationToken);

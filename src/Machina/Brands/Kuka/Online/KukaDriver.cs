@@ -7,14 +7,11 @@ namespace Machina;
 /// <c>S</c> and acknowledgements <c>R</c> in) and, when the controller runs the monitor, a second client on port + 1 that
 /// receives live poses (<c>P</c>). Never more than <see cref="KukaProtocol.Capacity"/> actions are on the controller
 /// unacknowledged, so a batch can never overwrite a slot of the driver's ring that was not executed (fix of bug K7): the
-/// session reads <see cref="Capacity"/> and releases no more; an action sent beyond it is refused here, never held.
+/// session, which alone keeps what is in flight, reads <see cref="Capacity"/> and releases no more.
 /// </summary>
 internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDriver
 {
     private readonly double _motionUpdateRate;
-    private readonly object _gate = new();
-    private readonly Queue<int> _awaiting = new();
-    private readonly StringBuilder _batch = new(1024);
     private TcpLink? _monitor;
 
     /// <summary>Creates a driver that logs to the robot's log, measures its timeouts with its clock and asks for its motion update rate.</summary>
@@ -27,21 +24,6 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
 
     /// <summary>True when the monitor connection (live poses) is open.</summary>
     internal bool HasMonitor => _monitor is not null;
-
-    /// <summary>The highest action id acknowledged on this link (acknowledgements come in order).</summary>
-    private int _lastAcknowledged;
-
-    /// <summary>Actions sent and not acknowledged yet (at most <see cref="KukaProtocol.Capacity"/>).</summary>
-    internal int OnController
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _awaiting.Count;
-            }
-        }
-    }
 
     /// <inheritdoc/>
     protected override async Task<DeviceHandshake> OpenAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
@@ -59,39 +41,10 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
         "Copy the files \"machina drivers kuka --host H --port P --out DIR\" writes (Robot.GetDeviceDriverModules) to the controller and start the driver again " +
         "(docs/getting-started.md); then connect again.");
 
-    /// <inheritdoc/>
-    public bool Send(RobotAction action, RobotCursor releaseState)
-    {
-        if (Link is null)
-        {
-            throw new InvalidOperationException("the link is not open");
-        }
-        if (KukaActionEncoder.Encode(action, action.Id, releaseState) is not KukaInstruction instruction)
-        {
-            return false;
-        }
-        if (action is ActionMessage message && KukaActionEncoder.IsTruncated(message.Message))
-        {
-            Log.Warning($"KUKA messages hold {KukaProtocol.MaxTextLength} characters: the message of action {action.Id} is shown cut to \"{instruction.Text}\".");
-        }
-        if (action is ActionAttachTool && releaseState.Tool is Tool tool)
-        {
-            Log.Warning($"The weight and centre of gravity of tool \"{tool.Name}\" are not sent to KUKA controllers; set its load data on the controller.");
-        }
-        lock (_gate)
-        {
-            if (_awaiting.Count >= KukaProtocol.Capacity)
-            {
-                // The session releases no more than Capacity; a send beyond it would overwrite a slot not yet executed.
-                throw new InvalidOperationException($"the controller's {KukaProtocol.Capacity} slots hold actions not executed yet; action {action.Id} cannot be sent now.");
-            }
-            _awaiting.Enqueue(action.Id);
-            _batch.Clear();
-            KukaInstruction.AppendBatch(_batch, [instruction]);
-            Link.Post(Encoding.ASCII.GetBytes(_batch.ToString()));
-        }
-        return true;
-    }
+    /// <summary>Encodes <paramref name="action"/> from <paramref name="after"/> with the KUKA codec and sends it (a driver used without a session).</summary>
+    internal bool Send(RobotAction action, RobotCursor after) => Send(action, Codec.Encode(action, after, out _));
+
+    private static KukaOnline Codec { get; } = new();
 
     /// <inheritdoc/>
     public int? Capacity => KukaProtocol.Capacity;
@@ -101,19 +54,9 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
     public int WireId(int actionId) => actionId;
 
     /// <inheritdoc/>
-    /// <remarks>
-    /// An action whose acknowledgement already arrived (the controller ran it between its state report and the adoption) is
-    /// not awaited again: it would hold a slot forever and the session would count more room than the controller has.
-    /// </remarks>
+    /// <remarks>Nothing to do: the session keeps what is in flight, counts the slots and maps the ids this driver reports.</remarks>
     public void Adopt(int actionId)
     {
-        lock (_gate)
-        {
-            if (actionId > _lastAcknowledged)
-            {
-                _awaiting.Enqueue(actionId);
-            }
-        }
     }
 
     /// <inheritdoc/>
@@ -163,37 +106,13 @@ internal sealed partial class KukaDriver : DeviceDriver<KukaElement>, IDeviceDri
 
     private void Acknowledge(int wireId, double? readValue)
     {
-        int actionId = wireId;
-        lock (_gate)
-        {
-            int sent = _awaiting.Count, index = 0, found = -1;
-            foreach (int awaiting in _awaiting)
-            {
-                if (index == sent)
-                {
-                    break;
-                }
-                if (awaiting == wireId)
-                {
-                    found = index;
-                    break;
-                }
-                index++;
-            }
-            for (int i = 0; i <= found; i++)
-            {
-                actionId = _awaiting.Dequeue();
-            }
-            _lastAcknowledged = Math.Max(_lastAcknowledged, wireId);
-        }
-        // Outside the lock: the session's loop may call Send while handling it. Every acknowledgement after a read carries
-        // V (EthernetKRL keeps the value set last); the session keeps it for reads only.
+        // Every acknowledgement after a read carries V (EthernetKRL keeps the value set last); the session keeps it for reads only.
         if (readValue is double value)
         {
-            Listener?.OnAcknowledged(actionId, value);
+            Listener?.OnAcknowledged(wireId, value);
             return;
         }
-        Listener?.OnAcknowledged(actionId);
+        Listener?.OnAcknowledged(wireId);
     }
 
     /// <inheritdoc/>

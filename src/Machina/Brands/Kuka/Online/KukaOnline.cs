@@ -13,22 +13,37 @@ internal sealed class KukaOnline : IOnlineBrand
     public string? WhyCannotStream(RobotAction action) => KukaActionEncoder.WhyCannotStream(action);
 
     /// <inheritdoc/>
-    /// <remarks>The driver reads every number into a KRL <c>REAL</c>, a 32-bit float: a value beyond ±3.4E+38 is refused.</remarks>
-    public string? WhyCannotSend(RobotAction action, RobotCursor after)
+    /// <remarks>
+    /// One batch of one instruction. The driver reads every number into a KRL <c>REAL</c>, a 32-bit float: a value beyond
+    /// ±3.4E+38 is refused. What the controller will not get (a message cut to its length, a tool's load) is the frame's note.
+    /// </remarks>
+    public ActionFrame Encode(RobotAction action, RobotCursor after, out string? refusal)
     {
+        refusal = null;
         if (KukaActionEncoder.Encode(action, action.Id, after) is not KukaInstruction instruction)
         {
-            return null;
+            return ActionFrame.Nothing;
         }
         KukaValues values = instruction.Values;
-        for (int i = 0; i < KukaProtocol.ValueCountOf(instruction.Code); i++)
+        for (int i = 0; i < KukaProtocol.ValueCountOf(instruction.Code) && refusal is null; i++)
         {
             if (Math.Abs(values[i]) > float.MaxValue)
             {
-                return KukaActionEncoder.Refuse(action, $"{Num.G(values[i])} is beyond what a KRL REAL holds (±3.4E+38).");
+                refusal = KukaActionEncoder.Refuse(action, $"{Num.G(values[i])} is beyond what a KRL REAL holds (±3.4E+38).");
             }
         }
-        return null;
+        string? note = null;
+        if (action is ActionMessage message && KukaActionEncoder.IsTruncated(message.Message))
+        {
+            note = $"KUKA messages hold {KukaProtocol.MaxTextLength} characters: the message of action {action.Id} is shown cut to \"{instruction.Text}\".";
+        }
+        else if (action is ActionAttachTool && after.Tool is Tool tool)
+        {
+            note = $"The weight and centre of gravity of tool \"{tool.Name}\" are not sent to KUKA controllers; set its load data on the controller.";
+        }
+        var batch = new System.Text.StringBuilder(128);
+        KukaInstruction.AppendBatch(batch, [instruction]);
+        return new ActionFrame(System.Text.Encoding.ASCII.GetBytes(batch.ToString()), true, note);
     }
 
     /// <inheritdoc/>

@@ -203,7 +203,7 @@ internal sealed partial class UrDriver : ILinkReceiver
     }
 
     /// <summary>Keeps the ids sent and not acknowledged, oldest first, to name the one a stopped program did not run.</summary>
-    private void Sent(int id)
+    protected override void Sent(int id)
     {
         lock (_unacknowledged)
         {

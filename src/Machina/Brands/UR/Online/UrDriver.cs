@@ -12,9 +12,6 @@ namespace Machina;
 internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
 {
     private readonly DeviceContext _context;
-    private readonly AwaitedAcknowledgements _awaiting = new(id => id);
-    private readonly int[] _values = new int[UrActionEncoder.MaxValues];
-    private readonly byte[] _encoded = new byte[UrActionEncoder.MaxValues * 4];
     private string _version = "";
 
     /// <summary>The last read value response (id, value × FactorAnalog), handed over with the acknowledgement of that id.</summary>
@@ -90,29 +87,11 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         "This Machina sends its own driver program on every connection, so another program connected back in its place: is another Machina driving this robot? Stop it, then connect again.");
 
     /// <inheritdoc/>
-    public bool Send(RobotAction action, RobotCursor releaseState)
-    {
-        TcpLink link = Link ?? throw new InvalidOperationException("the link is not open");
-        int count = UrActionEncoder.Encode(action, releaseState, _values);
-        if (count == 0)
-        {
-            return false;
-        }
-        int length = UrWire.Write(_values.AsSpan(0, count), _encoded);
-        Adopt(action.Id);
-        link.Post(_encoded.AsSpan(0, length));
-        return true;
-    }
-
-    /// <inheritdoc/>
     public int WireId(int actionId) => actionId;
 
     /// <inheritdoc/>
-    public void Adopt(int actionId)
-    {
-        _awaiting.Expect(actionId);
-        Sent(actionId);
-    }
+    /// <remarks>The session keeps what is in flight and maps the ids; this driver keeps the ids it sent only to name the action a stopped program did not run.</remarks>
+    public void Adopt(int actionId) => Sent(actionId);
 
     /// <inheritdoc/>
     protected override void OnMessage(in UrReply reply)
@@ -148,15 +127,14 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
 
     private void Acknowledge(int id)
     {
-        int actionId = _awaiting.Resolve(id);
         Acknowledged(id);
         if (_read is (int readId, int raw) && readId == id)
         {
             // Digital and analog values alike travel × FactorAnalog (a digital input: 0 or 1,000,000).
             _read = null;
-            Listener?.OnAcknowledged(actionId, raw / UrWire.FactorAnalog);
+            Listener?.OnAcknowledged(id, raw / UrWire.FactorAnalog);
             return;
         }
-        Listener?.OnAcknowledged(actionId);
+        Listener?.OnAcknowledged(id);
     }
 }

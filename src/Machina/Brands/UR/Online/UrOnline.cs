@@ -18,10 +18,17 @@ internal sealed class UrOnline : IOnlineBrand
 
     /// <inheritdoc/>
     /// <remarks>The encoder itself: what it cannot scale into its integers, or a speed that rounds to 0, is refused with the reason.</remarks>
-    public string? WhyCannotSend(RobotAction action, RobotCursor after)
+    public ActionFrame Encode(RobotAction action, RobotCursor after, out string? refusal)
     {
         Span<int> values = stackalloc int[UrActionEncoder.MaxValues];
-        return UrActionEncoder.TryEncode(action, after, values, out _);
+        refusal = UrActionEncoder.TryEncode(action, after, values, out int count);
+        if (refusal is not null || count == 0)
+        {
+            return ActionFrame.Nothing;
+        }
+        Span<byte> encoded = stackalloc byte[UrActionEncoder.MaxValues * 4];
+        int length = UrWire.Write(values[..count], encoded);
+        return new ActionFrame(encoded[..length].ToArray(), true);
     }
 
     /// <inheritdoc/>

@@ -1,0 +1,90 @@
+using Machina.Simulation;
+
+namespace Machina.Benchmarks;
+
+/// <summary>
+/// Issue 45's "plain program", as a user writes it: <c>Robot.Create</c>, online, <c>ConnectAsync</c> to the brand's twin
+/// (in this process, instant execution, default options: no model), <c>SpeedTo(200)</c>, <c>Move(±1, 0, 0)</c> for every
+/// action, <c>WaitForCompletionAsync</c>, default window. Creating the robot and connecting are part of the timed work, as in
+/// the program; the twin is started outside it. The row's CPU time (host and twin together, the whole process) over the size
+/// is the processor time per action the issue's ≤ 20 µs target is stated for.
+/// </summary>
+internal sealed class PlainProgramScenario(RobotType brand) : Scenario
+{
+    private IAsyncDisposable? _twin;
+    private Robot? _bot;
+
+    public override string Name => "plain-" + brand.ToString().ToLowerInvariant();
+
+    public override string Title => $"Plain program: Robot.Create, online, connect to the {brand} twin (instant, no model), SpeedTo(200), "
+        + "Move(±1,0,0) per action, WaitForCompletion, default window";
+
+    public override int TargetSize => 20_000;
+
+    public override IReadOnlyList<int> ScalingSizes => [];
+
+    public override Target Target => Catalog.PlainProgramTarget;
+
+    public override bool MultiThreaded => true;
+
+    public override Func<object?> Prepare(int size)
+    {
+        int port;
+        switch (brand)
+        {
+            case RobotType.ABB:
+                var abb = new VirtualAbbController(new VirtualAbbControllerOptions { InstantExecution = true });
+                abb.StartAsync().GetAwaiter().GetResult();
+                (_twin, port) = (abb, abb.Port);
+                break;
+            case RobotType.UR:
+                var ur = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+                ur.StartAsync().GetAwaiter().GetResult();
+                (_twin, port) = (ur, ur.Port);
+                break;
+            case RobotType.KUKA:
+                var kuka = new VirtualKukaController(new VirtualKukaControllerOptions { InstantExecution = true });
+                kuka.StartAsync().GetAwaiter().GetResult();
+                (_twin, port) = (kuka, kuka.Port);
+                break;
+            default:
+                throw new NotSupportedException($"{brand} has no twin.");
+        }
+        return () =>
+        {
+            Dictionary<string, double> threadsBefore = ThreadCpu.Read();
+            // A robot per run, as a program makes one: the previous run's robot is disconnected first.
+            _bot?.DisconnectAsync().GetAwaiter().GetResult();
+            var bot = Robot.Create("Plain", brand.ToString());
+            _bot = bot;
+            bot.ControlMode("online");
+            long connectStart = System.Diagnostics.Stopwatch.GetTimestamp();
+            bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
+            TimeSpan connect = System.Diagnostics.Stopwatch.GetElapsedTime(connectStart);
+            Dictionary<string, double> threadsConnected = ThreadCpu.Read();
+            bot.SpeedTo(200);
+            Vector right = new(1, 0, 0), left = new(-1, 0, 0);
+            for (int i = 0; i < size; i++)
+            {
+                bot.Move((i & 1) == 0 ? right : left);
+            }
+            // Generous: 1 ms per action plus a minute, so a stalled link fails the scenario instead of hanging the harness.
+            using var timeout = new CancellationTokenSource(TimeSpan.FromMinutes(1) + TimeSpan.FromMilliseconds(size));
+            bot.WaitForCompletionAsync(timeout.Token).GetAwaiter().GetResult();
+            if (Environment.GetEnvironmentVariable("MACHINA_BENCH_THREADS") == "1")
+            {
+                Console.Error.WriteLine($"{Name}: connect {connect.TotalMilliseconds:0} ms, processor time by thread while connecting: "
+                    + $"{ThreadCpu.Difference(threadsBefore, threadsConnected)}; streaming: {ThreadCpu.Difference(threadsConnected, ThreadCpu.Read())}");
+            }
+            return null;
+        };
+    }
+
+    public override void Cleanup()
+    {
+        _bot?.DisconnectAsync().GetAwaiter().GetResult();
+        _twin?.DisposeAsync().AsTask().GetAwaiter().GetResult();
+        _bot = null;
+        _twin = null;
+    }
+}
