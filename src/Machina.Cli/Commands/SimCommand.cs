@@ -57,12 +57,6 @@ internal static partial class SimCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
-        if (args.Value("--load") is not null)
-        {
-            return TwinPrograms.Loading.FirstOrDefault(t => t.Brand.Type == brand) is { RunLoaded: { } runLoaded } twin
-                ? await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, context).ConfigureAwait(false)
-                : throw new UsageException($"--load runs compiled programs on {LoadingNames()}, not on {Brands.Name(brand)}.");
-        }
         bool urLayout = brand == UrBrand.Definition.Type && args.Value("--port") is null;
         int port = urLayout ? UrLayout[0].Port : args.Port("--port", DefaultPort, allowZero: true);
         string bindText = args.Value("--bind") ?? "127.0.0.1";
@@ -71,6 +65,13 @@ internal static partial class SimCommand
             throw new UsageException($"--bind needs an IP address of this computer such as 127.0.0.1 or 0.0.0.0, not \"{bindText}\".");
         }
         double speed = args.Positive("--speed-factor", 1);
+        // Options are checked before --load takes over: a mistyped one is an error there too, never ignored.
+        if (args.Value("--load") is not null)
+        {
+            return TwinPrograms.Loading.FirstOrDefault(t => t.Brand.Type == brand) is { RunLoaded: { } runLoaded } twin
+                ? await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, context).ConfigureAwait(false)
+                : throw new UsageException($"--load runs compiled programs on {LoadingNames()}, not on {Brands.Name(brand)}.");
+        }
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");
 

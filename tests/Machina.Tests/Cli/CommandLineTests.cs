@@ -61,6 +61,8 @@ public class CommandLineTests
     [InlineData(new[] { "sim", "abb", "--port", "70000" }, "--port must be a port number from 0 to 65535, not \"70000\"")]
     [InlineData(new[] { "sim", "abb", "--speed-factor", "-1" }, "--speed-factor must be a number greater than 0")]
     [InlineData(new[] { "sim", "abb", "--bind", "localhost:1" }, "--bind needs an IP address")]
+    [InlineData(new[] { "sim", "abb", "--load", "p.machina", "--bind", "localhost:1" }, "--bind needs an IP address")]
+    [InlineData(new[] { "sim", "kuka", "--load", "p.machina", "--speed-factor", "0" }, "--speed-factor must be a number greater than 0")]
     [InlineData(new[] { "sim", "marlin" }, "\"marlin\" is not a brand sim accepts here; use one of: abb, ur, kuka.")]
     [InlineData(new[] { "drivers", "abb", "--host", "1.2.3.4", "--out", "d" }, "machina drivers needs --port P")]
     [InlineData(new[] { "models", "IRB", "120" }, "quote names with spaces")]
