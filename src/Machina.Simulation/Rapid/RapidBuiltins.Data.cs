@@ -173,13 +173,14 @@ internal static partial class RapidBuiltins
             task.CancellationToken.WaitHandle.WaitOne(1); // another task may be the one to make the condition true (ends at once when stopped)
         }
         task.CancellationToken.ThrowIfCancellationRequested();
+        task.RunPendingTraps(); // an interrupt is served while the task waits (the trap may be what makes the condition true)
     }
 
     private static void SetBit(RapidCall call, bool on)
     {
         (string name, int index) = Signal(call, 0, "do");
         RapidTwinController c = call.Machine.Task.Controller;
-        c.Io.SetBit("do", index, on);
+        c.SetBit("do", index, on);
         c.Arm.Record(call.Line, TwinTraceKind.Output, $"{name} = {(on ? 1 : 0)}");
     }
 }
