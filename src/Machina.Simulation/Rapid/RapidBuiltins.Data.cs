@@ -102,6 +102,7 @@ internal static partial class RapidBuiltins
             _ => 0.0,
         }),
         Function("RunMode", "symnum", [Sw("Main")], _ => 1.0),
+        Function("RobOS", "bool", [], _ => false), // the twin stands in for a virtual controller (RobotStudio), where RobOS is FALSE
         Function("IsStopMoveAct", "bool", [Sw("FromMoveTask"), Sw("FromNonMoveTask")], _ => false),
         Instruction("Incr", [P("Name", "num", true)], call => call.Set(0, (double)call.Value(0) + 1)),
         Instruction("Decr", [P("Name", "num", true)], call => call.Set(0, (double)call.Value(0) - 1)),

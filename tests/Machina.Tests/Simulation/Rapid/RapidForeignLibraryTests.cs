@@ -123,11 +123,12 @@ public class RapidForeignLibraryTests
               IF do1 = 1 AND di1 = 0 TPWrite "do1 on, di1 off";
               TPWrite "reg1 " \Num:=reg1;
               TPWrite "go1 " \Num:=GOutput(go1);
+              IF NOT RobOS() TPWrite "virtual controller";
               ClkStart clock1;
             """,
             signals: [("do1", "signaldo"), ("di1", "signaldi"), ("go1", "signalgo"), ("gi1", "signalgi")]);
 
-        Assert.Equal(["do1 on, di1 off", "reg1 1", "go1 13"], twin.Pendant.Lines);
+        Assert.Equal(["do1 on, di1 off", "reg1 1", "go1 13", "virtual controller"], twin.Pendant.Lines);
     }
 
     [Fact]
