@@ -15,7 +15,7 @@ public sealed partial class VirtualAbbController
         {
             throw new InvalidOperationException($"The virtual ABB controller has no digital input \"{signal}\"; its inputs are DI_1 to DI_16.");
         }
-        twin.Io.SetBit(input.Bank, input.Index, on);
+        twin.SetBit(input.Bank, input.Index, on);
     }
 
     /// <summary>
@@ -36,6 +36,6 @@ public sealed partial class VirtualAbbController
         {
             throw new InvalidOperationException($"The virtual ABB controller has no analog input \"{signal}\"; its analog inputs are AI_1 to AI_4.");
         }
-        twin.Io.SetNumber(input.Bank, input.Index, value);
+        twin.SetNumber(input.Bank, input.Index, value);
     }
 }

@@ -15,10 +15,12 @@ internal static partial class SimCommand
     /// </summary>
     private static IAsyncDisposable? StartRws(RunningController controller, IPAddress bind, Func<int> port, Action<string> log, Action<string> announce)
     {
-        if (controller.Inner.Controller is not VirtualAbbController { Twin: { } twin })
-        {
-            return null;
-        }
+        return controller.Inner.Controller is VirtualAbbController { Twin: { } twin } ? StartRws(twin, bind, port, log, announce) : null;
+    }
+
+    /// <summary>Starts Robot Web Services for <paramref name="twin"/> (see above), reachable on <paramref name="bind"/> at <paramref name="port"/>.</summary>
+    internal static IAsyncDisposable StartRws(Machina.Simulation.Rapid.RapidTwinController twin, IPAddress bind, int port, Action<string> log, Action<string> announce)
+    {
         var server = new RwsTwinServer(twin);
         server.Start();
         TcpRelay relay;

@@ -16,6 +16,7 @@ internal static partial class SimCommand
         $"""
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
                machina sim abb|kuka --load PROGRAM [--model M]
+               machina sim abb --load PROGRAM [--eio EIO.cfg] [--signal [TYPE:]NAME[=VALUE]]... [--rws-port N]
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
@@ -42,7 +43,13 @@ internal static partial class SimCommand
                             and run its main in real time, as a controller would, telling its pendant messages, until every
                             task ends or Ctrl+C. Repeat it for several tasks (--load T_ROB1=driver.mod --load T_MON=monitor.mod):
                             T_ROB1 moves the arm, the others run in the background, PERS data are shared; without TASK= the
-                            program goes to T_ROB1
+                            program goes to T_ROB1. With --rws-port, RWS is served in front of the tasks as without --load
+          --eio FILE        abb --load: the signals of a controller's IO configuration file (EIO.cfg, e.g. from a backup's
+                            SYSPAR folder: each EIO_SIGNAL's -Name, -SignalType DI/DO/AI/AO/GI/GO and -Default), beside the board's
+          --signal [TYPE:]NAME[=VALUE]
+                            abb --load: a signal of the IO configuration and its value at the start (default 0). The board's
+                            DO_1…DO_16, DI_1…DI_16, AO_1…AO_4, AI_1…AI_4 are always there; another name needs its TYPE
+                            (di, do, ai or ao), e.g. --signal di:signalRobotEStop=0 --signal DI_1=1. Repeatable
                             kuka: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
                             time and list each step it makes, then stop (exit code 1 when the controller stops it)
 
@@ -50,7 +57,7 @@ internal static partial class SimCommand
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port"],
+        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio"],
         Flags: ["--quiet"],
         RunAsync);
 

@@ -22,12 +22,68 @@ internal static class SimLoad
         return new TaskLoad(RapidTwinController.MotionTask, value);
     }
 
+    /// <summary>What else a --load run may have: signals of the IO configuration (<c>[TYPE:]NAME[=VALUE]</c>), and RWS on a port.</summary>
+    internal sealed record Extras(IReadOnlyList<string> Signals, string? Eio, System.Net.IPAddress Bind, int? RwsPort);
+
+    /// <summary>One <c>--signal [TYPE:]NAME[=VALUE]</c>: the RAPID type (null: a signal of the board) and the value at the start.</summary>
+    internal static (string? Type, string Name, double Value) ParseSignal(string text)
+    {
+        string? type = null;
+        int colon = text.IndexOf(':', StringComparison.Ordinal);
+        if (colon > 0)
+        {
+            type = text[..colon].ToLowerInvariant() switch
+            {
+                "di" => "signaldi", "do" => "signaldo", "ai" => "signalai", "ao" => "signalao",
+                _ => throw new UsageException($"--signal {text}: the type \"{text[..colon]}\" is not di, do, ai or ao."),
+            };
+            text = text[(colon + 1)..];
+        }
+        int eq = text.IndexOf('=', StringComparison.Ordinal);
+        string name = eq < 0 ? text : text[..eq];
+        double value = 0;
+        if (name.Length == 0 || !char.IsAsciiLetter(name[0]) || !name.All(c => char.IsAsciiLetterOrDigit(c) || c == '_')
+            || (eq >= 0 && !double.TryParse(text[(eq + 1)..], System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture, out value)))
+        {
+            throw new UsageException($"--signal needs [TYPE:]NAME[=VALUE], e.g. di:signalRobotEStop=0 or DI_1=1, not \"{text}\".");
+        }
+        return (type, name, value);
+    }
+
+    /// <summary>The signals of the EIO.cfg file at <paramref name="path"/> (none when null), with their default values.</summary>
+    private static IEnumerable<(string? Type, string Name, double Value)> Eio(string? path, CliContext context)
+    {
+        if (path is null)
+        {
+            return [];
+        }
+        try
+        {
+            return RapidEioConfig.Signals(File.ReadAllText(context.FullPath(path))).Select(s => ((string?)s.Type, s.Name, s.Default));
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException($"Cannot read the IO configuration \"{path}\": {ex.Message}");
+        }
+    }
+
     /// <summary>
     /// Loads every task's program and runs every task's main until all end or Ctrl+C, telling the pendant's lines (labelled with their
     /// task when there are several tasks). With one program in T_ROB1 it tells what it always told.
     /// </summary>
-    internal static async Task<int> RunAbbAsync(IReadOnlyList<string> loads, RobotModel? model, CliContext context)
+    internal static async Task<int> RunAbbAsync(IReadOnlyList<string> loads, RobotModel? model, CliContext context, Extras? extras = null)
     {
+        extras ??= new Extras([], null, System.Net.IPAddress.Loopback, null);
+        IReadOnlyList<(string Name, string Type)> board = Machina.Simulation.VirtualAbbController.Signals;
+        (string? Type, string Name, double Value)[] signals = [.. Eio(extras.Eio, context), .. extras.Signals.Select(ParseSignal)];
+        foreach ((string? type, string name, _) in signals)
+        {
+            if (type is null && !board.Any(b => b.Name.Equals(name, StringComparison.OrdinalIgnoreCase))
+                && !signals.Any(s => s.Type is not null && s.Name.Equals(name, StringComparison.OrdinalIgnoreCase)))
+            {
+                throw new UsageException($"--signal {name}: the board has no such signal; give its type, e.g. --signal di:{name}=0.");
+            }
+        }
         TaskLoad[] tasks = [.. loads.Select(Parse)];
         foreach (IGrouping<string, TaskLoad> twice in tasks.GroupBy(t => t.Task, StringComparer.OrdinalIgnoreCase).Where(g => g.Count() > 1))
         {
@@ -38,7 +94,9 @@ internal static class SimLoad
             Model = model ?? Brands.Model(AbbBrand.Definition.DefaultModel, AbbBrand.Definition.Type)!,
             RealTime = true,
             Time = context.Time,
-            Signals = Machina.Simulation.VirtualAbbController.Signals, // the virtual ABB's IO board: DO_1…DO_16, DI_1…DI_16, AO_1…AO_4, AI_1…AI_4
+            // The virtual ABB's IO board (DO_1…DO_16, DI_1…DI_16, AO_1…AO_4, AI_1…AI_4) and the signals --signal declares.
+            Signals = [.. board, .. signals.Where(s => s.Type is not null && !board.Any(b => b.Name.Equals(s.Name, StringComparison.OrdinalIgnoreCase)))
+                .DistinctBy(s => s.Name, StringComparer.OrdinalIgnoreCase).Select(s => (s.Name, s.Type!))],
         };
         var twin = new RapidTwinController(options) { LabelsTasks = tasks.Length > 1 || tasks[0].Task != RapidTwinController.MotionTask };
         TextWriter output = context.Stdout;
@@ -68,6 +126,10 @@ internal static class SimLoad
                 throw new CliException($"Cannot read the RAPID program \"{load.Path}\": {ex.Message}");
             }
         }
+        foreach ((_, string name, double value) in signals)
+        {
+            twin.SetSignal(name, value);
+        }
         twin.Pendant.Logged += line => Log("  pendant: " + line);
         string names = string.Join(", ", twin.TaskNames);
         Log(tasks.Length == 1 && !twin.LabelsTasks
@@ -82,6 +144,7 @@ internal static class SimLoad
                 ended.TrySetResult();
             }
         };
+        await using IAsyncDisposable? rws = extras.RwsPort is { } rwsPort ? SimCommand.StartRws(twin, extras.Bind, rwsPort, Log, Log) : null;
         twin.StartTasks();
         try
         {

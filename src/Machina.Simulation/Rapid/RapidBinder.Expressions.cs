@@ -12,7 +12,7 @@ internal sealed partial class RapidBinder
     /// <summary>Binds <paramref name="e"/> and checks that its type fits <paramref name="expected"/> (null: any).</summary>
     private RapidDataType? BindValue(RapidExpr e, RapidDataType? expected, RapidScope scope)
     {
-        RapidDataType? type = BindExpression(e, expected, scope);
+        RapidDataType? type = AsValue(e, BindExpression(e, expected, scope), expected);
         if (expected is { } want && type is { } got && !want.Accepts(got))
         {
             throw Refuse(e.Line, RapidLoadException.Type($"type mismatch: expected {want}, found {got}"));
@@ -158,6 +158,20 @@ internal sealed partial class RapidBinder
             : throw Refuse(u.Line, RapidLoadException.Type($"'{u.Op}' needs a num, not a {type}"));
     }
 
+    /// <summary>
+    /// A signal named where a number is expected (<c>di1 = 1</c>, <c>reg1 := gi1</c>) is read as its value, as RAPID does: the name is
+    /// marked and its type becomes num. Any other expression keeps <paramref name="type"/>.
+    /// </summary>
+    private static RapidDataType? AsValue(RapidExpr e, RapidDataType? type, RapidDataType? expected)
+    {
+        if (e is RapidName name && type is { Rank: 0 } t && RapidTypes.IsSignal(t.Element) && expected is { Rank: 0 } want && want.Element.IsNumeric)
+        {
+            name.ReadsSignal = true;
+            return NumType;
+        }
+        return type;
+    }
+
     private RapidDataType BindBinary(RapidBinary b, RapidScope scope)
     {
         switch (b.Op)
@@ -168,7 +182,7 @@ internal sealed partial class RapidBinder
                 return BoolType;
             case "=" or "<>":
             {
-                RapidDataType? left = BindExpression(b.Left, null, scope);
+                RapidDataType? left = AsValue(b.Left, BindExpression(b.Left, null, scope), NumType);
                 BindValue(b.Right, left, scope);
                 return BoolType;
             }
@@ -177,8 +191,8 @@ internal sealed partial class RapidBinder
                 BindValue(b.Right, NumType, scope);
                 return b.Op is "DIV" or "MOD" ? NumType : BoolType;
         }
-        RapidDataType? l = BindExpression(b.Left, null, scope);
-        RapidDataType? r = BindExpression(b.Right, l is { Element.Kind: RapidTypeKind.Record } ? l : null, scope);
+        RapidDataType? l = AsValue(b.Left, BindExpression(b.Left, null, scope), NumType);
+        RapidDataType? r = AsValue(b.Right, BindExpression(b.Right, l is { Element.Kind: RapidTypeKind.Record } ? l : null, scope), NumType);
         if (l is { Rank: 0 } lt && r is { Rank: 0 } rt)
         {
             if (lt.Element.IsNumeric && rt.Element.IsNumeric)
@@ -281,7 +295,7 @@ internal sealed partial class RapidBinder
         {
             ps = routine is not null
                 ? [.. routine.Parameters.Select(p => (p.Name, (string?)p.TypeName, p.Optional, p.IsSwitch, p.Mode != RapidParamMode.In, p.Rank))]
-                : [.. builtin.Parameters.Select(p => (p.Name, p.Type, p.Optional, p.Switch, p.Ref, 0))];
+                : [.. builtin.Parameters.Select(p => (p.Name, p.Type, p.Optional, p.Switch, p.Ref, p.Rank))];
             _signatures[key] = ps;
         }
         return ps;

@@ -158,6 +158,16 @@ internal sealed partial class RapidBinder
             case RapidJump j:
                 BindJump(j, scope);
                 break;
+            case RapidLateCall late:
+                BindValue(late.Name, new RapidDataType(RapidTypes.String), scope);
+                foreach (RapidArg arg in late.Args)
+                {
+                    if (arg.Value is not null)
+                    {
+                        BindExpression(arg.Value, null, scope);
+                    }
+                }
+                break;
             case RapidConnect c:
             {
                 RapidDataType? type = BindTarget(c.Interrupt, scope, "connected");

@@ -6,7 +6,8 @@ namespace Machina.Simulation.Rapid;
 /// <param name="Optional">True for an optional argument.</param>
 /// <param name="Switch">True for a switch (an optional argument without value, e.g. <c>\Off</c>).</param>
 /// <param name="Ref">True when the argument must be data the routine may write (VAR, PERS or INOUT).</param>
-internal sealed record RapidBuiltinParam(string Name, string? Type, bool Optional = false, bool Switch = false, bool Ref = false);
+/// <param name="Rank">The array's dimensions for an array parameter (<c>{*}</c>), 0 otherwise.</param>
+internal sealed record RapidBuiltinParam(string Name, string? Type, bool Optional = false, bool Switch = false, bool Ref = false, int Rank = 0);
 
 /// <summary>A predefined instruction (procedure) or function of the twin, with its parameters and what it does.</summary>
 internal sealed class RapidBuiltin(string name, string? returns, RapidBuiltinParam[] parameters, Func<RapidCall, object?> run)

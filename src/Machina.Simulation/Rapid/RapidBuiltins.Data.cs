@@ -102,6 +102,7 @@ internal static partial class RapidBuiltins
             _ => 0.0,
         }),
         Function("RunMode", "symnum", [Sw("Main")], _ => 1.0),
+        Function("RobOS", "bool", [], _ => false), // the twin stands in for a virtual controller (RobotStudio), where RobOS is FALSE
         Function("IsStopMoveAct", "bool", [Sw("FromMoveTask"), Sw("FromNonMoveTask")], _ => false),
         Instruction("Incr", [P("Name", "num", true)], call => call.Set(0, (double)call.Value(0) + 1)),
         Instruction("Decr", [P("Name", "num", true)], call => call.Set(0, (double)call.Value(0) - 1)),
@@ -173,13 +174,14 @@ internal static partial class RapidBuiltins
             task.CancellationToken.WaitHandle.WaitOne(1); // another task may be the one to make the condition true (ends at once when stopped)
         }
         task.CancellationToken.ThrowIfCancellationRequested();
+        task.RunPendingTraps(); // an interrupt is served while the task waits (the trap may be what makes the condition true)
     }
 
     private static void SetBit(RapidCall call, bool on)
     {
         (string name, int index) = Signal(call, 0, "do");
         RapidTwinController c = call.Machine.Task.Controller;
-        c.Io.SetBit("do", index, on);
+        c.SetBit("do", index, on);
         c.Arm.Record(call.Line, TwinTraceKind.Output, $"{name} = {(on ? 1 : 0)}");
     }
 }

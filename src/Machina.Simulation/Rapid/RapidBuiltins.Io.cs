@@ -16,7 +16,7 @@ internal static partial class RapidBuiltins
             }
             (string name, int index) = Signal(call, 2, "do");
             RapidTwinController c = call.Machine.Task.Controller;
-            c.Io.SetBit("do", index, value == 1);
+            c.SetBit("do", index, value == 1);
             c.Arm.Record(call.Line, TwinTraceKind.Output, $"{name} = {RapidValues.FormatNumber(value)}");
         }),
         Instruction("SetAO", [P("Signal", "signalao"), P("Value", "num")], call =>
@@ -24,7 +24,7 @@ internal static partial class RapidBuiltins
             double value = call.Num(1);
             (string name, int index) = Signal(call, 0, "ao");
             RapidTwinController c = call.Machine.Task.Controller;
-            c.Io.SetNumber("ao", index, value);
+            c.SetNumber("ao", index, value);
             c.Arm.Record(call.Line, TwinTraceKind.Output, $"{name} = {RapidValues.FormatNumber(value)}");
         }),
         Instruction("WaitDI", [P("Signal", "signaldi"), P("Value", "num"), Opt("MaxTime", "num"), Opt("TimeFlag", "bool", true)], call =>
@@ -54,6 +54,7 @@ internal static partial class RapidBuiltins
                     throw call.Error(RapidErrorNumbers.WaitMaxTime, "WaitDI: the input did not change within \\MaxTime");
                 }
                 c.Clock.Wait(0.01, call.Machine.Task.CancellationToken);
+                call.Machine.Task.RunPendingTraps();
             }
             if (call.Has(3))
             {
@@ -70,6 +71,31 @@ internal static partial class RapidBuiltins
             }
             ((RapidSignalRef)call.Value(1)).Signal = name;
         }),
+        Instruction("SetGO", [Opt("SDelay", "num"), P("Signal", "signalgo"), P("Value", "num")], call =>
+        {
+            double value = call.Num(2);
+            if (value < 0 || value != Math.Floor(value))
+            {
+                throw ArgumentError(call, $"SetGO: the value {RapidValues.FormatNumber(value)} is not a whole number of 0 or more");
+            }
+            (string name, int index) = Signal(call, 1, "go");
+            RapidTwinController c = call.Machine.Task.Controller;
+            c.SetNumber("go", index, value);
+            c.Arm.Record(call.Line, TwinTraceKind.Output, $"{name} = {RapidValues.FormatNumber(value)}");
+        }),
+        Instruction("PulseDO", [Sw("High"), Opt("PLength", "num"), P("Signal", "signaldo")], call =>
+        {
+            // The pulse (0.2 s unless \PLength) is not waited for: the output is left as the pulse ends it (low, or high with \High).
+            (string name, int index) = Signal(call, 2, "do");
+            RapidTwinController c = call.Machine.Task.Controller;
+            c.SetBit("do", index, true);
+            c.SetBit("do", index, call.Has(0));
+            c.Arm.Record(call.Line, TwinTraceKind.Output, $"{name} pulsed");
+        }),
+        Function("GOutput", "num", [P("Signal", "signalgo")], call => call.Machine.Task.Controller.Io.GetNumber("go", Signal(call, 0, "go").Index)),
+        Function("GInput", "num", [P("Signal", "signalgi")], call => call.Machine.Task.Controller.Io.GetNumber("gi", Signal(call, 0, "gi").Index)),
+        Function("GOutputDnum", "dnum", [P("Signal", "signalgo")], call => call.Machine.Task.Controller.Io.GetNumber("go", Signal(call, 0, "go").Index)),
+        Function("GInputDnum", "dnum", [P("Signal", "signalgi")], call => call.Machine.Task.Controller.Io.GetNumber("gi", Signal(call, 0, "gi").Index)),
         Function("DOutput", "num", [P("Signal", "signaldo")], call => Bit(call, "do")),
         Function("DInput", "num", [P("Signal", "signaldi")], call => Bit(call, "di")),
         Function("AOutput", "num", [P("Signal", "signalao")], call => call.Machine.Task.Controller.Io.GetNumber("ao", Signal(call, 0, "ao").Index)),

@@ -16,14 +16,15 @@ internal static partial class RapidBuiltins
                 throw ArgumentError(call, $"WaitTime: the time {RapidValues.FormatNumber(seconds)} s is negative");
             }
             RapidTwinController c = call.Machine.Task.Controller;
-            if (!call.Machine.Task.IsMotionTask)
+            RapidTask task = call.Machine.Task;
+            if (!task.IsMotionTask)
             {
                 // A background task (the monitor) waits on the wall clock: its period is real, it adds nothing to program time.
-                c.Clock.WaitAside(seconds, call.Machine.Task.CancellationToken);
+                WaitServingTraps(task, seconds, s => c.Clock.WaitAside(s, task.CancellationToken));
                 return;
             }
-            c.Arm.FinishBlend(call.Machine.Task.CancellationToken); // the arm stops at its last waypoint before the wait counts
-            c.Clock.Wait(seconds, call.Machine.Task.CancellationToken);
+            c.Arm.FinishBlend(task.CancellationToken); // the arm stops at its last waypoint before the wait counts
+            WaitServingTraps(task, seconds, s => c.Clock.Wait(s, task.CancellationToken));
             c.Arm.Record(call.Line, TwinTraceKind.Wait, string.Create(CultureInfo.InvariantCulture, $"WaitTime {seconds}"));
         }),
         Instruction("TPWrite", [P("String", "string"), Opt("Num", "num"), Opt("Bool", "bool"), Opt("Pos", "pos"), Opt("Orient", "orient"), Opt("Dnum", "dnum")], call =>
@@ -79,6 +80,30 @@ internal static partial class RapidBuiltins
             }
         }),
     ];
+
+    /// <summary>The longest a wait sleeps before it looks for traps to run, when the task ordered timer or signal interrupts (seconds).</summary>
+    private const double TrapLatency = 0.05;
+
+    /// <summary>
+    /// Waits <paramref name="seconds"/> with <paramref name="wait"/>; when the task ordered timer or signal interrupts, in slices that end
+    /// when a timer is due or after <see cref="TrapLatency"/>, running the queued traps between them (a trap interrupts a wait).
+    /// </summary>
+    private static void WaitServingTraps(RapidTask task, double seconds, Action<double> wait)
+    {
+        if (!task.HasEventOrders)
+        {
+            wait(seconds);
+            return;
+        }
+        double left = seconds;
+        while (left > 0)
+        {
+            double slice = Math.Min(left, task.NextTimerWithin(TrapLatency));
+            wait(slice);
+            left -= slice;
+            task.RunPendingTraps();
+        }
+    }
 
     private static IEnumerable<RapidBuiltin> Settings() =>
     [

@@ -28,6 +28,9 @@ internal sealed class RapidName(int line, string name) : RapidExpr(line)
 
     /// <summary>The slot of the local in its routine's frame (when <see cref="Global"/> is null).</summary>
     public int Slot { get; set; } = -1;
+
+    /// <summary>True for a signal read as a value (<c>WaitUntil di1 = 1</c>): it evaluates to the signal's value, not the signal.</summary>
+    public bool ReadsSignal { get; set; }
 }
 
 /// <summary>A record component, e.g. <c>p.trans.x</c>.</summary>

@@ -16,6 +16,10 @@ internal sealed partial class RapidMachine
             case RapidName n:
             {
                 object value = (n.Global ?? frame!.Cells[n.Slot]).Value;
+                if (n.ReadsSignal && value is RapidSignalRef signal)
+                {
+                    return SignalValue(signal, n.Line);
+                }
                 return ReferenceEquals(value, Absent)
                     ? throw new RapidRuntimeException(RapidErrorNumbers.NotPres, n.Line, $"the optional parameter '{n.Name}' is not present")
                     : value;
@@ -195,6 +199,15 @@ internal sealed partial class RapidMachine
             return RapidGeometry.ToPosRecord(sum);
         }
         return l is RapidRecord p ? RapidGeometry.ToPosRecord(RapidGeometry.ToVector(p) * (double)r) : RapidGeometry.ToPosRecord(RapidGeometry.ToVector((RapidRecord)r) * (double)l);
+    }
+
+    /// <summary>The value of a signal read in an expression: 0 or 1 for a digital one, the number of an analog or group one.</summary>
+    private object SignalValue(RapidSignalRef signal, int line)
+    {
+        RapidTwinController c = Task.Controller;
+        (string Bank, int Index) s = (signal.Signal is { } name ? c.Signal(name) : null)
+            ?? throw new RapidRuntimeException(RapidErrorNumbers.NoAliasIoDef, line, $"the signal variable refers to no signal of the IO configuration");
+        return s.Bank[0] == 'd' ? RapidBoxes.Num(c.Io.GetBit(s.Bank, s.Index) ? 1 : 0) : RapidBoxes.Num(c.Io.GetNumber(s.Bank, s.Index));
     }
 
     private static double Checked(double value, RapidBinary b) => double.IsFinite(value)

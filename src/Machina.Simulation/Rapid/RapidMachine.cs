@@ -171,6 +171,9 @@ internal sealed partial class RapidMachine(RapidTask task)
             }
             case RapidJump j:
                 return Jump(j, frame);
+            case RapidLateCall late:
+                Call(LateTarget(late, frame), late.Args, frame, late.Line);
+                return RapidFlow.Next;
             case RapidConnect c:
                 Store(c.Interrupt, frame, (double)Task.Connect(c.Routine!));
                 return RapidFlow.Next;

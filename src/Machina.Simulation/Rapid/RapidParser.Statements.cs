@@ -46,6 +46,16 @@ internal sealed partial class RapidParser
     private RapidStmt Statement()
     {
         RapidToken head = Peek;
+        if (head.IsSymbol("%"))
+        {
+            // Late binding: %expression% arguments; (the procedure is named by a string found when the statement runs).
+            Next();
+            RapidExpr procedure = Expression();
+            Expect("%");
+            RapidArg[] lateArgs = Peek.IsSymbol(";") ? [] : Arguments(";");
+            Expect(";");
+            return new RapidLateCall(head.Line, procedure, lateArgs);
+        }
         if (head.Kind != RapidTokenKind.Name)
         {
             throw Error($"a statement expected, found '{head.Text}'");

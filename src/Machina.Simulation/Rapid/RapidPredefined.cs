@@ -51,10 +51,24 @@ internal static partial class RapidPredefined
             Add(program, name, RapidTypes.Num, value);
         }
         AddLanguageConstants(program);
+        // The data of the system module USER (user.sys) that a controller loads into every task: registers reg1…reg5 and clock1. A
+        // program's own user.sys (or data of those names) takes their place.
+        for (int r = 1; r <= 5; r++)
+        {
+            AddVariable(program, $"reg{r}", RapidTypes.Num);
+        }
+        AddVariable(program, "clock1", RapidTypes.All["clock"]);
         foreach ((string name, string type) in controller.Options.Signals)
         {
             Add(program, name, RapidTypes.All[type], new RapidSignalRef { Signal = name });
         }
+    }
+
+    private static void AddVariable(RapidProgram program, string name, RapidType type)
+    {
+        var dataType = new RapidDataType(type);
+        program.Globals[name] = new RapidCell(name, dataType, RapidStorage.Var, RapidValues.Default(dataType));
+        program.Predefined.Add(name);
     }
 
     private static RapidRecord Load0() => new(RapidTypes.Loaddata, [0.001, RapidGeometry.ToPosRecord(new Vector(0, 0, 0.001)), RapidGeometry.ToOrientRecord(Rotation.Identity), 0.0, 0.0, 0.0]);

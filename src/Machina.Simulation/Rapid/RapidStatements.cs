@@ -138,3 +138,16 @@ internal sealed class RapidConnect(int line, RapidExpr interrupt, string trap) :
     /// <summary>The trap routine, set by the binder.</summary>
     public RapidRoutine? Routine { get; set; }
 }
+
+/// <summary>A late-bound procedure call, <c>%"proc" + name% args;</c>: the procedure is found by its name when the statement runs.</summary>
+internal sealed class RapidLateCall(int line, RapidExpr name, RapidArg[] args) : RapidStmt(line)
+{
+    /// <summary>The string expression that names the procedure.</summary>
+    public RapidExpr Name { get; } = name;
+
+    /// <summary>The arguments.</summary>
+    public RapidArg[] Args { get; } = args;
+
+    /// <summary>The last procedure this call resolved to, with its argument map (most late calls name the same few procedures).</summary>
+    public RapidCallTarget? Last { get; set; }
+}

@@ -114,6 +114,7 @@ internal sealed partial class RapidTask
             _errorOrders.RemoveAll(o => o.Interrupt == interrupt);
             _persOrders.RemoveAll(o => o.Interrupt == interrupt);
             _persSnapshot = [.. _persOrders];
+            ForgetEvents(interrupt);
         }
     }
 
@@ -124,11 +125,9 @@ internal sealed partial class RapidTask
         {
             foreach ((int interrupt, int d, int n, int t) in _errorOrders)
             {
-                if ((d == 0 || d == domain) && (n < 0 || n == number) && (t == 0 || t == type) && _connections.TryGetValue(interrupt, out RapidRoutine? trap))
+                if ((d == 0 || d == domain) && (n < 0 || n == number) && (t == 0 || t == type))
                 {
-                    _pending.Enqueue((trap, new RapidTrapData { Domain = domain, Number = number, Kind = type }));
-                    _queued = true;
-                    _hasPending = true;
+                    Enqueue(interrupt, new RapidTrapData { Domain = domain, Number = number, Kind = type });
                 }
             }
         }
@@ -150,6 +149,14 @@ internal sealed partial class RapidTask
             _persChecked = orders;
             CheckPersOrders(orders);
         }
+        if (_timerCount > 0)
+        {
+            CheckTimers();
+        }
+        if (_disabled)
+        {
+            return;
+        }
         while (_queued)
         {
             (RapidRoutine Trap, RapidTrapData Data) next;
@@ -158,7 +165,7 @@ internal sealed partial class RapidTask
                 if (!_pending.TryDequeue(out next))
                 {
                     _queued = false;
-                    _hasPending = _persOrders.Count > 0;
+                    _hasPending = StillWatching();
                     return;
                 }
             }
@@ -186,6 +193,7 @@ internal sealed partial class RapidTask
             _persOrders.Clear();
             _persSnapshot = [];
             _pending.Clear();
+            ForgetAllEvents();
             _queued = false;
             _hasPending = false;
         }

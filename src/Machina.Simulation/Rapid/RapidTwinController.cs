@@ -14,8 +14,9 @@ internal sealed partial class RapidTwinController
     public const string MotionTask = "T_ROB1";
 
     private readonly Lock _gate = new();
+    private readonly Lock _signalGate = new();
     private readonly Dictionary<string, RapidTask> _tasks = new(StringComparer.OrdinalIgnoreCase);
-    private readonly Dictionary<string, (bool Digital, bool Output, int Index)> _signals = new(StringComparer.OrdinalIgnoreCase);
+    private readonly Dictionary<string, (string Bank, int Index)> _signals = new(StringComparer.OrdinalIgnoreCase);
     private RapidProgramState _state;
     private string? _error;
 
@@ -28,20 +29,20 @@ internal sealed partial class RapidTwinController
         foreach ((string name, string type) in Options.Signals)
         {
             string kind = type.ToLowerInvariant();
-            if (kind is not ("signaldo" or "signaldi" or "signalao" or "signalai"))
+            if (kind is not ("signaldo" or "signaldi" or "signalao" or "signalai" or "signalgo" or "signalgi"))
             {
-                throw new ArgumentException($"The signal \"{name}\" has the type \"{type}\"; the twin has signaldo, signaldi, signalao and signalai.", nameof(options));
+                throw new ArgumentException($"The signal \"{name}\" has the type \"{type}\"; the twin has signaldo, signaldi, signalao, signalai, signalgo and signalgi.", nameof(options));
             }
             string bank = kind[^2..];
-            _signals[name] = (bank[0] == 'd', bank[1] == 'o', _signals.Count(s => Bank(s.Value) == bank));
+            _signals[name] = (bank, _signals.Count(s => s.Value.Bank == bank));
         }
         foreach (string bank in new[] { "do", "di" })
         {
-            Io.AddBits(bank, Math.Max(1, _signals.Count(s => Bank(s.Value) == bank)));
+            Io.AddBits(bank, Math.Max(1, _signals.Count(s => s.Value.Bank == bank)));
         }
-        foreach (string bank in new[] { "ao", "ai" })
+        foreach (string bank in new[] { "ao", "ai", "go", "gi" })
         {
-            Io.AddNumbers(bank, Math.Max(1, _signals.Count(s => Bank(s.Value) == bank)));
+            Io.AddNumbers(bank, Math.Max(1, _signals.Count(s => s.Value.Bank == bank)));
         }
     }
 
@@ -65,7 +66,7 @@ internal sealed partial class RapidTwinController
     /// <summary>Counts a write of persistent data (call it after the value is stored).</summary>
     internal void PersistentWritten() => Interlocked.Increment(ref _persistentWrites);
 
-    /// <summary>The signals of the IO configuration: banks do, di, ao, ai, in the order of the options.</summary>
+    /// <summary>The signals of the IO configuration: banks do, di, ao, ai, go, gi, in the order of the options.</summary>
     public TwinIo Io { get; } = new();
 
     /// <summary>The event log and the FlexPendant's messages.</summary>
@@ -182,8 +183,5 @@ internal sealed partial class RapidTwinController
     }
 
     /// <summary>The IO bank and index of signal <paramref name="name"/>, or null when the configuration has no such signal.</summary>
-    internal (string Bank, int Index)? Signal(string name) =>
-        _signals.TryGetValue(name, out (bool Digital, bool Output, int Index) s) ? (Bank(s), s.Index) : null;
-
-    private static string Bank((bool Digital, bool Output, int Index) s) => (s.Digital ? "d" : "a") + (s.Output ? "o" : "i");
+    internal (string Bank, int Index)? Signal(string name) => _signals.TryGetValue(name, out (string Bank, int Index) s) ? s : null;
 }

@@ -209,11 +209,11 @@ internal sealed partial class RwsTwinServer
             {
                 return Error(400, "Bad Request", null, $"A digital signal is 0 or 1, not {Text(set)}.");
             }
-            Twin.Io.SetBit(signal.Bank, signal.Index, set == 1);
+            Twin.SetBit(signal.Bank, signal.Index, set == 1);
         }
         else
         {
-            Twin.Io.SetNumber(signal.Bank, signal.Index, set);
+            Twin.SetNumber(signal.Bank, signal.Index, set);
         }
         return RwsResponse.NoContent();
     }

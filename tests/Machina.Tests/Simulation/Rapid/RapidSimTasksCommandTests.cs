@@ -37,5 +37,34 @@ public class RapidSimTasksCommandTests
         Assert.Equal(1, result.Exit);
         Assert.Equal("FAILED: T_B: b.mod: Load error: line 3: Reference error: 'NoSuchThing' is not a procedure (unknown instruction)\n", result.Stdout);
     }
+
+    [Fact]
+    public async Task SimAbbLoad_SignalsFromTheCommandLineAndAnEioFile_AreTheProgramsIOConfiguration()
+    {
+        using var cli = new CliRunner();
+        cli.Write("EIO.cfg", "EIO:CFG_1.0:5:60::\n#\nEIO_SIGNAL:\n\n      -Name \"diPart\" -SignalType \"DI\" -Unit \"B\" -UnitMap \"1\"\\\n      -Default \"1\"\n\n"
+            + "      -Name \"goRecipe\" -SignalType \"GO\" -Unit \"B\" -UnitMap \"8-15\"\n");
+        cli.Write("io.mod", "MODULE io\n  PROC main()\n    TPWrite \"part \" \\Num:=diPart;\n    TPWrite \"estop \" \\Num:=DInput(signalRobotEStop);\n"
+            + "    TPWrite \"recipe \" \\Num:=GOutput(goRecipe);\n    TPWrite \"di3 \" \\Num:=DInput(DI_3);\n  ENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "io.mod", "--eio", "EIO.cfg", "--signal", "di:signalRobotEStop=1", "--signal", "DI_3=1",
+            "--signal", "goRecipe=5", "--rws-port", "0");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Contains("  pendant: part 1\n  pendant: estop 1\n  pendant: recipe 5\n  pendant: di3 1\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Matches("\nRobot Web Services \\(RWS 1\\.0\\) on 127\\.0\\.0\\.1:[1-9][0-9]*, user \"Default User\"", result.Stdout);
+    }
+
+    [Fact]
+    public async Task SimAbbLoad_ASignalNotOnTheBoardWithoutItsType_IsAUsageError()
+    {
+        using var cli = new CliRunner();
+        cli.Write("a.mod", "MODULE a\n  PROC main()\n  ENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "a.mod", "--signal", "signalRobotEStop=1");
+
+        Assert.Equal(2, result.Exit);
+        Assert.Contains("--signal signalRobotEStop: the board has no such signal; give its type, e.g. --signal di:signalRobotEStop=0.", result.Stderr, StringComparison.Ordinal);
+    }
 }
 #endif
