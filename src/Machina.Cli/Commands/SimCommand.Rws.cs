@@ -10,12 +10,12 @@ internal static partial class SimCommand
 {
     /// <summary>
     /// Starts Robot Web Services for the virtual ABB's RAPID twin, reachable on <paramref name="bind"/> at <paramref name="port"/>
-    /// (read when the controller runs RAPID; 0: a free one), and names the port through <paramref name="announce"/> (the relay's events go to <paramref name="log"/>); null
+    /// (read only when the controller runs RAPID; 0: a free one), and names the port through <paramref name="announce"/> (the relay's events go to <paramref name="log"/>); null
     /// when the controller runs no RAPID. Disposing stops both.
     /// </summary>
     private static IAsyncDisposable? StartRws(RunningController controller, IPAddress bind, Func<int> port, Action<string> log, Action<string> announce)
     {
-        return controller.Inner.Controller is VirtualAbbController { Twin: { } twin } ? StartRws(twin, bind, port, log, announce) : null;
+        return controller.Inner.Controller is VirtualAbbController { Twin: { } twin } ? StartRws(twin, bind, port(), log, announce) : null;
     }
 
     /// <summary>Starts Robot Web Services for <paramref name="twin"/> (see above), reachable on <paramref name="bind"/> at <paramref name="port"/>.</summary>
@@ -26,7 +26,7 @@ internal static partial class SimCommand
         TcpRelay relay;
         try
         {
-            relay = TcpRelay.Start(bind, port(), [new RelayRoute(0, server.Port, "RWS")], log);
+            relay = TcpRelay.Start(bind, port, [new RelayRoute(0, server.Port, "RWS")], log);
         }
         catch
         {

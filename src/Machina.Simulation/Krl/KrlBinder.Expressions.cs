@@ -232,7 +232,7 @@ internal sealed partial class KrlBinder
         KrlExpr argument = call.Arguments[i];
         if (argument is KrlOmitted)
         {
-            if (call.Builtin is not null)
+            if (call.Builtin is not null && !call.Builtin.Parameters[i].Optional)
             {
                 throw Error(argument.Line, $"argument {i + 1} of {call.Name} cannot be left out on the twin");
             }

@@ -20,6 +20,8 @@ internal static class KrlBuiltins
         }));
         Add(new("StrLen", KrlType.Int, [KrlBuiltinParameter.Text], (_, a) => a[0] is string s ? s.Length : KrlValues.Text((KrlArrayValue)a[0]).Length));
         Add(new("Set_KrlMsg", KrlType.Int, [new(KrlType.Enum), new(KrlTypes.KrlMsg), new(KrlType.Array(KrlTypes.KrlMsgPar, 0)), new(KrlTypes.KrlMsgOpt)], Message));
+        KrlBuiltinParameter optionalText = new(KrlType.Array(KrlType.Char, 0), Optional: true);
+        Add(new("MsgNotify", null, [KrlBuiltinParameter.Text, optionalText, new(KrlType.Int, Optional: true), optionalText, optionalText, optionalText], Notify));
         Add(Math1("ABS", Math.Abs));
         Add(Math1("SQRT", x => x < 0 ? throw new KrlRuntimeException("SQRT of a negative number") : Math.Sqrt(x)));
         Add(Math1("SIN", x => Math.Sin(x * Math.PI / 180)));
@@ -28,6 +30,23 @@ internal static class KrlBuiltins
         Add(Math1("ACOS", x => Math.Acos(x) * 180 / Math.PI));
         Add(new("ATAN2", KrlType.Real, [KrlBuiltinParameter.Real, KrlBuiltinParameter.Real],
             (_, a) => Math.Atan2(KrlValues.ToReal(a[0]), KrlValues.ToReal(a[1])) * 180 / Math.PI));
+    }
+
+    /// <summary>
+    /// MsgNotify(text[], module[], number, par1[], par2[], par3[]) of KUKA's message library: a notification on the pendant,
+    /// "NOTIFY module number: text" with %1 to %3 replaced by the parameters (any of the last five may be left out).
+    /// </summary>
+    private static object? Notify(KrlMachine machine, object[] a)
+    {
+        string Text(int i) => i < a.Length && a[i] is { } value ? (value is string s ? s : KrlValues.Text((KrlArrayValue)value)) : "";
+        string text = Text(0);
+        for (int i = 1; i <= 3; i++)
+        {
+            text = text.Replace("%" + i.ToString(System.Globalization.CultureInfo.InvariantCulture), Text(2 + i), StringComparison.Ordinal);
+        }
+        string number = a.Length > 2 && a[2] is int n ? " " + n.ToString(System.Globalization.CultureInfo.InvariantCulture) : "";
+        machine.Controller.Pendant.Log($"NOTIFY {Text(1)}{number}: {text}".Replace("NOTIFY :", "NOTIFY:", StringComparison.Ordinal));
+        return null;
     }
 
     private static KrlBuiltin Math1(string name, Func<double, double> f) =>

@@ -23,7 +23,10 @@ internal static class KrlUnsupported
     }
 
     /// <summary>Why data type <paramref name="name"/> is not on the twin, or null when it is simply unknown.</summary>
-    public static string? Type(string name) => name.ToUpperInvariant() is "RSIERR" or "RSI_STATE" or "RSI_MOVECORR"
-        ? $"the data type {name.ToUpperInvariant()} is not supported by the twin: {Rsi}"
-        : null;
+    public static string? Type(string name) => name.ToUpperInvariant() switch
+    {
+        "RSIERR" or "RSI_STATE" or "RSI_MOVECORR" => $"the data type {name.ToUpperInvariant()} is not supported by the twin: {Rsi}",
+        "PRO_STATE" or "PRO_MODE" => $"the data type {name.ToUpperInvariant()} is not supported by the twin: program management ($PRO_STATE, $PRO_MODE, CWRITE($CMD)) is not modelled",
+        _ => null,
+    };
 }

@@ -86,7 +86,7 @@ public class KrlCorpusFeatureTests
     }
 
     [Fact]
-    public void ArgumentLeftOut_OfASystemFunction_IsRefusedAtLoad()
+    public void ArgumentLeftOut_OfASystemFunction_ThatNeedsIt_IsRefusedAtLoad()
     {
         using var twin = new KrlTwinController();
         KrlLoadException ex = Assert.Throws<KrlLoadException>(() => twin.Load(("prog.src", "DEF prog( )\n  REAL r\n  r = ATAN2( , 1)\nEND\n")));
@@ -142,6 +142,45 @@ public class KrlCorpusFeatureTests
 
         Assert.Equal(KrlProgramState.Failed, twin.Run());
         Assert.Equal("Value assignment inadmissible: a CHAR takes a character code from 0 to 255, not 300 (prog.src, line 3)", twin.Error);
+    }
+
+    [Fact]
+    public void StepNamesAVariable_AndStillStepsAFor()
+    {
+        const string source = """
+            DEF stepper( )
+              INT i, count
+              count = 0
+              FOR i = 1 TO 5 STEP 2
+                count = count + 1
+              ENDFOR
+              got = twice(4) * 10 + count
+            END
+
+            DEFFCT INT twice(step :IN)
+              INT step
+              RETURN step * 2
+            ENDFCT
+            """;
+        using var twin = new KrlTwinController();
+        twin.Load(("stepper.src", source), ("stepper.dat", "DEFDAT stepper\n  INT got = 0\nENDDAT\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(83, (int)Data(twin, "stepper", "got"));
+    }
+
+    [Fact]
+    public void MsgNotify_WithTheNumberLeftOut_NotifiesOnThePendant()
+    {
+        using var twin = new KrlTwinController();
+        twin.Load(("note.src", "DEF note( )\n  MsgNotify(\"Axis %1 ready\", \"INFO\", , \"A1\")\n  MsgNotify(\"Done\", \"ROS\", 7)\nEND\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(["NOTIFY INFO: Axis A1 ready", "NOTIFY ROS 7: Done"], twin.Pendant.Lines);
     }
 
     [Theory]
