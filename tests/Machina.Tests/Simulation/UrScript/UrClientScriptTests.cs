@@ -217,6 +217,29 @@ public class UrClientScriptTests
     }
 
     [Fact]
+    public void Assignment_ValueOnTheNextLine_BeforeThatLinesOwnStatement()
+    {
+        // As ur_rtde fills its control script's register offsets: the value goes after the comment's line end.
+        IReadOnlyList<string> lines = Messages("""
+            def prog():
+                global a = # first offset
+            0    global b = # second offset
+            7    global c = 2
+                d =
+                  3
+                textmsg(a, b + c + d)
+                def scale(p, factor):
+                  p[0] = p[0] * factor
+                  p[5] = p[5] * factor
+                  return p
+                end
+                textmsg(scale(p[0.1, 0.2, 0.3, 0, 0, 0.5], 2))
+            end
+            """);
+        Assert.Equal(["012", "p[0.2, 0.2, 0.3, 0, 0, 1]"], lines);
+    }
+
+    [Fact]
     public void MoveC_ToJointPositions_GoesWhereThoseJointsPutTheTool()
     {
         using var twin = new UrTwinController();
