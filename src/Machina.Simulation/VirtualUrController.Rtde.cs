@@ -45,6 +45,18 @@ public sealed partial class VirtualUrController
                     {
                         await subscriber.WriteAsync(reply, token).ConfigureAwait(false);
                     }
+                    if (type == Packages.Start && reply[^1] == 1)
+                    {
+                        // Data only after the start's answer, as on a UR: a client that skips what comes before it loses none.
+                        lock (_rtdeGate)
+                        {
+                            if (!_subscribers.Contains(subscriber))
+                            {
+                                _subscribers.Add(subscriber);
+                            }
+                        }
+                        WakeRtde();
+                    }
                 }
             }
         }
@@ -91,14 +103,6 @@ public sealed partial class VirtualUrController
                 return [];
             case Packages.Start:
                 bool ok = (subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Packages.NotFound)) || subscriber.HasInputs;
-                if (ok)
-                {
-                    lock (_rtdeGate)
-                    {
-                        _subscribers.Add(subscriber);
-                    }
-                    WakeRtde();
-                }
                 return Packages.Package(type, [ok ? (byte)1 : (byte)0]);
             case Packages.Pause:
                 lock (_rtdeGate)
@@ -221,14 +225,17 @@ public sealed partial class VirtualUrController
         {
             Names = names;
             Types = types;
-            RecipeId = NextRecipe();
+            RecipeId = ++_lastOutputRecipe;
             _periodTicks = Math.Max(1, (long)Math.Round(timestampFrequency / frequency));
         }
 
-        private byte _lastRecipe;
+        private byte _lastOutputRecipe, _lastInputRecipe;
 
-        /// <summary>The next recipe id of this connection (outputs and inputs count together, from 1).</summary>
-        public byte NextRecipe() => ++_lastRecipe;
+        /// <summary>
+        /// The next input recipe id of this connection. Inputs count from 1 apart from outputs, as a UR does: ur_rtde sends its
+        /// input data under ids 1, 2, 3… in the order it set the input recipes up, after setting up its output recipe.
+        /// </summary>
+        public byte NextInputRecipe() => ++_lastInputRecipe;
 
         /// <summary>The input recipes of this connection by id: names and types.</summary>
         public Dictionary<byte, (string[] Names, string[] Types)> InputRecipes { get; } = [];

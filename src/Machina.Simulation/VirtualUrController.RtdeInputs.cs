@@ -29,7 +29,7 @@ public sealed partial class VirtualUrController
                 && _inputOwners.TryGetValue(n, out RtdeSubscriber? owner) && owner != subscriber ? InUse : t)];
             if (types.All(t => t is not (Packages.NotFound or InUse)))
             {
-                id = subscriber.NextRecipe();
+                id = subscriber.NextInputRecipe();
                 subscriber.InputRecipes[id] = (names, types);
                 foreach (string name in names)
                 {
