@@ -9,7 +9,7 @@ public sealed partial class VirtualUrController
 {
     private readonly List<RtdeSubscriber> _subscribers = [];
     private readonly Lock _rtdeGate = new();
-    private CancellationTokenSource _rtdeWake = new();
+    private readonly VirtualUrDeadlineWait _rtdeWait;
     private int _rtdePackagesSent;
 
     /// <summary>How many RTDE data packages have been sent, to all clients.</summary>
@@ -24,7 +24,7 @@ public sealed partial class VirtualUrController
     private async Task ServeRtdeAsync(TcpClient client, CancellationToken token)
     {
         var stream = client.GetStream();
-        var subscriber = new RtdeSubscriber(stream);
+        var subscriber = new RtdeSubscriber(stream, Clock.TimestampFrequency);
         var reader = new VirtualUrRtdeReader();
         var bytes = new byte[4096];
         ushort protocol = 1;
@@ -44,6 +44,18 @@ public sealed partial class VirtualUrController
                     if (reply.Length > 0)
                     {
                         await subscriber.WriteAsync(reply, token).ConfigureAwait(false);
+                    }
+                    if (type == Packages.Start && reply[^1] == 1)
+                    {
+                        // Data only after the start's answer, as on a UR: a client that skips what comes before it loses none.
+                        lock (_rtdeGate)
+                        {
+                            if (!_subscribers.Contains(subscriber))
+                            {
+                                _subscribers.Add(subscriber);
+                            }
+                        }
+                        WakeRtde();
                     }
                 }
             }
@@ -91,14 +103,6 @@ public sealed partial class VirtualUrController
                 return [];
             case Packages.Start:
                 bool ok = (subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Packages.NotFound)) || subscriber.HasInputs;
-                if (ok)
-                {
-                    lock (_rtdeGate)
-                    {
-                        _subscribers.Add(subscriber);
-                    }
-                    WakeRtde();
-                }
                 return Packages.Package(type, [ok ? (byte)1 : (byte)0]);
             case Packages.Pause:
                 lock (_rtdeGate)
@@ -138,66 +142,52 @@ public sealed partial class VirtualUrController
     }
 
     /// <summary>Wakes the RTDE sender: a client started, or the robot's program or safety state changed (reported at once).</summary>
-    private void WakeRtde()
-    {
-        CancellationTokenSource wake;
-        lock (_rtdeGate)
-        {
-            wake = _rtdeWake;
-            _rtdeWake = new CancellationTokenSource();
-        }
-        wake.Cancel();
-    }
+    private void WakeRtde() => _rtdeWait.Wake();
+
+    /// <summary>The RTDE sender on a thread of its own (a pool thread's timer wake-ups cost 1–2 ms a tick: issue 45).</summary>
+    private Task SendRtdeAsync(CancellationToken token) =>
+        Task.Factory.StartNew(() => SendRtde(token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
 
     /// <summary>
-    /// Sends data packages to every started client, each at its own frequency on the controller's clock; a change of program or
-    /// safety state is sent to all at once.
+    /// Sends data packages to every started client, each at its own frequency on the controller's clock, on deadlines counted
+    /// from the first package (a late package does not move the next one); a change of program or safety state is sent to all
+    /// at once.
     /// </summary>
-    private async Task SendRtdeAsync(CancellationToken token)
+    private void SendRtde(CancellationToken token)
     {
         bool woken = false;
-        while (!token.IsCancellationRequested)
+        try
         {
-            RtdeSubscriber[] subscribers;
-            CancellationToken wake;
-            lock (_rtdeGate)
+            while (!token.IsCancellationRequested)
             {
-                subscribers = [.. _subscribers];
-                wake = _rtdeWake.Token;
-            }
-            long now = Clock.GetTimestamp();
-            TimeSpan wait = TimeSpan.FromSeconds(1);
-            foreach (RtdeSubscriber s in subscribers)
-            {
-                bool due = s.IsDue(Clock, now);
-                if (woken || due)
+                RtdeSubscriber[] subscribers;
+                lock (_rtdeGate)
                 {
-                    if (due)
-                    {
-                        s.Sent(Clock, now);
-                    }
-                    if (await s.TrySendAsync(DataPackage(s), token).ConfigureAwait(false))
-                    {
-                        Interlocked.Increment(ref _rtdePackagesSent);
-                    }
+                    subscribers = [.. _subscribers];
                 }
-                TimeSpan left = s.Period - Clock.GetElapsedTime(s.LastSent, now);
-                wait = left < wait ? left : wait;
+                long now = Clock.GetTimestamp();
+                long next = now + Clock.TimestampFrequency; // a second when no client is started
+                foreach (RtdeSubscriber s in subscribers)
+                {
+                    bool due = s.IsDue(now);
+                    if (woken || due)
+                    {
+                        if (due)
+                        {
+                            s.Sent(now);
+                        }
+                        if (s.TrySend(DataPackage(s), token))
+                        {
+                            Interlocked.Increment(ref _rtdePackagesSent);
+                        }
+                    }
+                    next = Math.Min(next, s.NextDue(now));
+                }
+                woken = _rtdeWait.WaitUntil(next, token);
             }
-            woken = false;
-            using var both = CancellationTokenSource.CreateLinkedTokenSource(token, wake);
-            try
-            {
-                await Task.Delay(WholeMillisecondsUp(wait), Clock, both.Token).ConfigureAwait(false);
-            }
-            catch (OperationCanceledException) when (!token.IsCancellationRequested)
-            {
-                woken = true; // a change to report at once
-            }
-            catch (OperationCanceledException)
-            {
-                return;
-            }
+        }
+        catch (OperationCanceledException)
+        {
         }
     }
 
@@ -213,7 +203,7 @@ public sealed partial class VirtualUrController
     private byte[] DataPackage(RtdeSubscriber s) => Packages.Package(Packages.DataPackage, TwinDataPayload(Twin, s.RecipeId, s.Names));
 
     /// <summary>One RTDE client: its output recipe, frequency and when it last got data.</summary>
-    private sealed class RtdeSubscriber(NetworkStream stream)
+    private sealed class RtdeSubscriber(NetworkStream stream, long timestampFrequency)
     {
         private readonly SemaphoreSlim _write = new(1, 1);
 
@@ -223,24 +213,29 @@ public sealed partial class VirtualUrController
 
         public byte RecipeId { get; private set; }
 
-        public TimeSpan Period { get; private set; } = TimeSpan.FromSeconds(1);
-
+        /// <summary>When the last package was due (a timestamp of the controller's clock).</summary>
         public long LastSent { get; private set; }
 
         private bool _sentOnce;
+
+        /// <summary>How far behind its deadlines a client may fall and still get every package (sent back to back); past that it starts again from now.</summary>
+        private const int CatchUpPeriods = 10;
 
         public void Configure(string[] names, string[] types, double frequency)
         {
             Names = names;
             Types = types;
-            RecipeId = NextRecipe();
-            Period = TimeSpan.FromSeconds(1 / frequency);
+            RecipeId = ++_lastOutputRecipe;
+            _periodTicks = Math.Max(1, (long)Math.Round(timestampFrequency / frequency));
         }
 
-        private byte _lastRecipe;
+        private byte _lastOutputRecipe, _lastInputRecipe;
 
-        /// <summary>The next recipe id of this connection (outputs and inputs count together, from 1).</summary>
-        public byte NextRecipe() => ++_lastRecipe;
+        /// <summary>
+        /// The next input recipe id of this connection. Inputs count from 1 apart from outputs, as a UR does: ur_rtde sends its
+        /// input data under ids 1, 2, 3… in the order it set the input recipes up, after setting up its output recipe.
+        /// </summary>
+        public byte NextInputRecipe() => ++_lastInputRecipe;
 
         /// <summary>The input recipes of this connection by id: names and types.</summary>
         public Dictionary<byte, (string[] Names, string[] Types)> InputRecipes { get; } = [];
@@ -251,12 +246,19 @@ public sealed partial class VirtualUrController
         /// <summary>True when an input recipe has been set up.</summary>
         public bool HasInputs => InputRecipes.Count > 0;
 
-        public bool IsDue(TimeProvider clock, long now) => !_sentOnce || clock.GetElapsedTime(LastSent, now) >= Period;
+        private long _periodTicks = long.MaxValue / 4; // until configured: never due again after the first
 
-        public void Sent(TimeProvider clock, long now)
+        /// <summary>True when a package is due at <paramref name="now"/>: the first at once, then one each period.</summary>
+        public bool IsDue(long now) => !_sentOnce || now - LastSent >= _periodTicks;
+
+        /// <summary>When the next package is due.</summary>
+        public long NextDue(long now) => _sentOnce ? LastSent + _periodTicks : now;
+
+        /// <summary>A package went out at <paramref name="now"/>.</summary>
+        public void Sent(long now)
         {
             // Keeps the rate exact: the next package is due one period after this one was due, not after it went out.
-            LastSent = _sentOnce && clock.GetElapsedTime(LastSent, now) < Period * 2 ? LastSent + Period.Ticks * clock.TimestampFrequency / TimeSpan.TicksPerSecond : now;
+            LastSent = _sentOnce && (now - LastSent) / CatchUpPeriods < _periodTicks ? LastSent + _periodTicks : now;
             _sentOnce = true;
         }
 
@@ -273,11 +275,20 @@ public sealed partial class VirtualUrController
             }
         }
 
-        public async Task<bool> TrySendAsync(byte[] bytes, CancellationToken token)
+        /// <summary>Writes a data package from the sender's thread; false when the client has gone.</summary>
+        public bool TrySend(byte[] bytes, CancellationToken token)
         {
             try
             {
-                await WriteAsync(bytes, token).ConfigureAwait(false);
+                _write.Wait(token);
+                try
+                {
+                    stream.Write(bytes);
+                }
+                finally
+                {
+                    _write.Release();
+                }
                 return true;
             }
             catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)

@@ -29,7 +29,7 @@ public sealed partial class VirtualUrController
                 && _inputOwners.TryGetValue(n, out RtdeSubscriber? owner) && owner != subscriber ? InUse : t)];
             if (types.All(t => t is not (Packages.NotFound or InUse)))
             {
-                id = subscriber.NextRecipe();
+                id = subscriber.NextInputRecipe();
                 subscriber.InputRecipes[id] = (names, types);
                 foreach (string name in names)
                 {
@@ -55,7 +55,7 @@ public sealed partial class VirtualUrController
     /// <summary>
     /// An input data package (recipe id, then each value of the recipe): registers the program reads
     /// (<c>read_input_integer_register</c>…), outputs under their masks, the speed slider. A package of an unknown recipe or
-    /// of the wrong length is refused (recorded), as a UR ignores it.
+    /// of the wrong length is refused (recorded), as a UR ignores it. Each name is an update for a watchdog on it (<c>rtde_set_watchdog</c>).
     /// </summary>
     private void ApplyInputs(ReadOnlySpan<byte> payload, RtdeSubscriber subscriber)
     {
@@ -86,6 +86,7 @@ public sealed partial class VirtualUrController
                 _ => 0, // external_force_torque: the twin has no force sensing
             };
             ApplyRegister(name, values[name]);
+            Twin.Watchdog.Updated(name);
         }
         ApplyMasked(recipe.Names, values);
     }

@@ -56,6 +56,7 @@ public sealed partial class VirtualUrController
             }
         };
         twin.StateChanged += WakeRtde;
+        twin.ProtectiveStopRequested += () => ProtectiveStop();
         twin.RuntimeError += SendTwinRuntimeError;
         return twin;
     }

@@ -4,22 +4,8 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
-    /// <summary>
-    /// A UR's stop decelerates the arm on its path and ends the program: the twin holds its motion first, so the arm stands
-    /// where the motion had brought it (not back at the motion's start), then ends the program and clears the hold.
-    /// </summary>
-    private static void StopTwin(UrTwinController twin)
-    {
-        if (twin.State == UrProgramState.Running && twin.Hold())
-        {
-            // The program's thread records where the arm stands when the hold reaches the motion (bounded: it does at once).
-            SpinWait.SpinUntil(() => twin.Motion is null, TimeSpan.FromSeconds(5));
-            twin.StopProgram();
-            twin.Release();
-            return;
-        }
-        twin.StopProgram();
-    }
+    /// <summary>A UR's stop: the arm stands where the motion had brought it, and the program ends (<see cref="UrTwinController.StopOnPath"/>).</summary>
+    private static void StopTwin(UrTwinController twin) => twin.StopOnPath();
 
     /// <summary>
     /// The dashboard's answer to one command line, worded as UR's e-Series dashboard server words it, with the controller's state
@@ -61,6 +47,7 @@ public sealed partial class VirtualUrController
                 {
                     _popup = null;
                 }
+                twin.ClosePopup(); // a program's popup too: a blocking one lets the program go on
                 return "closing popup";
             case "quit":
                 return "Disconnected";

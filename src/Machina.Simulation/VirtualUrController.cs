@@ -37,6 +37,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         _options = options;
         _robotMode = options.StartsPoweredOff ? PowerOffMode : RunningMode;
         Twin = CreateTwin();
+        _rtdeWait = new VirtualUrDeadlineWait(Clock);
     }
 
     /// <summary>The port that takes driver scripts (what a host gives to Connect); 0 until started.</summary>

@@ -30,6 +30,8 @@ internal sealed record Options
           --restarts N      the controller-restart schedule instead: N seeded trials per brand (ABB, UR, KUKA), counting
                             actions run twice and not sent again (docs/reliability.md, "Controller restarts"); --resend
                             runs it with ResendAfterControllerRestart; --brand abb|ur|kuka picks brands (default all three)
+          --rtde-rate       the virtual UR's RTDE output rate instead (issue 45): a client of our own at 125 and 500 Hz, alone and
+                            beside a stream of --size moves (default 10^5); asked, delivered, p50/p99 period error, load
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -47,6 +49,7 @@ internal sealed record Options
     public List<string> Brands { get; init; } = [];
     public int? Restarts { get; init; }
     public bool Resend { get; init; }
+    public bool RtdeRate { get; init; }
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
     public string? NativeTool { get; init; }
@@ -75,6 +78,7 @@ internal sealed record Options
                 "--brand" => options with { Brands = [.. options.Brands, .. Value(args, ref i).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)] },
                 "--restarts" => options with { Restarts = Positive(args, ref i) },
                 "--resend" => options with { Resend = true },
+                "--rtde-rate" => options with { RtdeRate = true },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
                 "--native" => options with { NativeTool = Value(args, ref i) },
                 "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },

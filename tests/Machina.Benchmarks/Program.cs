@@ -43,6 +43,10 @@ if (options.Restarts is int restartTrials)
 {
     return RestartRun.Run(restartTrials, options.Resend, options.Brands);
 }
+if (options.RtdeRate)
+{
+    return RtdeRateRun.Run(options.Size);
+}
 #endif
 
 if (options.Process)

@@ -54,14 +54,7 @@ internal static partial class UrBuiltins
             return SetPayload(m, line, [a[0], a[1]]);
         }, R("m"), R("cog"), O("inertia", new UrList([0.0, 0.0, 0.0, 0.0, 0.0, 0.0])), O("transition_time", 0.0));
         Add(t, "zero_ftsensor", (m, line, a) => UrNone.Value);
-        Add(t, "ft_rtde_input_enable", (m, line, a) =>
-        {
-            Bool(a, 0, line, "ft_rtde_input_enable", "enable");
-            Num(a, 1, line, "ft_rtde_input_enable", "sensor_mass");
-            Three(a, 2, line, "ft_rtde_input_enable", "sensor_measuring_offset");
-            Three(a, 3, line, "ft_rtde_input_enable", "sensor_cog");
-            return UrNone.Value;
-        }, R("enable"), O("sensor_mass", 0.0), O("sensor_measuring_offset", new UrList([0.0, 0.0, 0.0])), O("sensor_cog", new UrList([0.0, 0.0, 0.0])));
+        AddSensorInput(t, "ft_rtde_input_enable");
         Add(t, "set_tool_communication", (m, line, a) => UrNone.Value,
             R("enabled"), R("baud_rate"), R("parity"), R("stop_bits"), R("rx_idle_chars"), R("tx_idle_chars"));
         Add(t, "get_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
@@ -88,10 +81,23 @@ internal static partial class UrBuiltins
             {
                 throw new UrRuntimeException(line, $"rtde_set_watchdog: argument 'action' must be \"ignore\", \"pause\" or \"stop\", not \"{action}\"");
             }
-            m.Controller.Modes.Watchdog = frequency == 0 ? null : (variable, frequency, action);
+            m.Controller.Watchdog.Set(variable, frequency, action);
             return UrNone.Value;
         }, R("variable_name"), R("min_frequency"), O("action", "pause"));
     }
+
+    /// <summary>
+    /// A function that takes an external force/torque sensor's readings from RTDE (<c>ft_rtde_input_enable</c>, and its older name
+    /// <c>enable_external_ft_sensor</c>): its arguments are checked; the twin has no force sensing.
+    /// </summary>
+    private static void AddSensorInput(Dictionary<string, UrBuiltin> t, string name) => Add(t, name, (m, line, a) =>
+    {
+        Bool(a, 0, line, name, "enable");
+        Num(a, 1, line, name, "sensor_mass");
+        Three(a, 2, line, name, "sensor_measuring_offset");
+        Three(a, 3, line, name, "sensor_cog");
+        return UrNone.Value;
+    }, R("enable"), O("sensor_mass", 0.0), O("sensor_measuring_offset", new UrList([0.0, 0.0, 0.0])), O("sensor_cog", new UrList([0.0, 0.0, 0.0])));
 
     /// <summary>force_mode: its arguments checked as the Script Manual gives them; the mode switched on (the arm stands: no force acts on it).</summary>
     private static object ForceMode(UrMachine m, int line, object[] a)

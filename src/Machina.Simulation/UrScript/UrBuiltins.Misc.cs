@@ -17,9 +17,20 @@ internal static partial class UrBuiltins
         {
             string title = Str(a, 1, line, "popup", "title");
             bool error = Bool(a, 3, line, "popup", "error"), warning = Bool(a, 2, line, "popup", "warning");
+            bool blocking = Bool(a, 4, line, "popup", "blocking");
             string text = $"Popup{(error ? " (error)" : warning ? " (warning)" : "")} {title}: {UrValue.ToText(a[0])}";
             m.Controller.Pendant.Log(text);
             m.Controller.Arm.Record(line, TwinTraceKind.Message, text);
+            if (blocking)
+            {
+                FinishBlend(m, line, anyThread: false); // the arm stops at its waypoint while the program waits
+            }
+            CancellationToken token = m.Cancellation;
+            m.Unlocked(() =>
+            {
+                m.Controller.ShowPopup(UrValue.ToText(a[0]), blocking, token);
+                return 0;
+            });
             return UrNone.Value;
         }, R("s"), O("title", "Popup"), O("warning", false), O("error", false), O("blocking", false));
         Add(t, "sleep", (m, line, a) =>

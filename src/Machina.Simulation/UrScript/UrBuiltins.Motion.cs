@@ -9,7 +9,7 @@ internal static partial class UrBuiltins
 
     private static void AddMotion(Dictionary<string, UrBuiltin> t)
     {
-        Add(t, "movej", MoveJ, R("q"), O("a", 1.4), O("v", 1.05), O("t", 0), O("r", 0));
+        Add(t, "movej", (m, line, a) => MoveJ(m, line, a, "movej"), R("q"), O("a", 1.4), O("v", 1.05), O("t", 0), O("r", 0));
         Add(t, "movel", (m, line, a) => MoveLinear(m, line, a, "movel"), R("pose"), O("a", 1.2), O("v", 0.25), O("t", 0), O("r", 0));
         Add(t, "movep", (m, line, a) => MoveLinear(m, line, [a[0], a[1], a[2], 0, a[3]], "movep"), R("pose"), O("a", 1.2), O("v", 0.25), O("r", 0));
         Add(t, "movec", MoveC, R("pose_via"), R("pose_to"), O("a", 1.2), O("v", 0.25), O("r", 0), O("mode", 0));
@@ -87,16 +87,16 @@ internal static partial class UrBuiltins
         }
     }
 
-    private static object MoveJ(UrMachine m, int line, object[] a)
+    private static object MoveJ(UrMachine m, int line, object[] a, string function)
     {
-        (double acc, double v, double time, _) = Profile(a, line, "movej");
+        (double acc, double v, double time, _) = Profile(a, line, function);
         FinishBlend(m, line); // the twin blends linear motions only: the arm stops at the last waypoint first
         Joints from = m.Controller.Arm.Joints;
         Joints to = a[0] is UrPose pose
-            ? Solve(m, line, "movej", UrGeometry.ToPose(pose.Values, line), from)
-            : UrGeometry.ToJoints(Six(a, 0, line, "movej", "q"), line);
+            ? Solve(m, line, function, UrGeometry.ToPose(pose.Values, line), from)
+            : UrGeometry.ToJoints(Six(a, 0, line, function, "q"), line);
         double distance = (to - from).ToArray().Max(Math.Abs) * Math.PI / 180;
-        Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), "movej", time > 0 ? 0 : v / acc);
+        Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function, time > 0 ? 0 : v / acc);
         return UrNone.Value;
     }
 
@@ -209,6 +209,10 @@ internal static partial class UrBuiltins
         if (!(mass >= 0) || !double.IsFinite(mass))
         {
             throw new UrRuntimeException(line, "set_payload: the mass 'm' must be zero or positive");
+        }
+        if (Given(a[1]))
+        {
+            m.Controller.Modes.PayloadCog = Three(a, 1, line, "set_payload", "cog");
         }
         m.Controller.Arm.PayloadKg = mass;
         return UrNone.Value;

@@ -25,6 +25,8 @@ internal static partial class UrBuiltins
         AddMath(table);
         AddMisc(table);
         AddControl(table);
+        AddOptimove(table);
+        AddRtdeControl(table);
         return table.ToFrozenDictionary(StringComparer.Ordinal);
     }
 

@@ -2,7 +2,7 @@ namespace Machina.Simulation.UrScript;
 
 /// <summary>
 /// The control settings a program switches that the twin accepts without a physical model behind them: force mode, freedrive,
-/// the gravity direction, the force/torque sensor and the RTDE watchdog. Kept so that a program and a test can see them.
+/// the gravity direction and the force/torque sensor. Kept so that a program and a test can see them.
 /// </summary>
 internal sealed class UrControlModes
 {
@@ -10,7 +10,7 @@ internal sealed class UrControlModes
     private bool _forceMode;
     private bool _freedrive;
     private double[] _gravity = [0, 0, 9.82];
-    private (string Variable, double MinFrequency, string Action)? _watchdog;
+    private double[] _payloadCog = [0, 0, 0];
 
     /// <summary>Force mode is on (<c>force_mode</c> until <c>end_force_mode</c>).</summary>
     public bool ForceMode
@@ -69,26 +69,26 @@ internal sealed class UrControlModes
         }
     }
 
-    /// <summary>The RTDE watchdog a program set (<c>rtde_set_watchdog</c>), or null.</summary>
-    public (string Variable, double MinFrequency, string Action)? Watchdog
+    /// <summary>The payload's centre of gravity from the flange, m (<c>set_payload</c>, <c>set_target_payload</c>).</summary>
+    public double[] PayloadCog
     {
         get
         {
             lock (_gate)
             {
-                return _watchdog;
+                return [.. _payloadCog];
             }
         }
         set
         {
             lock (_gate)
             {
-                _watchdog = value;
+                _payloadCog = [.. value];
             }
         }
     }
 
-    /// <summary>Back to the start (a new program): no force mode, no freedrive. Gravity and the watchdog are the controller's and stay.</summary>
+    /// <summary>Back to the start (a new program): no force mode, no freedrive. Gravity is the controller's and stays.</summary>
     public void Reset()
     {
         lock (_gate)

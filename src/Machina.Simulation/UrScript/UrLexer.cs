@@ -84,7 +84,7 @@ internal static class UrLexer
             else if (Symbols.IndexOf(c, StringComparison.Ordinal) is int symbol and >= 0)
             {
                 open = c is '(' or '[' ? open + 1 : c is ')' or ']' ? Math.Max(0, open - 1) : open;
-                operatorLast = c is '+' or '-' or '*' or '/' or '%' or '<' or '>';
+                operatorLast = c is '+' or '-' or '*' or '/' or '%' or '<' or '>' or '='; // after '=' too: the value may be on the next line
                 yield return new UrToken(UrTokenKind.Symbol, SymbolTexts[symbol], line, column);
                 i++;
             }

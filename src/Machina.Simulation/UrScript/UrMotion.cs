@@ -8,6 +8,9 @@ namespace Machina.Simulation.UrScript;
 internal sealed class UrMotion(Joints from, Joints target, double doneBefore, long started, double seconds, double rampSeconds, Func<double, Joints>? path,
     Func<double, double>? profile = null)
 {
+    /// <summary>Where the motion goes.</summary>
+    public Joints Target => target;
+
     /// <summary>When the motion started, as a timestamp of the controller's time.</summary>
     public long Started { get; } = started;
 

@@ -133,6 +133,19 @@ internal sealed class UrParser
         SkipNewlines();
     }
 
+    /// <summary>
+    /// The end of an assignment: a line end, or the next statement on the same line. ur_rtde's control script relies on it: it
+    /// writes <c>global reg_offset_float = # comment</c>, then puts the value at the start of the next line, before that line's
+    /// own statement (<c>0    global reg_offset_int = …</c>), and controllers run it.
+    /// </summary>
+    private void EndOfAssignment()
+    {
+        if (Peek.Kind != UrTokenKind.Name)
+        {
+            EndOfLine();
+        }
+    }
+
     private static string Show(UrToken token) => token.Kind switch
     {
         UrTokenKind.Newline => "the end of the line",
@@ -226,8 +239,12 @@ internal sealed class UrParser
                     {
                         Next();
                         initial = new UrAssign(line, new UrName(line, name), Expression());
+                        EndOfAssignment();
                     }
-                    EndOfLine();
+                    else
+                    {
+                        EndOfLine();
+                    }
                     return new UrDecl(line, token.Text == "global", name, initial);
                 }
                 case "end":
@@ -245,7 +262,7 @@ internal sealed class UrParser
             }
             Next();
             UrExpr value = Expression();
-            EndOfLine();
+            EndOfAssignment();
             return new UrAssign(line, expr, value);
         }
         if (expr is not (UrCall or UrRunExpr))
@@ -521,6 +538,12 @@ internal sealed class UrParser
             {
                 Next();
                 List<UrExpr> items = Items("]");
+                if (items.Count == 1)
+                {
+                    // An element of a variable named p (ur_rtde's control script has scale_pose(p, factor): p[0] = p[0] * factor):
+                    // a pose literal has six.
+                    return new UrIndex(token.Line, new UrName(token.Line, "p"), items[0]);
+                }
                 if (items.Count != 6)
                 {
                     throw new UrCompileException(token.Line, $"a pose needs 6 numbers, not {items.Count}");

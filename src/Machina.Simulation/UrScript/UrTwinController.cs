@@ -45,6 +45,7 @@ internal sealed partial class UrTwinController : IDisposable
         Io.AddNumbers(UrIoBanks.OutputIntRegisters, 48);
         Io.AddNumbers(UrIoBanks.InputFloatRegisters, 48);
         Io.AddNumbers(UrIoBanks.OutputFloatRegisters, 48);
+        Watchdog = new UrRtdeWatchdog(Options.Time, OnWatchdog);
     }
 
     /// <summary>The settings.</summary>
@@ -61,6 +62,9 @@ internal sealed partial class UrTwinController : IDisposable
 
     /// <summary>Force mode, freedrive, gravity and the RTDE watchdog as the program set them.</summary>
     public UrControlModes Modes { get; } = new();
+
+    /// <summary>The RTDE watchdogs the running program set (<c>rtde_set_watchdog</c>).</summary>
+    public UrRtdeWatchdog Watchdog { get; }
 
     /// <summary>The pendant log: program messages and errors.</summary>
     public TwinPendant Pendant { get; } = new();
@@ -343,6 +347,7 @@ internal sealed partial class UrTwinController : IDisposable
                 if (current)
                 {
                     PendingBlend = null;
+                    Watchdog.Clear(); // "All watchdogs are removed on program stop"
                 }
                 if (error is not null && current)
                 {
@@ -371,6 +376,65 @@ internal sealed partial class UrTwinController : IDisposable
         Pendant.Log(message);
     }
 
+    /// <summary>
+    /// A watchdog ran out (on its timer's thread): the pendant says so, and the program is held (<c>pause</c>) or stopped where
+    /// the arm stands (<c>stop</c>) from another thread, so that the timer (a test's manual clock) does not wait for the program.
+    /// </summary>
+    private void OnWatchdog(string action, string message)
+    {
+        if (State != UrProgramState.Running)
+        {
+            return;
+        }
+        Pendant.Log(message);
+        switch (action)
+        {
+            case "pause":
+                Hold();
+                break;
+            case "stop":
+                ThreadPool.QueueUserWorkItem(static twin => twin.StopOnPath(), this, preferLocal: false);
+                break;
+        }
+    }
+
+    /// <summary>Raised when the program calls <c>protective_stop()</c>; without a handler the program is only held.</summary>
+    public event Action? ProtectiveStopRequested;
+
+    /// <summary><c>protective_stop()</c>: the controller's protective stop (its handler holds the program), or a hold.</summary>
+    public void RequestProtectiveStop()
+    {
+        if (ProtectiveStopRequested is { } handler)
+        {
+            handler();
+        }
+        else
+        {
+            Hold();
+        }
+    }
+
+    /// <summary>
+    /// Stops the program as a UR's stop does: the arm decelerates on its path and the program ends, so the arm stands where the
+    /// motion had brought it (not back at the motion's start); the hold used for that is cleared after.
+    /// </summary>
+    public void StopOnPath()
+    {
+        if (State == UrProgramState.Running && Hold())
+        {
+            // The program's thread records where the arm stands when the hold reaches the motion (bounded: it does at once).
+            SpinWait.SpinUntil(() => Motion is null, TimeSpan.FromSeconds(5));
+            StopProgram();
+            Release();
+            return;
+        }
+        StopProgram();
+    }
+
     /// <inheritdoc/>
-    public void Dispose() => StopProgram();
+    public void Dispose()
+    {
+        StopProgram();
+        Watchdog.Dispose();
+    }
 }

@@ -145,7 +145,7 @@ public class UrSimDashboardTests
         Assert.Equal("STOPPED wait_program.urp", await AskAsync(dashboard, "programState"));
     }
 
-    private static async Task<DashboardLine> DashboardAsync(int port)
+    internal static async Task<DashboardLine> DashboardAsync(int port)
     {
         var client = new TcpClient();
         await client.ConnectAsync("127.0.0.1", port).WaitAsync(Timeout);
@@ -154,7 +154,7 @@ public class UrSimDashboardTests
         return new DashboardLine(client, reader);
     }
 
-    private sealed record DashboardLine(TcpClient Client, StreamReader Reader) : IDisposable
+    internal sealed record DashboardLine(TcpClient Client, StreamReader Reader) : IDisposable
     {
         public void Dispose()
         {
@@ -163,7 +163,7 @@ public class UrSimDashboardTests
         }
     }
 
-    private static async Task<string> AskAsync(DashboardLine dashboard, string command)
+    internal static async Task<string> AskAsync(DashboardLine dashboard, string command)
     {
         await dashboard.Client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(command + "\n"));
         return await dashboard.Reader.ReadLineAsync().WaitAsync(Timeout) ?? "(closed)";

@@ -54,6 +54,26 @@ public class UrSimRtdeTests
     }
 
     [Fact]
+    public async Task Inputs_RecipeIdsCountFromOneApartFromOutputs_AsUrRtdeSendsThem()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var client = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await client.NegotiateAsync());
+        await client.SetupOutputsAsync(125, "timestamp");
+        Assert.Equal(1, client.RecipeId);
+        var (first, _) = await client.SetupInputsAsync("input_int_register_0", "input_double_register_0");
+        var (second, _) = await client.SetupInputsAsync("input_int_register_0");
+        Assert.Equal((1, 2), (first, second));
+        Assert.True(await client.StartAsync());
+
+        // ur_rtde's "no command" package: recipe 2, one int.
+        await client.SendInputsAsync(second, [0, 0, 0, 5]);
+        await OnlineWait.UntilAsync(() => controller.Twin.Io.GetNumber(UrIoBanks.InputIntRegisters, 0) == 5, "the input to arrive");
+        Assert.Empty(controller.Errors);
+    }
+
+    [Fact]
     public async Task Inputs_RegistersReachTheRunningProgram_AndMasksSetOutputs()
     {
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });

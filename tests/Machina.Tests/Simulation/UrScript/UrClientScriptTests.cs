@@ -130,7 +130,7 @@ public class UrClientScriptTests
         Assert.Equal([0, 9.82, 0], twin.Modes.Gravity);
         Assert.False(twin.Modes.ForceMode);
         Assert.False(twin.Modes.Freedrive);
-        Assert.Equal(("input_int_register_0", 10.0, "stop"), twin.Modes.Watchdog);
+        Assert.Empty(twin.Watchdog.Armed); // set, then removed as the program ended (UrSimWatchdogTests runs one out)
         Assert.Equal(before, twin.Arm.Joints); // nothing pushed the arm
     }
 
@@ -140,11 +140,103 @@ public class UrClientScriptTests
     [InlineData("force_mode_set_damping(1.5)", "force_mode_set_damping: argument 'damping' must be between 0 and 1, not 1.5")]
     [InlineData("set_gravity([0, 9.82])", "set_gravity: argument 'd' must be an array of 3 numbers, not an array of 2")]
     [InlineData("rtde_set_watchdog(\"input_int_register_0\", 10, \"halt\")", "rtde_set_watchdog: argument 'action' must be \"ignore\", \"pause\" or \"stop\", not \"halt\"")]
+    [InlineData("optimovej([0, -1.57, 1.57, -1.57, -1.57, 0], a=1.4)", "optimovej: argument 'a' must be a fraction in (0, 1], not 1.4")]
+    [InlineData("optimovel(p[0.3, -0.1, 0.4, 0, 3.14, 0], v=0)", "optimovel: argument 'v' must be a fraction in (0, 1], not 0")]
+    [InlineData("direct_torque([0, 0, 0, 0, 0])", "direct_torque: argument 'torque' must be a pose or a list of 6 numbers, not an array of 5")]
     public void ControlFunctions_BadArguments_StopTheProgram(string call, string reason)
     {
         using var twin = new UrTwinController();
         Assert.Equal(UrProgramState.Failed, twin.Run($"def prog():\n  {call}\nend\n", CancellationToken.None));
         Assert.Equal("Runtime error: line 2: " + reason, twin.Error);
+    }
+
+    [Fact]
+    public void Optimove_MovesAsMovejAndMovel_AtTheFractionsOfTheTwinsCapabilities()
+    {
+        using var twin = new UrTwinController();
+        UrProgramState state = twin.Run("""
+            def prog():
+              q = get_actual_joint_positions()
+              q[0] = 0.5
+              optimovej(q, a=0.5, v=0.4)
+              textmsg(get_actual_joint_positions()[0])
+              start = get_actual_tcp_pose()
+              optimovel(pose_trans(start, p[0.1, 0, 0, 0, 0, 0]), a=0.2, v=0.1)
+              direct_torque([0, 0, 0, 0, 0, 0], friction_comp=False)
+              textmsg(pose_dist(start, get_actual_tcp_pose()))
+            end
+            """, CancellationToken.None);
+        Assert.True(state == UrProgramState.Finished, twin.Error);
+        Assert.Equal("0.5", twin.Pendant.Lines[0]);
+        Assert.Equal(0.1, double.Parse(twin.Pendant.Lines[^1], System.Globalization.CultureInfo.InvariantCulture), 6);
+        // 0.5 rad at 0.4 × 180 °/s (the UR5e's joints) and 0.5 × 15 rad/s², then 0.1 m at 0.1 × 1 m/s and 0.2 × 10 m/s².
+        double joint = Machina.Simulation.Twin.TwinMotion.TrapezoidSeconds(0.5, 0.4 * Math.PI, 7.5);
+        double line = Machina.Simulation.Twin.TwinMotion.TrapezoidSeconds(0.1, 0.1, 2);
+        Assert.Equal(joint + line, twin.Clock.Seconds, 6);
+    }
+
+    [Fact]
+    public void RtdeControlScriptFunctions_AnswerAsAStandingArm()
+    {
+        var twin = new UrTwinController();
+        IReadOnlyList<string> lines = Messages("""
+            def prog():
+              set_tcp(p[0, 0, 0.1, 0, 0, 0])
+              set_payload(1.25, [0.01, 0.02, 0.03])
+              textmsg(get_target_payload(), get_target_payload_cog())
+              textmsg("offset ", get_tcp_offset())
+              flange = get_actual_tool_flange_pose()
+              textmsg("flange ", point_dist(pose_trans(flange, get_tcp_offset()), get_actual_tcp_pose()) < 1e-9)
+              textmsg("waypoint ", pose_dist(get_target_waypoint(), get_actual_tcp_pose()) < 1e-9)
+              textmsg("torques ", get_joint_torques())
+              teach_mode()
+              textmsg("freedrive ", get_freedrive_status())
+              end_teach_mode()
+              enable_external_ft_sensor(True, 0.2, [0, 0, 0], [0, 0, 0.01])
+              start = get_actual_tcp_pose()
+              servoc(pose_trans(start, p[0.05, 0, 0, 0, 0, 0]), a=1.2, v=0.25)
+              textmsg("servoc ", point_dist(start, get_actual_tcp_pose()))
+            end
+            """, twin);
+        Assert.Equal(["1.25[0.01, 0.02, 0.03]", "offset p[0, 0, 0.1, 0, 0, 0]", "flange True", "waypoint True",
+            "torques [0, 0, 0, 0, 0, 0]", "freedrive 0", "servoc 0.05"], lines);
+        Assert.False(twin.Modes.Freedrive);
+    }
+
+    [Fact]
+    public void ProtectiveStop_HoldsTheProgramUntilReleased()
+    {
+        using var twin = new UrTwinController();
+        Assert.True(twin.Start("def prog():\n  protective_stop()\n  textmsg(\"after\")\nend\n"));
+        Assert.True(SpinWait.SpinUntil(() => twin.IsHeld, Timeout));
+        Thread.Sleep(50);
+        Assert.Empty(twin.Pendant.Lines);
+        Assert.True(twin.Release());
+        Assert.True(twin.WaitForEnd(Timeout));
+        Assert.Equal(["after"], twin.Pendant.Lines);
+    }
+
+    [Fact]
+    public void Assignment_ValueOnTheNextLine_BeforeThatLinesOwnStatement()
+    {
+        // As ur_rtde fills its control script's register offsets: the value goes after the comment's line end.
+        IReadOnlyList<string> lines = Messages("""
+            def prog():
+                global a = # first offset
+            0    global b = # second offset
+            7    global c = 2
+                d =
+                  3
+                textmsg(a, b + c + d)
+                def scale(p, factor):
+                  p[0] = p[0] * factor
+                  p[5] = p[5] * factor
+                  return p
+                end
+                textmsg(scale(p[0.1, 0.2, 0.3, 0, 0, 0.5], 2))
+            end
+            """);
+        Assert.Equal(["012", "p[0.2, 0.2, 0.3, 0, 0, 1]"], lines);
     }
 
     [Fact]
