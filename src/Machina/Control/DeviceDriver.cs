@@ -70,13 +70,14 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
         {
             Log.Warning(note);
         }
-        if (frame.Bytes.Length > 0)
-        {
-            link.Post(frame.Bytes);
-        }
+        // Kept before the bytes leave: a fast controller's acknowledgement, or its program's stop, may come back before Post returns.
         if (frame.Acknowledged)
         {
             Sent(action.Id);
+        }
+        if (frame.Bytes.Length > 0)
+        {
+            link.Post(frame.Bytes);
         }
         return frame.Acknowledged;
     }

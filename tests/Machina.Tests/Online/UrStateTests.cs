@@ -41,8 +41,10 @@ public class UrStateTests
         await bot.FlushEventsAsync().WaitAsync(Limit);
         Assert.InRange(Volatile.Read(ref updates) - initial, 50, 51);
         // The 50, the one read while connecting, and at once the driver program's start and its connection back to the host
-        // (which shows the instance register the program wrote): two wakes that may come as one package or two.
-        Assert.InRange(controller.RtdePackagesSent, 52, 53);
+        // (which shows the instance register the program wrote): two wakes that may come as one package or two. The client's
+        // start is a wake too (it joins after the START answer): when the sender thread is between two looks it comes as a
+        // package of its own (seen once in CI, 54). Never one per period more: the count of updates above holds that.
+        Assert.InRange(controller.RtdePackagesSent, 52, 54);
         Assert.True(((Vector)bot.GetCurrentPosition()!.Value).IsSimilar(controller.State.Position, 1e-6));
         await bot.DisconnectAsync();
     }
