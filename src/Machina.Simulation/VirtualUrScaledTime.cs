@@ -10,6 +10,12 @@ internal sealed class VirtualUrScaledTime(TimeProvider inner, double factor) : T
 {
     private readonly long _origin = inner.GetTimestamp();
 
+    /// <summary>The clock this one runs faster than.</summary>
+    public TimeProvider Inner => inner;
+
+    /// <summary>How many times faster than <see cref="Inner"/> it runs.</summary>
+    public double Factor => factor;
+
     /// <inheritdoc/>
     public override long TimestampFrequency => inner.TimestampFrequency;
 

@@ -32,6 +32,9 @@ internal sealed record Options
                             runs it with ResendAfterControllerRestart; --brand abb|ur|kuka picks brands (default all three)
           --rtde-rate       the virtual UR's RTDE output rate instead (issue 45): a client of our own at 125 and 500 Hz, alone and
                             beside a stream of --size moves (default 10^5); asked, delivered, p50/p99 period error, load
+          --twins N         N native twins side by side instead (issue 45): `machina sim` processes (--native), each serving
+                            its own host in this process --size moves (default 10^4); ready time, memory, each host's rate;
+                            --brand abb|ur|kuka picks brands (default all three)
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
@@ -50,6 +53,9 @@ internal sealed record Options
     public int? Restarts { get; init; }
     public bool Resend { get; init; }
     public bool RtdeRate { get; init; }
+
+    /// <summary>With --twins N: N native twins side by side, each serving its own host (issue 45), instead of the scenarios.</summary>
+    public int? Twins { get; init; }
     public Dictionary<string, string> ChildEnvironment { get; init; } = [];
     public string? ChildExecutable { get; init; }
     public string? NativeTool { get; init; }
@@ -79,6 +85,7 @@ internal sealed record Options
                 "--restarts" => options with { Restarts = Positive(args, ref i) },
                 "--resend" => options with { Resend = true },
                 "--rtde-rate" => options with { RtdeRate = true },
+                "--twins" => options with { Twins = Positive(args, ref i) },
                 "--child-exe" => options with { ChildExecutable = Value(args, ref i) },
                 "--native" => options with { NativeTool = Value(args, ref i) },
                 "--child-env" => options with { ChildEnvironment = WithVariable(options.ChildEnvironment, Value(args, ref i)) },

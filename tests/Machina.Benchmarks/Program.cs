@@ -47,6 +47,10 @@ if (options.RtdeRate)
 {
     return RtdeRateRun.Run(options.Size);
 }
+if (options.Twins is int twins)
+{
+    return TwinsSideBySideRun.Run(twins, options.Size, options.Brands);
+}
 #endif
 
 if (options.Process)

@@ -218,15 +218,7 @@ internal static partial class RapidBuiltins
     private static bool Wait(RapidCall call, Task operation, double seconds)
     {
         CancellationToken cancellation = call.Machine.Task.CancellationToken;
-        try
-        {
-            operation.Wait(TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
-        }
-        catch (AggregateException) when (operation.IsFaulted || operation.IsCanceled)
-        {
-            // Looked at below.
-        }
-        cancellation.ThrowIfCancellationRequested();
+        Twin.TwinTaskWait.For(operation, TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
         if (operation.IsCanceled)
         {
             throw new OperationCanceledException("The socket operation was cancelled.");

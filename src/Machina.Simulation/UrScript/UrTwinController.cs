@@ -226,8 +226,9 @@ internal sealed partial class UrTwinController : IDisposable
             _programThread = thread;
             _state = UrProgramState.Running;
             _error = null;
+            // Started before the gate opens: another connection's program may stop this one at once, and joins it.
+            thread.Start();
         }
-        thread.Start();
         StateChanged?.Invoke();
         return true;
     }

@@ -59,7 +59,8 @@ internal sealed class ExternalToolScenario(RobotType brand, bool native, InputSh
         };
     }
 
-    private static string Native()
+    /// <summary>The native machina to run: --native, or where the linux-x64 publish puts it.</summary>
+    internal static string Native()
     {
         string path = NativePath ?? Path.Combine(RepositoryRoot(), "src/Machina.Cli/bin/native/linux-x64/machina");
         return File.Exists(path) ? path

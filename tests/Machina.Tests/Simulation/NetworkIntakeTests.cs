@@ -30,7 +30,16 @@ public sealed class NetworkIntakeTests
         using var host = new TcpClient();
         await host.ConnectAsync(IPAddress.Loopback, port);
         await host.GetStream().WriteAsync(Encoding.ASCII.GetBytes(program));
-        await WaitUntilAsync(() => controller.PendantMessages.Contains("host"), "the host's program to run");
+        try
+        {
+            await WaitUntilAsync(() => controller.PendantMessages.Contains("host"), "the host's program to run");
+        }
+        catch (TimeoutException ex)
+        {
+            // Say what the twin did instead, so that a failure names its cause.
+            throw new TimeoutException($"{ex.Message}; scripts received {controller.ScriptsReceived}, pendant [{string.Join(" | ", controller.PendantMessages)}], "
+                + $"errors [{string.Join(" | ", controller.Errors)}], last script {controller.LastScript}", ex);
+        }
 
         Assert.Empty(controller.Errors);
         Assert.Equal(2, controller.ScriptsReceived);

@@ -40,6 +40,41 @@ public class UrTwinControllerTests(ITestOutputHelper output)
     }
 
     [Fact]
+    public void Start_TwoConnectionsAtOnce_EachNewProgramStopsTheLastWithoutFailing()
+    {
+        // Two clients' programs arriving together: each Start stops (and joins) the program the other just started. The thread
+        // was once published before it was started, and joining it then threw ThreadStateException, which dropped the
+        // connection's program silently (NetworkIntakeTests failed now and then under load).
+        using var twin = new UrTwinController();
+        const int perThread = 400;
+        using var ready = new Barrier(2);
+        var failures = new System.Collections.Concurrent.ConcurrentQueue<Exception>();
+        void StartMany(string name)
+        {
+            ready.SignalAndWait(Bound);
+            for (int i = 0; i < perThread; i++)
+            {
+                try
+                {
+                    twin.Start($"def {name}():\n  textmsg(\"{name}\")\nend\n");
+                }
+                catch (Exception ex)
+                {
+                    failures.Enqueue(ex);
+                }
+            }
+        }
+        var first = new Thread(() => StartMany("first"));
+        var second = new Thread(() => StartMany("second"));
+        first.Start();
+        second.Start();
+        Assert.True(first.Join(Bound) && second.Join(Bound), "the two starting threads did not finish");
+        Assert.True(twin.WaitForEnd(Bound));
+        Assert.Empty(failures.Select(f => f.GetType().Name + ": " + f.Message).Distinct());
+        Assert.Equal(2 * perThread, twin.ProgramsStarted);
+    }
+
+    [Fact]
     public void Receive_ProgramWithCompileError_IsRefusedAndTheRunningOneGoesOn()
     {
         using var twin = new UrTwinController();
