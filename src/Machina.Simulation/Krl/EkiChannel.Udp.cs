@@ -84,6 +84,14 @@ internal sealed partial class EkiChannel
             EkiXmlSplitter splitter = Splitter((document, flags) => CommitDatagram(udp, document, flags));
             try
             {
+                if (Configuration.RawReceive is { } raw)
+                {
+                    foreach (string record in new EkiRawSplitter(raw).Append(datagram.Buffer))
+                    {
+                        CommitDatagram(udp, RawDocument(record), RawFlags());
+                    }
+                    continue;
+                }
                 splitter.Append(Encoding.UTF8.GetString(datagram.Buffer));
             }
             catch (FormatException ex)

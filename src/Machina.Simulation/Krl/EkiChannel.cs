@@ -211,6 +211,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     private async Task ReadAsync(TcpClient client, CancellationToken token)
     {
         EkiXmlSplitter splitter = Splitter((document, flags) => Commit(client, document, flags));
+        EkiRawSplitter? raw = Configuration.RawReceive is { } element ? new EkiRawSplitter(element) : null;
         var bytes = new byte[8192];
         var decoder = Encoding.UTF8.GetDecoder();
         var chars = new char[8192];
@@ -224,13 +225,21 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
                 {
                     break;
                 }
+                if (raw is not null)
+                {
+                    foreach (string record in raw.Append(bytes.AsSpan(0, n)))
+                    {
+                        Commit(client, RawDocument(record), RawFlags());
+                    }
+                    continue;
+                }
                 int count = decoder.GetChars(bytes, 0, n, chars, 0);
                 splitter.Append(new string(chars, 0, count));
             }
         }
         catch (FormatException ex)
         {
-            controller.Pendant.Log($"EthernetKRL {Name}: received XML it cannot read ({ex.Message}); the connection is closed");
+            controller.Pendant.Log($"EthernetKRL {Name}: received {(raw is null ? "XML" : "binary data")} it cannot read ({ex.Message}); the connection is closed");
         }
         catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
         {
@@ -411,21 +420,32 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         }
     }
 
-    /// <summary>EKI_Send: writes the element <paramref name="root"/> with the values set for its attributes; false without a client.</summary>
+    /// <summary>
+    /// EKI_Send: writes the element <paramref name="root"/> with the values set for its attributes, or, when it names no configured
+    /// element, <paramref name="root"/> itself as data (XML or plain text); in raw mode the data as a binary record (see
+    /// <see cref="EkiRawSplitter.Record"/>). False without a client.
+    /// </summary>
     public bool Send(string root)
     {
         EkiOutbox? outbox;
         string text;
-        bool configured = Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal));
-        if (!configured && !root.StartsWith('<'))
-        {
-            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} sends no element {root} (see its SEND configuration)");
-        }
+        byte[] bytes;
+        bool configured = Configuration.RawSend is null && Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal));
         lock (_gate)
         {
-            // An XML string that is not a configured element is sent as it is (the manual's EKI_Send of "<Robot>…</Robot>").
+            // A string that names no configured element is data sent as it is: XML (the manual's EKI_Send of "<Robot>…</Robot>") or
+            // plain text (EKI_Send("Channel", "Confirm")), which the twin writes unchanged rather than refuse.
             text = configured ? EkiSendDocument.Write(root, Configuration.Send, _toSend) : root;
             outbox = _outbox;
+        }
+        if (Configuration.RawSend is { } raw)
+        {
+            bytes = EkiRawSplitter.Record(raw, root);
+            text = Encoding.Latin1.GetString(bytes);
+        }
+        else
+        {
+            bytes = Encoding.UTF8.GetBytes(text);
         }
         if (controller.Options.Seam is { } seam)
         {
@@ -434,10 +454,10 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         }
         if (Configuration.Udp)
         {
-            return SendDatagram(Encoding.UTF8.GetBytes(text));
+            return SendDatagram(bytes);
         }
         // Handed to the channel's writer: the program goes on while it is written (in order, several sends in one write).
-        return outbox is not null && outbox.Post(Encoding.UTF8.GetBytes(text));
+        return outbox is not null && outbox.Post(bytes);
     }
 
     /// <summary>Writes <paramref name="bytes"/> to the channel's client; false without one or when the connection broke.</summary>

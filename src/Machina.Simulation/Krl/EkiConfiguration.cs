@@ -10,6 +10,18 @@ namespace Machina.Simulation.Krl;
 internal sealed record EkiReceiveElement(string Tag, string? Type, int SetFlag);
 
 /// <summary>
+/// The binary element of a channel in raw mode (<c>&lt;RAW&gt;&lt;ELEMENT Tag="Buffer" Type="BYTE" Size="10" /&gt;&lt;/RAW&gt;</c>): a record
+/// of exactly <paramref name="Size"/> bytes (BYTE), or of at most that many ending with an end string (STREAM, <c>EOS="65,66"</c>,
+/// alternatives separated by <c>|</c>).
+/// </summary>
+/// <param name="Tag">The element's name (the memory EKI_GetString reads).</param>
+/// <param name="Stream">True for STREAM, false for BYTE.</param>
+/// <param name="Size">BYTE: the record's size; STREAM: its largest size (1 to 3600 bytes, the manual's range).</param>
+/// <param name="EndStrings">STREAM: the end strings (each 1 to 32 bytes).</param>
+/// <param name="SetFlag">The $FLAG set when a record has been received (0: none).</param>
+internal sealed record EkiRawElement(string Tag, bool Stream, int Size, IReadOnlyList<byte[]> EndStrings, int SetFlag);
+
+/// <summary>
 /// An EthernetKRL channel's XML configuration as the manual describes it: the external system's role (<c>Client</c>: the robot
 /// listens), address and port, the value memories' mode and limit, the ALIVE flag, and the RECEIVE and SEND elements.
 /// </summary>
@@ -51,6 +63,12 @@ internal sealed class EkiConfiguration
     /// <summary>The tags that can be sent, in order.</summary>
     public IReadOnlyList<string> Send { get; private init; } = [];
 
+    /// <summary>The binary element received (RECEIVE in raw mode), or null for XML.</summary>
+    public EkiRawElement? RawReceive { get; private init; }
+
+    /// <summary>The binary element sent (SEND in raw mode), or null for XML.</summary>
+    public EkiRawElement? RawSend { get; private init; }
+
     /// <summary>Reads a configuration; throws <see cref="FormatException"/> with the reason for one the package would refuse.</summary>
     public static EkiConfiguration Parse(string name, string xml)
     {
@@ -82,6 +100,7 @@ internal sealed class EkiConfiguration
         {
             throw new FormatException($"the configuration {name}.xml has PROTOCOL \"{protocol}\": EthernetKRL speaks TCP or UDP");
         }
+        EkiRawElement? rawReceive = Raw(name, root.Element("RECEIVE")), rawSend = Raw(name, root.Element("SEND"));
         return new EkiConfiguration
         {
             RobotIsServer = string.Equals(type, "Client", StringComparison.OrdinalIgnoreCase),
@@ -96,8 +115,56 @@ internal sealed class EkiConfiguration
             Receive = [.. (root.Element("RECEIVE")?.Element("XML")?.Elements("ELEMENT") ?? []).Select(e => new EkiReceiveElement(
                 (string?)e.Attribute("Tag") ?? throw new FormatException($"an ELEMENT of {name}.xml has no Tag"),
                 ((string?)e.Attribute("Type"))?.ToUpperInvariant(),
-                int.TryParse((string?)e.Attribute("Set_Flag"), CultureInfo.InvariantCulture, out int flag) ? flag : 0))],
+                int.TryParse((string?)e.Attribute("Set_Flag"), CultureInfo.InvariantCulture, out int flag) ? flag : 0)),
+                .. (rawReceive is null ? Array.Empty<EkiReceiveElement>() : new[] { new EkiReceiveElement(rawReceive.Tag, "STRING", rawReceive.SetFlag) })],
             Send = [.. (root.Element("SEND")?.Element("XML")?.Elements("ELEMENT") ?? []).Select(e => (string?)e.Attribute("Tag") ?? "")],
+            RawReceive = rawReceive,
+            RawSend = rawSend,
         };
+    }
+
+    /// <summary>The RAW element of a RECEIVE or SEND section (null when it has none); throws <see cref="FormatException"/> for one the package would refuse.</summary>
+    private static EkiRawElement? Raw(string name, XElement? section)
+    {
+        XElement[] elements = [.. section?.Element("RAW")?.Elements("ELEMENT") ?? []];
+        if (elements.Length == 0)
+        {
+            return null;
+        }
+        if (elements.Length > 1)
+        {
+            throw new FormatException($"the configuration {name}.xml has {elements.Length} RAW elements in <{section!.Name}>: binary data has one memory, so one element");
+        }
+        XElement e = elements[0];
+        string tag = (string?)e.Attribute("Tag") ?? throw new FormatException($"the RAW ELEMENT of {name}.xml has no Tag");
+        string type = ((string?)e.Attribute("Type") ?? "").Trim().ToUpperInvariant();
+        if (type is not ("BYTE" or "STREAM"))
+        {
+            throw new FormatException($"the RAW ELEMENT {tag} of {name}.xml has Type \"{(string?)e.Attribute("Type")}\": BYTE (fixed length) or STREAM (with an end string)");
+        }
+        if (!int.TryParse((string?)e.Attribute("Size"), NumberStyles.None, CultureInfo.InvariantCulture, out int size) || size is < 1 or > 3600)
+        {
+            if (type == "BYTE" || e.Attribute("Size") is not null)
+            {
+                throw new FormatException($"the RAW ELEMENT {tag} of {name}.xml needs a Size of 1 to 3600 bytes");
+            }
+            size = 3600;
+        }
+        var ends = new List<byte[]>();
+        if (type == "STREAM")
+        {
+            foreach (string alternative in ((string?)e.Attribute("EOS") ?? "").Split('|', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+            {
+                byte[] end = [.. alternative.Split(',').Select(b => byte.TryParse(b.Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out byte v)
+                    ? v : throw new FormatException($"the EOS of RAW ELEMENT {tag} of {name}.xml is not a list of byte values (\"{alternative}\")"))];
+                ends.Add(end.Length is >= 1 and <= 32 ? end : throw new FormatException($"an EOS of RAW ELEMENT {tag} of {name}.xml has {end.Length} bytes (1 to 32)"));
+            }
+            if (ends.Count == 0)
+            {
+                throw new FormatException($"the RAW ELEMENT {tag} of {name}.xml is a STREAM without an end string (EOS)");
+            }
+        }
+        int setFlag = int.TryParse((string?)e.Attribute("Set_Flag"), CultureInfo.InvariantCulture, out int flag) ? flag : 0;
+        return new EkiRawElement(tag, type == "STREAM", size, ends, setFlag);
     }
 }

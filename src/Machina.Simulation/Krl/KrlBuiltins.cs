@@ -2,7 +2,8 @@ namespace Machina.Simulation.Krl;
 
 /// <summary>
 /// The system routines KRL programs call (BAS is in <see cref="KrlBasicPackage"/>): IR_STOPM (its stop-message interrupt),
-/// INVERSE, StrCopy, Set_KrlMsg, and the mathematical functions.
+/// INVERSE, StrCopy, Set_KrlMsg, the mathematical functions, and EthernetKRL's EKI_GetFrameArray (the other EKI_ routines are the
+/// controller's, see KrlTwinController.Eki.cs).
 /// </summary>
 internal static class KrlBuiltins
 {
@@ -28,6 +29,8 @@ internal static class KrlBuiltins
         Add(Math1("COS", x => Math.Cos(x * Math.PI / 180)));
         Add(Math1("TAN", x => Math.Tan(x * Math.PI / 180)));
         Add(Math1("ACOS", x => Math.Acos(x) * 180 / Math.PI));
+        Add(new("EKI_GetFrameArray", KrlTypes.EkiStatus, [KrlBuiltinParameter.Text, KrlBuiltinParameter.Text, new(KrlType.Array(KrlTypes.Frame, 0), IsOut: true)],
+            (machine, a) => machine.Controller.EkiGetFrameArray(Text(a[0]), Text(a[1]), (KrlPlace)a[2])));
         Add(new("ATAN2", KrlType.Real, [KrlBuiltinParameter.Real, KrlBuiltinParameter.Real],
             (_, a) => Math.Atan2(KrlValues.ToReal(a[0]), KrlValues.ToReal(a[1])) * 180 / Math.PI));
     }
@@ -48,6 +51,9 @@ internal static class KrlBuiltins
         machine.Controller.Pendant.Log($"NOTIFY {Text(1)}{number}: {text}".Replace("NOTIFY :", "NOTIFY:", StringComparison.Ordinal));
         return null;
     }
+
+    /// <summary>A text argument (a string literal or a CHAR array).</summary>
+    private static string Text(object value) => value is string s ? s : KrlValues.Text((KrlArrayValue)value);
 
     private static KrlBuiltin Math1(string name, Func<double, double> f) =>
         new(name, KrlType.Real, [KrlBuiltinParameter.Real], (_, a) => f(KrlValues.ToReal(a[0])));

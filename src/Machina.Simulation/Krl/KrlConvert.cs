@@ -31,6 +31,7 @@ internal static class KrlConvert
                     if (j >= 0)
                     {
                         result.Values[j] = To(type.Fields[j].Type, s.Values[i], result.Values[j]);
+                        result.Unset = s.IsGiven(i) ? result.Unset & ~(1 << j) : result.Unset | (1 << j);
                     }
                 }
                 return result;
@@ -44,6 +45,7 @@ internal static class KrlConvert
                     if (j >= 0)
                     {
                         result.Values[j] = To(type.Fields[j].Type, p.Values[i], result.Values[j]);
+                        result.Give(j);
                     }
                 }
                 return result;

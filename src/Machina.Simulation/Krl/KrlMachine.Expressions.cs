@@ -67,7 +67,7 @@ internal sealed partial class KrlMachine
             {
                 KrlPlace parent = Place(member.Target, frame);
                 var structure = (KrlStructValue)parent.Container[parent.Index];
-                return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null };
+                return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null, Structure = structure };
             }
             case KrlIndex index:
             {

@@ -215,8 +215,15 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 return Flow.Next;
             case KrlMotion motion:
                 RunTriggers(atEnd: false);
-                Controller.Move(motion.Kind, Eval(motion.Target, frame), motion.Auxiliary is null ? null : Eval(motion.Auxiliary, frame),
-                    motion.Approximation, motion.Line, Cancellation);
+                try
+                {
+                    Controller.Move(motion.Kind, GivenComponents(Eval(motion.Target, frame)), motion.Auxiliary is null ? null : Eval(motion.Auxiliary, frame),
+                        motion.Approximation, motion.Line, Cancellation);
+                }
+                finally
+                {
+                    DisarmTimerWake();
+                }
                 RunTriggers(atEnd: true);
                 return Flow.Next;
             case KrlJump jump:
@@ -240,6 +247,22 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             default:
                 throw new KrlRuntimeException("a statement the twin cannot run");
         }
+    }
+
+    /// <summary>
+    /// A motion's target as the components it was given: a POS or E6POS whose status S or turn T was never given (assigned an
+    /// aggregate without them, e.g. <c>P = {X 0, Y 0, Z 0, A 0, B 0, C 0}</c>) leaves them out, so that a PTP takes the solution
+    /// nearest the current axes instead of S 'B000' and T 'B000000' (KUKA: without S and T the controller keeps the current status
+    /// and takes the shortest way).
+    /// </summary>
+    private static object GivenComponents(object target)
+    {
+        if (target is not KrlStructValue { Unset: not 0 } position)
+        {
+            return target;
+        }
+        int[] given = [.. Enumerable.Range(0, position.Values.Length).Where(position.IsGiven)];
+        return new KrlPartialValue(position.Type, given, [.. given.Select(i => position.Values[i])]);
     }
 
     /// <summary>Counts one statement or loop turn against the step budget.</summary>
@@ -393,9 +416,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     }
 
     /// <summary>
-    /// Serves the interrupts while a motion is under way (the arm calls it each time the motion is woken, on this interpreter's
-    /// thread): the arm stands where the motion was while an interrupt routine runs, goes on when it returns, and is left where
-    /// it stands by a RESUME. (A real arm goes on moving during an interrupt routine until its BRAKE.)
+    /// Serves the interrupts while a motion is under way (the arm calls it as each part of the motion starts, and each time the
+    /// motion is woken: by a flag, input or channel, or by a running timer reaching 0, see <see cref="ArmTimerWake"/>; on this
+    /// interpreter's thread): the arm stands where the motion was while an interrupt routine runs, goes on when it returns, and is
+    /// left where it stands by a RESUME. (A real arm goes on moving during an interrupt routine until its BRAKE.)
     /// </summary>
     public void ServeInterrupts()
     {
@@ -404,6 +428,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             _checkedWrites = _writes;
             _checkedInputs = Controller.InputsVersion;
             CheckInterrupts();
+            ArmTimerWake(); // the next timer to reach 0 wakes the motion again (a routine may have set its timer back)
         }
     }
 

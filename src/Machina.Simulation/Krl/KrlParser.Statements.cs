@@ -236,6 +236,17 @@ internal sealed partial class KrlParser
                 throw Error(Peek, $"{kind} cannot be approximated with {approximation}");
             }
             _at++;
+            if (approximation == "C_PTP" && Peek.Kind == KrlTokenKind.Name && Approximations.Any(a => Peek.Is(a)))
+            {
+                // PTP-CP approximation (PTP P1 C_PTP C_DIS): C_PTP for a PTP that follows, the second for a LIN or CIRC that follows.
+                string path = Peek.Text.ToUpperInvariant();
+                if (path == "C_PTP")
+                {
+                    throw Error(Peek, "PTP … C_PTP takes C_DIS, C_ORI or C_VEL after it (for a LIN or CIRC that follows), not C_PTP again");
+                }
+                approximation += " " + path;
+                _at++;
+            }
         }
         EndOfLine();
         return new KrlMotion(keyword.Line, kind, target, auxiliary, approximation);

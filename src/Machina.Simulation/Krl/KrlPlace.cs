@@ -21,6 +21,9 @@ internal sealed class KrlPlace(object[] container, int index, KrlType type, int 
     /// <summary>The variable the place is part of, told after a write (e.g. <c>$OUT</c>), and the element's index in it.</summary>
     public (KrlCell Cell, int Element)? Root { get; init; }
 
+    /// <summary>For a component of a structure, the structure (it notes that the component was given a value).</summary>
+    public KrlStructValue? Structure { get; init; }
+
     /// <summary>The value stored (a copy of the row for a slice).</summary>
     public object Get() => SliceLength > 0
         ? new KrlArrayValue(Type, Container[Index..(Index + SliceLength)])
@@ -46,6 +49,7 @@ internal sealed class KrlPlace(object[] container, int index, KrlType type, int 
         else
         {
             Container[Index] = KrlConvert.To(Type, value, Container[Index]);
+            Structure?.Give(Index);
         }
         if (Root is { } root)
         {

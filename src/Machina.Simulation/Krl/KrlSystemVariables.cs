@@ -60,7 +60,7 @@ internal static partial class KrlSystemVariables
         object[] modelName = new object[32];
         KrlValues.SetText(modelName, 0, 32, ModelName(options.Model));
         Add(new KrlCell("$MODEL_NAME", name32, new KrlArrayValue(name32, modelName)) { ReadOnly = true });
-        Add(new KrlCell("$POS_ACT", KrlTypes.E6Pos, null!) { ReadOnly = true, Read = controller.PositionNow });
+        Add(new KrlCell("$POS_ACT", KrlTypes.E6Pos, null!) { ReadOnly = true, Read = () => Given(controller.PositionNow()) });
         Add(new KrlCell("$AXIS_ACT", KrlTypes.E6Axis, null!) { ReadOnly = true, Read = controller.AxesNow });
     }
 
@@ -69,6 +69,13 @@ internal static partial class KrlSystemVariables
     /// controller (e.g. "#KR6R900SIXX C4" for the KR 6 R900 sixx).
     /// </summary>
     internal static string ModelName(RobotModel model) => "#" + model.Name.Replace(" ", "", StringComparison.Ordinal).ToUpperInvariant() + " C4";
+
+    /// <summary>A position the controller measured: its status and turn are given (<see cref="KrlStructValue.Unset"/>).</summary>
+    private static object Given(object position)
+    {
+        ((KrlStructValue)position).Unset = 0;
+        return position;
+    }
 
     private static KrlArrayValue Filled(KrlType type, object value) => new(type, [.. Enumerable.Repeat(value, type.Length)]);
 }

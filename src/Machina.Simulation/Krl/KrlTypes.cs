@@ -67,6 +67,9 @@ internal static class KrlTypes
     /// <summary>True for the Cartesian structures (FRAME, POS, E6POS), which assign to one another component by component.</summary>
     public static bool IsCartesian(KrlType type) => type == Frame || type == Pos || type == E6Pos;
 
+    /// <summary>The bits of the status S and turn T components of a POS or E6POS (0 for other types): see <see cref="KrlStructValue.Unset"/>.</summary>
+    public static int StatusTurnBits(KrlType type) => type == Pos || type == E6Pos ? (1 << 6) | (1 << 7) : 0;
+
     /// <summary>True for the axis structures (AXIS, E6AXIS).</summary>
     public static bool IsAxes(KrlType type) => type == Axis || type == E6Axis;
 

@@ -26,6 +26,13 @@ internal sealed class KrlStructValue(KrlType type, object[] values)
     /// <summary>The component values, in the type's order.</summary>
     public object[] Values { get; } = values;
 
+    /// <summary>
+    /// The components that were never given a value (bit i: component i), tracked for the status S and turn T of a POS or E6POS
+    /// only: a PTP to a position whose S and T were never given takes the solution nearest the current axes, as the controller
+    /// does. Reading such a component gives 0.
+    /// </summary>
+    public int Unset { get; set; }
+
     /// <summary>A deep copy (KRL structures are values).</summary>
     public KrlStructValue Copy()
     {
@@ -34,8 +41,14 @@ internal sealed class KrlStructValue(KrlType type, object[] values)
         {
             values[i] = KrlValues.Copy(Values[i]);
         }
-        return new KrlStructValue(Type, values);
+        return new KrlStructValue(Type, values) { Unset = Unset };
     }
+
+    /// <summary>True when component <paramref name="index"/> was given a value.</summary>
+    public bool IsGiven(int index) => (Unset & (1 << index)) == 0;
+
+    /// <summary>Marks component <paramref name="index"/> as given a value.</summary>
+    public void Give(int index) => Unset &= ~(1 << index);
 
     /// <summary>The REAL (or INT) component <paramref name="field"/>, 0 when the type has none.</summary>
     public double Number(string field) => Type.FieldIndex(field) is int i and >= 0 ? KrlValues.ToReal(Values[i]) : 0;
@@ -94,7 +107,7 @@ internal static class KrlValues
         KrlKind.Bool => false,
         KrlKind.Char => '\0',
         KrlKind.Enum => new KrlEnumValue(""),
-        KrlKind.Struct => new KrlStructValue(type, [.. type.Fields.Select(f => Default(f.Type))]),
+        KrlKind.Struct => new KrlStructValue(type, [.. type.Fields.Select(f => Default(f.Type))]) { Unset = KrlTypes.StatusTurnBits(type) },
         _ => new KrlArrayValue(type, [.. Enumerable.Range(0, type.Length).Select(_ => Default(type.Element!))]),
     };
 

@@ -65,18 +65,12 @@ public class EkiArrayFrameClientTests
         using var twin = new KrlTwinController();
         twin.AddEkiConfiguration("Arrays", UdpConfiguration);
         twin.Load(("arrays.src", ArrayProgram), ("arrays.dat", "DEFDAT arrays\n  INT lastIds = 0\nENDDAT\n"));
-        using var stop = new CancellationTokenSource(Limit);
-        Task<KrlProgramState> run = Task.Run(() => twin.Run(null, stop.Token));
-        await EventuallyAsync(() => twin.EkiPort("Arrays") > 0 || run.IsCompleted, "the channel to be open");
 
-        using var client = new UdpClient(new IPEndPoint(IPAddress.Loopback, 0));
-        byte[] command = Encoding.UTF8.GetBytes("<Cmd><V Id=\"5\"/><V Id=\"6\"/><V Id=\"7\"/><V Id=\"8\"/><V Id=\"9\"/><Pos X=\"1\" Y=\"2\" Z=\"3\" A=\"4\" B=\"5\" C=\"6\"/></Cmd>");
-        await client.SendAsync(command, new IPEndPoint(IPAddress.Loopback, twin.EkiPort("Arrays")));
-        UdpReceiveResult answer = await client.ReceiveAsync(stop.Token).AsTask().WaitAsync(Limit);
-        KrlProgramState state = await run.WaitAsync(Limit);
+        (KrlProgramState state, string answer) = await EkiUdpExchange.RunAsync(twin, "Arrays",
+            "<Cmd><V Id=\"5\"/><V Id=\"6\"/><V Id=\"7\"/><V Id=\"8\"/><V Id=\"9\"/><Pos X=\"1\" Y=\"2\" Z=\"3\" A=\"4\" B=\"5\" C=\"6\"/></Cmd>");
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
-        Assert.Equal("<State Read=\"4\" Left=\"1\"><Pos X=\"1\" Y=\"2\" Z=\"4\" A=\"4\" B=\"5\" C=\"6\" /></State>", Encoding.UTF8.GetString(answer.Buffer));
+        Assert.Equal("<State Read=\"4\" Left=\"1\"><Pos X=\"1\" Y=\"2\" Z=\"4\" A=\"4\" B=\"5\" C=\"6\" /></State>", answer);
         Assert.Equal(5678, (int)twin.Modules["arrays"].Data["lastIds"].Value);
     }
 
