@@ -99,16 +99,24 @@ internal static partial class RapidBuiltins
             throw MotionError(call, ex.Message);
         }
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
+        Joints startJoints = near;
+        RequireOutsideLimitZones(call, f => arc?.At(f).Position
+            ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(startJoints, joints, f), tool)));
         arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
         if (!linear || call.Has(p.T))
         {
             arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: linear, arc: arc);
+            ZoneOutputsAfterMotion(call);
             return;
         }
         (double v, double acceleration, _) = Speeds(call, p);
         double zone = Zone(call, p);
         arm.MoveLinear(new TwinLinearMove(goal, joints, v, acceleration, seconds, zone, zone > 0 && !task.Controller.HasSockets), call.Line, name, task.CancellationToken);
+        ZoneOutputsAfterMotion(call);
     }
+
+    /// <summary>The TCP (base frame) of the arm at <paramref name="joints"/> with <paramref name="tool"/>.</summary>
+    private static Vector ToolAt(TwinArm arm, Joints joints, Pose tool) => (arm.Model.Kinematics.Forward(joints) * tool).Position;
 
     /// <summary>
     /// The zone radius of a move in mm (RAPID reference, zonedata): pzone_tcp, or \Z when given; 0 for a stop point (fine, finep
@@ -145,8 +153,11 @@ internal static partial class RapidBuiltins
         task.WorkObject = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
         Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
         double seconds = Duration(call, p, (goal.Position - start.Position).Length, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
+        Joints from = arm.Joints;
+        RequireOutsideLimitZones(call, f => ToolAt(arm, Between(from, joints, f), tool));
         arm.Serve = task.RunPendingTraps;
         arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
+        ZoneOutputsAfterMotion(call);
     }
 
     /// <summary>Seconds a move takes: \T when given, else the TCP path at the programmed speed (VelSet applied) with the acceleration ramps, or the reorientation at v_ori when it is longer.</summary>
