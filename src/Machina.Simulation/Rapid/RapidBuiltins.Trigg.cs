@@ -108,6 +108,7 @@ internal static partial class RapidBuiltins
         {
             arm.ToolCenter = tool;
             task.WorkObject = wobj;
+            task.UsedFrames(call.Record(p.Tool), call.Has(p.WObj) ? call.Record(p.WObj) : null);
             joints = arm.Solve(goal, from);
             arm.RequireWithinLimits(joints);
         }
