@@ -74,6 +74,9 @@ internal readonly struct RapidCall(RapidMachine machine, RapidFrame? frame, Rapi
     /// <summary>The static type of parameter <paramref name="p"/>'s argument.</summary>
     public RapidDataType? TypeOf(int p) => args[target.ArgumentOf[p]].Value!.Type;
 
+    /// <summary>The name of the data given for parameter <paramref name="p"/> (<c>sync1</c>), or null when it is not a plain name.</summary>
+    public string? DataName(int p) => (args[target.ArgumentOf[p]].Value as RapidName)?.Name;
+
     /// <summary>Writes <paramref name="value"/> into the data given for parameter <paramref name="p"/>.</summary>
     public void Set(int p, object value) => machine.Store(args[target.ArgumentOf[p]].Value!, frame, value);
 

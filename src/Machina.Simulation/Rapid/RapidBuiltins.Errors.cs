@@ -27,6 +27,7 @@ internal static partial class RapidBuiltins
         }),
         Instruction("SkipWarn", [], _ => { }),
         Instruction("BookErrNo", [P("ErrorName", "errnum", true)], call => call.Set(0, (double)call.Machine.Task.Controller.BookErrorNumber())),
+        Instruction("ResetRetryCount", [], call => call.Machine.ResetRetries()),
         Instruction("ExitCycle", [], call => throw new RapidExitCycleException(call.Line)),
     ];
 

@@ -32,14 +32,13 @@ internal static partial class RapidBuiltins
             Instruction("MoveC", [Sw("Conc"), P("CirPoint", "robtarget"), P("ToPoint", "robtarget"), .. Tail()],
                 call => MoveTo(call, "MoveC", call.Record(2), call.Record(1), circular)),
             Instruction("MoveAbsJ", [Sw("Conc"), P("ToJointPos", "jointtarget"), Sw("NoEOffs"), .. Tail()], call => MoveAbsJ(call, circular)),
-            Function("CRobT", "robtarget", [Opt("TaskRef", "num"), Opt("TaskName", "string"), Opt("Tool", "tooldata"), Opt("WObj", "wobjdata")], call =>
-            {
-                RapidTwinController c = call.Machine.Task.Controller;
-                Joints joints = c.Arm.Joints;
-                Pose tool = call.Has(2) ? ToolFrame(call, call.Record(2)) : c.Arm.ToolCenter;
-                Pose wobj = call.Has(3) ? WorkObjectFrame(call, call.Record(3)) : call.Machine.Task.WorkObject;
-                return RapidGeometry.ToRobTarget(wobj.Inverse() * c.Arm.Model.Kinematics.Forward(joints) * tool, joints);
-            }),
+            Function("CRobT", "robtarget", [Opt("TaskRef", "num"), Opt("TaskName", "string"), Opt("Tool", "tooldata"), Opt("WObj", "wobjdata")],
+                call => CurrentTarget(call, 2, 3)),
+            Function("CPos", "pos", [Opt("Tool", "tooldata"), Opt("WObj", "wobjdata")], call => CurrentTarget(call, 0, 1).Fields[0]),
+            Function("CTool", "tooldata", [Opt("TaskRef", "num"), Opt("TaskName", "string")],
+                call => RapidValues.Copy(call.Machine.Task.ToolData ?? call.Machine.Task.Program.Globals["tool0"].Value)),
+            Function("CWObj", "wobjdata", [Opt("TaskRef", "num"), Opt("TaskName", "string")],
+                call => RapidValues.Copy(call.Machine.Task.WObjData ?? call.Machine.Task.Program.Globals["wobj0"].Value)),
             Function("CJointT", "jointtarget", [Opt("TaskRef", "num"), Opt("TaskName", "string")],
                 call => RapidGeometry.ToJointTarget(call.Machine.Task.Controller.Arm.Joints)),
             Function("CalcRobT", "robtarget", [P("Joint_target", "jointtarget"), P("Tool", "tooldata"), Opt("WObj", "wobjdata")], call =>
@@ -50,6 +49,16 @@ internal static partial class RapidBuiltins
                 return RapidGeometry.ToRobTarget(wobj.Inverse() * flange * ToolFrame(call, call.Record(1)), joints);
             }),
         ];
+    }
+
+    /// <summary>CRobT, CPos: where the TCP of the arm is now, through the \Tool and \WObj given (parameters), else the last motion's.</summary>
+    private static RapidRecord CurrentTarget(RapidCall call, int toolParam, int wobjParam)
+    {
+        RapidTwinController c = call.Machine.Task.Controller;
+        Joints joints = c.Arm.Joints;
+        Pose tool = call.Has(toolParam) ? ToolFrame(call, call.Record(toolParam)) : c.Arm.ToolCenter;
+        Pose wobj = call.Has(wobjParam) ? WorkObjectFrame(call, call.Record(wobjParam)) : call.Machine.Task.WorkObject;
+        return RapidGeometry.ToRobTarget(wobj.Inverse() * c.Arm.Model.Kinematics.Forward(joints) * tool, joints);
     }
 
     private static void MoveTo(RapidCall call, string name, RapidRecord target, RapidRecord? via, MoveParams p)
@@ -74,6 +83,7 @@ internal static partial class RapidBuiltins
         {
             arm.ToolCenter = tool;
             task.WorkObject = wobj;
+            task.UsedFrames(call.Record(p.Tool), call.Has(p.WObj) ? call.Record(p.WObj) : null);
             if (via is not null)
             {
                 Pose middle = wobj * RapidGeometry.ToPose(via, call.Line);
@@ -99,16 +109,24 @@ internal static partial class RapidBuiltins
             throw MotionError(call, ex.Message);
         }
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
+        Joints startJoints = near;
+        RequireOutsideLimitZones(call, f => arc?.At(f).Position
+            ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(startJoints, joints, f), tool)));
         arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
         if (!linear || call.Has(p.T))
         {
             arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: linear, arc: arc);
+            ZoneOutputsAfterMotion(call);
             return;
         }
         (double v, double acceleration, _) = Speeds(call, p);
         double zone = Zone(call, p);
         arm.MoveLinear(new TwinLinearMove(goal, joints, v, acceleration, seconds, zone, zone > 0 && !task.Controller.HasSockets), call.Line, name, task.CancellationToken);
+        ZoneOutputsAfterMotion(call);
     }
+
+    /// <summary>The TCP (base frame) of the arm at <paramref name="joints"/> with <paramref name="tool"/>.</summary>
+    private static Vector ToolAt(TwinArm arm, Joints joints, Pose tool) => (arm.Model.Kinematics.Forward(joints) * tool).Position;
 
     /// <summary>
     /// The zone radius of a move in mm (RAPID reference, zonedata): pzone_tcp, or \Z when given; 0 for a stop point (fine, finep
@@ -143,10 +161,14 @@ internal static partial class RapidBuiltins
         Pose start = arm.Flange * tool;
         arm.ToolCenter = tool;
         task.WorkObject = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
+        task.UsedFrames(call.Record(p.Tool), call.Has(p.WObj) ? call.Record(p.WObj) : null);
         Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
         double seconds = Duration(call, p, (goal.Position - start.Position).Length, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
+        Joints from = arm.Joints;
+        RequireOutsideLimitZones(call, f => ToolAt(arm, Between(from, joints, f), tool));
         arm.Serve = task.RunPendingTraps;
         arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
+        ZoneOutputsAfterMotion(call);
     }
 
     /// <summary>Seconds a move takes: \T when given, else the TCP path at the programmed speed (VelSet applied) with the acceleration ramps, or the reorientation at v_ori when it is longer.</summary>

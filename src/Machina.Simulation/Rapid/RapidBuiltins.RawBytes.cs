@@ -170,24 +170,28 @@ internal static partial class RapidBuiltins
             received.AddRange(Encoding.Latin1.GetBytes(ReceiveText(call, connection, max, seconds)));
         }
         while (wanted > 0 && received.Count < wanted);
-        if (call.Has(2))
-        {
-            var raw = (RapidRawBytes)call.Value(2);
-            Array.Clear(raw.Bytes);
-            raw.Length = 0;
-            raw.Write(1, received.ToArray());
-        }
-        else
-        {
-            var array = (RapidArray)call.Value(3);
-            for (int i = 0; i < array.Items.Length; i++)
-            {
-                array.Items[i] = i < received.Count ? (double)received[i] : 0.0;
-            }
-        }
+        StoreReceived(call, 2, [.. received]);
         if (call.Has(5))
         {
             call.Set(5, (double)received.Count);
+        }
+    }
+
+    /// <summary>Puts received bytes into the \RawData (parameter <paramref name="raw"/>, from index 1) or the \Data array (the next parameter).</summary>
+    private static void StoreReceived(RapidCall call, int raw, byte[] received)
+    {
+        if (call.Has(raw))
+        {
+            var bytes = (RapidRawBytes)call.Value(raw);
+            Array.Clear(bytes.Bytes);
+            bytes.Length = 0;
+            bytes.Write(1, received);
+            return;
+        }
+        var array = (RapidArray)call.Value(raw + 1);
+        for (int i = 0; i < array.Items.Length; i++)
+        {
+            array.Items[i] = i < received.Length ? (double)received[i] : 0.0;
         }
     }
 
@@ -245,23 +249,23 @@ internal static partial class RapidBuiltins
     }
 
     /// <summary>The bytes SocketSend sends: \Str, \RawData (its length, or \NoOfBytes) or \Data (an array of bytes, or \NoOfBytes of them).</summary>
-    private static byte[] SendBytes(RapidCall call)
+    private static byte[] SendBytes(RapidCall call, int first = 1)
     {
-        if (call.Has(1))
+        if (call.Has(first))
         {
-            return Encoding.Latin1.GetBytes(call.Str(1));
+            return Encoding.Latin1.GetBytes(call.Str(first));
         }
-        if (call.Has(2))
+        if (call.Has(first + 1))
         {
-            var raw = (RapidRawBytes)call.Value(2);
-            int count = call.Has(4) ? (int)call.Num(4) : raw.Length;
+            var raw = (RapidRawBytes)call.Value(first + 1);
+            int count = call.Has(first + 3) ? (int)call.Num(first + 3) : raw.Length;
             return count < 0 || count > raw.Length
                 ? throw ArgumentError(call, $"SocketSend: \\NoOfBytes {count} is more than the {raw.Length} bytes of the data")
                 : raw.Bytes[..count];
         }
-        if (call.Has(3) && call.Value(3) is RapidArray array)
+        if (call.Has(first + 2) && call.Value(first + 2) is RapidArray array)
         {
-            int count = call.Has(4) ? (int)call.Num(4) : array.Items.Length;
+            int count = call.Has(first + 3) ? (int)call.Num(first + 3) : array.Items.Length;
             return [.. array.Items.Take(count).Select(v => (byte)(double)v)];
         }
         throw ArgumentError(call, "SocketSend needs \\Str, \\RawData or \\Data");

@@ -22,6 +22,10 @@ internal static partial class RapidBuiltins
             {
                 throw call.Error(RapidErrorNumbers.SockAddrInUse, "SocketCreate: the socket is already created");
             }
+            if (call.Has(1))
+            {
+                s.Udp = new Socket(AddressFamily.InterNetwork, SocketType.Dgram, ProtocolType.Udp);
+            }
             s.Status = 1;
             call.Machine.Task.Controller.Track(s);
         }),
@@ -33,6 +37,14 @@ internal static partial class RapidBuiltins
                 throw ArgumentError(call, $"SocketBind: \"{call.Str(1)}\" is not an IP address");
             }
             s.Bound = new IPEndPoint(address, (int)call.Num(2));
+            try
+            {
+                s.Udp?.Bind(s.Bound);
+            }
+            catch (SocketException ex)
+            {
+                throw call.Error(RapidErrorNumbers.SockAddrInUse, $"SocketBind: {ex.Message}");
+            }
             s.Status = 3;
         }),
         Instruction("SocketListen", [P("Socket", "socketdev")], call =>
@@ -138,7 +150,8 @@ internal static partial class RapidBuiltins
             }
             s.Connection?.Dispose();
             s.Listener?.Stop();
-            (s.Connection, s.Listener, s.Bound, s.Status) = (null, null, null, 0);
+            s.Udp?.Dispose();
+            (s.Connection, s.Listener, s.Udp, s.Bound, s.Status, s.PendingDatagram) = (null, null, null, null, 0, null);
         }),
         Function("SocketPeek", "num", [P("Socket", "socketdev")], call =>
         {

@@ -21,6 +21,21 @@ internal sealed partial class RapidMachine
         return false;
     }
 
+    /// <summary>The RETRYs since a retried statement last got past its error (or TRYNEXT, RETURN, ResetRetryCount).</summary>
+    private int _retries;
+
+    /// <summary>ResetRetryCount: the retries start again from 0.</summary>
+    public void ResetRetries() => _retries = 0;
+
+    /// <summary>
+    /// ERR_EXCRTYMAX: one more RETRY than <see cref="RapidTwinOptions.MaxRetries"/> without the statement getting past its error. It is
+    /// raised from the error handler, so the routine's own handler does not take it: the caller's may, else the task stops.
+    /// </summary>
+    private RapidRuntimeException TooManyRetries(RapidRuntimeException error, RapidFrame frame) =>
+        new(RapidErrorNumbers.RetryMax, error.Line,
+            $"the maximum number of retries ({Task.Controller.Options.MaxRetries}) is exceeded: {error.Reason}")
+        { RaisedBy = frame };
+
     /// <summary>
     /// Runs a routine's body; when an error or ExitCycle leaves it early, its UNDO handler runs first (an error inside the UNDO
     /// handler is dropped: the first one goes on).

@@ -78,11 +78,17 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// <summary>Runs a statement of a routine that has an ERROR handler: a RAPID error in it goes to the handler.</summary>
     private RapidFlow ExecuteGuarded(RapidStmt statement, RapidFrame frame)
     {
+        bool retried = false;
         while (true)
         {
             try
             {
-                return ExecuteAfterTraps(statement, frame);
+                RapidFlow done = ExecuteAfterTraps(statement, frame);
+                if (retried)
+                {
+                    _retries = 0; // the statement got past its error
+                }
+                return done;
             }
             catch (RapidRuntimeException ex) when (ex.RaisedBy != frame && frame.Handling is null && !ex.Fatal && Takes(frame, ex.ErrorNumber))
             {
@@ -97,16 +103,18 @@ internal sealed partial class RapidMachine(RapidTask task)
                 {
                     frame.Handling = null;
                 }
-                switch (flow)
+                if (flow != RapidFlow.Retry)
                 {
-                    case RapidFlow.Retry:
-                        Task.CancellationToken.ThrowIfCancellationRequested();
-                        continue;
-                    case RapidFlow.TryNext:
-                        return RapidFlow.Next;
-                    default:
-                        return RapidFlow.Return;
+                    _retries = 0;
+                    return flow == RapidFlow.TryNext ? RapidFlow.Next : RapidFlow.Return;
                 }
+                Task.CancellationToken.ThrowIfCancellationRequested();
+                if (++_retries > Task.Controller.Options.MaxRetries && Task.Controller.Options.MaxRetries > 0)
+                {
+                    _retries = 0;
+                    throw TooManyRetries(ex, frame);
+                }
+                retried = true;
             }
         }
     }

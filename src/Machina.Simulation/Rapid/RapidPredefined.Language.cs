@@ -30,7 +30,7 @@ internal static partial class RapidPredefined
     private static readonly (string Name, string Value)[] LanguageStrings =
     [
         ("STR_DIGIT", "0123456789"), ("STR_UPPER", "ABCDEFGHIJKLMNOPQRSTUVWXYZ"), ("STR_LOWER", "abcdefghijklmnopqrstuvwxyz"), ("STR_WHITE", " "),
-        ("ERRSTR_EMPTY", ""), ("stEmpty", ""), ("ERRSTR_UNUSED", ""), ("diskhome", "HOME:"), ("disktemp", "TEMP:"), ("diskram", "RAMDISK:"),
+        ("ERRSTR_EMPTY", ""), ("stEmpty", ""), ("ERRSTR_UNUSED", ""), ("diskhome", "HOME:"), ("disktemp", "TEMP:"), ("diskram", "RAMDISK:"), ("EOF", "EOF"),
     ];
 
     private static void AddLanguageConstants(RapidProgram program)

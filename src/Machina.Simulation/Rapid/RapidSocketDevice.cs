@@ -2,7 +2,7 @@ using System.Net.Sockets;
 
 namespace Machina.Simulation.Rapid;
 
-/// <summary>A <c>socketdev</c>: one of the controller's TCP sockets (created, bound, listening or connected).</summary>
+/// <summary>A <c>socketdev</c>: one of the controller's TCP sockets (created, bound, listening or connected), or a UDP socket.</summary>
 internal sealed class RapidSocketDevice
 {
     /// <summary>The listening socket, when this device listens.</summary>
@@ -13,6 +13,12 @@ internal sealed class RapidSocketDevice
 
     /// <summary>The state SocketGetStatus reports (SOCKET_CREATED…; 0 before SocketCreate).</summary>
     public int Status { get; set; }
+
+    /// <summary>The datagram socket of a socket created with \UDP (SocketSendTo, SocketReceiveFrom), or null.</summary>
+    public Socket? Udp { get; set; }
+
+    /// <summary>A UDP receive that a SocketReceiveFrom started and that timed out, with its buffer: the next one takes its datagram.</summary>
+    public (Task<SocketReceiveFromResult> Receive, byte[] Buffer)? PendingDatagram { get; set; }
 
     /// <summary>The address given to SocketBind.</summary>
     public System.Net.IPEndPoint? Bound { get; set; }

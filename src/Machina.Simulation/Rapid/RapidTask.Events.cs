@@ -114,6 +114,15 @@ internal sealed partial class RapidTask
         }
     }
 
+    /// <summary>An event of the program's own (a TriggInt's point of the path): queues the trap of <paramref name="interrupt"/> unless it sleeps.</summary>
+    public void PostInterrupt(int interrupt)
+    {
+        lock (_interruptGate)
+        {
+            Enqueue(interrupt, new RapidTrapData());
+        }
+    }
+
     /// <summary>Queues the trap of <paramref name="interrupt"/> unless it sleeps (call under the interrupt lock).</summary>
     private void Enqueue(int interrupt, RapidTrapData data)
     {

@@ -107,6 +107,7 @@ internal sealed partial class RapidTwinController
             {
                 s.Connection?.Dispose();
                 s.Listener?.Stop();
+                s.Udp?.Dispose();
             }
         }
         lock (_reserved)
@@ -114,6 +115,7 @@ internal sealed partial class RapidTwinController
             _reserved.ForEach(l => l.Stop());
             _reserved.Clear();
         }
+        CloseFiles();
         bool joined = _threads.All(t => t.Join(timeout));
         lock (_gate)
         {

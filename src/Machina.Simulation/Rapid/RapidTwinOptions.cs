@@ -29,6 +29,15 @@ internal sealed class RapidTwinOptions
     /// <summary>The address the controller serves on, as GetSysInfo(\LanIp) reports it (default 127.0.0.1).</summary>
     public string LanIp { get; init; } = "127.0.0.1";
 
+    /// <summary>
+    /// The RETRYs an error handler may make before the error becomes ERR_EXCRTYMAX, raised to the caller (the system parameter
+    /// General RAPID "No Of Retry", 4 by default on a controller); 0: no limit.
+    /// </summary>
+    public int MaxRetries { get; init; } = 4;
+
+    /// <summary>The directory that stands for the controller's HOME: (TEMP: and RAMDISK: are folders in it); null: a new temporary directory.</summary>
+    public string? HomeDirectory { get; init; }
+
     /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, arrays, module size).</summary>
     public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

@@ -17,8 +17,11 @@ internal static partial class RapidTypes
         new("btnres", RapidTypeKind.Num, "num"), new("buttondata", RapidTypeKind.Num, "num"), new("icondata", RapidTypeKind.Num, "num"),
         new("taskid", RapidTypeKind.Opaque, create: () => new object()),
         new("syncident", RapidTypeKind.Opaque, create: () => new object()),
-        new("triggdata", RapidTypeKind.Opaque, create: () => new object()),
-        new("iodev", RapidTypeKind.Opaque, create: () => new object()),
+        new("triggdata", RapidTypeKind.Opaque, create: () => new RapidTriggData()),
+        new("iodev", RapidTypeKind.Opaque, create: () => new RapidFileDevice()),
+        new("shapedata", RapidTypeKind.Opaque, create: () => new RapidShape()),
+        new("wzstationary", RapidTypeKind.Opaque, create: () => new RapidWorldZone()),
+        new("wztemporary", RapidTypeKind.Opaque, create: () => new RapidWorldZone()),
         Record("tasks", ("taskname", String)),
         Record("progdisp", ("pdisp", PoseType), ("eoffs", Extjoint)),
     ];

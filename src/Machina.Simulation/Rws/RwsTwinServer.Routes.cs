@@ -74,6 +74,8 @@ internal sealed partial class RwsTwinServer
                 (["rw", "motionsystem", "mechunits", "ROB_1", "jointtarget"], true) => JointTarget(),
                 (["rw", "motionsystem", "mechunits", "ROB_1", "robtarget"], true) => RobTarget(),
                 (["rw", "iosystem", "signals", ..], _) => Signal(s[^1], get, request.Form),
+                (["subscription"], false) => Subscribe(request.Form),
+                (["subscription", var id], false) when request.Method == "DELETE" => Unsubscribe(id),
                 _ => Error(404, "Not Found", null, $"No resource {request.Method} {request.Path} on the twin's Robot Web Services."),
             };
         }
@@ -199,8 +201,7 @@ internal sealed partial class RwsTwinServer
         bool digital = signal.Bank[0] == 'd';
         if (get)
         {
-            double value = digital ? (Twin.Io.GetBit(signal.Bank, signal.Index) ? 1 : 0) : Twin.Io.GetNumber(signal.Bank, signal.Index);
-            return State("iosystem", Item("ios-signal-li", name, ("name", name), ("type", signal.Bank.ToUpperInvariant()), ("lvalue", Text(value))));
+            return State("iosystem", Item("ios-signal-li", name, ("name", name), ("type", signal.Bank.ToUpperInvariant()), ("lvalue", Text(SignalValue(signal)))));
         }
         double set = double.Parse(form["lvalue"], NumberStyles.Float, CultureInfo.InvariantCulture);
         if (digital)

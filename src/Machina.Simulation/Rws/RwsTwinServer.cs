@@ -158,7 +158,13 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 {
                     return;
                 }
-                RwsResponse response = Authenticate(request, out string? session, out bool opened) ?? MediaRefusal(request) ?? Handle(request, session!);
+                RwsResponse? refused = Authenticate(request, out string? session, out bool opened) ?? MediaRefusal(request);
+                if (refused is null && PollOf(request) is int subscription)
+                {
+                    await ServeSubscriptionAsync(stream, request, subscription, cancellationToken).ConfigureAwait(false);
+                    return; // the WebSocket ended the connection
+                }
+                RwsResponse response = refused ?? Handle(request, session!);
                 if (opened)
                 {
                     response.Headers.Add(("Set-Cookie", $"-http-session-={session}; path=/; httponly"));

@@ -13,6 +13,13 @@ internal static class RwsXhtmlWriter
         new(Xhtml + "li", new XAttribute("class", cls), new XAttribute("title", title),
             spans.Select(s => new XElement(Xhtml + "span", new XAttribute("class", s.Class), s.Value)));
 
+    /// <summary>A link (<c>a href rel</c>), as events name their resource with <c>rel="self"</c>.</summary>
+    public static XElement Link(string href, string rel) => new(Xhtml + "a", new XAttribute("href", href), new XAttribute("rel", rel));
+
+    /// <summary>The XHTML of a subscription's event: the items of the resources that changed, in the group of subscription <paramref name="group"/>.</summary>
+    public static byte[] EventDocument(int group, IEnumerable<XElement> items) =>
+        Document("event", new XElement(Xhtml + "div", new XAttribute("class", "state"), Link($"subscription/{group}", "group"), new XElement(Xhtml + "ul", items)));
+
     /// <summary>A 200 answer titled <paramref name="title"/> with <paramref name="items"/>.</summary>
     public static RwsResponse State(string title, IEnumerable<XElement> items) =>
         new(200, "OK", Document(title, new XElement(Xhtml + "div", new XAttribute("class", "state"), new XElement(Xhtml + "ul", items))));

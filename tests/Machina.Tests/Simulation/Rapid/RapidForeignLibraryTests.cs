@@ -191,4 +191,36 @@ public class RapidForeignLibraryTests
             twin.Error);
         Assert.DoesNotContain("handled", twin.Pendant.Lines);
     }
+
+    [Fact]
+    public void CToolCWObjAndCPos_TellTheLastMotionsToolAndWorkObject_AndWhereItsTcpIs()
+    {
+        RapidTwinController twin = Run(
+            """
+              t := CTool();
+              TPWrite "before: tool0 " \Bool:=t.tframe.trans.z = 0;
+              p := CRobT(\Tool:=gripper \WObj:=table);
+              MoveL p, v100, fine, gripper \WObj:=table;
+              t := CTool();
+              w := CWObj();
+              TPWrite "tool z " \Num:=t.tframe.trans.z;
+              TPWrite "wobj x " \Num:=w.uframe.trans.x;
+              here := CPos();
+              flange := CPos(\Tool:=tool0 \WObj:=wobj0);
+              TPWrite "dz " \Num:=Round(flange.z - here.z \Dec:=3);
+              TPWrite "dx " \Num:=Round(flange.x - here.x \Dec:=3);
+            """,
+            """
+            PERS tooldata gripper := [TRUE, [[0, 0, 100], [1, 0, 0, 0]], [1, [0, 0, 50], [1, 0, 0, 0], 0, 0, 0]];
+            PERS wobjdata table := [FALSE, TRUE, "", [[10, 20, 30], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
+            VAR robtarget p;
+            VAR pos here;
+            VAR pos flange;
+            VAR tooldata t;
+            VAR wobjdata w;
+            """);
+
+        // The wrist points down: the gripper's TCP is 100 mm below the flange, and the table's frame is 10, 20, 30 mm off the base.
+        Assert.Equal(["before: tool0 TRUE", "tool z 100", "wobj x 10", "dz 130", "dx 10"], twin.Pendant.Lines);
+    }
 }

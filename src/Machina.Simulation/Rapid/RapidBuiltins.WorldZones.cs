@@ -1,0 +1,133 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// World Zones (RAPID reference: WZBoxDef, WZCylDef, WZSphDef, WZLimSup, WZDOSet, WZEnable, WZDisable, WZFree): a shape in world
+/// coordinates, activated as a limit zone that the TCP may not enter (a motion whose path would take it in is refused before the arm
+/// moves, and the task stops: the controller stops the robot at the zone's border) or as an output zone whose digital output tells
+/// whether the TCP is in it (set when the zone is activated and after each motion, at the arm's position then).
+/// </summary>
+internal static partial class RapidBuiltins
+{
+    /// <summary>Points a motion's path is checked at against the limit zones (besides its end).</summary>
+    private const int ZoneSamples = 64;
+
+    private static IEnumerable<RapidBuiltin> WorldZones() =>
+    [
+        Instruction("WZBoxDef", [Sw("Inside"), Sw("Outside"), P("Shape", "shapedata", true), P("LowPoint", "pos"), P("HighPoint", "pos")], call =>
+        {
+            Vector low = RapidGeometry.ToVector(call.Record(3)), high = RapidGeometry.ToVector(call.Record(4));
+            if (!(low.X < high.X && low.Y < high.Y && low.Z < high.Z))
+            {
+                throw ArgumentError(call, "WZBoxDef: the LowPoint must be below the HighPoint in x, y and z");
+            }
+            ((RapidShape)call.Value(2)).Box(Outside(call, "WZBoxDef"), low, high);
+        }),
+        Instruction("WZCylDef", [Sw("Inside"), Sw("Outside"), P("Shape", "shapedata", true), P("CentrePoint", "pos"), P("Radius", "num"), P("Height", "num")], call =>
+        {
+            if (!(call.Num(4) > 0) || call.Num(5) == 0)
+            {
+                throw ArgumentError(call, "WZCylDef: the radius must be positive and the height not 0");
+            }
+            ((RapidShape)call.Value(2)).Cylinder(Outside(call, "WZCylDef"), RapidGeometry.ToVector(call.Record(3)), call.Num(4), call.Num(5));
+        }),
+        Instruction("WZSphDef", [Sw("Inside"), Sw("Outside"), P("Shape", "shapedata", true), P("CentrePoint", "pos"), P("Radius", "num")], call =>
+        {
+            if (!(call.Num(4) > 0))
+            {
+                throw ArgumentError(call, "WZSphDef: the radius must be positive");
+            }
+            ((RapidShape)call.Value(2)).Sphere(Outside(call, "WZSphDef"), RapidGeometry.ToVector(call.Record(3)), call.Num(4));
+        }),
+        Instruction("WZLimSup", [Sw("Temp"), Sw("Stat"), P("WorldZone", null, true), P("Shape", "shapedata")], call =>
+        {
+            RapidWorldZone zone = ActivatedZone(call, "WZLimSup", 2, 3);
+            zone.Limits = true;
+            zone.Output = null;
+            if (zone.Shape!.Contains(call.Machine.Task.Controller.Arm.Tcp.Position))
+            {
+                throw ArgumentError(call, "WZLimSup: the TCP is in the zone already");
+            }
+            call.Machine.Task.Controller.Activate(zone);
+        }),
+        Instruction("WZDOSet", [Sw("Temp"), Sw("Stat"), P("WorldZone", null, true), Sw("Inside"), Sw("Before"), P("Shape", "shapedata"), P("Signal", "signaldo"),
+            P("SetValue", "dionum")], call =>
+        {
+            if (call.Has(3) == call.Has(4))
+            {
+                throw ArgumentError(call, "WZDOSet: give one of \\Inside and \\Before");
+            }
+            double value = call.Num(7);
+            if (value is not (0 or 1))
+            {
+                throw ArgumentError(call, $"WZDOSet: the value {RapidValues.FormatNumber(value)} is not 0 or 1");
+            }
+            RapidWorldZone zone = ActivatedZone(call, "WZDOSet", 2, 5);
+            (string name, int index) = Signal(call, 6, "do");
+            zone.Limits = false;
+            zone.Output = (name, index, value == 1);
+            call.Machine.Task.Controller.Activate(zone);
+        }),
+        Instruction("WZEnable", [P("WorldZone", "wztemporary", true)], call => Temporary(call, "WZEnable").Enabled = true),
+        Instruction("WZDisable", [P("WorldZone", "wztemporary", true)], call => Temporary(call, "WZDisable").Enabled = false),
+        Instruction("WZFree", [P("WorldZone", "wztemporary", true)], call => call.Machine.Task.Controller.Free(Temporary(call, "WZFree"))),
+    ];
+
+    private static bool Outside(RapidCall call, string name) => call.Has(0) != call.Has(1)
+        ? call.Has(1)
+        : throw ArgumentError(call, $"{name}: give one of \\Inside and \\Outside");
+
+    /// <summary>The world zone of parameter <paramref name="p"/>, of the kind \Temp or \Stat says, with the shape of parameter <paramref name="shape"/>.</summary>
+    private static RapidWorldZone ActivatedZone(RapidCall call, string name, int p, int shape)
+    {
+        if (call.Value(p) is not RapidWorldZone zone)
+        {
+            throw ArgumentError(call, $"{name}: the world zone must be a wzstationary or wztemporary");
+        }
+        bool stationary = call.TypeOf(p)?.Element.Name.Equals("wzstationary", StringComparison.OrdinalIgnoreCase) == true;
+        if (call.Has(0) == call.Has(1) || call.Has(1) != stationary)
+        {
+            throw ArgumentError(call, $"{name}: a wzstationary takes \\Stat, a wztemporary \\Temp");
+        }
+        var s = (RapidShape)call.Value(shape);
+        if (s.Kind is null)
+        {
+            throw ArgumentError(call, $"{name}: the shape is not defined (WZBoxDef, WZCylDef or WZSphDef first)");
+        }
+        zone.Shape = s.Copy();
+        zone.Stationary = stationary;
+        zone.Enabled = true;
+        zone.Line = call.Line;
+        return zone;
+    }
+
+    private static RapidWorldZone Temporary(RapidCall call, string name) => call.Value(0) is RapidWorldZone { Shape: not null, Stationary: false } zone
+        ? zone
+        : throw ArgumentError(call, $"{name}: the world zone is not an active wztemporary");
+
+    /// <summary>
+    /// Refuses a motion whose TCP path (<paramref name="tcpAt"/> of the fraction of the way) would enter a limit zone: the task stops
+    /// (no ERROR handler takes it), the arm where it stands.
+    /// </summary>
+    private static void RequireOutsideLimitZones(RapidCall call, Func<double, Vector> tcpAt)
+    {
+        RapidTwinController c = call.Machine.Task.Controller;
+        if (c.HasZones && c.LimitZoneOn(Enumerable.Range(1, ZoneSamples).Select(i => tcpAt((double)i / ZoneSamples))) is { } zone)
+        {
+            throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, call.Line,
+                $"World zone: the motion would take the TCP into the limit zone activated at line {zone.Line} (WZLimSup); the robot stops at its border")
+            { Fatal = true };
+        }
+    }
+
+    /// <summary>After a motion: the outputs of WZDOSet zones follow where the TCP is now.</summary>
+    private static void ZoneOutputsAfterMotion(RapidCall call)
+    {
+        RapidTwinController c = call.Machine.Task.Controller;
+        if (c.HasZones)
+        {
+            c.UpdateZoneOutputs(c.Arm.Tcp.Position);
+        }
+    }
+}

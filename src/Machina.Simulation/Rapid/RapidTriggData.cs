@@ -1,0 +1,21 @@
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// A <c>triggdata</c>: the event that TriggIO, TriggEquip or TriggInt defined, which a later TriggL or TriggJ fires at its point of
+/// the path (RAPID reference, "triggdata"); null until one of them ran.
+/// </summary>
+internal sealed class RapidTriggData
+{
+    /// <summary>The event, or null.</summary>
+    public RapidTriggEvent? Event { get; set; }
+}
+
+/// <summary>
+/// Where on a Trigg move an event fires and what it does. <paramref name="Distance"/> is mm from the end point (from the start with
+/// <paramref name="FromStart"/>), or seconds before the end point with <paramref name="IsTime"/>; <paramref name="ShiftSeconds"/> moves
+/// it later (\DODelay) or earlier (TriggEquip's EquipLag, negative). An output event sets <paramref name="Signal"/> (bank, index) to
+/// <paramref name="Value"/>, or to 0 when <paramref name="Inhibit"/> reads TRUE then; an interrupt event orders interrupt
+/// <paramref name="Interrupt"/>.
+/// </summary>
+internal sealed record RapidTriggEvent(double Distance, bool FromStart, bool IsTime, double ShiftSeconds, (string Name, string Bank, int Index)? Signal,
+    double Value, int Interrupt, Func<bool>? Inhibit);

@@ -1,0 +1,49 @@
+using Machina.Simulation.Twin;
+
+namespace Machina.Simulation.Rapid;
+
+/// <summary>
+/// Where the TCP is along a straight move at a time, and when it passes a point of it: the trapezoid the twin times moves with
+/// (<see cref="TwinMotion.TrapezoidSeconds"/>: ramps at the acceleration up to the speed, or a triangle), stretched to the move's
+/// actual duration when a turn at v_ori or \T makes it longer.
+/// </summary>
+internal sealed class RapidTriggProfile(double metres, double speed, double acceleration, double seconds)
+{
+    private readonly double _plain = TwinMotion.TrapezoidSeconds(metres, speed, acceleration);
+
+    /// <summary>The move's length in metres.</summary>
+    public double Metres => metres;
+
+    /// <summary>The move's duration in seconds.</summary>
+    public double Seconds => seconds;
+
+    /// <summary>The seconds after the start at which the TCP is <paramref name="along"/> metres along the move.</summary>
+    public double TimeAt(double along)
+    {
+        if (metres <= 0 || _plain <= 0)
+        {
+            return along < metres ? 0 : seconds;
+        }
+        along = Math.Clamp(along, 0, metres);
+        double ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2), rampSeconds = Math.Sqrt(2 * ramp / acceleration);
+        double t = along <= ramp ? Math.Sqrt(2 * along / acceleration)
+            : along <= metres - ramp ? rampSeconds + (along - ramp) / speed
+            : _plain - Math.Sqrt(2 * (metres - along) / acceleration);
+        return t * seconds / _plain;
+    }
+
+    /// <summary>The fraction of the move's length the TCP covered <paramref name="time"/> seconds after the start.</summary>
+    public double FractionAt(double time)
+    {
+        if (metres <= 0 || seconds <= 0)
+        {
+            return time <= 0 ? 0 : 1;
+        }
+        double t = Math.Clamp(time, 0, seconds) * _plain / seconds;
+        double ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2), rampSeconds = Math.Sqrt(2 * ramp / acceleration);
+        double along = t <= rampSeconds ? acceleration * t * t / 2
+            : t <= _plain - rampSeconds ? ramp + (t - rampSeconds) * speed
+            : metres - acceleration * (_plain - t) * (_plain - t) / 2;
+        return Math.Clamp(along / metres, 0, 1);
+    }
+}
