@@ -24,8 +24,7 @@ public sealed partial class VirtualUrController
     /// <summary>
     /// One RTDE client on a thread of its own: version negotiation, controller version, output and input setup, input data,
     /// start and pause; output data goes out from <see cref="SendRtdeAsync"/>. Blocking reads: a package is handled as soon as
-    /// the kernel has it, where an awaited read waits for a pool thread as well (on a loaded machine many milliseconds, so that
-    /// an output set over RTDE showed in the data 10 ms later one time in two: ur_rtde's <c>io_example</c>).
+    /// its thread wakes, where an awaited read also waits for a pool thread to take it up (on a loaded machine, milliseconds).
     /// </summary>
     private Task ServeRtdeAsync(TcpClient client, CancellationToken token) =>
         Task.Factory.StartNew(() => ServeRtde(client, token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
