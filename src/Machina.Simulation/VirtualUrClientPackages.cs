@@ -38,17 +38,17 @@ internal static class VirtualUrClientPackages
         byte[] name = Encoding.ASCII.GetBytes("URControl");
         byte[] date = Encoding.ASCII.GetBytes("01-01-2024, 00:00:00");
         var w = new Writer(15 + 1 + name.Length + 2 + 8 + date.Length);
-        w.Int(0);
+        w.Int32(0);
         w.Byte(RobotMessage);
-        w.ULong(timestamp);
+        w.UInt64(timestamp);
         w.Byte(unchecked((byte)ControllerSource));
         w.Byte(VersionKind);
         w.Byte((byte)name.Length);
         w.Bytes(name);
         w.Byte((byte)version.Major);
         w.Byte((byte)version.Minor);
-        w.Int(Math.Max(0, version.Build));
-        w.Int(Math.Max(0, version.Revision));
+        w.Int32(Math.Max(0, version.Build));
+        w.Int32(Math.Max(0, version.Revision));
         w.Bytes(date);
         return w.Sized();
     }
@@ -58,9 +58,9 @@ internal static class VirtualUrClientPackages
     {
         byte[] words = Encoding.UTF8.GetBytes(text);
         var w = new Writer(15 + words.Length);
-        w.Int(0);
+        w.Int32(0);
         w.Byte(RobotMessage);
-        w.ULong(timestamp);
+        w.UInt64(timestamp);
         w.Byte(unchecked((byte)ControllerSource));
         w.Byte(TextKind);
         w.Bytes(words);
@@ -71,11 +71,11 @@ internal static class VirtualUrClientPackages
     public static byte[] State(VirtualUrClientState s, VirtualUrArmFacts arm)
     {
         var w = new Writer(1400);
-        w.Int(0);
+        w.Int32(0);
         w.Byte(RobotState);
 
         int start = w.Begin(RobotModeData);
-        w.ULong((ulong)(s.Time * 1000));
+        w.UInt64((ulong)(s.Time * 1000));
         w.Bool(false); // a real robot connected: no, a simulated one
         w.Bool(true); // real robot enabled
         w.Bool(s.PowerOn);
@@ -97,7 +97,7 @@ internal static class VirtualUrClientPackages
         {
             w.Double(s.Q[i]);
             w.Double(s.Q[i]);
-            w.Double(0);
+            w.Double(s.Qd[i]);
             w.Float(0); // current
             w.Float(s.PowerOn ? 48 : 0); // voltage
             w.Float(30); // motor temperature
@@ -119,8 +119,8 @@ internal static class VirtualUrClientPackages
         w.End(start);
 
         start = w.Begin(MasterboardData);
-        w.Int((int)s.DigitalInputs);
-        w.Int((int)s.DigitalOutputs);
+        w.Int32((int)s.DigitalInputs);
+        w.Int32((int)s.DigitalOutputs);
         w.Byte(0);
         w.Byte(0);
         w.Double(s.AnalogIn[0]);
@@ -136,7 +136,7 @@ internal static class VirtualUrClientPackages
         w.Byte((byte)s.SafetyMode);
         w.Byte(0); // not in reduced mode
         w.Byte(0); // no Euromap67 interface
-        w.Int(0); // not used
+        w.Int32(0); // not used
         w.Byte(0); // operational mode selector input
         w.Byte(0); // three-position enabling device input
         w.Byte(0); // not used
@@ -150,13 +150,13 @@ internal static class VirtualUrClientPackages
         start = w.Begin(KinematicsInfo);
         for (int i = 0; i < 6; i++)
         {
-            w.Int(0); // checksum
+            w.Int32(0); // checksum
         }
         w.Doubles(new double[6]); // theta
         w.Doubles(arm.DhA);
         w.Doubles(arm.DhD);
         w.Doubles(arm.DhAlpha);
-        w.Int(0); // calibration status: ok
+        w.Int32(0); // calibration status: ok
         w.End(start);
 
         start = w.Begin(ConfigurationData);
@@ -179,10 +179,10 @@ internal static class VirtualUrClientPackages
         w.Doubles(arm.DhD);
         w.Doubles(arm.DhAlpha);
         w.Doubles(new double[6]);
-        w.Int(arm.ESeries ? 3 : 2); // masterboard version
-        w.Int(arm.ESeries ? 2 : 1); // controller box type
-        w.Int(arm.RobotType);
-        w.Int(arm.ESeries ? 3 : 2); // robot sub type
+        w.Int32(arm.ESeries ? 3 : 2); // masterboard version
+        w.Int32(arm.ESeries ? 2 : 1); // controller box type
+        w.Int32(arm.RobotType);
+        w.Int32(arm.ESeries ? 3 : 2); // robot sub type
         w.End(start);
 
         start = w.Begin(ForceModeData);
@@ -210,16 +210,19 @@ internal static class VirtualUrClientPackages
     {
         int count = RealtimeDoubles(version);
         var w = new Writer(4 + count * 8);
-        w.Int(4 + count * 8);
+        w.Int32(4 + count * 8);
         w.Double(s.Time);
         w.Doubles(s.Q); // target q
-        w.Zeros(6 * 4); // target qd, qdd, current, moment
+        w.Doubles(s.Qd); // target qd
+        w.ZeroDoubles(6 * 3); // target qdd, current, moment
         w.Doubles(s.Q); // actual q
-        w.Zeros(6 * 3); // actual qd, current, control current
+        w.Doubles(s.Qd); // actual qd
+        w.ZeroDoubles(6 * 2); // actual current, control current
         w.Doubles(s.Tcp); // actual tool vector
-        w.Zeros(6 * 2); // actual TCP speed and force
+        w.Doubles(s.TcpSpeed); // actual TCP speed
+        w.ZeroDoubles(6); // actual TCP force
         w.Doubles(s.Tcp); // target tool vector
-        w.Zeros(6); // target TCP speed
+        w.Doubles(s.TcpSpeed); // target TCP speed
         w.Double(s.DigitalInputs);
         for (int i = 0; i < 6; i++)
         {
@@ -233,12 +236,12 @@ internal static class VirtualUrClientPackages
             w.Double(s.RobotMode == 7 ? 253 : s.PowerOn ? 255 : 239); // joint modes
         }
         w.Double(s.SafetyMode);
-        w.Zeros(6);
-        w.Zeros(3); // tool accelerometer
-        w.Zeros(6);
+        w.ZeroDoubles(6);
+        w.ZeroDoubles(3); // tool accelerometer
+        w.ZeroDoubles(6);
         w.Double(s.SpeedFraction); // speed scaling
         w.Double(0); // linear momentum norm
-        w.Zeros(2);
+        w.ZeroDoubles(2);
         w.Double(s.PowerOn ? 48 : 0); // V main
         w.Double(s.PowerOn ? 48 : 0); // V robot
         w.Double(0); // I robot
@@ -248,106 +251,37 @@ internal static class VirtualUrClientPackages
         }
         w.Double(s.DigitalOutputs);
         w.Double(s.ProgramRunning ? (s.ProgramPaused ? 4 : 2) : 1); // program state, as RTDE's runtime_state: 1 stopped, 2 playing, 4 paused
-        w.Zeros(3 + 3); // elbow position and velocity
+        w.ZeroDoubles(3 + 3); // elbow position and velocity
         w.Double(s.SafetyMode);
         if (count > 139)
         {
-            w.Zeros(3);
+            w.ZeroDoubles(3);
             w.Double(s.Payload);
-            w.Zeros(3 + 6); // payload centre of gravity, inertia
+            w.ZeroDoubles(3 + 6); // payload centre of gravity, inertia
         }
         return w.Sized();
     }
 
-    /// <summary>Writes big-endian values into a growing buffer; <see cref="Sized"/> writes the total size into the first int32.</summary>
-    private sealed class Writer(int capacity)
+    /// <summary>Writes a client interface message: its values, sub-packages each with its int32 size; <see cref="Sized"/> writes the total size into the first int32.</summary>
+    private sealed class Writer(int capacity) : VirtualUrWriter(capacity)
     {
-        private byte[] _bytes = new byte[capacity];
-        private int _at;
-
-        public void Byte(byte b)
-        {
-            Room(1);
-            _bytes[_at++] = b;
-        }
-
-        public void Bool(bool b) => Byte(b ? (byte)1 : (byte)0);
-
-        public void Bytes(ReadOnlySpan<byte> bytes)
-        {
-            Room(bytes.Length);
-            bytes.CopyTo(_bytes.AsSpan(_at));
-            _at += bytes.Length;
-        }
-
-        public void Int(int value)
-        {
-            Room(4);
-            BinaryPrimitives.WriteInt32BigEndian(_bytes.AsSpan(_at), value);
-            _at += 4;
-        }
-
-        public void ULong(ulong value)
-        {
-            Room(8);
-            BinaryPrimitives.WriteUInt64BigEndian(_bytes.AsSpan(_at), value);
-            _at += 8;
-        }
-
-        public void Float(float value)
-        {
-            Room(4);
-            BinaryPrimitives.WriteSingleBigEndian(_bytes.AsSpan(_at), value);
-            _at += 4;
-        }
-
-        public void Double(double value)
-        {
-            Room(8);
-            BinaryPrimitives.WriteDoubleBigEndian(_bytes.AsSpan(_at), value);
-            _at += 8;
-        }
-
-        public void Doubles(ReadOnlySpan<double> values)
-        {
-            foreach (double v in values)
-            {
-                Double(v);
-            }
-        }
-
-        public void Zeros(int doubles)
-        {
-            for (int i = 0; i < doubles; i++)
-            {
-                Double(0);
-            }
-        }
-
         /// <summary>Starts a sub-package: room for its size, then its type; returns where it starts.</summary>
         public int Begin(byte type)
         {
-            int start = _at;
-            Int(0);
+            int start = Length;
+            Int32(0);
             Byte(type);
             return start;
         }
 
         /// <summary>Writes a sub-package's size (header included) at its start.</summary>
-        public void End(int start) => BinaryPrimitives.WriteInt32BigEndian(_bytes.AsSpan(start), _at - start);
+        public void End(int start) => BinaryPrimitives.WriteInt32BigEndian(Written(start, 4), Length - start);
 
+        /// <summary>The whole message, its size in the first int32, in a new array.</summary>
         public byte[] Sized()
         {
-            BinaryPrimitives.WriteInt32BigEndian(_bytes, _at);
-            return _bytes.AsSpan(0, _at).ToArray();
-        }
-
-        private void Room(int n)
-        {
-            if (_at + n > _bytes.Length)
-            {
-                Array.Resize(ref _bytes, Math.Max(_bytes.Length * 2, _at + n));
-            }
+            BinaryPrimitives.WriteInt32BigEndian(Written(0, 4), Length);
+            return All.ToArray();
         }
     }
 }

@@ -12,6 +12,12 @@ internal sealed record VirtualUrClientState
     /// <summary>Joint positions, rad.</summary>
     public required double[] Q { get; init; }
 
+    /// <summary>Joint speeds, rad/s (the motion in progress's; zeros while the arm stands).</summary>
+    public required double[] Qd { get; init; }
+
+    /// <summary>Tool centre point speed in the base frame: x, y, z (m/s), then the turn per second as a rotation vector (rad/s).</summary>
+    public required double[] TcpSpeed { get; init; }
+
     /// <summary>Tool centre point pose in the base frame: x, y, z (m), rotation vector (rad).</summary>
     public required double[] Tcp { get; init; }
 
@@ -29,6 +35,9 @@ internal sealed record VirtualUrClientState
 
     /// <summary>The running program is paused.</summary>
     public bool ProgramPaused { get; init; }
+
+    /// <summary>RTDE runtime_state: 1 stopped, 2 playing, 4 paused.</summary>
+    public uint RuntimeState { get; init; } = 1;
 
     /// <summary>Digital inputs: standard 0–7, configurable 8–15, tool 16–17.</summary>
     public uint DigitalInputs { get; init; }

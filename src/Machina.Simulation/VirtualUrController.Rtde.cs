@@ -7,7 +7,8 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
-    private readonly List<RtdeSubscriber> _subscribers = [];
+    /// <summary>The started clients: replaced whole under <see cref="_rtdeGate"/>, read by the sender without it.</summary>
+    private RtdeSubscriber[] _subscribers = [];
     private readonly Lock _rtdeGate = new();
     private readonly VirtualUrDeadlineWait _rtdeWait;
     private int _rtdePackagesSent;
@@ -20,43 +21,47 @@ public sealed partial class VirtualUrController
 
     private Task AcceptRtdeClientsAsync(CancellationToken token) => AcceptAsync(_rtdeListener!, ServeRtdeAsync, token);
 
-    /// <summary>One RTDE client: version negotiation, controller version, output setup, start and pause; data goes out from <see cref="SendRtdeAsync"/>.</summary>
-    private async Task ServeRtdeAsync(TcpClient client, CancellationToken token)
+    /// <summary>
+    /// One RTDE client on a thread of its own: version negotiation, controller version, output and input setup, input data,
+    /// start and pause; output data goes out from <see cref="SendRtdeAsync"/>. Blocking reads: a package is handled as soon as
+    /// its thread wakes, where an awaited read also waits for a pool thread to take it up (on a loaded machine, milliseconds).
+    /// </summary>
+    private Task ServeRtdeAsync(TcpClient client, CancellationToken token) =>
+        Task.Factory.StartNew(() => ServeRtde(client, token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+
+    private void ServeRtde(TcpClient client, CancellationToken token)
     {
+        client.SendTimeout = ClientSendTimeoutMs; // a client that stops reading is dropped (SendRtde), not waited for by every other
         var stream = client.GetStream();
-        var subscriber = new RtdeSubscriber(stream, Clock.TimestampFrequency);
-        var reader = new VirtualUrRtdeReader();
-        var bytes = new byte[4096];
+        using CancellationTokenRegistration stopping = token.Register(stream.Dispose); // the controller stops: the read ends
+        var subscriber = new RtdeSubscriber(stream, Clock.TimestampFrequency, (long)(_rtdeWait.Early.TotalSeconds * Clock.TimestampFrequency));
+        var reader = new VirtualUrRtdeReader(stream);
+        var reply = new VirtualUrRtdeWriter(64);
         ushort protocol = 1;
         try
         {
-            while (true)
+            while (reader.Read() is byte type)
             {
-                int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
-                if (n == 0)
+                if (!Answer(type, reader.Payload, subscriber, reply, ref protocol))
+                {
+                    continue;
+                }
+                ReadOnlyMemory<byte> answer = reply.End();
+                if (!subscriber.TrySend(answer, token))
                 {
                     return;
                 }
-                reader.Append(bytes.AsSpan(0, n));
-                while (reader.TryRead(out byte type, out ReadOnlySpan<byte> payload))
+                if (type == Packages.Start && answer.Span[^1] == 1)
                 {
-                    byte[] reply = Answer(type, payload, subscriber, ref protocol);
-                    if (reply.Length > 0)
+                    // Data only after the start's answer, as on a UR: a client that skips what comes before it loses none.
+                    lock (_rtdeGate)
                     {
-                        await subscriber.WriteAsync(reply, token).ConfigureAwait(false);
-                    }
-                    if (type == Packages.Start && reply[^1] == 1)
-                    {
-                        // Data only after the start's answer, as on a UR: a client that skips what comes before it loses none.
-                        lock (_rtdeGate)
+                        if (!_subscribers.Contains(subscriber))
                         {
-                            if (!_subscribers.Contains(subscriber))
-                            {
-                                _subscribers.Add(subscriber);
-                            }
+                            Volatile.Write(ref _subscribers, [.. _subscribers, subscriber]);
                         }
-                        WakeRtde();
                     }
+                    WakeRtde();
                 }
             }
         }
@@ -66,17 +71,24 @@ public sealed partial class VirtualUrController
         }
         finally
         {
-            lock (_rtdeGate)
-            {
-                _subscribers.Remove(subscriber);
-            }
+            Unsubscribe(subscriber);
             ReleaseInputs(subscriber);
         }
     }
 
-    /// <summary>The reply package to one request (empty for none).</summary>
-    private byte[] Answer(byte type, ReadOnlySpan<byte> payload, RtdeSubscriber subscriber, ref ushort protocol)
+    /// <summary>Stops sending data to a client (a pause, or it left).</summary>
+    private void Unsubscribe(RtdeSubscriber subscriber)
     {
+        lock (_rtdeGate)
+        {
+            Volatile.Write(ref _subscribers, [.. _subscribers.Where(s => s != subscriber)]);
+        }
+    }
+
+    /// <summary>Writes the reply package to one request into <paramref name="reply"/>; false for none.</summary>
+    private bool Answer(byte type, ReadOnlySpan<byte> payload, RtdeSubscriber subscriber, VirtualUrRtdeWriter reply, ref ushort protocol)
+    {
+        reply.Begin(type);
         switch (type)
         {
             case Packages.RequestProtocolVersion:
@@ -86,60 +98,77 @@ public sealed partial class VirtualUrController
                 {
                     protocol = asked;
                 }
-                return Packages.Package(type, [accepted ? (byte)1 : (byte)0]);
-            case Packages.GetControllerVersion:
-                var version = new byte[16];
-                BinaryPrimitives.WriteUInt32BigEndian(version, (uint)_options.ControllerVersion.Major);
-                BinaryPrimitives.WriteUInt32BigEndian(version.AsSpan(4), (uint)_options.ControllerVersion.Minor);
-                BinaryPrimitives.WriteUInt32BigEndian(version.AsSpan(8), (uint)Math.Max(0, _options.ControllerVersion.Build));
-                BinaryPrimitives.WriteUInt32BigEndian(version.AsSpan(12), 0);
-                return Packages.Package(type, version);
+                reply.Byte(accepted ? (byte)1 : (byte)0);
+                return true;
+            case Packages.GetControllerVersion: // the version every interface reports (3.15.8 for a CB-Series arm)
+                Version version = SoftwareVersion;
+                reply.UInt32((uint)version.Major);
+                reply.UInt32((uint)version.Minor);
+                reply.UInt32((uint)Math.Max(0, version.Build));
+                reply.UInt32(0);
+                return true;
             case Packages.SetupOutputs:
-                return SetupOutputs(payload, subscriber, protocol);
+                SetupOutputs(payload, subscriber, protocol, reply);
+                return true;
             case Packages.SetupInputs:
-                return SetupInputs(payload, subscriber);
+                SetupInputs(payload, subscriber, reply);
+                return true;
             case Packages.DataPackage:
                 ApplyInputs(payload, subscriber);
-                return [];
+                return false;
             case Packages.Start:
                 bool ok = (subscriber.Names.Length > 0 && subscriber.Types.All(t => t != Packages.NotFound)) || subscriber.HasInputs;
-                return Packages.Package(type, [ok ? (byte)1 : (byte)0]);
+                reply.Byte(ok ? (byte)1 : (byte)0);
+                return true;
             case Packages.Pause:
-                lock (_rtdeGate)
-                {
-                    _subscribers.Remove(subscriber);
-                }
-                return Packages.Package(type, [1]);
+                Unsubscribe(subscriber);
+                reply.Byte(1);
+                return true;
             case Packages.TextMessage:
-                return [];
+                return false;
             default:
                 RecordError($"RTDE: unknown package type {type}.");
-                return [];
+                return false;
         }
     }
 
-    private byte[] SetupOutputs(ReadOnlySpan<byte> payload, RtdeSubscriber subscriber, ushort protocol)
+    /// <summary>Output setup: the recipe's types with its id, or id 0 when the frequency is refused or the data package would be too long to frame.</summary>
+    private void SetupOutputs(ReadOnlySpan<byte> payload, RtdeSubscriber subscriber, ushort protocol, VirtualUrRtdeWriter reply)
     {
-        double frequency = _options.MaxRtdeFrequency;
+        double frequency = MaxRtdeFrequency;
         if (protocol == 2)
         {
             if (payload.Length < 8)
             {
-                return Packages.Package(Packages.SetupOutputs, [0]);
+                reply.Byte(0);
+                return;
             }
             frequency = BinaryPrimitives.ReadDoubleBigEndian(payload);
             payload = payload[8..];
         }
         string[] names = VirtualUrRtdeFields.Recipe(Encoding.ASCII.GetString(payload));
         string[] types = names.Select(TypeOf).ToArray();
-        if (!(frequency > 0 && frequency <= _options.MaxRtdeFrequency))
+        int size = Packages.HeaderSize + 1 + types.Sum(Packages.SizeOf);
+        byte id = 0;
+        if (!(frequency > 0 && frequency <= MaxRtdeFrequency))
         {
-            RecordError($"RTDE: refused an output frequency of {Num.G(frequency)} Hz (1 to {Num.G(_options.MaxRtdeFrequency)}).");
-            return Packages.Package(Packages.SetupOutputs, [0, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
+            RecordError($"RTDE: refused an output frequency of {Num.G(frequency)} Hz (1 to {Num.G(MaxRtdeFrequency)}).");
         }
-        subscriber.Configure(names, types, frequency);
-        return Packages.Package(Packages.SetupOutputs, [subscriber.RecipeId, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
+        else if (size > Packages.MaxSize)
+        {
+            RecordError($"RTDE: refused an output recipe whose data package would be {size} bytes (at most {Packages.MaxSize}).");
+        }
+        else
+        {
+            subscriber.Configure(names, types, frequency, size);
+            id = subscriber.RecipeId;
+        }
+        reply.Byte(id);
+        reply.Ascii(string.Join(',', types));
     }
+
+    /// <summary>The highest output frequency of the software the controller reports: 500 Hz from software 5 (e-Series), 125 Hz before.</summary>
+    private double MaxRtdeFrequency => SoftwareVersion.Major >= 5 ? 500 : 125;
 
     /// <summary>Wakes the RTDE sender: a client started, or the robot's program or safety state changed (reported at once).</summary>
     private void WakeRtde() => _rtdeWait.Wake();
@@ -156,17 +185,15 @@ public sealed partial class VirtualUrController
     private void SendRtde(CancellationToken token)
     {
         bool woken = false;
+        var snapshot = new RtdeSnapshot(this);
         try
         {
             while (!token.IsCancellationRequested)
             {
-                RtdeSubscriber[] subscribers;
-                lock (_rtdeGate)
-                {
-                    subscribers = [.. _subscribers];
-                }
+                RtdeSubscriber[] subscribers = Volatile.Read(ref _subscribers);
                 long now = Clock.GetTimestamp();
                 long next = now + Clock.TimestampFrequency; // a second when no client is started
+                snapshot.Clear();
                 foreach (RtdeSubscriber s in subscribers)
                 {
                     bool due = s.IsDue(now);
@@ -176,9 +203,14 @@ public sealed partial class VirtualUrController
                         {
                             s.Sent(now);
                         }
-                        if (s.TrySend(DataPackage(s), token))
+                        if (s.TrySend(DataPackage(s, snapshot), token))
                         {
                             Interlocked.Increment(ref _rtdePackagesSent);
+                        }
+                        else
+                        {
+                            Unsubscribe(s);
+                            s.Close(); // gone, or it stopped reading: its connection ends
                         }
                     }
                     next = Math.Min(next, s.NextDue(now));
@@ -199,15 +231,55 @@ public sealed partial class VirtualUrController
     internal static TimeSpan WholeMillisecondsUp(TimeSpan wait) =>
         wait > TimeSpan.Zero ? TimeSpan.FromMilliseconds(Math.Ceiling(wait.TotalMilliseconds)) : TimeSpan.Zero;
 
-    /// <summary>One data package of the subscriber's recipe: its id, then each value big-endian in UR's units (m, rad).</summary>
-    private byte[] DataPackage(RtdeSubscriber s) => Packages.Package(Packages.DataPackage, TwinDataPayload(Twin, s.RecipeId, s.Names));
+    /// <summary>
+    /// One data package of the subscriber's recipe, written into its own buffer (sent before the next is written): its id, then
+    /// each value big-endian in UR's units (m, rad).
+    /// </summary>
+    private ReadOnlyMemory<byte> DataPackage(RtdeSubscriber s, RtdeSnapshot snapshot)
+    {
+        VirtualUrRtdeWriter data = s.Data;
+        data.Begin(Packages.DataPackage);
+        data.Byte(s.RecipeId);
+        WriteOutputs(Twin, data, s.Names, snapshot);
+        return data.End();
+    }
 
-    /// <summary>One RTDE client: its output recipe, frequency and when it last got data.</summary>
-    private sealed class RtdeSubscriber(NetworkStream stream, long timestampFrequency)
+    /// <summary>
+    /// What one tick of the sender reports, taken when a package first needs it and kept for every client of that tick: the
+    /// controller's time, and the state of the arm, program and I/O (forward kinematics and a read of every signal, which a
+    /// recipe of time and registers does without).
+    /// </summary>
+    private sealed class RtdeSnapshot(VirtualUrController controller)
+    {
+        private double? _time;
+        private VirtualUrClientState? _state;
+
+        /// <summary>Controller time, seconds.</summary>
+        public double Time => _time ??= controller.Clock.GetElapsedTime(0).TotalSeconds;
+
+        /// <summary>The controller's state this tick.</summary>
+        public VirtualUrClientState State => _state ??= controller.ClientState();
+
+        /// <summary>A new tick: nothing taken yet.</summary>
+        public void Clear()
+        {
+            _time = null;
+            _state = null;
+        }
+    }
+
+    /// <summary>
+    /// One RTDE client: its output recipe, frequency and when it last got data. A package counts as due
+    /// <paramref name="earlyTicks"/> before its deadline (the sender's wait ends that early rather than spin for the rest).
+    /// </summary>
+    private sealed class RtdeSubscriber(NetworkStream stream, long timestampFrequency, long earlyTicks)
     {
         private readonly SemaphoreSlim _write = new(1, 1);
 
         public string[] Names { get; private set; } = [];
+
+        /// <summary>The writer of this client's data packages, used by the sender's thread only.</summary>
+        public VirtualUrRtdeWriter Data { get; private set; } = new(1);
 
         public string[] Types { get; private set; } = [];
 
@@ -221,8 +293,9 @@ public sealed partial class VirtualUrController
         /// <summary>How far behind its deadlines a client may fall and still get every package (sent back to back); past that it starts again from now.</summary>
         private const int CatchUpPeriods = 10;
 
-        public void Configure(string[] names, string[] types, double frequency)
+        public void Configure(string[] names, string[] types, double frequency, int packageSize)
         {
+            Data = new VirtualUrRtdeWriter(packageSize - VirtualUrRtdePackages.HeaderSize);
             Names = names;
             Types = types;
             RecipeId = ++_lastOutputRecipe;
@@ -249,7 +322,7 @@ public sealed partial class VirtualUrController
         private long _periodTicks = long.MaxValue / 4; // until configured: never due again after the first
 
         /// <summary>True when a package is due at <paramref name="now"/>: the first at once, then one each period.</summary>
-        public bool IsDue(long now) => !_sentOnce || now - LastSent >= _periodTicks;
+        public bool IsDue(long now) => !_sentOnce || now - LastSent >= _periodTicks - earlyTicks;
 
         /// <summary>When the next package is due.</summary>
         public long NextDue(long now) => _sentOnce ? LastSent + _periodTicks : now;
@@ -262,28 +335,21 @@ public sealed partial class VirtualUrController
             _sentOnce = true;
         }
 
-        public async Task WriteAsync(byte[] bytes, CancellationToken token)
-        {
-            await _write.WaitAsync(token).ConfigureAwait(false);
-            try
-            {
-                await stream.WriteAsync(bytes, token).ConfigureAwait(false);
-            }
-            finally
-            {
-                _write.Release();
-            }
-        }
+        /// <summary>Closes the connection (its reads end too).</summary>
+        public void Close() => stream.Dispose();
 
-        /// <summary>Writes a data package from the sender's thread; false when the client has gone.</summary>
-        public bool TrySend(byte[] bytes, CancellationToken token)
+        /// <summary>Writes a data package from the sender's thread; false when the client has gone or stopped reading (the send timed out).</summary>
+        public bool TrySend(ReadOnlyMemory<byte> bytes, CancellationToken token)
         {
             try
             {
-                _write.Wait(token);
+                if (!_write.Wait(ClientSendTimeoutMs, token))
+                {
+                    return false; // a reply has been stuck that long: the client stopped reading
+                }
                 try
                 {
-                    stream.Write(bytes);
+                    stream.Write(bytes.Span);
                 }
                 finally
                 {

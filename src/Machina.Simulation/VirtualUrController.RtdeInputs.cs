@@ -18,7 +18,7 @@ public sealed partial class VirtualUrController
     /// RTDE input setup: the recipe's types (NOT_FOUND for a name the guide does not have, IN_USE for one another client holds)
     /// with a new recipe id, or id 0 when any name failed (the recipe is not set up).
     /// </summary>
-    private byte[] SetupInputs(ReadOnlySpan<byte> payload, RtdeSubscriber subscriber)
+    private void SetupInputs(ReadOnlySpan<byte> payload, RtdeSubscriber subscriber, VirtualUrRtdeWriter reply)
     {
         string[] names = VirtualUrRtdeFields.Recipe(Encoding.ASCII.GetString(payload));
         string[] types;
@@ -37,7 +37,8 @@ public sealed partial class VirtualUrController
                 }
             }
         }
-        return Packages.Package(Packages.SetupInputs, [id, .. Encoding.ASCII.GetBytes(string.Join(',', types))]);
+        reply.Byte(id);
+        reply.Ascii(string.Join(',', types));
     }
 
     /// <summary>Gives back the inputs a closed connection held.</summary>

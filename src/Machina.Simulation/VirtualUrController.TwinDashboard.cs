@@ -14,6 +14,10 @@ public sealed partial class VirtualUrController
     /// </summary>
     private string TwinDashboard(UrTwinController twin, string command)
     {
+        if (UserRoleCommand(command) is string roleAnswer)
+        {
+            return roleAnswer;
+        }
         foreach (string prefixed in (string[])["load installation", "set operational mode", "generate flight report", "generate support file", "load", "popup", "addToLog"])
         {
             if (command.StartsWith(prefixed, StringComparison.OrdinalIgnoreCase) && (command.Length == prefixed.Length || command[prefixed.Length] == ' '))

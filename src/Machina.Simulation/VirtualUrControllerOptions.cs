@@ -64,9 +64,6 @@ public sealed record VirtualUrControllerOptions : VirtualControllerOptions
     /// <summary>Where the robot starts without a model: (492, -133, 488) mm with the tool down, about where a UR5e is at those joints.</summary>
     internal static Pose DefaultStart => new(new Vector(492, -133, 488), Rotation.FromQuaternion(0, 1, 0, 0));
 
-    /// <summary>Highest RTDE frequency of <see cref="ControllerVersion"/>.</summary>
-    internal double MaxRtdeFrequency => ControllerVersion.Major >= 5 ? 500 : 125;
-
     internal override void Validate()
     {
         base.Validate();

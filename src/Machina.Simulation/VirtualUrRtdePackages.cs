@@ -1,15 +1,18 @@
-using System.Buffers.Binary;
-
 namespace Machina.Simulation;
 
 /// <summary>
 /// The framing of UR's RTDE protocol as the virtual UR serves it, written from UR's RTDE guide: every package is a big-endian
-/// uint16 size (header included), a uint8 type, then its payload.
+/// uint16 size (header included), a uint8 type, then its payload. Every RTDE path of the twin reads its packages with a
+/// <see cref="VirtualUrRtdeReader"/> and writes them with a <see cref="VirtualUrRtdeWriter"/>: requests, replies, input and
+/// output data.
 /// </summary>
 internal static class VirtualUrRtdePackages
 {
     /// <summary>Bytes of a package header: size (uint16) and type (uint8).</summary>
     public const int HeaderSize = 3;
+
+    /// <summary>The largest package the size field can give, header included.</summary>
+    public const int MaxSize = ushort.MaxValue;
 
     /// <summary>RTDE_REQUEST_PROTOCOL_VERSION ('V').</summary>
     public const byte RequestProtocolVersion = 86;
@@ -37,16 +40,6 @@ internal static class VirtualUrRtdePackages
 
     /// <summary>The type a setup answers for a name the controller does not know.</summary>
     public const string NotFound = "NOT_FOUND";
-
-    /// <summary>One package: header and payload.</summary>
-    public static byte[] Package(byte type, ReadOnlySpan<byte> payload)
-    {
-        var bytes = new byte[HeaderSize + payload.Length];
-        BinaryPrimitives.WriteUInt16BigEndian(bytes, checked((ushort)bytes.Length));
-        bytes[2] = type;
-        payload.CopyTo(bytes.AsSpan(HeaderSize));
-        return bytes;
-    }
 
     /// <summary>Bytes of one value of an RTDE type (the guide's data types); 0 for a name not found.</summary>
     public static int SizeOf(string type) => type switch

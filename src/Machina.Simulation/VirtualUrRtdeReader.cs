@@ -3,58 +3,40 @@ using System.Buffers.Binary;
 namespace Machina.Simulation;
 
 /// <summary>
-/// Cuts the bytes an RTDE client sends into packages (size, type, payload), however TCP chunks them. A size below the header's
-/// is refused: the stream cannot be read on.
+/// Reads one RTDE client's packages from its stream, one at a time, blocking: the header, then exactly the payload it
+/// announces. The buffers are the reader's own and reused (a payload is valid until the next read).
 /// </summary>
-internal sealed class VirtualUrRtdeReader
+internal sealed class VirtualUrRtdeReader(Stream stream)
 {
-    private byte[] _buffer = new byte[4096];
-    private int _start;
+    private readonly byte[] _header = new byte[VirtualUrRtdePackages.HeaderSize];
+    private byte[] _payload = new byte[256];
+
+    /// <summary>The payload of the package read last.</summary>
+    public ReadOnlySpan<byte> Payload => _payload.AsSpan(0, _length);
+
     private int _length;
 
-    /// <summary>Adds received bytes.</summary>
-    public void Append(ReadOnlySpan<byte> data)
+    /// <summary>The type of the next package (its payload in <see cref="Payload"/>), or null when the client closed the connection, before or inside a package.</summary>
+    /// <exception cref="InvalidDataException">A package declares a size smaller than its header: the stream cannot be read on.</exception>
+    public byte? Read()
     {
-        if (_start + _length + data.Length > _buffer.Length)
+        if (!Fill(_header))
         {
-            Array.Copy(_buffer, _start, _buffer, 0, _length);
-            _start = 0;
-            if (_length + data.Length > _buffer.Length)
-            {
-                Array.Resize(ref _buffer, Math.Max(_buffer.Length * 2, _length + data.Length));
-            }
+            return null;
         }
-        data.CopyTo(_buffer.AsSpan(_start + _length));
-        _length += data.Length;
-    }
-
-    /// <summary>The next complete package, if one is there; the payload is valid until the next call.</summary>
-    /// <exception cref="InvalidDataException">A package declares a size smaller than its header.</exception>
-    public bool TryRead(out byte type, out ReadOnlySpan<byte> payload)
-    {
-        type = 0;
-        payload = default;
-        if (_length < VirtualUrRtdePackages.HeaderSize)
-        {
-            return false;
-        }
-        int size = BinaryPrimitives.ReadUInt16BigEndian(_buffer.AsSpan(_start));
+        int size = BinaryPrimitives.ReadUInt16BigEndian(_header);
         if (size < VirtualUrRtdePackages.HeaderSize)
         {
             throw new InvalidDataException($"an RTDE package declared {size} bytes, fewer than its {VirtualUrRtdePackages.HeaderSize}-byte header.");
         }
-        if (_length < size)
+        _length = size - VirtualUrRtdePackages.HeaderSize;
+        if (_payload.Length < _length)
         {
-            return false;
+            _payload = new byte[Math.Max(_length, _payload.Length * 2)];
         }
-        type = _buffer[_start + 2];
-        payload = _buffer.AsSpan(_start + VirtualUrRtdePackages.HeaderSize, size - VirtualUrRtdePackages.HeaderSize);
-        _start += size;
-        _length -= size;
-        if (_length == 0)
-        {
-            _start = 0;
-        }
-        return true;
+        return Fill(_payload.AsSpan(0, _length)) ? _header[2] : null;
     }
+
+    /// <summary>Reads exactly the bytes of <paramref name="into"/>; false when the stream ends first.</summary>
+    private bool Fill(Span<byte> into) => into.Length == 0 || stream.ReadAtLeast(into, into.Length, throwOnEndOfStream: false) == into.Length;
 }

@@ -28,8 +28,8 @@ internal static partial class UrBuiltins
         Add(t, "get_target_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
         Add(t, "get_actual_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
         Add(t, "get_target_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
-        Add(t, "get_actual_tcp_speed", (m, line, a) => new UrPose(new double[6]));
-        Add(t, "get_actual_joint_speeds", (m, line, a) => new UrList([0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
+        Add(t, "get_actual_tcp_speed", (m, line, a) => new UrPose(m.Controller.TcpSpeedNow()));
+        Add(t, "get_actual_joint_speeds", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointSpeedsNow()));
         Add(t, "is_steady", (m, line, a) => UrValue.Box(true));
         Add(t, "set_tcp", SetTcp, R("pose"));
         Add(t, "set_payload", SetPayload, R("m"), O("cog", NotGiven));

@@ -5,14 +5,14 @@ internal static partial class UrBuiltins
     /// <summary>
     /// speedj and speedl as the twin approximates them: with a time <c>t</c>, the arm moves at the given speed for that time (joints
     /// by qd·t; the tool by xd·t, its rotation vector added); without one it stands (a controller would keep the speed until the next
-    /// motion command; the twin has no open-ended motion). The target speeds read as zero: the twin's arm stands between motions.
+    /// motion command; the twin has no open-ended motion). The target speeds are the motion in progress's (zero while the arm stands).
     /// </summary>
     private static void AddSpeed(Dictionary<string, UrBuiltin> t)
     {
         Add(t, "speedj", SpeedJ, R("qd"), R("a"), O("t", 0));
         Add(t, "speedl", SpeedL, R("xd"), R("a"), O("t", 0), O("aRot", NotGiven));
-        Add(t, "get_target_joint_speeds", (m, line, a) => new UrList([0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
-        Add(t, "get_target_tcp_speed", (m, line, a) => new UrPose(new double[6]));
+        Add(t, "get_target_joint_speeds", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointSpeedsNow()));
+        Add(t, "get_target_tcp_speed", (m, line, a) => new UrPose(m.Controller.TcpSpeedNow()));
 
         // A critical section keeps the controller from switching threads; the twin accepts both and does nothing more
         // (approximated: its other threads may still run between the section's statements).

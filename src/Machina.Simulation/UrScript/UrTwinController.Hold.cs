@@ -39,6 +39,58 @@ internal sealed partial class UrTwinController
     }
 
     /// <summary>
+    /// The joint speeds now, degrees per second: those of the motion in progress on its speed profile (where it puts the arm a
+    /// millisecond either side of now, one side at its ends), zero when the arm stands.
+    /// </summary>
+    public Joints JointSpeedsNow()
+    {
+        if (!TryStepNow(out Joints a, out Joints b, out double seconds))
+        {
+            return default;
+        }
+        return new Joints((b.J1 - a.J1) / seconds, (b.J2 - a.J2) / seconds, (b.J3 - a.J3) / seconds, (b.J4 - a.J4) / seconds, (b.J5 - a.J5) / seconds, (b.J6 - a.J6) / seconds);
+    }
+
+    /// <summary>
+    /// The tool centre point's speed now in the base frame, in UR's units: x, y, z in m/s, then the turn per second as a rotation
+    /// vector (rad/s); zeros when the arm stands. From the same two instants as <see cref="JointSpeedsNow"/>.
+    /// </summary>
+    public double[] TcpSpeedNow()
+    {
+        if (!TryStepNow(out Joints a, out Joints b, out double seconds))
+        {
+            return new double[6];
+        }
+        Pose from = Arm.Model.Kinematics.Forward(a) * Arm.ToolCenter, to = Arm.Model.Kinematics.Forward(b) * Arm.ToolCenter;
+        Vector move = to.Position - from.Position;
+        RotationVector turn = (to.Rotation * from.Rotation.Inverse()).ToRotationVector();
+        double radians = Math.PI / 180;
+        return [move.X / 1000 / seconds, move.Y / 1000 / seconds, move.Z / 1000 / seconds, turn.X * radians / seconds, turn.Y * radians / seconds, turn.Z * radians / seconds];
+    }
+
+    /// <summary>Where the motion in progress puts the arm a millisecond before and after now (within the motion), and the seconds between; false when the arm stands.</summary>
+    private bool TryStepNow(out Joints before, out Joints after, out double seconds)
+    {
+        before = after = default;
+        seconds = 0;
+        UrMotion? motion = Motion;
+        if (motion is null)
+        {
+            return false;
+        }
+        TimeSpan now = Options.Time.GetElapsedTime(motion.Started), step = TimeSpan.FromMilliseconds(1);
+        TimeSpan from = now - step < TimeSpan.Zero ? TimeSpan.Zero : now - step, to = now + step > motion.Duration ? motion.Duration : now + step;
+        seconds = (to - from).TotalSeconds;
+        if (seconds <= 0)
+        {
+            return false;
+        }
+        before = motion.At(from);
+        after = motion.At(to);
+        return true;
+    }
+
+    /// <summary>
     /// Holds the program, as a protective stop or a pause does: a motion in progress stops where the arm is, and the program
     /// waits before its next motion or socket read until <see cref="Release"/>. False when it is already held.
     /// </summary>

@@ -13,7 +13,9 @@ namespace Machina.Benchmarks;
 /// period error &lt;= 1 ms while a 10^5-action stream runs beside it). For each asked rate (125 and 500 Hz) one client of our
 /// own, on a thread of its own reading with blocking calls, asks for <c>timestamp</c> at that rate and records when each
 /// package arrives; once alone for <see cref="Seconds"/> s, once while our driver streams <c>--size</c> moves (default 10^5)
-/// to the same twin. Prints one row per run: asked, delivered, p50/p99/max period error (|arrival gap - 1/f|), packages, load.
+/// to the same twin. Prints one row per run: asked, delivered, p50/p99/max period error (|arrival gap - 1/f|), packages, the
+/// process's garbage collections and their pauses during the run (they stop the twin's sender and the client alike: the host,
+/// the twin and the client share this process), load.
 /// </summary>
 internal static class RtdeRateRun
 {
@@ -29,8 +31,8 @@ internal static class RtdeRateRun
         Console.WriteLine($"RTDE output rate of the virtual UR: one client asking 'timestamp', alone for {Seconds:0} s, then beside a stream of {actions:N0} moves (our driver, instant execution)");
         Console.WriteLine($"load average {Machine.LoadAverage()} at start");
         Console.WriteLine();
-        Console.WriteLine("| asked (Hz) | beside | delivered (Hz) | period error p50 (ms) | p99 (ms) | max (ms) | packages | load average | target |");
-        Console.WriteLine("|---|---|---|---|---|---|---|---|---|");
+        Console.WriteLine("| asked (Hz) | beside | delivered (Hz) | period error p50 (ms) | p99 (ms) | max (ms) | packages | GCs (pause ms) | load average | target |");
+        Console.WriteLine("|---|---|---|---|---|---|---|---|---|---|");
         bool met = true;
         foreach (double asked in new double[] { 125, 500 })
         {
@@ -40,7 +42,7 @@ internal static class RtdeRateRun
                 string target = asked == 500 ? (row.Delivered >= MinDelivered500 && row.P99 <= MaxP99Error ? "met" : "missed") : "";
                 met &= target != "missed";
                 Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                    $"| {asked:0} | {(stream ? $"{actions:N0} moves" : "nothing")} | {row.Delivered:0.0} | {row.P50:0.000} | {row.P99:0.000} | {row.Max:0.000} | {row.Packages} | {Machine.LoadAverage()} | {target} |"));
+                    $"| {asked:0} | {(stream ? $"{actions:N0} moves" : "nothing")} | {row.Delivered:0.0} | {row.P50:0.000} | {row.P99:0.000} | {row.Max:0.000} | {row.Packages} | {row.Collections} ({row.GcPause.TotalMilliseconds:0.0}) | {Machine.LoadAverage()} | {target} |"));
             }
         }
         Console.WriteLine();
@@ -48,7 +50,14 @@ internal static class RtdeRateRun
         return 0;
     }
 
-    private sealed record Row(double Delivered, double P50, double P99, double Max, int Packages);
+    private sealed record Row(double Delivered, double P50, double P99, double Max, int Packages)
+    {
+        /// <summary>Garbage collections of any generation during the run.</summary>
+        public int Collections { get; init; }
+
+        /// <summary>How long those collections paused the process.</summary>
+        public TimeSpan GcPause { get; init; }
+    }
 
     private static Row Measure(double frequency, int streamActions)
     {
@@ -69,6 +78,8 @@ internal static class RtdeRateRun
                 throw new InvalidOperationException($"The twin refused {frequency} Hz: {Encoding.ASCII.GetString(answer, 1, answer.Length - 1)}");
             }
             var arrivals = new List<long>(100_000);
+            int collections = GC.CollectionCount(0);
+            TimeSpan paused = GC.GetTotalPauseDuration();
             using var done = new CancellationTokenSource();
             var reader = new Thread(() => Read(net, arrivals, done.Token)) { IsBackground = true, Name = "RTDE rate client" };
             Request(net, 83, []);
@@ -84,7 +95,7 @@ internal static class RtdeRateRun
             done.Cancel();
             client.Close();
             reader.Join(TimeSpan.FromSeconds(10));
-            return Summarize(arrivals, frequency);
+            return Summarize(arrivals, frequency) with { Collections = GC.CollectionCount(0) - collections, GcPause = GC.GetTotalPauseDuration() - paused };
         }
         finally
         {

@@ -69,13 +69,7 @@ public class UrSimDashboardTests
             ("shutdown", "Shutting down"),
             ("quit", "Disconnected"),
         ];
-        var answers = new List<string>();
-        foreach ((string command, _) in talk)
-        {
-            answers.Add(await AskAsync(dashboard, command));
-        }
-
-        Assert.Equal(talk.Select(t => t.Answer), answers);
+        Assert.Equal(talk.Select(t => t.Answer), await AskAllAsync(dashboard, talk));
         Assert.Equal(["a line"], controller.UserLog);
         Assert.Null(controller.Popup);
         Assert.Equal("wait_program.urp", controller.LoadedProgram);
@@ -145,6 +139,41 @@ public class UrSimDashboardTests
         Assert.Equal("STOPPED wait_program.urp", await AskAsync(dashboard, "programState"));
     }
 
+    [Fact]
+    public async Task UserRole_OnACbSeriesArm_SetAndGotAsItsDashboardWordsThem_AndUnknownOnAnESeries()
+    {
+        await using var cb = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, Model = RobotModels.Get("UR5") });
+        await cb.StartAsync();
+        using (var dashboard = await DashboardAsync(cb.DashboardPort))
+        {
+            (string Command, string Answer)[] talk =
+            [
+                ("getUserRole", "NONE"),
+                ("setUserRole PROGRAMMER", "Setting user role: PROGRAMMER"),
+                ("getUserRole", "PROGRAMMER"),
+                ("setUserRole operator", "Setting user role: operator"),
+                ("getUserRole", "OPERATOR"),
+                ("setUserRole admin", "Failed setting user role: admin"),
+                ("getUserRole", "OPERATOR"),
+                ("setUserRole", "Setting user role: none"),
+                ("getUserRole", "NONE"),
+                ("setUserRole restricted", "Setting user role: restricted"),
+                ("setuserrole LOCKED", "Setting user role: LOCKED"),
+                ("getUserRole", "LOCKED"),
+                ("setUserRoles", "could not understand: 'setUserRoles'"),
+            ];
+            Assert.Equal(talk.Select(t => t.Answer), await AskAllAsync(dashboard, talk));
+        }
+        Assert.Equal("LOCKED", cb.UserRole);
+
+        await using var e = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await e.StartAsync();
+        using var eDashboard = await DashboardAsync(e.DashboardPort);
+        Assert.Equal("could not understand: 'setUserRole programmer'", await AskAsync(eDashboard, "setUserRole programmer"));
+        Assert.Equal("could not understand: 'getUserRole'", await AskAsync(eDashboard, "getUserRole"));
+        Assert.Equal("NONE", e.UserRole);
+    }
+
     internal static async Task<DashboardLine> DashboardAsync(int port)
     {
         var client = new TcpClient();
@@ -161,6 +190,17 @@ public class UrSimDashboardTests
             Reader.Dispose();
             Client.Dispose();
         }
+    }
+
+    /// <summary>The answers to each command of a conversation, in order.</summary>
+    private static async Task<List<string>> AskAllAsync(DashboardLine dashboard, (string Command, string Answer)[] talk)
+    {
+        var answers = new List<string>();
+        foreach ((string command, _) in talk)
+        {
+            answers.Add(await AskAsync(dashboard, command));
+        }
+        return answers;
     }
 
     internal static async Task<string> AskAsync(DashboardLine dashboard, string command)

@@ -142,4 +142,144 @@ public class UrSimRtdeTests
         await OnlineWait.UntilAsync(() => (reported = (double)client.ReadDataAsync().GetAwaiter().GetResult()["target_speed_fraction"]) == 0.3, "RTDE to report it");
         Assert.Equal(0.3, reported);
     }
+
+    [Fact]
+    public async Task Version_OfACbSeriesArm_IsTheSoftwareEveryInterfaceReports_AndItsRateAtMost125Hz()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true, Model = RobotModels.Get("UR5") });
+        await controller.StartAsync();
+        using var client = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await client.NegotiateAsync());
+
+        Assert.Equal(new uint[] { 3, 15, 8, 0 }, await client.ControllerVersionAsync());
+        Assert.Equal(["DOUBLE"], await client.SetupOutputsAsync(500, "timestamp"));
+        Assert.Equal(0, client.RecipeId);
+        Assert.Equal("RTDE: refused an output frequency of 500 Hz (1 to 125).", Assert.Single(controller.Errors));
+        Assert.Equal(["DOUBLE"], await client.SetupOutputsAsync(125, "timestamp"));
+        Assert.Equal(1, client.RecipeId);
+    }
+
+    [Fact]
+    public async Task Outputs_ARecipeTooLongToFrame_IsRefused_AndOtherClientsKeepTheirData()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var other = await StartedAsync(controller, 125, "timestamp");
+        using var greedy = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await greedy.NegotiateAsync());
+
+        // 1,366 joint vectors of 48 bytes: a data package of 65,572 bytes, past the 65,535 its size field holds.
+        string[] types = await greedy.SetupOutputsAsync(125, [.. Enumerable.Repeat("actual_q", 1366)]);
+        Assert.Equal(1366, types.Length);
+        Assert.Equal(0, greedy.RecipeId);
+        Assert.Equal("RTDE: refused an output recipe whose data package would be 65572 bytes (at most 65535).", Assert.Single(controller.Errors));
+        Assert.False(await greedy.StartAsync());
+
+        Assert.True(await ReadUntilAsync(other, 0.1) >= 0.1);
+    }
+
+    [Fact]
+    public async Task Outputs_AClientThatStopsReading_IsDropped_AndOtherClientsKeepTheirData()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var reading = await StartedAsync(controller, 125, "timestamp");
+        using var stalled = new TcpClient();
+        await stalled.ConnectAsync("127.0.0.1", controller.RtdePort);
+        NetworkStream stalledStream = stalled.GetStream();
+        using (var setup = GuideRtdeClient.Attach(stalledStream))
+        {
+            Assert.True(await setup.NegotiateAsync());
+            await setup.SetupOutputsAsync(500, [.. Enumerable.Repeat("actual_q", 1300)]); // 62 kB a package, 31 MB/s
+            Assert.True(await setup.StartAsync());
+        }
+
+        // The stalled client fills its socket's buffers within a second and is dropped 2 s later; the other reads on meanwhile.
+        Assert.True(await ReadUntilAsync(reading, 5) >= 5);
+        var buffer = new byte[1 << 16];
+        using var drained = new CancellationTokenSource(TimeSpan.FromSeconds(15));
+        try
+        {
+            while (await stalledStream.ReadAsync(buffer, drained.Token) > 0)
+            {
+            }
+        }
+        catch (IOException)
+        {
+            // reset rather than closed: the twin ended the connection either way (a cancelled read, instead, fails the test)
+        }
+    }
+
+    [Fact]
+    public async Task Outputs_JointAndToolSpeeds_AreThoseOfTheMotionInProgress()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions());
+        await controller.StartAsync();
+        using var client = await StartedAsync(controller, 125, "actual_qd", "target_qd", "actual_TCP_speed", "target_TCP_speed", "actual_TCP_pose");
+        Assert.Equal(new double[6], (double[])(await client.ReadDataAsync())["actual_qd"]);
+
+        // The base turns 0.6 rad at 0.4 rad/s (ramps of 0.08 s): about 1.4 s of cruise, the tool on a circle round the base.
+        using var script = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
+            "def turn():\n  movej([0.6, -1.5707963, -1.5707963, -1.5707963, 1.5707963, 0], a=5, v=0.4)\nend\n"));
+        Dictionary<string, object> data;
+        int packages = 0;
+        do
+        {
+            data = await client.ReadDataAsync();
+            Assert.True(++packages < 125 * 15, "the base never turned at 0.4 rad/s");
+        }
+        while (((double[])data["actual_qd"])[0] < 0.39999); // on the cruise (a sample across a ramp's end reads a little less)
+
+        double[] qd = (double[])data["actual_qd"], tcp = (double[])data["actual_TCP_pose"], speed = (double[])data["actual_TCP_speed"];
+        Assert.Equal(new double[] { 0.4, 0, 0, 0, 0, 0 }, qd.Select(v => Math.Round(v, 6)));
+        Assert.Equal(qd, (double[])data["target_qd"]);
+        Assert.Equal(speed, (double[])data["target_TCP_speed"]);
+        Assert.Equal(0.4 * Math.Sqrt(tcp[0] * tcp[0] + tcp[1] * tcp[1]), Math.Sqrt(speed[0] * speed[0] + speed[1] * speed[1]), 3);
+        Assert.Equal(new double[] { 0, 0, 0, 0.4 }, new[] { speed[2], speed[3], speed[4], speed[5] }.Select(v => Math.Round(v, 3)));
+    }
+
+    /// <summary>A client of the controller's RTDE that has set up these outputs and started.</summary>
+    private static async Task<GuideRtdeClient> StartedAsync(VirtualUrController controller, double frequency, params string[] names)
+    {
+        var client = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await client.NegotiateAsync());
+        await client.SetupOutputsAsync(frequency, names);
+        Assert.True(await client.StartAsync());
+        return client;
+    }
+
+    /// <summary>Reads a client's packages of 'timestamp' until <paramref name="seconds"/> of controller time have gone by; the last span seen.</summary>
+    private static async Task<double> ReadUntilAsync(GuideRtdeClient client, double seconds)
+    {
+        double first = (double)(await client.ReadDataAsync())["timestamp"];
+        double span = 0;
+        while (span < seconds)
+        {
+            span = (double)(await client.ReadDataAsync())["timestamp"] - first;
+        }
+        return span;
+    }
+
+    [Fact]
+    public async Task Framing_RequestsArrivingByteByByte_AreAnsweredAsWhole()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var client = new TcpClient { NoDelay = true };
+        await client.ConnectAsync("127.0.0.1", controller.RtdePort);
+        NetworkStream stream = client.GetStream();
+        byte[] setup = [0, 5, 86, 0, 2, 0, 3, 118];
+        foreach (byte b in setup)
+        {
+            await stream.WriteAsync(new[] { b });
+            await stream.FlushAsync();
+            await Task.Delay(2);
+        }
+
+        var answers = new byte[4 + 19];
+        await stream.ReadExactlyAsync(answers).AsTask().WaitAsync(TimeSpan.FromSeconds(15));
+        Assert.Equal(new byte[] { 0, 4, 86, 1, 0, 19, 118, 0, 0, 0, 5, 0, 0, 0, 11, 0, 0, 0, 0, 0, 0, 0, 0 }, answers);
+        Assert.Empty(controller.Errors);
+    }
 }

@@ -11,15 +11,15 @@ namespace Machina.Tests.Support;
 internal sealed class GuideRtdeClient : IDisposable
 {
     private static readonly TimeSpan Timeout = TimeSpan.FromSeconds(15);
-    private readonly TcpClient _client;
+    private readonly TcpClient? _client;
     private readonly NetworkStream _stream;
     private string[] _names = [];
     private string[] _types = [];
 
-    private GuideRtdeClient(TcpClient client)
+    private GuideRtdeClient(TcpClient? client, NetworkStream stream)
     {
         _client = client;
-        _stream = client.GetStream();
+        _stream = stream;
     }
 
     internal byte RecipeId { get; private set; }
@@ -28,8 +28,11 @@ internal sealed class GuideRtdeClient : IDisposable
     {
         var client = new TcpClient();
         await client.ConnectAsync("127.0.0.1", port).WaitAsync(Timeout);
-        return new GuideRtdeClient(client);
+        return new GuideRtdeClient(client, client.GetStream());
     }
+
+    /// <summary>A client talking over a connection the caller owns (disposing this one leaves it open).</summary>
+    internal static GuideRtdeClient Attach(NetworkStream stream) => new(null, stream);
 
     /// <summary>'V' (86) with protocol version 2 as uint16; the reply's uint8 is 1 when accepted.</summary>
     internal async Task<bool> NegotiateAsync()
@@ -177,5 +180,5 @@ internal sealed class GuideRtdeClient : IDisposable
         return (header[2], payload);
     }
 
-    public void Dispose() => _client.Dispose();
+    public void Dispose() => _client?.Dispose();
 }
