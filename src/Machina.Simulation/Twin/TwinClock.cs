@@ -28,7 +28,7 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
         TimeSpan span = Span(seconds);
         if (RealTime)
         {
-            Task.Delay(span, Time, cancellation).GetAwaiter().GetResult();
+            TwinWait.Delay(span, Time, cancellation);
         }
         Interlocked.Add(ref _ticks, span.Ticks);
     }
@@ -38,7 +38,7 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
     /// time: a background task's wait, whose period is real and which moves no arm.
     /// </summary>
     public void WaitAside(double seconds, CancellationToken cancellation) =>
-        Task.Delay(Span(seconds), Time, cancellation).GetAwaiter().GetResult();
+        TwinWait.Delay(Span(seconds), Time, cancellation);
 
     /// <summary>A wait's length, capped at a day (a longer one is no use on a twin and would overflow the timer).</summary>
     private static TimeSpan Span(double seconds) => TimeSpan.FromSeconds(Math.Min(seconds, 86_400));
