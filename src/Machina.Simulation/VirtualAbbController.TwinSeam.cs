@@ -71,7 +71,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         var client = new TcpClient();
         client.Client.Dispose();
         client.Client = connection;
-        if (!AttachClientAsync(client, (_, _) => Task.CompletedTask, task).GetAwaiter().GetResult())
+        if (!AttachClient(client))
         {
             return false;
         }
@@ -174,7 +174,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
                 if (statement.Length > 0)
                 {
                     int id = IdOf(statement);
-                    ReceiveOnCaller(id, statement + ";", out int generation);
+                    ReceiveOnCaller(id, statement + ";", out int generation, keepsCut: true);
                     _awaiting.Enqueue(new TwinRequest(id, generation));
                 }
             }
@@ -241,13 +241,12 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     }
 
     /// <summary>Sends the driver's acknowledgement of <paramref name="request"/> through the fault plan (none for a request it skipped).</summary>
-    private async Task<bool> AcknowledgeTwinAsync(TwinRequest request, CancellationToken token)
+    private void AcknowledgeTwin(TwinRequest request, CancellationToken token)
     {
         if (request.Acknowledgement is { Length: > 0 } bytes)
         {
-            await AcknowledgeAsync(bytes, Math.Max(request.Id, 0), token).ConfigureAwait(false);
+            Acknowledge(bytes, Math.Max(request.Id, 0), token);
         }
-        return true;
     }
 
     /// <summary>Lets every request waiting for an acknowledgement go (the controller stops): counted executed, never acknowledged.</summary>

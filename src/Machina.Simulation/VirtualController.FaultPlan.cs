@@ -1,4 +1,5 @@
 using System.Globalization;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -41,7 +42,7 @@ public abstract partial class VirtualController<TState>
     private protected abstract byte[] GarbageBytes(Random random);
 
     /// <summary>
-    /// A restart that loses the buffer begins (on the execution loop, before the client is dropped): a brand whose driver is a
+    /// A restart that loses the buffer begins (on the program's thread, at the acknowledgement, before the client is dropped): a brand whose driver is a
     /// program on the controller stops it here, so that no client can reach the program as it was before the restart.
     /// </summary>
     private protected virtual void RestartingLosingBuffer()
@@ -49,7 +50,7 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>
-    /// A restart that loses the progress begins (on the execution loop or the program's thread, after the buffer was emptied and
+    /// A restart that loses the progress begins (on the program's thread or where a connection is refused, after the buffer was emptied and
     /// before the client is dropped): the brand's driver program starts again from its beginning with its progress at 0, and no
     /// client may reach the program as it was.
     /// </summary>
@@ -92,7 +93,7 @@ public abstract partial class VirtualController<TState>
         }
     }
 
-    /// <summary>The fault that follows this acknowledgement (drawn in the execution loop, one acknowledgement at a time).</summary>
+    /// <summary>The fault that follows this acknowledgement (drawn on the program's thread, one acknowledgement at a time).</summary>
     private VirtualFault NextFault()
     {
         VirtualFaults plan = _options.Faults;
@@ -112,9 +113,9 @@ public abstract partial class VirtualController<TState>
 
     /// <summary>
     /// Sends the acknowledgement of an executed request and counts it (or notes it lost when no client listens), with the
-    /// fault the plan puts there, if any.
+    /// fault the plan puts there, if any, on the program's thread: a delay holds the program as a slow network would.
     /// </summary>
-    private protected async Task AcknowledgeAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token)
+    private protected void Acknowledge(ReadOnlySpan<byte> bytes, int id, CancellationToken token)
     {
         VirtualFault fault = NextFault();
         if (RunsTowardsRestart())
@@ -128,13 +129,13 @@ public abstract partial class VirtualController<TState>
         switch (fault)
         {
             case VirtualFault.Delay:
-                await Task.Delay(_options.Faults.Delay, Clock, token).ConfigureAwait(false);
+                TwinWait.Delay(_options.Faults.Delay, Clock, token);
                 break;
             case VirtualFault.Garbage:
-                await SendToClientAsync(GarbageBytes(_faultRandom!), token).ConfigureAwait(false);
+                SendToClient(GarbageBytes(_faultRandom!));
                 break;
             case VirtualFault.UnknownAcknowledgement:
-                await SendToClientAsync(AcknowledgementBytes(UnknownId(id)), token).ConfigureAwait(false);
+                SendToClient(AcknowledgementBytes(UnknownId(id)));
                 break;
             case VirtualFault.RestartLosingProgress:
                 BeginRestart();
@@ -142,13 +143,13 @@ public abstract partial class VirtualController<TState>
             case VirtualFault.Truncate:
                 // The request ran; only part of its acknowledgement leaves before the link breaks.
                 int cut = bytes.Length > 1 ? 1 + _faultRandom!.Next(bytes.Length - 1) : 0;
-                await SendToClientAsync(bytes[..cut], token, executedId: id).ConfigureAwait(false);
+                SendToClient(bytes[..cut], executedId: id);
                 DropClient();
                 return;
         }
         // Marked executed under the send lock: a handshake reports as executed exactly the requests whose
         // acknowledgement went to an earlier client (or was lost).
-        if (await SendToClientAsync(bytes, token, executedId: id).ConfigureAwait(false))
+        if (SendToClient(bytes, executedId: id))
         {
             Interlocked.Increment(ref _acknowledgementsSent);
             CountTowardsClose();
@@ -167,7 +168,7 @@ public abstract partial class VirtualController<TState>
                 break;
             case VirtualFault.RestartKeepingBuffer:
                 DropClient();
-                await Task.Delay(_options.Faults.Delay, Clock, token).ConfigureAwait(false);
+                TwinWait.Delay(_options.Faults.Delay, Clock, token);
                 break;
             case VirtualFault.RestartLosingBuffer:
                 LoseBuffer();
@@ -179,7 +180,7 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>
-    /// A restart that loses what was received and not executed (called from the execution loop): the client is dropped, the
+    /// A restart that loses what was received and not executed (called where the acknowledgement went out): the client is dropped, the
     /// buffer emptied, and the progress reports the last executed request as the last received one.
     /// </summary>
     private void LoseBuffer()
@@ -217,9 +218,9 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>
-    /// Forgets what was received and not executed: requests read under the current generation are lost from now on, the
-    /// buffer is emptied and the progress reports the last executed request as the last received one. Returns how many
-    /// requests the buffer held.
+    /// Forgets what was received and not executed: requests read under the current generation are lost from now on, what the
+    /// brand's driver holds is dropped (<see cref="DiscardHeld"/>) and the progress reports the last executed request as the
+    /// last received one. Returns how many requests were dropped.
     /// </summary>
     private int DiscardReceived()
     {
@@ -228,18 +229,14 @@ public abstract partial class VirtualController<TState>
             _generation++;
             Volatile.Write(ref _lastReceivedId, Volatile.Read(ref _lastExecutedId));
         }
-        int discarded = 0;
-        while (_buffer.Reader.TryRead(out Queued queued))
-        {
-            discarded++;
-            Dropped(queued.Request);
-        }
+        int discarded = DiscardHeld();
+        Interlocked.Add(ref _waitingOnCaller, -discarded);
         Interlocked.Add(ref _requestsLost, discarded);
         return discarded;
     }
 
     /// <summary>
-    /// Checks that a request read from the current client may enter the buffer and records it as the last received (false
+    /// Checks that a request read from the current client may be held and records it as the last received (false
     /// when a restart since that client attached lost it).
     /// </summary>
     private bool Receives(int id, out int generation)

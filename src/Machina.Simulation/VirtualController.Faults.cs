@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation;
 
 public abstract partial class VirtualController<TState>
@@ -61,14 +63,18 @@ public abstract partial class VirtualController<TState>
         }
     }
 
-    private Task WhileStoppedAsync(CancellationToken token)
+    /// <summary>Holds the caller (the twin's program, at its acknowledgement) while the controller stops answering.</summary>
+    private void WhileStopped(CancellationToken token)
     {
         Task? wait;
         lock (_pauseGate)
         {
             wait = _paused?.Task;
         }
-        return wait is null ? Task.CompletedTask : wait.WaitAsync(token);
+        if (wait is not null)
+        {
+            TwinWait.For(wait, token);
+        }
     }
 
     /// <summary>Counts one delivered acknowledgement towards a pending <see cref="CloseConnectionAfter"/>.</summary>

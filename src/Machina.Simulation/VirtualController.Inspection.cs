@@ -41,8 +41,8 @@ public abstract partial class VirtualController<TState>
     /// <summary>The largest number of requests received but not yet executed seen at any moment: how far the host streamed ahead.</summary>
     public int MaxUnacknowledged => Volatile.Read(ref _maxUnacknowledged);
 
-    /// <summary>Requests waiting in the instruction buffer right now (at most the options' <c>BufferCapacity</c>).</summary>
-    public int BufferedRequestCount => _buffer.Reader.Count + Volatile.Read(ref _waitingOnCaller);
+    /// <summary>Requests received and not yet executed, refused or lost right now: what the driver holds (the KUKA driver's ring, the ABB driver's socket).</summary>
+    public int BufferedRequestCount => Volatile.Read(ref _waitingOnCaller);
 
     /// <summary>The last received requests, as text (bounded by the options' <c>RequestLogCapacity</c>).</summary>
     public IReadOnlyList<string> ReceivedRequests
@@ -80,19 +80,8 @@ public abstract partial class VirtualController<TState>
         }
     }
 
-    /// <summary>The robot state now: part-way through the current motion, or the last target reached.</summary>
-    public TState State
-    {
-        get
-        {
-            TState kept;
-            lock (Gate)
-            {
-                kept = _motion is null ? _state : (TState)_motion.At(Clock, Clock.GetTimestamp());
-            }
-            return Observe(kept);
-        }
-    }
+    /// <summary>The robot state now: where the twin's arm is (part-way through a motion too), with its outputs.</summary>
+    public TState State => Observe(_state);
 
     /// <summary>The state as the brand's arm has it now, from the one the controller kept (a twin reads its own arm and outputs).</summary>
     private protected virtual TState Observe(TState kept) => kept;

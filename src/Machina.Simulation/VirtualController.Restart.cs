@@ -74,15 +74,7 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>
-    /// A request the buffer let go of without executing it (a restart lost it): a brand whose driver holds requests of its own
-    /// and may have run this one already (the KRL driver's ring, with nobody connected) settles it here. Called outside the gate.
-    /// </summary>
-    private protected virtual void Dropped(object request)
-    {
-    }
-
-    /// <summary>
-    /// A request the buffer dropped (<see cref="Dropped"/>) that the brand's driver ran anyway: it enters the execution log and
+    /// A request a restart dropped (<see cref="DiscardHeld"/>) that the brand's driver ran anyway: it enters the execution log and
     /// counts as executed, no longer as lost. Nothing is acknowledged.
     /// </summary>
     private protected void RanOutsideBuffer(int id)

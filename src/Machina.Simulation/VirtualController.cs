@@ -1,12 +1,12 @@
 using System.Net.Sockets;
-using System.Threading.Channels;
 
 namespace Machina.Simulation;
 
 /// <summary>
-/// The brand-neutral core of every virtual controller: the simulated arm (its state, robot model and motion timing), the
-/// instruction buffer executed in order, the driver connection acknowledgements go to, the logs, and the faults a test can
-/// inject. A brand adds only its protocol: how it listens, parses requests, plans each instruction and acknowledges it.
+/// The brand-neutral core of every virtual controller: the robot model, the driver connection acknowledgements go to, the
+/// counts and logs, and the faults a test can inject. The arm and the program are the brand's twin (its interpreter runs the
+/// driver); the twin's program thread tells the core what it received and, once its arm got there, acknowledges it through
+/// the core on that same thread (<see cref="ReceiveOnCaller"/>, <see cref="CompleteReceivedOnCaller"/>): one path for every brand.
 /// </summary>
 /// <typeparam name="TState">The brand's snapshot of the robot.</typeparam>
 public abstract partial class VirtualController<TState> : IAsyncDisposable where TState : VirtualRobotState
@@ -15,18 +15,16 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     private protected const int MaxKeptTexts = 1000;
 
     private readonly VirtualControllerOptions _options;
-    private readonly SemaphoreSlim _sendLock = new(1, 1);
-    private readonly Channel<Queued> _buffer;
+    private readonly Lock _sendLock = new();
     private readonly Queue<string> _requestLog = new();
     private readonly Queue<string> _pendant = new();
     private readonly Queue<string> _errors = new();
     private readonly List<Task> _loops = [];
+    private readonly TState _state;
 
     private CancellationTokenSource? _stopping;
     private TcpClient? _client;
     private NetworkStream? _clientStream;
-    private TState _state;
-    private VirtualMotion? _motion;
 
     /// <summary>Creates a stopped controller whose robot starts as <paramref name="initial"/> says, at the options' starting point.</summary>
     private protected VirtualController(VirtualControllerOptions options, Pose fallbackStart, Func<Vector, Rotation, Joints, TState> initial)
@@ -36,12 +34,6 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         _options = options;
         Clock = options.TimeProvider;
         Model = options.Model;
-        _buffer = Channel.CreateBounded<Queued>(new BoundedChannelOptions(options.BufferCapacity)
-        {
-            SingleReader = true,
-            SingleWriter = true,
-            FullMode = BoundedChannelFullMode.Wait,
-        });
         var (position, rotation, joints) = options.StartingPoint(fallbackStart);
         _state = initial(position, rotation, joints);
     }
@@ -58,7 +50,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     /// <summary>Guards the robot state and the logs; never held across an await.</summary>
     private protected Lock Gate { get; } = new();
 
-    /// <summary>Starts listening and the execution loop; a controller starts once.</summary>
+    /// <summary>Starts listening (and the brand's twin); a controller starts once.</summary>
     public async Task StartAsync(CancellationToken cancellationToken = default)
     {
         cancellationToken.ThrowIfCancellationRequested();
@@ -69,7 +61,6 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         _stopping = new CancellationTokenSource();
         StartFaultPlan();
         await ListenAsync(_stopping.Token).ConfigureAwait(false);
-        Run(ExecuteRequestsAsync);
     }
 
     /// <summary>Closes every connection, stops listening and waits for the background work to end. Never throws.</summary>
@@ -132,10 +123,10 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     }
 
     /// <summary>
-    /// Makes <paramref name="client"/> the driver connection after <paramref name="greet"/> wrote the brand's handshake,
-    /// under the send lock (so the progress it reports matches the acknowledgements sent). False when the client left.
+    /// Makes <paramref name="client"/> the driver connection, under the send lock (so the progress its greeting reports matches
+    /// the acknowledgements sent). False when the fault plan refuses it (it is closed then).
     /// </summary>
-    private protected async Task<bool> AttachClientAsync(TcpClient client, Func<NetworkStream, CancellationToken, Task> greet, CancellationToken token)
+    private protected bool AttachClient(TcpClient client)
     {
         if (RefusesConnection())
         {
@@ -143,36 +134,17 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             return false;
         }
         var stream = client.GetStream();
-        try
+        lock (_sendLock)
         {
-            await _sendLock.WaitAsync(token).ConfigureAwait(false);
-        }
-        catch (OperationCanceledException)
-        {
-            client.Dispose();
-            return false;
-        }
-        Interlocked.Increment(ref _connectionCount);
-        try
-        {
-            await greet(stream, token).ConfigureAwait(false);
+            Interlocked.Increment(ref _connectionCount);
             lock (Gate)
             {
                 _client = client;
                 _clientStream = stream;
                 _readerGeneration = _generation;
             }
-            return true;
         }
-        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
-        {
-            client.Dispose();
-            return false;
-        }
-        finally
-        {
-            _sendLock.Release();
-        }
+        return true;
     }
 
     /// <summary>Closes the driver connection (only if it is still <paramref name="only"/>, when given; otherwise that client alone).</summary>
@@ -205,11 +177,13 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         }
     }
 
-    /// <summary>Writes to the current client, if any; a positive <paramref name="executedId"/> is recorded as the last executed request first, under the same lock.</summary>
-    private protected async Task<bool> SendToClientAsync(ReadOnlyMemory<byte> bytes, CancellationToken token, int executedId = 0)
+    /// <summary>
+    /// Writes to the current client, if any, on the caller's thread (a twin's program writes as a blocking socket write does); a
+    /// positive <paramref name="executedId"/> is recorded as the last executed request first, under the same lock.
+    /// </summary>
+    private protected bool SendToClient(ReadOnlySpan<byte> bytes, int executedId = 0)
     {
-        await _sendLock.WaitAsync(token).ConfigureAwait(false);
-        try
+        lock (_sendLock)
         {
             if (executedId > 0)
             {
@@ -224,29 +198,21 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             {
                 return false;
             }
-            await stream.WriteAsync(bytes, token).ConfigureAwait(false);
-            return true;
-        }
-        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
-        {
-            return false;
-        }
-        finally
-        {
-            _sendLock.Release();
+            try
+            {
+                stream.Write(bytes);
+                return true;
+            }
+            catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
+            {
+                return false;
+            }
         }
     }
 
-    /// <summary>Puts a parsed request into the instruction buffer, waiting while it is full; counts and logs it.</summary>
-    private protected async ValueTask EnqueueAsync(object request, int id, string logText, CancellationToken token)
-    {
-        if (!Receives(id, out int generation))
-        {
-            return; // read from a client a restart cut off: lost with the rest of the buffer
-        }
-        CountReceived(logText);
-        await _buffer.Writer.WriteAsync(new Queued(request, id, generation), token).ConfigureAwait(false);
-    }
+    /// <summary>Fault injection from a test: <see cref="SendToClient"/> of <paramref name="bytes"/> unless cancelled first.</summary>
+    private protected Task<bool> SendToClientAsync(byte[] bytes, CancellationToken token) =>
+        token.IsCancellationRequested ? Task.FromCanceled<bool>(token) : Task.FromResult(SendToClient(bytes));
 
     /// <summary>Counts and logs a request received (and the most received but not yet executed).</summary>
     private void CountReceived(string logText)
@@ -295,7 +261,4 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             queue.Dequeue();
         }
     }
-
-    /// <summary>A request in the buffer with the id it is acknowledged by.</summary>
-    private readonly record struct Queued(object Request, int Id, int Generation);
 }

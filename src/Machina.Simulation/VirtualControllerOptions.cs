@@ -30,7 +30,10 @@ public abstract record VirtualControllerOptions
     /// <summary>When true every instruction completes at once (for tests and benchmarks). Default false.</summary>
     public bool InstantExecution { get; init; }
 
-    /// <summary>How many received requests wait for execution before the controller stops reading the socket. Default 1000.</summary>
+    /// <summary>
+    /// Kept for compatibility (at least 1; default 1000): the core no longer queues requests. A twin holds what its driver holds,
+    /// as the robot would (the KUKA driver's ring of 100, what reached the ABB driver's socket, one UR instruction).
+    /// </summary>
     public int BufferCapacity { get; init; } = 1000;
 
     /// <summary>How many received requests are kept for inspection (oldest dropped). 0 keeps none. Default 10 000.</summary>

@@ -128,6 +128,10 @@ public sealed partial class VirtualKukaController
                 driver.Data["last_executed"].Value = 0;
                 driver.Data["last_received"].Value = 0;
             }
+            else
+            {
+                ForgetDropped();
+            }
             Pendant("program reset: machina_kuka_driver starts again from the top");
         }
     }
@@ -176,8 +180,6 @@ public sealed partial class VirtualKukaController
         lock (Gate)
         {
             _driverRun?.Cancel();
-            _acks.Clear();
-            _dropped.Clear();
             _heldTwinAcknowledgement = null;
         }
     }

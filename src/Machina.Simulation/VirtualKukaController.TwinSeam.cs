@@ -14,27 +14,36 @@ namespace Machina.Simulation;
 /// </summary>
 public sealed partial class VirtualKukaController : IEkiSeam
 {
-    private readonly Dictionary<int, TaskCompletionSource<TwinAck>> _acks = [];
+    /// <summary>
+    /// The actions the driver channel received and the driver has not settled yet (acknowledged, reported failed, or run while
+    /// nobody listened), in the order received: what its ring and the channel's memory hold. Those a restart dropped come
+    /// first (<see cref="DiscardHeld"/>). Guarded by the gate.
+    /// </summary>
+    private readonly List<TwinAction> _held = [];
     private CancellationToken _twinToken;
     private byte[]? _heldTwinAcknowledgement;
 
-    /// <summary>An action the driver received: it enters the controller's buffer and is executed when the driver acknowledges it.</summary>
-    private sealed record TwinAction(int Id, TaskCompletionSource<TwinAck> Acknowledged);
-
-    /// <summary>
-    /// An acknowledgement the driver is sending (its action ran, the fault plan decides what reaches the host), or with
-    /// <paramref name="Failure"/> the text of the failure it sent instead.
-    /// </summary>
-    private sealed record TwinAck(int Id, byte[] Bytes, TaskCompletionSource<bool> Done, string? Failure = null)
+    /// <summary>An action the driver channel received, held until the driver settles it.</summary>
+    private sealed class TwinAction(int id)
     {
+        public int Id { get; } = id;
+
+        /// <summary>True once a restart dropped it (counted lost): if the driver runs it anyway, it is logged executed then.</summary>
+        public bool Dropped { get; set; }
+    }
+
+    /// <summary>An acknowledgement the driver is sending: its action ran, the fault plan decides what reaches the host.</summary>
+    private sealed class TwinAck(int id, byte[] bytes, bool unsent = false)
+    {
+        public int Id { get; } = id;
+
+        public byte[] Bytes { get; } = bytes;
+
         /// <summary>True when the driver ran the action and never sent its acknowledgement (its state told the host instead).</summary>
-        public bool Unsent { get; init; }
+        public bool Unsent { get; } = unsent;
 
-        /// <summary>True when the failure is Robot.Stop's (code 7): the driver ended the action part-way and keeps serving.</summary>
-        public bool Stopped { get; init; }
-
-        /// <summary>True for an action a restart that loses the progress lost before the driver ran it.</summary>
-        public bool Lost { get; init; }
+        /// <summary>True once it went through the fault plan (whatever of it reached the host).</summary>
+        public bool Done { get; set; }
     }
 
     /// <summary>True while a client waits at the driver's port for the program to open its channel again (a held program greets it when it goes on).</summary>
@@ -56,8 +65,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// <summary>True while the driver's EthernetKRL channel has a client (false once it saw a client leave).</summary>
     internal bool DriverChannelConnected => Twin?.EkiConnected(DriverChannel) == true;
 
-    bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client) =>
-        !IsDriver(channel) || AttachClientAsync(client, (_, _) => Task.CompletedTask, _twinToken).GetAwaiter().GetResult();
+    bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client) => !IsDriver(channel) || AttachClient(client);
 
     void IEkiSeam.Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
     {
@@ -66,7 +74,6 @@ public sealed partial class VirtualKukaController : IEkiSeam
             return;
         }
         // Each action's values, from its ID to the next ID, as the element the host wrote.
-        var actions = new List<(int Id, string Text)>();
         StringBuilder? action = null;
         int id = 0;
         foreach ((string tag, string value) in values)
@@ -75,7 +82,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
             {
                 if (action is not null)
                 {
-                    actions.Add((id, action.Append("/>").ToString()));
+                    HoldReceived(id, action.Append("/>").ToString());
                 }
                 action = new StringBuilder("<A");
                 id = int.TryParse(value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
@@ -85,34 +92,41 @@ public sealed partial class VirtualKukaController : IEkiSeam
         }
         if (action is not null)
         {
-            actions.Add((id, action.Append("/>").ToString()));
-        }
-        try
-        {
-            foreach ((int actionId, string text) in actions)
-            {
-                EnqueueAsync(new TwinAction(actionId, Acknowledgement(actionId)), actionId, text, _twinToken).AsTask().GetAwaiter().GetResult();
-            }
-        }
-        catch (Exception e) when (e is OperationCanceledException or System.Threading.Channels.ChannelClosedException)
-        {
-            // Stopping.
+            HoldReceived(id, action.Append("/>").ToString());
         }
     }
 
-    /// <summary>Where the acknowledgement of action <paramref name="id"/> meets its entry in the buffer.</summary>
-    private TaskCompletionSource<TwinAck> Acknowledgement(int id)
+    /// <summary>Counts action <paramref name="id"/> received and holds it until the driver settles it (not when a restart cut its client off).</summary>
+    private void HoldReceived(int id, string text)
     {
         lock (Gate)
         {
-            // An entry of an action the buffer dropped is not shared with the same id sent again (the restart emptied the ring).
-            if (!_acks.TryGetValue(id, out TaskCompletionSource<TwinAck>? ack) || TakeDropped(ack))
+            if (!ReceiveOnCaller(id, text, out _))
             {
-                ack = new TaskCompletionSource<TwinAck>(TaskCreationOptions.RunContinuationsAsynchronously);
-                _acks[id] = ack;
+                return;
             }
-            return ack;
+            if (_held.Count > 0 && _held[0].Dropped)
+            {
+                // One a restart dropped is not the one sent again with its id (the restart emptied the ring).
+                _held.RemoveAll(a => a.Dropped && a.Id == id);
+            }
+            _held.Add(new TwinAction(id));
         }
+    }
+
+    /// <summary>Takes the held action <paramref name="id"/> (the first with that id), or null; call it under the gate.</summary>
+    private TwinAction? TakeHeld(int id)
+    {
+        for (int i = 0; i < _held.Count; i++)
+        {
+            if (_held[i].Id == id)
+            {
+                TwinAction action = _held[i];
+                _held.RemoveAt(i);
+                return action;
+            }
+        }
+        return null;
     }
 
     private static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
@@ -132,55 +146,50 @@ public sealed partial class VirtualKukaController : IEkiSeam
         }
         try
         {
-            if (root == "F")
+            switch (root)
             {
-                FailureSent(xml);
+                case "R":
+                    return Acknowledged(IdOf(xml), bytes);
+                case "F":
+                    FailureSent(xml);
+                    break;
+                case "S":
+                    StateSent(xml);
+                    break;
             }
-            else if (root == "S")
-            {
-                StateSent(xml);
-            }
-            if (root != "R")
-            {
-                return SendToClientAsync(bytes, _twinToken).GetAwaiter().GetResult();
-            }
-            TaskCompletionSource<TwinAck>? entry;
-            bool dropped;
-            int id = IdOf(xml);
-            lock (Gate)
-            {
-                _acks.Remove(id, out entry);
-                dropped = TakeDropped(entry);
-            }
-            if (entry is null)
-            {
-                // An action the controller's buffer never held: sent as it is.
-                return SendToClientAsync(bytes, _twinToken).GetAwaiter().GetResult();
-            }
-            if (dropped)
-            {
-                // It ran, but a restart under way dropped it from the buffer: logged here, acknowledged to nobody.
-                RanOutsideBuffer(id);
-                return false;
-            }
-            var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
-            entry.TrySetResult(new TwinAck(id, bytes, done));
-            return done.Task.WaitAsync(_twinToken).GetAwaiter().GetResult();
+            return SendToClient(bytes);
         }
-        catch (Exception e) when (e is OperationCanceledException or System.Threading.Channels.ChannelClosedException)
+        catch (OperationCanceledException e)
         {
             throw new OperationCanceledException("the controller stops", e, _twinToken);
         }
     }
 
     /// <summary>
-    /// The buffer reached an action: it counts as executed when the driver acknowledges it (the execution loop waits for that);
-    /// a refusal with the driver's text when the driver sent a failure instead.
+    /// The driver's EKI_Send of <c>R</c>: its arm ran action <paramref name="id"/>. Settled here, on the driver's thread: logged
+    /// executed and acknowledged through the fault plan (a held or delayed acknowledgement holds the driver, as a slow network
+    /// would). True when it went through.
     /// </summary>
-    private static TwinAck AwaitTwinAction(TwinAction action, CancellationToken token)
+    private bool Acknowledged(int id, byte[] bytes)
     {
-        TwinAck ack = action.Acknowledged.Task.WaitAsync(token).GetAwaiter().GetResult()!;
-        return ack.Failure is { } failure ? throw new VirtualRefusalException(failure) : ack;
+        TwinAction? action;
+        lock (Gate)
+        {
+            action = TakeHeld(id);
+        }
+        if (action is null)
+        {
+            return SendToClient(bytes); // an action the controller never held: sent as it is
+        }
+        if (action.Dropped)
+        {
+            // It ran, but a restart under way dropped it: logged here, acknowledged to nobody.
+            RanOutsideBuffer(id);
+            return false;
+        }
+        var ack = new TwinAck(id, bytes);
+        CompleteReceivedOnCaller(ack, id, SettledByBrand, runs: true, _twinToken);
+        return ack.Done;
     }
 
     void IEkiSeam.Closed(EkiChannel channel, TcpClient client)
@@ -212,48 +221,42 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// <summary>
     /// The driver greets a connection with its progress: the actions it ran up to Executed whose acknowledgement it did not send
     /// (no greeted connection then) are executed for the buffer too, with nothing sent; a held acknowledgement is now history.
-    /// The state leaves only once the controller's execution log holds them: a host that reads the log as soon as the state
-    /// arrived finds there what the state says (under load the buffer's loop logged them after the host had looked).
+    /// They are settled on the driver's thread before the state leaves: a host that reads the log as soon as the state arrived
+    /// finds there what the state says.
     /// </summary>
     private void StateSent(string xml) => CompleteRanUpTo(IntegerOf(xml, " Executed=\""));
 
     /// <summary>
-    /// Executes for the buffer, with nothing sent, the actions up to <paramref name="executed"/> (the driver's progress) whose
-    /// acknowledgement the driver did not send, and waits until the execution log holds them.
+    /// Settles, with nothing sent, the held actions up to <paramref name="executed"/> (the driver's progress) whose
+    /// acknowledgement the driver did not send: they are in the execution log before this returns. Those a restart dropped
+    /// are logged as run outside the buffer.
     /// </summary>
     private void CompleteRanUpTo(int executed)
     {
-        List<(int Id, TaskCompletionSource<TwinAck> Entry)> ran;
-        List<int> dropped = [];
+        List<TwinAction> ran = [];
         lock (Gate)
         {
             _heldTwinAcknowledgement = null;
-            ran = [.. _acks.Where(a => a.Key <= executed).OrderBy(a => a.Key).Select(a => (a.Key, a.Value))];
-            foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran)
+            for (int i = 0; i < _held.Count;)
             {
-                _acks.Remove(id);
-                if (TakeDropped(entry))
+                if (_held[i].Id <= executed)
                 {
-                    dropped.Add(id);
+                    ran.Add(_held[i]);
+                    _held.RemoveAt(i);
+                }
+                else
+                {
+                    i++;
                 }
             }
         }
-        var logged = new List<Task<bool>>(ran.Count);
-        foreach ((int id, TaskCompletionSource<TwinAck> entry) in ran)
+        foreach (TwinAction action in ran.Where(a => !a.Dropped))
         {
-            var done = new TaskCompletionSource<bool>(TaskCreationOptions.RunContinuationsAsynchronously);
-            if (!dropped.Contains(id) && entry.TrySetResult(new TwinAck(id, [], done) { Unsent = true }))
-            {
-                logged.Add(done.Task);
-            }
+            CompleteReceivedOnCaller(new TwinAck(action.Id, [], unsent: true), action.Id, SettledByBrand, runs: true, _twinToken);
         }
-        // The buffer's loop sets Done after it logged the action as executed (before its acknowledgement step, which sends nothing).
-        Task.WhenAll(logged).WaitAsync(_twinToken).GetAwaiter().GetResult();
-        // Those a restart dropped from the buffer come after the one its loop held: nobody else logs them (waiting for the loop
-        // to do it was the hang of the restart that loses the progress).
-        foreach (int id in dropped)
+        foreach (TwinAction action in ran.Where(a => a.Dropped))
         {
-            RanOutsideBuffer(id);
+            RanOutsideBuffer(action.Id);
         }
     }
 
@@ -270,90 +273,42 @@ public sealed partial class VirtualKukaController : IEkiSeam
         return System.Net.WebUtility.HtmlDecode(xml[start..end]);
     }
 
-    /// <summary>The driver reports a failure: an acknowledgement held back goes first, and the failure is kept as an error.</summary>
-    private void FailureSent(string xml)
-    {
-        TaskCompletionSource<TwinAck>? entry;
-        bool stopped = IntegerOf(xml, " Code=\"") == StoppedCode;
-        List<TaskCompletionSource<TwinAck>> dropped = [];
-        lock (Gate)
-        {
-            _acks.Remove(IdOf(xml), out entry);
-            if (stopped)
-            {
-                // The driver dropped every other action it held: none of them will be acknowledged.
-                dropped.AddRange(_acks.Values);
-                _acks.Clear();
-            }
-        }
-        if (stopped)
-        {
-            DropBuffer("stopped by the host (Robot.Stop)");
-        }
-        entry?.TrySetResult(new TwinAck(IdOf(xml), [], new TaskCompletionSource<bool>(), TextOf(xml)) { Stopped = stopped });
-        foreach (TaskCompletionSource<TwinAck> waiting in dropped)
-        {
-            waiting.TrySetCanceled();
-        }
-        byte[]? held;
-        lock (Gate)
-        {
-            held = _heldTwinAcknowledgement;
-            _heldTwinAcknowledgement = null;
-        }
-        if (held is not null)
-        {
-            SendToClientAsync(held, _twinToken).GetAwaiter().GetResult();
-        }
-    }
-
     /// <summary>Sends an acknowledgement of the twin's driver as the options write it, through the fault plan.</summary>
-    private async Task<bool> AcknowledgeTwinAsync(TwinAck ack, CancellationToken token)
+    private void AcknowledgeTwin(TwinAck ack, CancellationToken token)
     {
-        try
+        if (ack.Unsent)
         {
-            if (ack.Unsent)
-            {
-                return true;
-            }
-            switch (_options.AcknowledgementWrites)
-            {
-                case AcknowledgementWrites.Split:
-                    // The first part records the action as executed; the rest completes the element.
-                    await SendToClientAsync(ack.Bytes.AsMemory(0, 4), token, executedId: ack.Id).ConfigureAwait(false);
-                    await AcknowledgeTwinPartAsync(ack.Bytes.AsMemory(4), ack.Id, token).ConfigureAwait(false);
-                    break;
-                case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is null && TwinRingCount() > 0:
-                    // Held until the driver acknowledges the next action, which it runs now.
-                    lock (Gate)
-                    {
-                        _heldTwinAcknowledgement = ack.Bytes;
-                    }
-                    break;
-                case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is not null:
-                    byte[] held;
-                    lock (Gate)
-                    {
-                        held = _heldTwinAcknowledgement!;
-                        _heldTwinAcknowledgement = null;
-                    }
-                    await AcknowledgeTwinPartAsync(held.Concat(ack.Bytes).ToArray(), ack.Id, token).ConfigureAwait(false);
-                    break;
-                default:
-                    await AcknowledgeTwinPartAsync(ack.Bytes, ack.Id, token).ConfigureAwait(false);
-                    break;
-            }
-            ack.Done.TrySetResult(true);
+            return;
         }
-        finally
+        switch (_options.AcknowledgementWrites)
         {
-            ack.Done.TrySetResult(false);
+            case AcknowledgementWrites.Split:
+                // The first part records the action as executed; the rest completes the element.
+                SendToClient(ack.Bytes.AsSpan(0, 4), executedId: ack.Id);
+                Acknowledge(ack.Bytes.AsSpan(4), ack.Id, token);
+                break;
+            case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is null && TwinRingCount() > 0:
+                // Held until the driver acknowledges the next action, which it runs now.
+                lock (Gate)
+                {
+                    _heldTwinAcknowledgement = ack.Bytes;
+                }
+                break;
+            case AcknowledgementWrites.Joined when _heldTwinAcknowledgement is not null:
+                byte[] held;
+                lock (Gate)
+                {
+                    held = _heldTwinAcknowledgement!;
+                    _heldTwinAcknowledgement = null;
+                }
+                Acknowledge([.. held, .. ack.Bytes], ack.Id, token);
+                break;
+            default:
+                Acknowledge(ack.Bytes, ack.Id, token);
+                break;
         }
-        return true;
+        ack.Done = true;
     }
-
-    /// <summary>Sends an acknowledgement through the fault plan (a restart that loses the buffer resets the driver program first, see <see cref="RestartingLosingBuffer"/>).</summary>
-    private Task AcknowledgeTwinPartAsync(ReadOnlyMemory<byte> bytes, int id, CancellationToken token) => AcknowledgeAsync(bytes, id, token);
 
     /// <summary>
     /// The fault plan's RestartLosingBuffer is a program reset: the driver program stops (it waits in the EKI_Send of the
@@ -385,10 +340,6 @@ public sealed partial class VirtualKukaController : IEkiSeam
         }
     }
 
-    /// <summary>An action a restart lost before the driver ran it: the execution loop that waited for it goes on without it.</summary>
-    private protected override bool LostInRestart(object request) =>
-        request is TwinAction { Acknowledged.Task: { IsCompletedSuccessfully: true, Result.Lost: true } };
-
     /// <summary>
     /// After a restart that loses the progress, once the driver stopped: what it ran up to <paramref name="executed"/> with
     /// nobody connected is executed for the buffer (and logged), every other action it had received is lost.
@@ -396,16 +347,15 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private void SettleRestart(int executed)
     {
         CompleteRanUpTo(executed);
-        List<(int Id, TaskCompletionSource<TwinAck> Entry)> lost;
+        List<TwinAction> lost;
         lock (Gate)
         {
-            lost = [.. _acks.Select(a => (a.Key, a.Value))];
-            _acks.Clear();
-            _dropped.Clear();
+            lost = [.. _held];
+            _held.Clear();
         }
-        foreach ((int id, TaskCompletionSource<TwinAck> entry) in lost)
+        foreach (TwinAction action in lost.Where(a => !a.Dropped))
         {
-            entry.TrySetResult(new TwinAck(id, [], new TaskCompletionSource<bool>()) { Lost = true });
+            LostOnCaller(); // those the restart dropped were counted lost then
         }
     }
 

@@ -106,8 +106,13 @@ public sealed partial class VirtualUrController
         }
     }
 
-    private protected override async Task<bool> AfterExecutedAsync(object request, int id, CancellationToken token) =>
-        request is not TwinAck ack || await AcknowledgeTwinAsync(ack, token).ConfigureAwait(false);
+    private protected override void AfterExecuted(object request, int id, CancellationToken token)
+    {
+        if (request is TwinAck ack)
+        {
+            AcknowledgeTwin(ack, token);
+        }
+    }
 
     /// <summary>An acknowledgement as the driver sends it: the id, one big-endian int32.</summary>
     private protected override byte[] AcknowledgementBytes(int id)
@@ -130,7 +135,4 @@ public sealed partial class VirtualUrController
     }
 
     private protected override bool InjectProtectiveStop() => ProtectiveStop();
-
-    /// <summary>The twin's arm already ran it: the acknowledgement reports where it is.</summary>
-    private protected override VirtualStep Plan(VirtualUrState s, object request) => new(TwinState(Twin, s), 0);
 }

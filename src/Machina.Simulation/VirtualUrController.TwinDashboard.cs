@@ -37,7 +37,7 @@ public sealed partial class VirtualUrController
                 if (running && HoldTwin())
                 {
                     // Answered once the arm stands: the program's thread records where the hold stopped the motion at once.
-                    SpinWait.SpinUntil(() => twin.Motion is null, TimeSpan.FromSeconds(5));
+                    twin.WaitUntilStanding(TimeSpan.FromSeconds(5));
                     WakeRtde();
                     return "Pausing program";
                 }

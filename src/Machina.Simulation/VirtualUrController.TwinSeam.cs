@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.Net.Sockets;
 using System.Text;
+using Machina.Simulation.Twin;
 using Machina.Simulation.UrScript;
 
 namespace Machina.Simulation;
@@ -39,7 +40,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         var client = new TcpClient();
         client.Client.Dispose();
         client.Client = socket.Connection;
-        if (!AttachClientAsync(client, (_, _) => Task.CompletedTask, program).GetAwaiter().GetResult())
+        if (!AttachClient(client))
         {
             Pendant("the connection back to the host was refused");
         }
@@ -106,12 +107,11 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         // lost is never sent: the program waits there until it is replaced.
         var done = new TaskCompletionSource<bool>();
         AcknowledgeOnCaller(new TwinAck(value, generation, done), Math.Max(value, 0), text, program);
-        done.Task.Wait(program);
-        return done.Task.Result;
+        return TwinWait.For(done.Task, program);
     }
 
     /// <summary>Sends an executed acknowledgement through the fault plan, unless its program was replaced since (nobody listens for it then).</summary>
-    private async Task<bool> AcknowledgeTwinAsync(TwinAck ack, CancellationToken token)
+    private void AcknowledgeTwin(TwinAck ack, CancellationToken token)
     {
         try
         {
@@ -122,7 +122,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
             }
             if (current)
             {
-                await AcknowledgeAsync(AcknowledgementBytes(ack.Id), Math.Max(ack.Id, 0), token).ConfigureAwait(false);
+                Acknowledge(AcknowledgementBytes(ack.Id), Math.Max(ack.Id, 0), token);
             }
             ack.Done.TrySetResult(current);
         }
@@ -130,7 +130,6 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         {
             ack.Done.TrySetResult(false);
         }
-        return true;
     }
 
     /// <summary>Holds the twin's program (a protective stop or pause): its motion stops where the arm is; false when already held.</summary>

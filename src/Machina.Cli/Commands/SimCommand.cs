@@ -76,7 +76,7 @@ internal static partial class SimCommand
         if (args.Value("--load") is not null)
         {
             return TwinPrograms.Loading.FirstOrDefault(t => t.Brand.Type == brand) is { RunLoaded: { } runLoaded } twin
-                ? await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, context).ConfigureAwait(false)
+                ? await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, bind, context).ConfigureAwait(false)
                 : throw new UsageException($"--load runs compiled programs on {LoadingNames()}, not on {Brands.Name(brand)}.");
         }
         RobotModel? model = Brands.Model(args.Value("--model"), brand);

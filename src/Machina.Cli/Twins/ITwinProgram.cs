@@ -40,9 +40,10 @@ internal interface ITwinProgram
 
     /// <summary>
     /// <c>machina sim BRAND --load …</c>: runs the compiled programs the arguments name on the twin in real time, telling what it does,
-    /// and returns the exit code; null when the brand's twin loads no programs from the command line.
+    /// and returns the exit code; null when the brand's twin loads no programs from the command line. The address is the
+    /// command's <c>--bind</c>, as it parsed and checked it.
     /// </summary>
-    Func<CliArgs, RobotModel, CliContext, Task<int>>? RunLoaded { get; }
+    Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; }
 }
 
 /// <summary>A verification's outcome: whether it passed, and its report with the steps named by the line <c>lineOf</c> gives.</summary>

@@ -17,8 +17,8 @@ internal sealed class KrlTwinProgram : ITwinProgram
 
     public string? ProgramNoun => "the KRL program";
 
-    public Func<CliArgs, RobotModel, CliContext, Task<int>>? RunLoaded { get; } =
-        (args, model, context) => SimCommand.RunKrlAsync(args.Value("--load")!, model, context);
+    public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
+        (args, model, _, context) => SimCommand.RunKrlAsync(args.Value("--load")!, model, context);
 
     public bool IsProgram(string fullPath) => fullPath.EndsWith(".src", StringComparison.OrdinalIgnoreCase)
         || (Directory.Exists(fullPath) && Directory.GetFiles(fullPath, "*.src").Length > 0);

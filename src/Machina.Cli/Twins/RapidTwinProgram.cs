@@ -17,9 +17,9 @@ internal sealed class RapidTwinProgram : ITwinProgram
 
     public string? ProgramNoun => "the RAPID program";
 
-    public Func<CliArgs, RobotModel, CliContext, Task<int>>? RunLoaded { get; } =
-        (args, model, context) => SimLoad.RunAbbAsync(args.Values("--load"), model, context, new SimLoad.Extras(args.Values("--signal"), args.Value("--eio"),
-            System.Net.IPAddress.Parse(args.Value("--bind") ?? "127.0.0.1"), args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true)));
+    public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
+        (args, model, bind, context) => SimLoad.RunAbbAsync(args.Values("--load"), model, context, new SimLoad.Extras(args.Values("--signal"), args.Value("--eio"),
+            bind, args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true)));
 
     public bool IsProgram(string fullPath) => Directory.Exists(fullPath)
         || fullPath.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase) || fullPath.EndsWith(".mod", StringComparison.OrdinalIgnoreCase);

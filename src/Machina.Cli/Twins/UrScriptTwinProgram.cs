@@ -16,7 +16,7 @@ internal sealed class UrScriptTwinProgram : ITwinProgram
 
     public string? ProgramNoun => null;
 
-    public Func<CliArgs, RobotModel, CliContext, Task<int>>? RunLoaded => null;
+    public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded => null;
 
     public bool IsProgram(string fullPath) => fullPath.EndsWith(".script", StringComparison.OrdinalIgnoreCase);
 

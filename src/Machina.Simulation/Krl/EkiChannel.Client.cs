@@ -1,4 +1,5 @@
 using System.Net.Sockets;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Krl;
 
@@ -31,7 +32,7 @@ internal sealed partial class EkiChannel
         {
             using var timeout = CancellationTokenSource.CreateLinkedTokenSource(stop);
             timeout.CancelAfter(ConnectTimeout);
-            client.ConnectAsync(Configuration.Address, Configuration.Port, timeout.Token).AsTask().GetAwaiter().GetResult();
+            TwinWait.For(client.ConnectAsync(Configuration.Address, Configuration.Port, timeout.Token).AsTask(), timeout.Token);
         }
         catch (Exception e) when (e is SocketException or OperationCanceledException or ArgumentException)
         {

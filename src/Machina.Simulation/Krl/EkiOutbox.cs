@@ -1,4 +1,5 @@
 using System.Net.Sockets;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Krl;
 
@@ -56,7 +57,7 @@ internal sealed class EkiOutbox(Stream stream)
             {
                 return;
             }
-            writer.GetAwaiter().GetResult();
+            TwinWait.For(writer, CancellationToken.None);
         }
     }
 

@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Krl;
 
 /// <summary>
@@ -26,7 +28,7 @@ internal sealed partial class KrlTwinController
             {
                 CountTimers();
                 machine.Run(found);
-                Task.Delay(cycle, Options.Time, cancellation).GetAwaiter().GetResult();
+                TwinWait.Delay(cycle, Options.Time, cancellation);
             }
         }
         catch (KrlRuntimeException ex)

@@ -231,7 +231,7 @@ internal static partial class RapidBuiltins
     private static bool Wait(RapidCall call, Task operation, double seconds)
     {
         CancellationToken cancellation = call.Machine.Task.CancellationToken;
-        Twin.TwinTaskWait.For(operation, TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
+        Twin.TwinWait.For(operation, TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
         if (operation.IsCanceled)
         {
             throw new OperationCanceledException("The socket operation was cancelled.");

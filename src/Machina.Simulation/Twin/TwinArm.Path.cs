@@ -175,7 +175,7 @@ internal sealed partial class TwinArm
             {
                 try
                 {
-                    held.Wait(both.Token);
+                    TwinWait.For(held, both.Token);
                 }
                 catch (OperationCanceledException) when (!cancellation.IsCancellationRequested)
                 {

@@ -25,7 +25,7 @@ internal sealed class TwinSleep
         }
         if (inner != TimeProvider.System)
         {
-            Task.Delay(span, time, cancellation).GetAwaiter().GetResult();
+            TwinWait.Delay(span, time, cancellation);
             return;
         }
         long owed = Interlocked.Add(ref _owedTicks, (long)(span.Ticks / scale));

@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 internal sealed partial class UrTwinController
@@ -6,6 +8,9 @@ internal sealed partial class UrTwinController
     private TaskCompletionSource? _held;
     private CancellationTokenSource _holdStop = new();
     private UrMotion? _motion;
+
+    /// <summary>Set while no motion is in progress (<see cref="WaitUntilStanding"/>); it never spins and holds no operating-system object.</summary>
+    private readonly ManualResetEventSlim _standing = new(true, 0);
 
     /// <summary>True while the program is held (a protective stop or a pause): the arm stands, the program waits.</summary>
     public bool IsHeld
@@ -138,8 +143,17 @@ internal sealed partial class UrTwinController
         {
             held = _held?.Task;
         }
-        held?.Wait(cancellation);
+        if (held is not null)
+        {
+            TwinWait.For(held, cancellation);
+        }
     }
+
+    /// <summary>
+    /// Waits until no motion is in progress, at most <paramref name="timeout"/> (a hold reaches the motion at once: the program's
+    /// thread records where the arm stands); true when the arm stands.
+    /// </summary>
+    public bool WaitUntilStanding(TimeSpan timeout) => _standing.Wait(timeout);
 
     /// <summary>
     /// Moves the arm from where it is to <paramref name="target"/> in <paramref name="seconds"/>, along <paramref name="path"/>
@@ -173,6 +187,7 @@ internal sealed partial class UrTwinController
             {
                 hold = _holdStop.Token;
                 _motion = motion;
+                _standing.Reset();
             }
             using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, hold);
             try
@@ -196,6 +211,7 @@ internal sealed partial class UrTwinController
                     if (ReferenceEquals(_motion, motion))
                     {
                         _motion = null;
+                        _standing.Set();
                     }
                 }
             }

@@ -424,7 +424,7 @@ internal sealed partial class UrTwinController : IDisposable
         if (State == UrProgramState.Running && Hold())
         {
             // The program's thread records where the arm stands when the hold reaches the motion (bounded: it does at once).
-            SpinWait.SpinUntil(() => Motion is null, TimeSpan.FromSeconds(5));
+            WaitUntilStanding(TimeSpan.FromSeconds(5));
             StopProgram();
             Release();
             return;

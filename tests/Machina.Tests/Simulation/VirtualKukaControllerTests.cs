@@ -75,6 +75,33 @@ public class VirtualKukaControllerTests
     }
 
     [Fact]
+    public async Task Batch_BufferCapacityOne_EveryActionRunsAndIsAcknowledged()
+    {
+        // The controller holds what the driver holds (its ring), not a queue of its own: a capacity of 1 no longer blocks the
+        // channel's reader on the second action while the first waits for the driver, which had not read the document yet
+        // (issue 44: the execution loop's bounded buffer deadlocked there).
+        await using var controller = await KukaTestSupport.StartKukaAsync(new VirtualKukaControllerOptions { InstantExecution = true, BufferCapacity = 1 });
+        using var client = await KukaTestSupport.ConnectRawAsync(controller.Port);
+        var reader = new KukaXmlReader();
+        await KukaTestSupport.ReadElementAsync(client, reader);
+        var sb = new StringBuilder();
+        KukaInstruction.AppendBatch(sb, Enumerable.Range(1, 3).Select(id => new KukaInstruction(id, KukaActionCode.Wait, new KukaValues(), "")));
+        await client.GetStream().WriteAsync(Encoding.ASCII.GetBytes(sb.ToString()));
+
+        var acknowledged = new List<int>();
+        for (int i = 0; i < 3; i++)
+        {
+            KukaElement ack = await KukaTestSupport.ReadElementAsync(client, reader);
+            Assert.Equal("R", ack.Name);
+            acknowledged.Add(ack.Integer("ID"));
+        }
+        Assert.Equal([1, 2, 3], acknowledged);
+        Assert.Equal([1, 2, 3], controller.ExecutedIds);
+        Assert.Equal((3, 3, 0), (controller.RequestsReceived, controller.RequestsExecuted, controller.BufferedRequestCount));
+        Assert.Empty(controller.Errors);
+    }
+
+    [Fact]
     public async Task Document_NotInTheChannelsConfiguration_IgnoredAndTheNextBatchRuns()
     {
         await using var controller = await KukaTestSupport.StartKukaAsync();
