@@ -41,6 +41,21 @@ public sealed partial class Robot
         }
     }
 
+    /// <summary>
+    /// How many motions this robot's cursors solved (the issue cursor, and online the release and execution cursors); a solution one
+    /// cursor shares with the others counts once. For tests and benchmarks: solves per action.
+    /// </summary>
+    internal int KinematicSolves()
+    {
+        int issued;
+        lock (_issueLock)
+        {
+            issued = _issueCursor.Solves;
+        }
+        // Asked after the issue lock is released: nobody asks the session's loop a question while holding it.
+        return issued + (_session?.Solves() ?? 0);
+    }
+
     /// <summary>Chooses the built-in model with this name (e.g. "IRB 120", "UR5e", "KR 6 R700 sixx"); see <see cref="SetModel(RobotModel?)"/>.</summary>
     /// <exception cref="ArgumentException">There is no such model (the message suggests close names) or it is of another brand.</exception>
     public void SetModel(string model)

@@ -13,9 +13,6 @@ public sealed partial class Robot : IOnlineHost
     private readonly object _issueLock = new();
     private readonly RobotCursor _issueCursor;
 
-    /// <summary>Online, the issue cursor as it was before the action being issued (see <see cref="IssueLocked"/>).</summary>
-    private readonly RobotCursor _undoCursor = new();
-
     private readonly List<RobotAction> _programActions = [];
     private int _nextId = 1;
 
@@ -175,25 +172,15 @@ public sealed partial class Robot : IOnlineHost
             LogLocked(LogLevel.WARNING, $"Refused {action.ToInstruction()}: {refusal}", refused: action);
             throw new ActionRefusedException(action, refusal);
         }
-        if (_session is not null)
-        {
-            // What is sent is read from the state after the action: keep the state before it, to undo an action the wire cannot carry.
-            _undoCursor.CopyFrom(_issueCursor);
-        }
+        ActionFrame? frame = null;
         try
         {
-            refusal = _issueCursor.TryApply(action);
+            refusal = _session is { } session ? ApplyStreamed(action, session, out frame) : _issueCursor.TryApply(action);
         }
         catch
         {
             action.Id = -1;
             throw;
-        }
-        ActionFrame? frame = null;
-        if (refusal is null && _session?.Encode(action, _issueCursor, out frame) is string unsendable)
-        {
-            _issueCursor.CopyFrom(_undoCursor);
-            refusal = unsendable;
         }
         if (refusal is not null)
         {
@@ -221,6 +208,36 @@ public sealed partial class Robot : IOnlineHost
             _programActions.Add(action);
         }
         return (report, issued);
+    }
+
+    /// <summary>
+    /// Online: applies <paramref name="action"/> to the issue cursor and encodes it from the state it leads to (what is sent is read
+    /// from there). When the wire cannot carry it, the action is undone from what it changed (a value copy of the cursor's fields,
+    /// and of its collections only the entry the action writes): the cursor is exactly as before. Returns the refusal, or null.
+    /// </summary>
+    private string? ApplyStreamed(RobotAction action, OnlineSession session, out ActionFrame? frame)
+    {
+        frame = null;
+        RobotCursor.UndoPoint undo = _issueCursor.Mark(action);
+        if (_issueCursor.TryApply(action) is string refusal)
+        {
+            return refusal;
+        }
+        string? unsendable;
+        try
+        {
+            unsendable = session.Encode(action, _issueCursor, out frame);
+        }
+        catch
+        {
+            _issueCursor.Undo(undo);
+            throw;
+        }
+        if (unsendable is not null)
+        {
+            _issueCursor.Undo(undo);
+        }
+        return unsendable;
     }
 
     private string StateReport() => _issueCursor.LastAction switch

@@ -85,6 +85,13 @@ internal interface IDeviceListener
     /// </summary>
     void OnFailed(int id, string reason, string? code);
 
+    /// <summary>
+    /// Like <see cref="OnFailed"/> for a controller that says only how far its stopped program got: the first action in flight
+    /// after the one with wire id <paramref name="executedId"/> (0: none ran) could not run. The session, which alone keeps what is in
+    /// flight, names it (wire ids grow in release order). UR: RTDE's executed register and its "stopped" state.
+    /// </summary>
+    void OnFailedAfter(int executedId, string reason, string? code);
+
     /// <summary>The link failed (closed socket, garbage, protocol violation); the driver stops after this call.</summary>
     void OnFault(MachinaException error);
 }

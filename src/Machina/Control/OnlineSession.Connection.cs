@@ -31,39 +31,17 @@ internal sealed partial class OnlineSession
     /// </summary>
     internal async Task ConnectAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
     {
-        await AskAsync(() =>
-        {
-            if (_disposed)
-            {
-                throw Disposed("connect");
-            }
-            if (_state != ConnectionState.Disconnected)
-            {
-                throw new InvalidOperationException($"The robot is already {_state.ToString().ToLowerInvariant()}; call Disconnect first.");
-            }
-            _state = ConnectionState.Connecting;
-            return true;
-        }).ConfigureAwait(false);
-        IDeviceDriver driver;
-        Connection link;
+        // Two trips into the loop: one to begin (Connecting, this link's reports held from now on), one to attach or give up.
+        Connection link = await AskAsync(BeginConnecting).ConfigureAwait(false);
+        IDeviceDriver driver = link.Driver;
         DeviceHandshake handshake;
         try
         {
-            driver = _driverFactory();
-            link = new Connection(this, driver);
-            await AskAsync(() => _connecting = link).ConfigureAwait(false);   // its reports are held from now on
-            try
-            {
-                handshake = await driver.ConnectAsync(host, port, link, timeout, cancellationToken).ConfigureAwait(false);
-            }
-            catch
-            {
-                await driver.DisposeAsync().ConfigureAwait(false);
-                throw;
-            }
+            handshake = await driver.ConnectAsync(host, port, link, timeout, cancellationToken).ConfigureAwait(false);
         }
         catch
         {
+            await driver.DisposeAsync().ConfigureAwait(false);
             await AskAsync(() =>
             {
                 _state = ConnectionState.Disconnected;
@@ -79,6 +57,23 @@ internal sealed partial class OnlineSession
             await driver.DisposeAsync().ConfigureAwait(false);
             throw refusal == DisposedRefusal ? Disposed("connect") : new RobotConnectionException(refusal);
         }
+    }
+
+    /// <summary>Starts a connection (on the loop): a new driver and its link, whose reports are held until it is attached.</summary>
+    private Connection BeginConnecting()
+    {
+        if (_disposed)
+        {
+            throw Disposed("connect");
+        }
+        if (_state != ConnectionState.Disconnected)
+        {
+            throw new InvalidOperationException($"The robot is already {_state.ToString().ToLowerInvariant()}; call Disconnect first.");
+        }
+        var link = new Connection(this, _driverFactory());
+        _state = ConnectionState.Connecting;
+        _connecting = link;
+        return link;
     }
 
     /// <summary>What <see cref="Attach"/> returns when the robot was disposed during the handshake.</summary>

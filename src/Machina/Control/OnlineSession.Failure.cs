@@ -36,6 +36,28 @@ internal sealed partial class OnlineSession
     }
 
     /// <summary>
+    /// A failure reported by how far the controller's program got (<see cref="IDeviceListener.OnFailedAfter"/>): the first action in
+    /// flight after wire id <paramref name="executedId"/> that the controller acknowledges failed. Nothing such in flight: nothing failed
+    /// that the session sent, and nothing is reported.
+    /// </summary>
+    private void OnFailedAfter(Connection link, int executedId, string reason, string? code)
+    {
+        if (!ReferenceEquals(_link, link))
+        {
+            return;
+        }
+        foreach (InFlight f in _inFlight)
+        {
+            if (f.Acked && f.WireId > executedId)
+            {
+                Log(LogLevel.ERROR, $"The controller could not run action {f.WireId.ToString(Num.Inv)}: {reason}");
+                OnFailed(link, f.WireId, reason, code);
+                return;
+            }
+        }
+    }
+
+    /// <summary>
     /// Applies a failure (on the loop, under the issue lock): what was released before the failed action ran, the failed action raises
     /// <c>ActionFailed</c>, everything after it is cancelled, the cursors go back to where the robot is, waiters fail and the
     /// link is forgotten (the controller's program stopped). Returns a link fault instead when no action waits with that id.

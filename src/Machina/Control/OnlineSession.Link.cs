@@ -39,6 +39,9 @@ internal sealed partial class OnlineSession
 
         public void OnFailed(int id, string reason, string? code) => session.Report(this, () => session.OnFailed(this, id, reason, code));
 
+        public void OnFailedAfter(int executedId, string reason, string? code) =>
+            session.Report(this, () => session.OnFailedAfter(this, executedId, reason, code));
+
         public void OnFault(MachinaException error) => session.Report(this, () => session.Fault(this, error));
     }
 

@@ -134,6 +134,9 @@ internal sealed partial class OnlineSession : IActionStream
     /// <summary>Reads the execution cursor on the loop (online the robot's getters report the executed state, as the original did).</summary>
     internal T ReadExecution<T>(Func<RobotCursor, T> read) => Ask(() => read(_execution));
 
+    /// <summary>How many motions the release and execution cursors solved themselves (tests and benchmarks count solves per action).</summary>
+    internal int Solves() => Ask(() => _release.Solves + _execution.Solves);
+
     /// <summary>
     /// Completes once every issued action was executed and its events raised; fails when the link fails first, or with the
     /// <see cref="ActionFailedException"/> of an action the controller could not run (until the next connection).

@@ -9,6 +9,14 @@ internal sealed partial class RobotCursor
     internal string? TryApply(RobotAction action)
     {
         _applying = action;
+        string? refusal = Apply(action);
+        _applying = null;
+        return refusal;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private string? Apply(RobotAction action)
+    {
         if (Model is RobotModel model)
         {
             LastIssues = NoIssues;
@@ -57,7 +65,7 @@ internal sealed partial class RobotCursor
         return refusal;
     }
 
-    /// <summary>The action being applied, so that warnings raised while applying it name it (not the previous one).</summary>
+    /// <summary>The action being applied, so that warnings raised while applying it name it (not the previous one); null between actions.</summary>
     private RobotAction? _applying;
 
     private static string? Set<T>(ref T field, T value)
@@ -189,7 +197,7 @@ internal sealed partial class RobotCursor
 
     private static string? SetOutput<T>(Dictionary<string, T> outputs, bool toolPin, string pin, T value)
     {
-        outputs[toolPin ? "tool:" + pin : pin] = value;
+        outputs[OutputKey(toolPin, pin)] = value;
         return null;
     }
 }

@@ -50,7 +50,7 @@ internal sealed partial class RobotCursor
         {
             return refusal;
         }
-        IReadOnlyList<KinematicIssue> issues = action is ActionAxes ? SyncFromJoints(model) : SyncFromPoseOnce(model, action);
+        IReadOnlyList<KinematicIssue> issues = action is ActionAxes ? SyncFromJointsOnce(model, action) : SyncFromPoseOnce(model, action);
         if (Strict && issues.Count > 0)
         {
             RestoreMotion(saved);
@@ -69,6 +69,31 @@ internal sealed partial class RobotCursor
         ActionArcMotion a => ApplyArc(a),
         _ => null,
     };
+
+    /// <summary>
+    /// How many motions this cursor solved itself (inverse kinematics for a Cartesian motion, forward kinematics and checks for a joint
+    /// move) rather than reusing the solution another cursor of the robot found for the same action from the same state.
+    /// </summary>
+    internal int Solves { get; private set; }
+
+    /// <summary>
+    /// <see cref="SyncFromJoints"/>, reusing the pose and issues another cursor of the robot found for this joint move from the same
+    /// state (the release and execution cursors apply what the issue cursor applied).
+    /// </summary>
+    private IReadOnlyList<KinematicIssue> SyncFromJointsOnce(RobotModel model, RobotAction action)
+    {
+        var key = new PoseSolveKey(model, PrevAxes, default, default, Tool, null, null, MotionType, Speed, Axes);
+        if (Volatile.Read(ref action.Solved) is SolvedPose solved && solved.Key == key)
+        {
+            Position = solved.Tcp.Position;
+            Rotation = solved.Tcp.Rotation;
+            return solved.Issues;
+        }
+        Solves++;
+        IReadOnlyList<KinematicIssue> issues = SyncFromJoints(model);
+        Volatile.Write(ref action.Solved, new SolvedPose(key, null, issues) { Tcp = new Pose(Position!.Value, Rotation!.Value) });
+        return issues;
+    }
 
     /// <summary>After AxesTo/Axes: the pose is the forward kinematics of the joints with the attached tool applied.</summary>
     private IReadOnlyList<KinematicIssue> SyncFromJoints(RobotModel model)
@@ -95,6 +120,7 @@ internal sealed partial class RobotCursor
             Axes = solved.Axes;
             return solved.Issues;
         }
+        Solves++;
         IReadOnlyList<KinematicIssue> issues = SyncFromPose(model, action);
         Volatile.Write(ref action.Solved, new SolvedPose(key, Axes, issues));
         return issues;

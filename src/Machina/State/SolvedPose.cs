@@ -1,14 +1,16 @@
 namespace Machina;
 
 /// <summary>
-/// Everything a cursor's inverse kinematics reads for one Cartesian motion: the model, the joints before it, the TCP target, the
-/// tool's tip, an arc's through point, the motion type and the speed. Two keys are equal only when every number has the same bits
-/// (0 and −0 differ, so do two NaNs of different payloads): equal keys give the same joints and the same issues.
+/// Everything a cursor's kinematics reads for one motion: the model, the joints before it, the TCP target (a Cartesian motion) or
+/// the target joints (a joint move, <paramref name="targetAxes"/>), the tool's tip, an arc's through point, the motion type and the
+/// speed. Two keys are equal only when every number has the same bits (0 and −0 differ, so do two NaNs of different payloads): equal
+/// keys give the same joints, pose and issues.
 /// </summary>
 internal readonly struct PoseSolveKey(
     RobotModel model, Joints? prevAxes, Vector position, Rotation rotation, Tool? tool, Vector? through, Rotation? throughRotation,
-    MotionType motionType, double speed) : IEquatable<PoseSolveKey>
+    MotionType motionType, double speed, Joints? targetAxes = null) : IEquatable<PoseSolveKey>
 {
+    private readonly Joints? _targetAxes = targetAxes;
     private readonly RobotModel _model = model;
     private readonly Joints? _prevAxes = prevAxes;
     private readonly Vector _position = position;
@@ -26,7 +28,7 @@ internal readonly struct PoseSolveKey(
         ReferenceEquals(_model, other._model) && _motionType == other._motionType && Same(_speed, other._speed)
         && Same(_prevAxes, other._prevAxes) && Same(_position, other._position) && Same(_rotation, other._rotation)
         && _hasTool == other._hasTool && Same(_tip, other._tip) && Same(_tipRotation, other._tipRotation)
-        && Same(_through, other._through) && Same(_throughRotation, other._throughRotation);
+        && Same(_through, other._through) && Same(_throughRotation, other._throughRotation) && Same(_targetAxes, other._targetAxes);
 
     /// <inheritdoc/>
     public override bool Equals(object? obj) => obj is PoseSolveKey other && Equals(other);
@@ -56,5 +58,12 @@ internal readonly struct PoseSolveKey(
     private static bool Same(Joints? a, Joints? b) => a is Joints x ? b is Joints y && Same(x, y) : b is null;
 }
 
-/// <summary>A motion's solved joints (null: unreachable) and kinematic issues, for the state in <see cref="Key"/>.</summary>
-internal sealed record SolvedPose(PoseSolveKey Key, Joints? Axes, IReadOnlyList<KinematicIssue> Issues);
+/// <summary>
+/// A motion's solution for the state in <see cref="Key"/>: a Cartesian motion's joints (null: unreachable), or a joint move's TCP pose
+/// (<see cref="Tcp"/>, its forward kinematics with the tool), and the kinematic issues.
+/// </summary>
+internal sealed record SolvedPose(PoseSolveKey Key, Joints? Axes, IReadOnlyList<KinematicIssue> Issues)
+{
+    /// <summary>A joint move's TCP pose; default for a Cartesian motion.</summary>
+    internal Pose Tcp { get; init; }
+}

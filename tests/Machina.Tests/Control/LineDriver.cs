@@ -101,5 +101,7 @@ internal sealed class RecordingListener : IDeviceListener
 
     public void OnFailed(int id, string reason, string? code) => throw new InvalidOperationException("The line protocol never fails an action.");
 
+    public void OnFailedAfter(int executedId, string reason, string? code) => throw new InvalidOperationException("The line protocol never fails an action.");
+
     public void OnFault(MachinaException error) => Faults.Enqueue(error);
 }

@@ -7,7 +7,7 @@ namespace Machina.Tests.Conventions;
 public class EveryActionKindTests
 {
     /// <summary>One program that contains at least one action of every kind, in an order every brand accepts.</summary>
-    private const string EveryKind = """
+    internal const string EveryKind = """
         Initialize();
         MoveTo(400, 0, 400);
         DefineTool("pen", 0, 0, 100, 1, 0, 0, 0, 1, 0, 0.5, 0, 0, 50);

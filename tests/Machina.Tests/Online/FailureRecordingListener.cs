@@ -25,5 +25,10 @@ internal sealed class FailureRecordingListener : IDeviceListener
 
     public void OnFailed(int id, string reason, string? code) => Failed.TrySetResult((id, reason, code));
 
+    public void OnFailedAfter(int executedId, string reason, string? code) => FailedAfter.TrySetResult((executedId, reason, code));
+
+    /// <summary>A failure named by how far the program got (UR).</summary>
+    internal TaskCompletionSource<(int ExecutedId, string Reason, string? Code)> FailedAfter { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
     public void OnFault(MachinaException error) => Faults.Enqueue(error);
 }

@@ -4,7 +4,8 @@ namespace Machina;
 /// How the UR host learns that an action failed: a UR that cannot run an instruction (a target out of reach, a joint beyond
 /// its limits) stops the program with a runtime error and never acknowledges it. RTDE then shows runtime_state stopped
 /// without a safety stop, and the driver connection closes; the client interfaces (30001, 30002) send the error's text.
-/// Either sign makes the action in flight fail with the controller's words (<see cref="IDeviceListener.OnFailed"/>).
+/// Either sign makes the action in flight fail with the controller's words (<see cref="IDeviceListener.OnFailedAfter"/>: RTDE says
+/// how far the program got, the session knows which action comes next).
 /// </summary>
 internal sealed partial class UrDriver : ILinkReceiver
 {
@@ -17,7 +18,11 @@ internal sealed partial class UrDriver : ILinkReceiver
     /// </summary>
     private static readonly TimeSpan ReplacementTimeout = TimeSpan.FromSeconds(5);
 
-    private readonly Queue<int> _unacknowledged = new();
+    /// <summary>The wire id of the last action sent that the controller acknowledges (ids grow in release order); 0 for none.</summary>
+    private int _lastSent;
+
+    /// <summary>The wire id of the last acknowledgement (it covers every id sent before it); 0 for none.</summary>
+    private int _lastAcknowledged;
     private readonly TaskCompletionSource<string> _runtimeException = new(TaskCreationOptions.RunContinuationsAsynchronously);
     private readonly int _instance = Random.Shared.Next(1, int.MaxValue);
     private int _programFailed;
@@ -95,19 +100,17 @@ internal sealed partial class UrDriver : ILinkReceiver
         OnClosed(error);
     }
 
-    /// <summary>The program stopped without a safety stop while actions were in flight: the first not executed fails, once.</summary>
+    /// <summary>
+    /// The program stopped without a safety stop while actions were in flight: the first not executed fails, once. Which action
+    /// that is, the session knows (its in-flight list): the driver says how far the program got (RTDE's executed id).
+    /// </summary>
     private void OnProgramStopped(RtdeSample sample)
     {
-        int failed;
-        lock (_unacknowledged)
-        {
-            failed = _unacknowledged.FirstOrDefault(id => id > sample.Executed);
-        }
-        if (failed == 0 || Interlocked.Exchange(ref _programFailed, 1) != 0)
+        if (!HasUnacknowledgedAfter(sample.Executed) || Interlocked.Exchange(ref _programFailed, 1) != 0)
         {
             return;
         }
-        _ = ReportFailureAsync(failed, sample);
+        _ = ReportFailureAsync(sample);
     }
 
     /// <summary>
@@ -115,7 +118,7 @@ internal sealed partial class UrDriver : ILinkReceiver
     /// driver program did not fail, it was replaced (a script delivered late, a program started at the pendant), and the
     /// link is lost instead, so that connecting again resumes from the registers.
     /// </summary>
-    private async Task ReportFailureAsync(int id, RtdeSample sample)
+    private async Task ReportFailureAsync(RtdeSample sample)
     {
         string? text = null;
         Task<string> reason = ScriptPortSendsMessages ? _runtimeException.Task : new TaskCompletionSource<string>().Task;
@@ -145,8 +148,7 @@ internal sealed partial class UrDriver : ILinkReceiver
             await done.CancelAsync().ConfigureAwait(false);
         }
         string because = text ?? $"the program stopped (RTDE runtime_state {sample.RuntimeState.ToString(Num.Inv)}, safety status {sample.SafetyName}) without running it";
-        Log.Error($"The UR controller could not run action {id.ToString(Num.Inv)}: {because}");
-        Listener?.OnFailed(id, because, null);
+        Listener?.OnFailedAfter(sample.Executed, because, null);
     }
 
     /// <summary>
@@ -191,38 +193,24 @@ internal sealed partial class UrDriver : ILinkReceiver
         _runtimeException.TrySetResult(text);
     }
 
-    private bool HasUnacknowledged
-    {
-        get
-        {
-            lock (_unacknowledged)
-            {
-                return _unacknowledged.Count > 0;
-            }
-        }
-    }
+    /// <summary>True while an action sent is not acknowledged.</summary>
+    private bool HasUnacknowledged => Volatile.Read(ref _lastSent) > Volatile.Read(ref _lastAcknowledged);
 
-    /// <summary>Keeps the ids sent and not acknowledged, oldest first, to name the one a stopped program did not run.</summary>
-    protected override void Sent(int id)
-    {
-        lock (_unacknowledged)
-        {
-            _unacknowledged.Enqueue(id);
-        }
-    }
+    /// <summary>True when an action sent after the one with wire id <paramref name="executed"/> is not acknowledged.</summary>
+    private bool HasUnacknowledgedAfter(int executed) => Volatile.Read(ref _lastSent) > Math.Max(executed, Volatile.Read(ref _lastAcknowledged));
 
-    /// <summary>An acknowledgement covers its id and every one sent before it.</summary>
+    /// <summary>
+    /// An action the controller acknowledges was sent (on the session's loop, before its bytes leave): only how far the ids got is
+    /// kept, to tell at a close whether anything was in flight; the session keeps the actions themselves.
+    /// </summary>
+    protected override void Sent(int id) => Volatile.Write(ref _lastSent, id);
+
+    /// <summary>An acknowledgement covers its id and every one sent before it (on the receive loop, its one writer).</summary>
     private void Acknowledged(int id)
     {
-        lock (_unacknowledged)
+        if (id > _lastAcknowledged && id <= Volatile.Read(ref _lastSent))
         {
-            if (!_unacknowledged.Contains(id))
-            {
-                return;
-            }
-            while (_unacknowledged.Count > 0 && _unacknowledged.Dequeue() != id)
-            {
-            }
+            Volatile.Write(ref _lastAcknowledged, id);
         }
     }
 }

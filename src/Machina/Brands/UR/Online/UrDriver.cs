@@ -90,7 +90,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
     public int WireId(int actionId) => actionId;
 
     /// <inheritdoc/>
-    /// <remarks>The session keeps what is in flight and maps the ids; this driver keeps the ids it sent only to name the action a stopped program did not run.</remarks>
+    /// <remarks>The session keeps what is in flight and maps the ids; this driver keeps only the last id it sent, to tell at a close whether anything was in flight.</remarks>
     public void Adopt(int actionId) => Sent(actionId);
 
     /// <inheritdoc/>
