@@ -49,6 +49,7 @@ if (options.RtdeRate)
 }
 if (options.Twins is int twins)
 {
+    ExternalToolScenario.NativePath = options.NativeTool;
     return TwinsSideBySideRun.Run(twins, options.Size, options.Brands);
 }
 #endif

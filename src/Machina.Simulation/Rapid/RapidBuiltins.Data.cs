@@ -164,7 +164,11 @@ internal static partial class RapidBuiltins
     {
         RapidTask task = call.Machine.Task;
         RapidTwinController c = task.Controller;
-        if (!task.IsMotionTask || c.Options.RealTime)
+        if (!task.IsMotionTask)
+        {
+            c.Clock.WaitWall(seconds, task.CancellationToken);
+        }
+        else if (c.Options.RealTime)
         {
             c.Clock.WaitAside(seconds, task.CancellationToken);
         }

@@ -20,7 +20,7 @@ internal static partial class RapidBuiltins
             if (!task.IsMotionTask)
             {
                 // A background task (the monitor) waits on the wall clock: its period is real, it adds nothing to program time.
-                WaitServingTraps(task, seconds, s => c.Clock.WaitAside(s, task.CancellationToken));
+                WaitServingTraps(task, seconds, s => c.Clock.WaitWall(s, task.CancellationToken));
                 return;
             }
             c.Arm.FinishBlend(task.CancellationToken); // the arm stops at its last waypoint before the wait counts

@@ -41,6 +41,14 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
     public void WaitAside(double seconds, CancellationToken cancellation) =>
         _sleep.Wait(Time, Span(seconds), cancellation);
 
+    /// <summary>
+    /// Waits <paramref name="seconds"/> of the wall clock, not faster when the twin runs faster than real time, adding nothing to
+    /// the program time: a background task's period (a monitor that reports every 20 ms reports every 20 ms at 1000× too,
+    /// instead of 50,000 times a second).
+    /// </summary>
+    public void WaitWall(double seconds, CancellationToken cancellation) =>
+        _sleep.Wait(Time is VirtualUrScaledTime scaled ? scaled.Inner : Time, Span(seconds), cancellation);
+
     /// <summary>A wait's length, capped at a day (a longer one is no use on a twin and would overflow the timer).</summary>
     private static TimeSpan Span(double seconds) => TimeSpan.FromSeconds(Math.Min(seconds, 86_400));
 
