@@ -20,14 +20,33 @@ internal sealed record Machine(string Cpu, int Cores, string Runtime, string Os,
     }
 
     /// <summary>Minor page faults of this process so far (Linux, from /proc/self/stat), or 0 when unknown.</summary>
-    public static long MinorPageFaults()
+    public static long MinorPageFaults() => StatFields("/proc/self/stat") is { } fields
+        && long.TryParse(fields[7], System.Globalization.NumberStyles.Integer, System.Globalization.CultureInfo.InvariantCulture, out long value) ? value : 0;
+
+    /// <summary>
+    /// The fields of a /proc stat file after the command name (which is in parentheses and may contain spaces): field 10 of
+    /// the file (minflt) is [7], utime and stime are [11] and [12]; null when the file cannot be read (the process is gone).
+    /// </summary>
+    public static string[]? StatFields(string path)
     {
         try
         {
-            string stat = File.ReadAllText("/proc/self/stat");
-            // Fields after the command name (which is in parentheses and may contain spaces); minflt is field 10.
-            string[] fields = stat[(stat.LastIndexOf(')') + 2)..].Split(' ');
-            return long.TryParse(fields[7], System.Globalization.NumberStyles.Integer, System.Globalization.CultureInfo.InvariantCulture, out long value) ? value : 0;
+            string stat = File.ReadAllText(path);
+            return stat[(stat.LastIndexOf(')') + 2)..].Split(' ');
+        }
+        catch (IOException)
+        {
+            return null;
+        }
+    }
+
+    /// <summary>A memory line of a /proc status file (<c>VmRSS:</c>, <c>VmHWM:</c>) in bytes; 0 when the file or the line is missing.</summary>
+    public static long StatusBytes(string path, string key)
+    {
+        try
+        {
+            string? line = File.ReadLines(path).FirstOrDefault(l => l.StartsWith(key, StringComparison.Ordinal));
+            return line is null ? 0 : long.Parse(line[key.Length..].Trim().Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture) * 1024;
         }
         catch (IOException)
         {

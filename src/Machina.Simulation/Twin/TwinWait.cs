@@ -14,7 +14,7 @@ internal static class TwinWait
     {
         if (!task.IsCompleted)
         {
-            Block(task, cancellation);
+            Block(task, Timeout.InfiniteTimeSpan, cancellation);
         }
         task.GetAwaiter().GetResult();
     }
@@ -24,7 +24,7 @@ internal static class TwinWait
     {
         if (!task.IsCompleted)
         {
-            Block(task, cancellation);
+            Block(task, Timeout.InfiniteTimeSpan, cancellation);
         }
         return task.GetAwaiter().GetResult();
     }
@@ -38,9 +38,7 @@ internal static class TwinWait
         cancellation.ThrowIfCancellationRequested();
         if (!task.IsCompleted)
         {
-            var done = new ManualResetEventSlim(false, spinCount: 0);
-            task.ConfigureAwait(false).GetAwaiter().UnsafeOnCompleted(done.Set);
-            done.Wait(timeout, cancellation);
+            Block(task, timeout, cancellation);
         }
         return task.IsCompleted;
     }
@@ -49,10 +47,11 @@ internal static class TwinWait
     public static void Delay(TimeSpan span, TimeProvider time, CancellationToken cancellation) =>
         For(Task.Delay(span, time, cancellation), cancellation);
 
-    private static void Block(Task task, CancellationToken cancellation)
+    /// <summary>Blocks until the task ends or the timeout passes; throws when cancelled first.</summary>
+    private static void Block(Task task, TimeSpan timeout, CancellationToken cancellation)
     {
         var done = new ManualResetEventSlim(false, spinCount: 0);
         task.ConfigureAwait(false).GetAwaiter().UnsafeOnCompleted(done.Set);
-        done.Wait(cancellation);
+        done.Wait(timeout, cancellation);
     }
 }

@@ -68,7 +68,7 @@ internal sealed class UrSocket(Socket socket) : IDisposable
         {
             using var cts = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
             cts.CancelAfter(timeout);
-            socket.ConnectAsync(address, port, cts.Token).AsTask().GetAwaiter().GetResult();
+            Twin.TwinWait.For(socket.ConnectAsync(address, port, cts.Token).AsTask(), cts.Token);
             return new UrSocket(socket);
         }
         catch (Exception e) when (e is SocketException or OperationCanceledException or ArgumentException)

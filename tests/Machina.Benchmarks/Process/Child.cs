@@ -183,21 +183,6 @@ internal static class Child
     }
 
     /// <summary>Peak and current resident memory of this process (VmHWM and VmRSS in /proc/self/status), bytes; 0 when unknown.</summary>
-    private static (long Peak, long Current) Memory()
-    {
-        long Field(string[] lines, string name)
-        {
-            string? line = lines.FirstOrDefault(l => l.StartsWith(name, StringComparison.Ordinal));
-            return line is null ? 0 : long.Parse(line[name.Length..].Trim().Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture) * 1024;
-        }
-        try
-        {
-            string[] lines = File.ReadAllLines("/proc/self/status");
-            return (Field(lines, "VmHWM:"), Field(lines, "VmRSS:"));
-        }
-        catch (IOException)
-        {
-            return (0, 0);
-        }
-    }
+    private static (long Peak, long Current) Memory() =>
+        (Machine.StatusBytes("/proc/self/status", "VmHWM:"), Machine.StatusBytes("/proc/self/status", "VmRSS:"));
 }

@@ -138,34 +138,12 @@ internal static partial class TwinsSideBySideRun
         }
     }
 
-    /// <summary>User + system processor seconds of a process so far (/proc/PID/stat), 0 when it is gone.</summary>
-    private static double ProcessorSeconds(int pid)
-    {
-        try
-        {
-            string stat = File.ReadAllText($"/proc/{pid}/stat");
-            string[] fields = stat[(stat.LastIndexOf(')') + 2)..].Split(' ');
-            long ticks = long.Parse(fields[11], CultureInfo.InvariantCulture) + long.Parse(fields[12], CultureInfo.InvariantCulture);
-            return ticks / 100.0;
-        }
-        catch (IOException)
-        {
-            return 0;
-        }
-    }
+    /// <summary>User + system processor seconds of a process so far (/proc/PID/stat, 100 ticks a second), 0 when it is gone.</summary>
+    private static double ProcessorSeconds(int pid) => Machine.StatFields($"/proc/{pid}/stat") is { } fields
+        ? (long.Parse(fields[11], CultureInfo.InvariantCulture) + long.Parse(fields[12], CultureInfo.InvariantCulture)) / 100.0
+        : 0;
 
     /// <summary>A memory line of /proc/PID/status (VmRSS, VmHWM) in MB, 0 when unknown.</summary>
-    private static double StatusMb(int pid, string key)
-    {
-        try
-        {
-            string? line = File.ReadLines($"/proc/{pid}/status").FirstOrDefault(l => l.StartsWith(key, StringComparison.Ordinal));
-            return line is null ? 0 : long.Parse(line[key.Length..].Trim().Split(' ')[0], CultureInfo.InvariantCulture) / 1024.0;
-        }
-        catch (IOException)
-        {
-            return 0;
-        }
-    }
+    private static double StatusMb(int pid, string key) => Machine.StatusBytes($"/proc/{pid}/status", key) / (1024.0 * 1024);
 }
 #endif
