@@ -46,17 +46,52 @@ public sealed record ActionRotation : RobotAction
     {
         if (Relative)
         {
-            Vector axis = InstructionText.Axis(Request.Axis);
-            return InstructionText.Call("Rotate", axis.X, axis.Y, axis.Z, Request.Angle);
+            Span<char> buffer = stackalloc char[MaxWrittenInstructionChars];
+            return new string(buffer[..TryWriteInstruction(buffer)]);
         }
         Vector x = InstructionText.Axis(Rotation.XAxis), y = InstructionText.Axis(Rotation.YAxis);
         return InstructionText.Call("RotateTo", x.X, x.Y, x.Z, y.X, y.Y, y.Z);
     }
 
     /// <inheritdoc/>
-    public override string Describe() => Relative
-        ? $"Rotate {Num.G(Request.Angle)} deg around {Request.Axis}"
-        : $"Rotate to {Rotation.ToOrientationString()}";
+    public override string Describe()
+    {
+        if (!Relative)
+        {
+            return $"Rotate to {Rotation.ToOrientationString()}";
+        }
+        Span<char> buffer = stackalloc char[MaxWrittenDescriptionChars];
+        return new string(buffer[..TryWriteDescription(buffer)]);
+    }
+
+    /// <summary>A relative rotation's instruction, <c>Rotate(x,y,z,angle);</c> (lossless numbers, the axis without rounding noise).</summary>
+    internal override int TryWriteInstruction(Span<char> destination)
+    {
+        if (!Relative)
+        {
+            return -1;
+        }
+        Vector axis = InstructionText.Axis(Request.Axis);
+        return InstructionText.WriteCall(destination, "Rotate", axis.X, axis.Y, axis.Z, Request.Angle);
+    }
+
+    /// <summary>
+    /// A relative rotation's description, <c>Rotate {angle} deg around [x, y, z]</c> (the angle as <see cref="Num.G"/> writes it,
+    /// the axis with 3 decimals): a program that turns on every other line describes millions of them.
+    /// </summary>
+    internal override int TryWriteDescription(Span<char> destination)
+    {
+        if (!Relative)
+        {
+            return -1;
+        }
+        "Rotate ".CopyTo(destination);
+        int at = 7;
+        at += NumShortest.WriteGeneral(destination[at..], Request.Angle);
+        " deg around ".CopyTo(destination[at..]);
+        at += 12;
+        return at + Request.Axis.WriteText(destination[at..], ", ");
+    }
 
     /// <summary>Equal when both are relative or both absolute and the rotations agree within 1e-9 degrees.</summary>
     public bool Equals(ActionRotation? other) =>

@@ -45,6 +45,12 @@ public sealed record ActionTranslation : RobotAction
     /// <summary>Characters enough for <see cref="WriteDescription"/>.</summary>
     internal const int MaxDescriptionChars = 16 + Vector.MaxTextChars;
 
+    /// <inheritdoc/>
+    internal override int TryWriteDescription(Span<char> destination) => WriteDescription(destination);
+
+    /// <inheritdoc/>
+    internal override int TryWriteInstruction(Span<char> destination) => WriteInstruction(destination);
+
     /// <summary>
     /// Writes the text of <see cref="Describe"/> into <paramref name="destination"/> and returns its length: compilers with human
     /// comments describe every move of a program of millions, and copy it into their line without a string in between.

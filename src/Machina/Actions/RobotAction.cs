@@ -33,6 +33,27 @@ public abstract record RobotAction
     /// <summary>Same as <see cref="Describe"/>.</summary>
     public sealed override string ToString() => Describe();
 
+    /// <summary>Characters enough for <see cref="TryWriteDescription"/>.</summary>
+    internal const int MaxWrittenDescriptionChars = 64 + Vector.MaxTextChars;
+
+    /// <summary>
+    /// Writes the text of <see cref="Describe"/> into <paramref name="destination"/> (at least <see cref="MaxWrittenDescriptionChars"/>
+    /// long) and returns its length, or −1 when this kind of action does not write it so (call <see cref="Describe"/>). Only
+    /// descriptions of digits and fixed words are written so: they are safe in every language's comment as they are, and a
+    /// compile of millions of moves and turns describes each one without a string in between.
+    /// </summary>
+    internal virtual int TryWriteDescription(Span<char> destination) => -1;
+
+    /// <summary>Characters enough for <see cref="TryWriteInstruction"/>.</summary>
+    internal const int MaxWrittenInstructionChars = 16 + 6 * (NumAppend.MaxChars + 1);
+
+    /// <summary>
+    /// Writes the text of <see cref="ToInstruction"/> into <paramref name="destination"/> (at least
+    /// <see cref="MaxWrittenInstructionChars"/> long) and returns its length, or −1 when this kind of action does not write it so
+    /// (call <see cref="ToInstruction"/>). Like <see cref="TryWriteDescription"/>, only for digits and fixed words.
+    /// </summary>
+    internal virtual int TryWriteInstruction(Span<char> destination) => -1;
+
     /// <summary>Compares what two actions say, ignoring their ids.</summary>
     public virtual bool Equals(RobotAction? other) => other is not null && EqualityContract == other.EqualityContract;
 

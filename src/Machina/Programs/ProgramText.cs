@@ -46,16 +46,18 @@ internal static class ProgramText
 
     /// <summary>
     /// Appends the action's description (<see cref="RobotAction.Describe"/>) safe inside a one-line comment: as
-    /// <see cref="CommentText"/>, or as <see cref="OneLine"/> with <paramref name="oneLine"/>. A move's description (digits and
-    /// fixed words only) is written straight into the line, without a string in between.
+    /// <see cref="CommentText"/>, or as <see cref="OneLine"/> with <paramref name="oneLine"/>. A move's or a turn's description
+    /// (digits and fixed words only, <see cref="RobotAction.TryWriteDescription"/>) is written straight into the line, without a
+    /// string in between.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static System.Text.StringBuilder AppendDescription(this System.Text.StringBuilder sb, RobotAction action, bool oneLine = false)
     {
-        if (action is ActionTranslation translation)
+        Span<char> buffer = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
+        int written = action.TryWriteDescription(buffer);
+        if (written >= 0)
         {
-            Span<char> buffer = stackalloc char[ActionTranslation.MaxDescriptionChars];
-            return sb.Append(buffer[..translation.WriteDescription(buffer)]);
+            return sb.Append(buffer[..written]);
         }
         string text = action.Describe();
         return sb.Append(oneLine ? OneLine(text) : CommentText(text));

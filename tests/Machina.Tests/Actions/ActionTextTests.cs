@@ -115,4 +115,34 @@ public class ActionTextTests
         Assert.False(named.IsDigit);
         Assert.Equal(-1, named.PinNumber);
     }
+
+    [Theory]
+    [InlineData(0.00001, 0, 0, 1, "Rotate 1E-05 deg around [0, 0, 1]", "Rotate(0,0,1,1E-05);")]
+    [InlineData(-0.954, 0, 0, 1, "Rotate -0.954 deg around [0, 0, 1]", "Rotate(0,0,1,-0.954);")]
+    [InlineData(1e20, 1, 1, 0, "Rotate 1E+20 deg around [0.707, 0.707, 0]", "Rotate(0.7071067811865475,0.7071067811865475,0,1E+20);")]
+    [InlineData(1.0 / 3, 0, -2, 0, "Rotate 0.333333333333333 deg around [0, -1, 0]", "Rotate(0,-1,0,0.3333333333333333);")]
+    [InlineData(-0.0, 3, 4, 0, "Rotate 0 deg around [0.6, 0.8, 0]", "Rotate(0.6,0.8,0,0);")]
+    public void Describe_RelativeRotation_WrittenWithoutAStringAsTheGeneralFormatWrites(double angle, double x, double y, double z,
+                                                                                         string description, string instruction)
+    {
+        var action = new ActionRotation(new Vector(x, y, z), angle, true);
+        Span<char> buffer = stackalloc char[RobotAction.MaxWrittenInstructionChars + RobotAction.MaxWrittenDescriptionChars];
+
+        Assert.Equal(description, action.Describe());
+        Assert.Equal(description, new string(buffer[..action.TryWriteDescription(buffer)]));
+        Assert.Equal($"Rotate {Num.G(angle)} deg around {action.Request.Axis}", description);
+        Assert.Equal(instruction, action.ToInstruction());
+        Assert.Equal(instruction, new string(buffer[..action.TryWriteInstruction(buffer)]));
+    }
+
+    [Fact]
+    public void TryWriteDescription_AbsoluteRotationOrOtherActions_LeavesItToDescribe()
+    {
+        Span<char> buffer = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
+
+        Assert.Equal(-1, new ActionRotation(Rotation.FlippedAroundY, false).TryWriteDescription(buffer));
+        Assert.Equal(-1, new ActionRotation(Rotation.FlippedAroundY, false).TryWriteInstruction(buffer));
+        Assert.Equal(-1, new ActionWait(5).TryWriteDescription(buffer));
+        Assert.Equal("Move [1, 2, 3] mm", new string(buffer[..new ActionTranslation(new Vector(1, 2, 3), true).TryWriteDescription(buffer)]));
+    }
 }

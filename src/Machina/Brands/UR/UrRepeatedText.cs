@@ -11,8 +11,9 @@ namespace Machina;
 internal sealed class UrRepeatedText
 {
     private readonly StringBuilder _builder = new(64);
-    private char[] _orientation = [];
-    private char[] _parameters = [];
+    private char[] _orientation = new char[64];
+    private char[] _parameters = new char[64];
+    private int _orientationLength, _parametersLength;
     private bool _orientationKnown;
     private long _w, _x, _y, _z;
     private bool _parametersKnown;
@@ -29,10 +30,10 @@ internal sealed class UrRepeatedText
         long w = Bits(rotation.W), x = Bits(rotation.X), y = Bits(rotation.Y), z = Bits(rotation.Z);
         if (!_orientationKnown || w != _w || x != _x || y != _y || z != _z)
         {
-            _orientation = Keep(_builder.Clear().PoseOrientation(rotation));
+            _orientationLength = Keep(_builder.Clear().PoseOrientation(rotation), ref _orientation);
             (_orientationKnown, _w, _x, _y, _z) = (true, w, x, y, z);
         }
-        return _orientation;
+        return _orientation.AsSpan(0, _orientationLength);
     }
 
     /// <summary>Appends <c>, a=…, v=…, r=…)</c>; the same text as <see cref="UrScriptText.MotionParameters"/>.</summary>
@@ -45,17 +46,21 @@ internal sealed class UrRepeatedText
         long a = Bits(acceleration), v = Bits(speed), r = Bits(precision);
         if (!_parametersKnown || a != _acceleration || v != _speed || r != _precision || joint != _joint)
         {
-            _parameters = Keep(_builder.Clear().MotionParameters(acceleration, speed, precision, joint));
+            _parametersLength = Keep(_builder.Clear().MotionParameters(acceleration, speed, precision, joint), ref _parameters);
             (_parametersKnown, _acceleration, _speed, _precision, _joint) = (true, a, v, r, joint);
         }
-        return _parameters;
+        return _parameters.AsSpan(0, _parametersLength);
     }
 
-    private static char[] Keep(StringBuilder text)
+    /// <summary>Copies the text into <paramref name="kept"/> (grown when too short: a path that turns on every move reuses it); returns its length.</summary>
+    private static int Keep(StringBuilder text, ref char[] kept)
     {
-        var kept = new char[text.Length];
-        text.CopyTo(0, kept, kept.Length);
-        return kept;
+        if (kept.Length < text.Length)
+        {
+            kept = new char[text.Length * 2];
+        }
+        text.CopyTo(0, kept, text.Length);
+        return text.Length;
     }
 
     private static long Bits(double value) => BitConverter.DoubleToInt64Bits(value);

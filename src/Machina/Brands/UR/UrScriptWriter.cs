@@ -82,8 +82,7 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
         {
             case ActionTranslation or ActionRotation or ActionTransformation:
                 bool joint = cursor.MotionType == MotionType.Joint;
-                if (_inline && action is ActionTranslation move
-                    && (_moveLine ??= new UrMoveLine(_repeated, _digits)).TryWrite(sink, move, cursor, joint, _human))
+                if (_inline && (_moveLine ??= new UrMoveLine(_repeated, _digits)).TryWrite(sink, action, cursor, joint, _human))
                 {
                     break;
                 }
@@ -232,8 +231,10 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
     private void WarnBlend(RobotAction action, double radius, double length, string which)
     {
         var translation = action as ActionTranslation;
-        string? instruction = translation is null ? UrScriptText.CommentText(action.ToInstruction()) : null;
-        int most = BlendWarningChars + (instruction?.Length ?? ActionTranslation.MaxInstructionChars);
+        Span<char> own = stackalloc char[RobotAction.MaxWrittenInstructionChars];
+        int ownLength = translation is null ? action.TryWriteInstruction(own) : 0;
+        string? instruction = ownLength < 0 ? UrScriptText.CommentText(action.ToInstruction()) : null;
+        int most = BlendWarningChars + Math.Max(instruction?.Length ?? 0, Math.Max(ownLength, ActionTranslation.MaxInstructionChars));
         if (_warning.Length < most)
         {
             _warning = new char[most];
@@ -241,7 +242,16 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
         Span<char> line = _warning;
         int at = Put(line, 0, WarningStart);
         // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
-        at = translation is null ? Put(line, at, instruction!) : at + _digits.WriteInstruction(translation, line[at..]);
+        if (translation is not null)
+        {
+            at += _digits.WriteInstruction(translation, line[at..]);
+        }
+        else
+        {
+            ReadOnlySpan<char> text = instruction is null ? own[..ownLength] : instruction;
+            text.CopyTo(line[at..]);
+            at += text.Length;
+        }
         line[at++] = ' ';
         int start = at;
         at = Put(line, at, "the blend radius of ");

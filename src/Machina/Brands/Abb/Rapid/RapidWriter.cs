@@ -199,8 +199,8 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private bool WriteInlineMove(string start, RobotAction action, RobotCursor cursor)
     {
-        StringBuilder tail = _moveLine.Targets.Tail(cursor.Rotation!.Value, cursor.ExternalAxesCartesian, cursor.ArmAngle, RapidText.Conf(job.Model, cursor));
-        return _moveLine.TryWrite(sink, start, cursor.Position!.Value, tail, plan.SpeedName(cursor.Speed), plan.ZoneName(cursor.Precision),
+        return _moveLine.TryWrite(sink, start, cursor.Position!.Value, cursor.Rotation!.Value, cursor.ExternalAxesCartesian, cursor.ArmAngle,
+                                  RapidText.Conf(job.Model, cursor), plan.SpeedName(cursor.Speed), plan.ZoneName(cursor.Precision),
                                   plan.ToolName(cursor.Tool), action, _human);
     }
 
