@@ -262,7 +262,7 @@ public sealed partial class VirtualUrController
         private VirtualUrClientState? _state;
 
         /// <summary>Controller time, seconds.</summary>
-        public double Time => _time ??= controller.Clock.GetElapsedTime(0).TotalSeconds;
+        public double Time => _time ??= controller.Uptime.TotalSeconds;
 
         /// <summary>The controller's state this tick.</summary>
         public VirtualUrClientState State => _state ??= controller.ClientState();

@@ -19,8 +19,10 @@ public class UrSimWatchdogTests
     [InlineData("stop", "program stopped")]
     [InlineData("pause", "program paused")]
     [InlineData("ignore", "ignored")]
-    public async Task Watchdog_InputUpdatedInTime_RunsOn_ThenMissedUpdate_TakesTheAction(string action, string done)
+    [InlineData("PAUSE", "program paused")] // in any case: UR's RTDE Python client's example program (rtde_control_loop.urp) asks so
+    public async Task Watchdog_InputUpdatedInTime_RunsOn_ThenMissedUpdate_TakesTheAction(string asked, string done)
     {
+        string action = asked.ToLowerInvariant();
         var clock = new ManualClock();
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { TimeProvider = clock });
         await controller.StartAsync();
@@ -31,7 +33,7 @@ public class UrSimWatchdogTests
         Assert.True(await client.StartAsync());
         using var script = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
         await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
-            $"def wd():\n  rtde_set_watchdog(\"input_int_register_0\", 10, \"{action}\")\n  write_output_integer_register(1, 1)\n" +
+            $"def wd():\n  rtde_set_watchdog(\"input_int_register_0\", 10, \"{asked}\")\n  write_output_integer_register(1, 1)\n" +
             "  while True:\n    sleep(1)\n  end\nend\n"));
         await OnlineWait.UntilAsync(() => controller.Twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 1) == 1, "the watchdog to be set");
         Assert.Equal([("input_int_register_0", 10.0, action)], controller.Twin.Watchdog.Armed);
