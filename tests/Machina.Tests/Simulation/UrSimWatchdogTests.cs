@@ -72,6 +72,29 @@ public class UrSimWatchdogTests
     }
 
     [Fact]
+    public async Task Watchdog_PausedProgram_IsEndedByTheNextScript_WhichRuns()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var client = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await client.NegotiateAsync());
+        await client.SetupInputsAsync("input_int_register_0");
+        Assert.True(await client.StartAsync());
+        using var script = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
+            "def wd():\n  rtde_set_watchdog(\"input_int_register_0\", 10, \"pause\")\n  while True:\n    sleep(1)\n  end\nend\n"));
+        await OnlineWait.UntilAsync(() => controller.PendantMessages.Contains(WatchdogMessage + "program paused"), "the watchdog to pause the program");
+        Assert.True(controller.Twin.IsHeld);
+
+        // As python-urx goes on after UR's RTDE example left the program paused: its next command is a program of its own.
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
+            "def next():\n  movej([0.3, -1.4, 1.4, -1.5, -1.57, 0.2], a=1, v=0.5)\n  write_output_integer_register(2, 7)\nend\n"));
+        await OnlineWait.UntilAsync(() => controller.Twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 2) == 7, "the next program to run");
+        Assert.False(controller.Twin.IsHeld);
+        Assert.Equal(new[] { 0.3, -1.4, 1.4, -1.5, -1.57, 0.2 }, controller.Twin.JointsNow().ToArray().Select(d => Math.Round(d * Math.PI / 180, 6)));
+    }
+
+    [Fact]
     public async Task Popup_Blocking_SuspendsTheProgramUntilTheDashboardClosesIt()
     {
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
