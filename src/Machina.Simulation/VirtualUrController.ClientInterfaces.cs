@@ -204,7 +204,7 @@ public sealed partial class VirtualUrController
     }
 
     /// <summary>Milliseconds since the controller started, as robot messages stamp them.</summary>
-    private ulong Timestamp => (ulong)Clock.GetElapsedTime(0).TotalMilliseconds;
+    private ulong Timestamp => (ulong)Uptime.TotalMilliseconds;
 
     /// <summary>What the client interfaces report now: the twin's arm, program, I/O and the controller's modes.</summary>
     private VirtualUrClientState ClientState()
@@ -218,7 +218,7 @@ public sealed partial class VirtualUrController
         bool running = twin.State == UrProgramState.Running;
         return new VirtualUrClientState
         {
-            Time = Clock.GetElapsedTime(0).TotalSeconds,
+            Time = Uptime.TotalSeconds,
             Q = [.. joints.ToArray().Select(d => d * Math.PI / 180)],
             Qd = [.. twin.JointSpeedsNow().ToArray().Select(d => d * Math.PI / 180)],
             TcpSpeed = twin.TcpSpeedNow(),

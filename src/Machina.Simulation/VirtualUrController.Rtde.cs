@@ -40,7 +40,8 @@ public sealed partial class VirtualUrController
         ushort protocol = 1;
         try
         {
-            while (reader.Read() is byte type)
+            // Each package acknowledged as it is read: ur_rtde writes two input packages back to back with Nagle's algorithm on.
+            while (ReadAcknowledged(client.Client, reader) is byte type)
             {
                 if (!Answer(type, reader.Payload, subscriber, reply, ref protocol))
                 {
@@ -74,6 +75,12 @@ public sealed partial class VirtualUrController
             Unsubscribe(subscriber);
             ReleaseInputs(subscriber);
         }
+    }
+
+    private static byte? ReadAcknowledged(Socket socket, VirtualUrRtdeReader reader)
+    {
+        PromptAcknowledgement.BeforeRead(socket);
+        return reader.Read();
     }
 
     /// <summary>Stops sending data to a client (a pause, or it left).</summary>
@@ -255,7 +262,7 @@ public sealed partial class VirtualUrController
         private VirtualUrClientState? _state;
 
         /// <summary>Controller time, seconds.</summary>
-        public double Time => _time ??= controller.Clock.GetElapsedTime(0).TotalSeconds;
+        public double Time => _time ??= controller.Uptime.TotalSeconds;
 
         /// <summary>The controller's state this tick.</summary>
         public VirtualUrClientState State => _state ??= controller.ClientState();

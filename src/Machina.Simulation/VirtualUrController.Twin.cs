@@ -25,6 +25,7 @@ public sealed partial class VirtualUrController
             RealTime = !_options.InstantExecution,
             Route = _options.OutboundRoute,
             StartRefusal = StartRefusal,
+            HeldBySafety = () => SafetyStatus != Normal,
         });
         twin.ProgramReceived += program =>
         {

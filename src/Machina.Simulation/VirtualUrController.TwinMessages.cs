@@ -34,7 +34,7 @@ public sealed partial class VirtualUrController
     /// <summary>Sends a runtime error of the interpreter's program to every connection on the script ports, before its sockets close.</summary>
     private void SendTwinRuntimeError(int line, string reason)
     {
-        byte[] bytes = RuntimeExceptionMessage((ulong)Clock.GetElapsedTime(0).TotalMilliseconds, line, 0, reason);
+        byte[] bytes = RuntimeExceptionMessage((ulong)Uptime.TotalMilliseconds, line, 0, reason);
         NetworkStream[] streams;
         lock (Gate)
         {

@@ -15,6 +15,9 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
     private const int MaxPortAttempts = 50;
 
     private readonly VirtualUrControllerOptions _options;
+
+    /// <summary>When the controller was made, on the controller's clock: its interfaces' timestamps count from it.</summary>
+    private readonly long _bootTimestamp;
     private readonly List<TcpListener> _scriptListeners = [];
     private TcpListener? _rtdeListener;
     private TcpListener? _dashboardListener;
@@ -35,10 +38,14 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         })
     {
         _options = options;
+        _bootTimestamp = Clock.GetTimestamp();
         _robotMode = options.StartsPoweredOff ? PowerOffMode : RunningMode;
         Twin = CreateTwin();
         _rtdeWait = new VirtualUrDeadlineWait(Clock);
     }
+
+    /// <summary>Time since the controller started, as UR's interfaces stamp their packages (RTDE's <c>timestamp</c>, the client interfaces' time and messages).</summary>
+    internal TimeSpan Uptime => Clock.GetElapsedTime(_bootTimestamp);
 
     /// <summary>The port that takes driver scripts (what a host gives to Connect); 0 until started.</summary>
     public int Port { get; private set; }

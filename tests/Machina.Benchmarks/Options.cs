@@ -31,7 +31,10 @@ internal sealed record Options
                             actions run twice and not sent again (docs/reliability.md, "Controller restarts"); --resend
                             runs it with ResendAfterControllerRestart; --brand abb|ur|kuka picks brands (default all three)
           --rtde-rate       the virtual UR's RTDE output rate instead (issue 45): a client of our own at 125 and 500 Hz, alone and
-                            beside a stream of --size moves (default 10^5); asked, delivered, p50/p99 period error, load
+                            beside a stream of --size moves (default 10^5); asked, delivered, p50/p99 period error, load.
+                            With --process: the twin in its own process (`machina sim ur`, the native one with --native PATH,
+                            else the JIT tool beside the benchmarks), the stream's host in a child, the reader here;
+                            --child-env K=V goes to the twin and the host
           --twins N         N native twins side by side instead (issue 45): `machina sim` processes (--native), each serving
                             its own host in this process --size moves (default 10^4); ready time, memory, each host's rate;
                             --brand abb|ur|kuka picks brands (default all three)

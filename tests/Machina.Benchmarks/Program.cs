@@ -45,7 +45,11 @@ if (options.Restarts is int restartTrials)
 }
 if (options.RtdeRate)
 {
-    return RtdeRateRun.Run(options.Size);
+    foreach ((string key, string value) in options.ChildEnvironment)
+    {
+        ChildProcess.Environment[key] = value;
+    }
+    return options.Process ? RtdeRateApartRun.Run(options.Size, options.NativeTool) : RtdeRateRun.Run(options.Size);
 }
 if (options.Twins is int twins)
 {

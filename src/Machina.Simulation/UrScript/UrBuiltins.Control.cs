@@ -72,14 +72,15 @@ internal static partial class UrBuiltins
         {
             string variable = Str(a, 0, line, "rtde_set_watchdog", "variable_name");
             double frequency = Num(a, 1, line, "rtde_set_watchdog", "min_frequency");
-            string action = Str(a, 2, line, "rtde_set_watchdog", "action");
+            string asked = Str(a, 2, line, "rtde_set_watchdog", "action");
+            string action = asked.ToLowerInvariant(); // in any case: UR's own RTDE example program asks for "PAUSE"
             if (!(frequency >= 0) || !double.IsFinite(frequency))
             {
                 throw new UrRuntimeException(line, "rtde_set_watchdog: argument 'min_frequency' must be zero or positive");
             }
             if (action is not ("ignore" or "pause" or "stop"))
             {
-                throw new UrRuntimeException(line, $"rtde_set_watchdog: argument 'action' must be \"ignore\", \"pause\" or \"stop\", not \"{action}\"");
+                throw new UrRuntimeException(line, $"rtde_set_watchdog: argument 'action' must be \"ignore\", \"pause\" or \"stop\", not \"{asked}\"");
             }
             m.Controller.Watchdog.Set(variable, frequency, action);
             return UrNone.Value;

@@ -211,6 +211,10 @@ internal sealed partial class UrTwinController : IDisposable
             return false;
         }
         StopProgram();
+        if (Options.HeldBySafety?.Invoke() != true)
+        {
+            Release(); // the paused program is gone: the new one is not paused
+        }
         Modes.Reset();
         var stop = new CancellationTokenSource();
         string header = text.TrimStart();

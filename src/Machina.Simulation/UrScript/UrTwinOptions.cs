@@ -46,6 +46,13 @@ internal sealed class UrTwinOptions
     /// </summary>
     public Func<string?>? StartRefusal { get; init; }
 
+    /// <summary>
+    /// True while a safety stop holds the program (the virtual UR's protective or emergency stop): a new program that starts
+    /// does not end that hold. Any other hold (a pause: the dashboard's, an RTDE watchdog's) ends with the program it held, and
+    /// the new program runs, as a script sent to a paused UR does. Null: every hold is a pause.
+    /// </summary>
+    public Func<bool>? HeldBySafety { get; init; }
+
     /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, strings, threads, program size).</summary>
     public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

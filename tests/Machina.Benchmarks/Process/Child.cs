@@ -32,7 +32,7 @@ internal static class Child
                     Compile(a["file"], Enum.Parse<RobotType>(a["brand"]), a["folder"], a.GetValueOrDefault("path", "stream"), extra);
                     break;
                 case "stream":
-                    Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), extra);
+                    Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), a.GetValueOrDefault("brand", "ABB"), extra);
                     break;
                 case "issue-text":
                     IssueText(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
@@ -153,10 +153,13 @@ internal static class Child
         extra["characters"] = characters;
     }
 
-    /// <summary>HelloRobot online: connect, set a speed, move to a start point and stream <paramref name="count"/> relative moves, wait until all are executed.</summary>
-    private static void Stream(int port, int count, string window, Dictionary<string, object?> extra)
+    /// <summary>
+    /// HelloRobot online: connect, set a speed, move to a start point and stream <paramref name="count"/> relative moves, wait
+    /// until all are executed. ABB by default; <c>brand=UR</c> starts where the UR stream of <c>--rtde-rate</c> starts.
+    /// </summary>
+    private static void Stream(int port, int count, string window, string brand, Dictionary<string, object?> extra)
     {
-        var bot = Robot.Create("HelloRobot", "ABB");
+        var bot = Robot.Create("HelloRobot", brand);
         bot.ControlMode("online");
         if (window == "1")
         {
@@ -167,7 +170,14 @@ internal static class Child
         bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
         long first = Stopwatch.GetTimestamp();
         bot.SpeedTo(1000);
-        bot.MoveTo(300, 0, 500);
+        if (brand.Equals("UR", StringComparison.OrdinalIgnoreCase))
+        {
+            bot.MoveTo(300, -300, 400);
+        }
+        else
+        {
+            bot.MoveTo(300, 0, 500);
+        }
         Vector[] steps = [new(10, 0, 0), new(0, 10, 0), new(-10, 0, 0), new(0, -10, 0)];
         for (int i = 2; i < count; i++)
         {

@@ -43,7 +43,7 @@ internal static partial class TwinsSideBySideRun
 
     private sealed record Row(double ReadyP50, double ReadyMax, double MemoryP50, double MemoryMax, double PeakMax, double RateMin, double RateP50, double CpuPerAction);
 
-    private sealed record Twin(Process Process, int Port, double ReadyMs, double ResidentMb);
+    internal sealed record Twin(Process Process, int Port, double ReadyMs, double ResidentMb);
 
     [GeneratedRegex(@"listening on 127\.0\.0\.1:(\d+)")]
     private static partial Regex Listening();
@@ -72,28 +72,21 @@ internal static partial class TwinsSideBySideRun
         }
         finally
         {
-            foreach (Twin twin in twins)
-            {
-                try
-                {
-                    twin.Process.Kill(entireProcessTree: true);
-                    twin.Process.WaitForExit(5000);
-                }
-                catch (InvalidOperationException)
-                {
-                    // Already gone.
-                }
-                twin.Process.Dispose();
-            }
+            twins.ForEach(Stop);
         }
     }
 
-    private static Twin Start(string native, string brand)
+    /// <summary>Starts <c>machina sim BRAND --port 0 --quiet --speed-factor 1000</c> (with --child-env's variables) and waits until it says where it listens.</summary>
+    internal static Twin Start(string native, string brand)
     {
         var info = new ProcessStartInfo(native) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
         foreach (string argument in (string[])["sim", brand, "--port", "0", "--quiet", "--speed-factor", "1000"])
         {
             info.ArgumentList.Add(argument);
+        }
+        foreach ((string key, string value) in ChildProcess.Environment)
+        {
+            info.Environment[key] = value;
         }
         long start = Stopwatch.GetTimestamp();
         var process = Process.Start(info) ?? throw new InvalidOperationException($"{native} did not start.");
@@ -110,6 +103,21 @@ internal static partial class TwinsSideBySideRun
         // The rest of its output is drained so that it never blocks on a full pipe.
         _ = process.StandardOutput.BaseStream.CopyToAsync(Stream.Null);
         return new Twin(process, int.Parse(match.Groups[1].Value, CultureInfo.InvariantCulture), readyMs, StatusMb(process.Id, "VmRSS:"));
+    }
+
+    /// <summary>Ends a twin's process (and waits a little for it), whether it is still running or not.</summary>
+    internal static void Stop(Twin twin)
+    {
+        try
+        {
+            twin.Process.Kill(entireProcessTree: true);
+            twin.Process.WaitForExit(5000);
+        }
+        catch (InvalidOperationException)
+        {
+            // Already gone.
+        }
+        twin.Process.Dispose();
     }
 
     /// <summary>One host: connect, SpeedTo(200), <paramref name="moves"/> moves of ±1 mm, wait; returns its actions per second from the first move.</summary>
@@ -139,7 +147,7 @@ internal static partial class TwinsSideBySideRun
     }
 
     /// <summary>User + system processor seconds of a process so far (/proc/PID/stat, 100 ticks a second), 0 when it is gone.</summary>
-    private static double ProcessorSeconds(int pid) => Machine.StatFields($"/proc/{pid}/stat") is { } fields
+    internal static double ProcessorSeconds(int pid) => Machine.StatFields($"/proc/{pid}/stat") is { } fields
         ? (long.Parse(fields[11], CultureInfo.InvariantCulture) + long.Parse(fields[12], CultureInfo.InvariantCulture)) / 100.0
         : 0;
 

@@ -23,7 +23,7 @@ internal static class RtdeRateRun
     public const double Seconds = 5;
 
     /// <summary>The targets at 500 Hz.</summary>
-    private const double MinDelivered500 = 495, MaxP99Error = 1.0;
+    internal const double MinDelivered500 = 495, MaxP99Error = 1.0;
 
     public static int Run(int? streamSize)
     {
@@ -39,7 +39,7 @@ internal static class RtdeRateRun
             foreach (bool stream in new[] { false, true })
             {
                 Row row = Measure(asked, stream ? actions : 0);
-                string target = asked == 500 ? (row.Delivered >= MinDelivered500 && row.P99 <= MaxP99Error ? "met" : "missed") : "";
+                string target = row.Target(asked);
                 met &= target != "missed";
                 Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
                     $"| {asked:0} | {(stream ? $"{actions:N0} moves" : "nothing")} | {row.Delivered:0.0} | {row.P50:0.000} | {row.P99:0.000} | {row.Max:0.000} | {row.Packages} | {row.Collections} ({row.GcPause.TotalMilliseconds:0.0}) | {Machine.LoadAverage()} | {target} |"));
@@ -50,13 +50,16 @@ internal static class RtdeRateRun
         return 0;
     }
 
-    private sealed record Row(double Delivered, double P50, double P99, double Max, int Packages)
+    internal sealed record Row(double Delivered, double P50, double P99, double Max, int Packages)
     {
-        /// <summary>Garbage collections of any generation during the run.</summary>
+        /// <summary>Garbage collections of any generation during the run (of this process).</summary>
         public int Collections { get; init; }
 
         /// <summary>How long those collections paused the process.</summary>
         public TimeSpan GcPause { get; init; }
+
+        /// <summary>Whether a 500 Hz row meets the target; empty for other rates.</summary>
+        public string Target(double asked) => asked == 500 ? (Delivered >= MinDelivered500 && P99 <= MaxP99Error ? "met" : "missed") : "";
     }
 
     private static Row Measure(double frequency, int streamActions)
@@ -65,42 +68,51 @@ internal static class RtdeRateRun
         controller.StartAsync().GetAwaiter().GetResult();
         try
         {
-            using var client = new TcpClient { NoDelay = true };
-            client.Connect("127.0.0.1", controller.RtdePort);
-            NetworkStream net = client.GetStream();
-            net.ReadTimeout = 5000;
-            Request(net, 86, [0, 2]);
-            var setup = new byte[8];
-            BinaryPrimitives.WriteDoubleBigEndian(setup, frequency);
-            byte[] answer = Request(net, 79, [.. setup, .. Encoding.ASCII.GetBytes("timestamp")]);
-            if (answer[0] == 0)
-            {
-                throw new InvalidOperationException($"The twin refused {frequency} Hz: {Encoding.ASCII.GetString(answer, 1, answer.Length - 1)}");
-            }
-            var arrivals = new List<long>(100_000);
-            int collections = GC.CollectionCount(0);
-            TimeSpan paused = GC.GetTotalPauseDuration();
-            using var done = new CancellationTokenSource();
-            var reader = new Thread(() => Read(net, arrivals, done.Token)) { IsBackground = true, Name = "RTDE rate client" };
-            Request(net, 83, []);
-            reader.Start();
-            if (streamActions > 0)
-            {
-                Stream(controller.Port, streamActions);
-            }
-            else
-            {
-                Thread.Sleep(TimeSpan.FromSeconds(Seconds));
-            }
-            done.Cancel();
-            client.Close();
-            reader.Join(TimeSpan.FromSeconds(10));
-            return Summarize(arrivals, frequency) with { Collections = GC.CollectionCount(0) - collections, GcPause = GC.GetTotalPauseDuration() - paused };
+            return Measure(controller.RtdePort, frequency, streamActions > 0 ? () => Stream(controller.Port, streamActions) : null);
         }
         finally
         {
             controller.DisposeAsync().AsTask().GetAwaiter().GetResult();
         }
+    }
+
+    /// <summary>
+    /// One client of our own on <paramref name="rtdePort"/> asks <c>timestamp</c> at <paramref name="frequency"/> and records each
+    /// package's arrival on a thread of its own while <paramref name="beside"/> runs (or for <see cref="Seconds"/> s without one).
+    /// </summary>
+    internal static Row Measure(int rtdePort, double frequency, Action? beside)
+    {
+        using var client = new TcpClient { NoDelay = true };
+        client.Connect("127.0.0.1", rtdePort);
+        NetworkStream net = client.GetStream();
+        net.ReadTimeout = 5000;
+        Request(net, 86, [0, 2]);
+        var setup = new byte[8];
+        BinaryPrimitives.WriteDoubleBigEndian(setup, frequency);
+        byte[] answer = Request(net, 79, [.. setup, .. Encoding.ASCII.GetBytes("timestamp")]);
+        if (answer[0] == 0)
+        {
+            throw new InvalidOperationException($"The twin refused {frequency} Hz: {Encoding.ASCII.GetString(answer, 1, answer.Length - 1)}");
+        }
+        var arrivals = new List<long>(100_000);
+        int collections = GC.CollectionCount(0);
+        TimeSpan paused = GC.GetTotalPauseDuration();
+        using var done = new CancellationTokenSource();
+        var reader = new Thread(() => Read(net, arrivals, done.Token)) { IsBackground = true, Name = "RTDE rate client" };
+        Request(net, 83, []);
+        reader.Start();
+        if (beside is not null)
+        {
+            beside();
+        }
+        else
+        {
+            Thread.Sleep(TimeSpan.FromSeconds(Seconds));
+        }
+        done.Cancel();
+        client.Close();
+        reader.Join(TimeSpan.FromSeconds(10));
+        return Summarize(arrivals, frequency) with { Collections = GC.CollectionCount(0) - collections, GcPause = GC.GetTotalPauseDuration() - paused };
     }
 
     /// <summary>Streams moves as <c>StreamScenario</c> does (default window) and waits until the last is acknowledged.</summary>

@@ -1,4 +1,5 @@
 using System.Buffers.Binary;
+using System.Diagnostics;
 using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation;
@@ -38,6 +39,19 @@ public class UrSimRtdeTests
         Assert.Equal(new double[6], (double[])data["tcp_offset"]);
         Assert.Equal((0.0, 4.5), ((double)data["standard_analog_input0"], (double)data["standard_analog_input1"]));
         Assert.Equal(1.0, (double)data["speed_scaling"]);
+    }
+
+    [Fact]
+    public async Task Outputs_Timestamp_CountsFromTheControllersStart()
+    {
+        long made = Stopwatch.GetTimestamp();
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var client = await StartedAsync(controller, 125, "timestamp");
+
+        // "Time elapsed since the controller was started" (UR's record.py writes it in its first column), not the computer's.
+        double timestamp = (double)(await client.ReadDataAsync())["timestamp"];
+        Assert.InRange(timestamp, 0, Stopwatch.GetElapsedTime(made).TotalSeconds);
     }
 
     [Fact]

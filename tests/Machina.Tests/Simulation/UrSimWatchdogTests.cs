@@ -19,8 +19,10 @@ public class UrSimWatchdogTests
     [InlineData("stop", "program stopped")]
     [InlineData("pause", "program paused")]
     [InlineData("ignore", "ignored")]
-    public async Task Watchdog_InputUpdatedInTime_RunsOn_ThenMissedUpdate_TakesTheAction(string action, string done)
+    [InlineData("PAUSE", "program paused")] // in any case: UR's RTDE Python client's example program (rtde_control_loop.urp) asks so
+    public async Task Watchdog_InputUpdatedInTime_RunsOn_ThenMissedUpdate_TakesTheAction(string asked, string done)
     {
+        string action = asked.ToLowerInvariant();
         var clock = new ManualClock();
         await using var controller = new VirtualUrController(new VirtualUrControllerOptions { TimeProvider = clock });
         await controller.StartAsync();
@@ -31,7 +33,7 @@ public class UrSimWatchdogTests
         Assert.True(await client.StartAsync());
         using var script = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
         await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
-            $"def wd():\n  rtde_set_watchdog(\"input_int_register_0\", 10, \"{action}\")\n  write_output_integer_register(1, 1)\n" +
+            $"def wd():\n  rtde_set_watchdog(\"input_int_register_0\", 10, \"{asked}\")\n  write_output_integer_register(1, 1)\n" +
             "  while True:\n    sleep(1)\n  end\nend\n"));
         await OnlineWait.UntilAsync(() => controller.Twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 1) == 1, "the watchdog to be set");
         Assert.Equal([("input_int_register_0", 10.0, action)], controller.Twin.Watchdog.Armed);
@@ -67,6 +69,29 @@ public class UrSimWatchdogTests
                 break;
         }
         Assert.Single(controller.PendantMessages, m => m.StartsWith("RTDE watchdog", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public async Task Watchdog_PausedProgram_IsEndedByTheNextScript_WhichRuns()
+    {
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { InstantExecution = true });
+        await controller.StartAsync();
+        using var client = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await client.NegotiateAsync());
+        await client.SetupInputsAsync("input_int_register_0");
+        Assert.True(await client.StartAsync());
+        using var script = await UrSimClientInterfaceTests.ConnectAsync(controller.Port);
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
+            "def wd():\n  rtde_set_watchdog(\"input_int_register_0\", 10, \"pause\")\n  while True:\n    sleep(1)\n  end\nend\n"));
+        await OnlineWait.UntilAsync(() => controller.PendantMessages.Contains(WatchdogMessage + "program paused"), "the watchdog to pause the program");
+        Assert.True(controller.Twin.IsHeld);
+
+        // As python-urx goes on after UR's RTDE example left the program paused: its next command is a program of its own.
+        await script.GetStream().WriteAsync(Encoding.ASCII.GetBytes(
+            "def next():\n  movej([0.3, -1.4, 1.4, -1.5, -1.57, 0.2], a=1, v=0.5)\n  write_output_integer_register(2, 7)\nend\n"));
+        await OnlineWait.UntilAsync(() => controller.Twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 2) == 7, "the next program to run");
+        Assert.False(controller.Twin.IsHeld);
+        Assert.Equal(new[] { 0.3, -1.4, 1.4, -1.5, -1.57, 0.2 }, controller.Twin.JointsNow().ToArray().Select(d => Math.Round(d * Math.PI / 180, 6)));
     }
 
     [Fact]
