@@ -44,7 +44,8 @@ internal sealed partial class KrlMachine
     /// </summary>
     public double ProgramTimeWake()
     {
-        int soonest = _interruptsOn > 0 && !_inInterrupt ? SoonestTimerMs() : -1;
+        // No timer runs (the usual case, e.g. a streaming driver): no wake, without counting the timers for every motion.
+        int soonest = _interruptsOn > 0 && !_inInterrupt && Controller.TimersCounting ? SoonestTimerMs() : -1;
         return soonest < 0 ? -1 : soonest / 1000.0;
     }
 
