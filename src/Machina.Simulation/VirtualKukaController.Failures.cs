@@ -5,6 +5,12 @@ public sealed partial class VirtualKukaController
     /// <summary>The failure code of the driver's stop (Robot.Stop): the action under way ended part-way, the driver keeps serving.</summary>
     private const int StoppedCode = 7;
 
+    /// <summary>The driver's answer to a stop (<c>&lt;C K="3"/&gt;</c>), sent after it emptied its ring, with or without a failure first.</summary>
+    private const int StoppedAnswer = 3;
+
+    /// <summary>True from a stop's failure (code 7), which dropped what the driver held, to the stop's answer. Guarded by the gate.</summary>
+    private bool _stopDropped;
+
     /// <summary>
     /// The driver reports a failure (<c>&lt;F ID Code Text&gt;</c>) instead of the acknowledgement: the action is refused with
     /// the driver's text (kept as an error, counted executed, not logged: a target no axis position reaches, an axis beyond its
@@ -22,10 +28,10 @@ public sealed partial class VirtualKukaController
         }
         if (stopped)
         {
-            DropBuffer("stopped by the host (Robot.Stop)"); // counts what it held as lost (DiscardHeld)
+            DropHeld();
             lock (Gate)
             {
-                _held.Clear();
+                _stopDropped = true;
             }
         }
         if (action is { Dropped: false })
@@ -41,6 +47,34 @@ public sealed partial class VirtualKukaController
         if (held is not null)
         {
             SendToClient(held);
+        }
+    }
+
+    /// <summary>
+    /// The driver answered a stop (<c>&lt;C K="3"/&gt;</c>): it emptied its ring. With no action running it sent no failure
+    /// first, so what it held is dropped here (counted lost, none of it runs or is acknowledged); after a failure it was already.
+    /// </summary>
+    private void StopAnswered()
+    {
+        bool dropped;
+        lock (Gate)
+        {
+            dropped = _stopDropped;
+            _stopDropped = false;
+        }
+        if (!dropped)
+        {
+            DropHeld();
+        }
+    }
+
+    /// <summary>Drops every action the driver holds, as its stop does: counted lost (<see cref="DiscardHeld"/>), then forgotten.</summary>
+    private void DropHeld()
+    {
+        DropBuffer("stopped by the host (Robot.Stop)");
+        lock (Gate)
+        {
+            _held.Clear();
         }
     }
 }

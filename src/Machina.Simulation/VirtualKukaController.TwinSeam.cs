@@ -156,6 +156,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
                 case "S":
                     StateSent(xml);
                     break;
+                case "C" when IntegerOf(xml, " K=\"") == StoppedAnswer:
+                    StopAnswered();
+                    break;
             }
             return SendToClient(bytes);
         }

@@ -2,7 +2,7 @@ namespace Machina.Simulation.Krl;
 
 /// <summary>
 /// The system routines KRL programs call (BAS is in <see cref="KrlBasicPackage"/>): IR_STOPM (its stop-message interrupt),
-/// INVERSE, StrCopy, Set_KrlMsg, the mathematical functions, and EthernetKRL's EKI_GetFrameArray (the other EKI_ routines are the
+/// INVERSE, StrCopy, StrAdd, StrLen, Set_KrlMsg, MsgNotify and MsgNotifyTextPar, the mathematical functions, and EthernetKRL's EKI_GetFrameArray (the other EKI_ routines are the
 /// controller's, see KrlTwinController.Eki.cs).
 /// </summary>
 internal static class KrlBuiltins
@@ -19,10 +19,14 @@ internal static class KrlBuiltins
             target.Set(a[1] is string s ? s : KrlValues.Text((KrlArrayValue)a[1]));
             return true;
         }));
+        Add(new("StrAdd", KrlType.Int, [new(KrlType.Array(KrlType.Char, 0), IsOut: true), KrlBuiltinParameter.Text], (_, a) => StrAdd((KrlPlace)a[0], Text(a[1]))));
         Add(new("StrLen", KrlType.Int, [KrlBuiltinParameter.Text], (_, a) => a[0] is string s ? s.Length : KrlValues.Text((KrlArrayValue)a[0]).Length));
         Add(new("Set_KrlMsg", KrlType.Int, [new(KrlType.Enum), new(KrlTypes.KrlMsg), new(KrlType.Array(KrlTypes.KrlMsgPar, 0)), new(KrlTypes.KrlMsgOpt)], Message));
         KrlBuiltinParameter optionalText = new(KrlType.Array(KrlType.Char, 0), Optional: true);
-        Add(new("MsgNotify", null, [KrlBuiltinParameter.Text, optionalText, new(KrlType.Int, Optional: true), optionalText, optionalText, optionalText], Notify));
+        KrlBuiltinParameter[] notify = [KrlBuiltinParameter.Text, optionalText, new(KrlType.Int, Optional: true), optionalText, optionalText, optionalText];
+        Add(new("MsgNotify", null, notify, Notify));
+        // The message library's variant with text parameters, as KUKA's own EthernetKRL server calls it (text, module, number, texts).
+        Add(new("MsgNotifyTextPar", null, notify, Notify));
         Add(Math1("ABS", Math.Abs));
         Add(Math1("SQRT", x => x < 0 ? throw new KrlRuntimeException("SQRT of a negative number") : Math.Sqrt(x)));
         Add(Math1("SIN", x => Math.Sin(x * Math.PI / 180)));
@@ -50,6 +54,22 @@ internal static class KrlBuiltins
         string number = a.Length > 2 && a[2] is int n ? " " + n.ToString(System.Globalization.CultureInfo.InvariantCulture) : "";
         machine.Controller.Pendant.Log($"NOTIFY {Text(1)}{number}: {text}".Replace("NOTIFY :", "NOTIFY:", StringComparison.Ordinal));
         return null;
+    }
+
+    /// <summary>
+    /// StrAdd(dest[], add[]) of the KSS string functions: appends <paramref name="add"/> to the text of <paramref name="target"/>
+    /// and returns the new length; 0, with the text unchanged, when the result would not fit the array.
+    /// </summary>
+    private static int StrAdd(KrlPlace target, string add)
+    {
+        var array = (KrlArrayValue)target.Get();
+        string joined = KrlValues.Text(array) + add;
+        if (joined.Length > array.Items.Length)
+        {
+            return 0;
+        }
+        target.Set(joined);
+        return joined.Length;
     }
 
     /// <summary>A text argument (a string literal or a CHAR array).</summary>

@@ -6,6 +6,7 @@ namespace Machina.Simulation.Krl;
 /// Timer interrupts during a motion in real time: while a motion runs with interrupts switched on, the motion is woken when the
 /// soonest running timer reaches 0 ms (its $TIMER_FLAG rises), so that an interrupt on the flag runs at that moment of the
 /// motion, as on the controller, rather than when the motion ends. The motion goes on unless the routine brakes and resumes.
+/// Outside real time the arm asks for the same moment in program time (<see cref="ProgramTimeWake"/>).
 /// </summary>
 internal sealed partial class KrlMachine
 {
@@ -34,6 +35,18 @@ internal sealed partial class KrlMachine
         {
             _timerWake.Change(due, Timeout.InfiniteTimeSpan);
         }
+    }
+
+    /// <summary>
+    /// Outside real time, the program time in seconds until the soonest running timer below 0 reaches 0, when an interrupt is on
+    /// and none is being served; negative for none. The arm stops its motion at that moment of the program time, so that the
+    /// timer's interrupt runs with the arm part-way (<see cref="TwinArm.NextWake"/>), as it does in real time.
+    /// </summary>
+    public double ProgramTimeWake()
+    {
+        // No timer runs (the usual case, e.g. a streaming driver): no wake, without counting the timers for every motion.
+        int soonest = _interruptsOn > 0 && !_inInterrupt && Controller.TimersCounting ? SoonestTimerMs() : -1;
+        return soonest < 0 ? -1 : soonest / 1000.0;
     }
 
     /// <summary>Ends the motion's timer wake (the motion has ended).</summary>

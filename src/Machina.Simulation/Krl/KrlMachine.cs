@@ -215,6 +215,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 return Flow.Next;
             case KrlMotion motion:
                 RunTriggers(atEnd: false);
+                Controller.MotionRuns(starts: true);
                 try
                 {
                     Controller.Move(motion.Kind, GivenComponents(Eval(motion.Target, frame)), motion.Auxiliary is null ? null : Eval(motion.Auxiliary, frame),
@@ -223,6 +224,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 finally
                 {
                     DisarmTimerWake();
+                    Controller.MotionRuns(starts: false);
                 }
                 RunTriggers(atEnd: true);
                 return Flow.Next;
@@ -382,8 +384,13 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 throw new KrlHaltException(jump.Line, _routine.File);
             case "BRAKE":
             case "BRAKE F":
-                // The twin serves an interrupt with the arm standing where the motion was (see ServeInterrupts): it has braked.
-                return _inInterrupt ? Flow.Next : throw new KrlRuntimeException($"{jump.Keyword} is only allowed in an interrupt routine");
+                // The interrupted motion stops where the arm is (at once: the braking ramp is not modelled) and goes on when the routine returns.
+                if (!_inInterrupt)
+                {
+                    throw new KrlRuntimeException($"{jump.Keyword} is only allowed in an interrupt routine");
+                }
+                Controller.Arm.Brake();
+                return Flow.Next;
             case "RESUME":
                 throw _inInterrupt
                     ? new KrlResumeSignal(_interruptFrame!, jump.Line, _routine.File)
@@ -417,9 +424,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     /// <summary>
     /// Serves the interrupts while a motion is under way (the arm calls it as each part of the motion starts, and each time the
-    /// motion is woken: by a flag, input or channel, or by a running timer reaching 0, see <see cref="ArmTimerWake"/>; on this
-    /// interpreter's thread): the arm stands where the motion was while an interrupt routine runs, goes on when it returns, and is
-    /// left where it stands by a RESUME. (A real arm goes on moving during an interrupt routine until its BRAKE.)
+    /// motion is woken: by a flag, input or channel, or by a running timer reaching 0, see <see cref="ArmTimerWake"/> and
+    /// <see cref="ProgramTimeWake"/>; on this interpreter's thread): the motion goes on while an interrupt routine runs, as on the
+    /// controller, until a BRAKE in it stops the arm; a braked motion goes on when the routine returns, and RESUME leaves the arm
+    /// where it stands.
     /// </summary>
     public void ServeInterrupts()
     {

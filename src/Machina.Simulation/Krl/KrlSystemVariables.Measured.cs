@@ -5,7 +5,7 @@ namespace Machina.Simulation.Krl;
 /// twin the commanded one, as it has no servo lag), the timer flags ($TIMER_FLAG), the cyclic flags ($CYCFLAG: stored as
 /// assigned; the controller's cyclic evaluation of their expression is not modelled), the operating mode ($MODE_OP: #T1, as
 /// KUKA.OfficeLite starts), the axis speeds ($VEL_AXIS_ACT, $VEL_AXIS_MA, $RAT_MOT_AX: see <see cref="KrlAxisSpeed"/>), the axis
-/// torques ($TORQUE_AXIS_ACT: 0, the twin has no dynamics) and the path maxima ($VEL_MA).
+/// torques ($TORQUE_AXIS_ACT: 0, the twin has no dynamics) and the path maxima ($VEL_MA, $ACC_MA).
 /// </summary>
 internal static partial class KrlSystemVariables
 {
@@ -32,5 +32,9 @@ internal static partial class KrlSystemVariables
         Add(new KrlCell("$TORQUE_AXIS_ACT", reals12, KrlValues.Default(reals12)) { ReadOnly = true });
         // The machine data's path maxima as a third-party note gives their defaults (no KUKA manual found): 3 m/s, 400 °/s.
         Add(new KrlCell("$VEL_MA", KrlTypes.Rates, new KrlStructValue(KrlTypes.Rates, [3.0, 400.0, 400.0])) { ReadOnly = true });
+        // The machine data's path accelerations, the top of $ACC's range: on the twin what an acceleration of 100 % stands for
+        // (BAS #ACC_CP, an inline form's ACC), as $ACC starts (no KUKA value found for the arm).
+        KrlStructValue acc = (KrlStructValue)environment.System["$ACC"].Value;
+        Add(new KrlCell("$ACC_MA", KrlTypes.Rates, new KrlStructValue(KrlTypes.Rates, [controller.Options.DefaultCpAcceleration, acc.Values[1], acc.Values[2]])) { ReadOnly = true });
     }
 }

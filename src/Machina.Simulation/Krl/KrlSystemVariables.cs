@@ -56,10 +56,7 @@ internal static partial class KrlSystemVariables
         double[] min = options.Model.MinJoints.ToArray(), max = options.Model.MaxJoints.ToArray();
         Add(new KrlCell("$SOFTN_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? min[i] : -1e6))])) { ReadOnly = true });
         Add(new KrlCell("$SOFTP_END", reals12, new KrlArrayValue(reals12, [.. Enumerable.Range(0, 12).Select(i => (object)(i < 6 ? max[i] : 1e6))])) { ReadOnly = true });
-        KrlType name32 = KrlType.Array(KrlType.Char, 32);
-        object[] modelName = new object[32];
-        KrlValues.SetText(modelName, 0, 32, ModelName(options.Model));
-        Add(new KrlCell("$MODEL_NAME", name32, new KrlArrayValue(name32, modelName)) { ReadOnly = true });
+        Add(new KrlCell("$MODEL_NAME", Name32, Text32(ModelName(options.Model))) { ReadOnly = true });
         Add(new KrlCell("$POS_ACT", KrlTypes.E6Pos, null!) { ReadOnly = true, Read = () => Given(controller.PositionNow()) });
         Add(new KrlCell("$AXIS_ACT", KrlTypes.E6Axis, null!) { ReadOnly = true, Read = controller.AxesNow });
     }

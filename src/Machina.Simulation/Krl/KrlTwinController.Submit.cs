@@ -22,6 +22,7 @@ internal sealed partial class KrlTwinController
             return;
         }
         var machine = new KrlMachine(this, cancellation);
+        using SubmitRun running = SubmitRunning();
         try
         {
             while (!cancellation.IsCancellationRequested)

@@ -20,11 +20,13 @@ internal sealed partial class KrlTwinController : IDisposable
     {
         Options = options ?? new KrlTwinOptions();
         Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace, Interpolates = true };
+        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace, Interpolates = true, MovesWhileServing = true };
         KrlSystemVariables.AddTo(Environment, this);
         KrlBuiltins.AddTo(Environment);
         KrlBasicPackage.AddTo(Environment);
         KrlSystemVariables.AddMeasured(Environment, this);
+        KrlSystemVariables.AddStatus(Environment, this);
+        KrlProgramManagement.AddTo(Environment, this);
         AddEki();
         foreach ((string name, int output) in Options.Signals)
         {
@@ -230,6 +232,7 @@ internal sealed partial class KrlTwinController : IDisposable
         Interlocked.Exchange(ref _coincident, 0);
         var machine = new KrlMachine(this, cancellation);
         Arm.Serve = machine.ServeInterrupts;
+        Arm.NextWake = Clock.RealTime ? null : machine.ProgramTimeWake;
         try
         {
             machine.Run(routine);
@@ -261,6 +264,7 @@ internal sealed partial class KrlTwinController : IDisposable
         finally
         {
             Arm.Serve = null;
+            Arm.NextWake = null;
         }
     }
 

@@ -59,6 +59,7 @@ internal static class KrlTypes
         ["EKI_STATUS"] = EkiStatus, ["KrlMsg_T"] = KrlMsg, ["KrlMsgPar_T"] = KrlMsgPar, ["KrlMsgOpt_T"] = KrlMsgOpt,
         ["PDAT"] = KrlTemplateTypes.Pdat, ["LDAT"] = KrlTemplateTypes.Ldat, ["FDAT"] = KrlTemplateTypes.Fdat,
         ["BASIS_SUGG_T"] = KrlTemplateTypes.BasisSuggestions,
+        ["PRO_STATE"] = KrlType.Enum, ["MODUS_T"] = KrlType.Enum, ["STATE_T"] = KrlProgramManagement.StateType,
     };
 
     /// <summary>The predefined type called <paramref name="name"/>, or null.</summary>

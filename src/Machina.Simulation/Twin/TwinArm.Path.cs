@@ -142,6 +142,10 @@ internal sealed partial class TwinArm
     private bool MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
         Func<double, Joints>? path, TwinArc? arc)
     {
+        if (MovesWhileServing)
+        {
+            Brake(); // a motion an interrupt routine runs stops the one it interrupted first (KUKA: BRAKE before a motion there)
+        }
         Joints from = Joints;
         double left = seconds;
         double arcFrom = 0; // the part of the arc behind the arm (a hold or a wake cut the motion short: the rest goes on along the arc)
@@ -190,7 +194,7 @@ internal sealed partial class TwinArm
             }
             try
             {
-                Clock.WaitAside(left, both.Token); // the motion takes its time; the caller counts it as program time
+                WaitMoving(motion, cancellation, both.Token); // the motion takes its time; the caller counts it as program time
                 lock (_gate)
                 {
                     _moving = null;
@@ -231,6 +235,11 @@ internal sealed partial class TwinArm
                 {
                     if (ReferenceEquals(_moving, motion))
                     {
+                        if (MovesWhileServing)
+                        {
+                            // An interrupt routine that ends the motion (RESUME) leaves the arm where the motion had taken it.
+                            _joints = motion.At(Math.Min(Clock.Time.GetElapsedTime(motion.Started).TotalSeconds, left));
+                        }
                         _moving = null;
                     }
                 }

@@ -35,7 +35,7 @@ internal sealed partial class TwinArm
         {
             lock (_gate)
             {
-                return _moving is { } moving ? moving.At(Clock.Time.GetElapsedTime(moving.Started).TotalSeconds) : _joints;
+                return _moving is { } moving ? moving.At(Clock.Time.GetElapsedTime(moving.Started).TotalSeconds) : _paced is { } paced ? paced.At(Clock.Seconds) : _joints;
             }
         }
     }
@@ -117,6 +117,10 @@ internal sealed partial class TwinArm
         if (Interpolates && Clock.RealTime && seconds > 0)
         {
             return MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear, path, arc);
+        }
+        if (NextWake is not null && seconds > 0)
+        {
+            return MovePaced(target, seconds, line, text, cancellation, traced, trace, linear, path, arc);
         }
         Clock.Wait(seconds, cancellation);
         lock (_gate)

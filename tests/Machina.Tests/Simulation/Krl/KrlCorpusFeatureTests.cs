@@ -5,7 +5,7 @@ namespace Machina.Tests.Simulation.Krl;
 /// <summary>
 /// What published KRL programs needed that the twin refused (issue 43, the corpus in docs/simulation.md): GOTO and labels, an
 /// argument left out of a call, a CHAR array given its text in a data list, structure components named like keywords, a CHAR
-/// given a character code, and clear refusals of CWRITE and RSI.
+/// given a character code, and clear refusals of CREAD and RSI.
 /// </summary>
 public class KrlCorpusFeatureTests
 {
@@ -183,13 +183,42 @@ public class KrlCorpusFeatureTests
         Assert.Equal(["NOTIFY INFO: Axis A1 ready", "NOTIFY ROS 7: Done"], twin.Pendant.Lines);
     }
 
+    [Fact]
+    public void StrAdd_AppendsAndReturnsTheLength_OrZeroWhenItDoesNotFit()
+    {
+        const string source = "DEF prog( )\n  CHAR s[8]\n  s[] = \"RUN/\"\n  first = StrAdd(s[], \"abc\")\n  second = StrAdd(s[], \"de\")\n  text[] = s[]\nEND\n";
+        using var twin = new KrlTwinController();
+        twin.Load(("prog.src", source), ("prog.dat", "DEFDAT prog\nDECL INT first=-1\nDECL INT second=-1\nDECL CHAR text[8]\nENDDAT\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(7, Data(twin, "prog", "first"));
+        Assert.Equal(0, Data(twin, "prog", "second")); // 9 characters do not fit 8: unchanged
+        Assert.Equal("RUN/abc", KrlValues.Text((KrlArrayValue)Data(twin, "prog", "text")));
+    }
+
+    [Fact]
+    public void MsgNotifyTextPar_NotifiesWithItsTextParameters()
+    {
+        using var twin = new KrlTwinController();
+        twin.Load(("note.src", "DEF note( )\n  MsgNotifyTextPar(\"%1 sent %2\", \"DEBUG\", 0, \"ROS\", \"start\")\nEND\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(["NOTIFY DEBUG 0: ROS sent start"], twin.Pendant.Lines);
+    }
+
     [Theory]
-    [InlineData("DEF prog( )\n  INT state, mode\n  CWRITE($CMD, state, mode, \"RUN /R1/other()\")\nEND\n", 3,
-        "CWRITE is not supported by the twin: it reads or writes the controller's command and serial channels")]
+    [InlineData("DEF prog( )\n  INT ret\n  ret = EKI_Load(\"server\")\nEND\n", 3,
+        "EKI_LOAD is not supported by the twin: it is EthernetKRL for iiQKA.OS2")]
+    [InlineData("DEF prog( )\n  DECL STATE_T state\n  DECL MODUS_T mode\n  INT n\n  CREAD($CMD, state, mode, \"%d\", n)\nEND\n", 5,
+        "CREAD is not supported by the twin: it reads the controller's command channel or reads and writes its serial channels")]
     [InlineData("DEF prog( )\n  DECL RSIERR err\nEND\n", 2,
-        "the data type RSIERR is not supported by the twin: the Robot Sensor Interface (RSI, a KUKA option) is not on the twin")]
+        "RSIERR: name not declared as data type: the Robot Sensor Interface (RSI, a KUKA option) is not installed on the twin, so it is refused at load as a controller without the option refuses it at program selection")]
     [InlineData("DEF prog( )\n  INT ret\n  ret = RSI_CREATE(\"ros_rsi.rsi\", 1, TRUE)\nEND\n", 3,
-        "RSI_CREATE is not supported by the twin: the Robot Sensor Interface (RSI, a KUKA option) is not on the twin")]
+        "RSI_CREATE: name not declared as subprogram: the Robot Sensor Interface (RSI, a KUKA option) is not installed on the twin")]
     public void ControllerOptionsTheTwinLacks_AreRefusedAtLoad_WithWhy(string source, int line, string why)
     {
         using var twin = new KrlTwinController();

@@ -102,6 +102,78 @@ public class KrlTimerMotionTests
         Assert.Equal(0, clock.PendingTimers);
     }
 
+    [Fact]
+    public void TimerInterrupt_OutsideRealTime_FiresEvery100msOfProgramTime_WithTheArmPartWay_AndTheMotionGoesOn()
+    {
+        using var twin = new KrlTwinController(); // machina verify: program time, no clock to wait for
+        twin.Load(("prog.src", TimerProgram), ("prog.dat", TimerData));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, twin.Error);
+        double seconds = twin.Clock.Seconds;
+        Assert.True(seconds > 0.5, seconds.ToString(CultureInfo.InvariantCulture));
+        Assert.Equal(5, Value(twin, "ticks"));
+        Assert.Equal(0, Value(twin, "first_timer"));
+        Assert.Equal(45 * 0.1 / seconds, (double)Value(twin, "first_a1"), 6);
+        Assert.Equal(45 * 0.2 / seconds, (double)Value(twin, "second_a1"), 6);
+        Assert.Equal(45 / seconds, (double)Value(twin, "second_speed"), 6);
+        Assert.Equal(true, Value(twin, "reached"));
+        Assert.Equal(45, twin.Arm.Joints.J1, 9);
+    }
+
+    private const string WaitingProgram = """
+        DEF prog( )
+          INTERRUPT DECL 16 WHEN $TIMER_FLAG[1]==TRUE DO tick( )
+          INTERRUPT ON 16
+          PTP $AXIS_ACT
+          $VEL_AXIS[1] = 20
+          $TIMER[1] = -100
+          $TIMER_STOP[1] = FALSE
+          PTP {A1 45}
+          reached = TRUE
+        END
+
+        DEF tick( )
+          $TIMER_STOP[1] = TRUE
+          IF brakes THEN
+            BRAKE
+          ENDIF
+          before = $AXIS_ACT.A1
+          WAIT SEC 0.2
+          after = $AXIS_ACT.A1
+        END
+        """;
+
+    [Theory]
+    [InlineData(false, false)]
+    [InlineData(false, true)]
+    [InlineData(true, false)]
+    [InlineData(true, true)]
+    public async Task InterruptRoutine_TheArmMovesOnWhileItRuns_UnlessItBrakes_ThenTheMotionEndsAtItsTarget(bool realTime, bool brakes)
+    {
+        var clock = new ManualClock();
+        using var twin = new KrlTwinController(realTime ? new KrlTwinOptions { Time = clock, RealTime = true } : new KrlTwinOptions());
+        twin.Load(("prog.src", WaitingProgram),
+            ("prog.dat", $"DEFDAT prog\nDECL BOOL brakes={(brakes ? "TRUE" : "FALSE")}\nDECL REAL before=0.0\nDECL REAL after=0.0\nDECL BOOL reached=FALSE\nENDDAT\n"));
+        if (realTime)
+        {
+            using var stop = new CancellationTokenSource(Bound);
+            await FinishAsync(twin, clock, Start(twin, stop.Token));
+        }
+        else
+        {
+            Assert.True(twin.Run() == KrlProgramState.Finished, twin.Error);
+        }
+
+        double before = (double)Value(twin, "before"), after = (double)Value(twin, "after");
+        Assert.InRange(before, 1, 20); // 100 ms into the PTP
+        // KUKA: the interrupted motion goes on while the routine runs (here 200 ms more of a motion at constant speed) until BRAKE.
+        Assert.Equal(brakes ? before : 3 * before, after, 6);
+        Assert.Equal(true, Value(twin, "reached"));
+        Assert.Equal(45, twin.Arm.Joints.J1, 9);
+    }
+
     private const string SearchProgram = """
         DEF prog( )
           INTERRUPT DECL 20 WHEN $IN[5] DO found( )
