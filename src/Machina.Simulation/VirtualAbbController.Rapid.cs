@@ -24,6 +24,7 @@ public sealed partial class VirtualAbbController
             // Robot time runs SpeedFactor times faster than the controller's clock (the UR twin's scaled clock, brand-neutral).
             Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
+            HomeDirectory = _options.HomeDirectory,
         });
         // The shipped files with their placeholders filled, as an installer writes them (the host's AbbDriverModules does the same).
         string interval = Math.Max(0.004, _options.MonitorPeriod.TotalSeconds).ToString("0.###", CultureInfo.InvariantCulture);

@@ -22,6 +22,12 @@ public sealed record VirtualAbbControllerOptions : VirtualControllerOptions
     /// </summary>
     public Version DriverVersion { get; init; } = ShippedDriverVersion;
 
+    /// <summary>
+    /// The folder that the controller's mass memory is: RAPID's <c>HOME:</c> (<c>TEMP:</c> and <c>RAMDISK:</c> are folders in it) and
+    /// Robot Web Services' <c>/fileservice/$HOME</c>; null: a new temporary folder (<c>machina sim abb --home DIR</c>).
+    /// </summary>
+    internal string? HomeDirectory { get; init; }
+
     /// <summary>The version of the driver in drivers/abb (its DRIVER_VERSION constants).</summary>
     internal static Version ShippedDriverVersion { get; } = new(1, 7, 0);
 

@@ -35,6 +35,7 @@ internal static partial class SimCommand
         }
         announce($"Robot Web Services (RWS 1.0) on {bind}:{relay.Port}, user \"Default User\", password \"robotics\"; e.g. " +
             $"machina drivers abb --install --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --rws-port {relay.Port} --port {DefaultPort + 100}");
+        announce($"RWS's /fileservice/$HOME is RAPID's HOME:, the folder {twin.HomeDirectory}.");
         return new RwsEndpoint(server, relay);
     }
 

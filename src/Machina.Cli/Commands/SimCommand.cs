@@ -16,7 +16,7 @@ internal static partial class SimCommand
         $"""
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
                machina sim abb|kuka --load PROGRAM [--model M]
-               machina sim abb --load PROGRAM [--eio EIO.cfg] [--signal [TYPE:]NAME[=VALUE]]... [--rws-port N]
+               machina sim abb --load PROGRAM [--eio EIO.cfg] [--signal [TYPE:]NAME[=VALUE]]... [--rws-port N] [--home DIR]
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
@@ -37,6 +37,9 @@ internal static partial class SimCommand
           --rws-port N      abb: serve Robot Web Services (RWS 1.0, digest log-on "Default User"/"robotics") on port N (default 0:
                             a free port, named in the log), in front of the controller's RAPID tasks: "machina drivers abb
                             --install --host 127.0.0.1 --rws-port N" and RWS clients work against it
+          --home DIR        abb: the folder that is the controller's HOME: (RAPID's Open "HOME:/f", with TEMP: and RAMDISK: as
+                            folders in it) and RWS's /fileservice/$HOME: one store, so a file uploaded through RWS is what a
+                            program opens and the other way round (default: a new temporary folder, named in the log)
           --quiet           tell only connections, pendant messages, outputs and errors, not every request and action
           --load [TASK=]PROGRAM
                             abb: load a RAPID program (.mod, .sys, .pgf or a folder: its .sys then its .mod files) into a task
@@ -57,7 +60,7 @@ internal static partial class SimCommand
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio"],
+        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home"],
         Flags: ["--quiet"],
         RunAsync);
 
@@ -72,6 +75,10 @@ internal static partial class SimCommand
             throw new UsageException($"--bind needs an IP address of this computer such as 127.0.0.1 or 0.0.0.0, not \"{bindText}\".");
         }
         double speed = args.Positive("--speed-factor", 1);
+        if (args.Value("--home") is not null && brand != AbbBrand.Definition.Type)
+        {
+            throw new UsageException($"--home is the mass memory of a virtual ABB (RAPID's HOME:), not of {Brands.Name(brand)}.");
+        }
         // Options are checked before --load takes over: a mistyped one is an error there too, never ignored.
         if (args.Value("--load") is not null)
         {
@@ -96,7 +103,7 @@ internal static partial class SimCommand
             }
         }
 
-        await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model, urLayout), context.Cancellation).ConfigureAwait(false);
+        await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model, urLayout, Home(args, context)), context.Cancellation).ConfigureAwait(false);
         RelayRoute[] routes = urLayout ? UrRoutes(controller) : controller.CompactRoutes;
         await using TcpRelay relay = TcpRelay.Start(bind, port, routes, Log);
         await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
@@ -123,6 +130,25 @@ internal static partial class SimCommand
         activity.Flush();
         Log($"Stopping: {controller.Summary()}.");
         return ExitCodes.Ok;
+    }
+
+    /// <summary>The folder <c>--home DIR</c> names (made when missing), or null without it.</summary>
+    internal static string? Home(CliArgs args, CliContext context)
+    {
+        if (args.Value("--home") is not { } home)
+        {
+            return null;
+        }
+        string full = context.FullPath(home);
+        try
+        {
+            Directory.CreateDirectory(full);
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            throw new CliException($"--home {home}: cannot use that folder: {ex.Message}");
+        }
+        return full;
     }
 
     /// <summary>Every port named for what it is, e.g. "(script port; RTDE on 7001, dashboard on 7002)".</summary>

@@ -22,8 +22,11 @@ internal static class SimLoad
         return new TaskLoad(RapidTwinController.MotionTask, value);
     }
 
-    /// <summary>What else a --load run may have: signals of the IO configuration (<c>[TYPE:]NAME[=VALUE]</c>), and RWS on a port.</summary>
-    internal sealed record Extras(IReadOnlyList<string> Signals, string? Eio, System.Net.IPAddress Bind, int? RwsPort);
+    /// <summary>
+    /// What else a --load run may have: signals of the IO configuration (<c>[TYPE:]NAME[=VALUE]</c>), RWS on a port, and the folder
+    /// that is HOME: (null: a new temporary one).
+    /// </summary>
+    internal sealed record Extras(IReadOnlyList<string> Signals, string? Eio, System.Net.IPAddress Bind, int? RwsPort, string? Home = null);
 
     /// <summary>One <c>--signal [TYPE:]NAME[=VALUE]</c>: the RAPID type (null: a signal of the board) and the value at the start.</summary>
     internal static (string? Type, string Name, double Value) ParseSignal(string text)
@@ -94,6 +97,7 @@ internal static class SimLoad
             Model = model ?? Brands.Model(AbbBrand.Definition.DefaultModel, AbbBrand.Definition.Type)!,
             RealTime = true,
             Time = context.Time,
+            HomeDirectory = extras.Home,
             // The virtual ABB's IO board (DO_1…DO_16, DI_1…DI_16, AO_1…AO_4, AI_1…AI_4) and the signals --signal declares.
             Signals = [.. board, .. signals.Where(s => s.Type is not null && !board.Any(b => b.Name.Equals(s.Name, StringComparison.OrdinalIgnoreCase)))
                 .DistinctBy(s => s.Name, StringComparer.OrdinalIgnoreCase).Select(s => (s.Name, s.Type!))],
@@ -135,6 +139,10 @@ internal static class SimLoad
         Log(tasks.Length == 1 && !twin.LabelsTasks
             ? $"Running {tasks[0].Path} on a virtual {options.Model} (RAPID, task T_ROB1) in real time. Press Ctrl+C to stop."
             : $"Running {tasks.Length} RAPID tasks ({names}) on a virtual {options.Model} in real time. Press Ctrl+C to stop.");
+        if (extras.Home is not null && extras.RwsPort is null)
+        {
+            Log($"RAPID's HOME: is the folder {twin.HomeDirectory}.");
+        }
         var ended = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         int running = tasks.Length;
         twin.TaskEnded += _ =>

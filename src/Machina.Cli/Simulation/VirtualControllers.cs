@@ -9,7 +9,8 @@ namespace Machina.Cli.Simulation;
 /// A UR stands in for URSim: it also serves its primary, secondary and real-time client interfaces (as on 30001–30003) and
 /// starts powered off, as URSim does (a program runs after <c>power on</c> and <c>brake release</c>).
 /// </param>
-internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false);
+/// <param name="AbbHome">An ABB's mass memory (RAPID's HOME:, RWS's $HOME), or null for a new temporary folder.</param>
+internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false, string? AbbHome = null);
 
 /// <summary>A virtual controller listening on 127.0.0.1, until disposed: one of <see cref="VirtualControllerRegistry"/>, as the command line shows it.</summary>
 internal sealed class RunningController(RunningVirtualController controller) : IAsyncDisposable
@@ -92,6 +93,10 @@ internal static class VirtualControllers
         if (options.UrClientInterfaces && settings is VirtualUrControllerOptions ur)
         {
             settings = ur with { PrimaryPort = 0, SecondaryPort = 0, RealtimePort = 0, StartsPoweredOff = true };
+        }
+        if (options.AbbHome is { } home && settings is VirtualAbbControllerOptions abb)
+        {
+            settings = abb with { HomeDirectory = home };
         }
         if (options.Model is RobotModel model)
         {

@@ -19,7 +19,7 @@ internal sealed class RapidTwinProgram : ITwinProgram
 
     public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
         (args, model, bind, context) => SimLoad.RunAbbAsync(args.Values("--load"), model, context, new SimLoad.Extras(args.Values("--signal"), args.Value("--eio"),
-            bind, args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true)));
+            bind, args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true), SimCommand.Home(args, context)));
 
     public bool IsProgram(string fullPath) => Directory.Exists(fullPath)
         || fullPath.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase) || fullPath.EndsWith(".mod", StringComparison.OrdinalIgnoreCase);

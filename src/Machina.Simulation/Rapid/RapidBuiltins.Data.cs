@@ -103,7 +103,8 @@ internal static partial class RapidBuiltins
         }),
         Function("RunMode", "symnum", [Sw("Main")], _ => 1.0),
         Function("RobOS", "bool", [], _ => false), // the twin stands in for a virtual controller (RobotStudio), where RobOS is FALSE
-        Function("IsStopMoveAct", "bool", [Sw("FromMoveTask"), Sw("FromNonMoveTask")], _ => false),
+        // TRUE while the motion is held (StopMove, or a TriggCheckIO \StopMove), whichever task held it.
+        Function("IsStopMoveAct", "bool", [Sw("FromMoveTask"), Sw("FromNonMoveTask")], call => call.Machine.Task.Controller.Arm.IsHeld),
         Instruction("Incr", [P("Name", "num", true)], call => call.Set(0, (double)call.Value(0) + 1)),
         Instruction("Decr", [P("Name", "num", true)], call => call.Set(0, (double)call.Value(0) - 1)),
         Instruction("Add", [P("Name", "num", true), P("AddValue", "num")], call => call.Set(0, (double)call.Value(0) + call.Num(1))),

@@ -17,6 +17,8 @@ internal static partial class RapidBuiltins
             string kind = call.Has(0) ? "warning" : call.Has(1) ? "information" : "error";
             string text = string.Join(" ", Enumerable.Range(3, 4).Where(call.Has).Select(call.Str));
             Log(call, $"Event ({kind}, ErrWrite): {call.Str(2)}: {text}");
+            // The event log's numbers of a program's own messages: 80001 error, 80002 warning, 80003 information.
+            call.Machine.Task.Controller.LogEvent(call.Has(0) ? 80002 : call.Has(1) ? 80003 : 80001, call.Str(2));
         }),
         Instruction("ErrLog", [P("ErrorID", "num"), Sw("W"), Sw("I"), P("Argument1", null), P("Argument2", null), P("Argument3", null),
             P("Argument4", null), P("Argument5", null)], call =>
@@ -24,6 +26,7 @@ internal static partial class RapidBuiltins
             string kind = call.Has(1) ? "warning" : call.Has(2) ? "information" : "error";
             string arguments = string.Join(", ", Enumerable.Range(3, 5).Select(p => RapidValues.ToText(call.Value(p))));
             Log(call, $"Event {RapidValues.FormatNumber(call.Num(0))} ({kind}, ErrLog): {arguments}");
+            call.Machine.Task.Controller.LogEvent((int)call.Num(0), RapidValues.ToText(call.Value(3)));
         }),
         Instruction("SkipWarn", [], _ => { }),
         Instruction("BookErrNo", [P("ErrorName", "errnum", true)], call => call.Set(0, (double)call.Machine.Task.Controller.BookErrorNumber())),

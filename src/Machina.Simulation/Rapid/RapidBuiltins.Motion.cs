@@ -111,7 +111,7 @@ internal static partial class RapidBuiltins
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         Joints startJoints = near;
         RequireOutsideLimitZones(call, f => arc?.At(f).Position
-            ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(startJoints, joints, f), tool)));
+            ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(startJoints, joints, f), tool)), startJoints, joints);
         arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
         if (!linear || call.Has(p.T))
         {
@@ -165,7 +165,7 @@ internal static partial class RapidBuiltins
         Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
         double seconds = Duration(call, p, (goal.Position - start.Position).Length, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         Joints from = arm.Joints;
-        RequireOutsideLimitZones(call, f => ToolAt(arm, Between(from, joints, f), tool));
+        RequireOutsideLimitZones(call, f => ToolAt(arm, Between(from, joints, f), tool), from, joints);
         arm.Serve = task.RunPendingTraps;
         arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
         ZoneOutputsAfterMotion(call);

@@ -36,7 +36,7 @@ internal static partial class RapidBuiltins
             {
                 throw ArgumentError(call, $"SocketBind: \"{call.Str(1)}\" is not an IP address");
             }
-            s.Bound = new IPEndPoint(address, (int)call.Num(2));
+            s.Bound = new IPEndPoint(call.Machine.Task.Controller.BindAddress(address), (int)call.Num(2));
             try
             {
                 s.Udp?.Bind(s.Bound);

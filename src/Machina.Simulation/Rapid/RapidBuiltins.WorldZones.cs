@@ -3,8 +3,8 @@ using Machina.Simulation.Twin;
 namespace Machina.Simulation.Rapid;
 
 /// <summary>
-/// World Zones (RAPID reference: WZBoxDef, WZCylDef, WZSphDef, WZLimSup, WZDOSet, WZEnable, WZDisable, WZFree): a shape in world
-/// coordinates, activated as a limit zone that the TCP may not enter (a motion whose path would take it in is refused before the arm
+/// World Zones (RAPID reference: WZBoxDef, WZCylDef, WZSphDef, WZLimJointDef, WZHomeJointDef, WZLimSup, WZDOSet, WZEnable, WZDisable,
+/// WZFree): a shape in world coordinates or a joint space, activated as a limit zone that the TCP may not enter (a motion whose path would take it in is refused before the arm
 /// moves, and the task stops: the controller stops the robot at the zone's border) or as an output zone whose digital output tells
 /// whether the TCP is in it (set when the zone is activated and after each motion, at the arm's position then).
 /// </summary>
@@ -40,14 +40,35 @@ internal static partial class RapidBuiltins
             }
             ((RapidShape)call.Value(2)).Sphere(Outside(call, "WZSphDef"), RapidGeometry.ToVector(call.Record(3)), call.Num(4));
         }),
+        Instruction("WZLimJointDef", [Sw("Inside"), Sw("Outside"), P("Shape", "shapedata", true), P("LowJointVal", "jointtarget"), P("HighJointVal", "jointtarget")], call =>
+        {
+            double[] low = RobotAxes(call.Record(3)), high = RobotAxes(call.Record(4));
+            if (Enumerable.Range(0, low.Length).Any(i => Supervised(low[i]) != Supervised(high[i]) || (Supervised(low[i]) && low[i] > high[i])))
+            {
+                throw ArgumentError(call, "WZLimJointDef: each supervised axis needs a LowJointVal below its HighJointVal (9E9 in both leaves an axis out)");
+            }
+            ((RapidShape)call.Value(2)).JointSpace(Outside(call, "WZLimJointDef"), low, high);
+        }),
+        Instruction("WZHomeJointDef", [Sw("Inside"), Sw("Outside"), P("Shape", "shapedata", true), P("MiddleJointVal", "jointtarget"), P("DeltaJointVal", "jointtarget")], call =>
+        {
+            double[] middle = RobotAxes(call.Record(3)), delta = RobotAxes(call.Record(4));
+            if (Enumerable.Range(0, middle.Length).Any(i => Supervised(middle[i]) && !(delta[i] > 0 && Supervised(delta[i]))))
+            {
+                throw ArgumentError(call, "WZHomeJointDef: each supervised axis needs a positive DeltaJointVal (9E9 in MiddleJointVal leaves an axis out)");
+            }
+            double[] low = [.. middle.Select((m, i) => Supervised(m) ? m - delta[i] : 9E9)];
+            double[] high = [.. middle.Select((m, i) => Supervised(m) ? m + delta[i] : 9E9)];
+            ((RapidShape)call.Value(2)).JointSpace(Outside(call, "WZHomeJointDef"), low, high);
+        }),
         Instruction("WZLimSup", [Sw("Temp"), Sw("Stat"), P("WorldZone", null, true), P("Shape", "shapedata")], call =>
         {
             RapidWorldZone zone = ActivatedZone(call, "WZLimSup", 2, 3);
             zone.Limits = true;
             zone.Output = null;
-            if (zone.Shape!.Contains(call.Machine.Task.Controller.Arm.Tcp.Position))
+            TwinArm arm = call.Machine.Task.Controller.Arm;
+            if (zone.Shape!.Contains(arm.Tcp.Position, arm.Joints))
             {
-                throw ArgumentError(call, "WZLimSup: the TCP is in the zone already");
+                throw ArgumentError(call, "WZLimSup: the robot is in the zone already");
             }
             call.Machine.Task.Controller.Activate(zone);
         }),
@@ -73,6 +94,12 @@ internal static partial class RapidBuiltins
         Instruction("WZDisable", [P("WorldZone", "wztemporary", true)], call => Temporary(call, "WZDisable").Enabled = false),
         Instruction("WZFree", [P("WorldZone", "wztemporary", true)], call => call.Machine.Task.Controller.Free(Temporary(call, "WZFree"))),
     ];
+
+    /// <summary>The six robot axes of a jointtarget (its robax), in degrees.</summary>
+    private static double[] RobotAxes(RapidRecord jointtarget) => [.. ((RapidRecord)jointtarget.Fields[0]).Fields.Select(f => (double)f)];
+
+    /// <summary>False for 9E9, the value that leaves an axis out of a joint zone.</summary>
+    private static bool Supervised(double value) => Math.Abs(value) < 9E8;
 
     private static bool Outside(RapidCall call, string name) => call.Has(0) != call.Has(1)
         ? call.Has(1)
@@ -107,16 +134,17 @@ internal static partial class RapidBuiltins
         : throw ArgumentError(call, $"{name}: the world zone is not an active wztemporary");
 
     /// <summary>
-    /// Refuses a motion whose TCP path (<paramref name="tcpAt"/> of the fraction of the way) would enter a limit zone: the task stops
-    /// (no ERROR handler takes it), the arm where it stands.
+    /// Refuses a motion whose path (<paramref name="tcpAt"/> of the fraction of the way, the joints going from <paramref name="from"/> to
+    /// <paramref name="to"/>) would enter a limit zone: the task stops (no ERROR handler takes it), the arm where it stands. A joint zone is checked on the
+    /// joints interpolated from the start to the target (the joint path of MoveJ and MoveAbsJ; for MoveL and MoveC, their ends exactly).
     /// </summary>
-    private static void RequireOutsideLimitZones(RapidCall call, Func<double, Vector> tcpAt)
+    private static void RequireOutsideLimitZones(RapidCall call, Func<double, Vector> tcpAt, Joints from, Joints to)
     {
         RapidTwinController c = call.Machine.Task.Controller;
-        if (c.HasZones && c.LimitZoneOn(Enumerable.Range(1, ZoneSamples).Select(i => tcpAt((double)i / ZoneSamples))) is { } zone)
+        if (c.HasZones && c.LimitZoneOn(Enumerable.Range(1, ZoneSamples).Select(i => (double)i / ZoneSamples).Select(f => (tcpAt(f), Between(from, to, f)))) is { } zone)
         {
             throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, call.Line,
-                $"World zone: the motion would take the TCP into the limit zone activated at line {zone.Line} (WZLimSup); the robot stops at its border")
+                $"World zone: the motion would take {(zone.Shape!.Kind == "joints" ? "the robot's axes" : "the TCP")} into the limit zone activated at line {zone.Line} (WZLimSup); the robot stops at its border")
             { Fatal = true };
         }
     }
@@ -127,7 +155,7 @@ internal static partial class RapidBuiltins
         RapidTwinController c = call.Machine.Task.Controller;
         if (c.HasZones)
         {
-            c.UpdateZoneOutputs(c.Arm.Tcp.Position);
+            c.UpdateZoneOutputs(c.Arm.Tcp.Position, c.Arm.Joints);
         }
     }
 }

@@ -44,7 +44,7 @@ internal static partial class RapidErrorNumbers
         "ERR_SPEEDLIM_VALUE", "ERR_SPEED_REFRESH_LIM", "ERR_STARTMOVE", "ERR_STORE_PROF", "ERR_SYNCMOVEOFF", "ERR_SYNCMOVEON", "ERR_SYNTAX",
         "ERR_TASKNAME", "ERR_TP_DIBREAK", "ERR_TP_DOBREAK", "ERR_TP_MAXTIME", "ERR_TP_NO_CLIENT", "ERR_TRUSTLEVEL", "ERR_TXTNOEXIST",
         "ERR_UDPUC_COMM", "ERR_UISHOW_FATAL", "ERR_UISHOW_FULL", "ERR_UNIT_PAR", "ERR_UNKINO", "ERR_UNKPROC", "ERR_UNLOAD", "ERR_USE_PROF",
-        "ERR_WAITSYNCTASK", "ERR_WHLSEARCH", "ERR_WOBJ_MOVING", "ERR_INVALID_ADDRESS",
+        "ERR_WAITSYNCTASK", "ERR_WHLSEARCH", "ERR_WOBJ_MOVING", "ERR_INVALID_ADDRESS", "ERR_OUTSIDE_REACH",
     ];
 
     /// <summary><paramref name="core"/> with the twin's other numbers and the catalog's names (a name already there keeps its number).</summary>

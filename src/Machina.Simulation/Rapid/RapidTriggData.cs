@@ -18,4 +18,14 @@ internal sealed class RapidTriggData
 /// <paramref name="Interrupt"/>.
 /// </summary>
 internal sealed record RapidTriggEvent(double Distance, bool FromStart, bool IsTime, double ShiftSeconds, (string Name, string Bank, int Index)? Signal,
-    double Value, int Interrupt, Func<bool>? Inhibit);
+    double Value, int Interrupt, Func<bool>? Inhibit)
+{
+    /// <summary>TriggCheckIO: the signal compared (bank, index), the opnum relation (LT 1 … GT 6), the value, and \StopMove; null for other events.</summary>
+    public (string Name, string Bank, int Index, int Relation, double Value, bool StopMove)? Check { get; init; }
+
+    /// <summary>TriggSpeed: the analog output follows the TCP speed (mm/s) times <see cref="Value"/> from the event on.</summary>
+    public bool FollowsSpeed { get; init; }
+
+    /// <summary>\ProcID: the IPM process that gets the event (selector <see cref="Value"/>) instead of an output; null for none.</summary>
+    public int? ProcId { get; init; }
+}

@@ -32,6 +32,19 @@ internal sealed class RapidTriggProfile(double metres, double speed, double acce
         return t * seconds / _plain;
     }
 
+    /// <summary>The TCP's speed (m/s) <paramref name="time"/> seconds after the start: up the ramp, at the speed, down the ramp.</summary>
+    public double SpeedAt(double time)
+    {
+        if (metres <= 0 || seconds <= 0 || _plain <= 0)
+        {
+            return 0;
+        }
+        double t = Math.Clamp(time, 0, seconds) * _plain / seconds;
+        double ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2), rampSeconds = Math.Sqrt(2 * ramp / acceleration);
+        double v = t <= rampSeconds ? acceleration * t : t <= _plain - rampSeconds ? speed : acceleration * (_plain - t);
+        return Math.Max(0, v) * _plain / seconds;
+    }
+
     /// <summary>The fraction of the move's length the TCP covered <paramref name="time"/> seconds after the start.</summary>
     public double FractionAt(double time)
     {

@@ -17,6 +17,12 @@ internal sealed partial class RapidTwinController
     /// <summary>Raised (on the task's thread) when a task's run ends, with the task.</summary>
     public event Action<RapidTask>? TaskEnded;
 
+    /// <summary>A program wrote to the event log (ErrWrite, ErrLog): the event's number and its title, as Robot Web Services list it.</summary>
+    public event Action<int, string>? EventLogged;
+
+    /// <summary>Tells <see cref="EventLogged"/> of an event a program wrote.</summary>
+    internal void LogEvent(int code, string title) => EventLogged?.Invoke(code, title);
+
     /// <summary>
     /// Hands over a listener already listening on 127.0.0.1: the program's SocketListen on that address takes it instead of
     /// binding again, so that a test can choose free ports before the program runs.

@@ -18,7 +18,7 @@ internal sealed partial class RapidTwinController
         {
             _zones = [.. _zones.Where(z => z != zone), zone];
         }
-        UpdateZoneOutputs(Arm.Tcp.Position);
+        UpdateZoneOutputs(Arm.Tcp.Position, Arm.Joints);
     }
 
     /// <summary>WZFree: the zone is no longer supervised.</summary>
@@ -30,17 +30,17 @@ internal sealed partial class RapidTwinController
         }
     }
 
-    /// <summary>The first enabled limit zone (WZLimSup) that a TCP at any of <paramref name="points"/> would be in, or null.</summary>
-    internal RapidWorldZone? LimitZoneOn(IEnumerable<Vector> points)
+    /// <summary>The first enabled limit zone (WZLimSup) that the arm at any of <paramref name="points"/> (TCP and joints) would be in, or null.</summary>
+    internal RapidWorldZone? LimitZoneOn(IEnumerable<(Vector Tcp, Joints Joints)> points)
     {
         RapidWorldZone[] zones = _zones;
         if (!zones.Any(z => z.Limits))
         {
             return null;
         }
-        foreach (Vector p in points)
+        foreach ((Vector tcp, Joints joints) in points)
         {
-            if (zones.FirstOrDefault(z => z.Limits && z.Enabled && z.Shape!.Contains(p)) is { } hit)
+            if (zones.FirstOrDefault(z => z.Limits && z.Enabled && z.Shape!.Contains(tcp, joints)) is { } hit)
             {
                 return hit;
             }
@@ -48,14 +48,14 @@ internal sealed partial class RapidTwinController
         return null;
     }
 
-    /// <summary>Sets the outputs of the enabled WZDOSet zones for a TCP at <paramref name="tcp"/>.</summary>
-    internal void UpdateZoneOutputs(Vector tcp)
+    /// <summary>Sets the outputs of the enabled WZDOSet zones for a TCP at <paramref name="tcp"/>, the arm at <paramref name="joints"/>.</summary>
+    internal void UpdateZoneOutputs(Vector tcp, Joints joints)
     {
         foreach (RapidWorldZone zone in _zones)
         {
             if (zone is { Enabled: true, Output: (_, int index, bool inside) })
             {
-                SetBit("do", index, zone.Shape!.Contains(tcp) ? inside : !inside);
+                SetBit("do", index, zone.Shape!.Contains(tcp, joints) ? inside : !inside);
             }
         }
     }

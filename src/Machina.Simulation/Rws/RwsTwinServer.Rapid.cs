@@ -60,11 +60,7 @@ internal sealed partial class RwsTwinServer
             return Error(400, "Bad Request", null, "A module cannot be loaded while RAPID is running; stop it first.");
         }
         string path = form["modulepath"];
-        string? text;
-        lock (_gate)
-        {
-            text = _files.GetValueOrDefault(path);
-        }
+        string? text = ReadModuleFile(path);
         if (text is null)
         {
             return Error(400, "Bad Request", null, $"The file {path} does not exist on the controller.");
@@ -82,6 +78,9 @@ internal sealed partial class RwsTwinServer
         }
     }
 
+    /// <summary>A RAPID value as RWS writes it: a string in quotes, anything else as RAPID writes it.</summary>
+    private static string DataText(object value) => value is string t ? $"\"{t}\"" : RapidValues.ToText(value);
+
     private RwsResponse Symbol(string task, string module, string symbol, bool get, IReadOnlyDictionary<string, string> form, string session)
     {
         RapidCell? cell = Twin.FindData(task, module, symbol);
@@ -92,7 +91,7 @@ internal sealed partial class RwsTwinServer
         if (get)
         {
             object value = cell.Value;
-            return State("rapid", Item("rap-data", $"RAPID/{task}/{module}/{symbol}", ("value", value is string t ? $"\"{t}\"" : RapidValues.ToText(value))));
+            return State("rapid", Item("rap-data", $"RAPID/{task}/{module}/{symbol}", ("value", DataText(value))));
         }
         if (!HoldsMastership(session))
         {

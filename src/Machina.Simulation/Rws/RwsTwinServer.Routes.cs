@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Text;
 using System.Xml.Linq;
 using Machina.Simulation.Rapid;
 using static Machina.Simulation.Rws.RwsXhtmlWriter;
@@ -12,21 +11,8 @@ internal sealed partial class RwsTwinServer
     /// <summary>The return code RWS documents for a RAPID data update without mastership.</summary>
     public const long MastershipRequiredCode = -1073414146;
 
-    private readonly Dictionary<string, string> _files = new(StringComparer.OrdinalIgnoreCase);
     private readonly List<(int Sequence, int Code, string Title)> _elog = [];
     private string? _master;
-
-    /// <summary>The files written to the controller, by path (e.g. <c>$HOME/machina_abb_driver.mod</c>).</summary>
-    public IReadOnlyDictionary<string, string> Files
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return new Dictionary<string, string>(_files, StringComparer.OrdinalIgnoreCase);
-            }
-        }
-    }
 
     /// <summary>The event log, oldest first: code and title.</summary>
     public IReadOnlyList<(int Code, string Title)> EventLog
@@ -69,7 +55,7 @@ internal sealed partial class RwsTwinServer
                 (["rw", "rapid", "tasks", var task], false) when action == "loadmod" => LoadModule(task, request.Form, session),
                 (["rw", "rapid", "symbol", "data", "RAPID", var task, var module, var symbol], _) => Symbol(task, module, symbol, get, request.Form, session),
                 (["rw", "mastership", ..], false) => Mastership(action, session),
-                (["fileservice", ..], _) => File(string.Join('/', s[1..]), request, get),
+                (["fileservice", ..], _) => FileService(string.Join('/', s[1..]), request, get),
                 (["rw", "elog", "0"], true) => EventLogPage(),
                 (["rw", "motionsystem", "mechunits", "ROB_1", "jointtarget"], true) => JointTarget(),
                 (["rw", "motionsystem", "mechunits", "ROB_1", "robtarget"], true) => RobTarget(),
@@ -110,45 +96,6 @@ internal sealed partial class RwsTwinServer
             _master = session;
             return RwsResponse.NoContent();
         }
-    }
-
-    private RwsResponse File(string path, RwsRequest request, bool get)
-    {
-        if (FilePathRefusal(path) is { } refusal)
-        {
-            return Error(400, "Bad Request", null, refusal);
-        }
-        lock (_gate)
-        {
-            if (get)
-            {
-                return _files.TryGetValue(path, out string? text)
-                    ? new RwsResponse(200, "OK", Encoding.Latin1.GetBytes(text), "text/plain")
-                    : Error(404, "Not Found", null, $"The file {path} does not exist.");
-            }
-            if (request.Method != "PUT")
-            {
-                return Error(400, "Bad Request", null, $"The twin's file service takes GET and PUT, not {request.Method}.");
-            }
-            bool created = !_files.ContainsKey(path);
-            _files[path] = Encoding.Latin1.GetString(request.Body);
-            return created ? new RwsResponse(201, "Created", []) : new RwsResponse(200, "OK", []);
-        }
-    }
-
-    /// <summary>
-    /// Why the file service refuses <paramref name="path"/>, or null: every part of a path names a file or folder under a
-    /// controller directory, so <c>..</c>, <c>.</c>, empty parts, backslashes and control characters are refused (a key that
-    /// leaves its folder).
-    /// </summary>
-    private static string? FilePathRefusal(string path)
-    {
-        string[] parts = path.Split('/');
-        if (path.Length == 0 || parts.Any(p => p is "" or "." or "..") || path.Any(c => c == '\\' || char.IsControl(c)))
-        {
-            return $"The file path {PrintableText.Of(path)} is not a path under a controller folder (no \"..\", \".\", empty parts or backslashes).";
-        }
-        return null;
     }
 
     private RwsResponse SetSpeedRatio(RwsRequest request)

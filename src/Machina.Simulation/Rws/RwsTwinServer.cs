@@ -47,6 +47,7 @@ internal sealed partial class RwsTwinServer : IAsyncDisposable
                 Log(LeadingCode(error), error);
             }
         };
+        twin.EventLogged += Log;
     }
 
     /// <summary>True when the server speaks RWS 2.0 (basic authentication, <c>v=2.0</c> media types).</summary>

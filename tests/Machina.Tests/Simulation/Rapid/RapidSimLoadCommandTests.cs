@@ -39,5 +39,24 @@ public class RapidSimLoadCommandTests
         Assert.Equal(2, ur.Exit);
         Assert.Contains("--load runs compiled programs on abb (RAPID) and kuka (KRL), not on ur.", ur.Stderr, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public async Task SimAbbLoad_Home_IsTheFolderTheProgramsFilesGoTo()
+    {
+        using var cli = new CliRunner();
+        Directory.CreateDirectory(cli.PathOf("cell"));
+        cli.Write("cell/recipe.txt", "glue 3\n");
+        cli.Write("log.mod", "MODULE log\n  VAR iodev f;\n  VAR string r;\n  PROC main()\n    Open \"HOME:/recipe.txt\", f \\Read;\n    r := ReadStr(f);\n"
+            + "    Close f;\n    Open \"HOME:/logs.txt\", f \\Write;\n    Write f, \"ran \" + r;\n    Close f;\n  ENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "log.mod", "--home", "cell");
+        CliResult ur = await cli.RunAsync("sim", "ur", "--home", "cell");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Contains($"RAPID's HOME: is the folder {cli.PathOf("cell")}.\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Equal("ran glue 3\n", File.ReadAllText(cli.PathOf("cell/logs.txt")));
+        Assert.Equal(2, ur.Exit);
+        Assert.Contains("--home is the mass memory of a virtual ABB (RAPID's HOME:), not of ur.", ur.Stderr, StringComparison.Ordinal);
+    }
 }
 #endif
