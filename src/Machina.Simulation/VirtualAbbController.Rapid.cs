@@ -127,6 +127,7 @@ public sealed partial class VirtualAbbController
             {
                 RecordError("stopping: a RAPID task did not end within 10 s");
             }
+            Twin?.RemoveTemporaryHome();
         }
     }
 }

@@ -27,6 +27,27 @@ internal sealed partial class RapidTwinController
         }
     }
 
+    /// <summary>Deletes the sandbox when the twin made it (a temporary directory) at the controller's end; a directory the user named is kept.</summary>
+    public void RemoveTemporaryHome()
+    {
+        lock (_files)
+        {
+            if (_home is null || Options.HomeDirectory is not null)
+            {
+                return;
+            }
+            try
+            {
+                Directory.Delete(_home, recursive: true);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // A file still open elsewhere: the directory stays in the temporary folder, as any temporary file may.
+            }
+            _home = null;
+        }
+    }
+
     /// <summary>
     /// The full path in the sandbox of a program's file name (<c>HOME:/dir/file.txt</c>, <c>TEMP:x</c>, <c>RAMDISK:/y</c>; the device's
     /// name in any case), or null when it names another device or leads out of the sandbox (<c>HOME:/../x</c>).
