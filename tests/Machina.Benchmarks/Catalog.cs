@@ -12,6 +12,7 @@ internal static class Catalog
         scenarios.AddRange(languages.Select(l => new FileCompileScenario(l)));
         scenarios.Add(new ParseScenario(workloads));
         scenarios.Add(new CliCompileScenario());
+        scenarios.AddRange(new[] { RobotType.ABB, RobotType.UR, RobotType.KUKA }.Select(b => new HostOnlyScenario(b)));
 #if MACHINA_ONLINE
         scenarios.Add(new StreamScenario(wideWindow: false));
         scenarios.Add(new StreamScenario(wideWindow: true));
@@ -43,6 +44,9 @@ internal static class Catalog
 
     /// <summary>Issue 45's target for the plain program: at most 20 µs of processor time per action, host and twin together.</summary>
     public static Target PlainProgramTarget { get; } = Target.CpuMicroseconds(20, "<= 20 us CPU per action (host + twin)");
+
+    /// <summary>The host's share of the plain program's budget: the host alone must stay well under the 20 µs of host and twin together.</summary>
+    public static Target HostOnlyTarget { get; } = Target.CpuMicroseconds(10, "<= 10 us CPU per action (host alone)");
 
     /// <summary>The inverse kinematics target: all solutions of one pose in at most 5 µs.</summary>
     public static Target IkTarget { get; } = Target.Microseconds(5, "<= 5 us per pose");

@@ -7,20 +7,16 @@ namespace Machina.Simulation.Krl;
 /// them with file and line), a main routine runs on the robot interpreter with the arm model's kinematics, and an error stops
 /// the program with the controller's message.
 /// </summary>
-internal sealed partial class KrlTwinController : IDisposable
+internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions, KrlProgramState>, IDisposable
 {
     private readonly Lock _gate = new();
     private readonly Dictionary<string, KrlModule> _modules = new(StringComparer.OrdinalIgnoreCase);
-    private KrlProgramState _state;
-    private string? _error;
     private int _messageHandle;
 
     /// <summary>A controller with <paramref name="options"/> (KR 6 R900 sixx, not real-time, by default).</summary>
     public KrlTwinController(KrlTwinOptions? options = null)
+        : base(options ?? new KrlTwinOptions(), interpolates: true, movesWhileServing: true)
     {
-        Options = options ?? new KrlTwinOptions();
-        Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace, Interpolates = true, MovesWhileServing = true };
         KrlSystemVariables.AddTo(Environment, this);
         KrlBuiltins.AddTo(Environment);
         KrlBasicPackage.AddTo(Environment);
@@ -42,18 +38,6 @@ internal sealed partial class KrlTwinController : IDisposable
         }
     }
 
-    /// <summary>The settings.</summary>
-    public KrlTwinOptions Options { get; }
-
-    /// <summary>The controller's clock.</summary>
-    public TwinClock Clock { get; }
-
-    /// <summary>The arm.</summary>
-    public TwinArm Arm { get; }
-
-    /// <summary>The messages window and logbook.</summary>
-    public TwinPendant Pendant { get; } = new();
-
     /// <summary>The system variables, signals and built-in routines.</summary>
     public KrlEnvironment Environment { get; } = new();
 
@@ -62,30 +46,6 @@ internal sealed partial class KrlTwinController : IDisposable
 
     /// <summary>The main routine of the first file loaded (null before a load).</summary>
     public string? MainRoutine { get; private set; }
-
-    /// <summary>How the last run ended.</summary>
-    public KrlProgramState State
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _state;
-            }
-        }
-    }
-
-    /// <summary>The message of the error that stopped the last run (null when none did).</summary>
-    public string? Error
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _error;
-            }
-        }
-    }
 
     /// <summary>
     /// Loads files (name with extension, text): each <c>.src</c> with the <c>.dat</c> of the same name. Throws
@@ -224,11 +184,7 @@ internal sealed partial class KrlTwinController : IDisposable
         {
             return Finish(KrlProgramState.Failed, $"Program {name} not found: no subprogram without parameters of that name is loaded");
         }
-        lock (_gate)
-        {
-            _state = KrlProgramState.Running;
-            _error = null;
-        }
+        ProgramStatus.Set(KrlProgramState.Running, null);
         Interlocked.Exchange(ref _coincident, 0);
         var machine = new KrlMachine(this, cancellation);
         Arm.Serve = machine.ServeInterrupts;
@@ -273,11 +229,7 @@ internal sealed partial class KrlTwinController : IDisposable
 
     private KrlProgramState Finish(KrlProgramState state, string? error)
     {
-        lock (_gate)
-        {
-            _state = state;
-            _error = error;
-        }
+        ProgramStatus.Set(state, error);
         if (error is not null)
         {
             Pendant.Log(error);

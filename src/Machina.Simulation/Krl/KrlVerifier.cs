@@ -9,13 +9,15 @@ namespace Machina.Simulation.Krl;
 /// </summary>
 internal static class KrlVerifier
 {
-    /// <summary>Largest position difference accepted, in mm (KRL targets carry 3 decimals).</summary>
-    public const double PositionToleranceMm = 0.01;
-
-    /// <summary>Largest orientation or joint difference accepted, in degrees (A, B, C carry 3 decimals).</summary>
-    public const double AngleToleranceDegrees = 0.05;
-
-    private static readonly TwinComparison Comparison = new(PositionToleranceMm, AngleToleranceDegrees, StringComparison.OrdinalIgnoreCase);
+    private static readonly TwinVerifier<KrlTwinOptions, KrlTwinController, KrlProgramState> Verifier = new()
+    {
+        // 0.01 mm and 0.05 deg: KRL targets and A, B, C carry 3 decimals; signal names are case-insensitive.
+        Comparison = new(PositionToleranceMm: 0.01, AngleToleranceDegrees: 0.05, StringComparison.OrdinalIgnoreCase),
+        OutputOf = OutputOf,
+        Create = options => new KrlTwinController(options),
+        Finished = KrlProgramState.Finished,
+        IsStep = e => !e.Text.EndsWith(KrlTwinController.BcoRun, StringComparison.Ordinal),
+    };
 
     /// <summary>Loads <paramref name="files"/> on a twin with <paramref name="options"/>, runs the main routine and compares it with <paramref name="actions"/>.</summary>
     public static TwinVerification<KrlProgramState> Verify(IReadOnlyList<(string Name, string Text)> files, IEnumerable<RobotAction> actions,
@@ -23,34 +25,22 @@ internal static class KrlVerifier
     {
         options ??= new KrlTwinOptions { Limits = TwinLimits.Verify };
         List<RobotAction> all = [.. actions];
-        List<TwinExpectation> expected = TwinComparison.Expect(all, options.Model, OutputOf);
         List<string> named = [.. all.OfType<ActionIODigital>().Where(d => !d.IsDigit).Select(d => d.PinName)
             .Where(n => !options.Signals.Any(s => s.Name.Equals(n, StringComparison.OrdinalIgnoreCase))).Distinct(StringComparer.OrdinalIgnoreCase)];
-        options = new KrlTwinOptions
+        // Named outputs are SIGNALs of $CONFIG.DAT on a real controller: the twin maps each to one of the last outputs.
+        options = options with { Signals = [.. options.Signals, .. named.Select((n, i) => (n, KrlSystemVariables.DigitalCount - i))] };
+        return Verifier.Verify(options, all, twin =>
         {
-            Model = options.Model, StartJoints = TwinComparison.StartOf(expected, options.Model, options.StartJoints) ?? options.StartJoints, Time = options.Time,
-            RealTime = options.RealTime, DefaultCpVelocity = options.DefaultCpVelocity, DefaultCpAcceleration = options.DefaultCpAcceleration,
-            DefaultAxisSpeed = options.DefaultAxisSpeed, AxisRampSeconds = options.AxisRampSeconds, Limits = options.Limits,
-            // Named outputs are SIGNALs of $CONFIG.DAT on a real controller: the twin maps each to one of the last outputs.
-            Signals = [.. options.Signals, .. named.Select((n, i) => (n, KrlSystemVariables.DigitalCount - i))],
-        };
-        using var twin = new KrlTwinController(options);
-        KrlProgramState state;
-        string? error;
-        try
-        {
-            twin.Load([.. files]);
-            state = twin.Run(null, cancellation);
-            error = twin.Error;
-        }
-        catch (KrlLoadException ex)
-        {
-            state = KrlProgramState.Failed;
-            error = ex.Message;
-        }
-        var result = new TwinVerification<KrlProgramState> { State = state, Finished = state == KrlProgramState.Finished, Error = error, Seconds = twin.Clock.Seconds };
-        Comparison.Fill(result, expected, twin.Arm.Trace.Where(e => !e.Text.EndsWith(KrlTwinController.BcoRun, StringComparison.Ordinal)));
-        return result;
+            try
+            {
+                twin.Load([.. files]);
+                return (twin.Run(null, cancellation), twin.Error);
+            }
+            catch (KrlLoadException ex)
+            {
+                return (KrlProgramState.Failed, ex.Message);
+            }
+        });
     }
 
     /// <summary>The outputs the KRL compiler writes, as the twin's trace shows them.</summary>

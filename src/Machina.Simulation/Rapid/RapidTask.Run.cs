@@ -1,47 +1,21 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>How a task's program runs: its state, the error that stopped it, and whether it is the motion task.</summary>
 internal sealed partial class RapidTask
 {
-    private readonly Lock _runGate = new();
-    private RapidProgramState _state;
-    private string? _error;
+    private readonly TwinProgramStatus<RapidProgramState> _status = new();
 
     /// <summary>True for the motion task (T_ROB1): its motion and waits make the program time.</summary>
     public bool IsMotionTask => Name.Equals(RapidTwinController.MotionTask, StringComparison.OrdinalIgnoreCase);
 
     /// <summary>How the task's last run ended (Running while it runs).</summary>
-    public RapidProgramState State
-    {
-        get
-        {
-            lock (_runGate)
-            {
-                return _state;
-            }
-        }
-    }
+    public RapidProgramState State => _status.State;
 
     /// <summary>The event-log message of the error that stopped the task's last run, or null.</summary>
-    public string? Error
-    {
-        get
-        {
-            lock (_runGate)
-            {
-                return _error;
-            }
-        }
-    }
+    public string? Error => _status.Error;
 
     /// <summary>Records how the run ended (or that it runs); <paramref name="meanwhile"/> runs in the same step (nobody sees the state between).</summary>
-    internal void SetState(RapidProgramState state, string? error, Action? meanwhile = null)
-    {
-        lock (_runGate)
-        {
-            meanwhile?.Invoke();
-            _state = state;
-            _error = error;
-        }
-    }
+    internal void SetState(RapidProgramState state, string? error, Action? meanwhile = null) => _status.Set(state, error, meanwhile);
 }

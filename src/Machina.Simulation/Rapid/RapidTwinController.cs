@@ -8,7 +8,7 @@ namespace Machina.Simulation.Rapid;
 /// module, with its line), <c>main</c> runs on the twin arm with the model's kinematics, and an error that no handler takes
 /// stops the task with the controller's message, as in the event log.
 /// </summary>
-internal sealed partial class RapidTwinController
+internal sealed partial class RapidTwinController : TwinController<RapidTwinOptions, RapidProgramState>
 {
     /// <summary>The name of the motion task.</summary>
     public const string MotionTask = "T_ROB1";
@@ -17,15 +17,11 @@ internal sealed partial class RapidTwinController
     private readonly Lock _signalGate = new();
     private readonly Dictionary<string, RapidTask> _tasks = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, (string Bank, int Index)> _signals = new(StringComparer.OrdinalIgnoreCase);
-    private RapidProgramState _state;
-    private string? _error;
 
     /// <summary>A controller with <paramref name="options"/> (IRB 120, not real-time, by default).</summary>
     public RapidTwinController(RapidTwinOptions? options = null)
+        : base(options ?? new RapidTwinOptions(), interpolates: true)
     {
-        Options = options ?? new RapidTwinOptions();
-        Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { Interpolates = true };
         foreach ((string name, string type) in Options.Signals)
         {
             string kind = type.ToLowerInvariant();
@@ -46,15 +42,6 @@ internal sealed partial class RapidTwinController
         }
     }
 
-    /// <summary>The settings.</summary>
-    public RapidTwinOptions Options { get; }
-
-    /// <summary>The controller's clock.</summary>
-    public TwinClock Clock { get; }
-
-    /// <summary>The arm.</summary>
-    public TwinArm Arm { get; }
-
     /// <summary>True once a task ordered an interrupt on persistent data (IPers): PERS writes then wake the motion.</summary>
     internal bool WatchesPersistents { get; set; }
 
@@ -69,38 +56,11 @@ internal sealed partial class RapidTwinController
     /// <summary>The signals of the IO configuration: banks do, di, ao, ai, go, gi, in the order of the options.</summary>
     public TwinIo Io { get; } = new();
 
-    /// <summary>The event log and the FlexPendant's messages.</summary>
-    public TwinPendant Pendant { get; } = new();
-
     /// <summary>The instructions and functions RAPID programs may call.</summary>
     public IReadOnlyDictionary<string, RapidBuiltin> Builtins => RapidBuiltins.All;
 
     /// <summary>The PERS data, shared by every task.</summary>
     internal Dictionary<string, RapidCell> Persistents { get; } = new(StringComparer.OrdinalIgnoreCase);
-
-    /// <summary>How the last program run ended.</summary>
-    public RapidProgramState State
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _state;
-            }
-        }
-    }
-
-    /// <summary>The message of the error that stopped the last run (null when none did).</summary>
-    public string? Error
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _error;
-            }
-        }
-    }
 
     /// <summary>The task called <paramref name="name"/>, made when first asked for.</summary>
     public RapidTask Task(string name = MotionTask)
@@ -167,18 +127,10 @@ internal sealed partial class RapidTwinController
     /// </summary>
     public RapidProgramState Run(string entry = "main", CancellationToken cancellation = default)
     {
-        lock (_gate)
-        {
-            _state = RapidProgramState.Running;
-            _error = null;
-        }
+        ProgramStatus.Set(RapidProgramState.Running, null);
         RapidTask task = Task();
         RapidProgramState state = RunTask(task, entry, cancellation);
-        lock (_gate)
-        {
-            _state = state;
-            _error = task.Error;
-        }
+        ProgramStatus.Set(state, task.Error);
         return state;
     }
 

@@ -3,19 +3,13 @@ using Machina.Simulation.Twin;
 namespace Machina.Simulation.Rapid;
 
 /// <summary>Settings of a RAPID twin controller.</summary>
-internal sealed class RapidTwinOptions
+internal sealed record RapidTwinOptions : TwinOptions
 {
-    /// <summary>The arm model (default IRB 120, as the virtual ABB).</summary>
-    public RobotModel Model { get; init; } = RobotModels.Get("IRB 120");
-
-    /// <summary>The joints (degrees) the arm starts at: ABB's calibration position with the wrist bent down.</summary>
-    public Joints StartJoints { get; init; } = new(0, 0, 0, 0, 90, 0);
-
-    /// <summary>The time source for real-time motion and waits.</summary>
-    public TimeProvider Time { get; init; } = TimeProvider.System;
-
-    /// <summary>True: motion and waits take their time on <see cref="Time"/>; false: they return at once (program time still adds up).</summary>
-    public bool RealTime { get; init; }
+    /// <summary>Settings with the virtual ABB's arm: an IRB 120 at ABB's calibration position with the wrist bent down.</summary>
+    public RapidTwinOptions()
+        : base(RobotModels.Get("IRB 120"), new Joints(0, 0, 0, 0, 90, 0))
+    {
+    }
 
     /// <summary>The IO configuration: signal names with their type (signaldo, signaldi, signalao, signalai).</summary>
     public IReadOnlyList<(string Name, string Type)> Signals { get; init; } = [];
@@ -37,7 +31,4 @@ internal sealed class RapidTwinOptions
 
     /// <summary>The directory that stands for the controller's HOME: (TEMP: and RAMDISK: are folders in it); null: a new temporary directory.</summary>
     public string? HomeDirectory { get; init; }
-
-    /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, arrays, module size).</summary>
-    public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

@@ -8,13 +8,14 @@ namespace Machina.Simulation.Rapid;
 /// </summary>
 internal static class RapidVerifier
 {
-    /// <summary>Largest position difference accepted, in mm (targets carry 1 µm).</summary>
-    public const double PositionToleranceMm = 0.01;
-
-    /// <summary>Largest orientation or joint difference accepted, in degrees (quaternions are written with 4 decimals).</summary>
-    public const double AngleToleranceDegrees = 0.05;
-
-    private static readonly TwinComparison Comparison = new(PositionToleranceMm, AngleToleranceDegrees, StringComparison.OrdinalIgnoreCase);
+    private static readonly TwinVerifier<RapidTwinOptions, RapidTwinController, RapidProgramState> Verifier = new()
+    {
+        // 0.01 mm and 0.05 deg: targets carry 1 µm, quaternions 4 decimals; signal names are case-insensitive.
+        Comparison = new(PositionToleranceMm: 0.01, AngleToleranceDegrees: 0.05, StringComparison.OrdinalIgnoreCase),
+        OutputOf = OutputOf,
+        Create = options => new RapidTwinController(options),
+        Finished = RapidProgramState.Finished,
+    };
 
     /// <summary>Loads <paramref name="modules"/> on a twin with <paramref name="options"/>, runs main and compares it with <paramref name="actions"/>.</summary>
     public static TwinVerification<RapidProgramState> Verify(IReadOnlyList<(string Name, string Text)> modules, IEnumerable<RobotAction> actions,
@@ -22,30 +23,20 @@ internal static class RapidVerifier
     {
         options ??= new RapidTwinOptions { Limits = TwinLimits.Verify };
         List<RobotAction> all = [.. actions];
-        List<TwinExpectation> expected = TwinComparison.Expect(all, options.Model, OutputOf);
-        options = new RapidTwinOptions
+        // The signals the program uses are declared in the IO configuration, as the compiled program needs them to load.
+        options = options with { Signals = [.. options.Signals, .. SignalsOf(all).Where(s => !options.Signals.Any(o => o.Name.Equals(s.Name, StringComparison.OrdinalIgnoreCase)))] };
+        return Verifier.Verify(options, all, twin =>
         {
-            Model = options.Model, StartJoints = TwinComparison.StartOf(expected, options.Model, options.StartJoints) ?? options.StartJoints, Time = options.Time,
-            RealTime = options.RealTime, Acceleration = options.Acceleration, Limits = options.Limits,
-            Signals = [.. options.Signals, .. SignalsOf(all).Where(s => !options.Signals.Any(o => o.Name.Equals(s.Name, StringComparison.OrdinalIgnoreCase)))],
-        };
-        var twin = new RapidTwinController(options);
-        RapidProgramState state;
-        string? error;
-        try
-        {
-            twin.Load([.. modules]);
-            state = twin.Run("main", cancellation);
-            error = twin.Error;
-        }
-        catch (RapidLoadException ex)
-        {
-            state = RapidProgramState.Failed;
-            error = ex.Module is null ? ex.Message : $"{ex.Module}: {ex.Message}";
-        }
-        var result = new TwinVerification<RapidProgramState> { State = state, Finished = state == RapidProgramState.Finished, Error = error, Seconds = twin.Clock.Seconds };
-        Comparison.Fill(result, expected, twin.Arm.Trace);
-        return result;
+            try
+            {
+                twin.Load([.. modules]);
+                return (twin.Run("main", cancellation), twin.Error);
+            }
+            catch (RapidLoadException ex)
+            {
+                return (RapidProgramState.Failed, ex.Module is null ? ex.Message : $"{ex.Module}: {ex.Message}");
+            }
+        });
     }
 
     /// <summary>The outputs the RAPID compiler writes (named signals only), as the trace shows them.</summary>

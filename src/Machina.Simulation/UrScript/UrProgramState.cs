@@ -15,6 +15,6 @@ internal enum UrProgramState
     /// <summary>The program was stopped: a new program replaced it, or the controller was stopped.</summary>
     Stopped,
 
-    /// <summary>The program was refused (compile error) or stopped by a runtime error; see <see cref="UrTwinController.Error"/>.</summary>
+    /// <summary>The program was refused (compile error) or stopped by a runtime error; see the controller's <c>Error</c>.</summary>
     Failed,
 }

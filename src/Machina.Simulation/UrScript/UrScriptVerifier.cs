@@ -8,34 +8,19 @@ namespace Machina.Simulation.UrScript;
 /// </summary>
 internal static class UrScriptVerifier
 {
-    /// <summary>Largest position difference accepted, in mm (scripts carry 1 µm).</summary>
-    public const double PositionToleranceMm = 0.01;
-
-    /// <summary>Largest orientation or joint difference accepted, in degrees.</summary>
-    public const double AngleToleranceDegrees = 0.01;
-
-    private static readonly TwinComparison Comparison = new(PositionToleranceMm, AngleToleranceDegrees, StringComparison.Ordinal);
+    private static readonly TwinVerifier<UrTwinOptions, UrTwinController, UrProgramState> Verifier = new()
+    {
+        // 0.01 mm and 0.01 deg: scripts carry 1 µm.
+        Comparison = new(PositionToleranceMm: 0.01, AngleToleranceDegrees: 0.01, StringComparison.Ordinal),
+        OutputOf = OutputOf,
+        Create = options => new UrTwinController(options),
+        Finished = UrProgramState.Finished,
+        Warnings = twin => twin.Pendant.Lines.Where(l => l.StartsWith("Warning:", StringComparison.Ordinal)),
+    };
 
     /// <summary>Runs <paramref name="script"/> on a twin with <paramref name="options"/> and compares it with <paramref name="actions"/>.</summary>
-    public static TwinVerification<UrProgramState> Verify(string script, IEnumerable<RobotAction> actions, UrTwinOptions? options = null, CancellationToken cancellation = default)
-    {
-        options ??= new UrTwinOptions { Limits = TwinLimits.Verify };
-        List<TwinExpectation> expected = TwinComparison.Expect(actions, options.Model, OutputOf);
-        if (TwinComparison.StartOf(expected, options.Model, options.StartJoints) is { } start)
-        {
-            options = new UrTwinOptions
-            {
-                Model = options.Model, StartJoints = start, Time = options.Time, RealTime = options.RealTime,
-                RandomSeed = options.RandomSeed, SocketOpenTimeout = options.SocketOpenTimeout, Limits = options.Limits,
-            };
-        }
-        using var twin = new UrTwinController(options);
-        UrProgramState state = twin.Run(script, cancellation);
-        var result = new TwinVerification<UrProgramState> { State = state, Finished = state == UrProgramState.Finished, Error = twin.Error, Seconds = twin.Clock.Seconds };
-        result.Warnings.AddRange(twin.Pendant.Lines.Where(l => l.StartsWith("Warning:", StringComparison.Ordinal)));
-        Comparison.Fill(result, expected, twin.Arm.Trace);
-        return result;
-    }
+    public static TwinVerification<UrProgramState> Verify(string script, IEnumerable<RobotAction> actions, UrTwinOptions? options = null, CancellationToken cancellation = default) =>
+        Verifier.Verify(options ?? new UrTwinOptions { Limits = TwinLimits.Verify }, actions, twin => (twin.Run(script, cancellation), twin.Error));
 
     /// <summary>The outputs the URScript compiler writes (standard outputs 0-7, tool outputs 0-1, analog 0-1 in 0..1), as the trace shows them.</summary>
     private static string? OutputOf(RobotAction action) => action switch

@@ -8,7 +8,7 @@ namespace Machina.Simulation.UrScript;
 /// Text arrives as on the controller's script port: a program starts as soon as its top-level <c>def … end</c> is complete,
 /// and a new program stops the one running.
 /// </summary>
-internal sealed partial class UrTwinController : IDisposable
+internal sealed partial class UrTwinController : TwinController<UrTwinOptions, UrProgramState>, IDisposable
 {
     /// <summary>Largest program text accepted (a program above this size is refused).</summary>
     public const int MaxProgramLength = 16 * 1024 * 1024;
@@ -17,17 +17,13 @@ internal sealed partial class UrTwinController : IDisposable
     private readonly UrScriptIntake _incoming = new();
     private CancellationTokenSource? _programStop;
     private Thread? _programThread;
-    private UrProgramState _state;
-    private string? _error;
     private int _programs;
     private string? _programName;
 
     /// <summary>A controller with <paramref name="options"/> (UR5e, not real-time, by default).</summary>
     public UrTwinController(UrTwinOptions? options = null)
+        : base(options ?? new UrTwinOptions(), interpolates: false)
     {
-        Options = options ?? new UrTwinOptions();
-        Clock = new TwinClock(Options.Time, Options.RealTime);
-        Arm = new TwinArm(Options.Model, Options.StartJoints, Clock) { MaxTrace = Options.MaxTrace };
         Random = new Random(Options.RandomSeed);
         Io = new TwinIo();
         Io.AddBits(UrIoBanks.StandardIn, 8);
@@ -48,15 +44,6 @@ internal sealed partial class UrTwinController : IDisposable
         Watchdog = new UrRtdeWatchdog(Options.Time, OnWatchdog);
     }
 
-    /// <summary>The settings.</summary>
-    public UrTwinOptions Options { get; }
-
-    /// <summary>The controller's clock.</summary>
-    public TwinClock Clock { get; }
-
-    /// <summary>The arm.</summary>
-    public TwinArm Arm { get; }
-
     /// <summary>Inputs, outputs and RTDE registers.</summary>
     public TwinIo Io { get; }
 
@@ -65,9 +52,6 @@ internal sealed partial class UrTwinController : IDisposable
 
     /// <summary>The RTDE watchdogs the running program set (<c>rtde_set_watchdog</c>).</summary>
     public UrRtdeWatchdog Watchdog { get; }
-
-    /// <summary>The pendant log: program messages and errors.</summary>
-    public TwinPendant Pendant { get; } = new();
 
     /// <summary>Raised for each complete program taken from the received text (before it is compiled and started).</summary>
     public event Action<string>? ProgramReceived;
@@ -89,30 +73,6 @@ internal sealed partial class UrTwinController : IDisposable
 
     /// <summary>A test's hook: called on a program's thread as it ends, before its sockets close, with the program's number (1 for the first).</summary>
     internal Action<int>? Ending { get; set; }
-
-    /// <summary>Where the program is.</summary>
-    public UrProgramState State
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _state;
-            }
-        }
-    }
-
-    /// <summary>The message of the last compile or runtime error (null when the last program had none).</summary>
-    public string? Error
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _error;
-            }
-        }
-    }
 
     /// <summary>The name of the last program started with a <c>def</c> or <c>sec</c> (null for a one-line program or none).</summary>
     public string? ProgramName
@@ -171,9 +131,9 @@ internal sealed partial class UrTwinController : IDisposable
             if (intake.Length > MaxProgramLength)
             {
                 intake.Clear();
-                _error = $"Compile error: line 1: the program is longer than {MaxProgramLength} characters";
-                _state = UrProgramState.Failed;
-                Pendant.Log(_error);
+                string error = $"Compile error: line 1: the program is longer than {MaxProgramLength} characters";
+                ProgramStatus.Set(UrProgramState.Failed, error);
+                Pendant.Log(error);
                 return;
             }
             while (intake.TakeProgram() is { } program)
@@ -190,7 +150,7 @@ internal sealed partial class UrTwinController : IDisposable
 
     /// <summary>
     /// Compiles <paramref name="text"/> and, when it compiles, stops the running program and starts this one on its own thread.
-    /// A program that does not compile is refused: the running one goes on, and <see cref="Error"/> says why.
+    /// A program that does not compile is refused: the running one goes on, and <c>Error</c> says why.
     /// </summary>
     /// <returns>True when the program started.</returns>
     public bool Start(string text)
@@ -228,8 +188,7 @@ internal sealed partial class UrTwinController : IDisposable
             _programName = named && paren > 4 ? header[4..paren].Trim() : null;
             _programStop = stop;
             _programThread = thread;
-            _state = UrProgramState.Running;
-            _error = null;
+            ProgramStatus.Set(UrProgramState.Running, null);
             // Started before the gate opens: another connection's program may stop this one at once, and joins it.
             thread.Start();
         }
@@ -254,8 +213,7 @@ internal sealed partial class UrTwinController : IDisposable
         int number;
         lock (_gate)
         {
-            _state = UrProgramState.Running;
-            _error = null;
+            ProgramStatus.Set(UrProgramState.Running, null);
             number = ++_programs;
         }
         RunBound(program, number, cancellation);
@@ -343,10 +301,9 @@ internal sealed partial class UrTwinController : IDisposable
                 lock (_gate)
                 {
                     current = IsCurrent(number);
-                    if (current && _state == UrProgramState.Running)
+                    if (current)
                     {
-                        _state = end;
-                        _error = error;
+                        ProgramStatus.Change(s => s == UrProgramState.Running ? end : null, error);
                     }
                 }
                 if (current)
@@ -370,14 +327,8 @@ internal sealed partial class UrTwinController : IDisposable
 
     private void Fail(string message)
     {
-        lock (_gate)
-        {
-            if (_state != UrProgramState.Running)
-            {
-                _state = UrProgramState.Failed; // a running program goes on: only the refused one failed
-            }
-            _error = message;
-        }
+        // A running program goes on: only the refused one failed.
+        ProgramStatus.Change(s => s == UrProgramState.Running ? s : UrProgramState.Failed, message);
         Pendant.Log(message);
     }
 

@@ -3,28 +3,19 @@ using Machina.Simulation.Twin;
 namespace Machina.Simulation.UrScript;
 
 /// <summary>Settings of a URScript twin controller.</summary>
-internal sealed class UrTwinOptions
+internal sealed record UrTwinOptions : TwinOptions
 {
-    /// <summary>The arm model (default UR5e).</summary>
-    public RobotModel Model { get; init; } = RobotModels.Get("UR5e");
-
-    /// <summary>The joints (degrees) the arm starts at: a common UR home, upright with the tool pointing down.</summary>
-    public Joints StartJoints { get; init; } = new(0, -90, 90, -90, -90, 0);
-
-    /// <summary>The time source for real-time motion and waits.</summary>
-    public TimeProvider Time { get; init; } = TimeProvider.System;
-
-    /// <summary>True: motion and waits take their time on <see cref="Time"/>; false: they return at once (program time still adds up).</summary>
-    public bool RealTime { get; init; }
+    /// <summary>Settings with the virtual UR's arm: a UR5e at a common UR home, upright with the tool pointing down.</summary>
+    public UrTwinOptions()
+        : base(RobotModels.Get("UR5e"), new Joints(0, -90, 90, -90, -90, 0))
+    {
+    }
 
     /// <summary>The seed of <c>random()</c>.</summary>
     public int RandomSeed { get; init; } = 1;
 
     /// <summary>Who watches the program's sockets and carries their writes (the virtual UR's fault and inspection seam), or null.</summary>
     public IUrSocketSeam? Seam { get; init; }
-
-    /// <summary>How many steps the arm's trace keeps (0: all, for a verification; a controller serving streams keeps the last few).</summary>
-    public int MaxTrace { get; init; }
 
     /// <summary>Where <c>socket_open</c> really connects, given where the program asks (the network in between), or null.</summary>
     public Func<System.Net.DnsEndPoint, System.Net.DnsEndPoint>? Route { get; init; }
@@ -41,7 +32,7 @@ internal sealed class UrTwinOptions
 
     /// <summary>
     /// Asked before each program starts: null lets it start; a message refuses it (it does not run, the running one goes on,
-    /// and <see cref="UrTwinController.Error"/> and the pendant have the message). The virtual UR refuses programs while the
+    /// and the controller's <c>Error</c> and the pendant have the message). The virtual UR refuses programs while the
     /// arm is powered off or its brakes are held. Null (the default): every program that compiles starts.
     /// </summary>
     public Func<string?>? StartRefusal { get; init; }
@@ -52,7 +43,4 @@ internal sealed class UrTwinOptions
     /// the new program runs, as a script sent to a paused UR does. Null: every hold is a pause.
     /// </summary>
     public Func<bool>? HeldBySafety { get; init; }
-
-    /// <summary>The interpreter's budgets (nesting, expression size, calls, steps, strings, threads, program size).</summary>
-    public TwinLimits Limits { get; init; } = TwinLimits.Default;
 }

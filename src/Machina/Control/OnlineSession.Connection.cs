@@ -10,12 +10,15 @@ internal sealed partial class OnlineSession
     private ITimer? _watchdog;
 
     /// <summary>
-    /// Where the link stands: the loop's one state, written only on the loop, read anywhere. Transitions: Disconnected → Connecting (<see cref="ConnectAsync"/>);
-    /// Connecting → Connected (handshake done, cursors set) or Disconnected (failed or refused); Connected → Stopped
-    /// (<see cref="IDeviceListener.OnStopped"/>) → Connected (<see cref="IDeviceListener.OnResumed"/>); Connected or Stopped →
-    /// Disconnected (<see cref="DisconnectAsync"/>, a fault, silence). Actions are released only while Connected.
+    /// Where the link stands: the loop's one state, written only on the loop, read anywhere. Transitions: Disconnected → Connecting (<see cref="ConnectAsync"/>
+    /// claimed <see cref="_connecting"/>); Connecting → Connected (handshake done, cursors set) or Disconnected (failed or refused);
+    /// Connected → Stopped (<see cref="IDeviceListener.OnStopped"/>) → Connected (<see cref="IDeviceListener.OnResumed"/>); Connected or
+    /// Stopped → Disconnected (<see cref="DisconnectAsync"/>, a fault, silence). Actions are released only while Connected.
+    /// Connecting is not stored: it is Disconnected while a connection is claimed (the claim is read first, so a connection that
+    /// just attached reads Connected, never Disconnected).
     /// </summary>
-    internal ConnectionState State => _state;
+    internal ConnectionState State =>
+        Volatile.Read(ref _connecting) is not null && _state == ConnectionState.Disconnected ? ConnectionState.Connecting : _state;
 
     /// <summary>True while a controller is linked (connected or stopped).</summary>
     internal bool IsConnected => State is ConnectionState.Connected or ConnectionState.Stopped;
@@ -31,8 +34,8 @@ internal sealed partial class OnlineSession
     /// </summary>
     internal async Task ConnectAsync(string host, int port, TimeSpan timeout, CancellationToken cancellationToken)
     {
-        // Two trips into the loop: one to begin (Connecting, this link's reports held from now on), one to attach or give up.
-        Connection link = await AskAsync(BeginConnecting).ConfigureAwait(false);
+        // One trip into the loop, to attach: the connection is claimed here (its reports are held from then on).
+        Connection link = Claim();
         IDeviceDriver driver = link.Driver;
         DeviceHandshake handshake;
         try
@@ -41,14 +44,9 @@ internal sealed partial class OnlineSession
         }
         catch
         {
+            // Its held reports go with it: a report of a link that is neither current nor claimed is ignored.
+            Interlocked.CompareExchange(ref _connecting, null, link);
             await driver.DisposeAsync().ConfigureAwait(false);
-            await AskAsync(() =>
-            {
-                _state = ConnectionState.Disconnected;
-                _connecting = null;
-                _held = [];
-                return true;
-            }).ConfigureAwait(false);
             throw;
         }
         string? refusal = await AskAsync(() => Attach(link, handshake)).ConfigureAwait(false);
@@ -59,21 +57,33 @@ internal sealed partial class OnlineSession
         }
     }
 
-    /// <summary>Starts a connection (on the loop): a new driver and its link, whose reports are held until it is attached.</summary>
-    private Connection BeginConnecting()
+    /// <summary>
+    /// Starts a connection on the caller's thread: a new driver and its link, claimed as <see cref="_connecting"/> when no other
+    /// connection is claimed and the robot is disconnected (the claim comes first: a connection that attaches clears its claim
+    /// only after it became Connected, so a second caller either finds the claim taken or reads Connected).
+    /// </summary>
+    private Connection Claim()
     {
+        ConnectionState seen = State;
         if (_disposed)
         {
             throw Disposed("connect");
         }
-        if (_state != ConnectionState.Disconnected)
+        if (seen == ConnectionState.Disconnected)
         {
-            throw new InvalidOperationException($"The robot is already {_state.ToString().ToLowerInvariant()}; call Disconnect first.");
+            var link = new Connection(this, _driverFactory());
+            if (Interlocked.CompareExchange(ref _connecting, link, null) is null)
+            {
+                if (_state == ConnectionState.Disconnected)
+                {
+                    return link;
+                }
+                Volatile.Write(ref _connecting, null);
+            }
+            seen = State;
+            _ = link.Driver.DisposeAsync().AsTask();   // never connected: nothing to wait for
         }
-        var link = new Connection(this, _driverFactory());
-        _state = ConnectionState.Connecting;
-        _connecting = link;
-        return link;
+        throw new InvalidOperationException($"The robot is already {seen.ToString().ToLowerInvariant()}; call Disconnect first.");
     }
 
     /// <summary>What <see cref="Attach"/> returns when the robot was disposed during the handshake.</summary>
@@ -85,12 +95,10 @@ internal sealed partial class OnlineSession
     /// </summary>
     private string? Attach(Connection link, DeviceHandshake handshake)
     {
-        List<(Action Handle, bool IsMotion)> held = _held;
-        _held = [];
-        _connecting = null;
-        _state = ConnectionState.Disconnected;
+        List<(Action Handle, bool IsMotion)> held = link.Held;
         if (_disposed)
         {
+            Volatile.Write(ref _connecting, null);
             return DisposedRefusal;   // disposed during the handshake: the robot stays disconnected, nothing changes
         }
         string? refusal = null;
@@ -101,6 +109,7 @@ internal sealed partial class OnlineSession
         });
         if (refusal is not null)
         {
+            Volatile.Write(ref _connecting, null);
             return refusal;
         }
         _state = ConnectionState.Connected;
@@ -109,6 +118,7 @@ internal sealed partial class OnlineSession
         _failure = null;
         _liveOnLink = false;
         _link = link;
+        Volatile.Write(ref _connecting, null);   // after Connected: a second ConnectAsync finds the claim taken or reads Connected
         _lastProgress = _time.GetTimestamp();
         StartWatchdog(link);
         Log(LogLevel.INFO, $"Connected to {_host.Brand} robot \"{_host.Name}\" on {link.Driver.RemoteAddress} (driver {handshake.Version}).");

@@ -3,7 +3,7 @@ namespace Machina;
 internal sealed partial class OnlineSession
 {
     /// <summary>Set once the robot is disposed: the session refuses everything from then on, and a connect under way ends disconnected.</summary>
-    private bool _disposed;
+    private volatile bool _disposed;
 
     /// <summary>
     /// Disposes the session for good: closes the link, fails a waiting call with <see cref="ObjectDisposedException"/>, stops the

@@ -2,14 +2,12 @@ namespace Machina;
 
 internal sealed partial class OnlineSession
 {
-    /// <summary>The connection being set up (its handshake is under way), or null.</summary>
-    private Connection? _connecting;
-
     /// <summary>
-    /// Reports of <see cref="_connecting"/> that arrived before it became current, in order: handled once it is. Of the live
-    /// poses only the latest is kept (<c>IsMotion</c>): the robot is where the last one says.
+    /// The connection being set up (its handshake is under way), or null: claimed by <see cref="ConnectAsync"/> on the caller's
+    /// thread (compare-and-swap, so one at a time), cleared on the loop when it attaches or is refused, or by the caller when its
+    /// handshake fails.
     /// </summary>
-    private List<(Action Handle, bool IsMotion)> _held = [];
+    private Connection? _connecting;
 
     /// <summary>
     /// One connection: posts a driver's reports to the session's loop as messages. There, a report of the current link is
@@ -19,6 +17,12 @@ internal sealed partial class OnlineSession
     private sealed class Connection(OnlineSession session, IDeviceDriver driver) : IDeviceListener
     {
         internal IDeviceDriver Driver { get; } = driver;
+
+        /// <summary>
+        /// Its reports that arrived while it was being connected, in order (on the loop only): handled once it is current. Of the
+        /// live poses only the latest is kept (<c>IsMotion</c>): the robot is where the last one says.
+        /// </summary>
+        internal List<(Action Handle, bool IsMotion)> Held { get; } = [];
 
         // The driver reports the id on the wire; the session maps it to an action (held while connecting, mapped once current).
         public void OnAcknowledged(int id) => OnAcknowledged(id, null);
@@ -59,13 +63,13 @@ internal sealed partial class OnlineSession
         {
             handle();
         }
-        else if (ReferenceEquals(_connecting, link))
+        else if (ReferenceEquals(Volatile.Read(ref _connecting), link))
         {
             if (isMotion)
             {
-                _held.RemoveAll(static h => h.IsMotion);
+                link.Held.RemoveAll(static h => h.IsMotion);
             }
-            _held.Add((handle, isMotion));
+            link.Held.Add((handle, isMotion));
         }
     }
 }

@@ -64,15 +64,7 @@ internal sealed class PlainProgramScenario(RobotType brand) : Scenario
             bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
             TimeSpan connect = System.Diagnostics.Stopwatch.GetElapsedTime(connectStart);
             Dictionary<string, double>? threadsConnected = byThread ? ThreadCpu.Read() : null;
-            bot.SpeedTo(200);
-            Vector right = new(1, 0, 0), left = new(-1, 0, 0);
-            for (int i = 0; i < size; i++)
-            {
-                bot.Move((i & 1) == 0 ? right : left);
-            }
-            // Generous: 1 ms per action plus a minute, so a stalled link fails the scenario instead of hanging the harness.
-            using var timeout = new CancellationTokenSource(TimeSpan.FromMinutes(1) + TimeSpan.FromMilliseconds(size));
-            bot.WaitForCompletionAsync(timeout.Token).GetAwaiter().GetResult();
+            Stream(bot, size);
             if (threadsBefore is not null && threadsConnected is not null)
             {
                 Console.Error.WriteLine($"{Name}: connect {connect.TotalMilliseconds:0} ms, processor time by thread while connecting: "
@@ -80,6 +72,20 @@ internal sealed class PlainProgramScenario(RobotType brand) : Scenario
             }
             return null;
         };
+    }
+
+    /// <summary>The program's body on a connected robot: <c>SpeedTo(200)</c>, <paramref name="size"/> moves of ±1 mm, waiting for completion.</summary>
+    internal static void Stream(Robot bot, int size)
+    {
+        bot.SpeedTo(200);
+        Vector right = new(1, 0, 0), left = new(-1, 0, 0);
+        for (int i = 0; i < size; i++)
+        {
+            bot.Move((i & 1) == 0 ? right : left);
+        }
+        // Generous: 1 ms per action plus a minute, so a stalled link fails the scenario instead of hanging the harness.
+        using var timeout = new CancellationTokenSource(TimeSpan.FromMinutes(1) + TimeSpan.FromMilliseconds(size));
+        bot.WaitForCompletionAsync(timeout.Token).GetAwaiter().GetResult();
     }
 
     public override void Cleanup()
