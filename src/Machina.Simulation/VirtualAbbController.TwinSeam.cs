@@ -34,8 +34,14 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         public byte[]? Acknowledgement { get; set; }
     }
 
+    private readonly ConnectionLog _connections;
+
     bool IRapidSocketSeam.Accepted(int localPort, Socket connection, CancellationToken task)
     {
+        if (localPort == Port || localPort == MonitorPort)
+        {
+            _connections.Connected(localPort == Port ? "driver" : "monitor", connection, connection);
+        }
         if (localPort != Port)
         {
             if (localPort == MonitorPort)
@@ -49,6 +55,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
         if (IsRestarting)
         {
+            _connections.Left(connection);
             connection.Dispose();
             return false; // the program a restart stops greets no one: the host connects again to the one that starts
         }
@@ -73,6 +80,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         client.Client = connection;
         if (!AttachClient(client))
         {
+            _connections.Left(connection);
             return false;
         }
         var inbox = new RapidInbox();
@@ -80,12 +88,13 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         {
             _driverInbox = inbox;
         }
-        Run(token => ReadDriverAsync(connection, inbox, token));
+        RunOnThread(token => ReadDriver(connection, inbox, token));
         return true;
     }
 
     void IRapidSocketSeam.Closed(Socket connection, CancellationToken task)
     {
+        _connections.Left(connection);
         TwinRequest[] ran;
         lock (Gate)
         {
@@ -120,16 +129,18 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     /// <summary>
     /// Reads the driver connection as data arrives, as a controller's network stack does: each statement is counted received
     /// (and buffered until its acknowledgement) on arrival, and the text waits in <paramref name="inbox"/> until the driver's
-    /// SocketReceive takes it, 80 characters at a time. When the host closes, what arrived stays readable.
+    /// SocketReceive takes it, 80 characters at a time. When the host closes, what arrived stays readable. On a thread of its own,
+    /// blocked in the socket's receive (the controller's stop closes the socket).
     /// </summary>
-    private async Task ReadDriverAsync(Socket connection, RapidInbox inbox, CancellationToken token)
+    private void ReadDriver(Socket connection, RapidInbox inbox, CancellationToken token)
     {
         var buffer = new byte[4096];
+        using CancellationTokenRegistration stop = token.Register(static s => ((Socket)s!).Dispose(), connection);
         try
         {
             while (true)
             {
-                int n = await connection.ReceiveAsync(buffer, SocketFlags.None, token).ConfigureAwait(false);
+                int n = connection.Receive(buffer, SocketFlags.None);
                 if (n == 0)
                 {
                     return;

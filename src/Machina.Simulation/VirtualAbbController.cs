@@ -33,6 +33,7 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
         })
     {
         _options = options;
+        _connections = new ConnectionLog(options.ConnectionSeen);
     }
 
     /// <summary>TCP port of the driver (requests and acknowledgements); 0 until started.</summary>
@@ -43,7 +44,7 @@ public sealed partial class VirtualAbbController : VirtualController<VirtualAbbS
 
     private protected override Task ListenAsync(CancellationToken token)
     {
-        (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
+        (_driverListener, _monitorListener) = LoopbackPorts.BindPair(_options.ListenAddress, _options.ListenPort);
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
         StartTwin(_driverListener, _monitorListener);

@@ -123,6 +123,19 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     }
 
     /// <summary>
+    /// Runs a blocking loop on a thread of its own until the controller stops (<see cref="StopAsync"/> waits for it): a socket's
+    /// reader that sleeps in the kernel's receive, where an asynchronous read wakes the thread pool, whose workers spin.
+    /// </summary>
+    private protected void RunOnThread(Action<CancellationToken> loop)
+    {
+        var token = _stopping!.Token;
+        lock (Gate)
+        {
+            _loops.Add(Task.Factory.StartNew(() => loop(token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default));
+        }
+    }
+
+    /// <summary>
     /// Makes <paramref name="client"/> the driver connection, under the send lock (so the progress its greeting reports matches
     /// the acknowledgements sent). False when the fault plan refuses it (it is closed then).
     /// </summary>

@@ -45,6 +45,22 @@ public abstract record VirtualControllerOptions
     /// <summary>Faults the controller injects by itself, from a seed (connection drops, delays, garbage, restarts…). Default: none.</summary>
     public VirtualFaults Faults { get; init; } = new();
 
+    /// <summary>
+    /// Where a controller whose driver has a monitor channel (ABB, KUKA) listens: this address (default 127.0.0.1), at
+    /// <see cref="ListenPort"/> and the next port. The command line's <c>machina sim --bind --port</c> listens here itself rather
+    /// than through a relay, whose extra hop cost more processor time per streamed action than the twin's own work (issue 45).
+    /// </summary>
+    internal System.Net.IPAddress ListenAddress { get; init; } = System.Net.IPAddress.Loopback;
+
+    /// <summary>The driver's port at <see cref="ListenAddress"/> (the monitor's is the next); 0, the default: the system chooses.</summary>
+    internal int ListenPort { get; init; }
+
+    /// <summary>
+    /// Told of each host that connects to a driver or monitor port and of its leaving, with the port's name ("driver",
+    /// "monitor") and the host's address and port; null (the default) tells nobody. Called on the controller's threads.
+    /// </summary>
+    internal Action<string, string, bool>? ConnectionSeen { get; init; }
+
     /// <summary>Throws <see cref="ArgumentException"/> naming the first setting that cannot work.</summary>
     internal virtual void Validate()
     {
@@ -61,6 +77,11 @@ public abstract record VirtualControllerOptions
             throw new ArgumentException("RequestLogCapacity cannot be negative.", nameof(RequestLogCapacity));
         }
         ArgumentNullException.ThrowIfNull(TimeProvider);
+        ArgumentNullException.ThrowIfNull(ListenAddress);
+        if (ListenPort is < 0 or >= System.Net.IPEndPoint.MaxPort)
+        {
+            throw new ArgumentException("ListenPort must be 0 (the system chooses) or a port below 65535 (the monitor takes the next).", nameof(ListenPort));
+        }
         ArgumentNullException.ThrowIfNull(Faults);
         Faults.Validate();
         if (InitialPosition is { IsFinite: false } || !InitialJoints.IsFinite)

@@ -7,7 +7,8 @@ namespace Machina.Simulation;
 /// </summary>
 public static class VirtualControllerRegistry
 {
-    private sealed record Entry(BrandDefinition Brand, Func<VirtualControllerOptions> Defaults, Func<VirtualControllerOptions, RunningVirtualController> Create);
+    private sealed record Entry(BrandDefinition Brand, Func<VirtualControllerOptions> Defaults, Func<VirtualControllerOptions, RunningVirtualController> Create,
+        bool ListensWhereAsked = false);
 
     private static readonly Entry[] Entries =
     [
@@ -15,7 +16,7 @@ public static class VirtualControllerRegistry
         {
             var c = new VirtualAbbController((VirtualAbbControllerOptions)o);
             return new Running<VirtualAbbState>(AbbBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "malformed");
-        }),
+        }, ListensWhereAsked: true),
         new(UrBrand.Definition, () => new VirtualUrControllerOptions(), o =>
         {
             var options = (VirtualUrControllerOptions)o;
@@ -33,7 +34,7 @@ public static class VirtualControllerRegistry
         {
             var c = new VirtualKukaController((VirtualKukaControllerOptions)o);
             return new Running<VirtualKukaState>(KukaBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "refused");
-        }),
+        }, ListensWhereAsked: true),
     ];
 
     /// <summary>The brands that have a virtual controller, in the order of Machina's brand list.</summary>
@@ -44,6 +45,13 @@ public static class VirtualControllerRegistry
 
     /// <summary>The brand with a virtual controller named <paramref name="name"/> (e.g. "abb", "UR"; any letter case), or null.</summary>
     public static RobotType? Find(string name) => Array.Find(Entries, e => e.Brand.IsNamed(name))?.Brand.Type;
+
+    /// <summary>
+    /// True when the brand's controller listens at its options' <see cref="VirtualControllerOptions.ListenAddress"/> and
+    /// <see cref="VirtualControllerOptions.ListenPort"/> and tells <see cref="VirtualControllerOptions.ConnectionSeen"/> (its ports
+    /// are the driver's and the next); false: it listens on 127.0.0.1 at ports the system chooses.
+    /// </summary>
+    internal static bool ListensWhereAsked(RobotType brand) => EntryFor(brand).ListensWhereAsked;
 
     /// <summary>The port Machina's driver listens on on a real controller of <paramref name="brand"/> (UR: the robot's script port), for a default.</summary>
     public static int DriverPort(RobotType brand) => EntryFor(brand).Brand.DefaultPort;

@@ -21,6 +21,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// </summary>
     private readonly List<TwinAction> _held = [];
     private CancellationToken _twinToken;
+    private readonly ConnectionLog _connections;
     private byte[]? _heldTwinAcknowledgement;
 
     /// <summary>An action the driver channel received, held until the driver settles it.</summary>
@@ -65,7 +66,16 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// <summary>True while the driver's EthernetKRL channel has a client (false once it saw a client leave).</summary>
     internal bool DriverChannelConnected => Twin?.EkiConnected(DriverChannel) == true;
 
-    bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client) => !IsDriver(channel) || AttachClient(client);
+    bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client)
+    {
+        _connections.Connected(IsDriver(channel) ? "driver" : "monitor", client, client.Client);
+        bool kept = !IsDriver(channel) || AttachClient(client);
+        if (!kept)
+        {
+            _connections.Left(client);
+        }
+        return kept;
+    }
 
     void IEkiSeam.Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
     {
@@ -197,6 +207,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
 
     void IEkiSeam.Closed(EkiChannel channel, TcpClient client)
     {
+        _connections.Left(client);
         if (IsDriver(channel))
         {
             DropClient(client);

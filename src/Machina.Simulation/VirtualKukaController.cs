@@ -37,6 +37,7 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
         })
     {
         _options = options;
+        _connections = new ConnectionLog(options.ConnectionSeen);
     }
 
     /// <summary>TCP port of the driver channel (batches, state and acknowledgements); 0 until started.</summary>
@@ -81,7 +82,7 @@ public sealed partial class VirtualKukaController : VirtualController<VirtualKuk
 
     private protected override Task ListenAsync(CancellationToken token)
     {
-        (_driverListener, _monitorListener) = LoopbackPorts.BindPair();
+        (_driverListener, _monitorListener) = LoopbackPorts.BindPair(_options.ListenAddress, _options.ListenPort);
         Port = ((IPEndPoint)_driverListener.LocalEndpoint).Port;
         MonitorPort = Port + 1;
         StartTwin(_driverListener, _monitorListener, token);

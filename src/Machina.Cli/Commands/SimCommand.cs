@@ -103,23 +103,48 @@ internal static partial class SimCommand
             }
         }
 
-        await using RunningController controller = await VirtualControllers.StartAsync(brand, new VirtualControllerOptions(speed, model, urLayout, Home(args, context)), context.Cancellation).ConfigureAwait(false);
+        // ABB and KUKA listen where asked themselves; a UR's ports are relayed (its layout is not the compact one of its controller).
+        bool direct = !urLayout && Machina.Simulation.VirtualControllerRegistry.ListensWhereAsked(brand);
+        bool stopping = false;
+        var settings = new VirtualControllerOptions(speed, model, urLayout, Home(args, context))
+        {
+            Listen = direct ? (bind, port) : null,
+            ConnectionSeen = (name, who, connected) =>
+            {
+                if (connected || !Volatile.Read(ref stopping))
+                {
+                    Log($"{who} {(connected ? "connected" : "disconnected")} ({name})");
+                }
+            },
+        };
+        RunningController started;
+        try
+        {
+            started = await VirtualControllers.StartAsync(brand, settings, context.Cancellation).ConfigureAwait(false);
+        }
+        catch (System.Net.Sockets.SocketException ex)
+        {
+            throw TcpRelay.ListenError(ex, bind, port, [0, 1]);
+        }
+        await using RunningController controller = started;
         RelayRoute[] routes = urLayout ? UrRoutes(controller) : controller.CompactRoutes;
-        await using TcpRelay relay = TcpRelay.Start(bind, port, routes, Log);
+        await using TcpRelay? relay = direct ? null : TcpRelay.Start(bind, port, routes, Log);
+        int firstPort = relay?.Port ?? controller.Port;
+        int[] ports = relay?.Ports ?? controller.Ports;
         await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
         // RWS is named after the controller's first line, which says "listening" and where (scripts and tests read it).
         var rwsLines = new List<string>();
         await using IAsyncDisposable? rws = StartRws(controller, bind, () => args.Port("--rws-port", 0, allowZero: true), Log, rwsLines.Add);
-        Log($"Virtual {brand} controller listening on {bind}:{relay.Port} {Ports(routes, relay.Ports)}" +
+        Log($"Virtual {brand} controller listening on {bind}:{firstPort} {Ports(routes, ports)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         rwsLines.ForEach(Log);
-        Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {relay.Port}, e.g.: " +
-            $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {relay.Port}");
+        Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {firstPort}, e.g.: " +
+            $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {firstPort}");
         if (urLayout)
         {
             Log("The arm is powered off, as on URSim: send \"power on\" and \"brake release\" to the dashboard (29999) before a program runs.");
         }
-        context.Ready?.Invoke($"{bind}:{relay.Port}");
+        context.Ready?.Invoke($"{bind}:{firstPort}");
         try
         {
             await Task.Delay(Timeout.Infinite, context.Cancellation).ConfigureAwait(false);
@@ -128,6 +153,7 @@ internal static partial class SimCommand
         {
         }
         activity.Flush();
+        Volatile.Write(ref stopping, true); // the hosts the controller's stop disconnects are not told, as the relay's were not
         Log($"Stopping: {controller.Summary()}.");
         return ExitCodes.Ok;
     }

@@ -4,8 +4,8 @@ using System.Net.Sockets;
 namespace Machina.Cli.Simulation;
 
 /// <summary>
-/// Makes a virtual controller reachable at the address and port a user chose (<c>machina sim --bind --port</c>): listens there and
-/// passes bytes both ways to the controller on 127.0.0.1, and logs each connection (what the controller does is told by
+/// Makes a virtual controller reachable at the address and port a user chose (<c>machina sim --bind --port</c>) when it cannot
+/// listen there itself (UR, RWS; ABB and KUKA do, without this hop): listens there and passes bytes both ways to the controller on 127.0.0.1, and logs each connection (what the controller does is told by
 /// <see cref="ControllerActivity"/> from the controller itself, not from the bytes: a UR driver script is not a list of requests).
 /// </summary>
 internal sealed class TcpRelay : IAsyncDisposable
@@ -79,12 +79,18 @@ internal sealed class TcpRelay : IAsyncDisposable
                 {
                     continue; // the system's port was free but the next one was not: try another pair
                 }
-                string ports = string.Join(" and ", offsets.Select(o => (port + o).ToString(System.Globalization.CultureInfo.InvariantCulture)));
-                throw new CliException(ex.SocketErrorCode == SocketError.AddressAlreadyInUse
-                    ? $"Port {ports} on {address} is already in use (another controller or program?); choose another with --port."
-                    : $"Cannot listen on {address} port {ports}: {ex.Message}. Use an address of this computer with --bind (127.0.0.1 by default).");
+                throw ListenError(ex, address, port, offsets);
             }
         }
+    }
+
+    /// <summary>What the command line says when <paramref name="address"/> cannot be listened on at <paramref name="port"/> plus each of <paramref name="offsets"/>.</summary>
+    internal static CliException ListenError(SocketException ex, IPAddress address, int port, IEnumerable<int> offsets)
+    {
+        string ports = string.Join(" and ", offsets.Select(o => (port + o).ToString(System.Globalization.CultureInfo.InvariantCulture)));
+        return new CliException(ex.SocketErrorCode == SocketError.AddressAlreadyInUse
+            ? $"Port {ports} on {address} is already in use (another controller or program?); choose another with --port."
+            : $"Cannot listen on {address} port {ports}: {ex.Message}. Use an address of this computer with --bind (127.0.0.1 by default).");
     }
 
     /// <summary>
@@ -173,6 +179,9 @@ internal sealed class TcpRelay : IAsyncDisposable
         {
             while (true)
             {
+                // A client that writes with Nagle on (ur_rtde) waits for the acknowledgement of its last small write before the
+                // next: acknowledge at once, as the controller's own socket does, not after the kernel's delayed-ACK pause.
+                Machina.Simulation.PromptAcknowledgement.BeforeRead(from.Socket);
                 int n = await from.ReadAsync(buffer, token).ConfigureAwait(false);
                 if (n == 0)
                 {

@@ -10,7 +10,17 @@ namespace Machina.Cli.Simulation;
 /// starts powered off, as URSim does (a program runs after <c>power on</c> and <c>brake release</c>).
 /// </param>
 /// <param name="AbbHome">An ABB's mass memory (RAPID's HOME:, RWS's $HOME), or null for a new temporary folder.</param>
-internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false, string? AbbHome = null);
+internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false, string? AbbHome = null)
+{
+    /// <summary>
+    /// Where it listens itself, for a brand whose controller can (<see cref="VirtualControllerRegistry.ListensWhereAsked"/>): the
+    /// address and the first port (0: the system chooses); null: on 127.0.0.1 at ports the system chooses.
+    /// </summary>
+    public (System.Net.IPAddress Address, int Port)? Listen { get; init; }
+
+    /// <summary>Told of each host that connects to a port (its name, the host, true) and leaves it (false), where it listens itself.</summary>
+    public Action<string, string, bool>? ConnectionSeen { get; init; }
+}
 
 /// <summary>A virtual controller listening on 127.0.0.1, until disposed: one of <see cref="VirtualControllerRegistry"/>, as the command line shows it.</summary>
 internal sealed class RunningController(RunningVirtualController controller) : IAsyncDisposable
@@ -101,6 +111,10 @@ internal static class VirtualControllers
         if (options.Model is RobotModel model)
         {
             settings = settings with { Model = model };
+        }
+        if (options.Listen is { } listen)
+        {
+            settings = settings with { ListenAddress = listen.Address, ListenPort = listen.Port, ConnectionSeen = options.ConnectionSeen };
         }
         return settings;
     }

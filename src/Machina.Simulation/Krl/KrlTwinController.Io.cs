@@ -5,14 +5,17 @@ namespace Machina.Simulation.Krl;
 /// <summary>Outputs, signals and the inputs a WAIT FOR waits on.</summary>
 internal sealed partial class KrlTwinController
 {
-    private readonly SemaphoreSlim _inputsChanged = new(0);
-    private long _inputsVersion;
-
     /// <summary>The program line the robot interpreter runs now (traces of outputs carry it).</summary>
     public int Line { get; set; }
 
+    /// <summary>
+    /// The controller's IO as the twins share it: here what a WAIT FOR sleeps on (its change count and wake-up). The signals'
+    /// values are the system variables ($IN, $OUT, $ANIN, $ANOUT, $FLAG), which KRL reads and writes as arrays.
+    /// </summary>
+    public TwinIo Io { get; } = new();
+
     /// <summary>How many times inputs, flags or channels changed (a WAIT FOR compares it before it sleeps).</summary>
-    public long InputsVersion => Interlocked.Read(ref _inputsVersion);
+    public long InputsVersion => Io.Version;
 
     /// <summary>True while something outside the program can change what a WAIT FOR waits on (an open EthernetKRL channel).</summary>
     public bool HasExternalInputs => EkiOpenChannels > 0;
@@ -20,8 +23,7 @@ internal sealed partial class KrlTwinController
     /// <summary>Tells waiting programs that an input, a flag or a channel changed.</summary>
     public void InputsChanged()
     {
-        Interlocked.Increment(ref _inputsVersion);
-        _inputsChanged.Release();
+        Io.Changed();
         Arm.Wake(); // a motion under way serves the interrupts whose condition this may have made TRUE
     }
 
@@ -46,7 +48,7 @@ internal sealed partial class KrlTwinController
                 return;
             }
             long started = Options.Time.GetTimestamp();
-            _inputsChanged.Wait(timing ? InterpreterCycle : TimeSpan.FromMilliseconds(100), cancellation);
+            Io.WaitForChange(version, timing ? InterpreterCycle : TimeSpan.FromMilliseconds(100), cancellation);
             if (timing)
             {
                 if (!Clock.RealTime)

@@ -9,9 +9,12 @@ namespace Machina.Simulation.Krl;
 internal sealed partial class KrlTwinController
 {
     /// <summary>
-    /// Calls <paramref name="routine"/> (a subprogram without parameters) once every <paramref name="cycle"/> of the controller's
-    /// time until <paramref name="cancellation"/>, counting the timers up before each call. An error stops the submit interpreter
-    /// with the controller's message in the logbook; the robot program runs on.
+    /// Calls <paramref name="routine"/> (a subprogram without parameters) once every <paramref name="cycle"/> of the wall clock
+    /// until <paramref name="cancellation"/>, counting the timers up before each call. The cycle is the controller's, not the
+    /// robot's: a twin running faster than real time runs its submit interpreter no more often (at 1000× a cycle of the scaled
+    /// clock was 4 µs, and the monitor it calls sent a report in nearly every one), as a RAPID background task's waits are on
+    /// the wall clock. Between two cycles the thread sleeps in the kernel. An error stops the submit interpreter with the
+    /// controller's message in the logbook; the robot program runs on.
     /// </summary>
     public void RunSubmit(string routine, TimeSpan cycle, CancellationToken cancellation)
     {
@@ -23,13 +26,15 @@ internal sealed partial class KrlTwinController
         }
         var machine = new KrlMachine(this, cancellation);
         using SubmitRun running = SubmitRunning();
+        var sleep = new TwinSleep();
+        TimeProvider wall = Options.Time is VirtualUrScaledTime scaled ? scaled.Inner : Options.Time;
         try
         {
             while (!cancellation.IsCancellationRequested)
             {
                 CountTimers();
                 machine.Run(found);
-                TwinWait.Delay(cycle, Options.Time, cancellation);
+                sleep.Wait(wall, cycle, cancellation);
             }
         }
         catch (KrlRuntimeException ex)

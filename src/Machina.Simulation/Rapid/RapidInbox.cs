@@ -11,7 +11,9 @@ internal sealed class RapidInbox
 {
     private readonly object _gate = new();
     private readonly StringBuilder _text = new();
-    private TaskCompletionSource _arrived = new(TaskCreationOptions.RunContinuationsAsynchronously);
+    // Continuations run on the thread that adds (outside the lock): the task's only waiter is a twin's thread blocked in TwinWait,
+    // which that wakes directly; run asynchronously, each arrival woke the thread pool, whose workers spin (issue 45).
+    private TaskCompletionSource _arrived = new();
     private bool _closed;
 
     /// <summary>Adds what arrived on the connection.</summary>
@@ -60,7 +62,7 @@ internal sealed class RapidInbox
             }
             if (_arrived.Task.IsCompleted)
             {
-                _arrived = new(TaskCreationOptions.RunContinuationsAsynchronously);
+                _arrived = new();
             }
             arrival = _arrived.Task;
             return null;

@@ -21,6 +21,31 @@ public class VirtualAbbControllerTests
     }
 
     [Fact]
+    public async Task ListenPort_ListensThereItself_TellsEachHostThatConnectsAndLeaves()
+    {
+        var seen = new System.Collections.Concurrent.ConcurrentQueue<string>();
+        (TcpListener free, TcpListener next) = LoopbackPorts.BindPair();
+        int port = ((System.Net.IPEndPoint)free.LocalEndpoint).Port;
+        free.Stop();
+        next.Stop();
+        await using var controller = new VirtualAbbController(Instant with
+        {
+            ListenAddress = System.Net.IPAddress.Loopback,
+            ListenPort = port,
+            ConnectionSeen = (name, who, connected) => seen.Enqueue($"{name} {(connected ? "connected" : "left")} {who.StartsWith("127.0.0.1:", StringComparison.Ordinal)}"),
+        });
+        await controller.StartAsync();
+        Assert.Equal((port, port + 1), (controller.Port, controller.MonitorPort));
+        using (var client = await RawAbbClient.ConnectAsync(port))
+        {
+            await client.ReadHandshakeAsync();
+        }
+
+        await RawAbbClient.WaitUntilAsync(() => seen.Count >= 2, "the host to be seen leaving");
+        Assert.Equal(["driver connected True", "driver left True"], seen.ToArray());
+    }
+
+    [Fact]
     public async Task Fault_CloseAfterAcknowledgements_ClosesSocketAndAcceptsNewClient()
     {
         await using var controller = new VirtualAbbController(Instant);

@@ -27,6 +27,55 @@ public class VirtualKukaControllerTests
     }
 
     [Fact]
+    public async Task SpeedFactor1000_TheSubmitInterpreterCyclesOnTheWallClock_MonitorReportsAtMostEvery4Ms()
+    {
+        // At 1000x a cycle of the scaled clock was 4 µs: the monitor sent a report in nearly every one (thousands a second).
+        await using var controller = await KukaTestSupport.StartKukaAsync(new VirtualKukaControllerOptions { SpeedFactor = 1000 });
+        using var monitor = await KukaTestSupport.ConnectRawAsync(controller.MonitorPort);
+        await Eventually.TrueAsync(() => controller.MonitorReportsSent > 0, "the first report", Timeout);
+        int first = controller.MonitorReportsSent;
+        var watch = System.Diagnostics.Stopwatch.StartNew();
+        await Task.Delay(400);
+        int reports = controller.MonitorReportsSent - first;
+        double allowed = watch.Elapsed.TotalMilliseconds / KukaSubmitCycleMs + 2;
+
+        Assert.True(reports <= allowed, $"{reports} reports in {watch.Elapsed.TotalMilliseconds:0} ms (at most {allowed:0})");
+    }
+
+    private const double KukaSubmitCycleMs = 4;
+
+    [Fact]
+    public async Task ListenPort_ListensThereItself_TellsEachHostThatConnectsAndLeaves()
+    {
+        var seen = new System.Collections.Concurrent.ConcurrentQueue<string>();
+        int port = FreePortPair();
+        await using var controller = await KukaTestSupport.StartKukaAsync(new VirtualKukaControllerOptions
+        {
+            ListenAddress = IPAddress.Loopback,
+            ListenPort = port,
+            ConnectionSeen = (name, who, connected) => seen.Enqueue($"{name} {(connected ? "connected" : "left")} {who.StartsWith("127.0.0.1:", StringComparison.Ordinal)}"),
+        });
+        Assert.Equal((port, port + 1), (controller.Port, controller.MonitorPort));
+        using (var client = await KukaTestSupport.ConnectRawAsync(port))
+        {
+            await KukaTestSupport.ReadElementAsync(client, new KukaXmlReader());
+        }
+
+        await Eventually.TrueAsync(() => seen.Count >= 2, "the host to be seen leaving", Timeout);
+        Assert.Equal(["driver connected True", "driver left True"], seen.ToArray());
+    }
+
+    /// <summary>A port P with P + 1 free too, as the system chooses them (released before use: another program could take them, rarely).</summary>
+    private static int FreePortPair()
+    {
+        (TcpListener driver, TcpListener monitor) = LoopbackPorts.BindPair();
+        int port = ((IPEndPoint)driver.LocalEndpoint).Port;
+        driver.Stop();
+        monitor.Stop();
+        return port;
+    }
+
+    [Fact]
     public void Options_ImitationOrAnotherDriverVersion_RefusedSayingTheTwinRunsOnlyTheShippedDriver()
     {
         var imitation = Assert.Throws<ArgumentException>(() => new VirtualKukaController(new VirtualKukaControllerOptions { RunsKrl = false }));
