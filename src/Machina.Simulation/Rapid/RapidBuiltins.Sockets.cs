@@ -232,7 +232,9 @@ internal static partial class RapidBuiltins
     {
         CancellationToken cancellation = call.Machine.Task.CancellationToken;
         Twin.TwinWait.For(operation, TimeSpan.FromSeconds(Math.Min(seconds, 86_400)), cancellation);
-        if (operation.IsCanceled)
+        // A controller that stops its tasks cancels them, then closes their sockets: an operation that failed because its
+        // socket closed under a stopping task was stopped, not a program error (the restart logged "socket was closed" at times).
+        if (operation.IsCanceled || (operation.IsFaulted && cancellation.IsCancellationRequested))
         {
             throw new OperationCanceledException("The socket operation was cancelled.");
         }

@@ -213,7 +213,9 @@ public sealed partial class NativeToolTests
         string[] lines = text.Split('\n');
         string lastProgress = lines.LastOrDefault(l => ProgressPattern().IsMatch(l)) ?? "";
         string kept = string.Join('\n', lines.Where(l => !ProgressPattern().IsMatch(l) || ReferenceEquals(l, lastProgress)));
-        return TimeLeftPattern().Replace(RatePattern().Replace(EndpointPattern().Replace(kept, "${1}PORT"), "RATE/s"), "T left");
+        string steady = TimeLeftPattern().Replace(RatePattern().Replace(EndpointPattern().Replace(kept, "${1}PORT"), "RATE/s"), "T left");
+        // Each ABB twin's HOME: is a new temporary folder: its name differs from run to run.
+        return TemporaryHomePattern().Replace(steady, "machina-rapid-home-NAME");
     }
 
     /// <summary>
@@ -224,6 +226,9 @@ public sealed partial class NativeToolTests
     /// </summary>
     private static string[] Sorted(string text) =>
         [.. Steady(text).Split('\n').Where(l => !TimingDependentLinePattern().IsMatch(l)).Order(StringComparer.Ordinal)];
+
+    [GeneratedRegex(@"machina-rapid-home-\w+")]
+    private static partial Regex TemporaryHomePattern();
 
     [GeneratedRegex(@"^\s*(pendant: Machina (client disconnected|driver waiting for a client)|executed  #|\S+ disconnected \((driver|monitor)\))")]
     private static partial Regex TimingDependentLinePattern();
