@@ -166,9 +166,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             }
             Alive(true);
         }
-        // A thread of its own that blocks in the socket's receive: each document wakes it once, where an asynchronous read woke
-        // the thread pool, whose workers spin before they sleep (issue 45: five sched_yield calls per streamed action).
-        return Task.Factory.StartNew(() => Read(client, token), CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+        return Task.Run(() => ReadAsync(client, token), CancellationToken.None);
     }
 
     /// <summary>A splitter that hands each complete document (its values and the flags it sets) to <paramref name="commit"/>.</summary>
@@ -210,10 +208,8 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return splitter;
     }
 
-    private void Read(TcpClient client, CancellationToken token)
+    private async Task ReadAsync(TcpClient client, CancellationToken token)
     {
-        // The channel's stop closes the socket, which ends a receive under way.
-        using CancellationTokenRegistration stop = token.Register(static c => ((TcpClient)c!).Dispose(), client);
         EkiXmlSplitter splitter = Splitter((document, flags) => Commit(client, document, flags));
         EkiRawSplitter? raw = Configuration.RawReceive is { } element ? new EkiRawSplitter(element) : null;
         var bytes = new byte[8192];
@@ -224,7 +220,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             Stream stream = client.GetStream();
             while (true)
             {
-                int n = stream.Read(bytes);
+                int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
                 if (n == 0)
                 {
                     break;
