@@ -131,8 +131,24 @@ internal static partial class SimCommand
         await using TcpRelay? relay = direct ? null : TcpRelay.Start(bind, port, routes, Log);
         int firstPort = relay?.Port ?? controller.Port;
         int[] ports = relay?.Ports ?? controller.Ports;
-        await using ControllerActivity activity = ControllerActivity.Start(controller, Log, context.Time);
-        // RWS is named after the controller's first line, which says "listening" and where (scripts and tests read it).
+        // The first line says "listening" and where (scripts and tests read it). ABB and KUKA listen themselves, so their program
+        // may reach the pendant before that line: what the controller does until then is held and told after it.
+        var held = new List<string>();
+        bool announced = false;
+        void Activity(string line)
+        {
+            lock (held)
+            {
+                if (!announced)
+                {
+                    held.Add(line);
+                    return;
+                }
+            }
+            Log(line);
+        }
+        await using ControllerActivity activity = ControllerActivity.Start(controller, Activity, context.Time);
+        // RWS is named after the controller's first line, which says "listening" and where.
         var rwsLines = new List<string>();
         await using IAsyncDisposable? rws = StartRws(controller, bind, () => args.Port("--rws-port", 0, allowZero: true), Log, rwsLines.Add);
         Log($"Virtual {brand} controller listening on {bind}:{firstPort} {Ports(routes, ports)}" +
@@ -143,6 +159,11 @@ internal static partial class SimCommand
         if (urLayout)
         {
             Log("The arm is powered off, as on URSim: send \"power on\" and \"brake release\" to the dashboard (29999) before a program runs.");
+        }
+        lock (held)
+        {
+            held.ForEach(Log);
+            announced = true;
         }
         context.Ready?.Invoke($"{bind}:{firstPort}");
         try
