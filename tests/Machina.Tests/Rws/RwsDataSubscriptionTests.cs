@@ -37,11 +37,7 @@ public sealed class RwsDataSubscriptionTests : IAsyncLifetime
             """));
         _rws = new RwsTwinServer(_twin);
         _rws.Start();
-        _http = new HttpClient(new SocketsHttpHandler { Credentials = new NetworkCredential("Default User", "robotics"), CookieContainer = _cookies })
-        {
-            BaseAddress = new Uri($"http://127.0.0.1:{_rws.Port}"),
-            Timeout = Limit,
-        };
+        _http = RwsTestClient.For(_rws.Port, _cookies, Limit);
     }
 
     public Task InitializeAsync() => Task.CompletedTask;

@@ -22,11 +22,7 @@ public sealed class RwsFileStoreTests : IAsyncLifetime
         _twin = new RapidTwinController(new RapidTwinOptions { HomeDirectory = Path.Combine(_root.FullName, "home") });
         _rws = new RwsTwinServer(_twin);
         _rws.Start();
-        _http = new HttpClient(new SocketsHttpHandler { Credentials = new NetworkCredential("Default User", "robotics"), CookieContainer = new CookieContainer() })
-        {
-            BaseAddress = new Uri($"http://127.0.0.1:{_rws.Port}"),
-            Timeout = Limit,
-        };
+        _http = RwsTestClient.For(_rws.Port, new CookieContainer(), Limit);
     }
 
     public Task InitializeAsync() => Task.CompletedTask;
