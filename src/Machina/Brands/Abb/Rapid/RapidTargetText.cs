@@ -82,13 +82,17 @@ internal sealed class RapidTargetText
     }
 
     /// <summary>Writes one quaternion number and ", " after it (the last one's separator becomes the closing bracket).</summary>
+    /// <remarks>A unit quaternion's components are at most 1 in size: their 4 decimals always fit the fast digits.</remarks>
     private static int Number(Span<char> text, int at, double value)
     {
-        Span<char> number = stackalloc char[NumAppend.MaxChars];
-        int written = NumAppend.TryWriteScaled(number, value, RapidFacts.QuaternionDecimals);
-        ReadOnlySpan<char> digits = written >= 0 ? number[..written] : NumAppend.Format(value, RapidFacts.QuaternionDecimals);
-        digits.CopyTo(text[at..]);
-        at += digits.Length;
+        int written = NumAppend.TryWriteScaled(text[at..], value, RapidFacts.QuaternionDecimals);
+        if (written < 0)
+        {
+            string general = NumAppend.Format(value, RapidFacts.QuaternionDecimals);
+            general.CopyTo(text[at..]);
+            written = general.Length;
+        }
+        at += written;
         text[at++] = ',';
         text[at++] = ' ';
         return at;
