@@ -243,7 +243,8 @@ public class UrSimRtdeTests
             data = await client.ReadDataAsync();
             Assert.True(++packages < 125 * 15, "the base never turned at 0.4 rad/s");
         }
-        while (((double[])data["actual_qd"])[0] < 0.39999); // on the cruise (a sample across a ramp's end reads a little less)
+        // On the cruise: a sample across a ramp's end reads a little less (0.399997) and is not yet the cruise's speed.
+        while (Math.Round(((double[])data["actual_qd"])[0], 6) < 0.4);
 
         double[] qd = (double[])data["actual_qd"], tcp = (double[])data["actual_TCP_pose"], speed = (double[])data["actual_TCP_speed"];
         Assert.Equal(new double[] { 0.4, 0, 0, 0, 0, 0 }, qd.Select(v => Math.Round(v, 6)));
