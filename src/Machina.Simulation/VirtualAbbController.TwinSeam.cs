@@ -53,7 +53,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
             }
             return true;
         }
-        if (IsRestarting)
+        if (IsRestarting || task.IsCancellationRequested)
         {
             _connections.Left(connection);
             connection.Dispose();

@@ -85,6 +85,12 @@ internal static partial class RapidBuiltins
                     throw call.Error(RapidErrorNumbers.SockClosed, "SocketAccept: the socket was closed");
                 }
                 accepted = accept.Result;
+                if (call.Machine.Task.CancellationToken.IsCancellationRequested)
+                {
+                    // Accepted as the task was stopped: the stopped program serves no one, the client sees the link close.
+                    accepted.Dispose();
+                    throw new OperationCanceledException("SocketAccept: the task was stopped.");
+                }
             }
             while (seam is not null && !seam.Accepted(((IPEndPoint)listener.LocalEndpoint).Port, accepted, call.Machine.Task.CancellationToken));
             client.Connection = accepted;

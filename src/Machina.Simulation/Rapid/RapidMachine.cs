@@ -125,6 +125,9 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// </summary>
     private RapidFlow ExecuteAfterTraps(RapidStmt statement, RapidFrame frame)
     {
+        // A stopped task stops at its next statement, as a controller's stop does at the current instruction: a task that ran on
+        // after its stop accepted a client a restart had already refused, and greeted it (CI, the ABB restart trial).
+        Task.CancellationToken.ThrowIfCancellationRequested();
         Task.RunPendingTraps();
         return Execute(statement, frame);
     }

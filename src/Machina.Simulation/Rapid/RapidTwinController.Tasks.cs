@@ -107,6 +107,28 @@ internal sealed partial class RapidTwinController
             stop = _stop;
         }
         stop?.Cancel();
+        CloseSockets();
+        lock (_reserved)
+        {
+            _reserved.ForEach(l => l.Stop());
+            _reserved.Clear();
+        }
+        CloseFiles();
+        bool joined = _threads.All(t => t.Join(timeout));
+        // Once more after the tasks ended: a connection a task took between its stop and its end is closed too.
+        CloseSockets();
+        lock (_gate)
+        {
+            _stop = null;
+        }
+        stop?.Dispose();
+        _threads.Clear();
+        return joined;
+    }
+
+    /// <summary>Closes every socket the programs created (their connections, listeners and datagram sockets).</summary>
+    private void CloseSockets()
+    {
         lock (_sockets)
         {
             foreach (RapidSocketDevice s in _sockets)
@@ -116,20 +138,6 @@ internal sealed partial class RapidTwinController
                 s.Udp?.Dispose();
             }
         }
-        lock (_reserved)
-        {
-            _reserved.ForEach(l => l.Stop());
-            _reserved.Clear();
-        }
-        CloseFiles();
-        bool joined = _threads.All(t => t.Join(timeout));
-        lock (_gate)
-        {
-            _stop = null;
-        }
-        stop?.Dispose();
-        _threads.Clear();
-        return joined;
     }
 
     /// <summary>Waits up to <paramref name="timeout"/> for every task started by <see cref="StartTasks"/> to end by itself, then stops them; false when one had to be stopped.</summary>

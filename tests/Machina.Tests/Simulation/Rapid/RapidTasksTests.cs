@@ -75,4 +75,20 @@ public class RapidTasksTests
         Assert.Equal(RapidProgramState.Failed, twin.Run());
         Assert.Equal("Execution error: line 4: IError: the interrupt is not connected to a trap (CONNECT it first) (task T_ROB1)", twin.Error);
     }
+
+    /// <summary>
+    /// A stopped task runs no further statement, even one that does not wait (a stop reached it between two instructions): the
+    /// task that a restart stopped once accepted a client and greeted it with its old progress (the ABB restart trial).
+    /// </summary>
+    [Fact]
+    public void StoppedTask_RunsNoFurtherStatement()
+    {
+        var twin = new RapidTwinController();
+        twin.Load(("T.mod", "MODULE T\n  VAR num n := 0;\n  PROC main()\n    n := 1;\n    TPWrite \"ran\";\n  ENDPROC\nENDMODULE\n"));
+        using var stopped = new CancellationTokenSource();
+        stopped.Cancel();
+
+        Assert.Equal(RapidProgramState.Stopped, twin.Run("main", stopped.Token));
+        Assert.Empty(twin.Pendant.Lines);
+    }
 }
