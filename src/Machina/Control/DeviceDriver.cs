@@ -198,7 +198,10 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
         }
     }
 
-    /// <summary>Stops reporting, then closes the side links in the order they opened and the driver link last.</summary>
+    /// <summary>
+    /// Stops reporting, closes every link's socket (the side links in the order they opened, the driver link last), then waits
+    /// for their loops: the controller sees the driver link close even while a side link's loop is still busy.
+    /// </summary>
     public async ValueTask DisposeAsync()
     {
         Interlocked.Exchange(ref _failed, 1);
@@ -207,6 +210,11 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
         {
             sideLinks = [.. _sideLinks];
         }
+        foreach (TcpLink link in sideLinks)
+        {
+            link.CloseSocket();
+        }
+        Link?.CloseSocket();
         foreach (TcpLink link in sideLinks)
         {
             await link.DisposeAsync().ConfigureAwait(false);

@@ -274,6 +274,19 @@ internal sealed class TcpLink : IAsyncDisposable
         }
     }
 
+    /// <summary>Closes the socket at once (the peer sees the link end); <see cref="DisposeAsync"/> still stops the loops.</summary>
+    internal void CloseSocket()
+    {
+        try
+        {
+            _socket.Shutdown(SocketShutdown.Both);
+        }
+        catch (Exception e) when (e is SocketException or ObjectDisposedException)
+        {
+        }
+        _socket.Dispose();
+    }
+
     /// <summary>Stops both loops and closes the socket; pending outgoing bytes are dropped.</summary>
     public async ValueTask DisposeAsync()
     {
@@ -283,14 +296,7 @@ internal sealed class TcpLink : IAsyncDisposable
         }
         await _stop.CancelAsync().ConfigureAwait(false);
         _doorbell.Writer.TryComplete();
-        try
-        {
-            _socket.Shutdown(SocketShutdown.Both);
-        }
-        catch (SocketException)
-        {
-        }
-        _socket.Dispose();
+        CloseSocket();
         try
         {
             await Task.WhenAll(_receiveLoop, _sendLoop).ConfigureAwait(false);

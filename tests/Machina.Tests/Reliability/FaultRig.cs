@@ -57,6 +57,18 @@ internal sealed partial class FaultRig : IAsyncDisposable
         _ => [],
     };
 
+    /// <summary>What the controller counted (connections, requests received, executed, acknowledged, held): a failed recovery says it.</summary>
+    public string Counters => _controller switch
+    {
+        VirtualAbbController c => Count(c.ConnectionCount, c.RequestsReceived, c.RequestsExecuted, c.AcknowledgementsSent, c.BufferedRequestCount),
+        VirtualUrController c => Count(c.ConnectionCount, c.RequestsReceived, c.RequestsExecuted, c.AcknowledgementsSent, c.BufferedRequestCount),
+        VirtualKukaController c => Count(c.ConnectionCount, c.RequestsReceived, c.RequestsExecuted, c.AcknowledgementsSent, c.BufferedRequestCount),
+        _ => "",
+    };
+
+    private static string Count(int connections, int received, int executed, int acknowledged, int held) =>
+        $"controller: {connections} connections, {received} requests received, {executed} executed, {acknowledged} acknowledgements sent, {held} held";
+
     /// <summary>The controller itself (a <c>VirtualAbbController</c>, <c>VirtualUrController</c> or <c>VirtualKukaController</c>).</summary>
     public object Controller => _controller;
 
@@ -170,7 +182,7 @@ internal sealed partial class FaultRig : IAsyncDisposable
             {
                 // A reconnection or resume that hangs says what the controller showed meanwhile.
                 throw new TimeoutException(
-                    $"No recovery within {RecoverLimit.TotalSeconds} s (the robot is {w.Bot.ConnectionState}).\nPendant (last 40):\n  "
+                    $"No recovery within {RecoverLimit.TotalSeconds} s (the robot is {w.Bot.ConnectionState}); {Counters}.\nPendant (last 40):\n  "
                     + string.Join("\n  ", PendantMessages.TakeLast(40)), e);
             }
             catch (MachinaException e) when (attempt < 20)
@@ -182,7 +194,7 @@ internal sealed partial class FaultRig : IAsyncDisposable
             {
                 // What the controller said is what tells a stuck driver program from a slow one: keep it with the failure.
                 throw new InvalidOperationException(
-                    $"No recovery after {attempt + 1} attempts: {e.Message}\nPendant (last 40):\n  "
+                    $"No recovery after {attempt + 1} attempts: {e.Message}\n{Counters}.\nPendant (last 40):\n  "
                     + string.Join("\n  ", PendantMessages.TakeLast(40)), e);
             }
         }
