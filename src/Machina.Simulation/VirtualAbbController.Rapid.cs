@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Net.Sockets;
 using Machina.Simulation.Rapid;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -22,7 +23,7 @@ public sealed partial class VirtualAbbController
             Signals = Signals,
             StartJoints = TwinStartJoints(),
             // Robot time runs SpeedFactor times faster than the controller's clock (the UR twin's scaled clock, brand-neutral).
-            Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
+            Time = TwinScaledTime.Of(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
             HomeDirectory = _options.HomeDirectory,
         });

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation.Rapid;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -368,30 +369,18 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     /// <summary>The robot as the twin's arm has it now.</summary>
     private static VirtualAbbState TwinState(RapidTwinController twin, VirtualAbbState basis)
     {
-        var digital = new Dictionary<string, bool>();
-        var analog = new Dictionary<string, double>();
+        var seen = new TwinObservation();
         foreach ((string name, string type) in twin.Options.Signals)
         {
-            if (twin.Signal(name) is { } s && type == "signaldo" && twin.Io.GetBit(s.Bank, s.Index))
+            if (twin.Signal(name) is { } s && type == "signaldo")
             {
-                digital[name] = true;
+                seen.Digital(name, twin.Io.GetBit(s.Bank, s.Index));
             }
-            else if (twin.Signal(name) is { } a && type == "signalao" && twin.Io.GetNumber(a.Bank, a.Index) is var v && v != 0)
+            else if (twin.Signal(name) is { } a && type == "signalao")
             {
-                analog[name] = v;
+                seen.Analog(name, twin.Io.GetNumber(a.Bank, a.Index));
             }
         }
-        Joints joints = twin.Arm.Joints;
-        Pose tool = DriverTool(twin) ?? twin.Arm.ToolCenter;
-        Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * tool;
-        return basis with
-        {
-            Position = tcp.Position,
-            Rotation = tcp.Rotation,
-            Joints = joints,
-            Tool = tool.Position == Vector.Zero && tool.Rotation.IsSimilar(Rotation.Identity, 1e-9) ? null : tool,
-            DigitalOutputs = digital,
-            AnalogOutputs = analog,
-        };
+        return seen.Apply(basis, twin.Arm, twin.Arm.Joints, DriverTool(twin) ?? twin.Arm.ToolCenter);
     }
 }

@@ -64,18 +64,7 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>Holds the caller (the twin's program, at its acknowledgement) while the controller stops answering.</summary>
-    private void WhileStopped(CancellationToken token)
-    {
-        Task? wait;
-        lock (_pauseGate)
-        {
-            wait = _paused?.Task;
-        }
-        if (wait is not null)
-        {
-            TwinWait.For(wait, token);
-        }
-    }
+    private void WhileStopped(CancellationToken token) => TwinWait.WhilePaused(_pauseGate, ref _paused, token);
 
     /// <summary>Counts one delivered acknowledgement towards a pending <see cref="CloseConnectionAfter"/>.</summary>
     private void CountTowardsClose()

@@ -24,16 +24,7 @@ public abstract partial class VirtualController<TState>
     /// The wire ids of the requests executed (or refused), in the order the robot ran them: the controller's execution log,
     /// bounded like <see cref="ReceivedRequests"/> by the options' <c>RequestLogCapacity</c>. A request run twice is there twice.
     /// </summary>
-    public IReadOnlyList<int> ExecutedIds
-    {
-        get
-        {
-            lock (Gate)
-            {
-                return [.. _executedLog];
-            }
-        }
-    }
+    public IReadOnlyList<int> ExecutedIds => Copy(_executedLog);
 
     /// <summary>How many acknowledgements actually reached a client.</summary>
     public int AcknowledgementsSent => Volatile.Read(ref _acknowledgementsSent);
@@ -45,38 +36,20 @@ public abstract partial class VirtualController<TState>
     public int BufferedRequestCount => Volatile.Read(ref _waitingOnCaller);
 
     /// <summary>The last received requests, as text (bounded by the options' <c>RequestLogCapacity</c>).</summary>
-    public IReadOnlyList<string> ReceivedRequests
-    {
-        get
-        {
-            lock (Gate)
-            {
-                return [.. _requestLog];
-            }
-        }
-    }
+    public IReadOnlyList<string> ReceivedRequests => Copy(_requestLog);
 
     /// <summary>Texts the driver would have shown on the teach pendant (messages, errors), the last 1000.</summary>
-    public IReadOnlyList<string> PendantMessages
-    {
-        get
-        {
-            lock (Gate)
-            {
-                return [.. _pendant];
-            }
-        }
-    }
+    public IReadOnlyList<string> PendantMessages => Copy(_pendant);
 
     /// <summary>Malformed or refused requests, with the reason (the last 1000); the controller keeps serving after each.</summary>
-    public IReadOnlyList<string> Errors
+    public IReadOnlyList<string> Errors => Copy(_errors);
+
+    /// <summary>A copy of one of the controller's logs, taken under its lock.</summary>
+    private T[] Copy<T>(Queue<T> log)
     {
-        get
+        lock (Gate)
         {
-            lock (Gate)
-            {
-                return [.. _errors];
-            }
+            return [.. log];
         }
     }
 

@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Net.Sockets;
 using Machina.Simulation.Krl;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -45,7 +46,7 @@ public sealed partial class VirtualKukaController
         {
             Model = Model ?? RobotModels.Get("KR 6 R900 sixx"),
             StartJoints = base.State.Joints, // the options' starting joints (Observe keeps them until the twin is made)
-            Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
+            Time = TwinScaledTime.Of(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
             Seam = this,
             MaxTrace = MaxTraceSteps,
@@ -189,40 +190,15 @@ public sealed partial class VirtualKukaController
 
     private static VirtualKukaState TwinState(KrlTwinController twin, VirtualKukaState basis)
     {
-        Joints joints = twin.Arm.Joints;
-        Pose tool = twin.Arm.ToolCenter;
-        Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * tool;
-        var digital = new Dictionary<string, bool>();
-        object[] outs = ((KrlArrayValue)twin.Environment.System["$OUT"].Value).Items;
-        for (int i = 0; i < outs.Length; i++)
-        {
-            if ((bool)outs[i])
-            {
-                digital[(i + 1).ToString(CultureInfo.InvariantCulture)] = true;
-            }
-        }
-        var analog = new Dictionary<string, double>();
-        object[] anouts = ((KrlArrayValue)twin.Environment.System["$ANOUT"].Value).Items;
-        for (int i = 0; i < anouts.Length; i++)
-        {
-            double v = KrlValues.ToReal(anouts[i]);
-            if (v != 0)
-            {
-                analog[(i + 1).ToString(CultureInfo.InvariantCulture)] = v;
-            }
-        }
+        var seen = new TwinObservation();
+        seen.DigitalBank(twin.Io, "$OUT", "", 1);
+        seen.AnalogBank(twin.Io, "$ANOUT", 1);
         var vel = (KrlStructValue)twin.Environment.System["$VEL"].Value;
         var apo = (KrlStructValue)twin.Environment.System["$APO"].Value;
-        return basis with
+        return seen.Apply(basis, twin.Arm, twin.Arm.Joints, twin.Arm.ToolCenter) with
         {
-            Position = tcp.Position,
-            Rotation = tcp.Rotation,
-            Joints = joints,
-            Tool = tool.Position == Vector.Zero && tool.Rotation.IsSimilar(Rotation.Identity, 1e-9) ? null : tool,
             Speed = KrlValues.ToReal(vel.Values[0]) * 1000,
             Zone = apo.Number("CDIS"),
-            DigitalOutputs = digital,
-            AnalogOutputs = analog,
         };
     }
 }

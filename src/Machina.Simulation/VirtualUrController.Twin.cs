@@ -1,5 +1,6 @@
 using System.Net.Sockets;
 using System.Text;
+using Machina.Simulation.Twin;
 using Machina.Simulation.UrScript;
 
 namespace Machina.Simulation;
@@ -21,7 +22,7 @@ public sealed partial class VirtualUrController
             Seam = this,
             MaxTrace = MaxTraceSteps,
             StartJoints = base.State.Joints, // the options' starting joints (Observe keeps them until the twin is made)
-            Time = _options.SpeedFactor == 1 ? Clock : new VirtualUrScaledTime(Clock, _options.SpeedFactor),
+            Time = TwinScaledTime.Of(Clock, _options.SpeedFactor),
             RealTime = !_options.InstantExecution,
             Route = _options.OutboundRoute,
             StartRefusal = StartRefusal,

@@ -144,44 +144,12 @@ public sealed partial class VirtualUrController : IUrSocketSeam
     internal TimeSpan? MotionDuration => Twin.Motion?.Duration;
 
     /// <summary>The robot as the twin's arm and outputs have it now (speeds and blend are the driver's own variables: kept from the start).</summary>
-    private VirtualUrState TwinState(UrTwinController twin, VirtualUrState basis)
+    private static VirtualUrState TwinState(UrTwinController twin, VirtualUrState basis)
     {
-        Joints joints = twin.JointsNow();
-        Pose tcp = twin.Arm.Model.Kinematics.Forward(joints) * twin.Arm.ToolCenter;
-        var digital = new Dictionary<string, bool>();
-        for (int i = 0; i < 8; i++)
-        {
-            if (twin.Io.GetBit(UrIoBanks.StandardOut, i))
-            {
-                digital[i.ToString(Num.Inv)] = true;
-            }
-        }
-        for (int i = 0; i < 2; i++)
-        {
-            if (twin.Io.GetBit(UrIoBanks.ToolOut, i))
-            {
-                digital["tool " + i.ToString(Num.Inv)] = true;
-            }
-        }
-        var analog = new Dictionary<string, double>();
-        for (int i = 0; i < 2; i++)
-        {
-            double v = twin.Io.GetNumber(UrIoBanks.AnalogOut, i);
-            if (v != 0)
-            {
-                analog[i.ToString(Num.Inv)] = v;
-            }
-        }
-        Pose tool = twin.Arm.ToolCenter;
-        return basis with
-        {
-            Position = tcp.Position,
-            Rotation = tcp.Rotation,
-            Joints = joints,
-            Tool = tool.Position == Vector.Zero && tool.Rotation.IsSimilar(Rotation.Identity, 1e-9) ? null : tool,
-            Payload = twin.Arm.PayloadKg,
-            DigitalOutputs = digital,
-            AnalogOutputs = analog,
-        };
+        var seen = new TwinObservation();
+        seen.DigitalBank(twin.Io, UrIoBanks.StandardOut, "", 0);
+        seen.DigitalBank(twin.Io, UrIoBanks.ToolOut, "tool ", 0);
+        seen.AnalogBank(twin.Io, UrIoBanks.AnalogOut, 0);
+        return seen.Apply(basis, twin.Arm, twin.JointsNow(), twin.Arm.ToolCenter) with { Payload = twin.Arm.PayloadKg };
     }
 }

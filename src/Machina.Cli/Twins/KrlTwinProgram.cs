@@ -5,50 +5,26 @@ using Machina.Simulation.Twin;
 namespace Machina.Cli.Twins;
 
 /// <summary>The KRL twin: a .src file (with its .dat) or a folder, whose main routine runs.</summary>
-internal sealed class KrlTwinProgram : ITwinProgram
+internal sealed class KrlTwinProgram()
+    : TwinProgram<KrlTwinOptions, KrlTwinController, KrlProgramState>(KukaBrand.Definition, "KRL", "a", "axes", "the KRL program", KrlProgramState.Finished, "src", "dat")
 {
-    public BrandDefinition Brand => KukaBrand.Definition;
-
-    public string Language => "KRL";
-
-    public string Article => "a";
-
-    public string JointsWord => "axes";
-
-    public string? ProgramNoun => "the KRL program";
-
-    public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
+    public override Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
         (args, model, _, context) => SimCommand.RunKrlAsync(args.Value("--load")!, model, context);
 
-    public bool IsProgram(string fullPath) => fullPath.EndsWith(".src", StringComparison.OrdinalIgnoreCase)
+    public override bool IsProgram(string fullPath) => fullPath.EndsWith(".src", StringComparison.OrdinalIgnoreCase)
         || (Directory.Exists(fullPath) && Directory.GetFiles(fullPath, "*.src").Length > 0);
 
-    public IReadOnlyList<string> ProgramFiles(string fullPath) => KrlTwinController.ProgramFiles(fullPath);
+    public override IReadOnlyList<string> ProgramFiles(string fullPath) => KrlTwinController.ProgramFiles(fullPath);
 
-    public bool Loads(RobotProgramFile file) =>
-        file.Extension.Equals("src", StringComparison.OrdinalIgnoreCase) || file.Extension.Equals("dat", StringComparison.OrdinalIgnoreCase);
+    protected override TwinVerification<KrlProgramState> Verify(IReadOnlyList<(string Name, string Text)> files, List<RobotAction> actions, KrlTwinOptions options, CancellationToken cancellation) =>
+        KrlVerifier.Verify(files, actions, options, cancellation);
 
-    public TwinCheck Verify(IReadOnlyList<(string Name, string Text)> files, List<RobotAction> actions, RobotModel model, TwinLimits limits, CancellationToken cancellation)
-    {
-        TwinVerification<KrlProgramState> result = KrlVerifier.Verify(files, actions, Options(model, limits), cancellation);
-        return new TwinCheck(result.Passed, result.ToText);
-    }
+    protected override KrlTwinController Create(KrlTwinOptions options) => new(options);
 
-    public TwinRun Run(IReadOnlyList<(string Name, string Text)> files, RobotModel model, TwinLimits limits, CancellationToken cancellation)
-    {
-        KrlTwinOptions options = Options(model, limits);
-        using var twin = new KrlTwinController(options);
-        try
-        {
-            twin.Load([.. files]);
-        }
-        catch (KrlLoadException ex)
-        {
-            return TwinRun.Refused(ex.Message);
-        }
-        KrlProgramState state = twin.Run(null, cancellation);
-        return new TwinRun(null, state == KrlProgramState.Finished, twin.Error, [.. twin.Arm.Trace], twin.Clock.Seconds, options.StartJoints);
-    }
+    protected override void Load(KrlTwinController twin, IReadOnlyList<(string Name, string Text)> files) => twin.Load([.. files]);
 
-    private static KrlTwinOptions Options(RobotModel model, TwinLimits limits) => new() { Model = model, Limits = limits };
+    protected override string? Refusal(Exception e) => e is KrlLoadException ex ? ex.Message : null;
+
+    protected override KrlProgramState RunMain(KrlTwinController twin, IReadOnlyList<(string Name, string Text)> files, CancellationToken cancellation) =>
+        twin.Run(null, cancellation);
 }

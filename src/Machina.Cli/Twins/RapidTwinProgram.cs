@@ -5,50 +5,27 @@ using Machina.Simulation.Twin;
 namespace Machina.Cli.Twins;
 
 /// <summary>The RAPID twin: a .pgf, .mod or folder of modules, whose main runs in the motion task.</summary>
-internal sealed class RapidTwinProgram : ITwinProgram
+internal sealed class RapidTwinProgram()
+    : TwinProgram<RapidTwinOptions, RapidTwinController, RapidProgramState>(AbbBrand.Definition, "RAPID", "an", "joints", "the RAPID program", RapidProgramState.Finished, "mod")
 {
-    public BrandDefinition Brand => AbbBrand.Definition;
-
-    public string Language => "RAPID";
-
-    public string Article => "an";
-
-    public string JointsWord => "joints";
-
-    public string? ProgramNoun => "the RAPID program";
-
-    public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
+    public override Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
         (args, model, bind, context) => SimLoad.RunAbbAsync(args.Values("--load"), model, context, new SimLoad.Extras(args.Values("--signal"), args.Value("--eio"),
             bind, args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true), SimCommand.Home(args, context)));
 
-    public bool IsProgram(string fullPath) => Directory.Exists(fullPath)
+    public override bool IsProgram(string fullPath) => Directory.Exists(fullPath)
         || fullPath.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase) || fullPath.EndsWith(".mod", StringComparison.OrdinalIgnoreCase);
 
-    public IReadOnlyList<string> ProgramFiles(string fullPath) => RapidTwinController.ModuleFiles(fullPath);
+    public override IReadOnlyList<string> ProgramFiles(string fullPath) => RapidTwinController.ModuleFiles(fullPath);
 
-    public bool Loads(RobotProgramFile file) => file.Extension.Equals("mod", StringComparison.OrdinalIgnoreCase);
+    protected override TwinVerification<RapidProgramState> Verify(IReadOnlyList<(string Name, string Text)> files, List<RobotAction> actions, RapidTwinOptions options, CancellationToken cancellation) =>
+        RapidVerifier.Verify(files, actions, options, cancellation);
 
-    public TwinCheck Verify(IReadOnlyList<(string Name, string Text)> files, List<RobotAction> actions, RobotModel model, TwinLimits limits, CancellationToken cancellation)
-    {
-        TwinVerification<RapidProgramState> result = RapidVerifier.Verify(files, actions, Options(model, limits), cancellation);
-        return new TwinCheck(result.Passed, result.ToText);
-    }
+    protected override RapidTwinController Create(RapidTwinOptions options) => new(options);
 
-    public TwinRun Run(IReadOnlyList<(string Name, string Text)> files, RobotModel model, TwinLimits limits, CancellationToken cancellation)
-    {
-        RapidTwinOptions options = Options(model, limits);
-        var twin = new RapidTwinController(options);
-        try
-        {
-            twin.Load([.. files]);
-        }
-        catch (RapidLoadException ex)
-        {
-            return TwinRun.Refused($"{ex.Module}: {ex.Message}");
-        }
-        RapidProgramState state = twin.Run("main", cancellation);
-        return new TwinRun(null, state == RapidProgramState.Finished, twin.Error, [.. twin.Arm.Trace], twin.Clock.Seconds, options.StartJoints);
-    }
+    protected override void Load(RapidTwinController twin, IReadOnlyList<(string Name, string Text)> files) => twin.Load([.. files]);
 
-    private static RapidTwinOptions Options(RobotModel model, TwinLimits limits) => new() { Model = model, Limits = limits };
+    protected override string? Refusal(Exception e) => e is RapidLoadException ex ? $"{ex.Module}: {ex.Message}" : null;
+
+    protected override RapidProgramState RunMain(RapidTwinController twin, IReadOnlyList<(string Name, string Text)> files, CancellationToken cancellation) =>
+        twin.Run("main", cancellation);
 }

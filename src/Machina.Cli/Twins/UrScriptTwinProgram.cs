@@ -4,39 +4,27 @@ using Machina.Simulation.UrScript;
 namespace Machina.Cli.Twins;
 
 /// <summary>The URScript twin: a <c>.script</c> file, run as the robot runs a program sent to it.</summary>
-internal sealed class UrScriptTwinProgram : ITwinProgram
+internal sealed class UrScriptTwinProgram()
+    : TwinProgram<UrTwinOptions, UrTwinController, UrProgramState>(UrBrand.Definition, "URScript", "a", "joints", null, UrProgramState.Finished, "script")
 {
-    public BrandDefinition Brand => UrBrand.Definition;
+    public override Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded => null;
 
-    public string Language => "URScript";
+    public override bool IsProgram(string fullPath) => fullPath.EndsWith(".script", StringComparison.OrdinalIgnoreCase);
 
-    public string Article => "a";
+    public override IReadOnlyList<string> ProgramFiles(string fullPath) => [fullPath];
 
-    public string JointsWord => "joints";
+    protected override TwinVerification<UrProgramState> Verify(IReadOnlyList<(string Name, string Text)> files, List<RobotAction> actions, UrTwinOptions options, CancellationToken cancellation) =>
+        UrScriptVerifier.Verify(files[0].Text, actions, options, cancellation);
 
-    public string? ProgramNoun => null;
+    protected override UrTwinController Create(UrTwinOptions options) => new(options);
 
-    public Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded => null;
-
-    public bool IsProgram(string fullPath) => fullPath.EndsWith(".script", StringComparison.OrdinalIgnoreCase);
-
-    public IReadOnlyList<string> ProgramFiles(string fullPath) => [fullPath];
-
-    public bool Loads(RobotProgramFile file) => file.Extension.Equals("script", StringComparison.OrdinalIgnoreCase);
-
-    public TwinCheck Verify(IReadOnlyList<(string Name, string Text)> files, List<RobotAction> actions, RobotModel model, TwinLimits limits, CancellationToken cancellation)
+    protected override void Load(UrTwinController twin, IReadOnlyList<(string Name, string Text)> files)
     {
-        TwinVerification<UrProgramState> result = UrScriptVerifier.Verify(files[0].Text, actions, Options(model, limits), cancellation);
-        return new TwinCheck(result.Passed, result.ToText);
+        // a script is sent and run at once: nothing to load before
     }
 
-    public TwinRun Run(IReadOnlyList<(string Name, string Text)> files, RobotModel model, TwinLimits limits, CancellationToken cancellation)
-    {
-        UrTwinOptions options = Options(model, limits);
-        using var twin = new UrTwinController(options);
-        UrProgramState state = twin.Run(files[0].Text, cancellation);
-        return new TwinRun(null, state == UrProgramState.Finished, twin.Error, [.. twin.Arm.Trace], twin.Clock.Seconds, options.StartJoints);
-    }
+    protected override string? Refusal(Exception e) => null;
 
-    private static UrTwinOptions Options(RobotModel model, TwinLimits limits) => new() { Model = model, Limits = limits };
+    protected override UrProgramState RunMain(UrTwinController twin, IReadOnlyList<(string Name, string Text)> files, CancellationToken cancellation) =>
+        twin.Run(files[0].Text, cancellation);
 }

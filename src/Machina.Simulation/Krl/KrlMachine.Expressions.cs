@@ -16,10 +16,12 @@ internal sealed partial class KrlMachine
                 return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
             case KrlIndex index when index.Indices.Count == 0:
                 return Eval(index.Target, frame);
+            case KrlIndex { Target: KrlName { Cell.Signals: { } signals } } index when index.Indices[^1] is not null:
+                return signals.Get(Flat(index, signals.Type, signals.Type.Length, frame));
             case KrlIndex { Target: KrlName } index when index.Indices[^1] is not null:
             {
                 var array = (KrlArrayValue)Eval(index.Target, frame);
-                return array.Items[Flat(index, array, frame)];
+                return array.Items[Flat(index, array.Type, array.Items.Length, frame)];
             }
             case KrlIndex index:
                 return Place(index, frame).Get();
@@ -61,6 +63,8 @@ internal sealed partial class KrlMachine
         {
             case KrlName name when name.Slot >= 0:
                 return new KrlPlace(frame, name.Slot, name.Type);
+            case KrlName { Cell.Signals: { } signals } name:
+                return new KrlPlace([], -1, name.Type) { Root = (name.Cell, -1), Signals = signals };
             case KrlName name:
                 return new KrlPlace(name.Cell!.Box, 0, name.Type) { Root = (name.Cell, -1) };
             case KrlMember member:
@@ -75,6 +79,15 @@ internal sealed partial class KrlMachine
                 if (index.Indices.Count == 0)
                 {
                     return parent;
+                }
+                if (parent.Signals is { } signals)
+                {
+                    if (index.Indices[^1] is null)
+                    {
+                        return parent;
+                    }
+                    int element = Flat(index, signals.Type, signals.Type.Length, frame);
+                    return new KrlPlace([], element, index.Type) { Root = (parent.Root!.Value.Cell, element), Signals = signals };
                 }
                 var array = (KrlArrayValue)parent.Container[parent.Index];
                 IReadOnlyList<int> sizes = array.Type.Sizes;
@@ -111,7 +124,7 @@ internal sealed partial class KrlMachine
             case KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Indices.Count > 0 && index.Indices[^1] is not null:
             {
                 var array = (KrlArrayValue)Eval(index.Target, frame);
-                int flat = Flat(index, array, frame);
+                int flat = Flat(index, array.Type, array.Items.Length, frame);
                 array.Items[flat] = KrlConvert.To(index.Type, value, array.Items[flat]);
                 _writes++;
                 return;
@@ -123,14 +136,14 @@ internal sealed partial class KrlMachine
         }
     }
 
-    /// <summary>The element of <paramref name="array"/> that the (complete) indices of <paramref name="index"/> select.</summary>
-    private int Flat(KrlIndex index, KrlArrayValue array, object[] frame)
+    /// <summary>The element of an array of <paramref name="type"/> and <paramref name="length"/> elements that the (complete) indices of <paramref name="index"/> select.</summary>
+    private int Flat(KrlIndex index, KrlType type, int length, object[] frame)
     {
-        IReadOnlyList<int> sizes = array.Type.Sizes;
+        IReadOnlyList<int> sizes = type.Sizes;
         int flat = 0;
         for (int d = 0; d < index.Indices.Count; d++)
         {
-            int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
+            int size = sizes[d] == 0 ? length : sizes[d];
             int i = KrlValues.ToInt(Eval(index.Indices[d]!, frame));
             if (i < 1 || i > size)
             {

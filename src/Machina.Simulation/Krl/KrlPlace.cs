@@ -1,8 +1,8 @@
 namespace Machina.Simulation.Krl;
 
 /// <summary>
-/// Where a value is stored: a slot of a frame, cell, structure or array, or a row of a CHAR array (<c>text[i, ]</c>). Assignments
-/// and OUT arguments write through it.
+/// Where a value is stored: a slot of a frame, cell, structure or array, a row of a CHAR array (<c>text[i, ]</c>), or a signal of
+/// an IO array (<see cref="Signals"/>). Assignments and OUT arguments write through it.
 /// </summary>
 internal sealed class KrlPlace(object[] container, int index, KrlType type, int sliceLength = 0)
 {
@@ -24,15 +24,31 @@ internal sealed class KrlPlace(object[] container, int index, KrlType type, int 
     /// <summary>For a component of a structure, the structure (it notes that the component was given a value).</summary>
     public KrlStructValue? Structure { get; init; }
 
+    /// <summary>For an IO array, its signals: the place is element <see cref="Index"/> of them, or all of them when it is -1.</summary>
+    public KrlSignalArray? Signals { get; init; }
+
     /// <summary>The value stored (a copy of the row for a slice).</summary>
-    public object Get() => SliceLength > 0
+    public object Get() => Signals is { } signals
+        ? Index < 0 ? signals.Get() : signals.Get(Index)
+        : SliceLength > 0
         ? new KrlArrayValue(Type, Container[Index..(Index + SliceLength)])
         : Container[Index];
 
     /// <summary>Stores <paramref name="value"/>, converted to the place's type.</summary>
     public void Set(object value)
     {
-        if (SliceLength > 0)
+        if (Signals is { } signals)
+        {
+            if (Index < 0)
+            {
+                signals.Set(value);
+            }
+            else
+            {
+                signals.Set(Index, value);
+            }
+        }
+        else if (SliceLength > 0)
         {
             if (value is string text)
             {

@@ -27,6 +27,13 @@ internal sealed class KrlCell(string name, KrlType type, object value)
 
     /// <summary>Called after a program wrote the variable or an element of it (the element's index, or -1 for all of it).</summary>
     public Action<int>? Written { get; init; }
+
+    /// <summary>For an IO array (<c>$IN</c>, <c>$OUT</c>, <c>$ANIN</c>, <c>$ANOUT</c>), where its values are (<see cref="Box"/> is unused then).</summary>
+    public KrlSignalArray? Signals { get; private init; }
+
+    /// <summary>The system variable of an IO array, whose values are the controller's <see cref="Twin.TwinIo"/> bank.</summary>
+    public static KrlCell Of(KrlSignalArray signals, bool readOnly, Action<int>? written = null) =>
+        new(signals.Name, signals.Type, null!) { Signals = signals, Read = signals.Get, ReadOnly = readOnly, Written = written };
 }
 
 /// <summary>A parameter of a routine: name, IN (by value) or OUT (by reference), and its type from the routine's DECL.</summary>

@@ -31,16 +31,11 @@ internal static partial class KrlSystemVariables
         Add(new KrlCell("$APO", KrlTypes.Apo, KrlValues.Default(KrlTypes.Apo)));
         Add(new KrlCell("$ADVANCE", KrlType.Int, 3) { Written = _ => controller.AdvanceChanged() });
         Add(new KrlCell("$OV_PRO", KrlType.Int, 100));
-        Add(new KrlCell("$OUT", KrlType.Array(KrlType.Bool, DigitalCount), KrlValues.Default(KrlType.Array(KrlType.Bool, DigitalCount)))
-        {
-            Written = i => controller.OutputWritten("$OUT", i),
-        });
-        Add(new KrlCell("$IN", KrlType.Array(KrlType.Bool, DigitalCount), KrlValues.Default(KrlType.Array(KrlType.Bool, DigitalCount))) { ReadOnly = true });
-        Add(new KrlCell("$ANOUT", KrlType.Array(KrlType.Real, AnalogCount), KrlValues.Default(KrlType.Array(KrlType.Real, AnalogCount)))
-        {
-            Written = i => controller.OutputWritten("$ANOUT", i),
-        });
-        Add(new KrlCell("$ANIN", KrlType.Array(KrlType.Real, AnalogCount), KrlValues.Default(KrlType.Array(KrlType.Real, AnalogCount))) { ReadOnly = true });
+        // The IO arrays' values are the controller's TwinIo banks of the same names, as the other twins' signals are.
+        Add(KrlCell.Of(new KrlSignalArray(controller.Io, "$OUT", KrlType.Bool, DigitalCount), readOnly: false, i => controller.OutputWritten("$OUT", i)));
+        Add(KrlCell.Of(new KrlSignalArray(controller.Io, "$IN", KrlType.Bool, DigitalCount), readOnly: true));
+        Add(KrlCell.Of(new KrlSignalArray(controller.Io, "$ANOUT", KrlType.Real, AnalogCount), readOnly: false, i => controller.OutputWritten("$ANOUT", i)));
+        Add(KrlCell.Of(new KrlSignalArray(controller.Io, "$ANIN", KrlType.Real, AnalogCount), readOnly: true));
         Add(new KrlCell("$FLAG", KrlType.Array(KrlType.Bool, FlagCount), KrlValues.Default(KrlType.Array(KrlType.Bool, FlagCount))));
         // A timer is counted up to now when it is read, started or stopped (KrlTwinController.Timers.cs).
         Add(new KrlCell("$TIMER", KrlType.Array(KrlType.Int, 64), KrlValues.Default(KrlType.Array(KrlType.Int, 64)))

@@ -9,8 +9,9 @@ internal sealed partial class KrlTwinController
     public int Line { get; set; }
 
     /// <summary>
-    /// The controller's IO as the twins share it: here what a WAIT FOR sleeps on (its change count and wake-up). The signals'
-    /// values are the system variables ($IN, $OUT, $ANIN, $ANOUT, $FLAG), which KRL reads and writes as arrays.
+    /// The controller's IO as the twins share it: the values of $IN, $OUT, $ANIN and $ANOUT (banks of those names, which KRL reads
+    /// and writes as arrays, <see cref="KrlSignalArray"/>) and what a WAIT FOR sleeps on (its change count and wake-up). Flags
+    /// ($FLAG) are the program's own markers, a system variable.
     /// </summary>
     public TwinIo Io { get; } = new();
 
@@ -65,16 +66,14 @@ internal sealed partial class KrlTwinController
     /// <summary>Sets digital input <c>$IN[number]</c> (1-based), as a sensor wired to it would, and wakes a waiting program.</summary>
     public void SetInput(int number, bool value)
     {
-        object[] inputs = ((KrlArrayValue)Environment.System["$IN"].Value).Items;
-        inputs[number - 1] = value;
+        Io.SetBit("$IN", number - 1, value);
         InputsChanged();
     }
 
     /// <summary>Sets analog input <c>$ANIN[number]</c> (1-based), as a sensor wired to it would, and wakes a waiting program.</summary>
     public void SetAnalogInput(int number, double value)
     {
-        object[] inputs = ((KrlArrayValue)Environment.System["$ANIN"].Value).Items;
-        inputs[number - 1] = value;
+        Io.SetNumber("$ANIN", number - 1, value);
         InputsChanged();
     }
 
@@ -86,28 +85,27 @@ internal sealed partial class KrlTwinController
         InputsChanged();
     }
 
-    private bool Out(int number) => (bool)((KrlArrayValue)Environment.System["$OUT"].Value).Items[number - 1];
+    private object Out(int number) => KrlValues.Box(Io.GetBit("$OUT", number - 1));
 
     /// <summary>An element of $OUT or $ANOUT was written (index -1: the whole array).</summary>
     public void OutputWritten(string array, int index)
     {
-        object[] items = ((KrlArrayValue)Environment.System[array].Value).Items;
         if (index < 0)
         {
             return;
         }
-        if (array == "$ANOUT" && KrlValues.ToReal(items[index]) is < -1 or > 1)
+        object value = Environment.System[array].Signals!.Get(index);
+        if (array == "$ANOUT" && KrlValues.ToReal(value) is < -1 or > 1)
         {
             throw new KrlRuntimeException("Value assignment inadmissible: $ANOUT takes values from -1 to 1");
         }
-        Arm.Record(Line, TwinTraceKind.Output, FormattableString.Invariant($"{array}[{index + 1}] = {KrlValues.Format(items[index])}"));
+        Arm.Record(Line, TwinTraceKind.Output, FormattableString.Invariant($"{array}[{index + 1}] = {KrlValues.Format(value)}"));
     }
 
     private void SignalWritten(string name, int output)
     {
         var cell = Environment.Signals[name];
-        object[] items = ((KrlArrayValue)Environment.System["$OUT"].Value).Items;
-        items[output - 1] = cell.Box[0];
+        Io.SetBit("$OUT", output - 1, (bool)cell.Box[0]);
         Arm.Record(Line, TwinTraceKind.Output, $"{name} = {KrlValues.Format(cell.Box[0])}");
     }
 }

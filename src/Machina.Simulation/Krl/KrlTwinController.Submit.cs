@@ -27,7 +27,7 @@ internal sealed partial class KrlTwinController
         var machine = new KrlMachine(this, cancellation);
         using SubmitRun running = SubmitRunning();
         var sleep = new TwinSleep();
-        TimeProvider wall = Options.Time is VirtualUrScaledTime scaled ? scaled.Inner : Options.Time;
+        TimeProvider wall = TwinScaledTime.Wall(Options.Time);
         try
         {
             while (!cancellation.IsCancellationRequested)

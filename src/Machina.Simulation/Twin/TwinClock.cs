@@ -47,7 +47,7 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
     /// instead of 50,000 times a second).
     /// </summary>
     public void WaitWall(double seconds, CancellationToken cancellation) =>
-        _sleep.Wait(Time is VirtualUrScaledTime scaled ? scaled.Inner : Time, Span(seconds), cancellation);
+        _sleep.Wait(TwinScaledTime.Wall(Time), Span(seconds), cancellation);
 
     /// <summary>A wait's length, capped at a day (a longer one is no use on a twin and would overflow the timer).</summary>
     private static TimeSpan Span(double seconds) => TimeSpan.FromSeconds(Math.Min(seconds, 86_400));

@@ -2,7 +2,8 @@ namespace Machina.Simulation.Twin;
 
 /// <summary>
 /// The controller's inputs, outputs and fieldbus registers (a controller has a fixed number of each), and the signal a program
-/// waiting on them sleeps on (<see cref="WaitForChange"/>).
+/// waiting on them sleeps on (<see cref="WaitForChange"/>): the one IO model of the three interpreters (URScript's banks, RAPID's
+/// signals, KRL's <c>$IN</c>, <c>$OUT</c>, <c>$ANIN</c>, <c>$ANOUT</c>), which the host sets and reads the same way for each brand.
 /// </summary>
 internal sealed class TwinIo
 {
@@ -36,6 +37,24 @@ internal sealed class TwinIo
         lock (_gate)
         {
             _bits[bank][index] = value;
+        }
+    }
+
+    /// <summary>Copies a bank of digital signals into <paramref name="into"/> (as many as it holds), under one lock.</summary>
+    public void ReadBits(string bank, Span<bool> into)
+    {
+        lock (_gate)
+        {
+            _bits[bank].AsSpan(0, into.Length).CopyTo(into);
+        }
+    }
+
+    /// <summary>Copies a bank of numeric signals or registers into <paramref name="into"/> (as many as it holds), under one lock.</summary>
+    public void ReadNumbers(string bank, Span<double> into)
+    {
+        lock (_gate)
+        {
+            _numbers[bank].AsSpan(0, into.Length).CopyTo(into);
         }
     }
 

@@ -19,7 +19,7 @@ internal sealed class TwinSleep
         cancellation.ThrowIfCancellationRequested();
         double scale = 1;
         TimeProvider inner = time;
-        if (time is VirtualUrScaledTime scaled)
+        if (time is TwinScaledTime scaled)
         {
             (inner, scale) = (scaled.Inner, scaled.Factor);
         }

@@ -19,6 +19,23 @@ internal static class TwinWait
         task.GetAwaiter().GetResult();
     }
 
+    /// <summary>
+    /// Waits while <paramref name="pause"/> (read under <paramref name="gate"/>; null: no pause) is not completed: a hold or a pause
+    /// the thread must not run through. <see cref="OperationCanceledException"/> when cancelled first.
+    /// </summary>
+    public static void WhilePaused(Lock gate, ref TaskCompletionSource? pause, CancellationToken cancellation)
+    {
+        Task? wait;
+        lock (gate)
+        {
+            wait = pause?.Task;
+        }
+        if (wait is not null)
+        {
+            For(wait, cancellation);
+        }
+    }
+
     /// <summary>Waits for <paramref name="task"/> and returns its result; <see cref="OperationCanceledException"/> when cancelled first.</summary>
     public static T For<T>(Task<T> task, CancellationToken cancellation)
     {

@@ -136,18 +136,7 @@ internal sealed partial class UrTwinController
     }
 
     /// <summary>Waits while the program is held (cancelled when the program stops).</summary>
-    public void WaitWhileHeld(CancellationToken cancellation)
-    {
-        Task? held;
-        lock (_holdGate)
-        {
-            held = _held?.Task;
-        }
-        if (held is not null)
-        {
-            TwinWait.For(held, cancellation);
-        }
-    }
+    public void WaitWhileHeld(CancellationToken cancellation) => TwinWait.WhilePaused(_holdGate, ref _held, cancellation);
 
     /// <summary>
     /// Waits until no motion is in progress, at most <paramref name="timeout"/> (a hold reaches the motion at once: the program's

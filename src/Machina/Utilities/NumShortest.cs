@@ -72,30 +72,24 @@ internal static class NumShortest
     }
 
     /// <summary>Writes exactly what <c>Num.Clean(value).ToString("R", invariant)</c> writes; returns the number of characters.</summary>
-    internal static int WriteRoundTrip(Span<char> destination, double value)
-    {
-        int written = TryWrite(destination, value);
-        if (written >= 0)
-        {
-            return written;
-        }
-        Num.Clean(value).TryFormat(destination, out written, "R", Num.Inv);
-        return written;
-    }
+    internal static int WriteRoundTrip(Span<char> destination, double value) => Write(destination, value, "R");
 
     /// <summary>Writes exactly what <c>Num.Clean(value).ToString("G15", invariant)</c> writes; returns the number of characters.</summary>
     /// <remarks>
     /// A value that reads back from at most 15 digits is within half a unit in the last place of that decimal, far less than
     /// half a step of the 15th digit, so G15 rounds it to the same decimal and prints the same text.
     /// </remarks>
-    internal static int WriteGeneral(Span<char> destination, double value)
+    internal static int WriteGeneral(Span<char> destination, double value) => Write(destination, value, "G15");
+
+    /// <summary>The shortest text when it reads back, else what .NET writes with <paramref name="fallback"/>; the number of characters.</summary>
+    private static int Write(Span<char> destination, double value, string fallback)
     {
         int written = TryWrite(destination, value);
         if (written >= 0)
         {
             return written;
         }
-        Num.Clean(value).TryFormat(destination, out written, "G15", Num.Inv);
+        Num.Clean(value).TryFormat(destination, out written, fallback, Num.Inv);
         return written;
     }
 

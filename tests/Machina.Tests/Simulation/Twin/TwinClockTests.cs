@@ -1,4 +1,3 @@
-using Machina.Simulation;
 using Machina.Simulation.Twin;
 using Machina.Tests.Support;
 
@@ -13,7 +12,7 @@ public class TwinClockTests
     public async Task WaitAside_AtAThousandTimesRealTime_TakesAThousandthOfTheWallTime()
     {
         var wall = new ManualClock();
-        var clock = new TwinClock(new VirtualUrScaledTime(wall, 1000), realTime: true);
+        var clock = new TwinClock(new TwinScaledTime(wall, 1000), realTime: true);
         Task wait = Task.Run(() => clock.WaitAside(2, CancellationToken.None));
         await Eventually.TrueAsync(() => wall.TimersCreated == 1, "the wait's timer", Bound);
         wall.Advance(TimeSpan.FromMilliseconds(2));
@@ -26,7 +25,7 @@ public class TwinClockTests
     {
         // A RAPID monitor task's WaitTime: at 1000x it once waited 20 µs instead of 20 ms and sent the state 50,000 times a second.
         var wall = new ManualClock();
-        var clock = new TwinClock(new VirtualUrScaledTime(wall, 1000), realTime: true);
+        var clock = new TwinClock(new TwinScaledTime(wall, 1000), realTime: true);
         Task wait = Task.Run(() => clock.WaitWall(2, CancellationToken.None));
         await Eventually.TrueAsync(() => wall.TimersCreated == 1, "the wait's timer", Bound);
         wall.Advance(TimeSpan.FromSeconds(1));

@@ -23,28 +23,7 @@ internal sealed class AbbMessageReader : IMessageReader<AbbMessage>
     public int PendingByteCount => _end - _start;
 
     /// <summary>Adds received bytes; call <see cref="TryRead"/> until it returns false afterwards.</summary>
-    public void Append(ReadOnlySpan<byte> data)
-    {
-        if (_end + data.Length > _buffer.Length)
-        {
-            int pending = _end - _start;
-            if (pending + data.Length > _buffer.Length)
-            {
-                var bigger = new byte[Math.Max(_buffer.Length * 2, pending + data.Length)];
-                _buffer.AsSpan(_start, pending).CopyTo(bigger);
-                _buffer = bigger;
-            }
-            else
-            {
-                _buffer.AsSpan(_start, pending).CopyTo(_buffer);
-            }
-            _scanned -= _start;
-            _start = 0;
-            _end = pending;
-        }
-        data.CopyTo(_buffer.AsSpan(_end));
-        _end += data.Length;
-    }
+    public void Append(ReadOnlySpan<byte> data) => _scanned -= ReceiveBuffer.Append(ref _buffer, ref _start, ref _end, data);
 
     /// <summary>Returns the next complete message, or false when more bytes are needed. Empty messages are skipped.</summary>
     /// <exception cref="AbbProtocolException">The received text is not a message of the protocol.</exception>

@@ -32,24 +32,7 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
     /// <summary>Adds received bytes; call <see cref="TryRead"/> until it returns false afterwards.</summary>
     public void Append(ReadOnlySpan<byte> data)
     {
-        int pending = _end - _start;
-        if (_end + data.Length > _buffer.Length)
-        {
-            if (pending + data.Length > _buffer.Length)
-            {
-                var bigger = new byte[Math.Max(_buffer.Length * 2, pending + data.Length)];
-                _buffer.AsSpan(_start, pending).CopyTo(bigger);
-                _buffer = bigger;
-            }
-            else
-            {
-                _buffer.AsSpan(_start, pending).CopyTo(_buffer);
-            }
-            _start = 0;
-            _end = pending;
-        }
-        data.CopyTo(_buffer.AsSpan(_end));
-        _end += data.Length;
+        ReceiveBuffer.Append(ref _buffer, ref _start, ref _end, data);
         _mayComplete |= data.Contains((byte)'>');
     }
 

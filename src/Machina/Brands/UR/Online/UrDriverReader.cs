@@ -28,17 +28,7 @@ internal sealed class UrDriverReader : IMessageReader<UrReply>
         {
             _pendingStart = _pendingEnd = 0;
         }
-        if (_pendingEnd + data.Length > _pending.Length)
-        {
-            int pending = _pendingEnd - _pendingStart;
-            byte[] target = pending + data.Length > _pending.Length ? new byte[Math.Max(_pending.Length * 2, pending + data.Length)] : _pending;
-            _pending.AsSpan(_pendingStart, pending).CopyTo(target);
-            _pending = target;
-            _pendingStart = 0;
-            _pendingEnd = pending;
-        }
-        data.CopyTo(_pending.AsSpan(_pendingEnd));
-        _pendingEnd += data.Length;
+        ReceiveBuffer.Append(ref _pending, ref _pendingStart, ref _pendingEnd, data);
     }
 
     /// <summary>The next acknowledgement or response from the appended bytes, or false when more are needed.</summary>
