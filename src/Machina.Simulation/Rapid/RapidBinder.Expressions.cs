@@ -85,6 +85,10 @@ internal sealed partial class RapidBinder
             n.Global = _program.Errno;
             return _program.Errno.Type;
         }
+        if (IsDataToCome(n.Name))
+        {
+            throw new WaitsForData();
+        }
         string what = RoutineNamed(n.Name) is not null || _builtins.ContainsKey(n.Name) ? "is a routine, not data" : "is unknown (not data)";
         throw Refuse(n.Line, RapidLoadException.Reference($"'{n.Name}' {what}"));
     }

@@ -39,11 +39,7 @@ internal sealed partial class RapidBinder
             {
                 binder.Declare(module);
             }
-            foreach (RapidModule module in modules)
-            {
-                binder._module = module;
-                binder.InitializeData(module);
-            }
+            binder.InitializeData(modules);
             foreach (RapidModule module in modules)
             {
                 binder._module = module;
@@ -103,50 +99,48 @@ internal sealed partial class RapidBinder
         ? type
         : throw Refuse(line, RapidLoadException.Reference($"'{name}' is not a data type"));
 
-    private void InitializeData(RapidModule module)
+    /// <summary>Declares one datum of the module being bound (<see cref="_module"/>) and gives it its initial value.</summary>
+    private void InitializeDatum(RapidDataDecl decl)
     {
-        Dictionary<string, RapidCell> local = _localData[module];
-        foreach (RapidDataDecl decl in module.Data)
+        Dictionary<string, RapidCell> local = _localData[_module];
+        if (local.ContainsKey(decl.Name) || (!decl.Local && _program.Globals.TryGetValue(decl.Name, out RapidCell? old) && old.Storage != RapidStorage.Pers
+            && !_program.Predefined.Remove(decl.Name))
+            || _program.Routines.ContainsKey(decl.Name))
         {
-            if (local.ContainsKey(decl.Name) || (!decl.Local && _program.Globals.TryGetValue(decl.Name, out RapidCell? old) && old.Storage != RapidStorage.Pers
-                && !_program.Predefined.Remove(decl.Name))
-                || _program.Routines.ContainsKey(decl.Name))
+            throw Refuse(decl.Line, RapidLoadException.Reference($"'{decl.Name}' is already defined"));
+        }
+        var type = new RapidDataType(TypeNamed(decl.TypeName, decl.Line), decl.Dimensions.Length);
+        int[] dims = Dimensions(decl, null);
+        if (dims.Length > 0 && (_elements += _machine.Limits.Elements(dims) ?? 0) > _machine.Limits.MaxTotalElements)
+        {
+            throw Refuse(decl.Line, RapidLoadException.Type($"the data of the modules hold more than {_machine.Limits.MaxTotalElements:N0} array elements (the twin's limit)"));
+        }
+        RapidCell cell;
+        if (decl.Storage == RapidStorage.Pers && _persistents.TryGetValue(decl.Name, out RapidCell? shared))
+        {
+            if (!shared.Type.Accepts(type) || !type.Accepts(shared.Type))
             {
-                throw Refuse(decl.Line, RapidLoadException.Reference($"'{decl.Name}' is already defined"));
+                throw Refuse(decl.Line, RapidLoadException.Type($"the persistent '{decl.Name}' is a {shared.Type} elsewhere, not a {type}"));
             }
-            var type = new RapidDataType(TypeNamed(decl.TypeName, decl.Line), decl.Dimensions.Length);
-            int[] dims = Dimensions(decl, null);
-            if (dims.Length > 0 && (_elements += _machine.Limits.Elements(dims) ?? 0) > _machine.Limits.MaxTotalElements)
+            cell = shared;
+        }
+        else
+        {
+            cell = new RapidCell(decl.Name, type, decl.Storage, RapidValues.Default(type, dims));
+            if (decl.Initial is not null)
             {
-                throw Refuse(decl.Line, RapidLoadException.Type($"the data of the modules hold more than {_machine.Limits.MaxTotalElements:N0} array elements (the twin's limit)"));
+                BindValue(decl.Initial, type, new RapidScope(null));
+                cell.Value = RapidValues.Copy(_machine.Evaluate(decl.Initial, null));
             }
-            RapidCell cell;
-            if (decl.Storage == RapidStorage.Pers && _persistents.TryGetValue(decl.Name, out RapidCell? shared))
+            if (decl.Storage == RapidStorage.Pers)
             {
-                if (!shared.Type.Accepts(type) || !type.Accepts(shared.Type))
-                {
-                    throw Refuse(decl.Line, RapidLoadException.Type($"the persistent '{decl.Name}' is a {shared.Type} elsewhere, not a {type}"));
-                }
-                cell = shared;
+                _persistents[decl.Name] = cell;
             }
-            else
-            {
-                cell = new RapidCell(decl.Name, type, decl.Storage, RapidValues.Default(type, dims));
-                if (decl.Initial is not null)
-                {
-                    BindValue(decl.Initial, type, new RapidScope(null));
-                    cell.Value = RapidValues.Copy(_machine.Evaluate(decl.Initial, null));
-                }
-                if (decl.Storage == RapidStorage.Pers)
-                {
-                    _persistents[decl.Name] = cell;
-                }
-            }
-            (decl.Local ? local : _program.Globals)[decl.Name] = cell;
-            if (decl.Local)
-            {
-                _program.ModuleData.TryAdd(decl.Name, cell);
-            }
+        }
+        (decl.Local ? local : _program.Globals)[decl.Name] = cell;
+        if (decl.Local)
+        {
+            _program.ModuleData.TryAdd(decl.Name, cell);
         }
     }
 

@@ -160,12 +160,13 @@ internal static partial class RapidBuiltins
                 events.Add((When(e, profile), e));
             }
         }
+        AddSpeedSamples(events, profile);
         RequireOutsideLimitZones(call, f => arc?.At(f).Position
             ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(from, joints, f), tool)), from, joints);
         arm.Serve = task.RunPendingTraps;
         double done = 0, doneFraction = 0;
         Joints near = from;
-        var speedOutputs = new List<RapidTriggEvent>();
+        var speedOutputs = new Dictionary<RapidTriggEvent, double>(ReferenceEqualityComparer.Instance);
         foreach ((double at, RapidTriggEvent e) in events.OrderBy(x => x.At))
         {
             if (at > done)
@@ -185,18 +186,41 @@ internal static partial class RapidBuiltins
                 arm.MoveTo(piece, at - done, call.Line, name, task.CancellationToken, trace: false, linear: linear, arc: Part(arc, doneFraction, f));
                 (done, doneFraction, near) = (at, f, piece);
             }
-            Fire(call, e, profile.SpeedAt(at));
+            double speed = profile.SpeedAt(at - e.ShiftSeconds); // a TriggSpeed output anticipates the speed by its ScaleLag
+            if (e.FollowsSpeed && speedOutputs.TryGetValue(e, out double set) && Math.Abs(set - speed) < 1e-9)
+            {
+                continue; // the speed is the same: the output stays as it is
+            }
+            Fire(call, e, speed);
             if (e.FollowsSpeed)
             {
-                speedOutputs.Add(e);
+                speedOutputs[e] = speed;
             }
         }
         arm.MoveTo(joints, seconds - done, call.Line, name, task.CancellationToken, linear: linear, arc: Part(arc, doneFraction, 1));
-        foreach (RapidTriggEvent e in speedOutputs)
-        {
-            Fire(call, e, 0); // the move ends at its ToPoint: the TCP speed, and so the output, is 0 there
-        }
         ZoneOutputsAfterMotion(call);
+    }
+
+    /// <summary>The times along each ramp of a move at which a TriggSpeed output is set again (an eighth of the ramp apart).</summary>
+    private const int SpeedSamplesPerRamp = 8;
+
+    /// <summary>
+    /// TriggSpeed: after its event, the output follows the TCP speed; it is set again at <see cref="SpeedSamplesPerRamp"/> points along
+    /// each ramp of the move (and at the start of the last one), each ScaleLag earlier, down to 0 where the TCP stops.
+    /// </summary>
+    private static void AddSpeedSamples(List<(double At, RapidTriggEvent Event)> events, RapidTriggProfile profile)
+    {
+        foreach ((double at, RapidTriggEvent e) in events.Where(x => x.Event.FollowsSpeed).ToList())
+        {
+            foreach (double t in profile.RampTimes(SpeedSamplesPerRamp))
+            {
+                double when = t + e.ShiftSeconds;
+                if (when > at && when <= profile.Seconds)
+                {
+                    events.Add((when, e));
+                }
+            }
+        }
     }
 
     /// <summary>The part of <paramref name="arc"/> between two fractions of it (null when there is no arc, or the part is too short to be one).</summary>

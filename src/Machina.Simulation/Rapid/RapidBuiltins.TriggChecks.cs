@@ -4,8 +4,8 @@ namespace Machina.Simulation.Rapid;
 /// Fixed-position checks and speed-following outputs (RAPID reference: TriggCheckIO, TriggSpeed), fired by TriggL, TriggJ and TriggC
 /// as the other Trigg events are. TriggCheckIO compares a signal with a value where the TCP passes its point and, when the
 /// comparison fails, orders its interrupt (with \StopMove the robot first stops on its path; the trap's StartMove lets it go on).
-/// TriggSpeed sets an analog output to ScaleValue times the TCP speed in mm/s from its point on (ScaleLag earlier), and to 0 where
-/// the move stops.
+/// TriggSpeed sets an analog output to ScaleValue times the TCP speed in mm/s from its point on, following the speed along the
+/// move's ramps down to 0 where the move stops, each value ScaleLag earlier (\DipLag and \ErrDO are taken and not used).
 /// </summary>
 internal static partial class RapidBuiltins
 {

@@ -40,7 +40,10 @@ internal sealed class RapidRuntimeException(int errno, int line, string message)
     /// <summary>The controller's event number for the event log (e.g. 50050 for a motion error), or 0.</summary>
     public int Event { get; init; }
 
-    /// <summary>True for a budget of the twin (steps, stack, calls, arrays): no ERROR handler takes it, the task stops.</summary>
+    /// <summary>
+    /// True for an error of the system error handler: a budget of the twin (steps, stack, calls, arrays), or an error inside an
+    /// ERROR handler. No ERROR handler takes it, the task stops.
+    /// </summary>
     public bool Fatal { get; init; }
 
     /// <summary>The routine frame that passed this error on with <c>RAISE</c> (its own handler must not take it again).</summary>

@@ -28,13 +28,22 @@ internal sealed partial class RapidMachine
     public void ResetRetries() => _retries = 0;
 
     /// <summary>
-    /// ERR_EXCRTYMAX: one more RETRY than <see cref="RapidTwinOptions.MaxRetries"/> without the statement getting past its error. It is
-    /// raised from the error handler, so the routine's own handler does not take it: the caller's may, else the task stops.
+    /// ERR_EXCRTYMAX: one more RETRY than <see cref="RapidTwinOptions.MaxRetries"/> without the statement getting past its error.
+    /// RETRY is an instruction of the error handler, so, as any error inside an error handler, it goes to the system error handler:
+    /// the task stops with it (<see cref="ToSystemErrorHandler"/>).
     /// </summary>
-    private RapidRuntimeException TooManyRetries(RapidRuntimeException error, RapidFrame frame) =>
+    private RapidRuntimeException TooManyRetries(RapidRuntimeException error) =>
         new(RapidErrorNumbers.RetryMax, error.Line,
             $"the maximum number of retries ({Task.Controller.Options.MaxRetries}) is exceeded: {error.Reason}")
-        { RaisedBy = frame };
+        { Fatal = true };
+
+    /// <summary>
+    /// An error inside an ERROR handler (other than the handled error passed on with RAISE): "it is not possible to recover from or
+    /// respond to errors that occur within an error clause. Such errors are always propagated to the system error handler" (RAPID
+    /// Reference Manual, Basic Characteristics, "Error Recovery"), which reports it and stops the task: no handler takes it.
+    /// </summary>
+    private static RapidRuntimeException ToSystemErrorHandler(RapidRuntimeException error) =>
+        new(error.ErrorNumber, error.Line, error.Reason) { Event = error.Event, Fatal = true };
 
     /// <summary>
     /// Runs a routine's body; when an error or ExitCycle leaves it early, its UNDO handler runs first (an error inside the UNDO

@@ -99,6 +99,10 @@ internal sealed partial class RapidMachine(RapidTask task)
                 {
                     flow = ExecuteBlock(frame.Routine.ErrorHandler!, frame);
                 }
+                catch (RapidRuntimeException inner) when (!inner.Fatal && !(ReferenceEquals(inner, ex) && inner.RaisedBy == frame))
+                {
+                    throw ToSystemErrorHandler(inner);
+                }
                 finally
                 {
                     frame.Handling = null;
@@ -112,7 +116,7 @@ internal sealed partial class RapidMachine(RapidTask task)
                 if (++_retries > Task.Controller.Options.MaxRetries && Task.Controller.Options.MaxRetries > 0)
                 {
                     _retries = 0;
-                    throw TooManyRetries(ex, frame);
+                    throw TooManyRetries(ex);
                 }
                 retried = true;
             }

@@ -11,6 +11,12 @@ internal sealed class RapidTriggProfile(double metres, double speed, double acce
 {
     private readonly double _plain = TwinMotion.TrapezoidSeconds(metres, speed, acceleration);
 
+    /// <summary>The length (m) of each ramp of the trapezoid (half the move when it is a triangle).</summary>
+    private readonly double _ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2);
+
+    /// <summary>The seconds each ramp takes in the plain trapezoid.</summary>
+    private double RampSeconds => Math.Sqrt(2 * _ramp / acceleration);
+
     /// <summary>The move's length in metres.</summary>
     public double Metres => metres;
 
@@ -25,7 +31,7 @@ internal sealed class RapidTriggProfile(double metres, double speed, double acce
             return along < metres ? 0 : seconds;
         }
         along = Math.Clamp(along, 0, metres);
-        double ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2), rampSeconds = Math.Sqrt(2 * ramp / acceleration);
+        double ramp = _ramp, rampSeconds = RampSeconds;
         double t = along <= ramp ? Math.Sqrt(2 * along / acceleration)
             : along <= metres - ramp ? rampSeconds + (along - ramp) / speed
             : _plain - Math.Sqrt(2 * (metres - along) / acceleration);
@@ -40,9 +46,31 @@ internal sealed class RapidTriggProfile(double metres, double speed, double acce
             return 0;
         }
         double t = Math.Clamp(time, 0, seconds) * _plain / seconds;
-        double ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2), rampSeconds = Math.Sqrt(2 * ramp / acceleration);
+        double rampSeconds = RampSeconds;
         double v = t <= rampSeconds ? acceleration * t : t <= _plain - rampSeconds ? speed : acceleration * (_plain - t);
         return Math.Max(0, v) * _plain / seconds;
+    }
+
+    /// <summary>
+    /// The seconds after the start at which the speed is sampled along the ramps: <paramref name="steps"/> points up the first ramp,
+    /// the start of the last ramp and <paramref name="steps"/> points down it, the last one where the TCP stops.
+    /// </summary>
+    public IEnumerable<double> RampTimes(int steps)
+    {
+        if (metres <= 0 || seconds <= 0 || _plain <= 0)
+        {
+            yield return seconds;
+            yield break;
+        }
+        double rampSeconds = RampSeconds, scale = seconds / _plain;
+        for (int i = 1; i <= steps; i++)
+        {
+            yield return rampSeconds * i / steps * scale;
+        }
+        for (int i = 0; i <= steps; i++)
+        {
+            yield return i == steps ? seconds : (_plain - rampSeconds + rampSeconds * i / steps) * scale;
+        }
     }
 
     /// <summary>The fraction of the move's length the TCP covered <paramref name="time"/> seconds after the start.</summary>
@@ -53,7 +81,7 @@ internal sealed class RapidTriggProfile(double metres, double speed, double acce
             return time <= 0 ? 0 : 1;
         }
         double t = Math.Clamp(time, 0, seconds) * _plain / seconds;
-        double ramp = Math.Min(speed * speed / (2 * acceleration), metres / 2), rampSeconds = Math.Sqrt(2 * ramp / acceleration);
+        double ramp = _ramp, rampSeconds = RampSeconds;
         double along = t <= rampSeconds ? acceleration * t * t / 2
             : t <= _plain - rampSeconds ? ramp + (t - rampSeconds) * speed
             : metres - acceleration * (_plain - t) * (_plain - t) / 2;

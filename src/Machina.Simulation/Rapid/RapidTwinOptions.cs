@@ -24,8 +24,8 @@ internal sealed record RapidTwinOptions : TwinOptions
     public string LanIp { get; init; } = "127.0.0.1";
 
     /// <summary>
-    /// The RETRYs an error handler may make before the error becomes ERR_EXCRTYMAX, raised to the caller (the system parameter
-    /// General RAPID "No Of Retry", 4 by default on a controller); 0: no limit.
+    /// The RETRYs an error handler may make before the next one raises ERR_EXCRTYMAX, an error inside the handler that stops the task
+    /// (the system parameter General RAPID "No Of Retry", 4 by default on a controller); 0: no limit.
     /// </summary>
     public int MaxRetries { get; init; } = 4;
 

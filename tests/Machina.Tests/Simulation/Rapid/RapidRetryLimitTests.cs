@@ -4,7 +4,8 @@ namespace Machina.Tests.Simulation.Rapid;
 
 /// <summary>
 /// The RETRY limit (RAPID: RETRY, ResetRetryCount, ERR_EXCRTYMAX; the system parameter "No Of Retry", 4): a handler that retries a
-/// statement more than 4 times without it getting past its error raises ERR_EXCRTYMAX to the caller, or stops the task.
+/// statement more than 4 times without it getting past its error raises ERR_EXCRTYMAX inside the handler, and an error inside an
+/// error handler goes to the system error handler (RAPID Reference Manual, "Error Recovery"): the task stops.
 /// </summary>
 public class RapidRetryLimitTests
 {
@@ -25,7 +26,7 @@ public class RapidRetryLimitTests
         """;
 
     [Fact]
-    public void RetryingMoreThanFourTimes_RaisesErrExcrtymaxToTheCaller()
+    public void RetryingMoreThanFourTimes_GoesToTheSystemErrorHandler_TheCallersHandlerDoesNotTakeIt()
     {
         RapidTwinController twin = Load(
             """
@@ -33,15 +34,91 @@ public class RapidRetryLimitTests
                 Divide;
                 TPWrite "not reached";
               ERROR
-                TPWrite "main: ERR_EXCRTYMAX " \Bool:=ERRNO = ERR_EXCRTYMAX;
-                TPWrite "handler runs " \Num:=tries;
+                TPWrite "main's handler took " \Num:=ERRNO;
+                TRYNEXT;
               ENDPROC
             """,
             Divide);
 
-        Assert.Equal(RapidProgramState.Finished, twin.Run());
-        // The error, then 4 RETRYs that fail again: the fifth RETRY is one too many.
-        Assert.Equal(["main: ERR_EXCRTYMAX TRUE", "handler runs 5"], twin.Pendant.Lines);
+        Assert.Equal(RapidProgramState.Failed, twin.Run());
+        // The error, then 4 RETRYs that fail again: the fifth RETRY is one too many, an error inside the handler.
+        Assert.StartsWith("Execution error: line 13: the maximum number of retries (4) is exceeded: ", twin.Error);
+        Assert.DoesNotContain(twin.Pendant.Lines, l => l.StartsWith("main's handler", StringComparison.Ordinal));
+        Assert.Equal(5.0, twin.Task().Program.Globals["tries"].Value);
+    }
+
+    [Fact]
+    public void AnErrorInsideAnErrorHandler_StopsTheTask_NoHandlerAboveTakesIt()
+    {
+        RapidTwinController twin = Load(
+            """
+              PROC main()
+                Inner;
+                TPWrite "not reached";
+              ERROR
+                TPWrite "main's handler took " \Num:=ERRNO;
+                TRYNEXT;
+              ENDPROC
+              PROC Inner()
+                x := 1 / d;
+              ERROR
+                TPWrite "Inner's handler";
+                x := 2 / d;
+                TRYNEXT;
+              ENDPROC
+            """);
+
+        Assert.Equal(RapidProgramState.Failed, twin.Run());
+        Assert.Equal("Inner's handler", twin.Pendant.Lines[0]);
+        Assert.DoesNotContain(twin.Pendant.Lines, l => l.StartsWith("main's handler", StringComparison.Ordinal));
+        Assert.StartsWith("Execution error: line 16: division by zero", twin.Error);
+    }
+
+    [Fact]
+    public void RaiseInsideAnErrorHandler_StillPassesTheErrorToTheCallersHandler()
+    {
+        RapidTwinController twin = Load(
+            """
+              PROC main()
+                Inner;
+                TPWrite "after";
+              ERROR
+                TPWrite "main's handler: ERR_DIVZERO " \Bool:=ERRNO = ERR_DIVZERO;
+                TRYNEXT;
+              ENDPROC
+              PROC Inner()
+                x := 1 / d;
+              ERROR
+                RAISE;
+              ENDPROC
+            """);
+
+        Assert.True(twin.Run() == RapidProgramState.Finished, twin.Error);
+        Assert.Equal(["main's handler: ERR_DIVZERO TRUE", "after"], twin.Pendant.Lines);
+    }
+
+    [Fact]
+    public void AnErrorInARoutineCalledFromAHandler_ThatRoutinesOwnHandlerTakesIt()
+    {
+        RapidTwinController twin = Load(
+            """
+              PROC main()
+                x := 1 / d;
+                TPWrite "after";
+              ERROR
+                Safe;
+                TRYNEXT;
+              ENDPROC
+              PROC Safe()
+                x := 3 / d;
+              ERROR
+                TPWrite "Safe's own handler";
+                TRYNEXT;
+              ENDPROC
+            """);
+
+        Assert.True(twin.Run() == RapidProgramState.Finished, twin.Error);
+        Assert.Equal(["Safe's own handler", "after"], twin.Pendant.Lines);
     }
 
     [Fact]

@@ -1,5 +1,9 @@
 // The command-line tool is .NET 10 only (see Machina.Tests.csproj): these tests run with the net10.0 build.
 #if NET10_0_OR_GREATER
+using System.Globalization;
+using System.Net;
+using System.Text;
+using System.Text.RegularExpressions;
 using Machina.Tests.Cli;
 
 namespace Machina.Tests.Simulation.Rapid;
@@ -57,6 +61,33 @@ public class RapidSimLoadCommandTests
         Assert.Equal("ran glue 3\n", File.ReadAllText(cli.PathOf("cell/logs.txt")));
         Assert.Equal(2, ur.Exit);
         Assert.Contains("--home is the mass memory of a virtual ABB (RAPID's HOME:), not of ur.", ur.Stderr, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task SimAbb_HomeWithoutLoad_IsWhatRwsFileServiceWritesTo_AndIsKeptAfterTheStop()
+    {
+        using var cli = new CliRunner();
+        using var cancel = new CancellationTokenSource();
+        var stdout = new WatchedWriter();
+        Task<CliResult> sim = cli.RunAsync(["sim", "abb", "--port", "0", "--rws-port", "0", "--home", "cell"], "", cancel.Token, stdout);
+        try
+        {
+            await stdout.WaitForAsync("RAPID's HOME:, the folder ");
+            Match rws = Regex.Match(stdout.Text, @"Robot Web Services \(RWS 1\.0\) on 127\.0\.0\.1:([0-9]+),");
+            Assert.True(rws.Success, stdout.Text);
+            Assert.Contains($"RWS's /fileservice/$HOME is RAPID's HOME:, the folder {cli.PathOf("cell")}.\n", stdout.Text, StringComparison.Ordinal);
+            using var http = Machina.Tests.Rws.RwsTestClient.For(int.Parse(rws.Groups[1].Value, CultureInfo.InvariantCulture), new CookieContainer(), TimeSpan.FromSeconds(30));
+            using HttpResponseMessage put = await http.PutAsync("/fileservice/$HOME/from-rws.txt", new StringContent("uploaded\n", Encoding.ASCII));
+            Assert.True(put.IsSuccessStatusCode, put.ToString());
+        }
+        finally
+        {
+            await cancel.CancelAsync();
+        }
+        CliResult result = await sim;
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Equal("uploaded\n", File.ReadAllText(cli.PathOf("cell/from-rws.txt")));
     }
 }
 #endif

@@ -88,7 +88,7 @@ public class RapidTriggCheckTests
     }
 
     [Fact]
-    public void TriggSpeed_SetsTheAnalogOutputToTheScaleTimesTheTcpSpeed_FromItsPoint_AndToZeroWhereTheMoveStops()
+    public void TriggSpeed_SetsTheAnalogOutputToTheScaleTimesTheTcpSpeed_FromItsPoint_AndFollowsTheLastRampDownToZero()
     {
         RapidTwinController twin = Run("VAR triggdata flow;", """
                 TriggSpeed flow, 50, 0, AO_1, 0.02;
@@ -96,11 +96,33 @@ public class RapidTriggCheckTests
             """);
 
         TwinTraceEntry[] outputs = [.. twin.Arm.Trace.Where(e => e.Kind == TwinTraceKind.Output)];
-        // 50 mm before the end the TCP runs at its programmed 250 mm/s (the last ramp is 26 mm): 0.02 * 250 = 5; at the stop point 0.
-        Assert.Equal(["AO_1 = 5", "AO_1 = 0"], outputs.Select(e => e.Text));
+        // 50 mm before the end the TCP runs at its programmed 250 mm/s (the last ramp is 26 mm): 0.02 * 250 = 5; then the output
+        // follows the speed down the last ramp, set again at each eighth of it, to 0 where the TCP stops.
+        Assert.Equal(["AO_1 = 5", "AO_1 = 4.375", "AO_1 = 3.75", "AO_1 = 3.125", "AO_1 = 2.5", "AO_1 = 1.875", "AO_1 = 1.25", "AO_1 = 0.625", "AO_1 = 0"],
+            outputs.Select(e => e.Text));
         const double ramp = 0.25 * 0.25 / (2 * 1.2); // metres
         Assert.Equal(0.25 / 1.2 + (0.05 - ramp) / 0.25, outputs[0].Seconds, 5);
-        Assert.Equal(Whole, outputs[1].Seconds, 5);
+        Assert.Equal(Whole - 0.25 / 1.2 * 7 / 8, outputs[1].Seconds, 5);
+        Assert.Equal(Whole, outputs[^1].Seconds, 5);
+    }
+
+    [Fact]
+    public void TriggSpeed_FromTheStart_FollowsTheFirstRampUp_AndScaleLagSetsEachValueThatMuchEarlier()
+    {
+        RapidTwinController twin = Run("VAR triggdata flow;", """
+                TriggSpeed flow, 0 \Start, 0.05, AO_1, 0.04;
+                TriggL p, s250, flow, fine, tool0;
+            """);
+
+        TwinTraceEntry[] outputs = [.. twin.Arm.Trace.Where(e => e.Kind == TwinTraceKind.Output)];
+        // 0.04 * the speed 0.05 s later: at the start 0.04 * 1.2 m/s² * 0.05 s = 2.4; up the ramp (0.2083 s) to 10 at 0.1583 s.
+        Assert.Equal("AO_1 = 2.4", outputs[0].Text);
+        Assert.Equal(0, outputs[0].Seconds, 5);
+        TwinTraceEntry full = outputs.First(e => e.Text == "AO_1 = 10");
+        Assert.Equal(0.25 / 1.2 - 0.05, full.Seconds, 5);
+        Assert.Equal("AO_1 = 0", outputs[^1].Text);
+        Assert.Equal(Whole - 0.05, outputs[^1].Seconds, 5);
+        Assert.All(outputs.Zip(outputs.Skip(1)), pair => Assert.True(pair.First.Seconds <= pair.Second.Seconds));
     }
 
     [Fact]
