@@ -306,6 +306,49 @@ public class RsiSensorTests
     }
 
     [Fact]
+    public async Task DigitalObjects_SendOutputsAndInputs_AndMapTheSensorsValueToAnOutput()
+    {
+        // As KUKA's rsi_gpio_joint_pos.rsix: DIGOUT and DIGIN feed the ETHERNET object's inputs, MAP2DIGOUT sets an output.
+        const string context = """
+            <RsiContext><RsiObjects xmlns="RsiDriver">
+              <RsiObject ObjType="Ethernet" ObjId="Ethernet_1">
+                <Inputs><Input InIdx="0" OutObjId="DigOut_1" OutIdx="0" /><Input InIdx="1" OutObjId="DigIn_1" OutIdx="0" /></Inputs>
+                <Parameters><Parameter Name="ConfigFile" ParamValue="gpio_ethernet.xml" /><Parameter Name="Timeout" ParamValue="100" /></Parameters>
+              </RsiObject>
+              <RsiObject ObjType="Stop" ObjId="Stop_1"><Inputs><Input InIdx="0" OutObjId="Ethernet_1" OutIdx="0" /></Inputs></RsiObject>
+              <RsiObject ObjType="DigOut" ObjId="DigOut_1"><Parameters><Parameter Name="Index" ParamValue="3" /></Parameters></RsiObject>
+              <RsiObject ObjType="DigIn" ObjId="DigIn_1"><Parameters><Parameter Name="Index" ParamValue="4" /></Parameters></RsiObject>
+              <RsiObject ObjType="Map2DigOut" ObjId="Map2DigOut_1">
+                <Inputs><Input InIdx="0" OutObjId="Ethernet_1" OutIdx="1" /></Inputs>
+                <Parameters><Parameter Name="Index" ParamValue="5" /></Parameters>
+              </RsiObject>
+            </RsiObjects></RsiContext>
+            """;
+        using var sensor = new UdpClient(new IPEndPoint(IPAddress.Loopback, 0));
+        string ethernet = $"""
+            <ROOT><CONFIG><IP_NUMBER>127.0.0.1</IP_NUMBER><PORT>{((IPEndPoint)sensor.Client.LocalEndPoint!).Port}</PORT><SENTYPE>Io</SENTYPE></CONFIG>
+              <SEND><ELEMENTS><ELEMENT TAG="IO.Out3" TYPE="BOOL" INDX="1" /><ELEMENT TAG="IO.In4" TYPE="BOOL" INDX="2" /></ELEMENTS></SEND>
+              <RECEIVE><ELEMENTS><ELEMENT TAG="Stop" TYPE="BOOL" INDX="1" HOLDON="0" /><ELEMENT TAG="Set" TYPE="BOOL" INDX="2" HOLDON="1" /></ELEMENTS></RECEIVE>
+            </ROOT>
+            """;
+        using var twin = new KrlTwinController();
+        twin.AddRsiFile("gpio.rsix", context);
+        twin.AddRsiFile("gpio_ethernet.xml", ethernet);
+        twin.Load(("gpio.src", "DEF gpio( )\n  INT ret, id\n  $OUT[3] = TRUE\n  ret = RSI_CREATE(\"gpio\", id, TRUE)\n  ret = RSI_ON(#ABSOLUTE)\n  RSI_MOVECORR()\n  ret = RSI_OFF()\nEND\n"));
+        twin.SetInput(4, true);
+        using var stop = new CancellationTokenSource(Limit);
+        Task<List<XElement>> sensing = Sensor(sensor, (robot, n) =>
+            $"<Sen><Stop>{(n >= 3 ? 1 : 0)}</Stop><Set>1</Set><IPOC>{robot.Element("IPOC")!.Value}</IPOC></Sen>", stop.Token);
+
+        KrlProgramState state = await Task.Run(() => twin.Run(null, stop.Token)).WaitAsync(Limit);
+        List<XElement> received = await sensing.WaitAsync(Limit);
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal($"<Rob Type=\"Io\"><IO Out3=\"1\" In4=\"1\" /><IPOC>{received[0].Element("IPOC")!.Value}</IPOC></Rob>", received[0].ToString(SaveOptions.DisableFormatting));
+        Assert.Contains(twin.Arm.Trace, e => e.Text == "$OUT[5] = TRUE");
+    }
+
+    [Fact]
     public void AnObjectTheTwinDoesNotRun_StopsRsiCreate_WithItsName()
     {
         using var twin = Twin(1, Program("#ABSOLUTE"));
