@@ -11,7 +11,7 @@ internal static partial class SimCommand
         List<(string Name, string Text)> files;
         try
         {
-            files = [.. KrlTwinController.ProgramFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))];
+            files = [.. SelectedProgramFiles(context.FullPath(path)).Select(f => (Path.GetFileName(f), File.ReadAllText(f)))];
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
         {
@@ -50,5 +50,19 @@ internal static partial class SimCommand
             _ => $"FAILED: {twin.Error}",
         }).ConfigureAwait(false);
         return state == KrlProgramState.Finished ? ExitCodes.Ok : ExitCodes.Failed;
+    }
+
+    /// <summary>
+    /// The files of <paramref name="path"/>: a folder's (its first .src is the program), or a selected .src with its .dat and then the
+    /// other modules of its folder, as a controller has them on its disk beside the program (their GLOBAL routines callable).
+    /// </summary>
+    private static List<string> SelectedProgramFiles(string path)
+    {
+        List<string> files = [.. KrlTwinController.ProgramFiles(path)];
+        if (File.Exists(path) && Path.GetDirectoryName(Path.GetFullPath(path)) is { } folder)
+        {
+            files.AddRange(KrlTwinController.ProgramFiles(folder).Where(f => !files.Contains(f, StringComparer.OrdinalIgnoreCase)));
+        }
+        return files;
     }
 }

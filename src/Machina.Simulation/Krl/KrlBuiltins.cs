@@ -27,6 +27,8 @@ internal static class KrlBuiltins
         Add(new("MsgNotify", null, notify, Notify));
         // The message library's variant with text parameters, as KUKA's own EthernetKRL server calls it (text, module, number, texts).
         Add(new("MsgNotifyTextPar", null, notify, Notify));
+        // VarState(name): every variable the twin has holds a value (a declared one its type's default), so #INITIALIZED.
+        Add(new("VarState", KrlType.Enum, [KrlBuiltinParameter.Text], (_, _) => new KrlEnumValue("INITIALIZED")));
         Add(Math1("ABS", Math.Abs));
         Add(Math1("SQRT", x => x < 0 ? throw new KrlRuntimeException("SQRT of a negative number") : Math.Sqrt(x)));
         Add(Math1("SIN", x => Math.Sin(x * Math.PI / 180)));

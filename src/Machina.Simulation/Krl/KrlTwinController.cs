@@ -24,6 +24,8 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         KrlSystemVariables.AddStatus(Environment, this);
         KrlProgramManagement.AddTo(Environment, this);
         AddEki();
+        AddRsi();
+        AddRsiKrc2();
         foreach ((string name, int output) in Options.Signals)
         {
             if (output < 1 || output > KrlSystemVariables.DigitalCount)
@@ -80,11 +82,9 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
             else if (extension == ".src")
             {
                 var parsed = new KrlModule(module);
+                // The first routine is the program even when it is not named after its file: published RSI programs ship as
+                // ros_rsi.src with DEF RSI_AxisCorr( ), and their users select and run them so (kuka_experimental issue 48).
                 KrlParser.ParseSource(name, text, parsed, Options.Limits, types, cancellation);
-                if (!string.Equals(parsed.Routines[0].Name, module, StringComparison.OrdinalIgnoreCase))
-                {
-                    throw new KrlLoadException(name, parsed.Routines[0].Line, $"the first routine {parsed.Routines[0].Name} must have the name of its file ({module})");
-                }
                 modules[module] = parsed;
                 main ??= parsed.Routines[0].Name;
             }

@@ -52,6 +52,9 @@ internal static class KrlTypes
     public static KrlType KrlMsgOpt { get; } = KrlType.Struct("KRLMSGOPT_T",
         ("VL_Stop", KrlType.Bool), ("Clear_P_Reset", KrlType.Bool), ("Clear_P_SAW", KrlType.Bool), ("Log_to_DB", KrlType.Bool));
 
+    /// <summary>RSIERR, what RSI 2's ST_ routines return (#RSIOK when they succeeded).</summary>
+    public static KrlType RsiError => KrlType.Enum;
+
     private static readonly Dictionary<string, KrlType> ByName = new(StringComparer.OrdinalIgnoreCase)
     {
         ["INT"] = KrlType.Int, ["REAL"] = KrlType.Real, ["BOOL"] = KrlType.Bool, ["CHAR"] = KrlType.Char,
@@ -59,7 +62,7 @@ internal static class KrlTypes
         ["EKI_STATUS"] = EkiStatus, ["KrlMsg_T"] = KrlMsg, ["KrlMsgPar_T"] = KrlMsgPar, ["KrlMsgOpt_T"] = KrlMsgOpt,
         ["PDAT"] = KrlTemplateTypes.Pdat, ["LDAT"] = KrlTemplateTypes.Ldat, ["FDAT"] = KrlTemplateTypes.Fdat,
         ["BASIS_SUGG_T"] = KrlTemplateTypes.BasisSuggestions,
-        ["PRO_STATE"] = KrlType.Enum, ["MODUS_T"] = KrlType.Enum, ["STATE_T"] = KrlProgramManagement.StateType,
+        ["PRO_STATE"] = KrlType.Enum, ["RSIERR"] = KrlType.Enum, ["MODUS_T"] = KrlType.Enum, ["STATE_T"] = KrlProgramManagement.StateType,
     };
 
     /// <summary>The predefined type called <paramref name="name"/>, or null.</summary>

@@ -210,15 +210,27 @@ public class KrlCorpusFeatureTests
         Assert.Equal(["NOTIFY DEBUG 0: ROS sent start"], twin.Pendant.Lines);
     }
 
+    [Fact]
+    public void AProgramWhoseFirstRoutineIsNotNamedAfterItsFile_LoadsAndRuns()
+    {
+        // ros_rsi.src of kuka_experimental and kuka_drivers: DEF RSI_AxisCorr( ), selected and run as the file ros_rsi.
+        using var twin = new KrlTwinController();
+        twin.Load(("ros_rsi.src", "DEF RSI_AxisCorr( )\n  PTP {AXIS: A1 0, A2 -90, A3 90, A4 0, A5 0, A6 0}\n  Helper()\nEND\nDEF Helper( )\n  $OUT[3] = TRUE\nEND\n"));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal("RSI_AxisCorr", twin.MainRoutine);
+        Assert.Equal("$OUT[3] = TRUE", twin.Arm.Trace[^1].Text);
+    }
+
     [Theory]
     [InlineData("DEF prog( )\n  INT ret\n  ret = EKI_Load(\"server\")\nEND\n", 3,
         "EKI_LOAD is not supported by the twin: it is EthernetKRL for iiQKA.OS2")]
     [InlineData("DEF prog( )\n  DECL STATE_T state\n  DECL MODUS_T mode\n  INT n\n  CREAD($CMD, state, mode, \"%d\", n)\nEND\n", 5,
         "CREAD is not supported by the twin: it reads the controller's command channel or reads and writes its serial channels")]
-    [InlineData("DEF prog( )\n  DECL RSIERR err\nEND\n", 2,
-        "RSIERR: name not declared as data type: the Robot Sensor Interface (RSI, a KUKA option) is not installed on the twin, so it is refused at load as a controller without the option refuses it at program selection")]
-    [InlineData("DEF prog( )\n  INT ret\n  ret = RSI_CREATE(\"ros_rsi.rsi\", 1, TRUE)\nEND\n", 3,
-        "RSI_CREATE: name not declared as subprogram: the Robot Sensor Interface (RSI, a KUKA option) is not installed on the twin")]
+    [InlineData("DEF prog( )\n  INT ret\n  ret = RSI_CHECKID(1)\nEND\n", 3,
+        "RSI_CHECKID is not supported by the twin: the twin has RSI_CREATE, RSI_ON, RSI_MOVECORR, RSI_OFF, RSI_DELETE, RSI_SETPUBLICPAR and RSI_GETPUBLICPAR of RSI 3 and 4 (and RSI 2")]
     public void ControllerOptionsTheTwinLacks_AreRefusedAtLoad_WithWhy(string source, int line, string why)
     {
         using var twin = new KrlTwinController();

@@ -58,5 +58,25 @@ public class KrlVerifyCommandTests
         Assert.Equal(1, stopped.Exit);
         Assert.EndsWith("FAILED: Software limit switch A1 +: the target 175 deg is beyond 170 deg (prog.src, line 4)\n", stopped.Stdout, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public async Task SimKukaLoad_OfASelectedSource_LoadsTheOtherModulesOfItsFolder_AndNamesItsRsiFiles()
+    {
+        // As rsi_joint_pos_4ms.src of KUKA's SDK calls ROS_SetAxisCorrLimits of rsi_helper.src beside it.
+        using var cli = new CliRunner();
+        Directory.CreateDirectory(Path.Combine(cli.Folder, "rsi"));
+        cli.Write("rsi/main_prog.src", "DEF main_prog( )\n  PTP $AXIS_ACT\n  SetLimits(2)\nEND\n");
+        cli.Write("rsi/helper.src", "DEF helper( )\nEND\nGLOBAL DEF SetLimits(n: IN)\n  INT n\n  $OUT[n] = TRUE\nEND\n");
+        cli.Write("rsi/sensor.rsix", "<RsiContext><RsiObjects /></RsiContext>");
+        cli.Write("rsi/sensor_ethernet.xml", "<ROOT><CONFIG><IP_NUMBER>127.0.0.1</IP_NUMBER><PORT>59152</PORT></CONFIG></ROOT>");
+
+        CliResult result = await cli.RunAsync("sim", "kuka", "--load", "rsi/main_prog.src");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Contains("RSI file sensor.rsix: read when the program creates its context (RSI_CREATE)\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("RSI file sensor_ethernet.xml: read when the program creates its context (RSI_CREATE)\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("Running main_prog (main_prog.src, helper.src) on a KRL twin", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  $OUT[2] = TRUE: TCP", result.Stdout, StringComparison.Ordinal);
+    }
 }
 #endif
