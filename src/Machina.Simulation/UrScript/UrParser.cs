@@ -515,6 +515,11 @@ internal sealed class UrParser
             case UrTokenKind.Symbol when token.Text == "(":
             {
                 UrExpr inner = Expression();
+                if (Peek.Is(","))
+                {
+                    // python-urx sends set_payload(m, (x, y, z)): the Script Manual has lists and poses, no tuples.
+                    throw new UrCompileException(token.Line, "expected ')' but found ',': URScript has no tuples, a list is written [a, b, c]");
+                }
                 Expect(")");
                 return inner;
             }

@@ -129,6 +129,8 @@ public class UrScriptLanguageTests
     [InlineData("def prog():\n  if True:\n    sleep(1)\nend", "Compile error: line 4: 'end' is missing before the end of the program")]
     [InlineData("def prog():\n  x = p[1, 2]\nend", "Compile error: line 2: a pose needs 6 numbers, not 2")]
     [InlineData("def prog():\n  x = \"open\nend", "Compile error: line 2: the string does not end on its line")]
+    [InlineData("def prog():\n  set_payload(1.5, (0, 0, 0.1))\nend", "Compile error: line 2: expected ')' but found ',': URScript has no tuples, a list is written [a, b, c]")]
+    [InlineData("def prog():\n  digital_out[3] = True\nend", "Compile error: line 2: variable 'digital_out' is not defined")]
     public void Compile_Mistake_IsRefusedWithItsLineAndNothingRuns(string program, string expected)
     {
         using UrTwinController twin = RunProgram("def first():\n  set_standard_digital_out(1, True)\nend", out _);
