@@ -278,7 +278,7 @@ internal sealed partial class KrlTwinController
     }
 
     private bool RsiDigital(string array, int number) =>
-        number is >= 1 and <= KrlSystemVariables.DigitalCount && (bool)((KrlArrayValue)Environment.System[array].Value).Items[number - 1];
+        number is >= 1 and <= KrlSystemVariables.DigitalCount && Io.GetBit(array, number - 1);
 
     private void RsiSetOutput(int number, bool value)
     {
@@ -286,7 +286,7 @@ internal sealed partial class KrlTwinController
         {
             return;
         }
-        ((KrlArrayValue)Environment.System["$OUT"].Value).Items[number - 1] = value;
+        Io.SetBit("$OUT", number - 1, value);
         OutputWritten("$OUT", number - 1);
     }
 
