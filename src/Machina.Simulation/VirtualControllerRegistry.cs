@@ -8,7 +8,20 @@ namespace Machina.Simulation;
 public static class VirtualControllerRegistry
 {
     private sealed record Entry(BrandDefinition Brand, Func<VirtualControllerOptions> Defaults, Func<VirtualControllerOptions, RunningVirtualController> Create,
-        bool ListensWhereAsked = false);
+        bool ListensWhereAsked = false)
+    {
+        /// <summary>The ports of the vendor's own simulator, where its clients look (name as in the port names, port), or null.</summary>
+        public (string Name, int Port)[]? VendorPorts { get; init; }
+
+        /// <summary>The settings that make the twin stand in for the vendor's simulator at <see cref="VendorPorts"/>, or null.</summary>
+        public Func<VirtualControllerOptions, VirtualControllerOptions>? AsVendorSimulator { get; init; }
+
+        /// <summary>What a person starting the stand-in must know first (UR: the arm is powered off), or null.</summary>
+        public string? VendorSimulatorNote { get; init; }
+
+        /// <summary>The settings with the controller's mass memory in a folder, for a brand whose controller has one; or null.</summary>
+        public Func<VirtualControllerOptions, string, VirtualControllerOptions>? WithHome { get; init; }
+    }
 
     private static readonly Entry[] Entries =
     [
@@ -16,7 +29,10 @@ public static class VirtualControllerRegistry
         {
             var c = new VirtualAbbController((VirtualAbbControllerOptions)o);
             return new Running<VirtualAbbState>(AbbBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "malformed");
-        }, ListensWhereAsked: true),
+        }, ListensWhereAsked: true)
+        {
+            WithHome = (o, home) => (VirtualAbbControllerOptions)o with { HomeDirectory = home },
+        },
         new(UrBrand.Definition, () => new VirtualUrControllerOptions(), o =>
         {
             var options = (VirtualUrControllerOptions)o;
@@ -29,7 +45,14 @@ public static class VirtualControllerRegistry
             ];
             var served = ports.Where(p => p.Served).ToArray();
             return new Running<VirtualUrState>(UrBrand.Definition.Type, c, c.StartAsync, [.. served.Select(p => p.Name)], () => [.. served.Select(p => p.Port())], "instructions", "refused");
-        }),
+        })
+        {
+            // URSim's ports: the client interfaces (the first takes scripts), RTDE and the dashboard.
+            VendorPorts = [("primary", 30001), ("secondary", 30002), ("real-time", 30003), ("RTDE", 30004), ("dashboard", 29999)],
+            // URSim serves its client interfaces and starts powered off (a program runs after "power on" and "brake release").
+            AsVendorSimulator = o => (VirtualUrControllerOptions)o with { PrimaryPort = 0, SecondaryPort = 0, RealtimePort = 0, StartsPoweredOff = true },
+            VendorSimulatorNote = "The arm is powered off, as on URSim: send \"power on\" and \"brake release\" to the dashboard (29999) before a program runs.",
+        },
         new(KukaBrand.Definition, () => new VirtualKukaControllerOptions(), o =>
         {
             var c = new VirtualKukaController((VirtualKukaControllerOptions)o);
@@ -52,6 +75,31 @@ public static class VirtualControllerRegistry
     /// are the driver's and the next); false: it listens on 127.0.0.1 at ports the system chooses.
     /// </summary>
     internal static bool ListensWhereAsked(RobotType brand) => EntryFor(brand).ListensWhereAsked;
+
+    /// <summary>
+    /// Where the vendor's own simulator of <paramref name="brand"/> listens, which its clients expect (UR: URSim's 30001-30004 and
+    /// 29999; the first takes scripts), or null when the twin has no such layout.
+    /// </summary>
+    internal static IReadOnlyList<(string Name, int Port)>? VendorPorts(RobotType brand) => EntryFor(brand).VendorPorts;
+
+    /// <summary><paramref name="options"/> made to stand in for the vendor's simulator (see <see cref="VendorPorts"/>); unchanged for a brand without one.</summary>
+    internal static VirtualControllerOptions AsVendorSimulator(RobotType brand, VirtualControllerOptions options) =>
+        EntryFor(brand).AsVendorSimulator is { } change ? change(options) : options;
+
+    /// <summary>What a person starting the stand-in for the vendor's simulator must know first, or null.</summary>
+    internal static string? VendorSimulatorNote(RobotType brand) => EntryFor(brand).VendorSimulatorNote;
+
+    /// <summary>True when the brand's controller has a mass memory that <see cref="WithHome"/> puts in a folder (ABB: RAPID's HOME:).</summary>
+    internal static bool HasHome(RobotType brand) => EntryFor(brand).WithHome is not null;
+
+    /// <summary><paramref name="options"/> with the controller's mass memory in <paramref name="folder"/>.</summary>
+    /// <exception cref="ArgumentException">The brand's controller has no mass memory (see <see cref="HasHome"/>).</exception>
+    internal static VirtualControllerOptions WithHome(RobotType brand, VirtualControllerOptions options, string folder) =>
+        EntryFor(brand).WithHome is { } change ? change(options, folder)
+            : throw new ArgumentException($"A virtual {EntryFor(brand).Brand.DisplayName} controller has no mass memory.", nameof(brand));
+
+    /// <summary>The brands whose controller has a mass memory (see <see cref="HasHome"/>).</summary>
+    internal static IReadOnlyList<BrandDefinition> WithMassMemory => [.. Entries.Where(e => e.WithHome is not null).Select(e => e.Brand)];
 
     /// <summary>The port Machina's driver listens on on a real controller of <paramref name="brand"/> (UR: the robot's script port), for a default.</summary>
     public static int DriverPort(RobotType brand) => EntryFor(brand).Brand.DefaultPort;

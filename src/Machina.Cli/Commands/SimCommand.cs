@@ -67,17 +67,20 @@ internal static partial class SimCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
-        bool urLayout = brand == UrBrand.Definition.Type && args.Value("--port") is null;
-        int port = urLayout ? UrLayout[0].Port : args.Port("--port", DefaultPort, allowZero: true);
+        // Without --port, a brand whose vendor has its own simulator (UR: URSim) listens where that simulator does.
+        IReadOnlyList<(string Name, int Port)>? vendorPorts = args.Value("--port") is null ? Machina.Simulation.VirtualControllerRegistry.VendorPorts(brand) : null;
+        bool vendorLayout = vendorPorts is not null;
+        int port = vendorPorts is not null ? vendorPorts[0].Port : args.Port("--port", DefaultPort, allowZero: true);
         string bindText = args.Value("--bind") ?? "127.0.0.1";
         if (!IPAddress.TryParse(bindText, out IPAddress? bind))
         {
             throw new UsageException($"--bind needs an IP address of this computer such as 127.0.0.1 or 0.0.0.0, not \"{bindText}\".");
         }
         double speed = args.Positive("--speed-factor", 1);
-        if (args.Value("--home") is not null && brand != AbbBrand.Definition.Type)
+        if (args.Value("--home") is not null && !Machina.Simulation.VirtualControllerRegistry.HasHome(brand))
         {
-            throw new UsageException($"--home is the mass memory of a virtual ABB (RAPID's HOME:), not of {Brands.Name(brand)}.");
+            string having = string.Join(" or ", Machina.Simulation.VirtualControllerRegistry.WithMassMemory.Select(b => "a virtual " + b.DisplayName));
+            throw new UsageException($"--home is the mass memory of {having} (RAPID's HOME:), not of {Brands.Name(brand)}.");
         }
         // Options are checked before --load takes over: a mistyped one is an error there too, never ignored.
         if (args.Value("--load") is not null)
@@ -104,9 +107,9 @@ internal static partial class SimCommand
         }
 
         // ABB and KUKA listen where asked themselves; a UR's ports are relayed (its layout is not the compact one of its controller).
-        bool direct = !urLayout && Machina.Simulation.VirtualControllerRegistry.ListensWhereAsked(brand);
+        bool direct = !vendorLayout && Machina.Simulation.VirtualControllerRegistry.ListensWhereAsked(brand);
         bool stopping = false;
-        var settings = new VirtualControllerOptions(speed, model, urLayout, Home(args, context))
+        var settings = new VirtualControllerOptions(speed, model, vendorLayout, Home(args, context))
         {
             Listen = direct ? (bind, port) : null,
             ConnectionSeen = (name, who, connected) =>
@@ -127,7 +130,7 @@ internal static partial class SimCommand
             throw TcpRelay.ListenError(ex, bind, port, [0, 1]);
         }
         await using RunningController controller = started;
-        RelayRoute[] routes = urLayout ? UrRoutes(controller) : controller.CompactRoutes;
+        RelayRoute[] routes = vendorPorts is not null ? VendorRoutes(controller, vendorPorts) : controller.CompactRoutes;
         await using TcpRelay? relay = direct ? null : TcpRelay.Start(bind, port, routes, Log);
         int firstPort = relay?.Port ?? controller.Port;
         int[] ports = relay?.Ports ?? controller.Ports;
@@ -156,9 +159,9 @@ internal static partial class SimCommand
         rwsLines.ForEach(Log);
         Log($"Connect a Machina host to {(bind.Equals(IPAddress.Any) ? "this computer's address" : bind.ToString())} port {firstPort}, e.g.: " +
             $"machina run PROGRAM --brand {Brands.Name(brand)} --host {(bind.Equals(IPAddress.Any) ? "127.0.0.1" : bind.ToString())} --port {firstPort}");
-        if (urLayout)
+        if (vendorLayout && Machina.Simulation.VirtualControllerRegistry.VendorSimulatorNote(brand) is { } note)
         {
-            Log("The arm is powered off, as on URSim: send \"power on\" and \"brake release\" to the dashboard (29999) before a program runs.");
+            Log(note);
         }
         lock (held)
         {
@@ -206,13 +209,9 @@ internal static partial class SimCommand
         return $"({routes[0].Name} port{(others.Length > 0 ? "; " + others : "")})";
     }
 
-    /// <summary>Where a UR listens (its client interfaces, RTDE and dashboard), the layout of <c>machina sim ur</c> without --port; the first is where a host sends scripts.</summary>
-    internal static readonly (string Name, int Port)[] UrLayout =
-        [("primary", 30001), ("secondary", 30002), ("real-time", 30003), ("RTDE", 30004), ("dashboard", 29999)];
-
-    /// <summary>The UR layout's routes to the controller's own ports (its compact script port is not relayed: the client interfaces take scripts).</summary>
-    private static RelayRoute[] UrRoutes(RunningController controller) =>
-        [.. UrLayout.Select(p => new RelayRoute(p.Port - UrLayout[0].Port, controller.Ports[Array.IndexOf(controller.PortNames, p.Name)], p.Name))];
+    /// <summary>The vendor layout's routes to the controller's own ports (UR: its compact script port is not relayed, the client interfaces take scripts).</summary>
+    private static RelayRoute[] VendorRoutes(RunningController controller, IReadOnlyList<(string Name, int Port)> layout) =>
+        [.. layout.Select(p => new RelayRoute(p.Port - layout[0].Port, controller.Ports[Array.IndexOf(controller.PortNames, p.Name)], p.Name))];
 
     /// <summary>The brands whose twin loads programs, with their language, e.g. "abb (RAPID) and kuka (KRL)".</summary>
     private static string LoadingNames()

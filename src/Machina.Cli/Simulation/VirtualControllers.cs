@@ -5,12 +5,12 @@ namespace Machina.Cli.Simulation;
 /// <summary>How a virtual controller started by the command line behaves.</summary>
 /// <param name="SpeedFactor">How much faster than real time it moves (1 = real time).</param>
 /// <param name="Model">The arm it moves like, or null (joints and pose then stay independent).</param>
-/// <param name="UrClientInterfaces">
-/// A UR stands in for URSim: it also serves its primary, secondary and real-time client interfaces (as on 30001–30003) and
-/// starts powered off, as URSim does (a program runs after <c>power on</c> and <c>brake release</c>).
+/// <param name="VendorSimulator">
+/// It stands in for the vendor's own simulator where the brand has one (UR: URSim, with its client interfaces, powered off at
+/// the start; <see cref="VirtualControllerRegistry.VendorPorts"/>).
 /// </param>
-/// <param name="AbbHome">An ABB's mass memory (RAPID's HOME:, RWS's $HOME), or null for a new temporary folder.</param>
-internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool UrClientInterfaces = false, string? AbbHome = null)
+/// <param name="Home">The controller's mass memory (ABB: RAPID's HOME:, RWS's $HOME), or null for a new temporary folder.</param>
+internal sealed record VirtualControllerOptions(double SpeedFactor = 1, RobotModel? Model = null, bool VendorSimulator = false, string? Home = null)
 {
     /// <summary>
     /// Where it listens itself, for a brand whose controller can (<see cref="VirtualControllerRegistry.ListensWhereAsked"/>): the
@@ -80,7 +80,7 @@ internal static class VirtualControllers
             throw new UsageException($"{brand} devices have no virtual controller: only robot arms ({AvailableNames}) are controlled online.");
         }
         RunningVirtualController controller = await VirtualControllerRegistry.StartAsync(
-            brand, Settings(VirtualControllerRegistry.DefaultOptions(brand), options), cancellationToken).ConfigureAwait(false);
+            brand, Settings(brand, VirtualControllerRegistry.DefaultOptions(brand), options), cancellationToken).ConfigureAwait(false);
         return new RunningController(controller);
     }
 
@@ -96,17 +96,17 @@ internal static class VirtualControllers
     /// A brand's default settings with the command line's speed and arm (the brand's default arm when none is given), keeping the
     /// last <see cref="RequestsKept"/> requests and executed ids for <see cref="ControllerActivity"/> (bounded, whatever the program's length).
     /// </summary>
-    private static Machina.Simulation.VirtualControllerOptions Settings(Machina.Simulation.VirtualControllerOptions defaults, VirtualControllerOptions options)
+    private static Machina.Simulation.VirtualControllerOptions Settings(RobotType brand, Machina.Simulation.VirtualControllerOptions defaults, VirtualControllerOptions options)
     {
         Machina.Simulation.VirtualControllerOptions settings = defaults;
         settings = settings with { SpeedFactor = options.SpeedFactor, RequestLogCapacity = RequestsKept };
-        if (options.UrClientInterfaces && settings is VirtualUrControllerOptions ur)
+        if (options.VendorSimulator)
         {
-            settings = ur with { PrimaryPort = 0, SecondaryPort = 0, RealtimePort = 0, StartsPoweredOff = true };
+            settings = VirtualControllerRegistry.AsVendorSimulator(brand, settings);
         }
-        if (options.AbbHome is { } home && settings is VirtualAbbControllerOptions abb)
+        if (options.Home is { } home)
         {
-            settings = abb with { HomeDirectory = home };
+            settings = VirtualControllerRegistry.WithHome(brand, settings, home);
         }
         if (options.Model is RobotModel model)
         {
