@@ -1,4 +1,3 @@
-using Machina.Cli.Commands;
 using Machina.Simulation.Krl;
 using Machina.Simulation.Twin;
 
@@ -9,7 +8,7 @@ internal sealed class KrlTwinProgram()
     : TwinProgram<KrlTwinOptions, KrlTwinController, KrlProgramState>(KukaBrand.Definition, "KRL", "a", "axes", "the KRL program", KrlProgramState.Finished, "src", "dat")
 {
     public override Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
-        (args, model, _, context) => SimCommand.RunKrlAsync(args.Value("--load")!, model, context);
+        (args, model, _, context) => KrlSimRun.RunAsync(args.Value("--load")!, model, context);
 
     public override bool IsProgram(string fullPath) => fullPath.EndsWith(".src", StringComparison.OrdinalIgnoreCase)
         || (Directory.Exists(fullPath) && Directory.GetFiles(fullPath, "*.src").Length > 0);

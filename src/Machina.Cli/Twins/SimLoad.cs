@@ -1,6 +1,8 @@
 using Machina.Simulation.Rapid;
 
-namespace Machina.Cli.Commands;
+using Machina.Cli.Commands;
+
+namespace Machina.Cli.Twins;
 
 /// <summary>
 /// <c>machina sim abb --load [TASK=]PROGRAM …</c>: a virtual ABB that loads RAPID programs into their tasks (T_ROB1 when no task is
