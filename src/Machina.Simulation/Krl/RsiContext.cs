@@ -48,21 +48,26 @@ internal sealed class RsiContext
     /// <summary>The object called <paramref name="id"/>, or null.</summary>
     public RsiObject? Find(string id) => Objects.Find(o => string.Equals(o.Id, id, StringComparison.OrdinalIgnoreCase));
 
+    /// <summary>The root element of an RSI file's <paramref name="xml"/>; text that is not XML is a <see cref="FormatException"/> naming <paramref name="what"/>.</summary>
+    internal static XElement RootOf(string what, string xml)
+    {
+        try
+        {
+            return XDocument.Parse(xml).Root!;
+        }
+        catch (System.Xml.XmlException ex)
+        {
+            throw new FormatException($"RSI: {what} is not XML: {ex.Message}");
+        }
+    }
+
     /// <summary>An empty context (RSI 2's ST_ routines build theirs object by object).</summary>
     public static RsiContext Empty(string name) => new() { Name = name };
 
     /// <summary>Reads context file <paramref name="file"/> (.rsix or .rsi.xml); a mistake or an object the twin lacks is a <see cref="FormatException"/>.</summary>
     public static RsiContext Parse(string file, string xml)
     {
-        XElement root;
-        try
-        {
-            root = XDocument.Parse(xml).Root ?? throw new FormatException("empty");
-        }
-        catch (System.Xml.XmlException ex)
-        {
-            throw new FormatException($"RSI: the context {file} is not XML: {ex.Message}");
-        }
+        XElement root = RootOf($"the context {file}", xml);
         int first = file.EndsWith(".rsix", StringComparison.OrdinalIgnoreCase) ? 0 : 1;
         var context = new RsiContext { Name = file };
         string? Attribute(XElement e, string name) =>

@@ -36,15 +36,7 @@ internal sealed class RsiEthernetConfiguration
     /// <summary>Reads configuration <paramref name="file"/>; a mistake is a <see cref="FormatException"/> naming it.</summary>
     public static RsiEthernetConfiguration Parse(string file, string xml)
     {
-        XElement root;
-        try
-        {
-            root = XDocument.Parse(xml).Root ?? throw new FormatException("empty");
-        }
-        catch (System.Xml.XmlException ex)
-        {
-            throw new FormatException($"RSI: the Ethernet configuration {file} is not XML: {ex.Message}");
-        }
+        XElement root = RsiContext.RootOf($"the Ethernet configuration {file}", xml);
         XElement config = root.Element("CONFIG") ?? throw new FormatException($"RSI: the Ethernet configuration {file} has no CONFIG");
         string Value(string name) => ((string?)config.Element(name) ?? "").Trim();
         if (Value("PROTOCOL") is { Length: > 0 } protocol && !protocol.Equals("UDP", StringComparison.OrdinalIgnoreCase))
