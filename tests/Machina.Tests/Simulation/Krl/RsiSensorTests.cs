@@ -102,7 +102,12 @@ public class RsiSensorTests
         END
         """;
 
-    private static KrlTwinController Twin(int sensorPort, string program, int timeout = 100, bool holdOn = true)
+    /// <summary>
+    /// A twin with the test's context and ETHERNET configuration. The default Timeout is out of reach of a loaded machine (100,000
+    /// late answers in a row): the tests that end by the sensor's STOP must not end by RSITimeout because the sensor's thread was not
+    /// scheduled for 400 ms (CI once saw 100 answers missed in a row at 4 ms); the timeout's own test passes a small one.
+    /// </summary>
+    private static KrlTwinController Twin(int sensorPort, string program, int timeout = 100_000, bool holdOn = true)
     {
         var twin = new KrlTwinController();
         twin.AddRsiFile("sensor_context.rsix", Context.Replace("TIMEOUT", timeout.ToString(CultureInfo.InvariantCulture), StringComparison.Ordinal));
