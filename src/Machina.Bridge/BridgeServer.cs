@@ -68,8 +68,8 @@ public sealed partial class BridgeServer : IAsyncDisposable
     /// <summary>The loopback port of the virtual controller inside the bridge, or null when it drives a real controller (or is not started).</summary>
     public int? SimulatorPort => _embedded?.Port;
 
-    /// <summary>The virtual controller inside the bridge, when it is an ABB one (tests pause and resume it).</summary>
-    internal Machina.Simulation.VirtualAbbController? VirtualAbb => _embedded?.Owner as Machina.Simulation.VirtualAbbController;
+    /// <summary>The virtual controller inside the bridge (the brand's own controller object; tests pause and resume it), or null.</summary>
+    internal IAsyncDisposable? Simulator => _embedded?.Owner;
 
     /// <summary>How many connections are in their HTTP handshake now (tests watch it).</summary>
     internal int PendingHandshakeCount

@@ -21,6 +21,9 @@ public static class VirtualControllerRegistry
 
         /// <summary>The settings with the controller's mass memory in a folder, for a brand whose controller has one; or null.</summary>
         public Func<VirtualControllerOptions, string, VirtualControllerOptions>? WithHome { get; init; }
+
+        /// <summary>Starts the controller's web services (given the brand's controller object), or null when it serves none.</summary>
+        public Func<IAsyncDisposable, Twin.TwinWebServices?>? WebServices { get; init; }
     }
 
     private static readonly Entry[] Entries =
@@ -32,6 +35,7 @@ public static class VirtualControllerRegistry
         }, ListensWhereAsked: true)
         {
             WithHome = (o, home) => (VirtualAbbControllerOptions)o with { HomeDirectory = home },
+            WebServices = c => c is VirtualAbbController { Twin: { } twin } ? Rws.RwsWebServices.Serve(twin) : null,
         },
         new(UrBrand.Definition, () => new VirtualUrControllerOptions(), o =>
         {
@@ -100,6 +104,13 @@ public static class VirtualControllerRegistry
 
     /// <summary>The brands whose controller has a mass memory (see <see cref="HasHome"/>).</summary>
     internal static IReadOnlyList<BrandDefinition> WithMassMemory => [.. Entries.Where(e => e.WithHome is not null).Select(e => e.Brand)];
+
+    /// <summary>
+    /// Starts the web services of <paramref name="controller"/>'s brand on 127.0.0.1 at a free port (ABB: Robot Web Services in front of
+    /// its RAPID tasks), or returns null when the brand's controller serves none, or this one runs no program they act on.
+    /// </summary>
+    internal static Twin.TwinWebServices? StartWebServices(RunningVirtualController controller) =>
+        EntryFor(controller.Brand).WebServices?.Invoke(controller.Controller);
 
     /// <summary>The port Machina's driver listens on on a real controller of <paramref name="brand"/> (UR: the robot's script port), for a default.</summary>
     public static int DriverPort(RobotType brand) => EntryFor(brand).Brand.DefaultPort;

@@ -9,7 +9,8 @@ internal static partial class DriversCommand
     {
         if (BrandRegistry.For(brand).InstallDriver is null)
         {
-            throw new UsageException($"machina drivers --install works on ABB controllers only (through Robot Web Services), not {brand}. See: machina drivers --help");
+            string installable = string.Join(" and ", BrandRegistry.Online.Where(b => b.InstallDriver is not null).Select(b => b.DisplayName));
+            throw new UsageException($"machina drivers --install works on {installable} controllers only (through Robot Web Services), not {brand}. See: machina drivers --help");
         }
         int port = args.Port("--port", 7000);
         int rwsPort = args.Port("--rws-port", 80);

@@ -48,8 +48,9 @@ internal static partial class DriversCommand
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), Brands.Online, "drivers");
-        string host = args.Required("--host", brand == UrBrand.Definition.Type
-            ? "(this computer's address, which the UR driver script connects back to, e.g. 192.168.56.1)"
+        BrandDefinition definition = BrandRegistry.For(brand);
+        string host = args.Required("--host", definition.DriverConnectsBack
+            ? $"(this computer's address, which the {definition.DisplayName} driver script connects back to, e.g. 192.168.56.1)"
             : "(the controller's address, e.g. 192.168.125.1)");
         if (args.Has("--install"))
         {
@@ -58,8 +59,8 @@ internal static partial class DriversCommand
         int port = args.Port("--port", 0);
         if (port == 0)
         {
-            throw new UsageException(brand == UrBrand.Definition.Type
-                ? "machina drivers needs --port P (this computer's port the UR driver script connects back to, e.g. 7000). See: machina drivers --help"
+            throw new UsageException(definition.DriverConnectsBack
+                ? $"machina drivers needs --port P (this computer's port the {definition.DisplayName} driver script connects back to, e.g. 7000). See: machina drivers --help"
                 : "machina drivers needs --port P (the port the driver listens on, e.g. 7000). See: machina drivers --help");
         }
         string folder = context.FullPath(args.Required("--out", "DIR (the folder to write the files into)"));
@@ -74,7 +75,8 @@ internal static partial class DriversCommand
         }
         catch (NotSupportedException)
         {
-            throw new CliException($"The {brand} driver is not available in this build yet; ABB's is.");
+            throw new CliException($"The {brand} driver is not available in this build yet; these are: " +
+                string.Join(", ", BrandRegistry.Online.Where(b => b.DriverNextSteps is not null).Select(b => b.DisplayName)) + ".");
         }
         catch (ArgumentException ex)
         {

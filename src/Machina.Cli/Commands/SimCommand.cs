@@ -153,7 +153,7 @@ internal static partial class SimCommand
         await using ControllerActivity activity = ControllerActivity.Start(controller, Activity, context.Time);
         // RWS is named after the controller's first line, which says "listening" and where.
         var rwsLines = new List<string>();
-        await using IAsyncDisposable? rws = StartRws(controller, bind, () => args.Port("--rws-port", 0, allowZero: true), Log, rwsLines.Add);
+        await using IAsyncDisposable? rws = SimWebServices.Start(controller, bind, () => args.Port("--rws-port", 0, allowZero: true), DefaultPort + 100, Log, rwsLines.Add);
         Log($"Virtual {brand} controller listening on {bind}:{firstPort} {Ports(routes, ports)}" +
             $", {Num(speed)}x real time{(model is null ? "" : $", moving like an {model}")}. Press Ctrl+C to stop.");
         rwsLines.ForEach(Log);

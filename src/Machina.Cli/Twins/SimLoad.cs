@@ -1,6 +1,7 @@
-using Machina.Simulation.Rapid;
-
 using Machina.Cli.Commands;
+using Machina.Cli.Simulation;
+using Machina.Simulation.Rapid;
+using Machina.Simulation.Rws;
 
 namespace Machina.Cli.Twins;
 
@@ -154,7 +155,8 @@ internal static class SimLoad
                 ended.TrySetResult();
             }
         };
-        await using IAsyncDisposable? rws = extras.RwsPort is { } rwsPort ? SimCommand.StartRws(twin, extras.Bind, rwsPort, Log, Log) : null;
+        await using IAsyncDisposable? rws = extras.RwsPort is { } rwsPort
+            ? SimWebServices.Relay(AbbBrand.Definition.Type, RwsWebServices.Serve(twin), extras.Bind, rwsPort, SimCommand.DefaultPort + 100, Log, Log) : null;
         twin.StartTasks();
         try
         {

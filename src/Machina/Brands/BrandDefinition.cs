@@ -36,6 +36,9 @@ internal sealed record BrandDefinition(RobotType Type, string Name, BrandKind Ki
     /// <summary>The port the brand's driver usually listens on (ABB and KUKA: Machina's driver; UR: the robot's script port); 0 when none.</summary>
     internal int DefaultPort { get; init; }
 
+    /// <summary>True when the brand's driver is a client that connects back to the computer (UR's script); false when it listens on the controller.</summary>
+    internal bool DriverConnectsBack { get; init; }
+
     /// <summary>What a user does with the driver files once written, given their count, the host and the port; null when the brand has no driver.</summary>
     internal Func<int, string, int, string>? DriverNextSteps { get; init; }
 

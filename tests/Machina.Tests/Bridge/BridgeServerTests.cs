@@ -41,14 +41,15 @@ public class BridgeServerTests
     /// </summary>
     private static async Task RunHelloRobotAsync(BridgeServer bridge, TestClient client, string[] frames)
     {
-        bridge.VirtualAbb!.StopAnswering();
+        var controller = (Machina.Simulation.VirtualAbbController)bridge.Simulator!;
+        controller.StopAnswering();
         foreach (string frame in frames)
         {
             await client.SendAsync(frame);
         }
         List<JsonElement> all = await client.ReceiveUntilAsync(e => e.Event() == "action-released" && e.Id() == 7);
         Assert.Equal(14, all.Count);
-        bridge.VirtualAbb.ResumeAnswering();
+        controller.ResumeAnswering();
         all.AddRange(await client.ReceiveUntilAsync(e => e.Event() == "action-executed" && e.Id() == 7));
         Assert.Equal(21, all.Count);
 

@@ -18,6 +18,7 @@ internal static partial class UrBrand
         Timing = new UrMotionTiming(),
         DefaultPort = UrPorts.StandardScript,
         DriverNextSteps = NextSteps,
+        DriverConnectsBack = true,
         InstructionName = Instruction,
     };
 
