@@ -14,7 +14,7 @@ internal sealed class CliArgs
     private readonly Dictionary<string, List<string>> _repeated = new(StringComparer.Ordinal);
 
     /// <summary>The options that may be given more than once (each value kept, in order): <c>--load TASK=PATH</c> of <c>machina sim abb</c>.</summary>
-    private static readonly HashSet<string> Repeatable = new(["--load", "--signal"], StringComparer.Ordinal);
+    private static readonly HashSet<string> Repeatable = new(["--load", "--signal", "--task-type"], StringComparer.Ordinal);
 
     private CliArgs(string command) => _command = command;
 

@@ -17,6 +17,7 @@ internal static partial class SimCommand
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
                machina sim abb|kuka --load PROGRAM [--model M]
                machina sim abb --load PROGRAM [--eio EIO.cfg] [--signal [TYPE:]NAME[=VALUE]]... [--rws-port N] [--home DIR]
+                               [--task-type TASK=NORMAL|STATIC|SEMISTATIC]... [--cycle once|forever]
 
         Starts a virtual controller that speaks the same protocol as Machina's driver on a real controller, and runs until
         Ctrl+C. Any Machina host can connect to it: this tool (machina run --host), the original Machina.NET, a Grasshopper
@@ -55,12 +56,19 @@ internal static partial class SimCommand
                             (di, do, ai or ao), e.g. --signal di:signalRobotEStop=0 --signal DI_1=1. Repeatable
                             kuka: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
                             time and list each step it makes, then stop (exit code 1 when the controller stops it)
+          --task-type TASK=NORMAL|STATIC|SEMISTATIC
+                            abb --load: the task's Type in the controller's system parameters (default NORMAL). A static or
+                            semistatic task runs its main for ever: started again each time it ends, until an error stops it.
+                            Repeatable
+          --cycle once|forever
+                            abb --load: the run mode of the normal tasks: once (single cycle, the default: main runs once) or
+                            forever (continuous: main starts again each time it ends)
 
         Example:
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home"],
+        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home", "--task-type", "--cycle"],
         Flags: ["--quiet"],
         RunAsync);
 

@@ -10,7 +10,11 @@ internal sealed class RapidTwinProgram()
 {
     public override Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
         (args, model, bind, context) => SimLoad.RunAbbAsync(args.Values("--load"), model, context, new SimLoad.Extras(args.Values("--signal"), args.Value("--eio"),
-            bind, args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true), SimCommand.Home(args, context)));
+            bind, args.Value("--rws-port") is null ? null : args.Port("--rws-port", 0, allowZero: true), SimCommand.Home(args, context))
+        {
+            TaskTypes = args.Values("--task-type"),
+            Cycle = args.Value("--cycle"),
+        });
 
     public override bool IsProgram(string fullPath) => Directory.Exists(fullPath)
         || fullPath.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase) || fullPath.EndsWith(".mod", StringComparison.OrdinalIgnoreCase);

@@ -29,7 +29,36 @@ internal static class SimLoad
     /// What else a --load run may have: signals of the IO configuration (<c>[TYPE:]NAME[=VALUE]</c>), RWS on a port, and the folder
     /// that is HOME: (null: a new temporary one).
     /// </summary>
-    internal sealed record Extras(IReadOnlyList<string> Signals, string? Eio, System.Net.IPAddress Bind, int? RwsPort, string? Home = null);
+    internal sealed record Extras(IReadOnlyList<string> Signals, string? Eio, System.Net.IPAddress Bind, int? RwsPort, string? Home = null)
+    {
+        /// <summary>The <c>--task-type TASK=TYPE</c> values: each task's Type in the system parameters (NORMAL when not given).</summary>
+        public IReadOnlyList<string> TaskTypes { get; init; } = [];
+
+        /// <summary>The <c>--cycle</c> value: the normal tasks' run mode (once when not given).</summary>
+        public string? Cycle { get; init; }
+    }
+
+    /// <summary>One <c>--task-type TASK=NORMAL|STATIC|SEMISTATIC</c>.</summary>
+    internal static (string Task, RapidTaskType Type) ParseTaskType(string text)
+    {
+        int eq = text.IndexOf('=', StringComparison.Ordinal);
+        RapidTaskType? type = eq <= 0 ? null : text[(eq + 1)..].ToUpperInvariant() switch
+        {
+            "NORMAL" => RapidTaskType.Normal,
+            "STATIC" => RapidTaskType.Static,
+            "SEMISTATIC" => RapidTaskType.SemiStatic,
+            _ => null,
+        };
+        return type is { } t ? (text[..eq], t) : throw new UsageException($"--task-type needs TASK=NORMAL, TASK=STATIC or TASK=SEMISTATIC, e.g. TASK2=SEMISTATIC, not \"{text}\".");
+    }
+
+    /// <summary>The <c>--cycle</c> value: once (single cycle, the default) or forever (continuous).</summary>
+    internal static RapidExecutionCycle ParseCycle(string? text) => text switch
+    {
+        null or "once" => RapidExecutionCycle.Once,
+        "forever" => RapidExecutionCycle.Forever,
+        _ => throw new UsageException($"--cycle needs once or forever, not \"{text}\"."),
+    };
 
     /// <summary>One <c>--signal [TYPE:]NAME[=VALUE]</c>: the RAPID type (null: a signal of the board) and the value at the start.</summary>
     internal static (string? Type, string Name, double Value) ParseSignal(string text)
@@ -91,6 +120,12 @@ internal static class SimLoad
             }
         }
         TaskLoad[] tasks = [.. loads.Select(Parse)];
+        (string Task, RapidTaskType Type)[] types = [.. extras.TaskTypes.Select(ParseTaskType)];
+        RapidExecutionCycle cycle = ParseCycle(extras.Cycle);
+        foreach ((string task, _) in types.Where(t => !tasks.Any(l => l.Task.Equals(t.Task, StringComparison.OrdinalIgnoreCase))))
+        {
+            throw new UsageException($"--task-type {task}: no --load puts a program into the task {task}.");
+        }
         foreach (IGrouping<string, TaskLoad> twice in tasks.GroupBy(t => t.Task, StringComparer.OrdinalIgnoreCase).Where(g => g.Count() > 1))
         {
             throw new UsageException($"The task {twice.Key} is loaded twice: give each task one program (a .pgf or a folder holds several modules).");
@@ -105,7 +140,7 @@ internal static class SimLoad
             Signals = [.. board, .. signals.Where(s => s.Type is not null && !board.Any(b => b.Name.Equals(s.Name, StringComparison.OrdinalIgnoreCase)))
                 .DistinctBy(s => s.Name, StringComparer.OrdinalIgnoreCase).Select(s => (s.Name, s.Type!))],
         };
-        var twin = new RapidTwinController(options) { LabelsTasks = tasks.Length > 1 || tasks[0].Task != RapidTwinController.MotionTask };
+        var twin = new RapidTwinController(options) { LabelsTasks = tasks.Length > 1 || tasks[0].Task != RapidTwinController.MotionTask, Cycle = cycle };
         TextWriter output = context.Stdout;
         var gate = new Lock();
         void Log(string line)
@@ -136,6 +171,10 @@ internal static class SimLoad
         foreach ((_, string name, double value) in signals)
         {
             twin.SetSignal(name, value);
+        }
+        foreach ((string task, RapidTaskType type) in types)
+        {
+            twin.Task(task).Type = type;
         }
         twin.Pendant.Logged += line => Log("  pendant: " + line);
         string names = string.Join(", ", twin.TaskNames);

@@ -10,6 +10,12 @@ internal sealed partial class RapidTask
     /// <summary>True for the motion task (T_ROB1): its motion and waits make the program time.</summary>
     public bool IsMotionTask => Name.Equals(RapidTwinController.MotionTask, StringComparison.OrdinalIgnoreCase);
 
+    /// <summary>The task's Type in the system parameters (NORMAL unless the cell's configuration says otherwise).</summary>
+    public RapidTaskType Type { get; set; } = RapidTaskType.Normal;
+
+    /// <summary>True for a NORMAL task: the program's start and stop and the run mode are for it (a static task runs on).</summary>
+    public bool IsNormal => Type == RapidTaskType.Normal;
+
     /// <summary>How the task's last run ended (Running while it runs).</summary>
     public RapidProgramState State => _status.State;
 

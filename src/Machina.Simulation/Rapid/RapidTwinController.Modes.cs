@@ -11,20 +11,43 @@ internal sealed partial class RapidTwinController
     /// <summary>The lock TestAndSet and WaitTestAndSet take, one per controller (every task's semaphores).</summary>
     internal Lock SemaphoreGate { get; } = new();
 
-    /// <summary>Runs <paramref name="main"/>; after ExitCycle, runs it again from its start with the data as they are.</summary>
-    private static void RunCycles(RapidTask task, RapidRoutine main, CancellationToken cancellation)
+    private int _cycle = (int)RapidExecutionCycle.Once;
+
+    /// <summary>
+    /// The run mode of the NORMAL tasks: Once (single cycle, the default: a program started by our tools runs its main once) or
+    /// Forever (continuous: main starts again each time it ends). Static and semistatic tasks run continuously whatever it says.
+    /// </summary>
+    public RapidExecutionCycle Cycle
+    {
+        get => (RapidExecutionCycle)Volatile.Read(ref _cycle);
+        set => Volatile.Write(ref _cycle, (int)value);
+    }
+
+    /// <summary>True when <paramref name="task"/> starts its main again when it ends: a static or semistatic task, or any task in continuous mode.</summary>
+    internal bool RunsContinuously(RapidTask task) => !task.IsNormal || Cycle == RapidExecutionCycle.Forever;
+
+    /// <summary>
+    /// Runs <paramref name="main"/>; after ExitCycle, and after its end when the task runs continuously, runs it again from its start with
+    /// the data as they are (a cycle's end is not a program pointer reset).
+    /// </summary>
+    private void RunCycles(RapidTask task, RapidRoutine main, CancellationToken cancellation)
     {
         while (true)
         {
             try
             {
                 task.Machine.Run(main);
-                return;
+                if (!RunsContinuously(task))
+                {
+                    return;
+                }
             }
             catch (RapidExitCycleException)
             {
-                cancellation.ThrowIfCancellationRequested();
             }
+            cancellation.ThrowIfCancellationRequested();
+            // A main that ends at once would otherwise keep a core busy between two cycles; the controller's scheduler lets others run.
+            Thread.Yield();
         }
     }
 

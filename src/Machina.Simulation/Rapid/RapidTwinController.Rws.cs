@@ -8,7 +8,10 @@ internal sealed partial class RapidTwinController
 {
     private readonly Dictionary<string, List<(string File, string Name, string Text)>> _loadedFiles = new(StringComparer.OrdinalIgnoreCase);
 
-    /// <summary>True while a task runs.</summary>
+    /// <summary>
+    /// True while a NORMAL task runs: the controller's execution state (a static or semistatic task runs in the background whatever
+    /// it says).
+    /// </summary>
     public bool IsRunning
     {
         get
@@ -18,7 +21,7 @@ internal sealed partial class RapidTwinController
             {
                 tasks = [.. _tasks.Values];
             }
-            return tasks.Any(t => t.State == RapidProgramState.Running);
+            return tasks.Any(t => t.IsNormal && t.State == RapidProgramState.Running);
         }
     }
 
@@ -115,7 +118,9 @@ internal sealed partial class RapidTwinController
     {
         lock (_gate)
         {
-            _tasks[task] = new RapidTask(this, task);
+            // A new program in the same task: its Type is the configuration's, not the program's.
+            RapidTaskType type = _tasks.TryGetValue(task, out RapidTask? old) ? old.Type : RapidTaskType.Normal;
+            _tasks[task] = new RapidTask(this, task) { Type = type };
         }
         if (modules.Count > 0)
         {

@@ -7,10 +7,17 @@ namespace Machina.Simulation.Rws;
 /// <summary>The RAPID resources of the twin's Robot Web Services: execution (start, stop, program pointer), module load and data.</summary>
 internal sealed partial class RwsTwinServer
 {
-    private RwsResponse Execution(string action, string session)
+    private RwsResponse Execution(string action, IReadOnlyDictionary<string, string> form, string session)
     {
         switch (action)
         {
+            case "setcycle":
+                if (!HoldsMastership(session))
+                {
+                    return Error(400, "Bad Request", MastershipRequiredCode, $"Setting the execution cycle needs RAPID mastership{HolderText()}.");
+                }
+                Twin.Cycle = CycleOf(form.GetValueOrDefault("cycle"), asIs: false);
+                return RwsResponse.NoContent();
             case "resetpp":
                 if (Twin.IsRunning)
                 {
@@ -39,6 +46,7 @@ internal sealed partial class RwsTwinServer
                 {
                     return Error(400, "Bad Request", null, "Start refused: RAPID is already running.");
                 }
+                Twin.Cycle = CycleOf(form.GetValueOrDefault("cycle"), asIs: true);
                 Twin.RestartTasks();
                 return RwsResponse.NoContent();
             case "stop":
@@ -49,15 +57,30 @@ internal sealed partial class RwsTwinServer
         }
     }
 
+    /// <summary>
+    /// The run mode a start's or setcycle's <c>cycle</c> field asks for: forever (continuous), once (single cycle), or, for a start, asis
+    /// (and no field): the mode the controller has.
+    /// </summary>
+    private RapidExecutionCycle CycleOf(string? cycle, bool asIs) => cycle switch
+    {
+        "forever" => RapidExecutionCycle.Forever,
+        "once" => RapidExecutionCycle.Once,
+        "asis" or null when asIs => Twin.Cycle,
+        _ => throw new FormatException($"The cycle must be {(asIs ? "forever, once or asis" : "once or forever")}, not \"{PrintableText.Of(cycle ?? "")}\"."),
+    };
+
+    /// <summary>The execution cycle as RWS names it.</summary>
+    private string CycleText => Twin.Cycle == RapidExecutionCycle.Forever ? "forever" : "once";
+
     private RwsResponse LoadModule(string task, IReadOnlyDictionary<string, string> form, string session)
     {
         if (!HoldsMastership(session))
         {
             return Error(400, "Bad Request", MastershipRequiredCode, $"Loading a module needs RAPID mastership{HolderText()}.");
         }
-        if (Twin.IsRunning)
+        if (Twin.IsRunning || (Twin.TaskNames.Contains(task, StringComparer.OrdinalIgnoreCase) && Twin.Task(task).State == RapidProgramState.Running))
         {
-            return Error(400, "Bad Request", null, "A module cannot be loaded while RAPID is running; stop it first.");
+            return Error(400, "Bad Request", null, $"A module cannot be loaded while RAPID is running ({task} runs); stop it first.");
         }
         string path = form["modulepath"];
         string? text = ReadModuleFile(path);

@@ -18,6 +18,8 @@ public sealed class RwsTwinServerTests : IAsyncLifetime
             SetDO doFlag, 1;
             WaitDI diGo, 1;
             seen := wanted * 2;
+            ! The client starts RAPID continuously (cycle=forever): without EXIT, main would start again.
+            EXIT;
           ENDPROC
         ENDMODULE
         """;
@@ -108,7 +110,7 @@ public sealed class RwsTwinServerTests : IAsyncLifetime
         await _client.RequestMastershipAsync();
         await _client.UploadFileAsync("$HOME/probe.mod", Probe);
         await _client.LoadModuleAsync("T_ROB1", "$HOME/probe.mod");
-        await _client.UploadFileAsync("$HOME/probe.mod", "MODULE RwsProbe\n  VAR num seen := 7;\n  PROC main()\n    seen := 8;\n  ENDPROC\nENDMODULE\n");
+        await _client.UploadFileAsync("$HOME/probe.mod", "MODULE RwsProbe\n  VAR num seen := 7;\n  PROC main()\n    seen := 8;\n    EXIT;\n  ENDPROC\nENDMODULE\n");
         await _client.LoadModuleAsync("T_ROB1", "$HOME/probe.mod");
         await _client.StartAsync();
 

@@ -26,6 +26,49 @@ public class RapidSimTasksCommandTests
     }
 
     [Fact]
+    public async Task SimAbbLoad_ASemistaticTask_StartsItsMainAgainWhenItEnds_ANormalOneRunsOnce()
+    {
+        using var cli = new CliRunner();
+        cli.Write("motion.mod", "MODULE motion\n  PROC main()\n    TPWrite \"motion\";\n  ENDPROC\nENDMODULE\n");
+        cli.Write("bg.mod", "MODULE bg\n  VAR num runs := 0;\n  PROC main()\n    Incr runs;\n    TPWrite \"cycle \" \\Num:=runs;\n    IF runs = 3 Stop;\n  ENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "motion.mod", "--load", "T_BG=bg.mod", "--task-type", "T_BG=SEMISTATIC");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Contains("  pendant: [T_BG] cycle 1\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  pendant: [T_BG] cycle 3\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Single(result.Stdout.Split('\n'), l => l == "  pendant: [T_ROB1] motion");
+        Assert.EndsWith("T_ROB1: the program ended.\nT_BG: stopped.\n", result.Stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async Task SimAbbLoad_CycleForever_StartsMainAgainUntilExit()
+    {
+        using var cli = new CliRunner();
+        cli.Write("t.mod", "MODULE t\n  VAR num runs := 0;\n  PROC main()\n    Incr runs;\n    TPWrite \"cycle \" \\Num:=runs;\n    IF runs >= 3 EXIT;\n  ENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "t.mod", "--cycle", "forever");
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Contains("  pendant: cycle 1\n  pendant: cycle 2\n  pendant: cycle 3\nThe program ended", result.Stdout, StringComparison.Ordinal);
+    }
+
+    [Theory]
+    [InlineData("--task-type", "T_BG=FOREVER", "--task-type needs TASK=NORMAL, TASK=STATIC or TASK=SEMISTATIC, e.g. TASK2=SEMISTATIC, not \"T_BG=FOREVER\".")]
+    [InlineData("--task-type", "T_X=STATIC", "--task-type T_X: no --load puts a program into the task T_X.")]
+    [InlineData("--cycle", "twice", "--cycle needs once or forever, not \"twice\".")]
+    public async Task SimAbbLoad_AWrongTaskTypeOrCycle_IsAUsageError(string option, string value, string message)
+    {
+        using var cli = new CliRunner();
+        cli.Write("a.mod", "MODULE a\n  PROC main()\n  ENDPROC\nENDMODULE\n");
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--load", "a.mod", "--load", "T_BG=a.mod", option, value);
+
+        Assert.Equal(2, result.Exit);
+        Assert.Contains(message, result.Stderr, StringComparison.Ordinal);
+    }
+
+    [Fact]
     public async Task SimAbbLoad_ATaskThatCannotLoad_IsRefusedWithItsTaskModuleLineAndName()
     {
         using var cli = new CliRunner();
