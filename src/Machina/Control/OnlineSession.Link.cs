@@ -29,7 +29,8 @@ internal sealed partial class OnlineSession
 
         public void OnAcknowledged(int id, double value) => OnAcknowledged(id, (double?)value);
 
-        private void OnAcknowledged(int id, double? value) => session.Report(this, () => session.OnAcknowledged(this, id, value));
+        // The busiest report (one per action): one message, with no handler of its own unless it has to be held.
+        private void OnAcknowledged(int id, double? value) => session.Post(() => session.ReceiveAcknowledged(this, id, value));
 
         public void OnMotion(in MotionSample sample)
         {
@@ -56,6 +57,22 @@ internal sealed partial class OnlineSession
     /// (as any poster does), else it goes on reading while the loop's owner handles the report.
     /// </summary>
     private void Report(Connection link, Action handle, bool isMotion = false) => Post(() => Receive(link, handle, isMotion));
+
+    /// <summary>An acknowledgement, as <see cref="Receive"/> handles any report: at once from the current link, else held or ignored.</summary>
+    private void ReceiveAcknowledged(Connection link, int id, double? value)
+    {
+        if (ReferenceEquals(_link, link))
+        {
+            OnAcknowledged(link, id, value);
+        }
+        else
+        {
+            HoldAcknowledged(link, id, value);
+        }
+    }
+
+    // A method of its own: the closure is then made only here, not on every acknowledgement at the top of the caller.
+    private void HoldAcknowledged(Connection link, int id, double? value) => Receive(link, () => OnAcknowledged(link, id, value), isMotion: false);
 
     private void Receive(Connection link, Action handle, bool isMotion)
     {

@@ -70,6 +70,10 @@ internal sealed partial class OnlineSession
     /// <summary>Signals every waiter whose condition now holds (after executions, a clear, a release).</summary>
     private void SignalWaiters()
     {
+        if (_pendingWaiters.Count == 0)
+        {
+            return; // the common case while streaming
+        }
         int pending = PendingCount;
         Exception? notResent = null;
         foreach ((int below, _, TaskCompletionSource signal) in _pendingWaiters)
@@ -80,7 +84,14 @@ internal sealed partial class OnlineSession
                 _events.PostSignal(signal, notResent);
             }
         }
-        _pendingWaiters.RemoveAll(w => pending < w.Below);
+        // Without a predicate: a lambda capturing 'pending' would allocate its closure on every call, waiters or not.
+        for (int i = _pendingWaiters.Count - 1; i >= 0; i--)
+        {
+            if (pending < _pendingWaiters[i].Below)
+            {
+                _pendingWaiters.RemoveAt(i);
+            }
+        }
     }
 
     /// <summary>Fails every waiter with <paramref name="reason"/> (the link went away or the controller stopped).</summary>

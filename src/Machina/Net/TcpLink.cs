@@ -14,6 +14,9 @@ internal sealed class TcpLink : IAsyncDisposable
 {
     private const int ReceiveBufferSize = 16 * 1024;
 
+    /// <summary>How long the receive loop sleeps in one poll before it looks whether the link is closing, µs.</summary>
+    private const int PollMicroseconds = 200_000;
+
     private readonly Socket _socket;
     private readonly CancellationTokenSource _stop = new();
     private readonly Channel<bool> _doorbell = Channel.CreateBounded<bool>(new BoundedChannelOptions(1)
@@ -89,7 +92,9 @@ internal sealed class TcpLink : IAsyncDisposable
     internal void Start(ILinkReceiver receiver)
     {
         _receiver = receiver;
-        _receiveLoop = Task.Run(ReceiveLoopAsync);
+        var receiving = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        _receiveLoop = receiving.Task;
+        new Thread(() => ReceiveLoop(receiving)) { IsBackground = true, Name = "Machina link" }.Start();
         _sendLoop = Task.Run(SendLoopAsync);
     }
 
@@ -225,22 +230,41 @@ internal sealed class TcpLink : IAsyncDisposable
         }
     }
 
-    private async Task ReceiveLoopAsync()
+    /// <summary>
+    /// The receive loop, on a thread of its own: it sleeps in <c>poll</c> until bytes arrive and reads them with a non-blocking
+    /// receive, so an acknowledgement costs two system calls on one thread. An asynchronous receive cost the socket engine's
+    /// <c>epoll_wait</c>, a hand-off to a thread-pool worker and the worker's spinning once idle, for every read.
+    /// </summary>
+    private void ReceiveLoop(TaskCompletionSource done)
     {
         CancellationToken stop = _stop.Token;
         byte[] buffer = new byte[ReceiveBufferSize];
         try
         {
-            while (true)
+            while (!stop.IsCancellationRequested)
             {
-                int n = await _socket.ReceiveAsync(buffer.AsMemory(), SocketFlags.None, stop).ConfigureAwait(false);
-                if (n == 0)
+                // Bounded, so a closing link is noticed even if closing the socket does not end the wait.
+                if (!_socket.Poll(PollMicroseconds, SelectMode.SelectRead))
                 {
-                    Closed(null);
-                    return;
+                    continue;
+                }
+                int n = _socket.Receive(buffer, 0, buffer.Length, SocketFlags.None, out SocketError error);
+                if (error == SocketError.WouldBlock)
+                {
+                    continue;
                 }
                 if (stop.IsCancellationRequested)
                 {
+                    return;
+                }
+                if (error != SocketError.Success)
+                {
+                    Closed(new SocketException((int)error));
+                    return;
+                }
+                if (n == 0)
+                {
+                    Closed(null);
                     return;
                 }
                 lock (_outboxGate)
@@ -257,12 +281,16 @@ internal sealed class TcpLink : IAsyncDisposable
                 }
             }
         }
-        catch (OperationCanceledException) when (stop.IsCancellationRequested)
-        {
-        }
         catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)
         {
-            Closed(ex);
+            if (!stop.IsCancellationRequested)
+            {
+                Closed(ex);
+            }
+        }
+        finally
+        {
+            done.TrySetResult();
         }
     }
 

@@ -32,6 +32,7 @@ internal sealed class AbbOnline : IOnlineBrand
     /// </remarks>
     public ActionFrame Encode(RobotAction action, RobotCursor after, out string? refusal)
     {
+        const int StackBytes = 512;
         refusal = null;
         var requests = new List<AbbRequest>(2);
         int wireId = action.Id < 0 ? 0 : AbbDriver.WireId(action.Id);
@@ -53,13 +54,14 @@ internal sealed class AbbOnline : IOnlineBrand
             length += request.MaxEncodedLength;
             acknowledged |= request.Id == wireId;
         }
-        byte[] bytes = new byte[length];
+        // Written at the upper bound on the stack, kept at the exact length: one array per frame.
+        Span<byte> bytes = length <= StackBytes ? stackalloc byte[StackBytes] : new byte[length];
         length = 0;
         foreach (AbbRequest request in requests)
         {
-            length += request.EncodeTo(bytes.AsSpan(length));
+            length += request.EncodeTo(bytes[length..]);
         }
-        return new ActionFrame(length == bytes.Length ? bytes : bytes[..length], acknowledged);
+        return new ActionFrame(bytes[..length].ToArray(), acknowledged);
     }
 
     /// <summary>

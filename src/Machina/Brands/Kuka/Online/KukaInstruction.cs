@@ -44,6 +44,14 @@ internal readonly record struct KukaInstruction(int Id, KukaActionCode Code, Kuk
         sb.Append("</DR></DT>");
     }
 
+    /// <summary>Appends a batch of one action (what the host streams: no list, no enumerator).</summary>
+    public static void AppendBatch(StringBuilder sb, in KukaInstruction action)
+    {
+        sb.Append("<DT><DR>");
+        action.AppendTo(sb);
+        sb.Append("</DR></DT>");
+    }
+
     /// <summary>Reads an action element back (the virtual controller's side); a protocol error when an attribute is missing or malformed.</summary>
     public static KukaInstruction Parse(KukaElement element)
     {

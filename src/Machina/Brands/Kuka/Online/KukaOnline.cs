@@ -41,9 +41,21 @@ internal sealed class KukaOnline : IOnlineBrand
         {
             note = $"The weight and centre of gravity of tool \"{tool.Name}\" are not sent to KUKA controllers; set its load data on the controller.";
         }
-        var batch = new System.Text.StringBuilder(128);
-        KukaInstruction.AppendBatch(batch, [instruction]);
-        return new ActionFrame(System.Text.Encoding.ASCII.GetBytes(batch.ToString()), true, note);
+        var batch = new System.Text.StringBuilder(192); // a move's batch is 100-170 characters
+        KukaInstruction.AppendBatch(batch, instruction);
+        return new ActionFrame(Ascii(batch), true, note);
+    }
+
+    /// <summary>The builder's text as ASCII bytes, without a string in between (the XML writer escapes everything else).</summary>
+    private static byte[] Ascii(System.Text.StringBuilder text)
+    {
+        var bytes = new byte[text.Length];
+        int at = 0;
+        foreach (ReadOnlyMemory<char> chunk in text.GetChunks())
+        {
+            at += System.Text.Encoding.ASCII.GetBytes(chunk.Span, bytes.AsSpan(at));
+        }
+        return bytes;
     }
 
     /// <inheritdoc/>
