@@ -175,6 +175,7 @@ internal sealed partial class KrlTwinController
         };
         _rsiOn = session;
         bool first = true;
+        var sleep = new TwinSleep(); // the thread's own: the clock's sleeper belongs to the interpreter's thread
         session.Start(stop =>
         {
             // The first cycle is RSI_MOVECORR's when it follows RSI_ON; then each cycle starts where the one before ended.
@@ -182,7 +183,7 @@ internal sealed partial class KrlTwinController
             first = false;
             if (rest > 0)
             {
-                Clock.WaitAside(rest, stop);
+                sleep.Wait(time, TimeSpan.FromSeconds(rest), stop);
             }
         }, stop =>
         {
