@@ -41,7 +41,12 @@ internal static class KrlSimRun
         }
         twin.EkiOpened += (name, how) => output.WriteLine($"  EthernetKRL channel {name} open: {how}");
         await output.WriteLineAsync($"Running {twin.MainRoutine} ({string.Join(", ", files.Select(f => f.Name))}) on a KRL twin of a {model} in real time. Press Ctrl+C to stop.").ConfigureAwait(false);
+        foreach (string line in twin.Pendant.Lines)
+        {
+            await output.WriteLineAsync("  pendant: " + line).ConfigureAwait(false); // what the load noted (a machine data list set aside)
+        }
         twin.Pendant.Logged += line => output.WriteLine("  pendant: " + line);
+        Task submit = StartSubmit(twin, files, output, context.Cancellation);
         KrlProgramState state = await Task.Run(() => twin.Run(null, context.Cancellation)).ConfigureAwait(false);
         foreach (TwinTraceEntry step in twin.Arm.Trace)
         {
@@ -54,20 +59,47 @@ internal static class KrlSimRun
             KrlProgramState.Stopped => "STOPPED: the program was stopped before its end",
             _ => $"FAILED: {twin.Error}",
         }).ConfigureAwait(false);
+        if (!submit.IsCompleted)
+        {
+            await output.WriteLineAsync("The submit interpreter runs on until Ctrl+C.").ConfigureAwait(false);
+            await submit.ConfigureAwait(false);
+        }
         return state == KrlProgramState.Finished ? ExitCodes.Ok : ExitCodes.Failed;
     }
 
     /// <summary>
+    /// Runs the folder's submit program (a <c>.sub</c> file such as sps.sub, whose USER INIT and USER PLC folds call the program's
+    /// routines, as KUKA's EKI server is installed) in the submit interpreter beside the robot program, until Ctrl+C; none: done.
+    /// </summary>
+    private static Task StartSubmit(KrlTwinController twin, List<(string Name, string Text)> files, TextWriter output, CancellationToken cancellation)
+    {
+        string? sub = files.Select(f => f.Name).FirstOrDefault(n => n.EndsWith(".sub", StringComparison.OrdinalIgnoreCase));
+        if (sub is null || !twin.Modules.TryGetValue(Path.GetFileNameWithoutExtension(sub), out KrlModule? module) || module.Routines.Count == 0)
+        {
+            return Task.CompletedTask;
+        }
+        string routine = module.Routines[0].Name;
+        output.WriteLine($"Submit interpreter: {sub} ({routine}) runs beside the robot program, one turn of its LOOP per 12 ms cycle");
+        return Task.Factory.StartNew(() => twin.RunSubmit(routine, TimeSpan.FromMilliseconds(12), cancellation),
+            cancellation, TaskCreationOptions.LongRunning, TaskScheduler.Default);
+    }
+
+    /// <summary>
     /// The files of <paramref name="path"/>: a folder's (its first .src is the program), or a selected .src with its .dat and then the
-    /// other modules of its folder, as a controller has them on its disk beside the program (their GLOBAL routines callable).
+    /// other modules of its folder, as a controller has them on its disk beside the program (their GLOBAL routines callable), then
+    /// the folder's submit programs (.sub).
     /// </summary>
     private static List<string> SelectedProgramFiles(string path)
     {
         List<string> files = [.. KrlTwinController.ProgramFiles(path)];
-        if (File.Exists(path) && Path.GetDirectoryName(Path.GetFullPath(path)) is { } folder)
+        string folder = Directory.Exists(path) ? path : Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
+        if (File.Exists(path))
         {
             files.AddRange(KrlTwinController.ProgramFiles(folder).Where(f => !files.Contains(f, StringComparer.OrdinalIgnoreCase)));
         }
+        string[] submit = Directory.GetFiles(folder, "*.sub");
+        Array.Sort(submit, StringComparer.Ordinal);
+        files.AddRange(submit);
         return files;
     }
 

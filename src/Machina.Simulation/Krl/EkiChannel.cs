@@ -382,16 +382,15 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         ? memory
         : throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
 
+    /// <summary>Whether the channel receives <paramref name="tag"/> or elements below it (its RECEIVE configuration).</summary>
+    public bool Receives(string tag) => Configuration.Receive.Any(e => e.Tag == tag || e.Tag.StartsWith(tag + "/", StringComparison.Ordinal));
+
     /// <summary>
     /// EKI_ClearBuffer: empties the memories of <paramref name="tag"/> and of every element below it (a RECEIVE element that only
-    /// sets a flag has no memory of its own); returns how many elements were dropped.
+    /// sets a flag has no memory of its own); returns how many elements were dropped (none for a tag it does not receive).
     /// </summary>
     public int ClearBuffer(string tag)
     {
-        if (!Configuration.Receive.Any(e => e.Tag == tag || e.Tag.StartsWith(tag + "/", StringComparison.Ordinal)))
-        {
-            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
-        }
         int dropped = 0;
         lock (_gate)
         {

@@ -51,6 +51,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// <summary>Stops waits and motions when cancelled.</summary>
     public CancellationToken Cancellation { get; } = cancellation;
 
+    /// <summary>
+    /// Called after each turn of a LOOP … ENDLOOP (null: none): the submit interpreter runs one turn of sps.sub's endless loop per
+    /// interpreter cycle instead of holding a processor.
+    /// </summary>
+    public Action<CancellationToken>? LoopTurnWait { get; init; }
+
     /// <summary>The line being run.</summary>
     public int Line { get; private set; }
 
@@ -299,6 +305,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             if (loop.Kind == KrlLoopKind.Repeat && (bool)Eval(loop.Condition!, frame))
             {
                 return Flow.Next;
+            }
+            if (loop.Kind == KrlLoopKind.Loop)
+            {
+                LoopTurnWait?.Invoke(Cancellation);
             }
         }
     }

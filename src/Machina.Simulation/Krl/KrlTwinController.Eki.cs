@@ -20,6 +20,7 @@ internal sealed partial class KrlTwinController
     private readonly Dictionary<string, EkiChannel> _ekiChannels = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, int> _ekiPorts = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<string, TcpListener> _ekiReserved = new(StringComparer.OrdinalIgnoreCase);
+    private readonly HashSet<string> _ekiNoted = new(StringComparer.OrdinalIgnoreCase);
 
     /// <summary>Raised when a program opens a channel (EKI_Open): its name, and its protocol, role and address.</summary>
     public event Action<string, string>? EkiOpened;
@@ -96,7 +97,14 @@ internal sealed partial class KrlTwinController
         Add("EKI_ClearBuffer", [text, text], (_, a) =>
         {
             EkiChannel channel = Channel(Str(a[0]));
-            channel.ClearBuffer(Str(a[1]));
+            string tag = Str(a[1]);
+            if (!channel.Receives(tag) && NotedOnce($"{channel.Name}/{tag}"))
+            {
+                // Machina.NET's published driver clears its SEND element R after each acknowledgement and runs on controllers:
+                // the program goes on (the controller's message number for it is not known).
+                Pendant.Log($"EthernetKRL {channel.Name}: EKI_ClearBuffer of {tag}, which the channel does not receive: nothing cleared (noted once)");
+            }
+            channel.ClearBuffer(tag);
             return Status(0, 0, 0, channel.Connected);
         });
         Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, EkiInt));
@@ -132,6 +140,15 @@ internal sealed partial class KrlTwinController
             bool sent = channel.Send(Str(a[1]));
             return Status(0, 0, sent ? 0 : EkiNoConnection, channel.Connected);
         });
+    }
+
+    /// <summary>Whether <paramref name="key"/> is noted for the first time (a pendant note that a loop would repeat is shown once).</summary>
+    private bool NotedOnce(string key)
+    {
+        lock (_gate)
+        {
+            return _ekiNoted.Add(key);
+        }
     }
 
     private static string Str(object value) => value is string s ? s : KrlValues.Text((KrlArrayValue)value);

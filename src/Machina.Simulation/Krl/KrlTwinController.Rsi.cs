@@ -17,12 +17,14 @@ internal sealed partial class KrlTwinController
 
     private readonly Dictionary<string, string> _rsiFiles = new(StringComparer.OrdinalIgnoreCase);
     private readonly Dictionary<int, RsiContext> _rsiContexts = [];
-    private RsiContext? _rsiActive;
-    private bool _rsiRelative;
-    private double _rsiCycle;
+    private RsiSession? _rsiOn;
+    private (int Cycles, int Late) _rsiLastCycles;
 
-    /// <summary>How many RSI cycles the last RSI_MOVECORR ran and how many of them had no answer in time.</summary>
-    public (int Cycles, int Late) RsiCycles { get; private set; }
+    /// <summary>
+    /// How many RSI cycles ran from the last RSI_ON (to RSI_OFF, or until now) and how many of them had no answer in time: the
+    /// datagrams flow from RSI_ON on, during RSI_MOVECORR and between motions.
+    /// </summary>
+    public (int Cycles, int Late) RsiCycles => _rsiOn is { } on ? (on.Cycles, on.Delay) : _rsiLastCycles;
 
     /// <summary>
     /// Adds a file of the controller's SensorInterface folder (an RSI context <c>.rsix</c> or <c>.rsi.xml</c>, or an ETHERNET
@@ -113,7 +115,7 @@ internal sealed partial class KrlTwinController
     private int RsiDelete(int container)
     {
         RsiContext context = RsiContextOf(container);
-        if (ReferenceEquals(context, _rsiActive))
+        if (ReferenceEquals(context, _rsiOn?.Context))
         {
             throw new KrlRuntimeException("RSI: RSI_DELETE of the context that is on (RSI_OFF first)");
         }
@@ -133,19 +135,129 @@ internal sealed partial class KrlTwinController
         {
             throw new KrlRuntimeException($"RSI_ON(#{mode}, #{sensor}): the correction mode is #ABSOLUTE or #RELATIVE, the sensor mode #IPO or #IPO_FAST");
         }
+        RsiContext context;
         lock (_gate)
         {
-            _rsiActive = _rsiContexts.Count > 0 ? _rsiContexts[_rsiContexts.Keys.Max()] : throw new KrlRuntimeException("RSI_ON: no context was created (RSI_CREATE)");
+            context = _rsiContexts.Count > 0 ? _rsiContexts[_rsiContexts.Keys.Max()] : throw new KrlRuntimeException("RSI_ON: no context was created (RSI_CREATE)");
         }
-        _rsiRelative = mode == "RELATIVE";
-        _rsiCycle = sensor == "IPO_FAST" ? 0.004 : 0.012;
+        RsiStart(context, mode == "RELATIVE", sensor == "IPO_FAST" ? 0.004 : 0.012);
         return RsiOk;
     }
 
+    /// <summary>
+    /// Switches <paramref name="context"/> on: its ETHERNET object starts exchanging a datagram with the sensor every cycle, as the
+    /// controller does from RSI_ON on; between motions the twin sends the robot's values and reads the sensor's (kept for the next
+    /// RSI_MOVECORR's HOLDON values and late count) without moving the arm.
+    /// </summary>
+    private void RsiStart(RsiContext context, bool relative, double cycle)
+    {
+        if (_rsiOn is not null)
+        {
+            throw new KrlRuntimeException("RSI_ON: RSI is on already (RSI_OFF first)");
+        }
+        RsiObject ethernet = context.Objects.Find(o => o.Type == "ETHERNET") ?? throw new KrlRuntimeException($"RSI: the context {context.Name} has no ETHERNET object");
+        string file = ethernet.Parameters.GetValueOrDefault("ConfigFile", "");
+        RsiEthernetConfiguration configuration;
+        try
+        {
+            configuration = RsiEthernetConfiguration.Parse(file, RsiFile(file, "Ethernet configuration"));
+        }
+        catch (FormatException ex)
+        {
+            throw new KrlRuntimeException(ex.Message);
+        }
+        TimeProvider time = Options.Time;
+        var session = new RsiSession(context, ethernet, configuration, relative, cycle)
+        {
+            Ipoc = (long)(Clock.Seconds * 1000),
+            Commanded = (Arm.Joints, Arm.Tcp),
+            Deadline = time.GetTimestamp() + CycleTicks(cycle, time),
+        };
+        _rsiOn = session;
+        bool first = true;
+        var sleep = new TwinSleep(); // the thread's own: the clock's sleeper belongs to the interpreter's thread
+        session.Start(stop =>
+        {
+            // The first cycle is RSI_MOVECORR's when it follows RSI_ON; then each cycle starts where the one before ended.
+            double rest = first ? cycle : time.GetElapsedTime(time.GetTimestamp(), session.Deadline - CycleTicks(cycle, time)).TotalSeconds;
+            first = false;
+            if (rest > 0)
+            {
+                sleep.Wait(time, TimeSpan.FromSeconds(rest), stop);
+            }
+        }, stop =>
+        {
+            if (time.GetTimestamp() >= session.Deadline - CycleTicks(cycle, time))
+            {
+                RsiCycle(session, session.Commanded.Axes, session.Commanded.Tcp, stop);
+            }
+        });
+    }
+
+    private static long CycleTicks(double cycle, TimeProvider time) => (long)(cycle * time.TimestampFrequency);
+
     private int RsiOff()
     {
-        _rsiActive = null;
-        return RsiOk;
+        RsiSession? session = _rsiOn;
+        if (session is null)
+        {
+            return RsiOk;
+        }
+        _rsiOn = null;
+        session.Dispose();
+        _rsiLastCycles = (session.Cycles, session.Delay);
+        return session.Fault is { } fault ? throw new KrlRuntimeException(fault) : RsiOk;
+    }
+
+    /// <summary>RSI ends with the program: the exchange stops (the program's end, an error, a reset).</summary>
+    private void EndRsi()
+    {
+        if (_rsiOn is { } session)
+        {
+            _rsiOn = null;
+            session.Dispose();
+            _rsiLastCycles = (session.Cycles, session.Delay);
+        }
+    }
+
+    /// <summary>
+    /// One RSI cycle's exchange: the ETHERNET object sends the robot's values (<paramref name="commanded"/> and
+    /// <paramref name="commandedTcp"/> the program's command) and waits, until the cycle ends, for the answer with the same IPOC, whose
+    /// values go into the session's outputs. More late answers in a row than the ETHERNET object's Timeout stop the program
+    /// ("RSITimeout"). Returns whether the answer came in time.
+    /// </summary>
+    private bool RsiCycle(RsiSession session, Joints commanded, Pose commandedTcp, CancellationToken cancellation)
+    {
+        TimeProvider time = Options.Time;
+        long cycle = CycleTicks(session.Cycle, time), now = time.GetTimestamp();
+        if (session.Deadline < now)
+        {
+            session.Deadline = now + cycle; // behind (a loaded machine): this cycle starts now
+        }
+        session.Cycles++;
+        session.Ipoc += (long)Math.Round(session.Cycle * 1000);
+        RsiInputs(session.Context, session.Ethernet, session.Inputs, session.Outputs);
+        var robot = new RsiRobotValues(CartesianValues(Arm.Tcp), CartesianValues(commandedTcp), Arm.Joints.ToArray(), commanded.ToArray());
+        RsiExchange exchange = session.Exchange;
+        exchange.Send(exchange.Document(robot, session.Inputs, session.Delay, session.Ipoc));
+        bool onlySend = exchange.Configuration.OnlySend;
+        XElement? answer = onlySend ? null : exchange.Answer(session.Ipoc, time, session.Deadline, cancellation);
+        session.Deadline += cycle;
+        if (answer is null && !onlySend)
+        {
+            session.Delay++;
+            int timeout = Math.Max((int)session.Ethernet.Number("Timeout", 10), 1);
+            if (++session.LateInRow >= timeout)
+            {
+                throw new KrlRuntimeException($"Signal flow (running): Object {session.Ethernet.Id} returns error RSITimeout: {session.LateInRow} answers in a row missed their {session.Cycle * 1000:0} ms cycle (Timeout {timeout})");
+            }
+        }
+        else
+        {
+            session.LateInRow = 0;
+        }
+        exchange.Read(answer, session.Outputs);
+        return answer is not null;
     }
 
     /// <summary>
@@ -157,50 +269,27 @@ internal sealed partial class KrlTwinController
     /// </summary>
     private object? RsiMoveCorr(KrlMachine machine)
     {
-        RsiContext context = _rsiActive ?? throw new KrlRuntimeException("RSI_MOVECORR: RSI is not on (RSI_ON)");
+        RsiSession session = _rsiOn ?? throw new KrlRuntimeException("RSI_MOVECORR: RSI is not on (RSI_ON)");
         Arm.FinishBlend(machine.Cancellation);
-        RsiObject ethernet = context.Objects.Find(o => o.Type == "ETHERNET") ?? throw new KrlRuntimeException($"RSI: the context {context.Name} has no ETHERNET object");
-        var configuration = RsiEthernetConfiguration.Parse(ethernet.Parameters["ConfigFile"], RsiFile(ethernet.Parameters["ConfigFile"], "Ethernet configuration"));
-        using var exchange = new RsiExchange(configuration, (int)ethernet.Number("Precision", 4));
-        int timeout = (int)ethernet.Number("Timeout", 10);
+        RsiContext context = session.Context;
+        using IDisposable turn = session.Take(machine.Cancellation);
+        if (session.Fault is { } fault)
+        {
+            throw new KrlRuntimeException(fault);
+        }
         Joints start = Arm.Joints;
         Pose startTcp = Arm.Tcp;
-        double[] total = new double[6], outputs = new double[65], inputs = new double[65];
-        int late = 0, delay = 0, cycles = 0;
-        long ipoc = (long)(Clock.Seconds * 1000);
+        session.Commanded = (start, startTcp);
+        double[] total = new double[6], outputs = session.Outputs;
+        int firstCycle = session.Cycles, firstDelay = session.Delay;
         TimeProvider time = Options.Time;
-        long next = time.GetTimestamp();
         bool stop = false;
         try
         {
             while (!stop)
             {
                 machine.Cancellation.ThrowIfCancellationRequested();
-                cycles++;
-                ipoc += (long)Math.Round(_rsiCycle * 1000);
-                long cycle = (long)(_rsiCycle * time.TimestampFrequency), now = time.GetTimestamp();
-                next += cycle;
-                if (next < now)
-                {
-                    next = now + cycle; // behind (a loaded machine): the next cycle starts now
-                }
-                RsiInputs(context, ethernet, inputs, outputs);
-                var robot = new RsiRobotValues(CartesianValues(Arm.Tcp), CartesianValues(startTcp), Arm.Joints.ToArray(), start.ToArray());
-                exchange.Send(exchange.Document(robot, inputs, delay, ipoc));
-                XElement? answer = configuration.OnlySend ? null : exchange.Answer(ipoc, time, next, machine.Cancellation);
-                if (answer is null && !configuration.OnlySend)
-                {
-                    delay++;
-                    if (++late >= Math.Max(timeout, 1))
-                    {
-                        throw new KrlRuntimeException($"Signal flow (running): Object {ethernet.Id} returns error RSITimeout: {late} answers in a row missed their {_rsiCycle * 1000:0} ms cycle (Timeout {timeout})");
-                    }
-                }
-                else
-                {
-                    late = 0;
-                }
-                exchange.Read(answer, outputs);
+                RsiCycle(session, start, startTcp, machine.Cancellation);
                 double Input(RsiObject o, int index) => o.Inputs.TryGetValue(index, out RsiLink? link) ? RsiOutput(context, link, outputs) : 0;
                 foreach (RsiObject o in context.Objects)
                 {
@@ -210,7 +299,7 @@ internal sealed partial class KrlTwinController
                             for (int i = 0; i < 6; i++)
                             {
                                 double correction = Input(o, i + 1);
-                                double sum = _rsiRelative ? total[i] + correction : correction;
+                                double sum = session.Relative ? total[i] + correction : correction;
                                 total[i] = Math.Clamp(sum, o.Number($"LowerLimA{i + 1}", -5), o.Number($"UpperLimA{i + 1}", 5));
                             }
                             break;
@@ -236,19 +325,18 @@ internal sealed partial class KrlTwinController
                 Arm.MoveTo(target, 0, machine.Line, "RSI", machine.Cancellation, trace: false);
                 if (Clock.RealTime)
                 {
-                    TimeSpan rest = time.GetElapsedTime(time.GetTimestamp(), next);
+                    TimeSpan rest = time.GetElapsedTime(time.GetTimestamp(), session.Deadline - CycleTicks(session.Cycle, time));
                     if (rest > TimeSpan.Zero)
                     {
                         Clock.WaitAside(rest.TotalSeconds, machine.Cancellation);
                     }
                 }
-                Clock.Add(_rsiCycle);
+                Clock.Add(session.Cycle);
             }
         }
         finally
         {
-            RsiCycles = (cycles, delay);
-            Arm.Record(machine.Line, TwinTraceKind.Motion, FormattableString.Invariant($"RSI_MOVECORR ({cycles} cycles of {_rsiCycle * 1000:0} ms, {delay} late)"));
+            Arm.Record(machine.Line, TwinTraceKind.Motion, FormattableString.Invariant($"RSI_MOVECORR ({session.Cycles - firstCycle} cycles of {session.Cycle * 1000:0} ms, {session.Delay - firstDelay} late)"));
         }
         return null;
     }

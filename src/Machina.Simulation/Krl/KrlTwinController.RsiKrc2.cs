@@ -62,9 +62,7 @@ internal sealed partial class KrlTwinController
         Add("ST_ON", error, [], (_, _) =>
         {
             RsiContext context = RsiContextOf(_rsiLastContainer);
-            _rsiActive = context;
-            _rsiRelative = context.Objects.Find(o => o.Type == "AXISCORR") is { } axes && axes.Number("Mode", 0) == 1;
-            _rsiCycle = 0.012;
+            RsiStart(context, context.Objects.Find(o => o.Type == "AXISCORR") is { } axes && axes.Number("Mode", 0) == 1, 0.012);
             return RsiErrorOk;
         });
         Add("ST_SKIPSENS", null, [], (m, _) => RsiMoveCorr(m));

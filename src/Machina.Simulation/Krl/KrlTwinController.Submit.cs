@@ -13,8 +13,9 @@ internal sealed partial class KrlTwinController
     /// until <paramref name="cancellation"/>, counting the timers up before each call. The cycle is the controller's, not the
     /// robot's: a twin running faster than real time runs its submit interpreter no more often (at 1000× a cycle of the scaled
     /// clock was 4 µs, and the monitor it calls sent a report in nearly every one), as a RAPID background task's waits are on
-    /// the wall clock. Between two cycles the thread sleeps in the kernel. An error stops the submit interpreter with the
-    /// controller's message in the logbook; the robot program runs on.
+    /// the wall clock. Between two cycles the thread sleeps in the kernel; so it does after each turn of a LOOP (a submit program
+    /// such as sps.sub loops on its own: one turn per cycle). An error stops the submit interpreter with the controller's message
+    /// in the logbook; the robot program runs on.
     /// </summary>
     public void RunSubmit(string routine, TimeSpan cycle, CancellationToken cancellation)
     {
@@ -24,10 +25,10 @@ internal sealed partial class KrlTwinController
             Pendant.Log($"Submit interpreter: program {routine} not found");
             return;
         }
-        var machine = new KrlMachine(this, cancellation);
-        using SubmitRun running = SubmitRunning();
         var sleep = new TwinSleep();
         TimeProvider wall = TwinScaledTime.Wall(Options.Time);
+        var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token) };
+        using SubmitRun running = SubmitRunning();
         try
         {
             while (!cancellation.IsCancellationRequested)

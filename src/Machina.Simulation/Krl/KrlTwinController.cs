@@ -24,6 +24,7 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         KrlSystemVariables.AddStatus(Environment, this);
         KrlProgramManagement.AddTo(Environment, this);
         AddEki();
+        AddEkiCheck();
         AddRsi();
         AddRsiKrc2();
         foreach ((string name, int output) in Options.Signals)
@@ -62,6 +63,14 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
     /// </summary>
     public void Load(CancellationToken cancellation, params (string Name, string Text)[] files)
     {
+        foreach ((string name, string text) in files)
+        {
+            if (KrlMachineData.ListOf(name, text) is { } list)
+            {
+                Pendant.Log($"{name}: {list} is the controller's machine data (its Mada folder), not a program module: the twin keeps its own and does not load it");
+            }
+        }
+        files = [.. files.Where(f => KrlMachineData.ListOf(f.Name, f.Text) is null)];
         var modules = new Dictionary<string, KrlModule>(_modules, StringComparer.OrdinalIgnoreCase);
         var data = new List<KrlDataList>();
         string? main = null;
@@ -79,18 +88,18 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
                 }
                 data.Add(list);
             }
-            else if (extension == ".src")
+            else if (extension is ".src" or ".sub")
             {
                 var parsed = new KrlModule(module);
                 // The first routine is the program even when it is not named after its file: published RSI programs ship as
                 // ros_rsi.src with DEF RSI_AxisCorr( ), and their users select and run them so (kuka_experimental issue 48).
                 KrlParser.ParseSource(name, text, parsed, Options.Limits, types, cancellation);
                 modules[module] = parsed;
-                main ??= parsed.Routines[0].Name;
+                main ??= extension == ".src" ? parsed.Routines[0].Name : null;
             }
             else
             {
-                throw new KrlLoadException(name, 1, "the controller loads .src and .dat files");
+                throw new KrlLoadException(name, 1, "the controller loads .src, .sub and .dat files");
             }
         }
         var binder = new KrlBinder(modules, Environment);
@@ -219,6 +228,7 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         }
         finally
         {
+            EndRsi();
             Arm.Serve = null;
             Arm.NextWake = null;
         }
@@ -238,5 +248,9 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
     }
 
     /// <inheritdoc/>
-    public void Dispose() => CloseEki();
+    public void Dispose()
+    {
+        EndRsi();
+        CloseEki();
+    }
 }

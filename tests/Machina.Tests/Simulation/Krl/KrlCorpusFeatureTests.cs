@@ -12,6 +12,102 @@ public class KrlCorpusFeatureTests
     private static object Data(KrlTwinController twin, string module, string name) => twin.Modules[module].Data[name].Value;
 
     [Fact]
+    public void MachineDataList_BesideTheProgram_IsSetAside_AndTheProgramRuns()
+    {
+        // A folder that ships the controller's $custom.dat (as ros-industrial's motion_eki does): its CHANNEL lines and system types
+        // (SER, PRO_IO_T, AXIS_OF_COORDINATES) configure the controller, not the program; the twin keeps its own and says so.
+        const string machineData = """
+            &ACCESS RV$
+            &PARAM DISKPATH = MADA
+            DEFDAT  $CUSTOM PUBLIC
+            BOOL $SR_VEL_RED=TRUE
+            DECL AXIS_OF_COORDINATES $TOOL_DIRECTION=#X
+            DECL PRO_IO_T $PRO_I_O_SYS={MODULE[] "/R1/CELL()",COLD_BOOT_RUN #ON}
+            DECL SER $PSER_1={PROTO 1,PROC 0,RCO 5,BAUD 19200}
+            CHANNEL :SER_1 :SER_1 $PSER_1
+            ENDDAT
+            """;
+        using var twin = new KrlTwinController();
+        twin.Load(("cell.src", "DEF cell( )\n  PTP {AXIS: A1 15, A2 -90, A3 90, A4 0, A5 90, A6 0}\nEND\n"), ("$custom.dat", machineData));
+
+        Assert.Equal(KrlProgramState.Finished, twin.Run());
+        Assert.Equal(15, twin.Arm.Joints.J1, 9);
+        Assert.Contains("$custom.dat: $CUSTOM is the controller's machine data (its Mada folder), not a program module: the twin keeps its own and does not load it", twin.Pendant.Lines);
+        Assert.DoesNotContain("$custom", twin.Modules.Keys, StringComparer.OrdinalIgnoreCase);
+    }
+
+    [Fact]
+    public void SubmitProgram_WithItsOwnLoop_RunsOneTurnPerCycle()
+    {
+        // sps.sub loops on its own (LOOP … ENDLOOP with the user's PLC calls): the submit interpreter runs a turn per 12 ms cycle
+        // instead of spinning a processor.
+        using var twin = new KrlTwinController();
+        twin.Load(("cell.src", "DEF cell( )\nEND\n"), ("sps.sub", "DEF sps( )\n  LOOP\n    turns = turns + 1\n  ENDLOOP\nEND\n"), ("sps.dat", "DEFDAT sps\n  INT turns = 0\nENDDAT\n"));
+        using var stop = new CancellationTokenSource(TimeSpan.FromMilliseconds(150));
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+
+        twin.RunSubmit("sps", TimeSpan.FromMilliseconds(12), stop.Token);
+        double elapsed = clock.Elapsed.TotalMilliseconds;
+
+        int turns = (int)Data(twin, "sps", "turns");
+        Assert.InRange(turns, 1, (int)(elapsed / 12) + 2);
+    }
+
+    [Fact]
+    public void EkiCheck_ShowsTheErrorOfAnEkiFunction_AndStopsTheProgramOnAnAcknowledgementMessage()
+    {
+        // As published EKI servers check each call: EKI_CHECK(RET, #QUIT) after EKI_Open (Msg_No 0: nothing), a #NOTIFY of a
+        // second EKI_Init (23), then #QUIT with the channel named.
+        const string program = """
+            DEF checked( )
+              DECL EKI_STATUS RET
+              RET = EKI_Init("Checked")
+              EKI_CHECK(RET, #QUIT)
+              RET = EKI_Init("Checked")
+              EKI_CHECK(RET, #NOTIFY)
+              $OUT[3] = TRUE
+              EKI_CHECK(RET, #QUIT, "Checked")
+              $OUT[4] = TRUE
+            END
+            """;
+        using var twin = new KrlTwinController();
+        twin.AddEkiConfiguration("Checked", "<ETHERNETKRL><CONFIGURATION><EXTERNAL><TYPE>Client</TYPE></EXTERNAL><INTERNAL><PORT>0</PORT></INTERNAL></CONFIGURATION></ETHERNETKRL>");
+        twin.Load(("checked.src", program));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.Equal(KrlProgramState.Failed, state);
+        Assert.Equal("EthernetKRL (Checked): EKI00023: Initialization already performed (EKI_CHECK with #QUIT: an acknowledgement message, which stops the program on the twin) (checked.src, line 8)", twin.Error);
+        Assert.Equal("EthernetKRL: EKI00023: Initialization already performed", twin.Pendant.Lines[0]);
+        Assert.Contains(twin.Arm.Trace, e => e.Text == "$OUT[3] = TRUE");
+        Assert.DoesNotContain(twin.Arm.Trace, e => e.Text == "$OUT[4] = TRUE");
+    }
+
+    [Fact]
+    public void EkiClearBuffer_OfAnElementTheChannelDoesNotReceive_ClearsNothing_AndTheProgramGoesOn()
+    {
+        // Machina.NET's original driver (run on KR C4 controllers) clears its SEND element R after each acknowledgement.
+        const string program = """
+            DEF acks( )
+              DECL EKI_STATUS RET
+              RET = EKI_Init("Acks")
+              RET = EKI_ClearBuffer("Acks", "R")
+              RET = EKI_ClearBuffer("Acks", "R")
+              $OUT[2] = RET.Msg_No == 0
+            END
+            """;
+        using var twin = new KrlTwinController();
+        twin.AddEkiConfiguration("Acks", "<ETHERNETKRL><CONFIGURATION><EXTERNAL><TYPE>Client</TYPE></EXTERNAL><INTERNAL><PORT>0</PORT></INTERNAL></CONFIGURATION><RECEIVE><XML><ELEMENT Tag=\"Cmd/@A\" Type=\"INT\" /></XML></RECEIVE><SEND><XML><ELEMENT Tag=\"R/@ID\" /></XML></SEND></ETHERNETKRL>");
+        twin.Load(("acks.src", program));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        Assert.Equal(["EthernetKRL Acks: EKI_ClearBuffer of R, which the channel does not receive: nothing cleared (noted once)"], twin.Pendant.Lines);
+        Assert.Contains(twin.Arm.Trace, e => e.Text == "$OUT[2] = TRUE");
+    }
+
+    [Fact]
     public void Goto_JumpsBack_AndOutOfALoop_ToALabelOfTheRoutine()
     {
         const string source = """

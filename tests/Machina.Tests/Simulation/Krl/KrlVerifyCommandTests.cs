@@ -78,5 +78,29 @@ public class KrlVerifyCommandTests
         Assert.Contains("Running main_prog (main_prog.src, helper.src) on a KRL twin", result.Stdout, StringComparison.Ordinal);
         Assert.Contains("  $OUT[2] = TRUE: TCP", result.Stdout, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public async Task SimKukaLoad_RunsTheFoldersSubmitProgram_BesideTheRobotProgram_UntilCtrlC()
+    {
+        // As KUKA's EKI server for KSS is installed: sps.sub calls the program's routines; the robot program itself may be empty.
+        using var cli = new CliRunner();
+        Directory.CreateDirectory(Path.Combine(cli.Folder, "cell"));
+        cli.Write("cell/cell.src", "DEF cell( )\nEND\nGLOBAL DEF Cell_Init( )\n  MsgNotify(\"server up\", \"CELL\", 1)\nEND\n");
+        cli.Write("cell/sps.sub", "DEF sps( )\n  INT turns\n  turns = 0\n  Cell_Init()\n  LOOP\n    turns = turns + 1\n    IF turns == 3 THEN\n      MsgNotify(\"three turns\", \"SPS\", 3)\n    ENDIF\n  ENDLOOP\nEND\n");
+        using var stop = new CancellationTokenSource(TimeSpan.FromMinutes(1));
+        var stdout = new WatchedWriter();
+        Task<CliResult> running = cli.RunAsync(["sim", "kuka", "--load", "cell"], "", stop.Token, stdout);
+
+        await stdout.WaitForAsync("NOTIFY SPS 3: three turns").WaitAsync(TimeSpan.FromMinutes(1));
+        await stop.CancelAsync();
+        CliResult result = await running;
+
+        Assert.True(result.Exit == 0, result.Stdout + result.Stderr);
+        Assert.Contains("Running cell (cell.src, sps.sub) on a KRL twin", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("Submit interpreter: sps.sub (sps) runs beside the robot program, one turn of its LOOP per 12 ms cycle\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  pendant: NOTIFY CELL 1: server up\n", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("OK: the program ran to its end", result.Stdout, StringComparison.Ordinal);
+        Assert.Contains("The submit interpreter runs on until Ctrl+C.\n", result.Stdout, StringComparison.Ordinal);
+    }
 }
 #endif
