@@ -29,17 +29,21 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private KrlRoutine _routine = null!;
     private int _depth;
     private long _steps;
+    private int _stackChecks;
 
     /// <summary>The array elements of the routines' local data now (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
     private long _localElements;
 
     /// <summary>The interpreter's budgets.</summary>
-    public TwinLimits Limits => Controller.Options.Limits;
+    public TwinLimits Limits { get; } = controller.Options.Limits;
 
-    /// <summary>Throws the interpreter's error when the running thread has too little stack left for one more level.</summary>
-    private static void CheckStack()
+    /// <summary>
+    /// Throws the interpreter's error when the running thread has too little stack left for one more level. The runtime is asked
+    /// at every 8th call (<see cref="TwinLimits.StackCheckEvery"/>).
+    /// </summary>
+    private void CheckStack()
     {
-        if (TwinLimits.StackLow)
+        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0 && TwinLimits.StackLow)
         {
             throw new KrlRuntimeException("stack overflow: the subprogram calls and expressions are nested too deeply");
         }
