@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Krl;
@@ -51,9 +52,18 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// Throws the interpreter's error when the running thread has too little stack left for one more level. The runtime is asked
     /// at every 8th call (<see cref="TwinLimits.StackCheckEvery"/>).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void CheckStack()
     {
-        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0 && TwinLimits.StackLow)
+        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0)
+        {
+            AskForStack();
+        }
+    }
+
+    private static void AskForStack()
+    {
+        if (TwinLimits.StackLow)
         {
             throw new KrlRuntimeException("stack overflow: the subprogram calls and expressions are nested too deeply");
         }

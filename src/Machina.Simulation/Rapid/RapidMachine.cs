@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Rapid;
@@ -31,9 +32,18 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// Throws the task's error when the running thread has too little stack left for one more level. The runtime is asked at every
     /// 8th call (<see cref="TwinLimits.StackCheckEvery"/>).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void CheckStack(int line)
     {
-        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0 && TwinLimits.StackLow)
+        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0)
+        {
+            AskForStack(line);
+        }
+    }
+
+    private static void AskForStack(int line)
+    {
+        if (TwinLimits.StackLow)
         {
             throw Budget(line, "stack overflow: the routine calls and expressions are nested too deeply");
         }
