@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Krl;
@@ -20,6 +21,16 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private int _interruptsOn;
     private int[] _interruptOrder = [];
     private long _writes;
+
+    /// <summary>True when a declared interrupt's condition reads more than data list and system variables (a call, a local).</summary>
+    private bool _watchesAll;
+
+    /// <summary>True when a declared interrupt's condition reads a variable the controller computes when read ($TIMER, $POS_ACT).</summary>
+    private bool _watchesComputed;
+
+    /// <summary>The variables the declared interrupts' conditions read, and the sum of their write counts when last looked at.</summary>
+    private readonly List<KrlCell> _watched = [];
+    private long _checkedWatchedWrites;
     private long _checkedWrites = -1;
     private long _checkedInputs = -1;
     private bool _inInterrupt;
@@ -29,15 +40,28 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private KrlRoutine _routine = null!;
     private int _depth;
     private long _steps;
+    private int _stackChecks;
 
     /// <summary>The array elements of the routines' local data now (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
     private long _localElements;
 
     /// <summary>The interpreter's budgets.</summary>
-    public TwinLimits Limits => Controller.Options.Limits;
+    public TwinLimits Limits { get; } = controller.Options.Limits;
 
-    /// <summary>Throws the interpreter's error when the running thread has too little stack left for one more level.</summary>
-    private static void CheckStack()
+    /// <summary>
+    /// Throws the interpreter's error when the running thread has too little stack left for one more level. The runtime is asked
+    /// at every 8th call (<see cref="TwinLimits.StackCheckEvery"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void CheckStack()
+    {
+        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0)
+        {
+            AskForStack();
+        }
+    }
+
+    private static void AskForStack()
     {
         if (TwinLimits.StackLow)
         {
@@ -163,7 +187,8 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Line = statement.Line;
             Step();
             Controller.Line = statement.Line;
-            if (_interruptsOn > 0 && !_inInterrupt && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || Controller.TimersCounting))
+            if (_interruptsOn > 0 && !_inInterrupt
+                && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || (Controller.TimersCounting && ConditionsMayHaveChanged())))
             {
                 // An interrupt's condition reads global and system variables only: it can only change after such a write or an input.
                 _checkedWrites = _writes;
@@ -248,6 +273,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 }
                 _interrupts[declaration.Priority] = (declaration, frame, false, false);
                 _interruptOrder = [.. _interrupts.Keys.Order()];
+                Watch(declaration.Condition);
                 return Flow.Next;
             case KrlInterruptSwitch change:
                 SwitchInterrupts(change);
@@ -448,6 +474,75 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             CheckInterrupts();
             ArmTimerWake(); // the next timer to reach 0 wakes the motion again (a routine may have set its timer back)
         }
+    }
+
+    /// <summary>
+    /// Marks the variables <paramref name="condition"/> reads (<see cref="KrlCell.Watched"/>), so that a write of an element of
+    /// any other variable does not make the interpreter look at the conditions again; a condition that calls a function or reads a
+    /// local is looked at after every write, as before.
+    /// </summary>
+    private void Watch(KrlExpr condition)
+    {
+        switch (condition)
+        {
+            case KrlLiteral:
+                return;
+            case KrlName { Cell: { } cell }:
+                if (!cell.Watched || !_watched.Contains(cell))
+                {
+                    cell.Watched = true;
+                    _watched.Add(cell);
+                }
+                _watchesComputed |= cell.Read is not null && cell.Signals is null;
+                return;
+            case KrlIndex index:
+                Watch(index.Target);
+                foreach (KrlExpr? i in index.Indices)
+                {
+                    if (i is not null)
+                    {
+                        Watch(i);
+                    }
+                }
+                return;
+            case KrlMember member:
+                Watch(member.Target);
+                return;
+            case KrlUnary unary:
+                Watch(unary.Operand);
+                return;
+            case KrlBinary binary:
+                Watch(binary.Left);
+                Watch(binary.Right);
+                return;
+            default:
+                _watchesAll = true;
+                return;
+        }
+    }
+
+    /// <summary>
+    /// While a timer counts (a submit interpreter's, e.g. the KUKA monitor's period) the conditions were looked at before every
+    /// statement, as time passes; they can only have changed when one reads a computed variable or a function, or when another
+    /// interpreter wrote a variable one reads. Before, the driver's three conditions were evaluated at every statement, all stream long.
+    /// </summary>
+    private bool ConditionsMayHaveChanged()
+    {
+        if (_watchesAll || _watchesComputed)
+        {
+            return true;
+        }
+        long writes = 0;
+        foreach (KrlCell cell in _watched)
+        {
+            writes += cell.WriteCount;
+        }
+        if (writes == _checkedWatchedWrites)
+        {
+            return false;
+        }
+        _checkedWatchedWrites = writes;
+        return true;
     }
 
     /// <summary>Runs the handler of each switched-on interrupt whose condition has just become TRUE (edge), highest priority first.</summary>

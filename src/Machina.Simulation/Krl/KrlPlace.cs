@@ -53,6 +53,7 @@ internal sealed class KrlPlace(object[] container, int index, KrlType type, int 
             if (value is string text)
             {
                 KrlValues.SetText(Container, Index, SliceLength, text);
+                Root?.Cell.CountWrite();
                 Root?.Cell.Written?.Invoke(-1);
                 return;
             }
@@ -69,6 +70,7 @@ internal sealed class KrlPlace(object[] container, int index, KrlType type, int 
         }
         if (Root is { } root)
         {
+            root.Cell.CountWrite();
             root.Cell.Written?.Invoke(root.Element);
         }
     }

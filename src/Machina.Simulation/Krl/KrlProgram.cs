@@ -25,6 +25,26 @@ internal sealed class KrlCell(string name, KrlType type, object value)
     /// <summary>For a system variable the controller computes when read (e.g. <c>$AXIS_ACT</c>), how.</summary>
     public Func<object>? Read { get; init; }
 
+    /// <summary>
+    /// True once an interrupt's condition reads the variable (set when the interrupt is declared, never cleared): only then may an
+    /// interpreter's write of one of its elements make a condition change.
+    /// </summary>
+    public bool Watched { get; set; }
+
+    /// <summary>How many times a program wrote the variable since it became <see cref="Watched"/> (any interpreter's thread).</summary>
+    public long WriteCount => Interlocked.Read(ref _writeCount);
+
+    private long _writeCount;
+
+    /// <summary>Counts a program's write of the variable or an element of it, when an interrupt's condition reads it.</summary>
+    public void CountWrite()
+    {
+        if (Watched)
+        {
+            Interlocked.Increment(ref _writeCount);
+        }
+    }
+
     /// <summary>Called after a program wrote the variable or an element of it (the element's index, or -1 for all of it).</summary>
     public Action<int>? Written { get; init; }
 

@@ -95,21 +95,49 @@ internal static class KrlValues
 
     private static readonly object True = true;
     private static readonly object False = false;
+    private static readonly object ZeroReal = 0.0;
 
     /// <summary>A boxed CHAR, shared for the first 256 characters.</summary>
     public static object Box(char value) => value < 256 ? Chars[value] : value;
 
     /// <summary>The initial value of a variable of <paramref name="type"/> (0, FALSE, empty).</summary>
-    public static object Default(KrlType type) => type.Kind switch
+    public static object Default(KrlType type)
     {
-        KrlKind.Int => 0,
-        KrlKind.Real => 0.0,
-        KrlKind.Bool => false,
-        KrlKind.Char => '\0',
-        KrlKind.Enum => new KrlEnumValue(""),
-        KrlKind.Struct => new KrlStructValue(type, [.. type.Fields.Select(f => Default(f.Type))]) { Unset = KrlTypes.StatusTurnBits(type) },
-        _ => new KrlArrayValue(type, [.. Enumerable.Range(0, type.Length).Select(_ => Default(type.Element!))]),
-    };
+        // The scalars' shared boxes (a box is never changed: a store replaces it), and plain loops: a routine's locals are made
+        // at every call (the driver's FRAME, E6POS and E6AXIS locals, once per action).
+        switch (type.Kind)
+        {
+            case KrlKind.Int:
+                return Box(0);
+            case KrlKind.Real:
+                return ZeroReal;
+            case KrlKind.Bool:
+                return False;
+            case KrlKind.Char:
+                return Box('\0');
+            case KrlKind.Enum:
+                return new KrlEnumValue("");
+            case KrlKind.Struct:
+            {
+                IReadOnlyList<(string Name, KrlType Type)> fields = type.Fields;
+                var values = new object[fields.Count];
+                for (int i = 0; i < values.Length; i++)
+                {
+                    values[i] = Default(fields[i].Type);
+                }
+                return new KrlStructValue(type, values) { Unset = KrlTypes.StatusTurnBits(type) };
+            }
+            default:
+            {
+                var items = new object[type.Length];
+                for (int i = 0; i < items.Length; i++)
+                {
+                    items[i] = Default(type.Element!);
+                }
+                return new KrlArrayValue(type, items);
+            }
+        }
+    }
 
     /// <summary>A copy of a value (structures and arrays deep, the rest as is).</summary>
     public static object Copy(object value) => value switch

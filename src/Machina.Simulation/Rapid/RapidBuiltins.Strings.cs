@@ -80,7 +80,12 @@ internal static partial class RapidBuiltins
     /// <summary>A number rounded to <paramref name="decimals"/> decimals, without trailing zeros (NumToStr).</summary>
     internal static string NumberText(double value, int decimals)
     {
-        string text = Math.Round(value, decimals, MidpointRounding.AwayFromZero).ToString("F" + decimals, CultureInfo.InvariantCulture);
+        double rounded = Math.Round(value, decimals, MidpointRounding.AwayFromZero);
+        if (decimals == 0 && Math.Abs(rounded) < 1e15)
+        {
+            return ((long)rounded).ToString(CultureInfo.InvariantCulture); // ids and codes ("F0" with no point to trim; -0 is 0)
+        }
+        string text = rounded.ToString("F" + decimals, CultureInfo.InvariantCulture);
         if (text.Contains('.', StringComparison.Ordinal))
         {
             text = text.TrimEnd('0').TrimEnd('.');

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Rapid;
@@ -16,18 +17,31 @@ internal sealed partial class RapidMachine(RapidTask task)
 
     private int _depth;
     private long _steps;
+    private int _stackChecks;
 
     /// <summary>The array elements of the routines' local data now (bounded by <see cref="TwinLimits.MaxTotalElements"/>).</summary>
     private long _localElements;
 
     /// <summary>The interpreter's budgets.</summary>
-    public TwinLimits Limits => Task.Controller.Options.Limits;
+    public TwinLimits Limits { get; } = task.Controller.Options.Limits;
 
     /// <summary>The error of a budget of the twin: no ERROR handler takes it, the task stops.</summary>
     internal static RapidRuntimeException Budget(int line, string message) => new(0, line, message) { Fatal = true };
 
-    /// <summary>Throws the task's error when the running thread has too little stack left for one more level.</summary>
-    internal static void CheckStack(int line)
+    /// <summary>
+    /// Throws the task's error when the running thread has too little stack left for one more level. The runtime is asked at every
+    /// 8th call (<see cref="TwinLimits.StackCheckEvery"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void CheckStack(int line)
+    {
+        if ((++_stackChecks & (TwinLimits.StackCheckEvery - 1)) == 0)
+        {
+            AskForStack(line);
+        }
+    }
+
+    private static void AskForStack(int line)
     {
         if (TwinLimits.StackLow)
         {

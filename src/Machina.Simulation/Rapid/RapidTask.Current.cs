@@ -12,7 +12,18 @@ internal sealed partial class RapidTask
     /// <summary>A motion instruction ran with <paramref name="tool"/> and <paramref name="wobj"/> (null: none given, wobj0).</summary>
     public void UsedFrames(RapidRecord tool, RapidRecord? wobj)
     {
-        ToolData = (RapidRecord)RapidValues.Copy(tool);
-        WObjData = wobj is null ? null : (RapidRecord)RapidValues.Copy(wobj);
+        // The copies are kept while the program moves with the same data (a driver's every MoveL): about 1.5 KB less per motion.
+        if (ToolData is null || !RapidValues.Identical(tool, ToolData))
+        {
+            ToolData = (RapidRecord)RapidValues.Copy(tool);
+        }
+        if (wobj is null)
+        {
+            WObjData = null;
+        }
+        else if (WObjData is null || !RapidValues.Identical(wobj, WObjData))
+        {
+            WObjData = (RapidRecord)RapidValues.Copy(wobj);
+        }
     }
 }

@@ -62,9 +62,20 @@ internal static class RapidValues
             RapidTypeKind.Num or RapidTypeKind.Dnum => RapidBoxes.Num(0),
             RapidTypeKind.Bool => RapidBoxes.Bool(false),
             RapidTypeKind.String => "",
-            RapidTypeKind.Record => new RapidRecord(t, [.. t.Fields.Select(f => Default(f.Type))]),
+            RapidTypeKind.Record => DefaultRecord(t),
             _ => t.Create?.Invoke() ?? new object(),
         };
+    }
+
+    /// <summary>A record of <paramref name="type"/> with each component's initial value (a plain loop: a routine's record locals are made at each call).</summary>
+    private static RapidRecord DefaultRecord(RapidType type)
+    {
+        var fields = new object[type.Fields.Count];
+        for (int i = 0; i < fields.Length; i++)
+        {
+            fields[i] = Default(type.Fields[i].Type);
+        }
+        return new RapidRecord(type, fields);
     }
 
     /// <summary>A copy of <paramref name="value"/>: records and arrays are copied deeply; non-value data are shared.</summary>
@@ -94,6 +105,37 @@ internal static class RapidValues
         (RapidArray x, RapidArray y) => x.Items.Length == y.Items.Length && x.Items.Zip(y.Items).All(p => AreEqual(p.First, p.Second)),
         _ => a.Equals(b),
     };
+
+    /// <summary>
+    /// True when <paramref name="a"/> and <paramref name="b"/> hold the same value to the bit (numbers by their bits: 0 and -0 differ,
+    /// a NaN is its own), so that a copy of one may stand for the other; data that are not values are compared by reference.
+    /// </summary>
+    public static bool Identical(object a, object b) => (a, b) switch
+    {
+        (double x, double y) => BitConverter.DoubleToInt64Bits(x) == BitConverter.DoubleToInt64Bits(y),
+        (bool x, bool y) => x == y,
+        (string x, string y) => string.Equals(x, y, StringComparison.Ordinal),
+        (RapidRecord x, RapidRecord y) => x.Type == y.Type && AllIdentical(x.Fields, y.Fields),
+        (RapidArray x, RapidArray y) => x.Dimensions.AsSpan().SequenceEqual(y.Dimensions) && AllIdentical(x.Items, y.Items),
+        (double or bool or string or RapidRecord or RapidArray, _) => false,
+        _ => ReferenceEquals(a, b),
+    };
+
+    private static bool AllIdentical(object[] a, object[] b)
+    {
+        if (a.Length != b.Length)
+        {
+            return false;
+        }
+        for (int i = 0; i < a.Length; i++)
+        {
+            if (!Identical(a[i], b[i]))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
 
     /// <summary>A number as the controller writes it with <c>ValToStr</c>: up to 6 significant digits.</summary>
     public static string FormatNumber(double value)

@@ -107,13 +107,17 @@ internal static partial class UrBuiltins
         double degrees = TwinRotation.AngleDegrees(start.Rotation, end.Rotation);
         int steps = (int)Math.Clamp(Math.Ceiling(Math.Max(mm / 10, degrees / 5)), 1, 16);
         Joints joints = m.Controller.Arm.Joints;
-        Solve(m, line, function, end, joints); // the target itself first, so that an unreachable target is named as such
+        // The target itself first, so that an unreachable target is named as such. The path's last point is the target: a path of
+        // one step (a move shorter than 10 mm and 5 degrees, every move of a fine toolpath) ends at this solution, not solved twice.
+        Joints atEnd = Solve(m, line, function, end, joints);
         for (int k = 1; k <= steps; k++)
         {
             Joints next;
             try
             {
-                next = m.Controller.Arm.Solve(at((double)k / steps), joints);
+                next = k < steps ? m.Controller.Arm.Solve(at((double)k / steps), joints)
+                    : steps == 1 ? atEnd
+                    : m.Controller.Arm.Solve(end, joints);
             }
             catch (TwinMotionException e)
             {
