@@ -33,13 +33,16 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
     /// </summary>
     internal void Warn(string kind, ReadOnlySpan<char> line)
     {
-        if (_count > 0 && kind == _kind)
+        if (Continues(kind))
         {
             _continues = true; // the run goes on: this copy is not written
             return;
         }
         _pending.Add((kind, new string(line)));
     }
+
+    /// <summary>True when a warning of <paramref name="kind"/> given now would go on the run under way (its line would not be written).</summary>
+    internal bool Continues(string kind) => _count > 0 && kind == _kind;
 
     /// <summary>A motion begins: its warnings were given with <see cref="Warn"/>; its lines follow.</summary>
     internal void Motion()

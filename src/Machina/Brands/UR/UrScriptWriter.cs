@@ -230,6 +230,13 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
     /// </remarks>
     private void WarnBlend(RobotAction action, double radius, double length, string which)
     {
+        if (!job.KeepsMoreWarnings && sink.Continues("blend"))
+        {
+            // The run of blend warnings goes on and the job only counts warnings by now: the text would be written nowhere.
+            job.Warn(action, "");
+            sink.Warn("blend", []);
+            return;
+        }
         var translation = action as ActionTranslation;
         Span<char> own = stackalloc char[RobotAction.MaxWrittenInstructionChars];
         int ownLength = translation is null ? action.TryWriteInstruction(own) : 0;

@@ -38,6 +38,43 @@ public class UrWarningRunTests
     }
 
     [Fact]
+    public void InstructionFile_RunPastTheWarningsKept_SameScriptAsTheRobotAndEveryWarningCounted()
+    {
+        // An instruction file's job keeps the first Instructions.MaxWarningsKept warnings and then only counts them; the writer
+        // then skips the text of a blend warning that continues a run. The script must not show it: the robot's compile keeps
+        // (and formats) every warning, and both write the same bytes.
+        int moves = Instructions.MaxWarningsKept + 500;
+        var text = new System.Text.StringBuilder("MoveTo(400, 300, 500);\nPrecisionTo(5);\n");
+        for (int i = 0; i < moves; i++)
+        {
+            text.Append(i % 3 == 0 ? "Move(0.5, 0, 0);\n" : i % 3 == 1 ? "Rotate(0, 0, 1, 2);\n" : "Move(-0.25, 0.125, 0);\n");
+        }
+        text.Append("PrecisionTo(0);\nMove(0, 0, 50);\n");
+        string root = Path.Combine(Path.GetTempPath(), "machina-urruns-" + Guid.NewGuid().ToString("N"));
+        try
+        {
+            Directory.CreateDirectory(root);
+            string file = Path.Combine(root, "Runs.machina");
+            File.WriteAllText(file, text.ToString());
+            var bot = Robot.Create("Runs", RobotType.UR);
+            bot.Do(text.ToString());
+            string expected = Assert.Single(bot.CompileToFolder(Path.Combine(root, "robot"), RobotType.UR));
+
+            FolderCompileResult result = Instructions.CompileToFolder(file, RobotType.UR, Path.Combine(root, "file"));
+
+            Assert.Equal(File.ReadAllBytes(expected), File.ReadAllBytes(Assert.Single(result.Paths)));
+            Assert.Equal(moves + 1, result.WarningCount);
+            Assert.Equal(bot.Compile(RobotType.UR).Warnings.Count, result.WarningCount);
+            Assert.Equal(Instructions.MaxWarningsKept, result.Warnings.Count);
+            Assert.Contains($"  # WARNING: the same warning for {moves} motions in a row", File.ReadAllText(result.Paths[0]), StringComparison.Ordinal);
+        }
+        finally
+        {
+            Directory.Delete(root, recursive: true);
+        }
+    }
+
+    [Fact]
     public void WarningRuns_OtherKindBreaksTheRun_LinesCountedInTheFile()
     {
         var file = new ListLineSink();
