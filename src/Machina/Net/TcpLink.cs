@@ -281,8 +281,10 @@ internal sealed class TcpLink : IAsyncDisposable
                 }
             }
         }
-        catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)
+        catch (Exception ex)
         {
+            // A socket failure, or the handler's own (a codec's bug): on this thread of its own an exception left unhandled
+            // would end the process, so the link ends instead and its receiver hears why.
             if (!stop.IsCancellationRequested)
             {
                 Closed(ex);

@@ -70,6 +70,29 @@ public sealed class TcpLinkTests
         Assert.Equal("first\nsecond\nthird\n", received);
     }
 
+    [Fact]
+    public async Task AHandlerThatThrows_EndsTheLink_AndItsReceiverHearsWhy()
+    {
+        var receiver = new ThrowingReceiver();
+        await using var pair = await LinkPair.OpenAsync(receiver);
+        await pair.Server.SendAsync(Encoding.ASCII.GetBytes("go"));
+
+        Exception? error = await receiver.Closed.Task.WaitAsync(Bound);
+
+        Assert.IsType<InvalidOperationException>(error);
+        Assert.Equal("the handler failed", error!.Message);
+    }
+
+    /// <summary>Throws on its first read, as a driver's codec with a bug would, and keeps what the link reports then.</summary>
+    private sealed class ThrowingReceiver : ILinkReceiver
+    {
+        public TaskCompletionSource<Exception?> Closed { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public void OnReceived(ReadOnlySpan<byte> data) => throw new InvalidOperationException("the handler failed");
+
+        public void OnClosed(Exception? error) => Closed.TrySetResult(error);
+    }
+
     /// <summary>On its first read, posts each text in turn (from the receive loop's thread), then reports that it did.</summary>
     private sealed class PostingReceiver(params string[] texts) : ILinkReceiver
     {
