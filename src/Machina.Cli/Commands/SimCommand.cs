@@ -72,6 +72,9 @@ internal static partial class SimCommand
         Flags: ["--quiet"],
         RunAsync);
 
+    /// <summary>The options that only a program run with --load uses (refused without it, never ignored).</summary>
+    private static readonly string[] LoadOnlyOptions = ["--signal", "--eio", "--task-type", "--cycle"];
+
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
         RobotType brand = Brands.Parse(args.Single("a brand (abb, ur or kuka)"), [.. Brands.Online.Where(Machina.Simulation.VirtualControllerRegistry.Has)], "sim");
@@ -89,6 +92,10 @@ internal static partial class SimCommand
         {
             string having = string.Join(" or ", Machina.Simulation.VirtualControllerRegistry.WithMassMemory.Select(b => "a virtual " + b.DisplayName));
             throw new UsageException($"--home is the mass memory of {having} (RAPID's HOME:), not of {Brands.Name(brand)}.");
+        }
+        if (args.Value("--load") is null && LoadOnlyOptions.FirstOrDefault(o => args.Value(o) is not null) is { } loadOnly)
+        {
+            throw new UsageException($"{loadOnly} sets up a program that --load runs; without --load it would do nothing. Add --load PROGRAM or leave {loadOnly} out.");
         }
         // Options are checked before --load takes over: a mistyped one is an error there too, never ignored.
         if (args.Value("--load") is not null)

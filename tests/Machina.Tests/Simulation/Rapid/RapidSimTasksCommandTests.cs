@@ -68,6 +68,22 @@ public class RapidSimTasksCommandTests
         Assert.Contains(message, result.Stderr, StringComparison.Ordinal);
     }
 
+    [Theory]
+    [InlineData("--task-type", "T_BG=STATIC")]
+    [InlineData("--cycle", "forever")]
+    [InlineData("--signal", "DI_1=1")]
+    [InlineData("--eio", "EIO.cfg")]
+    public async Task SimAbb_ALoadOnlyOptionWithoutLoad_IsAUsageError_NotIgnored(string option, string value)
+    {
+        using var cli = new CliRunner();
+
+        CliResult result = await cli.RunAsync("sim", "abb", "--port", "0", option, value);
+
+        Assert.Equal(2, result.Exit);
+        Assert.Contains($"{option} sets up a program that --load runs; without --load it would do nothing. Add --load PROGRAM or leave {option} out.", result.Stderr, StringComparison.Ordinal);
+        Assert.Equal("", result.Stdout);
+    }
+
     [Fact]
     public async Task SimAbbLoad_ATaskThatCannotLoad_IsRefusedWithItsTaskModuleLineAndName()
     {
