@@ -10,6 +10,9 @@ internal static partial class SimCommand
     /// <summary>The port the ABB driver listens on by default, and so the default here.</summary>
     internal const int DefaultPort = 7000;
 
+    /// <summary>Every option of the command (a loaded run refuses those its twin does not read); before <see cref="Command"/>, which reads it.</summary>
+    private static readonly string[] AllOptions = ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home", "--task-type", "--cycle"];
+
     internal static readonly CliCommand Command = new(
         "sim",
         "Start a virtual robot controller to try any Machina host without a robot",
@@ -68,12 +71,25 @@ internal static partial class SimCommand
           machina sim abb --port 7000
           (in another terminal) machina run square.machina --brand abb --host 127.0.0.1 --port 7000
         """,
-        Options: ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home", "--task-type", "--cycle"],
+        Options: AllOptions,
         Flags: ["--quiet"],
         RunAsync);
 
     /// <summary>The options that only a program run with --load uses (refused without it, never ignored).</summary>
     private static readonly string[] LoadOnlyOptions = ["--signal", "--eio", "--task-type", "--cycle"];
+
+    /// <summary>Refuses an option that <paramref name="twin"/>'s loaded run would not read, and a second --load where it runs one program.</summary>
+    private static void RefuseWhatALoadedRunIgnores(CliArgs args, Twins.ITwinProgram twin)
+    {
+        if (!twin.LoadsSeveral && args.Values("--load").Count > 1)
+        {
+            throw new UsageException($"{twin.Brand.DisplayName} --load runs one program (a file or a folder); --load was given {args.Values("--load").Count} times.");
+        }
+        if (AllOptions.FirstOrDefault(o => o is not "--load" and not "--model" && args.Value(o) is not null && !twin.LoadOptions.Contains(o)) is { } ignored)
+        {
+            throw new UsageException($"{ignored} does nothing when {twin.Brand.DisplayName} runs a loaded program (--load); leave it out.");
+        }
+    }
 
     private static async Task<int> RunAsync(CliArgs args, CliContext context)
     {
@@ -100,9 +116,12 @@ internal static partial class SimCommand
         // Options are checked before --load takes over: a mistyped one is an error there too, never ignored.
         if (args.Value("--load") is not null)
         {
-            return TwinPrograms.Loading.FirstOrDefault(t => t.Brand.Type == brand) is { RunLoaded: { } runLoaded } twin
-                ? await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, bind, context).ConfigureAwait(false)
-                : throw new UsageException($"--load runs compiled programs on {LoadingNames()}, not on {Brands.Name(brand)}.");
+            if (TwinPrograms.Loading.FirstOrDefault(t => t.Brand.Type == brand) is not { RunLoaded: { } runLoaded } twin)
+            {
+                throw new UsageException($"--load runs compiled programs on {LoadingNames()}, not on {Brands.Name(brand)}.");
+            }
+            RefuseWhatALoadedRunIgnores(args, twin);
+            return await runLoaded(args, Brands.Model(args.Value("--model") ?? twin.Brand.DefaultModel, brand)!, bind, context).ConfigureAwait(false);
         }
         RobotModel? model = Brands.Model(args.Value("--model"), brand);
         bool quiet = args.Has("--quiet");

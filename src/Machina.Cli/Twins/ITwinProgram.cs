@@ -44,6 +44,15 @@ internal interface ITwinProgram
     /// command's <c>--bind</c>, as it parsed and checked it.
     /// </summary>
     Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; }
+
+    /// <summary>
+    /// The options of <c>machina sim BRAND --load</c> that <see cref="RunLoaded"/> reads besides <c>--load</c> and <c>--model</c>: any
+    /// other option given with --load is refused, never ignored.
+    /// </summary>
+    IReadOnlyList<string> LoadOptions { get; }
+
+    /// <summary>True when <c>--load</c> may be given more than once (one program per task).</summary>
+    bool LoadsSeveral { get; }
 }
 
 /// <summary>A verification's outcome: whether it passed, and its report with the steps named by the line <c>lineOf</c> gives.</summary>

@@ -16,6 +16,10 @@ internal sealed class RapidTwinProgram()
             Cycle = args.Value("--cycle"),
         });
 
+    public override IReadOnlyList<string> LoadOptions { get; } = ["--bind", "--rws-port", "--home", "--signal", "--eio", "--task-type", "--cycle"];
+
+    public override bool LoadsSeveral => true;
+
     public override bool IsProgram(string fullPath) => Directory.Exists(fullPath)
         || fullPath.EndsWith(".pgf", StringComparison.OrdinalIgnoreCase) || fullPath.EndsWith(".mod", StringComparison.OrdinalIgnoreCase);
 

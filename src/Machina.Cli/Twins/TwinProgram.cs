@@ -28,6 +28,10 @@ internal abstract class TwinProgram<TOptions, TController, TState>(BrandDefiniti
 
     public abstract Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; }
 
+    public virtual IReadOnlyList<string> LoadOptions => [];
+
+    public virtual bool LoadsSeveral => false;
+
     public abstract bool IsProgram(string fullPath);
 
     public abstract IReadOnlyList<string> ProgramFiles(string fullPath);

@@ -38,6 +38,24 @@ public class KrlVerifyCommandTests
         Assert.Equal("FAILED: bad.src, line 3: KRL has no operator MOD: its arithmetic operators are + - * / (INT division with / truncates)\n", bad.Stdout);
     }
 
+    [Theory]
+    [InlineData(new[] { "--signal", "DI_1=1" }, "--signal does nothing when KUKA runs a loaded program (--load); leave it out.")]
+    [InlineData(new[] { "--cycle", "forever" }, "--cycle does nothing when KUKA runs a loaded program (--load); leave it out.")]
+    [InlineData(new[] { "--rws-port", "0" }, "--rws-port does nothing when KUKA runs a loaded program (--load); leave it out.")]
+    [InlineData(new[] { "--port", "7000" }, "--port does nothing when KUKA runs a loaded program (--load); leave it out.")]
+    [InlineData(new[] { "--load", "k.src" }, "KUKA --load runs one program (a file or a folder); --load was given 2 times.")]
+    public async Task SimKukaLoad_AnOptionTheRunWouldIgnore_IsAUsageError(string[] extra, string message)
+    {
+        using var cli = new CliRunner();
+        cli.Write("k.src", "DEF k( )\nEND\n");
+
+        CliResult result = await cli.RunAsync(["sim", "kuka", "--load", "k.src", .. extra]);
+
+        Assert.Equal(2, result.Exit);
+        Assert.Contains(message, result.Stderr, StringComparison.Ordinal);
+        Assert.Equal("", result.Stdout);
+    }
+
     [Fact]
     public async Task SimKukaLoad_RunsACompiledProgramOnTheTwin_AndListsItsSteps_OrTheStop()
     {
