@@ -49,16 +49,26 @@ public sealed partial class Robot
         }
         finally
         {
-            foreach ((LogLevel level, string message, RobotAction? refused) in lines ?? [])
+            // Most issues log nothing: no empty list is made for them (`lines ?? []` made one per action).
+            if (lines is not null)
             {
-                if (refused is not null)
-                {
-                    Logger.Refused(refused, message);
-                }
-                else
-                {
-                    Logger.Write(level, message);
-                }
+                WriteLockedLog(lines);
+            }
+        }
+    }
+
+    /// <summary>Writes lines taken from under the issue lock, in order.</summary>
+    private void WriteLockedLog(List<(LogLevel Level, string Message, RobotAction? Refused)> lines)
+    {
+        foreach ((LogLevel level, string message, RobotAction? refused) in lines)
+        {
+            if (refused is not null)
+            {
+                Logger.Refused(refused, message);
+            }
+            else
+            {
+                Logger.Write(level, message);
             }
         }
     }
