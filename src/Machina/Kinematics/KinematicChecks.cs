@@ -59,7 +59,11 @@ public static class KinematicChecks
             issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {Shown(target, tool)} is out of reach of the {model}."));
             return issues;
         }
-        Joints? chosen = previous is Joints p ? kin.Closest(target, p) : FirstWithinLimits(kin, target);
+        // The raw solutions above are those Closest would solve again (same flange, same reference; every ISolver's Closest is
+        // KinematicsCore.Closest on its own model): the closest is picked from them; every check from known joints solved the target twice before.
+        Joints? chosen = previous is Joints p
+            ? p.IsFinite && ReferenceEquals(kin.Model, model) ? KinematicsCore.ClosestOf(model, raw[..n], p) : kin.Closest(target, p)
+            : FirstWithinLimits(kin, target);
         solution = chosen;
         if (chosen is null)
         {

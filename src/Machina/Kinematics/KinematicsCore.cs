@@ -94,9 +94,18 @@ internal static class KinematicsCore
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
         int n = solver.SolveRaw(Affine.FromPose(flange), current, raw, configs);
+        return ClosestOf(model, raw[..n], current);
+    }
+
+    /// <summary>
+    /// The solution of <see cref="Closest(ISolver, RobotModel, Pose, Joints)"/> from the raw solutions <c>SolveRaw</c> gave for the flange
+    /// with <paramref name="current"/> as its reference: a caller that has them already does not solve again.
+    /// </summary>
+    internal static Joints? ClosestOf(RobotModel model, ReadOnlySpan<Joints> raw, Joints current)
+    {
         Joints? best = null;
         double bestCost = double.PositiveInfinity;
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < raw.Length; i++)
         {
             if (!FitLimits(model, raw[i], current, out Joints fitted))
             {

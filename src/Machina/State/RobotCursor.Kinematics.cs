@@ -90,10 +90,13 @@ internal sealed partial class RobotCursor
             return solved.Issues;
         }
         Solves++;
-        IReadOnlyList<KinematicIssue> issues = SyncFromJoints(model);
+        IReadOnlyList<KinematicIssue> issues = Kept(SyncFromJoints(model));
         Volatile.Write(ref action.Solved, new SolvedPose(key, null, issues) { Tcp = new Pose(Position!.Value, Rotation!.Value) });
         return issues;
     }
+
+    /// <summary>The issues as a solution keeps them: most motions have none, and each waiting action kept an empty list of its own.</summary>
+    private static IReadOnlyList<KinematicIssue> Kept(IReadOnlyList<KinematicIssue> issues) => issues.Count == 0 ? NoIssues : issues;
 
     /// <summary>After AxesTo/Axes: the pose is the forward kinematics of the joints with the attached tool applied.</summary>
     private IReadOnlyList<KinematicIssue> SyncFromJoints(RobotModel model)
@@ -121,7 +124,7 @@ internal sealed partial class RobotCursor
             return solved.Issues;
         }
         Solves++;
-        IReadOnlyList<KinematicIssue> issues = SyncFromPose(model, action);
+        IReadOnlyList<KinematicIssue> issues = Kept(SyncFromPose(model, action));
         Volatile.Write(ref action.Solved, new SolvedPose(key, Axes, issues));
         return issues;
     }

@@ -1,34 +1,61 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>
 /// Everything a cursor's kinematics reads for one motion: the model, the joints before it, the TCP target (a Cartesian motion) or
-/// the target joints (a joint move, <paramref name="targetAxes"/>), the tool's tip, an arc's through point, the motion type and the
+/// the target joints (a joint move), the tool's tip, an arc's through point, the motion type and the
 /// speed. Two keys are equal only when every number has the same bits (0 and −0 differ, so do two NaNs of different payloads): equal
-/// keys give the same joints, pose and issues.
+/// keys give the same joints, pose and issues. Each waiting action of a stream keeps one, so it holds only what a line needs
+/// (144 bytes, 330 before): the tool by reference (a tool is immutable; its tip is compared), the rest of an arc or a joint move in a
+/// small object of its own.
 /// </summary>
-internal readonly struct PoseSolveKey(
-    RobotModel model, Joints? prevAxes, Vector position, Rotation rotation, Tool? tool, Vector? through, Rotation? throughRotation,
-    MotionType motionType, double speed, Joints? targetAxes = null) : IEquatable<PoseSolveKey>
+internal readonly struct PoseSolveKey : IEquatable<PoseSolveKey>
 {
-    private readonly Joints? _targetAxes = targetAxes;
-    private readonly RobotModel _model = model;
-    private readonly Joints? _prevAxes = prevAxes;
-    private readonly Vector _position = position;
-    private readonly Rotation _rotation = rotation;
-    private readonly bool _hasTool = tool is not null;
-    private readonly Vector _tip = tool?.TcpPosition ?? default;
-    private readonly Rotation _tipRotation = tool?.TcpOrientation ?? default;
-    private readonly Vector? _through = through;
-    private readonly Rotation? _throughRotation = throughRotation;
-    private readonly MotionType _motionType = motionType;
-    private readonly double _speed = speed;
+    private readonly RobotModel _model;
+    private readonly Tool? _tool;
+    private readonly Extra? _extra;
+    private readonly Vector _position;
+    private readonly Rotation _rotation;
+    private readonly Joints _prevAxes;
+    private readonly double _speed;
+    private readonly MotionType _motionType;
+    private readonly bool _hasPrevAxes;
+
+    /// <summary>An arc's through point and orientation, or a joint move's target joints: what a line's key has no room for.</summary>
+    private sealed class Extra(Vector? through, Rotation? throughRotation, Joints? targetAxes)
+    {
+        internal bool SameAs(Extra other) =>
+            Same(through, other.Through) && Same(throughRotation, other.ThroughRotation) && Same(targetAxes, other.TargetAxes);
+
+        private Vector? Through => through;
+
+        private Rotation? ThroughRotation => throughRotation;
+
+        private Joints? TargetAxes => targetAxes;
+    }
+
+    /// <summary>The key of one solve; <paramref name="tool"/>'s tip and orientation are what count of it, not its name.</summary>
+    internal PoseSolveKey(
+        RobotModel model, Joints? prevAxes, Vector position, Rotation rotation, Tool? tool, Vector? through, Rotation? throughRotation,
+        MotionType motionType, double speed, Joints? targetAxes = null)
+    {
+        _model = model;
+        _hasPrevAxes = prevAxes.HasValue;
+        _prevAxes = prevAxes.GetValueOrDefault();
+        _position = position;
+        _rotation = rotation;
+        _tool = tool;
+        _extra = through is null && throughRotation is null && targetAxes is null ? null : new Extra(through, throughRotation, targetAxes);
+        _motionType = motionType;
+        _speed = speed;
+    }
 
     /// <summary>True when both keys describe the same solve, number for number (bitwise).</summary>
     public bool Equals(PoseSolveKey other) =>
         ReferenceEquals(_model, other._model) && _motionType == other._motionType && Same(_speed, other._speed)
-        && Same(_prevAxes, other._prevAxes) && Same(_position, other._position) && Same(_rotation, other._rotation)
-        && _hasTool == other._hasTool && Same(_tip, other._tip) && Same(_tipRotation, other._tipRotation)
-        && Same(_through, other._through) && Same(_throughRotation, other._throughRotation) && Same(_targetAxes, other._targetAxes);
+        && _hasPrevAxes == other._hasPrevAxes && Same(_prevAxes, other._prevAxes) && Same(_position, other._position)
+        && Same(_rotation, other._rotation) && SameTip(_tool, other._tool) && SameExtra(_extra, other._extra);
 
     /// <inheritdoc/>
     public override bool Equals(object? obj) => obj is PoseSolveKey other && Equals(other);
@@ -41,6 +68,11 @@ internal readonly struct PoseSolveKey(
 
     /// <summary>Different keys.</summary>
     public static bool operator !=(PoseSolveKey a, PoseSolveKey b) => !a.Equals(b);
+
+    private static bool SameTip(Tool? a, Tool? b) =>
+        ReferenceEquals(a, b) || (a is not null && b is not null && Same(a.TcpPosition, b.TcpPosition) && Same(a.TcpOrientation, b.TcpOrientation));
+
+    private static bool SameExtra(Extra? a, Extra? b) => ReferenceEquals(a, b) || (a is not null && b is not null && a.SameAs(b));
 
     private static bool Same(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
 
@@ -64,6 +96,8 @@ internal readonly struct PoseSolveKey(
 /// </summary>
 internal sealed record SolvedPose(PoseSolveKey Key, Joints? Axes, IReadOnlyList<KinematicIssue> Issues)
 {
-    /// <summary>A joint move's TCP pose; default for a Cartesian motion.</summary>
-    internal Pose Tcp { get; init; }
+    private readonly StrongBox<Pose>? _tcp;
+
+    /// <summary>A joint move's TCP pose; default for a Cartesian motion (kept apart: a line's solution has no room for it).</summary>
+    internal Pose Tcp { get => _tcp?.Value ?? default; init => _tcp = new StrongBox<Pose>(value); }
 }
