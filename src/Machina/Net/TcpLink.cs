@@ -45,6 +45,9 @@ internal sealed class TcpLink : IAsyncDisposable
     /// <summary>How many times bytes were handed to the socket (direct sends and the send loop's writes), for tests.</summary>
     internal int SocketWrites => Volatile.Read(ref _socketWrites);
 
+    /// <summary>The connection itself (tests look at what watches it).</summary>
+    internal Socket Socket => _socket;
+
     /// <summary>"host:port" of the other end.</summary>
     internal string RemoteAddress { get; }
 
@@ -62,29 +65,21 @@ internal sealed class TcpLink : IAsyncDisposable
     /// <summary>Connects within <paramref name="timeout"/>; throws <see cref="MachinaException"/> when the host cannot be reached.</summary>
     internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
     {
-        var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true };
         using var deadline = new CancellationTokenSource(timeout, time);
         using var timer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken, deadline.Token);
         try
         {
-            await socket.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);
-            socket.Blocking = false; // Post never waits; the loops use asynchronous calls
+            // Non-blocking (Post never waits) and never registered with the runtime's socket engine (see SocketConnect).
+            Socket socket = await SocketConnect.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);
             return new TcpLink(socket, $"{host}:{port}");
         }
         catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
         {
-            socket.Dispose();
             throw new RobotConnectionException($"Could not connect to {host}:{port} within {Num.G(timeout.TotalSeconds)} s; is the driver running there?");
         }
         catch (SocketException ex)
         {
-            socket.Dispose();
             throw new RobotConnectionException($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
-        }
-        catch
-        {
-            socket.Dispose();
-            throw;
         }
     }
 
