@@ -63,18 +63,20 @@ internal sealed class UrSocket(Socket socket) : IDisposable
     /// <summary>Opens a TCP connection, waiting at most <paramref name="timeout"/>; null when it cannot connect.</summary>
     public static UrSocket? Connect(string address, int port, TimeSpan timeout, CancellationToken cancellation)
     {
-        var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true };
         try
         {
             using var cts = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
             cts.CancelAfter(timeout);
-            Twin.TwinWait.For(socket.ConnectAsync(address, port, cts.Token).AsTask(), cts.Token);
+            // Without the runtime's socket engine: a socket it watches wakes its thread and the thread pool at every arrival,
+            // while the program reads with poll (issue 45). Blocking again once connected: the program's writes wait, as on
+            // the controller.
+            Socket socket = SocketConnect.Connect(address, port, cts.Token);
+            socket.Blocking = true;
             return new UrSocket(socket);
         }
         catch (Exception e) when (e is SocketException or OperationCanceledException or ArgumentException)
         {
             // A program stopped while it connects stops (whatever the connect said); otherwise socket_open gives False.
-            socket.Dispose();
             cancellation.ThrowIfCancellationRequested();
             return null;
         }

@@ -1,5 +1,4 @@
 using System.Net.Sockets;
-using System.Threading.Channels;
 
 namespace Machina;
 
@@ -19,11 +18,6 @@ internal sealed class TcpLink : IAsyncDisposable
 
     private readonly Socket _socket;
     private readonly CancellationTokenSource _stop = new();
-    private readonly Channel<bool> _doorbell = Channel.CreateBounded<bool>(new BoundedChannelOptions(1)
-    {
-        FullMode = BoundedChannelFullMode.DropWrite,
-        SingleReader = true,
-    });
     private readonly object _outboxGate = new();
     private byte[] _outbox = new byte[4096];
     private int _outboxLength;
@@ -32,7 +26,7 @@ internal sealed class TcpLink : IAsyncDisposable
     private int _socketWrites;
     private byte[] _writing = new byte[4096];
     private Task _receiveLoop = Task.CompletedTask;
-    private Task _sendLoop = Task.CompletedTask;
+    private Task _sendLoop = Task.CompletedTask; // started (under the outbox lock) the first time the socket does not take all
     private ILinkReceiver? _receiver;
     private int _disposed;
 
@@ -45,6 +39,9 @@ internal sealed class TcpLink : IAsyncDisposable
     /// <summary>How many times bytes were handed to the socket (direct sends and the send loop's writes), for tests.</summary>
     internal int SocketWrites => Volatile.Read(ref _socketWrites);
 
+    /// <summary>The connection itself (tests look at what watches it).</summary>
+    internal Socket Socket => _socket;
+
     /// <summary>"host:port" of the other end.</summary>
     internal string RemoteAddress { get; }
 
@@ -55,47 +52,38 @@ internal sealed class TcpLink : IAsyncDisposable
     internal static TcpLink Adopt(Socket socket, string remoteAddress)
     {
         socket.NoDelay = true;
-        socket.Blocking = false; // Post never waits; the loops use asynchronous calls
+        socket.Blocking = false; // Post never waits; the loops wait in poll
         return new TcpLink(socket, remoteAddress);
     }
 
     /// <summary>Connects within <paramref name="timeout"/>; throws <see cref="MachinaException"/> when the host cannot be reached.</summary>
     internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
     {
-        var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true };
         using var deadline = new CancellationTokenSource(timeout, time);
         using var timer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken, deadline.Token);
         try
         {
-            await socket.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);
-            socket.Blocking = false; // Post never waits; the loops use asynchronous calls
+            // Non-blocking (Post never waits) and never registered with the runtime's socket engine (see SocketConnect).
+            Socket socket = await SocketConnect.ConnectAsync(host, port, timer.Token).ConfigureAwait(false);
             return new TcpLink(socket, $"{host}:{port}");
         }
         catch (OperationCanceledException) when (!cancellationToken.IsCancellationRequested)
         {
-            socket.Dispose();
             throw new RobotConnectionException($"Could not connect to {host}:{port} within {Num.G(timeout.TotalSeconds)} s; is the driver running there?");
         }
         catch (SocketException ex)
         {
-            socket.Dispose();
             throw new RobotConnectionException($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
-        }
-        catch
-        {
-            socket.Dispose();
-            throw;
         }
     }
 
-    /// <summary>Starts the receive and send loops.</summary>
+    /// <summary>Starts the receive loop (the send loop starts the first time the socket does not take all that is posted).</summary>
     internal void Start(ILinkReceiver receiver)
     {
         _receiver = receiver;
         var receiving = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         _receiveLoop = receiving.Task;
         new Thread(() => ReceiveLoop(receiving)) { IsBackground = true, Name = "Machina link" }.Start();
-        _sendLoop = Task.Run(SendLoopAsync);
     }
 
     /// <summary>
@@ -126,8 +114,8 @@ internal sealed class TcpLink : IAsyncDisposable
                 // Not all sent (buffer full or an error): the send loop writes the rest or meets and reports the failure.
             }
             Append(bytes);
+            RingSendLoop();
         }
-        _doorbell.Writer.TryWrite(true);
     }
 
     /// <summary>True when bytes may go straight into the socket (under the outbox lock): the send loop is not writing and the link is open.</summary>
@@ -186,48 +174,103 @@ internal sealed class TcpLink : IAsyncDisposable
                     return;
                 }
             }
+            RingSendLoop();
         }
-        _doorbell.Writer.TryWrite(true);
     }
 
-    private async Task SendLoopAsync()
+    /// <summary>
+    /// Wakes the send loop for what waits in the outbox (under the outbox lock), starting its thread the first time: most links
+    /// never need it, their socket takes every write at once.
+    /// </summary>
+    private void RingSendLoop()
+    {
+        if (_sendLoop == Task.CompletedTask)
+        {
+            if (Volatile.Read(ref _disposed) != 0)
+            {
+                return;
+            }
+            var sending = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+            _sendLoop = sending.Task;
+            new Thread(() => SendLoop(sending)) { IsBackground = true, Name = "Machina send" }.Start();
+        }
+        Monitor.Pulse(_outboxGate);
+    }
+
+    /// <summary>
+    /// The send loop, on a thread of its own: it sleeps on the outbox until bytes wait there, then writes them with non-blocking
+    /// sends, sleeping in <c>poll</c> while the socket's buffer is full. An asynchronous send would register the socket with the
+    /// runtime's socket engine for good (see <see cref="SocketConnect"/>), and every later acknowledgement would wake it.
+    /// </summary>
+    private void SendLoop(TaskCompletionSource done)
     {
         CancellationToken stop = _stop.Token;
         try
         {
-            while (await _doorbell.Reader.WaitToReadAsync(stop).ConfigureAwait(false))
+            while (true)
             {
-                _doorbell.Reader.TryRead(out _);
                 int length;
                 lock (_outboxGate)
                 {
+                    _loopWriting = false;
+                    while (_outboxLength == 0 && !stop.IsCancellationRequested)
+                    {
+                        Monitor.Wait(_outboxGate, PollMicroseconds / 1000);
+                    }
+                    if (stop.IsCancellationRequested)
+                    {
+                        return;
+                    }
                     (_outbox, _writing) = (_writing, _outbox);
                     length = _outboxLength;
                     _outboxLength = 0;
-                    _loopWriting = length > 0;
+                    _loopWriting = true;
                 }
-                if (length > 0)
+                Interlocked.Increment(ref _socketWrites);
+                if (!WriteAll(length, stop))
                 {
-                    Interlocked.Increment(ref _socketWrites);
-                    await _socket.SendAsync(_writing.AsMemory(0, length), SocketFlags.None, stop).ConfigureAwait(false);
-                    lock (_outboxGate)
-                    {
-                        _loopWriting = false;
-                    }
-                    if (_outboxLength > 0)
-                    {
-                        _doorbell.Writer.TryWrite(true);
-                    }
+                    return;
                 }
             }
         }
-        catch (OperationCanceledException) when (stop.IsCancellationRequested)
+        catch (Exception ex) when (ex is SocketException or ObjectDisposedException)
         {
+            if (!stop.IsCancellationRequested)
+            {
+                Closed(ex);
+            }
         }
-        catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)
+        finally
         {
-            Closed(ex);
+            done.TrySetResult();
         }
+    }
+
+    /// <summary>Writes the first <paramref name="length"/> bytes being written, waiting in <c>poll</c> while the socket takes none; false when the link closes first.</summary>
+    private bool WriteAll(int length, CancellationToken stop)
+    {
+        int offset = 0;
+        while (offset < length)
+        {
+            int sent = _socket.Send(_writing, offset, length - offset, SocketFlags.None, out SocketError error);
+            if (error == SocketError.WouldBlock)
+            {
+                while (!_socket.Poll(PollMicroseconds, SelectMode.SelectWrite))
+                {
+                    if (stop.IsCancellationRequested)
+                    {
+                        return false;
+                    }
+                }
+                continue;
+            }
+            if (error != SocketError.Success)
+            {
+                throw new SocketException((int)error);
+            }
+            offset += sent;
+        }
+        return true;
     }
 
     /// <summary>
@@ -325,11 +368,16 @@ internal sealed class TcpLink : IAsyncDisposable
             return;
         }
         await _stop.CancelAsync().ConfigureAwait(false);
-        _doorbell.Writer.TryComplete();
+        Task sendLoop;
+        lock (_outboxGate)
+        {
+            sendLoop = _sendLoop;
+            Monitor.Pulse(_outboxGate);
+        }
         CloseSocket();
         try
         {
-            await Task.WhenAll(_receiveLoop, _sendLoop).ConfigureAwait(false);
+            await Task.WhenAll(_receiveLoop, sendLoop).ConfigureAwait(false);
         }
         catch (Exception)
         {

@@ -1,6 +1,7 @@
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
+using Machina.Tests.Support;
 
 namespace Machina.Tests.Net;
 
@@ -53,6 +54,9 @@ public sealed class TcpLinkTests
         string received = await reading;
 
         Assert.Equal(string.Concat(posts) + "end\n", received);
+        // The send loop waited for room with poll: an asynchronous send would have left the socket registered with the
+        // runtime's socket engine, and every later acknowledgement would wake it.
+        Assert.False(OperatingSystem.IsLinux() && SocketEngine.Watches(pair.Link.Socket), "the link's socket is registered with the runtime's epoll");
     }
 
     [Fact]
@@ -68,6 +72,63 @@ public sealed class TcpLinkTests
         string received = await pair.ReadAsync("first\nsecond\nthird\n".Length);
 
         Assert.Equal("first\nsecond\nthird\n", received);
+    }
+
+    [Fact]
+    public async Task TheLinksSocket_IsNotWatchedByTheRuntimesSocketEngine()
+    {
+        if (!OperatingSystem.IsLinux())
+        {
+            return; // the kernel lists what an epoll instance watches in /proc on Linux only
+        }
+        var receiver = new PostingReceiver("ack\n");
+        await using var pair = await LinkPair.OpenAsync(receiver);
+        byte[] reply = new byte[4];
+        // Nothing has arrived yet, so this receive waits: the engine watches the server's socket from now on.
+        Task<int> replying = pair.Server.ReceiveAsync(reply, SocketFlags.None);
+        await pair.Server.SendAsync(Encoding.ASCII.GetBytes("go"));
+        Assert.Equal(4, await replying.WaitAsync(Bound));
+        Assert.Equal("ack\n", Encoding.ASCII.GetString(reply));
+
+        // Watched, every arrival (an acknowledgement) would wake the engine's thread and a thread-pool worker, although the
+        // link reads with poll on a thread of its own.
+        Assert.False(SocketEngine.Watches(pair.Link.Socket), "the link's socket is registered with the runtime's epoll");
+        Assert.True(SocketEngine.Watches(pair.Server), "the check sees a socket that was read asynchronously");
+    }
+
+    [Fact]
+    public async Task Connect_ToAPortNobodyListensOn_SaysTheConnectionWasRefused()
+    {
+        var listener = new TcpListener(IPAddress.Loopback, 0);
+        listener.Start();
+        int port = ((IPEndPoint)listener.LocalEndpoint).Port;
+        listener.Stop();
+
+        var e = await Assert.ThrowsAsync<RobotConnectionException>(
+            () => TcpLink.ConnectAsync("127.0.0.1", port, Bound, TimeProvider.System, CancellationToken.None));
+
+        Assert.Equal($"Could not connect to 127.0.0.1:{port}: Connection refused. Is the driver running there?", e.Message);
+    }
+
+    [Fact]
+    public async Task Connect_ByName_ReachesTheListener()
+    {
+        var listener = new TcpListener(IPAddress.Loopback, 0);
+        listener.Start();
+        try
+        {
+            int port = ((IPEndPoint)listener.LocalEndpoint).Port;
+            Task<Socket> accepting = listener.AcceptSocketAsync();
+            await using TcpLink link = await TcpLink.ConnectAsync("localhost", port, Bound, TimeProvider.System, CancellationToken.None);
+            using Socket server = await accepting.WaitAsync(Bound);
+
+            Assert.Equal($"localhost:{port}", link.RemoteAddress);
+            Assert.True(link.LocalAddress is { } local && IPAddress.IsLoopback(local.IsIPv4MappedToIPv6 ? local.MapToIPv4() : local));
+        }
+        finally
+        {
+            listener.Stop();
+        }
     }
 
     [Fact]

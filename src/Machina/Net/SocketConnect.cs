@@ -1,0 +1,130 @@
+using System.Net;
+using System.Net.Sockets;
+
+namespace Machina;
+
+/// <summary>
+/// Opens a TCP connection without the runtime's socket engine: a non-blocking <c>connect</c> and <c>poll</c> until it is
+/// done. A socket that ever had an asynchronous operation (<see cref="Socket.ConnectAsync(string, int, CancellationToken)"/>
+/// among them) stays registered with the engine's <c>epoll</c> for good, and then every arrival on it wakes the engine's
+/// thread and queues a thread-pool work item, even while nothing waits for it asynchronously: per streamed action that cost
+/// more processor time than the read itself (issue 45). The connections of the links and of the twins' programs are read
+/// with <c>poll</c> and non-blocking receives, so they never need the engine. The socket returned is non-blocking, with
+/// Nagle's algorithm off.
+/// </summary>
+internal static class SocketConnect
+{
+    /// <summary>How long one <c>poll</c> waits before it looks at the cancellation again, µs.</summary>
+    private const int SliceMicroseconds = 20_000;
+
+    /// <summary>
+    /// Connects to <paramref name="host"/> (a name is resolved; its addresses are tried in turn) without blocking the caller:
+    /// a connection that is not made at once is waited for on a thread of its own. Throws the last address's
+    /// <see cref="SocketException"/> when none accepts, <see cref="OperationCanceledException"/> when cancelled first.
+    /// </summary>
+    internal static async Task<Socket> ConnectAsync(string host, int port, CancellationToken cancellationToken)
+    {
+        IPAddress[] addresses = IPAddress.TryParse(host, out IPAddress? address)
+            ? [address]
+            : await Dns.GetHostAddressesAsync(host, cancellationToken).ConfigureAwait(false);
+        SocketException? refused = null;
+        foreach (IPAddress a in addresses)
+        {
+            Socket? socket = null;
+            try
+            {
+                Socket started = socket = Start(a, port);
+                if (!started.Poll(0, SelectMode.SelectWrite))
+                {
+                    await Task.Factory.StartNew(() => WaitWritable(started, cancellationToken), cancellationToken,
+                        TaskCreationOptions.LongRunning, TaskScheduler.Default).ConfigureAwait(false);
+                }
+                Finish(started);
+                return started;
+            }
+            catch (SocketException e)
+            {
+                socket?.Dispose();
+                refused = e;
+            }
+            catch
+            {
+                socket?.Dispose();
+                throw;
+            }
+        }
+        throw refused ?? new SocketException((int)SocketError.HostNotFound);
+    }
+
+    /// <summary>
+    /// Connects to <paramref name="host"/> on the caller's thread (a twin's program, which waits for its <c>socket_open</c>):
+    /// as <see cref="ConnectAsync"/>, blocking.
+    /// </summary>
+    internal static Socket Connect(string host, int port, CancellationToken cancellationToken)
+    {
+        IPAddress[] addresses = IPAddress.TryParse(host, out IPAddress? address) ? [address] : Dns.GetHostAddresses(host);
+        SocketException? refused = null;
+        foreach (IPAddress a in addresses)
+        {
+            Socket? socket = null;
+            try
+            {
+                Socket started = socket = Start(a, port);
+                WaitWritable(started, cancellationToken);
+                Finish(started);
+                return started;
+            }
+            catch (SocketException e)
+            {
+                socket?.Dispose();
+                refused = e;
+            }
+            catch
+            {
+                socket?.Dispose();
+                throw;
+            }
+        }
+        throw refused ?? new SocketException((int)SocketError.HostNotFound);
+    }
+
+    /// <summary>A new non-blocking socket (dual-mode where the system has IPv6) whose connection to the address is under way.</summary>
+    private static Socket Start(IPAddress address, int port)
+    {
+        var socket = new Socket(SocketType.Stream, ProtocolType.Tcp) { NoDelay = true, Blocking = false };
+        try
+        {
+            socket.Connect(address, port);
+        }
+        catch (SocketException e) when (e.SocketErrorCode is SocketError.WouldBlock or SocketError.InProgress or SocketError.AlreadyInProgress)
+        {
+            // Under way: writable once it is made or failed.
+        }
+        catch
+        {
+            socket.Dispose();
+            throw;
+        }
+        return socket;
+    }
+
+    /// <summary>Sleeps in <c>poll</c> until the connection is made or failed; throws when cancelled first.</summary>
+    private static void WaitWritable(Socket socket, CancellationToken cancellationToken)
+    {
+        while (!socket.Poll(SliceMicroseconds, SelectMode.SelectWrite))
+        {
+            cancellationToken.ThrowIfCancellationRequested();
+        }
+        cancellationToken.ThrowIfCancellationRequested();
+    }
+
+    /// <summary>Throws the connection's error, if it failed (a refused or unreachable peer).</summary>
+    private static void Finish(Socket socket)
+    {
+        var error = (SocketError)(int)socket.GetSocketOption(SocketOptionLevel.Socket, SocketOptionName.Error)!;
+        if (error != SocketError.Success || !socket.Connected)
+        {
+            throw new SocketException((int)(error == SocketError.Success ? SocketError.NotConnected : error));
+        }
+    }
+}
