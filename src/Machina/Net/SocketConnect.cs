@@ -34,7 +34,7 @@ internal static class SocketConnect
             try
             {
                 Socket started = socket = Start(a, port);
-                if (!started.Poll(0, SelectMode.SelectWrite))
+                if (!Done(started, 0))
                 {
                     await Task.Factory.StartNew(() => WaitWritable(started, cancellationToken), cancellationToken,
                         TaskCreationOptions.LongRunning, TaskScheduler.Default).ConfigureAwait(false);
@@ -108,15 +108,22 @@ internal static class SocketConnect
         return socket;
     }
 
-    /// <summary>Sleeps in <c>poll</c> until the connection is made or failed; throws when cancelled first.</summary>
+    /// <summary>
+    /// Sleeps in <c>poll</c> until the connection is made or failed; throws when cancelled first. A failed connection makes the
+    /// socket writable on Linux and macOS but only sets its error condition on Windows, so both are looked at.
+    /// </summary>
     private static void WaitWritable(Socket socket, CancellationToken cancellationToken)
     {
-        while (!socket.Poll(SliceMicroseconds, SelectMode.SelectWrite))
+        while (!Done(socket, SliceMicroseconds))
         {
             cancellationToken.ThrowIfCancellationRequested();
         }
         cancellationToken.ThrowIfCancellationRequested();
     }
+
+    /// <summary>True when the connection under way is made or failed, waiting up to <paramref name="microseconds"/> for it.</summary>
+    private static bool Done(Socket socket, int microseconds) =>
+        socket.Poll(microseconds, SelectMode.SelectWrite) || socket.Poll(0, SelectMode.SelectError);
 
     /// <summary>Throws the connection's error, if it failed (a refused or unreachable peer).</summary>
     private static void Finish(Socket socket)
