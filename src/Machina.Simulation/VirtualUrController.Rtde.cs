@@ -191,8 +191,10 @@ public sealed partial class VirtualUrController
     /// </summary>
     private void SendRtde(CancellationToken token)
     {
-        bool woken = false;
+        _rtdeWait.OnWaitingThread();
+        bool woken = false, collected = false;
         var snapshot = new RtdeSnapshot(this);
+        using VirtualUrRtdeTiming? timing = VirtualUrRtdeTiming.FromEnvironment(Clock.TimestampFrequency, _rtdeWait.Precise);
         try
         {
             while (!token.IsCancellationRequested)
@@ -208,6 +210,7 @@ public sealed partial class VirtualUrController
                     {
                         if (due)
                         {
+                            timing?.Record(now - s.NextDue(now), collected);
                             s.Sent(now);
                         }
                         if (s.TrySend(DataPackage(s, snapshot), token))
@@ -222,7 +225,16 @@ public sealed partial class VirtualUrController
                     }
                     next = Math.Min(next, s.NextDue(now));
                 }
+                TimeSpan pause = timing is null ? default : VirtualUrRtdeTiming.PauseNow;
                 woken = _rtdeWait.WaitUntil(next, token);
+                if (timing is not null)
+                {
+                    collected = VirtualUrRtdeTiming.PauseNow != pause;
+                    if (woken)
+                    {
+                        timing.Woken();
+                    }
+                }
             }
         }
         catch (OperationCanceledException)

@@ -6,6 +6,37 @@ internal sealed class UrBinary(int line, string op, UrExpr left, UrExpr right) :
     /// <summary>The operator symbol.</summary>
     public string Op { get; } = op;
 
+    /// <summary>The operator, looked up once (a switch on the symbol compares strings at every evaluation).</summary>
+    private readonly Operator _op = op switch
+    {
+        "==" => Operator.Equal,
+        "!=" => Operator.NotEqual,
+        "+" => Operator.Add,
+        "-" => Operator.Subtract,
+        "*" => Operator.Multiply,
+        "/" => Operator.Divide,
+        "%" => Operator.Remainder,
+        "<" => Operator.Less,
+        ">" => Operator.Greater,
+        "<=" => Operator.LessOrEqual,
+        _ => Operator.GreaterOrEqual,
+    };
+
+    private enum Operator
+    {
+        Equal,
+        NotEqual,
+        Add,
+        Subtract,
+        Multiply,
+        Divide,
+        Remainder,
+        Less,
+        Greater,
+        LessOrEqual,
+        GreaterOrEqual,
+    }
+
     /// <summary>The left operand.</summary>
     public UrExpr Left { get; } = left;
 
@@ -15,32 +46,53 @@ internal sealed class UrBinary(int line, string op, UrExpr left, UrExpr right) :
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
-        UrStack.Check(Line);
+        UrStack.Check(frame, Line);
         object a = Left.Eval(frame);
         object b = Right.Eval(frame);
-        switch (Op)
+        return Combine(a, b);
+    }
+
+    /// <inheritdoc/>
+    public override double EvalNumber(UrFrame frame, int line, string what)
+    {
+        UrStack.Check(frame, Line);
+        object a = Left.Eval(frame);
+        object b = Right.Eval(frame);
+        // Float arithmetic without boxing its result (a pose literal's elements): what Combine gives, as a double.
+        if (_op is Operator.Add or Operator.Subtract or Operator.Multiply or Operator.Divide or Operator.Remainder
+            && UrValue.IsNumber(a) && UrValue.IsNumber(b) && !(a is int && b is int))
         {
-            case "==":
+            return Arithmetic(UrValue.Number(a, Line, "an operand"), UrValue.Number(b, Line, "an operand"));
+        }
+        return UrValue.Number(Combine(a, b), line, what);
+    }
+
+    /// <summary>The operator applied to the operands' values.</summary>
+    private object Combine(object a, object b)
+    {
+        switch (_op)
+        {
+            case Operator.Equal:
                 return UrValue.Box(UrValue.AreEqual(a, b));
-            case "!=":
+            case Operator.NotEqual:
                 return UrValue.Box(!UrValue.AreEqual(a, b));
         }
         if (a is int x && b is int y)
         {
-            return Op switch
+            return _op switch
             {
-                "+" => unchecked(x + y),
-                "-" => unchecked(x - y),
-                "*" => unchecked(x * y),
-                "/" => y == 0 ? throw DivisionByZero() : (double)x / y,
-                "%" => y == 0 ? throw DivisionByZero() : y == -1 ? 0 : x % y, // -2147483648 % -1 would throw in .NET
-                "<" => UrValue.Box(x < y),
-                ">" => UrValue.Box(x > y),
-                "<=" => UrValue.Box(x <= y),
+                Operator.Add => unchecked(x + y),
+                Operator.Subtract => unchecked(x - y),
+                Operator.Multiply => unchecked(x * y),
+                Operator.Divide => y == 0 ? throw DivisionByZero() : (double)x / y,
+                Operator.Remainder => y == 0 ? throw DivisionByZero() : y == -1 ? 0 : x % y, // -2147483648 % -1 would throw in .NET
+                Operator.Less => UrValue.Box(x < y),
+                Operator.Greater => UrValue.Box(x > y),
+                Operator.LessOrEqual => UrValue.Box(x <= y),
                 _ => UrValue.Box(x >= y),
             };
         }
-        if ((a is UrList || b is UrList) && Op is "+" or "-" or "*" or "/" or "%")
+        if ((a is UrList || b is UrList) && _op is Operator.Add or Operator.Subtract or Operator.Multiply or Operator.Divide or Operator.Remainder)
         {
             return ElementWise(a, b);
         }
@@ -49,23 +101,23 @@ internal sealed class UrBinary(int line, string op, UrExpr left, UrExpr right) :
             throw new UrRuntimeException(Line, $"'{Op}' cannot be applied to {UrValue.TypeName(a)} and {UrValue.TypeName(b)}");
         }
         double p = UrValue.Number(a, Line, "an operand"), q = UrValue.Number(b, Line, "an operand");
-        return Op switch
+        return _op switch
         {
-            "<" => UrValue.Box(p < q),
-            ">" => UrValue.Box(p > q),
-            "<=" => UrValue.Box(p <= q),
-            ">=" => UrValue.Box(p >= q),
+            Operator.Less => UrValue.Box(p < q),
+            Operator.Greater => UrValue.Box(p > q),
+            Operator.LessOrEqual => UrValue.Box(p <= q),
+            Operator.GreaterOrEqual => UrValue.Box(p >= q),
             _ => Arithmetic(p, q),
         };
     }
 
     /// <summary><c>+ - * / %</c> on two floats.</summary>
-    private double Arithmetic(double p, double q) => Op switch
+    private double Arithmetic(double p, double q) => _op switch
     {
-        "+" => p + q,
-        "-" => p - q,
-        "*" => p * q,
-        "/" => q == 0 ? throw DivisionByZero() : p / q,
+        Operator.Add => p + q,
+        Operator.Subtract => p - q,
+        Operator.Multiply => p * q,
+        Operator.Divide => q == 0 ? throw DivisionByZero() : p / q,
         _ => q == 0 ? throw DivisionByZero() : p % q,
     };
 
@@ -101,9 +153,9 @@ internal sealed class UrBinary(int line, string op, UrExpr left, UrExpr right) :
         {
             throw new UrRuntimeException(Line, $"'{Op}' cannot be applied to {UrValue.TypeName(x)} and {UrValue.TypeName(y)} in an array");
         }
-        if (x is int i && y is int j && Op is "+" or "-" or "*")
+        if (x is int i && y is int j && _op is Operator.Add or Operator.Subtract or Operator.Multiply)
         {
-            return Op switch { "+" => unchecked(i + j), "-" => unchecked(i - j), _ => unchecked(i * j) };
+            return _op switch { Operator.Add => unchecked(i + j), Operator.Subtract => unchecked(i - j), _ => unchecked(i * j) };
         }
         return Arithmetic(UrValue.Number(x, Line, "an operand"), UrValue.Number(y, Line, "an operand"));
     }

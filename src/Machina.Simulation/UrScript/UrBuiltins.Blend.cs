@@ -19,11 +19,10 @@ internal static partial class UrBuiltins
         CancellationToken token = m.Cancellation;
         try
         {
-            m.Unlocked(() =>
+            using (m.Unlock())
             {
                 m.Controller.FinishBlend(taken, token);
-                return 0;
-            });
+            }
         }
         catch (TwinMotionException e)
         {
@@ -106,7 +105,10 @@ internal static partial class UrBuiltins
         bool planned;
         try
         {
-            planned = m.Unlocked(() => m.Controller.Move(end, seconds, time > 0 ? 0 : v / acc, time > 0 ? null : Done, Along, line, function, token, last, true));
+            using (m.Unlock())
+            {
+                planned = m.Controller.Move(end, seconds, time > 0 ? 0 : v / acc, time > 0 ? null : Done, Along, line, function, token, last, true);
+            }
         }
         catch (TwinMotionException e)
         {

@@ -75,11 +75,10 @@ internal static partial class UrBuiltins
         CancellationToken token = m.Cancellation;
         try
         {
-            m.Unlocked(() =>
+            using (m.Unlock())
             {
                 m.Controller.Move(target, seconds, rampSeconds, path, line, function, token);
-                return 0;
-            });
+            }
         }
         catch (TwinMotionException e)
         {
@@ -95,7 +94,7 @@ internal static partial class UrBuiltins
         Joints to = a[0] is UrPose pose
             ? Solve(m, line, function, UrGeometry.ToPose(pose.Values, line), from)
             : UrGeometry.ToJoints(Six(a, 0, line, function, "q"), line);
-        double distance = (to - from).ToArray().Max(Math.Abs) * Math.PI / 180;
+        double distance = UrGeometry.LargestChange(from, to) * Math.PI / 180;
         Move(m, line, to, time > 0 ? time : TwinMotion.TrapezoidSeconds(distance, v, acc), function, time > 0 ? 0 : v / acc);
         return UrNone.Value;
     }
@@ -124,7 +123,7 @@ internal static partial class UrBuiltins
                 throw new UrRuntimeException(line, FormattableString.Invariant(
                     $"{function}: the straight path leaves the workspace {100.0 * (k - 1) / steps:0}% of the way ({e.Message})"));
             }
-            double jump = (next - joints).ToArray().Max(Math.Abs);
+            double jump = UrGeometry.LargestChange(joints, next);
             if (jump > MaxJointStepDegrees)
             {
                 throw new UrRuntimeException(line, FormattableString.Invariant(

@@ -24,17 +24,24 @@ internal sealed class UrCall(int line, string name, List<UrExpr> positional, Lis
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
-        UrStack.Check(Line);
+        UrStack.Check(frame, Line);
+        if (Builtin is null)
+        {
+            // A function of the program: the arguments go straight into its frame's first locals (its parameters).
+            UrFunction function = Function!;
+            var locals = new object?[Math.Max(function.LocalCount, Arguments.Length)];
+            for (int i = 0; i < Arguments.Length; i++)
+            {
+                locals[i] = Arguments[i].Eval(frame);
+            }
+            return function.InvokeWithLocals(frame.Machine, Line, locals, frame.Depth + 1);
+        }
         var values = new object[Arguments.Length];
         for (int i = 0; i < values.Length; i++)
         {
             values[i] = Arguments[i].Eval(frame);
         }
-        if (Builtin is not null)
-        {
-            return Builtin.Invoke(frame.Machine, Line, values);
-        }
-        return Function!.Invoke(frame.Machine, Line, values, frame.Depth + 1);
+        return Builtin.Invoke(frame.Machine, Line, values);
     }
 }
 

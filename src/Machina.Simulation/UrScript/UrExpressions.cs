@@ -8,6 +8,12 @@ internal abstract class UrExpr(int line)
 
     /// <summary>The value of the expression in <paramref name="frame"/>.</summary>
     public abstract object Eval(UrFrame frame);
+
+    /// <summary>
+    /// The value as a number (<see cref="UrValue.Number"/> of <see cref="Eval"/>, with its error naming <paramref name="what"/> at
+    /// <paramref name="line"/>); arithmetic gives it without boxing.
+    /// </summary>
+    public virtual double EvalNumber(UrFrame frame, int line, string what) => UrValue.Number(Eval(frame), line, what);
 }
 
 /// <summary>A literal number, bool or string.</summary>
@@ -50,7 +56,7 @@ internal sealed class UrPoseExpr(int line, UrExpr[] items) : UrExpr(line)
         var values = new double[6];
         for (int i = 0; i < 6; i++)
         {
-            values[i] = UrValue.Number(Items[i].Eval(frame), Line, "a pose element");
+            values[i] = Items[i].EvalNumber(frame, Line, "a pose element");
         }
         return new UrPose(values);
     }
@@ -99,7 +105,7 @@ internal sealed class UrIndex(int line, UrExpr target, UrExpr index) : UrExpr(li
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
-        UrStack.Check(Line);
+        UrStack.Check(frame, Line);
         object target = Target.Eval(frame);
         int i = UrValue.Int(Index.Eval(frame), Line, "an index");
         return target switch
@@ -139,7 +145,7 @@ internal sealed class UrUnary(int line, string op, UrExpr operand) : UrExpr(line
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
-        UrStack.Check(Line);
+        UrStack.Check(frame, Line);
         object value = Operand.Eval(frame);
         if (op == "not")
         {
@@ -173,7 +179,7 @@ internal sealed class UrLogical(int line, bool isAnd, UrExpr left, UrExpr right)
     /// <inheritdoc/>
     public override object Eval(UrFrame frame)
     {
-        UrStack.Check(Line);
+        UrStack.Check(frame, Line);
         bool l = UrValue.Bool(Left.Eval(frame), Line, isAnd ? "the operand of 'and'" : "the operand of 'or'");
         if (isAnd ? !l : l)
         {

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.UrScript;
@@ -32,14 +33,21 @@ internal sealed class UrFunction(int line, string name, string[] parameters, UrE
     /// <summary>Runs the function with one value per parameter and gives what it returns.</summary>
     public object Invoke(UrMachine machine, int line, object[] args, int depth)
     {
+        var locals = new object?[Math.Max(LocalCount, args.Length)];
+        Array.Copy(args, locals, args.Length);
+        return InvokeWithLocals(machine, line, locals, depth);
+    }
+
+    /// <summary>Runs the function in a frame of <paramref name="locals"/> (its parameters' values first, then empty slots) and gives what it returns.</summary>
+    public object InvokeWithLocals(UrMachine machine, int line, object?[] locals, int depth)
+    {
         int most = machine.Limits.MaxCallDepth;
         if (depth > most)
         {
             throw new UrRuntimeException(line, $"too many nested calls (more than {most}) in '{Name}'");
         }
         UrStack.Check(line);
-        var frame = new UrFrame(machine, new object?[LocalCount], depth);
-        Array.Copy(args, frame.Locals, args.Length);
+        var frame = new UrFrame(machine, locals, depth);
         UrStmt.Run(Body, frame);
         return frame.ReturnValue ?? UrNone.Value;
     }
@@ -59,6 +67,13 @@ internal sealed class UrFrame(UrMachine machine, object?[] locals, int depth)
 
     /// <summary>The value of the <c>return</c> that ended the call.</summary>
     public object? ReturnValue { get; set; }
+
+    /// <summary>Expressions evaluated in this frame, counted for <see cref="UrStack.Check(UrFrame, int)"/>.</summary>
+    private int _evaluations;
+
+    /// <summary>Counts an expression; true at every <see cref="TwinLimits.StackCheckEvery"/>th.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool TimeToCheckStack() => (++_evaluations & (TwinLimits.StackCheckEvery - 1)) == 0;
 }
 
 /// <summary>The guard of the interpreter's own stack: a program nested past it stops with an error, never the process.</summary>
@@ -69,7 +84,23 @@ internal static class UrStack
     {
         if (TwinLimits.StackLow)
         {
-            throw new UrRuntimeException(line, "stack overflow: the calls and expressions are nested too deeply");
+            throw Overflow(line);
         }
     }
+
+    /// <summary>
+    /// <see cref="Check(int)"/> at every <see cref="TwinLimits.StackCheckEvery"/>th expression of <paramref name="frame"/> (each
+    /// call checks as its frame starts): the runtime's question is a thread-local lookup, dear at every expression, and a few
+    /// levels between two questions use little of the stack it keeps free.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Check(UrFrame frame, int line)
+    {
+        if (frame.TimeToCheckStack())
+        {
+            Check(line);
+        }
+    }
+
+    private static UrRuntimeException Overflow(int line) => new(line, "stack overflow: the calls and expressions are nested too deeply");
 }

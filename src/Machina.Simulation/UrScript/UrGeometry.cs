@@ -5,6 +5,24 @@ internal static class UrGeometry
 {
     private const double Degrees = 180.0 / Math.PI;
 
+    /// <summary>
+    /// The largest joint change (degrees, its size) from <paramref name="from"/> to <paramref name="to"/>, without an array: as
+    /// <c>(to - from).ToArray().Max(Math.Abs)</c> gives it (a NaN counts only when every change is one).
+    /// </summary>
+    public static double LargestChange(Joints from, Joints to)
+    {
+        Joints d = to - from;
+        double most = Math.Abs(d.J1);
+        foreach (double change in (ReadOnlySpan<double>)[Math.Abs(d.J2), Math.Abs(d.J3), Math.Abs(d.J4), Math.Abs(d.J5), Math.Abs(d.J6)])
+        {
+            if (change > most || double.IsNaN(most))
+            {
+                most = change;
+            }
+        }
+        return most;
+    }
+
     /// <summary>A URScript pose <c>p[x, y, z, rx, ry, rz]</c> (m, rad) as a library pose (mm).</summary>
     public static Pose ToPose(double[] six, int line)
     {

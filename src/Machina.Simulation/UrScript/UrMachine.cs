@@ -146,6 +146,23 @@ internal sealed class UrMachine : IDisposable
         }
     }
 
+    /// <summary>
+    /// As <see cref="Unlocked{T}(Func{T})"/> without a delegate: the other threads may run until the scope is disposed
+    /// (<c>using (m.Unlock()) { … }</c>), which takes the machine's lock back, also when the call throws.
+    /// </summary>
+    public UnlockedScope Unlock()
+    {
+        Monitor.Exit(_gil);
+        return new UnlockedScope(_gil);
+    }
+
+    /// <summary>The scope of <see cref="Unlock"/>: its disposal takes the machine's lock back.</summary>
+    public readonly struct UnlockedScope(object gil) : IDisposable
+    {
+        /// <summary>Takes the machine's lock back.</summary>
+        public void Dispose() => Monitor.Enter(gil);
+    }
+
     /// <summary>Starts <paramref name="thread"/> and gives its handle.</summary>
     public UrThreadHandle StartThread(UrFunction thread, int line)
     {

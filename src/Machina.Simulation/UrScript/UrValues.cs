@@ -32,6 +32,9 @@ internal static class UrValue
     /// <summary>A boxed boolean without allocation.</summary>
     public static object Box(bool value) => value ? TrueBox : FalseBox;
 
+    /// <summary>An int or a float as a double.</summary>
+    private static double AsDouble(object number) => number is int i ? i : (double)number;
+
     /// <summary>The name of a value's type, as in a URScript error message.</summary>
     public static string TypeName(object? value) => value switch
     {
@@ -146,9 +149,13 @@ internal static class UrValue
     /// <summary>URScript equality: numbers by value (2 == 2.0), strings and bools exactly, poses and lists element by element.</summary>
     public static bool AreEqual(object? a, object? b)
     {
+        if (a is int i && b is int j)
+        {
+            return i == j; // as doubles: every int is one exactly
+        }
         if (IsNumber(a) && IsNumber(b))
         {
-            return Convert.ToDouble(a, CultureInfo.InvariantCulture) == Convert.ToDouble(b, CultureInfo.InvariantCulture);
+            return AsDouble(a!) == AsDouble(b!);
         }
         return (a, b) switch
         {

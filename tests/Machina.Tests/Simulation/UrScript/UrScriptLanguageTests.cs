@@ -32,9 +32,14 @@ public class UrScriptLanguageTests
               textmsg("g=", 0.1 + 0.2 == 0.3 or 1 != 2)
               textmsg("h=", floor(2.7) + ceil(2.1))
               textmsg("i=", str_cat("x", to_str(p[0.1, 0, 0, 0, 0, 0])))
+              v = [2, 3]
+              textmsg("j=", p[1 / 4, v[0] * 0.75, 7 % 2.5, v[1] - 0.5, 1 + 1, -v[0] / 1000.0])
+              textmsg("k=", [1, 2] == [1, 2.0])
+              textmsg("l=", 2.0 == 2 and 3 != 4 and not (3 == 4))
             end
             """);
-        Assert.Equal(["a=7", "b=9", "c=1", "d=3.5", "e=-2147483648", "f=False", "g=True", "h=5", "i=xp[0.1, 0, 0, 0, 0, 0]"], lines);
+        Assert.Equal(["a=7", "b=9", "c=1", "d=3.5", "e=-2147483648", "f=False", "g=True", "h=5", "i=xp[0.1, 0, 0, 0, 0, 0]",
+            "j=p[0.25, 1.5, 2, 2.5, 2, -0.002]", "k=True", "l=True"], lines);
     }
 
     [Fact]
@@ -148,6 +153,9 @@ public class UrScriptLanguageTests
     [InlineData("  movel(p[3, 0, 0.4, 0, 3.141593, 0])", "Runtime error: line 2: movel: no inverse kinematics solution: the target pose is out of reach")]
     [InlineData("  movej([7, 0, 0, 0, 0, 0])", "Runtime error: line 2: movej: joint 1 target 401.07 deg is beyond its limits [-360, 360] deg")]
     [InlineData("  textmsg(\"a\" + 1)", "Runtime error: line 2: '+' cannot be applied to string and int")]
+    [InlineData("  x = p[[1, 2] * 2, 0, 0, 0, 0, 0]", "Runtime error: line 2: a pose element must be a number, not array")]
+    [InlineData("  x = p[0, 1.5 / 0, 0, 0, 0, 0]", "Runtime error: line 2: division by zero")]
+    [InlineData("  x = p[0, 0, 1 < 2.5, 0, 0, 0]", "Runtime error: line 2: a pose element must be a number, not bool")]
     public void Runtime_Error_StopsTheProgramWithTheMessage(string body, string expected)
     {
         using UrTwinController twin = RunProgram($"def prog():\n{body}\n  textmsg(\"after\")\nend", out UrProgramState state);
