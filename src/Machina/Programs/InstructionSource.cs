@@ -68,10 +68,6 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     internal bool MayContain(IReadOnlyList<string> words)
     {
         int longest = words.Max(w => w.Length);
-#if NET9_0_OR_GREATER
-        // All the words in one vectorised pass over each block, instead of one pass per word.
-        System.Buffers.SearchValues<string> any = System.Buffers.SearchValues.Create(words.ToArray(), StringComparison.Ordinal);
-#endif
         char[] buffer = new char[(1 << 16) + longest];
         int kept = 0;
         using TextReader reader = open();
@@ -80,12 +76,6 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
         {
             cancellationToken.ThrowIfCancellationRequested();
             ReadOnlySpan<char> text = buffer.AsSpan(0, kept + read);
-#if NET9_0_OR_GREATER
-            if (text.IndexOfAny(any) >= 0)
-            {
-                return true;
-            }
-#else
             foreach (string word in words)
             {
                 if (text.IndexOf(word, StringComparison.Ordinal) >= 0)
@@ -93,7 +83,6 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                     return true;
                 }
             }
-#endif
             // Keeps the end of this block so that a word cut between two blocks is still found.
             kept = Math.Min(longest - 1, text.Length);
             text[^kept..].CopyTo(buffer);
