@@ -12,6 +12,12 @@ internal abstract class LineSink
     /// <summary>Adds characters as one line, without making a string of them where the sink can (hot compiler paths).</summary>
     internal virtual void Add(ReadOnlySpan<char> line) => Add(new string(line));
 
+    /// <summary>True when <see cref="StartOver"/> can drop the lines added so far.</summary>
+    internal virtual bool CanStartOver => false;
+
+    /// <summary>Drops every line added so far, so that the file is written again from its start (only when <see cref="CanStartOver"/>).</summary>
+    internal virtual void StartOver() => throw new NotSupportedException("This sink cannot drop the lines it was given.");
+
     /// <summary>Adds several lines.</summary>
     internal void AddRange(IEnumerable<string> lines)
     {
@@ -42,6 +48,21 @@ internal sealed class WriterLineSink(TextWriter writer, string newLine) : LineSi
 
     /// <summary>What ends each line.</summary>
     internal string NewLine => newLine;
+
+    /// <summary>A file without a byte-order mark, which can be emptied and written again.</summary>
+    internal override bool CanStartOver => writer is StreamWriter { BaseStream.CanSeek: true } stream && stream.Encoding.GetPreamble().Length == 0;
+
+    internal override void StartOver()
+    {
+        if (!CanStartOver)
+        {
+            base.StartOver();
+        }
+        var stream = (StreamWriter)writer;
+        stream.Flush();
+        stream.BaseStream.SetLength(0);
+        stream.BaseStream.Position = 0;
+    }
 
     internal override void Add(string line)
     {

@@ -115,32 +115,32 @@ internal sealed class GCodeWriter
                 EmitSequence(action, init.Initialize, c);
                 break;
             case ActionMotionMode { MotionType: MotionType.Joint }:
-                _notes.NotApplicable(action, "a 3D printer always moves in straight lines; joint motion does not apply.");
+                NotApplicable(action, "a 3D printer always moves in straight lines; joint motion does not apply.");
                 break;
             case ActionPushPop or ActionMotionMode or ActionCoordinates or ActionExtrusion or ActionExtrusionRate or ActionDefineTool or ActionCustomCode:
                 // Custom declarations are written at the top of the file.
                 _notes.NoCode(action);
                 break;
             case ActionRotation:
-                _notes.NotApplicable(action, "a 3D printer cannot turn its tool.");
+                NotApplicable(action, "a 3D printer cannot turn its tool.");
                 break;
             case ActionWaitDigital:
-                _notes.NotApplicable(action, "Machina's G-code programs do not wait for inputs.");
+                NotApplicable(action, "Machina's G-code programs do not wait for inputs.");
                 break;
             case ActionReadInput:
-                _notes.NotApplicable(action, "Machina's G-code programs do not read inputs.");
+                NotApplicable(action, "Machina's G-code programs do not read inputs.");
                 break;
             case ActionAxes:
-                _notes.NotApplicable(action, "a 3D printer has no robot joints to move.");
+                NotApplicable(action, "a 3D printer has no robot joints to move.");
                 break;
             case ActionPrecision:
-                _notes.NotApplicable(action, "a 3D printer follows its path exactly and has no blend radius.");
+                NotApplicable(action, "a 3D printer follows its path exactly and has no blend radius.");
                 break;
             case ActionAttachTool or ActionDetachTool:
-                _notes.NotApplicable(action, "a 3D printer has no tool frame; motions keep the tool-tip positions Machina computed.");
+                NotApplicable(action, "a 3D printer has no tool frame; motions keep the tool-tip positions Machina computed.");
                 break;
             case ActionExternalAxis or ActionArmAngle:
-                _notes.NotApplicable(action, "a 3D printer has no external axes or arm angle.");
+                NotApplicable(action, "a 3D printer has no external axes or arm angle.");
                 break;
             default:
                 throw ActionKinds.Unhandled(action, "The G-code writer");
@@ -151,7 +151,7 @@ internal sealed class GCodeWriter
     {
         if (!_flavor.SupportsAcceleration)
         {
-            _notes.NotApplicable(action, "this printer's acceleration is set in its firmware.");
+            NotApplicable(action, "this printer's acceleration is set in its firmware.");
         }
         else if (acceleration == 0)
         {
@@ -406,6 +406,22 @@ internal sealed class GCodeWriter
         {
             MotionWarning(action, "turned", "a 3D printer cannot turn its tool; the change of orientation is ignored.");
         }
+    }
+
+    /// <summary>
+    /// An action a printer cannot do: a warning, and the note <c>; ACTION "…" NOT APPLICABLE TO THIS DEVICE</c> as its line
+    /// (the same text as <see cref="LineNotes.NotApplicable"/> with <see cref="Code"/>), its description written straight into
+    /// the line: a toolpath that turns on every other move (10^6-line files) made five strings per turn.
+    /// </summary>
+    private void NotApplicable(RobotAction action, string reason)
+    {
+        _job.Warn(action, reason);
+        StringBuilder sb = _sb.Clear().Append("; ACTION \"").AppendDescription(action, oneLine: true).Append("\" NOT APPLICABLE TO THIS DEVICE");
+        if (_human)
+        {
+            sb.Append("  ; [").AppendDescription(action, oneLine: true).Append(']');
+        }
+        _file.Add(sb);
     }
 
     private void Code(string line, RobotAction action)

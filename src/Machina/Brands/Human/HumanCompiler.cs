@@ -14,6 +14,7 @@ internal sealed class HumanCompiler : Compiler
         file.Add("");
         int index = 0;
         var line = new System.Text.StringBuilder(128);
-        job.Replay((action, _) => file.Add(line.Clear().Append('[').Append(index++).Append("] ").Append(ProgramText.OneLine(action.Describe()))));
+        // A move's or a turn's description is written straight into the line (AppendDescription), without a string per action.
+        job.Replay((action, _) => file.Add(line.Clear().Append('[').Append(index++).Append("] ").AppendDescription(action, oneLine: true)));
     }
 }

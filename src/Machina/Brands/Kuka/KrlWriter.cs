@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -282,9 +283,80 @@ internal sealed class KrlWriter
         {
             WarnPtpSpeedOnce(action);
         }
+        KukaConfiguration? config = StatusTurn(c, position, rotation);
+        string approximation = Approximation(ptp, c.Precision);
+        if (TryWriteInlineMove(ptp ? "PTP " : "LIN ", position, rotation, c.ExternalAxesCartesian, config, approximation, action))
+        {
+            return;
+        }
         StringBuilder line = BeginLine().Append(ptp ? "PTP " : "LIN ");
-        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian, StatusTurn(c, position, rotation));
-        EndLine(line.Append(Approximation(ptp, c.Precision)), action);
+        AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian, config);
+        EndLine(line.Append(approximation), action);
+    }
+
+    private char[] _moveLine = new char[256];
+
+    /// <summary>
+    /// Writes a <c>LIN</c>/<c>PTP</c> line with an inline target as <see cref="AppendPoseTarget"/> and <see cref="EndLine"/> write
+    /// it, into one reused array instead of a builder: the position's three numbers, the kept text after them (orientation,
+    /// Status and Turn, external axes), the approximation and the move's description. False (nothing written) with declared
+    /// targets, a coordinate too large for the fast digits, or a description that is not digits and fixed words; the caller then
+    /// writes the line the general way.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    private bool TryWriteInlineMove(string instruction, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config,
+                                    string approximation, RobotAction action)
+    {
+        if (!_inline)
+        {
+            return false;
+        }
+        Span<char> own = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
+        int ownLength = _human ? action.TryWriteDescription(own) : 0;
+        if (ownLength < 0)
+        {
+            return false;
+        }
+        StringBuilder tail = PoseTail(rotation, external, config);
+        int need = 32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + approximation.Length + ownLength;
+        if (_moveLine.Length < need)
+        {
+            _moveLine = new char[need * 2];
+        }
+        Span<char> line = _moveLine;
+        int at = Put(line, 0, Indent);
+        at = Put(line, at, instruction);
+        at = Put(line, at, "{E6POS: X ");
+        if ((at = PutMm(line, at, position.X)) < 0 || (at = PutMm(line, Put(line, at, ", Y "), position.Y)) < 0
+            || (at = PutMm(line, Put(line, at, ", Z "), position.Z)) < 0)
+        {
+            return false;
+        }
+        tail.CopyTo(0, line[at..], tail.Length);
+        at += tail.Length;
+        line[at++] = '}';
+        at = Put(line, at, approximation);
+        if (_human)
+        {
+            at = Put(line, at, "  ; [");
+            at = Put(line, at, own[..ownLength]);
+            line[at++] = ']';
+        }
+        _src.Add(line[..at]);
+        return true;
+    }
+
+    private static int Put(Span<char> line, int at, ReadOnlySpan<char> text)
+    {
+        text.CopyTo(line[at..]);
+        return at + text.Length;
+    }
+
+    /// <summary>Writes millimetres with 3 decimals as <see cref="KrlFormat.AppendPosition"/> does; −1 when too large for the fast digits.</summary>
+    private static int PutMm(Span<char> line, int at, double value)
+    {
+        int written = NumAppend.TryWriteScaled(line[at..], value, 3);
+        return written < 0 ? -1 : at + written;
     }
 
     private void EmitArc(RobotAction action, RobotCursor c)
@@ -493,6 +565,16 @@ internal sealed class KrlWriter
 
     private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
+        StringBuilder tail = PoseTail(rotation, external, config);
+        StringBuilder target = BeginTarget(line, "E6POS");
+        KrlFormat.AppendPosition(target, position);
+        target.Append(tail);
+        EndTarget(line);
+    }
+
+    /// <summary>The target's text after its position (<see cref="KrlFormat.AppendOrientation"/>), kept while its values stay the same.</summary>
+    private StringBuilder PoseTail(Rotation rotation, ExternalAxes? external, KukaConfiguration? config)
+    {
         if (!_tailKnown || rotation != _tailRotation || external != _tailExternal || config != _tailConfig)
         {
             // A toolpath keeps its orientation over many moves: its Euler angles are computed and written once, and the
@@ -500,10 +582,7 @@ internal sealed class KrlWriter
             KrlFormat.AppendOrientation(_poseTail.Clear(), KrlFormat.Abc(rotation), external, config);
             (_tailKnown, _tailRotation, _tailExternal, _tailConfig) = (true, rotation, external, config);
         }
-        StringBuilder target = BeginTarget(line, "E6POS");
-        KrlFormat.AppendPosition(target, position);
-        target.Append(_poseTail);
-        EndTarget(line);
+        return _poseTail;
     }
 
     private readonly StringBuilder _poseTail = new(96);

@@ -60,6 +60,31 @@ internal sealed class RapidPlan
     }
 
     /// <summary>
+    /// Text that every statement which adds to the declarations, or changes the speed, zone or tool that motions use, contains
+    /// (instruction names are case-sensitive): <c>Speed</c>/<c>SpeedTo</c>, <c>Precision</c>/<c>PrecisionTo</c>,
+    /// <c>PopSettings</c>, <c>DefineTool</c>/<c>AttachTool</c>/<c>DetachTool</c>, <c>CustomCode</c>, and the IO statements.
+    /// A text that names none of them declares what <see cref="Foresee"/> says, if it moves at all.
+    /// </summary>
+    internal static readonly string[] WordsThatDeclare = ["Speed", "Precision", "Settings", "Tool", "CustomCode", "Digital", "Analog"];
+
+    /// <summary>
+    /// The plan of a program whose motions all keep the start state's speed, zone and tool (see <see cref="WordsThatDeclare"/>):
+    /// what <see cref="Collect"/> finds for it, if it has at least one motion. Finished.
+    /// </summary>
+    internal static RapidPlan Foresee(CompileJob job)
+    {
+        RapidPlan plan = Start(job, live: false);
+        plan.ObserveMotion(job.NewCursor());
+        plan.Finish();
+        return plan;
+    }
+
+    /// <summary>True when this finished plan writes the same text before <c>PROC main()</c> as <paramref name="other"/>.</summary>
+    internal bool DeclaresAs(RapidPlan other) =>
+        ModuleName == other.ModuleName && UsesIO == other.UsesIO && ReadsDigital == other.ReadsDigital && ReadsAnalog == other.ReadsAnalog
+        && DataLines.SequenceEqual(other.DataLines) && CustomDeclarations.SequenceEqual(other.CustomDeclarations);
+
+    /// <summary>
     /// A plan that is gathered while the instructions are written, in one pass (<see cref="Observe"/> before each action is
     /// written). Until <see cref="Finish"/> it answers names provisionally, claimed in the order the instructions meet them;
     /// <see cref="Finish"/> names everything as <see cref="Collect"/> does and <see cref="ProvisionalNamesHeld"/> tells whether
@@ -123,12 +148,7 @@ internal sealed class RapidPlan
         switch (action)
         {
             case ActionTranslation or ActionRotation or ActionTransformation or ActionAxes or ActionArcMotion:
-                AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
-                AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
-                if (cursor.Tool is Tool tool)
-                {
-                    AddTool(tool);
-                }
+                ObserveMotion(cursor);
                 break;
             case ActionCustomCode { IsDeclaration: true } code:
                 CustomDeclarations.Add(code.Statement);
@@ -141,6 +161,18 @@ internal sealed class RapidPlan
                 ReadsDigital |= !read.IsAnalog;
                 ReadsAnalog |= read.IsAnalog;
                 break;
+        }
+    }
+
+    /// <summary>Records the speed, zone and tool of a motion that leaves the cursor in <paramref name="cursor"/>'s state.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void ObserveMotion(RobotCursor cursor)
+    {
+        AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
+        AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
+        if (cursor.Tool is Tool tool)
+        {
+            AddTool(tool);
         }
     }
 
