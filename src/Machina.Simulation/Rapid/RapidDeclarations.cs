@@ -38,8 +38,8 @@ internal enum RapidParamMode
 /// <summary>A routine parameter: <c>\VAR num x{*}</c>, <c>\switch On</c>.</summary>
 internal sealed record RapidParam(string Name, string TypeName, RapidParamMode Mode, bool Optional, int Rank)
 {
-    /// <summary>True for a <c>switch</c> (an optional argument without value).</summary>
-    public bool IsSwitch => string.Equals(TypeName, "switch", StringComparison.OrdinalIgnoreCase);
+    /// <summary>True for a <c>switch</c> (an optional argument without value); known once, asked at every call.</summary>
+    public bool IsSwitch { get; } = string.Equals(TypeName, "switch", StringComparison.OrdinalIgnoreCase);
 }
 
 /// <summary>What kind of routine.</summary>
@@ -102,6 +102,15 @@ internal sealed class RapidRoutine(int line, RapidRoutineKind kind, string name,
 
     /// <summary>The type a FUNC returns, set by the binder.</summary>
     public RapidDataType? ReturnType { get; set; }
+
+    /// <summary>A frame of an earlier call that returned normally, kept for the next call (see <see cref="RapidFrame.Reuse"/>).</summary>
+    private RapidFrame? _spare;
+
+    /// <summary>Takes the spare frame, if there is one (a recursive call finds none while the outer call runs).</summary>
+    public RapidFrame? TakeSpareFrame() => Interlocked.Exchange(ref _spare, null);
+
+    /// <summary>Keeps <paramref name="frame"/>, whose call returned normally, for the next call.</summary>
+    public void KeepSpareFrame(RapidFrame frame) => Volatile.Write(ref _spare, frame);
 }
 
 /// <summary>A module: <c>MODULE name (attributes) … ENDMODULE</c>.</summary>

@@ -1,13 +1,20 @@
 namespace Machina.Simulation.Rapid;
 
-/// <summary>One call of a routine: its local data (parameters passed by reference share the caller's cell) and its state.</summary>
-internal sealed class RapidFrame(RapidRoutine routine, RapidCell[] cells)
+/// <summary>
+/// One call of a routine: its local data (parameters passed by reference share the caller's cell) and its state. A call that returned
+/// normally leaves its frame to the routine's next call (<see cref="RapidRoutine.KeepSpareFrame"/>): the frame, its slot array and
+/// the cells it owns are made once per routine instead of at every call, and every slot is given its value again at the call.
+/// </summary>
+internal sealed class RapidFrame(RapidRoutine routine)
 {
+    /// <summary>The cells this frame made (a by-reference parameter's slot holds the caller's cell instead, never one of these).</summary>
+    private readonly RapidCell?[] _own = new RapidCell?[routine.FrameSize];
+
     /// <summary>The routine.</summary>
     public RapidRoutine Routine { get; } = routine;
 
     /// <summary>The local cells, by slot.</summary>
-    public RapidCell[] Cells { get; } = cells;
+    public RapidCell[] Cells { get; } = new RapidCell[routine.FrameSize];
 
     /// <summary>The value a FUNC returned.</summary>
     public object? ReturnValue { get; set; }
@@ -17,6 +24,33 @@ internal sealed class RapidFrame(RapidRoutine routine, RapidCell[] cells)
 
     /// <summary>The error the ERROR handler is taking, or null.</summary>
     public RapidRuntimeException? Handling { get; set; }
+
+    /// <summary>
+    /// Puts this frame's own cell into <paramref name="slot"/> with <paramref name="value"/>; the cell is made at the slot's first use
+    /// (a slot is always the same parameter, datum or FOR variable of the routine, so its name, type and storage never change).
+    /// </summary>
+    public RapidCell Own(int slot, string name, RapidDataType type, RapidStorage storage, object value)
+    {
+        RapidCell? cell = _own[slot];
+        if (cell is null)
+        {
+            cell = _own[slot] = new RapidCell(name, type, storage, value);
+        }
+        else
+        {
+            cell.Value = value;
+        }
+        Cells[slot] = cell;
+        return cell;
+    }
+
+    /// <summary>Clears the state of the call that returned, before the frame serves the routine's next call.</summary>
+    public void Reuse()
+    {
+        ReturnValue = null;
+        GotoLabel = null;
+        Handling = null;
+    }
 }
 
 /// <summary>How a statement ended.</summary>

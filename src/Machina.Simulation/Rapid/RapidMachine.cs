@@ -219,8 +219,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         {
             throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, f.Line, "the STEP of a FOR loop is 0");
         }
-        var cell = new RapidCell(f.Variable, new RapidDataType(RapidTypes.Num), RapidStorage.Var, from);
-        frame.Cells[f.Slot] = cell;
+        RapidCell cell = frame.Own(f.Slot, f.Variable, new RapidDataType(RapidTypes.Num), RapidStorage.Var, RapidBoxes.Num(from));
         for (double v = from; step > 0 ? v <= to : v >= to; v += step)
         {
             Task.Tick();
@@ -286,7 +285,8 @@ internal sealed partial class RapidMachine(RapidTask task)
         long elements = 0;
         try
         {
-            var cells = new RapidCell[routine.FrameSize];
+            RapidFrame frame = routine.TakeSpareFrame() ?? new RapidFrame(routine);
+            RapidCell[] cells = frame.Cells;
             List<(RapidExpr Arg, RapidCell Cell)>? writeBack = null;
             for (int p = 0; p < routine.Parameters.Count; p++)
             {
@@ -295,11 +295,11 @@ internal sealed partial class RapidMachine(RapidTask task)
                 int k = target.ArgumentOf[p];
                 if (k < 0)
                 {
-                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, Absent);
+                    frame.Own(p, param.Name, type, RapidStorage.Var, Absent);
                 }
                 else if (param.IsSwitch)
                 {
-                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, true);
+                    frame.Own(p, param.Name, type, RapidStorage.Var, RapidBoxes.Bool(true));
                 }
                 else if (param.Mode != RapidParamMode.In && args[k].Value is RapidName name)
                 {
@@ -309,14 +309,13 @@ internal sealed partial class RapidMachine(RapidTask task)
                 {
                     RapidExpr arg = args[k].Value!;
                     object value = Evaluate(arg, caller);
-                    cells[p] = new RapidCell(param.Name, type, RapidStorage.Var, arg is RapidAggregate ? value : RapidValues.Copy(value));
+                    RapidCell cell = frame.Own(p, param.Name, type, RapidStorage.Var, arg is RapidAggregate ? value : RapidValues.Copy(value));
                     if (param.Mode != RapidParamMode.In)
                     {
-                        (writeBack ??= []).Add((arg, cells[p]));
+                        (writeBack ??= []).Add((arg, cell));
                     }
                 }
             }
-            var frame = new RapidFrame(routine, cells);
             int slot = routine.Parameters.Count;
             foreach (RapidDataDecl decl in routine.Data)
             {
@@ -333,7 +332,7 @@ internal sealed partial class RapidMachine(RapidTask task)
                     }
                 }
                 object value = decl.Initial is null ? RapidValues.Default(type, dims) : RapidValues.Copy(Evaluate(decl.Initial, frame));
-                cells[slot++] = new RapidCell(decl.Name, type, decl.Storage, value);
+                frame.Own(slot++, decl.Name, type, decl.Storage, value);
             }
             RapidFlow flow = routine.UndoHandler is null ? ExecuteBlock(routine.Body, frame) : ExecuteUndoable(routine, frame);
             if (flow == RapidFlow.Goto)
@@ -347,11 +346,14 @@ internal sealed partial class RapidMachine(RapidTask task)
                     Store(arg, caller, cell.Value);
                 }
             }
-            if (routine.Kind == RapidRoutineKind.Func && frame.ReturnValue is null)
+            object? returned = frame.ReturnValue;
+            if (routine.Kind == RapidRoutineKind.Func && returned is null)
             {
                 throw new RapidRuntimeException(0, line, $"the function '{routine.Name}' ended without RETURN");
             }
-            return frame.ReturnValue;
+            frame.Reuse();
+            routine.KeepSpareFrame(frame); // only after a normal return: a frame an error left may still be named by that error
+            return returned;
         }
         finally
         {
