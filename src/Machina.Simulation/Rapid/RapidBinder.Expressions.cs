@@ -41,8 +41,30 @@ internal sealed partial class RapidBinder
         {
             throw Refuse(e.Line, RapidLoadException.Reference($"'{name.Name}' is a constant and cannot be {verb}"));
         }
+        NoteWrite(name, scope);
         return type;
     }
+
+    /// <summary>Notes that the routine being bound may write the data <paramref name="name"/> (bound already) when it is one of its parameters.</summary>
+    private static void NoteWrite(RapidName name, RapidScope scope)
+    {
+        if (name.Global is null && scope.Routine is { } routine && name.Slot >= 0 && name.Slot < routine.Parameters.Count)
+        {
+            routine.WritesParameter[name.Slot] = true;
+        }
+    }
+
+    /// <summary>True when <paramref name="e"/> calls a function somewhere (which might write data through a reference parameter).</summary>
+    private static bool CallsAFunction(RapidExpr e) => e switch
+    {
+        RapidCallExpr => true,
+        RapidComponent c => CallsAFunction(c.Target),
+        RapidIndex i => CallsAFunction(i.Target) || i.Indices.Any(CallsAFunction),
+        RapidAggregate a => a.Items.Any(CallsAFunction),
+        RapidUnary u => CallsAFunction(u.Operand),
+        RapidBinary b => CallsAFunction(b.Left) || CallsAFunction(b.Right),
+        _ => false,
+    };
 
     private RapidDataType? BindExpression(RapidExpr e, RapidDataType? expected, RapidScope scope)
     {
@@ -286,7 +308,7 @@ internal sealed partial class RapidBinder
                 throw Refuse(line, RapidLoadException.Reference($"the argument '{ps[missing].Name}' of '{name}' is missing"));
             }
         }
-        return new RapidCallTarget(builtin, routine, map);
+        return new RapidCallTarget(builtin, routine, map) { ArgumentsCallNoFunction = !args.Any(a => a.Value is not null && CallsAFunction(a.Value)) };
     }
 
     private readonly Dictionary<object, List<(string Name, string? Type, bool Optional, bool Switch, bool Ref, int Rank)>> _signatures = [];

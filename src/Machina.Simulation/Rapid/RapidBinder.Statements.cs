@@ -6,6 +6,8 @@ internal sealed partial class RapidBinder
     private void BindRoutine(RapidRoutine routine)
     {
         var scope = new RapidScope(routine);
+        routine.WritesParameter = new bool[routine.Parameters.Count];
+        routine.TakesValuesOnly = routine.Parameters.TrueForAll(p => p.Mode == RapidParamMode.In);
         foreach (RapidParam p in routine.Parameters)
         {
             if (scope.DeclaredHere(p.Name))
@@ -165,6 +167,10 @@ internal sealed partial class RapidBinder
                     if (arg.Value is not null)
                     {
                         BindExpression(arg.Value, null, scope);
+                        if (arg.Value is RapidName name)
+                        {
+                            NoteWrite(name, scope); // the procedure is known when the call runs: it may take the data by reference
+                        }
                     }
                 }
                 break;

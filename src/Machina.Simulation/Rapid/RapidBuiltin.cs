@@ -45,6 +45,9 @@ internal sealed class RapidCallTarget(RapidBuiltin? builtin, RapidRoutine? routi
 
     /// <summary>For each parameter, the index of its argument, or -1 when it is absent.</summary>
     public int[] ArgumentOf { get; } = argumentOf;
+
+    /// <summary>True when no argument calls a function (so evaluating the arguments writes no data), set by the binder.</summary>
+    public bool ArgumentsCallNoFunction { get; init; }
 }
 
 /// <summary>A call of a built-in as it runs: its arguments (evaluated when asked) and the task it runs in.</summary>

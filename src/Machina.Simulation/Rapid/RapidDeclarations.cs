@@ -103,6 +103,15 @@ internal sealed class RapidRoutine(int line, RapidRoutineKind kind, string name,
     /// <summary>The type a FUNC returns, set by the binder.</summary>
     public RapidDataType? ReturnType { get; set; }
 
+    /// <summary>
+    /// By parameter: true when the routine may write it (assigns it or a part of it, or passes it on by reference); every parameter is
+    /// IN (none shares the caller's data) when <see cref="TakesValuesOnly"/>. Set by the binder.
+    /// </summary>
+    public bool[] WritesParameter { get; set; } = [];
+
+    /// <summary>True when every parameter is IN (or a switch): the routine writes no data of its caller through a parameter.</summary>
+    public bool TakesValuesOnly { get; set; }
+
     /// <summary>A frame of an earlier call that returned normally, kept for the next call (see <see cref="RapidFrame.Reuse"/>).</summary>
     private RapidFrame? _spare;
 

@@ -44,6 +44,9 @@ internal sealed class RapidFrame(RapidRoutine routine)
         return cell;
     }
 
+    /// <summary>True when <paramref name="slot"/> holds this frame's own cell (not data of a caller passed by reference).</summary>
+    public bool HoldsOwn(int slot) => ReferenceEquals(Cells[slot], _own[slot]);
+
     /// <summary>Clears the state of the call that returned, before the frame serves the routine's next call.</summary>
     public void Reuse()
     {

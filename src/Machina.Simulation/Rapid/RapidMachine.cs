@@ -274,6 +274,22 @@ internal sealed partial class RapidMachine(RapidTask task)
         return Invoke(target.Routine!, args, target, frame, line);
     }
 
+    /// <summary>
+    /// True when <paramref name="arg"/> is (a part of) a local of <paramref name="caller"/> held in the caller's own cell. Given to an IN
+    /// parameter that the routine never writes, while the routine takes nothing by reference and no argument calls a function, such a
+    /// value needs no copy: the routine only reads it ("changing this variable will not change the corresponding argument", RAPID
+    /// Overview, "Parameters"), and nothing can change it until the call returns (the caller waits, traps see no locals, and no
+    /// reference to it is given to anyone).
+    /// </summary>
+    private static bool IsCallersOwn(RapidExpr arg, RapidFrame? caller)
+    {
+        while (arg is RapidComponent or RapidIndex)
+        {
+            arg = arg is RapidComponent c ? c.Target : ((RapidIndex)arg).Target;
+        }
+        return arg is RapidName { Global: null, ReadsSignal: false } name && caller is not null && caller.HoldsOwn(name.Slot);
+    }
+
     private object? Invoke(RapidRoutine routine, RapidArg[] args, RapidCallTarget target, RapidFrame? caller, int line)
     {
         if (++_depth > Limits.MaxCallDepth)
@@ -309,7 +325,8 @@ internal sealed partial class RapidMachine(RapidTask task)
                 {
                     RapidExpr arg = args[k].Value!;
                     object value = Evaluate(arg, caller);
-                    RapidCell cell = frame.Own(p, param.Name, type, RapidStorage.Var, arg is RapidAggregate ? value : RapidValues.Copy(value));
+                    bool unshared = arg is RapidAggregate || (target.ArgumentsCallNoFunction && routine.TakesValuesOnly && !routine.WritesParameter[p] && IsCallersOwn(arg, caller));
+                    RapidCell cell = frame.Own(p, param.Name, type, RapidStorage.Var, unshared ? value : RapidValues.Copy(value));
                     if (param.Mode != RapidParamMode.In)
                     {
                         (writeBack ??= []).Add((arg, cell));

@@ -125,4 +125,124 @@ public class RapidCallFrameTests
 
         Assert.Equal(["main took " + RapidErrorNumbers.DivZero, "r 3"], lines);
     }
+
+    [Fact]
+    public void ACalleeThatWritesItsInRecordParameter_WritesItsOwnCopy()
+    {
+        IReadOnlyList<string> lines = Lines(
+            """
+              VAR pos mine := [1, 2, 3];
+              Change mine;
+              Change mine;
+              TPWrite "caller " + ValToStr(mine);
+            """,
+            """
+            PROC Change(pos p)
+              p.x := p.x + 10;
+              TPWrite "callee " + ValToStr(p);
+            ENDPROC
+            """);
+
+        Assert.Equal(["callee [11,2,3]", "callee [11,2,3]", "caller [1,2,3]"], lines);
+    }
+
+    [Fact]
+    public void AnInRecordParameterPassedOnByReference_LeavesTheCallersRecord()
+    {
+        IReadOnlyList<string> lines = Lines(
+            """
+              VAR pos mine := [1, 2, 3];
+              PassOn mine;
+              PassLate mine;
+              PassToBuiltin mine;
+              TPWrite "caller " + ValToStr(mine);
+            """,
+            """
+            PROC PassOn(pos p)
+              Bump p.y;
+              TPWrite "on " + ValToStr(p);
+            ENDPROC
+            PROC PassLate(pos p)
+              %"BumpPos"% p;
+              TPWrite "late " + ValToStr(p);
+            ENDPROC
+            PROC PassToBuiltin(pos p)
+              Incr p.z;
+              TPWrite "builtin " + ValToStr(p);
+            ENDPROC
+            PROC Bump(INOUT num n)
+              n := n + 100;
+            ENDPROC
+            PROC BumpPos(INOUT pos q)
+              q.x := q.x + 1000;
+            ENDPROC
+            """);
+
+        Assert.Equal(["on [1,102,3]", "late [1001,2,3]", "builtin [1,2,4]", "caller [1,2,3]"], lines);
+    }
+
+    /// <summary>A record read by the callee keeps the value it had at the call while the same data is written meanwhile.</summary>
+    [Fact]
+    public void AnInRecordParameter_KeepsTheValueOfTheCall_WhileItsDataIsWrittenMeanwhile()
+    {
+        IReadOnlyList<string> lines = Lines(
+            """
+              VAR pos mine := [1, 2, 3];
+              Both mine, mine;
+              PassRef shared;
+              PassRef mine;
+              ReadThenCall mine, Grow(mine);
+              TPWrite "caller " + ValToStr(mine) + " " + ValToStr(shared);
+            """,
+            """
+            VAR pos shared := [7, 8, 9];
+            PROC Both(pos readOnly, INOUT pos written)
+              written.x := 50;
+              TPWrite "both " + ValToStr(readOnly);
+            ENDPROC
+            PROC PassRef(INOUT pos q)
+              Show q;
+            ENDPROC
+            PROC Show(pos p)
+              shared.x := shared.x + 1;
+              TPWrite "show " + ValToStr(p);
+            ENDPROC
+            FUNC num Grow(INOUT pos q)
+              q.z := q.z * 2;
+              RETURN q.z;
+            ENDFUNC
+            PROC ReadThenCall(pos p, num z)
+              TPWrite "read " + ValToStr(p) + " " + ValToStr(z);
+            ENDPROC
+            """);
+
+        Assert.Equal(["both [1,2,3]", "show [7,8,9]", "show [50,2,3]", "read [50,2,3] 6", "caller [50,2,6] [9,8,9]"], lines);
+    }
+
+    /// <summary>The parameter read without a copy is still a value: the routine's own copies of it (assigned, returned) are independent.</summary>
+    [Fact]
+    public void ARecordReadWithoutACopy_StaysIndependentOfWhatTheCalleeMakesOfIt()
+    {
+        IReadOnlyList<string> lines = Lines(
+            """
+              VAR pos mine := [1, 2, 3];
+              VAR pos back;
+              Keep mine;
+              back := Same(mine);
+              back.x := 99;
+              kept.y := 77;
+              TPWrite ValToStr(mine) + " " + ValToStr(back) + " " + ValToStr(kept);
+            """,
+            """
+            VAR pos kept;
+            PROC Keep(pos p)
+              kept := p;
+            ENDPROC
+            FUNC pos Same(pos p)
+              RETURN p;
+            ENDFUNC
+            """);
+
+        Assert.Equal(["[1,2,3] [99,2,3] [1,77,3]"], lines);
+    }
 }
