@@ -148,11 +148,11 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
 
     private void Tag(ReadOnlySpan<char> body)
     {
-        if (body.StartsWith('?') || body.StartsWith('!'))
+        if (body.Length > 0 && body[0] is ('?' or '!'))
         {
             return;
         }
-        if (body.StartsWith('/'))
+        if (body.Length > 0 && body[0] == '/')
         {
             ReadOnlySpan<char> name = body[1..].Trim();
             if (_path.Count == 0 || !ClosesInnermost(name))
@@ -162,7 +162,7 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
             End();
             return;
         }
-        bool empty = body.EndsWith('/');
+        bool empty = body.Length > 0 && body[^1] == '/';
         if (empty)
         {
             body = body[..^1];
