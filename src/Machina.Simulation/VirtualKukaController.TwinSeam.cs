@@ -24,6 +24,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private readonly ConnectionLog _connections;
     private byte[]? _heldTwinAcknowledgement;
 
+    /// <summary>The builder of the received actions' log text, between two documents (null while a reader uses it).</summary>
+    private StringBuilder? _receivedText;
+
     /// <summary>An action the driver channel received, held until the driver settles it.</summary>
     private sealed class TwinAction(int id)
     {
@@ -83,27 +86,34 @@ public sealed partial class VirtualKukaController : IEkiSeam
         {
             return;
         }
-        // Each action's values, from its ID to the next ID, as the element the host wrote.
-        StringBuilder? action = null;
+        // Each action's values, from its ID to the next ID, as the element the host wrote (one builder, kept between documents).
+        StringBuilder action = Interlocked.Exchange(ref _receivedText, null) ?? new StringBuilder();
+        bool open = false;
         int id = 0;
         foreach ((string tag, string value) in values)
         {
             if (tag == "DT/DR/A/@ID")
             {
-                if (action is not null)
+                if (open)
                 {
                     HoldReceived(id, action.Append("/>").ToString());
                 }
-                action = new StringBuilder("<A");
+                action.Clear().Append("<A");
+                open = true;
                 id = int.TryParse(value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
             }
-            int at = tag.LastIndexOf('@');
-            action?.Append(' ').Append(tag, at + 1, tag.Length - at - 1).Append("=\"").Append(Escape(value)).Append('"');
+            if (open)
+            {
+                int at = tag.LastIndexOf('@');
+                action.Append(' ').Append(tag, at + 1, tag.Length - at - 1).Append("=\"").Append(Escape(value)).Append('"');
+            }
         }
-        if (action is not null)
+        if (open)
         {
             HoldReceived(id, action.Append("/>").ToString());
         }
+        action.Clear();
+        _receivedText = action;
     }
 
     /// <summary>Counts action <paramref name="id"/> received and holds it until the driver settles it (not when a restart cut its client off).</summary>

@@ -13,6 +13,12 @@ internal sealed partial class EkiChannel
 
     private HashSet<string>? _frameTags;
 
+    private Dictionary<string, int[]>? _setFlags;
+
+    /// <summary>The flags each RECEIVE tag sets when its element ends (Set_Flag), in the configuration's order.</summary>
+    private Dictionary<string, int[]> SetFlags => _setFlags ??= Configuration.Receive.Where(e => e.SetFlag > 0).GroupBy(e => e.Tag, StringComparer.Ordinal)
+        .ToDictionary(g => g.Key, g => g.Select(e => e.SetFlag).ToArray(), StringComparer.Ordinal);
+
     /// <summary>The RECEIVE tags of type FRAME.</summary>
     private HashSet<string> FrameTags => _frameTags ??= [.. Configuration.Receive.Where(e => e.Type == "FRAME").Select(e => e.Tag)];
 
@@ -22,8 +28,12 @@ internal sealed partial class EkiChannel
     /// </summary>
     private bool FramePart(Dictionary<string, string[]> frames, string tag, string value)
     {
+        if (FrameTags.Count == 0)
+        {
+            return false;
+        }
         int at = tag.LastIndexOf("/@", StringComparison.Ordinal);
-        if (at <= 0 || FrameTags.Count == 0 || !FrameTags.Contains(tag[..at]))
+        if (at <= 0 || !FrameTags.Contains(tag[..at]))
         {
             return false;
         }

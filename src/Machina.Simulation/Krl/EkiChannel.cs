@@ -166,7 +166,27 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             }
             Alive(true);
         }
-        return Task.Run(() => ReadAsync(client, token), CancellationToken.None);
+        // A thread of its own that blocks in the socket's receive: each document wakes it once, where an asynchronous read woke
+        // the socket engine's thread and then a thread-pool worker, which spun before it slept (issue 45).
+        var done = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+        var reader = new Thread(() =>
+        {
+            try
+            {
+                Read(client, token);
+                done.TrySetResult();
+            }
+            catch (Exception e)
+            {
+                done.TrySetException(e); // as the task the reader ran in before
+            }
+        })
+        {
+            IsBackground = true,
+            Name = "EKI " + Name,
+        };
+        reader.Start();
+        return done.Task;
     }
 
     /// <summary>A splitter that hands each complete document (its values and the flags it sets) to <paramref name="commit"/>.</summary>
@@ -193,12 +213,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             {
                 document.Add((path, "0 0 0 0 0 0")); // a FRAME element without components
             }
-            foreach (EkiReceiveElement element in Configuration.Receive)
+            if (SetFlags.TryGetValue(path, out int[]? set))
             {
-                if (element.SetFlag > 0 && element.Tag == path)
-                {
-                    flags.Add(element.SetFlag);
-                }
+                flags.AddRange(set);
             }
             if (topLevel)
             {
@@ -208,19 +225,22 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return splitter;
     }
 
-    private async Task ReadAsync(TcpClient client, CancellationToken token)
+    private void Read(TcpClient client, CancellationToken token)
     {
+        // The channel's stop closes the socket, which ends a receive under way.
+        using CancellationTokenRegistration stop = token.Register(static c => ((TcpClient)c!).Dispose(), client);
         EkiXmlSplitter splitter = Splitter((document, flags) => Commit(client, document, flags));
         EkiRawSplitter? raw = Configuration.RawReceive is { } element ? new EkiRawSplitter(element) : null;
         var bytes = new byte[8192];
         var decoder = Encoding.UTF8.GetDecoder();
-        var chars = new char[8192];
+        var chars = new char[Encoding.UTF8.GetMaxCharCount(bytes.Length)];
         try
         {
-            Stream stream = client.GetStream();
-            while (true)
+            // Null once the client was disposed (a channel closed before this thread ran).
+            Socket? socket = client.Client;
+            while (socket is not null && !token.IsCancellationRequested)
             {
-                int n = await stream.ReadAsync(bytes, token).ConfigureAwait(false);
+                int n = socket.Receive(bytes);
                 if (n == 0)
                 {
                     break;
@@ -234,7 +254,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
                     continue;
                 }
                 int count = decoder.GetChars(bytes, 0, n, chars, 0);
-                splitter.Append(new string(chars, 0, count));
+                splitter.Append(chars.AsSpan(0, count));
             }
         }
         catch (FormatException ex)
@@ -255,16 +275,17 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     private void Commit(TcpClient client, List<(string Tag, string Value)> document, List<int> flags)
     {
         bool overflow = false;
-        if (IsClient(client))
+        // Under the link, as the connection's end: a document of a connection the channel already let go of reaches neither the
+        // seam nor the memories. (Before, the seam could count such a document received after a program reset had closed the
+        // channel and the next connection had attached, though the program never got it: the controller then held an action it
+        // would log executed a second time at a later restart.)
+        lock (_link)
         {
-            // The seam sees the document before the program can take any of its values.
-            controller.Options.Seam?.Received(this, [.. document]);
-            lock (_link)
+            if (IsClient(client))
             {
-                if (IsClient(client))
-                {
-                    overflow = Store(document, flags, dropExcess: false);
-                }
+                // The seam sees the document before the program can take any of its values.
+                controller.Options.Seam?.Received(this, document);
+                overflow = Store(document, flags, dropExcess: false);
             }
         }
         document.Clear();
@@ -409,7 +430,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     /// <summary>EKI_Set…: keeps the value of <paramref name="tag"/> for the next EKI_Send.</summary>
     public void Set(string tag, string value)
     {
-        if (!Configuration.Send.Contains(tag, StringComparer.Ordinal))
+        if (!SendTags.Contains(tag))
         {
             throw new KrlRuntimeException($"EthernetKRL: the channel {Name} sends no element {tag} (see its SEND configuration)");
         }
@@ -417,6 +438,24 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         {
             _toSend[tag] = value;
         }
+    }
+
+    private HashSet<string>? _sendTags;
+
+    /// <summary>The SEND configuration's tags.</summary>
+    private HashSet<string> SendTags => _sendTags ??= new HashSet<string>(Configuration.Send, StringComparer.Ordinal);
+
+    /// <summary>True when the SEND configuration has <paramref name="root"/> or an element or attribute below it.</summary>
+    private bool Sends(string root)
+    {
+        foreach (string tag in Configuration.Send)
+        {
+            if (tag == root || EkiSendDocument.IsBelow(tag, root))
+            {
+                return true;
+            }
+        }
+        return false;
     }
 
     /// <summary>
@@ -429,7 +468,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         EkiOutbox? outbox;
         string text;
         byte[] bytes;
-        bool configured = Configuration.RawSend is null && Configuration.Send.Any(t => t == root || t.StartsWith(root + "/", StringComparison.Ordinal));
+        bool configured = Configuration.RawSend is null && Sends(root);
         lock (_gate)
         {
             // A string that names no configured element is data sent as it is: XML (the manual's EKI_Send of "<Robot>…</Robot>") or

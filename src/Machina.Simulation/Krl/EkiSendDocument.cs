@@ -35,7 +35,7 @@ internal static class EkiSendDocument
     public static string Write(string root, IReadOnlyList<string> tags, IReadOnlyDictionary<string, string> values)
     {
         string prefix = root + "/@";
-        if (!root.Contains('/', StringComparison.Ordinal) && !tags.Any(t => t == root || (t.StartsWith(root + "/", StringComparison.Ordinal) && !IsAttribute(t, prefix))))
+        if (!root.Contains('/', StringComparison.Ordinal) && !HasElementsBelow(root, tags, prefix))
         {
             // Only attributes of the element (the Machina driver's acknowledgements): written directly, on every action.
             var flat = new StringBuilder("<").Append(root);
@@ -91,6 +91,23 @@ internal static class EkiSendDocument
         Append(xml, top);
         return xml.ToString();
     }
+
+    /// <summary>True when <paramref name="tags"/> name <paramref name="root"/> itself or an element below it (not only its attributes).</summary>
+    private static bool HasElementsBelow(string root, IReadOnlyList<string> tags, string prefix)
+    {
+        foreach (string tag in tags)
+        {
+            if (tag == root || (IsBelow(tag, root) && !IsAttribute(tag, prefix)))
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>True when <paramref name="tag"/> is below <paramref name="root"/> (<c>root/…</c>).</summary>
+    internal static bool IsBelow(string tag, string root) =>
+        tag.Length > root.Length && tag[root.Length] == '/' && tag.StartsWith(root, StringComparison.Ordinal);
 
     private static bool IsAttribute(string tag, string prefix) => tag.StartsWith(prefix, StringComparison.Ordinal) && tag.IndexOf('/', prefix.Length) < 0;
 

@@ -7,17 +7,35 @@ namespace Machina.Simulation.Krl;
 /// element ends and text, each with its path (<c>DT/DR/A</c>). Whitespace between elements, declarations and comments are skipped.
 /// Linear in what arrives: a document (a top-level element and what precedes it) is at most <paramref name="maxDocument"/>
 /// characters (the channel's BUFFSIZE), elements nest at most <see cref="MaxDepth"/> deep, and each open element keeps its
-/// whole path, so no path is joined again per element.
+/// whole path, so no path is joined again per element. A tag that arrives whole is read where it lies in the chunk, and the
+/// paths of elements and attributes seen before are taken again instead of joined (a stream sends the same few names in
+/// every document): only the values are new strings.
 /// </summary>
 internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultBufferSize)
 {
     /// <summary>The deepest nesting of elements taken (docs/simulation.md, Network limits).</summary>
     public const int MaxDepth = 64;
 
+    /// <summary>How many characters of names the splitter keeps for taking them again (beyond it, names are joined each time).</summary>
+    private const int MaxKeptCharacters = 16_384;
+
+    /// <summary>The most children and attributes one element keeps for taking them again.</summary>
+    private const int MaxKeptPerElement = 64;
+
+    /// <summary>Text between tags, or a tag's body (after its <c>&lt;</c>), begun in an earlier chunk.</summary>
     private readonly StringBuilder _pending = new();
 
-    /// <summary>The path of each open element (<c>DT</c>, <c>DT/DR</c>, …), the innermost last.</summary>
-    private readonly List<string> _path = [];
+    /// <summary>The open elements, the innermost last.</summary>
+    private readonly List<Element> _path = [];
+
+    /// <summary>The parent of the top-level elements (its path is empty).</summary>
+    private readonly Element _root = new("", "");
+
+    /// <summary>Characters of the names kept in <see cref="Element"/>s.</summary>
+    private int _keptCharacters;
+
+    /// <summary>True while a tag is being read (its <c>&lt;</c> was seen, its <c>&gt;</c> not yet).</summary>
+    private bool _inTag;
 
     /// <summary>Characters of the chunks before the current one.</summary>
     private long _consumed;
@@ -34,43 +52,72 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
     /// <summary>An element ended: its path; the second argument is true when it was a top-level element.</summary>
     public event Action<string, bool>? Ended;
 
+    /// <summary>An element seen: its name and path, and the children and attribute tags met below it (kept to be taken again).</summary>
+    private sealed class Element(string name, string path)
+    {
+        public string Name { get; } = name;
+
+        public string Path { get; } = path;
+
+        public List<Element> Children { get; } = [];
+
+        public List<(string Name, string Tag)> Attributes { get; } = [];
+    }
+
     /// <summary>Adds received text and reports every complete item; throws <see cref="FormatException"/> for malformed XML.</summary>
-    public void Append(string text)
+    public void Append(string text) => Append(text.AsSpan());
+
+    /// <summary>Adds received text and reports every complete item; throws <see cref="FormatException"/> for malformed XML.</summary>
+    public void Append(ReadOnlySpan<char> text)
     {
         int at = 0;
         while (at < text.Length)
         {
             CheckDocument(at);
-            if (_pending.Length > 0 && _pending[0] == '<')
+            if (_inTag)
             {
-                int close = text.IndexOf('>', at);
+                int close = text[at..].IndexOf('>');
                 if (close < 0)
                 {
-                    _pending.Append(text, at, text.Length - at);
+                    _pending.Append(text[at..]);
                     break;
                 }
-                _pending.Append(text, at, close - at);
-                string tag = _pending.ToString(1, _pending.Length - 1);
-                _pending.Clear();
+                close += at;
                 _tagEnd = close;
-                Tag(tag);
+                _inTag = false;
+                if (_pending.Length == 0)
+                {
+                    Tag(text[at..close]);
+                }
+                else
+                {
+                    _pending.Append(text[at..close]);
+                    string body = _pending.ToString();
+                    _pending.Clear();
+                    Tag(body);
+                }
                 at = close + 1;
                 continue;
             }
-            int open = text.IndexOf('<', at);
+            int open = text[at..].IndexOf('<');
             if (open < 0)
             {
-                _pending.Append(text, at, text.Length - at);
+                _pending.Append(text[at..]);
                 break;
             }
-            if (open > at || _pending.Length > 0)
+            open += at;
+            if (_pending.Length > 0)
             {
-                _pending.Append(text, at, open - at);
+                _pending.Append(text[at..open]);
                 string content = _pending.ToString();
                 _pending.Clear();
                 Text(content);
             }
-            _pending.Append('<');
+            else if (open > at)
+            {
+                Text(text[at..open]);
+            }
+            _inTag = true;
             at = open + 1;
         }
         CheckDocument(text.Length);
@@ -86,36 +133,36 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         }
     }
 
-    private void Text(string text)
+    private void Text(ReadOnlySpan<char> text)
     {
-        if (string.IsNullOrWhiteSpace(text))
+        if (text.IsWhiteSpace())
         {
             return;
         }
         if (_path.Count == 0)
         {
-            throw new FormatException($"text outside an element: \"{text.Trim()}\"");
+            throw new FormatException($"text outside an element: \"{text.Trim().ToString()}\"");
         }
-        Value?.Invoke(_path[^1], Decode(text.Trim()));
+        Value?.Invoke(_path[^1].Path, Decode(text.Trim()));
     }
 
-    private void Tag(string body)
+    private void Tag(ReadOnlySpan<char> body)
     {
-        if (body.StartsWith('?') || body.StartsWith('!'))
+        if (body.Length > 0 && body[0] is ('?' or '!'))
         {
             return;
         }
-        if (body.StartsWith('/'))
+        if (body.Length > 0 && body[0] == '/')
         {
-            string name = body[1..].Trim();
+            ReadOnlySpan<char> name = body[1..].Trim();
             if (_path.Count == 0 || !ClosesInnermost(name))
             {
-                throw new FormatException($"</{name}> does not close the open element");
+                throw new FormatException($"</{name.ToString()}> does not close the open element");
             }
             End();
             return;
         }
-        bool empty = body.EndsWith('/');
+        bool empty = body.Length > 0 && body[^1] == '/';
         if (empty)
         {
             body = body[..^1];
@@ -125,7 +172,7 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         {
             i++;
         }
-        string element = body[..i];
+        ReadOnlySpan<char> element = body[..i];
         if (element.Length == 0)
         {
             throw new FormatException("an element without a name");
@@ -134,8 +181,8 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         {
             throw new FormatException($"elements nested more than {MaxDepth} deep");
         }
-        string path = _path.Count == 0 ? element : _path[^1] + "/" + element;
-        _path.Add(path);
+        Element opened = Child(_path.Count == 0 ? _root : _path[^1], element);
+        _path.Add(opened);
         while (true)
         {
             while (i < body.Length && char.IsWhiteSpace(body[i]))
@@ -146,18 +193,23 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
             {
                 break;
             }
-            int equals = body.IndexOf('=', i);
+            int equals = body[i..].IndexOf('=');
+            if (equals >= 0)
+            {
+                equals += i;
+            }
             if (equals < 0 || equals + 1 >= body.Length || body[equals + 1] is not ('"' or '\''))
             {
-                throw new FormatException($"a malformed attribute in <{element}>");
+                throw new FormatException($"a malformed attribute in <{element.ToString()}>");
             }
             char quote = body[equals + 1];
-            int end = body.IndexOf(quote, equals + 2);
+            int end = body[(equals + 2)..].IndexOf(quote);
             if (end < 0)
             {
-                throw new FormatException($"an attribute of <{element}> is not closed");
+                throw new FormatException($"an attribute of <{element.ToString()}> is not closed");
             }
-            Value?.Invoke(path + "/@" + body[i..equals].Trim(), Decode(body[(equals + 2)..end]));
+            end += equals + 2;
+            Value?.Invoke(AttributeTag(opened, body[i..equals].Trim()), Decode(body[(equals + 2)..end]));
             i = end + 1;
         }
         if (empty)
@@ -166,16 +218,65 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         }
     }
 
-    /// <summary>True when <paramref name="name"/> is the name of the innermost open element (the last part of its path).</summary>
-    private bool ClosesInnermost(string name)
+    /// <summary>The element <paramref name="name"/> below <paramref name="parent"/>: one seen before, or a new one (kept while there is room).</summary>
+    private Element Child(Element parent, ReadOnlySpan<char> name)
     {
-        string path = _path[^1];
-        return path.EndsWith(name, StringComparison.Ordinal) && (path.Length == name.Length || path[^(name.Length + 1)] == '/');
+        foreach (Element child in parent.Children)
+        {
+            if (name.SequenceEqual(child.Name))
+            {
+                return child;
+            }
+        }
+        string text = name.ToString();
+        var element = new Element(text, parent == _root ? text : parent.Path + "/" + text);
+        if (parent.Children.Count < MaxKeptPerElement && Keep(element.Path.Length))
+        {
+            parent.Children.Add(element);
+        }
+        return element;
+    }
+
+    /// <summary>The tag of attribute <paramref name="name"/> of <paramref name="element"/> (<c>DT/DR/A/@ID</c>).</summary>
+    private string AttributeTag(Element element, ReadOnlySpan<char> name)
+    {
+        foreach ((string known, string tag) in element.Attributes)
+        {
+            if (name.SequenceEqual(known))
+            {
+                return tag;
+            }
+        }
+        string text = name.ToString();
+        string joined = element.Path + "/@" + text;
+        if (element.Attributes.Count < MaxKeptPerElement && Keep(joined.Length))
+        {
+            element.Attributes.Add((text, joined));
+        }
+        return joined;
+    }
+
+    /// <summary>True (and counted) when <paramref name="characters"/> more fit in what the splitter keeps.</summary>
+    private bool Keep(int characters)
+    {
+        if (_keptCharacters + characters > MaxKeptCharacters)
+        {
+            return false;
+        }
+        _keptCharacters += characters;
+        return true;
+    }
+
+    /// <summary>True when <paramref name="name"/> is the name of the innermost open element (the last part of its path).</summary>
+    private bool ClosesInnermost(ReadOnlySpan<char> name)
+    {
+        string path = _path[^1].Path;
+        return path.AsSpan().EndsWith(name, StringComparison.Ordinal) && (path.Length == name.Length || path[^(name.Length + 1)] == '/');
     }
 
     private void End()
     {
-        string path = _path[^1];
+        string path = _path[^1].Path;
         _path.RemoveAt(_path.Count - 1);
         if (_path.Count == 0)
         {
@@ -184,8 +285,8 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         Ended?.Invoke(path, _path.Count == 0);
     }
 
-    private static string Decode(string text) => text.Contains('&', StringComparison.Ordinal)
-        ? text.Replace("&lt;", "<", StringComparison.Ordinal).Replace("&gt;", ">", StringComparison.Ordinal)
+    private static string Decode(ReadOnlySpan<char> text) => text.Contains('&')
+        ? text.ToString().Replace("&lt;", "<", StringComparison.Ordinal).Replace("&gt;", ">", StringComparison.Ordinal)
             .Replace("&quot;", "\"", StringComparison.Ordinal).Replace("&apos;", "'", StringComparison.Ordinal).Replace("&amp;", "&", StringComparison.Ordinal)
-        : text;
+        : text.ToString();
 }

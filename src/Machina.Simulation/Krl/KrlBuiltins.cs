@@ -12,7 +12,10 @@ internal static class KrlBuiltins
     {
         void Add(KrlBuiltin builtin) => environment.Builtins[builtin.Name] = builtin;
         Add(new("IR_STOPM", null, [], (_, _) => null));
-        Add(new("INVERSE", KrlTypes.E6Axis, [new(KrlTypes.E6Pos), new(KrlTypes.E6Axis), new(KrlType.Int, IsOut: true)], Inverse));
+        Add(new("INVERSE", KrlTypes.E6Axis, [new(KrlTypes.E6Pos), new(KrlTypes.E6Axis), new(KrlType.Int, IsOut: true)], Inverse)
+        {
+            WritesOnlyArguments = true, ReturnsFresh = true,
+        });
         Add(new("StrCopy", KrlType.Bool, [new(KrlType.Array(KrlType.Char, 0), IsOut: true), KrlBuiltinParameter.Text], (_, a) =>
         {
             var target = (KrlPlace)a[0];

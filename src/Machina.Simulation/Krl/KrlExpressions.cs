@@ -40,7 +40,10 @@ internal sealed class KrlIndex(int line, KrlExpr target, IReadOnlyList<KrlExpr?>
     public KrlExpr Target { get; } = target;
 
     /// <summary>The indices (null: an index left out; none: the whole array).</summary>
-    public IReadOnlyList<KrlExpr?> Indices { get; } = indices;
+    public IReadOnlyList<KrlExpr?> Indices => Each;
+
+    /// <summary>The same indices as an array (the interpreter reads them at every element access).</summary>
+    public KrlExpr?[] Each { get; } = [.. indices];
 }
 
 /// <summary>A component of a structure (<c>$VEL.CP</c>).</summary>

@@ -26,7 +26,10 @@ internal sealed partial class KrlMachine
             case KrlIndex index:
                 return Place(index, frame).Get();
             case KrlCall call:
-                _writes++;
+                if (!WritesNothingWatched(call))
+                {
+                    _writes++;
+                }
                 CheckStack();
                 return Call(call, frame)!;
             case KrlUnary unary:
@@ -113,6 +116,38 @@ internal sealed partial class KrlMachine
         }
     }
 
+    /// <summary>
+    /// True when a call cannot write what an interrupt's condition reads: a built-in that writes only its OUT arguments (see
+    /// <see cref="KrlBuiltin.WritesOnlyArguments"/>), each of them a local or a variable no condition reads, while no condition
+    /// reads locals or calls a function. Any other call makes the interpreter look at the conditions again.
+    /// </summary>
+    private bool WritesNothingWatched(KrlCall call)
+    {
+        if (_watchesAll || call.Builtin is not { WritesOnlyArguments: true } builtin)
+        {
+            return false;
+        }
+        for (int i = 0; i < call.Arguments.Count; i++)
+        {
+            if (builtin.Parameters[i].IsOut && !LocalOrUnwatched(call.Arguments[i]))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// <summary>True when <paramref name="place"/> is (part of) a local, or of a variable that is neither watched nor an IO array.</summary>
+    private static bool LocalOrUnwatched(KrlExpr place) => place switch
+    {
+        KrlName { Slot: >= 0 } => true,
+        KrlName { Cell: { Watched: false, Signals: null } } => true,
+        KrlIndex index => LocalOrUnwatched(index.Target),
+        KrlMember member => LocalOrUnwatched(member.Target),
+        KrlOmitted => true,
+        _ => false,
+    };
+
     /// <summary>Stores <paramref name="value"/> in <paramref name="target"/> (locals and plain array elements without a place object).</summary>
     private void Assign(KrlExpr target, object value, object[] frame)
     {
@@ -143,12 +178,13 @@ internal sealed partial class KrlMachine
     /// <summary>The element of an array of <paramref name="type"/> and <paramref name="length"/> elements that the (complete) indices of <paramref name="index"/> select.</summary>
     private int Flat(KrlIndex index, KrlType type, int length, object[] frame)
     {
-        IReadOnlyList<int> sizes = type.Sizes;
+        int[] sizes = type.Dimensions;
+        KrlExpr?[] indices = index.Each;
         int flat = 0;
-        for (int d = 0; d < index.Indices.Count; d++)
+        for (int d = 0; d < indices.Length; d++)
         {
             int size = sizes[d] == 0 ? length : sizes[d];
-            int i = KrlValues.ToInt(Eval(index.Indices[d]!, frame));
+            int i = KrlValues.ToInt(Eval(indices[d]!, frame));
             if (i < 1 || i > size)
             {
                 throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");

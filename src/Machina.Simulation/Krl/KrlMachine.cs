@@ -28,8 +28,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// <summary>True when a declared interrupt's condition reads a variable the controller computes when read ($TIMER, $POS_ACT).</summary>
     private bool _watchesComputed;
 
-    /// <summary>The variables the declared interrupts' conditions read, and the sum of their write counts when last looked at.</summary>
-    private readonly List<KrlCell> _watched = [];
+    /// <summary>The controller's count of writes of watched variables when the conditions were last looked at.</summary>
     private long _checkedWatchedWrites;
     private long _checkedWrites = -1;
     private long _checkedInputs = -1;
@@ -217,8 +216,18 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         switch (statement)
         {
             case KrlAssign assign:
-                Assign(assign.Target, Eval(assign.Value, frame), frame);
+            {
+                object value = Eval(assign.Value, frame);
+                if (assign.Value is KrlCall { Builtin.ReturnsFresh: true } && assign.Target is KrlName { Slot: >= 0 } local
+                    && value is KrlStructValue made && made.Type == local.Type)
+                {
+                    // A structure the built-in made for this call (ret = EKI_…): the local takes it as it is, the copy would be the same.
+                    frame[local.Slot] = made;
+                    return Flow.Next;
+                }
+                Assign(assign.Target, value, frame);
                 return Flow.Next;
+            }
             case KrlCallStmt call:
                 try
                 {
@@ -228,7 +237,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 {
                     // RESUME of an interrupt this routine declared: the call it ran is abandoned and the program goes on after it.
                 }
-                _writes++;
+                if (!WritesNothingWatched(call.Call))
+                {
+                    _writes++;
+                }
                 return Flow.Next;
             case KrlIf branch:
                 return Block((bool)Eval(branch.Condition, frame) ? branch.Then : branch.Else, frame);
@@ -488,11 +500,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             case KrlLiteral:
                 return;
             case KrlName { Cell: { } cell }:
-                if (!cell.Watched || !_watched.Contains(cell))
-                {
-                    cell.Watched = true;
-                    _watched.Add(cell);
-                }
+                cell.Watch(Controller.WatchedWrites);
                 _watchesComputed |= cell.Read is not null && cell.Signals is null;
                 return;
             case KrlIndex index:
@@ -532,11 +540,8 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             return true;
         }
-        long writes = 0;
-        foreach (KrlCell cell in _watched)
-        {
-            writes += cell.WriteCount;
-        }
+        // One count for every watched variable of the controller (any interpreter's conditions): one read per statement.
+        long writes = Controller.WatchedWrites.Count;
         if (writes == _checkedWatchedWrites)
         {
             return false;

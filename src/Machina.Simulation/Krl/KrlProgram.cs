@@ -29,21 +29,16 @@ internal sealed class KrlCell(string name, KrlType type, object value)
     /// True once an interrupt's condition reads the variable (set when the interrupt is declared, never cleared): only then may an
     /// interpreter's write of one of its elements make a condition change.
     /// </summary>
-    public bool Watched { get; set; }
+    public bool Watched => _watchedWrites is not null;
 
-    /// <summary>How many times a program wrote the variable since it became <see cref="Watched"/> (any interpreter's thread).</summary>
-    public long WriteCount => Interlocked.Read(ref _writeCount);
+    /// <summary>The controller's count of writes of watched variables, once the variable is watched.</summary>
+    private KrlWatchedWrites? _watchedWrites;
 
-    private long _writeCount;
+    /// <summary>Marks the variable as read by an interrupt's condition: its writes count in <paramref name="writes"/> from now on.</summary>
+    public void Watch(KrlWatchedWrites writes) => _watchedWrites ??= writes;
 
     /// <summary>Counts a program's write of the variable or an element of it, when an interrupt's condition reads it.</summary>
-    public void CountWrite()
-    {
-        if (Watched)
-        {
-            Interlocked.Increment(ref _writeCount);
-        }
-    }
+    public void CountWrite() => _watchedWrites?.Add();
 
     /// <summary>Called after a program wrote the variable or an element of it (the element's index, or -1 for all of it).</summary>
     public Action<int>? Written { get; init; }
@@ -127,3 +122,18 @@ internal sealed class KrlModule(string name)
 
 /// <summary>An EXT or EXTFCT declaration: the routine it names, in a file at a line.</summary>
 internal sealed record KrlExternal(string Name, string File, int Line);
+
+/// <summary>
+/// How many times a program wrote a variable that an interrupt's condition reads (any of them, any interpreter's thread): an
+/// interpreter whose timer counts looks at its conditions again only after this changed.
+/// </summary>
+internal sealed class KrlWatchedWrites
+{
+    private long _count;
+
+    /// <summary>The count now.</summary>
+    public long Count => Volatile.Read(ref _count);
+
+    /// <summary>Counts one write.</summary>
+    public void Add() => Interlocked.Increment(ref _count);
+}

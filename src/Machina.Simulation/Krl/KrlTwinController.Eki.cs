@@ -84,7 +84,7 @@ internal sealed partial class KrlTwinController
         KrlBuiltinParameter text = KrlBuiltinParameter.Text;
         KrlType status = KrlTypes.EkiStatus;
         void Add(string name, KrlBuiltinParameter[] parameters, Func<KrlMachine, object[], object?> run) =>
-            Environment.Builtins[name] = new KrlBuiltin(name, status, parameters, run);
+            Environment.Builtins[name] = new KrlBuiltin(name, status, parameters, run) { WritesOnlyArguments = true, ReturnsFresh = true };
         Add("EKI_Init", [text], (_, a) => EkiInit(Str(a[0])));
         Add("EKI_Open", [text], (_, a) => EkiOpen(Str(a[0])));
         Add("EKI_Close", [text], (_, a) => EkiClose(Str(a[0]), clear: false));
@@ -156,13 +156,26 @@ internal sealed partial class KrlTwinController
     private static KrlStructValue Status(int buffered, int read, int error, bool connected) =>
         new(KrlTypes.EkiStatus, [KrlValues.Box(buffered), KrlValues.Box(read), KrlValues.Box(error), KrlValues.Box(connected), KrlValues.Box(0)]);
 
+    /// <summary>The channel an EKI_ function found last, by the name it was given (an interpreter names the same one call after call).</summary>
+    private sealed record LastChannel(string Name, EkiChannel Channel);
+
+    /// <summary>Set under the gate with the channels it was found among; null again whenever a channel is added or removed.</summary>
+    private volatile LastChannel? _lastChannel;
+
     private EkiChannel Channel(string name)
     {
+        if (_lastChannel is { } last && string.Equals(last.Name, name, StringComparison.OrdinalIgnoreCase))
+        {
+            return last.Channel;
+        }
         lock (_gate)
         {
-            return _ekiChannels.TryGetValue(name, out EkiChannel? channel)
-                ? channel
-                : throw new KrlRuntimeException($"EthernetKRL: the channel {name} is not initialised (EKI_Init)");
+            if (!_ekiChannels.TryGetValue(name, out EkiChannel? channel))
+            {
+                throw new KrlRuntimeException($"EthernetKRL: the channel {name} is not initialised (EKI_Init)");
+            }
+            _lastChannel = new LastChannel(name, channel);
+            return channel;
         }
     }
 
@@ -179,6 +192,7 @@ internal sealed partial class KrlTwinController
                 throw new KrlRuntimeException($"EthernetKRL: no configuration {name}.xml on the controller");
             }
             _ekiChannels[name] = new EkiChannel(name, configuration, this);
+            _lastChannel = null;
         }
         InputsChanged();
         return Status(0, 0, 0, false);
@@ -208,6 +222,7 @@ internal sealed partial class KrlTwinController
             lock (_gate)
             {
                 _ekiChannels.Remove(name);
+                _lastChannel = null;
             }
             channel.Dispose();
             InputsChanged();
@@ -237,6 +252,7 @@ internal sealed partial class KrlTwinController
             {
                 return;
             }
+            _lastChannel = null;
         }
         channel.Close();
         channel.Dispose();
@@ -308,6 +324,7 @@ internal sealed partial class KrlTwinController
         {
             channels = [.. _ekiChannels.Values];
             _ekiChannels.Clear();
+            _lastChannel = null;
         }
         foreach (EkiChannel channel in channels)
         {

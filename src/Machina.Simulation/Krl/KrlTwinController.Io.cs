@@ -15,6 +15,9 @@ internal sealed partial class KrlTwinController
     /// </summary>
     public TwinIo Io { get; } = new();
 
+    /// <summary>How many times a program wrote a variable an interrupt's condition reads (see <see cref="KrlCell.Watch"/>).</summary>
+    public KrlWatchedWrites WatchedWrites { get; } = new();
+
     /// <summary>How many times inputs, flags or channels changed (a WAIT FOR compares it before it sleeps).</summary>
     public long InputsVersion => Io.Version;
 

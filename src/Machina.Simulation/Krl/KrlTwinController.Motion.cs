@@ -78,19 +78,22 @@ internal sealed partial class KrlTwinController
         Arm.Record(Line, TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Environment.System["$TOOL"].Value));
     }
 
-    private Pose FrameOf(string name) => PoseOf((KrlStructValue)Environment.System[name].Value);
-
-    private static Pose PoseOf(KrlStructValue frame) =>
-        new(frame.Number("X"), frame.Number("Y"), frame.Number("Z"), Rotation.FromYawPitchRoll(frame.Number("A"), frame.Number("B"), frame.Number("C")));
-
     /// <summary>
     /// The axes that put the TCP at <paramref name="position"/> (in $BASE with $TOOL), nearest to <paramref name="near"/>; with
     /// <paramref name="useStatusTurn"/> only those of the position's S and T. Null when none is within the software limit switches.
     /// </summary>
     public Joints? Solve(KrlStructValue position, Joints near, bool useStatusTurn, out string why)
     {
-        Pose flange = FrameOf("$BASE") * PoseOf(position) * FrameOf("$TOOL").Inverse();
+        KeptFrame baseFrame = Kept("$BASE"), tool = Kept("$TOOL");
+        Span<double> target = stackalloc double[6];
+        PoseComponents(position, target);
         IKinematics kinematics = Options.Model.Kinematics;
+        if (!useStatusTurn && KeptFor(kinematics, baseFrame, tool, target, near) is { } kept)
+        {
+            why = kept.Why;
+            return kept.Solution;
+        }
+        Pose flange = baseFrame.Pose * PoseOf(target) * tool.Pose.Inverse();
         why = "";
         if (useStatusTurn)
         {
@@ -113,6 +116,7 @@ internal sealed partial class KrlTwinController
                 ? $"the axis position that reaches it is beyond the software limit switches ({issue})"
                 : "it is outside the robot's workspace";
         }
+        _keptSolution = new KeptSolution(kinematics, baseFrame, tool, target.ToArray(), near, solution, why);
         return solution;
     }
 

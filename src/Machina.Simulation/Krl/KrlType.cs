@@ -47,7 +47,10 @@ internal sealed class KrlType
     public KrlType? Element { get; private init; }
 
     /// <summary>An array's sizes (a 0 size: a parameter array whose size comes from the caller).</summary>
-    public IReadOnlyList<int> Sizes { get; private init; } = [];
+    public IReadOnlyList<int> Sizes => Dimensions;
+
+    /// <summary>The same sizes as an array (the interpreter indexes them at every element access).</summary>
+    public int[] Dimensions { get; private init; } = [];
 
     /// <summary>INT.</summary>
     public static KrlType Int { get; } = new(KrlKind.Int, "INT");
@@ -77,7 +80,7 @@ internal sealed class KrlType
     public static KrlType Array(KrlType element, params int[] sizes) =>
         new(KrlKind.Array, $"{element.Name}[{string.Join(",", sizes.Select(s => s == 0 ? "" : s.ToString(System.Globalization.CultureInfo.InvariantCulture)))}]")
         {
-            Element = element, Sizes = sizes,
+            Element = element, Dimensions = sizes,
         };
 
     /// <summary>The index of component <paramref name="field"/> (case-insensitive), or -1.</summary>
@@ -93,8 +96,15 @@ internal sealed class KrlType
         return -1;
     }
 
+    private int[]? _poseIndexes;
+
+    /// <summary>The indexes of the components X, Y, Z, A, B and C (-1 for one the type lacks), found once.</summary>
+    public int[] PoseIndexes => _poseIndexes ??= [FieldIndex("X"), FieldIndex("Y"), FieldIndex("Z"), FieldIndex("A"), FieldIndex("B"), FieldIndex("C")];
+
     /// <summary>The number of elements of an array type.</summary>
-    public int Length => Sizes.Aggregate(1, (a, s) => a * Math.Max(s, 1));
+    public int Length => _length >= 0 ? _length : _length = Dimensions.Aggregate(1, (a, s) => a * Math.Max(s, 1));
+
+    private int _length = -1;
 
     /// <inheritdoc/>
     public override string ToString() => Name;

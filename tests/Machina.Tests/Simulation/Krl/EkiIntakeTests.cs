@@ -66,6 +66,31 @@ public sealed class EkiIntakeTests
         Assert.Equal(["A/B", "A!"], ended.Take(2));
     }
 
+    [Fact]
+    public void Splitter_SameNamesUnderOtherElements_AnyChunking_TheSameItems()
+    {
+        const string Xml = "<?xml version=\"1.0\"?><DT><DR><A ID=\"1\" V=\"x &amp; y\"/><A ID='2'/></DR><B ID=\"3\">t</B></DT>\n"
+            + "<DT><B ID=\"4\"/><DR><A V=\"5\" ID=\"6\"></A></DR></DT><A ID=\"7\"/>";
+        string[] expected =
+        [
+            "DT/DR/A/@ID=1", "DT/DR/A/@V=x & y", "end DT/DR/A", "DT/DR/A/@ID=2", "end DT/DR/A", "end DT/DR", "DT/B/@ID=3", "DT/B=t",
+            "end DT/B", "end DT!", "DT/B/@ID=4", "end DT/B", "DT/DR/A/@V=5", "DT/DR/A/@ID=6", "end DT/DR/A", "end DT/DR", "end DT!",
+            "A/@ID=7", "end A!",
+        ];
+        for (int cut = 0; cut <= Xml.Length; cut++)
+        {
+            var splitter = new EkiXmlSplitter();
+            var items = new List<string>();
+            splitter.Value += (tag, value) => items.Add(tag + "=" + value);
+            splitter.Ended += (path, top) => items.Add("end " + path + (top ? "!" : ""));
+
+            splitter.Append(Xml[..cut]);
+            splitter.Append(Xml.AsSpan(cut));
+
+            Assert.Equal(expected, items);
+        }
+    }
+
     /// <summary>Opens the channel, sends <paramref name="xml"/> as a client; returns the pendant's last line once the twin closed the connection.</summary>
     private static string SendAndWaitForClose(string xml)
     {

@@ -1,0 +1,114 @@
+namespace Machina.Simulation.Krl;
+
+/// <summary>
+/// What motion keeps from one statement to the next: the poses of $BASE and $TOOL while their components stay the same, and the
+/// last target solved. The Machina driver solves each Cartesian target twice, with INVERSE in its check and again in the LIN,
+/// from the same axes: the second gets the first's answer. Each is kept whole in one object that is replaced (never changed), so
+/// the robot and submit interpreters may read them at once; a key is compared to the bit.
+/// </summary>
+internal sealed partial class KrlTwinController
+{
+    private KeptFrame? _keptBase;
+    private KeptFrame? _keptTool;
+    private KeptSolution? _keptSolution;
+
+    /// <summary>A frame's six components (X, Y, Z, A, B, C) and its pose.</summary>
+    private sealed class KeptFrame(double[] components, Pose pose)
+    {
+        public double[] Components { get; } = components;
+
+        public Pose Pose { get; } = pose;
+    }
+
+    /// <summary>A target solved: the frames and the target's six components, the axes it was solved from, and the answer.</summary>
+    private sealed class KeptSolution(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, double[] target, Joints near, Joints? solution, string why)
+    {
+        public IKinematics Kinematics { get; } = kinematics;
+
+        public KeptFrame Base { get; } = baseFrame;
+
+        public KeptFrame Tool { get; } = tool;
+
+        public double[] Target { get; } = target;
+
+        public Joints Near { get; } = near;
+
+        public Joints? Solution { get; } = solution;
+
+        public string Why { get; } = why;
+    }
+
+    /// <summary>$BASE or $TOOL as a pose (taken again while its components are the same).</summary>
+    private Pose FrameOf(string name) => Kept(name).Pose;
+
+    private KeptFrame Kept(string name)
+    {
+        bool isBase = name == "$BASE";
+        var frame = (KrlStructValue)Environment.System[name].Value;
+        Span<double> components = stackalloc double[6];
+        PoseComponents(frame, components);
+        KeptFrame? kept = isBase ? _keptBase : name == "$TOOL" ? _keptTool : null;
+        if (kept is not null && Same(kept.Components, components))
+        {
+            return kept;
+        }
+        kept = new KeptFrame(components.ToArray(), PoseOf(components));
+        if (isBase)
+        {
+            _keptBase = kept;
+        }
+        else if (name == "$TOOL")
+        {
+            _keptTool = kept;
+        }
+        return kept;
+    }
+
+    /// <summary>X, Y, Z, A, B and C of a FRAME, POS or E6POS value (0 for a component its type lacks).</summary>
+    private static void PoseComponents(KrlStructValue frame, Span<double> components)
+    {
+        int[] indexes = frame.Type.PoseIndexes;
+        for (int i = 0; i < 6; i++)
+        {
+            components[i] = indexes[i] >= 0 ? KrlValues.ToReal(frame.Values[indexes[i]]) : 0;
+        }
+    }
+
+    private static Pose PoseOf(ReadOnlySpan<double> c) => new(c[0], c[1], c[2], Rotation.FromYawPitchRoll(c[3], c[4], c[5]));
+
+    private static Pose PoseOf(KrlStructValue frame)
+    {
+        Span<double> components = stackalloc double[6];
+        PoseComponents(frame, components);
+        return PoseOf(components);
+    }
+
+    /// <summary>The answer kept for this target, frames and start, or null.</summary>
+    private KeptSolution? KeptFor(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, ReadOnlySpan<double> target, Joints near) =>
+        _keptSolution is { } kept && ReferenceEquals(kept.Kinematics, kinematics) && ReferenceEquals(kept.Base, baseFrame) && ReferenceEquals(kept.Tool, tool) && Same(kept.Target, target)
+            && Same(kept.Near, near) ? kept : null;
+
+    private static bool Same(ReadOnlySpan<double> a, ReadOnlySpan<double> b)
+    {
+        for (int i = 0; i < a.Length; i++)
+        {
+            if (BitConverter.DoubleToInt64Bits(a[i]) != BitConverter.DoubleToInt64Bits(b[i]))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static bool Same(Joints a, Joints b)
+    {
+        for (int i = 0; i < Joints.Count; i++)
+        {
+            if (BitConverter.DoubleToInt64Bits(a[i]) != BitConverter.DoubleToInt64Bits(b[i]))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+}
