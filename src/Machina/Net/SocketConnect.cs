@@ -19,7 +19,7 @@ internal static class SocketConnect
 
     /// <summary>
     /// Connects to <paramref name="host"/> (a name is resolved; its addresses are tried in turn) without blocking the caller:
-    /// a connection that is not made at once is waited for on a thread of its own. Throws the last address's
+    /// the addresses are tried, and each connection waited for, on a thread of its own (one per connect, not per message). Throws the last address's
     /// <see cref="SocketException"/> when none accepts, <see cref="OperationCanceledException"/> when cancelled first.
     /// </summary>
     internal static async Task<Socket> ConnectAsync(string host, int port, CancellationToken cancellationToken)
@@ -27,42 +27,20 @@ internal static class SocketConnect
         IPAddress[] addresses = IPAddress.TryParse(host, out IPAddress? address)
             ? [address]
             : await Dns.GetHostAddressesAsync(host, cancellationToken).ConfigureAwait(false);
-        SocketException? refused = null;
-        foreach (IPAddress a in addresses)
-        {
-            Socket? socket = null;
-            try
-            {
-                Socket started = socket = Start(a, port);
-                if (!Done(started, 0))
-                {
-                    await Task.Factory.StartNew(() => WaitWritable(started, cancellationToken), cancellationToken,
-                        TaskCreationOptions.LongRunning, TaskScheduler.Default).ConfigureAwait(false);
-                }
-                Finish(started);
-                return started;
-            }
-            catch (SocketException e)
-            {
-                socket?.Dispose();
-                refused = e;
-            }
-            catch
-            {
-                socket?.Dispose();
-                throw;
-            }
-        }
-        throw refused ?? new SocketException((int)SocketError.HostNotFound);
+        return await Task.Factory.StartNew(() => ConnectToAny(addresses, port, cancellationToken), cancellationToken,
+            TaskCreationOptions.LongRunning, TaskScheduler.Default).ConfigureAwait(false);
     }
 
     /// <summary>
     /// Connects to <paramref name="host"/> on the caller's thread (a twin's program, which waits for its <c>socket_open</c>):
     /// as <see cref="ConnectAsync"/>, blocking.
     /// </summary>
-    internal static Socket Connect(string host, int port, CancellationToken cancellationToken)
+    internal static Socket Connect(string host, int port, CancellationToken cancellationToken) =>
+        ConnectToAny(IPAddress.TryParse(host, out IPAddress? address) ? [address] : Dns.GetHostAddresses(host), port, cancellationToken);
+
+    /// <summary>Tries each address in turn, waiting on the caller's thread; throws the last refusal when none accepts.</summary>
+    private static Socket ConnectToAny(IPAddress[] addresses, int port, CancellationToken cancellationToken)
     {
-        IPAddress[] addresses = IPAddress.TryParse(host, out IPAddress? address) ? [address] : Dns.GetHostAddresses(host);
         SocketException? refused = null;
         foreach (IPAddress a in addresses)
         {
