@@ -22,7 +22,12 @@ public sealed partial class VirtualUrController : IUrSocketSeam
     private int _driverProgram;
     private bool _inResponse;
     private bool _awaitingHeader;
-    private StringBuilder? _reading;
+
+    /// <summary>True while the values of an instruction are read into <see cref="_readText"/> (its header came).</summary>
+    private bool _reading;
+
+    /// <summary>The received instruction as text for the request log, one builder kept for every instruction.</summary>
+    private readonly StringBuilder _readText = new();
 
     /// <summary>An acknowledgement the program is writing: executed by the arm already, sent (or not) by the fault plan.</summary>
     private sealed record TwinAck(int Id, int Program, TaskCompletionSource<bool> Done);
@@ -35,7 +40,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
             _driverProgram++;
             _inResponse = false;
             _awaitingHeader = true;
-            _reading = null;
+            _reading = false;
         }
         var client = new TcpClient();
         client.Client.Dispose();
@@ -62,14 +67,15 @@ public sealed partial class VirtualUrController : IUrSocketSeam
             }
             if (_awaitingHeader && n == 2)
             {
-                _reading = new StringBuilder().Append(Num.Inv, $"{values.Items[1]} {values.Items[2]}");
+                _readText.Clear().Append(Num.Inv, $"{values.Items[1]} {values.Items[2]}");
+                _reading = true;
                 _awaitingHeader = false;
             }
-            else if (_reading is not null)
+            else if (_reading)
             {
                 for (int i = 1; i <= n; i++)
                 {
-                    _reading.Append(Num.Inv, $" {values.Items[i]}");
+                    _readText.Append(Num.Inv, $" {values.Items[i]}");
                 }
             }
         }
@@ -97,8 +103,8 @@ public sealed partial class VirtualUrController : IUrSocketSeam
                 _inResponse = value != ResponseEnd;
                 return socket.SendDirect(bytes);
             }
-            text = _reading?.ToString() ?? value.ToString(Num.Inv);
-            _reading = null;
+            text = _reading ? _readText.ToString() : value.ToString(Num.Inv);
+            _reading = false;
             _awaitingHeader = true;
             generation = _driverProgram;
         }

@@ -28,8 +28,10 @@ internal static partial class UrBuiltins
             UrSocket socket = Socket(m, line, a, 1, "socket_read_binary_integer");
             double timeout = Num(a, 2, line, "socket_read_binary_integer", "timeout");
             FinishBlendBeforeWaiting(m, line, socket);
-            CancellationToken token = m.Cancellation;
-            return m.Unlocked(() => socket.ReadIntegers(count, timeout, token));
+            using (m.Unlock())
+            {
+                return socket.ReadIntegers(count, timeout, m.Cancellation);
+            }
         }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
         Add(t, "socket_read_ascii_float", (m, line, a) =>
         {
@@ -58,7 +60,10 @@ internal static partial class UrBuiltins
             // A controller converts a float here as it converts to int anywhere, truncating: the original Machina.NET driver sends
             // socket_send_int(FACTOR_M * pose[0]), which ran on software 3.x.
             int value = UrValue.Int(a[0], line, "socket_send_int: argument 'value'");
-            return UrValue.Box(m.Unlocked(() => socket.SendInt(value)));
+            using (m.Unlock())
+            {
+                return UrValue.Box(socket.SendInt(value));
+            }
         },
             R("value"), O("socket_name", DefaultSocket));
         Add(t, "socket_send_byte", (m, line, a) =>

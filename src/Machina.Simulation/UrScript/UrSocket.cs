@@ -169,17 +169,17 @@ internal sealed class UrSocket(Socket socket) : IDisposable
         var items = new object[count + 1];
         if (!Fill(4 * count, timeoutSeconds, cancellation))
         {
-            items[0] = 0;
+            items[0] = UrValue.Box(0);
             for (int i = 1; i <= count; i++)
             {
-                items[i] = -1;
+                items[i] = UrValue.Box(-1);
             }
             return new UrList(items);
         }
-        items[0] = count;
+        items[0] = UrValue.Box(count);
         for (int i = 0; i < count; i++)
         {
-            items[i + 1] = BinaryPrimitives.ReadInt32BigEndian(Pending.Slice(4 * i, 4));
+            items[i + 1] = UrValue.Box(BinaryPrimitives.ReadInt32BigEndian(Pending.Slice(4 * i, 4)));
         }
         Consume(4 * count);
         var read = new UrList(items);

@@ -32,6 +32,12 @@ internal static class UrValue
     /// <summary>A boxed boolean without allocation.</summary>
     public static object Box(bool value) => value ? TrueBox : FalseBox;
 
+    /// <summary>The boxes of the ints −1 to 254 (counts, codes, flags: what a socket read gives most), made once; a box is never written.</summary>
+    private static readonly object[] SmallInts = [.. Enumerable.Range(-1, 256).Select(i => (object)i)];
+
+    /// <summary>A boxed int; without allocation from −1 to 254.</summary>
+    public static object Box(int value) => (uint)(value + 1) < (uint)SmallInts.Length ? SmallInts[value + 1] : value;
+
     /// <summary>An int or a float as a double.</summary>
     private static double AsDouble(object number) => number is int i ? i : (double)number;
 

@@ -6,49 +6,58 @@ internal static class KinematicsCore
     internal const int MaxSolutions = 8;
 
     /// <summary>Moves each joint to the turn (θ + k·360°) within the limits that is closest to <paramref name="reference"/>; false when a joint has none.</summary>
+    /// <remarks>Called for every raw solution of every check (16 times per streamed move of a known arm): joint by joint on the fields, no indexers.</remarks>
     internal static bool FitLimits(RobotModel model, Joints joints, Joints reference, out Joints fitted)
     {
-        Span<double> v = stackalloc double[Joints.Count];
-        for (int i = 0; i < Joints.Count; i++)
+        Joints min = model.MinJoints, max = model.MaxJoints;
+        if (FitJoint(joints.J1, reference.J1, min.J1, max.J1, out double j1) && FitJoint(joints.J2, reference.J2, min.J2, max.J2, out double j2)
+            && FitJoint(joints.J3, reference.J3, min.J3, max.J3, out double j3) && FitJoint(joints.J4, reference.J4, min.J4, max.J4, out double j4)
+            && FitJoint(joints.J5, reference.J5, min.J5, max.J5, out double j5) && FitJoint(joints.J6, reference.J6, min.J6, max.J6, out double j6))
         {
-            double min = model.MinJoints[i], max = model.MaxJoints[i], ref0 = reference[i];
-            double value = joints[i];
-            // Nearest turn to the reference, then step into the range if needed.
-            double k = Math.Round((ref0 - value) / 360.0);
-            double best = double.NaN, bestDistance = double.PositiveInfinity;
-            for (double d = k - 1; d <= k + 1; d++)
+            fitted = new Joints(j1, j2, j3, j4, j5, j6);
+            return true;
+        }
+        fitted = default;
+        return false;
+    }
+
+    /// <summary>One joint of <see cref="FitLimits"/>: the turn of <paramref name="value"/> within [min, max] closest to <paramref name="ref0"/>.</summary>
+    private static bool FitJoint(double value, double ref0, double min, double max, out double fitted)
+    {
+        // Nearest turn to the reference, then step into the range if needed.
+        double k = Math.Round((ref0 - value) / 360.0);
+        double best = double.NaN, bestDistance = double.PositiveInfinity;
+        for (double d = k - 1; d <= k + 1; d++)
+        {
+            double candidate = value + 360.0 * d;
+            if (candidate >= min - 1e-9 && candidate <= max + 1e-9)
             {
-                double candidate = value + 360.0 * d;
-                if (candidate >= min - 1e-9 && candidate <= max + 1e-9)
+                double distance = Math.Abs(candidate - ref0);
+                if (distance < bestDistance)
                 {
-                    double distance = Math.Abs(candidate - ref0);
-                    if (distance < bestDistance)
-                    {
-                        best = candidate; bestDistance = distance;
-                    }
+                    best = candidate; bestDistance = distance;
+                }
+            }
+        }
+        if (double.IsNaN(best))
+        {
+            // Wide ranges (beyond ±540°) or a reference far away: search the whole range.
+            double start = value + 360.0 * Math.Ceiling((min - 1e-9 - value) / 360.0);
+            for (double candidate = start; candidate <= max + 1e-9; candidate += 360.0)
+            {
+                double distance = Math.Abs(candidate - ref0);
+                if (distance < bestDistance)
+                {
+                    best = candidate; bestDistance = distance;
                 }
             }
             if (double.IsNaN(best))
             {
-                // Wide ranges (beyond ±540°) or a reference far away: search the whole range.
-                double start = value + 360.0 * Math.Ceiling((min - 1e-9 - value) / 360.0);
-                for (double candidate = start; candidate <= max + 1e-9; candidate += 360.0)
-                {
-                    double distance = Math.Abs(candidate - ref0);
-                    if (distance < bestDistance)
-                    {
-                        best = candidate; bestDistance = distance;
-                    }
-                }
-                if (double.IsNaN(best))
-                {
-                    fitted = default;
-                    return false;
-                }
+                fitted = 0;
+                return false;
             }
-            v[i] = Math.Clamp(best, min, max);
         }
-        fitted = Joints.FromArray(v);
+        fitted = Math.Clamp(best, min, max);
         return true;
     }
 
@@ -111,20 +120,33 @@ internal static class KinematicsCore
             {
                 continue;
             }
-            double maxDelta = 0, sum = 0;
-            for (int j = 0; j < Joints.Count; j++)
-            {
-                double d = Math.Abs(fitted[j] - current[j]);
-                maxDelta = Math.Max(maxDelta, d);
-                sum += d;
-            }
-            double cost = maxDelta + 1e-3 * sum;
+            double cost = Cost(fitted, current);
             if (cost < bestCost)
             {
                 bestCost = cost; best = fitted;
             }
         }
         return best;
+    }
+
+    /// <summary>How far <paramref name="fitted"/> is from <paramref name="current"/> for <see cref="ClosestOf"/>: the largest joint change plus a thousandth of their sum.</summary>
+    private static double Cost(Joints fitted, Joints current)
+    {
+        double maxDelta = 0, sum = 0;
+        Step(fitted.J1 - current.J1, ref maxDelta, ref sum);
+        Step(fitted.J2 - current.J2, ref maxDelta, ref sum);
+        Step(fitted.J3 - current.J3, ref maxDelta, ref sum);
+        Step(fitted.J4 - current.J4, ref maxDelta, ref sum);
+        Step(fitted.J5 - current.J5, ref maxDelta, ref sum);
+        Step(fitted.J6 - current.J6, ref maxDelta, ref sum);
+        return maxDelta + 1e-3 * sum;
+
+        static void Step(double change, ref double maxDelta, ref double sum)
+        {
+            double d = Math.Abs(change);
+            maxDelta = Math.Max(maxDelta, d);
+            sum += d;
+        }
     }
 
     internal static Joints? Solve(ISolver solver, RobotModel model, Pose flange, ArmConfiguration configuration)
@@ -272,6 +294,10 @@ internal static class KinematicsCore
     internal static double WrapDegrees(double radians)
     {
         double d = radians * Angles.ToDegrees;
+        if (d > -180.0 && d < 180.0)
+        {
+            return d;   // what IEEERemainder gives inside (−180°, 180°), without its fmod (a solver wraps six angles of each of eight solutions)
+        }
         d = Math.IEEERemainder(d, 360.0);
         return d <= -180.0 ? d + 360.0 : d;
     }

@@ -79,22 +79,33 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
     public KinematicIssue? WhyNoSolution(Pose flange) => KinematicsCore.WhyNoSolution(this, Model, flange, Pose.Identity);
 
     /// <inheritdoc/>
-    public ArmConfiguration ConfigurationOf(Joints joints)
-    {
-        Affine t = ForwardAffine(joints);
-        double px = t.Px - _dh.D6 * t.R02, py = t.Py - _dh.D6 * t.R12;
-        double delta = joints.J1 * Angles.ToRadians - Math.Atan2(py, px) - HalfPi;
-        return new ArmConfiguration(Math.Sin(delta) < 0, Math.Sin(joints.J3 * Angles.ToRadians) > 0, Math.Sin(joints.J5 * Angles.ToRadians) < 0);
-    }
+    /// <remarks>
+    /// The shoulder is "left" when the wrist centre is ahead of axis 1 in the arm's plane (<see cref="WristReach"/> &gt; 0): the angle
+    /// between axis 1's direction and the wrist centre, less 90°, has the sine −R/√(R² + d4²). No forward kinematics: the checks of a
+    /// streamed move ask this three times.
+    /// </remarks>
+    public ArmConfiguration ConfigurationOf(Joints joints) =>
+        new(WristReach(joints) > 0, Math.Sin(joints.J3 * Angles.ToRadians) > 0, Math.Sin(joints.J5 * Angles.ToRadians) < 0);
 
     SingularityMeasure ISolver.Measure(Joints joints)
     {
-        Affine t = ForwardAffine(joints);
-        double px = t.Px - _dh.D6 * t.R02, py = t.Py - _dh.D6 * t.R12;
         double wrist = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(joints.J5 * Angles.ToRadians)))) * Angles.ToDegrees;
         double elbow = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(joints.J3 * Angles.ToRadians)))) * Angles.ToDegrees;
-        double shoulder = Math.Abs(Math.Sqrt(px * px + py * py) - Math.Abs(_dh.D4));
+        // The wrist centre's distance from axis 1 is √(R² + d4²) (R along the arm's plane, d4 across it).
+        double reach = WristReach(joints);
+        double shoulder = Math.Abs(Math.Sqrt(reach * reach + _dh.D4 * _dh.D4) - Math.Abs(_dh.D4));
         return new SingularityMeasure(wrist, elbow, shoulder);
+    }
+
+    /// <summary>
+    /// Where the wrist centre (frame 5's origin, the flange less d6 along its axis) is along the arm's plane: R = a2·cos θ2 +
+    /// a3·cos(θ2 + θ3) + d5·sin(θ2 + θ3 + θ4), so that it lies at (R·cos θ1 + d4·sin θ1, R·sin θ1 − d4·cos θ1) in the base's XY.
+    /// </summary>
+    private double WristReach(Joints j)
+    {
+        const double r = Angles.ToRadians;
+        double t2 = j.J2 * r, t23 = t2 + j.J3 * r;
+        return _dh.A2 * Math.Cos(t2) + _dh.A3 * Math.Cos(t23) + _dh.D5 * Math.Sin(t23 + j.J4 * r);
     }
 
     int ISolver.SolveRaw(in Affine t, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
@@ -112,6 +123,8 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         {
             double t1 = phi1 + (shoulder == 0 ? phi2 : -phi2) + HalfPi;
             double c1 = Math.Cos(t1), s1 = Math.Sin(t1);
+            // T01⁻¹ · T, the same for both wrists.
+            Affine t1t = Affine.Dh(c1, s1, d1, 0, 0, 1).InverseRigid() * t;
             // The unit vector (s1, −c1, 0) seen from the flange is (s5·cos θ6, −s5·sin θ6, cos θ5). Taking θ5 with atan2 from it (rather
             // than acos of the flange position, which equals cos θ5 exactly) keeps full precision near the straight wrist θ5 = 0.
             double ux = t.R00 * s1 - t.R10 * c1, uy = t.R01 * s1 - t.R11 * c1, c5 = t.R02 * s1 - t.R12 * c1;
@@ -124,8 +137,7 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
                 // Straight wrist: θ6 is free (axes 2, 3 and 4 make up for it); keep the reference's.
                 double t6 = s5Abs < 1e-12 ? reference.J6 * Angles.ToRadians : Math.Atan2(-uy * sign, ux * sign);
                 // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
-                Affine t14 = Affine.Dh(t1, d1, 0, 0, 1).InverseRigid() * t
-                    * Affine.Dh(t6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(t5, d5, 0, 0, -1).InverseRigid();
+                Affine t14 = t1t * Affine.Dh(t6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(t5, d5, 0, 0, -1).InverseRigid();
                 double x = t14.Px, y = t14.Py;
                 double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
                 if (c3 > 1 + 1e-12 || c3 < -1 - 1e-12)
@@ -133,11 +145,13 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
                     continue;
                 }
                 double t3Abs = Math.Acos(Math.Clamp(c3, -1, 1));
+                // The same for both elbows.
+                double towardsWrist = Math.Atan2(y, x), arm234 = Math.Atan2(t14.R10, t14.R00);
                 for (int elbow = 0; elbow < 2; elbow++)
                 {
                     double t3 = elbow == 0 ? -t3Abs : t3Abs;
-                    double t2 = Math.Atan2(y, x) - Math.Atan2(a3 * Math.Sin(t3), a2 + a3 * Math.Cos(t3));
-                    double t4 = Math.Atan2(t14.R10, t14.R00) - t2 - t3;
+                    double t2 = towardsWrist - Math.Atan2(a3 * Math.Sin(t3), a2 + a3 * Math.Cos(t3));
+                    double t4 = arm234 - t2 - t3;
                     joints[count] = new Joints(
                         KinematicsCore.WrapDegrees(t1), KinematicsCore.WrapDegrees(t2), KinematicsCore.WrapDegrees(t3),
                         KinematicsCore.WrapDegrees(t4), KinematicsCore.WrapDegrees(t5), KinematicsCore.WrapDegrees(t6));
