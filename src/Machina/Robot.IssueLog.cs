@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 public sealed partial class Robot
@@ -30,6 +32,7 @@ public sealed partial class Robot
     }
 
     /// <summary>Runs <paramref name="work"/> under the issue lock, then writes what it logged, after the lock is released (also when it throws).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private TResult UnderIssueLock<TState, TResult>(TState state, Func<Robot, TState, TResult> work)
     {
         List<(LogLevel Level, string Message, RobotAction? Refused)>? lines = null;

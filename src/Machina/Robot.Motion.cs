@@ -1,17 +1,26 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 public sealed partial class Robot
 {
     /// <summary>Moves the tool tip by an offset in mm (in the world frame, or the tool's frame after <c>Coordinates("Local")</c>).</summary>
+    // AggressiveOptimization on the four moves of a script's loop, on Issue and on the action's constructor: a fresh process
+    // issues 10^5 moves before the runtime has optimised these (it did so only after the loop had ended), so each move ran
+    // them, and the small property getters they call, as unoptimised first-tier code (docs/performance.md, session 26).
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public bool Move(Vector direction) => Issue(new ActionTranslation(Arg.Finite(direction), true));
 
     /// <summary>Moves the tool tip by (x, y, z) mm.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public bool Move(double incX, double incY, double incZ = 0) => Issue(new ActionTranslation(Arg.Vector(incX, incY, incZ), true));
 
     /// <summary>Moves the tool tip to a position in mm, keeping its orientation.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public bool MoveTo(Vector position) => Issue(new ActionTranslation(Arg.Finite(position), false));
 
     /// <summary>Moves the tool tip to (x, y, z) mm, keeping its orientation.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public bool MoveTo(double x, double y, double z) => Issue(new ActionTranslation(Arg.Vector(x, y, z), false));
 
     /// <summary>Rotates the tool around its tip by a rotation.</summary>

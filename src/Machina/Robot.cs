@@ -81,6 +81,7 @@ public sealed partial class Robot : IOnlineHost
     /// </summary>
     /// <returns>True (kept for programs written for the original Machina).</returns>
     /// <exception cref="ActionRefusedException">The action does not make sense in the current state.</exception>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public bool Issue(RobotAction action)
     {
         ArgumentNullException.ThrowIfNull(action);
@@ -138,6 +139,7 @@ public sealed partial class Robot : IOnlineHost
     }
 
     /// <summary>Logs the state report and raises ActionIssued for one issued action, outside the lock.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void RaiseIssued(string? report, ActionIssuedArgs? issued)
     {
         if (report is not null)

@@ -1,9 +1,12 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>Moves the tool tip to a position (<c>MoveTo</c>) or by an offset (<c>Move</c>), in mm, keeping its orientation.</summary>
 public sealed record ActionTranslation : RobotAction
 {
     /// <summary>Creates a translation; <paramref name="translation"/> in mm.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     public ActionTranslation(Vector translation, bool relative)
     {
         Translation = translation.RequireFinite(nameof(translation));
@@ -46,6 +49,7 @@ public sealed record ActionTranslation : RobotAction
     internal const int MaxDescriptionChars = 16 + Vector.MaxTextChars;
 
     /// <inheritdoc/>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override int TryWriteDescription(Span<char> destination) => WriteDescription(destination);
 
     /// <inheritdoc/>
@@ -55,6 +59,7 @@ public sealed record ActionTranslation : RobotAction
     /// Writes the text of <see cref="Describe"/> into <paramref name="destination"/> and returns its length: compilers with human
     /// comments describe every move of a program of millions, and copy it into their line without a string in between.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal int WriteDescription(Span<char> destination)
     {
         ReadOnlySpan<char> verb = Relative ? "Move " : "Move to ";

@@ -182,24 +182,40 @@ internal sealed class CompileJob
             // What the cursor notices while applying (a tool defined again, an extruded length it cannot compute) is a warning too.
             cursor.Warn = Warn;
         }
+        if (Actions is RobotAction[] array)
+        {
+            // A robot's program (a snapshot array): indexed, without an enumerator's two interface calls per action.
+            for (int i = 0; i < array.Length; i++)
+            {
+                ReplayOne(array[i], cursor, reportIssues, emit);
+            }
+            return;
+        }
         foreach (RobotAction action in Actions)
         {
-            string? refusal = cursor.TryApply(action);
-            if (refusal is not null)
-            {
-                RefuseFromSource(action, refusal);
-                Warn(action, "skipped: " + refusal);
-                continue;
-            }
-            if (reportIssues)
-            {
-                foreach (KinematicIssue issue in cursor.LastIssues)
-                {
-                    Warn(action, issue);
-                }
-            }
-            emit(action, cursor);
+            ReplayOne(action, cursor, reportIssues, emit);
         }
+    }
+
+    /// <summary>One step of <see cref="Replay"/>: applies <paramref name="action"/>, reports what it must, and emits it unless refused.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void ReplayOne(RobotAction action, RobotCursor cursor, bool reportIssues, Action<RobotAction, RobotCursor> emit)
+    {
+        string? refusal = cursor.TryApply(action);
+        if (refusal is not null)
+        {
+            RefuseFromSource(action, refusal);
+            Warn(action, "skipped: " + refusal);
+            return;
+        }
+        if (reportIssues && cursor.LastIssues.Count > 0)
+        {
+            foreach (KinematicIssue issue in cursor.LastIssues)
+            {
+                Warn(action, issue);
+            }
+        }
+        emit(action, cursor);
     }
 
     /// <summary>

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>Receives the lines of one program file as a compiler writes them: kept in memory or written straight to disk.</summary>
@@ -37,6 +39,7 @@ internal sealed class ListLineSink : LineSink
 
     internal override void Add(System.Text.StringBuilder line) => Lines.Add(line);
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override void Add(ReadOnlySpan<char> line) => Lines.Add(line);
 }
 

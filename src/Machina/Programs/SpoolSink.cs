@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -21,6 +22,7 @@ internal sealed class MemorySpool : SpoolSink
 
     internal override void Add(StringBuilder line) => _lines.Add(line);
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override void Add(ReadOnlySpan<char> line) => _lines.Add(line);
 
     internal override void MoveTo(LineSink target)

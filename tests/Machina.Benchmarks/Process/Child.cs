@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Text.Json;
 
 namespace Machina.Benchmarks;
 
@@ -35,7 +34,7 @@ internal static class Child
                     Stream(int.Parse(a["port"], System.Globalization.CultureInfo.InvariantCulture), int.Parse(a["count"], System.Globalization.CultureInfo.InvariantCulture), a.GetValueOrDefault("window", "default"), a.GetValueOrDefault("brand", "ABB"), extra);
                     break;
                 case "issue-text":
-                    IssueText(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
+                    IssueText(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), a.ContainsKey("sha256"), extra);
                     break;
                 case "format-floor":
                     FormatFloor(int.Parse(a["moves"], System.Globalization.CultureInfo.InvariantCulture), extra);
@@ -59,7 +58,7 @@ internal static class Child
         extra["allocatedBytes"] = GC.GetTotalAllocatedBytes();
         extra["gcPauseSeconds"] = GC.GetTotalPauseDuration().TotalSeconds;
         (long hwm, long rss) = Memory();
-        Console.WriteLine(JsonSerializer.Serialize(new Dictionary<string, object?>
+        Console.WriteLine(ChildReport.Write(new Dictionary<string, object?>
         {
             ["main"] = mainTimestamp,
             ["workStart"] = workStart,
@@ -120,16 +119,51 @@ internal static class Child
         }
     }
 
-    /// <summary>Issues <paramref name="moves"/> relative moves on an ABB robot, compiles them in memory and takes every file's text.</summary>
-    private static void IssueText(int moves, Dictionary<string, object?> extra)
+    /// <summary>
+    /// Issues <paramref name="moves"/> relative moves on an ABB robot, compiles them in memory and takes every file's text. Each
+    /// phase's wall time, processor time, minor page faults and bytes allocated go into <c>phases</c> (issue, compile, text:
+    /// seconds, seconds, faults, bytes). With <paramref name="sha256"/> (key <c>sha256</c>, not timed by the scenario) also the SHA-256 of the texts
+    /// (UTF-16, the files one after the other), so that a change can show it wrote the same text.
+    /// </summary>
+    private static void IssueText(int moves, bool sha256, Dictionary<string, object?> extra)
     {
-        RobotProgram program = Workloads.IssueToolpath("ABB", moves).Compile();
-        long characters = 0;
+        var phases = new Dictionary<string, double[]>();
+        long at = Stopwatch.GetTimestamp();
+        double cpu = Environment.CpuUsage.TotalTime.TotalSeconds;
+        long faults = Machine.MinorPageFaults();
+        long allocated = GC.GetAllocatedBytesForCurrentThread();
+        void Phase(string name)
+        {
+            long now = Stopwatch.GetTimestamp();
+            double cpuNow = Environment.CpuUsage.TotalTime.TotalSeconds;
+            long faultsNow = Machine.MinorPageFaults();
+            long allocatedNow = GC.GetAllocatedBytesForCurrentThread();
+            phases[name] = [Stopwatch.GetElapsedTime(at, now).TotalSeconds, cpuNow - cpu, faultsNow - faults, allocatedNow - allocated];
+            (at, cpu, faults, allocated) = (now, cpuNow, faultsNow, allocatedNow);
+        }
+        Robot? bot = Workloads.IssueToolpath("ABB", moves);
+        Phase("issue");
+        RobotProgram program = bot.Compile();
+        bot = null; // as in a script that compiles once: the robot is not used again
+        Phase("compile");
+        var texts = new List<string>();
         foreach (RobotProgramFile file in program.Files)
         {
-            characters += file.ToText().Length;
+            texts.Add(file.ToText());
         }
-        extra["characters"] = characters;
+        Phase("text");
+        extra["phases"] = phases;
+        extra["characters"] = texts.Sum(t => (long)t.Length);
+        if (!sha256)
+        {
+            return;
+        }
+        using var hash = System.Security.Cryptography.IncrementalHash.CreateHash(System.Security.Cryptography.HashAlgorithmName.SHA256);
+        foreach (string text in texts)
+        {
+            hash.AppendData(System.Runtime.InteropServices.MemoryMarshal.AsBytes(text.AsSpan()));
+        }
+        extra["sha256"] = Convert.ToHexString(hash.GetHashAndReset());
     }
 
     /// <summary>Formats the three coordinates of <paramref name="moves"/> moves of the benchmark file (same random values) with the shortest round-trip text.</summary>

@@ -137,10 +137,22 @@ internal sealed class ExternalToolScenario(RobotType brand, bool native, InputSh
 
 /// <summary>
 /// A fresh process issues 4·10^5 relative moves on an ABB robot, compiles them in memory and takes each file's text (the child
-/// kind <c>issue-text</c>): a script user's whole program, start-up included. Target: ≤ 0.5 s.
+/// kind <c>issue-text</c>): a script user's whole program, start-up included. Issue 45 asks it at least
+/// <see cref="Speedup"/> times as fast as the original library's recorded <see cref="OriginalSeconds"/>: at most 0.344 s. The
+/// row's ratio is the median over that target; the note gives the speed-up over the original and each phase of the work
+/// (issue, compile, text: wall time, processor time, minor page faults and bytes allocated, medians over the runs).
 /// </summary>
 internal sealed class IssueTextProcessScenario : ProcessScenario
 {
+    /// <summary>The original library's recorded time for this job (issue 45), seconds.</summary>
+    internal const double OriginalSeconds = 27.5;
+
+    /// <summary>How many times faster than the original issue 45 asks the job to be.</summary>
+    internal const double Speedup = 80;
+
+    /// <summary>The target: the original's time over the speed-up asked, 0.34375 s.</summary>
+    internal const double TargetSeconds = OriginalSeconds / Speedup;
+
     public override string Name => "cold-issue-text";
 
     public override string Title => $"Fresh process: issue {Report.Count(TargetSize)} moves, compile to RAPID in memory, take the text";
@@ -151,19 +163,30 @@ internal sealed class IssueTextProcessScenario : ProcessScenario
 
     public override int DefaultRuns => 5;
 
-    public override string TargetText => "<= 0.5 s";
+    public override string TargetText => $"<= {TargetSeconds.ToString("0.000", CultureInfo.InvariantCulture)} s ({Speedup:0}x the original's {OriginalSeconds.ToString("0.0", CultureInfo.InvariantCulture)} s)";
 
     public override ProcessResult Measure(int size, int runs, bool warm, ProcessInputs inputs)
     {
         string[] arguments = ["issue-text", $"moves={size}"];
         var children = Enumerable.Range(0, runs).Select(_ => ChildProcess.Run(arguments, Timeout(size))).ToList();
         ProcessResult result = CompileProcessScenario.Summarize(this, size, children);
+        string phases = string.Join(", ", ((string[])["issue", "compile", "text"]).Select(name => Phase(children, name)));
         return result with
         {
             TargetText = size == TargetSize ? TargetText : $"{TargetText} (at {Report.Count(TargetSize)})",
-            Ratio = result.Median / 0.5,
-            Note = $"{children[0].Report.GetProperty("extra").GetProperty("characters").GetInt64()} characters",
+            Ratio = result.Median / TargetSeconds,
+            Note = $"{(OriginalSeconds / result.Median).ToString("0.0", CultureInfo.InvariantCulture)}x the original; {phases}; "
+                + $"{children[0].Report.GetProperty("extra").GetProperty("characters").GetInt64()} characters",
         };
+    }
+
+    /// <summary>One phase of the work, medians over the runs: "compile 180 ms (cpu 175 ms, 19,624 faults, 85.8 MB allocated)".</summary>
+    private static string Phase(List<ChildRun> children, string name)
+    {
+        double Median(int i) => ProcessResult.Percentile(
+            [.. children.Select(c => c.Report.GetProperty("extra").GetProperty("phases").GetProperty(name)[i].GetDouble())], 0.5);
+        return $"{name} {Report.Time(Median(0))} (cpu {Report.Time(Median(1))}, {Report.Count(Median(2))} faults, "
+            + $"{(Median(3) / 1e6).ToString("0.0", CultureInfo.InvariantCulture)} MB allocated)";
     }
 }
 

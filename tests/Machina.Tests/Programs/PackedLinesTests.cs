@@ -178,4 +178,67 @@ public class PackedLinesTests
         Assert.Equal(["MODULE Header", "  MoveL [[1,2,3]], v100, z5, tool0;", "  ! ✓ not ASCII", "ENDMODULE"], file.Lines);
         Assert.Equal(["  ! the spool is empty again"], second.Lines);
     }
+
+    [Fact]
+    public void Add_LinesOverSeveralChunksOfTheTable_EachIndexReadsItsLine()
+    {
+        // The table of lines is kept in chunks of 4,096 entries (the first one grows up to that): lines on both sides of each
+        // boundary, read by index, in order and copied.
+        var expected = Enumerable.Range(0, 4096 * 3 + 5).Select(i => i % 1000 == 7 ? "✓ " + i : "L" + i).ToList();
+        var packed = new PackedLines();
+        expected.ForEach(l => packed.Add(l));
+
+        foreach (int i in (int[])[0, 15, 16, 2047, 2048, 4095, 4096, 4097, 8191, 8192, 12287, 12288, expected.Count - 1])
+        {
+            Assert.Equal(expected[i], packed[i]);
+        }
+        Assert.Equal(expected, packed);
+        var copied = new char[packed.CharacterCount + expected.Count * 2];
+        packed.CopyTo(copied, "\r\n");
+        Assert.Equal(string.Concat(expected.Select(l => l + "\r\n")), new string(copied));
+        Assert.Throws<ArgumentOutOfRangeException>(() => packed[expected.Count]);
+        Assert.Throws<ArgumentOutOfRangeException>(() => packed[-1]);
+    }
+
+    [Fact]
+    public void AppendAdopting_SeveralSpoolsWithLinesBetween_ReadsEveryLineInOrder()
+    {
+        // A file takes over several spools (one of them empty) with lines of its own before, between and after them: each
+        // line keeps its place, by index, in order, copied and written.
+        var target = new PackedLines();
+        var expected = new List<string>();
+        void Own(string line)
+        {
+            target.Add(line);
+            expected.Add(line);
+        }
+        PackedLines Spool(int count, string prefix)
+        {
+            var spool = new PackedLines();
+            for (int i = 0; i < count; i++)
+            {
+                string line = i % 333 == 1 ? prefix + " ✓ " + i : prefix + " " + i;
+                spool.Add(line);
+                expected.Add(line);
+            }
+            return spool;
+        }
+
+        Own("MODULE M");
+        target.AppendAdopting(Spool(5000, "first"));
+        Own("  ! between");
+        target.AppendAdopting(Spool(0, "empty"));
+        target.AppendAdopting(Spool(3, "second"));
+        Own("ENDMODULE");
+
+        Assert.Equal(expected.Count, target.Count);
+        Assert.Equal(expected, target);
+        Assert.Equal("  ! between", target[5001]);
+        Assert.Equal("second 0", target[5002]);
+        Assert.Equal("ENDMODULE", target[^1]);
+        Assert.Equal(expected.Sum(l => (long)l.Length), target.CharacterCount);
+        var writer = new StringWriter();
+        target.WriteTo(writer, "\n");
+        Assert.Equal(string.Concat(expected.Select(l => l + "\n")), writer.ToString());
+    }
 }
