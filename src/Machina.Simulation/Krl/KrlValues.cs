@@ -184,7 +184,7 @@ internal static class KrlValues
     {
         for (int i = 0; i < length; i++)
         {
-            items[start + i] = i < text.Length ? text[i] : '\0';
+            items[start + i] = Box(i < text.Length ? text[i] : '\0');
         }
     }
 
