@@ -170,7 +170,13 @@ internal sealed partial class KrlMachine
             }
             default:
                 Place(target, frame).Set(value);
-                _writes++;
+                if (_watchesAll || _watchesComputed || !LocalOrUnwatched(target))
+                {
+                    // A variable an interrupt's condition reads (or any write, when a condition reads locals, calls a function or
+                    // reads a computed variable): the conditions are looked at before the next statement. The driver's ring
+                    // counters and components of its local FRAMEs are written ~10 times an action and no condition reads them.
+                    _writes++;
+                }
                 return;
         }
     }
