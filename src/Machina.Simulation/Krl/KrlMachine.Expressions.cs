@@ -11,7 +11,7 @@ internal sealed partial class KrlMachine
             case KrlLiteral literal:
                 return literal.Value;
             case KrlName name:
-                return name.Slot >= 0 ? frame[name.Slot] : name.Cell!.Value;
+                return name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value;
             case KrlMember member:
                 return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
             case KrlIndex index when index.Indices.Count == 0:
@@ -59,12 +59,16 @@ internal sealed partial class KrlMachine
         }
     }
 
+    /// <summary>A structure or array local read before anything was stored in it: its initial value, made now and kept.</summary>
+    private static object LocalValue(object[] frame, KrlName name) => frame[name.Slot] = KrlValues.Default(name.Type);
+
     /// <summary>Where <paramref name="expr"/> (a variable, element, row or component) is stored.</summary>
     public KrlPlace Place(KrlExpr expr, object[] frame)
     {
         switch (expr)
         {
             case KrlName name when name.Slot >= 0:
+                frame[name.Slot] ??= KrlValues.Default(name.Type);
                 return new KrlPlace(frame, name.Slot, name.Type);
             case KrlName { Cell.Signals: { } signals } name:
                 return new KrlPlace([], -1, name.Type) { Root = (name.Cell, -1), Signals = signals };
