@@ -78,6 +78,12 @@ internal sealed partial class KrlMachine
             {
                 KrlPlace parent = Place(member.Target, frame);
                 var structure = (KrlStructValue)parent.Container[parent.Index];
+                if (structure.Shared)
+                {
+                    // A status the EKI_ functions hand out to every caller: the variable gets its own copy before a component changes.
+                    structure = structure.Copy();
+                    parent.Container[parent.Index] = structure;
+                }
                 return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null, Structure = structure };
             }
             case KrlIndex index:
