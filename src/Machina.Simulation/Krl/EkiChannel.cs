@@ -21,8 +21,8 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     /// had put it up: the driver never saw that client, never greeted it and never listened again.
     /// </summary>
     private readonly Lock _link = new();
-    private readonly Dictionary<string, LinkedList<string>> _memories = configuration.Receive
-        .Where(e => e.Type is not null).ToDictionary(e => e.Tag, _ => new LinkedList<string>(), StringComparer.Ordinal);
+    private readonly Dictionary<string, EkiMemory> _memories = configuration.Receive
+        .Where(e => e.Type is not null).ToDictionary(e => e.Tag, _ => new EkiMemory(), StringComparer.Ordinal);
     private readonly Dictionary<string, string> _toSend = new(StringComparer.Ordinal);
     private TcpListener? _listener;
     private TcpClient? _client;
@@ -306,7 +306,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         {
             foreach ((string tag, string value) in document)
             {
-                LinkedList<string> memory = _memories[tag];
+                EkiMemory memory = _memories[tag];
                 if (dropExcess && memory.Count >= Configuration.Limit)
                 {
                     overflow = true;
@@ -377,29 +377,19 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     {
         lock (_gate)
         {
-            LinkedList<string> memory = Memory(tag);
+            EkiMemory memory = Memory(tag);
             if (memory.Count == 0)
             {
                 remaining = 0;
                 return null;
             }
-            string value;
-            if (Configuration.Fifo)
-            {
-                value = memory.First!.Value;
-                memory.RemoveFirst();
-            }
-            else
-            {
-                value = memory.Last!.Value;
-                memory.RemoveLast();
-            }
+            string value = Configuration.Fifo ? memory.TakeFirst() : memory.TakeLast();
             remaining = memory.Count;
             return value;
         }
     }
 
-    private LinkedList<string> Memory(string tag) => _memories.TryGetValue(tag, out LinkedList<string>? memory)
+    private EkiMemory Memory(string tag) => _memories.TryGetValue(tag, out EkiMemory? memory)
         ? memory
         : throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
 
@@ -415,7 +405,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         int dropped = 0;
         lock (_gate)
         {
-            foreach ((string memoryTag, LinkedList<string> memory) in _memories)
+            foreach ((string memoryTag, EkiMemory memory) in _memories)
             {
                 if (memoryTag == tag || memoryTag.StartsWith(tag + "/", StringComparison.Ordinal))
                 {
@@ -445,17 +435,40 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     /// <summary>The SEND configuration's tags.</summary>
     private HashSet<string> SendTags => _sendTags ??= new HashSet<string>(Configuration.Send, StringComparer.Ordinal);
 
+    /// <summary>
+    /// For each root EKI_Send named that the SEND configuration has: its attribute tags when it has only attributes, else null
+    /// (written as a tree). Bounded by the configuration (data sent as it is is not kept); guarded by the gate.
+    /// </summary>
+    private readonly Dictionary<string, string[]?> _sendShapes = new(StringComparer.Ordinal);
+
     /// <summary>True when the SEND configuration has <paramref name="root"/> or an element or attribute below it.</summary>
     private bool Sends(string root)
     {
-        foreach (string tag in Configuration.Send)
+        IReadOnlyList<string> tags = Configuration.Send;
+        for (int i = 0; i < tags.Count; i++)
         {
-            if (tag == root || EkiSendDocument.IsBelow(tag, root))
+            if (tags[i] == root || EkiSendDocument.IsBelow(tags[i], root))
             {
                 return true;
             }
         }
         return false;
+    }
+
+    /// <summary>The document EKI_Send writes for <paramref name="root"/> with the values set (call it under the gate).</summary>
+    private string Document(string root)
+    {
+        if (!_sendShapes.TryGetValue(root, out string[]? attributes))
+        {
+            if (!Sends(root))
+            {
+                // Data sent as it is: XML (the manual's EKI_Send of "<Robot>…</Robot>") or plain text (EKI_Send("Channel", "Confirm")).
+                return root;
+            }
+            attributes = EkiSendDocument.FlatAttributes(root, Configuration.Send);
+            _sendShapes[root] = attributes;
+        }
+        return attributes is not null ? EkiSendDocument.WriteFlat(root, attributes, _toSend) : EkiSendDocument.Write(root, Configuration.Send, _toSend);
     }
 
     /// <summary>
@@ -467,13 +480,12 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     {
         EkiOutbox? outbox;
         string text;
-        byte[] bytes;
-        bool configured = Configuration.RawSend is null && Sends(root);
+        byte[]? bytes = null;
         lock (_gate)
         {
             // A string that names no configured element is data sent as it is: XML (the manual's EKI_Send of "<Robot>…</Robot>") or
             // plain text (EKI_Send("Channel", "Confirm")), which the twin writes unchanged rather than refuse.
-            text = configured ? EkiSendDocument.Write(root, Configuration.Send, _toSend) : root;
+            text = Configuration.RawSend is null ? Document(root) : root;
             outbox = _outbox;
         }
         if (Configuration.RawSend is { } raw)
@@ -481,15 +493,12 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             bytes = EkiRawSplitter.Record(raw, root);
             text = Encoding.Latin1.GetString(bytes);
         }
-        else
-        {
-            bytes = Encoding.UTF8.GetBytes(text);
-        }
         if (controller.Options.Seam is { } seam)
         {
-            // The seam sees every send, also one without a connection (it counts what was lost).
+            // The seam sees every send, also one without a connection (it counts what was lost), and writes its own bytes.
             return seam.Send(this, root, text);
         }
+        bytes ??= Encoding.UTF8.GetBytes(text);
         if (Configuration.Udp)
         {
             return SendDatagram(bytes);

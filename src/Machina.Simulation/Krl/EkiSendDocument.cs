@@ -34,19 +34,9 @@ internal static class EkiSendDocument
     /// <summary>The document of element <paramref name="root"/> (a tag path) from the SEND <paramref name="tags"/> and the values set.</summary>
     public static string Write(string root, IReadOnlyList<string> tags, IReadOnlyDictionary<string, string> values)
     {
-        string prefix = root + "/@";
-        if (!root.Contains('/', StringComparison.Ordinal) && !HasElementsBelow(root, tags, prefix))
+        if (FlatAttributes(root, tags) is { } attributes)
         {
-            // Only attributes of the element (the Machina driver's acknowledgements): written directly, on every action.
-            var flat = new StringBuilder("<").Append(root);
-            foreach (string tag in tags)
-            {
-                if (IsAttribute(tag, prefix) && values.TryGetValue(tag, out string? value))
-                {
-                    flat.Append(' ').Append(tag, prefix.Length, tag.Length - prefix.Length).Append("=\"").Append(EkiChannel.Escape(value)).Append('"');
-                }
-            }
-            return flat.Append(" />").ToString();
+            return WriteFlat(root, attributes, values);
         }
         var top = new Node(root[(root.LastIndexOf('/') + 1)..]);
         foreach (string tag in tags)
@@ -92,11 +82,50 @@ internal static class EkiSendDocument
         return xml.ToString();
     }
 
+    /// <summary>
+    /// The attribute tags of <paramref name="root"/> in the configuration's order when the element has only attributes (the Machina
+    /// driver's acknowledgements), or null when it is written as a tree (a path, or elements below it). A channel keeps the answer
+    /// per configured root: the configuration does not change.
+    /// </summary>
+    public static string[]? FlatAttributes(string root, IReadOnlyList<string> tags)
+    {
+        string prefix = root + "/@";
+        if (root.Contains('/', StringComparison.Ordinal) || HasElementsBelow(root, tags, prefix))
+        {
+            return null;
+        }
+        var attributes = new List<string>();
+        for (int i = 0; i < tags.Count; i++)
+        {
+            if (IsAttribute(tags[i], prefix))
+            {
+                attributes.Add(tags[i]);
+            }
+        }
+        return [.. attributes];
+    }
+
+    /// <summary>The document of an element with only <paramref name="attributes"/> (see <see cref="FlatAttributes"/>), those set, in order.</summary>
+    public static string WriteFlat(string root, string[] attributes, IReadOnlyDictionary<string, string> values)
+    {
+        int skip = root.Length + 2; // "root/@"
+        var flat = new StringBuilder(64).Append('<').Append(root);
+        foreach (string tag in attributes)
+        {
+            if (values.TryGetValue(tag, out string? value))
+            {
+                flat.Append(' ').Append(tag, skip, tag.Length - skip).Append("=\"").Append(EkiChannel.Escape(value)).Append('"');
+            }
+        }
+        return flat.Append(" />").ToString();
+    }
+
     /// <summary>True when <paramref name="tags"/> name <paramref name="root"/> itself or an element below it (not only its attributes).</summary>
     private static bool HasElementsBelow(string root, IReadOnlyList<string> tags, string prefix)
     {
-        foreach (string tag in tags)
+        for (int i = 0; i < tags.Count; i++)
         {
+            string tag = tags[i];
             if (tag == root || (IsBelow(tag, root) && !IsAttribute(tag, prefix)))
             {
                 return true;

@@ -25,9 +25,10 @@ internal static class KrlConvert
                     return s.Copy();
                 }
                 var result = old is KrlStructValue o && o.Type == type ? o.Copy() : (KrlStructValue)KrlValues.Default(type);
-                for (int i = 0; i < s.Type.Fields.Count; i++)
+                int[] map = type.FieldsFrom(s.Type);
+                for (int i = 0; i < map.Length; i++)
                 {
-                    int j = type.FieldIndex(s.Type.Fields[i].Name);
+                    int j = map[i];
                     if (j >= 0)
                     {
                         result.Values[j] = To(type.Fields[j].Type, s.Values[i], result.Values[j]);
@@ -41,7 +42,7 @@ internal static class KrlConvert
                 var result = old is KrlStructValue o && o.Type == type ? o.Copy() : (KrlStructValue)KrlValues.Default(type);
                 for (int i = 0; i < p.Indexes.Length; i++)
                 {
-                    int j = p.Type == type ? p.Indexes[i] : type.FieldIndex(p.Type.Fields[p.Indexes[i]].Name);
+                    int j = p.Type == type ? p.Indexes[i] : type.FieldsFrom(p.Type)[p.Indexes[i]];
                     if (j >= 0)
                     {
                         result.Values[j] = To(type.Fields[j].Type, p.Values[i], result.Values[j]);

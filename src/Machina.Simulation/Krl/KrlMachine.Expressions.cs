@@ -11,7 +11,7 @@ internal sealed partial class KrlMachine
             case KrlLiteral literal:
                 return literal.Value;
             case KrlName name:
-                return name.Slot >= 0 ? frame[name.Slot] : name.Cell!.Value;
+                return name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value;
             case KrlMember member:
                 return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
             case KrlIndex index when index.Indices.Count == 0:
@@ -59,12 +59,16 @@ internal sealed partial class KrlMachine
         }
     }
 
+    /// <summary>A structure or array local read before anything was stored in it: its initial value, made now and kept.</summary>
+    private static object LocalValue(object[] frame, KrlName name) => frame[name.Slot] = KrlValues.Default(name.Type);
+
     /// <summary>Where <paramref name="expr"/> (a variable, element, row or component) is stored.</summary>
     public KrlPlace Place(KrlExpr expr, object[] frame)
     {
         switch (expr)
         {
             case KrlName name when name.Slot >= 0:
+                frame[name.Slot] ??= KrlValues.Default(name.Type);
                 return new KrlPlace(frame, name.Slot, name.Type);
             case KrlName { Cell.Signals: { } signals } name:
                 return new KrlPlace([], -1, name.Type) { Root = (name.Cell, -1), Signals = signals };
@@ -74,6 +78,12 @@ internal sealed partial class KrlMachine
             {
                 KrlPlace parent = Place(member.Target, frame);
                 var structure = (KrlStructValue)parent.Container[parent.Index];
+                if (structure.Shared)
+                {
+                    // A status the EKI_ functions hand out to every caller: the variable gets its own copy before a component changes.
+                    structure = structure.Copy();
+                    parent.Container[parent.Index] = structure;
+                }
                 return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null, Structure = structure };
             }
             case KrlIndex index:
@@ -170,7 +180,13 @@ internal sealed partial class KrlMachine
             }
             default:
                 Place(target, frame).Set(value);
-                _writes++;
+                if (_watchesAll || _watchesComputed || !LocalOrUnwatched(target))
+                {
+                    // A variable an interrupt's condition reads (or any write, when a condition reads locals, calls a function or
+                    // reads a computed variable): the conditions are looked at before the next statement. The driver's ring
+                    // counters and components of its local FRAMEs are written ~10 times an action and no condition reads them.
+                    _writes++;
+                }
                 return;
         }
     }

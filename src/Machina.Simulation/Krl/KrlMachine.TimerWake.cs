@@ -59,13 +59,19 @@ internal sealed partial class KrlMachine
     /// <summary>Milliseconds until the soonest running timer below 0 reaches 0 (counted now), or -1 when none runs towards 0.</summary>
     private int SoonestTimerMs()
     {
+        object[] timers = ((KrlArrayValue)Controller.Environment.System["$TIMER"].Box[0]).Items;
+        object[] stopped = ((KrlArrayValue)Controller.Environment.System["$TIMER_STOP"].Box[0]).Items;
+        if (!AnyRunsBelowZero(timers, stopped))
+        {
+            // Counting only adds time to running timers: none below 0 now, none after (the monitor's timer counts up from 0 all
+            // stream long, and this ran at every motion).
+            return -1;
+        }
         Controller.CountTimers();
         if (!Controller.TimersCounting)
         {
             return -1;
         }
-        object[] timers = ((KrlArrayValue)Controller.Environment.System["$TIMER"].Box[0]).Items;
-        object[] stopped = ((KrlArrayValue)Controller.Environment.System["$TIMER_STOP"].Box[0]).Items;
         int soonest = -1;
         for (int i = 0; i < timers.Length; i++)
         {
@@ -75,5 +81,18 @@ internal sealed partial class KrlMachine
             }
         }
         return soonest;
+    }
+
+    /// <summary>True when a timer that is not stopped is below 0 (before counting).</summary>
+    private static bool AnyRunsBelowZero(object[] timers, object[] stopped)
+    {
+        for (int i = 0; i < timers.Length; i++)
+        {
+            if (!(bool)stopped[i] && (int)timers[i] < 0)
+            {
+                return true;
+            }
+        }
+        return false;
     }
 }

@@ -135,10 +135,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                     ? KrlConvert.To(value is KrlArrayValue a ? a.Type : KrlType.Array(KrlType.Char, Math.Max(1, ((string)value).Length)), value, null)
                     : KrlConvert.To(type, value, null);
             }
-            else
+            else if (i < routine.Parameters.Count || type.Kind is not (KrlKind.Struct or KrlKind.Array))
             {
                 frame[i] = KrlValues.Default(type);
             }
+            // A structure or array local is made at its first use (LocalValue): the driver's machina_run declares an EKI_STATUS, two
+            // FRAMEs and an AXIS, and a LIN uses one FRAME; ret only ever takes what the EKI_ functions return.
         }
         KrlRoutine caller = _routine;
         int callerLine = Line;

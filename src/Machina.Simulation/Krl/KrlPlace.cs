@@ -2,9 +2,10 @@ namespace Machina.Simulation.Krl;
 
 /// <summary>
 /// Where a value is stored: a slot of a frame, cell, structure or array, a row of a CHAR array (<c>text[i, ]</c>), or a signal of
-/// an IO array (<see cref="Signals"/>). Assignments and OUT arguments write through it.
+/// an IO array (<see cref="Signals"/>). Assignments and OUT arguments write through it. A value type: finding the place of an
+/// element or component and writing it allocates nothing (an OUT argument boxes it once).
 /// </summary>
-internal sealed class KrlPlace(object[] container, int index, KrlType type, int sliceLength = 0)
+internal readonly struct KrlPlace(object[] container, int index, KrlType type, int sliceLength = 0)
 {
     /// <summary>The array holding the slot (or the row).</summary>
     public object[] Container { get; } = container;
@@ -60,7 +61,7 @@ internal sealed class KrlPlace(object[] container, int index, KrlType type, int 
             object[] source = ((KrlArrayValue)value).Items;
             for (int i = 0; i < SliceLength; i++)
             {
-                Container[Index + i] = i < source.Length ? source[i] : '\0';
+                Container[Index + i] = i < source.Length ? source[i] : KrlValues.Box('\0');
             }
         }
         else

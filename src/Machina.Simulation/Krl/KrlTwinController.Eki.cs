@@ -153,8 +153,26 @@ internal sealed partial class KrlTwinController
 
     private static string Str(object value) => value is string s ? s : KrlValues.Text((KrlArrayValue)value);
 
-    private static KrlStructValue Status(int buffered, int read, int error, bool connected) =>
-        new(KrlTypes.EkiStatus, [KrlValues.Box(buffered), KrlValues.Box(read), KrlValues.Box(error), KrlValues.Box(connected), KrlValues.Box(0)]);
+    /// <summary>The statuses without an error for Buff 0 to 127, Read 0 or 1 and either Connected, made when first returned.</summary>
+    private readonly KrlStructValue?[] _statuses = new KrlStructValue?[128 * 2 * 2];
+
+    /// <summary>
+    /// An EKI_STATUS. One without an error and a small Buff is kept and returned again (<see cref="KrlStructValue.Shared"/>: a
+    /// program that writes a component of it gets a copy): the driver's 13 EthernetKRL calls an action made 13 structures.
+    /// </summary>
+    private KrlStructValue Status(int buffered, int read, int error, bool connected)
+    {
+        if (error != 0 || buffered is < 0 or >= 128 || read is < 0 or > 1)
+        {
+            return NewStatus(buffered, read, error, connected, shared: false);
+        }
+        int index = (buffered * 2 + read) * 2 + (connected ? 1 : 0);
+        // Two interpreters (robot and submit) may make the same one at once: either is kept, both are equal and never written.
+        return _statuses[index] ??= NewStatus(buffered, read, error, connected, shared: true);
+    }
+
+    private static KrlStructValue NewStatus(int buffered, int read, int error, bool connected, bool shared) =>
+        new(KrlTypes.EkiStatus, [KrlValues.Box(buffered), KrlValues.Box(read), KrlValues.Box(error), KrlValues.Box(connected), KrlValues.Box(0)]) { Shared = shared };
 
     /// <summary>The channel an EKI_ function found last, by the name it was given (an interpreter names the same one call after call).</summary>
     private sealed record LastChannel(string Name, EkiChannel Channel);

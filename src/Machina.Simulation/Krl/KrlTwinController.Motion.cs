@@ -138,7 +138,7 @@ internal sealed partial class KrlTwinController
         double pathMm = 0, turnDegrees = 0;
         Pose? goal = null;
         TwinArc? arc = null;
-        KrlStructValue? axes = ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true);
+        KrlStructValue? axes = IsAxes(target) ? ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true) : null;
         if (axes is not null)
         {
             end = JointsOf(axes);
@@ -169,7 +169,7 @@ internal sealed partial class KrlTwinController
         }
         double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
         bool bco = Interlocked.Exchange(ref _coincident, 1) == 0;
-        string text = kind + (approximation is null ? "" : " " + approximation) + (bco ? " " + BcoRun : "");
+        string text = bco ? kind + (approximation is null ? "" : " " + approximation) + " " + BcoRun : MotionText(kind, approximation);
         if (kind == "LIN" && goal is { } tcp && !bco)
         {
             (double v, double acceleration) = PathSpeed();
@@ -180,6 +180,19 @@ internal sealed partial class KrlTwinController
         }
         Arm.FinishBlend(cancellation);
         Arm.MoveTo(end, seconds, line, text, cancellation, linear: kind == "LIN", arc: arc);
+    }
+
+    /// <summary>The trace's text of each motion keyword and approximation met (a handful per program: made once, not per motion).</summary>
+    private readonly Dictionary<(string Kind, string? Approximation), string> _motionTexts = [];
+
+    private string MotionText(string kind, string? approximation)
+    {
+        if (!_motionTexts.TryGetValue((kind, approximation), out string? text))
+        {
+            text = approximation is null ? kind : kind + " " + approximation;
+            _motionTexts[(kind, approximation)] = text;
+        }
+        return text;
     }
 
     /// <summary>$VEL.CP (m/s) and $ACC.CP (m/s²).</summary>
@@ -214,6 +227,9 @@ internal sealed partial class KrlTwinController
         KrlStructValue s => s.Type.FieldIndex(field) >= 0,
         _ => false,
     };
+
+    /// <summary>True when <paramref name="target"/> is an AXIS or E6AXIS (or an aggregate of one).</summary>
+    private static bool IsAxes(object target) => KrlTypes.IsAxes(target is KrlPartialValue p ? p.Type : ((KrlStructValue)target).Type);
 
     /// <summary>The target as <paramref name="type"/>, the components it leaves out from <paramref name="current"/>; null when it is not of that family.</summary>
     private static KrlStructValue? ToStruct(object target, KrlStructValue current, KrlType type, bool axesOnly)

@@ -96,6 +96,30 @@ internal sealed class KrlType
         return -1;
     }
 
+    /// <summary>The map of the last other structure type converted into this one (see <see cref="FieldsFrom"/>).</summary>
+    private sealed record FieldMap(KrlType Source, int[] Indexes);
+
+    private FieldMap? _lastMap;
+
+    /// <summary>
+    /// For each component of structure type <paramref name="source"/>, the index of the component of this type with its name (-1
+    /// for none), found once for the last source type (a motion converts its FRAME target into an E6POS at every statement).
+    /// </summary>
+    public int[] FieldsFrom(KrlType source)
+    {
+        if (_lastMap is { } map && ReferenceEquals(map.Source, source))
+        {
+            return map.Indexes;
+        }
+        var indexes = new int[source.Fields.Count];
+        for (int i = 0; i < indexes.Length; i++)
+        {
+            indexes[i] = FieldIndex(source.Fields[i].Name);
+        }
+        _lastMap = new FieldMap(source, indexes);
+        return indexes;
+    }
+
     private int[]? _poseIndexes;
 
     /// <summary>The indexes of the components X, Y, Z, A, B and C (-1 for one the type lacks), found once.</summary>

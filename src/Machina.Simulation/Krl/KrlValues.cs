@@ -33,7 +33,13 @@ internal sealed class KrlStructValue(KrlType type, object[] values)
     /// </summary>
     public int Unset { get; set; }
 
-    /// <summary>A deep copy (KRL structures are values).</summary>
+    /// <summary>
+    /// True for a value the controller keeps and hands out again (an EthernetKRL status: see <c>KrlTwinController.Status</c>), which
+    /// several variables may hold at once: it is never written, a write of one of its components copies it first.
+    /// </summary>
+    public bool Shared { get; init; }
+
+    /// <summary>A deep copy (KRL structures are values); the copy is the holder's own.</summary>
     public KrlStructValue Copy()
     {
         var values = new object[Values.Length];
@@ -184,7 +190,7 @@ internal static class KrlValues
     {
         for (int i = 0; i < length; i++)
         {
-            items[start + i] = i < text.Length ? text[i] : '\0';
+            items[start + i] = Box(i < text.Length ? text[i] : '\0');
         }
     }
 

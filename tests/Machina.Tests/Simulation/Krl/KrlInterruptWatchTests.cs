@@ -47,4 +47,44 @@ public class KrlInterruptWatchTests
         // Before the write of marks[3] no interrupt ran (0), right after it the routine had run once (1), and never again (11).
         Assert.Equal([0, 0, 1, 11, 11], order.Select(o => (int)o));
     }
+
+    [Fact]
+    public void ScalarAndComponentOfAWatchedVariableWritten_TheInterruptRunsBeforeTheNextStatement_OtherWritesDoNotRunIt()
+    {
+        const string Source = """
+            DEF watch2( )
+              DECL FRAME local
+              INTERRUPT DECL 21 WHEN go DO seen( )
+              INTERRUPT DECL 22 WHEN place.X > 5 DO seen( )
+              INTERRUPT ON 21
+              INTERRUPT ON 22
+              quiet = 1
+              local.X = 9
+              trace[1] = hits
+              go = TRUE
+              trace[2] = hits
+              quiet = 2
+              place.Y = 9
+              trace[3] = hits
+              place.X = 9
+              trace[4] = hits
+              quiet = 3
+              trace[5] = hits
+            END
+
+            DEF seen( )
+              hits = hits + 1
+            END
+            """;
+        const string Data2 = "DEFDAT watch2\n  DECL BOOL go = FALSE\n  DECL INT quiet = 0\n  DECL FRAME place = {X 0, Y 0, Z 0, A 0, B 0, C 0}\n  DECL INT trace[5]\n  DECL INT hits = 0\nENDDAT\n";
+        using var twin = new KrlTwinController();
+        twin.Load(("watch2.src", Source), ("watch2.dat", Data2));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        object[] trace = ((KrlArrayValue)twin.Modules["watch2"].Data["trace"].Value).Items;
+        // go written: the routine ran before trace[2]; place.Y does not make place.X > 5; place.X does, before trace[4]; once each.
+        Assert.Equal([0, 1, 1, 2, 2], trace.Select(o => (int)o));
+    }
 }
