@@ -106,7 +106,7 @@ var runner = new Runner(warmups, runs, message =>
     {
         Console.Error.Write($"\r  {message}".PadRight(70));
     }
-});
+}, settle: !quick);
 
 if (options.Json)
 {

@@ -4,7 +4,7 @@ using System.Runtime.CompilerServices;
 namespace Machina.Benchmarks;
 
 /// <summary>Times a scenario: warm-up runs, then measured runs with a full collection before each; reports the median.</summary>
-internal sealed class Runner(int warmups, int runs, Action<string> progress)
+internal sealed class Runner(int warmups, int runs, Action<string> progress, bool settle = true)
 {
     private const double MinWarmupSeconds = 0.5;
     private const int MaxWarmups = 50;
@@ -15,7 +15,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
     /// <summary>At most this many warm-ups, and this long, are run waiting for the JIT to settle.</summary>
     private const int MaxSettleWarmups = 15;
 
-    private const double MaxSettleSeconds = 60;
+    private const double MaxSettleSeconds = 20;
 
     public Measurement Run(Scenario scenario, int size)
     {
@@ -129,7 +129,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
     /// tiered-compilation thread where /proc tells, else <see cref="JitActivity"/>'s time) is at most <see cref="SettledJitShare"/>
     /// of the process's processor time: the JIT promotes a method after 30 calls and again with the profile it gathered, so code
     /// that runs a few times per run (connecting, the harness) is still being compiled runs later. Returns how many ran and
-    /// whether the JIT settled; none with <c>--warmup 0</c>.
+    /// whether the JIT settled; none with <c>--warmup 0</c>, and no waiting for the JIT without <c>settle</c> (<c>--quick</c>).
     /// </summary>
     private (int Count, bool Settled) WarmUp(Scenario scenario, int size, Func<object?> work)
     {
@@ -153,7 +153,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         {
             double seconds = Stopwatch.GetElapsedTime(start).TotalSeconds;
             bool minimum = done >= MaxWarmups || seconds >= MinWarmupSeconds;
-            return minimum && (settled || done >= warmups + MaxSettleWarmups || seconds >= MaxSettleSeconds);
+            return minimum && (!settle || settled || done >= warmups + MaxSettleWarmups || seconds >= MaxSettleSeconds);
         }
     }
 
