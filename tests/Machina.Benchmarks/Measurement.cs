@@ -13,6 +13,21 @@ internal sealed record Measurement
     public double MaxSeconds { get; init; }
     /// <summary>Processor time of the whole process during the median run (all threads, GC included); less sensitive to a busy machine than wall time.</summary>
     public double CpuSeconds { get; init; }
+    /// <summary>Processor time of the JIT compiler during a measured run (median; its tiered-compilation thread), part of <see cref="CpuSeconds"/>.</summary>
+    public double JitSeconds { get; init; }
+
+    /// <summary>The median over the measured runs of the process's processor time less the JIT's: the steady state's cost.</summary>
+    public double CpuWithoutJitSeconds { get; init; }
+
+    /// <summary>Methods the JIT compiled during a measured run (median).</summary>
+    public long JitMethods { get; init; }
+
+    /// <summary>Warm-up runs before the measured ones.</summary>
+    public int Warmups { get; init; }
+
+    /// <summary>False when the JIT was still compiling in the last warm-up (the warm-ups' limit was reached first).</summary>
+    public bool JitSettled { get; init; } = true;
+
     /// <summary>Garbage collections of generations 0/1/2 during the median run, e.g. "12/3/1".</summary>
     public string Collections { get; init; } = "";
 
@@ -38,6 +53,8 @@ internal sealed record Measurement
     public double NanosecondsPerUnit => Size > 0 ? MedianSeconds * 1e9 / Size : 0;
     /// <summary>Processor time per unit (all threads) during the median run, ns.</summary>
     public double CpuNanosecondsPerUnit => Size > 0 ? CpuSeconds * 1e9 / Size : 0;
+    /// <summary>Processor time per unit without the JIT's (see <see cref="CpuWithoutJitSeconds"/>), ns.</summary>
+    public double CpuWithoutJitNanosecondsPerUnit => Size > 0 ? CpuWithoutJitSeconds * 1e9 / Size : 0;
     public double UnitsPerSecond => MedianSeconds > 0 ? Size / MedianSeconds : 0;
     public double BytesPerUnit => Size > 0 ? (double)AllocatedBytes / Size : 0;
 

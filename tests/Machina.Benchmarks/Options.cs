@@ -13,7 +13,9 @@ internal sealed record Options
           --scaling         add the scaling table (10^4, 10^5, 10^6) even with --size or --quick
           --no-scaling      skip the scaling table
           --runs N          measured runs per scenario (median is reported; default 3)
-          --warmup N        warm-up runs before measuring (default 1)
+          --warmup N        warm-up runs before measuring (default 1); more follow, up to 15 and 20 s, until one in which the
+                            JIT's tiered-compilation thread used at most 2 % of the processor time (not with --quick;
+                            --warmup 0: none at all)
           --quick           small sizes (10^4) and 1 run, to check that everything works
           --process         the whole-process scenarios instead: fresh processes timed from outside (cold-compile-abb,
                             cold-compile-10m-…, cold-stream, cold-first-ack); see docs/performance.md
@@ -41,6 +43,8 @@ internal sealed record Options
           --json            one JSON object per line instead of tables
           --list            list the scenarios and exit
           --help            this text
+        Environment: MACHINA_BENCH_THREADS=1 prints each measured run's processor time by thread (µs and times run per unit);
+        MACHINA_BENCH_ALLOCS=1 prints the types allocated during the measured runs (sampled, bytes per unit).
         """;
 
     public List<string> Scenarios { get; init; } = [];

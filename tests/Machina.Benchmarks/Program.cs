@@ -106,7 +106,7 @@ var runner = new Runner(warmups, runs, message =>
     {
         Console.Error.Write($"\r  {message}".PadRight(70));
     }
-});
+}, settle: !quick);
 
 if (options.Json)
 {
@@ -119,8 +119,9 @@ if (options.Json)
 else
 {
     Console.WriteLine($"Machina benchmarks - {machine}");
-    Console.WriteLine($"Median of {runs} run(s) after {warmups} warm-up(s); load average {Machine.LoadAverage()} at start.");
-    Console.WriteLine("ratio = median time per unit / target time per unit (<= 1.00 meets it); cpu = processor time of all threads during the run.");
+    Console.WriteLine($"Median of {runs} run(s) after at least {warmups} warm-up(s) (more until the JIT settles); load average {Machine.LoadAverage()} at start.");
+    Console.WriteLine("ratio = median time per unit / target time per unit (<= 1.00 meets it); cpu = processor time of all threads during the run, the JIT's included;");
+    Console.WriteLine("jit cpu = the JIT's tiered-compilation thread during the run ((busy): still compiling after the last warm-up); -jit = cpu/unit without it.");
     if (quick)
     {
         Console.WriteLine("Quick mode: one run of 10^4 units checks that every scenario works; its timings are indicative only.");

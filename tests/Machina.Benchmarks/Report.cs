@@ -24,6 +24,11 @@ internal static class Report
             ["minSeconds"] = m.MinSeconds,
             ["maxSeconds"] = m.MaxSeconds,
             ["cpuSeconds"] = m.CpuSeconds,
+            ["jitCpuSeconds"] = m.JitSeconds,
+            ["cpuSecondsWithoutJit"] = m.CpuWithoutJitSeconds,
+            ["jitMethods"] = m.JitMethods,
+            ["warmups"] = m.Warmups,
+            ["jitSettled"] = m.JitSettled,
             ["gcCollections"] = m.Collections,
             ["gcPauseSeconds"] = m.GcPauseSeconds,
             ["pageFaults"] = m.PageFaults,
@@ -50,11 +55,11 @@ internal static class Report
     /// <summary>The results table: one row per scenario at its size, with the ratio to the target (at most 1 means met).</summary>
     public static string Results(IReadOnlyList<Measurement> rows)
     {
-        string[] header = ["scenario", "size", "median", "min", "cpu", "gc pause", "gc 0/1/2", "faults", "per unit", "cpu/unit", "rate /s", "alloc/unit", "peak heap", "retained", "target", "ratio", "status"];
+        string[] header = ["scenario", "size", "median", "min", "cpu", "jit cpu", "gc pause", "gc 0/1/2", "faults", "per unit", "cpu/unit", "-jit", "rate /s", "alloc/unit", "peak heap", "retained", "target", "ratio", "status"];
         var lines = rows.Select(m => m.Runs == 0
-            ? new[] { m.Scenario, Count(m.Size), "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", m.Target?.Text ?? "-", "-", $"{m.Status}: {m.Note}" }
+            ? new[] { m.Scenario, Count(m.Size), "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", m.Target?.Text ?? "-", "-", $"{m.Status}: {m.Note}" }
             : [
-                m.Scenario, Count(m.Size), Time(m.MedianSeconds), Time(m.MinSeconds), Time(m.CpuSeconds), Time(m.GcPauseSeconds), m.Collections, Count(m.PageFaults), Time(m.NanosecondsPerUnit / 1e9), Time(m.CpuNanosecondsPerUnit / 1e9), Count(m.UnitsPerSecond),
+                m.Scenario, Count(m.Size), Time(m.MedianSeconds), Time(m.MinSeconds), Time(m.CpuSeconds), Jit(m), Time(m.GcPauseSeconds), m.Collections, Count(m.PageFaults), Time(m.NanosecondsPerUnit / 1e9), Time(m.CpuNanosecondsPerUnit / 1e9), Time(m.CpuWithoutJitNanosecondsPerUnit / 1e9), Count(m.UnitsPerSecond),
                 Bytes(m.BytesPerUnit), Bytes(m.PeakBytes), Bytes(m.RetainedBytes), m.Target?.Text ?? "-", Ratio(m), m.Status,
             ]).ToList();
         return Table(header, lines);
@@ -87,6 +92,9 @@ internal static class Report
         }
         return Table([.. header], lines);
     }
+
+    /// <summary>The JIT's processor time in the median run, marked "(busy)" when it had not settled after the warm-ups.</summary>
+    private static string Jit(Measurement m) => Time(m.JitSeconds) + (m.JitSettled ? "" : " (busy)");
 
     private static string Ratio(Measurement m)
     {

@@ -4,10 +4,18 @@ using System.Runtime.CompilerServices;
 namespace Machina.Benchmarks;
 
 /// <summary>Times a scenario: warm-up runs, then measured runs with a full collection before each; reports the median.</summary>
-internal sealed class Runner(int warmups, int runs, Action<string> progress)
+internal sealed class Runner(int warmups, int runs, Action<string> progress, bool settle = true)
 {
     private const double MinWarmupSeconds = 0.5;
     private const int MaxWarmups = 50;
+
+    /// <summary>A warm-up run is steady when the JIT's compiling took at most this share of the process's processor time.</summary>
+    private const double SettledJitShare = 0.02;
+
+    /// <summary>At most this many warm-ups, and this long, are run waiting for the JIT to settle.</summary>
+    private const int MaxSettleWarmups = 15;
+
+    private const double MaxSettleSeconds = 20;
 
     public Measurement Run(Scenario scenario, int size)
     {
@@ -44,19 +52,44 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
     {
         progress($"{scenario.Name} x {size:N0}: preparing");
         Func<object?> work = scenario.Prepare(size);
-        // At least the requested warm-ups, and at least MinWarmupSeconds of them (up to MaxWarmups) so that small sizes also
-        // run fully optimised code: the JIT recompiles hot methods after about 30 calls and a short delay.
-        long warmupStart = Stopwatch.GetTimestamp();
-        for (int i = 0; i < warmups || (i > 0 && i < MaxWarmups && Stopwatch.GetElapsedTime(warmupStart).TotalSeconds < MinWarmupSeconds); i++)
+        (int warmedUp, bool settled) = WarmUp(scenario, size, work);
+        bool byThread = Environment.GetEnvironmentVariable("MACHINA_BENCH_THREADS") == "1";
+        if (byThread)
         {
-            progress($"{scenario.Name} x {size:N0}: warm-up {i + 1}");
-            work();
+            Console.Error.WriteLine($"{scenario.Name}: {warmedUp} warm-up(s); the JIT {(settled ? "settled" : "was still compiling after the last")}");
         }
+        using AllocationTypes? types = Environment.GetEnvironmentVariable("MACHINA_BENCH_ALLOCS") == "1" ? new AllocationTypes() : null;
         var samples = new List<Sample>();
         for (int i = 0; i < runs; i++)
         {
             progress($"{scenario.Name} x {size:N0}: run {i + 1}/{runs}");
-            samples.Add(RunOnce(work, scenario.MultiThreaded));
+            // Read outside the timed run (reading /proc costs processor time of its own).
+            Dictionary<int, ThreadCpu.ThreadTime> threadsBefore = ThreadCpu.Read();
+            JitActivity jitBefore = JitActivity.Now();
+            if (types is not null)
+            {
+                types.Counting = true;
+            }
+            Sample sample = RunOnce(work, scenario.MultiThreaded);
+            if (types is not null)
+            {
+                types.Counting = false;
+            }
+            JitActivity jit = JitActivity.Now().Since(jitBefore);
+            List<ThreadCpu.ThreadTime> threads = ThreadCpu.Difference(threadsBefore, ThreadCpu.Read());
+            samples.Add(sample with { JitSeconds = JitSeconds(threads, jit), JitMethods = jit.Methods });
+            if (byThread)
+            {
+                Console.Error.WriteLine($"{scenario.Name} run {i + 1}: {jit.Methods} methods compiled; processor time by thread: {ThreadCpu.Text(threads, size)}");
+            }
+        }
+        if (types is not null)
+        {
+            Console.Error.WriteLine($"{scenario.Name}: allocations by type (sampled) over the {runs} measured run(s):");
+            foreach (string line in types.Lines((long)size * runs))
+            {
+                Console.Error.WriteLine(line);
+            }
         }
         var status = "info";
         var measurement = new Measurement
@@ -70,6 +103,11 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             MinSeconds = samples.Min(s => s.Seconds),
             MaxSeconds = samples.Max(s => s.Seconds),
             CpuSeconds = Median(samples.Select(s => s.CpuSeconds)),
+            JitSeconds = Median(samples.Select(s => s.JitSeconds)),
+            CpuWithoutJitSeconds = Median(samples.Select(s => s.CpuSeconds - s.JitSeconds)),
+            JitMethods = Median(samples.Select(s => s.JitMethods)),
+            Warmups = warmedUp,
+            JitSettled = settled,
             Collections = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).Collections,
             GcPauseSeconds = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).GcPauseSeconds,
             PageFaults = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).PageFaults,
@@ -84,6 +122,44 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
         }
         return measurement with { Status = status };
     }
+
+    /// <summary>
+    /// The warm-up runs: at least the requested number, and at least <see cref="MinWarmupSeconds"/> of them (up to
+    /// <see cref="MaxWarmups"/>) so that small sizes also run optimised code; then more until a run's compiling (the JIT's
+    /// tiered-compilation thread where /proc tells, else <see cref="JitActivity"/>'s time) is at most <see cref="SettledJitShare"/>
+    /// of the process's processor time: the JIT promotes a method after 30 calls and again with the profile it gathered, so code
+    /// that runs a few times per run (connecting, the harness) is still being compiled runs later. Returns how many ran and
+    /// whether the JIT settled; none with <c>--warmup 0</c>, and no waiting for the JIT without <c>settle</c> (<c>--quick</c>).
+    /// </summary>
+    private (int Count, bool Settled) WarmUp(Scenario scenario, int size, Func<object?> work)
+    {
+        long start = Stopwatch.GetTimestamp();
+        bool settled = false;
+        int i = 0;
+        for (; i < warmups || (i > 0 && !Enough(i, settled)); i++)
+        {
+            progress($"{scenario.Name} x {size:N0}: warm-up {i + 1}");
+            Dictionary<int, ThreadCpu.ThreadTime> threadsBefore = ThreadCpu.Read();
+            JitActivity jitBefore = JitActivity.Now();
+            TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
+            work();
+            double cpu = (Process.GetCurrentProcess().TotalProcessorTime - cpuBefore).TotalSeconds;
+            double jit = JitSeconds(ThreadCpu.Difference(threadsBefore, ThreadCpu.Read()), JitActivity.Now().Since(jitBefore));
+            settled = jit <= SettledJitShare * cpu;
+        }
+        return (i, settled);
+
+        bool Enough(int done, bool settled)
+        {
+            double seconds = Stopwatch.GetElapsedTime(start).TotalSeconds;
+            bool minimum = done >= MaxWarmups || seconds >= MinWarmupSeconds;
+            return minimum && (!settle || settled || done >= warmups + MaxSettleWarmups || seconds >= MaxSettleSeconds);
+        }
+    }
+
+    /// <summary>The JIT's processor time in a run: its tiered-compilation thread's, or where /proc is missing the compiling time the runtime counted.</summary>
+    private static double JitSeconds(List<ThreadCpu.ThreadTime> threads, JitActivity jit) =>
+        threads.Count > 0 ? ThreadCpu.Jit(threads) : jit.Time.TotalSeconds;
 
     /// <summary>One timed run. Kept out of line so that the result cannot stay reachable from the caller's frame afterwards.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
@@ -117,7 +193,14 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress)
             multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, Math.Max(0, peak - baseline), collections, pause, faults);
     }
 
-    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds, long PageFaults);
+    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds, long PageFaults)
+    {
+        /// <summary>The JIT's processor time during the run (see <see cref="JitSeconds(List{ThreadCpu.ThreadTime}, JitActivity)"/>).</summary>
+        public double JitSeconds { get; init; }
+
+        /// <summary>Methods the JIT compiled during the run.</summary>
+        public long JitMethods { get; init; }
+    }
 
     private static long FullCollect()
     {

@@ -3,52 +3,71 @@ using System.Globalization;
 namespace Machina.Benchmarks;
 
 /// <summary>
-/// Processor time of this process's threads, grouped by thread name (Linux: /proc/self/task/*/stat, user + system ticks), to
-/// see where a multi-threaded scenario spends it (the host's loop and sockets, the twin's interpreter threads, the GC).
-/// Threads that ended between two readings are missing from the difference; empty where /proc is not there.
+/// Processor time of this process's threads (Linux: <c>/proc/self/task/*/schedstat</c>, nanoseconds on the processor, and the
+/// thread's name from <c>stat</c>), to see where a multi-threaded scenario spends it (the host's loop and link, the twin's
+/// interpreter threads, the JIT's tiered-compilation thread, the GC). A difference of two readings is taken per thread id, so
+/// that a thread that ended and a new one of the same name (a link per connection) do not cancel out; a thread that ended
+/// between the readings is missing from it. Empty where /proc is not there.
 /// </summary>
 internal static class ThreadCpu
 {
-    /// <summary>Clock ticks per second of /proc's times (USER_HZ, 100 on Linux).</summary>
-    private const double TicksPerSecond = 100;
+    /// <summary>The name the runtime gives its tiered-compilation thread, as /proc shows it (15 characters at most).</summary>
+    public const string JitThreadName = ".NET Tiered Com";
 
-    /// <summary>Processor seconds per thread name now.</summary>
-    public static Dictionary<string, double> Read()
+    /// <summary>One thread's name, processor time (s) and how many times it was put on a processor (wake-ups and preemptions).</summary>
+    public readonly record struct ThreadTime(string Name, double Seconds, long Slices);
+
+    /// <summary>Every thread of the process now, by thread id.</summary>
+    public static Dictionary<int, ThreadTime> Read()
     {
-        var byName = new Dictionary<string, double>(StringComparer.Ordinal);
+        var byId = new Dictionary<int, ThreadTime>();
         if (!Directory.Exists("/proc/self/task"))
         {
-            return byName;
+            return byId;
         }
         foreach (string task in Directory.EnumerateDirectories("/proc/self/task"))
         {
-            string stat;
+            string stat, schedstat;
             try
             {
                 stat = File.ReadAllText(Path.Combine(task, "stat"));
+                schedstat = File.ReadAllText(Path.Combine(task, "schedstat"));
             }
             catch (IOException)
             {
                 continue;   // the thread ended meanwhile
             }
             int open = stat.IndexOf('('), close = stat.LastIndexOf(')');
-            if (open < 0 || close < open)
+            string[] fields = schedstat.Split(' ');
+            if (open < 0 || close < open || fields.Length < 3 || !int.TryParse(Path.GetFileName(task), out int id))
             {
                 continue;
             }
-            string name = stat[(open + 1)..close];
-            string[] fields = stat[(close + 2)..].Split(' ');
-            // After the name: state (0), ..., utime (11), stime (12).
-            double seconds = (long.Parse(fields[11], CultureInfo.InvariantCulture) + long.Parse(fields[12], CultureInfo.InvariantCulture)) / TicksPerSecond;
-            byName[name] = byName.GetValueOrDefault(name) + seconds;
+            // schedstat: nanoseconds on a processor, nanoseconds waiting to run, times run on a processor.
+            byId[id] = new ThreadTime(stat[(open + 1)..close], long.Parse(fields[0], CultureInfo.InvariantCulture) / 1e9,
+                long.Parse(fields[2], CultureInfo.InvariantCulture));
         }
-        return byName;
+        return byId;
     }
 
-    /// <summary>"name 1.23 s, ..." of what each thread name spent between two readings, largest first.</summary>
-    public static string Difference(Dictionary<string, double> before, Dictionary<string, double> after) => string.Join(", ",
-        after.Select(p => (p.Key, Seconds: p.Value - before.GetValueOrDefault(p.Key)))
-            .Where(p => p.Seconds > 0)
-            .OrderByDescending(p => p.Seconds)
-            .Select(p => $"{p.Key} {p.Seconds.ToString("0.00", CultureInfo.InvariantCulture)} s"));
+    /// <summary>What each thread name spent between two readings (threads of one name summed), largest first.</summary>
+    public static List<ThreadTime> Difference(Dictionary<int, ThreadTime> before, Dictionary<int, ThreadTime> after) =>
+        after.Select(p => before.TryGetValue(p.Key, out ThreadTime b) && b.Name == p.Value.Name
+                ? p.Value with { Seconds = p.Value.Seconds - b.Seconds, Slices = p.Value.Slices - b.Slices }
+                : p.Value)
+            .GroupBy(t => t.Name)
+            .Select(g => new ThreadTime(g.Key, g.Sum(t => t.Seconds), g.Sum(t => t.Slices)))
+            .Where(t => t.Seconds > 0)
+            .OrderByDescending(t => t.Seconds)
+            .ToList();
+
+    /// <summary>Processor seconds of the JIT's tiered-compilation thread in a difference (0 when it did not run).</summary>
+    public static double Jit(List<ThreadTime> difference) => difference.Where(t => t.Name == JitThreadName).Sum(t => t.Seconds);
+
+    /// <summary>"name 0.123 s, ..." of a difference; with <paramref name="perUnit"/>, also µs per unit and times put on a processor per unit.</summary>
+    public static string Text(List<ThreadTime> difference, int perUnit = 0) => string.Join(", ", difference
+        .Where(t => t.Seconds >= 0.0005)
+        .Select(t => perUnit > 0
+            ? string.Create(CultureInfo.InvariantCulture, $"{t.Name} {t.Seconds:0.000} s ({t.Seconds * 1e6 / perUnit:0.0} us, {(double)t.Slices / perUnit:0.00} runs/unit)")
+            : string.Create(CultureInfo.InvariantCulture, $"{t.Name} {t.Seconds:0.000} s")));
 }

@@ -1,3 +1,5 @@
+using System.Collections.Concurrent;
+
 namespace Machina;
 
 internal sealed partial class OnlineSession
@@ -14,9 +16,27 @@ internal sealed partial class OnlineSession
     /// handled; a report of the link being connected is held and handled, in order, once the link is current (see
     /// <see cref="Report"/>); any other is a report of a replaced link and is ignored.
     /// </summary>
-    private sealed class Connection(OnlineSession session, IDeviceDriver driver) : IDeviceListener
+    private sealed class Connection : IDeviceListener
     {
-        internal IDeviceDriver Driver { get; } = driver;
+        private readonly OnlineSession _session;
+
+        /// <summary>
+        /// Acknowledgements posted and not handled yet, oldest first: each posts <see cref="_takeAcknowledged"/> once, which handles
+        /// the oldest, so they are handled in the order they came, in order with the other reports, and without a closure each.
+        /// </summary>
+        private readonly ConcurrentQueue<(int Id, double? Value)> _acknowledged = new();
+
+        /// <summary>The message an acknowledgement posts (one delegate for all).</summary>
+        private readonly Action _takeAcknowledged;
+
+        internal Connection(OnlineSession session, IDeviceDriver driver)
+        {
+            _session = session;
+            Driver = driver;
+            _takeAcknowledged = TakeAcknowledged;
+        }
+
+        internal IDeviceDriver Driver { get; }
 
         /// <summary>
         /// Its reports that arrived while it was being connected, in order (on the loop only): handled once it is current. Of the
@@ -29,25 +49,37 @@ internal sealed partial class OnlineSession
 
         public void OnAcknowledged(int id, double value) => OnAcknowledged(id, (double?)value);
 
-        // The busiest report (one per action): one message, with no handler of its own unless it has to be held.
-        private void OnAcknowledged(int id, double? value) => session.Post(() => session.ReceiveAcknowledged(this, id, value));
+        // The busiest report (one per action): one message that allocates nothing, with no handler of its own unless it has to be held.
+        private void OnAcknowledged(int id, double? value)
+        {
+            _acknowledged.Enqueue((id, value));
+            _session.Post(_takeAcknowledged);
+        }
+
+        private void TakeAcknowledged()
+        {
+            if (_acknowledged.TryDequeue(out (int Id, double? Value) acknowledged))
+            {
+                _session.ReceiveAcknowledged(this, acknowledged.Id, acknowledged.Value);
+            }
+        }
 
         public void OnMotion(in MotionSample sample)
         {
             MotionSample copy = sample;
-            session.Report(this, () => session.OnMotion(this, copy), isMotion: true);
+            _session.Report(this, () => _session.OnMotion(this, copy), isMotion: true);
         }
 
-        public void OnStopped(MachinaException reason) => session.Report(this, () => session.OnStopped(this, reason));
+        public void OnStopped(MachinaException reason) => _session.Report(this, () => _session.OnStopped(this, reason));
 
-        public void OnResumed() => session.Report(this, () => session.OnResumed(this));
+        public void OnResumed() => _session.Report(this, () => _session.OnResumed(this));
 
-        public void OnFailed(int id, string reason, string? code) => session.Report(this, () => session.OnFailed(this, id, reason, code));
+        public void OnFailed(int id, string reason, string? code) => _session.Report(this, () => _session.OnFailed(this, id, reason, code));
 
         public void OnFailedAfter(int executedId, string reason, string? code) =>
-            session.Report(this, () => session.OnFailedAfter(this, executedId, reason, code));
+            _session.Report(this, () => _session.OnFailedAfter(this, executedId, reason, code));
 
-        public void OnFault(MachinaException error) => session.Report(this, () => session.Fault(this, error));
+        public void OnFault(MachinaException error) => _session.Report(this, () => _session.Fault(this, error));
     }
 
     /// <summary>

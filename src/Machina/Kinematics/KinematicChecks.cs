@@ -76,7 +76,9 @@ public static class KinematicChecks
             {
                 // The controller follows the path: the arm arrives with the joints it reaches continuously, not with the solution closest to
                 // where it started (the two differ when the path passes near a singularity).
-                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, issues) is Joints followed)
+                // The target's solution closest to the start is what the path's first sample solves for when that sample is the target itself.
+                Joints? closestToStart = start.IsFinite && ReferenceEquals(kin.Model, model) ? chosen : null;
+                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, issues, closestToStart) is Joints followed)
                 {
                     chosen = solution = followed;
                 }
@@ -128,7 +130,13 @@ public static class KinematicChecks
     /// controllers do. Reports where the path leaves the reach or the limits, changes configuration, passes near a singularity, or
     /// asks a joint to move faster than it can; returns the joints at the end of the path (null when the path could not be followed).
     /// </summary>
-    private static Joints? CheckPath(RobotModel model, Joints start, Pose target, Vector? arcThrough, double speed, Pose tool, List<KinematicIssue> issues)
+    /// <remarks>
+    /// <paramref name="closestToStart"/>, when known, is the solution of <paramref name="target"/> closest to <paramref name="start"/>
+    /// (<see cref="KinematicsCore.ClosestOf"/> of the target's raw solutions): a first sample that is the target to the last bit (a
+    /// line short enough for one sample, the common streamed move) takes it instead of solving the target again.
+    /// </remarks>
+    private static Joints? CheckPath(RobotModel model, Joints start, Pose target, Vector? arcThrough, double speed, Pose tool, List<KinematicIssue> issues,
+        Joints? closestToStart = null)
     {
         IKinematics kin = model.Kinematics;
         var solver = (ISolver)kin;
@@ -152,7 +160,7 @@ public static class KinematicChecks
             double t = (double)i / steps;
             Vector position = i == steps ? to.Position : isArc ? arc.PointAt(t) : from.Position + (to.Position - from.Position) * t;
             Pose pose = new Pose(position, Slerp(from.Rotation, to.Rotation, t)) * toTool;
-            Joints? next = kin.Closest(pose, last);
+            Joints? next = i == 1 && closestToStart is not null && SameBits(pose, target) ? closestToStart : kin.Closest(pose, last);
             if (next is null)
             {
                 Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
@@ -193,6 +201,14 @@ public static class KinematicChecks
         }
         return last;
     }
+
+    /// <summary>True when two poses are the same to the last bit (the inverse kinematics then give the same solutions).</summary>
+    private static bool SameBits(in Pose a, in Pose b) =>
+        SameBits(a.Position.X, b.Position.X) && SameBits(a.Position.Y, b.Position.Y) && SameBits(a.Position.Z, b.Position.Z)
+        && SameBits(a.Rotation.W, b.Rotation.W) && SameBits(a.Rotation.X, b.Rotation.X) && SameBits(a.Rotation.Y, b.Rotation.Y)
+        && SameBits(a.Rotation.Z, b.Rotation.Z);
+
+    private static bool SameBits(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
 
     /// <summary>A joint move (PTP, MoveJ, movej) to a Cartesian target that swings a joint by more than <see cref="LargeJointMoveDegrees"/>.</summary>
     private static void CheckJointMove(Joints start, Joints end, List<KinematicIssue> issues)

@@ -54,7 +54,7 @@ internal sealed class PlainProgramScenario(RobotType brand) : Scenario
         bool byThread = Environment.GetEnvironmentVariable("MACHINA_BENCH_THREADS") == "1";
         return () =>
         {
-            Dictionary<string, double>? threadsBefore = byThread ? ThreadCpu.Read() : null;
+            Dictionary<int, ThreadCpu.ThreadTime>? threadsBefore = byThread ? ThreadCpu.Read() : null;
             // A robot per run, as a program makes one: the previous run's robot is disconnected first.
             _bot?.DisconnectAsync().GetAwaiter().GetResult();
             var bot = Robot.Create("Plain", brand.ToString());
@@ -63,12 +63,12 @@ internal sealed class PlainProgramScenario(RobotType brand) : Scenario
             long connectStart = System.Diagnostics.Stopwatch.GetTimestamp();
             bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
             TimeSpan connect = System.Diagnostics.Stopwatch.GetElapsedTime(connectStart);
-            Dictionary<string, double>? threadsConnected = byThread ? ThreadCpu.Read() : null;
+            Dictionary<int, ThreadCpu.ThreadTime>? threadsConnected = byThread ? ThreadCpu.Read() : null;
             Stream(bot, size);
             if (threadsBefore is not null && threadsConnected is not null)
             {
                 Console.Error.WriteLine($"{Name}: connect {connect.TotalMilliseconds:0} ms, processor time by thread while connecting: "
-                    + $"{ThreadCpu.Difference(threadsBefore, threadsConnected)}; streaming: {ThreadCpu.Difference(threadsConnected, ThreadCpu.Read())}");
+                    + $"{ThreadCpu.Text(ThreadCpu.Difference(threadsBefore, threadsConnected))}; streaming: {ThreadCpu.Text(ThreadCpu.Difference(threadsConnected, ThreadCpu.Read()), size)}");
             }
             return null;
         };

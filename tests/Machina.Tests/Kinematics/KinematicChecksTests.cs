@@ -7,6 +7,23 @@ public class KinematicChecksTests
     private static List<KinematicIssueKind> Kinds(IReadOnlyList<KinematicIssue> issues) => issues.Select(i => i.Kind).ToList();
 
     [Fact]
+    public void Check_LineShortEnoughForOneSample_ArrivesWithTheTargetsSolutionClosestToTheStart()
+    {
+        // The path's only sample is the target itself: the solution the check found for the target is the one it arrives with
+        // (taken, not solved again), exactly what solving the target from the start gives.
+        var start = new Joints(10, 20, 30, 40, 50, 60);
+        Pose from = Irb120.Kinematics.Forward(start);
+        var target = new Pose(from.Position + new Vector(1, 0, 0), from.Rotation);
+
+        var issues = KinematicChecks.Check(Irb120, start, target, KinematicMotion.Linear, 100, Pose.Identity, out Joints? solution);
+
+        Assert.Empty(issues);
+        Assert.NotNull(solution);
+        Assert.Equal(Irb120.Kinematics.Closest(target, start), solution);
+        Assert.NotEqual(start, solution);
+    }
+
+    [Fact]
     public void Check_FarPose_Unreachable()
     {
         var issues = KinematicChecks.Check(Irb120, null, new Pose(2000, 0, 300, Rotation.FlippedAroundY), KinematicMotion.Joint, 100);

@@ -10,9 +10,21 @@ internal static class AbbActionEncoder
     /// <summary>Appends the requests for <paramref name="action"/> to <paramref name="into"/> and returns how many were added (0 = nothing to stream).</summary>
     public static int Encode(RobotAction action, RobotCursor after, ICollection<AbbRequest> into)
     {
+        ArgumentNullException.ThrowIfNull(into);
+        var block = new AbbRequestBlock();
+        int count = Encode(action, after, ref block);
+        for (int i = 0; i < count; i++)
+        {
+            into.Add(block[i]);
+        }
+        return count;
+    }
+
+    /// <summary>As the other overload, into a block on the caller's stack (the stream encodes every action: no list, no array).</summary>
+    public static int Encode(RobotAction action, RobotCursor after, ref AbbRequestBlock into)
+    {
         ArgumentNullException.ThrowIfNull(action);
         ArgumentNullException.ThrowIfNull(after);
-        ArgumentNullException.ThrowIfNull(into);
         int before = into.Count;
         int id = action.Id;
         switch (action)
@@ -62,10 +74,10 @@ internal static class AbbActionEncoder
                 into.Add(AbbRequest.WaitDI(id, wait.PinName, wait.On, wait.TimeoutMillis));
                 break;
             case ActionPushPop { Push: false }:
-                EncodePop(id, after, into);
+                EncodePop(id, after, ref into);
                 break;
             case ActionExternalAxis axis:
-                EncodeExternalAxis(id, axis.Target, after, into);
+                EncodeExternalAxis(id, axis.Target, after, ref into);
                 break;
             case ActionArmAngle arm:
                 into.Add(AbbRequest.ExternalAxesRobTarget(id, new ExternalAxes(after.ArmAngle ?? arm.Angle)));
@@ -85,7 +97,7 @@ internal static class AbbActionEncoder
     }
 
     /// <summary>One request per setting the pop changed; only the last carries the id. Nothing when nothing changed.</summary>
-    private static void EncodePop(int id, RobotCursor after, ICollection<AbbRequest> into)
+    private static void EncodePop(int id, RobotCursor after, ref AbbRequestBlock into)
     {
         var old = after.SettingsBeforeLastPop ?? after.CurrentSettings;
         var changes = new List<Func<int, AbbRequest>>(3);
@@ -107,7 +119,7 @@ internal static class AbbActionEncoder
         }
     }
 
-    private static void EncodeExternalAxis(int id, ExternalAxesTarget target, RobotCursor after, ICollection<AbbRequest> into)
+    private static void EncodeExternalAxis(int id, ExternalAxesTarget target, RobotCursor after, ref AbbRequestBlock into)
     {
         var cartesian = after.ExternalAxesCartesian ?? ExternalAxes.None;
         var joints = after.ExternalAxesJoints ?? ExternalAxes.None;

@@ -34,16 +34,17 @@ internal sealed class AbbOnline : IOnlineBrand
     {
         const int StackBytes = 512;
         refusal = null;
-        var requests = new List<AbbRequest>(2);
+        var requests = new AbbRequestBlock();
         int wireId = action.Id < 0 ? 0 : AbbDriver.WireId(action.Id);
-        if (AbbActionEncoder.Encode(action.Id is >= 0 and <= AbbRequest.MaxId ? action : WithWireId(action), after, requests) == 0)
+        if (AbbActionEncoder.Encode(action.Id is >= 0 and <= AbbRequest.MaxId ? action : WithWireId(action), after, ref requests) == 0)
         {
             return ActionFrame.Nothing;
         }
         int length = 0;
         bool acknowledged = false;
-        foreach (AbbRequest request in requests)
+        for (int r = 0; r < requests.Count; r++)
         {
+            AbbRequest request = requests[r];
             for (int i = 0; i < request.ParameterCount && refusal is null; i++)
             {
                 if (Math.Abs(request[i]) > float.MaxValue)
@@ -57,9 +58,9 @@ internal sealed class AbbOnline : IOnlineBrand
         // Written at the upper bound on the stack, kept at the exact length: one array per frame.
         Span<byte> bytes = length <= StackBytes ? stackalloc byte[StackBytes] : new byte[length];
         length = 0;
-        foreach (AbbRequest request in requests)
+        for (int r = 0; r < requests.Count; r++)
         {
-            length += request.EncodeTo(bytes[length..]);
+            length += requests[r].EncodeTo(bytes[length..]);
         }
         return new ActionFrame(bytes[..length].ToArray(), acknowledged);
     }
