@@ -225,8 +225,11 @@ MODULE Machina_Driver
             IF runEnd > chunkLength THEN
                 RETURN;
             ENDIF
+            ! A space, the commonest end of a token, first (in quoted text the run ends at '"').
             c := StrPart(chunk, runEnd, 1);
-            IF inText THEN
+            IF c = " " THEN
+                FinishToken;
+            ELSEIF inText THEN
                 inText := FALSE;
                 parsing.s1 := token;
                 token := "";
@@ -259,13 +262,10 @@ MODULE Machina_Driver
             TPWrite token;
             Complain "received corrupt value";
             corrupt := TRUE;
-        ELSEIF field = -1 THEN
-            parsing.id := value;
-            field := 0;
-        ELSEIF field = 0 THEN
-            parsing.code := value;
-            field := 1;
-        ELSEIF field <= 11 THEN
+        ELSEIF field > 11 THEN
+            Complain "more than 11 parameters";
+            corrupt := TRUE;
+        ELSEIF field >= 1 THEN
             TEST field
             CASE 1:
                 parsing.p1 := value;
@@ -291,9 +291,12 @@ MODULE Machina_Driver
                 parsing.p11 := value;
             ENDTEST
             field := field + 1;
+        ELSEIF field = 0 THEN
+            parsing.code := value;
+            field := 1;
         ELSE
-            Complain "more than 11 parameters";
-            corrupt := TRUE;
+            parsing.id := value;
+            field := 0;
         ENDIF
         token := "";
     ENDPROC
