@@ -32,6 +32,8 @@ MODULE Machina_Driver
     CONST num BUFFER_SIZE := 1000;
     ! Stop reading while fewer free slots remain: one 80-character chunk holds at most 16 requests.
     CONST num READ_MARGIN := 20;
+    ! The characters that end a token outside quoted text (space, tab, line feed, carriage return, ';', '"', '@').
+    CONST string TOKEN_ENDS := " \09\0A\0D;""@";
 
     RECORD MachinaRequest
         num id;
@@ -57,7 +59,6 @@ MODULE Machina_Driver
 
     ! Parser state, kept between socket reads so a request may be split anywhere.
     VAR MachinaRequest parsing;
-    VAR num parsedParams{11};
     VAR string token := "";
     VAR num field := 0;
     VAR bool inText := FALSE;
@@ -199,33 +200,56 @@ MODULE Machina_Driver
         RAISE;
     ENDPROC
 
-    ! Feeds every character of a chunk to the parser; a request may start in one chunk and end in another.
+    ! Feeds a chunk to the parser a run of characters at a time: StrFind finds the next character that ends a token (a space,
+    ! tab, line feed, carriage return, ';', '"' or '@'; in quoted text only the closing '"'), and the run before it is added to
+    ! the token at once. A request may start in one chunk and end in another; a token keeps its first 80 characters.
     PROC ParseChunk(string chunk)
+        VAR num runStart := 1;
+        VAR num chunkLength;
+        VAR num runEnd;
         VAR string c;
-        FOR i FROM 1 TO StrLen(chunk) DO
-            c := StrPart(chunk, i, 1);
+        chunkLength := StrLen(chunk);
+        WHILE runStart <= chunkLength DO
             IF inText THEN
-                IF c = """" THEN
-                    inText := FALSE;
-                    parsing.s1 := token;
-                    token := "";
+                runEnd := StrFind(chunk, runStart, """");
+            ELSE
+                runEnd := StrFind(chunk, runStart, TOKEN_ENDS);
+            ENDIF
+            IF runEnd > runStart THEN
+                IF StrLen(token) + runEnd - runStart <= 80 THEN
+                    token := token + StrPart(chunk, runStart, runEnd - runStart);
                 ELSEIF StrLen(token) < 80 THEN
-                    token := token + c;
+                    token := token + StrPart(chunk, runStart, 80 - StrLen(token));
                 ENDIF
+            ENDIF
+            IF runEnd > chunkLength THEN
+                RETURN;
+            ENDIF
+            ! A space, the commonest end of a token, first (in quoted text the run ends at '"').
+            c := StrPart(chunk, runEnd, 1);
+            IF c = " " THEN
+                FinishToken;
+            ELSEIF inText THEN
+                inText := FALSE;
+                parsing.s1 := token;
+                token := "";
             ELSEIF c = ";" THEN
                 FinishToken;
                 FinishRequest;
-            ELSEIF c = " " OR c = "\09" OR c = "\0A" OR c = "\0D" THEN
-                FinishToken;
             ELSEIF c = """" THEN
                 FinishToken;
                 inText := TRUE;
-            ELSEIF c = "@" AND field = 0 AND token = "" THEN
-                field := -1;
-            ELSEIF StrLen(token) < 80 THEN
-                token := token + c;
+            ELSEIF c = "@" THEN
+                IF field = 0 AND token = "" THEN
+                    field := -1;
+                ELSEIF StrLen(token) < 80 THEN
+                    token := token + c;
+                ENDIF
+            ELSE
+                FinishToken;
             ENDIF
-        ENDFOR
+            runStart := runEnd + 1;
+        ENDWHILE
     ENDPROC
 
     ! Stores the token just read: id (after @), then code, then numeric parameters p1..p11.
@@ -238,35 +262,47 @@ MODULE Machina_Driver
             TPWrite token;
             Complain "received corrupt value";
             corrupt := TRUE;
-        ELSEIF field = -1 THEN
-            parsing.id := value;
-            field := 0;
+        ELSEIF field > 11 THEN
+            Complain "more than 11 parameters";
+            corrupt := TRUE;
+        ELSEIF field >= 1 THEN
+            TEST field
+            CASE 1:
+                parsing.p1 := value;
+            CASE 2:
+                parsing.p2 := value;
+            CASE 3:
+                parsing.p3 := value;
+            CASE 4:
+                parsing.p4 := value;
+            CASE 5:
+                parsing.p5 := value;
+            CASE 6:
+                parsing.p6 := value;
+            CASE 7:
+                parsing.p7 := value;
+            CASE 8:
+                parsing.p8 := value;
+            CASE 9:
+                parsing.p9 := value;
+            CASE 10:
+                parsing.p10 := value;
+            DEFAULT:
+                parsing.p11 := value;
+            ENDTEST
+            field := field + 1;
         ELSEIF field = 0 THEN
             parsing.code := value;
             field := 1;
-        ELSEIF field <= 11 THEN
-            parsedParams{field} := value;
-            field := field + 1;
         ELSE
-            Complain "more than 11 parameters";
-            corrupt := TRUE;
+            parsing.id := value;
+            field := 0;
         ENDIF
         token := "";
     ENDPROC
 
     PROC FinishRequest()
         IF field >= 1 AND NOT corrupt AND NOT inText THEN
-            parsing.p1 := parsedParams{1};
-            parsing.p2 := parsedParams{2};
-            parsing.p3 := parsedParams{3};
-            parsing.p4 := parsedParams{4};
-            parsing.p5 := parsedParams{5};
-            parsing.p6 := parsedParams{6};
-            parsing.p7 := parsedParams{7};
-            parsing.p8 := parsedParams{8};
-            parsing.p9 := parsedParams{9};
-            parsing.p10 := parsedParams{10};
-            parsing.p11 := parsedParams{11};
             IF requestCount >= BUFFER_SIZE THEN
                 Complain "request buffer full";
             ELSE
@@ -285,11 +321,9 @@ MODULE Machina_Driver
         ResetParser;
     ENDPROC
 
+    ! The parameters a request does not give read as 0.
     PROC ResetParser()
         parsing := [0, 0, "", 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];
-        FOR i FROM 1 TO 11 DO
-            parsedParams{i} := 0;
-        ENDFOR
         token := "";
         field := 0;
         inText := FALSE;

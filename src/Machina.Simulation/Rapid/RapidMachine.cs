@@ -186,6 +186,11 @@ internal sealed partial class RapidMachine(RapidTask task)
             case RapidTest t:
             {
                 object value = Evaluate(t.Value, frame);
+                if (t.NumberCases is { } numbers && value is double number)
+                {
+                    return numbers.TryGetValue(number == 0 ? 0.0 : number, out int k) ? ExecuteBlock(t.Cases[k].Body, frame)
+                        : t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
+                }
                 foreach ((RapidExpr[] values, List<RapidStmt> body) in t.Cases)
                 {
                     foreach (RapidExpr v in values)

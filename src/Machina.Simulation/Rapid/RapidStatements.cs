@@ -83,6 +83,29 @@ internal sealed class RapidTest(int line, RapidExpr value, List<(RapidExpr[] Val
 
     /// <summary>The DEFAULT statements, or null.</summary>
     public List<RapidStmt>? Otherwise { get; } = otherwise;
+
+    /// <summary>
+    /// When every CASE value is a number literal: the index of the first CASE of each number, so that a num value finds its CASE in
+    /// one look-up instead of one comparison per value (literals have no side effects, and = compares numbers exactly); else null.
+    /// </summary>
+    public Dictionary<double, int>? NumberCases { get; } = NumberCasesOf(cases);
+
+    private static Dictionary<double, int>? NumberCasesOf(List<(RapidExpr[] Values, List<RapidStmt> Body)> cases)
+    {
+        var lookup = new Dictionary<double, int>();
+        for (int k = 0; k < cases.Count; k++)
+        {
+            foreach (RapidExpr value in cases[k].Values)
+            {
+                if (value is not RapidLiteral { Value: double number } || double.IsNaN(number))
+                {
+                    return null;
+                }
+                lookup.TryAdd(number == 0 ? 0.0 : number, k); // -0 is 0 (= finds it); the first CASE of a number wins
+            }
+        }
+        return lookup;
+    }
 }
 
 /// <summary>What a simple control statement does.</summary>
