@@ -297,7 +297,19 @@ internal sealed class InstructionParser
     {
         while (_pos < _length)
         {
-            if (char.IsWhiteSpace(_text[_pos]))
+            // The common cases first: one space between arguments, or a value or ')' at once (an ASCII character above the
+            // space is no white space; only '/' may start a comment).
+            char c = _text[_pos];
+            if (c == ' ')
+            {
+                _pos++;
+                continue;
+            }
+            if (c > ' ' && c < '\u0080' && c != '/')
+            {
+                return;
+            }
+            if (char.IsWhiteSpace(c))
             {
                 Advance();
             }
