@@ -42,13 +42,19 @@ internal sealed class InstructionArgs
         Count = 0;
     }
 
-    internal void Add(Arg arg)
+    /// <summary>
+    /// Adds an argument that starts at <paramref name="line"/> and <paramref name="column"/>, and returns it to be filled in
+    /// place (the parser's path: no copy of the argument per value read).
+    /// </summary>
+    internal ref Arg Next(int line, int column)
     {
         if (Count == _args.Length)
         {
             Array.Resize(ref _args, _args.Length * 2);
         }
-        _args[Count++] = arg;
+        ref Arg arg = ref _args[Count++];
+        arg = new Arg { Line = line, Column = column };
+        return ref arg;
     }
 
     private ReadOnlySpan<char> Raw(int i) => _source.AsSpan(_args[i].Start, _args[i].Length);

@@ -15,6 +15,8 @@ internal sealed class InstructionParser
     private int _lineStart;
     private string _lastName = "";
     private InstructionCatalog.Overload[] _lastOverloads = [];
+    private string _otherName = "";
+    private InstructionCatalog.Overload[] _otherOverloads = [];
 
     internal InstructionParser(string text)
         : this((text ?? throw new ArgumentNullException(nameof(text))).ToCharArray(), text.Length, new InstructionArgs(), firstLine: 1, start: 0, isFinal: true)
@@ -75,7 +77,8 @@ internal sealed class InstructionParser
             throw Error(line, column, $"expected an instruction such as MoveTo(400, 300, 500), but found '{Describe(_text[nameStart])}'.");
         }
         // Known names are looked up in place: the catalogue's own string is used, so no name is allocated per statement. A
-        // toolpath repeats one instruction for long runs: the name found last is compared first, before hashing for the table.
+        // toolpath repeats one instruction for long runs, or alternates two (Move, Rotate, Move, …): the last two names found
+        // are compared first, before hashing for the table.
         ReadOnlySpan<char> found = _text.AsSpan(nameStart, _pos - nameStart);
         string name;
         InstructionCatalog.Overload[] overloads;
@@ -83,8 +86,15 @@ internal sealed class InstructionParser
         {
             (name, overloads) = (_lastName, _lastOverloads);
         }
+        else if (found.SequenceEqual(_otherName))
+        {
+            (name, overloads) = (_otherName, _otherOverloads);
+            (_otherName, _otherOverloads) = (_lastName, _lastOverloads);
+            (_lastName, _lastOverloads) = (name, overloads);
+        }
         else if (InstructionCatalog.TryFind(found, out name, out overloads))
         {
+            (_otherName, _otherOverloads) = (_lastName, _lastOverloads);
             (_lastName, _lastOverloads) = (name, overloads);
         }
         else
@@ -168,7 +178,7 @@ internal sealed class InstructionParser
             {
                 throw NotClosed(name);
             }
-            var arg = new InstructionArgs.Arg { Line = _line, Column = Column };
+            ref InstructionArgs.Arg arg = ref _args.Next(_line, Column);
             if (_text[_pos] == '"')
             {
                 ReadString(ref arg);
@@ -177,7 +187,6 @@ internal sealed class InstructionParser
             {
                 ReadBare(ref arg, name);
             }
-            _args.Add(arg);
             SkipGaps();
             if (_pos >= _length)
             {
@@ -288,7 +297,19 @@ internal sealed class InstructionParser
     {
         while (_pos < _length)
         {
-            if (char.IsWhiteSpace(_text[_pos]))
+            // The common cases first: one space between arguments, or a value or ')' at once (an ASCII character above the
+            // space is no white space; only '/' may start a comment).
+            char c = _text[_pos];
+            if (c == ' ')
+            {
+                _pos++;
+                continue;
+            }
+            if (c > ' ' && c < '\u0080' && c != '/')
+            {
+                return;
+            }
+            if (char.IsWhiteSpace(c))
             {
                 Advance();
             }

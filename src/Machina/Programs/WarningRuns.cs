@@ -20,8 +20,13 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
     private int _firstLine;
     private int _lastLine;
 
-    // The warnings of the motion about to be written that do not continue the run.
-    private readonly List<(string Kind, string Line)> _pending = [];
+    // The warnings of the motion about to be written that do not continue the run: their kinds, and their lines one after
+    // another in one reused buffer (a program of short moves gives one such line every other motion: a string each was
+    // most of what a 10^6-line URScript compile allocated).
+    private readonly List<(string Kind, int Start, int Length)> _pending = [];
+    private char[] _pendingText = new char[1024];
+    private readonly StringBuilder _closing = new(128);
+    private int _pendingChars;
     private bool _continues;
 
     /// <summary>Lines that reached the file so far: the next line written is number <see cref="LinesWritten"/> + 1.</summary>
@@ -38,7 +43,13 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
             _continues = true; // the run goes on: this copy is not written
             return;
         }
-        _pending.Add((kind, new string(line)));
+        if (_pendingChars + line.Length > _pendingText.Length)
+        {
+            Array.Resize(ref _pendingText, Math.Max(_pendingText.Length * 2, _pendingChars + line.Length));
+        }
+        line.CopyTo(_pendingText.AsSpan(_pendingChars));
+        _pending.Add((kind, _pendingChars, line.Length));
+        _pendingChars += line.Length;
     }
 
     /// <summary>True when a warning of <paramref name="kind"/> given now would go on the run under way (its line would not be written).</summary>
@@ -59,15 +70,16 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
             }
         }
         EndRun();
-        foreach ((_, string line) in _pending)
+        foreach ((_, int start, int length) in _pending)
         {
-            Write(line);
+            Add(_pendingText.AsSpan(start, length));
         }
         if (_pending.Count > 0)
         {
             (_kind, _count) = (_pending[0].Kind, 1);
             _firstLine = _lastLine = LinesWritten + 1;
             _pending.Clear();
+            _pendingChars = 0;
         }
     }
 
@@ -76,9 +88,11 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
     {
         if (_count > 1)
         {
-            Write(new StringBuilder(128).Append(commentPrefix).Append("WARNING: the same warning for ").Append(_count.ToString(Num.Inv))
-                .Append(" motions in a row, lines ").Append(_firstLine.ToString(Num.Inv)).Append(" to ").Append(_lastLine.ToString(Num.Inv))
-                .Append(" (written once, above the first)").ToString());
+            // One reused builder, the numbers formatted into it: no string per run.
+            _closing.Clear().Append(commentPrefix)
+                .Append(Num.Inv, $"WARNING: the same warning for {_count} motions in a row, lines {_firstLine} to {_lastLine}")
+                .Append(" (written once, above the first)");
+            Add(_closing);
         }
         (_kind, _count) = (null, 0);
     }

@@ -59,6 +59,31 @@ public class InstructionSourceTests
         Assert.Equal(expected, source.MayContain(["Acceleration", "CustomCode"]));
     }
 
+    [Theory]
+    [InlineData("Tool", 65_530)]     // found by its "l": the word starts in one block and ends in the next
+    [InlineData("Tool", 65_533)]
+    [InlineData("Read", 65_532)]
+    [InlineData("Analog", 65_531)]
+    [InlineData("Acceleration", 65_535)]
+    [InlineData("Speed", 0)]
+    [InlineData("Read", 299_990)]
+    public void MayContain_WordFoundByALaterLetter_FoundInAToolpathEvenAcrossBlocks(string word, int at)
+    {
+        // Text made of the motion instructions' letters (MoveTo, Rotate), which hold the first letters of Tool and Read.
+        string filler = string.Concat(Enumerable.Repeat("MoveTo(1,2,3);Rotate(0,0,1,5);\n", 10_000))[..300_000];
+        string[] words = ["Speed", "Precision", "Settings", "Tool", "CustomCode", "Digital", "Analog", "Acceleration", "Read"];
+        var without = new InstructionSource(() => new StringReader(filler), CancellationToken.None);
+        string text = filler[..at] + word + filler[at..];
+        var with = new InstructionSource(() => new StringReader(text), CancellationToken.None);
+        string almost = filler[..at] + word[..^1] + "_" + filler[at..];
+        var cut = new InstructionSource(() => new StringReader(almost), CancellationToken.None);
+
+        Assert.False(without.MayContain(words));
+        Assert.True(with.MayContain(words));
+        Assert.True(with.MayContain([word]));
+        Assert.False(cut.MayContain([word]));
+    }
+
     [Fact]
     public void CompileToFolder_DeclarationsOnlyInLaterText_StillDeclared()
     {
