@@ -21,11 +21,13 @@ public class KukaProgramResetTests
         var w = rig.CreateRobot(b => { b.BlockSize = 20; b.PendingCount = 10; });
         var log = new ConcurrentQueue<string>();
         using var sink = w.Bot.Logger.AddSink(e => log.Enqueue(e.Message), LogLevel.INFO);
-        await rig.RecoverAsync(w);
+        // All 40 issued before the connection: the first block of 20 is in flight when the 12th acknowledgement brings the reset
+        // (issued while streaming, a slow test thread could let the controller run and acknowledge all it had, leaving nothing to resume).
         for (int i = 0; i < 40; i++)
         {
             w.Bot.MoveTo(500 + i, 0, 600);
         }
+        await rig.RecoverAsync(w);
 
         int recoveries = await rig.RunToCompletionAsync(w, Limit, maxRecoveries: 5);
 
