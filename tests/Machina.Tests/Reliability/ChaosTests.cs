@@ -72,17 +72,25 @@ public class ChaosTests(ITestOutputHelper output)
         }
         await rig.RecoverAsync(w);
         w.Bot.ConnectTimeout = Limit;
-        Vector end = RandomProgram.Issue(w.Bot, random, Actions, RandomProgram.ReachableLow, RandomProgram.ReachableHigh, jumps: false);
+        Vector end;
+        if (stall)
+        {
+            // The program up to the stall point is issued first and the rest once it ran, so the rest's requests are held. (Issued
+            // whole, a test thread slowed by the load could notice the point only after the whole program ran: nothing to hold.)
+            int at = random.Next(Actions / 10, Actions * 8 / 10);
+            RandomProgram.Issue(w.Bot, random, at, RandomProgram.ReachableLow, RandomProgram.ReachableHigh, jumps: false);
+            await Eventually.TrueAsync(() => rig.ExecutedIds.Count >= at || w.Bot.ConnectionState != ConnectionState.Connected, "the stall point", WaitLimit);
+            requests.HoldNow();
+            end = RandomProgram.Issue(w.Bot, random, Actions - at, RandomProgram.ReachableLow, RandomProgram.ReachableHigh, jumps: false);
+        }
+        else
+        {
+            end = RandomProgram.Issue(w.Bot, random, Actions, RandomProgram.ReachableLow, RandomProgram.ReachableHigh, jumps: false);
+        }
 
         bool heldFirst = mode == Mode.Held && !ur; // ABB, KUKA: the first connection's requests are held from a seeded byte on
         if (stall || heldFirst)
         {
-            if (stall)
-            {
-                int at = random.Next(Actions / 10, Actions * 8 / 10);
-                await Eventually.TrueAsync(() => rig.ExecutedIds.Count >= at || w.Bot.ConnectionState != ConnectionState.Connected, "the stall point", WaitLimit);
-                requests.HoldNow();
-            }
             int acceptedAtHold = requests.Accepted;
             if (w.Bot.ConnectionState == ConnectionState.Connected)
             {
