@@ -160,7 +160,7 @@ public static class KinematicChecks
             double t = (double)i / steps;
             Vector position = i == steps ? to.Position : isArc ? arc.PointAt(t) : from.Position + (to.Position - from.Position) * t;
             Pose pose = new Pose(position, Slerp(from.Rotation, to.Rotation, t)) * toTool;
-            Joints? next = i == 1 && closestToStart is not null && SameBits(pose, target) ? closestToStart : kin.Closest(pose, last);
+            Joints? next = i == 1 && closestToStart is not null && SameBits.Of(pose, target) ? closestToStart : kin.Closest(pose, last);
             if (next is null)
             {
                 Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
@@ -201,14 +201,6 @@ public static class KinematicChecks
         }
         return last;
     }
-
-    /// <summary>True when two poses are the same to the last bit (the inverse kinematics then give the same solutions).</summary>
-    private static bool SameBits(in Pose a, in Pose b) =>
-        SameBits(a.Position.X, b.Position.X) && SameBits(a.Position.Y, b.Position.Y) && SameBits(a.Position.Z, b.Position.Z)
-        && SameBits(a.Rotation.W, b.Rotation.W) && SameBits(a.Rotation.X, b.Rotation.X) && SameBits(a.Rotation.Y, b.Rotation.Y)
-        && SameBits(a.Rotation.Z, b.Rotation.Z);
-
-    private static bool SameBits(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
 
     /// <summary>A joint move (PTP, MoveJ, movej) to a Cartesian target that swings a joint by more than <see cref="LargeJointMoveDegrees"/>.</summary>
     private static void CheckJointMove(Joints start, Joints end, List<KinematicIssue> issues)

@@ -53,9 +53,9 @@ internal readonly struct PoseSolveKey : IEquatable<PoseSolveKey>
 
     /// <summary>True when both keys describe the same solve, number for number (bitwise).</summary>
     public bool Equals(PoseSolveKey other) =>
-        ReferenceEquals(_model, other._model) && _motionType == other._motionType && Same(_speed, other._speed)
-        && _hasPrevAxes == other._hasPrevAxes && Same(_prevAxes, other._prevAxes) && Same(_position, other._position)
-        && Same(_rotation, other._rotation) && SameTip(_tool, other._tool) && SameExtra(_extra, other._extra);
+        ReferenceEquals(_model, other._model) && _motionType == other._motionType && SameBits.Of(_speed, other._speed)
+        && _hasPrevAxes == other._hasPrevAxes && SameBits.Of(_prevAxes, other._prevAxes) && SameBits.Of(_position, other._position)
+        && SameBits.Of(_rotation, other._rotation) && SameTip(_tool, other._tool) && SameExtra(_extra, other._extra);
 
     /// <inheritdoc/>
     public override bool Equals(object? obj) => obj is PoseSolveKey other && Equals(other);
@@ -70,24 +70,15 @@ internal readonly struct PoseSolveKey : IEquatable<PoseSolveKey>
     public static bool operator !=(PoseSolveKey a, PoseSolveKey b) => !a.Equals(b);
 
     private static bool SameTip(Tool? a, Tool? b) =>
-        ReferenceEquals(a, b) || (a is not null && b is not null && Same(a.TcpPosition, b.TcpPosition) && Same(a.TcpOrientation, b.TcpOrientation));
+        ReferenceEquals(a, b) || (a is not null && b is not null && SameBits.Of(a.TcpPosition, b.TcpPosition) && SameBits.Of(a.TcpOrientation, b.TcpOrientation));
 
     private static bool SameExtra(Extra? a, Extra? b) => ReferenceEquals(a, b) || (a is not null && b is not null && a.SameAs(b));
 
-    private static bool Same(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
+    private static bool Same(Vector? a, Vector? b) => a is Vector x ? b is Vector y && SameBits.Of(x, y) : b is null;
 
-    private static bool Same(Vector a, Vector b) => Same(a.X, b.X) && Same(a.Y, b.Y) && Same(a.Z, b.Z);
+    private static bool Same(Rotation? a, Rotation? b) => a is Rotation x ? b is Rotation y && SameBits.Of(x, y) : b is null;
 
-    private static bool Same(Rotation a, Rotation b) => Same(a.W, b.W) && Same(a.X, b.X) && Same(a.Y, b.Y) && Same(a.Z, b.Z);
-
-    private static bool Same(Joints a, Joints b) =>
-        Same(a.J1, b.J1) && Same(a.J2, b.J2) && Same(a.J3, b.J3) && Same(a.J4, b.J4) && Same(a.J5, b.J5) && Same(a.J6, b.J6);
-
-    private static bool Same(Vector? a, Vector? b) => a is Vector x ? b is Vector y && Same(x, y) : b is null;
-
-    private static bool Same(Rotation? a, Rotation? b) => a is Rotation x ? b is Rotation y && Same(x, y) : b is null;
-
-    private static bool Same(Joints? a, Joints? b) => a is Joints x ? b is Joints y && Same(x, y) : b is null;
+    private static bool Same(Joints? a, Joints? b) => a is Joints x ? b is Joints y && SameBits.Of(x, y) : b is null;
 }
 
 /// <summary>
