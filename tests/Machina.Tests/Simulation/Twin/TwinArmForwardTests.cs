@@ -1,3 +1,4 @@
+using Machina.Simulation;
 using Machina.Simulation.Twin;
 
 namespace Machina.Tests.Simulation.Twin;
@@ -98,5 +99,38 @@ public class TwinArmForwardTests
         Assert.Equal(Start.J1 + (Other.J1 - Start.J1) * 0.4, joints.J1, 9); // part-way: 0.2 s of 0.5 s, straight in joint space
         Assert.Equal(Other, arm.Joints);
         Assert.Equal(0.5, arm.Clock.Seconds, 9);
+    }
+}
+
+/// <summary>How many forward kinematics the KUKA twin's arm runs per streamed 1 mm LIN of our driver (issue 45).</summary>
+public class TwinArmStreamedForwardTests
+{
+    [Fact]
+    public async Task KukaTwin_StreamedLines_SolveTheForwardKinematicsAtMostTwicePerMotion()
+    {
+        await using VirtualKukaController controller = await Machina.Tests.Online.KukaTestSupport.StartKukaAsync();
+        var bot = Robot.Create("Forward", "KUKA");
+        bot.ControlMode("online");
+        await bot.ConnectAsync("127.0.0.1", controller.Port).WaitAsync(TimeSpan.FromMinutes(1));
+        bot.SpeedTo(200);
+        bot.Move(1, 0, 0); // the first motion (the driver's BCO run) and the connection's reads are counted before
+        await bot.WaitForCompletionAsync().WaitAsync(TimeSpan.FromMinutes(1));
+        TwinArm arm = controller.Twin!.Arm;
+        int before = arm.ForwardSolves;
+        int tracedBefore = arm.Trace.Count(t => t.Kind == TwinTraceKind.Motion);
+        const int Moves = 40;
+
+        for (int i = 0; i < Moves; i++)
+        {
+            bot.Move((i & 1) == 0 ? -1 : 1, 0, 0);
+        }
+        await bot.WaitForCompletionAsync().WaitAsync(TimeSpan.FromMinutes(1));
+
+        // Each LIN read the TCP where the arm stands ($POS_ACT), its start twice more, the motion's start and end, and its trace's
+        // end: six solves of two joints. The last joints solved are kept: the start was solved as the last motion's end.
+        int solves = arm.ForwardSolves - before;
+        Assert.InRange(solves, Moves / 2, 2 * Moves);
+        Assert.Equal(Moves, arm.Trace.Count(t => t.Kind == TwinTraceKind.Motion) - tracedBefore);
+        await bot.DisconnectAsync();
     }
 }
