@@ -165,7 +165,10 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
     [MethodImpl(MethodImplOptions.NoInlining)]
     private static Sample RunOnce(Func<object?> work, bool multiThreaded)
     {
+        // The sampler's thread starts and stops outside the measured span (a thread start is about 0.1 ms).
+        using var sampler = new PeakMemory(TimeSpan.FromMilliseconds(5));
         long baseline = FullCollect();
+        sampler.Reset();
         int gen0 = GC.CollectionCount(0), gen1 = GC.CollectionCount(1), gen2 = GC.CollectionCount(2);
         TimeSpan pauseBefore = GC.GetTotalPauseDuration();
         TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
@@ -175,11 +178,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
         long start = Stopwatch.GetTimestamp();
         object? result;
         long peak;
-        using (var sampler = new PeakMemory(TimeSpan.FromMilliseconds(5)))
-        {
-            result = work();
-            peak = sampler.Peak;
-        }
+        result = work();
+        peak = sampler.Peak;
         TimeSpan elapsed = Stopwatch.GetElapsedTime(start);
         long faults = Machine.MinorPageFaults() - faultsBefore;
         long threadAfter = GC.GetAllocatedBytesForCurrentThread();

@@ -45,6 +45,12 @@ internal sealed partial class TwinArm
             outer = _paced;
             BrakePaced();
         }
+        if (outer is null && NextWake!() is var firstWake && (firstWake < 0 || firstWake >= seconds))
+        {
+            // Nothing wakes it before it ends (the usual case: no timer runs) and it interrupts no motion: one step of program
+            // time, as a motion without wakes, with no motion in program time to make (the tool poses it would solve at its ends).
+            return MoveInOneStep(target, seconds, line, text, cancellation, traced, trace);
+        }
         var paced = new PacedMotion(new Motion(Joints, target, 0, seconds, linear || arc is not null ? this : null, path, arc), Clock.Seconds);
         lock (_gate)
         {

@@ -26,8 +26,8 @@ internal sealed partial class TwinArm
         TwinArc? Arc = null, double ArcFrom = 0)
     {
         private readonly Pose _tool = Cartesian?.ToolCenter ?? Pose.Identity;
-        private readonly Pose _start = Cartesian is null || Arc is not null ? Pose.Identity : Cartesian.Model.Kinematics.Forward(From) * Cartesian.ToolCenter;
-        private readonly Pose _end = Cartesian is null || Arc is not null ? Pose.Identity : Cartesian.Model.Kinematics.Forward(To) * Cartesian.ToolCenter;
+        private readonly Pose _start = Cartesian is null || Arc is not null ? Pose.Identity : Cartesian.FlangeAt(From) * Cartesian.ToolCenter;
+        private readonly Pose _end = Cartesian is null || Arc is not null ? Pose.Identity : Cartesian.FlangeAt(To) * Cartesian.ToolCenter;
 
         /// <summary>The part of the whole arc behind the arm <paramref name="elapsed"/> seconds after this motion started.</summary>
         public double ArcFractionAt(double elapsed) => ArcFrom + (1 - ArcFrom) * (Seconds > 0 ? Math.Clamp(elapsed / Seconds, 0, 1) : 1);

@@ -10,6 +10,11 @@ internal sealed partial class TwinArm
     private readonly List<TwinTraceEntry> _trace = [];
     private Joints _joints;
 
+    // The last flange pose computed and its joints (under the gate): see FlangeAt.
+    private Joints _forwardJoints;
+    private Pose _forwardFlange;
+    private bool _hasForward;
+
     /// <summary>An arm of <paramref name="model"/> at <paramref name="start"/> joints (degrees).</summary>
     public TwinArm(RobotModel model, Joints start, TwinClock clock)
     {
@@ -53,7 +58,34 @@ internal sealed partial class TwinArm
     public double PayloadKg { get; set; }
 
     /// <summary>The flange pose now (mm, base frame).</summary>
-    public Pose Flange => Model.Kinematics.Forward(Joints);
+    public Pose Flange => FlangeAt(Joints);
+
+    /// <summary>
+    /// The flange pose at <paramref name="joints"/> (mm, base frame): the model's forward kinematics, kept for the last joints asked.
+    /// A motion asks for the pose of the joints it starts from several times (the program reads the TCP, the motion its start and
+    /// end, the trace its end, which the next motion starts from): with the same joints to the last bit, the kept pose is the
+    /// one the kinematics would compute again.
+    /// </summary>
+    public Pose FlangeAt(Joints joints)
+    {
+        lock (_gate)
+        {
+            if (_hasForward && SameBits.Of(joints, _forwardJoints))
+            {
+                return _forwardFlange;
+            }
+        }
+        Pose flange = Model.Kinematics.Forward(joints);
+        lock (_gate)
+        {
+            ForwardSolves++;
+            (_forwardJoints, _forwardFlange, _hasForward) = (joints, flange, true);
+        }
+        return flange;
+    }
+
+    /// <summary>How many times the forward kinematics ran for this arm (<see cref="FlangeAt"/>'s misses; tests count them).</summary>
+    internal int ForwardSolves { get; private set; }
 
     /// <summary>The tool centre point now (mm, base frame).</summary>
     public Pose Tcp => Flange * ToolCenter;
@@ -122,6 +154,12 @@ internal sealed partial class TwinArm
         {
             return MovePaced(target, seconds, line, text, cancellation, traced, trace, linear, path, arc);
         }
+        return MoveInOneStep(target, seconds, line, text, cancellation, traced, trace);
+    }
+
+    /// <summary>A motion that is one step of program time: the time passes, then the arm is at <paramref name="target"/> (traced as <see cref="MoveTo"/> says).</summary>
+    private bool MoveInOneStep(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace)
+    {
         Clock.Wait(seconds, cancellation);
         lock (_gate)
         {
@@ -138,7 +176,7 @@ internal sealed partial class TwinArm
     public void Record(int line, TwinTraceKind kind, string text, Joints? at = null)
     {
         Joints joints = at ?? Joints;
-        var entry = new TwinTraceEntry(line, kind, joints, Model.Kinematics.Forward(joints) * ToolCenter, text, Clock.Seconds);
+        var entry = new TwinTraceEntry(line, kind, joints, FlangeAt(joints) * ToolCenter, text, Clock.Seconds);
         lock (_gate)
         {
             _trace.Add(entry);

@@ -15,8 +15,8 @@ internal sealed class TwinClock(TimeProvider time, bool realTime)
     /// <summary>True when waits take their time on <see cref="Time"/>.</summary>
     public bool RealTime { get; } = realTime;
 
-    /// <summary>Program time so far, in seconds: the sum of every motion and wait.</summary>
-    public double Seconds => Interlocked.Read(ref _ticks) / (double)TimeSpan.TicksPerSecond;
+    /// <summary>Program time so far, in seconds: the sum of every motion and wait (a volatile read: atomic on every platform, as the interlocked additions that move it are).</summary>
+    public double Seconds => Volatile.Read(ref _ticks) / (double)TimeSpan.TicksPerSecond;
 
     /// <summary>Advances the program time by <paramref name="seconds"/>, waiting for it in real-time mode.</summary>
     public void Wait(double seconds, CancellationToken cancellation)
