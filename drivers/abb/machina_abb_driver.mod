@@ -34,6 +34,9 @@ MODULE Machina_Driver
     CONST num READ_MARGIN := 20;
     ! The characters that end a token outside quoted text (space, tab, line feed, carriage return, ';', '"', '@').
     CONST string TOKEN_ENDS := " \09\0A\0D;""@";
+    ! The characters of a request of numbers alone, "@id code p1 ... pN;" up to its ';' (ReadWhole).
+    CONST string NUMBER_REQUEST := "@0123456789 .+-Ee";
+    CONST num NO_VALUES{14} := [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];
 
     RECORD MachinaRequest
         num id;
@@ -63,6 +66,10 @@ MODULE Machina_Driver
     VAR num field := 0;
     VAR bool inText := FALSE;
     VAR bool corrupt := FALSE;
+    ! The start of a request of numbers that the last chunk ended in, kept for the next one (JoinPending); "" when none.
+    VAR string pending := "";
+    ! The numbers of the request ReadWhole reads (id, code, p1..p11, and one more that shows a 12th parameter).
+    VAR num values{14};
 
     VAR socketdev serverSocket;
     VAR socketdev clientSocket;
@@ -200,14 +207,96 @@ MODULE Machina_Driver
         RAISE;
     ENDPROC
 
-    ! Feeds a chunk to the parser a run of characters at a time: StrFind finds the next character that ends a token (a space,
-    ! tab, line feed, carriage return, ';', '"' or '@'; in quoted text only the closing '"'), and the run before it is added to
-    ! the token at once. A request may start in one chunk and end in another; a token keeps its first 80 characters.
+    ! Feeds a chunk to the parser. Requests of numbers alone ("@id code p1 ... pN;", single spaces) are read whole (ReadWhole), a
+    ! request the chunk ends in joined to the start of the next chunk (JoinPending); everything else goes to the token parser
+    ! (ParseRuns) from its '@'. Both read the same requests and make the same complaints.
     PROC ParseChunk(string chunk)
         VAR num runStart := 1;
+        IF pending <> "" THEN
+            JoinPending chunk, runStart;
+        ENDIF
+        ReadWhole chunk, runStart;
+        ParseRuns chunk, runStart;
+    ENDPROC
+
+    ! Reads whole requests from runStart on while the parser is between requests, each "@id code p1 ... pN;" of numbers apart
+    ! by single spaces: a StrToVal per number, and the request buffered at once. It stops at anything else (a text, other
+    ! whitespace, an empty or corrupt number, more than 11 parameters, an id alone), which the token parser then reads from
+    ! that '@' as before; runStart is then where it stopped. A request of numbers that the chunk ends in waits in pending.
+    PROC ReadWhole(string chunk, INOUT num runStart)
+        VAR num chunkLength;
+        VAR num requestEnd;
+        VAR num position;
+        VAR num gap;
+        VAR num n;
+        IF field <> 0 OR token <> "" OR inText OR corrupt THEN
+            RETURN;
+        ENDIF
+        chunkLength := StrLen(chunk);
+        WHILE runStart <= chunkLength DO
+            IF StrPart(chunk, runStart, 1) <> "@" THEN
+                RETURN;
+            ENDIF
+            requestEnd := StrFind(chunk, runStart, NUMBER_REQUEST \NotInSet);
+            IF requestEnd > chunkLength THEN
+                pending := StrPart(chunk, runStart, requestEnd - runStart);
+                runStart := requestEnd;
+                RETURN;
+            ENDIF
+            IF StrPart(chunk, requestEnd, 1) <> ";" OR StrMatch(chunk, runStart, "  ") < requestEnd OR StrPart(chunk, runStart + 1, 1) = " " THEN
+                RETURN;
+            ENDIF
+            values := NO_VALUES;
+            n := 0;
+            position := runStart + 1;
+            WHILE position < requestEnd DO
+                gap := StrFind(chunk, position, " ;");
+                n := n + 1;
+                IF n > 13 OR NOT StrToVal(StrPart(chunk, position, gap - position), values{n}) THEN
+                    RETURN;
+                ENDIF
+                position := gap + 1;
+            ENDWHILE
+            IF n < 2 THEN
+                RETURN;
+            ENDIF
+            Buffer [values{1}, values{2}, "", values{3}, values{4}, values{5}, values{6}, values{7}, values{8}, values{9}, values{10}, values{11}, values{12}, values{13}];
+            runStart := requestEnd + 1;
+        ENDWHILE
+    ENDPROC
+
+    ! The request the last chunk ended in (pending) and this chunk's characters up to its ';' are read whole when they make one
+    ! request of numbers of at most 80 characters; otherwise the token parser reads pending first, then the chunk. runStart is
+    ! where the chunk goes on.
+    PROC JoinPending(string chunk, INOUT num runStart)
+        VAR string started;
+        VAR num requestEnd;
+        VAR num joinedStart := 1;
+        started := pending;
+        pending := "";
+        requestEnd := StrFind(chunk, 1, NUMBER_REQUEST \NotInSet);
+        IF requestEnd > StrLen(chunk) OR StrLen(started) + requestEnd > 80 THEN
+            ParseRuns started, 1;
+            RETURN;
+        ENDIF
+        started := started + StrPart(chunk, 1, requestEnd);
+        ReadWhole started, joinedStart;
+        IF joinedStart <= StrLen(started) THEN
+            ParseRuns started, joinedStart;
+        ENDIF
+        runStart := requestEnd + 1;
+    ENDPROC
+
+    ! The token parser: takes a run of characters at a time: StrFind finds the next character that ends a token (a space, tab,
+    ! line feed, carriage return, ';', '"' or '@'; in quoted text only the closing '"'), and the run before it is added to the
+    ! token at once. A request may start in one chunk and end in another; a token keeps its first 80 characters. After each
+    ! request, ReadWhole reads on.
+    PROC ParseRuns(string chunk, num first)
+        VAR num runStart;
         VAR num chunkLength;
         VAR num runEnd;
         VAR string c;
+        runStart := first;
         chunkLength := StrLen(chunk);
         WHILE runStart <= chunkLength DO
             IF inText THEN
@@ -236,6 +325,9 @@ MODULE Machina_Driver
             ELSEIF c = ";" THEN
                 FinishToken;
                 FinishRequest;
+                runStart := runEnd + 1;
+                ReadWhole chunk, runStart;
+                runEnd := runStart - 1;
             ELSEIF c = """" THEN
                 FinishToken;
                 inText := TRUE;
@@ -303,22 +395,27 @@ MODULE Machina_Driver
 
     PROC FinishRequest()
         IF field >= 1 AND NOT corrupt AND NOT inText THEN
-            IF requestCount >= BUFFER_SIZE THEN
-                Complain "request buffer full";
-            ELSE
-                requests{writeIndex} := parsing;
-                writeIndex := writeIndex MOD BUFFER_SIZE + 1;
-                requestCount := requestCount + 1;
-                ! While discarding after a stop, what still arrives is dropped unrun: it is not counted received either, so
-                ! the next client's handshake ($25) shows an idle driver, not requests it will never run.
-                IF parsing.id > 0 AND NOT discarding THEN
-                    lastReceivedId := parsing.id;
-                ENDIF
-            ENDIF
+            Buffer parsing;
         ELSEIF field <> 0 OR corrupt THEN
             Complain "received corrupt request";
         ENDIF
         ResetParser;
+    ENDPROC
+
+    ! Puts a request read in the buffer (or complains that the buffer is full).
+    PROC Buffer(MachinaRequest request)
+        IF requestCount >= BUFFER_SIZE THEN
+            Complain "request buffer full";
+            RETURN;
+        ENDIF
+        requests{writeIndex} := request;
+        writeIndex := writeIndex MOD BUFFER_SIZE + 1;
+        requestCount := requestCount + 1;
+        ! While discarding after a stop, what still arrives is dropped unrun: it is not counted received either, so the next
+        ! client's handshake ($25) shows an idle driver, not requests it will never run.
+        IF request.id > 0 AND NOT discarding THEN
+            lastReceivedId := request.id;
+        ENDIF
     ENDPROC
 
     ! The parameters a request does not give read as 0.
@@ -328,6 +425,7 @@ MODULE Machina_Driver
         field := 0;
         inText := FALSE;
         corrupt := FALSE;
+        pending := "";
     ENDPROC
 
     ! Reports a protocol problem on the pendant; in strict mode the program stops (the host sees no more acks).

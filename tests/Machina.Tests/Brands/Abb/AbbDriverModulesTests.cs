@@ -41,7 +41,7 @@ public class AbbDriverModulesTests
         Assert.True(version.ReportsProgress);
         Assert.Contains("SocketSend clientSocket \\Str:=\"$25 \" + NumToStr(lastExecutedId, 0) + \" \" + NumToStr(lastReceivedId, 0) + \";\";", driver, StringComparison.Ordinal);
         Assert.Contains("lastExecutedId := r.id;", driver, StringComparison.Ordinal);
-        Assert.Contains("lastReceivedId := parsing.id;", driver, StringComparison.Ordinal);
+        Assert.Contains("lastReceivedId := request.id;", driver, StringComparison.Ordinal);
     }
 
     [Fact]

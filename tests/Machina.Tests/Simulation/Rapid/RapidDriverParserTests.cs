@@ -7,7 +7,8 @@ namespace Machina.Tests.Simulation.Rapid;
 /// The RAPID driver's request parser (<c>ParseChunk</c> in drivers/abb/machina_abb_driver.mod), run alone on the RAPID twin: chunks
 /// as <c>SocketReceive</c> hands them over (a request split anywhere), then what the driver buffered, wrote on the pendant and
 /// whether it stopped. The expected values are what the driver of 1.7.0 that read one character at a time gave; the driver that
-/// reads a run of characters at a time (StrFind) must give the same for every edge (issue 45).
+/// reads a run of characters at a time (StrFind), and requests of numbers whole (ReadWhole, JoinPending), must give the same for
+/// every edge (issue 45).
 /// </summary>
 public class RapidDriverParserTests
 {
@@ -20,7 +21,8 @@ public class RapidDriverParserTests
         probe.Append("USE_STRICT := ").Append(strict ? "TRUE" : "FALSE").Append(";\n");
         foreach (string chunk in chunks)
         {
-            probe.Append("ParseChunk ").Append(Literal(chunk)).Append(";\n");
+            // A chunk starting with '!' is a statement of the probe instead (ResetParser: a new client).
+            probe.Append(chunk.StartsWith('!') ? chunk[1..] : "ParseChunk " + Literal(chunk)).Append(";\n");
         }
         probe.Append("""
             Show;
@@ -194,5 +196,74 @@ public class RapidDriverParserTests
             return;
         }
         Assert.Equal([.. token is null ? [] : new[] { token }, complaint], lines);
+    }
+
+    [Fact]
+    public void RequestsOfNumbers_ReadWhole_EdgesReadAsByTheTokenParser_NotStrict()
+    {
+        // Single spaces (one before the ';' too): read whole. A double or leading space, an id alone, a corrupt number, "@;", a 12th
+        // number: the token parser from the same '@' (what it always did: spaces skipped, the rest refused with its complaint).
+        List<string> lines = Parse(false, "@1 4 100;@2 5  3;@ 3 4 7;@4 4 8 ;@5;@;@6 17 1 2 3 4 5 6 7 8 9 10 11;", "@7 17 1 2 3 4 5 6 7 8 9 10 11 12;@8 4 1.2.3;@9 4 -1.5E2;@10 4 +2;");
+
+        Assert.Equal(
+        [
+            "Machina: received corrupt request",
+            "Machina: more than 11 parameters", "Machina: received corrupt request",
+            "1.2.3", "Machina: received corrupt value", "Machina: received corrupt request",
+            "1 4 100 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "2 5 3 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "3 4 7 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "4 4 8 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "6 17 1 2 3 4 5", "6 7 8 9 10 11", "[]",
+            "9 4 -150 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "10 4 2 0 0 0 0", "0 0 0 0 0 0", "[]",
+            .. State(received: 10),
+        ], lines);
+    }
+
+    [Fact]
+    public void AStreamOfMoves_CutIntoChunksOfAnySize_ReadsTheSame()
+    {
+        var stream = new StringBuilder();
+        var expected = new List<string>();
+        for (int id = 1; id <= 12; id++)
+        {
+            string x = (374 + id % 2 + id / 10.0).ToString(System.Globalization.CultureInfo.InvariantCulture);
+            stream.Append('@').Append(id).Append(" 1 ").Append(x).Append(" -0.5 630 0.7071 0 0.7071 0;");
+            expected.AddRange([$"{id} 1 {x} -0.5 630 0.7071 0", "0.7071 0 0 0 0 0", "[]"]);
+        }
+        string text = stream.ToString();
+        foreach (int size in new[] { 1, 7, 29, 36, 37, 41, 64, 79, 80 })
+        {
+            List<string> chunks = [.. Enumerable.Range(0, (text.Length + size - 1) / size).Select(k => text.Substring(k * size, Math.Min(size, text.Length - k * size)))];
+
+            List<string> lines = Parse(true, [.. chunks]);
+
+            Assert.Equal([.. expected, .. State(received: 12)], lines);
+        }
+    }
+
+    [Fact]
+    public void ARequestsStartThatAChunkEndedIn_IsForgottenWithTheParser_AsWhenTheTokenParserHeldIt()
+    {
+        // ResetParser is what a new client gets (AcceptClient): the old client's unfinished request is not joined to the new stream.
+        List<string> lines = Parse(true, "@1 4 10;@2 4 2", "!ResetParser", "@3 4 30;", "@4 4", " 40;");
+
+        Assert.Equal(
+        [
+            "1 4 10 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "3 4 30 0 0 0 0", "0 0 0 0 0 0", "[]",
+            "4 4 40 0 0 0 0", "0 0 0 0 0 0", "[]",
+            .. State(received: 4),
+        ], lines);
+    }
+
+    [Fact]
+    public void ACorruptNumberInARequestsStart_IsReportedWhenTheRequestEnds_Strict()
+    {
+        // A request of number characters that a chunk ends in waits whole for its end (the token parser reported "1.2.3" at its space);
+        // the driver waits for the rest of the request either way, and the host never sends such a number (AbbStatementGrammar).
+        Assert.Equal(State(), Parse(true, "@7 4 1.2.3 5"));
+        Assert.Equal(["1.2.3", "Machina: received corrupt value"], Parse(true, "@7 4 1.2.3 5", "6;"));
     }
 }
