@@ -373,10 +373,17 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     }
 
     /// <summary>Takes the next element of the memory of <paramref name="tag"/> (null when empty); also returns how many remain.</summary>
-    public string? Take(string tag, out int remaining)
+    public string? Take(string tag, out int remaining) => Take(tag, out remaining, out _);
+
+    /// <summary>
+    /// <see cref="Take(string, out int)"/>, and whether a client is connected, read in the same look (an EKI_Get's status: one lock
+    /// instead of two, ten times an action for the driver).
+    /// </summary>
+    public string? Take(string tag, out int remaining, out bool connected)
     {
         lock (_gate)
         {
+            connected = _client is not null || _udpPeer is not null;
             EkiMemory memory = Memory(tag);
             if (memory.Count == 0)
             {
@@ -386,6 +393,16 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             string value = Configuration.Fifo ? memory.TakeFirst() : memory.TakeLast();
             remaining = memory.Count;
             return value;
+        }
+    }
+
+    /// <summary><see cref="Count(string)"/> and whether a client is connected, read in the same look (EKI_CheckBuffer's status).</summary>
+    public int Count(string tag, out bool connected)
+    {
+        lock (_gate)
+        {
+            connected = _client is not null || _udpPeer is not null;
+            return Memory(tag).Count;
         }
     }
 
@@ -531,7 +548,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     }
 
     /// <summary>Escapes a value for an XML attribute or element text.</summary>
-    internal static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
+    internal static string Escape(string value) => value.AsSpan().IndexOfAny("&<>\"") < 0 ? value : value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
         .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
 
     /// <summary>EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements.</summary>

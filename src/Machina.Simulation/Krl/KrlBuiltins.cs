@@ -87,12 +87,14 @@ internal static class KrlBuiltins
     private static object? Inverse(KrlMachine machine, object[] a)
     {
         var status = (KrlPlace)a[2];
-        var start = (KrlStructValue)KrlConvert.To(KrlTypes.E6Axis, a[1], null);
-        var position = (KrlStructValue)KrlConvert.To(KrlTypes.E6Pos, a[0], null);
+        // Arguments of the parameters' own types are only read (the driver's E6POS and E6AXIS): no copy of each per call.
+        KrlStructValue start = a[1] is KrlStructValue { } axes && axes.Type == KrlTypes.E6Axis ? axes : (KrlStructValue)KrlConvert.To(KrlTypes.E6Axis, a[1], null);
+        KrlStructValue position = a[0] is KrlStructValue { } pose && pose.Type == KrlTypes.E6Pos ? pose : (KrlStructValue)KrlConvert.To(KrlTypes.E6Pos, a[0], null);
         Joints near = KrlTwinController.JointsOf(start);
         Joints? solution = machine.Controller.Solve(position, near, useStatusTurn: false, out _);
         status.Set(solution is null ? 1 : 0);
-        return solution is { } j ? KrlTwinController.AxesValue(j) : start;
+        // The answer is the caller's own (ReturnsFresh): the start axes as a copy when they are the argument itself.
+        return solution is { } j ? KrlTwinController.AxesValue(j) : ReferenceEquals(start, a[1]) ? start.Copy() : start;
     }
 
     private static object? Message(KrlMachine machine, object[] a)

@@ -220,21 +220,28 @@ internal sealed partial class KrlMachine
     /// <summary>Calls a routine or a built-in; returns a function's value (null for a subprogram).</summary>
     public object? Call(KrlCall call, object[] frame)
     {
-        var arguments = new object[call.Arguments.Count];
-        for (int i = 0; i < arguments.Length; i++)
+        object[] arguments = BorrowArguments(call.Arguments.Count, out Borrowed mark);
+        try
         {
-            bool isOut = call.Routine is { } r ? r.Parameters[i].IsOut : call.Builtin!.Parameters[i].IsOut;
-            KrlExpr argument = call.Arguments[i];
-            arguments[i] = argument is KrlOmitted ? null! : isOut ? Place(argument, frame) : Eval(argument, frame);
+            for (int i = 0; i < arguments.Length; i++)
+            {
+                bool isOut = call.Routine is { } r ? r.Parameters[i].IsOut : call.Builtin!.Parameters[i].IsOut;
+                KrlExpr argument = call.Arguments[i];
+                arguments[i] = argument is KrlOmitted ? null! : isOut ? BoxPlace(Place(argument, frame)) : Eval(argument, frame);
+            }
+            if (call.Routine is { } routine)
+            {
+                return Invoke(routine, arguments);
+            }
+            int line = Line;
+            object? result = call.Builtin!.Run(this, arguments);
+            Line = line;
+            return result;
         }
-        if (call.Routine is { } routine)
+        finally
         {
-            return Invoke(routine, arguments);
+            GiveBack(mark);
         }
-        int line = Line;
-        object? result = call.Builtin!.Run(this, arguments);
-        Line = line;
-        return result;
     }
 
     private static object Binary(KrlBinary binary, object left, object right)

@@ -91,8 +91,8 @@ internal sealed partial class KrlTwinController
         Add("EKI_Clear", [text], (_, a) => EkiClose(Str(a[0]), clear: true));
         Add("EKI_CheckBuffer", [text, text], (_, a) =>
         {
-            EkiChannel channel = Channel(Str(a[0]));
-            return Status(channel.Count(Str(a[1])), 0, 0, channel.Connected);
+            int buffered = Channel(Str(a[0])).Count(Str(a[1]), out bool connected);
+            return Status(buffered, 0, 0, connected);
         });
         Add("EKI_ClearBuffer", [text, text], (_, a) =>
         {
@@ -280,7 +280,7 @@ internal sealed partial class KrlTwinController
     private KrlStructValue EkiGet(object[] a, Func<string, object> convert)
     {
         EkiChannel channel = Channel(Str(a[0]));
-        string? value = channel.Take(Str(a[1]), out int remaining);
+        string? value = channel.Take(Str(a[1]), out int remaining, out bool connected);
         if (value is not null)
         {
             try
@@ -292,7 +292,7 @@ internal sealed partial class KrlTwinController
                 throw new KrlRuntimeException($"EthernetKRL: the value \"{value}\" of {Str(a[1])} is not a number");
             }
         }
-        return Status(remaining, value is null ? 0 : 1, 0, channel.Connected);
+        return Status(remaining, value is null ? 0 : 1, 0, connected);
     }
 
     private static object EkiInt(string value) => (int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture));

@@ -97,17 +97,7 @@ internal sealed partial class KrlTwinController
         why = "";
         if (useStatusTurn)
         {
-            var wanted = new KukaConfiguration((int)position.Values[6], (int)position.Values[7]);
-            Joints? best = kinematics.InverseAllTurns(flange)
-                .Where(j => Options.Model.IsWithinLimits(j) && KukaConfiguration.From(Options.Model, j) == wanted)
-                .Select(j => (Joints?)j)
-                .MinBy(j => (j!.Value - near).NormSq());
-            if (best is not null)
-            {
-                return best;
-            }
-            why = $"no axis position with S {wanted.StatusText} and T {wanted.TurnText} within the software limit switches reaches it";
-            return null;
+            return SolveWithStatusTurn(position, flange, near, out why);
         }
         Joints? solution = kinematics.Closest(flange, near);
         if (solution is null)
@@ -118,6 +108,27 @@ internal sealed partial class KrlTwinController
         }
         _keptSolution = new KeptSolution(kinematics, baseFrame, tool, target.ToArray(), near, solution, why);
         return solution;
+    }
+
+    /// <summary>
+    /// The axes of the position's S and T that put the flange at <paramref name="flange"/>, nearest to <paramref name="near"/> (a
+    /// method of its own: its lambdas' closure was made at every <see cref="Solve"/>, two an action).
+    /// </summary>
+    private Joints? SolveWithStatusTurn(KrlStructValue position, Pose flange, Joints near, out string why)
+    {
+        IKinematics kinematics = Options.Model.Kinematics;
+        var wanted = new KukaConfiguration((int)position.Values[6], (int)position.Values[7]);
+        Joints? best = kinematics.InverseAllTurns(flange)
+            .Where(j => Options.Model.IsWithinLimits(j) && KukaConfiguration.From(Options.Model, j) == wanted)
+            .Select(j => (Joints?)j)
+            .MinBy(j => (j!.Value - near).NormSq());
+        if (best is not null)
+        {
+            why = "";
+            return best;
+        }
+        why = $"no axis position with S {wanted.StatusText} and T {wanted.TurnText} within the software limit switches reaches it";
+        return null;
     }
 
     /// <summary>

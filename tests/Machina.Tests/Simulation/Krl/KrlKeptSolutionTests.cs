@@ -75,4 +75,39 @@ public class KrlKeptSolutionTests
         Assert.True((bool)twin.Modules["prog"].Data["fired"].Value, "the interrupt never ran");
         Assert.True((bool)twin.Modules["prog"].Data["seen"].Value, "the interrupt ran only after the statement after INVERSE");
     }
+
+    [Fact]
+    public void InverseWithoutASolution_TheAnswerIsACopyOfTheStartAxes_WritingItLeavesTheVariable()
+    {
+        const string Data = """
+            DEFDAT prog
+              DECL E6AXIS from_axes
+              DECL REAL seen[2]
+            ENDDAT
+            """;
+        const string Source = """
+            DEF prog( )
+              DECL E6POS p
+              DECL E6AXIS answer
+              DECL INT err
+              from_axes = $AXIS_ACT
+              from_axes.A1 = 10
+              p = $POS_ACT
+              p.X = 100000
+              err = 0
+              answer = INVERSE(p, from_axes, err)
+              answer.A1 = 77
+              seen[1] = from_axes.A1
+              seen[2] = err
+            END
+            """;
+        using var twin = new KrlTwinController();
+        twin.Load(("prog.src", Source), ("prog.dat", Data));
+
+        KrlProgramState state = twin.Run();
+
+        Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
+        // INVERSE reads its E6AXIS argument without a copy; the answer it gives back without a solution must still be the caller's own.
+        Assert.Equal([10.0, 1.0], ((KrlArrayValue)twin.Modules["prog"].Data["seen"].Value).Items.Select(v => (double)v));
+    }
 }

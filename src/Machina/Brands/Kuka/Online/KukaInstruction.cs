@@ -52,6 +52,47 @@ internal readonly record struct KukaInstruction(int Id, KukaActionCode Code, Kuk
         sb.Append("</DR></DT>");
     }
 
+    /// <summary>Characters enough for a batch of one action without text (<see cref="TryWriteBatch"/>): 13 values of at most 32 characters and the markup.</summary>
+    public const int MaxPlainBatchChars = 640;
+
+    /// <summary>
+    /// Writes the batch of this one action, the same characters as <see cref="AppendBatch(StringBuilder, in KukaInstruction)"/>,
+    /// into <paramref name="destination"/> (at least <see cref="MaxPlainBatchChars"/> long) and returns their count; −1 when the
+    /// action has a text or a value the fixed-point writer does not take (the caller appends it to a builder). What the host
+    /// streams: a move's batch without a builder per action.
+    /// </summary>
+    public int TryWriteBatch(Span<char> destination)
+    {
+        if (Text.Length != 0)
+        {
+            return -1;
+        }
+        int at = Put(destination, 0, "<DT><DR><A ID=\"");
+        Id.TryFormat(destination[at..], out int written, default, System.Globalization.CultureInfo.InvariantCulture);
+        at = Put(destination, at + written, "\" T=\"");
+        ((int)Code).TryFormat(destination[at..], out written, default, System.Globalization.CultureInfo.InvariantCulture);
+        at = Put(destination, at + written, "\"");
+        KukaValues values = Values;
+        for (int i = 0; i < KukaProtocol.ValueCountOf(Code); i++)
+        {
+            at = Put(destination, Put(destination, at, " "), KukaProtocol.ValueNames[i]);
+            at = Put(destination, at, "=\"");
+            written = NumAppend.TryWriteScaled(destination[at..], values[i], 6);
+            if (written < 0)
+            {
+                return -1;
+            }
+            at = Put(destination, at + written, "\"");
+        }
+        return Put(destination, at, " M=\"\"/></DR></DT>");
+    }
+
+    private static int Put(Span<char> destination, int at, ReadOnlySpan<char> text)
+    {
+        text.CopyTo(destination[at..]);
+        return at + text.Length;
+    }
+
     /// <summary>Reads an action element back (the virtual controller's side); a protocol error when an attribute is missing or malformed.</summary>
     public static KukaInstruction Parse(KukaElement element)
     {

@@ -41,6 +41,15 @@ internal sealed class KukaOnline : IOnlineBrand
         {
             note = $"The weight and centre of gravity of tool \"{tool.Name}\" are not sent to KUKA controllers; set its load data on the controller.";
         }
+        Span<char> plain = stackalloc char[KukaInstruction.MaxPlainBatchChars];
+        int length = instruction.TryWriteBatch(plain);
+        if (length >= 0)
+        {
+            // A move, a setting: the characters straight into the frame's bytes, no builder per action.
+            var bytes = new byte[length];
+            System.Text.Encoding.ASCII.GetBytes(plain[..length], bytes);
+            return new ActionFrame(bytes, true, note);
+        }
         var batch = new System.Text.StringBuilder(192); // a move's batch is 100-170 characters
         KukaInstruction.AppendBatch(batch, instruction);
         return new ActionFrame(Ascii(batch), true, note);
