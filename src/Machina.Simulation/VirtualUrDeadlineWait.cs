@@ -36,12 +36,16 @@ internal sealed class VirtualUrDeadlineWait(TimeProvider clock)
     /// </summary>
     public TimeSpan Early => _system && !_precise ? TimeSpan.FromMilliseconds(0.5) : TimeSpan.Zero;
 
-    /// <summary>Called on the thread that will wait: asks for its timer slack of a microsecond when the wait is <see cref="Precise"/>.</summary>
+    /// <summary>
+    /// Called on the thread that will wait: asks for its timer slack of a microsecond and a short time slice
+    /// (<see cref="VirtualUrRtdeSlice"/>: woken at a deadline, it takes a busy core at once) when the wait is <see cref="Precise"/>.
+    /// </summary>
     public void OnWaitingThread()
     {
         if (_precise)
         {
             VirtualUrRtdeSleep.TightenTimerSlack();
+            VirtualUrRtdeSlice.Shorten();
         }
     }
 

@@ -39,8 +39,12 @@ internal readonly struct Affine
     internal static Affine RotZ(double c, double s) => new(c, -s, 0, s, c, 0, 0, 0, 1, 0, 0, 0);
 
     /// <summary>Standard Denavit–Hartenberg link transform Rz(θ)·Tz(d)·Tx(a)·Rx(α).</summary>
-    internal static Affine Dh(double theta, double d, double a, double cosAlpha, double sinAlpha) =>
-        Dh(Math.Cos(theta), Math.Sin(theta), d, a, cosAlpha, sinAlpha);
+    /// <remarks>One <see cref="Math.SinCos"/>, which gives the bits of <see cref="Math.Cos"/> and <see cref="Math.Sin"/> (a forward kinematics takes six).</remarks>
+    internal static Affine Dh(double theta, double d, double a, double cosAlpha, double sinAlpha)
+    {
+        (double st, double ct) = Math.SinCos(theta);
+        return Dh(ct, st, d, a, cosAlpha, sinAlpha);
+    }
 
     /// <summary>As <see cref="Dh(double, double, double, double, double)"/>, for a caller that has θ's cosine and sine already.</summary>
     internal static Affine Dh(double ct, double st, double d, double a, double cosAlpha, double sinAlpha)

@@ -17,4 +17,10 @@ internal interface ISolver
 
     /// <summary>Closeness to singularities of a joint set.</summary>
     SingularityMeasure Measure(Joints joints);
+
+    /// <summary>
+    /// The configuration (<see cref="IKinematics.ConfigurationOf"/>) and <see cref="Measure"/> of one joint set, as those two give
+    /// them: each sample of a checked path asks both, and a solver whose two share their sines computes them once.
+    /// </summary>
+    (ArmConfiguration Configuration, SingularityMeasure Measure) Assess(Joints joints) => (((IKinematics)this).ConfigurationOf(joints), Measure(joints));
 }

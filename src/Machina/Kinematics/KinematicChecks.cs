@@ -78,9 +78,11 @@ public static class KinematicChecks
                 // where it started (the two differ when the path passes near a singularity).
                 // The target's solution closest to the start is what the path's first sample solves for when that sample is the target itself.
                 Joints? closestToStart = start.IsFinite && ReferenceEquals(kin.Model, model) ? chosen : null;
-                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, issues, closestToStart) is Joints followed)
+                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, issues, out SingularityMeasure arrival, closestToStart) is Joints followed)
                 {
                     chosen = solution = followed;
+                    CheckSingularities(arrival, "at the target", issues); // the path's last sample measured these joints already
+                    return issues;
                 }
             }
             else
@@ -107,7 +109,7 @@ public static class KinematicChecks
         if (motion == KinematicMotion.Linear && previous is Joints start)
         {
             IKinematics kin = model.Kinematics;
-            if (CheckPath(model, start, kin.Forward(target), null, speedMmPerSecond, Pose.Identity, issues) is Joints arrival
+            if (CheckPath(model, start, kin.Forward(target), null, speedMmPerSecond, Pose.Identity, issues, out _) is Joints arrival
                 && kin.ConfigurationOf(arrival) != kin.ConfigurationOf(target))
             {
                 Add(issues, KinematicIssueKind.ConfigurationFlip,
@@ -134,10 +136,12 @@ public static class KinematicChecks
     /// <paramref name="closestToStart"/>, when known, is the solution of <paramref name="target"/> closest to <paramref name="start"/>
     /// (<see cref="KinematicsCore.ClosestOf"/> of the target's raw solutions): a first sample that is the target to the last bit (a
     /// line short enough for one sample, the common streamed move) takes it instead of solving the target again.
+    /// <paramref name="arrival"/> is the singularity measure of the joints returned (default when null).
     /// </remarks>
     private static Joints? CheckPath(RobotModel model, Joints start, Pose target, Vector? arcThrough, double speed, Pose tool, List<KinematicIssue> issues,
-        Joints? closestToStart = null)
+        out SingularityMeasure arrival, Joints? closestToStart = null)
     {
+        arrival = default;
         IKinematics kin = model.Kinematics;
         var solver = (ISolver)kin;
         // The controller moves the tool tip on the path (the flange swings around it when the tool turns): sample the tip's path and
@@ -182,17 +186,18 @@ public static class KinematicChecks
                     worstJoint = k;
                 }
             }
-            if (jump > FlipJumpDegrees || kin.ConfigurationOf(j) != startConfig)
+            (ArmConfiguration config, SingularityMeasure measure) = solver.Assess(j);
+            if (jump > FlipJumpDegrees || config != startConfig)
             {
                 Add(issues, KinematicIssueKind.ConfigurationFlip,
-                    $"the arm would have to change configuration {Where(t, path, pose, tool)} (from {startConfig} to {kin.ConfigurationOf(j)}, a joint jumps {Num.F(jump, 1)}°): the {path} passes through or very near a position where the arm must flip, which it cannot do smoothly (use a joint move, or move the path away from it).");
+                    $"the arm would have to change configuration {Where(t, path, pose, tool)} (from {startConfig} to {config}, a joint jumps {Num.F(jump, 1)}°): the {path} passes through or very near a position where the arm must flip, which it cannot do smoothly (use a joint move, or move the path away from it).");
             }
-            SingularityMeasure measure = solver.Measure(j);
             if (IsNearSingularity(measure))
             {
                 CheckSingularities(measure, Where(t, path, pose, tool), issues);
             }
             last = j;
+            arrival = measure;
         }
         if (worstRatio > 1 && model.MaxJointSpeeds is Joints limits)
         {

@@ -109,9 +109,13 @@ public sealed class OpwKinematics : IKinematics, ISolver
         double phi = t[1] + t[2];
         double s = Reach(t);
         double z = _p.C1 + _p.C2 * Math.Cos(t[1]) - _p.C3 * Math.Sin(phi) + _e * Math.Cos(phi);
-        double c1 = Math.Cos(t[0]), s1 = Math.Sin(t[0]);
-        Affine r = Affine.RotZ(c1, s1) * Affine.RotY(Math.Cos(phi), Math.Sin(phi)) * Affine.RotX(Math.Cos(t[3]), Math.Sin(t[3]))
-            * Affine.RotY(Math.Cos(t[4]), Math.Sin(t[4])) * Affine.RotX(Math.Cos(t[5]), Math.Sin(t[5]));
+        // Math.SinCos gives Math.Sin's and Math.Cos's bits (MathSinCosTests), in one call.
+        (double s1, double c1) = Math.SinCos(t[0]);
+        (double sPhi, double cPhi) = Math.SinCos(phi);
+        (double s4, double c4) = Math.SinCos(t[3]);
+        (double s5, double c5) = Math.SinCos(t[4]);
+        (double s6, double c6) = Math.SinCos(t[5]);
+        Affine r = Affine.RotZ(c1, s1) * Affine.RotY(cPhi, sPhi) * Affine.RotX(c4, s4) * Affine.RotY(c5, s5) * Affine.RotX(c6, s6);
         double wx = s * c1 - _p.B * s1, wy = s * s1 + _p.B * c1;
         return r.WithTranslation(wx + _p.C4 * r.R00, wy + _p.C4 * r.R10, z + _p.C4 * r.R20);
     }
@@ -181,7 +185,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
                 continue;
             }
             double asinD = Math.Asin(Math.Clamp(d, -1, 1));
-            double c1 = Math.Cos(t1), s1 = Math.Sin(t1);
+            (double s1, double c1) = Math.SinCos(t1); // the bits of Math.Sin and Math.Cos (MathSinCosTests), in one call
             // Wrist rotation in the axis-1 frame (Rz(−θ1)·W), reused for both elbows.
             double m00 = c1 * w.R00 + s1 * w.R10, m01 = c1 * w.R01 + s1 * w.R11, m02 = c1 * w.R02 + s1 * w.R12;
             double m10 = -s1 * w.R00 + c1 * w.R10, m11 = -s1 * w.R01 + c1 * w.R11, m12 = -s1 * w.R02 + c1 * w.R12;
@@ -190,9 +194,11 @@ public sealed class OpwKinematics : IKinematics, ISolver
             {
                 double t3 = elbow == 0 ? _psi - asinD : _psi - Math.PI + asinD;
                 double g = t3 - _psi;
-                double a = c2 - k * Math.Sin(g), b = k * Math.Cos(g);
+                (double sinG, double cosG) = Math.SinCos(g);
+                double a = c2 - k * sinG, b = k * cosG;
                 double t2 = Math.Atan2(a * u - b * v, a * v + b * u);
-                double phi = t2 + t3, cp = Math.Cos(phi), sp = Math.Sin(phi);
+                double phi = t2 + t3;
+                (double sp, double cp) = Math.SinCos(phi);
                 // M = Ry(−φ)·Rz(−θ1)·W = Rx(θ4)·Ry(θ5)·Rx(θ6)
                 double n00 = cp * m00 - sp * m20;
                 double n10 = m10, n11 = m11, n12 = m12;
@@ -203,7 +209,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
                 // Rx(θ6) = Ry(−θ5)·Rx(−θ4)·M, so the pair always reproduces the rotation (row 1 does not depend on θ5).
                 bool straight = s5 <= 1e-12;
                 double t4 = straight ? r4 : Math.Atan2(n10, -n20);
-                double c4 = Math.Cos(t4), s4 = Math.Sin(t4);
+                (double s4, double c4) = Math.SinCos(t4);
                 double t6 = Math.Atan2(-(c4 * n12 + s4 * n22), c4 * n11 + s4 * n21);
                 if (straight)
                 {

@@ -87,12 +87,21 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
     public ArmConfiguration ConfigurationOf(Joints joints) =>
         new(WristReach(joints) > 0, Math.Sin(joints.J3 * Angles.ToRadians) > 0, Math.Sin(joints.J5 * Angles.ToRadians) < 0);
 
-    SingularityMeasure ISolver.Measure(Joints joints)
+    SingularityMeasure ISolver.Measure(Joints joints) =>
+        MeasureOf(Math.Sin(joints.J5 * Angles.ToRadians), Math.Sin(joints.J3 * Angles.ToRadians), WristReach(joints));
+
+    /// <remarks>The two share sin θ5, sin θ3 and the wrist's reach: taken once (a checked path's every sample asks both).</remarks>
+    (ArmConfiguration Configuration, SingularityMeasure Measure) ISolver.Assess(Joints joints)
     {
-        double wrist = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(joints.J5 * Angles.ToRadians)))) * Angles.ToDegrees;
-        double elbow = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(joints.J3 * Angles.ToRadians)))) * Angles.ToDegrees;
+        double sin5 = Math.Sin(joints.J5 * Angles.ToRadians), sin3 = Math.Sin(joints.J3 * Angles.ToRadians), reach = WristReach(joints);
+        return (new ArmConfiguration(reach > 0, sin3 > 0, sin5 < 0), MeasureOf(sin5, sin3, reach));
+    }
+
+    private SingularityMeasure MeasureOf(double sin5, double sin3, double reach)
+    {
+        double wrist = Math.Asin(Math.Min(1, Math.Abs(sin5))) * Angles.ToDegrees;
+        double elbow = Math.Asin(Math.Min(1, Math.Abs(sin3))) * Angles.ToDegrees;
         // The wrist centre's distance from axis 1 is √(R² + d4²) (R along the arm's plane, d4 across it).
-        double reach = WristReach(joints);
         double shoulder = Math.Abs(Math.Sqrt(reach * reach + _dh.D4 * _dh.D4) - Math.Abs(_dh.D4));
         return new SingularityMeasure(wrist, elbow, shoulder);
     }
@@ -119,10 +128,13 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         }
         double phi1 = Math.Atan2(py, px), phi2 = Math.Acos(Math.Clamp(d4 / r, -1, 1));
         int count = 0;
+        // Each sine and cosine below is taken once: Math.SinCos gives Math.Sin's and Math.Cos's bits, and the solutions that differ
+        // only in the sign of an angle (θ5 of the two wrists, θ3 of the two elbows) take sin(−x) = −sin(x), cos(−x) = cos(x) and
+        // atan2(−y, x) = −atan2(y, x), which hold to the bit (UniversalRobotsSolveBitsTests compares with the full computation).
         for (int shoulder = 0; shoulder < 2; shoulder++)
         {
             double t1 = phi1 + (shoulder == 0 ? phi2 : -phi2) + HalfPi;
-            double c1 = Math.Cos(t1), s1 = Math.Sin(t1);
+            (double s1, double c1) = Math.SinCos(t1);
             // T01⁻¹ · T, the same for both wrists.
             Affine t1t = Affine.Dh(c1, s1, d1, 0, 0, 1).InverseRigid() * t;
             // The unit vector (s1, −c1, 0) seen from the flange is (s5·cos θ6, −s5·sin θ6, cos θ5). Taking θ5 with atan2 from it (rather
@@ -130,14 +142,17 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
             double ux = t.R00 * s1 - t.R10 * c1, uy = t.R01 * s1 - t.R11 * c1, c5 = t.R02 * s1 - t.R12 * c1;
             double s5Abs = Math.Sqrt(ux * ux + uy * uy);
             double t5Abs = Math.Atan2(s5Abs, c5);
+            (double sinT5Abs, double cosT5) = Math.SinCos(t5Abs);
             for (int wrist = 0; wrist < 2; wrist++)
             {
                 double t5 = wrist == 0 ? t5Abs : -t5Abs;
+                double sinT5 = wrist == 0 ? sinT5Abs : -sinT5Abs;
                 double sign = wrist == 0 ? 1 : -1;
                 // Straight wrist: θ6 is free (axes 2, 3 and 4 make up for it); keep the reference's.
                 double t6 = s5Abs < 1e-12 ? reference.J6 * Angles.ToRadians : Math.Atan2(-uy * sign, ux * sign);
+                (double sinT6, double cosT6) = Math.SinCos(t6);
                 // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
-                Affine t14 = t1t * Affine.Dh(t6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(t5, d5, 0, 0, -1).InverseRigid();
+                Affine t14 = t1t * Affine.Dh(cosT6, sinT6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(cosT5, sinT5, d5, 0, 0, -1).InverseRigid();
                 double x = t14.Px, y = t14.Py;
                 double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
                 if (c3 > 1 + 1e-12 || c3 < -1 - 1e-12)
@@ -147,10 +162,13 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
                 double t3Abs = Math.Acos(Math.Clamp(c3, -1, 1));
                 // The same for both elbows.
                 double towardsWrist = Math.Atan2(y, x), arm234 = Math.Atan2(t14.R10, t14.R00);
+                (double sinT3Abs, double cosT3) = Math.SinCos(t3Abs);
+                // The elbow's angle at +θ3; at −θ3 it is its negative.
+                double bend = Math.Atan2(a3 * sinT3Abs, a2 + a3 * cosT3);
                 for (int elbow = 0; elbow < 2; elbow++)
                 {
                     double t3 = elbow == 0 ? -t3Abs : t3Abs;
-                    double t2 = towardsWrist - Math.Atan2(a3 * Math.Sin(t3), a2 + a3 * Math.Cos(t3));
+                    double t2 = towardsWrist - (elbow == 0 ? -bend : bend);
                     double t4 = arm234 - t2 - t3;
                     joints[count] = new Joints(
                         KinematicsCore.WrapDegrees(t1), KinematicsCore.WrapDegrees(t2), KinematicsCore.WrapDegrees(t3),
