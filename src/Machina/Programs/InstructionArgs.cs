@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina;
@@ -50,12 +51,36 @@ internal sealed class InstructionArgs
     {
         if (Count == _args.Length)
         {
-            Array.Resize(ref _args, _args.Length * 2);
+            Grow();
         }
         ref Arg arg = ref _args[Count++];
         arg = new Arg { Line = line, Column = column };
         return ref arg;
     }
+
+    /// <summary>Adds a plain number read by the parser (<see cref="Arg.IsNumber"/>) at <paramref name="start"/> of the source.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal void AddNumber(int line, int column, int start, int length, double value)
+    {
+        if (Count == _args.Length)
+        {
+            Grow();
+        }
+        ref Arg arg = ref _args[Count++];
+        arg.Start = start;
+        arg.Length = length;
+        arg.Line = line;
+        arg.Column = column;
+        arg.Quoted = false;
+        arg.Text = null;
+        arg.IsNumber = true;
+        arg.Number = value;
+    }
+
+    /// <summary>Drops the arguments added since <see cref="Begin"/>, for the parser to read them again another way.</summary>
+    internal void Drop() => Count = 0;
+
+    private void Grow() => Array.Resize(ref _args, _args.Length * 2);
 
     private ReadOnlySpan<char> Raw(int i) => _source.AsSpan(_args[i].Start, _args[i].Length);
 
@@ -64,12 +89,16 @@ internal sealed class InstructionArgs
     private InstructionParseException Error(int i, string problem) => new(_args[i].Line, _args[i].Column, problem);
 
     /// <summary>Argument <paramref name="i"/> as a number.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal double D(int i)
     {
-        if (_args[i].IsNumber)
-        {
-            return _args[i].Number;
-        }
+        ref Arg arg = ref _args[i];
+        return arg.IsNumber ? arg.Number : ParseD(i);
+    }
+
+    /// <summary>Argument <paramref name="i"/> as a number, when the parser did not read it as a plain number.</summary>
+    private double ParseD(int i)
+    {
         // Quoted numbers ("12.5") are accepted because the original stripped quotes from every argument.
         if (NumParse.TryParse(Value(i), out double v) && double.IsFinite(v))
         {

@@ -68,10 +68,13 @@ internal sealed class InstructionParser
         StatementColumn = column;
         StatementLineStart = _lineStart;
         int nameStart = _pos;
-        while (_pos < _length && (char.IsAsciiLetterOrDigit(_text[_pos]) || _text[_pos] == '_'))
+        ReadOnlySpan<char> text = _text.AsSpan(0, _length);
+        int end = nameStart;
+        while ((uint)end < (uint)text.Length && (char.IsAsciiLetterOrDigit(text[end]) || text[end] == '_'))
         {
-            _pos++;
+            end++;
         }
+        _pos = end;
         if (_pos == nameStart || !char.IsAsciiLetter(_text[nameStart]))
         {
             throw Error(line, column, $"expected an instruction such as MoveTo(400, 300, 500), but found '{Describe(_text[nameStart])}'.");
@@ -82,11 +85,11 @@ internal sealed class InstructionParser
         ReadOnlySpan<char> found = _text.AsSpan(nameStart, _pos - nameStart);
         string name;
         InstructionCatalog.Overload[] overloads;
-        if (found.SequenceEqual(_lastName))
+        if (found.Length == _lastName.Length && found.SequenceEqual(_lastName))
         {
             (name, overloads) = (_lastName, _lastOverloads);
         }
-        else if (found.SequenceEqual(_otherName))
+        else if (found.Length == _otherName.Length && found.SequenceEqual(_otherName))
         {
             (name, overloads) = (_otherName, _otherOverloads);
             (_otherName, _otherOverloads) = (_lastName, _lastOverloads);
@@ -165,6 +168,10 @@ internal sealed class InstructionParser
 
     private void ReadArguments(string name)
     {
+        if (TryReadNumbers())
+        {
+            return;
+        }
         SkipGaps();
         if (_pos < _length && _text[_pos] == ')')
         {
@@ -200,6 +207,41 @@ internal sealed class InstructionParser
             if (c != ',')
             {
                 throw Error(_line, Column - 1, $"expected ',' or ')' in {name}(...), but found '{Describe(c)}'.");
+            }
+        }
+    }
+
+    /// <summary>
+    /// The arguments of a toolpath's statement (<c>12.5, -3, 0.25)</c>: plain numbers, each ending at ',' or ')', with spaces
+    /// before them) read in one loop over local copies of the text and position, to the position after the ')'. Each is read
+    /// as <see cref="ReadPlainNumber"/> reads it and given the line and column the general loop gives it. False for anything
+    /// else (no argument, text, a comment, a line break, a space before a ','); the arguments read are then dropped and
+    /// nothing is consumed, so the general loop reads the statement from the same place, to the same arguments or error.
+    /// </summary>
+    private bool TryReadNumbers()
+    {
+        ReadOnlySpan<char> text = _text.AsSpan(0, _length);
+        int pos = _pos;
+        int line = _line;
+        int lineStart = _lineStart;
+        while (true)
+        {
+            while ((uint)pos < (uint)text.Length && text[pos] == ' ')
+            {
+                pos++;
+            }
+            int end = NumParse.ReadShortAt(text, pos, out double value);
+            if (end < 0 || end >= text.Length || (text[end] != ',' && text[end] != ')'))
+            {
+                _args.Drop();
+                return false;
+            }
+            _args.AddNumber(line, pos - lineStart + 1, pos, end - pos, value);
+            pos = end + 1;
+            if (text[end] == ')')
+            {
+                _pos = pos;
+                return true;
             }
         }
     }
@@ -339,6 +381,18 @@ internal sealed class InstructionParser
         while (_pos < _length)
         {
             char c = _text[_pos];
+            // The common cases first: the line break after a statement, then a letter (no ASCII character above the space
+            // but ';' and '/' is a separator or starts a comment).
+            if (c == '\n')
+            {
+                _line++;
+                _lineStart = ++_pos;
+                continue;
+            }
+            if (c > ' ' && c < '\u0080' && c != ';' && c != '/')
+            {
+                return;
+            }
             if (char.IsWhiteSpace(c) || c == ';' || c == '\uFEFF')
             {
                 Advance();

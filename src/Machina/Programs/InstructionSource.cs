@@ -37,9 +37,6 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     internal const int PositionsKept = 1024;
 
     private readonly (int Id, int Line, int Column)[] _recent = new (int, int, int)[PositionsKept];
-    private RobotAction? _current;
-    private int _line;
-    private int _column;
 
     /// <summary>Number of actions in the text, known after the first complete pass (0 before).</summary>
     internal int Count { get; private set; }
@@ -61,7 +58,8 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// <summary>The error for an action that cannot be applied: an instruction error at the action's position.</summary>
     internal InstructionParseException Refused(RobotAction action, string reason)
     {
-        (int Line, int Column) at = ReferenceEquals(action, _current) ? (_line, _column) : PositionOf(action.Id) ?? (0, 0);
+        // The action being compiled is the newest in the ring, so its position is found there too.
+        (int Line, int Column) at = PositionOf(action.Id) ?? (0, 0);
         return new InstructionParseException(at.Line, at.Column, $"cannot apply \"{action.ToInstruction()}\": {reason}");
     }
 
@@ -146,10 +144,7 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                 {
                     RobotAction action = batch.Actions[i];
                     action.Id = ++id;
-                    _current = action;
-                    _line = batch.Lines[i];
-                    _column = batch.Columns[i];
-                    _recent[id % PositionsKept] = (id, _line, _column);
+                    _recent[id % PositionsKept] = (id, batch.Lines[i], batch.Columns[i]);
                     yield return action;
                 }
                 batch.Error?.Throw();
@@ -157,7 +152,6 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
                 free.Enqueue(batch);
             }
             cancellationToken.ThrowIfCancellationRequested();
-            _current = null;
             Count = id;
         }
         finally

@@ -55,6 +55,7 @@ internal static class NumAppend
     /// <paramref name="value"/> · 10^<paramref name="decimals"/> (0–9) rounded to a whole number, halves to even, as
     /// <see cref="TryWriteScaled"/> writes it; false when it is 10^15 or more in size, or not finite.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static bool TryScale(double value, int decimals, out double scaled)
     {
         scaled = RoundEven(value * Pow10[decimals]);
@@ -187,6 +188,7 @@ internal static class NumAppend
     }
 
     /// <summary>Stores four packed characters at <paramref name="at"/> (the place must hold them) and returns <paramref name="at"/> + <paramref name="count"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int Put(Span<char> destination, int at, ulong packed, int count)
     {
         System.Runtime.InteropServices.MemoryMarshal.Write(System.Runtime.InteropServices.MemoryMarshal.AsBytes(destination.Slice(at, 4)), in packed);
@@ -194,6 +196,7 @@ internal static class NumAppend
     }
 
     /// <summary>Writes <paramref name="value"/> (below 1000) without leading zeros at <paramref name="at"/>; returns the position after it.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int WriteBelowThousand(Span<char> destination, int at, uint value)
     {
         int skipped = value >= 100 ? 0 : value >= 10 ? 1 : 2;
@@ -204,6 +207,7 @@ internal static class NumAppend
     /// Writes the fraction <c>.first second</c> (each group three digits, below 1000; <paramref name="second"/> 0 for three
     /// decimals) without its trailing zeros, nothing when it is 0; returns the position after it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int WriteFraction(Span<char> destination, int at, uint first, uint second)
     {
         if (second != 0)
@@ -317,6 +321,7 @@ internal static class NumAppend
     /// Larger values, infinities and NaN give a number of size 2^51 − 1 or more, or NaN: callers check for 10^15 and fall back.
     /// </summary>
     /// <remarks>The processor rounds the sum to the nearest double, ties to even, and there the doubles are whole numbers.</remarks>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static double RoundEven(double value) => value + RoundingShift - RoundingShift;
 
     /// <summary>

@@ -39,6 +39,34 @@ public class InstructionParserTests
         Assert.Throws<InstructionParseException>(() => Instructions.Parse("Move(-,0,0);"));
     }
 
+    [Theory]
+    [InlineData("Rotate(0, 0, 1, 1e400)", 1, 17, "argument 4 of Rotate")]
+    [InlineData("Move(1, 2,x)", 1, 11, "argument 3 of Move")]
+    [InlineData("\n  Rotate(1,2, 3 , abc)", 2, 19, "argument 4 of Rotate")]
+    [InlineData("Move(1, 2,\n  x)", 2, 3, "argument 3 of Move")]
+    [InlineData("MoveTo(1, 2, 3", 1, 15, "MoveTo( is not closed")]
+    public void Parse_PlainNumbersThenAnotherForm_ErrorAtTheArgumentAsBefore(string text, int line, int column, string problem)
+    {
+        // A statement's plain numbers are read in one loop; at the first other form the statement is read again the general
+        // way, which must point at the same argument as if the loop did not exist.
+        var ex = ParseError(text);
+
+        Assert.Equal((line, column), (ex.Line, ex.Column));
+        Assert.StartsWith(problem, ex.Problem, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Parse_PlainNumbersThenAnotherForm_ReadAsTheGeneralParserReadsThem()
+    {
+        var actions = Instructions.Parse("Move(1, 2, 3 // up\n);MoveTo(1, 2,\n 3)\nRotate(0, 0, 1, \"45\");Move(1 , 2);Move(\t4, 5)");
+
+        Assert.Equal<RobotAction>(
+            [new ActionTranslation(new Vector(1, 2, 3), true), new ActionTranslation(new Vector(1, 2, 3), false),
+             new ActionRotation(new Vector(0, 0, 1), 45, true), new ActionTranslation(new Vector(1, 2, 0), true),
+             new ActionTranslation(new Vector(4, 5, 0), true)],
+            actions);
+    }
+
     [Fact]
     public void Parse_CommentsOnTheirOwnLineAndAfterStatements_AreIgnored()
     {

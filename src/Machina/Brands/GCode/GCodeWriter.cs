@@ -416,10 +416,15 @@ internal sealed class GCodeWriter
     private void NotApplicable(RobotAction action, string reason)
     {
         _job.Warn(action, reason);
-        StringBuilder sb = _sb.Clear().Append("; ACTION \"").AppendDescription(action, oneLine: true).Append("\" NOT APPLICABLE TO THIS DEVICE");
+        // The description is found once and written twice (a toolpath that turns on every other move wrote it twice per
+        // turn); a move's or a turn's (digits and fixed words) without a string, as AppendDescription writes it.
+        Span<char> buffer = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
+        int written = action.TryWriteDescription(buffer);
+        ReadOnlySpan<char> description = written >= 0 ? buffer[..written] : ProgramText.OneLine(action.Describe());
+        StringBuilder sb = _sb.Clear().Append("; ACTION \"").Append(description).Append("\" NOT APPLICABLE TO THIS DEVICE");
         if (_human)
         {
-            sb.Append("  ; [").AppendDescription(action, oneLine: true).Append(']');
+            sb.Append("  ; [").Append(description).Append(']');
         }
         _file.Add(sb);
     }
