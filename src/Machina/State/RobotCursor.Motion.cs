@@ -167,6 +167,8 @@ internal sealed partial class RobotCursor
 
     private static bool WithinReach(Joints j) => Within(j.J1) && Within(j.J2) && Within(j.J3) && Within(j.J4) && Within(j.J5) && Within(j.J6);
 
+    // Inlined: the optimised motion methods called it, unoptimised, three times a move until the runtime tiered it up.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool Within(double value) => Math.Abs(value) <= MaxCoordinate;
 
     private double? LineLength(Vector target) => Position is Vector p ? Vector.Distance(p, target) : null;
@@ -196,6 +198,7 @@ internal sealed partial class RobotCursor
         return null;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // once a motion, from CommitCartesian: see Within
     private void UpdateExtrusion(double? pathLength)
     {
         PrevExtrudedLength = ExtrudedLength;
