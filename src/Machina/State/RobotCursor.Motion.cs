@@ -187,13 +187,21 @@ internal sealed partial class RobotCursor
         }
         PrevPosition = Position;
         PrevRotation = Rotation;
-        PrevAxes = Axes;
+        // Joints and an arc's through point are mostly unknown already along a Cartesian toolpath: each check is one read of a
+        // flag where the assignments wrote 56-, 32- and 48-byte structs on every move (the same values either way).
+        if (Axes is not null || PrevAxes is not null)
+        {
+            PrevAxes = Axes;
+            Axes = null;
+        }
         Position = position;
         Rotation = rotation;
-        Axes = null;
         LastPathLength = pathLength;
-        ArcThrough = null;
-        ArcThroughRotation = null;
+        if (ArcThrough is not null || ArcThroughRotation is not null)
+        {
+            ArcThrough = null;
+            ArcThroughRotation = null;
+        }
         UpdateExtrusion(pathLength);
         return null;
     }
