@@ -10,7 +10,13 @@ namespace Machina;
 public sealed partial class Robot : IOnlineHost
 {
     /// <summary>Guards the issue cursor and the program list; taken before any lock of the online session (see <see cref="IOnlineHost"/>).</summary>
+    // A Lock where there is one (.NET 9 on): entered and left in managed code that inlines, where a monitor went through the
+    // runtime's native helpers on every issued action (docs/performance.md, session 27).
+#if NET9_0_OR_GREATER
+    private readonly Lock _issueLock = new();
+#else
     private readonly object _issueLock = new();
+#endif
     private readonly RobotCursor _issueCursor;
 
     private readonly List<RobotAction> _programActions = [];
@@ -86,9 +92,32 @@ public sealed partial class Robot : IOnlineHost
     {
         ArgumentNullException.ThrowIfNull(action);
         (string? Report, ActionIssuedArgs? Issued) result;
+        List<(LogLevel Level, string Message, RobotAction? Refused)>? lines = null;
         try
         {
-            result = UnderIssueLock(action, static (self, a) => self.IssueLocked(a));
+            // UnderIssueLock written out for the one action: a script's loop issues millions, and the lambda it took ran as
+            // unoptimised first-tier code (a delegate call per action) until the runtime got round to it, after the loop.
+            try
+            {
+                lock (_issueLock)
+                {
+                    try
+                    {
+                        result = IssueLocked(action);
+                    }
+                    finally
+                    {
+                        lines = TakeLockedLog();
+                    }
+                }
+            }
+            finally
+            {
+                if (lines is not null)
+                {
+                    WriteLockedLog(lines);
+                }
+            }
         }
         finally
         {

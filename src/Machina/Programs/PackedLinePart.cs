@@ -55,27 +55,35 @@ internal sealed class PackedLinePart
             _used += length;
             return (List.Count - 1, start);
         }
+
+        /// <summary>Gives back the room of the last <see cref="Reserve"/> (of <paramref name="length"/> elements), unused.</summary>
+        internal void Unreserve(int length) => _used -= length;
     }
 
     /// <summary>Number of lines.</summary>
     internal int Count { get; private set; }
+
+    /// <summary>Total characters of all lines, without line endings.</summary>
+    internal long CharacterCount { get; private set; }
 
     /// <summary>Appends a line.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void Add(ReadOnlySpan<char> line)
     {
         Line entry;
-        if (Ascii.IsValid(line))
+        // Narrowed straight into its block, which checks as it goes (one pass over the line, not a check and then a copy); a line
+        // that is not ASCII gives its room back and is kept as characters.
+        (int block, int start) = _ascii.Reserve(line.Length);
+        if (Ascii.FromUtf16(line, _ascii.List[block].AsSpan(start, line.Length), out _) == System.Buffers.OperationStatus.Done)
         {
-            (int block, int start) = _ascii.Reserve(line.Length);
-            Ascii.FromUtf16(line, _ascii.List[block].AsSpan(start, line.Length), out _);
             entry = new Line(block, start, line.Length);
         }
         else
         {
-            (int block, int start) = _other.Reserve(line.Length);
-            line.CopyTo(_other.List[block].AsSpan(start));
-            entry = new Line(~block, start, line.Length);
+            _ascii.Unreserve(line.Length);
+            (int otherBlock, int otherStart) = _other.Reserve(line.Length);
+            line.CopyTo(_other.List[otherBlock].AsSpan(otherStart));
+            entry = new Line(~otherBlock, otherStart, line.Length);
         }
         int offset = Count & (ChunkSize - 1);
         if ((offset == 0 && Count > 0) || _chunks.Count == 0)
@@ -90,6 +98,25 @@ internal sealed class PackedLinePart
         }
         _chunks[^1][offset] = entry;
         Count++;
+        CharacterCount += line.Length;
+    }
+
+    /// <summary>
+    /// The first line whose text starts at least <paramref name="characters"/> characters into this part's text (each line followed
+    /// by <paramref name="newLineLength"/> characters), and where it starts; <see cref="Count"/> and the part's length when none does.
+    /// </summary>
+    internal (int Line, long Start) LineFrom(long characters, int newLineLength)
+    {
+        long at = 0;
+        for (int i = 0; i < Count; i++)
+        {
+            if (at >= characters)
+            {
+                return (i, at);
+            }
+            at += At(i).Length + newLineLength;
+        }
+        return (Count, at);
     }
 
     private Line At(int index) => _chunks[index >> ChunkShift][index & (ChunkSize - 1)];
@@ -120,15 +147,19 @@ internal sealed class PackedLinePart
         }
     }
 
-    /// <summary>Copies every line followed by <paramref name="newLine"/> into <paramref name="destination"/> from <paramref name="at"/>; returns where it ended.</summary>
+    /// <summary>
+    /// Copies the lines from <paramref name="first"/> up to (not including) <paramref name="end"/>, each followed by
+    /// <paramref name="newLine"/>, into <paramref name="destination"/> from <paramref name="at"/>; returns where it ended.
+    /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)] // runs once per ToText over every line: optimised from its first call
-    internal int CopyTo(Span<char> destination, int at, string newLine)
+    internal int CopyTo(Span<char> destination, int at, string newLine, int first, int end)
     {
-        for (int c = 0; c < _chunks.Count; c++)
+        for (int c = first >> ChunkShift; c < _chunks.Count && (c << ChunkShift) < end; c++)
         {
             Line[] chunk = _chunks[c];
-            int count = Math.Min(chunk.Length, Count - (c << ChunkShift));
-            for (int i = 0; i < count; i++)
+            int from = Math.Max(0, first - (c << ChunkShift));
+            int count = Math.Min(chunk.Length, end - (c << ChunkShift));
+            for (int i = from; i < count; i++)
             {
                 Line line = chunk[i];
                 if (line.IsAscii)

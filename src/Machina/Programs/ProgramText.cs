@@ -10,12 +10,33 @@ internal static class ProgramText
     internal static bool BreaksLine(char c) => char.IsControl(c) || c is '\u2028' or '\u2029';
 
     /// <summary>Characters that break a line or are invisible controls: <see cref="char.IsControl(char)"/>, U+2028 and U+2029.</summary>
-    private static readonly SearchValues<char> LineBreakers = SearchValues.Create(
-        Enumerable.Range(0, 0x20).Concat(Enumerable.Range(0x7f, 0x21)).Select(c => (char)c).Concat(['\u2028', '\u2029']).ToArray());
+    private static readonly SearchValues<char> LineBreakers = SearchValues.Create(Characters((0, 0x1f), (0x7f, 0x9f), (0x2028, 0x2029)));
 
     /// <summary>The characters robot-language comments replace: C0 controls, DEL, NEL (U+0085), U+2028 and U+2029.</summary>
-    private static readonly SearchValues<char> CommentBreakers = SearchValues.Create(
-        Enumerable.Range(0, 0x20).Select(c => (char)c).Concat(['\u007f', '\u0085', '\u2028', '\u2029']).ToArray());
+    private static readonly SearchValues<char> CommentBreakers = SearchValues.Create(Characters((0, 0x1f), (0x7f, 0x7f), (0x85, 0x85), (0x2028, 0x2029)));
+
+    /// <summary>
+    /// The characters of the inclusive ranges, in order. A loop, not LINQ: these tables are made once in every process that
+    /// compiles, and LINQ's iterators over <c>int</c> and <c>char</c> were some thirty methods the JIT compiled for them.
+    /// </summary>
+    private static char[] Characters(params (int First, int Last)[] ranges)
+    {
+        int count = 0;
+        foreach ((int first, int last) in ranges)
+        {
+            count += last - first + 1;
+        }
+        char[] characters = new char[count];
+        int at = 0;
+        foreach ((int first, int last) in ranges)
+        {
+            for (int c = first; c <= last; c++)
+            {
+                characters[at++] = (char)c;
+            }
+        }
+        return characters;
+    }
 
     /// <summary>The text on one line: every character that breaks a line or is a control character becomes a space.</summary>
     internal static string OneLine(string text) => Replace(text, LineBreakers);

@@ -45,7 +45,15 @@ public sealed class RobotProgramFile
             {
                 throw new InvalidOperationException($"\"{FileName}\" has {length:N0} characters, too many for one string; save it with SaveToFolder instead.");
             }
-            return string.Create((int)length, (packed, newLine), static (span, state) => state.packed.CopyTo(span, state.newLine));
+            if (length == 0)
+            {
+                return "";
+            }
+            // A new string, filled before anyone else sees it (as string.Create fills one), through memory that another thread
+            // can take: a long text is copied in two halves at once (PackedLines.CopyTo).
+            string text = new('\0', (int)length);
+            packed.CopyTo(System.Runtime.InteropServices.MemoryMarshal.AsMemory(text.AsMemory()), newLine);
+            return text;
         }
         var sb = new StringBuilder();
         foreach (string line in Lines)

@@ -34,6 +34,23 @@ internal sealed partial class RobotCursor
         {
             ActionTranslation a => ApplyTranslation(a),
             ActionRotation a => ApplyRotation(a),
+            _ => ApplyOther(action),
+        };
+        if (refusal is null)
+        {
+            LastAction = action;
+        }
+        return refusal;
+    }
+
+    /// <summary>
+    /// Applies any action but a translation or a rotation (the moves of a toolpath). Apart from <see cref="Apply"/>, which the runtime compiles fully optimised at its
+    /// first call: that compile of the whole switch was milliseconds of every fresh process's first move, for the rarer actions.
+    /// </summary>
+    private string? ApplyOther(RobotAction action)
+    {
+        return action switch
+        {
             ActionTransformation a => ApplyTransformation(a),
             ActionAxes a => ApplyAxes(a),
             ActionArcMotion a => ApplyArc(a),
@@ -58,11 +75,6 @@ internal sealed partial class RobotCursor
             ActionMessage or ActionComment or ActionCustomCode or ActionInitialization or ActionReadInput => null,
             _ => $"Machina does not know how to apply a {action.GetType().Name}.",
         };
-        if (refusal is null)
-        {
-            LastAction = action;
-        }
-        return refusal;
     }
 
     /// <summary>The action being applied, so that warnings raised while applying it name it (not the previous one); null between actions.</summary>

@@ -167,6 +167,8 @@ internal sealed partial class RobotCursor
 
     private static bool WithinReach(Joints j) => Within(j.J1) && Within(j.J2) && Within(j.J3) && Within(j.J4) && Within(j.J5) && Within(j.J6);
 
+    // Inlined: the optimised motion methods called it, unoptimised, three times a move until the runtime tiered it up.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool Within(double value) => Math.Abs(value) <= MaxCoordinate;
 
     private double? LineLength(Vector target) => Position is Vector p ? Vector.Distance(p, target) : null;
@@ -185,17 +187,26 @@ internal sealed partial class RobotCursor
         }
         PrevPosition = Position;
         PrevRotation = Rotation;
-        PrevAxes = Axes;
+        // Joints and an arc's through point are mostly unknown already along a Cartesian toolpath: each check is one read of a
+        // flag where the assignments wrote 56-, 32- and 48-byte structs on every move (the same values either way).
+        if (Axes is not null || PrevAxes is not null)
+        {
+            PrevAxes = Axes;
+            Axes = null;
+        }
         Position = position;
         Rotation = rotation;
-        Axes = null;
         LastPathLength = pathLength;
-        ArcThrough = null;
-        ArcThroughRotation = null;
+        if (ArcThrough is not null || ArcThroughRotation is not null)
+        {
+            ArcThrough = null;
+            ArcThroughRotation = null;
+        }
         UpdateExtrusion(pathLength);
         return null;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // once a motion, from CommitCartesian: see Within
     private void UpdateExtrusion(double? pathLength)
     {
         PrevExtrudedLength = ExtrudedLength;

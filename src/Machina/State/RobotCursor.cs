@@ -109,7 +109,16 @@ internal sealed partial class RobotCursor
         _isExtruding = other.IsExtruding;
         ExtrudedLength = other.ExtrudedLength; PrevExtrudedLength = other.PrevExtrudedLength;
         SettingsStack.Clear();
-        foreach (var s in other.SettingsStack.Reverse()) { SettingsStack.Push(s); }
+        if (other.SettingsStack.Count > 0)
+        {
+            // Bottom first. Not through LINQ's Reverse: its iterator over a stack of structs was JIT-compiled (a dozen methods)
+            // for every compile of a fresh process, almost always for an empty stack.
+            Settings[] saved = other.SettingsStack.ToArray();
+            for (int i = saved.Length - 1; i >= 0; i--)
+            {
+                SettingsStack.Push(saved[i]);
+            }
+        }
         SettingsBeforeLastPop = other.SettingsBeforeLastPop;
         ArcThrough = other.ArcThrough; ArcThroughRotation = other.ArcThroughRotation;
         LastPathLength = other.LastPathLength;

@@ -241,4 +241,73 @@ public class PackedLinesTests
         target.WriteTo(writer, "\n");
         Assert.Equal(string.Concat(expected.Select(l => l + "\n")), writer.ToString());
     }
+
+    /// <summary>Lines in three parts (an own part, an adopted spool of both kinds of lines, an own part again), over several table chunks.</summary>
+    private static (PackedLines Packed, List<string> Lines) ThreeParts(int spooled, int lineLength)
+    {
+        var lines = new List<string>();
+        var packed = new PackedLines();
+        var spool = new PackedLines();
+        void Add(PackedLines target, string line)
+        {
+            target.Add(line);
+            lines.Add(line);
+        }
+        Add(packed, "MODULE M");
+        Add(packed, "");
+        for (int i = 0; i < spooled; i++)
+        {
+            Add(spool, i % 1001 == 7 ? "    ! é " + i : "    MoveL " + new string((char)('a' + i % 26), i % lineLength) + i.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        }
+        packed.AppendAdopting(spool);
+        Add(packed, "  ENDPROC");
+        Add(packed, "ENDMODULE");
+        return (packed, lines);
+    }
+
+    [Theory]
+    [InlineData("\n")]
+    [InlineData("\r\n")]
+    public void CopyTo_LineRanges_EachRangeIsThoseLinesJoined(string newLine)
+    {
+        (PackedLines packed, List<string> lines) = ThreeParts(9000, 40);
+        foreach ((int first, int end) in new[] { (0, 0), (0, 1), (1, 3), (2, 4098), (4000, 9004), (9001, 9004), (0, 9004), (4096, 8192) })
+        {
+            string expected = string.Concat(lines.Skip(first).Take(end - first).Select(l => l + newLine));
+            var copied = new char[expected.Length];
+            packed.CopyTo(copied, newLine, first, end);
+            Assert.Equal(expected, new string(copied));
+        }
+    }
+
+    [Fact]
+    public void Middle_ThreePartsAndOnePart_IsTheFirstLineFromHalfTheText()
+    {
+        foreach ((PackedLines packed, List<string> lines) in new[] { ThreeParts(9000, 40), ThreeParts(1, 3) })
+        {
+            (int line, long start) = packed.Middle("\r\n");
+            long total = lines.Sum(l => l.Length + 2L);
+            long before = lines.Take(line).Sum(l => l.Length + 2L);
+            Assert.Equal(before, start);
+            Assert.True(before >= total / 2, $"line {line} starts at {before} of {total}");
+            Assert.True(before - lines[line - 1].Length - 2 < total / 2, $"line {line - 1} already starts half-way");
+        }
+    }
+
+    [Fact]
+    public void ToText_LongEnoughForTwoThreads_IsTheLinesJoined()
+    {
+        // Over PackedLines.TwoThreadCharacters (4 Mi characters): copied in two halves at once, and the halves meet exactly.
+        var robot = Robot.Create("Long", "ABB");
+        robot.MoveTo(300, 0, 500);
+        for (int i = 0; i < 40_000; i++)
+        {
+            robot.Move(i % 2 == 0 ? 1 : -1, 0.5, 0);
+        }
+        RobotProgramFile mod = robot.Compile().GetFile("mod")!;
+        string text = mod.ToText("\r\n");
+
+        Assert.True(text.Length >= PackedLines.TwoThreadCharacters, $"only {text.Length} characters");
+        Assert.Equal(string.Concat(mod.Lines.Select(l => l + "\r\n")), text);
+    }
 }

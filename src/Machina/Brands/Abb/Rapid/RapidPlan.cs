@@ -189,6 +189,7 @@ internal sealed class RapidPlan
     private double _lastSpeedSeen = double.NaN, _lastZoneSeen = double.NaN;
 
     /// <summary>Adds <paramref name="value"/> to <paramref name="values"/> the first time it is met (the order of first use).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // twice a motion: it ran unoptimised until the runtime tiered it up
     private static void AddOnce(List<double> values, Dictionary<double, string> seen, double value, ref double last)
     {
         if (value != last)
@@ -240,8 +241,17 @@ internal sealed class RapidPlan
         }
     }
 
-    private static bool Held<TKey>(Dictionary<TKey, string> answered, Dictionary<TKey, string> final) where TKey : notnull =>
-        answered.All(pair => final.TryGetValue(pair.Key, out string? name) && name == pair.Value);
+    private static bool Held<TKey>(Dictionary<TKey, string> answered, Dictionary<TKey, string> final) where TKey : notnull
+    {
+        foreach (KeyValuePair<TKey, string> pair in answered)
+        {
+            if (!final.TryGetValue(pair.Key, out string? name) || name != pair.Value)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
 
     private static string ZoneName(double zone, RapidNames names, out bool predefined)
     {
@@ -259,7 +269,8 @@ internal sealed class RapidPlan
     }
 
     /// <summary>The speeddata name for the cursor's speed.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    // Inlined into the optimised writer (a method marked AggressiveOptimization is never inlined: it was one call a motion).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal string SpeedName(double speed)
     {
         double key = SpeedKey(speed);
@@ -272,6 +283,7 @@ internal sealed class RapidPlan
     }
 
     /// <summary>The zonedata name for the cursor's precision (<c>fine</c> for 0).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // once a motion, as SpeedName
     internal string ZoneName(double precision)
     {
         double key = Math.Round(precision, 3);
@@ -284,6 +296,7 @@ internal sealed class RapidPlan
     }
 
     /// <summary>The tooldata name for the tool in use (<c>Tool0</c>, the flange, when none).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // once a motion, as SpeedName
     internal string ToolName(Tool? tool)
     {
         if (tool is null)

@@ -79,17 +79,29 @@ internal sealed class RapidWriter(CompileJob job, RapidPlan plan, LineSink sink)
         {
             plan.Observe(action, cursor);
         }
+        if (action is ActionTranslation or ActionRotation or ActionTransformation)
+        {
+            string start = cursor.MotionType == MotionType.Joint ? Indent + "MoveJ " : Indent + "MoveL ";
+            if (!_inline || !WriteInlineMove(start, action, cursor))
+            {
+                _sb.Clear().Append(start);
+                RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
+                MoveCode(action, cursor);
+            }
+            return;
+        }
+        WriteOther(action, cursor);
+    }
+
+    /// <summary>
+    /// The lines of every action but a linear or joint move. Apart from <see cref="Write"/>, which the runtime compiles fully
+    /// optimised at its first call: that compile of the whole switch, with everything it inlines, was a few milliseconds of every
+    /// fresh process's compile, for the rare actions.
+    /// </summary>
+    private void WriteOther(RobotAction action, RobotCursor cursor)
+    {
         switch (action)
         {
-            case ActionTranslation or ActionRotation or ActionTransformation:
-                string start = cursor.MotionType == MotionType.Joint ? Indent + "MoveJ " : Indent + "MoveL ";
-                if (!_inline || !WriteInlineMove(start, action, cursor))
-                {
-                    _sb.Clear().Append(start);
-                    RobTargetOrName(cursor.Position!.Value, cursor.Rotation!.Value, cursor, true);
-                    MoveCode(action, cursor);
-                }
-                break;
             case ActionArcMotion arc:
                 if (ArcOrientation.ThroughIsIgnored(arc, cursor))
                 {
