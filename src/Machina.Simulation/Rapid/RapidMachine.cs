@@ -25,6 +25,9 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// <summary>The interpreter's budgets.</summary>
     public TwinLimits Limits { get; } = task.Controller.Options.Limits;
 
+    /// <summary>The step budget (<see cref="TwinLimits.MaxSteps"/>, 0: none), read at every statement.</summary>
+    private readonly long _maxSteps = task.Controller.Options.Limits.MaxSteps;
+
     /// <summary>The error of a budget of the twin: no ERROR handler takes it, the task stops.</summary>
     internal static RapidRuntimeException Budget(int line, string message) => new(0, line, message) { Fatal = true };
 
@@ -78,13 +81,17 @@ internal sealed partial class RapidMachine(RapidTask task)
     }
 
     /// <summary>Counts one statement or loop turn against the step budget.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void Step(int line)
     {
-        if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
+        if (++_steps > _maxSteps && _maxSteps > 0)
         {
-            throw Budget(line, $"the task ran more than {Limits.MaxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
+            throw TooManySteps(line);
         }
     }
+
+    private RapidRuntimeException TooManySteps(int line) =>
+        Budget(line, $"the task ran more than {_maxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
 
     private static int LabelIn(List<RapidStmt> body, string label) =>
         body.FindIndex(s => s is RapidJump { Kind: RapidJumpKind.Label } j && j.Label!.Equals(label, StringComparison.OrdinalIgnoreCase));
@@ -163,14 +170,14 @@ internal sealed partial class RapidMachine(RapidTask task)
             case RapidIf i:
                 foreach ((RapidExpr condition, List<RapidStmt> body) in i.Branches)
                 {
-                    if ((bool)Evaluate(condition, frame))
+                    if (Condition(condition, frame))
                     {
                         return ExecuteBlock(body, frame);
                     }
                 }
                 return i.Otherwise is null ? RapidFlow.Next : ExecuteBlock(i.Otherwise, frame);
             case RapidWhile w:
-                while ((bool)Evaluate(w.Condition, frame))
+                while (Condition(w.Condition, frame))
                 {
                     Task.Tick();
                     Step(w.Line);
@@ -218,8 +225,8 @@ internal sealed partial class RapidMachine(RapidTask task)
 
     private RapidFlow For(RapidFor f, RapidFrame frame)
     {
-        double from = (double)Evaluate(f.From, frame), to = (double)Evaluate(f.To, frame);
-        double step = f.Step is null ? (to >= from ? 1 : -1) : (double)Evaluate(f.Step, frame);
+        double from = Number(f.From, frame), to = Number(f.To, frame);
+        double step = f.Step is null ? (to >= from ? 1 : -1) : Number(f.Step, frame);
         if (step == 0)
         {
             throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, f.Line, "the STEP of a FOR loop is 0");
@@ -295,6 +302,20 @@ internal sealed partial class RapidMachine(RapidTask task)
         return arg is RapidName { Global: null, ReadsSignal: false } name && caller is not null && caller.HoldsOwn(name.Slot);
     }
 
+    /// <summary>
+    /// The sizes of a local array's dimensions. (A method of its own: a lambda over the frame in <see cref="Invoke"/> made the compiler
+    /// allocate its closure at every call of every routine, array or not.)
+    /// </summary>
+    private int[] Dimensions(RapidDataDecl decl, RapidFrame frame)
+    {
+        var dims = new int[decl.Dimensions.Length];
+        for (int d = 0; d < dims.Length; d++)
+        {
+            dims[d] = (int)Math.Clamp(Number(decl.Dimensions[d], frame), 0, int.MaxValue);
+        }
+        return dims;
+    }
+
     private object? Invoke(RapidRoutine routine, RapidArg[] args, RapidCallTarget target, RapidFrame? caller, int line)
     {
         if (++_depth > Limits.MaxCallDepth)
@@ -342,7 +363,7 @@ internal sealed partial class RapidMachine(RapidTask task)
             foreach (RapidDataDecl decl in routine.Data)
             {
                 RapidDataType type = routine.SlotTypes[slot];
-                int[] dims = decl.Dimensions.Length == 0 ? [] : [.. decl.Dimensions.Select(d => (int)Math.Clamp((double)Evaluate(d, frame), 0, int.MaxValue))];
+                int[] dims = decl.Dimensions.Length == 0 ? [] : Dimensions(decl, frame);
                 if (dims.Length > 0)
                 {
                     long count = Limits.Elements(dims) ?? throw Budget(decl.Line, $"'{decl.Name}': {Limits.ArrayTooLarge(dims)}");
