@@ -212,6 +212,8 @@ internal sealed partial class RapidMachine
     {
         switch (e)
         {
+            case RapidName { ReadsSignal: false } n when (n.Global ?? frame!.Cells[n.Slot]).Value is double value:
+                return value; // (an optional parameter not given holds no number: Evaluate raises its error)
             case RapidLiteral l:
                 return (double)l.Value;
             case RapidBinary { NumberOperands: true } b when !IsComparison(b.Code):

@@ -148,6 +148,7 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// Serves the queued interrupts, then runs the statement: an error a trap raises (RAISE in its ERROR handler, RAPID's long jump)
     /// goes to the handler of the routine that was running, as if the statement had raised it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private RapidFlow ExecuteAfterTraps(RapidStmt statement, RapidFrame frame)
     {
         // A stopped task stops at its next statement, as a controller's stop does at the current instruction: a task that ran on
@@ -159,57 +160,23 @@ internal sealed partial class RapidMachine(RapidTask task)
 
     private RapidFlow Execute(RapidStmt statement, RapidFrame frame)
     {
+        // Each kind in a small method of its own: one large method made every statement pay for the locals of all kinds.
         switch (statement)
         {
             case RapidAssign a:
                 Store(a.Target, frame, Evaluate(a.Value, frame), owned: a.Value is RapidAggregate);
                 return RapidFlow.Next;
+            case RapidIf i:
+                return If(i, frame);
             case RapidProcCall call:
                 Call(call.Target!, call.Args, frame, call.Line);
                 return RapidFlow.Next;
-            case RapidIf i:
-                foreach ((RapidExpr condition, List<RapidStmt> body) in i.Branches)
-                {
-                    if (Condition(condition, frame))
-                    {
-                        return ExecuteBlock(body, frame);
-                    }
-                }
-                return i.Otherwise is null ? RapidFlow.Next : ExecuteBlock(i.Otherwise, frame);
+            case RapidTest t:
+                return Test(t, frame);
             case RapidWhile w:
-                while (Condition(w.Condition, frame))
-                {
-                    Task.Tick();
-                    Step(w.Line);
-                    RapidFlow flow = ExecuteBlock(w.Body, frame);
-                    if (flow != RapidFlow.Next)
-                    {
-                        return flow;
-                    }
-                }
-                return RapidFlow.Next;
+                return While(w, frame);
             case RapidFor f:
                 return For(f, frame);
-            case RapidTest t:
-            {
-                object value = Evaluate(t.Value, frame);
-                if (t.NumberCases is { } numbers && value is double number)
-                {
-                    return numbers.TryGetValue(number == 0 ? 0.0 : number, out int k) ? ExecuteBlock(t.Cases[k].Body, frame)
-                        : t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
-                }
-                foreach ((RapidExpr[] values, List<RapidStmt> body) in t.Cases)
-                {
-                    foreach (RapidExpr v in values)
-                    {
-                        if (RapidValues.AreEqual(value, Evaluate(v, frame)))
-                        {
-                            return ExecuteBlock(body, frame);
-                        }
-                    }
-                }
-                return t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
-            }
             case RapidJump j:
                 return Jump(j, frame);
             case RapidLateCall late:
@@ -221,6 +188,55 @@ internal sealed partial class RapidMachine(RapidTask task)
             default:
                 throw new InvalidOperationException($"Unknown statement {statement.GetType().Name}.");
         }
+    }
+
+    private RapidFlow If(RapidIf i, RapidFrame frame)
+    {
+        List<(RapidExpr Condition, List<RapidStmt> Body)> branches = i.Branches;
+        for (int k = 0; k < branches.Count; k++)
+        {
+            if (Condition(branches[k].Condition, frame))
+            {
+                return ExecuteBlock(branches[k].Body, frame);
+            }
+        }
+        return i.Otherwise is null ? RapidFlow.Next : ExecuteBlock(i.Otherwise, frame);
+    }
+
+    private RapidFlow While(RapidWhile w, RapidFrame frame)
+    {
+        while (Condition(w.Condition, frame))
+        {
+            Task.Tick();
+            Step(w.Line);
+            RapidFlow flow = ExecuteBlock(w.Body, frame);
+            if (flow != RapidFlow.Next)
+            {
+                return flow;
+            }
+        }
+        return RapidFlow.Next;
+    }
+
+    private RapidFlow Test(RapidTest t, RapidFrame frame)
+    {
+        object value = Evaluate(t.Value, frame);
+        if (t.NumberCases is { } numbers && value is double number)
+        {
+            return numbers.TryGetValue(number == 0 ? 0.0 : number, out int k) ? ExecuteBlock(t.Cases[k].Body, frame)
+                : t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
+        }
+        foreach ((RapidExpr[] values, List<RapidStmt> body) in t.Cases)
+        {
+            foreach (RapidExpr v in values)
+            {
+                if (RapidValues.AreEqual(value, Evaluate(v, frame)))
+                {
+                    return ExecuteBlock(body, frame);
+                }
+            }
+        }
+        return t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
     }
 
     private RapidFlow For(RapidFor f, RapidFrame frame)
