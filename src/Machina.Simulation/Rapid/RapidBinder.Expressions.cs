@@ -87,8 +87,15 @@ internal sealed partial class RapidBinder
             _ => throw Refuse(e.Line, RapidLoadException.Syntax("unknown expression")),
         };
         e.Type = type;
+        if (e is RapidBinary binary)
+        {
+            binary.NumberOperands = IsNumber(binary.Left.Type) && IsNumber(binary.Right.Type);
+        }
         return type;
     }
+
+    /// <summary>True for a numeric type (num or dnum) that is not an array.</summary>
+    private static bool IsNumber(RapidDataType? type) => type is { Rank: 0 } t && t.Element.IsNumeric;
 
     private RapidDataType BindName(RapidName n, RapidScope scope)
     {

@@ -104,6 +104,12 @@ internal sealed class RapidBinary(int line, string op, RapidExpr left, RapidExpr
 
     /// <summary>The right operand.</summary>
     public RapidExpr Right { get; } = right;
+
+    /// <summary>
+    /// True when both operands are of a numeric type (num or dnum, not an array; a signal read as a number is not), so that the machine
+    /// may take their values as numbers without boxing them; set by the binder.
+    /// </summary>
+    public bool NumberOperands { get; set; }
 }
 
 /// <summary>A function call, e.g. <c>NumToStr(x, 3)</c>.</summary>

@@ -9,23 +9,24 @@ internal sealed partial class RapidMachine
     /// <summary>The value of <paramref name="e"/> (live data for a data reference: copy it before keeping it).</summary>
     public object Evaluate(RapidExpr e, RapidFrame? frame)
     {
+        // The commonest nodes first; the rare ones out of line, so that this method stays small.
         switch (e)
         {
-            case RapidLiteral l:
-                return l.Value;
             case RapidName n:
             {
                 object value = (n.Global ?? frame!.Cells[n.Slot]).Value;
-                if (n.ReadsSignal && value is RapidSignalRef signal)
-                {
-                    return SignalValue(signal, n.Line);
-                }
-                return ReferenceEquals(value, Absent)
-                    ? throw new RapidRuntimeException(RapidErrorNumbers.NotPres, n.Line, $"the optional parameter '{n.Name}' is not present")
-                    : value;
+                return n.ReadsSignal || ReferenceEquals(value, Absent) ? SignalOrAbsent(n, value) : value;
             }
+            case RapidLiteral l:
+                return l.Value;
+            case RapidBinary b:
+                CheckStack(b.Line);
+                return Binary(b, frame);
             case RapidComponent c:
                 return ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index];
+            case RapidCallExpr call:
+                CheckStack(call.Line);
+                return Call(call.Target!, call.Args, frame, call.Line)!;
             case RapidIndex i:
             {
                 var array = (RapidArray)Evaluate(i.Target, frame);
@@ -34,26 +35,35 @@ internal sealed partial class RapidMachine
             case RapidAggregate a:
                 return Aggregate(a, frame);
             case RapidUnary u:
-            {
-                CheckStack(u.Line);
-                object v = Evaluate(u.Operand, frame);
-                return u.Op switch
-                {
-                    "NOT" => RapidBoxes.Bool(!(bool)v),
-                    "-" when v is RapidRecord p => RapidGeometry.ToPosRecord(-RapidGeometry.ToVector(p)),
-                    "-" => RapidBoxes.Num(-(double)v),
-                    _ => v,
-                };
-            }
-            case RapidBinary b:
-                CheckStack(b.Line);
-                return Binary(b, frame);
-            case RapidCallExpr call:
-                CheckStack(call.Line);
-                return Call(call.Target!, call.Args, frame, call.Line)!;
+                return Unary(u, frame);
             default:
                 throw new InvalidOperationException($"Unknown expression {e.GetType().Name}.");
         }
+    }
+
+    /// <summary>The value of a name that reads a signal, or the error of an optional parameter that was not given.</summary>
+    private object SignalOrAbsent(RapidName n, object value)
+    {
+        if (n.ReadsSignal && value is RapidSignalRef signal)
+        {
+            return SignalValue(signal, n.Line);
+        }
+        return ReferenceEquals(value, Absent)
+            ? throw new RapidRuntimeException(RapidErrorNumbers.NotPres, n.Line, $"the optional parameter '{n.Name}' is not present")
+            : value;
+    }
+
+    private object Unary(RapidUnary u, RapidFrame? frame)
+    {
+        CheckStack(u.Line);
+        object v = Evaluate(u.Operand, frame);
+        return u.Op switch
+        {
+            "NOT" => RapidBoxes.Bool(!(bool)v),
+            "-" when v is RapidRecord p => RapidGeometry.ToPosRecord(-RapidGeometry.ToVector(p)),
+            "-" => RapidBoxes.Num(-(double)v),
+            _ => v,
+        };
     }
 
     /// <summary>
@@ -129,7 +139,7 @@ internal sealed partial class RapidMachine
         int offset = 0;
         for (int d = 0; d < i.Indices.Length; d++)
         {
-            double index = (double)Evaluate(i.Indices[d], frame);
+            double index = Number(i.Indices[d], frame);
             if (index != Math.Floor(index) || index < 1 || index > array.Dimensions[d])
             {
                 throw new RapidRuntimeException(RapidErrorNumbers.OutOfBounds, i.Line,
@@ -154,14 +164,19 @@ internal sealed partial class RapidMachine
 
     private object Binary(RapidBinary b, RapidFrame? frame)
     {
-        object l = Evaluate(b.Left, frame);
         RapidOperator op = b.Code;
+        if (b.NumberOperands && op > RapidOperator.Xor)
+        {
+            double x = Number(b.Left, frame), y = Number(b.Right, frame);
+            return IsComparison(op) ? RapidBoxes.Bool(Compare(op, x, y)) : RapidBoxes.Num(Arithmetic(b, x, y));
+        }
+        object l = Evaluate(b.Left, frame);
         switch (op)
         {
             case RapidOperator.And:
-                return RapidBoxes.Bool((bool)l && (bool)Evaluate(b.Right, frame));
+                return RapidBoxes.Bool((bool)l && Condition(b.Right, frame));
             case RapidOperator.Or:
-                return RapidBoxes.Bool((bool)l || (bool)Evaluate(b.Right, frame));
+                return RapidBoxes.Bool((bool)l || Condition(b.Right, frame));
         }
         object r = Evaluate(b.Right, frame);
         switch (op)
@@ -173,21 +188,9 @@ internal sealed partial class RapidMachine
             case RapidOperator.NotEqual:
                 return RapidBoxes.Bool(!RapidValues.AreEqual(l, r));
         }
-        if (l is double x && r is double y)
+        if (l is double x2 && r is double y2)
         {
-            return op switch
-            {
-                RapidOperator.Add => RapidBoxes.Num(Checked(x + y, b)),
-                RapidOperator.Subtract => RapidBoxes.Num(Checked(x - y, b)),
-                RapidOperator.Multiply => RapidBoxes.Num(Checked(x * y, b)),
-                RapidOperator.Divide => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Checked(x / y, b)),
-                RapidOperator.Div => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Math.Truncate(Integer(x, b) / Integer(y, b))),
-                RapidOperator.Mod => y == 0 ? throw DivZero(b) : RapidBoxes.Num(Integer(x, b) % Integer(y, b)),
-                RapidOperator.Less => RapidBoxes.Bool(x < y),
-                RapidOperator.Greater => RapidBoxes.Bool(x > y),
-                RapidOperator.LessOrEqual => RapidBoxes.Bool(x <= y),
-                _ => RapidBoxes.Bool(x >= y),
-            };
+            return IsComparison(op) ? RapidBoxes.Bool(Compare(op, x2, y2)) : RapidBoxes.Num(Arithmetic(b, x2, y2));
         }
         if (l is string ls && r is string rs)
         {
@@ -200,6 +203,77 @@ internal sealed partial class RapidMachine
         }
         return l is RapidRecord p ? RapidGeometry.ToPosRecord(RapidGeometry.ToVector(p) * (double)r) : RapidGeometry.ToPosRecord(RapidGeometry.ToVector((RapidRecord)r) * (double)l);
     }
+
+    /// <summary>
+    /// The value of a num or dnum expression as a number: the operators of an expression whose operands are all numbers (the binder's
+    /// <see cref="RapidBinary.NumberOperands"/>) compute without a box for each intermediate result.
+    /// </summary>
+    private double Number(RapidExpr e, RapidFrame? frame)
+    {
+        switch (e)
+        {
+            case RapidName { ReadsSignal: false } n when (n.Global ?? frame!.Cells[n.Slot]).Value is double value:
+                return value; // (an optional parameter not given holds no number: Evaluate raises its error)
+            case RapidLiteral l:
+                return (double)l.Value;
+            case RapidBinary { NumberOperands: true } b when !IsComparison(b.Code):
+            {
+                CheckStack(b.Line);
+                double x = Number(b.Left, frame);
+                return Arithmetic(b, x, Number(b.Right, frame));
+            }
+            default:
+                return (double)Evaluate(e, frame);
+        }
+    }
+
+    /// <summary>The value of a bool expression (a condition of IF, WHILE, AND, OR): comparisons of numbers and AND/OR without boxes.</summary>
+    private bool Condition(RapidExpr e, RapidFrame? frame)
+    {
+        if (e is not RapidBinary b)
+        {
+            return (bool)Evaluate(e, frame);
+        }
+        CheckStack(b.Line);
+        switch (b.Code)
+        {
+            case RapidOperator.And:
+                return Condition(b.Left, frame) && Condition(b.Right, frame);
+            case RapidOperator.Or:
+                return Condition(b.Left, frame) || Condition(b.Right, frame);
+        }
+        if (b.NumberOperands && IsComparison(b.Code))
+        {
+            double x = Number(b.Left, frame);
+            return Compare(b.Code, x, Number(b.Right, frame));
+        }
+        return (bool)Binary(b, frame);
+    }
+
+    /// <summary>True for <c>=</c>, <c>&lt;&gt;</c>, <c>&lt;</c>, <c>&gt;</c>, <c>&lt;=</c>, <c>&gt;=</c>.</summary>
+    private static bool IsComparison(RapidOperator op) => op is RapidOperator.Equal or RapidOperator.NotEqual || op >= RapidOperator.Less;
+
+    /// <summary>A comparison of two numbers (exact, as RAPID compares num data).</summary>
+    private static bool Compare(RapidOperator op, double x, double y) => op switch
+    {
+        RapidOperator.Equal => x == y,
+        RapidOperator.NotEqual => x != y,
+        RapidOperator.Less => x < y,
+        RapidOperator.Greater => x > y,
+        RapidOperator.LessOrEqual => x <= y,
+        _ => x >= y,
+    };
+
+    /// <summary>An arithmetic operator (<c>+ - * / DIV MOD</c>) on two numbers, with RAPID's errors (overflow, division by zero, DIV and MOD of a fraction).</summary>
+    private static double Arithmetic(RapidBinary b, double x, double y) => b.Code switch
+    {
+        RapidOperator.Add => Checked(x + y, b),
+        RapidOperator.Subtract => Checked(x - y, b),
+        RapidOperator.Multiply => Checked(x * y, b),
+        RapidOperator.Divide => y == 0 ? throw DivZero(b) : Checked(x / y, b),
+        RapidOperator.Div => y == 0 ? throw DivZero(b) : Math.Truncate(Integer(x, b) / Integer(y, b)),
+        _ => y == 0 ? throw DivZero(b) : Integer(x, b) % Integer(y, b),
+    };
 
     /// <summary>The value of a signal read in an expression: 0 or 1 for a digital one, the number of an analog or group one.</summary>
     private object SignalValue(RapidSignalRef signal, int line)

@@ -25,6 +25,9 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// <summary>The interpreter's budgets.</summary>
     public TwinLimits Limits { get; } = task.Controller.Options.Limits;
 
+    /// <summary>The step budget (<see cref="TwinLimits.MaxSteps"/>, 0: none), read at every statement.</summary>
+    private readonly long _maxSteps = task.Controller.Options.Limits.MaxSteps;
+
     /// <summary>The error of a budget of the twin: no ERROR handler takes it, the task stops.</summary>
     internal static RapidRuntimeException Budget(int line, string message) => new(0, line, message) { Fatal = true };
 
@@ -78,13 +81,17 @@ internal sealed partial class RapidMachine(RapidTask task)
     }
 
     /// <summary>Counts one statement or loop turn against the step budget.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void Step(int line)
     {
-        if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
+        if (++_steps > _maxSteps && _maxSteps > 0)
         {
-            throw Budget(line, $"the task ran more than {Limits.MaxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
+            throw TooManySteps(line);
         }
     }
+
+    private RapidRuntimeException TooManySteps(int line) =>
+        Budget(line, $"the task ran more than {_maxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
 
     private static int LabelIn(List<RapidStmt> body, string label) =>
         body.FindIndex(s => s is RapidJump { Kind: RapidJumpKind.Label } j && j.Label!.Equals(label, StringComparison.OrdinalIgnoreCase));
@@ -141,6 +148,7 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// Serves the queued interrupts, then runs the statement: an error a trap raises (RAISE in its ERROR handler, RAPID's long jump)
     /// goes to the handler of the routine that was running, as if the statement had raised it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private RapidFlow ExecuteAfterTraps(RapidStmt statement, RapidFrame frame)
     {
         // A stopped task stops at its next statement, as a controller's stop does at the current instruction: a task that ran on
@@ -152,57 +160,23 @@ internal sealed partial class RapidMachine(RapidTask task)
 
     private RapidFlow Execute(RapidStmt statement, RapidFrame frame)
     {
+        // Each kind in a small method of its own: one large method made every statement pay for the locals of all kinds.
         switch (statement)
         {
             case RapidAssign a:
                 Store(a.Target, frame, Evaluate(a.Value, frame), owned: a.Value is RapidAggregate);
                 return RapidFlow.Next;
+            case RapidIf i:
+                return If(i, frame);
             case RapidProcCall call:
                 Call(call.Target!, call.Args, frame, call.Line);
                 return RapidFlow.Next;
-            case RapidIf i:
-                foreach ((RapidExpr condition, List<RapidStmt> body) in i.Branches)
-                {
-                    if ((bool)Evaluate(condition, frame))
-                    {
-                        return ExecuteBlock(body, frame);
-                    }
-                }
-                return i.Otherwise is null ? RapidFlow.Next : ExecuteBlock(i.Otherwise, frame);
+            case RapidTest t:
+                return Test(t, frame);
             case RapidWhile w:
-                while ((bool)Evaluate(w.Condition, frame))
-                {
-                    Task.Tick();
-                    Step(w.Line);
-                    RapidFlow flow = ExecuteBlock(w.Body, frame);
-                    if (flow != RapidFlow.Next)
-                    {
-                        return flow;
-                    }
-                }
-                return RapidFlow.Next;
+                return While(w, frame);
             case RapidFor f:
                 return For(f, frame);
-            case RapidTest t:
-            {
-                object value = Evaluate(t.Value, frame);
-                if (t.NumberCases is { } numbers && value is double number)
-                {
-                    return numbers.TryGetValue(number == 0 ? 0.0 : number, out int k) ? ExecuteBlock(t.Cases[k].Body, frame)
-                        : t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
-                }
-                foreach ((RapidExpr[] values, List<RapidStmt> body) in t.Cases)
-                {
-                    foreach (RapidExpr v in values)
-                    {
-                        if (RapidValues.AreEqual(value, Evaluate(v, frame)))
-                        {
-                            return ExecuteBlock(body, frame);
-                        }
-                    }
-                }
-                return t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
-            }
             case RapidJump j:
                 return Jump(j, frame);
             case RapidLateCall late:
@@ -216,10 +190,59 @@ internal sealed partial class RapidMachine(RapidTask task)
         }
     }
 
+    private RapidFlow If(RapidIf i, RapidFrame frame)
+    {
+        List<(RapidExpr Condition, List<RapidStmt> Body)> branches = i.Branches;
+        for (int k = 0; k < branches.Count; k++)
+        {
+            if (Condition(branches[k].Condition, frame))
+            {
+                return ExecuteBlock(branches[k].Body, frame);
+            }
+        }
+        return i.Otherwise is null ? RapidFlow.Next : ExecuteBlock(i.Otherwise, frame);
+    }
+
+    private RapidFlow While(RapidWhile w, RapidFrame frame)
+    {
+        while (Condition(w.Condition, frame))
+        {
+            Task.Tick();
+            Step(w.Line);
+            RapidFlow flow = ExecuteBlock(w.Body, frame);
+            if (flow != RapidFlow.Next)
+            {
+                return flow;
+            }
+        }
+        return RapidFlow.Next;
+    }
+
+    private RapidFlow Test(RapidTest t, RapidFrame frame)
+    {
+        object value = Evaluate(t.Value, frame);
+        if (t.NumberCases is { } numbers && value is double number)
+        {
+            return numbers.TryGetValue(number == 0 ? 0.0 : number, out int k) ? ExecuteBlock(t.Cases[k].Body, frame)
+                : t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
+        }
+        foreach ((RapidExpr[] values, List<RapidStmt> body) in t.Cases)
+        {
+            foreach (RapidExpr v in values)
+            {
+                if (RapidValues.AreEqual(value, Evaluate(v, frame)))
+                {
+                    return ExecuteBlock(body, frame);
+                }
+            }
+        }
+        return t.Otherwise is null ? RapidFlow.Next : ExecuteBlock(t.Otherwise, frame);
+    }
+
     private RapidFlow For(RapidFor f, RapidFrame frame)
     {
-        double from = (double)Evaluate(f.From, frame), to = (double)Evaluate(f.To, frame);
-        double step = f.Step is null ? (to >= from ? 1 : -1) : (double)Evaluate(f.Step, frame);
+        double from = Number(f.From, frame), to = Number(f.To, frame);
+        double step = f.Step is null ? (to >= from ? 1 : -1) : Number(f.Step, frame);
         if (step == 0)
         {
             throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, f.Line, "the STEP of a FOR loop is 0");
@@ -295,6 +318,20 @@ internal sealed partial class RapidMachine(RapidTask task)
         return arg is RapidName { Global: null, ReadsSignal: false } name && caller is not null && caller.HoldsOwn(name.Slot);
     }
 
+    /// <summary>
+    /// The sizes of a local array's dimensions. (A method of its own: a lambda over the frame in <see cref="Invoke"/> made the compiler
+    /// allocate its closure at every call of every routine, array or not.)
+    /// </summary>
+    private int[] Dimensions(RapidDataDecl decl, RapidFrame frame)
+    {
+        var dims = new int[decl.Dimensions.Length];
+        for (int d = 0; d < dims.Length; d++)
+        {
+            dims[d] = (int)Math.Clamp(Number(decl.Dimensions[d], frame), 0, int.MaxValue);
+        }
+        return dims;
+    }
+
     private object? Invoke(RapidRoutine routine, RapidArg[] args, RapidCallTarget target, RapidFrame? caller, int line)
     {
         if (++_depth > Limits.MaxCallDepth)
@@ -342,7 +379,7 @@ internal sealed partial class RapidMachine(RapidTask task)
             foreach (RapidDataDecl decl in routine.Data)
             {
                 RapidDataType type = routine.SlotTypes[slot];
-                int[] dims = decl.Dimensions.Length == 0 ? [] : [.. decl.Dimensions.Select(d => (int)Math.Clamp((double)Evaluate(d, frame), 0, int.MaxValue))];
+                int[] dims = decl.Dimensions.Length == 0 ? [] : Dimensions(decl, frame);
                 if (dims.Length > 0)
                 {
                     long count = Limits.Elements(dims) ?? throw Budget(decl.Line, $"'{decl.Name}': {Limits.ArrayTooLarge(dims)}");

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>
@@ -134,12 +136,18 @@ internal sealed partial class RapidTask
     }
 
     /// <summary>Runs the queued traps (none while a trap runs: an interrupt waits for the trap before it to end).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void RunPendingTraps()
     {
-        if (!_hasPending || _inTrap)
+        if (_hasPending && !_inTrap)
         {
-            return;
+            LookForTraps();
         }
+    }
+
+    /// <summary>The work of <see cref="RunPendingTraps"/> while an interrupt is ordered or queued (out of line: most statements skip it).</summary>
+    private void LookForTraps()
+    {
         // Only when persistent data were written since the last look (or the orders changed): most statements write none.
         RapidPersOrder[] orders = _persSnapshot;
         int writes = Controller.PersistentWrites;
