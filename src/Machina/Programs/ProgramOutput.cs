@@ -47,7 +47,7 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
     /// <summary>Appended to a file's name while it is being written (with <c>replaceAtEnd</c>).</summary>
     internal const string PartialSuffix = ".partial";
 
-    private readonly List<StreamWriter> _writers = [];
+    private readonly List<IDisposable> _writers = [];
     private bool _createdFolder;
 
     /// <summary>Paths of the files written.</summary>
@@ -61,9 +61,16 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
             _createdFolder = true;
         }
         string path = Path.Combine(folder, name + "." + extension);
-        var writer = new StreamWriter(OpenForWriting(replaceAtEnd ? path + PartialSuffix : path), encoding, bufferSize: 1 << 16);
-        _writers.Add(writer);
+        FileStream stream = OpenForWriting(replaceAtEnd ? path + PartialSuffix : path);
         Paths.Add(path);
+        if (ReferenceEquals(encoding, Encoding.ASCII))
+        {
+            var ascii = new AsciiFileSink(stream, newLine); // the robot languages' files: bytes straight into its buffer
+            _writers.Add(ascii);
+            return ascii;
+        }
+        var writer = new StreamWriter(stream, encoding, bufferSize: 1 << 16);
+        _writers.Add(writer);
         return new WriterLineSink(writer, newLine);
     }
 
@@ -160,7 +167,7 @@ internal sealed class FolderProgramOutput(string folder, string newLine, bool re
     private void CloseWriters(bool throwFirst)
     {
         Exception? first = null;
-        foreach (StreamWriter writer in _writers)
+        foreach (IDisposable writer in _writers)
         {
             try
             {

@@ -50,68 +50,72 @@ internal sealed class MemorySpool : SpoolSink
 /// </summary>
 internal sealed class FileSpool : SpoolSink
 {
-    private readonly string _path;
     private readonly Encoding _encoding;
     private readonly string _newLine;
-    private StreamWriter? _writer;
+    private readonly Stream _stream;
+    private LineSink? _lines; // an AsciiFileSink for ASCII, else a WriterLineSink over a StreamWriter
 
     internal FileSpool(string path, Encoding encoding, string newLine)
     {
-        _path = path;
-        _encoding = encoding;
         _newLine = newLine;
-        // A spool must not start with a byte-order mark: its bytes go into the middle of a file.
-        var stream = new FileStream(path, FileMode.Create, FileAccess.ReadWrite, FileShare.None, 1 << 16, FileOptions.DeleteOnClose);
-        _writer = new StreamWriter(stream, encoding.GetPreamble().Length == 0 ? encoding : new UTF8Encoding(false), 1 << 16);
-    }
-
-    internal override void Add(string line)
-    {
-        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
-        writer.Write(line);
-        writer.Write(_newLine);
-    }
-
-    internal override void Add(StringBuilder line)
-    {
-        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
-        writer.Write(line);
-        writer.Write(_newLine);
-    }
-
-    internal override void Add(ReadOnlySpan<char> line)
-    {
-        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
-        writer.Write(line);
-        writer.Write(_newLine);
-    }
-
-    internal override void MoveTo(LineSink target)
-    {
-        StreamWriter writer = _writer ?? throw new ObjectDisposedException(nameof(FileSpool));
-        writer.Flush();
-        Stream stream = writer.BaseStream;
-        stream.Position = 0;
-        if (target is WriterLineSink { Writer: StreamWriter output } sink && sink.NewLine == _newLine
-            && ReferenceEquals(output.Encoding, writer.Encoding) && output.Encoding.GetPreamble().Length == 0)
+        _stream = new FileStream(path, FileMode.Create, FileAccess.ReadWrite, FileShare.None, 1 << 16, FileOptions.DeleteOnClose);
+        if (ReferenceEquals(encoding, Encoding.ASCII))
         {
-            output.Flush();
-            stream.CopyTo(output.BaseStream);
+            _encoding = encoding;
+            _lines = new AsciiFileSink(_stream, newLine);
         }
         else
         {
-            using var reader = new StreamReader(stream, writer.Encoding, false, 1 << 16, leaveOpen: true);
+            // A spool must not start with a byte-order mark: its bytes go into the middle of a file.
+            _encoding = encoding.GetPreamble().Length == 0 ? encoding : new UTF8Encoding(false);
+            _lines = new WriterLineSink(new StreamWriter(_stream, _encoding, 1 << 16), newLine);
+        }
+    }
+
+    private LineSink Lines => _lines ?? throw new ObjectDisposedException(nameof(FileSpool));
+
+    internal override void Add(string line) => Lines.Add(line);
+
+    internal override void Add(StringBuilder line) => Lines.Add(line);
+
+    internal override void Add(ReadOnlySpan<char> line) => Lines.Add(line);
+
+    internal override void MoveTo(LineSink target)
+    {
+        LineSink lines = Lines;
+        (lines as AsciiFileSink)?.Flush();
+        ((lines as WriterLineSink)?.Writer as StreamWriter)?.Flush();
+        _stream.Position = 0;
+        if (target is AsciiFileSink ascii && lines is AsciiFileSink && ascii.NewLine == _newLine)
+        {
+            ascii.Flush();
+            _stream.CopyTo(ascii.Stream);
+        }
+        else if (target is WriterLineSink { Writer: StreamWriter output } sink && sink.NewLine == _newLine
+            && ReferenceEquals(output.Encoding, _encoding) && output.Encoding.GetPreamble().Length == 0)
+        {
+            output.Flush();
+            _stream.CopyTo(output.BaseStream);
+        }
+        else
+        {
+            using var reader = new StreamReader(_stream, _encoding, false, 1 << 16, leaveOpen: true);
             while (reader.ReadLine() is string line)
             {
                 target.Add(line);
             }
         }
-        stream.SetLength(0);
+        _stream.SetLength(0);
     }
 
     public override void Dispose()
     {
-        _writer?.Dispose();
-        _writer = null;
+        if (_lines is null)
+        {
+            return;
+        }
+        (_lines as IDisposable)?.Dispose();
+        ((_lines as WriterLineSink)?.Writer)?.Dispose();
+        _lines = null;
     }
 }
