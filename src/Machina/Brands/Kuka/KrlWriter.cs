@@ -311,14 +311,8 @@ internal sealed class KrlWriter
         {
             return false;
         }
-        Span<char> own = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
-        int ownLength = _human ? action.TryWriteDescription(own) : 0;
-        if (ownLength < 0)
-        {
-            return false;
-        }
         ReadOnlySpan<char> tail = PoseTail(rotation, external, config);
-        int need = 32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + approximation.Length + ownLength;
+        int need = 32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + approximation.Length + RobotAction.MaxWrittenDescriptionChars + 8;
         if (_moveLine.Length < need)
         {
             _moveLine = new char[need * 2];
@@ -338,8 +332,14 @@ internal sealed class KrlWriter
         at = Put(line, at, approximation);
         if (_human)
         {
+            // The description is written in its place in the line: no buffer of its own to clear and copy from.
             at = Put(line, at, "  ; [");
-            at = Put(line, at, own[..ownLength]);
+            int ownLength = action.TryWriteDescription(line[at..]);
+            if (ownLength < 0)
+            {
+                return false;
+            }
+            at += ownLength;
             line[at++] = ']';
         }
         _src.Add(line[..at]);
