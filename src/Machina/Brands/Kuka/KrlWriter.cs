@@ -311,14 +311,8 @@ internal sealed class KrlWriter
         {
             return false;
         }
-        Span<char> own = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
-        int ownLength = _human ? action.TryWriteDescription(own) : 0;
-        if (ownLength < 0)
-        {
-            return false;
-        }
-        StringBuilder tail = PoseTail(rotation, external, config);
-        int need = 32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + approximation.Length + ownLength;
+        ReadOnlySpan<char> tail = PoseTail(rotation, external, config);
+        int need = 32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + approximation.Length + RobotAction.MaxWrittenDescriptionChars + 8;
         if (_moveLine.Length < need)
         {
             _moveLine = new char[need * 2];
@@ -332,14 +326,20 @@ internal sealed class KrlWriter
         {
             return false;
         }
-        tail.CopyTo(0, line[at..], tail.Length);
+        tail.CopyTo(line[at..]);
         at += tail.Length;
         line[at++] = '}';
         at = Put(line, at, approximation);
         if (_human)
         {
+            // The description is written in its place in the line: no buffer of its own to clear and copy from.
             at = Put(line, at, "  ; [");
-            at = Put(line, at, own[..ownLength]);
+            int ownLength = action.TryWriteDescription(line[at..]);
+            if (ownLength < 0)
+            {
+                return false;
+            }
+            at += ownLength;
             line[at++] = ']';
         }
         _src.Add(line[..at]);
@@ -565,7 +565,7 @@ internal sealed class KrlWriter
 
     private void AppendPoseTarget(StringBuilder line, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config = null)
     {
-        StringBuilder tail = PoseTail(rotation, external, config);
+        ReadOnlySpan<char> tail = PoseTail(rotation, external, config);
         StringBuilder target = BeginTarget(line, "E6POS");
         KrlFormat.AppendPosition(target, position);
         target.Append(tail);
@@ -573,19 +573,63 @@ internal sealed class KrlWriter
     }
 
     /// <summary>The target's text after its position (<see cref="KrlFormat.AppendOrientation"/>), kept while its values stay the same.</summary>
-    private StringBuilder PoseTail(Rotation rotation, ExternalAxes? external, KukaConfiguration? config)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private ReadOnlySpan<char> PoseTail(Rotation rotation, ExternalAxes? external, KukaConfiguration? config)
     {
         if (!_tailKnown || rotation != _tailRotation || external != _tailExternal || config != _tailConfig)
         {
             // A toolpath keeps its orientation over many moves: its Euler angles are computed and written once, and the
             // text after the position (angles, Status and Turn, external axes) copied while they stay the same.
-            KrlFormat.AppendOrientation(_poseTail.Clear(), KrlFormat.Abc(rotation), external, config);
-            (_tailKnown, _tailRotation, _tailExternal, _tailConfig) = (true, rotation, external, config);
+            WritePoseTail(rotation, external, config);
         }
-        return _poseTail;
+        return _poseTail.AsSpan(0, _poseTailLength);
     }
 
-    private readonly StringBuilder _poseTail = new(96);
+    /// <summary>
+    /// Writes <see cref="KrlFormat.AppendOrientation"/>'s text into the kept array: the three angles and Status and Turn straight
+    /// into it (a path that turns on every move writes them on every move), through a builder only with external axes or an
+    /// angle too large for the fast digits.
+    /// </summary>
+    private void WritePoseTail(Rotation rotation, ExternalAxes? external, KukaConfiguration? config)
+    {
+        (double a, double b, double c) = KrlFormat.Abc(rotation);
+        (_tailKnown, _tailRotation, _tailExternal, _tailConfig) = (true, rotation, external, config);
+        if (!KrlFormat.HasExternal(external))
+        {
+            Span<char> text = _poseTail;
+            int at = PutAngle(text, Put(text, 0, ", A "), a);
+            at = at < 0 ? -1 : PutAngle(text, Put(text, at, ", B "), b);
+            at = at < 0 ? -1 : PutAngle(text, Put(text, at, ", C "), c);
+            if (at >= 0)
+            {
+                if (config is KukaConfiguration st)
+                {
+                    at = Put(text, Put(text, Put(text, Put(text, at, ", S "), st.StatusText), ", T "), st.TurnText);
+                }
+                _poseTailLength = at;
+                return;
+            }
+        }
+        StringBuilder sb = _poseTailText.Clear();
+        KrlFormat.AppendOrientation(sb, (a, b, c), external, config);
+        if (_poseTail.Length < sb.Length)
+        {
+            _poseTail = new char[sb.Length * 2];
+        }
+        sb.CopyTo(0, _poseTail, sb.Length);
+        _poseTailLength = sb.Length;
+    }
+
+    /// <summary>Writes an angle as <see cref="KrlFormat.AppendOrientation"/> does (3 decimals, −180 as 180); −1 when too large for the fast digits.</summary>
+    private static int PutAngle(Span<char> line, int at, double degrees)
+    {
+        int written = NumAppend.TryWriteScaled(line[at..], KrlFormat.Degrees(degrees), 3);
+        return written < 0 ? -1 : at + written;
+    }
+
+    private readonly StringBuilder _poseTailText = new(96);
+    private char[] _poseTail = new char[3 * (NumAppend.MaxChars + 4) + 64];
+    private int _poseTailLength;
     private bool _tailKnown;
     private Rotation _tailRotation;
     private ExternalAxes? _tailExternal;

@@ -24,6 +24,29 @@ public class RapidCompilerTests
     private static void Start(Robot bot) => bot.MoveTo(400, 300, 500);
 
     [Fact]
+    public void Emit_InlineMoveComments_AreThoseOfTheDeclaredTargetsLines()
+    {
+        // The inline line writes a move's description in its place (translations, rotations) or from its text (a transformation);
+        // the lines with declared targets append it through a builder: both must carry the same comment.
+        void Issue(Robot bot)
+        {
+            Start(bot);
+            bot.Move(12.5, -3, 0.25);
+            bot.Rotate(0, 0, 1, 33.3);
+            bot.TransformTo(new Vector(123456.789, -98765.4321, 555.5), Rotation.FromAxisAngle(1, 1, 0, 47.25));
+        }
+        static string Comment(string line) => line[line.IndexOf("  ! [", StringComparison.Ordinal)..];
+        List<string> inline = MainLines(Compile(Issue, new CompileOptions { HumanComments = true }))
+            .Where(l => l.StartsWith("    Move", StringComparison.Ordinal)).ToList();
+        List<string> declared = MainLines(Compile(Issue, new CompileOptions { HumanComments = true, InlineTargets = false }))
+            .Where(l => l.StartsWith("    Move", StringComparison.Ordinal)).ToList();
+        Assert.Equal(4, inline.Count);
+        Assert.Equal(declared.Select(Comment), inline.Select(Comment));
+        Assert.EndsWith("]", inline[3]);
+        Assert.Contains("123456.789", Comment(inline[3]));
+    }
+
+    [Fact]
     public void Emit_ProgramStart_ResetsConfigurationAndAcceleration()
     {
         var lines = Compile(Start).GetFile("mod")!.Lines.ToList();

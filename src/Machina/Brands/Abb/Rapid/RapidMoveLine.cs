@@ -48,10 +48,7 @@ internal sealed class RapidMoveLine
             _afterText.CopyTo(0, _after, _afterLength);
             (_known, _restVersion, _speed, _zone, _tool, _human) = (true, Targets.RestVersion, speed, zone, tool, human);
         }
-        Span<char> own = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
-        int ownLength = human ? action.TryWriteDescription(own) : 0;
-        string? described = ownLength < 0 ? ProgramText.CommentText(action.Describe()) : null;
-        int need = start.Length + 8 + 3 * NumAppend.MaxChars + quaternion.Length + _afterLength + Math.Max(ownLength, described?.Length ?? 0) + 1;
+        int need = start.Length + 8 + 3 * NumAppend.MaxChars + quaternion.Length + _afterLength + RobotAction.MaxWrittenDescriptionChars + 1;
         if (_line.Length < need)
         {
             _line = new char[need * 2];
@@ -75,9 +72,25 @@ internal sealed class RapidMoveLine
         at += _afterLength;
         if (human)
         {
-            ReadOnlySpan<char> description = described is null ? own[..ownLength] : described;
-            description.CopyTo(line[at..]);
-            at += description.Length;
+            // The description is written in its place in the line: no buffer of its own to clear and copy from.
+            int ownLength = action.TryWriteDescription(line[at..]);
+            if (ownLength >= 0)
+            {
+                at += ownLength;
+            }
+            else
+            {
+                string described = ProgramText.CommentText(action.Describe());
+                if (line.Length < at + described.Length + 1)
+                {
+                    char[] longer = new char[(at + described.Length + 1) * 2];
+                    line[..at].CopyTo(longer);
+                    _line = longer;
+                    line = longer;
+                }
+                described.CopyTo(line[at..]);
+                at += described.Length;
+            }
             line[at++] = ']';
         }
         sink.Add(line[..at]);
