@@ -189,11 +189,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Step();
             Controller.Line = statement.Line;
             if (_interruptsOn > 0 && !_inInterrupt
-                && (_writes != _checkedWrites || Controller.InputChanges != _checkedInputs || (Controller.TimersCounting && ConditionsMayHaveChanged())))
+                && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || (Controller.TimersCounting && ConditionsMayHaveChanged())))
             {
                 // An interrupt's condition reads global and system variables only: it can only change after such a write or an input.
                 _checkedWrites = _writes;
-                _checkedInputs = Controller.InputChanges;
+                _checkedInputs = Controller.InputsVersion;
                 CheckInterrupts();
             }
             Flow flow = Statement(statement, frame);
@@ -484,7 +484,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         if (_interruptsOn > 0 && !_inInterrupt)
         {
             _checkedWrites = _writes;
-            _checkedInputs = Controller.InputChanges;
+            _checkedInputs = Controller.InputsVersion;
             CheckInterrupts();
             ArmTimerWake(); // the next timer to reach 0 wakes the motion again (a routine may have set its timer back)
         }

@@ -24,20 +24,9 @@ internal sealed partial class KrlTwinController
     /// <summary>True while something outside the program can change what a WAIT FOR waits on (an open EthernetKRL channel).</summary>
     public bool HasExternalInputs => EkiOpenChannels > 0;
 
-    private long _inputChanges;
-
-    /// <summary>
-    /// How many times <see cref="InputsChanged"/> was called: the interpreter compares it before every statement to learn whether an
-    /// interrupt's condition may have changed. Every change of this controller's <see cref="Io"/> comes through
-    /// <see cref="InputsChanged"/>, so it moves with <see cref="InputsVersion"/>; read without a locked instruction
-    /// (<see cref="TwinIo.Version"/> is an interlocked read, a locked compare-exchange on x64, ~100 statements an action).
-    /// </summary>
-    public long InputChanges => Volatile.Read(ref _inputChanges);
-
     /// <summary>Tells waiting programs that an input, a flag or a channel changed.</summary>
     public void InputsChanged()
     {
-        Interlocked.Increment(ref _inputChanges);
         Io.Changed();
         Arm.Wake(); // a motion under way serves the interrupts whose condition this may have made TRUE
     }
