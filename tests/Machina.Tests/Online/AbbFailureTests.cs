@@ -138,6 +138,10 @@ public class AbbFailureTests
         var (id, reason, code) = await listener.Failed.Task.WaitAsync(OnlineTestSupport.Limit);
 
         Assert.Equal((3, Reach, "50050"), (id, reason, code));
+        // The failure comes on the monitor link and the acknowledgements on the driver link: two sockets read by two loops, so the
+        // failure may be read first (the session orders them; see OnlineSession.Fail). Wait for both acknowledgements, then compare.
+        await Machina.Tests.Support.Eventually.TrueAsync(() => listener.Acknowledged.Count >= 2, "the acknowledgements of 1 and 2", OnlineTestSupport.Limit,
+            () => $"acknowledged: [{string.Join(", ", listener.Acknowledged)}]");
         Assert.Equal([1, 2], listener.Acknowledged);
         Assert.Equal([1, 2], controller.ExecutedIds);
         Assert.Empty(listener.Faults);
