@@ -70,10 +70,9 @@ internal sealed partial class TwinArm
         TwinBlend? blend = TakeBlend();
         Pose start = blend?.Corner ?? Tcp;
         Joints first = blend?.CornerJoints ?? Joints;
-        Pose StraightAt(double t) => new(start.Position + (target.Position - start.Position) * t, KinematicChecks.Slerp(start.Rotation, target.Rotation, t));
         // The blend around the last waypoint (m): from the zone's entry past the waypoint to the exit leg along this motion.
         double exitLeg = blend is null ? 0 : Math.Min(blend.Radius, metres / 2);
-        Pose exit = StraightAt(exitLeg / metres);
+        Pose exit = blend is null ? start : TwinBlendedLine.Straight(start, target, exitLeg / metres); // no blend: not used
         double blendLength = blend is null ? 0 : BlendModel.Length(blend.Entry.Position / 1000, start.Position / 1000, exit.Position / 1000);
         double startSpeed = blend?.Speed ?? 0;
         double blendSeconds = blend is null ? 0 : blendLength / startSpeed;
@@ -88,26 +87,29 @@ internal sealed partial class TwinArm
         }
         SpeedProfile profile = SpeedProfile.Plan(straight, startSpeed, v, entrySpeed, a);
         double total = blendLength + straight;
-        Pose At(double s) // s: metres along this motion's way
-        {
-            if (s < blendLength && blend is not null)
-            {
-                Vector point = BlendModel.PointAtDistance(blend.Entry.Position / 1000, start.Position / 1000, exit.Position / 1000, s) * 1000;
-                return new Pose(point, KinematicChecks.Slerp(blend.Entry.Rotation, exit.Rotation, s / blendLength));
-            }
-            return StraightAt(Math.Min(1, (exitLeg + s - blendLength) / metres));
-        }
-        Joints end = radius > 0 ? Near(At(total), Lerp(first, move.Joints, (metres - radius) / metres)) : move.Joints;
-        Joints startJoints = Joints;
-        Joints Along(double f) => Near(At(f * total), Lerp(startJoints, end, f));
-        bool reached = MoveTo(end, blendSeconds + profile.Seconds, line, text, cancellation, traced: move.Joints, linear: true, path: Along);
+        var way = new TwinBlendedLine(start, target, exit, blend, metres, exitLeg, blendLength); // s: metres along this motion's way
+        Joints end = radius > 0 ? Near(way.At(total), Lerp(first, move.Joints, (metres - radius) / metres)) : move.Joints;
+        double seconds = blendSeconds + profile.Seconds;
+        // The path is made only when the arm is part-way along it (an interpolated or woken motion): a motion in one step needs none.
+        bool reached = MoveTo(end, seconds, line, text, cancellation, move.Joints, true, true, new BlendedPath(this, way, total, Joints, end), null);
         if (radius > 0 && reached) // a cleared path ends it early: the arm stands where it stopped, nothing to blend
         {
             lock (_gate)
             {
-                _blend = new TwinBlend(At(total), target, move.Joints, radius, entrySpeed, a, line, text);
+                _blend = new TwinBlend(way.At(total), target, move.Joints, radius, entrySpeed, a, line, text);
             }
         }
+    }
+
+    /// <summary>A blended linear motion's path (fraction of the way to joints, each solved near the joint-space interpolation), as values until it is made.</summary>
+    private readonly struct BlendedPath(TwinArm arm, TwinBlendedLine way, double total, Joints start, Joints end) : ITwinPath
+    {
+        public Func<double, Joints> Make() => new Along(arm, way, total, start, end).At;
+    }
+
+    private sealed class Along(TwinArm arm, TwinBlendedLine way, double total, Joints start, Joints end)
+    {
+        public Joints At(double f) => arm.Near(way.At(f * total), Lerp(start, end, f));
     }
 
     private Joints Near(Pose tcp, Joints near)

@@ -36,8 +36,9 @@ internal sealed partial class TwinArm
     /// interrupts while the motion goes on (a <see cref="Brake"/> in the routine holds it until the routine returns; the rest then
     /// goes straight from where the arm stands). A motion run by an interrupt routine brakes the one it interrupted first.
     /// </summary>
-    private bool MovePaced(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
-        Func<double, Joints>? path, TwinArc? arc)
+    private bool MovePaced<TPath>(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
+        in TPath path, TwinArc? arc)
+        where TPath : struct, ITwinPath
     {
         PacedMotion? outer;
         lock (_gate)
@@ -51,7 +52,7 @@ internal sealed partial class TwinArm
             // time, as a motion without wakes, with no motion in program time to make (the tool poses it would solve at its ends).
             return MoveInOneStep(target, seconds, line, text, cancellation, traced, trace);
         }
-        var paced = new PacedMotion(new Motion(Joints, target, 0, seconds, linear || arc is not null ? this : null, path, arc), Clock.Seconds);
+        var paced = new PacedMotion(new Motion(Joints, target, 0, seconds, linear || arc is not null ? this : null, path.Make(), arc), Clock.Seconds);
         lock (_gate)
         {
             _paced = paced;

@@ -139,9 +139,11 @@ internal sealed partial class TwinArm
     /// A real-time motion along the path: <paramref name="target"/> in <paramref name="seconds"/>, held and released, ended early by a
     /// cleared path; <see cref="Serve"/> runs each time the motion is woken (an exception it throws leaves the arm where it stands).
     /// </summary>
-    private bool MoveAlongPath(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
-        Func<double, Joints>? path, TwinArc? arc)
+    private bool MoveAlongPath<TPath>(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
+        in TPath pathSource, TwinArc? arc)
+        where TPath : struct, ITwinPath
     {
+        Func<double, Joints>? path = pathSource.Make();
         if (MovesWhileServing)
         {
             Brake(); // a motion an interrupt routine runs stops the one it interrupted first (KUKA: BRAKE before a motion there)

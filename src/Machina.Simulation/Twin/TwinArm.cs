@@ -143,7 +143,13 @@ internal sealed partial class TwinArm
     /// <paramref name="arc"/> (which ends at <paramref name="target"/>). False when a cleared path ended it early.
     /// </summary>
     public bool MoveTo(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced = null, bool trace = true, bool linear = false,
-        Func<double, Joints>? path = null, TwinArc? arc = null)
+        Func<double, Joints>? path = null, TwinArc? arc = null) =>
+        MoveTo(target, seconds, line, text, cancellation, traced, trace, linear, new GivenPath(path), arc);
+
+    /// <summary><see cref="MoveTo(Joints, double, int, string, CancellationToken, Joints?, bool, bool, Func{double, Joints}?, TwinArc?)"/> with a path made only when a motion is part-way along it.</summary>
+    private bool MoveTo<TPath>(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
+        in TPath path, TwinArc? arc)
+        where TPath : struct, ITwinPath
     {
         RequireWithinLimits(target);
         if (Interpolates && Clock.RealTime && seconds > 0)

@@ -82,10 +82,10 @@ internal sealed record TwinComparison(double PositionToleranceMm, double AngleTo
             {
                 (null, _) => "the twin did a step that the actions do not have",
                 (_, null) => result.Finished ? "the program ended before this step" : "the program stopped before this step",
-                _ => Compare(e, d),
+                (_, { } step) => Compare(e, step),
             };
             result.Steps.Add(new TwinVerifyStep(i + 1, e?.Action.ToInstruction(), d?.Line ?? 0, e is null ? "(no more actions)" : Describe(e),
-                d is null ? "(the program did not get there)" : Describe(d), problem, e?.Action, d is not null));
+                d is { } did ? Describe(did) : "(the program did not get there)", problem, e?.Action, d is not null));
         }
     }
 

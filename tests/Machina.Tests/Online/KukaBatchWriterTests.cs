@@ -3,8 +3,9 @@ using System.Text;
 namespace Machina.Tests.Online;
 
 /// <summary>
-/// The host's batch of one action written without a builder (<see cref="KukaInstruction.TryWriteBatch"/>): the same characters as
-/// the builder's <see cref="KukaInstruction.AppendBatch(StringBuilder, in KukaInstruction)"/>, byte for byte (docs/protocol-kuka.md).
+/// The host's batch of one action written on the stack (<see cref="KukaInstruction.WriteBatch(Span{char})"/>), going on in a builder
+/// when it does not fit: the same characters as the builder's <see cref="KukaInstruction.AppendBatch(StringBuilder, in KukaInstruction)"/>,
+/// byte for byte (docs/protocol-kuka.md).
 /// </summary>
 public class KukaBatchWriterTests
 {
@@ -15,11 +16,18 @@ public class KukaBatchWriterTests
         return sb.ToString();
     }
 
+    /// <summary>The batch written on the stack, or null when it went on in a builder.</summary>
     private static string? Written(in KukaInstruction instruction)
     {
-        Span<char> plain = stackalloc char[KukaInstruction.MaxPlainBatchChars];
-        int length = instruction.TryWriteBatch(plain);
-        return length < 0 ? null : new string(plain[..length]);
+        KukaText text = instruction.WriteBatch(stackalloc char[KukaInstruction.StackBatchChars]);
+        return text.Builder is null ? new string(text.Written) : null;
+    }
+
+    /// <summary>The batch as the host sends it, whichever way it was written.</summary>
+    private static string Sent(in KukaInstruction instruction)
+    {
+        KukaText text = instruction.WriteBatch(stackalloc char[KukaInstruction.StackBatchChars]);
+        return text.Builder?.ToString() ?? new string(text.Written);
     }
 
     public static TheoryData<int, int, double[]> Actions => new()
@@ -33,7 +41,7 @@ public class KukaBatchWriterTests
 
     [Theory]
     [MemberData(nameof(Actions))]
-    public void TryWriteBatch_PlainAction_SameCharactersAsTheBuilder(int id, int code, double[] parameters)
+    public void WriteBatch_PlainAction_SameCharactersAsTheBuilder(int id, int code, double[] parameters)
     {
         var values = new KukaValues();
         for (int i = 0; i < parameters.Length; i++)
@@ -51,14 +59,43 @@ public class KukaBatchWriterTests
     }
 
     [Fact]
-    public void TryWriteBatch_TextOrHugeValue_LeftToTheBuilder()
+    public void WriteBatch_ShortMessage_OnTheStackEscapedAsTheBuilder()
     {
-        var values = new KukaValues();
-        values[0] = 1e20;
+        var instruction = new KukaInstruction(1, KukaActionCode.Message, new KukaValues(), "a<b & \"c\" 'd' >\u0007\u00e9");
 
-        Assert.Null(Written(new KukaInstruction(1, KukaActionCode.Message, new KukaValues(), "hi")));
-        Assert.Null(Written(new KukaInstruction(2, KukaActionCode.Wait, values, "")));
-        Assert.Contains("V1=\"100000000000000000000\"", Built(new KukaInstruction(2, KukaActionCode.Wait, values, "")));
+        string? written = Written(instruction);
+
+        Assert.NotNull(written);
+        Assert.Equal(Built(instruction), written);
+        Assert.EndsWith(" M=\"a&lt;b &amp; &quot;c&quot; &apos;d&apos; &gt; ?\"/></DR></DT>", written);
+    }
+
+    [Fact]
+    public void WriteBatch_HugeValueOrLongText_GoesOnInTheBuilder()
+    {
+        var huge = new KukaValues();
+        huge[0] = 1e20;
+        var lastHuge = new KukaValues();
+        for (int i = 0; i < KukaProtocol.CircularValueCount; i++)
+        {
+            lastHuge[i] = i + 0.5;
+        }
+        lastHuge[12] = -3e9;
+        KukaInstruction[] spilled =
+        [
+            new(2, KukaActionCode.Wait, huge, ""),
+            new(3, KukaActionCode.Circular, lastHuge, ""),
+            new(4, KukaActionCode.Message, new KukaValues(), new string('"', 300)),
+        ];
+
+        foreach (KukaInstruction instruction in spilled)
+        {
+            Assert.Null(Written(instruction));
+            Assert.Equal(Built(instruction), Sent(instruction));
+        }
+        Assert.Contains("V1=\"100000000000000000000\"", Sent(spilled[0]));
+        Assert.Contains(" V12=\"11.5\" V13=\"-3000000000\" M=\"\"/>", Sent(spilled[1]));
+        Assert.Equal(300 * "&quot;".Length, Sent(spilled[2]).Split("M=\"")[1].Split("\"/>")[0].Length);
     }
 
     [Fact]

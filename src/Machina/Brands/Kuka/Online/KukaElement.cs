@@ -29,11 +29,12 @@ internal sealed class KukaElement
     /// <summary>The value of an attribute, or null when the element does not have it.</summary>
     public string? Attribute(string name)
     {
-        foreach (var pair in Attributes)
+        IReadOnlyList<KeyValuePair<string, string>> attributes = Attributes;
+        for (int i = 0; i < attributes.Count; i++) // by index: an enumerator through the interface is an object per look-up
         {
-            if (pair.Key == name)
+            if (attributes[i].Key == name)
             {
-                return pair.Value;
+                return attributes[i].Value;
             }
         }
         return null;

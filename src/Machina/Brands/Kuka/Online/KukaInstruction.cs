@@ -23,14 +23,30 @@ internal readonly record struct KukaInstruction(int Id, KukaActionCode Code, Kuk
     /// </summary>
     public void AppendTo(StringBuilder sb)
     {
-        KukaXml.AppendStart(sb, KukaProtocol.Action);
-        sb.Append(" ID=\"").Append(Id).Append("\" T=\"").Append((int)Code).Append('"');
+        var text = new KukaText(sb);
+        WriteTo(ref text);
+    }
+
+    /// <summary>Writes the action's element (<see cref="AppendTo"/>): the one writer of the format, into a span or a builder.</summary>
+    private void WriteTo(ref KukaText text)
+    {
+        text.Append("<A ID=\"");
+        text.Append(Id);
+        text.Append("\" T=\"");
+        text.Append((int)Code);
+        text.Append("\"");
         KukaValues values = Values;
         for (int i = 0; i < KukaProtocol.ValueCountOf(Code); i++)
         {
-            KukaXml.AppendAttribute(sb, KukaProtocol.ValueNames[i], values[i]);
+            text.Append(" ");
+            text.Append(KukaProtocol.ValueNames[i]);
+            text.Append("=\"");
+            text.AppendFixed(values[i], 6);
+            text.Append("\"");
         }
-        KukaXml.AppendAttribute(sb, "M", Text).Append("/>");
+        text.Append(" M=\"");
+        text.AppendEscaped(Text);
+        text.Append("\"/>");
     }
 
     /// <summary>Appends one batch: <c>&lt;DT&gt;&lt;DR&gt;</c>, the actions, <c>&lt;/DR&gt;&lt;/DT&gt;</c>.</summary>
@@ -47,50 +63,30 @@ internal readonly record struct KukaInstruction(int Id, KukaActionCode Code, Kuk
     /// <summary>Appends a batch of one action (what the host streams: no list, no enumerator).</summary>
     public static void AppendBatch(StringBuilder sb, in KukaInstruction action)
     {
-        sb.Append("<DT><DR>");
-        action.AppendTo(sb);
-        sb.Append("</DR></DT>");
+        var text = new KukaText(sb);
+        action.WriteBatch(ref text);
     }
 
-    /// <summary>Characters enough for a batch of one action without text (<see cref="TryWriteBatch"/>): 13 values of at most 32 characters and the markup.</summary>
-    public const int MaxPlainBatchChars = 640;
+    /// <summary>Characters a batch of one action takes on the stack (<see cref="WriteBatch(Span{char})"/>): 13 values of at most 32 characters, the markup and a short message.</summary>
+    public const int StackBatchChars = 1024;
 
     /// <summary>
-    /// Writes the batch of this one action, the same characters as <see cref="AppendBatch(StringBuilder, in KukaInstruction)"/>,
-    /// into <paramref name="destination"/> (at least <see cref="MaxPlainBatchChars"/> long) and returns their count; −1 when the
-    /// action has a text or a value the fixed-point writer does not take (the caller appends it to a builder). What the host
-    /// streams: a move's batch without a builder per action.
+    /// Writes the batch of this one action (the characters of <see cref="AppendBatch(StringBuilder, in KukaInstruction)"/>) into
+    /// <paramref name="destination"/> while it fits and every value takes the fixed-point writer (below 10^9), else on into a
+    /// builder: the returned text's <see cref="KukaText.Builder"/> is null when all of it is in the span. What the host streams.
     /// </summary>
-    public int TryWriteBatch(Span<char> destination)
+    public KukaText WriteBatch(Span<char> destination)
     {
-        if (Text.Length != 0)
-        {
-            return -1;
-        }
-        int at = Put(destination, 0, "<DT><DR><A ID=\"");
-        Id.TryFormat(destination[at..], out int written, default, System.Globalization.CultureInfo.InvariantCulture);
-        at = Put(destination, at + written, "\" T=\"");
-        ((int)Code).TryFormat(destination[at..], out written, default, System.Globalization.CultureInfo.InvariantCulture);
-        at = Put(destination, at + written, "\"");
-        KukaValues values = Values;
-        for (int i = 0; i < KukaProtocol.ValueCountOf(Code); i++)
-        {
-            at = Put(destination, Put(destination, at, " "), KukaProtocol.ValueNames[i]);
-            at = Put(destination, at, "=\"");
-            written = NumAppend.TryWriteScaled(destination[at..], values[i], 6);
-            if (written < 0)
-            {
-                return -1;
-            }
-            at = Put(destination, at + written, "\"");
-        }
-        return Put(destination, at, " M=\"\"/></DR></DT>");
+        var text = new KukaText(destination);
+        WriteBatch(ref text);
+        return text;
     }
 
-    private static int Put(Span<char> destination, int at, ReadOnlySpan<char> text)
+    private void WriteBatch(ref KukaText text)
     {
-        text.CopyTo(destination[at..]);
-        return at + text.Length;
+        text.Append("<DT><DR>");
+        WriteTo(ref text);
+        text.Append("</DR></DT>");
     }
 
     /// <summary>Reads an action element back (the virtual controller's side); a protocol error when an attribute is missing or malformed.</summary>

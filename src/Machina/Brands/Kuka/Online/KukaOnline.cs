@@ -41,18 +41,16 @@ internal sealed class KukaOnline : IOnlineBrand
         {
             note = $"The weight and centre of gravity of tool \"{tool.Name}\" are not sent to KUKA controllers; set its load data on the controller.";
         }
-        Span<char> plain = stackalloc char[KukaInstruction.MaxPlainBatchChars];
-        int length = instruction.TryWriteBatch(plain);
-        if (length >= 0)
-        {
-            // A move, a setting: the characters straight into the frame's bytes, no builder per action.
-            var bytes = new byte[length];
-            System.Text.Encoding.ASCII.GetBytes(plain[..length], bytes);
-            return new ActionFrame(bytes, true, note);
-        }
-        var batch = new System.Text.StringBuilder(192); // a move's batch is 100-170 characters
-        KukaInstruction.AppendBatch(batch, instruction);
-        return new ActionFrame(Ascii(batch), true, note);
+        KukaText batch = instruction.WriteBatch(stackalloc char[KukaInstruction.StackBatchChars]);
+        // A move, a setting, a short message: the characters straight into the frame's bytes, no builder per action.
+        return new ActionFrame(batch.Builder is { } built ? Ascii(built) : Ascii(batch.Written), true, note);
+    }
+
+    private static byte[] Ascii(ReadOnlySpan<char> text)
+    {
+        var bytes = new byte[text.Length];
+        System.Text.Encoding.ASCII.GetBytes(text, bytes);
+        return bytes;
     }
 
     /// <summary>The builder's text as ASCII bytes, without a string in between (the XML writer escapes everything else).</summary>

@@ -25,28 +25,33 @@ internal static class KukaXml
     {
         foreach (char c in text)
         {
-            switch (c)
+            if (Escape(c, out char plain) is string entity)
             {
-                case '&':
-                    sb.Append("&amp;");
-                    break;
-                case '<':
-                    sb.Append("&lt;");
-                    break;
-                case '>':
-                    sb.Append("&gt;");
-                    break;
-                case '"':
-                    sb.Append("&quot;");
-                    break;
-                case '\'':
-                    sb.Append("&apos;");
-                    break;
-                default:
-                    sb.Append(c < ' ' || c == '\u007f' ? ' ' : c > '\u007e' ? '?' : c);
-                    break;
+                sb.Append(entity);
+            }
+            else
+            {
+                sb.Append(plain);
             }
         }
         return sb;
+    }
+
+    /// <summary>
+    /// How <paramref name="c"/> is written in an attribute value or element content: its entity (one of the five XML special
+    /// characters), or null and <paramref name="plain"/>, the character itself, a control character as a space, one outside ASCII as '?'.
+    /// </summary>
+    public static string? Escape(char c, out char plain)
+    {
+        plain = c < ' ' || c == '\u007f' ? ' ' : c > '\u007e' ? '?' : c;
+        return c switch
+        {
+            '&' => "&amp;",
+            '<' => "&lt;",
+            '>' => "&gt;",
+            '"' => "&quot;",
+            '\'' => "&apos;",
+            _ => null,
+        };
     }
 }

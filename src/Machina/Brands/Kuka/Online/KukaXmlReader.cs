@@ -17,6 +17,21 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
 
     private const int MaxDepth = 8;
 
+    /// <summary>
+    /// The names the link uses (elements and attributes of docs/protocol-kuka.md): a name read is one of these strings when it
+    /// matches, so an acknowledgement's <c>R</c> and <c>ID</c> are not new strings each time.
+    /// </summary>
+    private static readonly string[] KnownNames =
+    [
+        KukaProtocol.Acknowledgement, KukaProtocol.State, KukaProtocol.Failure, KukaProtocol.Control, KukaProtocol.Pose, KukaProtocol.Action,
+        KukaProtocol.Batch, KukaProtocol.Actions, KukaProtocol.MonitorRate, "ID", "V", "K", "T", "M", "Code", "Text", "VR", "Executed", "Received",
+        "Model", "Ms", "X", "Y", "Z", "A", "B", "C", "A1", "A2", "A3", "A4", "A5", "A6", "V1", "V2", "V3", "V4", "V5", "V6", "V7",
+    ];
+
+    // The attributes of the element being read, until its start tag ends (then copied into an array of their number): one list for
+    // every element, not one each.
+    private readonly List<KeyValuePair<string, string>> _attributes = [];
+
     private byte[] _buffer = new byte[1024];
     private int _start;
     private int _end;
@@ -44,7 +59,7 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
         {
             Outcome outcome = Outcome.Incomplete;
             KukaElement? parsed = null;
-            var parser = new Parser(_buffer.AsSpan(_start, _end - _start));
+            var parser = new Parser(_buffer.AsSpan(_start, _end - _start), _attributes);
             if (_mayComplete)
             {
                 outcome = parser.Next(out parsed);
@@ -93,9 +108,10 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
     }
 
     /// <summary>Parses one top-level item from the start of the pending bytes.</summary>
-    private ref struct Parser(ReadOnlySpan<byte> data)
+    private ref struct Parser(ReadOnlySpan<byte> data, List<KeyValuePair<string, string>> attributes)
     {
         private readonly ReadOnlySpan<byte> _data = data;
+        private readonly List<KeyValuePair<string, string>> _attributes = attributes;
 
         public int Position { get; private set; }
 
@@ -160,7 +176,8 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
             {
                 return outcome;
             }
-            var attributes = new List<KeyValuePair<string, string>>();
+            _attributes.Clear();
+            KeyValuePair<string, string>[] attributes;
             while (true)
             {
                 bool spaced = SkipWhitespace();
@@ -180,12 +197,13 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
                         return Garbage($"The element <{name}> is malformed ('/' not followed by '>').");
                     }
                     Position += 2;
-                    element = new KukaElement(name, attributes, [], "");
+                    element = new KukaElement(name, _attributes.ToArray(), [], "");
                     return Outcome.Element;
                 }
                 if (c == '>')
                 {
                     Position++;
+                    attributes = _attributes.ToArray(); // the list is the children's next
                     break;
                 }
                 if (!spaced)
@@ -197,10 +215,10 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
                 {
                     return outcome;
                 }
-                attributes.Add(attribute);
+                _attributes.Add(attribute);
             }
-            var children = new List<KukaElement>();
-            var text = new StringBuilder();
+            List<KukaElement>? children = null;
+            StringBuilder? text = null;
             while (true)
             {
                 if (AtEnd)
@@ -214,7 +232,7 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
                     {
                         return Outcome.Incomplete;
                     }
-                    outcome = Decode(_data.Slice(Position, stop), text);
+                    outcome = Decode(_data.Slice(Position, stop), text ??= new StringBuilder());
                     if (outcome != Outcome.Element)
                     {
                         return outcome;
@@ -254,7 +272,7 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
                         return Garbage($"The element <{name}> is closed by </{closing}>.");
                     }
                     Position++;
-                    element = new KukaElement(name, attributes, children, text.ToString().Trim());
+                    element = new KukaElement(name, attributes, (IReadOnlyList<KukaElement>?)children ?? [], text is null ? "" : text.ToString().Trim());
                     return Outcome.Element;
                 }
                 outcome = ReadElement(depth + 1, out KukaElement? child);
@@ -262,7 +280,7 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
                 {
                     return outcome;
                 }
-                children.Add(child!);
+                (children ??= []).Add(child!);
             }
         }
 
@@ -304,14 +322,23 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
             {
                 return Garbage($"The value of attribute {name} of <{element}> contains '<'.");
             }
-            var value = new StringBuilder(raw.Length);
-            outcome = Decode(raw, value);
-            if (outcome != Outcome.Element)
+            string value;
+            if (raw.IndexOf((byte)'&') < 0)
             {
-                return outcome;
+                value = Encoding.UTF8.GetString(raw); // no entity: the text as it is (a number, mostly)
+            }
+            else
+            {
+                var decoded = new StringBuilder(raw.Length);
+                outcome = Decode(raw, decoded);
+                if (outcome != Outcome.Element)
+                {
+                    return outcome;
+                }
+                value = decoded.ToString();
             }
             Position += length + 2;
-            attribute = new(name, value.ToString());
+            attribute = new(name, value);
             return Outcome.Element;
         }
 
@@ -331,9 +358,22 @@ internal sealed class KukaXmlReader : IMessageReader<KukaElement>
             {
                 return Garbage("The controller sent '<' without an element name after it.");
             }
-            name = Encoding.ASCII.GetString(_data.Slice(Position, length));
+            name = Known(_data.Slice(Position, length)) ?? Encoding.ASCII.GetString(_data.Slice(Position, length));
             Position += length;
             return Outcome.Element;
+        }
+
+        /// <summary>The known name these bytes spell (<see cref="KnownNames"/>), or null.</summary>
+        private static string? Known(ReadOnlySpan<byte> name)
+        {
+            foreach (string known in KnownNames)
+            {
+                if (known.Length == name.Length && Ascii.Equals(name, known))
+                {
+                    return known;
+                }
+            }
+            return null;
         }
 
         private static bool IsNameByte(byte b) => char.IsAsciiLetterOrDigit((char)b) || b is (byte)'_' or (byte)'-' or (byte)'.' or (byte)':';
