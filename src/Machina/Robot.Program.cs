@@ -68,7 +68,7 @@ public sealed partial class Robot
         lock (_issueLock)
         {
             model = _issueCursor.Model;
-            actions = [.. _programActions];
+            actions = _programActions.ToArray();
             if (_programStart is not null)
             {
                 start.CopyFrom(_programStart);
@@ -87,7 +87,7 @@ public sealed partial class Robot
     {
         lock (_issueLock)
         {
-            return [.. _programActions];
+            return Array.AsReadOnly(_programActions.ToArray());
         }
     }
 

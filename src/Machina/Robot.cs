@@ -19,7 +19,7 @@ public sealed partial class Robot : IOnlineHost
 #endif
     private readonly RobotCursor _issueCursor;
 
-    private readonly List<RobotAction> _programActions = [];
+    private readonly RobotProgramActions _programActions = new();
     private int _nextId = 1;
 
     private Robot(string name, RobotType brand)

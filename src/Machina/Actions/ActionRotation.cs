@@ -16,14 +16,16 @@ public sealed record ActionRotation : RobotAction
     {
         axis.RequireFinite(nameof(axis));
         Num.Finite(angleDegrees, "angle");
-        if (axis.Length < 1e-9)
+        double length = axis.Length;
+        if (length < 1e-9)
         {
             // The same limit as Rotation.FromAxisAngle: any longer axis, however short, gives a direction.
             throw new ArgumentException($"The rotation axis ({Num.R(axis.X)}, {Num.R(axis.Y)}, {Num.R(axis.Z)}) has no direction; give one such as (0, 0, 1).", nameof(axis));
         }
         Rotation = Rotation.FromAxisAngle(axis, angleDegrees);
         Relative = relative;
-        Request = new AxisAngle(axis.Normalized(), angleDegrees);
+        // The length is known: the same quotients as Normalized() without its square root again (it scales huge axes first).
+        Request = new AxisAngle(double.IsFinite(length) ? new Vector(axis.X / length, axis.Y / length, axis.Z / length) : axis.Normalized(), angleDegrees);
     }
 
     /// <summary>The rotation (relative) or the new orientation (absolute).</summary>
@@ -90,7 +92,43 @@ public sealed record ActionRotation : RobotAction
         at += NumShortest.WriteGeneral(destination[at..], Request.Angle);
         " deg around ".CopyTo(destination[at..]);
         at += 12;
-        return at + Request.Axis.WriteText(destination[at..], ", ");
+        return at + WriteAxis(destination[at..], Request.Axis);
+    }
+
+    /// <summary>
+    /// The axis as <see cref="Vector.WriteText"/> writes it (<c>[x, y, z]</c>, 3 decimals). An axis along X, Y or Z (each component
+    /// exactly 0, 1 or -1: most turns of a toolpath) is written digit by digit: three numbers less to format per turn.
+    /// </summary>
+    internal static int WriteAxis(Span<char> destination, Vector axis)
+    {
+        if (!(IsSignedDigit(axis.X) && IsSignedDigit(axis.Y) && IsSignedDigit(axis.Z)))
+        {
+            return axis.WriteText(destination, ", ");
+        }
+        int at = 0;
+        destination[at++] = '[';
+        at = WriteSignedDigit(destination, at, axis.X);
+        destination[at++] = ',';
+        destination[at++] = ' ';
+        at = WriteSignedDigit(destination, at, axis.Y);
+        destination[at++] = ',';
+        destination[at++] = ' ';
+        at = WriteSignedDigit(destination, at, axis.Z);
+        destination[at++] = ']';
+        return at;
+    }
+
+    /// <summary>True for 1, -1 and positive zero (negative zero takes the number writer, which decides its sign).</summary>
+    private static bool IsSignedDigit(double value) => value == 1 || value == -1 || BitConverter.DoubleToInt64Bits(value) == 0;
+
+    private static int WriteSignedDigit(Span<char> destination, int at, double value)
+    {
+        if (value < 0)
+        {
+            destination[at++] = '-';
+        }
+        destination[at++] = value == 0 ? '0' : '1';
+        return at;
     }
 
     /// <summary>Equal when both are relative or both absolute and the rotations agree within 1e-9 degrees.</summary>
