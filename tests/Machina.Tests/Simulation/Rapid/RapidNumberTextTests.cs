@@ -18,7 +18,7 @@ public class RapidNumberTextTests
     [InlineData("-12.345")]
     [InlineData("0001.2500")]
     [InlineData("999999999999999")]
-    [InlineData("0.000000000000001")]
+    [InlineData("0.00000000000001")]
     [InlineData("123456.789012345")]
     public void PlainText_IsTheGeneralParsersDouble(string text)
     {
@@ -37,6 +37,7 @@ public class RapidNumberTextTests
     [InlineData("1.2.3")]
     [InlineData(" 1")]
     [InlineData("1234567890123456")]
+    [InlineData("0.000000000000001")]
     [InlineData("0.1234567890123456")]
     [InlineData("--1")]
     [InlineData("1-")]
