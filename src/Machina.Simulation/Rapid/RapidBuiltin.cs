@@ -66,7 +66,7 @@ internal readonly struct RapidCall(RapidMachine machine, RapidFrame? frame, Rapi
     public object Value(int p) => machine.Evaluate(args[target.ArgumentOf[p]].Value!, frame);
 
     /// <summary>A num parameter.</summary>
-    public double Num(int p) => (double)Value(p);
+    public double Num(int p) => machine.Number(args[target.ArgumentOf[p]].Value!, frame); // arithmetic computed without a box
 
     /// <summary>A string parameter.</summary>
     public string Str(int p) => (string)Value(p);

@@ -110,9 +110,8 @@ internal static partial class RapidBuiltins
         }
         double seconds = Duration(call, p, path, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         Joints startJoints = near;
-        RequireOutsideLimitZones(call, f => arc?.At(f).Position
-            ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(startJoints, joints, f), tool)), startJoints, joints);
-        arm.Serve = task.RunPendingTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
+        RequireOutsideLimitZones(call, new RapidMovePath(arm, tool, arc, linear, start, goal), startJoints, joints);
+        arm.Serve = task.ServeTraps; // interrupts are served while the motion runs (a trap may hold or clear it)
         if (!linear || call.Has(p.T))
         {
             arm.MoveTo(joints, seconds, call.Line, name, task.CancellationToken, linear: linear, arc: arc);
@@ -124,9 +123,6 @@ internal static partial class RapidBuiltins
         arm.MoveLinear(new TwinLinearMove(goal, joints, v, acceleration, seconds, zone, zone > 0 && !task.Controller.HasSockets), call.Line, name, task.CancellationToken);
         ZoneOutputsAfterMotion(call);
     }
-
-    /// <summary>The TCP (base frame) of the arm at <paramref name="joints"/> with <paramref name="tool"/>.</summary>
-    private static Vector ToolAt(TwinArm arm, Joints joints, Pose tool) => (arm.Model.Kinematics.Forward(joints) * tool).Position;
 
     /// <summary>
     /// The zone radius of a move in mm (RAPID reference, zonedata): pzone_tcp, or \Z when given; 0 for a stop point (fine, finep
@@ -165,8 +161,8 @@ internal static partial class RapidBuiltins
         Pose goal = arm.Model.Kinematics.Forward(joints) * tool;
         double seconds = Duration(call, p, (goal.Position - start.Position).Length, TwinRotation.AngleDegrees(start.Rotation, goal.Rotation));
         Joints from = arm.Joints;
-        RequireOutsideLimitZones(call, f => ToolAt(arm, Between(from, joints, f), tool), from, joints);
-        arm.Serve = task.RunPendingTraps;
+        RequireOutsideLimitZones(call, new RapidMovePath(arm, tool, null, false, start, goal), from, joints);
+        arm.Serve = task.ServeTraps;
         arm.MoveTo(joints, seconds, call.Line, "MoveAbsJ", task.CancellationToken);
         ZoneOutputsAfterMotion(call);
     }

@@ -23,20 +23,15 @@ internal static partial class RapidBuiltins
             string s = call.Str(0), set = call.Str(2);
             int start = StartOf(call, s, call.Num(1));
             bool notIn = call.Has(3);
-            for (int i = start; i < s.Length; i++)
-            {
-                if (set.Contains(s[i], StringComparison.Ordinal) != notIn)
-                {
-                    return (double)(i + 1);
-                }
-            }
-            return (double)(s.Length + 1);
+            ReadOnlySpan<char> rest = s.AsSpan(start);
+            int found = notIn ? rest.IndexOfAnyExcept(set) : rest.IndexOfAny(set);
+            return RapidBoxes.Num(found < 0 ? s.Length + 1 : start + found + 1); // a shared box for a position: no allocation per call
         }),
         Function("StrMatch", "num", [P("Str", "string"), P("ChPos", "num"), P("Pattern", "string")], call =>
         {
             string s = call.Str(0);
             int found = s.IndexOf(call.Str(2), StartOf(call, s, call.Num(1)), StringComparison.Ordinal);
-            return (double)(found < 0 ? s.Length + 1 : found + 1);
+            return RapidBoxes.Num(found < 0 ? s.Length + 1 : found + 1);
         }),
         Function("StrToVal", "bool", [P("Str", "string"), P("Val", null, true)], call =>
         {
@@ -44,7 +39,8 @@ internal static partial class RapidBuiltins
             RapidDataType? type = call.TypeOf(1);
             if (type is { Rank: 0, Element.IsNumeric: true })
             {
-                if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) || !double.IsFinite(value))
+                if (!(RapidNumberText.TryParsePlain(text, out double value)
+                    || double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out value)) || !double.IsFinite(value))
                 {
                     return RapidBoxes.Bool(false);
                 }

@@ -161,9 +161,8 @@ internal static partial class RapidBuiltins
             }
         }
         AddSpeedSamples(events, profile);
-        RequireOutsideLimitZones(call, f => arc?.At(f).Position
-            ?? (linear ? start.Position + (goal.Position - start.Position) * f : ToolAt(arm, Between(from, joints, f), tool)), from, joints);
-        arm.Serve = task.RunPendingTraps;
+        RequireOutsideLimitZones(call, new RapidMovePath(arm, tool, arc, linear, start, goal), from, joints);
+        arm.Serve = task.ServeTraps;
         double done = 0, doneFraction = 0;
         Joints near = from;
         var speedOutputs = new Dictionary<RapidTriggEvent, double>(ReferenceEqualityComparer.Instance);

@@ -134,6 +134,18 @@ internal static partial class RapidBuiltins
         : throw ArgumentError(call, $"{name}: the world zone is not an active wztemporary");
 
     /// <summary>
+    /// The limit zones' check of a move from <paramref name="from"/> to <paramref name="to"/> (<see cref="RequireOutsideLimitZones(RapidCall, Func{double, Vector}, Joints, Joints)"/>)
+    /// when the task has zones: the TCP's path is made only then (a closure over the move's values, which every move made before).
+    /// </summary>
+    private static void RequireOutsideLimitZones(RapidCall call, RapidMovePath path, Joints from, Joints to)
+    {
+        if (call.Machine.Task.Controller.HasZones)
+        {
+            RequireOutsideLimitZones(call, path.TcpAt(from, to), from, to);
+        }
+    }
+
+    /// <summary>
     /// Refuses a motion whose path (<paramref name="tcpAt"/> of the fraction of the way, the joints going from <paramref name="from"/> to
     /// <paramref name="to"/>) would enter a limit zone: the task stops (no ERROR handler takes it), the arm where it stands. A joint zone is checked on the
     /// joints interpolated from the start to the target (the joint path of MoveJ and MoveAbsJ; for MoveL and MoveC, their ends exactly).
@@ -141,7 +153,7 @@ internal static partial class RapidBuiltins
     private static void RequireOutsideLimitZones(RapidCall call, Func<double, Vector> tcpAt, Joints from, Joints to)
     {
         RapidTwinController c = call.Machine.Task.Controller;
-        if (c.HasZones && c.LimitZoneOn(Enumerable.Range(1, ZoneSamples).Select(i => (double)i / ZoneSamples).Select(f => (tcpAt(f), Between(from, to, f)))) is { } zone)
+        if (c.LimitZoneOn(Enumerable.Range(1, ZoneSamples).Select(i => (double)i / ZoneSamples).Select(f => (tcpAt(f), Between(from, to, f)))) is { } zone)
         {
             throw new RapidRuntimeException(RapidErrorNumbers.ArgValErr, call.Line,
                 $"World zone: the motion would take {(zone.Shape!.Kind == "joints" ? "the robot's axes" : "the TCP")} into the limit zone activated at line {zone.Line} (WZLimSup); the robot stops at its border")

@@ -208,7 +208,7 @@ internal sealed partial class RapidMachine
     /// The value of a num or dnum expression as a number: the operators of an expression whose operands are all numbers (the binder's
     /// <see cref="RapidBinary.NumberOperands"/>) compute without a box for each intermediate result.
     /// </summary>
-    private double Number(RapidExpr e, RapidFrame? frame)
+    internal double Number(RapidExpr e, RapidFrame? frame)
     {
         switch (e)
         {

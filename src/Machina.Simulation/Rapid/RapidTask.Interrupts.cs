@@ -135,6 +135,11 @@ internal sealed partial class RapidTask
         }
     }
 
+    /// <summary><see cref="RunPendingTraps"/> as the delegate a motion serves interrupts with (<see cref="Twin.TwinArm.Serve"/>): made once, not at every move.</summary>
+    public Action ServeTraps => _serveTraps ??= RunPendingTraps;
+
+    private Action? _serveTraps;
+
     /// <summary>Runs the queued traps (none while a trap runs: an interrupt waits for the trap before it to end).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void RunPendingTraps()

@@ -40,11 +40,22 @@ internal sealed class RapidType
     public RapidType(string name, IReadOnlyList<(string Name, RapidDataType Type)> fields) : this(name, RapidTypeKind.Record)
     {
         Fields = fields;
+        ScalarDefaults = new object?[fields.Count];
         for (int i = 0; i < fields.Count; i++)
         {
             _index[fields[i].Name] = i;
+            if (fields[i].Type is { Rank: 0, Element.Kind: RapidTypeKind.Num or RapidTypeKind.Dnum or RapidTypeKind.Bool or RapidTypeKind.String } scalar)
+            {
+                ScalarDefaults[i] = RapidValues.Default(scalar);
+            }
         }
     }
+
+    /// <summary>
+    /// The initial values of a record type's num, dnum, bool and string components (shared: those values are never changed), null for
+    /// a component that needs a value of its own (a record, an array or a non-value type); empty for other types.
+    /// </summary>
+    public object?[] ScalarDefaults { get; } = [];
 
     /// <summary>The type's name.</summary>
     public string Name { get; }

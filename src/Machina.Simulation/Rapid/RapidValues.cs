@@ -70,10 +70,11 @@ internal static class RapidValues
     /// <summary>A record of <paramref name="type"/> with each component's initial value (a plain loop: a routine's record locals are made at each call).</summary>
     private static RapidRecord DefaultRecord(RapidType type)
     {
-        var fields = new object[type.Fields.Count];
+        object?[] scalars = type.ScalarDefaults;
+        var fields = new object[scalars.Length];
         for (int i = 0; i < fields.Length; i++)
         {
-            fields[i] = Default(type.Fields[i].Type);
+            fields[i] = scalars[i] ?? Default(type.Fields[i].Type);
         }
         return new RapidRecord(type, fields);
     }
