@@ -150,15 +150,17 @@ internal sealed class TcpRelay : IAsyncDisposable
             // from then on (on Linux), and the blocking pumps below would wait for its event thread at every read.
             upstream.Connect(IPAddress.Loopback, target);
             _log($"{who} connected ({what})");
+            // The sockets themselves: disposing the relay disposes each TcpClient, which forgets its socket.
+            Socket host = client.Client ?? throw new ObjectDisposedException(nameof(TcpClient)), controller = upstream.Client;
             var ended = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
             using (token.Register(() => ended.TrySetResult()))
             {
-                Thread toController = StartPump(client.Client, upstream.Client, ended, "relay to controller");
-                Thread toHost = StartPump(upstream.Client, client.Client, ended, "relay to host");
+                Thread toController = StartPump(host, controller, ended, "relay to controller");
+                Thread toHost = StartPump(controller, host, ended, "relay to host");
                 await ended.Task.ConfigureAwait(false);
                 // Either direction ended (or the relay stops): both connections close, which ends the other pump's blocking read.
-                Close(client.Client);
-                Close(upstream.Client);
+                Close(host);
+                Close(controller);
                 await Task.Run(() =>
                 {
                     toController.Join();

@@ -24,7 +24,7 @@ public sealed class TcpRelayTests
 
         using var host = new TcpClient();
         await host.ConnectAsync(IPAddress.Loopback, relay.Port).WaitAsync(Bounded);
-        using Socket inside = await controller.AcceptSocketAsync().AsTask().WaitAsync(Bounded);
+        using Socket inside = await controller.AcceptSocketAsync().WaitAsync(Bounded);
         NetworkStream fromHost = host.GetStream();
         using var fromController = new NetworkStream(inside);
 
@@ -42,7 +42,7 @@ public sealed class TcpRelayTests
 
         if (OperatingSystem.IsLinux())
         {
-            string[] names = [.. Directory.GetDirectories("/proc/self/task").Select(d => File.ReadAllText(Path.Combine(d, "comm")).Trim())];
+            string[] names = [.. Directory.GetDirectories("/proc/self/task").Select(d => Read(Path.Combine(d, "comm")).Trim())];
             Assert.Contains("relay to host", names);
             Assert.Contains("relay to contro", names); // the kernel keeps 15 characters of a thread's name
         }
@@ -65,19 +65,34 @@ public sealed class TcpRelayTests
         await using TcpRelay relay = TcpRelay.Start(IPAddress.Loopback, 0, [new RelayRoute(0, target, "test")], _ => { });
         using var host = new TcpClient();
         await host.ConnectAsync(IPAddress.Loopback, relay.Port).WaitAsync(Bounded);
-        using Socket inside = await controller.AcceptSocketAsync().AsTask().WaitAsync(Bounded);
+        using Socket inside = await controller.AcceptSocketAsync().WaitAsync(Bounded);
         // Both pumps run once a byte has crossed each way (each asks for its slice before its first read).
         await host.GetStream().WriteAsync(new byte[] { 9 }).AsTask().WaitAsync(Bounded);
         var one = new byte[1];
-        Assert.Equal(1, await new NetworkStream(inside).ReadAsync(one).AsTask().WaitAsync(Bounded));
+        using var fromController = new NetworkStream(inside);
+        Assert.Equal(1, await fromController.ReadAsync(one).AsTask().WaitAsync(Bounded));
         inside.Send([8]);
         Assert.Equal(1, await host.GetStream().ReadAsync(one).AsTask().WaitAsync(Bounded));
 
-        string[] slices = [.. Directory.GetDirectories("/proc/self/task")
-            .Where(d => File.ReadAllText(Path.Combine(d, "comm")).Trim() is "relay to host" or "relay to contro")
-            .Select(d => Field(File.ReadAllText(Path.Combine(d, "sched")), "se.slice"))];
-        Assert.True(slices.Length >= 2, $"{slices.Length} relay threads"); // tests running beside this one may have relays of their own
-        Assert.All(slices, s => Assert.Equal(Machina.Simulation.VirtualUrRtdeSlice.SliceNanoseconds.ToString(System.Globalization.CultureInfo.InvariantCulture), s));
+        // Tests running beside this one may have relays of their own, whose threads may be starting or ending: the two of this relay
+        // are among those that show the short slice.
+        string expected = Machina.Simulation.VirtualUrRtdeSlice.SliceNanoseconds.ToString(System.Globalization.CultureInfo.InvariantCulture);
+        int shortened = Directory.GetDirectories("/proc/self/task").Count(d => Read(Path.Combine(d, "comm")).Trim() is "relay to host" or "relay to contro"
+            && Field(Read(Path.Combine(d, "sched")), "se.slice") == expected);
+        Assert.True(shortened >= 2, $"{shortened} relay threads with a {expected} ns slice");
+    }
+
+    /// <summary>A file of a thread that may have ended meanwhile (empty then).</summary>
+    private static string Read(string path)
+    {
+        try
+        {
+            return File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return "";
+        }
     }
 
     /// <summary>A "name : value" line of a thread's sched file, or empty.</summary>
