@@ -146,14 +146,27 @@ internal sealed class TcpRelay : IAsyncDisposable
         try
         {
             client.NoDelay = true;
-            await upstream.ConnectAsync(IPAddress.Loopback, target, token).ConfigureAwait(false);
+            // Connected without the asynchronous engine: a socket that has run one asynchronous operation is read and written through it
+            // from then on (on Linux), and the blocking pumps below would wait for its event thread at every read.
+            upstream.Connect(IPAddress.Loopback, target);
             _log($"{who} connected ({what})");
-            using var both = CancellationTokenSource.CreateLinkedTokenSource(token);
-            Task toController = PumpAsync(client.GetStream(), upstream.GetStream(), both.Token);
-            Task toHost = PumpAsync(upstream.GetStream(), client.GetStream(), both.Token);
-            await Task.WhenAny(toController, toHost).ConfigureAwait(false);
-            await both.CancelAsync().ConfigureAwait(false);
-            await Task.WhenAll(toController, toHost).ConfigureAwait(false);
+            // The sockets themselves: disposing the relay disposes each TcpClient, which forgets its socket.
+            Socket host = client.Client ?? throw new ObjectDisposedException(nameof(TcpClient)), controller = upstream.Client;
+            var ended = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+            using (token.Register(() => ended.TrySetResult()))
+            {
+                Thread toController = StartPump(host, controller, ended, "relay to controller");
+                Thread toHost = StartPump(controller, host, ended, "relay to host");
+                await ended.Task.ConfigureAwait(false);
+                // Either direction ended (or the relay stops): both connections close, which ends the other pump's blocking read.
+                Close(host);
+                Close(controller);
+                await Task.Run(() =>
+                {
+                    toController.Join();
+                    toHost.Join();
+                }).ConfigureAwait(false);
+            }
         }
         catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
         {
@@ -172,7 +185,33 @@ internal sealed class TcpRelay : IAsyncDisposable
         }
     }
 
-    private static async Task PumpAsync(NetworkStream from, NetworkStream to, CancellationToken token)
+    /// <summary>
+    /// A thread of its own passing what <paramref name="from"/> receives to <paramref name="to"/> with blocking calls, until either closes;
+    /// then <paramref name="ended"/> is set. A blocking read is woken by the kernel itself when data arrives (an awaited read waits for the
+    /// runtime's event thread and then for a pool thread: two more threads to wake, each of which may wait for a core while a stream keeps
+    /// both busy), and the thread asks for a short time slice (<see cref="Machina.Simulation.VirtualUrRtdeSlice"/>, Linux 6.12 and later)
+    /// so that a package passed on at 500 Hz (RTDE) preempts the running thread instead of waiting for its slice to end.
+    /// </summary>
+    private static Thread StartPump(Socket from, Socket to, TaskCompletionSource ended, string name)
+    {
+        var thread = new Thread(() =>
+        {
+            Machina.Simulation.VirtualUrRtdeSlice.Shorten();
+            try
+            {
+                Pump(from, to);
+            }
+            finally
+            {
+                ended.TrySetResult();
+            }
+        })
+        { IsBackground = true, Name = name };
+        thread.Start();
+        return thread;
+    }
+
+    private static void Pump(Socket from, Socket to)
     {
         var buffer = new byte[8192];
         try
@@ -181,18 +220,35 @@ internal sealed class TcpRelay : IAsyncDisposable
             {
                 // A client that writes with Nagle on (ur_rtde) waits for the acknowledgement of its last small write before the
                 // next: acknowledge at once, as the controller's own socket does, not after the kernel's delayed-ACK pause.
-                Machina.Simulation.PromptAcknowledgement.BeforeRead(from.Socket);
-                int n = await from.ReadAsync(buffer, token).ConfigureAwait(false);
+                Machina.Simulation.PromptAcknowledgement.BeforeRead(from);
+                int n = from.Receive(buffer);
                 if (n == 0)
                 {
                     return;
                 }
-                await to.WriteAsync(buffer.AsMemory(0, n), token).ConfigureAwait(false);
+                for (int sent = 0; sent < n;)
+                {
+                    sent += to.Send(buffer, sent, n - sent, SocketFlags.None);
+                }
             }
         }
-        catch (Exception e) when (e is IOException or SocketException or OperationCanceledException or ObjectDisposedException)
+        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
         {
         }
+    }
+
+    /// <summary>Closes <paramref name="socket"/> both ways (a blocking read of it returns), then frees it.</summary>
+    private static void Close(Socket socket)
+    {
+        try
+        {
+            socket.Shutdown(SocketShutdown.Both);
+        }
+        catch (Exception e) when (e is SocketException or ObjectDisposedException)
+        {
+            // already closed
+        }
+        socket.Dispose();
     }
 
     /// <summary>Stops listening and closes every relayed connection.</summary>

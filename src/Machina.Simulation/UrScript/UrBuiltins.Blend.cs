@@ -58,20 +58,20 @@ internal static partial class UrBuiltins
         blend = m.Controller.TakeBlend();
         Pose start = blend?.Corner ?? arm.Tcp; // where the segment begins: the waypoint the arm blends around, or where it stands
         Joints first = blend?.CornerJoints ?? arm.Joints;
-        Func<double, Pose> straightAt = t => new Pose(start.Position + (target.Position - start.Position) * t, UrGeometry.Slerp(start.Rotation, target.Rotation, t));
-        Joints last = FollowLine(m, line, function, start, target, straightAt);
+        var way = new UrLinearPath(arm, start, target);
+        Joints last = FollowLine(m, line, function, start, target, way);
         double lengthMm = (target.Position - start.Position).Length;
         double metres = lengthMm / 1000;
         if (metres < BlendModel.MinLength)
         {
             double angle = TwinRotation.AngleBetween(start.Rotation, target.Rotation);
-            Joints Turn(double f) => f >= 1 ? last : Near(arm, straightAt(f), UrMotion.Lerp(first, last, f));
-            Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(angle, v, acc), function, time > 0 ? 0 : v / acc, Turn);
+            var turn = new UrTurnPath(arm, way, first, last);
+            Move(m, line, last, time > 0 ? time : TwinMotion.TrapezoidSeconds(angle, v, acc), function, time > 0 ? 0 : v / acc, turn.JointsAt);
             return UrNone.Value;
         }
         // The blend around the last waypoint (m): from the zone's entry past the waypoint to the exit leg along this segment.
         double exitLeg = blend is null ? 0 : Math.Min(blend.Radius, metres / 2);
-        double blendLength = blend is null ? 0 : BlendModel.Length(blend.Entry.Position / 1000, start.Position / 1000, straightAt(exitLeg / metres).Position / 1000);
+        double blendLength = blend is null ? 0 : BlendModel.Length(blend.Entry.Position / 1000, start.Position / 1000, way.PoseAt(exitLeg / metres).Position / 1000);
         double startSpeed = blend?.Speed ?? 0;
         double blendSeconds = blend is null ? 0 : blendLength / startSpeed;
         // This motion's own zone, where it returns to the program.
@@ -85,21 +85,16 @@ internal static partial class UrBuiltins
             straight = metres - exitLeg;
         }
         SpeedProfile profile = SpeedProfile.Plan(straight, startSpeed, v, radius > 0 ? entrySpeed : 0, acc);
-        double total = blendLength + straight;
-        Pose At(double s) // s: metres along this motion's way
-        {
-            if (s < blendLength && blend is not null)
-            {
-                Pose exit = straightAt(exitLeg / metres);
-                Vector point = BlendModel.PointAtDistance(blend.Entry.Position / 1000, start.Position / 1000, exit.Position / 1000, s) * 1000;
-                return new Pose(point, UrGeometry.Slerp(blend.Entry.Rotation, exit.Rotation, s / blendLength));
-            }
-            return straightAt(Math.Min(1, (exitLeg + s - blendLength) / metres));
-        }
-        Joints end = radius > 0 ? Near(arm, At(total), UrMotion.Lerp(first, last, (metres - radius) / metres)) : last;
-        Joints startJoints = arm.Joints;
-        Joints Along(double f) => f >= 1 ? end : Near(arm, At(f * total), UrMotion.Lerp(startJoints, end, f));
-        double Done(double t) => total <= 0 ? 1 : (t < blendSeconds ? startSpeed * t : blendLength + profile.DistanceAt(t - blendSeconds)) / total;
+        way.Blend = blend;
+        way.Metres = metres;
+        way.ExitLeg = exitLeg;
+        way.BlendLength = blendLength;
+        way.BlendSeconds = blendSeconds;
+        way.StartSpeed = startSpeed;
+        way.Profile = profile;
+        way.Total = blendLength + straight;
+        way.End = radius > 0 ? Near(arm, way.At(way.Total), UrMotion.Lerp(first, last, (metres - radius) / metres)) : last;
+        way.StartJoints = arm.Joints;
         double seconds = time > 0 ? time : blendSeconds + profile.Seconds;
         CancellationToken token = m.Cancellation;
         bool planned;
@@ -107,7 +102,7 @@ internal static partial class UrBuiltins
         {
             using (m.Unlock())
             {
-                planned = m.Controller.Move(end, seconds, time > 0 ? 0 : v / acc, time > 0 ? null : Done, Along, line, function, token, last, true);
+                planned = m.Controller.Move(way.End, seconds, time > 0 ? 0 : v / acc, way, time <= 0, line, function, token, last, true);
             }
         }
         catch (TwinMotionException e)
@@ -116,7 +111,7 @@ internal static partial class UrBuiltins
         }
         if (radius > 0)
         {
-            m.Controller.PendingBlend = new UrBlend(At(total), target, last, radius, planned ? entrySpeed : 0, v, acc, Environment.CurrentManagedThreadId, line, function);
+            m.Controller.PendingBlend = new UrBlend(way.At(way.Total), target, last, radius, planned ? entrySpeed : 0, v, acc, Environment.CurrentManagedThreadId, line, function);
             if (!planned)
             {
                 FinishBlend(m, line); // a hold stopped the arm: it goes on to its waypoint from rest
@@ -148,7 +143,7 @@ internal static partial class UrBuiltins
     private static string Mm(double mm) => Machina.Num.G(Math.Round(mm, 3));
 
     /// <summary>The joints that put the tool at <paramref name="pose"/>, nearest to <paramref name="near"/> (those joints when there are none).</summary>
-    private static Joints Near(TwinArm arm, Pose pose, Joints near)
+    internal static Joints Near(TwinArm arm, Pose pose, Joints near)
     {
         try
         {

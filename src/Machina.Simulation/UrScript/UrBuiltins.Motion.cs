@@ -100,7 +100,8 @@ internal static partial class UrBuiltins
     }
 
     /// <summary>Solves the inverse kinematics at points along a path, each near the last, and gives the joints at its end.</summary>
-    private static Joints FollowLine(UrMachine m, int line, string function, Pose start, Pose end, Func<double, Pose> at)
+    private static Joints FollowLine<TWay>(UrMachine m, int line, string function, Pose start, Pose end, TWay way)
+        where TWay : IUrWay
     {
         double mm = (end.Position - start.Position).Length;
         double degrees = TwinRotation.AngleDegrees(start.Rotation, end.Rotation);
@@ -114,7 +115,7 @@ internal static partial class UrBuiltins
             Joints next;
             try
             {
-                next = k < steps ? m.Controller.Arm.Solve(at((double)k / steps), joints)
+                next = k < steps ? m.Controller.Arm.Solve(way.PoseAt((double)k / steps), joints)
                     : steps == 1 ? atEnd
                     : m.Controller.Arm.Solve(end, joints);
             }
@@ -156,7 +157,7 @@ internal static partial class UrBuiltins
             ?? throw new UrRuntimeException(line, FormattableString.Invariant(
                 $"movec: the start, via and end points do not define a circle {TwinArc.NotACircle}"));
         Joints first = arm.Joints;
-        Joints last = FollowLine(m, line, "movec", start, arc.End, arc.At);
+        Joints last = FollowLine(m, line, "movec", start, arc.End, new UrArcWay(arc));
         Joints Along(double f) => f >= 1 ? last : Near(arm, arc.At(f), UrMotion.Lerp(first, last, f));
         Move(m, line, last, TwinMotion.TrapezoidSeconds(arc.LengthMm / 1000, v, acc), "movec", v / acc, Along);
         return UrNone.Value;

@@ -5,8 +5,10 @@ namespace Machina.Simulation.UrScript;
 /// started (after a stop), when it started, how long it takes and how long its speed ramps take (or its own speed profile: the
 /// part of its own way done after some seconds), and the path it follows.
 /// </summary>
-internal sealed class UrMotion(Joints from, Joints target, double doneBefore, long started, double seconds, double rampSeconds, Func<double, Joints>? path,
-    Func<double, double>? profile = null)
+/// <remarks>The path (null: straight in joint space) gives the joints at a fraction of the way; its own speed profile is followed
+/// when <paramref name="ownProfile"/> (else the trapezoid's).</remarks>
+internal sealed class UrMotion(Joints from, Joints target, double doneBefore, long started, double seconds, double rampSeconds, IUrMotionPath? path,
+    bool ownProfile = false)
 {
     /// <summary>Where the motion goes.</summary>
     public Joints Target => target;
@@ -21,7 +23,7 @@ internal sealed class UrMotion(Joints from, Joints target, double doneBefore, lo
     public double FractionAt(TimeSpan elapsed)
     {
         double t = Math.Clamp(elapsed.TotalSeconds, 0, seconds);
-        double own = seconds <= 0 ? 1 : profile is not null ? Math.Clamp(profile(t), 0, 1) : Profile(t);
+        double own = seconds <= 0 ? 1 : ownProfile && path is not null ? Math.Clamp(path.DoneAt(t), 0, 1) : Profile(t);
         return doneBefore + (1 - doneBefore) * own;
     }
 
@@ -31,7 +33,7 @@ internal sealed class UrMotion(Joints from, Joints target, double doneBefore, lo
         double f = FractionAt(elapsed);
         if (path is not null)
         {
-            return path(f);
+            return path.JointsAt(f);
         }
         double own = doneBefore >= 1 ? 1 : (f - doneBefore) / (1 - doneBefore);
         return Lerp(from, target, own);

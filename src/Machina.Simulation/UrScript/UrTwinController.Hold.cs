@@ -159,6 +159,15 @@ internal sealed partial class UrTwinController
     /// </summary>
     /// <returns>True when the motion ran as planned, false when a hold interrupted it (it then ends at rest).</returns>
     public bool Move(Joints target, double seconds, double rampSeconds, Func<double, double>? profile, Func<double, Joints>? path, int line, string function,
+        CancellationToken cancellation, Joints? traced, bool trace) =>
+        Move(target, seconds, rampSeconds, path is null ? null : new UrDelegatePath(path, profile), profile is not null, line, function, cancellation, traced, trace);
+
+    /// <summary>
+    /// As the other <c>Move</c>, along <paramref name="path"/> (null: straight in joint space) on its own speed profile when
+    /// <paramref name="ownProfile"/> (else the trapezoid).
+    /// </summary>
+    /// <returns>True when the motion ran as planned, false when a hold interrupted it (it then ends at rest).</returns>
+    public bool Move(Joints target, double seconds, double rampSeconds, IUrMotionPath? path, bool ownProfile, int line, string function,
         CancellationToken cancellation, Joints? traced, bool trace)
     {
         Arm.RequireWithinLimits(target);
@@ -171,7 +180,7 @@ internal sealed partial class UrTwinController
             CancellationToken hold;
             double span = seconds * (1 - done);
             var motion = new UrMotion(from, target, done, Options.Time.GetTimestamp(), Clock.RealTime ? span : 0, Clock.RealTime ? Math.Min(rampSeconds, span / 2) : 0, path,
-                planned ? profile : null);
+                planned && ownProfile);
             lock (_holdGate)
             {
                 hold = _holdStop.Token;

@@ -19,7 +19,7 @@ internal static class RtdeRateApartRun
         string twin = native ?? Path.Combine(AppContext.BaseDirectory, "Machina.Cli");
         string environment = ChildProcess.Environment.Count == 0 ? "none" : string.Join(" ", ChildProcess.Environment.Select(p => $"{p.Key}={p.Value}"));
         Console.WriteLine($"RTDE output rate of the virtual UR, each in its own process: twin {twin} (sim ur, 1000x), host a child streaming {actions:N0} moves, reader here");
-        Console.WriteLine($"child environment: {environment}; load average {Machine.LoadAverage()} at start");
+        Console.WriteLine($"child environment: {environment}; reader thread's slice: {(RtdeRateRun.ReaderSlice ? "100 us" : "the system's")}; load average {Machine.LoadAverage()} at start");
         Console.WriteLine();
         Console.WriteLine("| asked (Hz) | beside | delivered (Hz) | period error p50 (ms) | p99 (ms) | max (ms) | packages | twin cpu (ms/s) | reader GCs (pause ms) | load average | target |");
         Console.WriteLine("|---|---|---|---|---|---|---|---|---|---|---|");

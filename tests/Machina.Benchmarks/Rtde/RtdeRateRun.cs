@@ -142,6 +142,10 @@ internal static class RtdeRateRun
     /// <summary>Reads data packages until cancelled, recording when each arrived (Stopwatch ticks).</summary>
     private static void Read(NetworkStream net, List<long> arrivals, CancellationToken token)
     {
+        if (ReaderSlice)
+        {
+            VirtualUrRtdeSlice.Shorten();
+        }
         var header = new byte[3];
         var payload = new byte[4096];
         try
@@ -162,6 +166,14 @@ internal static class RtdeRateRun
             // closed at the end of the run
         }
     }
+
+    /// <summary>
+    /// Whether the reading thread asks Linux for a short time slice (<see cref="VirtualUrRtdeSlice"/>), as the twin's sender and
+    /// <c>machina sim</c>'s relay threads do: woken by a package while a stream keeps both cores busy, it then preempts the running
+    /// thread instead of waiting up to that thread's slice (1.4 ms on two cores) for a core. On unless the environment variable
+    /// MACHINA_BENCH_RTDE_READER_SLICE is 0 (to see the reader's own share of the period error).
+    /// </summary>
+    internal static bool ReaderSlice { get; } = Environment.GetEnvironmentVariable("MACHINA_BENCH_RTDE_READER_SLICE") != "0";
 
     private static byte[] Request(NetworkStream net, byte type, byte[] payload)
     {
