@@ -8,23 +8,7 @@ internal abstract class KrlExpr(int line)
 
     /// <summary>Its type, set when the program is bound.</summary>
     public KrlType Type { get; set; } = KrlType.Int;
-
-    /// <summary>
-    /// Its compiled form (<see cref="KrlMachine.Eval"/> builds it at the first evaluation, after binding, and keeps it): a closure
-    /// that evaluates it without looking at its kind again. It holds no interpreter, so the robot's and the submit interpreter
-    /// share it.
-    /// </summary>
-    public KrlEvaluator? Compiled { get; set; }
-
-    /// <summary>The compiled form of its place, for a variable, element or component written (see <see cref="Compiled"/>).</summary>
-    public KrlLocator? Located { get; set; }
 }
-
-/// <summary>The compiled form of a place: where the variable, element or component is stored in <paramref name="frame"/>.</summary>
-internal delegate KrlPlace KrlLocator(KrlMachine machine, object[] frame);
-
-/// <summary>The compiled form of an expression: its value in <paramref name="frame"/> on <paramref name="machine"/>.</summary>
-internal delegate object KrlEvaluator(KrlMachine machine, object[] frame);
 
 /// <summary>An argument left out of a call (<c>f(a, , c)</c>): the parameter gets no value from the caller.</summary>
 internal sealed class KrlOmitted(int line) : KrlExpr(line);

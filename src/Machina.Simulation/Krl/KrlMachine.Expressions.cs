@@ -3,8 +3,8 @@ namespace Machina.Simulation.Krl;
 /// <summary>Values, places and calls.</summary>
 internal sealed partial class KrlMachine
 {
-    /// <summary>The value of <paramref name="expr"/> in <paramref name="frame"/>, by walking the tree (see <see cref="Compile"/>).</summary>
-    private object EvalTree(KrlExpr expr, object[] frame)
+    /// <summary>The value of <paramref name="expr"/> in <paramref name="frame"/>.</summary>
+    public object Eval(KrlExpr expr, object[] frame)
     {
         switch (expr)
         {
@@ -34,7 +34,13 @@ internal sealed partial class KrlMachine
                 return Call(call, frame)!;
             case KrlUnary unary:
                 CheckStack();
-                return Unary(unary.Op, Eval(unary.Operand, frame));
+                object operand = Eval(unary.Operand, frame);
+                return unary.Op switch
+                {
+                    "NOT" => KrlValues.Box(!(bool)operand),
+                    "B_NOT" => ~(int)operand,
+                    _ => operand is int i ? -i : -(double)operand,
+                };
             case KrlBinary binary:
                 CheckStack();
                 return Binary(binary, Eval(binary.Left, frame), Eval(binary.Right, frame));
@@ -56,8 +62,8 @@ internal sealed partial class KrlMachine
     /// <summary>A structure or array local read before anything was stored in it: its initial value, made now and kept.</summary>
     private static object LocalValue(object[] frame, KrlName name) => frame[name.Slot] = KrlValues.Default(name.Type);
 
-    /// <summary>Where <paramref name="expr"/> (a variable, element, row or component) is stored, by walking the tree (see <see cref="CompileLocator"/>).</summary>
-    private KrlPlace PlaceTree(KrlExpr expr, object[] frame)
+    /// <summary>Where <paramref name="expr"/> (a variable, element, row or component) is stored.</summary>
+    public KrlPlace Place(KrlExpr expr, object[] frame)
     {
         switch (expr)
         {
@@ -240,13 +246,6 @@ internal sealed partial class KrlMachine
             GiveBack(mark);
         }
     }
-
-    private static object Unary(string op, object operand) => op switch
-    {
-        "NOT" => KrlValues.Box(!(bool)operand),
-        "B_NOT" => ~(int)operand,
-        _ => operand is int i ? -i : -(double)operand,
-    };
 
     private static object Binary(KrlBinary binary, object left, object right)
     {

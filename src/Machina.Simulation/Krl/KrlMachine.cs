@@ -218,8 +218,18 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         switch (statement)
         {
             case KrlAssign assign:
-                (assign.Compiled ??= CompileAssign(assign))(this, frame);
+            {
+                object value = Eval(assign.Value, frame);
+                if (assign.Value is KrlCall { Builtin.ReturnsFresh: true } && assign.Target is KrlName { Slot: >= 0 } local
+                    && value is KrlStructValue made && made.Type == local.Type)
+                {
+                    // A structure the built-in made for this call (ret = EKI_…): the local takes it as it is, the copy would be the same.
+                    frame[local.Slot] = made;
+                    return Flow.Next;
+                }
+                Assign(assign.Target, value, frame);
                 return Flow.Next;
+            }
             case KrlCallStmt call:
                 try
                 {

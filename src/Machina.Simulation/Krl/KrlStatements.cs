@@ -15,9 +15,6 @@ internal sealed class KrlAssign(int line, KrlExpr target, KrlExpr value) : KrlSt
 
     /// <summary>The value.</summary>
     public KrlExpr Value { get; } = value;
-
-    /// <summary>Its compiled form (built at its first run, after binding; see <see cref="KrlExpr.Compiled"/>).</summary>
-    public Action<KrlMachine, object[]>? Compiled { get; set; }
 }
 
 /// <summary>A routine call as a statement.</summary>
