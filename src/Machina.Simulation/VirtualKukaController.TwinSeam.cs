@@ -105,7 +105,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
             if (open)
             {
                 int at = tag.LastIndexOf('@');
-                action.Append(' ').Append(tag, at + 1, tag.Length - at - 1).Append("=\"").Append(Escape(value)).Append('"');
+                action.Append(' ').Append(tag, at + 1, tag.Length - at - 1).Append("=\"");
+                AppendEscaped(action, value);
+                action.Append('"');
             }
         }
         if (open)
@@ -149,8 +151,28 @@ public sealed partial class VirtualKukaController : IEkiSeam
         return null;
     }
 
-    private static string Escape(string value) => value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
-        .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
+    /// <summary>
+    /// Appends <paramref name="value"/> with &amp;, &lt;, &gt; and " written as XML's entities (the same text four replacements
+    /// gave: each character is replaced on its own, and no entity holds one of the four but its leading &amp;); a value without
+    /// them, as every number is, is appended as it is.
+    /// </summary>
+    private static void AppendEscaped(StringBuilder text, string value)
+    {
+        ReadOnlySpan<char> rest = value;
+        int at;
+        while ((at = rest.IndexOfAny("&<>\"")) >= 0)
+        {
+            text.Append(rest[..at]).Append(rest[at] switch
+            {
+                '&' => "&amp;",
+                '<' => "&lt;",
+                '>' => "&gt;",
+                _ => "&quot;",
+            });
+            rest = rest[(at + 1)..];
+        }
+        text.Append(rest);
+    }
 
     bool IEkiSeam.Send(EkiChannel channel, string root, string xml)
     {

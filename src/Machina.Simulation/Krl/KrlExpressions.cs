@@ -66,7 +66,10 @@ internal sealed class KrlCall(int line, string name, IReadOnlyList<KrlExpr> argu
     public string Name { get; } = name;
 
     /// <summary>The arguments.</summary>
-    public IReadOnlyList<KrlExpr> Arguments { get; } = arguments;
+    public IReadOnlyList<KrlExpr> Arguments => Each;
+
+    /// <summary>The same arguments as an array (the interpreter reads them at every call).</summary>
+    public KrlExpr[] Each { get; } = [.. arguments];
 
     /// <summary>The program's routine (set by the binder), or null for a built-in.</summary>
     public KrlRoutine? Routine { get; set; }

@@ -14,11 +14,11 @@ internal sealed partial class KrlMachine
                 return name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value;
             case KrlMember member:
                 return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
-            case KrlIndex index when index.Indices.Count == 0:
+            case KrlIndex index when index.Each.Length == 0:
                 return Eval(index.Target, frame);
-            case KrlIndex { Target: KrlName { Cell.Signals: { } signals } } index when index.Indices[^1] is not null:
+            case KrlIndex { Target: KrlName { Cell.Signals: { } signals } } index when index.Each[^1] is not null:
                 return signals.Get(Flat(index, signals.Type, signals.Type.Length, frame));
-            case KrlIndex { Target: KrlName } index when index.Indices[^1] is not null:
+            case KrlIndex { Target: KrlName } index when index.Each[^1] is not null:
             {
                 var array = (KrlArrayValue)Eval(index.Target, frame);
                 return array.Items[Flat(index, array.Type, array.Items.Length, frame)];
@@ -89,13 +89,13 @@ internal sealed partial class KrlMachine
             case KrlIndex index:
             {
                 KrlPlace parent = Place(index.Target, frame);
-                if (index.Indices.Count == 0)
+                if (index.Each.Length == 0)
                 {
                     return parent;
                 }
                 if (parent.Signals is { } signals)
                 {
-                    if (index.Indices[^1] is null)
+                    if (index.Each[^1] is null)
                     {
                         return parent;
                     }
@@ -103,19 +103,20 @@ internal sealed partial class KrlMachine
                     return new KrlPlace([], element, index.Type) { Root = (parent.Root!.Value.Cell, element), Signals = signals };
                 }
                 var array = (KrlArrayValue)parent.Container[parent.Index];
-                IReadOnlyList<int> sizes = array.Type.Sizes;
+                int[] sizes = array.Type.Dimensions;
+                KrlExpr?[] indices = index.Each;
                 int flat = 0;
-                for (int d = 0; d < index.Indices.Count; d++)
+                for (int d = 0; d < indices.Length; d++)
                 {
                     int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
-                    int i = index.Indices[d] is { } e ? KrlValues.ToInt(Eval(e, frame)) : 1;
+                    int i = indices[d] is { } e ? KrlValues.ToInt(Eval(e, frame)) : 1;
                     if (i < 1 || i > size)
                     {
                         throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
                     }
                     flat = flat * size + (i - 1);
                 }
-                if (index.Indices[^1] is null)
+                if (index.Each[^1] is null)
                 {
                     return new KrlPlace(array.Items, flat, index.Type, sizes[^1]) { Root = parent.Root is { } r ? (r.Cell, -1) : null };
                 }
@@ -137,9 +138,10 @@ internal sealed partial class KrlMachine
         {
             return false;
         }
-        for (int i = 0; i < call.Arguments.Count; i++)
+        KrlExpr[] arguments = call.Each;
+        for (int i = 0; i < arguments.Length; i++)
         {
-            if (builtin.Parameters[i].IsOut && !LocalOrUnwatched(call.Arguments[i]))
+            if (builtin.Parameters[i].IsOut && !LocalOrUnwatched(arguments[i]))
             {
                 return false;
             }
@@ -166,7 +168,7 @@ internal sealed partial class KrlMachine
             case KrlName { Slot: >= 0 } local:
                 frame[local.Slot] = KrlConvert.To(local.Type, value, frame[local.Slot]);
                 return;
-            case KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Indices.Count > 0 && index.Indices[^1] is not null:
+            case KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Each.Length > 0 && index.Each[^1] is not null:
             {
                 var array = (KrlArrayValue)Eval(index.Target, frame);
                 int flat = Flat(index, array.Type, array.Items.Length, frame);
@@ -220,13 +222,14 @@ internal sealed partial class KrlMachine
     /// <summary>Calls a routine or a built-in; returns a function's value (null for a subprogram).</summary>
     public object? Call(KrlCall call, object[] frame)
     {
-        object[] arguments = BorrowArguments(call.Arguments.Count, out Borrowed mark);
+        KrlExpr[] given = call.Each;
+        object[] arguments = BorrowArguments(given.Length, out Borrowed mark);
         try
         {
             for (int i = 0; i < arguments.Length; i++)
             {
                 bool isOut = call.Routine is { } r ? r.Parameters[i].IsOut : call.Builtin!.Parameters[i].IsOut;
-                KrlExpr argument = call.Arguments[i];
+                KrlExpr argument = given[i];
                 arguments[i] = argument is KrlOmitted ? null! : isOut ? BoxPlace(Place(argument, frame)) : Eval(argument, frame);
             }
             if (call.Routine is { } routine)
