@@ -104,6 +104,9 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
         return false;
     }
 
+    /// <summary>The text itself, from its start, for a compiler's own scan of it (the caller disposes the reader).</summary>
+    internal TextReader OpenText() => open();
+
     /// <summary>The letters of the motion instructions' names (Move, MoveTo, Rotate, RotateTo, Transform, Axes, …): a toolpath is mostly these.</summary>
     private const string ToolpathLetters = "MoveToRtaAxsTrnfm";
 

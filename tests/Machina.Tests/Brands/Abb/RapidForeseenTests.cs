@@ -63,4 +63,43 @@ public sealed class RapidForeseenTests : IDisposable
         // The word "Speed" in a comment sends the text the other way (a spool): the module is the same.
         Both("MoveTo(300, 0, 500); // Speed stays 20\nMove(1, 0, 0);\n");
     }
+
+    [Fact]
+    public void CompileToFolder_PlainSpeedTos_DeclaresTheStartSpeedThenEachSpeedSet()
+    {
+        (string[] mod, _) = Both("MoveTo(300, 0, 500);\nSpeedTo(50);\nMove(1, 0, 0);\nSpeedTo(60.5);\nMove(0, 1, 0);\nSpeedTo(50);\nMove(0, 0, 1);\n");
+
+        int main = Array.IndexOf(mod, "  PROC main()");
+        int[] speeds = [.. new[] { "vel20", "vel50", "vel60_5" }.Select(name => Array.FindIndex(mod, l => l.StartsWith("  CONST speeddata " + name + " :=", StringComparison.Ordinal)))];
+        Assert.True(speeds[0] > 0 && speeds[0] < speeds[1] && speeds[1] < speeds[2] && speeds[2] < main, string.Join(",", speeds));
+        Assert.Equal(2, mod.Count(l => l.Contains(", vel50, z5, Tool0", StringComparison.Ordinal)));
+    }
+
+    [Theory]
+    [InlineData("SpeedTo(40);\nMoveTo(300, 0, 500);\nMove(1, 0, 0);\n")] // the start speed never moves
+    [InlineData("// first\nSpeedTo(40);\nMoveTo(300, 0, 500);\n")] // the guess says the start speed moves: it does not
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo(40);\nSpeedTo(30);\nMove(1, 0, 0);\n")] // a speed set that nothing moves at
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo(40);\nMove(1, 0, 0);\nSpeedTo(70);\n")] // a last speed that nothing moves at
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo(4e1);\nMove(1, 0, 0);\n")]
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo( 40 );\nMove(1, 0, 0);\n")]
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo(0.0004);\nMove(1, 0, 0);\nSpeedTo(0.0001);\nMove(1, 0, 0);\n")] // two speeds written alike
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo(40);\nMove(1, 0, 0);\nSpeed(10);\nMove(1, 0, 0);\n")] // a relative change: not scanned
+    [InlineData("MoveTo(300, 0, 500);\nSpeedTo(40.0000000000000000000000000000000000000000000000000000000001);\nMove(1, 0, 0);\n")] // too long to scan
+    [InlineData("MoveTo(300, 0, 500); // SpeedTo(90)\nMove(1, 0, 0);\n")] // named only in a comment: the guess is wrong
+    [InlineData("Wait(100);\nSpeedTo(40);\nMessage(\"SpeedTo(80)\");\n")] // no motion at all
+    public void CompileToFolder_SpeedTosTheGuessGetsWrong_SameModuleAsTheRobot(string text) => Both(text);
+
+    [Fact]
+    public void CompileToFolder_ManySpeedTosAcrossScanBlocks_SameModuleAsTheRobot()
+    {
+        // 20,000 lines cross the scan's 64 KB blocks at every place of a statement: each SpeedTo is still read whole.
+        var text = new System.Text.StringBuilder("MoveTo(300, 0, 500);\n");
+        for (int i = 0; i < 20_000; i++)
+        {
+            text.Append(i % 37 == 0 ? $"SpeedTo({10 + i % 11 * 5});\n" : i % 2 == 0 ? "Move(1.5, -2.25, 0.125);\n" : "Move(-1.5, 2, 0.5);\n");
+        }
+        (string[] mod, _) = Both(text.ToString()); // 10, 15, … 60 mm/s (20 is also the start speed)
+
+        Assert.Equal(11, mod.Count(l => l.StartsWith("  CONST speeddata ", StringComparison.Ordinal)));
+    }
 }

@@ -38,19 +38,20 @@ internal sealed class RapidCompiler : Compiler
 
     /// <summary>
     /// Writes the module in one pass straight into its file, without a spool, when its declarations can be foreseen: an
-    /// instruction text that names nothing that declares (<see cref="RapidPlan.WordsThatDeclare"/>) moves at the start's speed,
-    /// zone and tool, so its declarations are those of one motion in the start state (<see cref="RapidPlan.Foresee"/>). The
+    /// instruction text that names nothing that declares (<see cref="RapidPlan.WordsThatDeclare"/>) but <c>SpeedTo(number)</c>
+    /// moves at the start's zone and tool and at the speeds its text names (<see cref="RapidSpeedScan"/>), so its declarations
+    /// are foreseen (<see cref="RapidPlan.Foresee(CompileJob, RapidSpeedScan)"/>). The
     /// declarations met while writing are checked against those at the end; when they differ (a text without motions) the file
     /// is started over and false returned. A 10^6-line program's body (130-170 MB of RAPID) is then written once instead of
     /// twice (to the spool, then from it into the module).
     /// </summary>
     private bool TryWriteForeseen(CompileJob job, LineSink mod)
     {
-        if (job.Source is null || !mod.CanStartOver || job.Source.MayContain(RapidPlan.WordsThatDeclare))
+        if (job.Source is null || !mod.CanStartOver || RapidSpeedScan.Of(job.Source) is not RapidSpeedScan scan)
         {
             return false;
         }
-        RapidPlan foreseen = RapidPlan.Foresee(job);
+        RapidPlan foreseen = RapidPlan.Foresee(job, scan);
         RapidPlan live = RapidPlan.StartLive(job);
         WriteModule(job, mod, foreseen, _ => new RapidWriter(job, live, mod).WriteInstructions());
         live.Finish();

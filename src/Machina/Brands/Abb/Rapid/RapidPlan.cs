@@ -63,18 +63,28 @@ internal sealed class RapidPlan
     /// Text that every statement which adds to the declarations, or changes the speed, zone or tool that motions use, contains
     /// (instruction names are case-sensitive): <c>Speed</c>/<c>SpeedTo</c>, <c>Precision</c>/<c>PrecisionTo</c>,
     /// <c>PopSettings</c>, <c>DefineTool</c>/<c>AttachTool</c>/<c>DetachTool</c>, <c>CustomCode</c>, and the IO statements.
-    /// A text that names none of them declares what <see cref="Foresee"/> says, if it moves at all.
+    /// A text that names none of them but <c>SpeedTo(number)</c> declares what <see cref="Foresee"/> says, if it moves after each.
     /// </summary>
     internal static readonly string[] WordsThatDeclare = ["Speed", "Precision", "Settings", "Tool", "CustomCode", "Digital", "Analog"];
 
     /// <summary>
-    /// The plan of a program whose motions all keep the start state's speed, zone and tool (see <see cref="WordsThatDeclare"/>):
-    /// what <see cref="Collect"/> finds for it, if it has at least one motion. Finished.
+    /// The plan of a program whose only statements that declare are the <c>SpeedTo</c>s <paramref name="scan"/> found, each
+    /// followed by a motion: the start state's zone and tool, and the start speed (if <see cref="RapidSpeedScan.StartSpeedMoves"/>)
+    /// then each speed set, in order. Finished.
     /// </summary>
-    internal static RapidPlan Foresee(CompileJob job)
+    internal static RapidPlan Foresee(CompileJob job, RapidSpeedScan scan)
     {
         RapidPlan plan = Start(job, live: false);
-        plan.ObserveMotion(job.NewCursor());
+        RobotCursor start = job.NewCursor();
+        if (scan.StartSpeedMoves)
+        {
+            plan.ObserveMotion(start);
+        }
+        foreach (double speed in scan.Speeds)
+        {
+            AddOnce(plan._speeds, plan._speedNames, SpeedKey(speed), ref plan._lastSpeedSeen);
+        }
+        AddOnce(plan._zones, plan._zoneNames, Math.Round(start.Precision, 3), ref plan._lastZoneSeen); // the tool is Start's
         plan.Finish();
         return plan;
     }
