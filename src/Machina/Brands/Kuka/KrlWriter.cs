@@ -339,7 +339,8 @@ internal sealed class KrlWriter
         if (_human)
         {
             at = Put(line, at, "  ; ["u8);
-            if (System.Text.Ascii.FromUtf16(_description.AsSpan(0, descriptionLength), line[at..], out int written) != System.Buffers.OperationStatus.Done)
+            int written = AsciiNarrow.TryWrite(_description.AsSpan(0, descriptionLength), line[at..]);
+            if (written < 0)
             {
                 return false;
             }
@@ -639,8 +640,7 @@ internal sealed class KrlWriter
         {
             _poseTailAscii = new byte[_poseTail.Length];
         }
-        _poseTailAsciiLength = System.Text.Ascii.FromUtf16(_poseTail.AsSpan(0, _poseTailLength), _poseTailAscii, out int written)
-            == System.Buffers.OperationStatus.Done ? written : -1;
+        _poseTailAsciiLength = AsciiNarrow.TryWrite(_poseTail.AsSpan(0, _poseTailLength), _poseTailAscii);
     }
 
     /// <summary>Writes an angle as <see cref="KrlFormat.AppendOrientation"/> does (3 decimals, −180 as 180); −1 when too large for the fast digits.</summary>

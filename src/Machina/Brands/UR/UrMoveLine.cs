@@ -52,7 +52,8 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
         {
             "  # ["u8.CopyTo(line[at..]);
             at += 5;
-            if (System.Text.Ascii.FromUtf16(_description.AsSpan(0, descriptionLength), line[at..], out int written) != System.Buffers.OperationStatus.Done)
+            int written = AsciiNarrow.TryWrite(_description.AsSpan(0, descriptionLength), line[at..]);
+            if (written < 0)
             {
                 return false;
             }

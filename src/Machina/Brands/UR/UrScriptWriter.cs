@@ -273,7 +273,7 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
 
     /// <summary>The ASCII bytes of <paramref name="text"/> (a character outside ASCII as <c>?</c>, as the file would hold it); returns their count.</summary>
     private static int Narrow(ReadOnlySpan<char> text, Span<byte> destination) =>
-        System.Text.Ascii.FromUtf16(text, destination, out int written) == System.Buffers.OperationStatus.Done ? written : Encoding.ASCII.GetBytes(text, destination);
+        AsciiNarrow.TryWrite(text, destination) is int written and >= 0 ? written : Encoding.ASCII.GetBytes(text, destination);
 
     /// <summary>Copies <paramref name="text"/> into <paramref name="line"/> at <paramref name="at"/>; returns the position after it.</summary>
     private static int Put(Span<byte> line, int at, ReadOnlySpan<byte> text)
