@@ -41,4 +41,22 @@ internal static class AsciiNarrow
         }
         return bits < 0x80 ? units.Length : -1;
     }
+
+    /// <summary>
+    /// Writes <paramref name="opening"/>, the bytes of <paramref name="text"/> and <c>]</c> at <paramref name="at"/> (a line's
+    /// comment such as <c>  ; [Move [1, 2, 3] mm]</c>); returns the position after them, or −1 when the text is not ASCII.
+    /// </summary>
+    internal static int TryWriteBracketed(Span<byte> line, int at, ReadOnlySpan<byte> opening, ReadOnlySpan<char> text)
+    {
+        opening.CopyTo(line[at..]);
+        at += opening.Length;
+        int written = TryWrite(text, line[at..]);
+        if (written < 0)
+        {
+            return -1;
+        }
+        at += written;
+        line[at] = (byte)']';
+        return at + 1;
+    }
 }

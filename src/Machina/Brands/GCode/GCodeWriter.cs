@@ -327,16 +327,9 @@ internal sealed class GCodeWriter
             }
             at = Put(line, at, " F"u8) + written;
         }
-        if (describe)
+        if (describe && (at = AsciiNarrow.TryWriteBracketed(line, at, "  ; ["u8, _description.AsSpan(0, descriptionLength))) < 0)
         {
-            at = Put(line, at, "  ; ["u8);
-            int written = AsciiNarrow.TryWrite(_description.AsSpan(0, descriptionLength), line[at..]);
-            if (written < 0)
-            {
-                return false;
-            }
-            at += written;
-            line[at++] = (byte)']';
+            return false;
         }
         _file.EndAscii(at);
         if (feedHere)

@@ -336,16 +336,9 @@ internal sealed class KrlWriter
         {
             at = Put(line, at, ptp ? " C_PTP"u8 : " C_DIS"u8); // Approximation's text
         }
-        if (_human)
+        if (_human && (at = AsciiNarrow.TryWriteBracketed(line, at, "  ; ["u8, _description.AsSpan(0, descriptionLength))) < 0)
         {
-            at = Put(line, at, "  ; ["u8);
-            int written = AsciiNarrow.TryWrite(_description.AsSpan(0, descriptionLength), line[at..]);
-            if (written < 0)
-            {
-                return false;
-            }
-            at += written;
-            line[at++] = (byte)']';
+            return false;
         }
         _src.EndAscii(at);
         return true;

@@ -48,17 +48,9 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
         at += orientation.Length;
         parameters.CopyTo(line[at..]);
         at += parameters.Length;
-        if (human)
+        if (human && (at = AsciiNarrow.TryWriteBracketed(line, at, "  # ["u8, _description.AsSpan(0, descriptionLength))) < 0)
         {
-            "  # ["u8.CopyTo(line[at..]);
-            at += 5;
-            int written = AsciiNarrow.TryWrite(_description.AsSpan(0, descriptionLength), line[at..]);
-            if (written < 0)
-            {
-                return false;
-            }
-            at += written;
-            line[at++] = (byte)']';
+            return false;
         }
         sink.EndAscii(at);
         return true;
