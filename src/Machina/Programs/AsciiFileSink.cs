@@ -66,6 +66,27 @@ internal sealed class AsciiFileSink : LineSink, IDisposable
         _used += written + _newLine.Length;
     }
 
+    /// <summary>The buffer's free space itself: the line is written in place and <see cref="EndAscii"/> only ends it.</summary>
+    internal override Span<byte> BeginAscii(int most)
+    {
+        int room = most + _newLine.Length;
+        if (_buffer.Length - _used < room)
+        {
+            Flush();
+            if (_buffer.Length < room)
+            {
+                _buffer = new byte[room];
+            }
+        }
+        return _buffer.AsSpan(_used, most);
+    }
+
+    internal override void EndAscii(int length)
+    {
+        _newLine.CopyTo(_buffer.AsSpan(_used + length));
+        _used += length + _newLine.Length;
+    }
+
     internal override void Add(StringBuilder line)
     {
         int start = _used;

@@ -14,6 +14,37 @@ internal abstract class LineSink
     /// <summary>Adds characters as one line, without making a string of them where the sink can (hot compiler paths).</summary>
     internal virtual void Add(ReadOnlySpan<char> line) => Add(new string(line));
 
+    // The scratch line of BeginAscii for a sink that does not hold bytes itself, and its characters.
+    private byte[]? _asciiLine;
+    private char[]? _asciiChars;
+
+    /// <summary>
+    /// Room for one line of ASCII bytes, at least <paramref name="most"/> long (no line ending): the writer fills its start and
+    /// gives the length to <see cref="EndAscii"/>, which adds it as a line; without <see cref="EndAscii"/> nothing is added.
+    /// Nothing else may be added in between. A sink that writes bytes hands out its own buffer, so the line is written once,
+    /// in place (no characters narrowed per line); the others widen the bytes into characters (<see cref="Add(ReadOnlySpan{char})"/>).
+    /// </summary>
+    internal virtual Span<byte> BeginAscii(int most)
+    {
+        if (_asciiLine is null || _asciiLine.Length < most)
+        {
+            _asciiLine = new byte[Math.Max(most, 256)];
+            _asciiChars = new char[_asciiLine.Length];
+        }
+        return _asciiLine.AsSpan(0, most);
+    }
+
+    /// <summary>Adds the first <paramref name="length"/> bytes of the room <see cref="BeginAscii"/> gave as one line.</summary>
+    internal virtual void EndAscii(int length)
+    {
+        Span<char> chars = _asciiChars.AsSpan(0, length);
+        System.Text.Ascii.ToUtf16(AsciiLine(length), chars, out _);
+        Add(chars);
+    }
+
+    /// <summary>The line of bytes <see cref="BeginAscii"/>'s scratch room holds, <paramref name="length"/> long.</summary>
+    private protected ReadOnlySpan<byte> AsciiLine(int length) => _asciiLine.AsSpan(0, length);
+
     /// <summary>True when <see cref="StartOver"/> can drop the lines added so far.</summary>
     internal virtual bool CanStartOver => false;
 
@@ -41,6 +72,9 @@ internal sealed class ListLineSink : LineSink
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override void Add(ReadOnlySpan<char> line) => Lines.Add(line);
+
+    /// <summary>Keeps the bytes as they are (an ASCII line is kept as bytes anyway).</summary>
+    internal override void EndAscii(int length) => Lines.AddAscii(AsciiLine(length));
 }
 
 /// <summary>Writes lines to a text writer as they come.</summary>

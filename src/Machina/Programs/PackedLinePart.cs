@@ -85,6 +85,20 @@ internal sealed class PackedLinePart
             line.CopyTo(_other.List[otherBlock].AsSpan(otherStart));
             entry = new Line(~otherBlock, otherStart, line.Length);
         }
+        Enter(entry);
+    }
+
+    /// <summary>Appends a line of ASCII bytes (copied into its block as it is).</summary>
+    internal void AddAscii(ReadOnlySpan<byte> line)
+    {
+        (int block, int start) = _ascii.Reserve(line.Length);
+        line.CopyTo(_ascii.List[block].AsSpan(start, line.Length));
+        Enter(new Line(block, start, line.Length));
+    }
+
+    /// <summary>Records where the line just stored is, as the next line.</summary>
+    private void Enter(Line entry)
+    {
         int offset = Count & (ChunkSize - 1);
         if ((offset == 0 && Count > 0) || _chunks.Count == 0)
         {
@@ -98,7 +112,7 @@ internal sealed class PackedLinePart
         }
         _chunks[^1][offset] = entry;
         Count++;
-        CharacterCount += line.Length;
+        CharacterCount += entry.Length;
     }
 
     /// <summary>

@@ -87,6 +87,15 @@ internal sealed class PackedLines : IReadOnlyList<string>
         _longest = Math.Max(_longest, line.Length);
     }
 
+    /// <summary>Appends a line of ASCII bytes.</summary>
+    internal void AddAscii(ReadOnlySpan<byte> line)
+    {
+        (_open ?? Open()).AddAscii(line);
+        _count++;
+        CharacterCount += line.Length;
+        _longest = Math.Max(_longest, line.Length);
+    }
+
     private PackedLinePart Open()
     {
         _open = new PackedLinePart();

@@ -29,6 +29,12 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
     private int _pendingChars;
     private bool _continues;
 
+    // The kind of the first warning of the motion about to be written that went straight to the file (no run was under way).
+    private string? _started;
+
+    // A warning line of bytes given while a run is under way: it may go on the run (not written) or wait for the run's end.
+    private byte[] _asciiWarning = new byte[320];
+
     /// <summary>Lines that reached the file so far: the next line written is number <see cref="LinesWritten"/> + 1.</summary>
     internal int LinesWritten { get; private set; }
 
@@ -36,11 +42,21 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
     /// Gives a warning comment of the motion about to be written (before <see cref="Motion"/>): <paramref name="kind"/> names
     /// the warning (the same kind on consecutive motions makes a run), <paramref name="line"/> is the whole comment line.
     /// </summary>
+    /// <remarks>
+    /// With no run under way nothing can come before the line (no run's closing comment), so it goes to the file at once, not
+    /// through the pending buffer: lines added between <see cref="Warn"/> and <see cref="Motion"/> would come after it.
+    /// </remarks>
     internal void Warn(string kind, ReadOnlySpan<char> line)
     {
         if (Continues(kind))
         {
             _continues = true; // the run goes on: this copy is not written
+            return;
+        }
+        if (_count == 0)
+        {
+            Add(line);
+            _started ??= kind;
             return;
         }
         if (_pendingChars + line.Length > _pendingText.Length)
@@ -50,6 +66,42 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
         line.CopyTo(_pendingText.AsSpan(_pendingChars));
         _pending.Add((kind, _pendingChars, line.Length));
         _pendingChars += line.Length;
+    }
+
+    /// <summary>
+    /// Room for a warning comment line of ASCII bytes, at least <paramref name="most"/> long, for <see cref="EndWarnAscii"/>: with no
+    /// run under way the file's own room (<see cref="LineSink.BeginAscii"/>: the line is written once, in place), else a buffer of this sink's.
+    /// </summary>
+    internal Span<byte> BeginWarnAscii(int most)
+    {
+        if (_count == 0)
+        {
+            return BeginAscii(most);
+        }
+        if (_asciiWarning.Length < most)
+        {
+            _asciiWarning = new byte[most];
+        }
+        return _asciiWarning.AsSpan(0, most);
+    }
+
+    /// <summary>Gives the first <paramref name="length"/> bytes of <see cref="BeginWarnAscii"/>'s room as <see cref="Warn"/> gives a line.</summary>
+    internal void EndWarnAscii(string kind, int length)
+    {
+        if (_count == 0)
+        {
+            EndAscii(length);
+            _started ??= kind;
+            return;
+        }
+        if (Continues(kind))
+        {
+            _continues = true;
+            return;
+        }
+        Span<char> line = length <= 512 ? stackalloc char[length] : new char[length];
+        System.Text.Ascii.ToUtf16(_asciiWarning.AsSpan(0, length), line, out _);
+        Warn(kind, line);
     }
 
     /// <summary>True when a warning of <paramref name="kind"/> given now would go on the run under way (its line would not be written).</summary>
@@ -81,6 +133,13 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
             _pending.Clear();
             _pendingChars = 0;
         }
+        else if (_started is not null)
+        {
+            // Its warnings went to the file at once (no run was under way): the run starts here all the same.
+            (_kind, _count) = (_started, 1);
+            _firstLine = _lastLine = LinesWritten + 1;
+        }
+        _started = null;
     }
 
     /// <summary>Ends the run under way (also called after the last motion): a run of two motions or more gets its closing comment.</summary>
@@ -114,6 +173,14 @@ internal sealed class WarningRuns(LineSink file, string commentPrefix) : LineSin
     internal override void Add(ReadOnlySpan<char> line)
     {
         file.Add(line);
+        LinesWritten++;
+    }
+
+    internal override Span<byte> BeginAscii(int most) => file.BeginAscii(most);
+
+    internal override void EndAscii(int length)
+    {
+        file.EndAscii(length);
         LinesWritten++;
     }
 }

@@ -9,19 +9,22 @@ namespace Machina;
 internal sealed class KeptNumber
 {
     private readonly char[] _text = new char[NumAppend.MaxChars];
+    private readonly byte[] _ascii = new byte[NumAppend.MaxChars];
     private int _length = -1;
     private long _bits;
 
-    /// <summary>Writes the text of <paramref name="value"/> at <paramref name="at"/>; returns the position after it.</summary>
-    internal int Write(Span<char> destination, int at, double value)
+    /// <summary>Writes the text of <paramref name="value"/> at <paramref name="at"/> as ASCII bytes; returns the position after it.</summary>
+    internal int WriteAscii(Span<byte> destination, int at, double value)
     {
         long bits = BitConverter.DoubleToInt64Bits(value);
         if (_length < 0 || bits != _bits)
         {
+            // G15 text is digits, a sign, a point and E notation's letter: ASCII.
             _length = NumShortest.WriteGeneral(_text, value);
+            System.Text.Ascii.FromUtf16(_text.AsSpan(0, _length), _ascii, out _);
             _bits = bits;
         }
-        _text.AsSpan(0, _length).CopyTo(destination[at..]);
+        _ascii.AsSpan(0, _length).CopyTo(destination[at..]);
         return at + _length;
     }
 }

@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Text;
 
@@ -71,7 +72,18 @@ internal static class NumAppend
     /// rounded value has more than 15 significant digits, or is not finite, and the caller must format it another way.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal static int TryWriteScaled(Span<char> destination, double value, int decimals)
+    internal static int TryWriteScaled(Span<char> destination, double value, int decimals) => WriteScaled<char>(destination, value, decimals);
+
+    /// <summary>
+    /// Writes the ASCII bytes of what <see cref="TryWriteScaled"/> writes as characters (for lines that go
+    /// to a file as bytes: <see cref="LineSink.BeginAscii"/>); returns their count or −1 as it does.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal static int TryWriteScaledAscii(Span<byte> destination, double value, int decimals) => WriteScaled<byte>(destination, value, decimals);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static int WriteScaled<T>(Span<T> destination, double value, int decimals)
+        where T : unmanaged, IBinaryInteger<T>
     {
         // Math.Round(value, decimals) scales, rounds to even and scales back; doing the first two steps here gives the
         // same digits as an integer, which prints exactly while it has at most 15 significant digits.
@@ -89,7 +101,20 @@ internal static class NumAppend
     /// the line another way. The move lines of RAPID and URScript begin so.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal static int TryWriteCoordinates(Span<char> destination, int at, Vector position, double scale, int decimals, ReadOnlySpan<char> separator)
+    internal static int TryWriteCoordinates(Span<char> destination, int at, Vector position, double scale, int decimals, ReadOnlySpan<char> separator) =>
+        WriteCoordinates<char>(destination, at, position, scale, decimals, separator);
+
+    /// <summary>
+    /// Writes the ASCII bytes of what <see cref="TryWriteCoordinates"/> writes as characters; returns the position after them,
+    /// or −1 as it does.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal static int TryWriteCoordinatesAscii(Span<byte> destination, int at, Vector position, double scale, int decimals, ReadOnlySpan<byte> separator) =>
+        WriteCoordinates<byte>(destination, at, position, scale, decimals, separator);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static int WriteCoordinates<T>(Span<T> destination, int at, Vector position, double scale, int decimals, ReadOnlySpan<T> separator)
+        where T : unmanaged, IBinaryInteger<T>
     {
         ReadOnlySpan<double> xyz = [position.X, position.Y, position.Z];
         for (int i = 0; i < xyz.Length; i++)
@@ -99,7 +124,7 @@ internal static class NumAppend
                 separator.CopyTo(destination[at..]);
                 at += separator.Length;
             }
-            int written = TryWriteScaled(destination[at..], xyz[i] * scale, decimals);
+            int written = WriteScaled(destination[at..], xyz[i] * scale, decimals);
             if (written < 0)
             {
                 return -1;
@@ -114,13 +139,15 @@ internal static class NumAppend
     /// decimal notation, trailing zeros of the fraction removed, '-' first when <paramref name="negative"/> and the number is not
     /// 0; returns the number of characters. Digits are written by hand: the general integer formatter took about 5 % of a RAPID compile.
     /// </summary>
+    /// <remarks>Characters (<see cref="char"/>) or ASCII bytes (<see cref="byte"/>): the same digits either way.</remarks>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal static int WriteDecimal(Span<char> destination, bool negative, long mantissa, int decimals)
+    internal static int WriteDecimal<T>(Span<T> destination, bool negative, long mantissa, int decimals)
+        where T : unmanaged, IBinaryInteger<T>
     {
         int at = 0;
         if (negative && mantissa != 0)
         {
-            destination[at++] = '-';
+            destination[at++] = T.CreateTruncating('-');
         }
         // Millimetres (3 decimals) and metres (6 decimals) below 1000, most numbers of most programs: three digits at a time
         // (packed characters: the first in the low bits, which is the first in memory on little-endian processors).
@@ -152,7 +179,7 @@ internal static class NumAppend
             fraction /= 10;
             digits--;
         }
-        destination[at++] = '.';
+        destination[at++] = T.CreateTruncating('.');
         // The fraction is below 10^digits: exactly that many digits, leading zeros included, so no count is needed.
         WriteDigitsOf(destination.Slice(at, digits), (ulong)fraction);
         return at + digits;
@@ -163,6 +190,9 @@ internal static class NumAppend
     /// one store instead of a copy of one to three characters.
     /// </summary>
     private static readonly ulong[] Triples = MakeTriples();
+
+    /// <summary><see cref="Triples"/> as ASCII bytes: four packed into one number (the fourth is 0), first digit in the low bits.</summary>
+    private static readonly uint[] ByteTriples = MakeByteTriples();
 
     /// <summary>How many of the three digits of each number below 1000 are left when its trailing zeros are dropped (0 for 0).</summary>
     private static readonly byte[] TrimmedDigits = MakeTrimmedDigits();
@@ -177,6 +207,16 @@ internal static class NumAppend
         return triples;
     }
 
+    private static uint[] MakeByteTriples()
+    {
+        var triples = new uint[1000];
+        for (int n = 0; n < triples.Length; n++)
+        {
+            triples[n] = (uint)('0' + n / 100) | (uint)('0' + n / 10 % 10) << 8 | (uint)('0' + n % 10) << 16;
+        }
+        return triples;
+    }
+
     private static byte[] MakeTrimmedDigits()
     {
         var digits = new byte[1000];
@@ -187,20 +227,34 @@ internal static class NumAppend
         return digits;
     }
 
-    /// <summary>Stores four packed characters at <paramref name="at"/> (the place must hold them) and returns <paramref name="at"/> + <paramref name="count"/>.</summary>
+    /// <summary>
+    /// Stores the digits of <paramref name="triple"/> (below 1000, three digits with leading zeros) at <paramref name="at"/>, the first
+    /// <paramref name="skipped"/> of them left out, as four packed characters or bytes (the place must hold four); returns
+    /// <paramref name="at"/> + <paramref name="count"/>.
+    /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int Put(Span<char> destination, int at, ulong packed, int count)
+    private static int Put<T>(Span<T> destination, int at, uint triple, int skipped, int count)
+        where T : unmanaged, IBinaryInteger<T>
     {
-        System.Runtime.InteropServices.MemoryMarshal.Write(System.Runtime.InteropServices.MemoryMarshal.AsBytes(destination.Slice(at, 4)), in packed);
+        Span<byte> place = System.Runtime.InteropServices.MemoryMarshal.AsBytes(destination.Slice(at, 4));
+        if (typeof(T) == typeof(byte))
+        {
+            System.Runtime.InteropServices.MemoryMarshal.Write(place, ByteTriples[triple] >> (8 * skipped));
+        }
+        else
+        {
+            System.Runtime.InteropServices.MemoryMarshal.Write(place, Triples[triple] >> (16 * skipped));
+        }
         return at + count;
     }
 
     /// <summary>Writes <paramref name="value"/> (below 1000) without leading zeros at <paramref name="at"/>; returns the position after it.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int WriteBelowThousand(Span<char> destination, int at, uint value)
+    private static int WriteBelowThousand<T>(Span<T> destination, int at, uint value)
+        where T : unmanaged, IBinaryInteger<T>
     {
         int skipped = value >= 100 ? 0 : value >= 10 ? 1 : 2;
-        return Put(destination, at, Triples[value] >> (16 * skipped), 3 - skipped);
+        return Put(destination, at, value, skipped, 3 - skipped);
     }
 
     /// <summary>
@@ -208,20 +262,21 @@ internal static class NumAppend
     /// decimals) without its trailing zeros, nothing when it is 0; returns the position after it.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int WriteFraction(Span<char> destination, int at, uint first, uint second)
+    private static int WriteFraction<T>(Span<T> destination, int at, uint first, uint second)
+        where T : unmanaged, IBinaryInteger<T>
     {
         if (second != 0)
         {
-            destination[at] = '.';
-            at = Put(destination, at + 1, Triples[first], 3);
-            return Put(destination, at, Triples[second], TrimmedDigits[second]);
+            destination[at] = T.CreateTruncating('.');
+            at = Put(destination, at + 1, first, 0, 3);
+            return Put(destination, at, second, 0, TrimmedDigits[second]);
         }
         if (first == 0)
         {
             return at;
         }
-        destination[at] = '.';
-        return Put(destination, at + 1, Triples[first], TrimmedDigits[first]);
+        destination[at] = T.CreateTruncating('.');
+        return Put(destination, at + 1, first, 0, TrimmedDigits[first]);
     }
 
     /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>
@@ -260,7 +315,8 @@ internal static class NumAppend
     /// more, which one comparison decides).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private static int WriteDigits(Span<char> destination, long value, int minDigits)
+    private static int WriteDigits<T>(Span<T> destination, long value, int minDigits)
+        where T : unmanaged, IBinaryInteger<T>
     {
         ulong rest = (ulong)value;
         int estimate = (System.Numerics.BitOperations.Log2(rest | 1) + 1) * 1233 >> 12;
@@ -271,7 +327,8 @@ internal static class NumAppend
     }
 
     /// <summary>Fills <paramref name="digits"/> with <paramref name="rest"/> (which fits), leading zeros first, two digits at a time from the last.</summary>
-    private static void WriteDigitsOf(Span<char> digits, ulong rest)
+    private static void WriteDigitsOf<T>(Span<T> digits, ulong rest)
+        where T : unmanaged, IBinaryInteger<T>
     {
         int at = digits.Length;
         if (rest <= uint.MaxValue)
@@ -282,8 +339,8 @@ internal static class NumAppend
             {
                 uint next = small / 100;
                 int pair = (int)(small - next * 100) * 2;
-                digits[--at] = DigitPairs[pair + 1];
-                digits[--at] = DigitPairs[pair];
+                digits[--at] = T.CreateTruncating(DigitPairs[pair + 1]);
+                digits[--at] = T.CreateTruncating(DigitPairs[pair]);
                 small = next;
             }
             rest = small;
@@ -292,23 +349,23 @@ internal static class NumAppend
         {
             ulong next = rest / 100;
             int pair = (int)(rest - next * 100) * 2;
-            digits[--at] = DigitPairs[pair + 1];
-            digits[--at] = DigitPairs[pair];
+            digits[--at] = T.CreateTruncating(DigitPairs[pair + 1]);
+            digits[--at] = T.CreateTruncating(DigitPairs[pair]);
             rest = next;
         }
         if (rest >= 10)
         {
             int pair = (int)rest * 2;
-            digits[--at] = DigitPairs[pair + 1];
-            digits[--at] = DigitPairs[pair];
+            digits[--at] = T.CreateTruncating(DigitPairs[pair + 1]);
+            digits[--at] = T.CreateTruncating(DigitPairs[pair]);
         }
         else
         {
-            digits[--at] = (char)('0' + (int)rest);
+            digits[--at] = T.CreateTruncating('0' + (int)rest);
         }
         if (at > 0)
         {
-            digits[..at].Fill('0');
+            digits[..at].Fill(T.CreateTruncating('0'));
         }
     }
 

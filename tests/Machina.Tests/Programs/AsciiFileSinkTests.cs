@@ -101,4 +101,51 @@ public class AsciiFileSinkTests
         Assert.Equal("head\r\nfirst\r\nsecond ?\r\nfoot\r\n", Encoding.ASCII.GetString(file.ToArray()));
         Assert.Equal(["third"], list.Lines);
     }
+
+    /// <summary>Lines given as ASCII bytes (<see cref="LineSink.BeginAscii"/>) among lines of characters, and one begun and never ended.</summary>
+    private static void FeedBytes(LineSink sink)
+    {
+        sink.Add("first");
+        foreach (string line in (string[])["  LIN {E6POS: X 1.5}", "", new string('b', 400), "last of bytes"])
+        {
+            Span<byte> room = sink.BeginAscii(line.Length + 8);
+            Assert.True(room.Length >= line.Length + 8);
+            Encoding.ASCII.GetBytes(line, room);
+            sink.EndAscii(line.Length);
+            sink.Add(line + " as characters");
+        }
+        Encoding.ASCII.GetBytes("dropped", sink.BeginAscii(32)); // never ended: not a line
+        sink.Add("end");
+    }
+
+    private static readonly string[] FedByBytes =
+    [
+        "first", "  LIN {E6POS: X 1.5}", "  LIN {E6POS: X 1.5} as characters", "", " as characters", new string('b', 400),
+        new string('b', 400) + " as characters", "last of bytes", "last of bytes as characters", "end",
+    ];
+
+    [Theory]
+    [InlineData("\n")]
+    [InlineData("\r\n")]
+    public void BeginAscii_LinesOfBytesAmongLinesOfCharacters_WrittenInOrderInPlace(string newLine)
+    {
+        var bytes = new MemoryStream();
+        var sink = new AsciiFileSink(bytes, newLine, bufferSize: 256); // a line longer than the buffer, and flushes between lines
+        FeedBytes(sink);
+        sink.Flush();
+
+        Assert.Equal(string.Concat(FedByBytes.Select(line => line + newLine)), Encoding.ASCII.GetString(bytes.ToArray()));
+    }
+
+    [Fact]
+    public void BeginAscii_SinksOfLinesAndOfCharacters_TheSameLinesInOrder()
+    {
+        var list = new ListLineSink();
+        FeedBytes(list);
+        var text = new StringWriter();
+        FeedBytes(new WriterLineSink(text, "\n"));
+
+        Assert.Equal(FedByBytes, list.Lines);
+        Assert.Equal(string.Concat(FedByBytes.Select(line => line + "\n")), text.ToString());
+    }
 }

@@ -178,4 +178,54 @@ public class NumAppendTests
         Assert.True(double.IsNaN(NumAppend.RoundEven(double.NaN)));
         Assert.Equal(-1, NumAppend.TryWriteScaled(new char[NumAppend.MaxChars], double.NaN, 3));
     }
+
+    [Fact]
+    public void TryWriteScaledAscii_ManyValues_TheBytesOfTheCharactersTryWriteScaledWrites()
+    {
+        // Both halves of the fast digits (3 and 6 decimals below 1000 units), the general digits, huge and refused values.
+        var random = new Random(48);
+        var values = new List<double> { 0, -0.0, 0.0005, -0.0005, 999.9995, 1e15, -1e15, 1e20, double.NaN, double.PositiveInfinity };
+        for (int i = 0; i < 20_000; i++)
+        {
+            values.Add((random.NextDouble() - 0.5) * Math.Pow(10, random.Next(-4, 14)));
+        }
+        Span<char> chars = stackalloc char[NumAppend.MaxChars];
+        Span<byte> bytes = stackalloc byte[NumAppend.MaxChars];
+        foreach (double value in values)
+        {
+            for (int decimals = 0; decimals <= NumAppend.MaxDecimals; decimals++)
+            {
+                int charCount = NumAppend.TryWriteScaled(chars, value, decimals);
+                int byteCount = NumAppend.TryWriteScaledAscii(bytes, value, decimals);
+                Assert.Equal(charCount, byteCount);
+                if (charCount > 0)
+                {
+                    Assert.Equal(new string(chars[..charCount]), Encoding.ASCII.GetString(bytes[..byteCount]));
+                }
+            }
+        }
+    }
+
+    [Theory]
+    [InlineData(300.0, 0.0, 500.0, 0.001, 6)]
+    [InlineData(-1.23456789, 987.654321, -0.0004, 1.0, 3)]
+    [InlineData(1e20, 1, 2, 1.0, 3)]
+    public void TryWriteCoordinatesAscii_Position_TheBytesOfTheCharactersTryWriteCoordinatesWrites(double x, double y, double z, double scale, int decimals)
+    {
+        var position = new Vector(x, y, z);
+        var chars = new char[8 + 3 * (NumAppend.MaxChars + 2)];
+        var bytes = new byte[chars.Length];
+        "p[".CopyTo(chars);
+        "p["u8.CopyTo(bytes);
+
+        int charEnd = NumAppend.TryWriteCoordinates(chars, 2, position, scale, decimals, ", ");
+        int byteEnd = NumAppend.TryWriteCoordinatesAscii(bytes, 2, position, scale, decimals, ", "u8);
+
+        Assert.Equal(charEnd, byteEnd);
+        if (charEnd > 0)
+        {
+            Assert.Equal(new string(chars, 0, charEnd), Encoding.ASCII.GetString(bytes, 0, byteEnd));
+        }
+        Assert.Equal(x < 1e15, charEnd > 0);
+    }
 }

@@ -266,6 +266,10 @@ internal sealed class GCodeWriter
             _feed = feed;
         }
         _highest = Math.Max(_highest, point.Z);
+        if (arcCenterOffset is null && TryWriteMotion(code, point, e, feed, action))
+        {
+            return;
+        }
         StringBuilder sb = _sb.Clear();
         sb.Append(code).Append(" X").AppendFixed(point.X, 3);
         sb.Append(" Y").AppendFixed(point.Y, 3);
@@ -289,6 +293,57 @@ internal sealed class GCodeWriter
             sb.Append("  ; [").AppendDescription(action, oneLine: true).Append(']');
         }
         _file.Add(sb);
+    }
+
+    /// <summary>
+    /// Writes <see cref="Motion"/>'s line of a straight motion as ASCII bytes straight into the file's room
+    /// (<see cref="LineSink.BeginAscii"/>) instead of through the builder; false (nothing written) when a number is too large for
+    /// the fast digits or a text is not ASCII, and the caller writes the line through its builder.
+    /// </summary>
+    private bool TryWriteMotion(string code, Vector point, double? e, double feed, RobotAction? action)
+    {
+        bool describe = action is not null && _human;
+        int descriptionLength = describe ? action!.TryWriteDescription(_description) : 0;
+        bool feedHere = _flavor.FeedOnMotionLine && feed != _feed;
+        string rate = feedHere ? Rate(feed) : "";
+        Span<byte> line = _file.BeginAscii(code.Length + rate.Length + 5 * (NumAppend.MaxChars + 3) + Math.Max(descriptionLength, 0) + 8);
+        int at = descriptionLength < 0 ? -1 : AsciiNarrow.TryWrite(code, line);
+        if (at < 0)
+        {
+            return false;
+        }
+        if ((at = PutNumber(line, Put(line, at, " X"u8), point.X, 3)) < 0 || (at = PutNumber(line, Put(line, at, " Y"u8), point.Y, 3)) < 0
+            || (at = PutNumber(line, Put(line, at, " Z"u8), point.Z, 3)) < 0
+            || (e is double extruder && (at = PutNumber(line, Put(line, at, " E"u8), extruder, 5)) < 0))
+        {
+            return false;
+        }
+        if (feedHere)
+        {
+            int written = AsciiNarrow.TryWrite(rate, line[(at + 2)..]);
+            if (written < 0)
+            {
+                return false;
+            }
+            at = Put(line, at, " F"u8) + written;
+        }
+        if (describe && (at = AsciiNarrow.TryWriteBracketed(line, at, "  ; ["u8, _description.AsSpan(0, descriptionLength))) < 0)
+        {
+            return false;
+        }
+        _file.EndAscii(at);
+        if (feedHere)
+        {
+            _feed = feed;
+        }
+        return true;
+    }
+
+    /// <summary>Writes a number as <see cref="NumAppend.AppendFixed"/> does; −1 when it is too large for the fast digits.</summary>
+    private static int PutNumber(Span<byte> line, int at, double value, int decimals)
+    {
+        int written = NumAppend.TryWriteScaledAscii(line[at..], value, decimals);
+        return written < 0 ? -1 : at + written;
     }
 
     /// <summary>A speed in mm/s as a feed rate in mm/min (speeds are at most 1,000,000 mm/s, so the feed always fits).</summary>
@@ -417,16 +472,54 @@ internal sealed class GCodeWriter
     {
         _job.Warn(action, reason);
         // The description is found once and written twice (a toolpath that turns on every other move wrote it twice per
-        // turn); a move's or a turn's (digits and fixed words) without a string, as AppendDescription writes it.
-        Span<char> buffer = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
-        int written = action.TryWriteDescription(buffer);
-        ReadOnlySpan<char> description = written >= 0 ? buffer[..written] : ProgramText.OneLine(action.Describe());
+        // turn); a move's or a turn's (digits and fixed words) without a string, as AppendDescription writes it, into a kept
+        // array (a buffer on the stack was cleared on every turn).
+        int written = action.TryWriteDescription(_description);
+        ReadOnlySpan<char> description = written >= 0 ? _description.AsSpan(0, written) : ProgramText.OneLine(action.Describe());
+        if (TryWriteNotApplicable(description))
+        {
+            return;
+        }
         StringBuilder sb = _sb.Clear().Append("; ACTION \"").Append(description).Append("\" NOT APPLICABLE TO THIS DEVICE");
         if (_human)
         {
             sb.Append("  ; [").Append(description).Append(']');
         }
         _file.Add(sb);
+    }
+
+    private readonly char[] _description = new char[RobotAction.MaxWrittenDescriptionChars];
+
+    /// <summary>
+    /// Writes <see cref="NotApplicable"/>'s line as ASCII bytes straight into the file's room (<see cref="LineSink.BeginAscii"/>);
+    /// false (nothing written) when the description is not all ASCII, and the caller writes the line through its builder.
+    /// </summary>
+    private bool TryWriteNotApplicable(ReadOnlySpan<char> description)
+    {
+        Span<byte> line = _file.BeginAscii(2 * description.Length + 48);
+        int at = Put(line, 0, "; ACTION \""u8);
+        int length = AsciiNarrow.TryWrite(description, line[at..]);
+        if (length < 0)
+        {
+            return false;
+        }
+        int start = at;
+        at = Put(line, at + length, "\" NOT APPLICABLE TO THIS DEVICE"u8);
+        if (_human)
+        {
+            at = Put(line, at, "  ; ["u8);
+            line.Slice(start, length).CopyTo(line[at..]);
+            at += length;
+            line[at++] = (byte)']';
+        }
+        _file.EndAscii(at);
+        return true;
+    }
+
+    private static int Put(Span<byte> line, int at, ReadOnlySpan<byte> text)
+    {
+        text.CopyTo(line[at..]);
+        return at + text.Length;
     }
 
     private void Code(string line, RobotAction action)

@@ -284,65 +284,63 @@ internal sealed class KrlWriter
             WarnPtpSpeedOnce(action);
         }
         KukaConfiguration? config = StatusTurn(c, position, rotation);
-        string approximation = Approximation(ptp, c.Precision);
-        if (TryWriteInlineMove(ptp ? "PTP " : "LIN ", position, rotation, c.ExternalAxesCartesian, config, approximation, action))
+        if (TryWriteInlineMove(ptp, position, rotation, c.ExternalAxesCartesian, config, c.Precision, action))
         {
             return;
         }
         StringBuilder line = BeginLine().Append(ptp ? "PTP " : "LIN ");
         AppendPoseTarget(line, position, rotation, c.ExternalAxesCartesian, config);
-        EndLine(line.Append(approximation), action);
+        EndLine(line.Append(Approximation(ptp, c.Precision)), action);
     }
 
-    private char[] _moveLine = new char[256];
+    // The move's description as characters (TryWriteDescription writes characters), narrowed into the line.
+    private readonly char[] _description = new char[RobotAction.MaxWrittenDescriptionChars];
 
     /// <summary>
     /// Writes a <c>LIN</c>/<c>PTP</c> line with an inline target as <see cref="AppendPoseTarget"/> and <see cref="EndLine"/> write
-    /// it, into one reused array instead of a builder: the position's three numbers, the kept text after them (orientation,
-    /// Status and Turn, external axes), the approximation and the move's description. False (nothing written) with declared
-    /// targets, a coordinate too large for the fast digits, or a description that is not digits and fixed words; the caller then
-    /// writes the line the general way.
+    /// it, as ASCII bytes straight into the file's room (<see cref="LineSink.BeginAscii"/>) instead of through a builder: the
+    /// position's three numbers, the kept text after them (orientation, Status and Turn, external axes), the approximation and
+    /// the move's description. False (nothing written) with declared targets, a coordinate too large for the fast digits, or a
+    /// description that is not digits and fixed words in ASCII; the caller then writes the line the general way.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    private bool TryWriteInlineMove(string instruction, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config,
-                                    string approximation, RobotAction action)
+    private bool TryWriteInlineMove(bool ptp, Vector position, Rotation rotation, ExternalAxes? external, KukaConfiguration? config,
+                                    double precision, RobotAction action)
     {
         if (!_inline)
         {
             return false;
         }
-        ReadOnlySpan<char> tail = PoseTail(rotation, external, config);
-        int need = 32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + approximation.Length + RobotAction.MaxWrittenDescriptionChars + 8;
-        if (_moveLine.Length < need)
+        int descriptionLength = _human ? action.TryWriteDescription(_description) : 0;
+        if (descriptionLength < 0)
         {
-            _moveLine = new char[need * 2];
+            return false;
         }
-        Span<char> line = _moveLine;
-        int at = Put(line, 0, Indent);
-        at = Put(line, at, instruction);
-        at = Put(line, at, "{E6POS: X ");
-        if ((at = PutMm(line, at, position.X)) < 0 || (at = PutMm(line, Put(line, at, ", Y "), position.Y)) < 0
-            || (at = PutMm(line, Put(line, at, ", Z "), position.Z)) < 0)
+        PoseTail(rotation, external, config); // makes the kept text after the position, and its bytes, current
+        if (_poseTailAsciiLength < 0)
+        {
+            return false;
+        }
+        ReadOnlySpan<byte> tail = _poseTailAscii.AsSpan(0, _poseTailAsciiLength);
+        Span<byte> line = _src.BeginAscii(32 + 3 * (NumAppend.MaxChars + 4) + tail.Length + RobotAction.MaxWrittenDescriptionChars + 16);
+        int at = Put(line, 0, ptp ? "  PTP {E6POS: X "u8 : "  LIN {E6POS: X "u8);
+        if ((at = PutMm(line, at, position.X)) < 0 || (at = PutMm(line, Put(line, at, ", Y "u8), position.Y)) < 0
+            || (at = PutMm(line, Put(line, at, ", Z "u8), position.Z)) < 0)
         {
             return false;
         }
         tail.CopyTo(line[at..]);
         at += tail.Length;
-        line[at++] = '}';
-        at = Put(line, at, approximation);
-        if (_human)
+        line[at++] = (byte)'}';
+        if (precision > 0)
         {
-            // The description is written in its place in the line: no buffer of its own to clear and copy from.
-            at = Put(line, at, "  ; [");
-            int ownLength = action.TryWriteDescription(line[at..]);
-            if (ownLength < 0)
-            {
-                return false;
-            }
-            at += ownLength;
-            line[at++] = ']';
+            at = Put(line, at, ptp ? " C_PTP"u8 : " C_DIS"u8); // Approximation's text
         }
-        _src.Add(line[..at]);
+        if (_human && (at = AsciiNarrow.TryWriteBracketed(line, at, "  ; ["u8, _description.AsSpan(0, descriptionLength))) < 0)
+        {
+            return false;
+        }
+        _src.EndAscii(at);
         return true;
     }
 
@@ -352,10 +350,16 @@ internal sealed class KrlWriter
         return at + text.Length;
     }
 
-    /// <summary>Writes millimetres with 3 decimals as <see cref="KrlFormat.AppendPosition"/> does; −1 when too large for the fast digits.</summary>
-    private static int PutMm(Span<char> line, int at, double value)
+    private static int Put(Span<byte> line, int at, ReadOnlySpan<byte> text)
     {
-        int written = NumAppend.TryWriteScaled(line[at..], value, 3);
+        text.CopyTo(line[at..]);
+        return at + text.Length;
+    }
+
+    /// <summary>Writes millimetres with 3 decimals as <see cref="KrlFormat.AppendPosition"/> does; −1 when too large for the fast digits.</summary>
+    private static int PutMm(Span<byte> line, int at, double value)
+    {
+        int written = NumAppend.TryWriteScaledAscii(line[at..], value, 3);
         return written < 0 ? -1 : at + written;
     }
 
@@ -607,6 +611,7 @@ internal sealed class KrlWriter
                     at = Put(text, Put(text, Put(text, Put(text, at, ", S "), st.StatusText), ", T "), st.TurnText);
                 }
                 _poseTailLength = at;
+                KeepAscii();
                 return;
             }
         }
@@ -618,6 +623,17 @@ internal sealed class KrlWriter
         }
         sb.CopyTo(0, _poseTail, sb.Length);
         _poseTailLength = sb.Length;
+        KeepAscii();
+    }
+
+    /// <summary>The kept text's bytes for the lines written as bytes; −1 as their length when it is not all ASCII.</summary>
+    private void KeepAscii()
+    {
+        if (_poseTailAscii.Length < _poseTailLength)
+        {
+            _poseTailAscii = new byte[_poseTail.Length];
+        }
+        _poseTailAsciiLength = AsciiNarrow.TryWrite(_poseTail.AsSpan(0, _poseTailLength), _poseTailAscii);
     }
 
     /// <summary>Writes an angle as <see cref="KrlFormat.AppendOrientation"/> does (3 decimals, −180 as 180); −1 when too large for the fast digits.</summary>
@@ -630,6 +646,8 @@ internal sealed class KrlWriter
     private readonly StringBuilder _poseTailText = new(96);
     private char[] _poseTail = new char[3 * (NumAppend.MaxChars + 4) + 64];
     private int _poseTailLength;
+    private byte[] _poseTailAscii = new byte[3 * (NumAppend.MaxChars + 4) + 64];
+    private int _poseTailAsciiLength;
     private bool _tailKnown;
     private Rotation _tailRotation;
     private ExternalAxes? _tailExternal;

@@ -13,35 +13,33 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
 {
     private const int MostChars = 16 + 3 * (NumAppend.MaxChars + 1) + RobotAction.MaxWrittenDescriptionChars + 8;
 
-    private char[] _line = new char[256];
+    // The description as characters (TranslationDigits and TryWriteDescription write characters), narrowed into the line.
+    private readonly char[] _description = new char[RobotAction.MaxWrittenDescriptionChars];
 
     /// <summary>
-    /// Writes the line of <paramref name="action"/> (a move, a turn, any motion to a pose) into <paramref name="sink"/>; false
-    /// (nothing written) when a coordinate is too large for the fast digits, or the comment <paramref name="human"/> asks for is
-    /// not one of digits and fixed words (<see cref="RobotAction.TryWriteDescription"/>), and the caller writes the line the general way.
+    /// Writes the line of <paramref name="action"/> (a move, a turn, any motion to a pose) into <paramref name="sink"/>, as ASCII
+    /// bytes in the sink's own room (<see cref="LineSink.BeginAscii"/>); false (nothing written) when a coordinate is too large for
+    /// the fast digits, or the comment <paramref name="human"/> asks for is not one of digits and fixed words in ASCII
+    /// (<see cref="RobotAction.TryWriteDescription"/>), and the caller writes the line the general way.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal bool TryWrite(LineSink sink, RobotAction action, RobotCursor cursor, bool joint, bool human)
     {
-        var move = action as ActionTranslation;
-        Span<char> turn = stackalloc char[RobotAction.MaxWrittenDescriptionChars];
-        int turnLength = human && move is null ? action.TryWriteDescription(turn) : 0;
-        if (turnLength < 0)
+        int descriptionLength = 0;
+        if (human)
         {
-            return false;
+            descriptionLength = action is ActionTranslation move ? digits.WriteDescription(move, _description) : action.TryWriteDescription(_description);
+            if (descriptionLength < 0)
+            {
+                return false;
+            }
         }
-        ReadOnlySpan<char> orientation = repeated.Orientation(cursor.Rotation!.Value);
-        ReadOnlySpan<char> parameters = repeated.Parameters(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
-        int need = MostChars + orientation.Length + parameters.Length;
-        if (_line.Length < need)
-        {
-            _line = new char[need * 2];
-        }
-        Span<char> line = _line;
-        ReadOnlySpan<char> start = joint ? "  movej(p[" : "  movep(p[";
+        ReadOnlySpan<byte> orientation = repeated.OrientationAscii(cursor.Rotation!.Value);
+        ReadOnlySpan<byte> parameters = repeated.ParametersAscii(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
+        Span<byte> line = sink.BeginAscii(MostChars + orientation.Length + parameters.Length);
+        ReadOnlySpan<byte> start = joint ? "  movej(p["u8 : "  movep(p["u8;
         start.CopyTo(line);
-        int at = start.Length;
-        at = NumAppend.TryWriteCoordinates(line, at, cursor.Position!.Value, UrScriptText.Mm, 6, ",");
+        int at = NumAppend.TryWriteCoordinatesAscii(line, start.Length, cursor.Position!.Value, UrScriptText.Mm, 6, ","u8);
         if (at < 0)
         {
             return false;
@@ -50,22 +48,11 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
         at += orientation.Length;
         parameters.CopyTo(line[at..]);
         at += parameters.Length;
-        if (human)
+        if (human && (at = AsciiNarrow.TryWriteBracketed(line, at, "  # ["u8, _description.AsSpan(0, descriptionLength))) < 0)
         {
-            "  # [".CopyTo(line[at..]);
-            at += 5;
-            if (move is not null)
-            {
-                at += digits.WriteDescription(move, line[at..]);
-            }
-            else
-            {
-                turn[..turnLength].CopyTo(line[at..]);
-                at += turnLength;
-            }
-            line[at++] = ']';
+            return false;
         }
-        sink.Add(line[..at]);
+        sink.EndAscii(at);
         return true;
     }
 }

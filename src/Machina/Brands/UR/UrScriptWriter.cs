@@ -11,7 +11,7 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
     private const string Indent = "  ";
 
     private readonly StringBuilder _sb = new(256);
-    private char[] _warning = new char[320];
+    private readonly char[] _instruction = new char[Math.Max(RobotAction.MaxWrittenInstructionChars, ActionTranslation.MaxInstructionChars)];
     private readonly bool _inline = job.Options.InlineTargets;
     private readonly bool _human = job.Options.HumanComments;
     private readonly LineNotes _notes = new(job, UrScriptText.Notes, Indent, () => sink);
@@ -200,11 +200,11 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
         {
             if (_lastMotion is not null && !_lastRadiusWarned && _lastRadius > length / 2)
             {
-                WarnBlend(_lastMotion, _lastRadius, length, "the next");
+                WarnBlend(_lastMotion, _lastRadius, length, "the next"u8);
             }
             if (cursor.Precision > length / 2)
             {
-                WarnBlend(action, cursor.Precision, length, "this");
+                WarnBlend(action, cursor.Precision, length, "this"u8);
                 _lastRadiusWarned = true;
             }
             else
@@ -222,13 +222,14 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
 
     /// <summary>Records the warning and writes it into the script too, as a comment just before the motion that reveals it.</summary>
     /// <remarks>
-    /// A long program of short moves warns on every motion, so the comment line is written once into a reused character buffer
-    /// and from there to the file: numbers formatted in place (G15, as <see cref="Num.G"/>, through <see cref="NumShortest"/>; the radius and the
-    /// length kept from the last warning, <see cref="KeptNumber"/>), a move's instruction too (its digits shared with the line's
-    /// description, <see cref="TranslationDigits"/>); only the text of other actions is made comment-safe, since the rest is fixed text and numbers.
-    /// The warning's own string is made only while the job keeps warnings.
+    /// A long program of short moves warns on every motion, so the comment line is written as ASCII bytes straight into the
+    /// file's buffer (<see cref="WarningRuns.BeginWarnAscii"/>): numbers formatted in place (G15, as <see cref="Num.G"/>, through
+    /// <see cref="NumShortest"/>; the radius and the length kept from the last warning, <see cref="KeptNumber"/>), a move's
+    /// instruction through its digits shared with the line's description (<see cref="TranslationDigits"/>); only the text of other
+    /// actions is made comment-safe, since the rest is fixed text and numbers. The warning's own string is made only while the
+    /// job keeps warnings.
     /// </remarks>
-    private void WarnBlend(RobotAction action, double radius, double length, string which)
+    private void WarnBlend(RobotAction action, double radius, double length, ReadOnlySpan<byte> which)
     {
         if (!job.KeepsMoreWarnings && sink.Continues("blend"))
         {
@@ -237,53 +238,45 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
             sink.Warn("blend", []);
             return;
         }
-        var translation = action as ActionTranslation;
-        Span<char> own = stackalloc char[RobotAction.MaxWrittenInstructionChars];
-        int ownLength = translation is null ? action.TryWriteInstruction(own) : 0;
+        // A move's instruction is digits and fixed words, safe in a comment as it is: no string.
+        int ownLength = action is ActionTranslation translation ? _digits.WriteInstruction(translation, _instruction) : action.TryWriteInstruction(_instruction);
         string? instruction = ownLength < 0 ? UrScriptText.CommentText(action.ToInstruction()) : null;
-        int most = BlendWarningChars + Math.Max(instruction?.Length ?? 0, Math.Max(ownLength, ActionTranslation.MaxInstructionChars));
-        if (_warning.Length < most)
+        ReadOnlySpan<char> quoted = instruction is null ? _instruction.AsSpan(0, ownLength) : instruction;
+        Span<byte> line = sink.BeginWarnAscii(BlendWarningChars + quoted.Length);
+        int at = Put(line, 0, "  # WARNING: "u8);
+        at += Narrow(quoted, line[at..]);
+        line[at++] = (byte)' ';
+        int start = at;
+        at = Put(line, at, "the blend radius of "u8);
+        at = _radiusText.WriteAscii(line, at, radius);
+        at = Put(line, at, " mm is more than half of "u8);
+        at = Put(line, at, which);
+        at = Put(line, at, " motion ("u8);
+        at = _lengthText.WriteAscii(line, at, Math.Round(length, 3));
+        at = Put(line, at, " mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo("u8);
+        at = _halfText.WriteAscii(line, at, Math.Floor(length / 2 * 1000) / 1000);
+        at = Put(line, at, ") or less around short motions."u8);
+        if (job.KeepsMoreWarnings)
         {
-            _warning = new char[most];
-        }
-        Span<char> line = _warning;
-        int at = Put(line, 0, WarningStart);
-        // A move's instruction is digits and fixed words, safe in a comment as it is: written in place, no string.
-        if (translation is not null)
-        {
-            at += _digits.WriteInstruction(translation, line[at..]);
+            job.Warn(action, Encoding.ASCII.GetString(line[start..at]));
         }
         else
         {
-            ReadOnlySpan<char> text = instruction is null ? own[..ownLength] : instruction;
-            text.CopyTo(line[at..]);
-            at += text.Length;
+            job.Warn(action, "");
         }
-        line[at++] = ' ';
-        int start = at;
-        at = Put(line, at, "the blend radius of ");
-        at = _radiusText.Write(line, at, radius);
-        at = Put(line, at, " mm is more than half of ");
-        at = Put(line, at, which);
-        at = Put(line, at, " motion (");
-        at = _lengthText.Write(line, at, Math.Round(length, 3));
-        at = Put(line, at, " mm long); blends cannot overlap: a UR controller logs a warning and runs on (the twin blends with half of the motion). Use PrecisionTo(");
-        at = _halfText.Write(line, at, Math.Floor(length / 2 * 1000) / 1000);
-        at = Put(line, at, ") or less around short motions.");
-        ReadOnlySpan<char> message = line[start..at];
-        job.Warn(action, $"{message}");
         // Consecutive motions with this warning get one comment after them (WarningRuns), not one each.
-        sink.Warn("blend", line[..at]);
+        sink.EndWarnAscii("blend", at);
     }
-
-    /// <summary>How a warning's comment line begins.</summary>
-    private const string WarningStart = "  # WARNING: ";
 
     /// <summary>Characters enough for a blend warning's line besides the instruction it quotes: fixed text and three numbers.</summary>
     private const int BlendWarningChars = 288 + 3 * NumAppend.MaxChars;
 
+    /// <summary>The ASCII bytes of <paramref name="text"/> (a character outside ASCII as <c>?</c>, as the file would hold it); returns their count.</summary>
+    private static int Narrow(ReadOnlySpan<char> text, Span<byte> destination) =>
+        AsciiNarrow.TryWrite(text, destination) is int written and >= 0 ? written : Encoding.ASCII.GetBytes(text, destination);
+
     /// <summary>Copies <paramref name="text"/> into <paramref name="line"/> at <paramref name="at"/>; returns the position after it.</summary>
-    private static int Put(Span<char> line, int at, string text)
+    private static int Put(Span<byte> line, int at, ReadOnlySpan<byte> text)
     {
         text.CopyTo(line[at..]);
         return at + text.Length;

@@ -102,4 +102,63 @@ public class UrWarningRunTests
             file.Lines.ToList());
         Assert.Equal(10, runs.LinesWritten);
     }
+
+    /// <summary>The sequence of <see cref="WarningRuns_OtherKindBreaksTheRun_LinesCountedInTheFile"/> with more runs, each warning given by <paramref name="warn"/>.</summary>
+    private static (List<string> Lines, int Written) Replay(Action<WarningRuns, string, string> warn)
+    {
+        var file = new ListLineSink();
+        var runs = new WarningRuns(file, "# ");
+        runs.Add("header");
+        (string Kind, string Line)[][] motions =
+        [
+            [("a", "# A1"), ("a", "# A1 again")], [("a", "# A2")], [], [("a", "# A3")], [("a", "# A4"), ("b", "# B4")],
+            [("b", "# B5")], [("c", "# C6"), ("b", "# B6")], [], [("a", "# A8")],
+        ];
+        int n = 0;
+        foreach ((string Kind, string Line)[] warnings in motions)
+        {
+            foreach ((string kind, string line) in warnings)
+            {
+                warn(runs, kind, line);
+            }
+            runs.Motion();
+            runs.Add("move " + ++n);
+        }
+        runs.EndRun();
+        return (file.Lines.ToList(), runs.LinesWritten);
+    }
+
+    [Fact]
+    public void EndWarnAscii_RunsOfEveryKind_TheLinesOfWarn()
+    {
+        (List<string> expected, int expectedWritten) = Replay((runs, kind, line) => runs.Warn(kind, line));
+        (List<string> lines, int written) = Replay((runs, kind, line) =>
+        {
+            Span<byte> room = runs.BeginWarnAscii(line.Length);
+            System.Text.Encoding.ASCII.GetBytes(line, room);
+            runs.EndWarnAscii(kind, line.Length);
+        });
+
+        Assert.Equal(expected, lines);
+        Assert.Equal(expectedWritten, written);
+        Assert.Equal(lines.Count, written);
+        Assert.Contains("# WARNING: the same warning for 2 motions in a row, lines 4 to 5 (written once, above the first)", lines);
+        Assert.Contains("# WARNING: the same warning for 2 motions in a row, lines 9 to 12 (written once, above the first)", lines);
+    }
+
+    [Fact]
+    public void Warn_NoRunUnderWay_TheLineReachesTheFileAtOnce()
+    {
+        var file = new ListLineSink();
+        var runs = new WarningRuns(file, "# ");
+        runs.Warn("a", "# A1");                   // no run under way: nothing can come before it
+
+        Assert.Equal(["# A1"], file.Lines);
+        runs.Motion();
+        runs.Add("move 1");
+        runs.Warn("b", "# B2");                   // a run of one under way: it may go on, so the line waits for the motion
+        Assert.Equal(2, file.Lines.Count);
+        runs.Motion();
+        Assert.Equal(["# A1", "move 1", "# B2"], file.Lines);
+    }
 }
