@@ -327,6 +327,11 @@ internal static class NumAppend
     }
 
     /// <summary>Fills <paramref name="digits"/> with <paramref name="rest"/> (which fits), leading zeros first, two digits at a time from the last.</summary>
+    /// <remarks>
+    /// Optimised from its first call: unoptimised (tier-0) code calls out for every <c>T.CreateTruncating</c>, and a cold compile
+    /// (the 400k job, the JIT tool) ran it so for most of its numbers.
+    /// </remarks>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static void WriteDigitsOf<T>(Span<T> digits, ulong rest)
         where T : unmanaged, IBinaryInteger<T>
     {
