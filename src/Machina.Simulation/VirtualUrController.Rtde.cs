@@ -199,6 +199,10 @@ public sealed partial class VirtualUrController
         {
             while (!token.IsCancellationRequested)
             {
+                // A wake before this look (a client started before the sender's first round) is served by it, to every client as
+                // any wake is; one after it ends the wait below. Without this, a client started before the sender's first round
+                // got a second package of the same tick (UrSimWatchdogTests counted 5 packages for 4 once in CI).
+                woken |= _rtdeWait.TakeWake();
                 RtdeSubscriber[] subscribers = Volatile.Read(ref _subscribers);
                 long now = Clock.GetTimestamp();
                 long next = now + Clock.TimestampFrequency; // a second when no client is started

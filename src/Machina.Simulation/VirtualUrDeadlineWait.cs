@@ -57,6 +57,12 @@ internal sealed class VirtualUrDeadlineWait(TimeProvider clock)
     }
 
     /// <summary>
+    /// Takes a wake that came before the waiting thread looks at what it serves (true when there was one): that look serves it,
+    /// and a later <see cref="WaitUntil"/> must not end at once for it (the RTDE sender would send a second package of the tick).
+    /// </summary>
+    public bool TakeWake() => Interlocked.Exchange(ref _woken, 0) == 1;
+
+    /// <summary>
     /// Waits until <see cref="Early"/> before <paramref name="deadline"/> (a timestamp of the clock) or a <see cref="Wake"/>;
     /// true when woken. Throws <see cref="OperationCanceledException"/> when <paramref name="token"/> is cancelled.
     /// </summary>
