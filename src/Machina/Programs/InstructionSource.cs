@@ -111,10 +111,10 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     private const string ToolpathLetters = "MoveToRtaAxsTrnfm";
 
     /// <summary>
-    /// Where <paramref name="word"/> is looked for by <see cref="MayContain"/>: its first character that is not a letter of
-    /// the motion instructions' names (<c>Tool</c> by its <c>l</c>, <c>Read</c> by its <c>d</c>), else its first.
+    /// Where <paramref name="word"/> is looked for by <see cref="MayContain"/> (and RAPID's speed scan): its first character that
+    /// is not a letter of the motion instructions' names (<c>Tool</c> by its <c>l</c>, <c>Read</c> by its <c>d</c>), else its first.
     /// </summary>
-    private static int Anchor(string word)
+    internal static int Anchor(string word)
     {
         int at = word.AsSpan().IndexOfAnyExcept(ToolpathLetters);
         return at < 0 ? 0 : at;

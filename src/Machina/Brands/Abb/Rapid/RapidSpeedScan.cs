@@ -17,7 +17,7 @@ internal sealed class RapidSpeedScan
     /// <summary>Characters kept from one block to the next, so that a statement cut between two blocks is read whole.</summary>
     private const int Overlap = 64;
 
-    private static readonly SearchValues<char> Anchors = SearchValues.Create([.. RapidPlan.WordsThatDeclare.Select(w => w[Anchor(w)]).Distinct()]);
+    private static readonly SearchValues<char> Anchors = SearchValues.Create([.. RapidPlan.WordsThatDeclare.Select(w => w[InstructionSource.Anchor(w)]).Distinct()]);
 
     /// <summary>The numbers of the <c>SpeedTo</c> statements, in the order of the text.</summary>
     internal List<double> Speeds { get; } = [];
@@ -68,7 +68,7 @@ internal sealed class RapidSpeedScan
     {
         foreach (string word in RapidPlan.WordsThatDeclare)
         {
-            int begin = at - Anchor(word);
+            int begin = at - InstructionSource.Anchor(word);
             if (begin >= 0 && begin < limit && text[begin..].StartsWith(word, StringComparison.Ordinal))
             {
                 if (begin != at || !text[at..].StartsWith(SpeedTo, StringComparison.Ordinal))
@@ -90,12 +90,5 @@ internal sealed class RapidSpeedScan
             }
         }
         return 1;
-    }
-
-    /// <summary>Where a word is looked for: its first character that is not a letter of the motion instructions' names.</summary>
-    private static int Anchor(string word)
-    {
-        int at = word.AsSpan().IndexOfAnyExcept("MoveToRtaAxsTrnfm");
-        return at < 0 ? 0 : at;
     }
 }
