@@ -135,9 +135,10 @@ public class HeldScheduleTests
     /// that the seventh is held whole. A UR driver program that has read an instruction's header waits 5 s for the rest
     /// (<c>read_ints</c>) and then halts; held from byte 200 (the seventh's header passed), that halt came 5 s after the hold
     /// and, when it fell within the host's 2 s wait for RTDE to say why its cut link closed (a cut more than 3 s after the
-    /// hold, under load), the host read the halt as a failure of the seventh move (CI, one run in about 20). The host cannot
-    /// tell a program that halted on a broken stream from one that halted on a failed instruction: both stop without a
-    /// runtime error, the seventh received and not executed.
+    /// hold, under load), the host read the halt as a failure of the seventh move (CI, one run in about 20): both stop without
+    /// a runtime error, the seventh received and not executed. The driver now says so before such a halt (its instance number
+    /// negated on RTDE) and the host reports a lost link (<see cref="UrStalledStreamTests"/>); the hold stays at an instruction
+    /// boundary, so that these schedules test what they name.
     /// </summary>
     private static int HoldAfter(string brand) => brand switch
     {

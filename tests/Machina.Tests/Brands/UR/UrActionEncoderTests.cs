@@ -76,9 +76,22 @@ public class UrActionEncoderTests
         Assert.Equal("machina_ur_driver.script", files.Keys.Single());
         Assert.Contains("  HOSTNAME = \"192.168.0.5\"\n  PORT = 50123\n", script, StringComparison.Ordinal);
         Assert.Contains("  INSTANCE = 1\n", script, StringComparison.Ordinal);
+        Assert.Contains("  VALUES_TIMEOUT = 5.0\n", script, StringComparison.Ordinal);
+        Assert.DoesNotContain("{{", script, StringComparison.Ordinal);
         // The script manual's shape: def in column 1 first, every other line indented, end in column 1 last, no call line.
         Assert.StartsWith("def machina_ur_driver():\n", script, StringComparison.Ordinal);
         Assert.EndsWith("\nend\n", script, StringComparison.Ordinal);
         Assert.Equal(["def machina_ur_driver():", "end"], script.Split('\n').Where(l => l.Length > 0 && !char.IsWhiteSpace(l[0])).ToArray());
+    }
+
+    [Fact]
+    public void DriverScript_ValuesTimeout_FilledInSecondsAndNeverZero()
+    {
+        string script = UrDriverScript.For("127.0.0.1", 7000, 3, TimeSpan.FromMilliseconds(250));
+        Assert.Contains("  VALUES_TIMEOUT = 0.25\n", script, StringComparison.Ordinal);
+        Assert.Contains("socket_read_binary_integer(n, SOCKET, VALUES_TIMEOUT)", script, StringComparison.Ordinal);
+        // 0 would never time out on a UR (script manual): a stalled stream would hold the program for ever.
+        Assert.Throws<ArgumentOutOfRangeException>(() => UrDriverScript.For("127.0.0.1", 7000, 3, TimeSpan.Zero));
+        Assert.Throws<ArgumentOutOfRangeException>(() => UrDriverScript.For("127.0.0.1", 7000, 0));
     }
 }

@@ -87,6 +87,48 @@ public class UrDriverOnTwinTests
             Assert.Equal("Machina: unknown instruction code, stopping: 99", twin.Pendant.Lines[^1]);
             Assert.Equal(7.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 25));
             Assert.Equal(0.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 24));
+            // Out of step is the stream's fault, not an instruction's: the instance number (1) negated tells the host so.
+            Assert.Equal(-1.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 26));
+        }
+        finally
+        {
+            twin.StopProgram();
+            listener.Stop();
+        }
+    }
+
+    /// <summary>
+    /// An instruction whose values stop coming after its header (a stalled link): the driver waits its values timeout (filled
+    /// in as 0.2 s here), then publishes its instance number negated and halts; nothing of the instruction runs.
+    /// </summary>
+    [Fact]
+    public async Task Driver_ValuesStallAfterTheHeader_HaltsAfterItsTimeout_InstanceNegated_NothingRuns()
+    {
+        using var listener = new TcpListener(IPAddress.Loopback, 0);
+        listener.Start();
+        int port = ((IPEndPoint)listener.LocalEndpoint).Port;
+        using var twin = new UrTwinController();
+        using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(30));
+        try
+        {
+            twin.Receive(UrDriverScript.For("127.0.0.1", port, 9, TimeSpan.FromMilliseconds(200)));
+            using TcpClient client = await listener.AcceptTcpClientAsync(timeout.Token);
+            NetworkStream stream = client.GetStream();
+            await ReadInts(stream, 19, timeout.Token);
+            Assert.Equal(9.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 26));
+            Pose before = twin.Arm.Tcp;
+
+            // A move's id, code and two of its six values; the rest never comes (the connection stays open).
+            await Send(stream, [5, 1, 400_000, -100_000], timeout.Token);
+
+            Assert.True(twin.WaitForEnd(TimeSpan.FromSeconds(20)));
+            Assert.Equal(UrProgramState.Finished, twin.State);
+            Assert.Equal("Machina: incomplete instruction, stopping. Expected values: 6", twin.Pendant.Lines[^1]);
+            Assert.Equal(-9.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 26));
+            Assert.Equal(5.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 25));
+            Assert.Equal(0.0, twin.Io.GetNumber(UrIoBanks.OutputIntRegisters, 24));
+            Assert.True(twin.Arm.Tcp.Position.IsSimilar(before.Position, 1e-9), twin.Arm.Tcp.Position.ToString());
+            Assert.Equal(0, await stream.ReadAsync(new byte[4], timeout.Token)); // closed with the program, never acknowledged
         }
         finally
         {

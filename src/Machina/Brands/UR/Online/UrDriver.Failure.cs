@@ -64,7 +64,7 @@ internal sealed partial class UrDriver : ILinkReceiver
                 Task<RtdeSample> next;
                 lock (_rtdeGate)
                 {
-                    if (_latest is RtdeSample s && s.RuntimeState != RtdeSample.Playing)
+                    if (_latest is RtdeSample s && (s.RuntimeState != RtdeSample.Playing || IsStreamBroken(s)))
                     {
                         break;
                     }
@@ -84,6 +84,12 @@ internal sealed partial class UrDriver : ILinkReceiver
         }
         if (IsProgramFailed)
         {
+            return;
+        }
+        if (LatestSample is RtdeSample broken && IsStreamBroken(broken))
+        {
+            // The program halted on its stream, not on an instruction: the link is lost.
+            OnStreamBroken();
             return;
         }
         if (text.IsCompleted && LatestSample is RtdeSample last)
@@ -114,9 +120,9 @@ internal sealed partial class UrDriver : ILinkReceiver
     }
 
     /// <summary>
-    /// Reports the action in flight failed with the controller's words, unless another program took the controller: then the
-    /// driver program did not fail, it was replaced (a script delivered late, a program started at the pendant), and the
-    /// link is lost instead, so that connecting again resumes from the registers.
+    /// Reports the action in flight failed with the controller's words, unless another program took the controller (the driver
+    /// program did not fail, it was replaced: a script delivered late, a program started at the pendant) or RTDE shows the
+    /// program halted on a broken stream: then the link is lost instead, so that connecting again resumes from the registers.
     /// </summary>
     private async Task ReportFailureAsync(RtdeSample sample)
     {
@@ -134,6 +140,11 @@ internal sealed partial class UrDriver : ILinkReceiver
             else
             {
                 int other = await replaced.ConfigureAwait(false);
+                if (other == -_instance)
+                {
+                    OnStreamBroken();
+                    return;
+                }
                 Log.Warning($"The UR driver program (instance {_instance.ToString(Num.Inv)}) was replaced by another program (instance {other.ToString(Num.Inv)}).");
                 OnClosed(new RobotConnectionException($"another program (instance {other.ToString(Num.Inv)}) replaced the driver program on the controller"));
                 return;
@@ -147,13 +158,18 @@ internal sealed partial class UrDriver : ILinkReceiver
         {
             await done.CancelAsync().ConfigureAwait(false);
         }
+        if (Volatile.Read(ref _streamBroken) != 0)
+        {
+            return;
+        }
         string because = text ?? $"the program stopped (RTDE runtime_state {sample.RuntimeState.ToString(Num.Inv)}, safety status {sample.SafetyName}) without running it";
         Listener?.OnFailedAfter(sample.Executed, because, null);
     }
 
     /// <summary>
-    /// Completes with the instance number of another program once RTDE shows it playing, or with 0 when
-    /// <paramref name="cancellationToken"/> is cancelled (a broken RTDE link shows nothing more). Never throws.
+    /// Completes with the instance number of another program once RTDE shows it playing, with this program's negated when RTDE
+    /// shows it halted on a broken stream, or with 0 when <paramref name="cancellationToken"/> is cancelled (a broken RTDE link
+    /// shows nothing more). Never throws.
     /// </summary>
     private async Task<int> OtherProgramAsync(CancellationToken cancellationToken)
     {
@@ -162,7 +178,7 @@ internal sealed partial class UrDriver : ILinkReceiver
             Task<RtdeSample> next;
             lock (_rtdeGate)
             {
-                if (_latest is RtdeSample s && s.RuntimeState == RtdeSample.Playing && s.Instance != _instance)
+                if (_latest is RtdeSample s && ((s.RuntimeState == RtdeSample.Playing && s.Instance != _instance) || IsStreamBroken(s)))
                 {
                     return s.Instance;
                 }

@@ -298,6 +298,11 @@ internal sealed partial class UrDriver
             return;
         }
         Listener?.OnMotion(new MotionSample(sample.Position, sample.Rotation, sample.Joints, null));
+        if (IsStreamBroken(sample))
+        {
+            OnStreamBroken();
+            return;
+        }
         if (sample.RuntimeState == RtdeSample.Stopped && !sample.IsSafetyStop && sample.Instance == _instance)
         {
             OnProgramStopped(sample);

@@ -26,6 +26,12 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         _context = context;
     }
 
+    /// <summary>
+    /// How long the driver program waits for an instruction's values after its header before it takes its stream as broken
+    /// (<see cref="UrDriverScript.DefaultValuesTimeout"/>; tests shorten it).
+    /// </summary>
+    internal TimeSpan ValuesTimeout { get; init; } = UrDriverScript.DefaultValuesTimeout;
+
     /// <inheritdoc/>
     public override string RemoteAddress => Link is null ? "" : $"{_host}:{_ports.Script}";
 
@@ -52,7 +58,7 @@ internal sealed partial class UrDriver : DeviceDriver<UrReply>, IDeviceDriver
         int callbackPort = ((IPEndPoint)server.LocalEndpoint).Port;
         // What the script port sends is read (its buffers never fill, fix of U1) for the runtime errors that stop a program.
         TcpLink script = await OpenSideLinkAsync(host, _ports.Script, Left(start, timeout), new UrRobotMessage.Reader(OnRuntimeException), cancellationToken).ConfigureAwait(false);
-        script.Post(Encoding.ASCII.GetBytes(UrDriverScript.For(local.ToString(), callbackPort, _instance)));
+        script.Post(Encoding.ASCII.GetBytes(UrDriverScript.For(local.ToString(), callbackPort, _instance, ValuesTimeout)));
         Log.Debug($"Sent the UR driver script (instance {_instance}); it connects back to {local}:{callbackPort}.");
 
         Socket socket;
