@@ -10,11 +10,17 @@ namespace Machina;
 /// </summary>
 internal sealed class PackedLinePart
 {
-    /// <summary>Elements in the first block of each kind; each new block doubles, up to <see cref="MaxBlockSize"/>, so short programs stay small.</summary>
+    /// <summary>Elements in the first block of each kind; each new block doubles, up to <see cref="MaxBlockBytes"/>, so short programs stay small.</summary>
     private const int FirstBlockSize = 1 << 10;
 
-    /// <summary>Elements in the largest blocks: 1 Mi (1 MB of ASCII, 2 MB of characters), large enough to live in the large object heap.</summary>
-    internal const int MaxBlockSize = 1 << 20;
+    /// <summary>
+    /// Bytes in the largest blocks: 64 KiB (64 Ki ASCII characters, 32 Ki others), under the large object heap's threshold (85,000
+    /// bytes). Blocks of 1 MB lived in the large object heap, and its small budget (about 3 MB before the first collection) made
+    /// the blocks of one large compile trigger collections of every generation: two full, blocking or background, collections in
+    /// the 400k-move job's <c>Compile()</c>, each marking every issued action (docs/performance.md, session 29). In the first
+    /// generation they are allocated against its budget like any other object and are collected with it.
+    /// </summary>
+    internal const int MaxBlockBytes = 1 << 16;
 
     /// <summary>Entries in each chunk of the table of lines: 4,096 entries of 12 bytes, under the large object heap's threshold.</summary>
     private const int ChunkShift = 12;
@@ -46,7 +52,7 @@ internal sealed class PackedLinePart
         {
             if (List.Count == 0 || length > List[^1].Length - _used)
             {
-                int size = List.Count == 0 ? FirstBlockSize : Math.Min(MaxBlockSize, List[^1].Length * 2);
+                int size = List.Count == 0 ? FirstBlockSize : Math.Min(MaxBlockBytes / Unsafe.SizeOf<T>(), List[^1].Length * 2);
                 // Every element is written before it is read (a line's text, as it is added): no need to clear the block first.
                 List.Add(GC.AllocateUninitializedArray<T>(Math.Max(size, length)));
                 _used = 0;

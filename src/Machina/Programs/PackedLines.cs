@@ -5,9 +5,9 @@ using System.Text;
 namespace Machina;
 
 /// <summary>
-/// The lines of an in-memory program file, packed one after the other into large blocks instead of one string object per
-/// line. A program of a million lines then holds a few dozen large arrays that the garbage collector never has to copy,
-/// instead of a million small strings it copies from generation to generation while compiling. Lines of plain ASCII (all
+/// The lines of an in-memory program file, packed one after the other into blocks of up to 64 KB instead of one string object
+/// per line. A program of a million lines then holds a few thousand arrays of bytes, which hold no references for the garbage
+/// collector to follow, instead of a million small strings. Lines of plain ASCII (all
 /// robot code, most listings) are kept as one byte per character, half the memory of .NET strings; other lines as
 /// characters. Reading a line creates its string.
 /// </summary>
@@ -125,7 +125,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
     /// <summary>Writes every line followed by <paramref name="newLine"/>, without creating strings.</summary>
     internal void WriteTo(TextWriter writer, string newLine)
     {
-        char[] buffer = new char[Math.Min(_longest, PackedLinePart.MaxBlockSize)];
+        char[] buffer = new char[Math.Min(_longest, PackedLinePart.MaxBlockBytes)];
         foreach (PackedLinePart part in _parts)
         {
             part.WriteTo(writer, newLine, buffer);

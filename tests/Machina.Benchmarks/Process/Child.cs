@@ -20,6 +20,7 @@ internal static class Child
         var iterationCpu = new List<double>();
         var extra = new Dictionary<string, object?>();
         using JitSampler? jit = a.ContainsKey("jitlog") ? new JitSampler() : null;
+        using GcEventLog? gcLog = a.ContainsKey("gclog") ? new GcEventLog() : null;
         long workStart = Stopwatch.GetTimestamp();
         for (int i = 0; i < repeat; i++)
         {
@@ -53,6 +54,14 @@ internal static class Child
         if (jit is not null)
         {
             extra["jit"] = jit.Samples();
+        }
+        if (gcLog is not null)
+        {
+            extra["gc"] = gcLog.Events();
+        }
+        if (a.ContainsKey("threads"))
+        {
+            extra["threads"] = ThreadCpu.Read().Values.Select(t => $"{t.Name}:{t.Seconds:0.0000}").ToList();
         }
         extra["gcCollections"] = new[] { GC.CollectionCount(0), GC.CollectionCount(1), GC.CollectionCount(2) };
         extra["allocatedBytes"] = GC.GetTotalAllocatedBytes();
@@ -121,8 +130,9 @@ internal static class Child
 
     /// <summary>
     /// Issues <paramref name="moves"/> relative moves on an ABB robot, compiles them in memory and takes every file's text. Each
-    /// phase's wall time, processor time, minor page faults and bytes allocated go into <c>phases</c> (issue, compile, text:
-    /// seconds, seconds, faults, bytes). With <paramref name="sha256"/> (key <c>sha256</c>, not timed by the scenario) also the SHA-256 of the texts
+    /// phase's wall time, processor time, minor page faults, bytes allocated, collections of each generation, the garbage
+    /// collector's pause and the methods the JIT compiled on this thread and its time go into <c>phases</c> (issue, compile, text:
+    /// seconds, seconds, faults, bytes, gen 0, gen 1, gen 2, seconds, methods, seconds). With <paramref name="sha256"/> (key <c>sha256</c>, not timed by the scenario) also the SHA-256 of the texts
     /// (UTF-16, the files one after the other), so that a change can show it wrote the same text.
     /// </summary>
     private static void IssueText(int moves, bool sha256, Dictionary<string, object?> extra)
@@ -132,14 +142,24 @@ internal static class Child
         double cpu = Environment.CpuUsage.TotalTime.TotalSeconds;
         long faults = Machine.MinorPageFaults();
         long allocated = GC.GetAllocatedBytesForCurrentThread();
+        int[] collections = [GC.CollectionCount(0), GC.CollectionCount(1), GC.CollectionCount(2)];
+        double pause = GC.GetTotalPauseDuration().TotalSeconds;
+        static (long, double) MainThreadJit() =>
+            (System.Runtime.JitInfo.GetCompiledMethodCount(currentThread: true), System.Runtime.JitInfo.GetCompilationTime(currentThread: true).TotalSeconds);
+        (long, double) jit = MainThreadJit();
         void Phase(string name)
         {
             long now = Stopwatch.GetTimestamp();
             double cpuNow = Environment.CpuUsage.TotalTime.TotalSeconds;
             long faultsNow = Machine.MinorPageFaults();
             long allocatedNow = GC.GetAllocatedBytesForCurrentThread();
-            phases[name] = [Stopwatch.GetElapsedTime(at, now).TotalSeconds, cpuNow - cpu, faultsNow - faults, allocatedNow - allocated];
-            (at, cpu, faults, allocated) = (now, cpuNow, faultsNow, allocatedNow);
+            int[] collectionsNow = [GC.CollectionCount(0), GC.CollectionCount(1), GC.CollectionCount(2)];
+            double pauseNow = GC.GetTotalPauseDuration().TotalSeconds;
+            (long, double) jitNow = MainThreadJit();
+            phases[name] = [Stopwatch.GetElapsedTime(at, now).TotalSeconds, cpuNow - cpu, faultsNow - faults, allocatedNow - allocated,
+                collectionsNow[0] - collections[0], collectionsNow[1] - collections[1], collectionsNow[2] - collections[2], pauseNow - pause,
+                jitNow.Item1 - jit.Item1, jitNow.Item2 - jit.Item2];
+            (at, cpu, faults, allocated, collections, pause, jit) = (now, cpuNow, faultsNow, allocatedNow, collectionsNow, pauseNow, jitNow);
         }
         Robot? bot = Workloads.IssueToolpath("ABB", moves);
         Phase("issue");

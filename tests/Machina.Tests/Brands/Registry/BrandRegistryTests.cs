@@ -18,6 +18,25 @@ public sealed class BrandRegistryTests
     }
 
     [Fact]
+    public void For_GivesEachTypesOwnDefinition_TheSameObjectAsTheList()
+    {
+        foreach (RobotType type in Enum.GetValues<RobotType>())
+        {
+            BrandDefinition definition = BrandRegistry.For(type);
+            Assert.Equal(type, definition.Type);
+            Assert.Same(definition, BrandRegistry.TryFor(type));
+            Assert.Same(definition, Assert.Single(BrandRegistry.All, b => b.Type == type));
+        }
+        Assert.Same(AbbBrand.Definition, BrandRegistry.For(RobotType.ABB));
+        Assert.Same(MachinaTextBrand.Definition, BrandRegistry.For(RobotType.MACHINA));
+        Assert.Null(BrandRegistry.TryFor((RobotType)99));
+        ArgumentOutOfRangeException ex = Assert.Throws<ArgumentOutOfRangeException>(() => BrandRegistry.For((RobotType)99));
+        Assert.StartsWith("Unknown robot brand.", ex.Message, StringComparison.Ordinal);
+        Assert.Equal([RobotType.UR, RobotType.ABB, RobotType.KUKA], BrandRegistry.Catalogue.Select(b => b.Type));
+        Assert.Same(UrBrand.Definition, BrandRegistry.Catalogue[0]);
+    }
+
+    [Fact]
     public void NamesAndAliases_AreUnique_AndFoundInAnyLetterCase()
     {
         string[] all = [.. BrandRegistry.All.SelectMany(b => b.Aliases.Append(b.Name)).Select(n => n.ToLowerInvariant())];
