@@ -51,22 +51,34 @@ public static class KinematicChecks
         var issues = new List<KinematicIssue>();
         IKinematics kin = model.Kinematics;
         var solver = (ISolver)kin;
-        Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
-        Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(target), previous ?? default, raw, configs);
-        if (n == 0)
+        Affine flange = Affine.FromPose(target);
+        Joints? chosen;
+        if (previous is Joints p && p.IsFinite && ReferenceEquals(kin.Model, model))
         {
-            issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {Shown(target, tool)} is out of reach of the {model}."));
-            return issues;
+            // The solution closest to the known joints, solved once (every ISolver's Closest is KinematicsCore.ClosestOf of its raw
+            // solutions on its own model); the raw solutions are solved again only for a refusal's sentence.
+            chosen = solver.Closest(flange, p, out bool reachable);
+            if (!reachable)
+            {
+                return Unreachable(model, target, tool, issues);
+            }
         }
-        // The raw solutions above are those Closest would solve again (same flange, same reference; every ISolver's Closest is
-        // KinematicsCore.Closest on its own model): the closest is picked from them; every check from known joints solved the target twice before.
-        Joints? chosen = previous is Joints p
-            ? p.IsFinite && ReferenceEquals(kin.Model, model) ? KinematicsCore.ClosestOf(model, raw[..n], p) : kin.Closest(target, p)
-            : FirstWithinLimits(kin, target);
+        else
+        {
+            Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
+            Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
+            if (solver.SolveRaw(flange, previous ?? default, raw, configs) == 0)
+            {
+                return Unreachable(model, target, tool, issues);
+            }
+            chosen = previous is Joints q ? kin.Closest(target, q) : FirstWithinLimits(kin, target);
+        }
         solution = chosen;
         if (chosen is null)
         {
+            Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
+            Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
+            int n = solver.SolveRaw(flange, previous ?? default, raw, configs);
             issues.Add(KinematicsCore.LimitIssue(model, KinematicsCore.NearestToLimits(model, raw[..n]), $"every way to reach {Shown(target, tool)} needs a joint beyond its limits"));
             return issues;
         }
@@ -117,6 +129,12 @@ public static class KinematicChecks
             }
         }
         CheckSingularities(((ISolver)model.Kinematics).Measure(target), "at the target", issues);
+        return issues;
+    }
+
+    private static List<KinematicIssue> Unreachable(RobotModel model, Pose target, Pose tool, List<KinematicIssue> issues)
+    {
+        issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {Shown(target, tool)} is out of reach of the {model}."));
         return issues;
     }
 
