@@ -15,6 +15,15 @@ internal interface ISolver
     /// </summary>
     int SolveRaw(in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations);
 
+    /// <summary>
+    /// The solution <see cref="KinematicsCore.ClosestOf"/> picks from <see cref="SolveRaw"/>'s solutions for <paramref name="flange"/>
+    /// with <paramref name="reference"/> (finite) as the reference and the solver's own model, to the bit; null when none is within
+    /// the limits. <paramref name="reachable"/> is false when there is no raw solution at all. A solver may skip branches it can show
+    /// are farther from the reference than one it solved.
+    /// </summary>
+    Joints? Closest(in Affine flange, in Joints reference, out bool reachable) =>
+        KinematicsCore.ClosestOfAll(this, ((IKinematics)this).Model, flange, reference, out reachable);
+
     /// <summary>Closeness to singularities of a joint set.</summary>
     SingularityMeasure Measure(Joints joints);
 

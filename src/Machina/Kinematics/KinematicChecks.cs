@@ -33,8 +33,11 @@ public static class KinematicChecks
     private const int MaxSamples = 2000;
 
     /// <summary>Checks a motion to a flange pose. <paramref name="previous"/> is the joint state before the motion (null when unknown).</summary>
-    public static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond) =>
-        Check(model, previous, target, motion, speedMmPerSecond, Pose.Identity, out _);
+    public static IReadOnlyList<KinematicIssue> Check(RobotModel model, Joints? previous, Pose target, KinematicMotion motion, double speedMmPerSecond)
+    {
+        IReadOnlyList<KinematicIssue> issues = Check(model, previous, target, motion, speedMmPerSecond, Pose.Identity, out _);
+        return issues.Count > 0 ? issues : new List<KinematicIssue>();
+    }
 
     /// <summary>
     /// As the public overload, and also gives the joint solution it checked (null when the target cannot be reached within the limits):
@@ -48,27 +51,39 @@ public static class KinematicChecks
         solution = null;
         ArgumentNullException.ThrowIfNull(model);
         target.Position.RequireFinite(nameof(target));
-        var issues = new List<KinematicIssue>();
+        // Made at the first issue: most motions have none, and the cursor keeps a shared empty list for them.
+        List<KinematicIssue>? issues = null;
         IKinematics kin = model.Kinematics;
         var solver = (ISolver)kin;
-        Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
-        Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(target), previous ?? default, raw, configs);
-        if (n == 0)
+        Affine flange = Affine.FromPose(target);
+        Joints? chosen;
+        if (previous is Joints p && p.IsFinite && ReferenceEquals(kin.Model, model))
         {
-            issues.Add(new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {Shown(target, tool)} is out of reach of the {model}."));
-            return issues;
+            // The solution closest to the known joints, solved once (every ISolver's Closest is KinematicsCore.ClosestOf of its raw
+            // solutions on its own model); the raw solutions are solved again only for a refusal's sentence.
+            chosen = solver.Closest(flange, p, out bool reachable);
+            if (!reachable)
+            {
+                return Unreachable(model, target, tool);
+            }
         }
-        // The raw solutions above are those Closest would solve again (same flange, same reference; every ISolver's Closest is
-        // KinematicsCore.Closest on its own model): the closest is picked from them; every check from known joints solved the target twice before.
-        Joints? chosen = previous is Joints p
-            ? p.IsFinite && ReferenceEquals(kin.Model, model) ? KinematicsCore.ClosestOf(model, raw[..n], p) : kin.Closest(target, p)
-            : FirstWithinLimits(kin, target);
+        else
+        {
+            Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
+            Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
+            if (solver.SolveRaw(flange, previous ?? default, raw, configs) == 0)
+            {
+                return Unreachable(model, target, tool);
+            }
+            chosen = previous is Joints q ? kin.Closest(target, q) : FirstWithinLimits(kin, target);
+        }
         solution = chosen;
         if (chosen is null)
         {
-            issues.Add(KinematicsCore.LimitIssue(model, KinematicsCore.NearestToLimits(model, raw[..n]), $"every way to reach {Shown(target, tool)} needs a joint beyond its limits"));
-            return issues;
+            Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
+            Span<ArmConfiguration> configs = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
+            int n = solver.SolveRaw(flange, previous ?? default, raw, configs);
+            return new List<KinematicIssue> { KinematicsCore.LimitIssue(model, KinematicsCore.NearestToLimits(model, raw[..n]), $"every way to reach {Shown(target, tool)} needs a joint beyond its limits") };
         }
         if (previous is Joints start)
         {
@@ -78,20 +93,20 @@ public static class KinematicChecks
                 // where it started (the two differ when the path passes near a singularity).
                 // The target's solution closest to the start is what the path's first sample solves for when that sample is the target itself.
                 Joints? closestToStart = start.IsFinite && ReferenceEquals(kin.Model, model) ? chosen : null;
-                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, issues, out SingularityMeasure arrival, closestToStart) is Joints followed)
+                if (CheckPath(model, start, target, arcThrough, speedMmPerSecond, tool, ref issues, out SingularityMeasure arrival, closestToStart) is Joints followed)
                 {
                     chosen = solution = followed;
-                    CheckSingularities(arrival, "at the target", issues); // the path's last sample measured these joints already
-                    return issues;
+                    CheckSingularities(arrival, "at the target", ref issues); // the path's last sample measured these joints already
+                    return (IReadOnlyList<KinematicIssue>?)issues ?? NoIssues;
                 }
             }
             else
             {
-                CheckJointMove(start, chosen.Value, issues);
+                CheckJointMove(start, chosen.Value, ref issues);
             }
         }
-        CheckSingularities(solver.Measure(chosen.Value), "at the target", issues);
-        return issues;
+        CheckSingularities(solver.Measure(chosen.Value), "at the target", ref issues);
+        return (IReadOnlyList<KinematicIssue>?)issues ?? NoIssues;
     }
 
     /// <summary>Checks a motion to joint values (degrees). For linear motions the flange follows a straight line to their pose.</summary>
@@ -99,26 +114,30 @@ public static class KinematicChecks
     {
         ArgumentNullException.ThrowIfNull(model);
         target.RequireFinite(nameof(target));
-        var issues = new List<KinematicIssue>();
+        List<KinematicIssue>? issues = null;
         if (!model.IsWithinLimits(target))
         {
             (int joint, double limit, _) = KinematicsCore.WorstLimit(model, target);
-            issues.Add(new KinematicIssue(KinematicIssueKind.JointLimit, $"the target joints {target} are beyond the limits ({Violation(model, target)}).") { Joint = joint, Limit = limit });
-            return issues;
+            return new List<KinematicIssue> { new KinematicIssue(KinematicIssueKind.JointLimit, $"the target joints {target} are beyond the limits ({Violation(model, target)}).") { Joint = joint, Limit = limit } };
         }
         if (motion == KinematicMotion.Linear && previous is Joints start)
         {
             IKinematics kin = model.Kinematics;
-            if (CheckPath(model, start, kin.Forward(target), null, speedMmPerSecond, Pose.Identity, issues, out _) is Joints arrival
+            if (CheckPath(model, start, kin.Forward(target), null, speedMmPerSecond, Pose.Identity, ref issues, out _) is Joints arrival
                 && kin.ConfigurationOf(arrival) != kin.ConfigurationOf(target))
             {
-                Add(issues, KinematicIssueKind.ConfigurationFlip,
+                Add(ref issues, KinematicIssueKind.ConfigurationFlip,
                     $"the target joints are in {kin.ConfigurationOf(target)} but a straight line from the start arrives in {kin.ConfigurationOf(arrival)} (use a joint move).");
             }
         }
-        CheckSingularities(((ISolver)model.Kinematics).Measure(target), "at the target", issues);
-        return issues;
+        CheckSingularities(((ISolver)model.Kinematics).Measure(target), "at the target", ref issues);
+        return issues ?? new List<KinematicIssue>();
     }
+
+    private static readonly KinematicIssue[] NoIssues = [];
+
+    private static List<KinematicIssue> Unreachable(RobotModel model, Pose target, Pose tool) =>
+        [new KinematicIssue(KinematicIssueKind.Unreachable, $"the target {Shown(target, tool)} is out of reach of the {model}.")];
 
     private static Joints? FirstWithinLimits(IKinematics kin, Pose target)
     {
@@ -138,7 +157,7 @@ public static class KinematicChecks
     /// line short enough for one sample, the common streamed move) takes it instead of solving the target again.
     /// <paramref name="arrival"/> is the singularity measure of the joints returned (default when null).
     /// </remarks>
-    private static Joints? CheckPath(RobotModel model, Joints start, Pose target, Vector? arcThrough, double speed, Pose tool, List<KinematicIssue> issues,
+    private static Joints? CheckPath(RobotModel model, Joints start, Pose target, Vector? arcThrough, double speed, Pose tool, ref List<KinematicIssue>? issues,
         out SingularityMeasure arrival, Joints? closestToStart = null)
     {
         arrival = default;
@@ -170,7 +189,7 @@ public static class KinematicChecks
                 Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
                 Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
                 bool reachable = solver.SolveRaw(Affine.FromPose(pose), last, raw, cfg) > 0;
-                Add(issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
+                Add(ref issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
                     reachable ? $"the {path} needs a joint beyond its limits {Where(t, path, pose, tool)}." : $"the {path} leaves the reach of the {model} {Where(t, path, pose, tool)}.");
                 return null;
             }
@@ -189,26 +208,26 @@ public static class KinematicChecks
             (ArmConfiguration config, SingularityMeasure measure) = solver.Assess(j);
             if (jump > FlipJumpDegrees || config != startConfig)
             {
-                Add(issues, KinematicIssueKind.ConfigurationFlip,
+                Add(ref issues, KinematicIssueKind.ConfigurationFlip,
                     $"the arm would have to change configuration {Where(t, path, pose, tool)} (from {startConfig} to {config}, a joint jumps {Num.F(jump, 1)}°): the {path} passes through or very near a position where the arm must flip, which it cannot do smoothly (use a joint move, or move the path away from it).");
             }
             if (IsNearSingularity(measure))
             {
-                CheckSingularities(measure, Where(t, path, pose, tool), issues);
+                CheckSingularities(measure, Where(t, path, pose, tool), ref issues);
             }
             last = j;
             arrival = measure;
         }
         if (worstRatio > 1 && model.MaxJointSpeeds is Joints limits)
         {
-            Add(issues, KinematicIssueKind.JointSpeed,
+            Add(ref issues, KinematicIssueKind.JointSpeed,
                 $"at {Num.F(speed, 1)} mm/s joint {worstJoint + 1} would need {Num.F(worstRatio * limits[worstJoint], 0)}°/s, above its maximum of {Num.F(limits[worstJoint], 0)}°/s.");
         }
         return last;
     }
 
     /// <summary>A joint move (PTP, MoveJ, movej) to a Cartesian target that swings a joint by more than <see cref="LargeJointMoveDegrees"/>.</summary>
-    private static void CheckJointMove(Joints start, Joints end, List<KinematicIssue> issues)
+    private static void CheckJointMove(Joints start, Joints end, ref List<KinematicIssue>? issues)
     {
         int widest = 0;
         for (int k = 1; k < Joints.Count; k++)
@@ -221,7 +240,7 @@ public static class KinematicChecks
         double swing = Math.Abs(end[widest] - start[widest]);
         if (swing > LargeJointMoveDegrees)
         {
-            Add(issues, KinematicIssueKind.LargeJointMove,
+            Add(ref issues, KinematicIssueKind.LargeJointMove,
                 $"to reach this target in a joint move, joint {widest + 1} turns {Num.F(swing, 0)}° (from {Num.F(start[widest], 1)}° to {Num.F(end[widest], 1)}°); make sure the tool and its cables have room to swing.");
         }
     }
@@ -235,28 +254,29 @@ public static class KinematicChecks
     private static bool IsNearSingularity(SingularityMeasure m) =>
         m.WristDegrees < WristSingularityDegrees || m.ElbowDegrees < ElbowSingularityDegrees || m.ShoulderMm < ShoulderSingularityMm;
 
-    private static void CheckSingularities(SingularityMeasure m, string where, List<KinematicIssue> issues)
+    private static void CheckSingularities(SingularityMeasure m, string where, ref List<KinematicIssue>? issues)
     {
         // At the singular point itself a distance reads "0"; say what it means instead.
         if (m.WristDegrees < WristSingularityDegrees)
         {
             string how = m.WristDegrees < 0.005 ? "axis 5 is exactly straight" : $"axis 5 is only {Num.F(m.WristDegrees, 2)}° from straight";
-            Add(issues, KinematicIssueKind.WristSingularity, $"{how} {where}, so axes 4 and 6 line up and the controller cannot tell them apart; axes 4 and 6 may spin fast.");
+            Add(ref issues, KinematicIssueKind.WristSingularity, $"{how} {where}, so axes 4 and 6 line up and the controller cannot tell them apart; axes 4 and 6 may spin fast.");
         }
         if (m.ElbowDegrees < ElbowSingularityDegrees)
         {
             string how = m.ElbowDegrees < 0.005 ? "the arm is fully stretched or folded at the elbow" : $"the elbow is only {Num.F(m.ElbowDegrees, 2)}° from fully stretched or folded";
-            Add(issues, KinematicIssueKind.ElbowSingularity, $"{how} {where}, at the edge of what the arm can reach; it may move slowly or jerkily there.");
+            Add(ref issues, KinematicIssueKind.ElbowSingularity, $"{how} {where}, at the edge of what the arm can reach; it may move slowly or jerkily there.");
         }
         if (m.ShoulderMm < ShoulderSingularityMm)
         {
             string how = m.ShoulderMm < 0.05 ? "the wrist is right on axis 1's singular line" : $"the wrist is only {Num.F(m.ShoulderMm, 1)} mm from axis 1's singular line";
-            Add(issues, KinematicIssueKind.ShoulderSingularity, $"{how} {where}, where turning axis 1 hardly moves the wrist; axis 1 may spin fast.");
+            Add(ref issues, KinematicIssueKind.ShoulderSingularity, $"{how} {where}, where turning axis 1 hardly moves the wrist; axis 1 may spin fast.");
         }
     }
 
-    private static void Add(List<KinematicIssue> issues, KinematicIssueKind kind, string reason)
+    private static void Add(ref List<KinematicIssue>? issues, KinematicIssueKind kind, string reason)
     {
+        issues ??= [];
         foreach (KinematicIssue i in issues)
         {
             if (i.Kind == kind)

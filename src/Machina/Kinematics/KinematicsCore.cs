@@ -102,9 +102,21 @@ internal static class KinematicsCore
     internal static Joints? Closest(ISolver solver, RobotModel model, Pose flange, Joints current)
     {
         current.RequireFinite(nameof(current));
+        return ReferenceEquals(((IKinematics)solver).Model, model)
+            ? solver.Closest(Affine.FromPose(flange), current, out _)
+            : ClosestOfAll(solver, model, Affine.FromPose(flange), current, out _);
+    }
+
+    /// <summary>
+    /// <see cref="ClosestOf"/> of every raw solution; <paramref name="reachable"/> is false when there is none (out of reach). What
+    /// <see cref="ISolver.Closest"/> gives for a solver that does not narrow its search.
+    /// </summary>
+    internal static Joints? ClosestOfAll(ISolver solver, RobotModel model, in Affine flange, Joints current, out bool reachable)
+    {
         Span<Joints> raw = stackalloc Joints[MaxSolutions];
         Span<ArmConfiguration> configs = stackalloc ArmConfiguration[MaxSolutions];
-        int n = solver.SolveRaw(Affine.FromPose(flange), current, raw, configs);
+        int n = solver.SolveRaw(flange, current, raw, configs);
+        reachable = n > 0;
         return ClosestOf(model, raw[..n], current);
     }
 
@@ -132,7 +144,7 @@ internal static class KinematicsCore
     }
 
     /// <summary>How far <paramref name="fitted"/> is from <paramref name="current"/> for <see cref="ClosestOf"/>: the largest joint change plus a thousandth of their sum.</summary>
-    private static double Cost(Joints fitted, Joints current)
+    internal static double Cost(Joints fitted, Joints current)
     {
         double maxDelta = 0, sum = 0;
         Step(fitted.J1 - current.J1, ref maxDelta, ref sum);

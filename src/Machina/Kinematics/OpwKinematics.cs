@@ -53,10 +53,25 @@ public sealed class OpwKinematics : IKinematics, ISolver
             return new Joints(a1, a2, a3, a4, a5, a6);
         }
         return new Joints(Neg(a1), Wrap(a2 - 90), Wrap(a3 + 90), Neg(a4), a5, Neg(a6));
-
-        static double Neg(double d) => d == -180 || d == 180 ? 180 : -d;
-        static double Wrap(double d) => d > 180 ? d - 360 : d <= -180 ? d + 360 : d;
     }
+
+    /// <summary>Axis 1 in the brand's degrees, as <see cref="FromCanonical"/> gives it.</summary>
+    private double BrandJ1(double t1)
+    {
+        double a1 = KinematicsCore.WrapDegrees(t1);
+        return _kuka ? Neg(a1) : a1;
+    }
+
+    /// <summary>Axis 3 in the brand's degrees, as <see cref="FromCanonical"/> gives it.</summary>
+    private double BrandJ3(double t3)
+    {
+        double a3 = KinematicsCore.WrapDegrees(t3);
+        return _kuka ? Wrap(a3 + 90) : a3;
+    }
+
+    private static double Neg(double d) => d == -180 || d == 180 ? 180 : -d;
+
+    private static double Wrap(double d) => d > 180 ? d - 360 : d <= -180 ? d + 360 : d;
 
     /// <summary>Wrist rotation (canonical: X along the forearm/tool axis) from the flange rotation, per brand.</summary>
     private Affine WristFromFlange(in Affine f) =>
@@ -159,72 +174,208 @@ public sealed class OpwKinematics : IKinematics, ISolver
 
     int ISolver.SolveRaw(in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
+        if (!TryWrist(flange, reference, out Wrist wrist))
+        {
+            return 0;
+        }
+        int count = 0;
+        for (int shoulder = 0; shoulder < 2; shoulder++)
+        {
+            if (!TryShoulder(wrist, shoulder, out Shoulder arm))
+            {
+                continue;
+            }
+            Frame frame = FrameOf(wrist, arm);
+            for (int elbow = 0; elbow < 2; elbow++)
+            {
+                Branch(wrist, arm, frame, elbow, out joints[count], out joints[count + 1]);
+                configurations[count++] = new ArmConfiguration(shoulder == 1, elbow == 1, false);
+                configurations[count++] = new ArmConfiguration(shoulder == 1, elbow == 1, true);
+            }
+        }
+        return count;
+    }
+
+    /// <remarks>
+    /// The same solution as <see cref="KinematicsCore.ClosestOf"/> of <c>SolveRaw</c>, to the bit, without solving every branch: each of
+    /// the four arm branches (shoulder, elbow) first gets its axis 1 and axis 3 (one arc tangent per shoulder, no more), which give a
+    /// lower bound of the cost of both its wrist solutions (a joint's change is at least its distance to the reference modulo 360°);
+    /// the branch with the lowest bound is solved first, and another only when its bound does not exceed the best cost found. The
+    /// choice is then made over the solved ones in <c>SolveRaw</c>'s order with the same strict comparison, so ties go where they went.
+    /// </remarks>
+    Joints? ISolver.Closest(in Affine flange, in Joints reference, out bool reachable)
+    {
+        reachable = false;
+        if (!TryWrist(flange, reference, out Wrist wrist))
+        {
+            return null;
+        }
+        Span<Shoulder> arms = stackalloc Shoulder[2];
+        Span<bool> armOk = stackalloc bool[2];
+        Span<double> bound = stackalloc double[4];
+        for (int shoulder = 0; shoulder < 2; shoulder++)
+        {
+            armOk[shoulder] = TryShoulder(wrist, shoulder, out arms[shoulder]);
+            reachable |= armOk[shoulder];
+            for (int elbow = 0; elbow < 2; elbow++)
+            {
+                double b = armOk[shoulder]
+                    ? Math.Max(TurnDistance(BrandJ1(arms[shoulder].T1), reference.J1), TurnDistance(BrandJ3(ElbowAngle(arms[shoulder], elbow)), reference.J3))
+                    : double.PositiveInfinity;
+                // A bound that is not a number proves nothing: that branch is solved first.
+                bound[shoulder * 2 + elbow] = double.IsNaN(b) ? double.NegativeInfinity : b;
+            }
+        }
+        if (!reachable)
+        {
+            return null;
+        }
+        // Fitted solutions by SolveRaw's order (shoulder, elbow, wrist); cost +∞ where not solved or beyond the limits.
+        Span<Joints> fitted = stackalloc Joints[KinematicsCore.MaxSolutions];
+        Span<double> cost = stackalloc double[KinematicsCore.MaxSolutions];
+        cost.Fill(double.PositiveInfinity);
+        Span<bool> solved = stackalloc bool[4];
+        double best = double.PositiveInfinity;
+        for (int round = 0; round < 4; round++)
+        {
+            // The unsolved branch with the lowest bound; stop when none could beat (or tie) the best cost so far.
+            int next = -1;
+            for (int b = 0; b < 4; b++)
+            {
+                if (!solved[b] && bound[b] < double.PositiveInfinity && (next < 0 || bound[b] < bound[next]))
+                {
+                    next = b;
+                }
+            }
+            if (next < 0 || bound[next] - BoundMargin > best)
+            {
+                break;
+            }
+            solved[next] = true;
+            Shoulder arm = arms[next >> 1];
+            Branch(wrist, arm, FrameOf(wrist, arm), next & 1, out Joints first, out Joints flipped);
+            best = Math.Min(best, Fit(first, reference, out fitted[next * 2], out cost[next * 2]));
+            best = Math.Min(best, Fit(flipped, reference, out fitted[next * 2 + 1], out cost[next * 2 + 1]));
+        }
+        Joints? closest = null;
+        double bestCost = double.PositiveInfinity;
+        for (int i = 0; i < KinematicsCore.MaxSolutions; i++)
+        {
+            if (cost[i] < bestCost)
+            {
+                bestCost = cost[i];
+                closest = fitted[i];
+            }
+        }
+        return closest;
+
+        double Fit(Joints raw, Joints current, out Joints f, out double c)
+        {
+            c = KinematicsCore.FitLimits(Model, raw, current, out f) ? KinematicsCore.Cost(f, current) : double.PositiveInfinity;
+            return c;
+        }
+    }
+
+    /// <summary>
+    /// Slack on a branch's lower bound (degrees): a fitted joint is its raw value plus whole turns (rounded once) and clamped by at most
+    /// 1e-9°, so its true change can be below the bound by far less than this; a branch within the slack is solved.
+    /// </summary>
+    private const double BoundMargin = 1e-6;
+
+    /// <summary>The distance (degrees) from <paramref name="value"/> to the nearest of <paramref name="reference"/> ± k·360°.</summary>
+    private static double TurnDistance(double value, double reference)
+    {
+        double d = value - reference;
+        return Math.Abs(d - 360.0 * Math.Round(d / 360.0));
+    }
+
+    /// <summary>The wrist's target and what every branch shares: the wrist centre, its distance from axis 1, the reference's axes 1, 4, 6.</summary>
+    private readonly record struct Wrist(Affine W, double Cz, double SFront, double BaseAngle, double R4, double R6);
+
+    /// <summary>One shoulder's axis 1 and what both its elbows share.</summary>
+    private readonly record struct Shoulder(double T1, double U, double V, double AsinD);
+
+    /// <summary>The wrist rotation in the axis-1 frame (Rz(−θ1)·W), shared by a shoulder's two elbows.</summary>
+    private readonly record struct Frame(double M00, double M01, double M02, double M10, double M11, double M12, double M20, double M21, double M22);
+
+    private bool TryWrist(in Affine flange, in Joints reference, out Wrist wrist)
+    {
         Span<double> r = stackalloc double[6];
         ToCanonical(reference, r);
-        double r4 = r[3], r6 = r[5];
         Affine w = WristFromFlange(flange);
         double cx = w.Px - _p.C4 * w.R00, cy = w.Py - _p.C4 * w.R10, cz = w.Pz - _p.C4 * w.R20;
         double rho2 = cx * cx + cy * cy - _p.B * _p.B;
         if (rho2 < 0 || !double.IsFinite(rho2))
         {
-            return 0;
+            wrist = default;
+            return false;
         }
-        double sFront = Math.Sqrt(rho2);
         // Wrist centre on axis 1 (shoulder singularity, b = 0): axis 1 is free and atan2 would only see rounding noise; keep the reference's.
         double baseAngle = cx * cx + cy * cy < 1e-18 ? r[0] : Math.Atan2(cy, cx);
+        wrist = new Wrist(w, cz, Math.Sqrt(rho2), baseAngle, r[3], r[5]);
+        return true;
+    }
+
+    private bool TryShoulder(in Wrist wrist, int shoulder, out Shoulder arm)
+    {
         double c2 = _p.C2, k = _k;
-        int count = 0;
-        for (int shoulder = 0; shoulder < 2; shoulder++)
+        double s = shoulder == 0 ? wrist.SFront : -wrist.SFront;
+        double t1 = wrist.BaseAngle - Math.Atan2(_p.B, s);
+        double u = s - _p.A1, v = wrist.Cz - _p.C1;
+        double d = (u * u + v * v - c2 * c2 - k * k) / (2 * c2 * k);
+        if (d > 1 + 1e-12 || d < -1 - 1e-12)
         {
-            double s = shoulder == 0 ? sFront : -sFront;
-            double t1 = baseAngle - Math.Atan2(_p.B, s);
-            double u = s - _p.A1, v = cz - _p.C1;
-            double d = (u * u + v * v - c2 * c2 - k * k) / (2 * c2 * k);
-            if (d > 1 + 1e-12 || d < -1 - 1e-12)
-            {
-                continue;
-            }
-            double asinD = Math.Asin(Math.Clamp(d, -1, 1));
-            (double s1, double c1) = Math.SinCos(t1); // the bits of Math.Sin and Math.Cos (MathSinCosTests), in one call
-            // Wrist rotation in the axis-1 frame (Rz(−θ1)·W), reused for both elbows.
-            double m00 = c1 * w.R00 + s1 * w.R10, m01 = c1 * w.R01 + s1 * w.R11, m02 = c1 * w.R02 + s1 * w.R12;
-            double m10 = -s1 * w.R00 + c1 * w.R10, m11 = -s1 * w.R01 + c1 * w.R11, m12 = -s1 * w.R02 + c1 * w.R12;
-            double m20 = w.R20, m21 = w.R21, m22 = w.R22;
-            for (int elbow = 0; elbow < 2; elbow++)
-            {
-                double t3 = elbow == 0 ? _psi - asinD : _psi - Math.PI + asinD;
-                double g = t3 - _psi;
-                (double sinG, double cosG) = Math.SinCos(g);
-                double a = c2 - k * sinG, b = k * cosG;
-                double t2 = Math.Atan2(a * u - b * v, a * v + b * u);
-                double phi = t2 + t3;
-                (double sp, double cp) = Math.SinCos(phi);
-                // M = Ry(−φ)·Rz(−θ1)·W = Rx(θ4)·Ry(θ5)·Rx(θ6)
-                double n00 = cp * m00 - sp * m20;
-                double n10 = m10, n11 = m11, n12 = m12;
-                double n20 = sp * m00 + cp * m20, n21 = sp * m01 + cp * m21, n22 = sp * m02 + cp * m22;
-                double s5 = Math.Sqrt(n10 * n10 + n20 * n20);
-                double t5 = Math.Atan2(s5, n00);
-                // Near a straight wrist θ4 alone is ill-conditioned; θ6 is then taken from what θ4 and θ5 leave,
-                // Rx(θ6) = Ry(−θ5)·Rx(−θ4)·M, so the pair always reproduces the rotation (row 1 does not depend on θ5).
-                bool straight = s5 <= 1e-12;
-                double t4 = straight ? r4 : Math.Atan2(n10, -n20);
-                (double s4, double c4) = Math.SinCos(t4);
-                double t6 = Math.Atan2(-(c4 * n12 + s4 * n22), c4 * n11 + s4 * n21);
-                if (straight)
-                {
-                    // Only θ4 + θ6 (θ5 = 0) or θ6 − θ4 (θ5 = 180°) is fixed: share the change from the reference equally between the two axes.
-                    double half = Math.IEEERemainder(t6 - r6, 2 * Math.PI) / 2;
-                    t4 += n00 > 0 ? half : -half;
-                    t6 -= half;
-                }
-                bool back = shoulder == 1, down = elbow == 1;
-                joints[count] = FromCanonical(t1, t2, t3, t4, t5, t6);
-                configurations[count++] = new ArmConfiguration(back, down, false);
-                joints[count] = FromCanonical(t1, t2, t3, t4 + Math.PI, -t5, t6 + Math.PI);
-                configurations[count++] = new ArmConfiguration(back, down, true);
-            }
+            arm = default;
+            return false;
         }
-        return count;
+        arm = new Shoulder(t1, u, v, Math.Asin(Math.Clamp(d, -1, 1)));
+        return true;
+    }
+
+    private static Frame FrameOf(in Wrist wrist, in Shoulder arm)
+    {
+        Affine w = wrist.W;
+        (double s1, double c1) = Math.SinCos(arm.T1); // the bits of Math.Sin and Math.Cos (MathSinCosTests), in one call
+        return new Frame(
+            c1 * w.R00 + s1 * w.R10, c1 * w.R01 + s1 * w.R11, c1 * w.R02 + s1 * w.R12,
+            -s1 * w.R00 + c1 * w.R10, -s1 * w.R01 + c1 * w.R11, -s1 * w.R02 + c1 * w.R12,
+            w.R20, w.R21, w.R22);
+    }
+
+    /// <summary>Axis 3 (canonical radians) of one elbow.</summary>
+    private double ElbowAngle(in Shoulder arm, int elbow) => elbow == 0 ? _psi - arm.AsinD : _psi - Math.PI + arm.AsinD;
+
+    /// <summary>One arm branch's two wrist solutions (brand joints, wrapped), as <c>SolveRaw</c> lists them.</summary>
+    private void Branch(in Wrist wrist, in Shoulder arm, in Frame m, int elbow, out Joints first, out Joints flipped)
+    {
+        double c2 = _p.C2, k = _k, u = arm.U, v = arm.V, t1 = arm.T1;
+        double t3 = ElbowAngle(arm, elbow);
+        double g = t3 - _psi;
+        (double sinG, double cosG) = Math.SinCos(g);
+        double a = c2 - k * sinG, b = k * cosG;
+        double t2 = Math.Atan2(a * u - b * v, a * v + b * u);
+        double phi = t2 + t3;
+        (double sp, double cp) = Math.SinCos(phi);
+        // M = Ry(−φ)·Rz(−θ1)·W = Rx(θ4)·Ry(θ5)·Rx(θ6)
+        double n00 = cp * m.M00 - sp * m.M20;
+        double n10 = m.M10, n11 = m.M11, n12 = m.M12;
+        double n20 = sp * m.M00 + cp * m.M20, n21 = sp * m.M01 + cp * m.M21, n22 = sp * m.M02 + cp * m.M22;
+        double s5 = Math.Sqrt(n10 * n10 + n20 * n20);
+        double t5 = Math.Atan2(s5, n00);
+        // Near a straight wrist θ4 alone is ill-conditioned; θ6 is then taken from what θ4 and θ5 leave,
+        // Rx(θ6) = Ry(−θ5)·Rx(−θ4)·M, so the pair always reproduces the rotation (row 1 does not depend on θ5).
+        bool straight = s5 <= 1e-12;
+        double t4 = straight ? wrist.R4 : Math.Atan2(n10, -n20);
+        (double s4, double c4) = Math.SinCos(t4);
+        double t6 = Math.Atan2(-(c4 * n12 + s4 * n22), c4 * n11 + s4 * n21);
+        if (straight)
+        {
+            // Only θ4 + θ6 (θ5 = 0) or θ6 − θ4 (θ5 = 180°) is fixed: share the change from the reference equally between the two axes.
+            double half = Math.IEEERemainder(t6 - wrist.R6, 2 * Math.PI) / 2;
+            t4 += n00 > 0 ? half : -half;
+            t6 -= half;
+        }
+        first = FromCanonical(t1, t2, t3, t4, t5, t6);
+        flipped = FromCanonical(t1, t2, t3, t4 + Math.PI, -t5, t6 + Math.PI);
     }
 }

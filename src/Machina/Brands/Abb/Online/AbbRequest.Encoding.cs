@@ -71,7 +71,55 @@ internal readonly partial struct AbbRequest
         {
             return System.Text.Encoding.ASCII.GetBytes(RapidFacts.UnusedAxisText, destination);
         }
-        Num.Clean(value).TryFormat(destination, out int written, "G15", Num.Inv);
+        if (TryWriteShortDecimal(value, destination, out int written))
+        {
+            return written;
+        }
+        Num.Clean(value).TryFormat(destination, out written, "G15", Num.Inv);
         return written;
+    }
+
+    /// <summary>
+    /// G15's text of a value that is the double nearest a decimal of at most four places below 10^10 (what the requests' rounding to
+    /// 3 or 4 decimals gives: a move's numbers), written from that decimal's digits without the general formatter. Such a decimal has
+    /// at most 14 significant digits, so the double's 15 significant digits are the decimal's own (a double holds 15 decimal digits
+    /// both ways) and G15 prints it in fixed notation without trailing zeros. False, and nothing written, for any other value.
+    /// </summary>
+    internal static bool TryWriteShortDecimal(double value, Span<byte> destination, out int written)
+    {
+        written = 0;
+        if (!(Math.Abs(value) < 1e10))
+        {
+            return false;
+        }
+        double scaled = Math.Round(value * 10000);
+        // The division is correctly rounded, so equality says the value is the double nearest scaled / 10^4.
+        if (scaled / 10000 != value)
+        {
+            return false;
+        }
+        long tenThousandths = (long)scaled;
+        int n = 0;
+        if (tenThousandths < 0)
+        {
+            destination[n++] = (byte)'-';
+            tenThousandths = -tenThousandths;
+        }
+        long whole = tenThousandths / 10000;
+        int fraction = (int)(tenThousandths - whole * 10000);
+        whole.TryFormat(destination[n..], out int digits, default, Num.Inv);
+        n += digits;
+        if (fraction != 0)
+        {
+            destination[n++] = (byte)'.';
+            for (int divisor = 1000; fraction != 0; divisor /= 10)
+            {
+                int digit = fraction / divisor;
+                destination[n++] = (byte)('0' + digit);
+                fraction -= digit * divisor;
+            }
+        }
+        written = n;
+        return true;
     }
 }
