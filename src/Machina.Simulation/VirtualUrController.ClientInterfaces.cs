@@ -10,8 +10,8 @@ public sealed partial class VirtualUrController
     /// <summary>How long a client interface waits for a client to take a package before it drops that client.</summary>
     private const int ClientSendTimeoutMs = 2000;
 
-    private readonly List<ClientConnection> _primaryClients = [];
-    private readonly List<ClientConnection> _realtimeClients = [];
+    private readonly VirtualUrClientGroup<ClientConnection> _primaryClients = new();
+    private readonly VirtualUrClientGroup<ClientConnection> _realtimeClients = new();
     private readonly List<TcpListener> _clientListeners = [];
     private VirtualUrArmFacts? _armFacts;
 
@@ -25,16 +25,7 @@ public sealed partial class VirtualUrController
     public int RealtimePort { get; private set; }
 
     /// <summary>How many clients the real-time interface has now.</summary>
-    internal int RealtimeClients
-    {
-        get
-        {
-            lock (Gate)
-            {
-                return _realtimeClients.Count;
-            }
-        }
-    }
+    internal int RealtimeClients => _realtimeClients.Count;
 
     /// <summary>Starts the client interfaces the options ask for.</summary>
     private void ListenClientInterfaces()
@@ -88,10 +79,7 @@ public sealed partial class VirtualUrController
         var connection = new ClientConnection(client);
         connection.Send(VirtualUrClientPackages.Version(Timestamp, SoftwareVersion));
         connection.Send(VirtualUrClientPackages.State(ClientState(), _armFacts!));
-        lock (Gate)
-        {
-            _primaryClients.Add(connection);
-        }
+        _primaryClients.Add(connection);
         try
         {
             var commands = primary ? new VirtualUrPrimaryCommands(PrimaryCommand) : null;
@@ -99,10 +87,7 @@ public sealed partial class VirtualUrController
         }
         finally
         {
-            lock (Gate)
-            {
-                _primaryClients.Remove(connection);
-            }
+            _primaryClients.Remove(connection);
         }
     }
 
@@ -110,20 +95,14 @@ public sealed partial class VirtualUrController
     private async Task ServeRealtimeClientAsync(TcpClient client, CancellationToken token)
     {
         var connection = new ClientConnection(client);
-        lock (Gate)
-        {
-            _realtimeClients.Add(connection);
-        }
+        _realtimeClients.Add(connection);
         try
         {
             await FeedClientAsync(client.GetStream(), null, token).ConfigureAwait(false);
         }
         finally
         {
-            lock (Gate)
-            {
-                _realtimeClients.Remove(connection);
-            }
+            _realtimeClients.Remove(connection);
         }
     }
 
@@ -155,27 +134,30 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>Sends a fresh package to every client of one interface each period, while it has clients.</summary>
-    private async Task SendClientPackagesAsync(List<ClientConnection> clients, TimeSpan period, Func<byte[]> package, CancellationToken token)
+    /// <summary>
+    /// Sends a fresh package to every client of one interface each period, while it has clients; without one it runs no timer
+    /// (<see cref="VirtualUrClientGroup{T}"/>) and starts again, on the period from then, when one connects.
+    /// </summary>
+    private async Task SendClientPackagesAsync(VirtualUrClientGroup<ClientConnection> clients, TimeSpan period, Func<byte[]> package, CancellationToken token)
     {
-        using var timer = new PeriodicTimer(period, Clock);
         try
         {
-            while (await timer.WaitForNextTickAsync(token).ConfigureAwait(false))
+            while (true)
             {
-                ClientConnection[] now;
-                lock (Gate)
+                await clients.UntilAnyAsync(token).ConfigureAwait(false);
+                using var timer = new PeriodicTimer(period, Clock);
+                while (await timer.WaitForNextTickAsync(token).ConfigureAwait(false))
                 {
-                    now = [.. clients];
-                }
-                if (now.Length == 0)
-                {
-                    continue;
-                }
-                byte[] bytes = package();
-                foreach (ClientConnection client in now)
-                {
-                    client.Send(bytes);
+                    ClientConnection[] now = clients.Snapshot();
+                    if (now.Length == 0)
+                    {
+                        break;
+                    }
+                    byte[] bytes = package();
+                    foreach (ClientConnection client in now)
+                    {
+                        client.Send(bytes);
+                    }
                 }
             }
         }
@@ -187,14 +169,10 @@ public sealed partial class VirtualUrController
     /// <summary>Sends a robot message (a runtime exception or a text) to every primary and secondary client; made only when there is one.</summary>
     private void SendToStateClients(Func<byte[]> message)
     {
-        ClientConnection[] now;
-        lock (Gate)
+        ClientConnection[] now = _primaryClients.Snapshot();
+        if (now.Length == 0)
         {
-            if (_primaryClients.Count == 0)
-            {
-                return;
-            }
-            now = [.. _primaryClients];
+            return;
         }
         byte[] bytes = message();
         foreach (ClientConnection client in now)

@@ -39,7 +39,7 @@ public sealed partial class VirtualUrController
                     _dashboardCommands.RemoveAt(0);
                 }
             }
-            string answer = TwinDashboard(Twin, command);
+            string answer = await TwinDashboardAsync(Twin, command, token).ConfigureAwait(false);
             await stream.WriteAsync(Encoding.ASCII.GetBytes(answer + "\n"), token).ConfigureAwait(false);
             if (command == "quit")
             {

@@ -12,7 +12,7 @@ public sealed partial class VirtualUrController
     /// behind it: robot mode (power off, idle, running), the loaded program, play, pause and stop of the interpreter's program,
     /// safety, popups and the log. Commands are matched without regard to letter case, as a UR does.
     /// </summary>
-    private string TwinDashboard(UrTwinController twin, string command)
+    private async ValueTask<string> TwinDashboardAsync(UrTwinController twin, string command, CancellationToken token)
     {
         if (UserRoleCommand(command) is string roleAnswer)
         {
@@ -36,8 +36,9 @@ public sealed partial class VirtualUrController
             case "pause":
                 if (running && HoldTwin())
                 {
-                    // Answered once the arm stands: the program's thread records where the hold stopped the motion at once.
-                    twin.WaitUntilStanding(TimeSpan.FromSeconds(5));
+                    // Answered once the arm stands: the program's thread records where the hold stopped the motion at once. Awaited:
+                    // the dashboard's connection is served on thread-pool threads, which must not block.
+                    await twin.WaitUntilStandingAsync(TimeSpan.FromSeconds(5), token).ConfigureAwait(false);
                     WakeRtde();
                     return "Pausing program";
                 }

@@ -9,8 +9,11 @@ internal sealed partial class UrTwinController
     private CancellationTokenSource _holdStop = new();
     private UrMotion? _motion;
 
-    /// <summary>Set while no motion is in progress (<see cref="WaitUntilStanding"/>); it never spins and holds no operating-system object.</summary>
-    private readonly ManualResetEventSlim _standing = new(true, 0);
+    /// <summary>
+    /// Completed when the motion in progress ends (<see cref="Standing"/>): made only while a motion is in progress and something
+    /// waits for its end (a pause, a stop on the path), so a motion costs nothing more.
+    /// </summary>
+    private TaskCompletionSource? _standing;
 
     /// <summary>True while the program is held (a protective stop or a pause): the arm stands, the program waits.</summary>
     public bool IsHeld
@@ -140,9 +143,41 @@ internal sealed partial class UrTwinController
 
     /// <summary>
     /// Waits until no motion is in progress, at most <paramref name="timeout"/> (a hold reaches the motion at once: the program's
-    /// thread records where the arm stands); true when the arm stands.
+    /// thread records where the arm stands); true when the arm stands. <see cref="OperationCanceledException"/> when
+    /// <paramref name="cancellation"/> ends the wait first. It blocks the calling thread: a thread-pool thread should await
+    /// <see cref="WaitUntilStandingAsync"/>.
     /// </summary>
-    public bool WaitUntilStanding(TimeSpan timeout) => _standing.Wait(timeout);
+    public bool WaitUntilStanding(TimeSpan timeout, CancellationToken cancellation = default) => TwinWait.For(Standing(), timeout, cancellation);
+
+    /// <summary>
+    /// As <see cref="WaitUntilStanding"/> without holding a thread while it waits (the dashboard's <c>pause</c>, answered on a
+    /// thread-pool thread); true when the arm stands, false after <paramref name="timeout"/>.
+    /// </summary>
+    public async Task<bool> WaitUntilStandingAsync(TimeSpan timeout, CancellationToken cancellation)
+    {
+        Task standing = Standing();
+        if (!standing.IsCompleted)
+        {
+            try
+            {
+                await standing.WaitAsync(timeout, cancellation).ConfigureAwait(false);
+            }
+            catch (TimeoutException)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// <summary>A task that completes when no motion is in progress (completed already when none is).</summary>
+    private Task Standing()
+    {
+        lock (_holdGate)
+        {
+            return _motion is null ? Task.CompletedTask : (_standing ??= new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously)).Task;
+        }
+    }
 
     /// <summary>
     /// Moves the arm from where it is to <paramref name="target"/> in <paramref name="seconds"/>, along <paramref name="path"/>
@@ -185,7 +220,6 @@ internal sealed partial class UrTwinController
             {
                 hold = _holdStop.Token;
                 _motion = motion;
-                _standing.Reset();
             }
             using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, hold);
             try
@@ -204,14 +238,16 @@ internal sealed partial class UrTwinController
             }
             finally
             {
+                TaskCompletionSource? standing = null;
                 lock (_holdGate)
                 {
                     if (ReferenceEquals(_motion, motion))
                     {
                         _motion = null;
-                        _standing.Set();
+                        (standing, _standing) = (_standing, null);
                     }
                 }
+                standing?.TrySetResult();
             }
         }
     }

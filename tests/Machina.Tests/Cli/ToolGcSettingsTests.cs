@@ -24,4 +24,21 @@ public sealed class ToolGcSettingsTests
         // Tiered compilation stays off for the tool (a compile is a short process spent in a few hot loops).
         Assert.False(properties.GetProperty("System.Runtime.TieredCompilation").GetBoolean());
     }
+
+    /// <summary>
+    /// The thread pool's idle workers sleep at once instead of spinning for more work: `machina sim` gives the pool only a 50 ms
+    /// timer item, after which the workers spun about 68 times each (docs/performance.md, session 29).
+    /// </summary>
+    [Fact]
+    public void JitTool_RuntimeConfig_TurnsTheThreadPoolsSpinningOff()
+    {
+        string path = Path.Combine(AppContext.BaseDirectory, "Machina.Cli.runtimeconfig.json");
+        Assert.True(File.Exists(path), $"{path} is missing");
+        using JsonDocument config = JsonDocument.Parse(File.ReadAllText(path));
+        JsonElement properties = config.RootElement.GetProperty("runtimeOptions").GetProperty("configProperties");
+
+        Assert.True(properties.TryGetProperty("System.Threading.ThreadPool.UnfairSemaphoreSpinLimit", out JsonElement limit),
+            "System.Threading.ThreadPool.UnfairSemaphoreSpinLimit is not set");
+        Assert.Equal(0, limit.GetInt32());
+    }
 }

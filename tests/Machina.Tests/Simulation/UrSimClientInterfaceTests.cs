@@ -158,6 +158,32 @@ public class UrSimClientInterfaceTests
         Assert.Equal(Enumerable.Range(1, 5).Select(i => i * 0.002), stamps, new Tolerance(1e-9));
     }
 
+    [Fact]
+    public async Task Realtime_WithoutAClient_RunsNoTimer_AndStartsAgainWithTheNextClient()
+    {
+        var clock = new ManualClock();
+        await using var controller = new VirtualUrController(Options with { TimeProvider = clock, PrimaryPort = null, SecondaryPort = null });
+        await controller.StartAsync();
+        var period = TimeSpan.FromMilliseconds(2);
+        using (var first = await ConnectAsync(controller.RealtimePort))
+        {
+            await OnlineWait.UntilAsync(() => controller.RealtimeClients == 1, "the controller to take the first client");
+            await OnlineWait.UntilAsync(() => clock.HasTimerDueIn(period), "the real-time sender to wait for its first package");
+            clock.Advance(period);
+            Assert.Equal(0.002, BinaryPrimitives.ReadDoubleBigEndian((await ReadRealtimeAsync(first)).AsSpan(4)), 9);
+        }
+        await OnlineWait.UntilAsync(() => controller.RealtimeClients == 0, "the controller to see the first client leave");
+        await OnlineWait.UntilAsync(() => clock.HasTimerDueIn(period), "the real-time sender's next tick");
+        clock.Advance(period); // a tick without a client: the sender stops its timer (it ticked on at 500 Hz before)
+        await OnlineWait.UntilAsync(() => !clock.HasTimerDueIn(period), "the real-time sender to stop its timer without a client");
+
+        using var second = await ConnectAsync(controller.RealtimePort);
+        await OnlineWait.UntilAsync(() => controller.RealtimeClients == 1, "the controller to take the second client");
+        await OnlineWait.UntilAsync(() => clock.HasTimerDueIn(period), "the real-time sender to start again");
+        clock.Advance(period);
+        Assert.Equal(0.006, BinaryPrimitives.ReadDoubleBigEndian((await ReadRealtimeAsync(second)).AsSpan(4)), 9);
+    }
+
     [Theory]
     [InlineData(new[] { "power off\n" }, "", new[] { "power off" })]
     [InlineData(new[] { "po", "wer o", "ff\r\nstopj(2)\n" }, "stopj(2)\n", new[] { "power off" })]
