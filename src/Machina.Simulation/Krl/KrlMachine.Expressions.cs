@@ -180,6 +180,25 @@ internal sealed partial class KrlMachine
                 }
                 return;
             }
+            case KrlMember { Target: KrlName { Slot: >= 0 } local } member:
+            {
+                // A component of a local structure (the driver's target.X = … and pose.X = …, twelve an action): what its place
+                // would do, without making the place.
+                var structure = (KrlStructValue)(frame[local.Slot] ??= KrlValues.Default(local.Type));
+                if (structure.Shared)
+                {
+                    structure = structure.Copy();
+                    frame[local.Slot] = structure;
+                }
+                int field = member.FieldIndex;
+                structure.Values[field] = KrlConvert.To(member.Type, value, structure.Values[field]);
+                structure.Give(field);
+                if (_watchesAll || _watchesComputed)
+                {
+                    _writes++;
+                }
+                return;
+            }
             default:
                 Place(target, frame).Set(value);
                 if (_watchesAll || _watchesComputed || !LocalOrUnwatched(target))

@@ -18,7 +18,14 @@ internal sealed partial class KrlTwinController
     private CancellationToken _motionCancellation;
 
     /// <summary>Joints of an AXIS or E6AXIS value.</summary>
-    public static Joints JointsOf(KrlStructValue axes) => new(axes.Number("A1"), axes.Number("A2"), axes.Number("A3"), axes.Number("A4"), axes.Number("A5"), axes.Number("A6"));
+    public static Joints JointsOf(KrlStructValue axes)
+    {
+        int[] indexes = axes.Type.AxisIndexes;
+        object[] values = axes.Values;
+        return new(Axis(0), Axis(1), Axis(2), Axis(3), Axis(4), Axis(5));
+
+        double Axis(int i) => indexes[i] >= 0 ? KrlValues.ToReal(values[indexes[i]]) : 0;
+    }
 
     /// <summary>An E6AXIS value of <paramref name="joints"/>.</summary>
     public static KrlStructValue AxesValue(Joints joints)

@@ -185,12 +185,20 @@ internal static class KrlValues
         return text.ToString();
     }
 
-    /// <summary>Copies <paramref name="text"/> into a CHAR array (the rest unset); characters beyond its size are cut.</summary>
+    /// <summary>
+    /// Copies <paramref name="text"/> into a CHAR array (the rest unset); characters beyond its size are cut. An element that
+    /// already holds the character's shared box is not stored again: the driver's EKI_GetString writes a slot's 80 characters at
+    /// every action, most of them the same unset ones, and each store of a reference is a write barrier.
+    /// </summary>
     public static void SetText(object[] items, int start, int length, string text)
     {
         for (int i = 0; i < length; i++)
         {
-            items[start + i] = Box(i < text.Length ? text[i] : '\0');
+            object box = Box(i < text.Length ? text[i] : '\0');
+            if (!ReferenceEquals(items[start + i], box))
+            {
+                items[start + i] = box;
+            }
         }
     }
 
