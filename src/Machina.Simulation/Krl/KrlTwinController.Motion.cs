@@ -186,7 +186,8 @@ internal sealed partial class KrlTwinController
             }
         }
         double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
-        bool bco = Interlocked.Exchange(ref _coincident, 1) == 0;
+        // Only the first motion of a run looks with a locked exchange (a locked instruction at every motion before).
+        bool bco = Volatile.Read(ref _coincident) == 0 && Interlocked.Exchange(ref _coincident, 1) == 0;
         string text = bco ? kind + (approximation is null ? "" : " " + approximation) + " " + BcoRun : MotionText(kind, approximation);
         if (kind == "LIN" && goal is { } tcp && !bco)
         {
