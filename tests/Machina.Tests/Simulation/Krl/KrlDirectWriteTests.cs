@@ -19,6 +19,20 @@ public class KrlDirectWriteTests
 
         """;
 
+    /// <summary>Two routines that write their OUT argument: one INT, one REAL.</summary>
+    private const string Setters = """
+
+        DEF seti(x:OUT, v:IN)
+          DECL INT x, v
+          x = v
+        END
+
+        DEF setr(x:OUT, v:IN)
+          DECL REAL x, v
+          x = v
+        END
+        """;
+
     [Fact]
     public void ComponentsOfLocals_ElementsAndRowsAsOutArguments_WriteTheirOwnPlaces()
     {
@@ -50,16 +64,6 @@ public class KrlDirectWriteTests
               word[] = "Q"
             END
 
-            DEF seti(x:OUT, v:IN)
-              DECL INT x, v
-              x = v
-            END
-
-            DEF setr(x:OUT, v:IN)
-              DECL REAL x, v
-              x = v
-            END
-
             DEF settext(t[]:OUT, s[]:IN)
               DECL CHAR t[], s[]
               t[1] = s[1]
@@ -67,7 +71,7 @@ public class KrlDirectWriteTests
             END
             """;
         using var twin = new KrlTwinController();
-        twin.Load(("direct.src", Source), ("direct.dat", Data));
+        twin.Load(("direct.src", Source + Setters), ("direct.dat", Data));
 
         KrlProgramState state = twin.Run();
 
@@ -97,23 +101,13 @@ public class KrlDirectWriteTests
               DECL INT loc[3]
               {call}
             END
-
-            DEF seti(x:OUT, v:IN)
-              DECL INT x, v
-              x = v
-            END
-
-            DEF setr(x:OUT, v:IN)
-              DECL REAL x, v
-              x = v
-            END
             """;
         using var twin = new KrlTwinController();
-        twin.Load(("direct.src", source), ("direct.dat", Data));
+        twin.Load(("direct.src", source + Setters), ("direct.dat", Data));
 
         KrlProgramState state = twin.Run();
 
-        Assert.Equal(KrlProgramState.Error, state);
+        Assert.Equal(KrlProgramState.Failed, state);
         Assert.Contains(message, twin.Error);
     }
 
