@@ -193,8 +193,8 @@ public sealed partial class VirtualKukaController
         var seen = new TwinObservation();
         seen.DigitalBank(twin.Io, "$OUT", "", 1);
         seen.AnalogBank(twin.Io, "$ANOUT", 1);
-        var vel = (KrlStructValue)twin.Environment.System["$VEL"].Value;
-        var apo = (KrlStructValue)twin.Environment.System["$APO"].Value;
+        var vel = (KrlStructValue)twin.Motion.Vel.Value;
+        var apo = (KrlStructValue)twin.Motion.Apo.Value;
         return seen.Apply(basis, twin.Arm, twin.Arm.Joints, twin.Arm.ToolCenter) with
         {
             Speed = KrlValues.ToReal(vel.Values[0]) * 1000,

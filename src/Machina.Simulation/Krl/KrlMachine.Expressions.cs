@@ -86,6 +86,23 @@ internal sealed partial class KrlMachine
                 }
                 return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null, Structure = structure };
             }
+            case KrlIndex { Target: KrlName name } index when index.Each.Length > 0 && name.Cell?.Signals is null:
+            {
+                // An element or row of a variable (the driver's OUT arguments slot_v[write_slot, 1] …, nine an action): the
+                // variable's array as its place would hold it, without making that place first.
+                KrlArrayValue array;
+                KrlCell? cell = null;
+                if (name.Slot >= 0)
+                {
+                    array = (KrlArrayValue)(frame[name.Slot] ??= KrlValues.Default(name.Type));
+                }
+                else
+                {
+                    cell = name.Cell!;
+                    array = (KrlArrayValue)cell.Box[0];
+                }
+                return ElementPlace(index, array, cell, frame);
+            }
             case KrlIndex index:
             {
                 KrlPlace parent = Place(index.Target, frame);
@@ -102,29 +119,34 @@ internal sealed partial class KrlMachine
                     int element = Flat(index, signals.Type, signals.Type.Length, frame);
                     return new KrlPlace([], element, index.Type) { Root = (parent.Root!.Value.Cell, element), Signals = signals };
                 }
-                var array = (KrlArrayValue)parent.Container[parent.Index];
-                int[] sizes = array.Type.Dimensions;
-                KrlExpr?[] indices = index.Each;
-                int flat = 0;
-                for (int d = 0; d < indices.Length; d++)
-                {
-                    int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
-                    int i = indices[d] is { } e ? KrlValues.ToInt(Eval(e, frame)) : 1;
-                    if (i < 1 || i > size)
-                    {
-                        throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
-                    }
-                    flat = flat * size + (i - 1);
-                }
-                if (index.Each[^1] is null)
-                {
-                    return new KrlPlace(array.Items, flat, index.Type, sizes[^1]) { Root = parent.Root is { } r ? (r.Cell, -1) : null };
-                }
-                return new KrlPlace(array.Items, flat, index.Type) { Root = parent.Root is { } root ? (root.Cell, flat) : null };
+                return ElementPlace(index, (KrlArrayValue)parent.Container[parent.Index], parent.Root?.Cell, frame);
             }
             default:
                 throw new KrlRuntimeException("only a variable can be written");
         }
+    }
+
+    /// <summary>The element (or, with the last index left out, the row) of <paramref name="array"/> that <paramref name="index"/> selects; <paramref name="cell"/> is the variable it is part of (null for a local).</summary>
+    private KrlPlace ElementPlace(KrlIndex index, KrlArrayValue array, KrlCell? cell, object[] frame)
+    {
+        int[] sizes = array.Type.Dimensions;
+        KrlExpr?[] indices = index.Each;
+        int flat = 0;
+        for (int d = 0; d < indices.Length; d++)
+        {
+            int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
+            int i = indices[d] is { } e ? KrlValues.ToInt(Eval(e, frame)) : 1;
+            if (i < 1 || i > size)
+            {
+                throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
+            }
+            flat = flat * size + (i - 1);
+        }
+        if (indices[^1] is null)
+        {
+            return new KrlPlace(array.Items, flat, index.Type, sizes[^1]) { Root = cell is null ? null : (cell, -1) };
+        }
+        return new KrlPlace(array.Items, flat, index.Type) { Root = cell is null ? null : (cell, flat) };
     }
 
     /// <summary>
@@ -177,6 +199,25 @@ internal sealed partial class KrlMachine
                 {
                     _writes++; // the driver's FOR over a ring slot's 80 characters wrote unwatched data: 3 conditions per character
                     (index.Target as KrlName)?.Cell?.CountWrite();
+                }
+                return;
+            }
+            case KrlMember { Target: KrlName { Slot: >= 0 } local } member:
+            {
+                // A component of a local structure (the driver's target.X = … and pose.X = …, twelve an action): what its place
+                // would do, without making the place.
+                var structure = (KrlStructValue)(frame[local.Slot] ??= KrlValues.Default(local.Type));
+                if (structure.Shared)
+                {
+                    structure = structure.Copy();
+                    frame[local.Slot] = structure;
+                }
+                int field = member.FieldIndex;
+                structure.Values[field] = KrlConvert.To(member.Type, value, structure.Values[field]);
+                structure.Give(field);
+                if (_watchesAll || _watchesComputed)
+                {
+                    _writes++;
                 }
                 return;
             }

@@ -295,11 +295,11 @@ internal sealed partial class KrlTwinController
         return Status(remaining, value is null ? 0 : 1, 0, connected);
     }
 
-    private static object EkiInt(string value) => (int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture));
+    private static object EkiInt(string value) => KrlValues.Box((int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture)));
 
     private static object EkiReal(string value) => double.Parse(value, CultureInfo.InvariantCulture);
 
-    private static object EkiBool(string value) => value is "1" || value.Equals("true", StringComparison.OrdinalIgnoreCase);
+    private static object EkiBool(string value) => KrlValues.Box(value is "1" || value.Equals("true", StringComparison.OrdinalIgnoreCase));
 
     /// <summary>
     /// EKI_GetIntArray, EKI_GetRealArray, EKI_GetBoolArray: the next values of the tag's memory into the array from its first

@@ -80,11 +80,16 @@ internal sealed partial class KrlTwinController
         InputsChanged();
     }
 
+    /// <summary>$FLAG's cell, found once (a channel's reader sets a flag for every document it receives).</summary>
+    private KrlCell FlagCell => _flagCell ??= Environment.System["$FLAG"];
+
+    private KrlCell? _flagCell;
+
     /// <summary>Sets flag <paramref name="number"/> (1-based) and wakes a waiting program.</summary>
     public void SetFlag(int number, bool value)
     {
-        object[] flags = ((KrlArrayValue)Environment.System["$FLAG"].Value).Items;
-        flags[number - 1] = value;
+        object[] flags = ((KrlArrayValue)FlagCell.Value).Items;
+        flags[number - 1] = KrlValues.Box(value);
         InputsChanged();
     }
 

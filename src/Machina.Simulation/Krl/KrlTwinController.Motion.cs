@@ -18,7 +18,14 @@ internal sealed partial class KrlTwinController
     private CancellationToken _motionCancellation;
 
     /// <summary>Joints of an AXIS or E6AXIS value.</summary>
-    public static Joints JointsOf(KrlStructValue axes) => new(axes.Number("A1"), axes.Number("A2"), axes.Number("A3"), axes.Number("A4"), axes.Number("A5"), axes.Number("A6"));
+    public static Joints JointsOf(KrlStructValue axes)
+    {
+        int[] indexes = axes.Type.AxisIndexes;
+        object[] values = axes.Values;
+        return new(Axis(0), Axis(1), Axis(2), Axis(3), Axis(4), Axis(5));
+
+        double Axis(int i) => indexes[i] >= 0 ? KrlValues.ToReal(values[indexes[i]]) : 0;
+    }
 
     /// <summary>An E6AXIS value of <paramref name="joints"/>.</summary>
     public static KrlStructValue AxesValue(Joints joints)
@@ -40,7 +47,7 @@ internal sealed partial class KrlTwinController
     /// <summary>An E6POS of the TCP at <paramref name="tcp"/> (base frame of the robot) in $BASE, with S and T of <paramref name="joints"/>.</summary>
     private KrlStructValue PositionOf(Pose tcp, Joints joints)
     {
-        Pose pose = FrameOf("$BASE").Inverse() * tcp;
+        Pose pose = BaseFrame().Inverse() * tcp;
         YawPitchRoll abc = pose.Rotation.ToYawPitchRoll();
         KukaConfiguration configuration = KukaConfiguration.From(Options.Model, joints);
         var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Pos);
@@ -57,14 +64,14 @@ internal sealed partial class KrlTwinController
             object[] items = ((KrlArrayValue)Environment.System[name].Value).Items;
             Array.Fill(items, 100);
         }
-        ((KrlStructValue)Environment.System["$VEL"].Value).Values[0] = Options.DefaultCpVelocity;
-        ((KrlStructValue)Environment.System["$ACC"].Value).Values[0] = Options.DefaultCpAcceleration;
+        ((KrlStructValue)Motion.Vel.Value).Values[0] = Options.DefaultCpVelocity;
+        ((KrlStructValue)Motion.Acc.Value).Values[0] = Options.DefaultCpAcceleration;
     }
 
     /// <summary>$ADVANCE was written: KRL allows 0 to 5.</summary>
     public void AdvanceChanged()
     {
-        if ((int)Environment.System["$ADVANCE"].Value is < 0 or > 5)
+        if ((int)Motion.Advance.Value is < 0 or > 5)
         {
             throw new KrlRuntimeException("Value assignment inadmissible: $ADVANCE takes 0 to 5");
         }
@@ -74,8 +81,8 @@ internal sealed partial class KrlTwinController
     public void ToolChanged()
     {
         Arm.FinishBlend(_motionCancellation);
-        Arm.ToolCenter = FrameOf("$TOOL");
-        Arm.Record(Line, TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Environment.System["$TOOL"].Value));
+        Arm.ToolCenter = KeptTool().Pose;
+        Arm.Record(Line, TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Motion.Tool.Value));
     }
 
     /// <summary>
@@ -84,7 +91,7 @@ internal sealed partial class KrlTwinController
     /// </summary>
     public Joints? Solve(KrlStructValue position, Joints near, bool useStatusTurn, out string why)
     {
-        KeptFrame baseFrame = Kept("$BASE"), tool = Kept("$TOOL");
+        KeptFrame baseFrame = KeptBase(), tool = KeptTool();
         Span<double> target = stackalloc double[6];
         PoseComponents(position, target);
         IKinematics kinematics = Options.Model.Kinematics;
@@ -164,7 +171,7 @@ internal sealed partial class KrlTwinController
                 ?? throw new KrlRuntimeException($"Target not reachable: {kind} {DescribeXyz(position)}: {why}");
             RequireSoftLimits(end);
             Pose from = PoseOf(current), to = PoseOf(position);
-            goal = FrameOf("$BASE") * to;
+            goal = BaseFrame() * to;
             pathMm = (to.Position - from.Position).Length;
             turnDegrees = TwinRotation.AngleDegrees(from.Rotation, to.Rotation);
             if (kind == "CIRC" && auxiliary is not null)
@@ -172,20 +179,21 @@ internal sealed partial class KrlTwinController
                 // The circle through the start, the auxiliary point and the end, in the robot's base frame; the tool turns evenly
                 // from the start to the end orientation in space ($ORI_TYPE #VAR, $CIRC_TYPE #BASE; the auxiliary point's is not used).
                 Pose via = PoseOf(ToStruct(auxiliary, current, KrlTypes.E6Pos, axesOnly: false)!);
-                Pose frame = FrameOf("$BASE");
+                Pose frame = BaseFrame();
                 arc = TwinArc.Through(frame * from, (frame * via).Position, frame * to, TwinArcOrientation.Even) ?? throw new KrlRuntimeException(string.Create(CultureInfo.InvariantCulture,
                     $"Circle not possible: CIRC: the start, auxiliary and end points do not define a circle {TwinArc.NotACircle}"));
                 pathMm = arc.LengthMm;
             }
         }
         double seconds = kind == "PTP" ? AxisSeconds(start, end) : PathSeconds(pathMm, turnDegrees);
-        bool bco = Interlocked.Exchange(ref _coincident, 1) == 0;
+        // Only the first motion of a run looks with a locked exchange (a locked instruction at every motion before).
+        bool bco = Volatile.Read(ref _coincident) == 0 && Interlocked.Exchange(ref _coincident, 1) == 0;
         string text = bco ? kind + (approximation is null ? "" : " " + approximation) + " " + BcoRun : MotionText(kind, approximation);
         if (kind == "LIN" && goal is { } tcp && !bco)
         {
             (double v, double acceleration) = PathSpeed();
             double zone = ApproximationMm(approximation, pathMm, turnDegrees, v, acceleration);
-            bool mayBlend = zone > 0 && (int)Environment.System["$ADVANCE"].Value >= 1 && !HasExternalInputs;
+            bool mayBlend = zone > 0 && (int)Motion.Advance.Value >= 1 && !HasExternalInputs;
             Arm.MoveLinear(new TwinLinearMove(tcp, end, v, acceleration, seconds, zone, mayBlend), line, text, cancellation);
             return;
         }
@@ -209,8 +217,8 @@ internal sealed partial class KrlTwinController
     /// <summary>$VEL.CP (m/s) and $ACC.CP (m/s²).</summary>
     private (double Speed, double Acceleration) PathSpeed()
     {
-        var vel = (KrlStructValue)Environment.System["$VEL"].Value;
-        var acc = (KrlStructValue)Environment.System["$ACC"].Value;
+        var vel = (KrlStructValue)Motion.Vel.Value;
+        var acc = (KrlStructValue)Motion.Acc.Value;
         return (KrlValues.ToReal(vel.Values[0]), Math.Max(KrlValues.ToReal(acc.Values[0]), 1e-6));
     }
 
@@ -221,7 +229,7 @@ internal sealed partial class KrlTwinController
     /// </summary>
     private double ApproximationMm(string? approximation, double pathMm, double turnDegrees, double speed, double acceleration)
     {
-        var apo = (KrlStructValue)Environment.System["$APO"].Value;
+        var apo = (KrlStructValue)Motion.Apo.Value;
         double mm = approximation?.ToUpperInvariant() switch
         {
             "C_DIS" => KrlValues.ToReal(apo.Values[2]),
@@ -255,8 +263,8 @@ internal sealed partial class KrlTwinController
 
     private void RequireSoftLimits(Joints joints)
     {
-        object[] min = ((KrlArrayValue)Environment.System["$SOFTN_END"].Value).Items;
-        object[] max = ((KrlArrayValue)Environment.System["$SOFTP_END"].Value).Items;
+        object[] min = ((KrlArrayValue)Motion.SoftMin.Value).Items;
+        object[] max = ((KrlArrayValue)Motion.SoftMax.Value).Items;
         for (int i = 0; i < 6; i++)
         {
             if (joints[i] < (double)min[i] - 1e-9 || joints[i] > (double)max[i] + 1e-9)
@@ -274,8 +282,8 @@ internal sealed partial class KrlTwinController
     /// <summary>PTP time: the slowest axis at $VEL_AXIS % of its speed, ramping at $ACC_AXIS %.</summary>
     private double AxisSeconds(Joints from, Joints to)
     {
-        object[] vel = ((KrlArrayValue)Environment.System["$VEL_AXIS"].Value).Items;
-        object[] acc = ((KrlArrayValue)Environment.System["$ACC_AXIS"].Value).Items;
+        object[] vel = ((KrlArrayValue)Motion.VelAxis.Value).Items;
+        object[] acc = ((KrlArrayValue)Motion.AccAxis.Value).Items;
         double seconds = 0;
         for (int i = 0; i < 6; i++)
         {
@@ -290,8 +298,8 @@ internal sealed partial class KrlTwinController
     /// <summary>LIN and CIRC time: the path at $VEL.CP with $ACC.CP, or the turn at $VEL.ORI1 with $ACC.ORI1 if slower.</summary>
     private double PathSeconds(double mm, double degrees)
     {
-        var vel = (KrlStructValue)Environment.System["$VEL"].Value;
-        var acc = (KrlStructValue)Environment.System["$ACC"].Value;
+        var vel = (KrlStructValue)Motion.Vel.Value;
+        var acc = (KrlStructValue)Motion.Acc.Value;
         double cp = KrlValues.ToReal(vel.Values[0]);
         if (!(cp > 0) && mm > 0)
         {

@@ -38,30 +38,24 @@ internal sealed partial class KrlTwinController
         public string Why { get; } = why;
     }
 
-    /// <summary>$BASE or $TOOL as a pose (taken again while its components are the same).</summary>
-    private Pose FrameOf(string name) => Kept(name).Pose;
+    /// <summary>$BASE as a pose (taken again while its components are the same).</summary>
+    private Pose BaseFrame() => KeptBase().Pose;
 
-    private KeptFrame Kept(string name)
+    private KeptFrame KeptBase() => Kept(Motion.Base, ref _keptBase);
+
+    private KeptFrame KeptTool() => Kept(Motion.Tool, ref _keptTool);
+
+    /// <summary>The frame kept in <paramref name="kept"/> while the one in <paramref name="cell"/> has its components, else the frame now (kept).</summary>
+    private static KeptFrame Kept(KrlCell cell, ref KeptFrame? kept)
     {
-        bool isBase = name == "$BASE";
-        var frame = (KrlStructValue)Environment.System[name].Value;
+        var frame = (KrlStructValue)cell.Value;
         Span<double> components = stackalloc double[6];
         PoseComponents(frame, components);
-        KeptFrame? kept = isBase ? _keptBase : name == "$TOOL" ? _keptTool : null;
-        if (kept is not null && Same(kept.Components, components))
+        if (kept is { } now && Same(now.Components, components))
         {
-            return kept;
+            return now;
         }
-        kept = new KeptFrame(components.ToArray(), PoseOf(components));
-        if (isBase)
-        {
-            _keptBase = kept;
-        }
-        else if (name == "$TOOL")
-        {
-            _keptTool = kept;
-        }
-        return kept;
+        return kept = new KeptFrame(components.ToArray(), PoseOf(components));
     }
 
     /// <summary>X, Y, Z, A, B and C of a FRAME, POS or E6POS value (0 for a component its type lacks).</summary>

@@ -18,6 +18,7 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         : base(options ?? new KrlTwinOptions(), interpolates: true, movesWhileServing: true)
     {
         KrlSystemVariables.AddTo(Environment, this);
+        Motion = new KrlMotionCells(Environment.System);
         KrlBuiltins.AddTo(Environment);
         KrlBasicPackage.AddTo(Environment);
         KrlSystemVariables.AddMeasured(Environment, this);
@@ -43,6 +44,9 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
 
     /// <summary>The system variables, signals and built-in routines.</summary>
     public KrlEnvironment Environment { get; } = new();
+
+    /// <summary>The system variables a motion reads, found once.</summary>
+    internal KrlMotionCells Motion { get; }
 
     /// <summary>The loaded modules, by name.</summary>
     public IReadOnlyDictionary<string, KrlModule> Modules => _modules;

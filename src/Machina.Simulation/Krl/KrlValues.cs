@@ -42,6 +42,11 @@ internal sealed class KrlStructValue(KrlType type, object[] values)
     /// <summary>A deep copy (KRL structures are values); the copy is the holder's own.</summary>
     public KrlStructValue Copy()
     {
+        if (KrlValues.HasSimpleComponents(Type))
+        {
+            // Only shared boxes, which are never changed (a store replaces them): the array's copy is the deep copy.
+            return new KrlStructValue(Type, (object[])Values.Clone()) { Unset = Unset };
+        }
         var values = new object[Values.Length];
         for (int i = 0; i < values.Length; i++)
         {
@@ -125,12 +130,9 @@ internal static class KrlValues
                 return new KrlEnumValue("");
             case KrlKind.Struct:
             {
-                IReadOnlyList<(string Name, KrlType Type)> fields = type.Fields;
-                var values = new object[fields.Count];
-                for (int i = 0; i < values.Length; i++)
-                {
-                    values[i] = Default(fields[i].Type);
-                }
+                // A structure of simple components (E6POS, E6AXIS, FRAME, EKI_STATUS: several an action) copies its initial values.
+                object[] template = type.DefaultComponents ??= ScalarDefaults(type);
+                object[] values = ReferenceEquals(template, NotScalar) ? DefaultComponents(type) : (object[])template.Clone();
                 return new KrlStructValue(type, values) { Unset = KrlTypes.StatusTurnBits(type) };
             }
             default:
@@ -144,6 +146,26 @@ internal static class KrlValues
             }
         }
     }
+
+    /// <summary>The marker of a structure with a component that is not an INT, REAL, BOOL or CHAR (<see cref="KrlType.DefaultComponents"/>).</summary>
+    private static readonly object[] NotScalar = new object[1];
+
+    private static object[] DefaultComponents(KrlType type)
+    {
+        IReadOnlyList<(string Name, KrlType Type)> fields = type.Fields;
+        var values = new object[fields.Count];
+        for (int i = 0; i < values.Length; i++)
+        {
+            values[i] = Default(fields[i].Type);
+        }
+        return values;
+    }
+
+    /// <summary>True when each component of the structure type <paramref name="type"/> is an INT, REAL, BOOL or CHAR.</summary>
+    public static bool HasSimpleComponents(KrlType type) => !ReferenceEquals(type.DefaultComponents ??= ScalarDefaults(type), NotScalar);
+
+    private static object[] ScalarDefaults(KrlType type) =>
+        type.Fields.All(f => f.Type.Kind is KrlKind.Int or KrlKind.Real or KrlKind.Bool or KrlKind.Char) ? DefaultComponents(type) : NotScalar;
 
     /// <summary>A copy of a value (structures and arrays deep, the rest as is).</summary>
     public static object Copy(object value) => value switch
@@ -185,12 +207,20 @@ internal static class KrlValues
         return text.ToString();
     }
 
-    /// <summary>Copies <paramref name="text"/> into a CHAR array (the rest unset); characters beyond its size are cut.</summary>
+    /// <summary>
+    /// Copies <paramref name="text"/> into a CHAR array (the rest unset); characters beyond its size are cut. An element that
+    /// already holds the character's shared box is not stored again: the driver's EKI_GetString writes a slot's 80 characters at
+    /// every action, most of them the same unset ones, and each store of a reference is a write barrier.
+    /// </summary>
     public static void SetText(object[] items, int start, int length, string text)
     {
         for (int i = 0; i < length; i++)
         {
-            items[start + i] = Box(i < text.Length ? text[i] : '\0');
+            object box = Box(i < text.Length ? text[i] : '\0');
+            if (!ReferenceEquals(items[start + i], box))
+            {
+                items[start + i] = box;
+            }
         }
     }
 
