@@ -87,6 +87,27 @@ internal static class RapidValues
         _ => value,
     };
 
+    /// <summary>
+    /// Copies the components of <paramref name="from"/> into <paramref name="into"/>, a record of the same type that nothing else
+    /// refers to (its nested records too, which are its own): the value <see cref="Copy"/> gives, without a new record.
+    /// </summary>
+    public static void CopyInto(RapidRecord into, RapidRecord from)
+    {
+        object[] target = into.Fields, source = from.Fields;
+        for (int i = 0; i < source.Length; i++)
+        {
+            object field = source[i];
+            if (field is RapidRecord nested && target[i] is RapidRecord own && own.Type == nested.Type)
+            {
+                CopyInto(own, nested);
+            }
+            else
+            {
+                target[i] = Copy(field);
+            }
+        }
+    }
+
     private static object[] CopyAll(object[] items)
     {
         var copy = new object[items.Length];
