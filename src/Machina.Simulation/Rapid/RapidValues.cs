@@ -87,6 +87,28 @@ internal static class RapidValues
         _ => value,
     };
 
+    /// <summary>Gives <paramref name="record"/>, which nothing else refers to, the initial value of its type in place (<see cref="DefaultRecord"/>'s value).</summary>
+    public static void ResetToDefault(RapidRecord record)
+    {
+        object?[] scalars = record.Type.ScalarDefaults;
+        object[] fields = record.Fields;
+        for (int i = 0; i < fields.Length; i++)
+        {
+            if (scalars[i] is { } scalar)
+            {
+                fields[i] = scalar;
+            }
+            else if (fields[i] is RapidRecord nested && record.Type.Fields[i].Type is { Rank: 0 } type && nested.Type == type.Element)
+            {
+                ResetToDefault(nested);
+            }
+            else
+            {
+                fields[i] = Default(record.Type.Fields[i].Type);
+            }
+        }
+    }
+
     /// <summary>
     /// Copies the components of <paramref name="from"/> into <paramref name="into"/>, a record of the same type that nothing else
     /// refers to (its nested records too, which are its own): the value <see cref="Copy"/> gives, without a new record.
