@@ -9,11 +9,10 @@ namespace Machina.Tests.Simulation.Twin;
 /// </summary>
 public class TwinArmLimitCheckTests
 {
-    private static readonly RobotModel Model = RobotModels.Get("KR 6 R900 sixx");
-    private static readonly Joints Start = new(0, -90, 90, 0, 45, 0);
-    private static readonly Joints Other = new(10, -80, 85, 5, 40, -5);
+    private static readonly RobotModel Model = TwinArmForwardTests.Model;
+    private static readonly Joints Other = TwinArmForwardTests.Other;
 
-    private static TwinArm Arm() => new(Model, Start, new TwinClock(TimeProvider.System, realTime: false));
+    private static TwinArm Arm() => TwinArmForwardTests.Arm();
 
     [Fact]
     public void SameJointsTwice_AreLookedAtOnce()
