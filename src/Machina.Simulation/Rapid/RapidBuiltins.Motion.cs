@@ -73,8 +73,9 @@ internal static partial class RapidBuiltins
             arm.FinishBlend(task.CancellationToken); // only a MoveL with the same tool rounds the corner: the arm stops first
         }
         TwinBlend? blend = arm.PendingBlend;
-        Pose start = blend?.Corner ?? arm.Flange * tool;
-        Joints near = blend?.CornerJoints ?? arm.Joints;
+        Joints stands = arm.Joints; // read once: each read takes the arm's gate
+        Pose start = blend?.Corner ?? arm.FlangeAt(stands) * tool;
+        Joints near = blend?.CornerJoints ?? stands;
         Pose goal = wobj * RapidGeometry.ToPose(target, call.Line);
         Joints joints;
         double path;

@@ -44,6 +44,24 @@ internal sealed class RapidFrame(RapidRoutine routine)
         return cell;
     }
 
+    /// <summary>
+    /// The record datum <paramref name="slot"/> held at the routine's last call, given its initial value again (RAPID reference,
+    /// "Data declarations": a routine's VAR data get their initial values at each call), or null when there is none: the record of
+    /// a PROC's or TRAP's VAR datum without an initial value is its own until the call returns (every value it is given is a copy or
+    /// a new aggregate, a routine that takes it as an IN parameter has returned, and a PROC returns no value), so the next call can
+    /// use it again instead of a new one (our driver's ExecuteNext: <c>VAR MachinaRequest r</c>, 14 components, at every request).
+    /// A FUNC's datum may be the value it returned, which its caller may still hold: never for a FUNC (the caller checks).
+    /// </summary>
+    public RapidRecord? KeptRecord(int slot, RapidDataType type)
+    {
+        if (_own[slot] is { Storage: RapidStorage.Var, Value: RapidRecord kept } && type.Rank == 0 && kept.Type == type.Element)
+        {
+            RapidValues.ResetToDefault(kept);
+            return kept;
+        }
+        return null;
+    }
+
     /// <summary>True when <paramref name="slot"/> holds this frame's own cell (not data of a caller passed by reference).</summary>
     public bool HoldsOwn(int slot) => ReferenceEquals(Cells[slot], _own[slot]);
 

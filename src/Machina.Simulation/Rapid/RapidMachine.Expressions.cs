@@ -72,6 +72,10 @@ internal sealed partial class RapidMachine
     /// </summary>
     public void Store(RapidExpr target, RapidFrame? frame, object value, bool owned = false)
     {
+        if (!owned && value is RapidRecord from && target is RapidName { Global: null } local && IntoOwnRecord(local, frame!, from))
+        {
+            return;
+        }
         if (!owned)
         {
             value = RapidValues.Copy(value);
@@ -110,6 +114,28 @@ internal sealed partial class RapidMachine
             default:
                 throw new RapidRuntimeException(0, target.Line, "only data can be assigned");
         }
+    }
+
+    /// <summary>
+    /// Assigns a record to a routine's own VAR record datum by copying its components into the record the datum holds, instead of
+    /// into a new one (<c>r := requests{i}</c>: a copy of 14 components and its record at every call of our driver's ExecuteNext).
+    /// The datum's record is its own: every value a datum is given is a copy or a new aggregate, and the call's values are made
+    /// anew at each call. Parameters (whose record may be the caller's, <see cref="IsCallersOwn"/>), data of a caller passed by
+    /// reference and global data (read by RWS and other tasks on their own threads) get a new record, as before.
+    /// </summary>
+    private static bool IntoOwnRecord(RapidName local, RapidFrame frame, RapidRecord from)
+    {
+        if (local.Slot < frame.Routine.Parameters.Count || !frame.HoldsOwn(local.Slot))
+        {
+            return false;
+        }
+        RapidCell cell = frame.Cells[local.Slot];
+        if (cell.Storage != RapidStorage.Var || cell.Value is not RapidRecord into || into.Type != from.Type)
+        {
+            return false;
+        }
+        RapidValues.CopyInto(into, from);
+        return true;
     }
 
     /// <summary>Counts the write of a component or element when the data it belongs to is persistent.</summary>

@@ -390,7 +390,8 @@ internal sealed partial class RapidMachine(RapidTask task)
                         throw Budget(decl.Line, $"the routines' local data hold more than {Limits.MaxTotalElements:N0} array elements (the twin's limit)");
                     }
                 }
-                object value = decl.Initial is null ? RapidValues.Default(type, dims) : RapidValues.Copy(Evaluate(decl.Initial, frame));
+                object value = decl.Initial is not null ? RapidValues.Copy(Evaluate(decl.Initial, frame))
+                    : (dims.Length == 0 && routine.Kind != RapidRoutineKind.Func ? frame.KeptRecord(slot, type) : null) ?? RapidValues.Default(type, dims);
                 frame.Own(slot++, decl.Name, type, decl.Storage, value);
             }
             RapidFlow flow = routine.UndoHandler is null ? ExecuteBlock(routine.Body, frame) : ExecuteUndoable(routine, frame);

@@ -87,6 +87,49 @@ internal static class RapidValues
         _ => value,
     };
 
+    /// <summary>Gives <paramref name="record"/>, which nothing else refers to, the initial value of its type in place (<see cref="DefaultRecord"/>'s value).</summary>
+    public static void ResetToDefault(RapidRecord record)
+    {
+        object?[] scalars = record.Type.ScalarDefaults;
+        object[] fields = record.Fields;
+        for (int i = 0; i < fields.Length; i++)
+        {
+            if (scalars[i] is { } scalar)
+            {
+                fields[i] = scalar;
+            }
+            else if (fields[i] is RapidRecord nested && record.Type.Fields[i].Type is { Rank: 0 } type && nested.Type == type.Element)
+            {
+                ResetToDefault(nested);
+            }
+            else
+            {
+                fields[i] = Default(record.Type.Fields[i].Type);
+            }
+        }
+    }
+
+    /// <summary>
+    /// Copies the components of <paramref name="from"/> into <paramref name="into"/>, a record of the same type that nothing else
+    /// refers to (its nested records too, which are its own): the value <see cref="Copy"/> gives, without a new record.
+    /// </summary>
+    public static void CopyInto(RapidRecord into, RapidRecord from)
+    {
+        object[] target = into.Fields, source = from.Fields;
+        for (int i = 0; i < source.Length; i++)
+        {
+            object field = source[i];
+            if (field is RapidRecord nested && target[i] is RapidRecord own && own.Type == nested.Type)
+            {
+                CopyInto(own, nested);
+            }
+            else
+            {
+                target[i] = Copy(field);
+            }
+        }
+    }
+
     private static object[] CopyAll(object[] items)
     {
         var copy = new object[items.Length];
@@ -111,16 +154,32 @@ internal static class RapidValues
     /// True when <paramref name="a"/> and <paramref name="b"/> hold the same value to the bit (numbers by their bits: 0 and -0 differ,
     /// a NaN is its own), so that a copy of one may stand for the other; data that are not values are compared by reference.
     /// </summary>
-    public static bool Identical(object a, object b) => (a, b) switch
+    public static bool Identical(object a, object b)
     {
-        (double x, double y) => BitConverter.DoubleToInt64Bits(x) == BitConverter.DoubleToInt64Bits(y),
-        (bool x, bool y) => x == y,
-        (string x, string y) => string.Equals(x, y, StringComparison.Ordinal),
-        (RapidRecord x, RapidRecord y) => x.Type == y.Type && AllIdentical(x.Fields, y.Fields),
-        (RapidArray x, RapidArray y) => x.Dimensions.AsSpan().SequenceEqual(y.Dimensions) && AllIdentical(x.Items, y.Items),
-        (double or bool or string or RapidRecord or RapidArray, _) => false,
-        _ => ReferenceEquals(a, b),
-    };
+        // Tests of one value at a time, commonest first (a motion compares its tooldata and wobjdata, ~40 components, at every
+        // move): the switch on the pair of values this replaces tested each case on both and cost ~8,800 instructions per move.
+        if (a is double x)
+        {
+            return b is double y && BitConverter.DoubleToInt64Bits(x) == BitConverter.DoubleToInt64Bits(y);
+        }
+        if (a is RapidRecord r)
+        {
+            return b is RapidRecord q && r.Type == q.Type && AllIdentical(r.Fields, q.Fields);
+        }
+        if (a is string s)
+        {
+            return b is string t && string.Equals(s, t, StringComparison.Ordinal);
+        }
+        if (a is bool p)
+        {
+            return b is bool o && p == o;
+        }
+        if (a is RapidArray m)
+        {
+            return b is RapidArray n && m.Dimensions.AsSpan().SequenceEqual(n.Dimensions) && AllIdentical(m.Items, n.Items);
+        }
+        return ReferenceEquals(a, b);
+    }
 
     private static bool AllIdentical(object[] a, object[] b)
     {

@@ -58,7 +58,11 @@ internal sealed partial class TwinArm
         RequireWithinLimits(move.Joints);
         Pose target = move.Target;
         double v = move.Speed, a = move.Acceleration;
-        Pose from = PendingBlend?.Corner ?? Tcp;
+        // Where the arm stands, read once: no motion runs while its own task plans the next one (each read of the joints and of
+        // the tool centre takes the gate, and the tool centre is a pose product).
+        Joints here = Joints;
+        TwinBlend? pending = PendingBlend;
+        Pose from = pending?.Corner ?? FlangeAt(here) * ToolCenter;
         double metres = (target.Position - from.Position).Length / 1000;
         bool blendable = metres >= BlendModel.MinLength && v > 0 && !BlendModel.TurnDominates(move.PlainSeconds, metres, v, a);
         if (!blendable)
@@ -68,8 +72,8 @@ internal sealed partial class TwinArm
             return;
         }
         TwinBlend? blend = TakeBlend();
-        Pose start = blend?.Corner ?? Tcp;
-        Joints first = blend?.CornerJoints ?? Joints;
+        Pose start = blend?.Corner ?? (pending is null ? from : FlangeAt(here) * ToolCenter);
+        Joints first = blend?.CornerJoints ?? here;
         // The blend around the last waypoint (m): from the zone's entry past the waypoint to the exit leg along this motion.
         double exitLeg = blend is null ? 0 : Math.Min(blend.Radius, metres / 2);
         Pose exit = blend is null ? start : TwinBlendedLine.Straight(start, target, exitLeg / metres); // no blend: not used
@@ -91,7 +95,7 @@ internal sealed partial class TwinArm
         Joints end = radius > 0 ? Near(way.At(total), Lerp(first, move.Joints, (metres - radius) / metres)) : move.Joints;
         double seconds = blendSeconds + profile.Seconds;
         // The path is made only when the arm is part-way along it (an interpolated or woken motion): a motion in one step needs none.
-        bool reached = MoveTo(end, seconds, line, text, cancellation, move.Joints, true, true, new BlendedPath(this, way, total, Joints, end), null);
+        bool reached = MoveTo(end, seconds, line, text, cancellation, move.Joints, true, true, new BlendedPath(this, way, total, here, end), null);
         if (radius > 0 && reached) // a cleared path ends it early: the arm stands where it stopped, nothing to blend
         {
             lock (_gate)

@@ -15,6 +15,10 @@ internal sealed partial class TwinArm
     private Pose _forwardFlange;
     private bool _hasForward;
 
+    // The last joints found within the limits (under the gate): see RequireWithinLimits.
+    private Joints _withinJoints;
+    private bool _hasWithin;
+
     /// <summary>An arm of <paramref name="model"/> at <paramref name="start"/> joints (degrees).</summary>
     public TwinArm(RobotModel model, Joints start, TwinClock clock)
     {
@@ -87,6 +91,9 @@ internal sealed partial class TwinArm
     /// <summary>How many times the forward kinematics ran for this arm (<see cref="FlangeAt"/>'s misses; tests count them).</summary>
     internal int ForwardSolves { get; private set; }
 
+    /// <summary>How many times <see cref="RequireWithinLimits"/> looked at the joint limits (its misses; tests count them).</summary>
+    internal int LimitChecks { get; private set; }
+
     /// <summary>The tool centre point now (mm, base frame).</summary>
     public Pose Tcp => Flange * ToolCenter;
 
@@ -124,14 +131,30 @@ internal sealed partial class TwinArm
 
     /// <summary>Checks that <paramref name="joints"/> are within the joint limits.</summary>
     /// <exception cref="TwinMotionException">A joint is beyond its limit.</exception>
+    /// <remarks>
+    /// A motion's target is checked where the language asks (to raise its own error) and again where the arm starts the motion:
+    /// joints the same to the bit as the last ones found within the limits are not looked at again (the limits do not change).
+    /// </remarks>
     public void RequireWithinLimits(Joints joints)
     {
+        lock (_gate)
+        {
+            if (_hasWithin && SameBits.Of(joints, _withinJoints))
+            {
+                return;
+            }
+            LimitChecks++;
+        }
         if (!Model.IsWithinLimits(joints))
         {
             double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
             int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
             throw new TwinMotionException(FormattableString.Invariant(
                 $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
+        }
+        lock (_gate)
+        {
+            (_withinJoints, _hasWithin) = (joints, true);
         }
     }
 

@@ -10,11 +10,17 @@ namespace Machina.Tests.Simulation.Twin;
 /// </summary>
 public class TwinArmForwardTests
 {
-    private static readonly RobotModel Model = RobotModels.Get("KR 6 R900 sixx");
-    private static readonly Joints Start = new(0, -90, 90, 0, 45, 0);
-    private static readonly Joints Other = new(10, -80, 85, 5, 40, -5);
+    /// <summary>The arm's model in these tests.</summary>
+    internal static readonly RobotModel Model = RobotModels.Get("KR 6 R900 sixx");
 
-    private static TwinArm Arm() => new(Model, Start, new TwinClock(TimeProvider.System, realTime: false));
+    /// <summary>Where the arm starts.</summary>
+    internal static readonly Joints Start = new(0, -90, 90, 0, 45, 0);
+
+    /// <summary>Other joints within the limits.</summary>
+    internal static readonly Joints Other = new(10, -80, 85, 5, 40, -5);
+
+    /// <summary>An arm at <see cref="Start"/> whose motions take program time.</summary>
+    internal static TwinArm Arm() => new(Model, Start, new TwinClock(TimeProvider.System, realTime: false));
 
     [Fact]
     public void Tcp_ReadTwice_SolvesOnce_AndIsTheKinematicsPose_BitForBit()
