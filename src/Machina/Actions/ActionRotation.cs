@@ -95,39 +95,66 @@ public sealed record ActionRotation : RobotAction
         return at + WriteAxis(destination[at..], Request.Axis);
     }
 
+    /// <inheritdoc cref="TryWriteDescription"/>
+    /// <remarks>The ASCII bytes of <see cref="TryWriteDescription"/>'s text; −1 also when a number takes .NET's general text.</remarks>
+    internal override int TryWriteDescriptionAscii(Span<byte> destination)
+    {
+        if (!Relative)
+        {
+            return -1;
+        }
+        "Rotate "u8.CopyTo(destination);
+        int at = 7;
+        int written = NumShortest.TryWrite(destination[at..], Request.Angle);
+        if (written < 0)
+        {
+            return -1;
+        }
+        at += written;
+        " deg around "u8.CopyTo(destination[at..]);
+        at += 12;
+        written = IsAlongAnAxis(Request.Axis) ? WriteUnitAxis(destination[at..], Request.Axis) : DescriptionAscii.TryWriteVector(destination[at..], Request.Axis);
+        return written < 0 ? -1 : at + written;
+    }
+
     /// <summary>
     /// The axis as <see cref="Vector.WriteText"/> writes it (<c>[x, y, z]</c>, 3 decimals). An axis along X, Y or Z (each component
     /// exactly 0, 1 or -1: most turns of a toolpath) is written digit by digit: three numbers less to format per turn.
     /// </summary>
-    internal static int WriteAxis(Span<char> destination, Vector axis)
+    internal static int WriteAxis(Span<char> destination, Vector axis) =>
+        IsAlongAnAxis(axis) ? WriteUnitAxis(destination, axis) : axis.WriteText(destination, ", ");
+
+    /// <summary>True when each component is exactly 0, 1 or -1 (<see cref="IsSignedDigit"/>).</summary>
+    private static bool IsAlongAnAxis(Vector axis) => IsSignedDigit(axis.X) && IsSignedDigit(axis.Y) && IsSignedDigit(axis.Z);
+
+    /// <summary>Writes an axis along X, Y or Z digit by digit, as characters or ASCII bytes; returns the count.</summary>
+    private static int WriteUnitAxis<T>(Span<T> destination, Vector axis)
+        where T : unmanaged, System.Numerics.IBinaryInteger<T>
     {
-        if (!(IsSignedDigit(axis.X) && IsSignedDigit(axis.Y) && IsSignedDigit(axis.Z)))
-        {
-            return axis.WriteText(destination, ", ");
-        }
         int at = 0;
-        destination[at++] = '[';
+        destination[at++] = T.CreateTruncating('[');
         at = WriteSignedDigit(destination, at, axis.X);
-        destination[at++] = ',';
-        destination[at++] = ' ';
+        destination[at++] = T.CreateTruncating(',');
+        destination[at++] = T.CreateTruncating(' ');
         at = WriteSignedDigit(destination, at, axis.Y);
-        destination[at++] = ',';
-        destination[at++] = ' ';
+        destination[at++] = T.CreateTruncating(',');
+        destination[at++] = T.CreateTruncating(' ');
         at = WriteSignedDigit(destination, at, axis.Z);
-        destination[at++] = ']';
+        destination[at++] = T.CreateTruncating(']');
         return at;
     }
 
     /// <summary>True for 1, -1 and positive zero (negative zero takes the number writer, which decides its sign).</summary>
     private static bool IsSignedDigit(double value) => value == 1 || value == -1 || BitConverter.DoubleToInt64Bits(value) == 0;
 
-    private static int WriteSignedDigit(Span<char> destination, int at, double value)
+    private static int WriteSignedDigit<T>(Span<T> destination, int at, double value)
+        where T : unmanaged, System.Numerics.IBinaryInteger<T>
     {
         if (value < 0)
         {
-            destination[at++] = '-';
+            destination[at++] = T.CreateTruncating('-');
         }
-        destination[at++] = value == 0 ? '0' : '1';
+        destination[at++] = T.CreateTruncating(value == 0 ? '0' : '1');
         return at;
     }
 

@@ -55,6 +55,23 @@ public sealed record ActionTranslation : RobotAction
     /// <inheritdoc/>
     internal override int TryWriteInstruction(Span<char> destination) => WriteInstruction(destination);
 
+    /// <inheritdoc/>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal override int TryWriteDescriptionAscii(Span<byte> destination)
+    {
+        ReadOnlySpan<byte> verb = Relative ? "Move "u8 : "Move to "u8;
+        verb.CopyTo(destination);
+        int at = verb.Length;
+        int written = DescriptionAscii.TryWriteVector(destination[at..], Translation);
+        if (written < 0)
+        {
+            return -1;
+        }
+        at += written;
+        " mm"u8.CopyTo(destination[at..]);
+        return at + 3;
+    }
+
     /// <summary>
     /// Writes the text of <see cref="Describe"/> into <paramref name="destination"/> and returns its length: compilers with human
     /// comments describe every move of a program of millions, and copy it into their line without a string in between.

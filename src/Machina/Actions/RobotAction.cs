@@ -44,6 +44,14 @@ public abstract record RobotAction
     /// </summary>
     internal virtual int TryWriteDescription(Span<char> destination) => -1;
 
+    /// <summary>
+    /// Writes the ASCII bytes of what <see cref="TryWriteDescription"/> writes (at least <see cref="MaxWrittenDescriptionChars"/>
+    /// bytes of room) and returns their count, or −1 when this action's description is not written so (a number in .NET's
+    /// general text, or a kind of action that writes none: call <see cref="TryWriteDescription"/>). For compilers that write
+    /// their lines as bytes (<see cref="LineSink.BeginAscii"/>): no characters narrowed per line.
+    /// </summary>
+    internal virtual int TryWriteDescriptionAscii(Span<byte> destination) => -1;
+
     /// <summary>Characters enough for <see cref="TryWriteInstruction"/>.</summary>
     internal const int MaxWrittenInstructionChars = 16 + 6 * (NumAppend.MaxChars + 1);
 

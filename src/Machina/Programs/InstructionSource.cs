@@ -107,6 +107,9 @@ internal sealed class InstructionSource(Func<TextReader> open, CancellationToken
     /// <summary>The text itself, from its start, for a compiler's own scan of it (the caller disposes the reader).</summary>
     internal TextReader OpenText() => open();
 
+    /// <summary>The token that stops the reading: a compiler's own scan of the text (<see cref="OpenText"/>) checks it per block, as <see cref="MayContain"/> does.</summary>
+    internal CancellationToken CancellationToken => cancellationToken;
+
     /// <summary>The letters of the motion instructions' names (Move, MoveTo, Rotate, RotateTo, Transform, Axes, …): a toolpath is mostly these.</summary>
     private const string ToolpathLetters = "MoveToRtaAxsTrnfm";
 

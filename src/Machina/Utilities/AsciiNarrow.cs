@@ -43,17 +43,24 @@ internal static class AsciiNarrow
     }
 
     /// <summary>
-    /// Writes <paramref name="opening"/>, the bytes of <paramref name="text"/> and <c>]</c> at <paramref name="at"/> (a line's
-    /// comment such as <c>  ; [Move [1, 2, 3] mm]</c>); returns the position after them, or −1 when the text is not ASCII.
+    /// Writes <paramref name="opening"/>, the description of <paramref name="action"/> and <c>]</c> at <paramref name="at"/> (a
+    /// line's comment such as <c>  ; [Move [1, 2, 3] mm]</c>, room for <see cref="RobotAction.MaxWrittenDescriptionChars"/> + 1
+    /// after the opening): as bytes where the action writes them (<see cref="RobotAction.TryWriteDescriptionAscii"/>), else its
+    /// characters (<see cref="RobotAction.TryWriteDescription"/>, written into <paramref name="scratch"/>) narrowed; returns the
+    /// position after them, or −1 when the action writes neither or its text is not ASCII.
     /// </summary>
-    internal static int TryWriteBracketed(Span<byte> line, int at, ReadOnlySpan<byte> opening, ReadOnlySpan<char> text)
+    internal static int TryWriteDescription(Span<byte> line, int at, ReadOnlySpan<byte> opening, RobotAction action, Span<char> scratch)
     {
         opening.CopyTo(line[at..]);
         at += opening.Length;
-        int written = TryWrite(text, line[at..]);
+        int written = action.TryWriteDescriptionAscii(line[at..]);
         if (written < 0)
         {
-            return -1;
+            int length = action.TryWriteDescription(scratch);
+            if (length < 0 || (written = TryWrite(scratch[..length], line[at..])) < 0)
+            {
+                return -1;
+            }
         }
         at += written;
         line[at] = (byte)']';

@@ -8,7 +8,6 @@ namespace Machina;
 /// <remarks>Values are compared by their bits, so that a text is reused only for exactly the number it was written from.</remarks>
 internal sealed class KeptNumber
 {
-    private readonly char[] _text = new char[NumAppend.MaxChars];
     private readonly byte[] _ascii = new byte[NumAppend.MaxChars];
     private int _length = -1;
     private long _bits;
@@ -19,9 +18,15 @@ internal sealed class KeptNumber
         long bits = BitConverter.DoubleToInt64Bits(value);
         if (_length < 0 || bits != _bits)
         {
-            // G15 text is digits, a sign, a point and E notation's letter: ASCII.
-            _length = NumShortest.WriteGeneral(_text, value);
-            System.Text.Ascii.FromUtf16(_text.AsSpan(0, _length), _ascii, out _);
+            // The shortest digits straight as bytes; G15's general text (E notation, many digits) is written as characters and
+            // narrowed: digits, a sign, a point and E notation's letter are ASCII.
+            _length = NumShortest.TryWrite<byte>(_ascii, value);
+            if (_length < 0)
+            {
+                Span<char> text = stackalloc char[NumAppend.MaxChars];
+                _length = NumShortest.WriteGeneral(text, value);
+                System.Text.Ascii.FromUtf16(text[.._length], _ascii, out _);
+            }
             _bits = bits;
         }
         _ascii.AsSpan(0, _length).CopyTo(destination[at..]);

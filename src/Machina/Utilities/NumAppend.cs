@@ -393,6 +393,27 @@ internal static class NumAppend
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int WriteF(Span<char> destination, double value, int decimals)
     {
+        int written = TryWriteF(destination, value, decimals);
+        if (written >= 0)
+        {
+            return written;
+        }
+        Num.Clean(Math.Round(value, decimals)).TryFormat(destination, out int general, "G15", Num.Inv);
+        return general;
+    }
+
+    /// <summary>
+    /// Writes the ASCII bytes of what <see cref="WriteF"/> writes as characters and returns their count, or −1 where it writes
+    /// .NET's general text (E notation, huge values: the caller writes those as characters).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal static int TryWriteFAscii(Span<byte> destination, double value, int decimals) => TryWriteF(destination, value, decimals);
+
+    /// <summary><see cref="WriteF"/>'s fast digits, or −1 where it takes .NET's general text.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static int TryWriteF<T>(Span<T> destination, double value, int decimals)
+        where T : unmanaged, IBinaryInteger<T>
+    {
         // G15 writes fixed notation down to 0.0001 and E notation below it (1E-05): only the general path writes that.
         if ((uint)decimals <= MaxDecimals && TryScale(value, decimals, out double rounded)
             && (decimals <= 4 || rounded == 0 || Math.Abs(rounded) >= Pow10[decimals - 4]))
@@ -400,7 +421,6 @@ internal static class NumAppend
             // What TryWriteScaled writes, with the scaled value already at hand.
             return WriteDecimal(destination, rounded < 0, (long)Math.Abs(rounded), decimals);
         }
-        Num.Clean(Math.Round(value, decimals)).TryFormat(destination, out int general, "G15", Num.Inv);
-        return general;
+        return -1;
     }
 }

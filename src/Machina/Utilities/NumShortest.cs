@@ -1,3 +1,5 @@
+using System.Numerics;
+
 namespace Machina;
 
 /// <summary>
@@ -13,11 +15,13 @@ internal static class NumShortest
     /// than 9 decimals or 15 digits, or is below 0.0001 or from 10^14 on in size (where "R" and "G15" write E notation), and
     /// the caller must format it the general way. Zero (also −0) is "0".
     /// </summary>
-    internal static int TryWrite(Span<char> destination, double value)
+    /// <remarks>Characters (<see cref="char"/>) or ASCII bytes (<see cref="byte"/>): the same digits either way.</remarks>
+    internal static int TryWrite<T>(Span<T> destination, double value)
+        where T : unmanaged, IBinaryInteger<T>
     {
         if (value == 0)
         {
-            destination[0] = '0';
+            destination[0] = T.CreateTruncating('0');
             return 1;
         }
         double size = Math.Abs(value);
@@ -57,7 +61,8 @@ internal static class NumShortest
     /// number of characters, the text both <see cref="WriteRoundTrip"/> and <see cref="NumAppend.WriteF"/> with 3 decimals write
     /// (−0 as 0); −1 otherwise. <paramref name="milli"/> is the size · 1000 rounded to a whole number either way.
     /// </summary>
-    internal static int TryWriteThousandths(Span<char> destination, double value, out double milli) =>
+    internal static int TryWriteThousandths<T>(Span<T> destination, double value, out double milli)
+        where T : unmanaged, IBinaryInteger<T> =>
         TryThousandths(Math.Abs(value), out milli) ? NumAppend.WriteDecimal(destination, value < 0, (long)milli, 3) : -1;
 
     /// <summary>

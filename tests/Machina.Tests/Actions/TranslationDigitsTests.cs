@@ -16,11 +16,14 @@ public class TranslationDigitsTests
         }
         for (int i = 0; i < 2_000; i++)
         {
-            moves.Add(new ActionTranslation(new Vector(random.Next(-99999, 99999) / 1000.0, (random.NextDouble() - 0.5) * 20, random.Next(-500, 500) / 100.0), relative: true));
+            // Every other move has a long number (its texts differ), the others only numbers of at most 3 decimals.
+            double y = i % 2 == 0 ? (random.NextDouble() - 0.5) * 20 : random.Next(-9999, 9999) / 1000.0;
+            moves.Add(new ActionTranslation(new Vector(random.Next(-99999, 99999) / 1000.0, y, random.Next(-500, 500) / 100.0), relative: true));
         }
         var digits = new TranslationDigits();
         char[] expected = new char[ActionTranslation.MaxInstructionChars + ActionTranslation.MaxDescriptionChars];
-        char[] actual = new char[ActionTranslation.MaxInstructionChars + ActionTranslation.MaxDescriptionChars];
+        byte[] actual = new byte[ActionTranslation.MaxInstructionChars + ActionTranslation.MaxDescriptionChars];
+        int shared = 0;
         for (int i = 0; i < moves.Count; i++)
         {
             ActionTranslation move = moves[i];
@@ -39,18 +42,46 @@ public class TranslationDigitsTests
                 }
             }
         }
+        // Half of the random moves have numbers of at most 3 decimals: their digits are shared (four texts each).
+        Assert.InRange(shared, 4 * 1_000, 4 * (1_000 + numbers.Length));
 
         void AssertInstruction(ActionTranslation move)
         {
             string own = new(expected, 0, move.WriteInstruction(expected));
             Assert.Equal(move.ToInstruction(), own);
-            Assert.Equal(own, new string(actual, 0, digits.WriteInstruction(move, actual)));
+            AssertSharedOrRefused(move, own, digits.TryWriteInstructionAscii(move, actual));
         }
 
         void AssertDescription(ActionTranslation move)
         {
-            Assert.Equal(move.Describe(), new string(actual, 0, digits.WriteDescription(move, actual)));
+            AssertSharedOrRefused(move, move.Describe(), digits.TryWriteDescriptionAscii(move, actual));
         }
+
+        void AssertSharedOrRefused(ActionTranslation move, string own, int written)
+        {
+            Vector v = move.Translation;
+            bool readsBack = NumShortest.TryThousandths(Math.Abs(v.X), out _) && NumShortest.TryThousandths(Math.Abs(v.Y), out _)
+                             && NumShortest.TryThousandths(Math.Abs(v.Z), out _);
+            // Refused exactly where the two texts may differ: a number that does not read back from 3 decimals.
+            Assert.Equal(readsBack, written >= 0);
+            if (written < 0)
+            {
+                return;
+            }
+            shared++;
+            Assert.Equal(own, System.Text.Encoding.ASCII.GetString(actual, 0, written));
+        }
+    }
+
+    [Fact]
+    public void Refused_ExactlyWhenANumberNeedsMoreThanThreeDecimals()
+    {
+        var digits = new TranslationDigits();
+        byte[] buffer = new byte[ActionTranslation.MaxInstructionChars];
+        Assert.Equal(-1, digits.TryWriteInstructionAscii(new ActionTranslation(new Vector(1, 2.0005, 3), relative: true), buffer));
+        Assert.Equal(-1, digits.TryWriteDescriptionAscii(new ActionTranslation(new Vector(1e-5, 2, 3), relative: true), buffer));
+        Assert.Equal(-1, digits.TryWriteDescriptionAscii(new ActionTranslation(new Vector(0.1 + 0.2, 2, 3), relative: false), buffer));
+        Assert.True(digits.TryWriteDescriptionAscii(new ActionTranslation(new Vector(1, 2.005, -0.0), relative: false), buffer) > 0);
     }
 
     [Fact]
@@ -58,11 +89,13 @@ public class TranslationDigitsTests
     {
         var digits = new TranslationDigits();
         var move = new ActionTranslation(new Vector(7.216, -0.954, 0), relative: true);
-        Span<char> buffer = stackalloc char[ActionTranslation.MaxDescriptionChars];
-        Assert.Equal("Move(7.216,-0.954,0);", new string(buffer[..digits.WriteInstruction(move, buffer)]));
-        Assert.Equal("Move [7.216, -0.954, 0] mm", new string(buffer[..digits.WriteDescription(move, buffer)]));
-        var to = new ActionTranslation(new Vector(300, 0.5, 12.3456), relative: false);
-        Assert.Equal("MoveTo(300,0.5,12.3456);", new string(buffer[..digits.WriteInstruction(to, buffer)]));
-        Assert.Equal("Move to [300, 0.5, 12.346] mm", new string(buffer[..digits.WriteDescription(to, buffer)]));
+        byte[] buffer = new byte[ActionTranslation.MaxDescriptionChars + ActionTranslation.MaxInstructionChars];
+        Assert.Equal("Move(7.216,-0.954,0);", Text(digits.TryWriteInstructionAscii(move, buffer)));
+        Assert.Equal("Move [7.216, -0.954, 0] mm", Text(digits.TryWriteDescriptionAscii(move, buffer)));
+        var to = new ActionTranslation(new Vector(300, 0.5, -12.345), relative: false);
+        Assert.Equal("MoveTo(300,0.5,-12.345);", Text(digits.TryWriteInstructionAscii(to, buffer)));
+        Assert.Equal("Move to [300, 0.5, -12.345] mm", Text(digits.TryWriteDescriptionAscii(to, buffer)));
+
+        string Text(int length) => System.Text.Encoding.ASCII.GetString(buffer, 0, length);
     }
 }

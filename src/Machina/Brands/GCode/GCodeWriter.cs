@@ -303,11 +303,10 @@ internal sealed class GCodeWriter
     private bool TryWriteMotion(string code, Vector point, double? e, double feed, RobotAction? action)
     {
         bool describe = action is not null && _human;
-        int descriptionLength = describe ? action!.TryWriteDescription(_description) : 0;
         bool feedHere = _flavor.FeedOnMotionLine && feed != _feed;
         string rate = feedHere ? Rate(feed) : "";
-        Span<byte> line = _file.BeginAscii(code.Length + rate.Length + 5 * (NumAppend.MaxChars + 3) + Math.Max(descriptionLength, 0) + 8);
-        int at = descriptionLength < 0 ? -1 : AsciiNarrow.TryWrite(code, line);
+        Span<byte> line = _file.BeginAscii(code.Length + rate.Length + 5 * (NumAppend.MaxChars + 3) + (describe ? RobotAction.MaxWrittenDescriptionChars : 0) + 8);
+        int at = AsciiNarrow.TryWrite(code, line);
         if (at < 0)
         {
             return false;
@@ -327,7 +326,7 @@ internal sealed class GCodeWriter
             }
             at = Put(line, at, " F"u8) + written;
         }
-        if (describe && (at = AsciiNarrow.TryWriteBracketed(line, at, "  ; ["u8, _description.AsSpan(0, descriptionLength))) < 0)
+        if (describe && (at = AsciiNarrow.TryWriteDescription(line, at, "  ; ["u8, action!, _description)) < 0)
         {
             return false;
         }

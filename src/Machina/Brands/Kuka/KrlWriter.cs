@@ -293,7 +293,7 @@ internal sealed class KrlWriter
         EndLine(line.Append(Approximation(ptp, c.Precision)), action);
     }
 
-    // The move's description as characters (TryWriteDescription writes characters), narrowed into the line.
+    // A description that is not written as bytes, as characters (TryWriteDescription), narrowed into the line.
     private readonly char[] _description = new char[RobotAction.MaxWrittenDescriptionChars];
 
     /// <summary>
@@ -308,11 +308,6 @@ internal sealed class KrlWriter
                                     double precision, RobotAction action)
     {
         if (!_inline)
-        {
-            return false;
-        }
-        int descriptionLength = _human ? action.TryWriteDescription(_description) : 0;
-        if (descriptionLength < 0)
         {
             return false;
         }
@@ -336,7 +331,7 @@ internal sealed class KrlWriter
         {
             at = Put(line, at, ptp ? " C_PTP"u8 : " C_DIS"u8); // Approximation's text
         }
-        if (_human && (at = AsciiNarrow.TryWriteBracketed(line, at, "  ; ["u8, _description.AsSpan(0, descriptionLength))) < 0)
+        if (_human && (at = AsciiNarrow.TryWriteDescription(line, at, "  ; ["u8, action, _description)) < 0)
         {
             return false;
         }

@@ -13,7 +13,7 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
 {
     private const int MostChars = 16 + 3 * (NumAppend.MaxChars + 1) + RobotAction.MaxWrittenDescriptionChars + 8;
 
-    // The description as characters (TranslationDigits and TryWriteDescription write characters), narrowed into the line.
+    // A description that is not written as bytes, as characters (TryWriteDescription), narrowed into the line.
     private readonly char[] _description = new char[RobotAction.MaxWrittenDescriptionChars];
 
     /// <summary>
@@ -22,18 +22,14 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
     /// the fast digits, or the comment <paramref name="human"/> asks for is not one of digits and fixed words in ASCII
     /// (<see cref="RobotAction.TryWriteDescription"/>), and the caller writes the line the general way.
     /// </summary>
+    /// <remarks>
+    /// The description is written as bytes in its place in the line: a move's from the digits it shares with its instruction
+    /// (<see cref="TranslationDigits"/>), a turn's by <see cref="RobotAction.TryWriteDescriptionAscii"/>; characters narrowed
+    /// only where neither writes it.
+    /// </remarks>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal bool TryWrite(LineSink sink, RobotAction action, RobotCursor cursor, bool joint, bool human)
     {
-        int descriptionLength = 0;
-        if (human)
-        {
-            descriptionLength = action is ActionTranslation move ? digits.WriteDescription(move, _description) : action.TryWriteDescription(_description);
-            if (descriptionLength < 0)
-            {
-                return false;
-            }
-        }
         ReadOnlySpan<byte> orientation = repeated.OrientationAscii(cursor.Rotation!.Value);
         ReadOnlySpan<byte> parameters = repeated.ParametersAscii(cursor.Acceleration, cursor.Speed, cursor.Precision, joint);
         Span<byte> line = sink.BeginAscii(MostChars + orientation.Length + parameters.Length);
@@ -48,11 +44,24 @@ internal sealed class UrMoveLine(UrRepeatedText repeated, TranslationDigits digi
         at += orientation.Length;
         parameters.CopyTo(line[at..]);
         at += parameters.Length;
-        if (human && (at = AsciiNarrow.TryWriteBracketed(line, at, "  # ["u8, _description.AsSpan(0, descriptionLength))) < 0)
+        if (human)
         {
-            return false;
+            int written = action is ActionTranslation move ? digits.TryWriteDescriptionAscii(move, line[(at + Opening.Length)..]) : -1;
+            if (written >= 0)
+            {
+                Opening.CopyTo(line[at..]);
+                at += Opening.Length + written;
+                line[at++] = (byte)']';
+            }
+            else if ((at = AsciiNarrow.TryWriteDescription(line, at, Opening, action, _description)) < 0)
+            {
+                return false;
+            }
         }
         sink.EndAscii(at);
         return true;
     }
+
+    /// <summary>What comes before a line's description.</summary>
+    private static ReadOnlySpan<byte> Opening => "  # ["u8;
 }

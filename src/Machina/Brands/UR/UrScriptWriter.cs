@@ -238,13 +238,29 @@ internal sealed class UrScriptWriter(CompileJob job, WarningRuns sink)
             sink.Warn("blend", []);
             return;
         }
-        // A move's instruction is digits and fixed words, safe in a comment as it is: no string.
-        int ownLength = action is ActionTranslation translation ? _digits.WriteInstruction(translation, _instruction) : action.TryWriteInstruction(_instruction);
-        string? instruction = ownLength < 0 ? UrScriptText.CommentText(action.ToInstruction()) : null;
-        ReadOnlySpan<char> quoted = instruction is null ? _instruction.AsSpan(0, ownLength) : instruction;
-        Span<byte> line = sink.BeginWarnAscii(BlendWarningChars + quoted.Length);
-        int at = Put(line, 0, "  # WARNING: "u8);
-        at += Narrow(quoted, line[at..]);
+        // A move's instruction is digits and fixed words, safe in a comment as it is: no string. When its numbers are the digits
+        // it shares with its description it is written as bytes in its place in the line.
+        Span<byte> line = default;
+        int at = 0, shared = -1;
+        if (action is ActionTranslation translation)
+        {
+            line = sink.BeginWarnAscii(BlendWarningChars + ActionTranslation.MaxInstructionChars);
+            at = Put(line, 0, "  # WARNING: "u8);
+            shared = _digits.TryWriteInstructionAscii(translation, line[at..]);
+        }
+        if (shared >= 0)
+        {
+            at += shared;
+        }
+        else
+        {
+            int ownLength = action is ActionTranslation move ? move.WriteInstruction(_instruction) : action.TryWriteInstruction(_instruction);
+            string? instruction = ownLength < 0 ? UrScriptText.CommentText(action.ToInstruction()) : null;
+            ReadOnlySpan<char> quoted = instruction is null ? _instruction.AsSpan(0, ownLength) : instruction;
+            line = sink.BeginWarnAscii(BlendWarningChars + quoted.Length);
+            at = Put(line, 0, "  # WARNING: "u8);
+            at += Narrow(quoted, line[at..]);
+        }
         line[at++] = (byte)' ';
         int start = at;
         at = Put(line, at, "the blend radius of "u8);

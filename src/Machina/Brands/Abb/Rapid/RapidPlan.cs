@@ -17,6 +17,10 @@ internal sealed class RapidPlan
     private readonly List<double> _zones = [];
     private readonly List<Tool> _tools = [];
     private double _lastSpeed = double.NaN, _lastZone = double.NaN;
+
+    // The cursor's own values the names above were last asked for: the same value has the same key, so a motion at the speed
+    // and zone of the one before skips the rounding (Math.Round is a call in the native build, four a motion).
+    private double _lastSpeedAsked = double.NaN, _lastZoneAsked = double.NaN;
     private string _lastSpeedName = "", _lastZoneName = "", _lastToolName = "";
     private Tool? _lastTool;
 
@@ -178,8 +182,17 @@ internal sealed class RapidPlan
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ObserveMotion(RobotCursor cursor)
     {
-        AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
-        AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
+        // A value met by the motion before was added then (adding it again would change nothing): no rounding.
+        if (cursor.Speed != _lastSpeedObserved)
+        {
+            _lastSpeedObserved = cursor.Speed;
+            AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
+        }
+        if (cursor.Precision != _lastZoneObserved)
+        {
+            _lastZoneObserved = cursor.Precision;
+            AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
+        }
         if (cursor.Tool is Tool tool)
         {
             AddTool(tool);
@@ -197,6 +210,9 @@ internal sealed class RapidPlan
 
     // The value each motion met last: most motions use the speed and zone of the one before, and skip the dictionary.
     private double _lastSpeedSeen = double.NaN, _lastZoneSeen = double.NaN;
+
+    // The cursor's own speed and precision of the motion observed last.
+    private double _lastSpeedObserved = double.NaN, _lastZoneObserved = double.NaN;
 
     /// <summary>Adds <paramref name="value"/> to <paramref name="values"/> the first time it is met (the order of first use).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // twice a motion: it ran unoptimised until the runtime tiered it up
@@ -246,7 +262,7 @@ internal sealed class RapidPlan
         {
             ProvisionalNamesHeld = Held(_provisionalSpeeds, _speedNames) && Held(_provisionalZones, _zoneNames) && Held(_provisionalTools, _toolNames);
             _provisional = null;
-            _lastSpeed = _lastZone = double.NaN;
+            _lastSpeed = _lastZone = _lastSpeedAsked = _lastZoneAsked = double.NaN;
             _lastTool = null;
         }
     }
@@ -283,11 +299,15 @@ internal sealed class RapidPlan
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal string SpeedName(double speed)
     {
-        double key = SpeedKey(speed);
-        if (key != _lastSpeed)
+        if (speed != _lastSpeedAsked)
         {
-            _lastSpeed = key;
-            _lastSpeedName = IsLive ? ProvisionalSpeed(key) : _speedNames[key];
+            _lastSpeedAsked = speed;
+            double key = SpeedKey(speed);
+            if (key != _lastSpeed)
+            {
+                _lastSpeed = key;
+                _lastSpeedName = IsLive ? ProvisionalSpeed(key) : _speedNames[key];
+            }
         }
         return _lastSpeedName;
     }
@@ -296,11 +316,15 @@ internal sealed class RapidPlan
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // once a motion, as SpeedName
     internal string ZoneName(double precision)
     {
-        double key = Math.Round(precision, 3);
-        if (key != _lastZone)
+        if (precision != _lastZoneAsked)
         {
-            _lastZone = key;
-            _lastZoneName = IsLive ? ProvisionalZone(key) : _zoneNames[key];
+            _lastZoneAsked = precision;
+            double key = Math.Round(precision, 3);
+            if (key != _lastZone)
+            {
+                _lastZone = key;
+                _lastZoneName = IsLive ? ProvisionalZone(key) : _zoneNames[key];
+            }
         }
         return _lastZoneName;
     }

@@ -25,7 +25,12 @@ internal sealed class RapidSpeedScan
     /// <summary>True when something stands before the first <c>SpeedTo</c> (a motion at the start speed, the guess says).</summary>
     internal bool StartSpeedMoves { get; private set; } = true;
 
-    /// <summary>The guess for the text <paramref name="source"/> reads, or null when it names a declaring word otherwise.</summary>
+    /// <summary>
+    /// The guess for the text <paramref name="source"/> reads, or null when it names a declaring word otherwise. The source's
+    /// token is checked per block read (a scan of a long text stops when the compile is cancelled, as
+    /// <see cref="InstructionSource.MayContain"/> does).
+    /// </summary>
+    /// <exception cref="OperationCanceledException">The source's token was cancelled.</exception>
     internal static RapidSpeedScan? Of(InstructionSource source)
     {
         var scan = new RapidSpeedScan();
@@ -36,6 +41,7 @@ internal sealed class RapidSpeedScan
         while (true)
         {
             int read = reader.ReadBlock(buffer, kept, buffer.Length - kept);
+            source.CancellationToken.ThrowIfCancellationRequested();
             bool end = read < buffer.Length - kept;
             ReadOnlySpan<char> text = buffer.AsSpan(0, kept + read);
             // Words that start at or after the limit are read with the next block (they may be cut here).
