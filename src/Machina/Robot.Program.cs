@@ -62,13 +62,13 @@ public sealed partial class Robot
                 : "Compile works in offline mode; this robot is in online mode (not connected), so its actions wait to be streamed. "
                   + "Call ControlMode(\"offline\") first to compile the actions issued from then on.");
         }
-        RobotAction[] actions;
+        RobotProgramSnapshot actions;
         RobotCursor start = new();
         RobotModel? model;
         lock (_issueLock)
         {
             model = _issueCursor.Model;
-            actions = _programActions.ToArray();
+            actions = _programActions.Snapshot();
             if (_programStart is not null)
             {
                 start.CopyFrom(_programStart);

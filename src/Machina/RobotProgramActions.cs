@@ -63,6 +63,10 @@ internal sealed class RobotProgramActions
         return all;
     }
 
+    /// <summary>The actions so far, sharing this list's chunks (nothing is copied but the chunks' references).</summary>
+    internal RobotProgramSnapshot Snapshot() =>
+        new(Count == 0 ? [] : _chunks[..(_full + (Count > _full * ChunkSize ? 1 : 0))], Count);
+
     /// <summary>Forgets every action (and the chunks that held them).</summary>
     internal void Clear()
     {

@@ -182,9 +182,21 @@ internal sealed class CompileJob
             // What the cursor notices while applying (a tool defined again, an extruded length it cannot compute) is a warning too.
             cursor.Warn = Warn;
         }
+        if (Actions is RobotProgramSnapshot snapshot)
+        {
+            // A robot's program: indexed chunk by chunk, without an enumerator's two interface calls per action.
+            for (int c = 0; c < snapshot.ChunkCount; c++)
+            {
+                foreach (RobotAction action in snapshot.Chunk(c))
+                {
+                    ReplayOne(action, cursor, reportIssues, emit);
+                }
+            }
+            return;
+        }
         if (Actions is RobotAction[] array)
         {
-            // A robot's program (a snapshot array): indexed, without an enumerator's two interface calls per action.
+            // A snapshot array: indexed, without an enumerator's two interface calls per action.
             for (int i = 0; i < array.Length; i++)
             {
                 ReplayOne(array[i], cursor, reportIssues, emit);

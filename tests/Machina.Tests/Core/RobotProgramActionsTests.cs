@@ -30,6 +30,39 @@ public class RobotProgramActionsTests
         }
     }
 
+    [Theory]
+    [InlineData(0)]
+    [InlineData(3)]
+    [InlineData(RobotProgramActions.ChunkSize)]
+    [InlineData(2 * RobotProgramActions.ChunkSize + 5)]
+    public void Snapshot_ActionsAddedOrClearedAfterIt_KeepsExactlyTheActionsOfItsMoment(int count)
+    {
+        var list = new RobotProgramActions();
+        var added = new RobotAction[count];
+        for (int i = 0; i < count; i++)
+        {
+            added[i] = new ActionWait(i);
+            list.Add(added[i]);
+        }
+
+        RobotProgramSnapshot snapshot = list.Snapshot();
+        for (int i = 0; i < RobotProgramActions.ChunkSize + 3; i++)
+        {
+            list.Add(new ActionWait(100_000 + i)); // grows the first chunk, fills the last one, starts new ones
+        }
+        list.Clear();
+        list.Add(new ActionWait(7));
+
+        Assert.Equal(count, snapshot.Count);
+        Assert.Equal(added, snapshot.ToArray());
+        var byChunk = new List<RobotAction>();
+        for (int c = 0; c < snapshot.ChunkCount; c++)
+        {
+            byChunk.AddRange(snapshot.Chunk(c).ToArray());
+        }
+        Assert.Equal(added, byChunk);
+    }
+
     [Fact]
     public void Clear_AfterSeveralChunks_StartsEmptyAndKeepsNewActionsOnly()
     {
