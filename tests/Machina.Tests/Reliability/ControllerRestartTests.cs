@@ -71,7 +71,8 @@ public class ControllerRestartTests(ITestOutputHelper output)
         ActionFailedException thrown = Assert.IsType<ActionFailedException>(Assert.Single(r.WaitFailures));
         Assert.Equal(first, thrown.Action.Id);
         Assert.Equal(Reason, thrown.ControllerReason);
-        Assert.Contains($"{failed.Count} actions", thrown.Message, StringComparison.Ordinal);
+        // How many were in flight depends on how far the host had read when the restart came: one is named on its own.
+        Assert.Contains(failed.Count == 1 ? $"(id {first}) was not sent again" : $"{failed.Count} actions", thrown.Message, StringComparison.Ordinal);
 
         Assert.True(r.ControllerPosition.IsSimilar(r.ExecutedPosition, 1e-6), $"the arm is at {r.ControllerPosition}, the host says {r.ExecutedPosition}");
     }
