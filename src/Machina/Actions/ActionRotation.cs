@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>Rotates the tool around its tip: to an orientation (<c>RotateTo</c>) or by an angle around an axis (<c>Rotate</c>).</summary>
@@ -128,6 +130,7 @@ public sealed record ActionRotation : RobotAction
     private static bool IsAlongAnAxis(Vector axis) => IsSignedDigit(axis.X) && IsSignedDigit(axis.Y) && IsSignedDigit(axis.Z);
 
     /// <summary>Writes an axis along X, Y or Z digit by digit, as characters or ASCII bytes; returns the count.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static int WriteUnitAxis<T>(Span<T> destination, Vector axis)
         where T : unmanaged, System.Numerics.IBinaryInteger<T>
     {

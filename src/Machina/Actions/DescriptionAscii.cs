@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>
@@ -11,6 +13,7 @@ internal static class DescriptionAscii
     /// Writes <c>[x, y, z]</c> (3 decimals) as <see cref="Vector.WriteText"/> writes it with <c>", "</c>; returns the count of
     /// bytes, or −1 when a number takes .NET's general text there (E notation, huge values).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int TryWriteVector(Span<byte> destination, Vector vector)
     {
         destination[0] = (byte)'[';

@@ -126,6 +126,7 @@ internal sealed class TranslationDigits
     }
 
     /// <summary>Writes <paramref name="value"/> when both texts show it alike (<see cref="NumShortest.TryWriteThousandths"/>); false otherwise.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private static bool TryMilli(Span<byte> digits, int at, double value, out int end)
     {
         int written = NumShortest.TryWriteThousandths(digits[at..], value, out _);

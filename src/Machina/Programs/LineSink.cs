@@ -24,6 +24,7 @@ internal abstract class LineSink
     /// Nothing else may be added in between. A sink that writes bytes hands out its own buffer, so the line is written once,
     /// in place (no characters narrowed per line); the others widen the bytes into characters (<see cref="Add(ReadOnlySpan{char})"/>).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal virtual Span<byte> BeginAscii(int most)
     {
         if (_asciiLine is null || _asciiLine.Length < most)
@@ -74,6 +75,7 @@ internal sealed class ListLineSink : LineSink
     internal override void Add(ReadOnlySpan<char> line) => Lines.Add(line);
 
     /// <summary>Keeps the bytes as they are (an ASCII line is kept as bytes anyway).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override void EndAscii(int length) => Lines.AddAscii(AsciiLine(length));
 }
 

@@ -95,6 +95,7 @@ internal sealed class PackedLinePart
     }
 
     /// <summary>Appends a line of ASCII bytes (copied into its block as it is).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void AddAscii(ReadOnlySpan<byte> line)
     {
         (int block, int start) = _ascii.Reserve(line.Length);

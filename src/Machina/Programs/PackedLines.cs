@@ -88,6 +88,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
     }
 
     /// <summary>Appends a line of ASCII bytes.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void AddAscii(ReadOnlySpan<byte> line)
     {
         (_open ?? Open()).AddAscii(line);

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Machina;
 
@@ -16,6 +17,7 @@ internal static class NumShortest
     /// the caller must format it the general way. Zero (also −0) is "0".
     /// </summary>
     /// <remarks>Characters (<see cref="char"/>) or ASCII bytes (<see cref="byte"/>): the same digits either way.</remarks>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int TryWrite<T>(Span<T> destination, double value)
         where T : unmanaged, IBinaryInteger<T>
     {
@@ -61,6 +63,7 @@ internal static class NumShortest
     /// number of characters, the text both <see cref="WriteRoundTrip"/> and <see cref="NumAppend.WriteF"/> with 3 decimals write
     /// (−0 as 0); −1 otherwise. <paramref name="milli"/> is the size · 1000 rounded to a whole number either way.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal static int TryWriteThousandths<T>(Span<T> destination, double value, out double milli)
         where T : unmanaged, IBinaryInteger<T> =>
         TryThousandths(Math.Abs(value), out milli) ? NumAppend.WriteDecimal(destination, value < 0, (long)milli, 3) : -1;

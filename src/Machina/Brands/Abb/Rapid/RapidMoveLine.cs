@@ -92,6 +92,7 @@ internal sealed class RapidMoveLine
     /// Writes the action's description and <c>]</c> at <paramref name="at"/>: as bytes where it writes them, else its text made
     /// comment-safe (<see cref="ProgramText.CommentText"/>) when that is ASCII and fits the room; −1 otherwise.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private int Describe(Span<byte> line, int at, RobotAction action)
     {
         int after = AsciiNarrow.TryWriteDescription(line, at, default, action, _description);
