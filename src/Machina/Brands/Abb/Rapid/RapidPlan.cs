@@ -17,10 +17,6 @@ internal sealed class RapidPlan
     private readonly List<double> _zones = [];
     private readonly List<Tool> _tools = [];
     private double _lastSpeed = double.NaN, _lastZone = double.NaN;
-
-    // The cursor's own values the names above were last asked for: the same value has the same key, so a motion at the speed
-    // and zone of the one before skips the rounding (Math.Round is a call in the native build, four a motion).
-    private double _lastSpeedAsked = double.NaN, _lastZoneAsked = double.NaN;
     private string _lastSpeedName = "", _lastZoneName = "", _lastToolName = "";
     private Tool? _lastTool;
 
@@ -182,17 +178,8 @@ internal sealed class RapidPlan
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ObserveMotion(RobotCursor cursor)
     {
-        // A value met by the motion before was added then (adding it again would change nothing): no rounding.
-        if (cursor.Speed != _lastSpeedObserved)
-        {
-            _lastSpeedObserved = cursor.Speed;
-            AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
-        }
-        if (cursor.Precision != _lastZoneObserved)
-        {
-            _lastZoneObserved = cursor.Precision;
-            AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
-        }
+        AddOnce(_speeds, _speedNames, SpeedKey(cursor.Speed), ref _lastSpeedSeen);
+        AddOnce(_zones, _zoneNames, Math.Round(cursor.Precision, 3), ref _lastZoneSeen);
         if (cursor.Tool is Tool tool)
         {
             AddTool(tool);
@@ -210,9 +197,6 @@ internal sealed class RapidPlan
 
     // The value each motion met last: most motions use the speed and zone of the one before, and skip the dictionary.
     private double _lastSpeedSeen = double.NaN, _lastZoneSeen = double.NaN;
-
-    // The cursor's own speed and precision of the motion observed last.
-    private double _lastSpeedObserved = double.NaN, _lastZoneObserved = double.NaN;
 
     /// <summary>Adds <paramref name="value"/> to <paramref name="values"/> the first time it is met (the order of first use).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // twice a motion: it ran unoptimised until the runtime tiered it up
@@ -262,7 +246,7 @@ internal sealed class RapidPlan
         {
             ProvisionalNamesHeld = Held(_provisionalSpeeds, _speedNames) && Held(_provisionalZones, _zoneNames) && Held(_provisionalTools, _toolNames);
             _provisional = null;
-            _lastSpeed = _lastZone = _lastSpeedAsked = _lastZoneAsked = double.NaN;
+            _lastSpeed = _lastZone = double.NaN;
             _lastTool = null;
         }
     }
@@ -299,15 +283,11 @@ internal sealed class RapidPlan
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal string SpeedName(double speed)
     {
-        if (speed != _lastSpeedAsked)
+        double key = SpeedKey(speed);
+        if (key != _lastSpeed)
         {
-            _lastSpeedAsked = speed;
-            double key = SpeedKey(speed);
-            if (key != _lastSpeed)
-            {
-                _lastSpeed = key;
-                _lastSpeedName = IsLive ? ProvisionalSpeed(key) : _speedNames[key];
-            }
+            _lastSpeed = key;
+            _lastSpeedName = IsLive ? ProvisionalSpeed(key) : _speedNames[key];
         }
         return _lastSpeedName;
     }
@@ -316,15 +296,11 @@ internal sealed class RapidPlan
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // once a motion, as SpeedName
     internal string ZoneName(double precision)
     {
-        if (precision != _lastZoneAsked)
+        double key = Math.Round(precision, 3);
+        if (key != _lastZone)
         {
-            _lastZoneAsked = precision;
-            double key = Math.Round(precision, 3);
-            if (key != _lastZone)
-            {
-                _lastZone = key;
-                _lastZoneName = IsLive ? ProvisionalZone(key) : _zoneNames[key];
-            }
+            _lastZone = key;
+            _lastZoneName = IsLive ? ProvisionalZone(key) : _zoneNames[key];
         }
         return _lastZoneName;
     }

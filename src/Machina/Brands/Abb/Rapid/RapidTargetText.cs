@@ -14,10 +14,9 @@ internal sealed class RapidTargetText
     private readonly StringBuilder _tail = new(128);
     private readonly StringBuilder _rest = new(96);
     private readonly char[] _quaternion = new char[4 * (NumAppend.MaxChars + 2) + 2];
-    private readonly byte[] _quaternionAscii = new byte[4 * (NumAppend.MaxChars + 2) + 2];
-    private int _quaternionLength, _quaternionAsciiLength;
-    private bool _rotationKnown, _restKnown, _tailKnown, _asciiRotationKnown;
-    private Rotation _rotation, _asciiRotation;
+    private int _quaternionLength;
+    private bool _rotationKnown, _restKnown, _tailKnown;
+    private Rotation _rotation;
     private ExternalAxes? _axes;
     private double? _armAngle;
     private AbbConfiguration? _conf;
@@ -63,47 +62,6 @@ internal sealed class RapidTargetText
             (_quaternionLength, _rotation, _rotationKnown) = (at - 1, rotation, true);
         }
         return _quaternion.AsSpan(0, _quaternionLength);
-    }
-
-    /// <summary>
-    /// The ASCII bytes of <see cref="Quaternion"/>'s text, kept while the orientation stays the same (for lines written as bytes,
-    /// <see cref="LineSink.BeginAscii"/>; a path that turns on every other move writes its four numbers as bytes, not characters
-    /// narrowed).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
-    internal ReadOnlySpan<byte> QuaternionAscii(Rotation rotation)
-    {
-        if (!_asciiRotationKnown || rotation != _asciiRotation)
-        {
-            Span<byte> text = _quaternionAscii;
-            int at = 1;
-            text[0] = (byte)'[';
-            if ((at = NumberAscii(text, at, rotation.W)) < 0 || (at = NumberAscii(text, at, rotation.X)) < 0
-                || (at = NumberAscii(text, at, rotation.Y)) < 0 || (at = NumberAscii(text, at, rotation.Z)) < 0)
-            {
-                // Not a unit quaternion's numbers: the characters' text (its general digits), which is ASCII.
-                ReadOnlySpan<char> chars = Quaternion(rotation);
-                at = System.Text.Encoding.ASCII.GetBytes(chars, text) + 1;
-            }
-            text[at - 2] = (byte)']';
-            (_quaternionAsciiLength, _asciiRotation, _asciiRotationKnown) = (at - 1, rotation, true);
-        }
-        return _quaternionAscii.AsSpan(0, _quaternionAsciiLength);
-    }
-
-    /// <summary>Writes one quaternion number and ", " as bytes (as <see cref="Number"/>); −1 when it is too large for the fast digits.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int NumberAscii(Span<byte> text, int at, double value)
-    {
-        int written = NumAppend.TryWriteScaledAscii(text[at..], value, RapidFacts.QuaternionDecimals);
-        if (written < 0)
-        {
-            return -1;
-        }
-        at += written;
-        text[at++] = (byte)',';
-        text[at++] = (byte)' ';
-        return at;
     }
 
     /// <summary>
