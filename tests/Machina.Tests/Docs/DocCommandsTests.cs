@@ -34,17 +34,6 @@ public class DocCommandsTests
         ["check samples/programs/too-far.machina --model \"IRB 120\""] = 1,   // "The exit code is 1 when anything was found"
     };
 
-    /// <summary>
-    /// Commands that fail today because the ABB driver builds an arc's through point with the wrong orientation (issue 46; fixed
-    /// in drivers/abb on the arcdiff branch): run like the rest, so that this test passes once that fix is merged.
-    /// </summary>
-    private static readonly HashSet<string> NeedTheAbbArcFix = new(StringComparer.Ordinal)
-    {
-        "run samples/programs/square.machina --brand abb --sim --speed-factor 5",
-        "run square.machina --brand abb --sim",
-        "run square.machina --brand abb --sim --speed-factor 10",
-    };
-
     public static TheoryData<string, string> Commands()
     {
         var data = new TheoryData<string, string>();
@@ -63,7 +52,7 @@ public class DocCommandsTests
     {
         List<string> all = [.. Commands().Select(row => Strip((string)row[1]))];
         Assert.True(all.Count >= 20, $"only {all.Count} commands found: {string.Join(" | ", all)}");
-        Assert.All(NotRun.Keys.Concat(UntilStopped).Concat(ExitCodes.Keys).Concat(NeedTheAbbArcFix),
+        Assert.All(NotRun.Keys.Concat(UntilStopped).Concat(ExitCodes.Keys),
             known => Assert.True(all.Contains(known), $"\"{known}\" is no longer on README.md or docs/cli.md: remove it from this test."));
     }
 
@@ -94,7 +83,7 @@ public class DocCommandsTests
         CliResult result = await process.WaitAsync(TimeSpan.FromMinutes(2));
         int expected = ExitCodes.GetValueOrDefault(args, 0);
         Assert.True(result.Exit == expected,
-            $"{page}: \"{command}\" exited with {result.Exit}, not {expected}{(NeedTheAbbArcFix.Contains(args) ? " (this one needs the ABB arc fix of drivers/abb)" : "")}:\n{result.Stdout}\n{result.Stderr}");
+            $"{page}: \"{command}\" exited with {result.Exit}, not {expected}:\n{result.Stdout}\n{result.Stderr}");
     }
 
     /// <summary>The command lines of a page's shell blocks, as written (comments after # removed).</summary>
