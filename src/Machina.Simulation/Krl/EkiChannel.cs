@@ -563,15 +563,19 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     internal static string Escape(string value) => value.AsSpan().IndexOfAny("&<>\"") < 0 ? value : value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
         .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
 
-    /// <summary>EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements.</summary>
-    public void Close()
+    /// <summary>
+    /// EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements. The
+    /// wait for the queued sends ends when <paramref name="cancellation"/> is cancelled (the program stopped): the connection
+    /// is ended all the same, and what was not written is lost.
+    /// </summary>
+    public void Close(CancellationToken cancellation = default)
     {
         EkiOutbox? outbox;
         lock (_gate)
         {
             outbox = _outbox;
         }
-        outbox?.Drain();
+        outbox?.Drain(cancellation);
         CloseUdp();
         // Under the link: a disconnection the reader began is finished (its flag down) before the channel counts as closed.
         lock (_link)
