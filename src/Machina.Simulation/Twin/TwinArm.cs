@@ -181,18 +181,17 @@ internal sealed partial class TwinArm
                 return;
             }
             LimitChecks++;
+            // Twelve compares: looked at and kept in the same look at the gate (a second look kept them before).
+            if (Model.IsWithinLimits(joints))
+            {
+                (_withinJoints, _hasWithin) = (joints, true);
+                return;
+            }
         }
-        if (!Model.IsWithinLimits(joints))
-        {
-            double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
-            int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
-            throw new TwinMotionException(FormattableString.Invariant(
-                $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
-        }
-        lock (_gate)
-        {
-            (_withinJoints, _hasWithin) = (joints, true);
-        }
+        double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
+        int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
+        throw new TwinMotionException(FormattableString.Invariant(
+            $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
     }
 
     /// <summary>
