@@ -81,14 +81,14 @@ internal sealed partial class EkiChannel
                     Alive(true);
                 }
             }
-            EkiXmlSplitter splitter = Splitter((document, flags) => CommitDatagram(udp, document, flags));
+            EkiXmlSplitter splitter = Splitter((document, memories, flags) => CommitDatagram(udp, document, memories, flags));
             try
             {
                 if (Configuration.RawReceive is { } raw)
                 {
                     foreach (string record in new EkiRawSplitter(raw).Append(datagram.Buffer))
                     {
-                        CommitDatagram(udp, RawDocument(record), RawFlags());
+                        CommitDatagram(udp, RawDocument(record), null, RawFlags());
                     }
                     continue;
                 }
@@ -101,7 +101,7 @@ internal sealed partial class EkiChannel
         }
     }
 
-    private void CommitDatagram(UdpClient udp, List<(string Tag, string Value)> document, List<int> flags)
+    private void CommitDatagram(UdpClient udp, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags)
     {
         controller.Options.Seam?.Received(this, [.. document]);
         bool overflow = false;
@@ -114,10 +114,11 @@ internal sealed partial class EkiChannel
             }
             if (current)
             {
-                overflow = Store(document, flags, dropExcess: true);
+                overflow = Store(document, memories, flags, dropExcess: true);
             }
         }
         document.Clear();
+        memories?.Clear();
         flags.Clear();
         if (overflow)
         {

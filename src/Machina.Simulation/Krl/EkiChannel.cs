@@ -189,18 +189,23 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return done.Task;
     }
 
-    /// <summary>A splitter that hands each complete document (its values and the flags it sets) to <paramref name="commit"/>.</summary>
-    private EkiXmlSplitter Splitter(Action<List<(string Tag, string Value)>, List<int>> commit)
+    /// <summary>
+    /// A splitter that hands each complete document (its values, the memory of each value, found once where the value is met, and
+    /// the flags it sets) to <paramref name="commit"/>.
+    /// </summary>
+    private EkiXmlSplitter Splitter(Action<List<(string Tag, string Value)>, List<EkiMemory>, List<int>> commit)
     {
         var splitter = new EkiXmlSplitter(Configuration.BufferSize);
         var document = new List<(string Tag, string Value)>();
+        var memories = new List<EkiMemory>();
         var flags = new List<int>();
         var frames = new Dictionary<string, string[]>(StringComparer.Ordinal);
         splitter.Value += (tag, value) =>
         {
-            if (!FramePart(frames, tag, value) && _memories.ContainsKey(tag) && !(FrameTags.Count > 0 && FrameTags.Contains(tag)))
+            if (!FramePart(frames, tag, value) && _memories.TryGetValue(tag, out EkiMemory? memory) && !(FrameTags.Count > 0 && FrameTags.Contains(tag)))
             {
                 document.Add((tag, value));
+                memories.Add(memory);
             }
         };
         splitter.Ended += (path, topLevel) =>
@@ -208,10 +213,12 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             if (frames.Remove(path, out string[]? frame))
             {
                 document.Add((path, string.Join(' ', frame)));
+                memories.Add(_memories[path]);
             }
             else if (FrameTags.Count > 0 && FrameTags.Contains(path))
             {
                 document.Add((path, "0 0 0 0 0 0")); // a FRAME element without components
+                memories.Add(_memories[path]);
             }
             if (SetFlags.TryGetValue(path, out int[]? set))
             {
@@ -219,7 +226,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             }
             if (topLevel)
             {
-                commit(document, flags);
+                commit(document, memories, flags);
             }
         };
         return splitter;
@@ -229,7 +236,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     {
         // The channel's stop closes the socket, which ends a receive under way.
         using CancellationTokenRegistration stop = token.Register(static c => ((TcpClient)c!).Dispose(), client);
-        EkiXmlSplitter splitter = Splitter((document, flags) => Commit(client, document, flags));
+        EkiXmlSplitter splitter = Splitter((document, memories, flags) => Commit(client, document, memories, flags));
         EkiRawSplitter? raw = Configuration.RawReceive is { } element ? new EkiRawSplitter(element) : null;
         var bytes = new byte[8192];
         var decoder = Encoding.UTF8.GetDecoder();
@@ -249,7 +256,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
                 {
                     foreach (string record in raw.Append(bytes.AsSpan(0, n)))
                     {
-                        Commit(client, RawDocument(record), RawFlags());
+                        Commit(client, RawDocument(record), null, RawFlags());
                     }
                     continue;
                 }
@@ -272,7 +279,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     /// Stores a complete document's values, then sets its flags (a memory over its limit closes the connection). A document
     /// that arrives on a connection the channel already let go of (closed, cleared) is lost, as on the controller.
     /// </summary>
-    private void Commit(TcpClient client, List<(string Tag, string Value)> document, List<int> flags)
+    private void Commit(TcpClient client, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags)
     {
         bool overflow = false;
         // Under the link, as the connection's end: a document of a connection the channel already let go of reaches neither the
@@ -285,10 +292,11 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             {
                 // The seam sees the document before the program can take any of its values.
                 controller.Options.Seam?.Received(this, document);
-                overflow = Store(document, flags, dropExcess: false);
+                overflow = Store(document, memories, flags, dropExcess: false);
             }
         }
         document.Clear();
+        memories?.Clear();
         flags.Clear();
         if (overflow)
         {
@@ -298,15 +306,19 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         }
     }
 
-    /// <summary>Stores a document's values in their memories and sets its flags; true when a memory went over its limit.</summary>
-    private bool Store(List<(string Tag, string Value)> document, List<int> flags, bool dropExcess)
+    /// <summary>
+    /// Stores a document's values in their memories (<paramref name="memories"/>, one per value, when the splitter found them; else
+    /// by tag) and sets its flags; true when a memory went over its limit.
+    /// </summary>
+    private bool Store(List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags, bool dropExcess)
     {
         bool overflow = false;
         lock (_gate)
         {
-            foreach ((string tag, string value) in document)
+            for (int i = 0; i < document.Count; i++)
             {
-                EkiMemory memory = _memories[tag];
+                (string tag, string value) = document[i];
+                EkiMemory memory = memories is null ? _memories[tag] : memories[i];
                 if (dropExcess && memory.Count >= Configuration.Limit)
                 {
                     overflow = true;
@@ -551,15 +563,19 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     internal static string Escape(string value) => value.AsSpan().IndexOfAny("&<>\"") < 0 ? value : value.Replace("&", "&amp;", StringComparison.Ordinal).Replace("<", "&lt;", StringComparison.Ordinal)
         .Replace(">", "&gt;", StringComparison.Ordinal).Replace("\"", "&quot;", StringComparison.Ordinal);
 
-    /// <summary>EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements.</summary>
-    public void Close()
+    /// <summary>
+    /// EKI_Close: writes what EKI_Send queued, ends the connection and stops listening; the memories keep their elements. The
+    /// wait for the queued sends ends when <paramref name="cancellation"/> is cancelled (the program stopped): the connection
+    /// is ended all the same, and what was not written is lost.
+    /// </summary>
+    public void Close(CancellationToken cancellation = default)
     {
         EkiOutbox? outbox;
         lock (_gate)
         {
             outbox = _outbox;
         }
-        outbox?.Drain();
+        outbox?.Drain(cancellation);
         CloseUdp();
         // Under the link: a disconnection the reader began is finished (its flag down) before the channel counts as closed.
         lock (_link)

@@ -42,9 +42,10 @@ internal sealed class EkiOutbox(Stream stream)
 
     /// <summary>
     /// Waits until everything posted has been written or the connection broke (before the channel closes it, as EKI_Close
-    /// sends what EKI_Send queued). The same wait a synchronous EKI_Send had.
+    /// sends what EKI_Send queued). The same wait a synchronous EKI_Send had. False when <paramref name="cancellation"/> ended
+    /// the wait first (a client that reads nothing blocks the writer: the program's stop must not wait for it).
     /// </summary>
-    public void Drain()
+    public bool Drain(CancellationToken cancellation)
     {
         while (true)
         {
@@ -55,9 +56,16 @@ internal sealed class EkiOutbox(Stream stream)
             }
             if (writer is null)
             {
-                return;
+                return true;
             }
-            TwinWait.For(writer, CancellationToken.None);
+            try
+            {
+                TwinWait.For(writer, cancellation);
+            }
+            catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+            {
+                return false;
+            }
         }
     }
 

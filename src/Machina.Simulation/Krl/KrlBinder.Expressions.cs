@@ -20,7 +20,7 @@ internal sealed partial class KrlBinder
                 double => KrlType.Real,
                 bool => KrlType.Bool,
                 KrlEnumValue => KrlType.Enum,
-                string s => KrlType.Array(KrlType.Char, Math.Max(1, s.Length)),
+                string s => Text(literal, s),
                 _ => throw Error(expr.Line, "an unknown constant"),
             },
             KrlName name => Name(name),
@@ -33,6 +33,24 @@ internal sealed partial class KrlBinder
             _ => throw Error(expr.Line, "an unknown expression"),
         };
         return expr.Type;
+    }
+
+    /// <summary>
+    /// The type of string literal <paramref name="literal"/>, whose value becomes the program's one string of its text: a channel
+    /// name or tag written at each EKI_ call is then the same string at each, found by reference (a case-insensitive compare of
+    /// its characters before, at every call).
+    /// </summary>
+    private KrlType Text(KrlLiteral literal, string text)
+    {
+        if (_texts.TryGetValue(text, out string? kept))
+        {
+            literal.Value = kept;
+        }
+        else
+        {
+            _texts.Add(text, text);
+        }
+        return KrlType.Array(KrlType.Char, Math.Max(1, text.Length));
     }
 
     private KrlType Name(KrlName name)

@@ -11,6 +11,9 @@ internal sealed partial class KrlBinder(IReadOnlyDictionary<string, KrlModule> m
     private KrlRoutine? _routine;
     private string _file = "";
 
+    /// <summary>The string literals of the program by their text (ordinal): one string per text.</summary>
+    private readonly Dictionary<string, string> _texts = new(StringComparer.Ordinal);
+
     /// <summary>Binds every routine of every module.</summary>
     public void BindAll()
     {

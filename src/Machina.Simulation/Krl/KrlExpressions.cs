@@ -16,8 +16,8 @@ internal sealed class KrlOmitted(int line) : KrlExpr(line);
 /// <summary>A constant: INT, REAL, BOOL, an enumeration value or a string (a CHAR array).</summary>
 internal sealed class KrlLiteral(int line, object value) : KrlExpr(line)
 {
-    /// <summary>The value (a string for a string literal).</summary>
-    public object Value { get; } = value;
+    /// <summary>The value (a string for a string literal: the binder makes equal ones of a program one string, see <see cref="KrlBinder"/>).</summary>
+    public object Value { get; internal set; } = value;
 }
 
 /// <summary>A variable, a parameter or a system variable.</summary>

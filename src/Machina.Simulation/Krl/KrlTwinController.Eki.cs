@@ -87,8 +87,8 @@ internal sealed partial class KrlTwinController
             Environment.Builtins[name] = new KrlBuiltin(name, status, parameters, run) { WritesOnlyArguments = true, ReturnsFresh = true };
         Add("EKI_Init", [text], (_, a) => EkiInit(Str(a[0])));
         Add("EKI_Open", [text], (_, a) => EkiOpen(Str(a[0])));
-        Add("EKI_Close", [text], (_, a) => EkiClose(Str(a[0]), clear: false));
-        Add("EKI_Clear", [text], (_, a) => EkiClose(Str(a[0]), clear: true));
+        Add("EKI_Close", [text], (m, a) => EkiClose(Str(a[0]), clear: false, m.Cancellation));
+        Add("EKI_Clear", [text], (m, a) => EkiClose(Str(a[0]), clear: true, m.Cancellation));
         Add("EKI_CheckBuffer", [text, text], (_, a) =>
         {
             int buffered = Channel(Str(a[0])).Count(Str(a[1]), out bool connected);
@@ -231,10 +231,10 @@ internal sealed partial class KrlTwinController
         return Status(0, 0, 0, channel.Connected);
     }
 
-    private KrlStructValue EkiClose(string name, bool clear)
+    private KrlStructValue EkiClose(string name, bool clear, CancellationToken cancellation)
     {
         EkiChannel channel = Channel(name);
-        channel.Close();
+        channel.Close(cancellation);
         if (clear)
         {
             lock (_gate)

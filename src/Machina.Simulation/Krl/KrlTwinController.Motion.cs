@@ -42,7 +42,11 @@ internal sealed partial class KrlTwinController
     public object AxesNow() => AxesValue(Arm.Joints);
 
     /// <summary>$POS_ACT: the TCP now in $BASE, with S and T of the axes.</summary>
-    public object PositionNow() => PositionOf(Arm.Tcp, Arm.Joints);
+    public object PositionNow()
+    {
+        (Joints joints, Pose tcp) = Arm.Now;
+        return PositionOf(tcp, joints);
+    }
 
     /// <summary>An E6POS of the TCP at <paramref name="tcp"/> (base frame of the robot) in $BASE, with S and T of <paramref name="joints"/>.</summary>
     private KrlStructValue PositionOf(Pose tcp, Joints joints)

@@ -58,11 +58,19 @@ internal sealed partial class TwinArm
         RequireWithinLimits(move.Joints);
         Pose target = move.Target;
         double v = move.Speed, a = move.Acceleration;
-        // Where the arm stands, read once: no motion runs while its own task plans the next one (each read of the joints and of
-        // the tool centre takes the gate, and the tool centre is a pose product).
-        Joints here = Joints;
-        TwinBlend? pending = PendingBlend;
-        Pose from = pending?.Corner ?? FlangeAt(here) * ToolCenter;
+        // Where the arm stands, read once: no motion runs while its own task plans the next one (the joints, the pending corner
+        // and the flange pose kept for the joints in one look at the gate; the tool centre is a pose product).
+        Joints here;
+        TwinBlend? pending;
+        Pose flange;
+        bool known;
+        lock (_gate)
+        {
+            here = JointsNow();
+            pending = _blend;
+            known = KeptFlange(here, out flange);
+        }
+        Pose from = pending?.Corner ?? (known ? flange : Forward(here)) * ToolCenter;
         double metres = (target.Position - from.Position).Length / 1000;
         bool blendable = metres >= BlendModel.MinLength && v > 0 && !BlendModel.TurnDominates(move.PlainSeconds, metres, v, a);
         if (!blendable)

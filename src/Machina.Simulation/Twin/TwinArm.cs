@@ -44,8 +44,32 @@ internal sealed partial class TwinArm
         {
             lock (_gate)
             {
-                return _moving is { } moving ? moving.At(Clock.Time.GetElapsedTime(moving.Started).TotalSeconds) : _paced is { } paced ? paced.At(Clock.Seconds) : _joints;
+                return JointsNow();
             }
+        }
+    }
+
+    /// <summary>The joints now (under the gate).</summary>
+    private Joints JointsNow() =>
+        _moving is { } moving ? moving.At(Clock.Time.GetElapsedTime(moving.Started).TotalSeconds) : _paced is { } paced ? paced.At(Clock.Seconds) : _joints;
+
+    /// <summary>
+    /// The joints now and the tool centre point at them (mm, base frame), read in one look at the gate: <see cref="Joints"/> and
+    /// <see cref="Tcp"/> each took it, and the tool centre's flange pose took it again (a KRL position read did all three).
+    /// </summary>
+    public (Joints Joints, Pose Tcp) Now
+    {
+        get
+        {
+            Joints joints;
+            Pose flange;
+            bool known;
+            lock (_gate)
+            {
+                joints = JointsNow();
+                known = KeptFlange(joints, out flange);
+            }
+            return (joints, (known ? flange : Forward(joints)) * ToolCenter);
         }
     }
 
@@ -74,11 +98,24 @@ internal sealed partial class TwinArm
     {
         lock (_gate)
         {
-            if (_hasForward && SameBits.Of(joints, _forwardJoints))
+            if (KeptFlange(joints, out Pose kept))
             {
-                return _forwardFlange;
+                return kept;
             }
         }
+        return Forward(joints);
+    }
+
+    /// <summary>The flange pose kept for <paramref name="joints"/> when they are the last ones asked (under the gate).</summary>
+    private bool KeptFlange(Joints joints, out Pose flange)
+    {
+        flange = _forwardFlange;
+        return _hasForward && SameBits.Of(joints, _forwardJoints);
+    }
+
+    /// <summary>The forward kinematics of <paramref name="joints"/> (not under the gate), kept as <see cref="FlangeAt"/> says.</summary>
+    private Pose Forward(Joints joints)
+    {
         Pose flange = Model.Kinematics.Forward(joints);
         lock (_gate)
         {
@@ -95,7 +132,7 @@ internal sealed partial class TwinArm
     internal int LimitChecks { get; private set; }
 
     /// <summary>The tool centre point now (mm, base frame).</summary>
-    public Pose Tcp => Flange * ToolCenter;
+    public Pose Tcp => Now.Tcp;
 
     /// <summary>A copy of every traced step so far.</summary>
     public IReadOnlyList<TwinTraceEntry> Trace
@@ -144,18 +181,17 @@ internal sealed partial class TwinArm
                 return;
             }
             LimitChecks++;
+            // Twelve compares: looked at and kept in the same look at the gate (a second look kept them before).
+            if (Model.IsWithinLimits(joints))
+            {
+                (_withinJoints, _hasWithin) = (joints, true);
+                return;
+            }
         }
-        if (!Model.IsWithinLimits(joints))
-        {
-            double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
-            int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
-            throw new TwinMotionException(FormattableString.Invariant(
-                $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
-        }
-        lock (_gate)
-        {
-            (_withinJoints, _hasWithin) = (joints, true);
-        }
+        double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
+        int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
+        throw new TwinMotionException(FormattableString.Invariant(
+            $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
     }
 
     /// <summary>
@@ -190,13 +226,17 @@ internal sealed partial class TwinArm
     private bool MoveInOneStep(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace)
     {
         Clock.Wait(seconds, cancellation);
+        // The trace's step is made before the arm is at the target (the joints it is at are the target's) and added with them in
+        // one look at the gate.
+        Joints at = traced ?? target;
+        TwinTraceEntry? entry = trace ? new TwinTraceEntry(line, TwinTraceKind.Motion, at, FlangeAt(at) * ToolCenter, text, Clock.Seconds) : null;
         lock (_gate)
         {
             _joints = target;
-        }
-        if (trace)
-        {
-            Record(line, TwinTraceKind.Motion, text, traced);
+            if (entry is { } step)
+            {
+                Add(step);
+            }
         }
         return true;
     }
@@ -204,15 +244,21 @@ internal sealed partial class TwinArm
     /// <summary>Adds a step to the trace, with the arm's joints and TCP now (or those of <paramref name="at"/> joints).</summary>
     public void Record(int line, TwinTraceKind kind, string text, Joints? at = null)
     {
-        Joints joints = at ?? Joints;
-        var entry = new TwinTraceEntry(line, kind, joints, FlangeAt(joints) * ToolCenter, text, Clock.Seconds);
+        (Joints joints, Pose tcp) = at is { } given ? (given, FlangeAt(given) * ToolCenter) : Now;
+        var entry = new TwinTraceEntry(line, kind, joints, tcp, text, Clock.Seconds);
         lock (_gate)
         {
-            _trace.Add(entry);
-            if (MaxTrace > 0 && _trace.Count >= 2 * MaxTrace)
-            {
-                _trace.RemoveRange(0, _trace.Count - MaxTrace); // in batches: each entry is moved at most once per MaxTrace added
-            }
+            Add(entry);
+        }
+    }
+
+    /// <summary>Adds <paramref name="entry"/> to the trace (under the gate).</summary>
+    private void Add(TwinTraceEntry entry)
+    {
+        _trace.Add(entry);
+        if (MaxTrace > 0 && _trace.Count >= 2 * MaxTrace)
+        {
+            _trace.RemoveRange(0, _trace.Count - MaxTrace); // in batches: each entry is moved at most once per MaxTrace added
         }
     }
 }
