@@ -6,7 +6,8 @@ namespace Machina.Cli.Simulation;
 /// Tells what a virtual controller does, in the order it does it: each request it accepted (the controller's own reading of
 /// it, one per instruction, never the lines of a driver script), each action it finished with where the robot then is, pendant
 /// messages (program started, stopped), errors and output changes. The virtual controllers raise no events, so their public
-/// inspection members are read every <see cref="Period"/> and the differences are told; <see cref="Flush"/> tells the rest.
+/// inspection members are read every <see cref="Period"/> and what is new is told (each log read from where the last look left
+/// it: <see cref="IControllerLook"/>); <see cref="Flush"/> tells the rest.
 /// </summary>
 internal sealed class ControllerActivity : IAsyncDisposable
 {
@@ -41,6 +42,8 @@ internal sealed class ControllerActivity : IAsyncDisposable
         ControllerRobot robot = first.Robot();
         _digital = robot.DigitalOutputs;
         _analog = robot.AnalogOutputs;
+        // The pendant and errors from now on (a read "since" past every count copies nothing and gives the count); requests and
+        // executed ids from the start.
         _pendant = first.PendantSince(long.MaxValue, _texts);
         _errors = first.ErrorsSince(long.MaxValue, _texts);
         _loop = LoopAsync(time, _stop.Token);
