@@ -9,7 +9,7 @@ public abstract partial class VirtualController<TState>
     private int _requestsExecuted;
     private int _acknowledgementsSent;
     private int _maxUnacknowledged;
-    private readonly Queue<int> _executedLog = new();
+    private readonly VirtualControllerLog<int> _executedLog;
 
     /// <summary>How many driver clients have connected (and received the handshake) so far.</summary>
     public int ConnectionCount => Volatile.Read(ref _connectionCount);
@@ -44,12 +44,44 @@ public abstract partial class VirtualController<TState>
     /// <summary>Malformed or refused requests, with the reason (the last 1000); the controller keeps serving after each.</summary>
     public IReadOnlyList<string> Errors => Copy(_errors);
 
+    /// <summary>
+    /// Adds to <paramref name="into"/> the requests received (as <see cref="ReceivedRequests"/> has them) after the first
+    /// <paramref name="seen"/> ever logged, those still kept, oldest first; returns how many were ever logged: the
+    /// <paramref name="seen"/> of the next read. A reader who polls copies only what is new, and nothing when nothing is (the
+    /// count is read first, without the lock).
+    /// </summary>
+    public long ReceivedRequestsSince(long seen, ICollection<string> into) => Since(_requestLog, seen, into);
+
+    /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="ExecutedIds"/>.</summary>
+    public long ExecutedIdsSince(long seen, ICollection<int> into) => Since(_executedLog, seen, into);
+
+    /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="PendantMessages"/>.</summary>
+    public long PendantMessagesSince(long seen, ICollection<string> into) => Since(_pendant, seen, into);
+
+    /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="Errors"/>.</summary>
+    public long ErrorsSince(long seen, ICollection<string> into) => Since(_errors, seen, into);
+
     /// <summary>A copy of one of the controller's logs, taken under its lock.</summary>
-    private T[] Copy<T>(Queue<T> log)
+    private T[] Copy<T>(VirtualControllerLog<T> log)
     {
         lock (Gate)
         {
-            return [.. log];
+            return log.ToArray();
+        }
+    }
+
+    /// <summary>What <paramref name="log"/> took after the first <paramref name="seen"/> entries; the lock only when there is some.</summary>
+    private long Since<T>(VirtualControllerLog<T> log, long seen, ICollection<T> into)
+    {
+        ArgumentNullException.ThrowIfNull(into);
+        long total = log.Total;
+        if (total == seen)
+        {
+            return total;
+        }
+        lock (Gate)
+        {
+            return log.CopySince(seen, into);
         }
     }
 
@@ -65,7 +97,7 @@ public abstract partial class VirtualController<TState>
         {
             lock (Gate)
             {
-                Keep(_executedLog, id, _options.RequestLogCapacity);
+                _executedLog.Add(id);
             }
         }
     }

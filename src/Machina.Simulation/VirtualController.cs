@@ -16,9 +16,9 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     private readonly VirtualControllerOptions _options;
     private readonly Lock _sendLock = new();
-    private readonly Queue<string> _requestLog = new();
-    private readonly Queue<string> _pendant = new();
-    private readonly Queue<string> _errors = new();
+    private readonly VirtualControllerLog<string> _requestLog;
+    private readonly VirtualControllerLog<string> _pendant = new(MaxKeptTexts);
+    private readonly VirtualControllerLog<string> _errors = new(MaxKeptTexts);
     private readonly List<Task> _loops = [];
     private readonly TState _state;
 
@@ -32,6 +32,8 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         ArgumentNullException.ThrowIfNull(options);
         options.Validate();
         _options = options;
+        _requestLog = new(options.RequestLogCapacity);
+        _executedLog = new(options.RequestLogCapacity);
         Clock = options.TimeProvider;
         Model = options.Model;
         var (position, rotation, joints) = options.StartingPoint(fallbackStart);
@@ -234,7 +236,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         {
             lock (Gate)
             {
-                Keep(_requestLog, logText, _options.RequestLogCapacity);
+                _requestLog.Add(logText);
             }
         }
         int received = Interlocked.Increment(ref _requestsReceived);
@@ -251,7 +253,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     {
         lock (Gate)
         {
-            Keep(_pendant, PrintableText.Of(text), MaxKeptTexts);
+            _pendant.Add(PrintableText.Of(text));
         }
     }
 
@@ -261,17 +263,8 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         lock (Gate)
         {
             error = PrintableText.Of(error);
-            Keep(_errors, error, MaxKeptTexts);
-            Keep(_pendant, "ERROR: " + error, MaxKeptTexts);
-        }
-    }
-
-    private static void Keep<T>(Queue<T> queue, T text, int capacity)
-    {
-        queue.Enqueue(text);
-        while (queue.Count > capacity)
-        {
-            queue.Dequeue();
+            _errors.Add(error);
+            _pendant.Add("ERROR: " + error);
         }
     }
 }

@@ -31,7 +31,7 @@ public static class VirtualControllerRegistry
         new(AbbBrand.Definition, () => new VirtualAbbControllerOptions(), o =>
         {
             var c = new VirtualAbbController((VirtualAbbControllerOptions)o);
-            return new Running<VirtualAbbState>(AbbBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "malformed");
+            return new Running<VirtualAbbState>(AbbBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "malformed", () => c.Twin?.Io);
         }, ListensWhereAsked: true)
         {
             WithHome = (o, home) => (VirtualAbbControllerOptions)o with { HomeDirectory = home },
@@ -48,7 +48,7 @@ public static class VirtualControllerRegistry
                 ("real-time", options.RealtimePort is not null, () => c.RealtimePort),
             ];
             var served = ports.Where(p => p.Served).ToArray();
-            return new Running<VirtualUrState>(UrBrand.Definition.Type, c, c.StartAsync, [.. served.Select(p => p.Name)], () => [.. served.Select(p => p.Port())], "instructions", "refused");
+            return new Running<VirtualUrState>(UrBrand.Definition.Type, c, c.StartAsync, [.. served.Select(p => p.Name)], () => [.. served.Select(p => p.Port())], "instructions", "refused", () => c.Twin.Io);
         })
         {
             // URSim's ports: the client interfaces (the first takes scripts), RTDE and the dashboard.
@@ -60,7 +60,7 @@ public static class VirtualControllerRegistry
         new(KukaBrand.Definition, () => new VirtualKukaControllerOptions(), o =>
         {
             var c = new VirtualKukaController((VirtualKukaControllerOptions)o);
-            return new Running<VirtualKukaState>(KukaBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "refused");
+            return new Running<VirtualKukaState>(KukaBrand.Definition.Type, c, c.StartAsync, ["driver", "monitor"], () => [c.Port, c.MonitorPort], "requests", "refused", () => c.Twin?.Io);
         }, ListensWhereAsked: true),
     ];
 
@@ -151,7 +151,7 @@ public static class VirtualControllerRegistry
 
     /// <summary>A started controller of one state type, seen through <see cref="RunningVirtualController"/>.</summary>
     private sealed class Running<TState>(RobotType brand, VirtualController<TState> c, Func<CancellationToken, Task> start, string[] portNames,
-        Func<int[]> ports, string requestNoun, string errorWord) : RunningVirtualController(brand, c, portNames)
+        Func<int[]> ports, string requestNoun, string errorWord, Func<Twin.TwinIo?> io) : RunningVirtualController(brand, c, portNames)
         where TState : VirtualRobotState
     {
         public override IReadOnlyList<int> Ports => ports();
@@ -163,6 +163,11 @@ public static class VirtualControllerRegistry
         public override IReadOnlyList<string> PendantMessages => c.PendantMessages;
         public override IReadOnlyList<string> Errors => c.Errors;
         public override VirtualRobotState State => c.State;
+        public override long ReceivedRequestsSince(long seen, ICollection<string> into) => c.ReceivedRequestsSince(seen, into);
+        public override long ExecutedIdsSince(long seen, ICollection<int> into) => c.ExecutedIdsSince(seen, into);
+        public override long PendantMessagesSince(long seen, ICollection<string> into) => c.PendantMessagesSince(seen, into);
+        public override long ErrorsSince(long seen, ICollection<string> into) => c.ErrorsSince(seen, into);
+        internal override (object? Signals, long Writes) OutputsMark => io() is { } signals ? (signals, signals.Writes) : (null, 0);
         public override string Summary() => $"{c.RequestsReceived} {requestNoun} received, {c.RequestsExecuted} executed, {c.Errors.Count} {errorWord}";
         private protected override Task StartCoreAsync(CancellationToken cancellationToken) => start(cancellationToken);
     }
@@ -219,6 +224,27 @@ public abstract class RunningVirtualController : IAsyncDisposable
 
     /// <summary>Its robot as it is now (pose, joints, tool, outputs).</summary>
     public abstract VirtualRobotState State { get; }
+
+    /// <summary>
+    /// Adds to <paramref name="into"/> the requests it read after the first <paramref name="seen"/> (those still kept, oldest
+    /// first) and returns how many it ever read: the <paramref name="seen"/> of the next read. Nothing is copied when nothing is new.
+    /// </summary>
+    public abstract long ReceivedRequestsSince(long seen, ICollection<string> into);
+
+    /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="ExecutedIds"/>.</summary>
+    public abstract long ExecutedIdsSince(long seen, ICollection<int> into);
+
+    /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="PendantMessages"/>.</summary>
+    public abstract long PendantMessagesSince(long seen, ICollection<string> into);
+
+    /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="Errors"/>.</summary>
+    public abstract long ErrorsSince(long seen, ICollection<string> into);
+
+    /// <summary>
+    /// Changes whenever its outputs may have changed (the object that holds its twin's signals, and how many times they were
+    /// written): a reader that shows the outputs reads <see cref="State"/> again only then.
+    /// </summary>
+    internal abstract (object? Signals, long Writes) OutputsMark { get; }
 
     /// <summary>One line of what it did, e.g. "12 requests received, 12 executed, 0 malformed".</summary>
     public abstract string Summary();

@@ -82,8 +82,7 @@ public sealed partial class VirtualUrController
         _primaryClients.Add(connection);
         try
         {
-            var commands = primary ? new VirtualUrPrimaryCommands(PrimaryCommand) : null;
-            await FeedClientAsync(client.GetStream(), commands, token).ConfigureAwait(false);
+            await FeedTwinAsync(client.GetStream(), Twin, token, primary).ConfigureAwait(false);
         }
         finally
         {
@@ -98,7 +97,7 @@ public sealed partial class VirtualUrController
         _realtimeClients.Add(connection);
         try
         {
-            await FeedClientAsync(client.GetStream(), null, token).ConfigureAwait(false);
+            await FeedTwinAsync(client.GetStream(), Twin, token).ConfigureAwait(false);
         }
         finally
         {
@@ -106,12 +105,8 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>Feeds what a client interface connection sends to the interpreter, less the primary commands it takes out.</summary>
-    private Task FeedClientAsync(NetworkStream stream, VirtualUrPrimaryCommands? commands, CancellationToken token) =>
-        FeedTwinAsync(stream, Twin, token, commands);
-
-    /// <summary>A primary command: power, brakes, protective stop, program stop.</summary>
-    private void PrimaryCommand(string command)
+    /// <summary>A primary command: power, brakes, protective stop, program stop (awaited: a stop holds no thread while the program ends).</summary>
+    private async Task PrimaryCommandAsync(string command, CancellationToken token)
     {
         Pendant("Primary interface: " + command);
         switch (command)
@@ -120,7 +115,7 @@ public sealed partial class VirtualUrController
                 PowerOn();
                 break;
             case "power off":
-                PowerOff();
+                await PowerOffAsync(token).ConfigureAwait(false);
                 break;
             case "set robotmode run":
                 ReleaseBrakes();
@@ -129,7 +124,7 @@ public sealed partial class VirtualUrController
                 UnlockProtectiveStop();
                 break;
             default: // stop program
-                StopTwin(Twin);
+                await StopTwinAsync(Twin, token).ConfigureAwait(false);
                 break;
         }
     }

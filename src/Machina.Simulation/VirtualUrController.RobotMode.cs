@@ -78,10 +78,10 @@ public sealed partial class VirtualUrController
         }
     }
 
-    /// <summary>Powers the arm off: the running program stops, as on a UR.</summary>
-    private void PowerOff()
+    /// <summary>Powers the arm off: the running program stops, as on a UR (awaited: no thread waits for it).</summary>
+    private async Task PowerOffAsync(CancellationToken token)
     {
-        StopTwin(Twin);
+        await StopTwinAsync(Twin, token).ConfigureAwait(false);
         SetRobotMode(PowerOffMode);
     }
 

@@ -66,10 +66,14 @@ public sealed partial class VirtualUrController
     /// <summary>
     /// Feeds what one script connection sends to the interpreter, which starts each program as soon as it is complete; the
     /// connection has its own intake, so a client's unfinished text never joins another client's program. On the primary
-    /// interface, <paramref name="commands"/> first takes out the primary commands that are not URScript.
+    /// interface (<paramref name="primary"/>) the primary commands that are not URScript are taken out first and carried out
+    /// before the rest of the text they came with is received. Awaited throughout: a stop or a new program holds no thread while
+    /// the program it ends winds down.
     /// </summary>
-    private async Task FeedTwinAsync(NetworkStream stream, UrTwinController twin, CancellationToken token, VirtualUrPrimaryCommands? commands = null)
+    private async Task FeedTwinAsync(NetworkStream stream, UrTwinController twin, CancellationToken token, bool primary = false)
     {
+        List<string> taken = [];
+        VirtualUrPrimaryCommands? commands = primary ? new VirtualUrPrimaryCommands(taken.Add) : null;
         var intake = new UrScriptIntake();
         var bytes = new byte[64 * 1024];
         while (true)
@@ -84,10 +88,15 @@ public sealed partial class VirtualUrController
             if (commands is not null)
             {
                 text = commands.Filter(text);
+                foreach (string command in taken)
+                {
+                    await PrimaryCommandAsync(command, token).ConfigureAwait(false);
+                }
+                taken.Clear();
             }
             if (text.Length > 0)
             {
-                await Task.Run(() => twin.Receive(text, intake), token).ConfigureAwait(false);
+                await twin.ReceiveAsync(text, intake, token).ConfigureAwait(false);
             }
         }
     }

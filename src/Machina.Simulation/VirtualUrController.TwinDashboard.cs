@@ -4,8 +4,11 @@ namespace Machina.Simulation;
 
 public sealed partial class VirtualUrController
 {
-    /// <summary>A UR's stop: the arm stands where the motion had brought it, and the program ends (<see cref="UrTwinController.StopOnPath"/>).</summary>
-    private static void StopTwin(UrTwinController twin) => twin.StopOnPath();
+    /// <summary>
+    /// A UR's stop: the arm stands where the motion had brought it, and the program ends (<see cref="UrTwinController.StopOnPathAsync"/>):
+    /// awaited, so the thread-pool thread that serves the command waits for neither.
+    /// </summary>
+    private static Task StopTwinAsync(UrTwinController twin, CancellationToken token) => twin.StopOnPathAsync(token);
 
     /// <summary>
     /// The dashboard's answer to one command line, worded as UR's e-Series dashboard server words it, with the controller's state
@@ -22,17 +25,17 @@ public sealed partial class VirtualUrController
         {
             if (command.StartsWith(prefixed, StringComparison.OrdinalIgnoreCase) && (command.Length == prefixed.Length || command[prefixed.Length] == ' '))
             {
-                return DashboardWithArgument(prefixed, command[prefixed.Length..].Trim());
+                return await DashboardWithArgumentAsync(prefixed, command[prefixed.Length..].Trim(), token).ConfigureAwait(false);
             }
         }
         bool running = twin.State == UrProgramState.Running;
         switch (command.ToLowerInvariant())
         {
             case "stop":
-                StopTwin(twin);
+                await StopTwinAsync(twin, token).ConfigureAwait(false);
                 return "Stopped";
             case "play":
-                return Play(twin) ? "Starting program" : "Failed to execute: play";
+                return await PlayAsync(twin, token).ConfigureAwait(false) ? "Starting program" : "Failed to execute: play";
             case "pause":
                 if (running && HoldTwin())
                 {
@@ -57,13 +60,13 @@ public sealed partial class VirtualUrController
             case "quit":
                 return "Disconnected";
             case "shutdown":
-                PowerOff();
+                await PowerOffAsync(token).ConfigureAwait(false);
                 return "Shutting down";
             case "power on":
                 PowerOn();
                 return "Powering on";
             case "power off":
-                PowerOff();
+                await PowerOffAsync(token).ConfigureAwait(false);
                 return "Powering off";
             case "brake release":
                 ReleaseBrakes();
@@ -74,7 +77,7 @@ public sealed partial class VirtualUrController
                 {
                     _safety = Normal;
                 }
-                PowerOff();
+                await PowerOffAsync(token).ConfigureAwait(false);
                 return "Restarting safety";
             case "robotmode":
                 return "Robotmode: " + RobotModeName(RobotMode);
@@ -119,7 +122,7 @@ public sealed partial class VirtualUrController
     }
 
     /// <summary>The answer to a dashboard command that takes an argument (the text after the command).</summary>
-    private string DashboardWithArgument(string command, string argument)
+    private async ValueTask<string> DashboardWithArgumentAsync(string command, string argument, CancellationToken token)
     {
         switch (command)
         {
@@ -128,7 +131,7 @@ public sealed partial class VirtualUrController
                 {
                     return "File not found: " + argument;
                 }
-                StopTwin(Twin);
+                await StopTwinAsync(Twin, token).ConfigureAwait(false);
                 lock (Gate)
                 {
                     _loadedProgram = argument;
@@ -179,7 +182,7 @@ public sealed partial class VirtualUrController
     /// program the twin cannot read: it runs in its place a program that waits until stopped (approximated). Refused unless the
     /// arm is running (brakes released) and safe.
     /// </summary>
-    private bool Play(UrTwinController twin)
+    private async ValueTask<bool> PlayAsync(UrTwinController twin, CancellationToken token)
     {
         if (RobotMode != RunningMode || SafetyStatus != Normal)
         {
@@ -194,7 +197,7 @@ public sealed partial class VirtualUrController
         {
             return false;
         }
-        bool started = twin.Start("def loaded_program():\n  while True:\n    sleep(1)\n  end\nend\n");
+        bool started = await twin.StartAsync("def loaded_program():\n  while True:\n    sleep(1)\n  end\nend\n", token).ConfigureAwait(false);
         if (started)
         {
             lock (Gate)

@@ -6,49 +6,59 @@ namespace Machina.Cli.Simulation;
 /// Tells what a virtual controller does, in the order it does it: each request it accepted (the controller's own reading of
 /// it, one per instruction, never the lines of a driver script), each action it finished with where the robot then is, pendant
 /// messages (program started, stopped), errors and output changes. The virtual controllers raise no events, so their public
-/// inspection members are read every <see cref="Period"/> and the differences are told; <see cref="Flush"/> tells the rest.
+/// inspection members are read every <see cref="Period"/> and what is new is told (each log read from where the last look left
+/// it: <see cref="IControllerLook"/>); <see cref="Flush"/> tells the rest.
 /// </summary>
 internal sealed class ControllerActivity : IAsyncDisposable
 {
     /// <summary>How often the controller is looked at.</summary>
     internal static readonly TimeSpan Period = TimeSpan.FromMilliseconds(50);
 
-    private readonly Func<ControllerView> _look;
+    private readonly Func<IControllerLook> _look;
     private readonly RobotType _brand;
     private readonly Action<string> _log;
     private readonly Lock _gate = new();
     private readonly CancellationTokenSource _stop = new();
     private readonly Task _loop;
-    private int _received;
+    private readonly List<string> _texts = [];
+    private readonly List<int> _ids = [];
+    private long _received;
     private int _executed;
-    private int _idsSeen;
-    private int? _lastId;
-    private int _pendant;
-    private int _errors;
-    private IReadOnlyDictionary<string, bool> _digital = new Dictionary<string, bool>();
-    private IReadOnlyDictionary<string, double> _analog = new Dictionary<string, double>();
+    private long _idsSeen;
+    private long _pendant;
+    private long _errors;
+    private (object? Signals, long Writes) _outputsMark;
+    private IReadOnlyDictionary<string, bool> _digital;
+    private IReadOnlyDictionary<string, double> _analog;
 
-    private ControllerActivity(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time)
+    private ControllerActivity(RobotType brand, Func<IControllerLook> look, Action<string> log, TimeProvider time)
     {
         _brand = brand;
         _look = look;
         // Requests, pendant lines and errors carry text from the wire: shown printable, escape codes as \x1b.
         _log = line => log(PrintableText.Of(line));
-        ControllerView first = look();
-        _digital = first.DigitalOutputs;
-        _analog = first.AnalogOutputs;
-        _pendant = first.Pendant.Count;
-        _errors = first.Errors.Count;
+        IControllerLook first = look();
+        _outputsMark = first.OutputsMark;
+        ControllerRobot robot = first.Robot();
+        _digital = robot.DigitalOutputs;
+        _analog = robot.AnalogOutputs;
+        // The pendant and errors from now on (a read "since" past every count copies nothing and gives the count); requests and
+        // executed ids from the start.
+        _pendant = first.PendantSince(long.MaxValue, _texts);
+        _errors = first.ErrorsSince(long.MaxValue, _texts);
         _loop = LoopAsync(time, _stop.Token);
     }
 
     /// <summary>Starts telling what <paramref name="controller"/> does, one line at a time to <paramref name="log"/>.</summary>
-    internal static ControllerActivity Start(RunningController controller, Action<string> log, TimeProvider time) =>
-        Start(controller.Brand, controller.Look, log, time);
+    internal static ControllerActivity Start(RunningController controller, Action<string> log, TimeProvider time)
+    {
+        var live = new LiveControllerLook(controller.Inner);
+        return new(controller.Brand, () => live, log, time);
+    }
 
-    /// <summary>Starts telling what a <paramref name="brand"/> controller seen through <paramref name="look"/> does, one line at a time to <paramref name="log"/>.</summary>
+    /// <summary>Starts telling what a <paramref name="brand"/> controller seen through <paramref name="look"/> (whole views, one per look) does, one line at a time to <paramref name="log"/>.</summary>
     internal static ControllerActivity Start(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time) =>
-        new(brand, look, log, time);
+        new(brand, () => new ControllerViewLook(look()), log, time);
 
     private async Task LoopAsync(TimeProvider time, CancellationToken token)
     {
@@ -65,86 +75,78 @@ internal sealed class ControllerActivity : IAsyncDisposable
         }
     }
 
-    /// <summary>Tells everything that happened since the last look.</summary>
+    /// <summary>
+    /// Tells everything that happened since the last look. Each log is read from where the last look left it (nothing is copied
+    /// when nothing is new); the robot is read only for an executed line or when the outputs' mark moved (read before the robot,
+    /// so that a change after it is seen at the next look).
+    /// </summary>
     internal void Flush()
     {
         lock (_gate)
         {
-            ControllerView now = _look();
-            foreach (string message in News(now.Pendant, ref _pendant))
-            {
-                _log($"  pendant: {message}");
-            }
-            int newRequests = now.RequestsReceived - _received;
-            foreach (string request in now.Requests.TakeLast(Math.Min(Math.Max(newRequests, 0), now.Requests.Count)))
+            IControllerLook now = _look();
+            (object? Signals, long Writes) mark = now.OutputsMark;
+            _pendant = Tell(now.PendantSince(_pendant, _texts), "  pendant: ");
+            _received = now.RequestsSince(_received, _texts);
+            foreach (string request in _texts)
             {
                 _log($"  received  {RequestText.Describe(_brand, request)}");
             }
-            _received = now.RequestsReceived;
-            int newExecuted = now.RequestsExecuted - _executed;
-            int[] ids = NewIds(now.ExecutedIds);
-            if (newExecuted > 0 || ids.Length > 0)
+            _texts.Clear();
+            int executed = now.RequestsExecuted;
+            int newExecuted = executed - _executed;
+            _idsSeen = now.ExecutedIdsSince(_idsSeen, _ids);
+            ControllerRobot? robot = null;
+            if (newExecuted > 0 || _ids.Count > 0)
             {
-                string ended = ids.Length > 0
-                    ? string.Join(", ", ids.Select(id => "#" + id.ToString(CultureInfo.InvariantCulture)))
+                robot = now.Robot();
+                string ended = _ids.Count > 0
+                    ? string.Join(", ", _ids.Select(id => "#" + id.ToString(CultureInfo.InvariantCulture)))
                     : $"{newExecuted.ToString(CultureInfo.InvariantCulture)} request{(newExecuted == 1 ? "" : "s")} without an id";
-                _log($"  executed  {ended}; the tool is now at {now.Position} mm, the joints at {now.Joints} degrees");
+                _log($"  executed  {ended}; the tool is now at {robot.Position} mm, the joints at {robot.Joints} degrees");
+                _ids.Clear();
             }
-            _executed = now.RequestsExecuted;
-            foreach ((string pin, bool on) in now.DigitalOutputs.OrderBy(p => p.Key, StringComparer.Ordinal))
+            _executed = executed;
+            if (mark != _outputsMark)
             {
-                if (!_digital.TryGetValue(pin, out bool was) || was != on)
-                {
-                    _log($"  output    digital {pin} {(on ? "on" : "off")}");
-                }
+                _outputsMark = mark;
+                robot ??= now.Robot();
+                TellOutputs(robot);
             }
-            foreach ((string pin, double value) in now.AnalogOutputs.OrderBy(p => p.Key, StringComparer.Ordinal))
-            {
-                if (!_analog.TryGetValue(pin, out double was) || was != value)
-                {
-                    _log($"  output    analog {pin} = {value.ToString("0.######", CultureInfo.InvariantCulture)}");
-                }
-            }
-            _digital = now.DigitalOutputs;
-            _analog = now.AnalogOutputs;
-            foreach (string error in News(now.Errors, ref _errors))
-            {
-                _log($"  ERROR     {error}");
-            }
+            _errors = Tell(now.ErrorsSince(_errors, _texts), "  ERROR     ");
         }
     }
 
-    /// <summary>
-    /// The ids executed since the last look. The controller lists only requests with an id (a UR script's own requests have none)
-    /// and keeps the last <see cref="VirtualControllers.RequestsKept"/>: below that the list only grows; once full, the new ids
-    /// are those after the last one seen.
-    /// </summary>
-    private int[] NewIds(IReadOnlyList<int> ids)
+    /// <summary>Tells each text read into the list after <paramref name="prefix"/>, empties it, and gives back <paramref name="count"/>.</summary>
+    private long Tell(long count, string prefix)
     {
-        int from = Math.Min(_idsSeen, ids.Count);
-        if (ids.Count >= VirtualControllers.RequestsKept && _lastId is int last)
+        foreach (string text in _texts)
         {
-            from = 0;
-            for (int k = ids.Count - 1; k >= 0; k--)
-            {
-                if (ids[k] == last)
-                {
-                    from = k + 1;
-                    break;
-                }
-            }
+            _log(prefix + text);
         }
-        _idsSeen = ids.Count;
-        _lastId = ids.Count > 0 ? ids[^1] : _lastId;
-        return [.. ids.Skip(from)];
+        _texts.Clear();
+        return count;
     }
 
-    /// <summary>The entries of a growing list not seen yet (the list keeps only its last entries: the count seen is capped).</summary>
-    private static IEnumerable<string> News(IReadOnlyList<string> list, ref int seen)
+    /// <summary>Tells each output that changed since the last look, by name.</summary>
+    private void TellOutputs(ControllerRobot robot)
     {
-        int from = Math.Min(seen, list.Count);
-        seen = list.Count;
-        return list.Skip(from).ToArray();
+        foreach ((string pin, bool on) in robot.DigitalOutputs.OrderBy(p => p.Key, StringComparer.Ordinal))
+        {
+            if (!_digital.TryGetValue(pin, out bool was) || was != on)
+            {
+                _log($"  output    digital {pin} {(on ? "on" : "off")}");
+            }
+        }
+        foreach ((string pin, double value) in robot.AnalogOutputs.OrderBy(p => p.Key, StringComparer.Ordinal))
+        {
+            if (!_analog.TryGetValue(pin, out double was) || was != value)
+            {
+                _log($"  output    analog {pin} = {value.ToString("0.######", CultureInfo.InvariantCulture)}");
+            }
+        }
+        _digital = robot.DigitalOutputs;
+        _analog = robot.AnalogOutputs;
     }
 
     /// <summary>Stops looking, after telling the rest.</summary>

@@ -52,9 +52,6 @@ internal sealed class RunningController(RunningVirtualController controller) : I
     /// <summary>What it did: requests received and executed.</summary>
     internal string Summary() => controller.Summary();
 
-    /// <summary>What it shows of itself now: requests, executed actions, pendant, errors, robot and outputs.</summary>
-    internal ControllerView Look() => ControllerView.Of(controller);
-
     /// <summary>Stops it and closes its connections.</summary>
     public ValueTask DisposeAsync() => controller.DisposeAsync();
 }

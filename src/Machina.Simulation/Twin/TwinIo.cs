@@ -10,14 +10,38 @@ internal sealed class TwinIo
     private readonly Lock _gate = new();
     private readonly object _changed = new();
     private long _version;
+    private long _writes;
     private readonly Dictionary<string, bool[]> _bits = new(StringComparer.Ordinal);
     private readonly Dictionary<string, double[]> _numbers = new(StringComparer.Ordinal);
 
     /// <summary>Declares a bank of digital signals (all false).</summary>
-    public void AddBits(string bank, int count) => _bits[bank] = new bool[count];
+    public void AddBits(string bank, int count)
+    {
+        lock (_gate)
+        {
+            _bits[bank] = new bool[count];
+            Wrote();
+        }
+    }
 
     /// <summary>Declares a bank of numeric signals or registers (all 0).</summary>
-    public void AddNumbers(string bank, int count) => _numbers[bank] = new double[count];
+    public void AddNumbers(string bank, int count)
+    {
+        lock (_gate)
+        {
+            _numbers[bank] = new double[count];
+            Wrote();
+        }
+    }
+
+    /// <summary>
+    /// How many times a signal or register was written (or a bank declared), whatever its value: a reader that shows the outputs
+    /// (<c>machina sim</c>'s activity) reads them again only when this moved. An atomic read, without the lock.
+    /// </summary>
+    public long Writes => Volatile.Read(ref _writes);
+
+    /// <summary>Counts a write (under the lock: one writer at a time).</summary>
+    private void Wrote() => Volatile.Write(ref _writes, _writes + 1);
 
     /// <summary>How many signals a bank has (0 when there is no such bank).</summary>
     public int Count(string bank) => _bits.TryGetValue(bank, out bool[]? b) ? b.Length : _numbers.TryGetValue(bank, out double[]? n) ? n.Length : 0;
@@ -37,6 +61,7 @@ internal sealed class TwinIo
         lock (_gate)
         {
             _bits[bank][index] = value;
+            Wrote();
         }
     }
 
@@ -73,6 +98,7 @@ internal sealed class TwinIo
         lock (_gate)
         {
             _numbers[bank][index] = value;
+            Wrote();
         }
     }
 

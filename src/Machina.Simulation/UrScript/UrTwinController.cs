@@ -17,6 +17,7 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     private readonly UrScriptIntake _incoming = new();
     private CancellationTokenSource? _programStop;
     private Thread? _programThread;
+    private Task? _programEnded;
     private int _programs;
     private string? _programName;
 
@@ -124,6 +125,30 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     /// </summary>
     public void Receive(string text, UrScriptIntake intake)
     {
+        foreach (string program in TakePrograms(text, intake))
+        {
+            ProgramReceived?.Invoke(program);
+            Start(program);
+        }
+    }
+
+    /// <summary>
+    /// As <see cref="Receive(string, UrScriptIntake)"/> without holding the calling thread while a program it replaces ends (a
+    /// script connection's reader, on a thread-pool thread): <paramref name="cancellation"/> (the controller's stop) ends that
+    /// wait early, and the program is replaced all the same.
+    /// </summary>
+    public async Task ReceiveAsync(string text, UrScriptIntake intake, CancellationToken cancellation)
+    {
+        foreach (string program in TakePrograms(text, intake))
+        {
+            ProgramReceived?.Invoke(program);
+            await StartAsync(program, cancellation).ConfigureAwait(false);
+        }
+    }
+
+    /// <summary>Adds <paramref name="text"/> to <paramref name="intake"/> and takes out the programs it completed (none when it grew too long: that fails).</summary>
+    private List<string> TakePrograms(string text, UrScriptIntake intake)
+    {
         List<string> programs = [];
         lock (_gate)
         {
@@ -134,18 +159,14 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
                 string error = $"Compile error: line 1: the program is longer than {MaxProgramLength} characters";
                 ProgramStatus.Set(UrProgramState.Failed, error);
                 Pendant.Log(error);
-                return;
+                return programs;
             }
             while (intake.TakeProgram() is { } program)
             {
                 programs.Add(program);
             }
         }
-        foreach (string program in programs)
-        {
-            ProgramReceived?.Invoke(program);
-            Start(program);
-        }
+        return programs;
     }
 
     /// <summary>
@@ -155,6 +176,34 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     /// <returns>True when the program started.</returns>
     public bool Start(string text)
     {
+        if (Startable(text) is not { } program)
+        {
+            return false;
+        }
+        StopProgram();
+        Launch(program, text);
+        return true;
+    }
+
+    /// <summary>
+    /// As <see cref="Start"/> without holding the calling thread while the running program ends (<see cref="StopProgramAsync"/>):
+    /// <paramref name="cancellation"/> ends that wait early, and the new program starts all the same.
+    /// </summary>
+    /// <returns>True when the program started.</returns>
+    public async Task<bool> StartAsync(string text, CancellationToken cancellation)
+    {
+        if (Startable(text) is not { } program)
+        {
+            return false;
+        }
+        await StopProgramAsync(cancellation).ConfigureAwait(false);
+        Launch(program, text);
+        return true;
+    }
+
+    /// <summary>The compiled program when it compiles and the controller takes it now; else null (it failed, with why).</summary>
+    private UrBoundProgram? Startable(string text)
+    {
         UrBoundProgram program;
         try
         {
@@ -163,14 +212,19 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         catch (UrCompileException e)
         {
             Fail(e.Message);
-            return false;
+            return null;
         }
         if (Options.StartRefusal?.Invoke() is string refusal)
         {
             Fail(refusal);
-            return false;
+            return null;
         }
-        StopProgram();
+        return program;
+    }
+
+    /// <summary>Starts <paramref name="program"/> (from <paramref name="text"/>) on a thread of its own, once the one it replaces was stopped.</summary>
+    private void Launch(UrBoundProgram program, string text)
+    {
         if (Options.HeldBySafety?.Invoke() != true)
         {
             Release(); // the paused program is gone: the new one is not paused
@@ -180,20 +234,31 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         string header = text.TrimStart();
         int paren = header.IndexOf('(', StringComparison.Ordinal);
         bool named = header.StartsWith("def ", StringComparison.Ordinal) || header.StartsWith("sec ", StringComparison.Ordinal);
-        Thread thread;
+        // Completed by the program's thread as its last act: what an awaited stop waits for instead of joining the thread.
+        var ended = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         lock (_gate)
         {
             int number = ++_programs;
-            thread = new Thread(() => RunBound(program, number, stop.Token)) { IsBackground = true, Name = "URScript program" };
+            var thread = new Thread(() =>
+            {
+                try
+                {
+                    RunBound(program, number, stop.Token);
+                }
+                finally
+                {
+                    ended.TrySetResult();
+                }
+            }) { IsBackground = true, Name = "URScript program" };
             _programName = named && paren > 4 ? header[4..paren].Trim() : null;
             _programStop = stop;
             _programThread = thread;
+            _programEnded = ended.Task;
             ProgramStatus.Set(UrProgramState.Running, null);
             // Started before the gate opens: another connection's program may stop this one at once, and joins it.
             thread.Start();
         }
         StateChanged?.Invoke();
-        return true;
     }
 
     /// <summary>Compiles and runs <paramref name="text"/> on the calling thread to its end; gives how it ended.</summary>
@@ -234,15 +299,7 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     /// <summary>Stops the running program, if any, and waits for it to end.</summary>
     public void StopProgram()
     {
-        CancellationTokenSource? stop;
-        Thread? thread;
-        lock (_gate)
-        {
-            stop = _programStop;
-            thread = _programThread;
-            _programStop = null;
-            _programThread = null;
-        }
+        (CancellationTokenSource? stop, Thread? thread, _) = TakeProgram();
         if (stop is null)
         {
             return;
@@ -251,6 +308,56 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         if (thread == Thread.CurrentThread || thread is null || thread.Join(StopTimeout))
         {
             stop.Dispose(); // a program still winding down may still wait on its token
+        }
+    }
+
+    /// <summary>
+    /// As <see cref="StopProgram"/> without holding the calling thread while the program ends: awaits the task the program's
+    /// thread completes as its last act (at most <see cref="StopTimeout"/>, as the join). <paramref name="cancellation"/> ends
+    /// the wait early; the program is stopped all the same and winds down by itself.
+    /// </summary>
+    public async Task StopProgramAsync(CancellationToken cancellation)
+    {
+        (CancellationTokenSource? stop, Thread? thread, Task? ended) = TakeProgram();
+        if (stop is null)
+        {
+            return;
+        }
+        stop.Cancel();
+        if (thread == Thread.CurrentThread || ended is null || await EndsWithin(ended, StopTimeout, cancellation).ConfigureAwait(false))
+        {
+            stop.Dispose(); // a program still winding down may still wait on its token
+        }
+    }
+
+    /// <summary>Takes the running program's stop, thread and end (nulls when none runs): it is no longer the one to stop.</summary>
+    private (CancellationTokenSource? Stop, Thread? Thread, Task? Ended) TakeProgram()
+    {
+        lock (_gate)
+        {
+            var taken = (_programStop, _programThread, _programEnded);
+            _programStop = null;
+            _programThread = null;
+            _programEnded = null;
+            return taken;
+        }
+    }
+
+    /// <summary>True when <paramref name="task"/> ends within <paramref name="timeout"/>; false after it, or when <paramref name="cancellation"/> ends the wait first.</summary>
+    private static async Task<bool> EndsWithin(Task task, TimeSpan timeout, CancellationToken cancellation)
+    {
+        try
+        {
+            await task.WaitAsync(timeout, cancellation).ConfigureAwait(false);
+            return true;
+        }
+        catch (TimeoutException)
+        {
+            return false;
+        }
+        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+        {
+            return false;
         }
     }
 
@@ -349,7 +456,8 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
                 Hold();
                 break;
             case "stop":
-                ThreadPool.QueueUserWorkItem(static twin => twin.StopOnPath(), this, preferLocal: false);
+                // Bounded waits (the arm standing, the program's end) with no token to end them: the twin has no stop of its own.
+                ThreadPool.QueueUserWorkItem(static twin => _ = twin.StopOnPathAsync(CancellationToken.None), this, preferLocal: false);
                 break;
         }
     }
@@ -372,19 +480,29 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
 
     /// <summary>
     /// Stops the program as a UR's stop does: the arm decelerates on its path and the program ends, so the arm stands where the
-    /// motion had brought it (not back at the motion's start); the hold used for that is cleared after.
+    /// motion had brought it (not back at the motion's start); the hold used for that is cleared after. Awaited, it holds no
+    /// thread while the hold reaches the motion and the program's thread ends (the dashboard's <c>stop</c>, <c>load</c> and
+    /// <c>power off</c>, the primary <c>stop program</c>, an RTDE watchdog's <c>stop</c>: thread-pool threads). The task
+    /// completes once the program has ended (or <see cref="StopTimeout"/> passed); <paramref name="cancellation"/> (the
+    /// controller's stop) ends those waits early, and the program is stopped all the same.
     /// </summary>
-    public void StopOnPath()
+    public async Task StopOnPathAsync(CancellationToken cancellation)
     {
         if (State == UrProgramState.Running && Hold())
         {
             // The program's thread records where the arm stands when the hold reaches the motion (bounded: it does at once).
-            WaitUntilStanding(TimeSpan.FromSeconds(5));
-            StopProgram();
+            try
+            {
+                await WaitUntilStandingAsync(TimeSpan.FromSeconds(5), cancellation).ConfigureAwait(false);
+            }
+            catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+            {
+            }
+            await StopProgramAsync(cancellation).ConfigureAwait(false);
             Release();
             return;
         }
-        StopProgram();
+        await StopProgramAsync(cancellation).ConfigureAwait(false);
     }
 
     /// <inheritdoc/>
