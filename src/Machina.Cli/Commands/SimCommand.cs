@@ -129,10 +129,6 @@ internal static partial class SimCommand
         var gate = new Lock();
         void Log(string line)
         {
-            if (quiet && (line.StartsWith("  received", StringComparison.Ordinal) || line.StartsWith("  executed", StringComparison.Ordinal)))
-            {
-                return;
-            }
             lock (gate)
             {
                 context.Stdout.WriteLine(line);
@@ -184,7 +180,7 @@ internal static partial class SimCommand
             }
             Log(line);
         }
-        await using ControllerActivity activity = ControllerActivity.Start(controller, Activity, context.Time);
+        await using ControllerActivity activity = ControllerActivity.Start(controller, Activity, context.Time, quiet);
         // RWS is named after the controller's first line, which says "listening" and where.
         var rwsLines = new List<string>();
         await using IAsyncDisposable? rws = SimWebServices.Start(controller, bind, () => args.Port("--rws-port", 0, allowZero: true), DefaultPort + 100, Log, rwsLines.Add);

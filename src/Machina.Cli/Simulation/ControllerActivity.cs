@@ -16,6 +16,7 @@ internal sealed class ControllerActivity : IAsyncDisposable
 
     private readonly Func<IControllerLook> _look;
     private readonly RobotType _brand;
+    private readonly bool _quiet;
     private readonly Action<string> _log;
     private readonly Lock _gate = new();
     private readonly CancellationTokenSource _stop = new();
@@ -31,9 +32,10 @@ internal sealed class ControllerActivity : IAsyncDisposable
     private IReadOnlyDictionary<string, bool> _digital;
     private IReadOnlyDictionary<string, double> _analog;
 
-    private ControllerActivity(RobotType brand, Func<IControllerLook> look, Action<string> log, TimeProvider time)
+    private ControllerActivity(RobotType brand, Func<IControllerLook> look, Action<string> log, TimeProvider time, bool quiet)
     {
         _brand = brand;
+        _quiet = quiet;
         _look = look;
         // Requests, pendant lines and errors carry text from the wire: shown printable, escape codes as \x1b.
         _log = line => log(PrintableText.Of(line));
@@ -49,16 +51,19 @@ internal sealed class ControllerActivity : IAsyncDisposable
         _loop = LoopAsync(time, _stop.Token);
     }
 
-    /// <summary>Starts telling what <paramref name="controller"/> does, one line at a time to <paramref name="log"/>.</summary>
-    internal static ControllerActivity Start(RunningController controller, Action<string> log, TimeProvider time)
+    /// <summary>
+    /// Starts telling what <paramref name="controller"/> does, one line at a time to <paramref name="log"/>; <paramref name="quiet"/>
+    /// leaves out each request and executed action (their logs are then not read at all: a stream costs the looks nothing).
+    /// </summary>
+    internal static ControllerActivity Start(RunningController controller, Action<string> log, TimeProvider time, bool quiet = false)
     {
         var live = new LiveControllerLook(controller.Inner);
-        return new(controller.Brand, () => live, log, time);
+        return new(controller.Brand, () => live, log, time, quiet);
     }
 
     /// <summary>Starts telling what a <paramref name="brand"/> controller seen through <paramref name="look"/> (whole views, one per look) does, one line at a time to <paramref name="log"/>.</summary>
-    internal static ControllerActivity Start(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time) =>
-        new(brand, () => new ControllerViewLook(look()), log, time);
+    internal static ControllerActivity Start(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time, bool quiet = false) =>
+        new(brand, () => new ControllerViewLook(look()), log, time, quiet);
 
     private async Task LoopAsync(TimeProvider time, CancellationToken token)
     {
@@ -87,26 +92,11 @@ internal sealed class ControllerActivity : IAsyncDisposable
             IControllerLook now = _look();
             (object? Signals, long Writes) mark = now.OutputsMark;
             _pendant = Tell(now.PendantSince(_pendant, _texts), "  pendant: ");
-            _received = now.RequestsSince(_received, _texts);
-            foreach (string request in _texts)
-            {
-                _log($"  received  {RequestText.Describe(_brand, request)}");
-            }
-            _texts.Clear();
-            int executed = now.RequestsExecuted;
-            int newExecuted = executed - _executed;
-            _idsSeen = now.ExecutedIdsSince(_idsSeen, _ids);
             ControllerRobot? robot = null;
-            if (newExecuted > 0 || _ids.Count > 0)
+            if (!_quiet)
             {
-                robot = now.Robot();
-                string ended = _ids.Count > 0
-                    ? string.Join(", ", _ids.Select(id => "#" + id.ToString(CultureInfo.InvariantCulture)))
-                    : $"{newExecuted.ToString(CultureInfo.InvariantCulture)} request{(newExecuted == 1 ? "" : "s")} without an id";
-                _log($"  executed  {ended}; the tool is now at {robot.Position} mm, the joints at {robot.Joints} degrees");
-                _ids.Clear();
+                robot = TellRequestsAndExecuted(now);
             }
-            _executed = executed;
             if (mark != _outputsMark)
             {
                 _outputsMark = mark;
@@ -115,6 +105,32 @@ internal sealed class ControllerActivity : IAsyncDisposable
             }
             _errors = Tell(now.ErrorsSince(_errors, _texts), "  ERROR     ");
         }
+    }
+
+    /// <summary>Tells each request received and the actions executed since the last look; gives back the robot if it was read.</summary>
+    private ControllerRobot? TellRequestsAndExecuted(IControllerLook now)
+    {
+        _received = now.RequestsSince(_received, _texts);
+        foreach (string request in _texts)
+        {
+            _log($"  received  {RequestText.Describe(_brand, request)}");
+        }
+        _texts.Clear();
+        int executed = now.RequestsExecuted;
+        int newExecuted = executed - _executed;
+        _idsSeen = now.ExecutedIdsSince(_idsSeen, _ids);
+        ControllerRobot? robot = null;
+        if (newExecuted > 0 || _ids.Count > 0)
+        {
+            robot = now.Robot();
+            string ended = _ids.Count > 0
+                ? string.Join(", ", _ids.Select(id => "#" + id.ToString(CultureInfo.InvariantCulture)))
+                : $"{newExecuted.ToString(CultureInfo.InvariantCulture)} request{(newExecuted == 1 ? "" : "s")} without an id";
+            _log($"  executed  {ended}; the tool is now at {robot.Position} mm, the joints at {robot.Joints} degrees");
+            _ids.Clear();
+        }
+        _executed = executed;
+        return robot;
     }
 
     /// <summary>Tells each text read into the list after <paramref name="prefix"/>, empties it, and gives back <paramref name="count"/>.</summary>

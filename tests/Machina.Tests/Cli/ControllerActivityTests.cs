@@ -47,4 +47,33 @@ public sealed class ControllerActivityTests
             ],
             lines);
     }
+
+    [Fact]
+    public async Task Quiet_TellsPendantOutputsAndErrors_ButNoRequestOrExecutedLine()
+    {
+        var views = new Queue<ControllerView>(
+        [
+            View(0, [], 0, [], [], [], new Vector(1, 2, 3)),
+            View(2, ["1 15 2000", "2 1 3000 1000 4000 0 31416 0"], 1, [2], ["Machina driver 2.0.0 started"], [], new Vector(1, 2, 3),
+                new Dictionary<string, bool> { ["1"] = true }),
+            View(2, ["1 15 2000", "2 1 3000 1000 4000 0 31416 0"], 2, [2], ["Machina driver 2.0.0 started"], ["protective stop"], new Vector(1, 2, 3),
+                new Dictionary<string, bool> { ["1"] = true }),
+        ]);
+        ControllerView last = views.Peek();
+        var lines = new List<string>();
+
+        await using (ControllerActivity activity = ControllerActivity.Start(RobotType.UR, () => last = views.Count > 0 ? views.Dequeue() : last, lines.Add, new ManualClock(), quiet: true))
+        {
+            activity.Flush();
+            activity.Flush();
+        }
+
+        Assert.Equal(
+            [
+                "  pendant: Machina driver 2.0.0 started",
+                "  output    digital 1 on",
+                "  ERROR     protective stop",
+            ],
+            lines);
+    }
 }
