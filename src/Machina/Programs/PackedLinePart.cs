@@ -34,6 +34,7 @@ internal sealed class PackedLinePart
     private readonly Blocks<byte> _ascii = new();
     private readonly Blocks<char> _other = new();
     private readonly List<Line[]> _chunks = [];
+    private Line[]? _last; // the last chunk of _chunks
 
     /// <summary>
     /// Where a line is: block index (≥ 0 in the ASCII blocks, ~index in the character blocks), start and length (of the whole
@@ -163,22 +164,34 @@ internal sealed class PackedLinePart
     }
 
     /// <summary>Records where the line just stored is, as the next line.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // once per line: inlined into the optimised Add methods, not a tier-0 call
     private void Enter(Line entry)
     {
         int offset = Count & (ChunkSize - 1);
+        Line[]? last = _last;
+        if (last is null || offset == last.Length || (offset == 0 && Count > 0))
+        {
+            last = MakeRoom(offset);
+        }
+        last[offset] = entry;
+        Count++;
+        CharacterCount += entry.Length;
+    }
+
+    /// <summary>The chunk that takes the entry at <paramref name="offset"/>: a new one after a full one, or the first one grown.</summary>
+    private Line[] MakeRoom(int offset)
+    {
         if ((offset == 0 && Count > 0) || _chunks.Count == 0)
         {
             _chunks.Add(new Line[Count == 0 ? FirstChunkSize : ChunkSize]);
         }
-        else if (offset == _chunks[^1].Length)
+        else
         {
             Line[] grown = new Line[offset * 2];
             _chunks[^1].CopyTo(grown, 0);
             _chunks[^1] = grown; // only the first chunk grows: the later ones are made full size
         }
-        _chunks[^1][offset] = entry;
-        Count++;
-        CharacterCount += entry.Length;
+        return _last = _chunks[^1];
     }
 
     /// <summary>
