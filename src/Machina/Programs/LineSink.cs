@@ -14,6 +14,13 @@ internal abstract class LineSink
     /// <summary>Adds characters as one line, without making a string of them where the sink can (hot compiler paths).</summary>
     internal virtual void Add(ReadOnlySpan<char> line) => Add(new string(line));
 
+    /// <summary>
+    /// Adds characters as one line of which <paramref name="keptLength"/> characters from <paramref name="keptStart"/> are likely
+    /// the same as in the line last given so (text a writer keeps from line to line): a sink that keeps lines in memory stores them
+    /// once while they stay the same; the others add the line as <see cref="Add(ReadOnlySpan{char})"/> does.
+    /// </summary>
+    internal virtual void Add(ReadOnlySpan<char> line, int keptStart, int keptLength) => Add(line);
+
     // The scratch line of BeginAscii for a sink that does not hold bytes itself, and its characters.
     private byte[]? _asciiLine;
     private char[]? _asciiChars;
@@ -73,6 +80,9 @@ internal sealed class ListLineSink : LineSink
 
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override void Add(ReadOnlySpan<char> line) => Lines.Add(line);
+
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal override void Add(ReadOnlySpan<char> line, int keptStart, int keptLength) => Lines.AddKept(line, keptStart, keptLength);
 
     /// <summary>Keeps the bytes as they are (an ASCII line is kept as bytes anyway).</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]

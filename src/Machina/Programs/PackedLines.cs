@@ -87,6 +87,19 @@ internal sealed class PackedLines : IReadOnlyList<string>
         _longest = Math.Max(_longest, line.Length);
     }
 
+    /// <summary>
+    /// Appends a line of which <paramref name="keptLength"/> characters from <paramref name="keptStart"/> are likely the same as
+    /// in the line last appended so: stored once while they stay the same (<see cref="PackedLinePart.AddKept"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal void AddKept(ReadOnlySpan<char> line, int keptStart, int keptLength)
+    {
+        (_open ?? Open()).AddKept(line, keptStart, keptLength);
+        _count++;
+        CharacterCount += line.Length;
+        _longest = Math.Max(_longest, line.Length);
+    }
+
     /// <summary>Appends a line of ASCII bytes.</summary>
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal void AddAscii(ReadOnlySpan<byte> line)
@@ -122,6 +135,9 @@ internal sealed class PackedLines : IReadOnlyList<string>
         CharacterCount += other.CharacterCount;
         _longest = Math.Max(_longest, other._longest);
     }
+
+    /// <summary>Characters held in the blocks: <see cref="CharacterCount"/> less the kept text lines refer to (<see cref="AddKept"/>).</summary>
+    internal long StoredCharacters() => _parts.Sum(p => p.StoredCharacters());
 
     /// <summary>Writes every line followed by <paramref name="newLine"/>, without creating strings.</summary>
     internal void WriteTo(TextWriter writer, string newLine)

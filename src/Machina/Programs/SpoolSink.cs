@@ -25,6 +25,9 @@ internal sealed class MemorySpool : SpoolSink
     [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     internal override void Add(ReadOnlySpan<char> line) => _lines.Add(line);
 
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
+    internal override void Add(ReadOnlySpan<char> line, int keptStart, int keptLength) => _lines.AddKept(line, keptStart, keptLength);
+
     internal override void MoveTo(LineSink target)
     {
         if (target is ListLineSink list)

@@ -8,7 +8,8 @@ namespace Machina;
 /// writes it through a builder: the position's three numbers, the orientation's quaternion (kept while it stays the same), then
 /// the text after it (configuration, external axes, speed, zone, tool and the comment's start) kept while all of it stays the
 /// same, then the move's description. A toolpath changes only its position from move to move, so one copy replaces a dozen
-/// appends to a builder.
+/// appends to a builder. The sink is told where the kept text (orientation to the comment's start) is in the line: a program in
+/// memory stores it once for the moves that repeat it (<see cref="LineSink.Add(ReadOnlySpan{char}, int, int)"/>).
 /// </summary>
 internal sealed class RapidMoveLine
 {
@@ -66,10 +67,12 @@ internal sealed class RapidMoveLine
         line[at++] = ']';
         line[at++] = ',';
         line[at++] = ' ';
+        int kept = at; // the orientation and the text after it: the same from move to move in a toolpath
         quaternion.CopyTo(line[at..]);
         at += quaternion.Length;
         _after.AsSpan(0, _afterLength).CopyTo(line[at..]);
         at += _afterLength;
+        int keptLength = at - kept;
         if (human)
         {
             // The description is written in its place in the line: no buffer of its own to clear and copy from.
@@ -93,7 +96,7 @@ internal sealed class RapidMoveLine
             }
             line[at++] = ']';
         }
-        sink.Add(line[..at]);
+        sink.Add(line[..at], kept, keptLength);
         return true;
     }
 }
