@@ -39,7 +39,7 @@ public class RapidConcatenationTests
               TPWrite s + StrPart(s + "12345", 3, 3);
             """);
 
-        Assert.Equal(["@12 13;", "abcbd", "xbybz", "b", "bb", "bbbbb123"], lines);
+        Assert.Equal(["@12 13;", "abcbd", "xbybz", "b", "bb", "bbbb12"], lines);
     }
 
     [Fact]
