@@ -445,17 +445,17 @@ MODULE Machina_Driver
             RETURN;
         ENDIF
         executing := TRUE;
-        IF r.code = 1 OR r.code = 2 OR r.code = 3 OR r.code = 30 THEN
-            CheckMotion r;
-        ENDIF
         TEST r.code
         CASE 1:
+            CheckMotion r;
             cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
             MoveL cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 2:
+            CheckMotion r;
             cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
             MoveJ cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 3:
+            CheckMotion r;
             cursorJoints.robax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
             MoveAbsJ cursorJoints, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 4:
@@ -527,6 +527,7 @@ MODULE Machina_Driver
             AliasIO r.s1, inAnalog;
             SendIfConnected "$27 " + NumToStr(r.id, 0) + " " + NumToStr(AInput(inAnalog), 6) + ";";
         CASE 30:
+            CheckMotion r;
             ! The through point has the orientation request 31 gave (what a compiled MoveC's CirPoint has), else the current one.
             IF NOT arcThroughGiven THEN
                 arcThroughRot := CRobT(\Tool:=cursorTool \WObj:=cursorWObj).rot;
@@ -631,16 +632,23 @@ MODULE Machina_Driver
         RETURN value;
     ENDFUNC
 
-    ! Acknowledges once per request, after it returned: "@id code;" or "code;" for id 0.
+    ! Acknowledges once per request, after it returned: "@id code;" or "code;" for id 0. It sends as SendIfConnected does (one
+    ! routine call less per request).
     PROC Acknowledge(MachinaRequest r)
         IF r.id > 0 THEN
             lastExecutedId := r.id;
         ENDIF
-        IF r.id = 0 THEN
-            SendIfConnected NumToStr(r.code, 0) + ";";
-        ELSE
-            SendIfConnected "@" + NumToStr(r.id, 0) + " " + NumToStr(r.code, 0) + ";";
+        IF NOT clientConnected THEN
+            RETURN;
         ENDIF
+        IF r.id = 0 THEN
+            SocketSend clientSocket \Str:=NumToStr(r.code, 0) + ";";
+        ELSE
+            SocketSend clientSocket \Str:="@" + NumToStr(r.id, 0) + " " + NumToStr(r.code, 0) + ";";
+        ENDIF
+    ERROR
+        LostSend ERRNO;
+        TRYNEXT;
     ENDPROC
 
     PROC SendIfConnected(string message)
@@ -649,12 +657,17 @@ MODULE Machina_Driver
         ENDIF
         SocketSend clientSocket \Str:=message;
     ERROR
-        IF ERRNO = ERR_SOCK_CLOSED THEN
+        LostSend ERRNO;
+        TRYNEXT;
+    ENDPROC
+
+    ! From the ERROR handler of a send that failed with sendError: reports it; a closed socket is a lost client.
+    PROC LostSend(errnum sendError)
+        IF sendError = ERR_SOCK_CLOSED THEN
             clientConnected := FALSE;
             TPWrite "Machina: acknowledgement lost, client disconnected";
-            TRYNEXT;
+            RETURN;
         ENDIF
         TPWrite "Machina: could not send an acknowledgement";
-        TRYNEXT;
     ENDPROC
 ENDMODULE

@@ -234,6 +234,7 @@ internal sealed partial class RapidBinder
             }
             if (b.Op == "+" && lt.Element.Kind == RapidTypeKind.String && rt.Element.Kind == RapidTypeKind.String)
             {
+                b.Concatenation = [.. PartsOf(b.Left), .. PartsOf(b.Right)];
                 return StringType;
             }
             if (b.Op is "+" or "-" && lt.Element == RapidTypes.Pos && rt.Element == RapidTypes.Pos)
@@ -247,6 +248,9 @@ internal sealed partial class RapidBinder
         }
         throw Refuse(b.Line, RapidLoadException.Type($"'{b.Op}' cannot combine {l?.ToString() ?? "this value"} and {r?.ToString() ?? "this value"}"));
     }
+
+    /// <summary>The operands of a string concatenation in their order: those of a concatenation inside it, else the expression itself.</summary>
+    private static RapidExpr[] PartsOf(RapidExpr e) => e is RapidBinary { Concatenation: { } parts } ? parts : [e];
 
     private RapidDataType? BindFunction(RapidCallExpr call, RapidScope scope)
     {

@@ -110,6 +110,12 @@ internal sealed class RapidBinary(int line, string op, RapidExpr left, RapidExpr
     /// may take their values as numbers without boxing them; set by the binder.
     /// </summary>
     public bool NumberOperands { get; set; }
+
+    /// <summary>
+    /// For a <c>+</c> of two strings, the strings it joins, in order, with those of the concatenations it is made of (<c>"@" + a + " " + b</c>:
+    /// four parts), so that the machine makes one string instead of one per operator; null otherwise. Set by the binder.
+    /// </summary>
+    public RapidExpr[]? Concatenation { get; set; }
 }
 
 /// <summary>A function call, e.g. <c>NumToStr(x, 3)</c>.</summary>

@@ -1,3 +1,6 @@
+using System.Globalization;
+using System.Runtime.CompilerServices;
+
 namespace Machina.Simulation.Rapid;
 
 /// <summary>Evaluating expressions and storing values.</summary>
@@ -190,6 +193,10 @@ internal sealed partial class RapidMachine
 
     private object Binary(RapidBinary b, RapidFrame? frame)
     {
+        if (b.Concatenation is { } parts)
+        {
+            return Concatenate(parts, frame);
+        }
         RapidOperator op = b.Code;
         if (b.NumberOperands && op > RapidOperator.Xor)
         {
@@ -228,6 +235,25 @@ internal sealed partial class RapidMachine
             return RapidGeometry.ToPosRecord(sum);
         }
         return l is RapidRecord p ? RapidGeometry.ToPosRecord(RapidGeometry.ToVector(p) * (double)r) : RapidGeometry.ToPosRecord(RapidGeometry.ToVector((RapidRecord)r) * (double)l);
+    }
+
+    /// <summary>
+    /// Joins the strings of a concatenation (<see cref="RapidBinary.Concatenation"/>), evaluated left to right as the operators would
+    /// evaluate them: one new string instead of one per <c>+</c>. (As before, only a string stored or passed on is held to 80 characters.)
+    /// </summary>
+    private string Concatenate(RapidExpr[] parts, RapidFrame? frame)
+    {
+        if (parts.Length == 2)
+        {
+            string first = (string)Evaluate(parts[0], frame);
+            return string.Concat(first, (string)Evaluate(parts[1], frame));
+        }
+        var text = new DefaultInterpolatedStringHandler(0, parts.Length, CultureInfo.InvariantCulture, stackalloc char[MaxStringLength]);
+        foreach (RapidExpr part in parts)
+        {
+            text.AppendLiteral((string)Evaluate(part, frame));
+        }
+        return text.ToStringAndClear();
     }
 
     /// <summary>
