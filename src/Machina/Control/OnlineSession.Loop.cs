@@ -30,7 +30,9 @@ internal sealed partial class OnlineSession
     private void Post(Action message)
     {
         int me = Environment.CurrentManagedThreadId;
-        if (_mailbox.IsEmpty && Interlocked.CompareExchange(ref _owner, me, 0) == 0)
+        // Looked at before the claim: a message posted from inside the loop (an acknowledgement of a device that answers as it is
+        // sent) or while another thread runs it is only queued, with no claim tried twice.
+        if (Volatile.Read(ref _owner) == 0 && _mailbox.IsEmpty && Interlocked.CompareExchange(ref _owner, me, 0) == 0)
         {
             if (_mailbox.IsEmpty)
             {
