@@ -70,7 +70,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             {
                 types.Counting = true;
             }
-            Sample sample = RunOnce(work, scenario.MultiThreaded);
+            Sample sample = RunOnce(work, scenario.MultiThreaded, byThread);
             if (types is not null)
             {
                 types.Counting = false;
@@ -80,7 +80,9 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             samples.Add(sample with { JitSeconds = JitSeconds(threads, jit), JitMethods = jit.Methods });
             if (byThread)
             {
-                Console.Error.WriteLine($"{scenario.Name} run {i + 1}: {jit.Methods} methods compiled; processor time by thread: {ThreadCpu.Text(threads, size)}");
+                // The threads as read inside the run (after its baseline collection, before the last): the harness's own
+                // collections, on the issuing thread, are not in them; the JIT's column above keeps the reading around the run.
+                Console.Error.WriteLine($"{scenario.Name} run {i + 1}: {jit.Methods} methods compiled; processor time by thread: {ThreadCpu.Text(sample.Threads ?? threads, size)}");
             }
         }
         if (types is not null)
@@ -163,11 +165,17 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
 
     /// <summary>One timed run. Kept out of line so that the result cannot stay reachable from the caller's frame afterwards.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private static Sample RunOnce(Func<object?> work, bool multiThreaded)
+    /// <remarks>
+    /// With <paramref name="byThread"/>, the threads' processor time is read after the baseline collection and before the
+    /// collection that measures what is retained, outside the processor-time span (reading /proc costs time of its own), so
+    /// that the issuing thread's figure is the work's and not the harness's forced collections'.
+    /// </remarks>
+    private static Sample RunOnce(Func<object?> work, bool multiThreaded, bool byThread)
     {
         // The sampler's thread starts and stops outside the measured span (a thread start is about 0.1 ms).
         using var sampler = new PeakMemory(TimeSpan.FromMilliseconds(5));
         long baseline = FullCollect();
+        Dictionary<int, ThreadCpu.ThreadTime>? threadsBefore = byThread ? ThreadCpu.Read() : null;
         sampler.Reset();
         int gen0 = GC.CollectionCount(0), gen1 = GC.CollectionCount(1), gen2 = GC.CollectionCount(2);
         TimeSpan pauseBefore = GC.GetTotalPauseDuration();
@@ -187,10 +195,14 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
         TimeSpan cpuAfter = Process.GetCurrentProcess().TotalProcessorTime;
         var collections = $"{GC.CollectionCount(0) - gen0}/{GC.CollectionCount(1) - gen1}/{GC.CollectionCount(2) - gen2}";
         double pause = (GC.GetTotalPauseDuration() - pauseBefore).TotalSeconds;
+        List<ThreadCpu.ThreadTime>? threads = threadsBefore is null ? null : ThreadCpu.Difference(threadsBefore, ThreadCpu.Read());
         long retained = Math.Max(0, FullCollect() - baseline);
         GC.KeepAlive(result);
         return new Sample(elapsed.TotalSeconds, (cpuAfter - cpuBefore).TotalSeconds,
-            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, Math.Max(0, peak - baseline), collections, pause, faults);
+            multiThreaded ? totalAfter - totalBefore : threadAfter - threadBefore, retained, Math.Max(0, peak - baseline), collections, pause, faults)
+        {
+            Threads = threads,
+        };
     }
 
     private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds, long PageFaults)
@@ -200,6 +212,9 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
 
         /// <summary>Methods the JIT compiled during the run.</summary>
         public long JitMethods { get; init; }
+
+        /// <summary>Each thread's processor time inside the run (between its two collections), when asked for; else null.</summary>
+        public List<ThreadCpu.ThreadTime>? Threads { get; init; }
     }
 
     private static long FullCollect()

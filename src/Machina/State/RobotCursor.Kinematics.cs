@@ -44,7 +44,8 @@ internal sealed partial class RobotCursor
     /// </summary>
     private string? ApplyWithModel(RobotAction action, RobotModel model)
     {
-        MotionFields saved = SaveMotion();
+        // Only a strict refusal restores them: a streamed move (not strict) does not copy the eleven fields three times (one per cursor).
+        MotionFields saved = Strict ? SaveMotion() : default;
         string? refusal = ApplyMotion(action);
         if (refusal is not null)
         {
