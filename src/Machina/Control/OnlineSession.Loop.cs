@@ -22,68 +22,36 @@ internal sealed partial class OnlineSession
     /// <summary>The managed thread id of the thread running the loop, 0 while it is idle.</summary>
     private int _owner;
 
-    /// <summary>
-    /// Posts a message; runs the loop on this thread when it is idle. An idle loop with nothing queued handles the message at once,
-    /// without its trip through the mailbox (every acknowledgement and every issue posts one): whatever is posted meanwhile is
-    /// queued and handled after it, as before.
-    /// </summary>
+    /// <summary>Posts a message; runs the loop on this thread when it is idle.</summary>
     private void Post(Action message)
     {
-        int me = Environment.CurrentManagedThreadId;
-        // Looked at before the claim: a message posted from inside the loop (an acknowledgement of a device that answers as it is
-        // sent) or while another thread runs it is only queued, with no claim tried twice.
-        if (Volatile.Read(ref _owner) == 0 && _mailbox.IsEmpty && Interlocked.CompareExchange(ref _owner, me, 0) == 0)
-        {
-            if (_mailbox.IsEmpty)
-            {
-                Handle(message);
-            }
-            else
-            {
-                _mailbox.Enqueue(message);   // posted by another thread between the look and the claim: it goes first
-            }
-            if (!DrainAndLeave())
-            {
-                return;
-            }
-        }
-        else
-        {
-            _mailbox.Enqueue(message);
-        }
+        _mailbox.Enqueue(message);
         Run();
     }
 
     private void Run()
     {
         int me = Environment.CurrentManagedThreadId;
-        while (Interlocked.CompareExchange(ref _owner, me, 0) == 0 && DrainAndLeave())
+        while (Interlocked.CompareExchange(ref _owner, me, 0) == 0)
         {
-        }
-    }
-
-    /// <summary>Handles every queued message (the loop is this thread's), then leaves the loop idle; true when a message came after.</summary>
-    private bool DrainAndLeave()
-    {
-        while (_mailbox.TryDequeue(out Action? message))
-        {
-            Handle(message);
-        }
-        Volatile.Write(ref _owner, 0);
-        return !_mailbox.IsEmpty;
-    }
-
-    private void Handle(Action message)
-    {
-        try
-        {
-            TakeIssued();
-            message();
-        }
-        catch (Exception ex)
-        {
-            // A bug, never a report: say so and keep the loop alive for the next message.
-            Log(LogLevel.ERROR, $"The online session of \"{_host.Name}\" failed handling a message: {ex.GetType().Name}: {ex.Message}");
+            while (_mailbox.TryDequeue(out Action? message))
+            {
+                try
+                {
+                    TakeIssued();
+                    message();
+                }
+                catch (Exception ex)
+                {
+                    // A bug, never a report: say so and keep the loop alive for the next message.
+                    Log(LogLevel.ERROR, $"The online session of \"{_host.Name}\" failed handling a message: {ex.GetType().Name}: {ex.Message}");
+                }
+            }
+            Volatile.Write(ref _owner, 0);
+            if (_mailbox.IsEmpty)
+            {
+                return;
+            }
         }
     }
 

@@ -20,7 +20,7 @@ internal sealed class TcpLink : IAsyncDisposable
     private readonly CancellationTokenSource _stop = new();
     private readonly object _outboxGate = new();
     private byte[] _outbox = new byte[4096];
-    private int _outboxLength; // written under the outbox lock; read without it only by FlushHeld's first look
+    private int _outboxLength;
     private bool _loopWriting;
     private int _dispatchingThread; // the receive loop's thread while it hands a read to the receiver, else 0
     private int _socketWrites;
@@ -152,15 +152,9 @@ internal sealed class TcpLink : IAsyncDisposable
     /// <summary>Writes what was posted while a read was handed over: straight into the socket when it fits, else by the send loop.</summary>
     private void FlushHeld()
     {
-        Volatile.Write(ref _dispatchingThread, 0);
-        // Most reads post nothing (7 of 8 acknowledgements release no block): then no lock. What this thread held is seen here (its
-        // own writes); bytes another thread appended meanwhile are that thread's to write (it rang the send loop).
-        if (Volatile.Read(ref _outboxLength) == 0)
-        {
-            return;
-        }
         lock (_outboxGate)
         {
+            _dispatchingThread = 0;
             if (_outboxLength == 0)
             {
                 return;
@@ -316,8 +310,10 @@ internal sealed class TcpLink : IAsyncDisposable
                     Closed(null);
                     return;
                 }
-                // No lock: only this thread's Post compares equal to its own id, and it sees its own write.
-                Volatile.Write(ref _dispatchingThread, Environment.CurrentManagedThreadId);
+                lock (_outboxGate)
+                {
+                    _dispatchingThread = Environment.CurrentManagedThreadId;
+                }
                 try
                 {
                     _receiver!.OnReceived(buffer.AsSpan(0, n));
