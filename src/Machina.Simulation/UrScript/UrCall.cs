@@ -28,20 +28,26 @@ internal sealed class UrCall(int line, string name, List<UrExpr> positional, Lis
         if (Builtin is null)
         {
             // A function of the program: the arguments go straight into its frame's first locals (its parameters).
+            // The frame ends with the call (URScript has no closures): its array is the thread's again afterwards.
             UrFunction function = Function!;
-            var locals = new object?[Math.Max(function.LocalCount, Arguments.Length)];
+            object?[] locals = frame.Scratch.Rent(Math.Max(function.LocalCount, Arguments.Length));
             for (int i = 0; i < Arguments.Length; i++)
             {
                 locals[i] = Arguments[i].Eval(frame);
             }
-            return function.InvokeWithLocals(frame.Machine, Line, locals, frame.Depth + 1);
+            object result = function.InvokeWithLocals(frame.Machine, Line, locals, frame.Depth + 1, frame.Scratch);
+            frame.Scratch.Return(locals);
+            return result;
         }
-        var values = new object[Arguments.Length];
+        // A built-in keeps none of its arguments (UrBuiltin): the array is the thread's again after the call.
+        object?[] values = frame.Scratch.Rent(Arguments.Length);
         for (int i = 0; i < values.Length; i++)
         {
             values[i] = Arguments[i].Eval(frame);
         }
-        return Builtin.Invoke(frame.Machine, Line, values);
+        object value = Builtin.Invoke(frame.Machine, Line, values!);
+        frame.Scratch.Return(values);
+        return value;
     }
 }
 
@@ -61,7 +67,8 @@ internal sealed class UrRunExpr(int line, string name) : UrExpr(line)
 /// <summary>The parameters and implementation of one built-in function, as in the Script Manual.</summary>
 /// <param name="Name">The function's name.</param>
 /// <param name="Parameters">Parameter names; a non-null default makes the parameter optional.</param>
-/// <param name="Body">The implementation: machine, line and one value per parameter.</param>
+/// <param name="Body">The implementation: machine, line and one value per parameter; it reads them during the call and keeps neither the
+/// array nor a reference to it (the caller uses the array again: <see cref="UrScratch"/>).</param>
 internal sealed record UrBuiltin(string Name, (string Name, object? Default)[] Parameters, Func<UrMachine, int, object[], object> Body)
 {
     /// <summary>Runs the built-in.</summary>

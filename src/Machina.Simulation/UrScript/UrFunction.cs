@@ -35,11 +35,14 @@ internal sealed class UrFunction(int line, string name, string[] parameters, UrE
     {
         var locals = new object?[Math.Max(LocalCount, args.Length)];
         Array.Copy(args, locals, args.Length);
-        return InvokeWithLocals(machine, line, locals, depth);
+        return InvokeWithLocals(machine, line, locals, depth, new UrScratch());
     }
 
-    /// <summary>Runs the function in a frame of <paramref name="locals"/> (its parameters' values first, then empty slots) and gives what it returns.</summary>
-    public object InvokeWithLocals(UrMachine machine, int line, object?[] locals, int depth)
+    /// <summary>
+    /// Runs the function in a frame of <paramref name="locals"/> (its parameters' values first, then empty slots) and gives what it returns;
+    /// <paramref name="scratch"/> is the calling thread's.
+    /// </summary>
+    public object InvokeWithLocals(UrMachine machine, int line, object?[] locals, int depth, UrScratch scratch)
     {
         int most = machine.Limits.MaxCallDepth;
         if (depth > most)
@@ -47,15 +50,18 @@ internal sealed class UrFunction(int line, string name, string[] parameters, UrE
             throw new UrRuntimeException(line, $"too many nested calls (more than {most}) in '{Name}'");
         }
         UrStack.Check(line);
-        var frame = new UrFrame(machine, locals, depth);
+        var frame = new UrFrame(machine, locals, depth, scratch);
         UrStmt.Run(Body, frame);
         return frame.ReturnValue ?? UrNone.Value;
     }
 }
 
 /// <summary>The locals of one running call.</summary>
-internal sealed class UrFrame(UrMachine machine, object?[] locals, int depth)
+internal sealed class UrFrame(UrMachine machine, object?[] locals, int depth, UrScratch scratch)
 {
+    /// <summary>The running thread's arrays for arguments and locals.</summary>
+    public UrScratch Scratch { get; } = scratch;
+
     /// <summary>The running program.</summary>
     public UrMachine Machine { get; } = machine;
 

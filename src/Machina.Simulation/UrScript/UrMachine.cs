@@ -93,7 +93,7 @@ internal sealed class UrMachine : IDisposable
         {
             try
             {
-                var frame = new UrFrame(this, new object?[Program.Entry?.LocalCount ?? 0], 0);
+                var frame = new UrFrame(this, new object?[Program.Entry?.LocalCount ?? 0], 0, new UrScratch());
                 if (Program.Statements.Count > 0)
                 {
                     UrStmt.Run(Program.Statements, frame);

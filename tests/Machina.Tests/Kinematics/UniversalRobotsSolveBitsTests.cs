@@ -85,7 +85,7 @@ public class UniversalRobotsSolveBitsTests
         Affine.Dh(Math.Cos(theta), Math.Sin(theta), d, a, cosAlpha, sinAlpha);
 
     /// <summary>The solver as it was before it shared its sines, cosines and the elbow's atan2 (session 26's code).</summary>
-    private static int FullSolveRaw(UniversalRobotsDh dh, in Affine t, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
+    internal static int FullSolveRaw(UniversalRobotsDh dh, in Affine t, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
         double d1 = dh.D1, a2 = dh.A2, a3 = dh.A3, d4 = dh.D4, d5 = dh.D5, d6 = dh.D6;
         double px = t.Px - d6 * t.R02, py = t.Py - d6 * t.R12;

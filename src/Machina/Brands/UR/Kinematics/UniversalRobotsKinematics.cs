@@ -119,64 +119,216 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
 
     int ISolver.SolveRaw(in Affine t, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
-        double d1 = _dh.D1, a2 = _dh.A2, a3 = _dh.A3, d4 = _dh.D4, d5 = _dh.D5, d6 = _dh.D6;
-        double px = t.Px - d6 * t.R02, py = t.Py - d6 * t.R12;
-        double r = Math.Sqrt(px * px + py * py);
-        if (!(r >= Math.Abs(d4) - 1e-9) || r == 0)
+        if (!TryReach(t, out double phi1, out double phi2))
         {
             return 0;
         }
-        double phi1 = Math.Atan2(py, px), phi2 = Math.Acos(Math.Clamp(d4 / r, -1, 1));
         int count = 0;
-        // Each sine and cosine below is taken once: Math.SinCos gives Math.Sin's and Math.Cos's bits, and the solutions that differ
-        // only in the sign of an angle (θ5 of the two wrists, θ3 of the two elbows) take sin(−x) = −sin(x), cos(−x) = cos(x) and
-        // atan2(−y, x) = −atan2(y, x), which hold to the bit (UniversalRobotsSolveBitsTests compares with the full computation).
         for (int shoulder = 0; shoulder < 2; shoulder++)
         {
-            double t1 = phi1 + (shoulder == 0 ? phi2 : -phi2) + HalfPi;
-            (double s1, double c1) = Math.SinCos(t1);
-            // T01⁻¹ · T, the same for both wrists.
-            Affine t1t = Affine.Dh(c1, s1, d1, 0, 0, 1).InverseRigid() * t;
-            // The unit vector (s1, −c1, 0) seen from the flange is (s5·cos θ6, −s5·sin θ6, cos θ5). Taking θ5 with atan2 from it (rather
-            // than acos of the flange position, which equals cos θ5 exactly) keeps full precision near the straight wrist θ5 = 0.
-            double ux = t.R00 * s1 - t.R10 * c1, uy = t.R01 * s1 - t.R11 * c1, c5 = t.R02 * s1 - t.R12 * c1;
-            double s5Abs = Math.Sqrt(ux * ux + uy * uy);
-            double t5Abs = Math.Atan2(s5Abs, c5);
-            (double sinT5Abs, double cosT5) = Math.SinCos(t5Abs);
+            Shoulder arm = ShoulderOf(t, phi1, phi2, shoulder);
+            Turned turned = TurnedOf(t, arm);
             for (int wrist = 0; wrist < 2; wrist++)
             {
-                double t5 = wrist == 0 ? t5Abs : -t5Abs;
-                double sinT5 = wrist == 0 ? sinT5Abs : -sinT5Abs;
-                double sign = wrist == 0 ? 1 : -1;
-                // Straight wrist: θ6 is free (axes 2, 3 and 4 make up for it); keep the reference's.
-                double t6 = s5Abs < 1e-12 ? reference.J6 * Angles.ToRadians : Math.Atan2(-uy * sign, ux * sign);
-                (double sinT6, double cosT6) = Math.SinCos(t6);
-                // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
-                Affine t14 = t1t * Affine.Dh(cosT6, sinT6, d6, 0, 1, 0).InverseRigid() * Affine.Dh(cosT5, sinT5, d5, 0, 0, -1).InverseRigid();
-                double x = t14.Px, y = t14.Py;
-                double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
-                if (c3 > 1 + 1e-12 || c3 < -1 - 1e-12)
+                if (!TryElbows(t, arm, turned, wrist, reference, out Elbows elbows))
                 {
                     continue;
                 }
-                double t3Abs = Math.Acos(Math.Clamp(c3, -1, 1));
-                // The same for both elbows.
-                double towardsWrist = Math.Atan2(y, x), arm234 = Math.Atan2(t14.R10, t14.R00);
-                (double sinT3Abs, double cosT3) = Math.SinCos(t3Abs);
-                // The elbow's angle at +θ3; at −θ3 it is its negative.
-                double bend = Math.Atan2(a3 * sinT3Abs, a2 + a3 * cosT3);
                 for (int elbow = 0; elbow < 2; elbow++)
                 {
-                    double t3 = elbow == 0 ? -t3Abs : t3Abs;
-                    double t2 = towardsWrist - (elbow == 0 ? -bend : bend);
-                    double t4 = arm234 - t2 - t3;
-                    joints[count] = new Joints(
-                        KinematicsCore.WrapDegrees(t1), KinematicsCore.WrapDegrees(t2), KinematicsCore.WrapDegrees(t3),
-                        KinematicsCore.WrapDegrees(t4), KinematicsCore.WrapDegrees(t5), KinematicsCore.WrapDegrees(t6));
+                    joints[count] = SolutionOf(arm, elbows, elbow);
                     configurations[count++] = new ArmConfiguration(shoulder == 1, elbow == 1, wrist == 1);
                 }
             }
         }
         return count;
+    }
+
+    /// <remarks>
+    /// The same solution as <see cref="KinematicsCore.ClosestOf"/> of <c>SolveRaw</c>, to the bit, without solving every branch. Axis 1 of
+    /// each shoulder and axis 5 of each wrist come first (an arc tangent per shoulder); they bound the cost of the branch's two elbow
+    /// solutions from below (a joint's change is at least its distance to the reference modulo 360°). The (shoulder, wrist) pair with the
+    /// lowest bound is solved first, another only when its bound does not exceed the best cost found; an opened pair's axis 3 raises the
+    /// bound of each of its elbows, and an elbow is solved only when that bound does not exceed the best cost either. The choice is then
+    /// made over the solved ones in <c>SolveRaw</c>'s order with the same strict comparison, so ties go where they went.
+    /// </remarks>
+    Joints? ISolver.Closest(in Affine t, in Joints reference, out bool reachable)
+    {
+        reachable = false;
+        if (!TryReach(t, out double phi1, out double phi2))
+        {
+            return null;
+        }
+        Span<Shoulder> arms = stackalloc Shoulder[2];
+        Span<Turned> turned = stackalloc Turned[2];
+        Span<bool> opened = stackalloc bool[2];
+        Span<double> bound = stackalloc double[4];
+        for (int shoulder = 0; shoulder < 2; shoulder++)
+        {
+            Shoulder arm = arms[shoulder] = ShoulderOf(t, phi1, phi2, shoulder);
+            double axis1 = TurnDistance(KinematicsCore.WrapDegrees(arm.T1), reference.J1);
+            for (int wrist = 0; wrist < 2; wrist++)
+            {
+                double b = Math.Max(axis1, TurnDistance(KinematicsCore.WrapDegrees(wrist == 0 ? arm.T5Abs : -arm.T5Abs), reference.J5));
+                // A bound that is not a number proves nothing: that pair is solved first.
+                bound[shoulder * 2 + wrist] = double.IsNaN(b) ? double.NegativeInfinity : b;
+            }
+        }
+        // Fitted solutions by SolveRaw's order (shoulder, wrist, elbow); cost +∞ where not solved or beyond the limits.
+        Span<Joints> fitted = stackalloc Joints[KinematicsCore.MaxSolutions];
+        Span<double> cost = stackalloc double[KinematicsCore.MaxSolutions];
+        cost.Fill(double.PositiveInfinity);
+        Span<bool> solved = stackalloc bool[4];
+        double best = double.PositiveInfinity;
+        for (int round = 0; round < 4; round++)
+        {
+            // The unsolved pair with the lowest bound; stop when none could beat (or tie) the best cost so far.
+            int next = -1;
+            for (int p = 0; p < 4; p++)
+            {
+                if (!solved[p] && (next < 0 || bound[p] < bound[next]))
+                {
+                    next = p;
+                }
+            }
+            if (next < 0 || bound[next] - BoundMargin > best)
+            {
+                break;
+            }
+            solved[next] = true;
+            int shoulder = next >> 1, wrist = next & 1;
+            if (!opened[shoulder])
+            {
+                turned[shoulder] = TurnedOf(t, arms[shoulder]);
+                opened[shoulder] = true;
+            }
+            if (!TryElbows(t, arms[shoulder], turned[shoulder], wrist, reference, out Elbows elbows))
+            {
+                continue;
+            }
+            reachable = true;
+            // Each elbow's bound with its axis 3; the lower one first.
+            double first = Math.Max(bound[next], TurnDistance(KinematicsCore.WrapDegrees(-elbows.T3Abs), reference.J3));
+            double second = Math.Max(bound[next], TurnDistance(KinematicsCore.WrapDegrees(elbows.T3Abs), reference.J3));
+            int lower = second < first ? 1 : 0;
+            for (int k = 0; k < 2; k++)
+            {
+                int elbow = k == 0 ? lower : 1 - lower;
+                if ((elbow == 0 ? first : second) - BoundMargin > best)
+                {
+                    continue;
+                }
+                int i = next * 2 + elbow;
+                Joints raw = SolutionOf(arms[shoulder], elbows, elbow);
+                cost[i] = KinematicsCore.FitLimits(Model, raw, reference, out fitted[i]) ? KinematicsCore.Cost(fitted[i], reference) : double.PositiveInfinity;
+                best = Math.Min(best, cost[i]);
+            }
+        }
+        Joints? closest = null;
+        double bestCost = double.PositiveInfinity;
+        for (int i = 0; i < KinematicsCore.MaxSolutions; i++)
+        {
+            if (cost[i] < bestCost)
+            {
+                bestCost = cost[i];
+                closest = fitted[i];
+            }
+        }
+        return closest;
+    }
+
+    /// <summary>
+    /// Slack on a branch's lower bound (degrees): a fitted joint is its raw value plus whole turns (rounded once) and clamped by at most
+    /// 1e-9°, so its true change can be below the bound by far less than this; a branch within the slack is solved.
+    /// </summary>
+    private const double BoundMargin = 1e-6;
+
+    /// <summary>The distance (degrees) from <paramref name="value"/> to the nearest of <paramref name="reference"/> ± k·360°.</summary>
+    private static double TurnDistance(double value, double reference)
+    {
+        double d = value - reference;
+        return Math.Abs(d - 360.0 * Math.Round(d / 360.0));
+    }
+
+    /// <summary>One shoulder's axis 1, its sine and cosine, and what gives axis 5 of both wrists.</summary>
+    private readonly record struct Shoulder(double T1, double S1, double C1, double Ux, double Uy, double S5Abs, double T5Abs);
+
+    /// <summary>What a shoulder's two wrists share once one of them is solved: T01⁻¹ · T, and θ5's sine and cosine.</summary>
+    private readonly record struct Turned(Affine T1t, double SinT5Abs, double CosT5);
+
+    /// <summary>One (shoulder, wrist) pair's axes 5 and 6 and what its two elbows share.</summary>
+    private readonly record struct Elbows(double T5, double T6, double T3Abs, double TowardsWrist, double Arm234, double Bend);
+
+    /// <summary>The wrist centre's bearing and the shoulder's offset angle; false when the wrist centre is inside axis 1's cylinder.</summary>
+    private bool TryReach(in Affine t, out double phi1, out double phi2)
+    {
+        double d4 = _dh.D4, d6 = _dh.D6;
+        double px = t.Px - d6 * t.R02, py = t.Py - d6 * t.R12;
+        double r = Math.Sqrt(px * px + py * py);
+        if (!(r >= Math.Abs(d4) - 1e-9) || r == 0)
+        {
+            phi1 = phi2 = 0;
+            return false;
+        }
+        phi1 = Math.Atan2(py, px);
+        phi2 = Math.Acos(Math.Clamp(d4 / r, -1, 1));
+        return true;
+    }
+
+    // Each sine and cosine below is taken once: Math.SinCos gives Math.Sin's and Math.Cos's bits, and the solutions that differ only in
+    // the sign of an angle (θ5 of the two wrists, θ3 of the two elbows) take sin(−x) = −sin(x), cos(−x) = cos(x) and
+    // atan2(−y, x) = −atan2(y, x), which hold to the bit (UniversalRobotsSolveBitsTests compares with the full computation).
+    private static Shoulder ShoulderOf(in Affine t, double phi1, double phi2, int shoulder)
+    {
+        double t1 = phi1 + (shoulder == 0 ? phi2 : -phi2) + HalfPi;
+        (double s1, double c1) = Math.SinCos(t1);
+        // The unit vector (s1, −c1, 0) seen from the flange is (s5·cos θ6, −s5·sin θ6, cos θ5). Taking θ5 with atan2 from it (rather than
+        // acos of the flange position, which equals cos θ5 exactly) keeps full precision near the straight wrist θ5 = 0.
+        double ux = t.R00 * s1 - t.R10 * c1, uy = t.R01 * s1 - t.R11 * c1, c5 = t.R02 * s1 - t.R12 * c1;
+        double s5Abs = Math.Sqrt(ux * ux + uy * uy);
+        return new Shoulder(t1, s1, c1, ux, uy, s5Abs, Math.Atan2(s5Abs, c5));
+    }
+
+    private Turned TurnedOf(in Affine t, in Shoulder arm)
+    {
+        (double sinT5Abs, double cosT5) = Math.SinCos(arm.T5Abs);
+        // T01⁻¹ · T, the same for both wrists.
+        return new Turned(Affine.Dh(arm.C1, arm.S1, _dh.D1, 0, 0, 1).InverseRigid() * t, sinT5Abs, cosT5);
+    }
+
+    /// <summary>One wrist's axes 5 and 6 and its elbow triangle; false when the elbow cannot reach (no solution for this pair).</summary>
+    private bool TryElbows(in Affine t, in Shoulder arm, in Turned turned, int wrist, in Joints reference, out Elbows elbows)
+    {
+        double a2 = _dh.A2, a3 = _dh.A3;
+        double t5 = wrist == 0 ? arm.T5Abs : -arm.T5Abs;
+        double sinT5 = wrist == 0 ? turned.SinT5Abs : -turned.SinT5Abs;
+        double sign = wrist == 0 ? 1 : -1;
+        // Straight wrist: θ6 is free (axes 2, 3 and 4 make up for it); keep the reference's.
+        double t6 = arm.S5Abs < 1e-12 ? reference.J6 * Angles.ToRadians : Math.Atan2(-arm.Uy * sign, arm.Ux * sign);
+        (double sinT6, double cosT6) = Math.SinCos(t6);
+        // Frame 1 → 4: T14 = T01⁻¹ · T · T56⁻¹ · T45⁻¹
+        Affine t14 = turned.T1t * Affine.Dh(cosT6, sinT6, _dh.D6, 0, 1, 0).InverseRigid() * Affine.Dh(turned.CosT5, sinT5, _dh.D5, 0, 0, -1).InverseRigid();
+        double x = t14.Px, y = t14.Py;
+        double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
+        if (c3 > 1 + 1e-12 || c3 < -1 - 1e-12)
+        {
+            elbows = default;
+            return false;
+        }
+        double t3Abs = Math.Acos(Math.Clamp(c3, -1, 1));
+        (double sinT3Abs, double cosT3) = Math.SinCos(t3Abs);
+        // The same for both elbows; the elbow's angle at +θ3 (at −θ3 it is its negative).
+        elbows = new Elbows(t5, t6, t3Abs, Math.Atan2(y, x), Math.Atan2(t14.R10, t14.R00), Math.Atan2(a3 * sinT3Abs, a2 + a3 * cosT3));
+        return true;
+    }
+
+    private static Joints SolutionOf(in Shoulder arm, in Elbows e, int elbow)
+    {
+        double t3 = elbow == 0 ? -e.T3Abs : e.T3Abs;
+        double t2 = e.TowardsWrist - (elbow == 0 ? -e.Bend : e.Bend);
+        double t4 = e.Arm234 - t2 - t3;
+        return new Joints(
+            KinematicsCore.WrapDegrees(arm.T1), KinematicsCore.WrapDegrees(t2), KinematicsCore.WrapDegrees(t3),
+            KinematicsCore.WrapDegrees(t4), KinematicsCore.WrapDegrees(e.T5), KinematicsCore.WrapDegrees(e.T6));
     }
 }
