@@ -129,6 +129,8 @@ internal sealed class UrMachine : IDisposable
         {
             _turns = 0;
             Unlocked(() => Thread.Yield());
+            // Killed (or stopped) while the others ran: a killed thread runs no further statement (the Script Manual's kill).
+            Cancellation.ThrowIfCancellationRequested();
         }
     }
 

@@ -14,7 +14,7 @@ namespace Machina.Tests.Simulation.UrScript;
 /// </summary>
 public sealed class ThirdPartyUrKillTests
 {
-    [Fact(Skip = "URScript interpreter (perf50u's area): UrMachine.LoopTick looks at the thread's cancellation before it yields to the other threads, not after, so a thread killed during that yield runs its next statement; docs/reliability.md, session 30 re-run; the fix verified: a second look after the yield makes it pass 3 of 3, where it fails 3 of 3 without")]
+    [Fact]
     public async Task KilledThread_ReadingAClosedConnection_RunsNoStatementAfterTheKill()
     {
         using var listener = new TcpListener(IPAddress.Loopback, 0);
@@ -55,5 +55,37 @@ public sealed class ThirdPartyUrKillTests
         Assert.True(state == UrProgramState.Finished, twin.Error);
         Assert.Null(twin.Error);
         Assert.Contains("ended", twin.Pendant.Lines);
+    }
+
+    /// <summary>
+    /// The same rule without a socket: a thread that only counts gives the others the machine only where its loop yields, so
+    /// <c>kill</c> always finds it there; it must not count once more after it.
+    /// </summary>
+    [Fact]
+    public void KilledThread_CountingInALoop_CountsNoMoreAfterTheKill()
+    {
+        using var bounded = new CancellationTokenSource(TimeSpan.FromSeconds(30));
+        using var twin = new UrTwinController(new UrTwinOptions { RealTime = true });
+        UrProgramState state = twin.Run("""
+            def prog():
+              global count = 0
+              thread counter():
+                while True:
+                  count = count + 1
+                end
+              end
+              t = run counter()
+              while count < 3:
+                sync()
+              end
+              kill t
+              before = count
+              sleep(0.1)
+              textmsg("after the kill: ", count - before)
+            end
+            """, bounded.Token);
+
+        Assert.True(state == UrProgramState.Finished, twin.Error);
+        Assert.Contains("after the kill: 0", twin.Pendant.Lines);
     }
 }
