@@ -280,6 +280,7 @@ internal static class NumAppend
     }
 
     /// <summary><paramref name="value"/> (not negative) divided by 10^<paramref name="decimals"/> (0–9), each case a division by a constant.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static long DivPow10(long value, int decimals) => (long)(decimals switch
     {
         0 => (ulong)value,
