@@ -143,6 +143,25 @@ internal static class KinematicsCore
         return best;
     }
 
+    /// <summary>
+    /// The fitted solution of lowest cost, the first of equal ones in solution order (a branch not solved or not fitted has cost
+    /// +infinity); null when none fits. The closest solvers' last step.
+    /// </summary>
+    internal static Joints? Lowest(ReadOnlySpan<double> cost, ReadOnlySpan<Joints> fitted)
+    {
+        Joints? closest = null;
+        double bestCost = double.PositiveInfinity;
+        for (int i = 0; i < cost.Length; i++)
+        {
+            if (cost[i] < bestCost)
+            {
+                bestCost = cost[i];
+                closest = fitted[i];
+            }
+        }
+        return closest;
+    }
+
     /// <summary>How far <paramref name="fitted"/> is from <paramref name="current"/> for <see cref="ClosestOf"/>: the largest joint change plus a thousandth of their sum.</summary>
     internal static double Cost(Joints fitted, Joints current)
     {

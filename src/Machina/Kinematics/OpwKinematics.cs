@@ -257,17 +257,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
             best = Math.Min(best, Fit(first, reference, out fitted[next * 2], out cost[next * 2]));
             best = Math.Min(best, Fit(flipped, reference, out fitted[next * 2 + 1], out cost[next * 2 + 1]));
         }
-        Joints? closest = null;
-        double bestCost = double.PositiveInfinity;
-        for (int i = 0; i < KinematicsCore.MaxSolutions; i++)
-        {
-            if (cost[i] < bestCost)
-            {
-                bestCost = cost[i];
-                closest = fitted[i];
-            }
-        }
-        return closest;
+        return KinematicsCore.Lowest(cost, fitted);
 
         double Fit(Joints raw, Joints current, out Joints f, out double c)
         {

@@ -224,17 +224,7 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
                 best = Math.Min(best, cost[i]);
             }
         }
-        Joints? closest = null;
-        double bestCost = double.PositiveInfinity;
-        for (int i = 0; i < KinematicsCore.MaxSolutions; i++)
-        {
-            if (cost[i] < bestCost)
-            {
-                bestCost = cost[i];
-                closest = fitted[i];
-            }
-        }
-        return closest;
+        return KinematicsCore.Lowest(cost, fitted);
     }
 
     /// <summary>
