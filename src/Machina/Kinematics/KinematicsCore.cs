@@ -144,6 +144,42 @@ internal static class KinematicsCore
     }
 
     /// <summary>
+    /// Slack on a branch's lower bound (degrees): a fitted joint is its raw value plus whole turns (rounded once) and clamped by at most
+    /// 1e-9°, so its true change can be below the bound by far less than this; a branch within the slack is solved.
+    /// </summary>
+    internal const double BoundMargin = 1e-6;
+
+    /// <summary>The distance (degrees) from <paramref name="value"/> to the nearest of <paramref name="reference"/> ± k·360°.</summary>
+    internal static double TurnDistance(double value, double reference)
+    {
+        double d = value - reference;
+        return Math.Abs(d - 360.0 * Math.Round(d / 360.0));
+    }
+
+    /// <summary>
+    /// The closest solvers' next branch: the unsolved one with the lowest lower <paramref name="bound"/> (the first of equals; a bound of
+    /// +∞, a branch that cannot be solved, is never taken), marked solved; −1 when none is left or none could beat or tie
+    /// <paramref name="best"/>, the lowest cost found so far, within <see cref="BoundMargin"/>.
+    /// </summary>
+    internal static int NextBranch(ReadOnlySpan<double> bound, Span<bool> solved, double best)
+    {
+        int next = -1;
+        for (int b = 0; b < bound.Length; b++)
+        {
+            if (!solved[b] && bound[b] < double.PositiveInfinity && (next < 0 || bound[b] < bound[next]))
+            {
+                next = b;
+            }
+        }
+        if (next < 0 || bound[next] - BoundMargin > best)
+        {
+            return -1;
+        }
+        solved[next] = true;
+        return next;
+    }
+
+    /// <summary>
     /// The fitted solution of lowest cost, the first of equal ones in solution order (a branch not solved or not fitted has cost
     /// +infinity); null when none fits. The closest solvers' last step.
     /// </summary>

@@ -220,7 +220,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
             for (int elbow = 0; elbow < 2; elbow++)
             {
                 double b = armOk[shoulder]
-                    ? Math.Max(TurnDistance(BrandJ1(arms[shoulder].T1), reference.J1), TurnDistance(BrandJ3(ElbowAngle(arms[shoulder], elbow)), reference.J3))
+                    ? Math.Max(KinematicsCore.TurnDistance(BrandJ1(arms[shoulder].T1), reference.J1), KinematicsCore.TurnDistance(BrandJ3(ElbowAngle(arms[shoulder], elbow)), reference.J3))
                     : double.PositiveInfinity;
                 // A bound that is not a number proves nothing: that branch is solved first.
                 bound[shoulder * 2 + elbow] = double.IsNaN(b) ? double.NegativeInfinity : b;
@@ -238,20 +238,11 @@ public sealed class OpwKinematics : IKinematics, ISolver
         double best = double.PositiveInfinity;
         for (int round = 0; round < 4; round++)
         {
-            // The unsolved branch with the lowest bound; stop when none could beat (or tie) the best cost so far.
-            int next = -1;
-            for (int b = 0; b < 4; b++)
-            {
-                if (!solved[b] && bound[b] < double.PositiveInfinity && (next < 0 || bound[b] < bound[next]))
-                {
-                    next = b;
-                }
-            }
-            if (next < 0 || bound[next] - BoundMargin > best)
+            int next = KinematicsCore.NextBranch(bound, solved, best);
+            if (next < 0)
             {
                 break;
             }
-            solved[next] = true;
             Shoulder arm = arms[next >> 1];
             Branch(wrist, arm, FrameOf(wrist, arm), next & 1, out Joints first, out Joints flipped);
             best = Math.Min(best, Fit(first, reference, out fitted[next * 2], out cost[next * 2]));
@@ -264,19 +255,6 @@ public sealed class OpwKinematics : IKinematics, ISolver
             c = KinematicsCore.FitLimits(Model, raw, current, out f) ? KinematicsCore.Cost(f, current) : double.PositiveInfinity;
             return c;
         }
-    }
-
-    /// <summary>
-    /// Slack on a branch's lower bound (degrees): a fitted joint is its raw value plus whole turns (rounded once) and clamped by at most
-    /// 1e-9°, so its true change can be below the bound by far less than this; a branch within the slack is solved.
-    /// </summary>
-    private const double BoundMargin = 1e-6;
-
-    /// <summary>The distance (degrees) from <paramref name="value"/> to the nearest of <paramref name="reference"/> ± k·360°.</summary>
-    private static double TurnDistance(double value, double reference)
-    {
-        double d = value - reference;
-        return Math.Abs(d - 360.0 * Math.Round(d / 360.0));
     }
 
     /// <summary>The wrist's target and what every branch shares: the wrist centre, its distance from axis 1, the reference's axes 1, 4, 6.</summary>

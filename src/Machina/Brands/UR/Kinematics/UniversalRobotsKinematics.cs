@@ -166,10 +166,10 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         for (int shoulder = 0; shoulder < 2; shoulder++)
         {
             Shoulder arm = arms[shoulder] = ShoulderOf(t, phi1, phi2, shoulder);
-            double axis1 = TurnDistance(KinematicsCore.WrapDegrees(arm.T1), reference.J1);
+            double axis1 = KinematicsCore.TurnDistance(KinematicsCore.WrapDegrees(arm.T1), reference.J1);
             for (int wrist = 0; wrist < 2; wrist++)
             {
-                double b = Math.Max(axis1, TurnDistance(KinematicsCore.WrapDegrees(wrist == 0 ? arm.T5Abs : -arm.T5Abs), reference.J5));
+                double b = Math.Max(axis1, KinematicsCore.TurnDistance(KinematicsCore.WrapDegrees(wrist == 0 ? arm.T5Abs : -arm.T5Abs), reference.J5));
                 // A bound that is not a number proves nothing: that pair is solved first.
                 bound[shoulder * 2 + wrist] = double.IsNaN(b) ? double.NegativeInfinity : b;
             }
@@ -182,20 +182,11 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
         double best = double.PositiveInfinity;
         for (int round = 0; round < 4; round++)
         {
-            // The unsolved pair with the lowest bound; stop when none could beat (or tie) the best cost so far.
-            int next = -1;
-            for (int p = 0; p < 4; p++)
-            {
-                if (!solved[p] && (next < 0 || bound[p] < bound[next]))
-                {
-                    next = p;
-                }
-            }
-            if (next < 0 || bound[next] - BoundMargin > best)
+            int next = KinematicsCore.NextBranch(bound, solved, best);
+            if (next < 0)
             {
                 break;
             }
-            solved[next] = true;
             int shoulder = next >> 1, wrist = next & 1;
             if (!opened[shoulder])
             {
@@ -208,13 +199,13 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
             }
             reachable = true;
             // Each elbow's bound with its axis 3; the lower one first.
-            double first = Math.Max(bound[next], TurnDistance(KinematicsCore.WrapDegrees(-elbows.T3Abs), reference.J3));
-            double second = Math.Max(bound[next], TurnDistance(KinematicsCore.WrapDegrees(elbows.T3Abs), reference.J3));
+            double first = Math.Max(bound[next], KinematicsCore.TurnDistance(KinematicsCore.WrapDegrees(-elbows.T3Abs), reference.J3));
+            double second = Math.Max(bound[next], KinematicsCore.TurnDistance(KinematicsCore.WrapDegrees(elbows.T3Abs), reference.J3));
             int lower = second < first ? 1 : 0;
             for (int k = 0; k < 2; k++)
             {
                 int elbow = k == 0 ? lower : 1 - lower;
-                if ((elbow == 0 ? first : second) - BoundMargin > best)
+                if ((elbow == 0 ? first : second) - KinematicsCore.BoundMargin > best)
                 {
                     continue;
                 }
@@ -225,19 +216,6 @@ public sealed class UniversalRobotsKinematics : IKinematics, ISolver
             }
         }
         return KinematicsCore.Lowest(cost, fitted);
-    }
-
-    /// <summary>
-    /// Slack on a branch's lower bound (degrees): a fitted joint is its raw value plus whole turns (rounded once) and clamped by at most
-    /// 1e-9°, so its true change can be below the bound by far less than this; a branch within the slack is solved.
-    /// </summary>
-    private const double BoundMargin = 1e-6;
-
-    /// <summary>The distance (degrees) from <paramref name="value"/> to the nearest of <paramref name="reference"/> ± k·360°.</summary>
-    private static double TurnDistance(double value, double reference)
-    {
-        double d = value - reference;
-        return Math.Abs(d - 360.0 * Math.Round(d / 360.0));
     }
 
     /// <summary>One shoulder's axis 1, its sine and cosine, and what gives axis 5 of both wrists.</summary>
