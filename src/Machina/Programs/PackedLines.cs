@@ -82,9 +82,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
     internal void Add(ReadOnlySpan<char> line)
     {
         (_open ?? Open()).Add(line);
-        _count++;
-        CharacterCount += line.Length;
-        _longest = Math.Max(_longest, line.Length);
+        Counted(line.Length);
     }
 
     /// <summary>
@@ -95,9 +93,7 @@ internal sealed class PackedLines : IReadOnlyList<string>
     internal void AddKept(ReadOnlySpan<char> line, int keptStart, int keptLength)
     {
         (_open ?? Open()).AddKept(line, keptStart, keptLength);
-        _count++;
-        CharacterCount += line.Length;
-        _longest = Math.Max(_longest, line.Length);
+        Counted(line.Length);
     }
 
     /// <summary>Appends a line of ASCII bytes.</summary>
@@ -105,9 +101,16 @@ internal sealed class PackedLines : IReadOnlyList<string>
     internal void AddAscii(ReadOnlySpan<byte> line)
     {
         (_open ?? Open()).AddAscii(line);
+        Counted(line.Length);
+    }
+
+    /// <summary>Counts a line of <paramref name="length"/> characters just appended.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void Counted(int length)
+    {
         _count++;
-        CharacterCount += line.Length;
-        _longest = Math.Max(_longest, line.Length);
+        CharacterCount += length;
+        _longest = Math.Max(_longest, length);
     }
 
     private PackedLinePart Open()
