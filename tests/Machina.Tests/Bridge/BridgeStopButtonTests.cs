@@ -59,7 +59,9 @@ public class BridgeStopButtonTests
         await browser.EvaluateAsync("document.getElementById('stop').click()");
         Assert.Equal("stopped", await browser.WaitForAsync("document.body ? document.body.dataset.state : ''", "stopped", "error", "done", "closed"));
         // The stop's control event and the failure of the move under way (reported once the arm has stopped) reach the page in either order.
+        // Either one sets the state "stopped", so both are waited for before the page is read.
         Assert.Equal("1", await browser.WaitForAsync("String(document.querySelectorAll('#events li.ev-action-failed').length)", "1"));
+        Assert.Equal("1", await browser.WaitForAsync("String(document.querySelectorAll('#events li.ev-control').length)", "1"));
         await browser.EvaluateAsync("new Promise(r => requestAnimationFrame(() => r(0)))");
         byte[] png = await browser.ScreenshotAsync();
         await File.WriteAllBytesAsync(Path.Combine(AppContext.BaseDirectory, "bridge-stop.png"), png);
