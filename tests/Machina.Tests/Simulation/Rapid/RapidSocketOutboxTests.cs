@@ -16,23 +16,25 @@ public class RapidSocketOutboxTests
     private static readonly TimeSpan Wait = TimeSpan.FromSeconds(10);
 
     [Fact]
-    public async Task SocketSend_TwoSendsThenAWait_ArriveInOneWrite()
+    public async Task SocketSend_TwoSendsThenAWait_HeldWhileTheTaskRunsThenOneWrite()
     {
-        // Between the sends the task computes (fewer statements than the bound): before, "ab" left at once and the client's
-        // pending read woke with it alone.
+        // Between the sends the task reads the clock, which the test holds: before, "ab" had left by then.
+        using var clock = new HeldClock();
         await using var session = await Session.StartAsync("""
             SocketReceive client \Str:=text \Time:=10;
             SocketSend client \Str:="ab";
-            FOR i FROM 1 TO 400 DO
-              n := n + 1;
-            ENDFOR
+            text := CTime();
             SocketSend client \Str:="cd";
             SocketReceive client \Str:=text \Time:=10;
-            """);
-        var buffer = new byte[16];
-        Task<int> read = session.Client.ReceiveAsync(buffer, SocketFlags.None);
+            """, clock);
         await session.Client.SendAsync(Encoding.ASCII.GetBytes("go"), SocketFlags.None);
-        int n = await read.WaitAsync(Wait);
+        Assert.True(clock.Inside.Wait(Wait), "the task to read the clock");
+        int available = session.Client.Available;
+        clock.Release.Set();
+        Assert.Equal(0, available);
+        var buffer = new byte[16];
+        using var timeout = new CancellationTokenSource(Wait);
+        int n = await session.Client.ReceiveAsync(buffer, SocketFlags.None, timeout.Token);
         Assert.Equal("abcd", Encoding.ASCII.GetString(buffer, 0, n));
         await session.Client.SendAsync(Encoding.ASCII.GetBytes("end"), SocketFlags.None);
         Assert.Equal(RapidProgramState.Finished, await session.Run.WaitAsync(Wait));
@@ -162,12 +164,12 @@ public class RapidSocketOutboxTests
 
         public Task<RapidProgramState> Run { get; private set; }
 
-        public static async Task<Session> StartAsync(string body)
+        public static async Task<Session> StartAsync(string body, HeldClock? clock = null)
         {
             var listener = new TcpListener(IPAddress.Loopback, 0);
             listener.Start();
             int port = ((IPEndPoint)listener.LocalEndpoint).Port;
-            var twin = new RapidTwinController();
+            var twin = new RapidTwinController(new RapidTwinOptions { Time = clock ?? TimeProvider.System });
             twin.Reserve(listener);
             twin.Load(("T.mod", $$"""
                 MODULE T
@@ -185,7 +187,11 @@ public class RapidSocketOutboxTests
                 ENDMODULE
                 """));
             var session = new Session(listener, new Socket(AddressFamily.InterNetwork, SocketType.Stream, ProtocolType.Tcp), Task.FromResult(RapidProgramState.Ready));
-            session.Run = Task.Run(() => twin.Run("main", session._stop.Token));
+            session.Run = Task.Run(() =>
+            {
+                clock?.Hold(Environment.CurrentManagedThreadId);
+                return twin.Run("main", session._stop.Token);
+            });
             using var connect = new CancellationTokenSource(Wait);
             await session.Client.ConnectAsync(IPAddress.Loopback, port, connect.Token);
             return session;
@@ -213,6 +219,34 @@ public class RapidSocketOutboxTests
             await Task.WhenAny(Run, Task.Delay(Wait));
             _listener.Stop();
             _stop.Dispose();
+        }
+    }
+
+    /// <summary>The system clock, except that the first reading of the program's thread waits until the test releases it.</summary>
+    private sealed class HeldClock : TimeProvider, IDisposable
+    {
+        private int _thread = -1;
+
+        public ManualResetEventSlim Inside { get; } = new();
+
+        public ManualResetEventSlim Release { get; } = new();
+
+        public void Hold(int thread) => Volatile.Write(ref _thread, thread);
+
+        public override DateTimeOffset GetUtcNow()
+        {
+            if (Environment.CurrentManagedThreadId == Volatile.Read(ref _thread) && !Inside.IsSet)
+            {
+                Inside.Set();
+                Release.Wait(Wait);
+            }
+            return base.GetUtcNow();
+        }
+
+        public void Dispose()
+        {
+            Inside.Dispose();
+            Release.Dispose();
         }
     }
 
