@@ -13,7 +13,8 @@ namespace Machina.Simulation;
 /// of an acknowledgement (<c>@id code;</c>, or <c>code;</c> for id 0) is what its arm just executed: on the driver task's own
 /// thread, that write goes through the fault plan (held while the controller stops answering, delayed, cut, lost, followed by
 /// a drop) and is counted as executed, with no hand-off to another thread. Everything else it sends (handshake, information,
-/// failure reports) and the monitor task's sockets go straight to the wire.
+/// failure reports) and the monitor task's sockets go straight to the connection. Every write goes through the connection's
+/// outbox (<see cref="RapidOutbox"/>): what a task sends is held until it waits, then written at once.
 /// </summary>
 public sealed partial class VirtualAbbController : IRapidSocketSeam
 {
@@ -37,7 +38,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
 
     private readonly ConnectionLog _connections;
 
-    bool IRapidSocketSeam.Accepted(int localPort, Socket connection, CancellationToken task)
+    bool IRapidSocketSeam.Accepted(int localPort, Socket connection, Stream outbox, CancellationToken task)
     {
         if (localPort == Port || localPort == MonitorPort)
         {
@@ -79,7 +80,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         var client = new TcpClient();
         client.Client.Dispose();
         client.Client = connection;
-        if (!AttachClient(client))
+        if (!AttachClient(client, outbox))
         {
             _connections.Left(connection);
             return false;
@@ -193,7 +194,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
     }
 
-    bool IRapidSocketSeam.Send(Socket connection, byte[] bytes, CancellationToken task)
+    bool IRapidSocketSeam.Send(Socket connection, Stream outbox, byte[] bytes, CancellationToken task)
     {
         TwinRequest? acknowledged = null;
         List<TwinRequest>? skipped = null;
@@ -224,7 +225,7 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
         if (acknowledged is null)
         {
-            bool sent = SendDirect(connection, bytes);
+            bool sent = SendDirect(outbox, bytes);
             if (sent && bytes.Length > 3 && bytes[0] == '$' && bytes[1] == '2' && bytes[2] == '4' && ReferenceEquals(connection, Volatile.Read(ref _monitorSocket)))
             {
                 Interlocked.Increment(ref _monitorReportsSent); // the first of the monitor's three chunks of a state report
@@ -284,14 +285,14 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
     }
 
-    private static bool SendDirect(Socket connection, byte[] bytes)
+    private static bool SendDirect(Stream outbox, byte[] bytes)
     {
         try
         {
-            connection.Send(bytes);
+            outbox.Write(bytes);
             return true;
         }
-        catch (Exception e) when (e is SocketException or ObjectDisposedException)
+        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
         {
             return false;
         }

@@ -24,7 +24,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     private CancellationTokenSource? _stopping;
     private TcpClient? _client;
-    private NetworkStream? _clientStream;
+    private Stream? _clientStream;
 
     /// <summary>Creates a stopped controller whose robot starts as <paramref name="initial"/> says, at the options' starting point.</summary>
     private protected VirtualController(VirtualControllerOptions options, Pose fallbackStart, Func<Vector, Rotation, Joints, TState> initial)
@@ -139,16 +139,17 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     /// <summary>
     /// Makes <paramref name="client"/> the driver connection, under the send lock (so the progress its greeting reports matches
-    /// the acknowledgements sent). False when the fault plan refuses it (it is closed then).
+    /// the acknowledgements sent). False when the fault plan refuses it (it is closed then). The controller writes to it through
+    /// <paramref name="wire"/> when given (a twin's network stack that holds what its program sends), else its own stream.
     /// </summary>
-    private protected bool AttachClient(TcpClient client)
+    private protected bool AttachClient(TcpClient client, Stream? wire = null)
     {
         if (RefusesConnection())
         {
             client.Dispose();
             return false;
         }
-        var stream = client.GetStream();
+        Stream stream = wire ?? client.GetStream();
         lock (_sendLock)
         {
             Interlocked.Increment(ref _connectionCount);
@@ -166,9 +167,11 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     private protected void DropClient(TcpClient? only = null)
     {
         TcpClient? client;
+        Stream? stream;
         lock (Gate)
         {
             client = _client;
+            stream = _clientStream;
             if (only is not null && !ReferenceEquals(client, only))
             {
                 only.Dispose();
@@ -177,7 +180,21 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             _client = null;
             _clientStream = null;
         }
+        FlushBeforeClose(stream);
         client?.Dispose();
+    }
+
+    /// <summary>What a twin's network stack still holds for the client goes out before it is closed (a no-op on a socket's own stream).</summary>
+    private static void FlushBeforeClose(Stream? stream)
+    {
+        try
+        {
+            stream?.Flush();
+        }
+        catch (Exception e) when (e is IOException or SocketException or ObjectDisposedException)
+        {
+            // Already closed.
+        }
     }
 
     /// <summary>True while a driver connection is open.</summary>
@@ -204,7 +221,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             {
                 _lastExecutedId = executedId;
             }
-            NetworkStream? stream;
+            Stream? stream;
             lock (Gate)
             {
                 stream = _clientStream;

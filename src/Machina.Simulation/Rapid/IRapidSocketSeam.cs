@@ -8,8 +8,11 @@ namespace Machina.Simulation.Rapid;
 /// </summary>
 internal interface IRapidSocketSeam
 {
-    /// <summary>A connection was accepted on <paramref name="localPort"/>; false refuses it (it is closed and SocketAccept waits on).</summary>
-    bool Accepted(int localPort, Socket connection, CancellationToken task);
+    /// <summary>
+    /// A connection was accepted on <paramref name="localPort"/>; false refuses it (it is closed and SocketAccept waits on).
+    /// <paramref name="outbox"/> is where the controller writes to it (what the accepting task writes is held until it waits).
+    /// </summary>
+    bool Accepted(int localPort, Socket connection, Stream outbox, CancellationToken task);
 
     /// <summary>The program received <paramref name="text"/> on <paramref name="connection"/> (SocketReceive returns it next).</summary>
     void Received(Socket connection, string text, CancellationToken task);
@@ -23,6 +26,9 @@ internal interface IRapidSocketSeam
     /// </summary>
     RapidInbox? Inbox(Socket connection);
 
-    /// <summary>The program sends <paramref name="bytes"/> on <paramref name="connection"/>; false when the connection is closed (ERR_SOCK_CLOSED).</summary>
-    bool Send(Socket connection, byte[] bytes, CancellationToken task);
+    /// <summary>
+    /// The program sends <paramref name="bytes"/> on <paramref name="connection"/> (each SocketSend); they go out through
+    /// <paramref name="outbox"/>. False when the connection is closed (ERR_SOCK_CLOSED).
+    /// </summary>
+    bool Send(Socket connection, Stream outbox, byte[] bytes, CancellationToken task);
 }

@@ -176,6 +176,7 @@ internal static partial class RapidBuiltins
         else
         {
             c.Clock.Wait(seconds, task.CancellationToken);
+            Twin.TwinWait.Blocking();
             task.CancellationToken.WaitHandle.WaitOne(1); // another task may be the one to make the condition true (ends at once when stopped)
         }
         task.CancellationToken.ThrowIfCancellationRequested();

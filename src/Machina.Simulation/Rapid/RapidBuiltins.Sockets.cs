@@ -72,6 +72,7 @@ internal static partial class RapidBuiltins
             TcpListener listener = server.Listener ?? throw ArgumentError(call, "SocketAccept: the socket is not listening");
             IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
             Socket accepted;
+            RapidOutbox outbox;
             do
             {
                 using var abandon = CancellationTokenSource.CreateLinkedTokenSource(call.Machine.Task.CancellationToken);
@@ -91,9 +92,11 @@ internal static partial class RapidBuiltins
                     accepted.Dispose();
                     throw new OperationCanceledException("SocketAccept: the task was stopped.");
                 }
+                outbox = new RapidOutbox(accepted, call.Machine.Task.Sends);
             }
-            while (seam is not null && !seam.Accepted(((IPEndPoint)listener.LocalEndpoint).Port, accepted, call.Machine.Task.CancellationToken));
+            while (seam is not null && !seam.Accepted(((IPEndPoint)listener.LocalEndpoint).Port, accepted, outbox, call.Machine.Task.CancellationToken));
             client.Connection = accepted;
+            client.Outbox = outbox;
             client.Connection.NoDelay = true;
             if (call.Has(2))
             {
@@ -101,25 +104,28 @@ internal static partial class RapidBuiltins
             }
             client.Status = 2;
         }),
+        // The bytes go to the connection's outbox, which the network stack writes when the task next waits (RapidOutbox): a write
+        // that failed there raises ERR_SOCK_CLOSED at the task's next SocketSend on the connection.
         Instruction("SocketSend", [P("Socket", "socketdev"), Opt("Str", "string"), Opt("RawData", "rawbytes"), Opt("Data", null), Opt("NoOfBytes", "num")], call =>
         {
             Socket connection = Connected(call);
+            RapidOutbox outbox = Device(call).Outbox!;
             byte[] bytes = SendBytes(call);
             try
             {
                 if (call.Machine.Task.Controller.Options.Seam is { } seam)
                 {
-                    if (!seam.Send(connection, bytes, call.Machine.Task.CancellationToken))
+                    if (!seam.Send(connection, outbox, bytes, call.Machine.Task.CancellationToken))
                     {
                         throw new SocketException((int)SocketError.ConnectionReset);
                     }
                 }
                 else
                 {
-                    connection.Send(bytes);
+                    outbox.Write(bytes);
                 }
             }
-            catch (Exception ex) when (ex is SocketException or ObjectDisposedException)
+            catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)
             {
                 throw call.Error(RapidErrorNumbers.SockClosed, $"SocketSend: {ex.Message}");
             }
@@ -144,6 +150,7 @@ internal static partial class RapidBuiltins
         Instruction("SocketClose", [P("Socket", "socketdev")], call =>
         {
             RapidSocketDevice s = Device(call);
+            s.Outbox?.Flush(); // what the task sent goes out before the close
             try
             {
                 // A graceful close (FIN), also while the controller's network stack still waits for data on it (a socket disposed
@@ -157,7 +164,7 @@ internal static partial class RapidBuiltins
             s.Connection?.Dispose();
             s.Listener?.Stop();
             s.Udp?.Dispose();
-            (s.Connection, s.Listener, s.Udp, s.Bound, s.Status, s.PendingDatagram) = (null, null, null, null, 0, null);
+            (s.Connection, s.Outbox, s.Listener, s.Udp, s.Bound, s.Status, s.PendingDatagram) = (null, null, null, null, null, 0, null);
         }),
         Function("SocketPeek", "num", [P("Socket", "socketdev")], call =>
         {

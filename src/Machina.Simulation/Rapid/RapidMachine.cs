@@ -155,6 +155,7 @@ internal sealed partial class RapidMachine(RapidTask task)
         // after its stop accepted a client a restart had already refused, and greeted it (CI, the ABB restart trial).
         Task.CancellationToken.ThrowIfCancellationRequested();
         Task.RunPendingTraps();
+        Task.Sends.Statement();
         return Execute(statement, frame);
     }
 

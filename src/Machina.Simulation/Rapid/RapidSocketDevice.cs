@@ -11,6 +11,9 @@ internal sealed class RapidSocketDevice
     /// <summary>The connection, when this device is connected.</summary>
     public Socket? Connection { get; set; }
 
+    /// <summary>What the controller's network stack holds to send on <see cref="Connection"/> (SocketSend writes here), when connected.</summary>
+    public RapidOutbox? Outbox { get; set; }
+
     /// <summary>The state SocketGetStatus reports (SOCKET_CREATED…; 0 before SocketCreate).</summary>
     public int Status { get; set; }
 

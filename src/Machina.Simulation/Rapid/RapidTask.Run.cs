@@ -23,5 +23,13 @@ internal sealed partial class RapidTask
     public string? Error => _status.Error;
 
     /// <summary>Records how the run ended (or that it runs); <paramref name="meanwhile"/> runs in the same step (nobody sees the state between).</summary>
-    internal void SetState(RapidProgramState state, string? error, Action? meanwhile = null) => _status.Set(state, error, meanwhile);
+    /// <remarks>A run that ends first writes what its socket sends hold: whoever sees it ended also got what it sent.</remarks>
+    internal void SetState(RapidProgramState state, string? error, Action? meanwhile = null)
+    {
+        if (state != RapidProgramState.Running)
+        {
+            Sends.Flush();
+        }
+        _status.Set(state, error, meanwhile);
+    }
 }

@@ -54,6 +54,7 @@ internal sealed partial class RapidTwinController
                     task.CancellationToken.ThrowIfCancellationRequested();
                     return false;
                 }
+                Twin.TwinWait.Blocking();
                 Monitor.Wait(_syncGate, TimeSpan.FromMilliseconds(50));
             }
         }

@@ -133,6 +133,7 @@ internal sealed partial class RapidTwinController
         {
             foreach (RapidSocketDevice s in _sockets)
             {
+                s.Outbox?.Flush(); // what the tasks sent before the stop goes out first
                 s.Connection?.Dispose();
                 s.Listener?.Stop();
                 s.Udp?.Dispose();

@@ -133,6 +133,7 @@ internal sealed class TwinIo
         {
             return true;
         }
+        TwinWait.Blocking();
         using CancellationTokenRegistration wake = cancellation.Register(static o =>
         {
             lock (o!)

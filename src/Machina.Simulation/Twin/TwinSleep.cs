@@ -35,6 +35,7 @@ internal sealed class TwinSleep
             return;
         }
         Interlocked.Add(ref _owedTicks, -milliseconds * TimeSpan.TicksPerMillisecond);
+        TwinWait.Blocking();
         if (cancellation.WaitHandle.WaitOne(TimeSpan.FromMilliseconds(milliseconds)))
         {
             cancellation.ThrowIfCancellationRequested();

@@ -9,6 +9,23 @@ namespace Machina.Simulation.Twin;
 /// </summary>
 internal static class TwinWait
 {
+    // What this thread does before it blocks: a RAPID task's held socket sends go out (RapidSends). Per thread, set and cleared by
+    // the thread itself, so two twins (each on threads of its own) never see each other's; null while nothing is held.
+    [ThreadStatic]
+    private static Action? t_beforeBlocking;
+
+    /// <summary>
+    /// Sets what the calling thread runs each time it is about to block in a twin's wait (<see cref="Blocking"/>), or clears it
+    /// (null). Only for the calling thread.
+    /// </summary>
+    public static void BeforeBlocking(Action? action) => t_beforeBlocking = action;
+
+    /// <summary>
+    /// Called by every wait that blocks a twin's own thread, just before it blocks (not when what it waits for is already there):
+    /// runs the thread's <see cref="BeforeBlocking"/> action, if any.
+    /// </summary>
+    public static void Blocking() => t_beforeBlocking?.Invoke();
+
     /// <summary>Waits for <paramref name="task"/> and rethrows its exception; <see cref="OperationCanceledException"/> when cancelled first.</summary>
     public static void For(Task task, CancellationToken cancellation)
     {
@@ -67,6 +84,11 @@ internal static class TwinWait
     /// <summary>Blocks until the task ends or the timeout passes; throws when cancelled first.</summary>
     private static void Block(Task task, TimeSpan timeout, CancellationToken cancellation)
     {
+        Blocking();
+        if (task.IsCompleted)
+        {
+            return; // what the thread had held went out, and the answer to it came meanwhile
+        }
         var done = new ManualResetEventSlim(false, spinCount: 0);
         task.ConfigureAwait(false).GetAwaiter().UnsafeOnCompleted(done.Set);
         done.Wait(timeout, cancellation);

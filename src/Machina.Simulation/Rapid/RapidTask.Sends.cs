@@ -1,0 +1,7 @@
+namespace Machina.Simulation.Rapid;
+
+internal sealed partial class RapidTask
+{
+    /// <summary>The task's socket sends held by the controller's network stack until the task waits (<see cref="RapidOutbox"/>).</summary>
+    public RapidSends Sends { get; } = new();
+}
