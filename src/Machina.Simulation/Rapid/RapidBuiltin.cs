@@ -71,6 +71,20 @@ internal readonly struct RapidCall(RapidMachine machine, RapidFrame? frame, Rapi
     /// <summary>A string parameter.</summary>
     public string Str(int p) => (string)Value(p);
 
+    /// <summary>
+    /// A string parameter read in place: when its argument is a call of StrPart (<c>StrToVal(StrPart(chunk, i, n), v)</c>), the part of
+    /// StrPart's string, with StrPart's arguments evaluated and checked as StrPart does, without a new string for it.
+    /// </summary>
+    public ReadOnlySpan<char> Text(int p)
+    {
+        if (args[target.ArgumentOf[p]].Value is RapidCallExpr { Target: { } part } call && ReferenceEquals(part.Builtin, RapidBuiltins.StrPart))
+        {
+            (string s, int start, int length) = RapidBuiltins.Part(new RapidCall(machine, frame, call.Args, part, call.Line));
+            return s.AsSpan(start, length);
+        }
+        return Str(p);
+    }
+
     /// <summary>A record parameter.</summary>
     public RapidRecord Record(int p) => (RapidRecord)Value(p);
 

@@ -8,16 +8,7 @@ internal static partial class RapidBuiltins
     private static IEnumerable<RapidBuiltin> Strings() =>
     [
         Function("StrLen", "num", [P("Str", "string")], call => RapidBoxes.Num(call.Str(0).Length)),
-        Function("StrPart", "string", [P("Str", "string"), P("ChPos", "num"), P("Len", "num")], call =>
-        {
-            string s = call.Str(0);
-            double pos = call.Num(1), len = call.Num(2);
-            if (pos < 1 || len < 0 || pos + len - 1 > s.Length || pos != Math.Floor(pos) || len != Math.Floor(len))
-            {
-                throw ArgumentError(call, $"StrPart: characters {RapidValues.FormatNumber(pos)} to {RapidValues.FormatNumber(pos + len - 1)} are outside the string of length {s.Length}");
-            }
-            return len == 1 ? RapidBoxes.Char(s[(int)pos - 1]) : s.Substring((int)pos - 1, (int)len);
-        }),
+        StrPart,
         Function("StrFind", "num", [P("Str", "string"), P("ChPos", "num"), P("Set", "string"), Sw("NotInSet")], call =>
         {
             string s = call.Str(0), set = call.Str(2);
@@ -35,7 +26,7 @@ internal static partial class RapidBuiltins
         }),
         Function("StrToVal", "bool", [P("Str", "string"), P("Val", null, true)], call =>
         {
-            string text = call.Str(0).Trim();
+            ReadOnlySpan<char> text = call.Text(0).Trim();
             RapidDataType? type = call.TypeOf(1);
             if (type is { Rank: 0, Element.IsNumeric: true })
             {
@@ -72,6 +63,38 @@ internal static partial class RapidBuiltins
         }),
         Function("ValToStr", "string", [P("Val", null)], call => RapidValues.ToText(call.Value(0))),
     ];
+
+    /// <summary>StrPart: the part of a string from a character position, of a length (made with <see cref="All"/>, which holds it).</summary>
+    internal static RapidBuiltin StrPart => StrPartBuiltin.Instance;
+
+    /// <summary>
+    /// Holds StrPart's built-in: a class of its own, whose one field is made when first read, so that it is there whichever of this
+    /// partial class's static initialisers runs first.
+    /// </summary>
+    private static class StrPartBuiltin
+    {
+        /// <summary>The built-in.</summary>
+        public static readonly RapidBuiltin Instance = Function("StrPart", "string", [P("Str", "string"), P("ChPos", "num"), P("Len", "num")], call =>
+        {
+            (string s, int start, int length) = Part(call);
+            return length == 1 ? RapidBoxes.Char(s[start]) : s.Substring(start, length);
+        });
+    }
+
+    /// <summary>
+    /// The string a StrPart call's arguments name, and the start (from 0) and length of its part, with StrPart's error when the part is
+    /// not inside the string: the part itself is made only by whoever needs a string (<see cref="RapidCall.Text"/> reads it in place).
+    /// </summary>
+    internal static (string Text, int Start, int Length) Part(RapidCall call)
+    {
+        string s = call.Str(0);
+        double pos = call.Num(1), len = call.Num(2);
+        if (pos < 1 || len < 0 || pos + len - 1 > s.Length || pos != Math.Floor(pos) || len != Math.Floor(len))
+        {
+            throw ArgumentError(call, $"StrPart: characters {RapidValues.FormatNumber(pos)} to {RapidValues.FormatNumber(pos + len - 1)} are outside the string of length {s.Length}");
+        }
+        return (s, (int)pos - 1, (int)len);
+    }
 
     /// <summary>A number rounded to <paramref name="decimals"/> decimals, without trailing zeros (NumToStr).</summary>
     internal static string NumberText(double value, int decimals)

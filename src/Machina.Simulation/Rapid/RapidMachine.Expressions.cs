@@ -75,6 +75,11 @@ internal sealed partial class RapidMachine
     /// </summary>
     public void Store(RapidExpr target, RapidFrame? frame, object value, bool owned = false)
     {
+        if (value is double && target is RapidName number)
+        {
+            StoreName(number, frame, value); // a number is its own copy and no string: the commonest store, without the tests below
+            return;
+        }
         if (!owned && value is RapidRecord from && target is RapidName { Global: null } local && IntoOwnRecord(local, frame!, from))
         {
             return;
@@ -90,19 +95,8 @@ internal sealed partial class RapidMachine
         switch (target)
         {
             case RapidName n:
-            {
-                RapidCell cell = n.Global ?? frame!.Cells[n.Slot];
-                cell.Value = value;
-                if (cell.Storage == RapidStorage.Pers)
-                {
-                    Task.Controller.PersistentWritten();
-                    if (n.Global is not null && Task.Controller.WatchesPersistents)
-                    {
-                        Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
-                    }
-                }
+                StoreName(n, frame, value);
                 break;
-            }
             case RapidComponent c:
                 ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index] = value;
                 CountPersistentWrite(c.Target, frame);
@@ -116,6 +110,21 @@ internal sealed partial class RapidMachine
             }
             default:
                 throw new RapidRuntimeException(0, target.Line, "only data can be assigned");
+        }
+    }
+
+    /// <summary>Stores <paramref name="value"/> (a copy already) into the cell <paramref name="n"/> names, counting a write of persistent data.</summary>
+    private void StoreName(RapidName n, RapidFrame? frame, object value)
+    {
+        RapidCell cell = n.Global ?? frame!.Cells[n.Slot];
+        cell.Value = value;
+        if (cell.Storage == RapidStorage.Pers)
+        {
+            Task.Controller.PersistentWritten();
+            if (n.Global is not null && Task.Controller.WatchesPersistents)
+            {
+                Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
+            }
         }
     }
 
