@@ -14,7 +14,7 @@ namespace Machina.Simulation;
 /// thread, that write goes through the fault plan (held while the controller stops answering, delayed, cut, lost, followed by
 /// a drop) and is counted as executed, with no hand-off to another thread. Everything else it sends (handshake, information,
 /// failure reports) and the monitor task's sockets go straight to the connection. Every write goes through the connection's
-/// outbox (<see cref="RapidOutbox"/>): what a task sends is held until it waits, then written at once.
+/// outbox (<see cref="TwinHeldOutbox"/>): what a task sends is held until it waits, then written at once.
 /// </summary>
 public sealed partial class VirtualAbbController : IRapidSocketSeam
 {

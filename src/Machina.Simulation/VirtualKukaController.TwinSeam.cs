@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation.Krl;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -72,7 +73,10 @@ public sealed partial class VirtualKukaController : IEkiSeam
     bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client)
     {
         _connections.Connected(IsDriver(channel) ? "driver" : "monitor", client, client.Client);
-        bool kept = !IsDriver(channel) || AttachClient(client);
+        // The driver channel's writes go through the EthernetKRL stack's outbox, held until the robot interpreter waits (as perf51c's
+        // RAPID one); not while the options shape the acknowledgement writes themselves (their tests want those segments).
+        Stream? wire = _options.AcknowledgementWrites == AcknowledgementWrites.Whole && Twin is { } twin ? new TwinHeldOutbox(client.Client, twin.Sends) : null;
+        bool kept = !IsDriver(channel) || AttachClient(client, wire);
         if (!kept)
         {
             _connections.Left(client);

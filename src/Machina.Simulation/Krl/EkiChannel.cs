@@ -570,6 +570,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     /// </summary>
     public void Close(CancellationToken cancellation = default)
     {
+        controller.Sends.Flush(); // what the interpreter's sends hold on a held connection goes before the connection ends
         EkiOutbox? outbox;
         lock (_gate)
         {

@@ -80,6 +80,9 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// </summary>
     public Action<CancellationToken>? LoopTurnWait { get; init; }
 
+    /// <summary>The robot interpreter's held sends, counted per statement (<see cref="Twin.TwinHeldSends.StatementBound"/>); null elsewhere.</summary>
+    public Twin.TwinHeldSends? Sends { get; init; }
+
     /// <summary>The line being run.</summary>
     public int Line { get; private set; }
 
@@ -187,6 +190,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             KrlStmt statement = body[i];
             Line = statement.Line;
             Step();
+            Sends?.Statement();
             Controller.Line = statement.Line;
             if (_interruptsOn > 0 && !_inInterrupt
                 && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || (Controller.TimersCounting && ConditionsMayHaveChanged())))

@@ -199,7 +199,8 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         }
         ProgramStatus.Set(KrlProgramState.Running, null);
         Interlocked.Exchange(ref _coincident, 0);
-        var machine = new KrlMachine(this, cancellation);
+        Sends.Own(); // this thread runs the robot interpreter: what it sends on a held connection waits for its next wait
+        var machine = new KrlMachine(this, cancellation) { Sends = Sends };
         Arm.Serve = machine.ServeInterrupts;
         Arm.NextWake = Clock.RealTime ? null : machine.ProgramTimeWake;
         try
@@ -243,6 +244,7 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
 
     private KrlProgramState Finish(KrlProgramState state, string? error)
     {
+        Sends.Flush(); // whoever sees the run ended also got what it sent
         ProgramStatus.Set(state, error);
         if (error is not null)
         {

@@ -1,6 +1,7 @@
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Rapid;
 
@@ -72,7 +73,7 @@ internal static partial class RapidBuiltins
             TcpListener listener = server.Listener ?? throw ArgumentError(call, "SocketAccept: the socket is not listening");
             IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
             Socket accepted;
-            RapidOutbox outbox;
+            TwinHeldOutbox outbox;
             do
             {
                 using var abandon = CancellationTokenSource.CreateLinkedTokenSource(call.Machine.Task.CancellationToken);
@@ -92,7 +93,8 @@ internal static partial class RapidBuiltins
                     accepted.Dispose();
                     throw new OperationCanceledException("SocketAccept: the task was stopped.");
                 }
-                outbox = new RapidOutbox(accepted, call.Machine.Task.Sends);
+                call.Machine.Task.Sends.Own(); // this task's thread: what it writes on the connection is held until it waits
+                outbox = new TwinHeldOutbox(accepted, call.Machine.Task.Sends);
             }
             while (seam is not null && !seam.Accepted(((IPEndPoint)listener.LocalEndpoint).Port, accepted, outbox, call.Machine.Task.CancellationToken));
             client.Connection = accepted;
@@ -104,12 +106,12 @@ internal static partial class RapidBuiltins
             }
             client.Status = 2;
         }),
-        // The bytes go to the connection's outbox, which the network stack writes when the task next waits (RapidOutbox): a write
+        // The bytes go to the connection's outbox, which the network stack writes when the task next waits (TwinHeldOutbox): a write
         // that failed there raises ERR_SOCK_CLOSED at the task's next SocketSend on the connection.
         Instruction("SocketSend", [P("Socket", "socketdev"), Opt("Str", "string"), Opt("RawData", "rawbytes"), Opt("Data", null), Opt("NoOfBytes", "num")], call =>
         {
             Socket connection = Connected(call);
-            RapidOutbox outbox = Device(call).Outbox!;
+            TwinHeldOutbox outbox = Device(call).Outbox!;
             byte[] bytes = SendBytes(call);
             try
             {

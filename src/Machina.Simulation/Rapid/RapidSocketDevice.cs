@@ -1,4 +1,5 @@
 using System.Net.Sockets;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Rapid;
 
@@ -12,7 +13,7 @@ internal sealed class RapidSocketDevice
     public Socket? Connection { get; set; }
 
     /// <summary>What the controller's network stack holds to send on <see cref="Connection"/> (SocketSend writes here), when connected.</summary>
-    public RapidOutbox? Outbox { get; set; }
+    public TwinHeldOutbox? Outbox { get; set; }
 
     /// <summary>The state SocketGetStatus reports (SOCKET_CREATED…; 0 before SocketCreate).</summary>
     public int Status { get; set; }

@@ -9,7 +9,7 @@ namespace Machina.Simulation.Twin;
 /// </summary>
 internal static class TwinWait
 {
-    // What this thread does before it blocks: a RAPID task's held socket sends go out (RapidSends). Per thread, set and cleared by
+    // What this thread does before it blocks: a RAPID task's held socket sends go out (TwinHeldSends). Per thread, set and cleared by
     // the thread itself, so two twins (each on threads of its own) never see each other's; null while nothing is held.
     [ThreadStatic]
     private static Action? t_beforeBlocking;

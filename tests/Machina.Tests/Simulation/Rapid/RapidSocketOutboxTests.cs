@@ -3,11 +3,12 @@ using System.Net;
 using System.Net.Sockets;
 using System.Text;
 using Machina.Simulation.Rapid;
+using Machina.Simulation.Twin;
 
 namespace Machina.Tests.Simulation.Rapid;
 
 /// <summary>
-/// The RAPID twin's network stack holds what a task sends (<see cref="RapidOutbox"/>) and writes it in one write when the task is
+/// The RAPID twin's network stack holds what a task sends (<see cref="TwinHeldOutbox"/>) and writes it in one write when the task is
 /// about to wait, after a bounded number of statements, before SocketClose and when the task's run ends (issue 45: one write
 /// per acknowledgement was a third of the virtual ABB's processor time). Before, every SocketSend was its own write.
 /// </summary>
@@ -86,8 +87,9 @@ public class RapidSocketOutboxTests
     public void Outbox_OnTheTasksThread_HoldsUntilFlushedThenWritesOnce()
     {
         using var pair = SocketPair.Open();
-        var sends = new RapidSends();
-        var outbox = new RapidOutbox(pair.Server, sends);
+        var sends = new TwinHeldSends();
+        sends.Own(); // the test thread stands for the task that accepted the connection
+        var outbox = new TwinHeldOutbox(pair.Server, sends);
         outbox.Write("ab"u8);
         outbox.Write("cd"u8);
         Assert.True(outbox.Holds);
@@ -101,10 +103,11 @@ public class RapidSocketOutboxTests
     public void Outbox_StatementBound_WritesWithoutAWait()
     {
         using var pair = SocketPair.Open();
-        var sends = new RapidSends();
-        var outbox = new RapidOutbox(pair.Server, sends);
+        var sends = new TwinHeldSends();
+        sends.Own(); // the test thread stands for the task that accepted the connection
+        var outbox = new TwinHeldOutbox(pair.Server, sends);
         outbox.Write("ab"u8);
-        for (int i = 1; i < RapidSends.StatementBound; i++)
+        for (int i = 1; i < TwinHeldSends.StatementBound; i++)
         {
             sends.Statement();
         }
@@ -118,9 +121,10 @@ public class RapidSocketOutboxTests
     public void Outbox_SizeBound_WritesAtOnce()
     {
         using var pair = SocketPair.Open();
-        var sends = new RapidSends();
-        var outbox = new RapidOutbox(pair.Server, sends);
-        outbox.Write(new byte[RapidOutbox.SizeBound - 1]);
+        var sends = new TwinHeldSends();
+        sends.Own(); // the test thread stands for the task that accepted the connection
+        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        outbox.Write(new byte[TwinHeldOutbox.SizeBound - 1]);
         Assert.True(outbox.Holds);
         outbox.Write(new byte[1]);
         Assert.False(outbox.Holds);
@@ -131,8 +135,9 @@ public class RapidSocketOutboxTests
     public async Task Outbox_WriteFromAnotherThread_GoesOutAtOnceAfterWhatIsHeld()
     {
         using var pair = SocketPair.Open();
-        var sends = new RapidSends();
-        var outbox = new RapidOutbox(pair.Server, sends);
+        var sends = new TwinHeldSends();
+        sends.Own(); // the test thread stands for the task that accepted the connection
+        var outbox = new TwinHeldOutbox(pair.Server, sends);
         outbox.Write("ab"u8);
         await Task.Run(() => outbox.Write("cd"u8));
         Assert.False(outbox.Holds);
@@ -144,8 +149,9 @@ public class RapidSocketOutboxTests
     public void Outbox_WriteThatFailed_TheNextWriteSaysClosed()
     {
         using var pair = SocketPair.Open();
-        var sends = new RapidSends();
-        var outbox = new RapidOutbox(pair.Server, sends);
+        var sends = new TwinHeldSends();
+        sends.Own(); // the test thread stands for the task that accepted the connection
+        var outbox = new TwinHeldOutbox(pair.Server, sends);
         outbox.Write("ab"u8);
         pair.Server.Dispose(); // the connection broke under the held bytes
         sends.Flush();

@@ -1,23 +1,22 @@
 using System.Net.Sockets;
 
-namespace Machina.Simulation.Rapid;
+namespace Machina.Simulation.Twin;
 
 /// <summary>
-/// What the controller's network stack holds to send on one connection. As on a real controller, SocketSend hands its bytes to
-/// the stack and returns, and the stack transmits beside the interpreter: bytes written on the thread of the task that accepted
-/// the connection are held, in order, and go out in one write when that task is about to block in a wait, after
-/// <see cref="RapidSends.StatementBound"/> statements without one, once <see cref="SizeBound"/> bytes are held, before
+/// What the controller's network stack holds to send on one connection. As on a real controller, SocketSend (RAPID) or EKI_Send
+/// (KRL) hands its bytes to the stack and returns, and the stack transmits beside the interpreter: bytes written on the thread that
+/// owns <paramref name="sends"/> (the task that accepted the connection, the KRL robot interpreter) are held, in order, and go out in one write when that task is about to block in a wait, after
+/// <see cref="TwinHeldSends.StatementBound"/> statements without one, once <see cref="SizeBound"/> bytes are held, before
 /// SocketClose, when the task's run ends, and before the connection is dropped (<see cref="Flush"/>). Bytes written on any other
 /// thread go out at once, after what is held. A write that fails marks the connection closed: the next write throws
 /// <see cref="IOException"/> (the task's next SocketSend raises ERR_SOCK_CLOSED; its SocketReceive finds the connection closed).
 /// </summary>
-internal sealed class RapidOutbox(Socket connection, RapidSends sends) : Stream
+internal sealed class TwinHeldOutbox(Socket connection, TwinHeldSends sends) : Stream
 {
     /// <summary>Held bytes that go out at once, without waiting for the task to wait.</summary>
     public const int SizeBound = 64 * 1024;
 
     private readonly Lock _gate = new();
-    private readonly int _thread = Environment.CurrentManagedThreadId;
     private byte[] _held = new byte[256];
     private int _count;
     private bool _failed;
@@ -62,7 +61,7 @@ internal sealed class RapidOutbox(Socket connection, RapidSends sends) : Stream
             {
                 throw new IOException("The connection is closed.");
             }
-            if (Environment.CurrentManagedThreadId != _thread)
+            if (!sends.OwnedByCurrentThread)
             {
                 FlushHeld();
                 if (!Send(buffer))

@@ -1,13 +1,15 @@
 using System.Runtime.CompilerServices;
 
-namespace Machina.Simulation.Rapid;
+namespace Machina.Simulation.Twin;
 
 /// <summary>
-/// The connections on which one task's socket sends are held (<see cref="RapidOutbox"/>), and when they go out: when the task is
-/// about to block in any wait (<see cref="Twin.TwinWait.Blocking"/>), after <see cref="StatementBound"/> statements without
-/// one, and when its run ends. Used on the task's own thread (its end may be recorded from another: the list is locked).
+/// The connections on which one program thread's sends are held (<see cref="TwinHeldOutbox"/>), and when they go out: when the
+/// thread is about to block in any wait (<see cref="TwinWait.Blocking"/>), after <see cref="StatementBound"/> statements without
+/// one, and when its run ends. A RAPID task has one, the KRL robot interpreter one (its EthernetKRL driver channel): what the
+/// thread that <see cref="Own">owns</see> it writes is held, what other threads write goes out at once. Used on that thread (its
+/// end may be recorded from another: the list is locked).
 /// </summary>
-internal sealed class RapidSends
+internal sealed class TwinHeldSends
 {
     /// <summary>
     /// How many statements a task runs after its first held send before the held bytes go out without a wait: a program that
@@ -17,16 +19,23 @@ internal sealed class RapidSends
     public const int StatementBound = 1000;
 
     private readonly Lock _gate = new();
-    private readonly List<RapidOutbox> _holding = [];
+    private readonly List<TwinHeldOutbox> _holding = [];
     private readonly Action _flush;
     private bool _any;
     private int _budget;
+    private int _owner = -1;
 
     /// <summary>A task's list, empty.</summary>
-    public RapidSends() => _flush = Flush;
+    public TwinHeldSends() => _flush = Flush;
+
+    /// <summary>True on the thread that owns the list (its writes are held).</summary>
+    public bool OwnedByCurrentThread => Volatile.Read(ref _owner) == Environment.CurrentManagedThreadId;
+
+    /// <summary>Makes the calling thread the owner: the program's thread, when it accepts a connection or starts its run.</summary>
+    public void Own() => Volatile.Write(ref _owner, Environment.CurrentManagedThreadId);
 
     /// <summary>An outbox of the task's connections began to hold bytes (on the task's thread): it goes out at the next flush.</summary>
-    public void Hold(RapidOutbox outbox)
+    public void Hold(TwinHeldOutbox outbox)
     {
         lock (_gate)
         {
@@ -53,7 +62,7 @@ internal sealed class RapidSends
     /// <summary>Writes what every connection of the task holds, each in one write, in the order the task sent it.</summary>
     public void Flush()
     {
-        RapidOutbox[] holding;
+        TwinHeldOutbox[] holding;
         lock (_gate)
         {
             if (!_any)
@@ -65,7 +74,7 @@ internal sealed class RapidSends
             _holding.Clear();
             Twin.TwinWait.BeforeBlocking(null);
         }
-        foreach (RapidOutbox outbox in holding)
+        foreach (TwinHeldOutbox outbox in holding)
         {
             outbox.Flush();
         }
