@@ -77,9 +77,9 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     /// <summary>
     /// Closes every connection, stops listening and waits for the running program and the background work to end, holding no
-    /// thread while they wind down. <paramref name="cancellationToken"/> ends the wait early (<see cref="OperationCanceledException"/>):
-    /// the controller is stopped all the same (no longer listening, its program told to stop) and what is left ends by itself.
-    /// Throws nothing else.
+    /// thread while they wind down. <paramref name="cancellationToken"/> ends the wait early (<see cref="OperationCanceledException"/>
+    /// when a background loop had not ended yet): the controller is stopped all the same (no longer listening, its program told to
+    /// stop) and what is left ends by itself. Throws nothing else.
     /// </summary>
     public async Task StopAsync(CancellationToken cancellationToken)
     {
