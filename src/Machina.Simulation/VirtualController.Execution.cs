@@ -69,6 +69,7 @@ public abstract partial class VirtualController<TState>
             LogExecuted(id);
         }
         Interlocked.Increment(ref _requestsExecuted);
+        Changes.ChangedAfterFence();
         if (generation != SettledByBrand && IsLost(generation))
         {
             return;
@@ -107,6 +108,7 @@ public abstract partial class VirtualController<TState>
         RecordError("refused: " + reason);
         Interlocked.Decrement(ref _waitingOnCaller);
         Interlocked.Increment(ref _requestsExecuted);
+        Changes.ChangedAfterFence();
         CountTowardsPause();
     }
 

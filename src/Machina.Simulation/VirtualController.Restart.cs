@@ -81,6 +81,7 @@ public abstract partial class VirtualController<TState>
     {
         LogExecuted(id);
         Interlocked.Increment(ref _requestsExecuted);
+        Changes.ChangedAfterFence();
         Interlocked.Decrement(ref _requestsLost);
     }
 

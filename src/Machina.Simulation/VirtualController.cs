@@ -1,4 +1,5 @@
 using System.Net.Sockets;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation;
 
@@ -40,7 +41,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         _state = initial(position, rotation, joints);
     }
 
-    /// <summary>True between <c>StartAsync</c> and <see cref="StopAsync"/>.</summary>
+    /// <summary>True between <c>StartAsync</c> and <see cref="StopAsync(CancellationToken)"/>.</summary>
     public bool IsRunning => _stopping is { IsCancellationRequested: false };
 
     /// <summary>The simulated arm, or null when joints and pose are kept apart.</summary>
@@ -51,6 +52,12 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     /// <summary>Guards the robot state and the logs; never held across an await.</summary>
     private protected Lock Gate { get; } = new();
+
+    /// <summary>
+    /// Set whenever something its inspection members show changes (a request received or executed, a pendant text, an error;
+    /// its twin's signals once attached to it): a reader that shows them sleeps until then instead of looking on a timer.
+    /// </summary>
+    internal TwinChangeSignal Changes { get; } = new();
 
     /// <summary>Starts listening (and the brand's twin); a controller starts once.</summary>
     public async Task StartAsync(CancellationToken cancellationToken = default)
@@ -66,7 +73,15 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     }
 
     /// <summary>Closes every connection, stops listening and waits for the background work to end. Never throws.</summary>
-    public async Task StopAsync()
+    public Task StopAsync() => StopAsync(CancellationToken.None);
+
+    /// <summary>
+    /// Closes every connection, stops listening and waits for the running program and the background work to end, holding no
+    /// thread while they wind down. <paramref name="cancellationToken"/> ends the wait early (<see cref="OperationCanceledException"/>
+    /// when a background loop had not ended yet): the controller is stopped all the same (no longer listening, its program told to
+    /// stop) and what is left ends by itself. Throws nothing else.
+    /// </summary>
+    public async Task StopAsync(CancellationToken cancellationToken)
     {
         if (_stopping is null)
         {
@@ -77,13 +92,16 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             await _stopping.CancelAsync().ConfigureAwait(false);
             try
             {
-                StopListening();
+                await StopListeningAsync(cancellationToken).ConfigureAwait(false);
             }
             catch (Exception e) when (e is SocketException or ObjectDisposedException)
             {
                 RecordError("stopping: " + e.Message);
             }
-            DropClient();
+            finally
+            {
+                DropClient();
+            }
         }
         Task[] loops;
         lock (Gate)
@@ -92,7 +110,11 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         }
         try
         {
-            await Task.WhenAll(loops).ConfigureAwait(false);
+            await Task.WhenAll(loops).WaitAsync(cancellationToken).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            throw;
         }
         catch (Exception e)
         {
@@ -101,7 +123,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         }
     }
 
-    /// <summary>Same as <see cref="StopAsync"/>.</summary>
+    /// <summary>Same as <see cref="StopAsync(CancellationToken)"/>.</summary>
     public async ValueTask DisposeAsync()
     {
         await StopAsync().ConfigureAwait(false);
@@ -114,7 +136,16 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     /// <summary>Stops the brand's listeners (the token given to <see cref="ListenAsync"/> is already cancelled).</summary>
     private protected abstract void StopListening();
 
-    /// <summary>Runs a background loop until the controller stops; <see cref="StopAsync"/> waits for it.</summary>
+    /// <summary>
+    /// What <see cref="StopAsync(CancellationToken)"/> awaits to stop the brand's listeners and program. By default
+    /// <see cref="StopListening"/> on a thread of its own, not the thread pool's (a brand's stop may join its program's threads for
+    /// seconds); <paramref name="cancellationToken"/> ends the wait, not the stop. A brand whose program's end is a task overrides
+    /// it to await that end.
+    /// </summary>
+    private protected virtual Task StopListeningAsync(CancellationToken cancellationToken) =>
+        Task.Factory.StartNew(StopListening, CancellationToken.None, TaskCreationOptions.LongRunning, TaskScheduler.Default).WaitAsync(cancellationToken);
+
+    /// <summary>Runs a background loop until the controller stops; <see cref="StopAsync(CancellationToken)"/> waits for it.</summary>
     private protected void Run(Func<CancellationToken, Task> loop)
     {
         var token = _stopping!.Token;
@@ -125,7 +156,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     }
 
     /// <summary>
-    /// Runs a blocking loop on a thread of its own until the controller stops (<see cref="StopAsync"/> waits for it): a socket's
+    /// Runs a blocking loop on a thread of its own until the controller stops (<see cref="StopAsync(CancellationToken)"/> waits for it): a socket's
     /// reader that sleeps in the kernel's receive, where an asynchronous read wakes the thread pool, whose workers spin.
     /// </summary>
     private protected void RunOnThread(Action<CancellationToken> loop)
@@ -257,6 +288,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             }
         }
         int received = Interlocked.Increment(ref _requestsReceived);
+        Changes.ChangedAfterFence();
         int unacknowledged = received - Volatile.Read(ref _requestsExecuted);
         int seen;
         while (unacknowledged > (seen = Volatile.Read(ref _maxUnacknowledged))
@@ -272,6 +304,7 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
         {
             _pendant.Add(PrintableText.Of(text));
         }
+        Changes.Changed();
     }
 
     /// <summary>Keeps an error (a malformed or refused request) and shows it on the pendant, made printable.</summary>
@@ -283,5 +316,6 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
             _errors.Add(error);
             _pendant.Add("ERROR: " + error);
         }
+        Changes.Changed();
     }
 }

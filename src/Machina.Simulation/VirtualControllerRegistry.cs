@@ -168,6 +168,19 @@ public static class VirtualControllerRegistry
         public override long PendantMessagesSince(long seen, ICollection<string> into) => c.PendantMessagesSince(seen, into);
         public override long ErrorsSince(long seen, ICollection<string> into) => c.ErrorsSince(seen, into);
         internal override (object? Signals, long Writes) OutputsMark => io() is { } signals ? (signals, signals.Writes) : (null, 0);
+
+        internal override Twin.TwinChangeSignal Changes
+        {
+            get
+            {
+                if (io() is { } signals)
+                {
+                    signals.Changes = c.Changes; // the twin's signals tell the controller's readers too (the twin is made at start)
+                }
+                return c.Changes;
+            }
+        }
+
         public override string Summary() => $"{c.RequestsReceived} {requestNoun} received, {c.RequestsExecuted} executed, {c.Errors.Count} {errorWord}";
         private protected override Task StartCoreAsync(CancellationToken cancellationToken) => start(cancellationToken);
     }
@@ -245,6 +258,13 @@ public abstract class RunningVirtualController : IAsyncDisposable
     /// written): a reader that shows the outputs reads <see cref="State"/> again only then.
     /// </summary>
     internal abstract (object? Signals, long Writes) OutputsMark { get; }
+
+    /// <summary>
+    /// Set whenever what its inspection members show changes (its twin's signals too): one reader (<c>machina sim</c>'s activity)
+    /// sleeps on it between two looks, so an idle controller wakes no thread. Read it again after each look: that attaches the
+    /// twin's signals, should the twin have been made since.
+    /// </summary>
+    internal abstract Twin.TwinChangeSignal Changes { get; }
 
     /// <summary>One line of what it did, e.g. "12 requests received, 12 executed, 0 malformed".</summary>
     public abstract string Summary();

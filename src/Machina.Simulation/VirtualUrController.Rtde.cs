@@ -177,6 +177,9 @@ public sealed partial class VirtualUrController
     /// <summary>The highest output frequency of the software the controller reports: 500 Hz from software 5 (e-Series), 125 Hz before.</summary>
     private double MaxRtdeFrequency => SoftwareVersion.Major >= 5 ? 500 : 125;
 
+    /// <summary>How long the RTDE sender waits while no client is started: until a client's start wakes it, in effect (seconds).</summary>
+    private const long IdleWaitSeconds = 3600;
+
     /// <summary>Wakes the RTDE sender: a client started, or the robot's program or safety state changed (reported at once).</summary>
     private void WakeRtde() => _rtdeWait.Wake();
 
@@ -205,7 +208,9 @@ public sealed partial class VirtualUrController
                 woken |= _rtdeWait.TakeWake();
                 RtdeSubscriber[] subscribers = Volatile.Read(ref _subscribers);
                 long now = Clock.GetTimestamp();
-                long next = now + Clock.TimestampFrequency; // a second when no client is started
+                // No client started: nothing is due until one starts, and its start wakes this wait (WakeRtde); an hour stands for
+                // "until woken" (a second here woke an idle twin's sender twice a second: the wait and its final stretch).
+                long next = now + Clock.TimestampFrequency * IdleWaitSeconds;
                 snapshot.Clear();
                 foreach (RtdeSubscriber s in subscribers)
                 {

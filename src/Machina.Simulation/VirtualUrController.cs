@@ -83,6 +83,33 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
 
     private protected override void StopListening()
     {
+        StopListeners();
+        Twin.Dispose(); // stops the running program and closes its sockets
+        WakeRtde();
+    }
+
+    /// <summary>
+    /// As <see cref="StopListening"/>, holding no thread while the running program winds down: awaits the end its thread completes
+    /// as its last act (at most the twin's stop timeout, as the join); <paramref name="cancellationToken"/> ends that wait early and
+    /// the program is stopped all the same.
+    /// </summary>
+    private protected override async Task StopListeningAsync(CancellationToken cancellationToken)
+    {
+        StopListeners();
+        try
+        {
+            await Twin.StopProgramAsync(cancellationToken).ConfigureAwait(false);
+        }
+        finally
+        {
+            Twin.Dispose(); // no program left to join: closes the rest (the RTDE watchdog)
+            WakeRtde();
+        }
+    }
+
+    /// <summary>Stops every listener: the script ports, RTDE, the dashboard and the client interfaces.</summary>
+    private void StopListeners()
+    {
         foreach (TcpListener listener in _scriptListeners)
         {
             listener.Stop();
@@ -90,8 +117,6 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
         _rtdeListener?.Stop();
         _dashboardListener?.Stop();
         StopClientInterfaces();
-        Twin.Dispose(); // stops the running program and closes its sockets
-        WakeRtde();
     }
 
     private static int PortOf(TcpListener listener) => ((IPEndPoint)listener.LocalEndpoint).Port;

@@ -5,13 +5,15 @@ namespace Machina.Cli.Simulation;
 /// <summary>
 /// Tells what a virtual controller does, in the order it does it: each request it accepted (the controller's own reading of
 /// it, one per instruction, never the lines of a driver script), each action it finished with where the robot then is, pendant
-/// messages (program started, stopped), errors and output changes. The virtual controllers raise no events, so their public
-/// inspection members are read every <see cref="Period"/> and what is new is told (each log read from where the last look left
-/// it: <see cref="IControllerLook"/>); <see cref="Flush"/> tells the rest.
+/// messages (program started, stopped), errors and output changes. The virtual controllers raise no events: their public
+/// inspection members are read and what is new is told (each log read from where the last look left it: <see cref="IControllerLook"/>),
+/// at most once every <see cref="Period"/>, and only after the controller said something changed (<see cref="IControllerLook.Changes"/>):
+/// an idle controller wakes no thread (a look on a timer woke the runtime's timer thread and two pool workers about 200 times a
+/// second). A look with no such signal (a copied <see cref="ControllerView"/>) is read every <see cref="Period"/>. <see cref="Flush"/> tells the rest.
 /// </summary>
 internal sealed class ControllerActivity : IAsyncDisposable
 {
-    /// <summary>How often the controller is looked at.</summary>
+    /// <summary>How often the controller is looked at, at most (while it changes).</summary>
     internal static readonly TimeSpan Period = TimeSpan.FromMilliseconds(50);
 
     private readonly Func<IControllerLook> _look;
@@ -48,7 +50,7 @@ internal sealed class ControllerActivity : IAsyncDisposable
         // executed ids from the start.
         _pendant = first.PendantSince(long.MaxValue, _texts);
         _errors = first.ErrorsSince(long.MaxValue, _texts);
-        _loop = LoopAsync(time, _stop.Token);
+        _loop = first.Changes is not null ? WhenChangedLoopAsync(time, _stop.Token) : LoopAsync(time, _stop.Token);
     }
 
     /// <summary>
@@ -64,6 +66,27 @@ internal sealed class ControllerActivity : IAsyncDisposable
     /// <summary>Starts telling what a <paramref name="brand"/> controller seen through <paramref name="look"/> (whole views, one per look) does, one line at a time to <paramref name="log"/>.</summary>
     internal static ControllerActivity Start(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time, bool quiet = false) =>
         new(brand, () => new ControllerViewLook(look()), log, time, quiet);
+
+    /// <summary>
+    /// Looks once something changed, then waits a <see cref="Period"/> (a stream's changes are told together) before it sleeps
+    /// until the next change. The signal is read from each look (reading it attaches a twin's signals made since).
+    /// </summary>
+    private async Task WhenChangedLoopAsync(TimeProvider time, CancellationToken token)
+    {
+        try
+        {
+            while (_look().Changes is { } changes)
+            {
+                await changes.WhenChangedAsync(token).ConfigureAwait(false);
+                changes.Take(); // before the look: a change during it sets the signal again
+                Flush();
+                await Task.Delay(Period, time, token).ConfigureAwait(false);
+            }
+        }
+        catch (OperationCanceledException)
+        {
+        }
+    }
 
     private async Task LoopAsync(TimeProvider time, CancellationToken token)
     {

@@ -26,6 +26,9 @@ internal sealed class ControllerViewLook(ControllerView view) : IControllerLook
     public long ErrorsSince(long seen, ICollection<string> into) => Since(view.Errors, view.Errors.Count, seen, into);
 
     /// <inheritdoc/>
+    public Machina.Simulation.Twin.TwinChangeSignal? Changes => null;
+
+    /// <inheritdoc/>
     public ControllerRobot Robot() => new(view.Position, view.Joints, view.DigitalOutputs, view.AnalogOutputs);
 
     /// <summary>The last entries of <paramref name="kept"/> past <paramref name="seen"/> of <paramref name="total"/>.</summary>

@@ -27,6 +27,12 @@ internal interface IControllerLook
 
     /// <summary>The robot now: where the tool and the joints are, and the outputs.</summary>
     ControllerRobot Robot();
+
+    /// <summary>
+    /// Set by the controller whenever something a look reads changes (the activity then sleeps until it is), or null for a
+    /// controller that tells nothing (looked at every <see cref="ControllerActivity.Period"/>).
+    /// </summary>
+    Machina.Simulation.Twin.TwinChangeSignal? Changes { get; }
 }
 
 /// <summary>Where a controller's robot is, and its outputs, at one moment.</summary>

@@ -24,6 +24,9 @@ internal sealed class LiveControllerLook(RunningVirtualController controller) : 
     public long ErrorsSince(long seen, ICollection<string> into) => controller.ErrorsSince(seen, into);
 
     /// <inheritdoc/>
+    public Machina.Simulation.Twin.TwinChangeSignal? Changes => controller.Changes;
+
+    /// <inheritdoc/>
     public ControllerRobot Robot()
     {
         VirtualRobotState state = controller.State;

@@ -40,8 +40,15 @@ internal sealed class TwinIo
     /// </summary>
     public long Writes => Volatile.Read(ref _writes);
 
-    /// <summary>Counts a write (under the lock: one writer at a time).</summary>
-    private void Wrote() => Volatile.Write(ref _writes, _writes + 1);
+    /// <summary>Told of every write (the controller's, for <c>machina sim</c>'s activity that shows the outputs), or null.</summary>
+    public TwinChangeSignal? Changes { get; set; }
+
+    /// <summary>Counts a write (under the lock: one writer at a time) and tells <see cref="Changes"/>.</summary>
+    private void Wrote()
+    {
+        Volatile.Write(ref _writes, _writes + 1);
+        Changes?.Changed();
+    }
 
     /// <summary>How many signals a bank has (0 when there is no such bank).</summary>
     public int Count(string bank) => _bits.TryGetValue(bank, out bool[]? b) ? b.Length : _numbers.TryGetValue(bank, out double[]? n) ? n.Length : 0;
