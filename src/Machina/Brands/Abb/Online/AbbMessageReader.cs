@@ -118,11 +118,36 @@ internal sealed class AbbMessageReader : IMessageReader<AbbMessage>
     private static int ReadInt(ref Tokenizer tokens, ReadOnlySpan<byte> body, string what)
     {
         var token = tokens.Next();
-        if (token.IsEmpty || !int.TryParse(token, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int value))
+        if (token.IsEmpty || !TryParseInt(token, out int value))
         {
             throw Garbage($"The controller sent a message whose {what} is not a whole number", body);
         }
         return value;
+    }
+
+    /// <summary>
+    /// A whole number with an optional sign, as <c>int.TryParse</c> with the invariant culture reads it: an id or a code of at
+    /// most nine digits (every acknowledgement's) is read here, anything else by <c>int.TryParse</c>, which looked the culture's
+    /// number format up for every token (one per acknowledgement on the link's thread).
+    /// </summary>
+    internal static bool TryParseInt(ReadOnlySpan<byte> token, out int value)
+    {
+        if (token.Length is > 0 and <= 9)
+        {
+            int digits = 0;
+            foreach (byte b in token)
+            {
+                uint digit = (uint)(b - '0');
+                if (digit > 9)
+                {
+                    return int.TryParse(token, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out value);
+                }
+                digits = (digits * 10) + (int)digit;
+            }
+            value = digits;
+            return true;
+        }
+        return int.TryParse(token, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out value);
     }
 
     private static AbbProtocolException Garbage(string what, ReadOnlySpan<byte> body)
