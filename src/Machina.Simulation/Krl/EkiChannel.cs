@@ -418,9 +418,34 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         }
     }
 
-    private EkiMemory Memory(string tag) => _memories.TryGetValue(tag, out EkiMemory? memory)
-        ? memory
-        : throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
+    /// <summary>
+    /// The tags the program named last, by reference, with their memories (guarded by the gate): a program names an element with
+    /// a string literal, which the binder makes one string (<see cref="KrlBinder"/>), so the driver's twelve EKI_Get and
+    /// EKI_CheckBuffer calls an action find their memory by a reference compare instead of hashing a 12- to 19-character tag.
+    /// Tags made at run time (from a CHAR array) are other strings each time: they take the table's turn and replace the oldest.
+    /// </summary>
+    private readonly (string? Tag, EkiMemory? Memory)[] _named = new (string?, EkiMemory?)[32];
+    private int _nextNamed;
+
+    /// <summary>The memory of <paramref name="tag"/> (call it under the gate); the program stops when the channel receives no such element.</summary>
+    private EkiMemory Memory(string tag)
+    {
+        (string? Tag, EkiMemory? Memory)[] named = _named;
+        for (int i = 0; i < named.Length && named[i].Tag is { } seen; i++)
+        {
+            if (ReferenceEquals(seen, tag))
+            {
+                return named[i].Memory!;
+            }
+        }
+        if (!_memories.TryGetValue(tag, out EkiMemory? memory))
+        {
+            throw new KrlRuntimeException($"EthernetKRL: the channel {Name} receives no element {tag} (see its RECEIVE configuration)");
+        }
+        named[_nextNamed] = (tag, memory);
+        _nextNamed = (_nextNamed + 1) % named.Length;
+        return memory;
+    }
 
     /// <summary>Whether the channel receives <paramref name="tag"/> or elements below it (its RECEIVE configuration).</summary>
     public bool Receives(string tag) => Configuration.Receive.Any(e => e.Tag == tag || e.Tag.StartsWith(tag + "/", StringComparison.Ordinal));
