@@ -295,7 +295,13 @@ internal sealed partial class KrlTwinController
         return Status(remaining, value is null ? 0 : 1, 0, connected);
     }
 
-    private static object EkiInt(string value) => KrlValues.Box((int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture)));
+    /// <summary>
+    /// An INT element's value: the number rounded to the nearest INT. Text that is an integer already (an optional sign and digits,
+    /// as the driver's IDs and types are) is read as one; anything else (a fraction, an exponent, spaces) as a REAL first, rounded.
+    /// </summary>
+    private static object EkiInt(string value) => KrlValues.Box(int.TryParse(value, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int whole)
+        ? whole
+        : (int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture)));
 
     private static object EkiReal(string value) => double.Parse(value, CultureInfo.InvariantCulture);
 
