@@ -14,16 +14,8 @@ internal static partial class UrBuiltins
         Add(t, "movep", (m, line, a) => MoveLinear(m, line, [a[0], a[1], a[2], 0, a[3]], "movep"), R("pose"), O("a", 1.2), O("v", 0.25), O("r", 0));
         Add(t, "movec", MoveC, R("pose_via"), R("pose_to"), O("a", 1.2), O("v", 0.25), O("r", 0), O("mode", 0));
         Add(t, "servoj", ServoJ, R("q"), O("a", 0), O("v", 0), O("t", 0.002), O("lookahead_time", 0.1), O("gain", 300));
-        Add(t, "stopj", (m, line, a) =>
-        {
-            FinishBlend(m, line);
-            return Positive(Num(a, 0, line, "stopj", "a"), line, "stopj", "a");
-        }, R("a"));
-        Add(t, "stopl", (m, line, a) =>
-        {
-            FinishBlend(m, line);
-            return Positive(Num(a, 0, line, "stopl", "a"), line, "stopl", "a");
-        }, R("a"), O("aRot", NotGiven));
+        Add(t, "stopj", (m, line, a) => Stop(m, line, a, "stopj", tool: false), R("a"));
+        Add(t, "stopl", (m, line, a) => Stop(m, line, a, "stopl", tool: true), R("a"), O("aRot", NotGiven));
         Add(t, "get_actual_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
         Add(t, "get_target_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
         Add(t, "get_actual_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
@@ -41,8 +33,33 @@ internal static partial class UrBuiltins
         Add(t, "is_within_safety_limits", (m, line, a) => UrValue.Box(TrySolve(m, line, a[0], NotGiven) is not null), R("pose"), O("qnear", NotGiven));
     }
 
-    private static object Positive(double value, int line, string function, string parameter) =>
-        value > 0 ? UrNone.Value : throw new UrRuntimeException(line, $"{function}: argument '{parameter}' must be positive");
+    private static double Positive(double value, int line, string function, string parameter) =>
+        value > 0 && double.IsFinite(value) ? value : throw new UrRuntimeException(line, $"{function}: argument '{parameter}' must be positive");
+
+    /// <summary>
+    /// stopj(a) / stopl(a, aRot): a pending blend finishes at its waypoint; an arm still moving (a motion whose thread was
+    /// killed) slows down from the speeds it has now to rest (in joint space, or along the tool's line with aRot, a when not
+    /// given, for the turn) and the call returns when it stands, where it stopped (<see cref="UrTwinController.Decelerate"/>).
+    /// </summary>
+    private static object Stop(UrMachine m, int line, object[] a, string function, bool tool)
+    {
+        double acceleration = Positive(Num(a, 0, line, function, "a"), line, function, "a");
+        double turn = tool && Given(a[1]) ? Positive(Num(a, 1, line, function, "aRot"), line, function, "aRot") : acceleration;
+        FinishBlend(m, line);
+        CancellationToken token = m.Cancellation;
+        try
+        {
+            using (m.Unlock())
+            {
+                m.Controller.Decelerate(tool, acceleration, turn, line, function, token);
+            }
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{function}: {e.Message}");
+        }
+        return UrNone.Value;
+    }
 
     private static (double A, double V, double T, double R) Profile(object[] a, int line, string function)
     {

@@ -10,6 +10,13 @@ internal sealed partial class UrTwinController
     private UrMotion? _motion;
 
     /// <summary>
+    /// The cancellation of the thread whose motion <see cref="_motion"/> is: once it is cancelled (<c>kill</c>, or the program
+    /// stopped) the motion coasts on its plan until a stop takes it over (<see cref="Decelerate"/>) or the arm is settled
+    /// where it is (<see cref="SettleCoast"/>).
+    /// </summary>
+    private CancellationToken _motionOwner;
+
+    /// <summary>
     /// Completed when the motion in progress ends (<see cref="Standing"/>): made only while a motion is in progress and something
     /// waits for its end (a pause, a stop on the path), so a motion costs nothing more.
     /// </summary>
@@ -115,6 +122,7 @@ internal sealed partial class UrTwinController
             stop = _holdStop;
         }
         stop.Cancel();
+        SettleCoast(); // a motion whose thread was killed stops where it is, as a held one does
         StateChanged?.Invoke();
         return true;
     }
@@ -136,6 +144,21 @@ internal sealed partial class UrTwinController
         held.TrySetResult();
         StateChanged?.Invoke();
         return true;
+    }
+
+    /// <summary>Ends <paramref name="motion"/> when it is still the one in progress: the arm stands, and what waits for that is told.</summary>
+    private void EndMotion(UrMotion motion)
+    {
+        TaskCompletionSource? standing = null;
+        lock (_holdGate)
+        {
+            if (ReferenceEquals(_motion, motion))
+            {
+                _motion = null;
+                (standing, _standing) = (_standing, null);
+            }
+        }
+        standing?.TrySetResult();
     }
 
     /// <summary>Waits while the program is held (cancelled when the program stops).</summary>
@@ -206,6 +229,7 @@ internal sealed partial class UrTwinController
         CancellationToken cancellation, Joints? traced, bool trace)
     {
         Arm.RequireWithinLimits(target);
+        SettleCoast(); // a motion whose thread was killed, not stopped by stopj/stopl: this one starts where it has brought the arm
         Joints from = Arm.Joints;
         double done = 0; // fraction of the way already behind
         bool planned = true;
@@ -220,8 +244,10 @@ internal sealed partial class UrTwinController
             {
                 hold = _holdStop.Token;
                 _motion = motion;
+                _motionOwner = cancellation;
             }
             using var both = CancellationTokenSource.CreateLinkedTokenSource(cancellation, hold);
+            bool coasts = false;
             try
             {
                 Arm.MoveTo(target, span, line, function, both.Token, traced, trace);
@@ -236,18 +262,21 @@ internal sealed partial class UrTwinController
                 from = at;
                 planned = false;
             }
+            catch (OperationCanceledException) when (Clock.RealTime && span > 0)
+            {
+                // Killed part-way (its thread, or the program stopped): the arm does not stop by itself. The motion stays in
+                // progress on its plan, coasting, until stopj/stopl decelerates it from the speeds it has then, or another
+                // motion, a hold or the program's end settles it where it is (ur_rtde and UR's client library stop an
+                // asynchronous motion so: kill its thread, then stopj(a); without the stopj the robot stops suddenly).
+                coasts = true;
+                throw;
+            }
             finally
             {
-                TaskCompletionSource? standing = null;
-                lock (_holdGate)
+                if (!coasts)
                 {
-                    if (ReferenceEquals(_motion, motion))
-                    {
-                        _motion = null;
-                        (standing, _standing) = (_standing, null);
-                    }
+                    EndMotion(motion);
                 }
-                standing?.TrySetResult();
             }
         }
     }

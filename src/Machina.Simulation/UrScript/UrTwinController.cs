@@ -418,6 +418,7 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
                     PendingBlend = null;
                     Watchdog.Clear(); // "All watchdogs are removed on program stop"
                 }
+                SettleCoast(); // a motion whose thread the end killed stops where it is (only a killed one: a successor's runs on)
                 if (error is not null && current)
                 {
                     Pendant.Log(error);
