@@ -233,6 +233,8 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         }
         finally
         {
+            Sends.Flush();
+            Sends.Disown();
             EndRsi();
             Arm.Serve = null;
             Arm.NextWake = null;

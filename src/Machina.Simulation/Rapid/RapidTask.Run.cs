@@ -29,6 +29,7 @@ internal sealed partial class RapidTask
         if (state != RapidProgramState.Running)
         {
             Sends.Flush();
+            Sends.Disown();
         }
         _status.Set(state, error, meanwhile);
     }

@@ -34,6 +34,12 @@ internal sealed class TwinHeldSends
     /// <summary>Makes the calling thread the owner: the program's thread, when it accepts a connection or starts its run.</summary>
     public void Own() => Volatile.Write(ref _owner, Environment.CurrentManagedThreadId);
 
+    /// <summary>
+    /// No thread owns the list any more (the run ended; call after <see cref="Flush"/>): a later thread that gets the same managed
+    /// id (ids of ended threads are reused) must not have its writes held, since it would never wait in a twin's wait.
+    /// </summary>
+    public void Disown() => Volatile.Write(ref _owner, -1);
+
     /// <summary>An outbox of the task's connections began to hold bytes (on the task's thread): it goes out at the next flush.</summary>
     public void Hold(TwinHeldOutbox outbox)
     {
