@@ -49,7 +49,7 @@ internal sealed class TwinHeldSends
             {
                 _any = true;
                 _budget = StatementBound;
-                Twin.TwinWait.BeforeBlocking(_flush);
+                TwinWait.BeforeBlocking(_flush);
             }
             _holding.Add(outbox);
         }
@@ -78,7 +78,12 @@ internal sealed class TwinHeldSends
             _any = false;
             holding = [.. _holding];
             _holding.Clear();
-            Twin.TwinWait.BeforeBlocking(null);
+            if (OwnedByCurrentThread)
+            {
+                // The hook is the owner's (Hold sets it on that thread); another thread that flushes (a stop, an EKI_Close) must not
+                // clear its own hook, which serves a list of its own. A hook left on the owner finds nothing held and returns.
+                TwinWait.BeforeBlocking(null);
+            }
         }
         foreach (TwinHeldOutbox outbox in holding)
         {

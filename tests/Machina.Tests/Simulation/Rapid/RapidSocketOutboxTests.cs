@@ -87,9 +87,7 @@ public class RapidSocketOutboxTests
     public void Outbox_OnTheTasksThread_HoldsUntilFlushedThenWritesOnce()
     {
         using var pair = SocketPair.Open();
-        var sends = new TwinHeldSends();
-        sends.Own(); // the test thread stands for the task that accepted the connection
-        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        var (sends, outbox) = Owned(pair);
         outbox.Write("ab"u8);
         outbox.Write("cd"u8);
         Assert.True(outbox.Holds);
@@ -103,9 +101,7 @@ public class RapidSocketOutboxTests
     public void Outbox_StatementBound_WritesWithoutAWait()
     {
         using var pair = SocketPair.Open();
-        var sends = new TwinHeldSends();
-        sends.Own(); // the test thread stands for the task that accepted the connection
-        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        var (sends, outbox) = Owned(pair);
         outbox.Write("ab"u8);
         for (int i = 1; i < TwinHeldSends.StatementBound; i++)
         {
@@ -121,9 +117,7 @@ public class RapidSocketOutboxTests
     public void Outbox_SizeBound_WritesAtOnce()
     {
         using var pair = SocketPair.Open();
-        var sends = new TwinHeldSends();
-        sends.Own(); // the test thread stands for the task that accepted the connection
-        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        var (sends, outbox) = Owned(pair);
         outbox.Write(new byte[TwinHeldOutbox.SizeBound - 1]);
         Assert.True(outbox.Holds);
         outbox.Write(new byte[1]);
@@ -135,9 +129,7 @@ public class RapidSocketOutboxTests
     public void Outbox_WriteFromAnotherThread_GoesOutAtOnceAfterWhatIsHeld()
     {
         using var pair = SocketPair.Open();
-        var sends = new TwinHeldSends();
-        sends.Own(); // the test thread stands for the task that accepted the connection
-        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        var (sends, outbox) = Owned(pair);
         outbox.Write("ab"u8);
         // A thread of its own: a pool thread could be this very thread again (an awaited Task.Run ran there once in CI).
         var other = new Thread(() => outbox.Write("cd"u8));
@@ -154,32 +146,47 @@ public class RapidSocketOutboxTests
         // The run's end disowns the list: a later thread with the same managed id (ids are reused) never waits in a twin's wait,
         // so what it writes must go out at once.
         using var pair = SocketPair.Open();
-        var sends = new TwinHeldSends();
-        sends.Own();
-        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        var (sends, outbox) = Owned(pair);
         outbox.Write("ab"u8);
         Assert.True(outbox.Holds);
         sends.Flush();
         sends.Disown();
         outbox.Write("cd"u8);
         Assert.False(outbox.Holds);
-        pair.Client.ReceiveTimeout = 10_000;
-        var buffer = new byte[4];
-        int got = 0;
-        while (got < buffer.Length && pair.Client.Receive(buffer, got, buffer.Length - got, SocketFlags.None) is > 0 and var n)
+        Assert.Equal("abcd", ReadExactly(pair, 4));
+    }
+
+    [Fact]
+    public void Flush_OfAnotherThreadsList_LeavesThisThreadsHeldBytesToGoAtItsWait()
+    {
+        // This thread owns one list and holds bytes in it; it also flushes a list another thread owns (as a stop or an EKI_Close
+        // does). Its own bytes must still go out when it is about to block: before, that flush cleared this thread's hook.
+        using var mine = SocketPair.Open();
+        using var theirs = SocketPair.Open();
+        var (sends, outbox) = Owned(mine);
+        TwinHeldSends? other = null;
+        var owner = new Thread(() =>
         {
-            got += n;
-        }
-        Assert.Equal("abcd", Encoding.ASCII.GetString(buffer, 0, got));
+            (other, TwinHeldOutbox held) = Owned(theirs);
+            held.Write("xy"u8);
+        });
+        owner.Start();
+        Assert.True(owner.Join(TimeSpan.FromSeconds(10)));
+        outbox.Write("ab"u8);
+        other!.Flush();
+        Assert.Equal("xy", ReadExactly(theirs, 2));
+        Assert.True(outbox.Holds);
+        TwinWait.Blocking();
+        Assert.False(outbox.Holds);
+        Assert.Equal("ab", ReadExactly(mine, 2));
+        sends.Flush();
     }
 
     [Fact]
     public void Outbox_WriteThatFailed_TheNextWriteSaysClosed()
     {
         using var pair = SocketPair.Open();
-        var sends = new TwinHeldSends();
-        sends.Own(); // the test thread stands for the task that accepted the connection
-        var outbox = new TwinHeldOutbox(pair.Server, sends);
+        var (sends, outbox) = Owned(pair);
         outbox.Write("ab"u8);
         pair.Server.Dispose(); // the connection broke under the held bytes
         sends.Flush();
@@ -285,6 +292,27 @@ public class RapidSocketOutboxTests
     }
 
     /// <summary>Two connected loopback sockets.</summary>
+    /// <summary>A held list owned by the calling thread (it stands for the task that accepted the connection) and its outbox on <paramref name="pair"/>.</summary>
+    private static (TwinHeldSends Sends, TwinHeldOutbox Outbox) Owned(SocketPair pair)
+    {
+        var sends = new TwinHeldSends();
+        sends.Own();
+        return (sends, new TwinHeldOutbox(pair.Server, sends));
+    }
+
+    /// <summary>Reads <paramref name="count"/> bytes from the client side (at most 10 s), as text.</summary>
+    private static string ReadExactly(SocketPair pair, int count)
+    {
+        pair.Client.ReceiveTimeout = 10_000;
+        var buffer = new byte[count];
+        int got = 0;
+        while (got < count && pair.Client.Receive(buffer, got, count - got, SocketFlags.None) is > 0 and var n)
+        {
+            got += n;
+        }
+        return Encoding.ASCII.GetString(buffer, 0, got);
+    }
+
     private sealed class SocketPair : IDisposable
     {
         private SocketPair(Socket server, Socket client) => (Server, Client) = (server, client);
