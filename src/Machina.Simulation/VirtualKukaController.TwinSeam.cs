@@ -73,16 +73,20 @@ public sealed partial class VirtualKukaController : IEkiSeam
     bool IEkiSeam.Accepted(EkiChannel channel, TcpClient client)
     {
         _connections.Connected(IsDriver(channel) ? "driver" : "monitor", client, client.Client);
-        // The driver channel's writes go through the EthernetKRL stack's outbox, held until the robot interpreter waits (as perf51c's
-        // RAPID one); not while the options shape the acknowledgement writes themselves (their tests want those segments).
-        Stream? wire = _options.AcknowledgementWrites == AcknowledgementWrites.Whole && Twin is { } twin ? new TwinHeldOutbox(client.Client, twin.Sends) : null;
-        bool kept = !IsDriver(channel) || AttachClient(client, wire);
+        bool kept = !IsDriver(channel) || AttachClient(client, DriverWire(client));
         if (!kept)
         {
             _connections.Left(client);
         }
         return kept;
     }
+
+    /// <summary>
+    /// The driver connection's writes go through the EthernetKRL stack's outbox, held until the robot interpreter waits (as RAPID's
+    /// SocketSend); null (written at once) while the options shape the acknowledgement writes themselves (their tests want those segments).
+    /// </summary>
+    private TwinHeldOutbox? DriverWire(TcpClient client) =>
+        _options.AcknowledgementWrites == AcknowledgementWrites.Whole && Twin is { } twin ? new TwinHeldOutbox(client.Client, twin.Sends) : null;
 
     void IEkiSeam.Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
     {
