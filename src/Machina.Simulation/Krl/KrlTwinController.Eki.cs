@@ -303,7 +303,8 @@ internal sealed partial class KrlTwinController
         ? whole
         : (int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture)));
 
-    private static object EkiReal(string value) => double.Parse(value, CultureInfo.InvariantCulture);
+    /// <summary>A REAL element's value: plain decimal text (the host's numbers) read directly (<see cref="KrlDecimalText"/>), the rest as before.</summary>
+    private static object EkiReal(string value) => KrlDecimalText.TryRead(value, out double number) ? number : double.Parse(value, CultureInfo.InvariantCulture);
 
     private static object EkiBool(string value) => KrlValues.Box(value is "1" || value.Equals("true", StringComparison.OrdinalIgnoreCase));
 
