@@ -162,7 +162,10 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
     }
 
-    /// <summary>Counts each complete statement of <paramref name="text"/> received (a ';' outside a quoted text ends one).</summary>
+    /// <summary>
+    /// Counts each complete statement of <paramref name="text"/> received (a ';' outside a quoted text ends one). A statement that
+    /// lies in one arrival is cut from it where it lies; one that began in an earlier arrival is joined in <see cref="_statement"/>.
+    /// </summary>
     private void CountStatements(Socket connection, string text)
     {
         lock (Gate)
@@ -171,25 +174,47 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
             {
                 return;
             }
-            foreach (char c in text)
+            ReadOnlySpan<char> rest = text;
+            while (true)
             {
-                if (c == '"')
+                int at = _inText ? rest.IndexOf('"') : rest.IndexOfAny('"', ';');
+                if (at < 0)
+                {
+                    _statement.Append(rest);
+                    return;
+                }
+                if (rest[at] == '"')
                 {
                     _inText = !_inText;
-                }
-                if (c != ';' || _inText)
-                {
-                    _statement.Append(c);
+                    _statement.Append(rest[..(at + 1)]);
+                    rest = rest[(at + 1)..];
                     continue;
                 }
-                string statement = _statement.ToString().Trim();
-                _statement.Clear();
-                if (statement.Length > 0)
+                ReadOnlySpan<char> part = rest[..at];
+                rest = rest[(at + 1)..];
+                string statement;
+                if (_statement.Length == 0)
                 {
-                    int id = IdOf(statement);
-                    ReceiveOnCaller(id, statement + ";", out int generation, keepsCut: true);
-                    _awaiting.Enqueue(new TwinRequest(id, generation));
+                    ReadOnlySpan<char> trimmed = part.Trim();
+                    if (trimmed.IsEmpty)
+                    {
+                        continue;
+                    }
+                    statement = string.Concat(trimmed, ";");
                 }
+                else
+                {
+                    string joined = _statement.Append(part).ToString().Trim();
+                    _statement.Clear();
+                    if (joined.Length == 0)
+                    {
+                        continue;
+                    }
+                    statement = joined + ";";
+                }
+                int id = IdOf(statement.AsSpan(0, statement.Length - 1));
+                ReceiveOnCaller(id, statement, out int generation, keepsCut: true);
+                _awaiting.Enqueue(new TwinRequest(id, generation));
             }
         }
     }
@@ -298,15 +323,28 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
         }
     }
 
-    /// <summary>The id after '@' at the start of a request, or 0 (the driver's parser reads a request without one as id 0).</summary>
-    private static int IdOf(string statement)
+    /// <summary>
+    /// The id after '@' at the start of a request, or 0 (the driver's parser reads a request without one as id 0). Up to nine
+    /// digits are read as they are; anything else as a number (as before: a fraction or an exponent is taken, rounded down).
+    /// </summary>
+    private static int IdOf(ReadOnlySpan<char> statement)
     {
         if (statement[0] != '@')
         {
             return 0;
         }
-        int end = statement.IndexOfAny([' ', '\t', '\r', '\n'], 1);
-        string digits = end < 0 ? statement[1..] : statement[1..end];
+        ReadOnlySpan<char> rest = statement[1..];
+        int end = rest.IndexOfAny(" \t\r\n");
+        ReadOnlySpan<char> digits = end < 0 ? rest : rest[..end];
+        if (digits.Length is > 0 and <= 9 && !digits.ContainsAnyExceptInRange('0', '9'))
+        {
+            int value = 0;
+            foreach (char c in digits)
+            {
+                value = value * 10 + (c - '0');
+            }
+            return value;
+        }
         return double.TryParse(digits, NumberStyles.Float, CultureInfo.InvariantCulture, out double id) && id > 0 && id < int.MaxValue ? (int)id : 0;
     }
 

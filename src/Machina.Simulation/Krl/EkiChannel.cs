@@ -200,9 +200,26 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         var memories = new List<EkiMemory>();
         var flags = new List<int>();
         var frames = new Dictionary<string, string[]>(StringComparer.Ordinal);
+        bool framed = FrameTags.Count > 0;
+        // Without FRAME elements a tag's memory and a path's flags depend on the tag alone: found once per name, then by reference.
+        var stored = new TagTable<EkiMemory?>();
+        var flagged = new TagTable<int[]?>();
         splitter.Value += (tag, value) =>
         {
-            if (!FramePart(frames, tag, value) && _memories.TryGetValue(tag, out EkiMemory? memory) && !(FrameTags.Count > 0 && FrameTags.Contains(tag)))
+            EkiMemory? memory;
+            if (framed)
+            {
+                if (FramePart(frames, tag, value) || !_memories.TryGetValue(tag, out memory) || FrameTags.Contains(tag))
+                {
+                    return;
+                }
+            }
+            else if (!stored.TryGet(tag, out memory))
+            {
+                memory = _memories.GetValueOrDefault(tag);
+                stored.Add(tag, memory);
+            }
+            if (memory is not null)
             {
                 document.Add((tag, value));
                 memories.Add(memory);
@@ -210,17 +227,25 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         };
         splitter.Ended += (path, topLevel) =>
         {
-            if (frames.Remove(path, out string[]? frame))
+            if (framed)
             {
-                document.Add((path, string.Join(' ', frame)));
-                memories.Add(_memories[path]);
+                if (frames.Remove(path, out string[]? frame))
+                {
+                    document.Add((path, string.Join(' ', frame)));
+                    memories.Add(_memories[path]);
+                }
+                else if (FrameTags.Contains(path))
+                {
+                    document.Add((path, "0 0 0 0 0 0")); // a FRAME element without components
+                    memories.Add(_memories[path]);
+                }
             }
-            else if (FrameTags.Count > 0 && FrameTags.Contains(path))
+            if (!flagged.TryGet(path, out int[]? set))
             {
-                document.Add((path, "0 0 0 0 0 0")); // a FRAME element without components
-                memories.Add(_memories[path]);
+                set = SetFlags.GetValueOrDefault(path);
+                flagged.Add(path, set);
             }
-            if (SetFlags.TryGetValue(path, out int[]? set))
+            if (set is not null)
             {
                 flags.AddRange(set);
             }
@@ -236,7 +261,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     {
         // The channel's stop closes the socket, which ends a receive under way.
         using CancellationTokenRegistration stop = token.Register(static c => ((TcpClient)c!).Dispose(), client);
-        EkiXmlSplitter splitter = Splitter((document, memories, flags) => Commit(client, document, memories, flags));
+        // The flags of the documents of one arrival, set once they are all stored (see Raise).
+        var raised = new List<int>();
+        EkiXmlSplitter splitter = Splitter((document, memories, flags) => Commit(client, document, memories, flags, raised));
         EkiRawSplitter? raw = Configuration.RawReceive is { } element ? new EkiRawSplitter(element) : null;
         var bytes = new byte[8192];
         var decoder = Encoding.UTF8.GetDecoder();
@@ -252,16 +279,23 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
                 {
                     break;
                 }
-                if (raw is not null)
+                try
                 {
-                    foreach (string record in raw.Append(bytes.AsSpan(0, n)))
+                    if (raw is not null)
                     {
-                        Commit(client, RawDocument(record), null, RawFlags());
+                        foreach (string record in raw.Append(bytes.AsSpan(0, n)))
+                        {
+                            Commit(client, RawDocument(record), null, RawFlags(), raised);
+                        }
+                        continue;
                     }
-                    continue;
+                    int count = decoder.GetChars(bytes, 0, n, chars, 0);
+                    splitter.Append(chars.AsSpan(0, count));
                 }
-                int count = decoder.GetChars(bytes, 0, n, chars, 0);
-                splitter.Append(chars.AsSpan(0, count));
+                finally
+                {
+                    Raise(raised); // also those of the documents before a malformed part: they were stored
+                }
             }
         }
         catch (FormatException ex)
@@ -276,12 +310,28 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     }
 
     /// <summary>
-    /// Stores a complete document's values, then sets its flags (a memory over its limit closes the connection). A document
-    /// that arrives on a connection the channel already let go of (closed, cleared) is lost, as on the controller.
+    /// Sets the flags of the documents of one arrival (each flag once), after all of them are stored: the program waiting for a
+    /// flag wakes once per arrival, as EthernetKRL hands an arrival's documents over together, and then finds every one of them
+    /// (woken at the first, it ran beside the reader still storing the others, and was woken again for each).
     /// </summary>
-    private void Commit(TcpClient client, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags)
+    private void Raise(List<int> raised)
+    {
+        foreach (int flag in raised)
+        {
+            controller.SetFlag(flag, true);
+        }
+        raised.Clear();
+    }
+
+    /// <summary>
+    /// Stores a complete document's values and keeps its flags in <paramref name="raised"/> for the end of the arrival (<see
+    /// cref="Raise"/>; a memory over its limit sets them at once and closes the connection). A document that arrives on a
+    /// connection the channel already let go of (closed, cleared) is lost, as on the controller.
+    /// </summary>
+    private void Commit(TcpClient client, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags, List<int> raised)
     {
         bool overflow = false;
+        bool stored = false;
         // Under the link, as the connection's end: a document of a connection the channel already let go of reaches neither the
         // seam nor the memories. (Before, the seam could count such a document received after a program reset had closed the
         // channel and the next connection had attached, though the program never got it: the controller then held an action it
@@ -292,7 +342,18 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             {
                 // The seam sees the document before the program can take any of its values.
                 controller.Options.Seam?.Received(this, document);
-                overflow = Store(document, memories, flags, dropExcess: false);
+                overflow = Store(document, memories, null, dropExcess: false);
+                stored = true;
+            }
+        }
+        if (stored)
+        {
+            foreach (int flag in flags)
+            {
+                if (!raised.Contains(flag))
+                {
+                    raised.Add(flag);
+                }
             }
         }
         document.Clear();
@@ -300,6 +361,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         flags.Clear();
         if (overflow)
         {
+            Raise(raised);
             controller.Pendant.Log($"EthernetKRL {Name}: a memory holds more than {Configuration.Limit} elements; the connection is closed");
             // Only this reader's connection, which was still the channel's when its values were stored.
             client.Dispose();
@@ -308,9 +370,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
 
     /// <summary>
     /// Stores a document's values in their memories (<paramref name="memories"/>, one per value, when the splitter found them; else
-    /// by tag) and sets its flags; true when a memory went over its limit.
+    /// by tag) and sets its flags (null: none here); true when a memory went over its limit.
     /// </summary>
-    private bool Store(List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags, bool dropExcess)
+    private bool Store(List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int>? flags, bool dropExcess)
     {
         bool overflow = false;
         lock (_gate)
@@ -328,9 +390,12 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
                 overflow |= memory.Count > Configuration.Limit;
             }
         }
-        foreach (int flag in flags)
+        if (flags is not null)
         {
-            controller.SetFlag(flag, true);
+            foreach (int flag in flags)
+            {
+                controller.SetFlag(flag, true);
+            }
         }
         return overflow;
     }

@@ -62,6 +62,12 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         public List<Element> Children { get; } = [];
 
         public List<(string Name, string Tag)> Attributes { get; } = [];
+
+        /// <summary>Where the search for the next child starts: the one after the child found last (a stream repeats its order).</summary>
+        public int NextChild { get; set; }
+
+        /// <summary>Where the search for the next attribute starts: the one after the attribute found last.</summary>
+        public int NextAttribute { get; set; }
     }
 
     /// <summary>Adds received text and reports every complete item; throws <see cref="FormatException"/> for malformed XML.</summary>
@@ -221,10 +227,14 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
     /// <summary>The element <paramref name="name"/> below <paramref name="parent"/>: one seen before, or a new one (kept while there is room).</summary>
     private Element Child(Element parent, ReadOnlySpan<char> name)
     {
-        foreach (Element child in parent.Children)
+        List<Element> children = parent.Children;
+        int count = children.Count;
+        for (int k = 0, i = parent.NextChild; k < count; k++, i = i + 1 == count ? 0 : i + 1)
         {
+            Element child = children[i];
             if (name.SequenceEqual(child.Name))
             {
+                parent.NextChild = i + 1 == count ? 0 : i + 1;
                 return child;
             }
         }
@@ -240,10 +250,14 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
     /// <summary>The tag of attribute <paramref name="name"/> of <paramref name="element"/> (<c>DT/DR/A/@ID</c>).</summary>
     private string AttributeTag(Element element, ReadOnlySpan<char> name)
     {
-        foreach ((string known, string tag) in element.Attributes)
+        List<(string Name, string Tag)> attributes = element.Attributes;
+        int count = attributes.Count;
+        for (int k = 0, i = element.NextAttribute; k < count; k++, i = i + 1 == count ? 0 : i + 1)
         {
+            (string known, string tag) = attributes[i];
             if (name.SequenceEqual(known))
             {
+                element.NextAttribute = i + 1 == count ? 0 : i + 1;
                 return tag;
             }
         }
