@@ -69,6 +69,9 @@ internal sealed class RapidUnary(int line, string op, RapidExpr operand) : Rapid
     /// <summary>The operator, upper case.</summary>
     public string Op { get; } = op;
 
+    /// <summary>True for <c>NOT</c> (a condition negates its operand's value without a box).</summary>
+    public bool IsNot { get; } = op == "NOT";
+
     /// <summary>The operand.</summary>
     public RapidExpr Operand { get; } = operand;
 }

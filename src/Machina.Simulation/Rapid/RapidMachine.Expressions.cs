@@ -75,22 +75,30 @@ internal sealed partial class RapidMachine
     /// </summary>
     public void Store(RapidExpr target, RapidFrame? frame, object value, bool owned = false)
     {
-        if (value is double && target is RapidName number)
+        // A num or bool is its own copy (its box is never mutated) and no string: the commonest stores skip the copy and the tests
+        // below, into a name (gap := StrFind(...)), an element (StrToVal into values{n}) or a component alike.
+        if (value is double or bool)
         {
-            StoreName(number, frame, value); // a number is its own copy and no string: the commonest store, without the tests below
-            return;
+            if (target is RapidName number)
+            {
+                StoreName(number, frame, value);
+                return;
+            }
         }
-        if (!owned && value is RapidRecord from && target is RapidName { Global: null } local && IntoOwnRecord(local, frame!, from))
+        else
         {
-            return;
-        }
-        if (!owned)
-        {
-            value = RapidValues.Copy(value);
-        }
-        if (value is string s && s.Length > MaxStringLength)
-        {
-            throw new RapidRuntimeException(RapidErrorNumbers.StringTooLong, target.Line, $"the string is longer than {MaxStringLength} characters");
+            if (!owned && value is RapidRecord from && target is RapidName { Global: null } local && IntoOwnRecord(local, frame!, from))
+            {
+                return;
+            }
+            if (!owned)
+            {
+                value = RapidValues.Copy(value);
+            }
+            if (value is string s && s.Length > MaxStringLength)
+            {
+                throw new RapidRuntimeException(RapidErrorNumbers.StringTooLong, target.Line, $"the string is longer than {MaxStringLength} characters");
+            }
         }
         switch (target)
         {
@@ -293,6 +301,11 @@ internal sealed partial class RapidMachine
     {
         if (e is not RapidBinary b)
         {
+            if (e is RapidUnary { IsNot: true } not)
+            {
+                CheckStack(not.Line);
+                return !Condition(not.Operand, frame); // NOT StrToVal(...): no box for the operand's value or the negation
+            }
             return (bool)Evaluate(e, frame);
         }
         CheckStack(b.Line);

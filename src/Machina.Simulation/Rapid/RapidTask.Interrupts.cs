@@ -144,7 +144,9 @@ internal sealed partial class RapidTask
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void RunPendingTraps()
     {
-        if (_hasPending && !_inTrap)
+        // While an IPers order stands (our driver's), most statements find nothing new: that is seen here, without the call.
+        if (_hasPending && !_inTrap
+            && (_queued || _timerCount > 0 || Controller.PersistentWrites != _persWritesSeen || !ReferenceEquals(_persSnapshot, _persChecked)))
         {
             LookForTraps();
         }
@@ -156,11 +158,14 @@ internal sealed partial class RapidTask
         // Only when persistent data were written since the last look (or the orders changed): most statements write none.
         RapidPersOrder[] orders = _persSnapshot;
         int writes = Controller.PersistentWrites;
-        if (orders.Length > 0 && (writes != _persWritesSeen || !ReferenceEquals(orders, _persChecked)))
+        if (writes != _persWritesSeen || !ReferenceEquals(orders, _persChecked))
         {
             _persWritesSeen = writes;
             _persChecked = orders;
-            CheckPersOrders(orders);
+            if (orders.Length > 0)
+            {
+                CheckPersOrders(orders);
+            }
         }
         if (_timerCount > 0)
         {
