@@ -1,3 +1,4 @@
+using Machina.Simulation;
 using Machina.Simulation.UrScript;
 using Machina.Tests.Support;
 
@@ -176,5 +177,43 @@ public sealed class UrSpeedMotionTests
         Assert.Contains($"{function}: Another thread is already controlling the robot.", twin.Error);
         Assert.Contains("line 9", twin.Error);
         Assert.DoesNotContain("both", twin.Pendant.Lines);
+    }
+
+    /// <summary>
+    /// RTDE's actual_q and actual_qd show the speed motion going on after speedj returned: 1 s after speedj([0.2, 0, …], 0.5,
+    /// 0.4) started, joint 1 is 0.04 + 0.2 · 0.6 = 0.16 rad further and still turns at 0.2 rad/s (a 10 Hz recipe, one package
+    /// per step of the manual clock; the values depend on the clock only).
+    /// </summary>
+    [Fact]
+    public async Task Rtde_SeesTheArmMoveOnAtTheSpeed_AfterSpeedjReturned()
+    {
+        var clock = new ManualClock();
+        await using var controller = new VirtualUrController(new VirtualUrControllerOptions { TimeProvider = clock });
+        await controller.StartAsync();
+        using var client = await GuideRtdeClient.ConnectAsync(controller.RtdePort);
+        Assert.True(await client.NegotiateAsync());
+        await client.SetupOutputsAsync(10, "timestamp", "actual_q", "actual_qd");
+        Assert.True(await client.StartAsync());
+        Dictionary<string, object> data = await client.ReadDataAsync();
+        double start = ((double[])data["actual_q"])[0], startTime = (double)data["timestamp"]; // the clock stands until the test moves it
+        Assert.True(controller.Twin.Start("def p():\n  speedj([0.2, 0, 0, 0, 0, 0], 0.5, 0.4)\n  textmsg(\"returned\")\n  sleep(100)\nend\n"), controller.Twin.Error);
+        Assert.True(SpinWait.SpinUntil(() => controller.Twin.Motion is { OpenEnded: true }, Bound), $"the speedj did not start: {controller.Twin.Error}");
+
+        var period = TimeSpan.FromMilliseconds(100);
+        for (int i = 0; i < 10; i++)
+        {
+            await OnlineWait.UntilAsync(() => clock.HasTimerDueIn(period), "the sender to wait for its next package");
+            clock.Advance(period);
+        }
+        // The package of the clock's last step (a start or state change sends one more in between: read up to it).
+        for (int n = 0; n < 100 && (double)data["timestamp"] < startTime + 1.0 - 1e-6; n++)
+        {
+            data = await client.ReadDataAsync();
+        }
+        Assert.Equal(startTime + 1.0, (double)data["timestamp"], 6);
+        Assert.Contains("returned", controller.Twin.Pendant.Lines);
+        Assert.Equal(0.16, ((double[])data["actual_q"])[0] - start, 4);
+        Assert.Equal(0.2, ((double[])data["actual_qd"])[0], 3);
+        Assert.NotNull(controller.Twin.Motion);
     }
 }
