@@ -16,6 +16,12 @@ internal sealed class UrBoundProgram(List<UrStmt> statements, UrFunction? entry,
 
     /// <summary>Every function and thread by name.</summary>
     public Dictionary<string, UrFunction> Functions { get; } = functions;
+
+    /// <summary>True when the program is a secondary program (its entry is a <c>sec</c>).</summary>
+    public bool IsSecondary => Entry?.IsSecondary == true;
+
+    /// <summary>The first call of a built-in that uses physical time (motion, <c>sleep</c>, <c>sync</c>), or null when there is none.</summary>
+    public (string Name, int Line)? PhysicalTimeCall { get; init; }
 }
 
 /// <summary>
@@ -32,6 +38,13 @@ internal sealed class UrBinder
     private readonly Dictionary<string, int> _globals = new(StringComparer.Ordinal);
     private readonly Dictionary<object, UrConst> _defaults = new(ReferenceEqualityComparer.Instance);
     private Dictionary<string, int>? _locals;
+    private (string Name, int Line)? _physicalTimeCall;
+
+    /// <summary>The built-ins that use physical (robot) time: a secondary program cannot call them (the Script Manual's "Secondary Programs").</summary>
+    private static readonly HashSet<string> PhysicalTime = new(StringComparer.Ordinal)
+    {
+        "movej", "movel", "movep", "movec", "servoj", "speedj", "speedl", "stopj", "stopl", "sleep", "sync",
+    };
 
     private UrBinder(IReadOnlyDictionary<string, UrBuiltin> builtins) => _builtins = builtins;
 
@@ -66,7 +79,10 @@ internal sealed class UrBinder
             binder.BindFunction(function);
         }
         UrFunction? entry = tree.TopLevel.LastOrDefault(f => f.IsProgram);
-        return new UrBoundProgram(tree.Statements, entry, [.. binder._globals.OrderBy(g => g.Value).Select(g => g.Key)], binder._functions);
+        return new UrBoundProgram(tree.Statements, entry, [.. binder._globals.OrderBy(g => g.Value).Select(g => g.Key)], binder._functions)
+        {
+            PhysicalTimeCall = binder._physicalTimeCall,
+        };
     }
 
     private void BindFunction(UrFunction function)
@@ -279,6 +295,10 @@ internal sealed class UrBinder
         {
             call.Builtin = builtin;
             parameters = builtin.Parameters;
+            if (_physicalTimeCall is null && PhysicalTime.Contains(call.Name))
+            {
+                _physicalTimeCall = (call.Name, call.Line);
+            }
         }
         else if (_functions.TryGetValue(call.Name, out UrFunction? function) && !function.IsThread)
         {

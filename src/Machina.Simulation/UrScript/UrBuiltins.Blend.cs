@@ -46,6 +46,7 @@ internal static partial class UrBuiltins
     private static object MoveLinear(UrMachine m, int line, object[] a, string function)
     {
         (double acc, double v, double time, double r) = Profile(a, line, function);
+        TakeControl(m, line, function);
         TwinArm arm = m.Controller.Arm;
         Pose target = a[0] is UrList list && list.Items.Length == 6 && a[0] is not UrPose
             ? arm.Model.Kinematics.Forward(UrGeometry.ToJoints(Six(a, 0, line, function, "pose"), line)) * arm.ToolCenter

@@ -16,10 +16,11 @@ internal static partial class UrBuiltins
         Add(t, "servoj", ServoJ, R("q"), O("a", 0), O("v", 0), O("t", 0.002), O("lookahead_time", 0.1), O("gain", 300));
         Add(t, "stopj", (m, line, a) => Stop(m, line, a, "stopj", tool: false), R("a"));
         Add(t, "stopl", (m, line, a) => Stop(m, line, a, "stopl", tool: true), R("a"), O("aRot", NotGiven));
-        Add(t, "get_actual_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
-        Add(t, "get_target_tcp_pose", (m, line, a) => UrGeometry.FromPose(m.Controller.Arm.Tcp));
-        Add(t, "get_actual_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
-        Add(t, "get_target_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.Arm.Joints));
+        // Where the arm is now: part-way through a motion in progress (another thread's, or a speed motion that goes on).
+        Add(t, "get_actual_tcp_pose", (m, line, a) => UrGeometry.FromPose(ToolNow(m)));
+        Add(t, "get_target_tcp_pose", (m, line, a) => UrGeometry.FromPose(ToolNow(m)));
+        Add(t, "get_actual_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointsNow()));
+        Add(t, "get_target_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointsNow()));
         Add(t, "get_actual_tcp_speed", (m, line, a) => new UrPose(m.Controller.TcpSpeedNow()));
         Add(t, "get_actual_joint_speeds", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointSpeedsNow()));
         Add(t, "is_steady", (m, line, a) => UrValue.Box(true));
@@ -32,6 +33,9 @@ internal static partial class UrBuiltins
             R("pose"), O("qnear", NotGiven), O("maxPositionError", 1e-10), O("maxOrientationError", 1e-10), O("tcp", NotGiven));
         Add(t, "is_within_safety_limits", (m, line, a) => UrValue.Box(TrySolve(m, line, a[0], NotGiven) is not null), R("pose"), O("qnear", NotGiven));
     }
+
+    /// <summary>The tool centre point now (part-way through a motion in progress).</summary>
+    private static Pose ToolNow(UrMachine m) => m.Controller.Motion is null ? m.Controller.Arm.Tcp : m.Controller.Arm.FlangeAt(m.Controller.JointsNow()) * m.Controller.Arm.ToolCenter;
 
     private static double Positive(double value, int line, string function, string parameter) =>
         value > 0 && double.IsFinite(value) ? value : throw new UrRuntimeException(line, $"{function}: argument '{parameter}' must be positive");
@@ -107,6 +111,7 @@ internal static partial class UrBuiltins
     {
         (double acc, double v, double time, _) = Profile(a, line, function);
         FinishBlend(m, line); // the twin blends linear motions only: the arm stops at the last waypoint first
+        TakeControl(m, line, function);
         Joints from = m.Controller.Arm.Joints;
         Joints to = a[0] is UrPose pose
             ? Solve(m, line, function, UrGeometry.ToPose(pose.Values, line), from)
@@ -161,6 +166,7 @@ internal static partial class UrBuiltins
     {
         (double acc, double v, _, _) = Profile([null!, a[2], a[3], 0, a[4]], line, "movec");
         FinishBlend(m, line);
+        TakeControl(m, line, "movec");
         Pose via = TargetPose(m, a, 0, line, "movec", "pose_via");
         Pose to = TargetPose(m, a, 1, line, "movec", "pose_to");
         double mode = Num(a, 5, line, "movec", "mode");
@@ -189,6 +195,7 @@ internal static partial class UrBuiltins
             throw new UrRuntimeException(line, "servoj: argument 't' must be positive");
         }
         FinishBlend(m, line);
+        TakeControl(m, line, "servoj");
         Joints from = m.Controller.Arm.Joints;
         if (m.Controller.Arm.Model.MaxJointSpeeds is { } max)
         {

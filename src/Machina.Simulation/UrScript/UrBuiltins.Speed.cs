@@ -1,11 +1,15 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 internal static partial class UrBuiltins
 {
     /// <summary>
-    /// speedj and speedl as the twin approximates them: with a time <c>t</c>, the arm moves at the given speed for that time (joints
-    /// by qd·t; the tool by xd·t, its rotation vector added); without one it stands (a controller would keep the speed until the next
-    /// motion command; the twin has no open-ended motion). The target speeds are the motion in progress's (zero while the arm stands).
+    /// speedj and speedl (<see cref="UrTwinController.Speed"/>): the speed changes evenly from the arm's to the one asked (the
+    /// leading joint at a for speedj; the tool's position at a and its turn at aRot for speedl, the slower leading) and stays after
+    /// the call returned (after t, or once the speed is reached without t), until the thread's next motion or stop. speedl's tool
+    /// speed is turned into joint speeds where the call is made (the tool keeps to its line for a short way, the joints' speeds
+    /// then held). The target speeds are the motion in progress's (zero while the arm stands).
     /// </summary>
     private static void AddSpeed(Dictionary<string, UrBuiltin> t)
     {
@@ -24,27 +28,68 @@ internal static partial class UrBuiltins
     {
         double[] qd = Six(a, 0, line, "speedj", "qd");
         double time = SpeedTime(a, line, "speedj");
+        double acceleration = Num(a, 1, line, "speedj", "a");
         FinishBlend(m, line);
-        if (time > 0)
-        {
-            Joints to = m.Controller.Arm.Joints + Joints.FromArray([.. qd.Select(r => r * 180 / Math.PI * time)]);
-            Move(m, line, to, time, "speedj");
-        }
+        double[] now = m.Controller.JointSpeedsNow().ToArray(); // degrees per second
+        double[] speeds = [.. qd.Select(r => r * 180 / Math.PI)];
+        double change = Enumerable.Range(0, 6).Max(i => Math.Abs(speeds[i] - now[i])) * Math.PI / 180;
+        RunSpeed(m, line, speeds, change > 0 && acceleration > 0 ? change / acceleration : 0, time, "speedj");
         return UrNone.Value;
     }
 
     private static object SpeedL(UrMachine m, int line, object[] a)
     {
+        const double Step = 0.01; // seconds of the tool's way that set the joints' speeds
         double[] xd = Six(a, 0, line, "speedl", "xd");
         double time = SpeedTime(a, line, "speedl");
+        double acceleration = Num(a, 1, line, "speedl", "a");
+        double turning = Given(a[3]) ? Positive(Num(a, 3, line, "speedl", "aRot"), line, "speedl", "aRot") : acceleration;
         FinishBlend(m, line);
-        if (time > 0)
-        {
-            double[] pose = UrValue.Six(UrGeometry.FromPose(m.Controller.Arm.Tcp), line, "speedl");
-            double[] to = [.. pose.Select((p, i) => p + xd[i] * time)];
-            return MoveLinear(m, line, [new UrPose(to), a[1], 1.0, time, 0.0], "speedl");
-        }
+        double[] tool = m.Controller.TcpSpeedNow();
+        double moveChange = Math.Sqrt(Enumerable.Range(0, 3).Sum(i => (xd[i] - tool[i]) * (xd[i] - tool[i])));
+        double turnChange = Math.Sqrt(Enumerable.Range(3, 3).Sum(i => (xd[i] - tool[i]) * (xd[i] - tool[i])));
+        double ramp = Math.Max(moveChange > 0 && acceleration > 0 ? moveChange / acceleration : 0, turnChange > 0 && turning > 0 ? turnChange / turning : 0);
+        TwinArm arm = m.Controller.Arm;
+        Joints from = m.Controller.JointsNow();
+        Pose here = arm.FlangeAt(from) * arm.ToolCenter;
+        var spin = new Vector(xd[3], xd[4], xd[5]) * (180 / Math.PI * Step);
+        var ahead = new Pose(here.Position + new Vector(xd[0], xd[1], xd[2]) * (1000 * Step), Rotation.FromRotationVector(spin) * here.Rotation);
+        double[] q0 = from.ToArray(), q1 = Solve(m, line, "speedl", ahead, from).ToArray();
+        RunSpeed(m, line, [.. q0.Select((q, i) => (q1[i] - q) / Step)], ramp, time, "speedl");
         return UrNone.Value;
+    }
+
+    /// <summary>Runs a speed motion (<see cref="UrTwinController.Speed"/>) with the other threads free meanwhile.</summary>
+    private static void RunSpeed(UrMachine m, int line, double[] speeds, double ramp, double time, string function)
+    {
+        CancellationToken token = m.Cancellation;
+        try
+        {
+            using (m.Unlock())
+            {
+                m.Controller.Speed(speeds, ramp, time, line, function, token);
+            }
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{function}: {e.Message}");
+        }
+    }
+
+    /// <summary>
+    /// A motion of the calling thread starts: a speed motion of its own, or one whose thread was killed, stands where it is first;
+    /// another, live thread's motion in progress is a runtime error (a UR's "Another thread is already controlling the robot.").
+    /// </summary>
+    private static void TakeControl(UrMachine m, int line, string function)
+    {
+        try
+        {
+            m.Controller.SettleCoast(m.Cancellation);
+        }
+        catch (TwinMotionException e)
+        {
+            throw new UrRuntimeException(line, $"{function}: {e.Message}");
+        }
     }
 
     /// <summary>The acceleration (positive) and the optional time (zero or positive) of a speed command.</summary>

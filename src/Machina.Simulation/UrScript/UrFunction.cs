@@ -24,6 +24,9 @@ internal sealed class UrFunction(int line, string name, string[] parameters, UrE
     /// <summary>True for a <c>thread</c>.</summary>
     public bool IsThread { get; } = isThread;
 
+    /// <summary>True for a secondary program (<c>sec</c>): it runs beside the main program, in a single controller step.</summary>
+    public bool IsSecondary { get; init; }
+
     /// <summary>True for a top-level definition without parameters: the program itself, whose variables are the program's globals.</summary>
     public bool IsProgram { get; set; }
 

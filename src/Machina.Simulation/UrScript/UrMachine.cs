@@ -113,6 +113,9 @@ internal sealed class UrMachine : IDisposable
             finally
             {
                 StopThreads();
+                // The program's threads are all gone: a speed motion one of them left going is no thread's now (the program's end
+                // stops it, UrTwinController.SettleCoast).
+                _stop.Cancel();
             }
             if (_threadError is not null)
             {
@@ -219,6 +222,7 @@ internal sealed class UrMachine : IDisposable
             {
                 _liveThreads--;
                 handle.Finished = true;
+                handle.Stop.Cancel(); // a speed motion the thread left going is no live thread's: another may take it over
             }
         }
     }

@@ -13,6 +13,12 @@ internal sealed class UrMotion(Joints from, Joints target, double doneBefore, lo
     /// <summary>Where the motion goes.</summary>
     public Joints Target => target;
 
+    /// <summary>
+    /// A speed motion (<c>speedj</c>, <c>speedl</c>): it goes on after the call that started it returned, until a motion or stop
+    /// of its thread replaces it, a hold or the program's end stops it, or a joint reaches its limit.
+    /// </summary>
+    public bool OpenEnded { get; init; }
+
     /// <summary>When the motion started, as a timestamp of the controller's time.</summary>
     public long Started { get; } = started;
 

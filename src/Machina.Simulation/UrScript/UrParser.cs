@@ -154,7 +154,7 @@ internal sealed class UrParser
         _ => $"'{token.Text}'",
     };
 
-    private static bool IsKeyword(string name) => name is "def" or "thread" or "end" or "if" or "elif" or "else" or "while" or "return"
+    private static bool IsKeyword(string name) => name is "def" or "sec" or "thread" or "end" or "if" or "elif" or "else" or "while" or "return"
         or "break" or "continue" or "and" or "or" or "not" or "global" or "local" or "run" or "join" or "kill" or "halt" or "True" or "False";
 
     /// <summary>Statements up to (not including) one of the closing keywords.</summary>
@@ -190,6 +190,7 @@ internal sealed class UrParser
             switch (token.Text)
             {
                 case "def":
+                case "sec":
                 case "thread":
                     Definition();
                     return new UrNoOp(line);
@@ -307,6 +308,7 @@ internal sealed class UrParser
         }
         var function = new UrFunction(keyword.Line, name, [.. parameters], [.. defaults], body, isThread)
         {
+            IsSecondary = keyword.Text == "sec",
             IsProgram = topLevel && parameters.Count == 0 && !isThread,
         };
         _tree.Functions.Add(function);

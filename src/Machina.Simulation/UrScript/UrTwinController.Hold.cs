@@ -12,7 +12,7 @@ internal sealed partial class UrTwinController
     /// <summary>
     /// The cancellation of the thread whose motion <see cref="_motion"/> is: once it is cancelled (<c>kill</c>, or the program
     /// stopped) the motion coasts on its plan until a stop takes it over (<see cref="Decelerate"/>) or the arm is settled
-    /// where it is (<see cref="SettleCoast"/>).
+    /// where it is (<see cref="SettleCoast()"/>).
     /// </summary>
     private CancellationToken _motionOwner;
 
@@ -122,7 +122,8 @@ internal sealed partial class UrTwinController
             stop = _holdStop;
         }
         stop.Cancel();
-        SettleCoast(); // a motion whose thread was killed stops where it is, as a held one does
+        // A motion whose thread was killed stops where it is, as a held one does, and so does a speed motion (speedj, speedl).
+        TakeCoast(CancellationToken.None, true, out _, out _, out _, out _);
         StateChanged?.Invoke();
         return true;
     }
@@ -229,7 +230,9 @@ internal sealed partial class UrTwinController
         CancellationToken cancellation, Joints? traced, bool trace)
     {
         Arm.RequireWithinLimits(target);
-        SettleCoast(); // a motion whose thread was killed, not stopped by stopj/stopl: this one starts where it has brought the arm
+        // A motion whose thread was killed, not stopped by stopj/stopl, or this thread's own speed motion: this one starts where it
+        // has brought the arm. Another, live thread's motion in progress refuses this one.
+        SettleCoast(cancellation);
         Joints from = Arm.Joints;
         double done = 0; // fraction of the way already behind
         bool planned = true;

@@ -23,12 +23,14 @@ internal sealed partial class UrTwinController
     /// slowing down evenly in joint space (<paramref name="tool"/> false: the leading joint at <paramref name="acceleration"/>
     /// rad/s²) or along the tool's line (true: the position at <paramref name="acceleration"/> m/s², the orientation at
     /// <paramref name="rotationAcceleration"/> rad/s², whichever takes longer leading), and returns when the arm is at rest.
-    /// Nothing to do when the arm stands (or another thread's motion runs: see docs/simulation.md).
+    /// Nothing to do when the arm stands. The speed motion of the calling thread (<paramref name="cancellation"/>: <c>speedj</c>,
+    /// <c>speedl</c>) is slowed so too.
     /// </summary>
-    /// <exception cref="TwinMotionException">Where the arm would stop is beyond a joint limit or out of reach.</exception>
+    /// <exception cref="TwinMotionException">Where the arm would stop is beyond a joint limit or out of reach, or another, live
+    /// thread's motion is in progress (<see cref="AnotherThread"/>).</exception>
     public void Decelerate(bool tool, double acceleration, double rotationAcceleration, int line, string function, CancellationToken cancellation)
     {
-        if (!TakeCoast(out Joints at, out Joints before, out Joints after, out double step))
+        if (!TakeCoast(cancellation, false, out Joints at, out Joints before, out Joints after, out double step))
         {
             return;
         }
@@ -70,19 +72,37 @@ internal sealed partial class UrTwinController
     /// Ends a coasting motion (its thread was killed or the program stopped, and no stop took it over) where it has brought the
     /// arm now: the arm stands there, suddenly (a UR's program that ends without stopj stops so).
     /// </summary>
-    public void SettleCoast() => TakeCoast(out _, out _, out _, out _);
+    public void SettleCoast() => TakeCoast(CancellationToken.None, false, out _, out _, out _, out _);
+
+    /// <summary>
+    /// As <see cref="SettleCoast()"/>, for a motion the thread of <paramref name="caller"/> is about to command: its own speed
+    /// motion stops where it is too, and another, live thread's motion in progress refuses it.
+    /// </summary>
+    /// <exception cref="TwinMotionException">Another, live thread's motion is in progress (<see cref="AnotherThread"/>).</exception>
+    public void SettleCoast(CancellationToken caller) => TakeCoast(caller, false, out _, out _, out _, out _);
 
     /// <summary>
     /// Takes the coasting motion, if any: the arm stands where it is now (<paramref name="at"/>), and <paramref name="before"/>
     /// and <paramref name="after"/> are where the motion put it <paramref name="step"/> seconds apart around now (its speeds).
+    /// A speed motion is taken too when <paramref name="caller"/> owns it or when <paramref name="anySpeed"/> (a hold).
     /// False when no motion coasts.
     /// </summary>
-    private bool TakeCoast(out Joints at, out Joints before, out Joints after, out double step)
+    /// <exception cref="TwinMotionException">A live thread other than <paramref name="caller"/> (when given) controls the motion in progress.</exception>
+    private bool TakeCoast(CancellationToken caller, bool anySpeed, out Joints at, out Joints before, out Joints after, out double step)
     {
         UrMotion? motion;
         lock (_holdGate)
         {
-            motion = _motion is { } moving && _motionOwner.IsCancellationRequested ? moving : null;
+            motion = _motion is { } moving && (_motionOwner.IsCancellationRequested || (moving.OpenEnded && (anySpeed || _motionOwner == caller)))
+                ? moving : null;
+            if (motion is null && _motion is not null && caller.CanBeCanceled && _motionOwner != caller && !_motionOwner.IsCancellationRequested)
+            {
+                throw new TwinMotionException(AnotherThread);
+            }
+        }
+        if (motion is not null)
+        {
+            StopSpeedTimer();
         }
         at = before = after = default;
         step = 0;

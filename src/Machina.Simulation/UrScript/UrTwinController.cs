@@ -180,6 +180,11 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         {
             return false;
         }
+        if (program.IsSecondary)
+        {
+            LaunchSecondary(program); // beside the main program, which goes on
+            return true;
+        }
         StopProgram();
         Launch(program, text);
         return true;
@@ -195,6 +200,11 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         if (Startable(text) is not { } program)
         {
             return false;
+        }
+        if (program.IsSecondary)
+        {
+            LaunchSecondary(program); // beside the main program, which goes on
+            return true;
         }
         await StopProgramAsync(cancellation).ConfigureAwait(false);
         Launch(program, text);
@@ -509,6 +519,7 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     /// <inheritdoc/>
     public void Dispose()
     {
+        _secondaryStop.Cancel();
         StopProgram();
         Watchdog.Dispose();
     }

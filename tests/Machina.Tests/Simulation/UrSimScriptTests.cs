@@ -41,7 +41,7 @@ public class UrSimScriptTests
 
         await OnlineWait.UntilAsync(() => controller.Twin.Io.GetNumber(Machina.Simulation.UrScript.UrIoBanks.OutputIntRegisters, 2) == 7, "the program to end");
         Assert.Equal(3, controller.Twin.Io.GetNumber(Machina.Simulation.UrScript.UrIoBanks.OutputIntRegisters, 1));
-        Assert.Equal(j1 + 0.1 * 180 / Math.PI, controller.State.Joints.J1, 9); // 0.1 rad/s for 1 s
+        Assert.Equal(j1 + 0.09 * 180 / Math.PI, controller.State.Joints.J1, 9); // 0.2 s up to 0.1 rad/s at 0.5 rad/s², then 0.8 s at it
         Assert.Empty(controller.Errors);
     }
 }
