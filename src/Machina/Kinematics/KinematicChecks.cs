@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina;
 
 /// <summary>
@@ -175,6 +177,9 @@ public static class KinematicChecks
         string path = isArc ? "arc" : "line";
         ArmConfiguration startConfig = kin.ConfigurationOf(start);
         double dt = speed > 0 && length > 1e-9 ? length / steps / speed : 0;
+        // The joints' speeds are asked only with a time step (the model's property is read once, not per joint and sample).
+        bool bySpeed = dt > 0 && model.MaxJointSpeeds is not null;
+        Joints max = bySpeed ? model.MaxJointSpeeds!.Value : default;
         double worstRatio = 0;
         int worstJoint = -1;
         Joints last = start;
@@ -186,25 +191,18 @@ public static class KinematicChecks
             Joints? next = i == 1 && closestToStart is not null && SameBits.Of(pose, target) ? closestToStart : kin.Closest(pose, last);
             if (next is null)
             {
-                Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
-                Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
-                bool reachable = solver.SolveRaw(Affine.FromPose(pose), last, raw, cfg) > 0;
-                Add(ref issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
-                    reachable ? $"the {path} needs a joint beyond its limits {Where(t, path, pose, tool)}." : $"the {path} leaves the reach of the {model} {Where(t, path, pose, tool)}.");
+                LeavesPath(model, path, t, pose, last, tool, ref issues);
                 return null;
             }
             Joints j = next.Value;
             double jump = 0;
-            for (int k = 0; k < Joints.Count; k++)
-            {
-                double d = Math.Abs(j[k] - last[k]);
-                jump = Math.Max(jump, d);
-                if (dt > 0 && model.MaxJointSpeeds is Joints max && d / dt / max[k] > worstRatio)
-                {
-                    worstRatio = d / dt / max[k];
-                    worstJoint = k;
-                }
-            }
+            // Joint by joint on the fields, in the joints' order (the first of equal ratios is the one named).
+            Step(0, Math.Abs(j.J1 - last.J1), dt, bySpeed, max.J1, ref jump, ref worstRatio, ref worstJoint);
+            Step(1, Math.Abs(j.J2 - last.J2), dt, bySpeed, max.J2, ref jump, ref worstRatio, ref worstJoint);
+            Step(2, Math.Abs(j.J3 - last.J3), dt, bySpeed, max.J3, ref jump, ref worstRatio, ref worstJoint);
+            Step(3, Math.Abs(j.J4 - last.J4), dt, bySpeed, max.J4, ref jump, ref worstRatio, ref worstJoint);
+            Step(4, Math.Abs(j.J5 - last.J5), dt, bySpeed, max.J5, ref jump, ref worstRatio, ref worstJoint);
+            Step(5, Math.Abs(j.J6 - last.J6), dt, bySpeed, max.J6, ref jump, ref worstRatio, ref worstJoint);
             (ArmConfiguration config, SingularityMeasure measure) = solver.Assess(j);
             if (jump > FlipJumpDegrees || config != startConfig)
             {
@@ -224,6 +222,29 @@ public static class KinematicChecks
                 $"at {Num.F(speed, 1)} mm/s joint {worstJoint + 1} would need {Num.F(worstRatio * limits[worstJoint], 0)}°/s, above its maximum of {Num.F(limits[worstJoint], 0)}°/s.");
         }
         return last;
+    }
+
+    /// <summary>One joint's change <paramref name="d"/> between two samples: the largest jump, and the joint speed's worst ratio to its maximum.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Step(int k, double d, double dt, bool bySpeed, double max, ref double jump, ref double worstRatio, ref int worstJoint)
+    {
+        jump = Math.Max(jump, d);
+        if (bySpeed && d / dt / max > worstRatio)
+        {
+            worstRatio = d / dt / max;
+            worstJoint = k;
+        }
+    }
+
+    /// <summary>The issue of a path sample that has no solution within the limits: out of reach, or a joint beyond its limits.</summary>
+    /// <remarks>Its own method: a buffer on the stack in <see cref="CheckPath"/>'s loop kept that method out of tiered compilation.</remarks>
+    private static void LeavesPath(RobotModel model, string path, double t, Pose pose, Joints last, Pose tool, ref List<KinematicIssue>? issues)
+    {
+        Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
+        Span<ArmConfiguration> cfg = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
+        bool reachable = ((ISolver)model.Kinematics).SolveRaw(Affine.FromPose(pose), last, raw, cfg) > 0;
+        Add(ref issues, reachable ? KinematicIssueKind.JointLimit : KinematicIssueKind.Unreachable,
+            reachable ? $"the {path} needs a joint beyond its limits {Where(t, path, pose, tool)}." : $"the {path} leaves the reach of the {model} {Where(t, path, pose, tool)}.");
     }
 
     /// <summary>A joint move (PTP, MoveJ, movej) to a Cartesian target that swings a joint by more than <see cref="LargeJointMoveDegrees"/>.</summary>

@@ -24,7 +24,32 @@ internal static class KinematicsCore
     }
 
     /// <summary>One joint of <see cref="FitLimits"/>: the turn of <paramref name="value"/> within [min, max] closest to <paramref name="ref0"/>.</summary>
-    private static bool FitJoint(double value, double ref0, double min, double max, out double fitted)
+    /// <remarks>
+    /// The common case first, to the bit what <see cref="FitJointAnyTurn"/> gives: the turn nearest the reference (k = round((ref0 −
+    /// value) / 360), the middle one of the three turns the full search tries) is within the range and less than
+    /// <see cref="NearTurnDegrees"/> from the reference. The other two are then more than 360° − 179° = 181° from it (less rounding,
+    /// below 1e-9° for values and references within ±1e6°), so the search would pick this one too.
+    /// </remarks>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static bool FitJoint(double value, double ref0, double min, double max, out double fitted)
+    {
+        if (Math.Abs(value) <= 1e6 && Math.Abs(ref0) <= 1e6)
+        {
+            double nearest = value + 360.0 * Math.Round((ref0 - value) / 360.0);
+            if (nearest >= min - 1e-9 && nearest <= max + 1e-9 && Math.Abs(nearest - ref0) < NearTurnDegrees)
+            {
+                fitted = Math.Clamp(nearest, min, max);
+                return true;
+            }
+        }
+        return FitJointAnyTurn(value, ref0, min, max, out fitted);
+    }
+
+    /// <summary>How close (degrees) the nearest turn must be to the reference for <see cref="FitJoint"/>'s short way.</summary>
+    internal const double NearTurnDegrees = 179;
+
+    /// <summary><see cref="FitJoint"/> by searching the turns: the three around the reference, then the whole range.</summary>
+    internal static bool FitJointAnyTurn(double value, double ref0, double min, double max, out double fitted)
     {
         // Nearest turn to the reference, then step into the range if needed.
         double k = Math.Round((ref0 - value) / 360.0);
@@ -361,13 +386,17 @@ internal static class KinematicsCore
     }
 
     /// <summary>Wraps radians to degrees in (−180°, 180°].</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // six per solution, two solutions per branch solved, and four for a closest solve's bounds
     internal static double WrapDegrees(double radians)
     {
         double d = radians * Angles.ToDegrees;
-        if (d > -180.0 && d < 180.0)
-        {
-            return d;   // what IEEERemainder gives inside (−180°, 180°), without its fmod (a solver wraps six angles of each of eight solutions)
-        }
+        // Inside (−180°, 180°) what IEEERemainder gives is the angle itself: no fmod (a solver wraps six angles of each solution).
+        return d > -180.0 && d < 180.0 ? d : WrapOutside(d);
+    }
+
+    /// <summary><see cref="WrapDegrees"/> of an angle (degrees) not inside (−180°, 180°).</summary>
+    private static double WrapOutside(double d)
+    {
         d = Math.IEEERemainder(d, 360.0);
         return d <= -180.0 ? d + 360.0 : d;
     }

@@ -18,7 +18,14 @@ public sealed class OpwKinematics : IKinematics, ISolver
         _e = -parameters.A2;
         _k = Math.Sqrt(parameters.C3 * parameters.C3 + _e * _e);
         _psi = Math.Atan2(_e, parameters.C3);
+        _bZero = BitConverter.DoubleToInt64Bits(parameters.B) == 0;
     }
+
+    /// <summary>
+    /// b (the forearm's sideways offset) is +0, as on every catalogue arm: axis 1's offset angle atan2(b, ±ρ) is then +0 in front
+    /// (ρ ≥ +0) and π behind (−ρ, −0 included), which is what atan2 gives there to the bit (<c>OpwShoulderAngleTests</c>).
+    /// </summary>
+    private readonly bool _bZero;
 
     /// <inheritdoc/>
     public RobotModel Model { get; }
@@ -28,21 +35,14 @@ public sealed class OpwKinematics : IKinematics, ISolver
 
     // Canonical angles (radians): axis 1 about +Z, axes 2 and 3 about +Y (positive tilts forward/down), axes 4 and 6 about the
     // forearm (+X), axis 5 about +Y; all zero = lower arm vertical, forearm horizontal forward. That is exactly ABB's convention.
-    private void ToCanonical(Joints j, Span<double> t)
-    {
-        if (_kuka)
-        {
-            t[0] = -j.J1; t[1] = j.J2 + 90; t[2] = j.J3 - 90; t[3] = -j.J4; t[4] = j.J5; t[5] = -j.J6;
-        }
-        else
-        {
-            t[0] = j.J1; t[1] = j.J2; t[2] = j.J3; t[3] = j.J4; t[4] = j.J5; t[5] = j.J6;
-        }
-        for (int i = 0; i < 6; i++)
-        {
-            t[i] *= Angles.ToRadians;
-        }
-    }
+    private Canonical ToCanonical(Joints j) => _kuka
+        ? new Canonical(-j.J1 * Angles.ToRadians, (j.J2 + 90) * Angles.ToRadians, (j.J3 - 90) * Angles.ToRadians,
+            -j.J4 * Angles.ToRadians, j.J5 * Angles.ToRadians, -j.J6 * Angles.ToRadians)
+        : new Canonical(j.J1 * Angles.ToRadians, j.J2 * Angles.ToRadians, j.J3 * Angles.ToRadians,
+            j.J4 * Angles.ToRadians, j.J5 * Angles.ToRadians, j.J6 * Angles.ToRadians);
+
+    /// <summary>The six canonical angles (radians) of a joint set.</summary>
+    private readonly record struct Canonical(double T1, double T2, double T3, double T4, double T5, double T6);
 
     private Joints FromCanonical(double t1, double t2, double t3, double t4, double t5, double t6)
     {
@@ -85,20 +85,17 @@ public sealed class OpwKinematics : IKinematics, ISolver
     public Pose Forward(Joints joints)
     {
         joints.RequireFinite(nameof(joints));
-        Span<double> t = stackalloc double[6];
-        ToCanonical(joints, t);
-        return FlangeFromWrist(ForwardCanonical(t)).ToPose();
+        return FlangeFromWrist(ForwardCanonical(ToCanonical(joints))).ToPose();
     }
 
     /// <summary>Where the arm's joints are for these joint values: base, axis 1 at shoulder height, shoulder, elbow, the forearm's offset, wrist centre, flange.</summary>
     internal Vector[] LinkPoints(Joints joints)
     {
         joints.RequireFinite(nameof(joints));
-        Span<double> t = stackalloc double[6];
-        ToCanonical(joints, t);
-        double c1 = Math.Cos(t[0]), s1 = Math.Sin(t[0]), phi = t[1] + t[2];
+        Canonical t = ToCanonical(joints);
+        double c1 = Math.Cos(t.T1), s1 = Math.Sin(t.T1), phi = t.T2 + t.T3;
         Vector At(double reach, double z) => new(reach * c1 - _p.B * s1, reach * s1 + _p.B * c1, z);
-        double elbowReach = _p.A1 + _p.C2 * Math.Sin(t[1]), elbowZ = _p.C1 + _p.C2 * Math.Cos(t[1]);
+        double elbowReach = _p.A1 + _p.C2 * Math.Sin(t.T2), elbowZ = _p.C1 + _p.C2 * Math.Cos(t.T2);
         double offsetReach = elbowReach + _e * Math.Sin(phi), offsetZ = elbowZ + _e * Math.Cos(phi);
         return
         [
@@ -112,24 +109,31 @@ public sealed class OpwKinematics : IKinematics, ISolver
         ];
     }
 
-    /// <summary>Horizontal distance of the wrist centre in front of axis 1 (in the axis-1 frame; negative = behind).</summary>
-    private double Reach(ReadOnlySpan<double> t)
+    /// <summary>
+    /// Horizontal distance of the wrist centre in front of axis 1 (in the axis-1 frame; negative = behind), from sin θ2 and the cosine
+    /// and sine of φ = θ2 + θ3.
+    /// </summary>
+    private double Reach(double sinT2, double cosPhi, double sinPhi) => _p.A1 + _p.C2 * sinT2 + _p.C3 * cosPhi + _e * sinPhi;
+
+    /// <summary><see cref="Reach(double, double, double)"/> of a joint set's canonical angles.</summary>
+    private double Reach(in Canonical t)
     {
-        double phi = t[1] + t[2];
-        return _p.A1 + _p.C2 * Math.Sin(t[1]) + _p.C3 * Math.Cos(phi) + _e * Math.Sin(phi);
+        // Math.SinCos gives Math.Sin's and Math.Cos's bits (MathSinCosTests), in one call.
+        (double sPhi, double cPhi) = Math.SinCos(t.T2 + t.T3);
+        return Reach(Math.Sin(t.T2), cPhi, sPhi);
     }
 
-    private Affine ForwardCanonical(ReadOnlySpan<double> t)
+    private Affine ForwardCanonical(in Canonical t)
     {
-        double phi = t[1] + t[2];
-        double s = Reach(t);
-        double z = _p.C1 + _p.C2 * Math.Cos(t[1]) - _p.C3 * Math.Sin(phi) + _e * Math.Cos(phi);
         // Math.SinCos gives Math.Sin's and Math.Cos's bits (MathSinCosTests), in one call.
-        (double s1, double c1) = Math.SinCos(t[0]);
-        (double sPhi, double cPhi) = Math.SinCos(phi);
-        (double s4, double c4) = Math.SinCos(t[3]);
-        (double s5, double c5) = Math.SinCos(t[4]);
-        (double s6, double c6) = Math.SinCos(t[5]);
+        (double s2, double c2) = Math.SinCos(t.T2);
+        (double sPhi, double cPhi) = Math.SinCos(t.T2 + t.T3);
+        double s = Reach(s2, cPhi, sPhi);
+        double z = _p.C1 + _p.C2 * c2 - _p.C3 * sPhi + _e * cPhi;
+        (double s1, double c1) = Math.SinCos(t.T1);
+        (double s4, double c4) = Math.SinCos(t.T4);
+        (double s5, double c5) = Math.SinCos(t.T5);
+        (double s6, double c6) = Math.SinCos(t.T6);
         Affine r = Affine.RotZ(c1, s1) * Affine.RotY(cPhi, sPhi) * Affine.RotX(c4, s4) * Affine.RotY(c5, s5) * Affine.RotX(c6, s6);
         double wx = s * c1 - _p.B * s1, wy = s * s1 + _p.B * c1;
         return r.WithTranslation(wx + _p.C4 * r.R00, wy + _p.C4 * r.R10, z + _p.C4 * r.R20);
@@ -156,21 +160,27 @@ public sealed class OpwKinematics : IKinematics, ISolver
     /// <inheritdoc/>
     public ArmConfiguration ConfigurationOf(Joints joints)
     {
-        Span<double> t = stackalloc double[6];
-        ToCanonical(joints, t);
-        double s = Reach(t);
-        return new ArmConfiguration(s < 0, Math.Cos(t[2] - _psi) < 0, Math.Sin(t[4]) < 0);
+        Canonical t = ToCanonical(joints);
+        return new ArmConfiguration(Reach(t) < 0, Math.Cos(t.T3 - _psi) < 0, Math.Sin(t.T5) < 0);
     }
 
     SingularityMeasure ISolver.Measure(Joints joints)
     {
-        Span<double> t = stackalloc double[6];
-        ToCanonical(joints, t);
-        double s = Reach(t);
-        double wrist = Math.Asin(Math.Min(1, Math.Abs(Math.Sin(t[4])))) * Angles.ToDegrees;
-        double elbow = Math.Asin(Math.Min(1, Math.Abs(Math.Cos(t[2] - _psi)))) * Angles.ToDegrees;
-        return new SingularityMeasure(wrist, elbow, Math.Abs(s));
+        Canonical t = ToCanonical(joints);
+        return MeasureOf(Math.Sin(t.T5), Math.Cos(t.T3 - _psi), Reach(t));
     }
+
+    /// <remarks>What <see cref="ConfigurationOf"/> and <c>Measure</c> give, from one sine of axis 5, one cosine of the elbow and one reach.</remarks>
+    (ArmConfiguration Configuration, SingularityMeasure Measure) ISolver.Assess(Joints joints)
+    {
+        Canonical t = ToCanonical(joints);
+        double sin5 = Math.Sin(t.T5), cosElbow = Math.Cos(t.T3 - _psi), s = Reach(t);
+        return (new ArmConfiguration(s < 0, cosElbow < 0, sin5 < 0), MeasureOf(sin5, cosElbow, s));
+    }
+
+    /// <summary>The singularity measure from sin θ5, the elbow's cos(θ3 − ψ) and the wrist centre's reach.</summary>
+    private static SingularityMeasure MeasureOf(double sin5, double cosElbow, double reach) => new(
+        Math.Asin(Math.Min(1, Math.Abs(sin5))) * Angles.ToDegrees, Math.Asin(Math.Min(1, Math.Abs(cosElbow))) * Angles.ToDegrees, Math.Abs(reach));
 
     int ISolver.SolveRaw(in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
@@ -268,8 +278,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
 
     private bool TryWrist(in Affine flange, in Joints reference, out Wrist wrist)
     {
-        Span<double> r = stackalloc double[6];
-        ToCanonical(reference, r);
+        Canonical r = ToCanonical(reference);
         Affine w = WristFromFlange(flange);
         double cx = w.Px - _p.C4 * w.R00, cy = w.Py - _p.C4 * w.R10, cz = w.Pz - _p.C4 * w.R20;
         double rho2 = cx * cx + cy * cy - _p.B * _p.B;
@@ -279,8 +288,8 @@ public sealed class OpwKinematics : IKinematics, ISolver
             return false;
         }
         // Wrist centre on axis 1 (shoulder singularity, b = 0): axis 1 is free and atan2 would only see rounding noise; keep the reference's.
-        double baseAngle = cx * cx + cy * cy < 1e-18 ? r[0] : Math.Atan2(cy, cx);
-        wrist = new Wrist(w, cz, Math.Sqrt(rho2), baseAngle, r[3], r[5]);
+        double baseAngle = cx * cx + cy * cy < 1e-18 ? r.T1 : Math.Atan2(cy, cx);
+        wrist = new Wrist(w, cz, Math.Sqrt(rho2), baseAngle, r.T4, r.T6);
         return true;
     }
 
@@ -288,7 +297,7 @@ public sealed class OpwKinematics : IKinematics, ISolver
     {
         double c2 = _p.C2, k = _k;
         double s = shoulder == 0 ? wrist.SFront : -wrist.SFront;
-        double t1 = wrist.BaseAngle - Math.Atan2(_p.B, s);
+        double t1 = wrist.BaseAngle - (_bZero ? (double.IsNegative(s) ? Math.PI : 0.0) : Math.Atan2(_p.B, s));
         double u = s - _p.A1, v = wrist.Cz - _p.C1;
         double d = (u * u + v * v - c2 * c2 - k * k) / (2 * c2 * k);
         if (d > 1 + 1e-12 || d < -1 - 1e-12)

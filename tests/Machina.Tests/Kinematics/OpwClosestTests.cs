@@ -133,9 +133,9 @@ public class OpwClosestTests
         Assert.True(solved > 3000, $"only {solved} of the poses were solved");
     }
 
-    private static Joints Random(Random random) => new(Angle(random), Angle(random), Angle(random), Angle(random), Angle(random), Angle(random));
+    internal static Joints Random(Random random) => new(Angle(random), Angle(random), Angle(random), Angle(random), Angle(random), Angle(random));
 
-    private static Joints Within(RobotModel model, Random random)
+    internal static Joints Within(RobotModel model, Random random)
     {
         Span<double> v = stackalloc double[Joints.Count];
         for (int k = 0; k < Joints.Count; k++)
@@ -156,7 +156,7 @@ public class OpwClosestTests
     private static double Angle(Random random) => random.NextDouble() * 720 - 360;
 
     /// <summary>Within a hundredth of a degree of <paramref name="degrees"/>, down to a few ulps of it.</summary>
-    private static double Near(Random random, double degrees) => degrees + (random.NextDouble() * 2 - 1) * Math.Pow(10, -random.Next(2, 15));
+    internal static double Near(Random random, double degrees) => degrees + (random.NextDouble() * 2 - 1) * Math.Pow(10, -random.Next(2, 15));
     // SolveRaw as it was written in one piece (before the branches were split for Closest), to compare the split one with.
     private static int FullSolveRaw(OpwParameters _p, bool kuka, in Affine flange, in Joints reference, Span<Joints> joints, Span<ArmConfiguration> configurations)
     {
@@ -229,7 +229,7 @@ public class OpwClosestTests
         return count;
     }
 
-    private static void ToCanonical(bool kuka, Joints j, Span<double> t)
+    internal static void ToCanonical(bool kuka, Joints j, Span<double> t)
     {
         if (kuka)
         {
