@@ -66,10 +66,12 @@ internal sealed class PlainProgramScenario(RobotType brand, bool connectOnce = f
             return () =>
             {
                 Dictionary<int, ThreadCpu.ThreadTime>? before = byThread ? ThreadCpu.Read() : null;
+                int solvesBefore = byThread ? connected.KinematicSolves() : 0;
                 Stream(connected, size);
                 if (before is not null)
                 {
-                    Console.Error.WriteLine($"{Name}: streaming: {ThreadCpu.Text(ThreadCpu.Difference(before, ThreadCpu.Read()), size)}");
+                    Console.Error.WriteLine($"{Name}: streaming: {ThreadCpu.Text(ThreadCpu.Difference(before, ThreadCpu.Read()), size)}; "
+                        + $"kinematic solves {connected.KinematicSolves() - solvesBefore} (the three cursors)");
                 }
                 return null;
             };
@@ -90,7 +92,8 @@ internal sealed class PlainProgramScenario(RobotType brand, bool connectOnce = f
             if (threadsBefore is not null && threadsConnected is not null)
             {
                 Console.Error.WriteLine($"{Name}: connect {connect.TotalMilliseconds:0} ms, processor time by thread while connecting: "
-                    + $"{ThreadCpu.Text(ThreadCpu.Difference(threadsBefore, threadsConnected))}; streaming: {ThreadCpu.Text(ThreadCpu.Difference(threadsConnected, ThreadCpu.Read()), size)}");
+                    + $"{ThreadCpu.Text(ThreadCpu.Difference(threadsBefore, threadsConnected))}; streaming: {ThreadCpu.Text(ThreadCpu.Difference(threadsConnected, ThreadCpu.Read()), size)}; "
+                    + $"kinematic solves {bot.KinematicSolves()} (the three cursors)");
             }
             return null;
         };
