@@ -24,6 +24,7 @@ internal static class Catalog
         scenarios.Add(new KrlTwinStreamScenario(wideWindow: false));
         scenarios.Add(new RapidLoadScenario());
         scenarios.AddRange(new[] { RobotType.ABB, RobotType.UR, RobotType.KUKA }.Select(b => new PlainProgramScenario(b)));
+        scenarios.AddRange(new[] { RobotType.ABB, RobotType.UR, RobotType.KUKA }.Select(b => new PlainProgramScenario(b, connectOnce: true)));
 #else
         scenarios.Add(new MissingScenario("stream", "Stream moves to the virtual ABB controller", 100_000, StreamTarget, "the virtual ABB controller is not in this build."));
 #endif

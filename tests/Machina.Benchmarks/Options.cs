@@ -45,6 +45,7 @@ internal sealed record Options
           --help            this text
         Environment: MACHINA_BENCH_THREADS=1 prints each measured run's processor time by thread (µs and times run per unit);
         MACHINA_BENCH_ALLOCS=1 prints the types allocated during the measured runs (sampled, bytes per unit).
+        MACHINA_BENCH_JIT=1 prints the methods the JIT compiled during each measured run (tier, compiling time, costliest first).
         """;
 
     public List<string> Scenarios { get; init; } = [];

@@ -52,6 +52,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
     {
         progress($"{scenario.Name} x {size:N0}: preparing");
         Func<object?> work = scenario.Prepare(size);
+        // Listening from the warm-ups on, so that its own dispatch is compiled before the measured runs.
+        using JitMethods? compiled = Environment.GetEnvironmentVariable("MACHINA_BENCH_JIT") == "1" ? new JitMethods() : null;
         (int warmedUp, bool settled) = WarmUp(scenario, size, work);
         bool byThread = Environment.GetEnvironmentVariable("MACHINA_BENCH_THREADS") == "1";
         if (byThread)
@@ -70,10 +72,18 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             {
                 types.Counting = true;
             }
+            if (compiled is not null)
+            {
+                compiled.Counting = true;
+            }
             Sample sample = RunOnce(work, scenario.MultiThreaded, byThread);
             if (types is not null)
             {
                 types.Counting = false;
+            }
+            if (compiled is not null)
+            {
+                compiled.Counting = false;
             }
             JitActivity jit = JitActivity.Now().Since(jitBefore);
             List<ThreadCpu.ThreadTime> threads = ThreadCpu.Difference(threadsBefore, ThreadCpu.Read());
@@ -83,6 +93,14 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
                 // The threads as read inside the run (after its baseline collection, before the last): the harness's own
                 // collections, on the issuing thread, are not in them; the JIT's column above keeps the reading around the run.
                 Console.Error.WriteLine($"{scenario.Name} run {i + 1}: {jit.Methods} methods compiled; processor time by thread: {ThreadCpu.Text(sample.Threads ?? threads, size)}");
+            }
+            if (compiled is not null)
+            {
+                Console.Error.WriteLine($"{scenario.Name} run {i + 1}: methods the JIT compiled (wall ms from start to end of each, costliest first):");
+                foreach (string line in compiled.Drain())
+                {
+                    Console.Error.WriteLine(line);
+                }
             }
         }
         if (types is not null)

@@ -122,7 +122,7 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
         {
             _sideLinks.Add(link);
         }
-        link.Start(receiver);
+        link.Start(receiver, TcpLink.SideThreadName);
         return link;
     }
 

@@ -77,13 +77,22 @@ internal sealed class TcpLink : IAsyncDisposable
         }
     }
 
-    /// <summary>Starts the receive loop (the send loop starts the first time the socket does not take all that is posted).</summary>
-    internal void Start(ILinkReceiver receiver)
+    /// <summary>The name of the thread that reads a driver's main link.</summary>
+    internal const string ThreadName = "Machina link";
+
+    /// <summary>The name of the thread that reads a side link (a monitor, UR's RTDE or script port): apart in a per-thread reading.</summary>
+    internal const string SideThreadName = "Machina side";
+
+    /// <summary>
+    /// Starts the receive loop on a thread named <paramref name="threadName"/> (the send loop starts the first time the socket does
+    /// not take all that is posted).
+    /// </summary>
+    internal void Start(ILinkReceiver receiver, string threadName = ThreadName)
     {
         _receiver = receiver;
         var receiving = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         _receiveLoop = receiving.Task;
-        new Thread(() => ReceiveLoop(receiving)) { IsBackground = true, Name = "Machina link" }.Start();
+        new Thread(() => ReceiveLoop(receiving)) { IsBackground = true, Name = threadName }.Start();
     }
 
     /// <summary>

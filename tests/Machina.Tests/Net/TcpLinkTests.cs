@@ -111,6 +111,28 @@ public sealed class TcpLinkTests
     }
 
     [Fact]
+    public async Task Start_WithoutAName_ReadsOnTheMachinaLinkThread()
+    {
+        Assert.Equal("Machina link", await ReaderThreadNameAsync(null));
+    }
+
+    [Fact]
+    public async Task Start_AsASideLink_ReadsOnTheMachinaSideThread()
+    {
+        // A side link (a monitor, UR's RTDE or script port) is told apart from the driver's link in a per-thread reading.
+        Assert.Equal("Machina side", await ReaderThreadNameAsync(TcpLink.SideThreadName));
+    }
+
+    /// <summary>The name of the thread that handles a byte sent to a link started with <paramref name="name"/> (the default when null).</summary>
+    private static async Task<string?> ReaderThreadNameAsync(string? name)
+    {
+        var receiver = new NamingReceiver();
+        await using var pair = await LinkPair.OpenAsync(receiver, name);
+        await pair.Server.SendAsync(new byte[] { 1 });
+        return await receiver.ThreadName.Task.WaitAsync(Bound);
+    }
+
+    [Fact]
     public async Task Connect_ByName_ReachesTheListener()
     {
         var listener = new TcpListener(IPAddress.Loopback, 0);
@@ -155,6 +177,15 @@ public sealed class TcpLinkTests
     }
 
     /// <summary>On its first read, posts each text in turn (from the receive loop's thread), then reports that it did.</summary>
+    private sealed class NamingReceiver : ILinkReceiver
+    {
+        public TaskCompletionSource<string?> ThreadName { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public void OnReceived(ReadOnlySpan<byte> data) => ThreadName.TrySetResult(Thread.CurrentThread.Name);
+
+        public void OnClosed(Exception? error) => ThreadName.TrySetResult("closed");
+    }
+
     private sealed class PostingReceiver(params string[] texts) : ILinkReceiver
     {
         private int _reads;
@@ -226,7 +257,7 @@ public sealed class TcpLinkTests
 
         public PostingReceiver Receiver { get; }
 
-        public static async Task<LinkPair> OpenAsync(ILinkReceiver receiver)
+        public static async Task<LinkPair> OpenAsync(ILinkReceiver receiver, string? threadName = null)
         {
             var listener = new TcpListener(IPAddress.Loopback, 0);
             listener.Start();
@@ -243,7 +274,14 @@ public sealed class TcpLinkTests
                     h.Link = link;
                     break;
             }
-            link.Start(receiver);
+            if (threadName is null)
+            {
+                link.Start(receiver);
+            }
+            else
+            {
+                link.Start(receiver, threadName);
+            }
             return new LinkPair(listener, link, server, receiver);
         }
 
