@@ -188,9 +188,18 @@ internal sealed partial class TwinArm
                 return;
             }
         }
+        throw BeyondLimits(joints);
+    }
+
+    /// <summary>
+    /// The refusal naming the first joint beyond its limits. A method of its own: the lambda's captured arrays would otherwise be
+    /// allocated on every call of <see cref="RequireWithinLimits"/>, also when the joints are within (about 100 B per action).
+    /// </summary>
+    private TwinMotionException BeyondLimits(Joints joints)
+    {
         double[] values = joints.ToArray(), min = Model.MinJoints.ToArray(), max = Model.MaxJoints.ToArray();
         int bad = Enumerable.Range(0, 6).First(i => values[i] < min[i] || values[i] > max[i]);
-        throw new TwinMotionException(FormattableString.Invariant(
+        return new TwinMotionException(FormattableString.Invariant(
             $"joint {bad + 1} target {values[bad]:0.###} deg is beyond its limits [{min[bad]:0.###}, {max[bad]:0.###}] deg"));
     }
 
