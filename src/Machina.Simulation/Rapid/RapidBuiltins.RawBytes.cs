@@ -155,7 +155,7 @@ internal static partial class RapidBuiltins
         return v;
     }
 
-    /// <summary>SocketReceive \RawData or \Data: up to 1024 bytes (or exactly \ReadNoOfBytes) into the raw bytes from index 1.</summary>
+    /// <summary>SocketReceive \RawData or \Data: up to 1024 bytes, or exactly \ReadNoOfBytes (waiting until that many are there), into the raw bytes from index 1.</summary>
     private static void ReceiveRaw(RapidCall call, Socket connection, double seconds)
     {
         int wanted = call.Has(4) ? (int)call.Num(4) : 0;
@@ -163,17 +163,13 @@ internal static partial class RapidBuiltins
         {
             throw ArgumentError(call, $"SocketReceive: \\ReadNoOfBytes {wanted} is outside 1..{RapidRawBytes.Capacity}");
         }
-        var received = new List<byte>();
-        do
-        {
-            int max = (wanted > 0 ? wanted : RapidRawBytes.Capacity) - received.Count;
-            received.AddRange(Encoding.Latin1.GetBytes(ReceiveText(call, connection, max, seconds)));
-        }
-        while (wanted > 0 && received.Count < wanted);
-        StoreReceived(call, 2, [.. received]);
+        byte[] received = Encoding.Latin1.GetBytes(wanted > 0
+            ? ReceiveText(call, connection, wanted, wanted, seconds)
+            : ReceiveText(call, connection, RapidRawBytes.Capacity, 1, seconds));
+        StoreReceived(call, 2, received);
         if (call.Has(5))
         {
-            call.Set(5, (double)received.Count);
+            call.Set(5, (double)received.Length);
         }
     }
 
@@ -193,59 +189,6 @@ internal static partial class RapidBuiltins
         {
             array.Items[i] = i < received.Length ? (double)received[i] : 0.0;
         }
-    }
-
-    /// <summary>Some bytes (at most <paramref name="max"/>, one character each) as they arrive (\Str, \RawData and \Data alike); ERR_SOCK_TIMEOUT or ERR_SOCK_CLOSED as SocketReceive raises them.</summary>
-    private static string ReceiveText(RapidCall call, Socket connection, int max, double seconds)
-    {
-        IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
-        if (seam?.Inbox(connection) is { } inbox)
-        {
-            // The controller read the socket already: take what it holds, as from a network stack's buffer.
-            string? taken;
-            while ((taken = inbox.TryTake(max, out Task arrival)) is null)
-            {
-                if (!Wait(call, arrival, seconds))
-                {
-                    throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
-                }
-            }
-            if (taken.Length == 0)
-            {
-                seam.Closed(connection, call.Machine.Task.CancellationToken);
-                Device(call).Status = 5;
-                throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
-            }
-            return taken;
-        }
-        var buffer = new byte[max];
-        int count = ReceiveReady(connection, buffer);
-        if (count < 0)
-        {
-            Task<int> receive;
-            try
-            {
-                receive = connection.ReceiveAsync(buffer, SocketFlags.None, call.Machine.Task.CancellationToken).AsTask();
-            }
-            catch (ObjectDisposedException)
-            {
-                receive = Task.FromResult(0); // closed by the controller (a fault a test injected): as closed by the other end
-            }
-            if (!Wait(call, receive, seconds))
-            {
-                throw call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
-            }
-            count = receive.IsFaulted ? 0 : receive.Result;
-        }
-        if (count == 0)
-        {
-            seam?.Closed(connection, call.Machine.Task.CancellationToken);
-            Device(call).Status = 5;
-            throw call.Error(RapidErrorNumbers.SockClosed, "SocketReceive: the connection is closed");
-        }
-        string text = Encoding.Latin1.GetString(buffer, 0, count);
-        seam?.Received(connection, text, call.Machine.Task.CancellationToken);
-        return text;
     }
 
     /// <summary>The bytes SocketSend sends: \Str, \RawData (its length, or \NoOfBytes) or \Data (an array of bytes, or \NoOfBytes of them).</summary>

@@ -142,7 +142,14 @@ internal static partial class RapidBuiltins
                 ReceiveRaw(call, connection, seconds);
                 return;
             }
-            string text = ReceiveText(call, connection, RapidMachine.MaxStringLength, seconds);
+            int wanted = call.Has(4) ? (int)call.Num(4) : 0;
+            if (wanted < 0 || wanted > RapidMachine.MaxStringLength)
+            {
+                throw ArgumentError(call, $"SocketReceive: \\ReadNoOfBytes {wanted} is outside 1..{RapidMachine.MaxStringLength} for \\Str");
+            }
+            string text = wanted > 0
+                ? ReceiveText(call, connection, wanted, wanted, seconds)
+                : ReceiveText(call, connection, RapidMachine.MaxStringLength, 1, seconds);
             call.Set(1, text);
             if (call.Has(5))
             {
@@ -173,7 +180,7 @@ internal static partial class RapidBuiltins
             Socket connection = Connected(call);
             try
             {
-                return (double)connection.Available;
+                return (double)(connection.Available + Device(call).Held(connection).Count);
             }
             catch (Exception ex) when (ex is ObjectDisposedException or SocketException)
             {
