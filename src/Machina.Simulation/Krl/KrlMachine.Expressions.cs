@@ -195,10 +195,14 @@ internal sealed partial class KrlMachine
                 var array = (KrlArrayValue)Eval(index.Target, frame);
                 int flat = Flat(index, array.Type, array.Items.Length, frame);
                 array.Items[flat] = KrlConvert.To(index.Type, value, array.Items[flat]);
-                (index.Target as KrlName)?.Cell?.CountWrite();
                 if (_watchesAll || index.Target is not KrlName { Cell.Watched: false })
                 {
                     _writes++; // the driver's FOR over a ring slot's 80 characters wrote unwatched data: 3 conditions per character
+                    (index.Target as KrlName)?.Cell?.CountWrite();
+                }
+                else if (index.Target is KrlName { Cell.WakesOnWrite: true } woken)
+                {
+                    woken.Cell!.CountWrite(); // a WAIT FOR's condition reads it: a waiting WAIT FOR (the other interpreter's) wakes
                 }
                 return;
             }

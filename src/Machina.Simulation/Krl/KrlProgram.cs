@@ -40,6 +40,9 @@ internal sealed class KrlCell(string name, KrlType type, object value)
     /// <summary>The controller's wake-up of a waiting WAIT FOR, once a WAIT FOR's or an interrupt's condition reads the variable.</summary>
     private KrlWaitWake? _wakes;
 
+    /// <summary>True once a WAIT FOR's or an interrupt's condition reads the variable: its writes wake a waiting WAIT FOR.</summary>
+    public bool WakesOnWrite => _wakes is not null;
+
     /// <summary>Marks the variable as read by a WAIT FOR's or an interrupt's condition (when the program is loaded): its writes wake a waiting WAIT FOR.</summary>
     public void WakeOnWrite(KrlWaitWake wakes) => _wakes ??= wakes;
 
