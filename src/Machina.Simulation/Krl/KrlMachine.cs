@@ -423,19 +423,21 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         wake.Waits();
         try
         {
-            while (!(bool)Eval(wait.Value, frame))
+            while (true)
             {
+                // The change count before the look that decides to sleep: a change after the look ends the sleep at once.
                 long version = Controller.InputsVersion;
-                if (!(bool)Eval(wait.Value, frame))
+                if ((bool)Eval(wait.Value, frame))
                 {
-                    // Looks again every interpreter cycle while a timer runs only when the condition, or an interrupt that is
-                    // served while it waits, reads something whose change wakes no one (a timer, a function, a computed variable).
-                    bool serves = _interruptsOn > 0 && !_inInterrupt;
-                    Controller.WaitForInputs(version, !wait.Woken || (serves && _interruptsLookAtTime), Cancellation);
-                    if (serves)
-                    {
-                        CheckInterrupts();
-                    }
+                    return;
+                }
+                // Looks again every interpreter cycle while a timer runs only when the condition, or an interrupt that is
+                // served while it waits, reads something whose change wakes no one (a timer, a function, a computed variable).
+                bool serves = _interruptsOn > 0 && !_inInterrupt;
+                Controller.WaitForInputs(version, !wait.Woken || (serves && _interruptsLookAtTime), Cancellation);
+                if (serves)
+                {
+                    CheckInterrupts();
                 }
             }
         }
