@@ -200,6 +200,10 @@ internal sealed partial class KrlMachine
                     _writes++; // the driver's FOR over a ring slot's 80 characters wrote unwatched data: 3 conditions per character
                     (index.Target as KrlName)?.Cell?.CountWrite();
                 }
+                else if (index.Target is KrlName { Cell.WakesOnWrite: true } woken)
+                {
+                    woken.Cell!.CountWrite(); // a WAIT FOR's condition reads it: a waiting WAIT FOR (the other interpreter's) wakes
+                }
                 return;
             }
             case KrlMember { Target: KrlName { Slot: >= 0 } local } member:

@@ -28,6 +28,9 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// <summary>True when a declared interrupt's condition reads a variable the controller computes when read ($TIMER, $POS_ACT).</summary>
     private bool _watchesComputed;
 
+    /// <summary>True once a declared interrupt's condition reads something whose change wakes no one (<see cref="KrlInterruptDecl.Woken"/>).</summary>
+    private bool _interruptsLookAtTime;
+
     /// <summary>The controller's count of writes of watched variables when the conditions were last looked at.</summary>
     private long _checkedWatchedWrites;
     private long _checkedWrites = -1;
@@ -292,6 +295,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 _interrupts[declaration.Priority] = (declaration, frame, false, false);
                 _interruptOrder = [.. _interrupts.Keys.Order()];
                 Watch(declaration.Condition);
+                _interruptsLookAtTime |= !declaration.Woken;
                 return Flow.Next;
             case KrlInterruptSwitch change:
                 SwitchInterrupts(change);
@@ -411,17 +415,35 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Controller.WaitSeconds(seconds, wait.Line, Cancellation);
             return;
         }
-        while (!(bool)Eval(wait.Value, frame))
+        if ((bool)Eval(wait.Value, frame))
         {
-            long version = Controller.InputsVersion;
-            if (!(bool)Eval(wait.Value, frame))
+            return;
+        }
+        KrlWaitWake wake = Controller.WaitWake;
+        wake.Waits();
+        try
+        {
+            while (true)
             {
-                Controller.WaitForInputs(version, Cancellation);
-                if (_interruptsOn > 0 && !_inInterrupt)
+                // The change count before the look that decides to sleep: a change after the look ends the sleep at once.
+                long version = Controller.InputsVersion;
+                if ((bool)Eval(wait.Value, frame))
+                {
+                    return;
+                }
+                // Looks again every interpreter cycle while a timer runs only when the condition, or an interrupt that is
+                // served while it waits, reads something whose change wakes no one (a timer, a function, a computed variable).
+                bool serves = _interruptsOn > 0 && !_inInterrupt;
+                Controller.WaitForInputs(version, !wait.Woken || (serves && _interruptsLookAtTime), Cancellation);
+                if (serves)
                 {
                     CheckInterrupts();
                 }
             }
+        }
+        finally
+        {
+            wake.Ends();
         }
     }
 

@@ -37,8 +37,24 @@ internal sealed class KrlCell(string name, KrlType type, object value)
     /// <summary>Marks the variable as read by an interrupt's condition: its writes count in <paramref name="writes"/> from now on.</summary>
     public void Watch(KrlWatchedWrites writes) => _watchedWrites ??= writes;
 
-    /// <summary>Counts a program's write of the variable or an element of it, when an interrupt's condition reads it.</summary>
-    public void CountWrite() => _watchedWrites?.Add();
+    /// <summary>The controller's wake-up of a waiting WAIT FOR, once a WAIT FOR's or an interrupt's condition reads the variable.</summary>
+    private KrlWaitWake? _wakes;
+
+    /// <summary>True once a WAIT FOR's or an interrupt's condition reads the variable: its writes wake a waiting WAIT FOR.</summary>
+    public bool WakesOnWrite => _wakes is not null;
+
+    /// <summary>Marks the variable as read by a WAIT FOR's or an interrupt's condition (when the program is loaded): its writes wake a waiting WAIT FOR.</summary>
+    public void WakeOnWrite(KrlWaitWake wakes) => _wakes ??= wakes;
+
+    /// <summary>
+    /// Counts a program's write of the variable or an element of it, when an interrupt's condition reads it, and wakes a WAIT FOR
+    /// waiting in either interpreter when a condition reads it.
+    /// </summary>
+    public void CountWrite()
+    {
+        _watchedWrites?.Add();
+        _wakes?.Wrote();
+    }
 
     /// <summary>Called after a program wrote the variable or an element of it (the element's index, or -1 for all of it).</summary>
     public Action<int>? Written { get; init; }

@@ -103,6 +103,12 @@ internal sealed class KrlWait(int line, bool forCondition, KrlExpr value) : KrlS
 
     /// <summary>The seconds or the condition.</summary>
     public KrlExpr Value { get; } = value;
+
+    /// <summary>
+    /// For WAIT FOR, true when every variable the condition reads is woken on change (set when the program is loaded, see
+    /// <see cref="KrlWaitWake"/>): the wait then sleeps until something changes instead of looking again every interpreter cycle.
+    /// </summary>
+    public bool Woken { get; set; }
 }
 
 /// <summary>A motion: PTP, LIN or CIRC to a target, with an approximation (C_PTP, C_DIS, C_ORI, C_VEL) or none.</summary>
@@ -142,6 +148,9 @@ internal sealed class KrlInterruptDecl(int line, int priority, KrlExpr condition
 
     /// <summary>The subprogram called.</summary>
     public KrlCall Handler { get; } = handler;
+
+    /// <summary>True when every variable the condition reads is woken on change (set when the program is loaded, see <see cref="KrlWaitWake"/>).</summary>
+    public bool Woken { get; set; }
 }
 
 /// <summary>INTERRUPT ON / OFF / ENABLE / DISABLE [priority].</summary>

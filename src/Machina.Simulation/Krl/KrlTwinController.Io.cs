@@ -32,37 +32,55 @@ internal sealed partial class KrlTwinController
     }
 
     /// <summary>
-    /// Sleeps until something changes after <paramref name="version"/>. While a timer runs ($TIMER_STOP FALSE) it returns after one
-    /// interpreter cycle, as a KRC looks again: outside real-time mode that cycle is program time (at once when nothing outside the
-    /// program can change anything, else the time waited for the outside, at most one cycle), so the timers move by at most one
-    /// cycle between two looks and a program's timer values do not depend on the machine's load.
+    /// Sleeps until something changes after <paramref name="version"/>: an input, a flag, a channel, or a program's write of a
+    /// variable a WAIT FOR's condition reads (<see cref="KrlWaitWake"/>). When <paramref name="looksAtTime"/> (the condition, or an
+    /// interrupt served while it waits, reads a timer or something else that changes without a wake-up) and a timer runs
+    /// ($TIMER_STOP FALSE), it returns after one interpreter cycle, as a KRC looks again: outside real-time mode that cycle is
+    /// program time (at once when nothing outside the program can change anything, else the time waited for the outside, at most
+    /// one cycle), so the timers move by at most one cycle between two looks and a program's timer values do not depend on the
+    /// machine's load. Otherwise a running timer's time passes while it sleeps (program time outside real-time mode: the time waited).
     /// </summary>
-    public void WaitForInputs(long version, CancellationToken cancellation)
+    public void WaitForInputs(long version, bool looksAtTime, CancellationToken cancellation)
     {
-        while (InputsVersion == version)
+        try
         {
-            bool timing = TimersRunning();
-            if (!HasExternalInputs && !timing)
+            while (InputsVersion == version)
             {
-                throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin (no channel open, no timer running)");
-            }
-            if (timing && !Clock.RealTime && !HasExternalInputs)
-            {
-                Clock.Wait(InterpreterCycle.TotalSeconds, cancellation);
-                return;
-            }
-            long started = Options.Time.GetTimestamp();
-            Io.WaitForChange(version, timing ? InterpreterCycle : TimeSpan.FromMilliseconds(100), cancellation);
-            if (timing)
-            {
-                if (!Clock.RealTime)
+                bool timing = TimersRunning();
+                bool external = HasExternalInputs;
+                if (!external && !timing)
                 {
-                    Clock.Add(Math.Min(Options.Time.GetElapsedTime(started).TotalSeconds, InterpreterCycle.TotalSeconds));
+                    throw new KrlRuntimeException("WAIT FOR can never end: nothing outside the program changes its condition on this twin (no channel open, no timer running)");
                 }
-                return;
+                bool cycles = timing && looksAtTime;
+                if (cycles && !Clock.RealTime && !external)
+                {
+                    Clock.Wait(InterpreterCycle.TotalSeconds, cancellation);
+                    return;
+                }
+                long started = Options.Time.GetTimestamp();
+                // Without the cycle's look, only a timer that starts (a condition that reads one) or stops (the last source of a
+                // change gone) goes unsignalled: with a channel open and a condition woken on change, nothing needs a look.
+                Io.WaitForChange(version, cycles ? InterpreterCycle : external && !looksAtTime ? WokenWaitCheck : TimeSpan.FromMilliseconds(100), cancellation);
+                if (timing && !Clock.RealTime)
+                {
+                    double waited = Options.Time.GetElapsedTime(started).TotalSeconds;
+                    Clock.Add(cycles ? Math.Min(waited, InterpreterCycle.TotalSeconds) : waited);
+                }
+                if (cycles)
+                {
+                    return;
+                }
             }
         }
+        finally
+        {
+            Interlocked.Increment(ref _waitForLooks);
+        }
     }
+
+    /// <summary>How long a WAIT FOR woken on change sleeps, with a channel open, before it looks whether it can still end.</summary>
+    private static readonly TimeSpan WokenWaitCheck = TimeSpan.FromMinutes(1);
 
     private bool TimersRunning() => Array.Exists(((KrlArrayValue)Environment.System["$TIMER_STOP"].Value).Items, s => !(bool)s);
 

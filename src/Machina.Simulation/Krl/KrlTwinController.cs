@@ -141,6 +141,7 @@ internal sealed partial class KrlTwinController : TwinController<KrlTwinOptions,
         }
         cancellation.ThrowIfCancellationRequested();
         binder.BindAll();
+        MarkWaitConditions(modules.Where(m => !_modules.TryGetValue(m.Key, out KrlModule? loaded) || !ReferenceEquals(loaded, m.Value)).Select(m => m.Value));
         foreach (KrlExternal external in modules.Values.SelectMany(m => m.Externals))
         {
             if (KrlBinder.FindRoutine(modules, null, external.Name) is null && !Environment.Builtins.ContainsKey(external.Name))
