@@ -34,7 +34,7 @@ internal sealed class ControllerActivity : IAsyncDisposable
     private IReadOnlyDictionary<string, bool> _digital;
     private IReadOnlyDictionary<string, double> _analog;
 
-    private ControllerActivity(RobotType brand, Func<IControllerLook> look, Action<string> log, TimeProvider time, bool quiet)
+    private ControllerActivity(RobotType brand, Func<IControllerLook> look, Action<string> log, TimeProvider time, bool quiet, bool fromStart)
     {
         _brand = brand;
         _quiet = quiet;
@@ -46,10 +46,11 @@ internal sealed class ControllerActivity : IAsyncDisposable
         ControllerRobot robot = first.Robot();
         _digital = robot.DigitalOutputs;
         _analog = robot.AnalogOutputs;
-        // The pendant and errors from now on (a read "since" past every count copies nothing and gives the count); requests and
-        // executed ids from the start.
-        _pendant = first.PendantSince(long.MaxValue, _texts);
-        _errors = first.ErrorsSince(long.MaxValue, _texts);
+        // Requests and executed ids from the start. The pendant and errors from the start too for a controller just started (its
+        // program may write to the pendant before this first look: the ABB driver's version line raced it), otherwise from now on
+        // (a read "since" past every count copies nothing and gives the count).
+        _pendant = fromStart ? 0 : first.PendantSince(long.MaxValue, _texts);
+        _errors = fromStart ? 0 : first.ErrorsSince(long.MaxValue, _texts);
         _loop = first.Changes is not null ? WhenChangedLoopAsync(time, _stop.Token) : LoopAsync(time, _stop.Token);
     }
 
@@ -60,12 +61,12 @@ internal sealed class ControllerActivity : IAsyncDisposable
     internal static ControllerActivity Start(RunningController controller, Action<string> log, TimeProvider time, bool quiet = false)
     {
         var live = new LiveControllerLook(controller.Inner);
-        return new(controller.Brand, () => live, log, time, quiet);
+        return new(controller.Brand, () => live, log, time, quiet, fromStart: true);
     }
 
     /// <summary>Starts telling what a <paramref name="brand"/> controller seen through <paramref name="look"/> (whole views, one per look) does, one line at a time to <paramref name="log"/>.</summary>
     internal static ControllerActivity Start(RobotType brand, Func<ControllerView> look, Action<string> log, TimeProvider time, bool quiet = false) =>
-        new(brand, () => new ControllerViewLook(look()), log, time, quiet);
+        new(brand, () => new ControllerViewLook(look()), log, time, quiet, fromStart: false);
 
     /// <summary>
     /// Looks once something changed, then waits a <see cref="Period"/> (a stream's changes are told together) before it sleeps
