@@ -16,18 +16,7 @@ internal static partial class UrBuiltins
         {
             return;
         }
-        CancellationToken token = m.Cancellation;
-        try
-        {
-            using (m.Unlock())
-            {
-                m.Controller.FinishBlend(taken, token);
-            }
-        }
-        catch (TwinMotionException e)
-        {
-            throw new UrRuntimeException(line, $"{taken.Function}: {e.Message}");
-        }
+        Unlocked(m, line, taken.Function, taken, static (c, t, token) => { c.FinishBlend(t, token); return true; });
     }
 
     /// <summary>A read that finds nothing to read waits: the arm finishes its pending blend first.</summary>
@@ -97,19 +86,8 @@ internal static partial class UrBuiltins
         way.End = radius > 0 ? Near(arm, way.At(way.Total), UrMotion.Lerp(first, last, (metres - radius) / metres)) : last;
         way.StartJoints = arm.Joints;
         double seconds = time > 0 ? time : blendSeconds + profile.Seconds;
-        CancellationToken token = m.Cancellation;
-        bool planned;
-        try
-        {
-            using (m.Unlock())
-            {
-                planned = m.Controller.Move(way.End, seconds, time > 0 ? 0 : v / acc, way, time <= 0, line, function, token, last, true);
-            }
-        }
-        catch (TwinMotionException e)
-        {
-            throw new UrRuntimeException(line, $"{function}: {e.Message}");
-        }
+        bool planned = Unlocked(m, line, function, (way, seconds, ramp: time > 0 ? 0 : v / acc, exact: time <= 0, line, function, last),
+            static (c, s, token) => c.Move(s.way.End, s.seconds, s.ramp, s.way, s.exact, s.line, s.function, token, s.last, true));
         if (radius > 0)
         {
             m.Controller.PendingBlend = new UrBlend(way.At(way.Total), target, last, radius, planned ? entrySpeed : 0, v, acc, Environment.CurrentManagedThreadId, line, function);

@@ -50,18 +50,8 @@ internal static partial class UrBuiltins
         double acceleration = Positive(Num(a, 0, line, function, "a"), line, function, "a");
         double turn = tool && Given(a[1]) ? Positive(Num(a, 1, line, function, "aRot"), line, function, "aRot") : acceleration;
         FinishBlend(m, line);
-        CancellationToken token = m.Cancellation;
-        try
-        {
-            using (m.Unlock())
-            {
-                m.Controller.Decelerate(tool, acceleration, turn, line, function, token);
-            }
-        }
-        catch (TwinMotionException e)
-        {
-            throw new UrRuntimeException(line, $"{function}: {e.Message}");
-        }
+        Unlocked(m, line, function, (tool, acceleration, turn, line, function),
+            static (c, s, token) => { c.Decelerate(s.tool, s.acceleration, s.turn, s.line, s.function, token); return true; });
         return UrNone.Value;
     }
 
@@ -91,21 +81,9 @@ internal static partial class UrBuiltins
         }
     }
 
-    private static void Move(UrMachine m, int line, Joints target, double seconds, string function, double rampSeconds = 0, Func<double, Joints>? path = null)
-    {
-        CancellationToken token = m.Cancellation;
-        try
-        {
-            using (m.Unlock())
-            {
-                m.Controller.Move(target, seconds, rampSeconds, path, line, function, token);
-            }
-        }
-        catch (TwinMotionException e)
-        {
-            throw new UrRuntimeException(line, $"{function}: {e.Message}");
-        }
-    }
+    private static void Move(UrMachine m, int line, Joints target, double seconds, string function, double rampSeconds = 0, Func<double, Joints>? path = null) =>
+        Unlocked(m, line, function, (target, seconds, rampSeconds, path, line, function),
+            static (c, s, token) => { c.Move(s.target, s.seconds, s.rampSeconds, s.path, s.line, s.function, token); return true; });
 
     private static object MoveJ(UrMachine m, int line, object[] a, string function)
     {

@@ -60,21 +60,9 @@ internal static partial class UrBuiltins
     }
 
     /// <summary>Runs a speed motion (<see cref="UrTwinController.Speed"/>) with the other threads free meanwhile.</summary>
-    private static void RunSpeed(UrMachine m, int line, double[] speeds, double ramp, double time, string function)
-    {
-        CancellationToken token = m.Cancellation;
-        try
-        {
-            using (m.Unlock())
-            {
-                m.Controller.Speed(speeds, ramp, time, line, function, token);
-            }
-        }
-        catch (TwinMotionException e)
-        {
-            throw new UrRuntimeException(line, $"{function}: {e.Message}");
-        }
-    }
+    private static void RunSpeed(UrMachine m, int line, double[] speeds, double ramp, double time, string function) =>
+        Unlocked(m, line, function, (speeds, ramp, time, line, function),
+            static (c, s, token) => { c.Speed(s.speeds, s.ramp, s.time, s.line, s.function, token); return true; });
 
     /// <summary>
     /// A motion of the calling thread starts: a speed motion of its own, or one whose thread was killed, stands where it is first;
