@@ -294,7 +294,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
                 }
                 finally
                 {
-                    Raise(raised); // also those of the documents before a malformed part: they were stored
+                    Raise(client, raised); // also those of the documents before a malformed part: they were stored
                 }
             }
         }
@@ -312,13 +312,26 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     /// <summary>
     /// Sets the flags of the documents of one arrival (each flag once), after all of them are stored: the program waiting for a
     /// flag wakes once per arrival, as EthernetKRL hands an arrival's documents over together, and then finds every one of them
-    /// (woken at the first, it ran beside the reader still storing the others, and was woken again for each).
+    /// (woken at the first, it ran beside the reader still storing the others, and was woken again for each). Under the link and
+    /// only while <paramref name="client"/> is still the channel's connection, as the store: a program that closed or cleared the
+    /// channel between the store and here let those documents go, and finds no flag of theirs up (before, the reader set it all
+    /// the same, after EKI_Clear had returned).
     /// </summary>
-    private void Raise(List<int> raised)
+    private void Raise(TcpClient client, List<int> raised)
     {
-        foreach (int flag in raised)
+        if (raised.Count == 0)
         {
-            controller.SetFlag(flag, true);
+            return;
+        }
+        lock (_link)
+        {
+            if (IsClient(client))
+            {
+                foreach (int flag in raised)
+                {
+                    controller.SetFlag(flag, true);
+                }
+            }
         }
         raised.Clear();
     }
@@ -361,7 +374,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         flags.Clear();
         if (overflow)
         {
-            Raise(raised);
+            Raise(client, raised);
             controller.Pendant.Log($"EthernetKRL {Name}: a memory holds more than {Configuration.Limit} elements; the connection is closed");
             // Only this reader's connection, which was still the channel's when its values were stored.
             client.Dispose();

@@ -68,6 +68,46 @@ public class EkiChannelLinkTests
         }
     }
 
+    [Fact]
+    public async Task Clear_BetweenADocumentsStoreAndItsFlag_LeavesTheFlagDown()
+    {
+        // The program clears the channel (as a program reset does) after the reader stored a document and before it set the
+        // document's flag ($FLAG[2] of DT): the cleared channel let the document go, and its flag must not come up after
+        // EKI_Clear returned. The seam clears on the reader's own thread at the point between the two (the link's lock is
+        // re-entrant), which makes the order certain instead of a race.
+        var seam = new ClearingSeam();
+        using var twin = new KrlTwinController(new KrlTwinOptions { Seam = seam });
+        seam.Clear = () => twin.ClearEki(Channel);
+        var listener = new TcpListener(IPAddress.Loopback, 0);
+        listener.Start();
+        try
+        {
+            twin.Reserve(Channel, listener);
+            twin.AddEkiConfiguration(Channel, Machina.KukaDriverModules.Read(Channel + ".xml")
+                .Replace("{{HOSTNAME}}", "127.0.0.1", StringComparison.Ordinal).Replace("{{PORT}}", "0", StringComparison.Ordinal));
+            twin.Load(("link_open.src", OpenProgram));
+            int port = ((IPEndPoint)listener.LocalEndpoint).Port;
+            Assert.Equal(KrlProgramState.Finished, twin.Run("link_open"));
+            using var client = new TcpClient();
+            await client.ConnectAsync(IPAddress.Loopback, port);
+            await EventuallyAsync(() => Alive(twin), "the client's flag");
+            await client.GetStream().WriteAsync("<DT><DR><A ID=\"7\" T=\"1\"/></DR></DT>"u8.ToArray());
+
+            Thread reader = await seam.Reader.Task.WaitAsync(Limit);
+            Assert.True(reader.Join(Limit), "the cleared connection's reader did not end");
+            Assert.Equal(1, seam.ReceivedCount);
+            Assert.False(Flag(twin, 2), "$FLAG[2] came up for a document of a channel the program had cleared");
+            Assert.False(Alive(twin), "$FLAG[1] is up after the channel was cleared");
+            Assert.False(twin.EkiConnected(Channel));
+        }
+        finally
+        {
+            listener.Stop();
+        }
+    }
+
+    private static bool Flag(KrlTwinController twin, int number) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value).Items[number - 1];
+
     private static bool Alive(KrlTwinController twin) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value).Items[0];
 
     /// <summary>
@@ -101,6 +141,35 @@ public class EkiChannelLinkTests
             var clear = Task.Run(() => Cleared.TrySetResult(Clear!()));
             // Only how long a clear that does not wait for this reader has to show it: a clear that waits ends after this returns.
             clear.Wait(TimeSpan.FromSeconds(1));
+        }
+    }
+
+    /// <summary>Clears the channel from inside the first document's Received, on the reader's thread, and tells which thread that was.</summary>
+    private sealed class ClearingSeam : IEkiSeam
+    {
+        private int _received;
+
+        public Action? Clear { get; set; }
+
+        public TaskCompletionSource<Thread> Reader { get; } = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public int ReceivedCount => Volatile.Read(ref _received);
+
+        public bool Accepted(EkiChannel channel, TcpClient client) => true;
+
+        public void Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
+        {
+            if (Interlocked.Increment(ref _received) == 1)
+            {
+                Clear!();
+                Reader.TrySetResult(Thread.CurrentThread);
+            }
+        }
+
+        public bool Send(EkiChannel channel, string root, string xml) => channel.SendDirect(System.Text.Encoding.UTF8.GetBytes(xml));
+
+        public void Closed(EkiChannel channel, TcpClient client)
+        {
         }
     }
 }
