@@ -155,17 +155,15 @@ internal static partial class RapidBuiltins
         return v;
     }
 
-    /// <summary>SocketReceive \RawData or \Data: up to 1024 bytes, or exactly \ReadNoOfBytes (waiting until that many are there), into the raw bytes from index 1.</summary>
+    /// <summary>SocketReceive \RawData or \Data: what has arrived (waiting for at least one byte), up to 1024 bytes or \ReadNoOfBytes, into the raw bytes from index 1.</summary>
     private static void ReceiveRaw(RapidCall call, Socket connection, double seconds)
     {
         int wanted = call.Has(4) ? (int)call.Num(4) : 0;
-        if (wanted < 0 || wanted > RapidRawBytes.Capacity)
+        if ((call.Has(4) && wanted < 1) || wanted > RapidRawBytes.Capacity)
         {
             throw ArgumentError(call, $"SocketReceive: \\ReadNoOfBytes {wanted} is outside 1..{RapidRawBytes.Capacity}");
         }
-        byte[] received = Encoding.Latin1.GetBytes(wanted > 0
-            ? ReceiveText(call, connection, wanted, wanted, seconds)
-            : ReceiveText(call, connection, RapidRawBytes.Capacity, 1, seconds));
+        byte[] received = Encoding.Latin1.GetBytes(ReceiveText(call, connection, wanted > 0 ? wanted : RapidRawBytes.Capacity, seconds));
         StoreReceived(call, 2, received);
         if (call.Has(5))
         {

@@ -5,17 +5,16 @@ namespace Machina.Simulation.Rapid;
 
 /// <summary>
 /// SocketReceive's wait for bytes (\Str, \RawData and \Data alike): what the controller's network stack holds for the connection,
-/// taken when at least the asked count is there (one byte, or \ReadNoOfBytes); a timeout or a close before the count leaves
-/// what arrived for the next receive.
+/// taken once at least one byte is there, at most the data type's size or \ReadNoOfBytes; a timeout with nothing arrived takes
+/// nothing, and a receive it started is kept for the next SocketReceive.
 /// </summary>
 internal static partial class RapidBuiltins
 {
     /// <summary>
-    /// At least <paramref name="least"/> and at most <paramref name="max"/> bytes (one character each), waiting until that many
-    /// arrived; ERR_SOCK_TIMEOUT when <paramref name="seconds"/> run out first (nothing is taken), ERR_SOCK_CLOSED when the
-    /// connection closed before.
+    /// What has arrived, at most <paramref name="max"/> bytes (one character each), waiting until at least one byte is there;
+    /// ERR_SOCK_TIMEOUT when <paramref name="seconds"/> run out first, ERR_SOCK_CLOSED when the connection closed before.
     /// </summary>
-    private static string ReceiveText(RapidCall call, Socket connection, int max, int least, double seconds)
+    private static string ReceiveText(RapidCall call, Socket connection, int max, double seconds)
     {
         IRapidSocketSeam? seam = call.Machine.Task.Controller.Options.Seam;
         long deadline = Environment.TickCount64 + (long)(Math.Min(seconds, 86_400) * 1000);
@@ -23,11 +22,11 @@ internal static partial class RapidBuiltins
         if (seam?.Inbox(connection) is { } inbox)
         {
             // The controller read the socket already: take what it holds, as from a network stack's buffer.
-            while ((taken = inbox.TryTake(max, least, out Task arrival)) is null)
+            while ((taken = inbox.TryTake(max, out Task arrival)) is null)
             {
                 if (!Wait(call, arrival, Remaining(deadline)))
                 {
-                    throw ReceiveTimeout(call, least);
+                    throw ReceiveTimeout(call);
                 }
             }
         }
@@ -35,9 +34,9 @@ internal static partial class RapidBuiltins
         {
             RapidInbox held = Device(call).Held(connection);
             ReadArrived(call, connection, held);
-            while ((taken = held.TryTake(max, least, out _)) is null)
+            while ((taken = held.TryTake(max, out _)) is null)
             {
-                ReadSocket(call, connection, held, Math.Max(max, least), least, deadline);
+                ReadSocket(call, connection, held, max, deadline);
             }
         }
         if (taken.Length == 0)
@@ -53,7 +52,7 @@ internal static partial class RapidBuiltins
     /// Reads what arrives next on <paramref name="connection"/> into <paramref name="held"/> (closing it when the other end
     /// closed); ERR_SOCK_TIMEOUT at <paramref name="deadline"/>, the started receive kept for the next SocketReceive.
     /// </summary>
-    private static void ReadSocket(RapidCall call, Socket connection, RapidInbox held, int size, int least, long deadline)
+    private static void ReadSocket(RapidCall call, Socket connection, RapidInbox held, int size, long deadline)
     {
         RapidSocketDevice device = Device(call);
         var buffer = new byte[size];
@@ -76,7 +75,7 @@ internal static partial class RapidBuiltins
             }
             if (!Wait(call, pending.Receive, Remaining(deadline)))
             {
-                throw ReceiveTimeout(call, least);
+                throw ReceiveTimeout(call);
             }
             device.PendingReceive = null;
             (count, buffer) = (pending.Receive.IsFaulted ? 0 : pending.Receive.Result, pending.Buffer);
@@ -126,6 +125,5 @@ internal static partial class RapidBuiltins
 
     private static double Remaining(long deadline) => Math.Max(0, deadline - Environment.TickCount64) / 1000.0;
 
-    private static RapidRuntimeException ReceiveTimeout(RapidCall call, int least) => call.Error(RapidErrorNumbers.SockTimeout,
-        least > 1 ? "SocketReceive: the asked number of bytes was not received in time" : "SocketReceive: nothing received in time");
+    private static RapidRuntimeException ReceiveTimeout(RapidCall call) => call.Error(RapidErrorNumbers.SockTimeout, "SocketReceive: nothing received in time");
 }

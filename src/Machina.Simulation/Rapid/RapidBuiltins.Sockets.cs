@@ -143,13 +143,13 @@ internal static partial class RapidBuiltins
                 return;
             }
             int wanted = call.Has(4) ? (int)call.Num(4) : 0;
-            if (wanted < 0 || wanted > RapidMachine.MaxStringLength)
+            if ((call.Has(4) && wanted < 1) || wanted > RapidMachine.MaxStringLength)
             {
                 throw ArgumentError(call, $"SocketReceive: \\ReadNoOfBytes {wanted} is outside 1..{RapidMachine.MaxStringLength} for \\Str");
             }
-            string text = wanted > 0
-                ? ReceiveText(call, connection, wanted, wanted, seconds)
-                : ReceiveText(call, connection, RapidMachine.MaxStringLength, 1, seconds);
+            // \ReadNoOfBytes is how many bytes to take at most: the receive returns what has arrived, as programs written for
+            // controllers read it (they ask 1024 and read \NoRecBytes; docs/simulation.md, session 33).
+            string text = ReceiveText(call, connection, wanted > 0 ? wanted : RapidMachine.MaxStringLength, seconds);
             call.Set(1, text);
             if (call.Has(5))
             {
