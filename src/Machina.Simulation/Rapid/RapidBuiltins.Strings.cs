@@ -48,7 +48,16 @@ internal static partial class RapidBuiltins
                 call.Set(1, RapidBoxes.Bool(isTrue));
                 return RapidBoxes.Bool(true);
             }
-            throw ArgumentError(call, $"StrToVal: the twin converts to num, dnum and bool only, not to {type}");
+            if (type is not { } data || (data.Rank == 0 && data.Element.Kind == RapidTypeKind.Opaque))
+            {
+                throw ArgumentError(call, $"StrToVal: {type} is not a value data type");
+            }
+            if (ReadLiteral(text, data, call.Value(1)) is not { } literal)
+            {
+                return RapidBoxes.Bool(false); // the data are unchanged
+            }
+            call.Set(1, literal);
+            return RapidBoxes.Bool(true);
         }),
         Function("NumToStr", "string", [P("Val", "num"), P("Dec", "num"), Sw("Exp")], call =>
         {
