@@ -103,14 +103,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             throw new KrlRuntimeException($"the subprogram calls are nested deeper than {Limits.MaxCallDepth} levels ({routine.Name})");
         }
         CheckStack();
-        long elements = 0;
-        foreach ((_, KrlType type, _) in routine.Locals)
-        {
-            if (type.Kind == KrlKind.Array)
-            {
-                elements += type.Length;
-            }
-        }
+        long elements = routine.Frame.Elements;
         if (_localElements + elements > Limits.MaxTotalElements)
         {
             throw new KrlRuntimeException($"the subprograms' local data hold more than {Limits.MaxTotalElements:N0} array elements (the twin's limit)");
@@ -130,10 +123,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     private object? InvokeWithin(KrlRoutine routine, object[] arguments)
     {
-        var frame = new object[routine.Locals.Count];
+        KrlType[] types = routine.Frame.Types;
+        var frame = new object[types.Length];
         for (int i = 0; i < frame.Length; i++)
         {
-            KrlType type = routine.Locals[i].Type;
+            KrlType type = types[i];
             if (i < arguments.Length && arguments[i] is not null)
             {
                 object value = arguments[i] is KrlPlace place ? place.Get() : arguments[i];
