@@ -59,8 +59,9 @@ internal sealed partial class KrlMachine
     /// <summary>Milliseconds until the soonest running timer below 0 reaches 0 (counted now), or -1 when none runs towards 0.</summary>
     private int SoonestTimerMs()
     {
-        object[] timers = ((KrlArrayValue)Controller.Environment.System["$TIMER"].Box[0]).Items;
-        object[] stopped = ((KrlArrayValue)Controller.Environment.System["$TIMER_STOP"].Box[0]).Items;
+        // Through the cells found once: two case-insensitive look-ups by name at every motion while the monitor's timer runs.
+        object[] timers = ((KrlArrayValue)Controller.Motion.Timer.Box[0]).Items;
+        object[] stopped = ((KrlArrayValue)Controller.Motion.TimerStop.Box[0]).Items;
         if (!AnyRunsBelowZero(timers, stopped))
         {
             // Counting only adds time to running timers: none below 0 now, none after (the monitor's timer counts up from 0 all

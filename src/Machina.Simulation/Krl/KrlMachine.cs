@@ -103,14 +103,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             throw new KrlRuntimeException($"the subprogram calls are nested deeper than {Limits.MaxCallDepth} levels ({routine.Name})");
         }
         CheckStack();
-        long elements = 0;
-        foreach ((_, KrlType type, _) in routine.Locals)
-        {
-            if (type.Kind == KrlKind.Array)
-            {
-                elements += type.Length;
-            }
-        }
+        long elements = routine.Frame.Elements;
         if (_localElements + elements > Limits.MaxTotalElements)
         {
             throw new KrlRuntimeException($"the subprograms' local data hold more than {Limits.MaxTotalElements:N0} array elements (the twin's limit)");
@@ -130,10 +123,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     private object? InvokeWithin(KrlRoutine routine, object[] arguments)
     {
-        var frame = new object[routine.Locals.Count];
+        KrlType[] types = routine.Frame.Types;
+        var frame = new object[types.Length];
         for (int i = 0; i < frame.Length; i++)
         {
-            KrlType type = routine.Locals[i].Type;
+            KrlType type = types[i];
             if (i < arguments.Length && arguments[i] is not null)
             {
                 object value = arguments[i] is KrlPlace place ? place.Get() : arguments[i];
@@ -322,13 +316,18 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     }
 
     /// <summary>Counts one statement or loop turn against the step budget.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void Step()
     {
         if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
         {
-            throw new KrlRuntimeException($"the program ran more than {Limits.MaxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
+            StepsSpent();
         }
     }
+
+    /// <summary>The step budget's error, out of <see cref="Step"/> (its message made a call of every statement's count).</summary>
+    private void StepsSpent() =>
+        throw new KrlRuntimeException($"the program ran more than {Limits.MaxSteps:N0} statements and loop turns (the verification's step budget): an endless loop?");
 
     private Flow Loop(KrlLoop loop, object[] frame)
     {

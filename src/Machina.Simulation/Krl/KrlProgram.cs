@@ -113,6 +113,35 @@ internal sealed class KrlRoutine(string file, string name, int line)
     /// <summary>The statements.</summary>
     public List<KrlStmt> Body { get; } = [];
 
+    /// <summary>
+    /// The locals' types in slot order, and the array elements they hold together: taken once, at the routine's first call (its
+    /// locals are declared at the load and never change after). A call read them from the list of named tuples, twice, at every
+    /// call: the driver makes two routine calls an action.
+    /// </summary>
+    public FrameLayout Frame => _frame ??= FrameOf(Locals);
+
+    private FrameLayout? _frame;
+
+    /// <summary>A routine's locals as a call makes them (one object, so that two interpreters that take it at once see it whole).</summary>
+    /// <param name="Types">The locals' types in slot order.</param>
+    /// <param name="Elements">The array elements of its local arrays together.</param>
+    internal sealed record FrameLayout(KrlType[] Types, long Elements);
+
+    private static FrameLayout FrameOf(List<(string Name, KrlType Type, int Line)> locals)
+    {
+        var types = new KrlType[locals.Count];
+        long elements = 0;
+        for (int i = 0; i < types.Length; i++)
+        {
+            types[i] = locals[i].Type;
+            if (types[i].Kind == KrlKind.Array)
+            {
+                elements += types[i].Length;
+            }
+        }
+        return new FrameLayout(types, elements);
+    }
+
     /// <summary>The slot of a local or parameter, or -1.</summary>
     public int SlotOf(string name) => Locals.FindIndex(l => string.Equals(l.Name, name, StringComparison.OrdinalIgnoreCase));
 }

@@ -38,14 +38,16 @@ internal static partial class KrlSystemVariables
         Add(KrlCell.Of(new KrlSignalArray(controller.Io, "$ANIN", KrlType.Real, AnalogCount), readOnly: true));
         Add(new KrlCell("$FLAG", KrlType.Array(KrlType.Bool, FlagCount), KrlValues.Default(KrlType.Array(KrlType.Bool, FlagCount))));
         // A timer is counted up to now when it is read, started or stopped (KrlTwinController.Timers.cs).
-        Add(new KrlCell("$TIMER", KrlType.Array(KrlType.Int, 64), KrlValues.Default(KrlType.Array(KrlType.Int, 64)))
+        KrlCell timer = null!;
+        timer = new KrlCell("$TIMER", KrlType.Array(KrlType.Int, 64), KrlValues.Default(KrlType.Array(KrlType.Int, 64)))
         {
             Read = () =>
             {
                 controller.CountTimers();
-                return environment.System["$TIMER"].Box[0];
+                return timer.Box[0];
             },
-        });
+        };
+        Add(timer);
         Add(new KrlCell("$TIMER_STOP", KrlType.Array(KrlType.Bool, 64), Filled(KrlType.Array(KrlType.Bool, 64), true)) { Written = _ => controller.CountTimers() });
         Add(new KrlCell("$STOPMESS", KrlType.Bool, false) { ReadOnly = true });
         double[] min = options.Model.MinJoints.ToArray(), max = options.Model.MaxJoints.ToArray();

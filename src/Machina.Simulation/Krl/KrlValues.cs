@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace Machina.Simulation.Krl;
@@ -191,20 +192,20 @@ internal static class KrlValues
     };
 
     /// <summary>A number as REAL.</summary>
-    public static double ToReal(object value) => value switch
-    {
-        int i => i,
-        double d => d,
-        _ => throw new InvalidCastException($"{value} is not a number"),
-    };
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double ToReal(object value) => value is double d ? d : IntToReal(value);
+
+    /// <summary>An INT as REAL (the rest of <see cref="ToReal"/>, out of line: a REAL is the usual case and inlines).</summary>
+    private static double IntToReal(object value) => value is int i ? i : throw new InvalidCastException($"{value} is not a number");
 
     /// <summary>A number as INT: a REAL is rounded to the nearest whole number, as KRL assigns REAL to INT.</summary>
-    public static int ToInt(object value) => value switch
-    {
-        int i => i,
-        double d => (int)Math.Round(d, MidpointRounding.AwayFromZero),
-        _ => throw new InvalidCastException($"{value} is not a number"),
-    };
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static int ToInt(object value) => value is int i ? i : RealToInt(value);
+
+    /// <summary>A REAL as INT (the rest of <see cref="ToInt"/>, out of line: an INT is the usual case and inlines).</summary>
+    private static int RealToInt(object value) => value is double d
+        ? (int)Math.Round(d, MidpointRounding.AwayFromZero)
+        : throw new InvalidCastException($"{value} is not a number");
 
     /// <summary>The text of a CHAR array: its characters up to the first unset one.</summary>
     public static string Text(KrlArrayValue array)
