@@ -7,7 +7,7 @@ namespace Machina.Simulation.UrScript;
 /// the tool centre point's velocity changes evenly from the one it has to the one asked over the ramp, then stays, so the tool
 /// goes on along its straight line (turning about a fixed axis) however long the motion lasts; the joints are those that put the
 /// tool there, each solved near the arm's joints a moment before. The way is looked at ahead a piece at a time
-/// (<see cref="Extend"/>), each sample at most <see cref="MaxStepMm"/> of the tool's way or <see cref="MaxStepDegrees"/> of its
+/// (<see cref="Extend"/>, a tenth of a second at a time), each sample at most <see cref="MaxStepMm"/> of the tool's way or <see cref="MaxStepDegrees"/> of its
 /// turn after the last: it ends where the tool's line leaves the arm's reach, a joint would have to jump (a singularity, or a
 /// joint at its limit whose solution lies the other way round), and the arm stops there with a protective stop.
 /// </summary>
@@ -22,8 +22,11 @@ internal sealed class UrToolSpeedPath : IUrSpeedWay
     /// <summary>The largest joint change between two samples that is still a smooth way, degrees (a UR's joint moves at most ~3° a control step at full speed).</summary>
     private const double MaxJointStep = 20;
 
-    /// <summary>How many samples <see cref="Extend"/> adds at least each time it has to look further.</summary>
-    private const int Piece = 32;
+    /// <summary>
+    /// How far <see cref="Extend"/> looks at least each time it has to look further, seconds (at least one sample): a stream of
+    /// short <c>speedl</c> steps (500 Hz) solves little more than each step's own way.
+    /// </summary>
+    private const double PieceSeconds = 0.1;
 
     private readonly Lock _gate = new();
     private readonly TwinArm _arm;
@@ -143,7 +146,7 @@ internal sealed class UrToolSpeedPath : IUrSpeedWay
         {
             return;
         }
-        int last = Math.Max((int)Math.Ceiling(seconds / _step), _samples.Count - 1 + Piece);
+        int last = Math.Max((int)Math.Ceiling(seconds / _step), _samples.Count - 1 + Math.Max(1, (int)Math.Ceiling(PieceSeconds / _step)));
         if (_constantAfterRamp)
         {
             last = (int)Math.Ceiling(_ramp / _step);

@@ -26,7 +26,7 @@ public sealed class UrWatchdogShutdownTests
         var twin = new UrTwinController(new UrTwinOptions { Time = clock, RealTime = true })
         {
             StopTimeout = TimeSpan.FromMinutes(10),
-            Ending = _ => { ending.Set(); release.Wait(Bound); }, // the program's thread does not end when told
+            Ending = _ => { ending.Set(); release.Wait(TimeSpan.FromMinutes(10)); }, // the program's thread does not end when told
         };
         try
         {
@@ -57,7 +57,7 @@ public sealed class UrWatchdogShutdownTests
         {
             await controller.StartAsync();
             controller.Twin.StopTimeout = TimeSpan.FromMinutes(10);
-            controller.Twin.Ending = _ => { ending.Set(); release.Wait(Bound); };
+            controller.Twin.Ending = _ => { ending.Set(); release.Wait(TimeSpan.FromMinutes(10)); };
             controller.Twin.Receive(Program);
             Assert.True(SpinWait.SpinUntil(() => controller.Twin.Watchdog.Armed.Count == 1 && clock.HasTimerDueIn(TimeSpan.FromMilliseconds(100)), Bound), "the watchdog was not set");
             clock.Advance(TimeSpan.FromMilliseconds(100));
