@@ -96,6 +96,7 @@ public sealed partial class VirtualUrController : VirtualController<VirtualUrSta
     private protected override async Task StopListeningAsync(CancellationToken cancellationToken)
     {
         StopListeners();
+        Twin.Shutdown(); // what the twin waits for by itself (an RTDE watchdog's stop) ends now: the host's stop is not held by it
         try
         {
             await Twin.StopProgramAsync(cancellationToken).ConfigureAwait(false);

@@ -7,9 +7,9 @@ internal static partial class UrBuiltins
     /// <summary>
     /// speedj and speedl (<see cref="UrTwinController.Speed"/>): the speed changes evenly from the arm's to the one asked (the
     /// leading joint at a for speedj; the tool's position at a and its turn at aRot for speedl, the slower leading) and stays after
-    /// the call returned (after t, or once the speed is reached without t), until the thread's next motion or stop. speedl's tool
-    /// speed is turned into joint speeds where the call is made (the tool keeps to its line for a short way, the joints' speeds
-    /// then held). The target speeds are the motion in progress's (zero while the arm stands).
+    /// the call returned (after t, or once the speed is reached without t), until the thread's next motion or stop. speedl keeps the
+    /// tool on its straight line however long it lasts (<see cref="UrToolSpeedPath"/>: the joints solved along the line, not a
+    /// joint speed taken once at the call). The target speeds are the motion in progress's (zero while the arm stands).
     /// </summary>
     private static void AddSpeed(Dictionary<string, UrBuiltin> t)
     {
@@ -39,23 +39,13 @@ internal static partial class UrBuiltins
 
     private static object SpeedL(UrMachine m, int line, object[] a)
     {
-        const double Step = 0.01; // seconds of the tool's way that set the joints' speeds
         double[] xd = Six(a, 0, line, "speedl", "xd");
         double time = SpeedTime(a, line, "speedl");
         double acceleration = Num(a, 1, line, "speedl", "a");
         double turning = Given(a[3]) ? Positive(Num(a, 3, line, "speedl", "aRot"), line, "speedl", "aRot") : acceleration;
         FinishBlend(m, line);
-        double[] tool = m.Controller.TcpSpeedNow();
-        double moveChange = Math.Sqrt(Enumerable.Range(0, 3).Sum(i => (xd[i] - tool[i]) * (xd[i] - tool[i])));
-        double turnChange = Math.Sqrt(Enumerable.Range(3, 3).Sum(i => (xd[i] - tool[i]) * (xd[i] - tool[i])));
-        double ramp = Math.Max(moveChange > 0 && acceleration > 0 ? moveChange / acceleration : 0, turnChange > 0 && turning > 0 ? turnChange / turning : 0);
-        TwinArm arm = m.Controller.Arm;
-        Joints from = m.Controller.JointsNow();
-        Pose here = arm.FlangeAt(from) * arm.ToolCenter;
-        var spin = new Vector(xd[3], xd[4], xd[5]) * (180 / Math.PI * Step);
-        var ahead = new Pose(here.Position + new Vector(xd[0], xd[1], xd[2]) * (1000 * Step), Rotation.FromRotationVector(spin) * here.Rotation);
-        double[] q0 = from.ToArray(), q1 = Solve(m, line, "speedl", ahead, from).ToArray();
-        RunSpeed(m, line, [.. q0.Select((q, i) => (q1[i] - q) / Step)], ramp, time, "speedl");
+        Unlocked(m, line, "speedl", (xd, acceleration, turning, time, line),
+            static (c, s, token) => { c.ToolSpeed(s.xd, s.acceleration, s.turning, s.time, s.line, "speedl", token); return true; });
         return UrNone.Value;
     }
 

@@ -36,6 +36,10 @@ internal sealed class UrMachine : IDisposable
     private Exception? _threadError;
     private int _turns;
     private long _steps;
+    private readonly long _stepWork;
+
+    /// <summary>The fewest steps that end the program: the verification's budget or a secondary program's step (none: long.MaxValue).</summary>
+    private readonly long _stepLimit;
     private int _liveThreads;
 
     /// <summary>True once the program ends: no thread starts any more (set under the machine's lock).</summary>
@@ -48,6 +52,7 @@ internal sealed class UrMachine : IDisposable
         Limits = controller.Options.Limits;
         Controller = controller;
         Globals = new object?[program.Globals.Length];
+        _stepLimit = Limits.MaxSteps > 0 ? Limits.MaxSteps : long.MaxValue;
         _stop = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
     }
 
@@ -72,14 +77,41 @@ internal sealed class UrMachine : IDisposable
     /// <summary>The interpreter's budgets.</summary>
     public TwinLimits Limits { get; }
 
+    /// <summary>
+    /// What one controller step allows a secondary program (<see cref="UrTwinController"/>'s secondary programs): statements and
+    /// loop turns counted together; past it the program stops with <see cref="TooMuchBehind"/>. 0 (a main program): no such bound.
+    /// </summary>
+    public long StepWork
+    {
+        get => _stepWork;
+        init
+        {
+            _stepWork = value;
+            _stepLimit = Math.Min(_stepLimit, value > 0 ? value : long.MaxValue);
+        }
+    }
+
+    /// <summary>A UR's error for a program that keeps the real-time thread past its step (the Script Manual's "Secondary Program Limitations").</summary>
+    public const string TooMuchBehind = "Runtime is too much behind";
+
     /// <summary>Called before each statement: the line being run, and the program's step budget.</summary>
     public void Step(int line)
     {
         CurrentLine = line;
-        if (++_steps > Limits.MaxSteps && Limits.MaxSteps > 0)
+        if (++_steps > _stepLimit)
         {
-            throw new UrRuntimeException(line, $"the program ran more than {Limits.MaxSteps:N0} statements (the verification's step budget): an endless loop?");
+            OverBudget(line);
         }
+    }
+
+    /// <summary>The program ran past its step budget (the verification's) or a secondary program past one controller step.</summary>
+    private void OverBudget(int line)
+    {
+        if (_stepWork > 0 && _steps > _stepWork)
+        {
+            throw new UrRuntimeException(line, $"{TooMuchBehind} (a secondary program must end within one controller step: the twin allows it {_stepWork:N0} statements and loop turns)");
+        }
+        throw new UrRuntimeException(line, $"the program ran more than {Limits.MaxSteps:N0} statements (the verification's step budget): an endless loop?");
     }
 
     /// <summary>Cancelled when the program or the calling thread is stopped.</summary>
@@ -128,6 +160,10 @@ internal sealed class UrMachine : IDisposable
     public void LoopTick()
     {
         Cancellation.ThrowIfCancellationRequested();
+        if (_stepWork > 0 && ++_steps > _stepLimit)
+        {
+            OverBudget(CurrentLine); // a secondary program's loop turns count too: an empty loop never ends its step
+        }
         if (++_turns >= LoopTurnsPerYield && _threads.Count > 0)
         {
             _turns = 0;

@@ -42,3 +42,13 @@ internal sealed class UrTurnPath(TwinArm arm, UrLinearPath way, Joints first, Jo
     /// <summary>The joints at <paramref name="fraction"/> (0 to 1) of the turn.</summary>
     public Joints JointsAt(double fraction) => fraction >= 1 ? last : UrBuiltins.Near(arm, way.PoseAt(fraction), UrMotion.Lerp(first, last, fraction));
 }
+
+/// <summary>A speed motion's way over a fixed time: the fraction of the way is the fraction of the time.</summary>
+internal sealed class UrTimedSpeedPath(IUrSpeedWay way, double duration) : IUrMotionPath
+{
+    /// <inheritdoc/>
+    public Joints JointsAt(double fraction) => way.At(fraction * duration);
+
+    /// <inheritdoc/>
+    public double DoneAt(double seconds) => seconds / duration;
+}

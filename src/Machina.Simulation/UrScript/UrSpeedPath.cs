@@ -5,7 +5,7 @@ namespace Machina.Simulation.UrScript;
 /// evenly to the asked one over the ramp (all together: the leading joint at the acceleration asked), then constant. Each joint
 /// stays within its limits: <see cref="LimitSeconds"/> is when the first one reaches its limit.
 /// </summary>
-internal sealed class UrSpeedPath
+internal sealed class UrSpeedPath : IUrSpeedWay
 {
     private const int RampSamples = 64;
     private readonly double[] _from, _start, _speeds, _min, _max;
@@ -32,7 +32,18 @@ internal sealed class UrSpeedPath
     /// <summary>The joint (0 to 5) that reaches its limit first.</summary>
     public int LimitJoint { get; }
 
-    /// <summary>The joints <paramref name="seconds"/> after the start (each within its limits).</summary>
+    /// <inheritdoc/>
+    public string LimitReason => $"joint {LimitJoint + 1} position limit violated";
+
+    /// <inheritdoc/>
+    public double KnownUntil => double.PositiveInfinity;
+
+    /// <inheritdoc/>
+    public void Extend(double seconds)
+    {
+    }
+
+    /// <inheritdoc/>
     public Joints At(double seconds)
     {
         double[] q = new double[6];
@@ -43,8 +54,8 @@ internal sealed class UrSpeedPath
         return Joints.FromArray(q);
     }
 
-    /// <summary>This way as a motion's path that lasts <paramref name="duration"/> seconds, at its own speeds.</summary>
-    public IUrMotionPath Over(double duration) => new Timed(this, duration);
+    /// <inheritdoc/>
+    public IUrMotionPath Over(double duration) => new UrTimedSpeedPath(this, duration);
 
     /// <summary>Joint <paramref name="i"/>'s position <paramref name="t"/> seconds after the start.</summary>
     private double Position(int i, double t)
@@ -83,15 +94,5 @@ internal sealed class UrSpeedPath
         }
         double atRampEnd = Position(i, _ramp), v = _speeds[i];
         return v > 0 ? _ramp + (_max[i] - atRampEnd) / v : v < 0 ? _ramp + (_min[i] - atRampEnd) / v : double.PositiveInfinity;
-    }
-
-    /// <summary>The way over a fixed time: the fraction of the way is the fraction of the time.</summary>
-    private sealed class Timed(UrSpeedPath way, double duration) : IUrMotionPath
-    {
-        /// <inheritdoc/>
-        public Joints JointsAt(double fraction) => way.At(fraction * duration);
-
-        /// <inheritdoc/>
-        public double DoneAt(double seconds) => seconds / duration;
     }
 }

@@ -4,7 +4,9 @@ namespace Machina.Simulation.UrScript;
 /// Secondary programs (the Script Manual's "Secondary Programs"): a program defined with <c>sec</c> and sent to a script port
 /// runs beside the main program, which goes on; it "should not use any physical time" (no <c>sleep</c>, no motion: such a
 /// program is refused) and an error in it does not stop the main program: it is reported in the controller's log
-/// (<see cref="SecondaryErrors"/>), not on the pendant.
+/// (<see cref="SecondaryErrors"/>), not on the pendant. It runs in one controller step ("Secondary Program Limitations": "Entire
+/// execution time is added to single real time cycle"): one that does more than <see cref="UrTwinOptions.SecondaryStepWork"/>
+/// (a long or endless loop) stops there with "Runtime is too much behind" and a protective stop.
 /// </summary>
 internal sealed partial class UrTwinController
 {
@@ -45,10 +47,18 @@ internal sealed partial class UrTwinController
 
     private void RunSecondary(UrBoundProgram program, CancellationToken cancellation)
     {
-        using var machine = new UrMachine(program, this, cancellation);
+        using var machine = new UrMachine(program, this, cancellation) { StepWork = Options.SecondaryStepWork };
         try
         {
             machine.Run();
+        }
+        catch (UrRuntimeException e) when (e.Reason.StartsWith(UrMachine.TooMuchBehind, StringComparison.Ordinal))
+        {
+            // It held the real-time thread past its step ("Secondary Program Limitations": "Runtime is too much behind"): the
+            // controller misses its cycle and stops the arm, as for any thread that uses too much time.
+            SecondaryFailed(e.Message);
+            Pendant.Log($"Protective stop: {UrMachine.TooMuchBehind}");
+            RequestProtectiveStop();
         }
         catch (UrRuntimeException e)
         {

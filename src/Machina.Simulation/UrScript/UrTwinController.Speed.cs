@@ -21,6 +21,15 @@ internal sealed partial class UrTwinController
 
     private ITimer? _speedTimer;
 
+    /// <summary>How long a speed motion whose end is not known yet is planned for, seconds (a day: longer than any test or session).</summary>
+    private const double OpenSeconds = 86_400;
+
+    /// <summary>
+    /// Plans a speed motion from where the arm is (<c>at</c>) and how it moves there (where it is <c>step</c> seconds apart,
+    /// <c>before</c> and <c>after</c>; all three the same when it stands): its way and how long its speed ramp takes.
+    /// </summary>
+    private delegate (IUrSpeedWay Way, double Ramp) SpeedPlan(Joints at, Joints before, Joints after, double step);
+
     /// <summary>
     /// Starts a speed motion towards the joint <paramref name="speeds"/> (degrees per second), the speeds changing evenly from
     /// the ones the arm has over <paramref name="ramp"/> seconds (0: at once), and returns after <paramref name="seconds"/> (0:
@@ -28,49 +37,72 @@ internal sealed partial class UrTwinController
     /// calling thread's: it owns the motion.
     /// </summary>
     /// <exception cref="TwinMotionException">Another, live thread's motion is in progress.</exception>
-    public void Speed(double[] speeds, double ramp, double seconds, int line, string function, CancellationToken cancellation)
-    {
-        WaitWhileHeld(cancellation);
-        bool moving = TakeCoast(cancellation, false, out Joints at, out Joints before, out Joints after, out double step);
-        double[] start = new double[6];
-        if (moving)
+    public void Speed(double[] speeds, double ramp, double seconds, int line, string function, CancellationToken cancellation) =>
+        RunSpeed((at, before, after, step) =>
         {
-            double[] a = before.ToArray(), b = after.ToArray();
+            double[] start = new double[6], a = before.ToArray(), b = after.ToArray();
             for (int i = 0; i < 6; i++)
             {
                 start[i] = (b[i] - a[i]) / step;
             }
-        }
-        else
+            return (new UrSpeedPath(at, start, speeds, ramp, Arm.Model.MinJoints.ToArray(), Arm.Model.MaxJoints.ToArray()), ramp);
+        }, seconds, line, function, cancellation);
+
+    /// <summary>
+    /// <c>speedl</c>: starts a speed motion of the tool towards <paramref name="xd"/> (m/s, then rad/s as a rotation vector, base
+    /// frame), the tool's speed changing evenly from the one it has (its position's at <paramref name="acceleration"/> m/s², its
+    /// turn's at <paramref name="turning"/> rad/s², the slower leading) and then held: the tool keeps to its straight line
+    /// (<see cref="UrToolSpeedPath"/>). Returns as <see cref="Speed"/> does.
+    /// </summary>
+    /// <exception cref="TwinMotionException">Another, live thread's motion is in progress.</exception>
+    public void ToolSpeed(double[] xd, double acceleration, double turning, double seconds, int line, string function, CancellationToken cancellation) =>
+        RunSpeed((at, before, after, step) =>
         {
-            at = Arm.Joints;
+            Pose from = ToolPose(before), to = ToolPose(after);
+            Vector v0 = (to.Position - from.Position) * (1 / step); // mm/s
+            RotationVector turn = (to.Rotation * from.Rotation.Inverse()).ToRotationVector();
+            var w0 = new Vector(turn.X, turn.Y, turn.Z) * (1 / step); // degrees per second
+            Vector v = new Vector(xd[0], xd[1], xd[2]) * 1000, w = new Vector(xd[3], xd[4], xd[5]) * (1 / Radians);
+            double move = (v - v0).Length / 1000, spin = (w - w0).Length * Radians;
+            double ramp = Math.Max(move > 0 && acceleration > 0 ? move / acceleration : 0, spin > 0 && turning > 0 ? spin / turning : 0);
+            return (new UrToolSpeedPath(Arm, at, v0, w0, v, w, ramp), ramp);
+        }, seconds, line, function, cancellation);
+
+    /// <summary>Runs a speed motion planned by <paramref name="plan"/> from where the arm is: see <see cref="Speed"/>.</summary>
+    private void RunSpeed(SpeedPlan plan, double seconds, int line, string function, CancellationToken cancellation)
+    {
+        WaitWhileHeld(cancellation);
+        if (!TakeCoast(cancellation, false, out Joints at, out Joints before, out Joints after, out double step))
+        {
+            at = before = after = Arm.Joints;
+            step = 1;
         }
+        (IUrSpeedWay way, double ramp) = plan(at, before, after, step);
         double wait = seconds > 0 ? seconds : Math.Max(ramp, ControlStep);
         if (!Clock.RealTime)
         {
             // Program time (a verification): the arm is where the speed brought it when the call returns, and stands there.
-            var path = new UrSpeedPath(at, start, speeds, ramp, Arm.Model.MinJoints.ToArray(), Arm.Model.MaxJoints.ToArray());
-            Arm.MoveTo(path.At(Math.Min(wait, path.LimitSeconds)), wait, line, function, cancellation);
+            way.Extend(wait);
+            Arm.MoveTo(way.At(Math.Min(wait, way.LimitSeconds)), wait, line, function, cancellation);
             return;
         }
-        var way = new UrSpeedPath(at, start, speeds, ramp, Arm.Model.MinJoints.ToArray(), Arm.Model.MaxJoints.ToArray());
-        double duration = double.IsFinite(way.LimitSeconds) ? way.LimitSeconds : ramp;
+        double duration = double.IsFinite(way.LimitSeconds) ? way.LimitSeconds : double.IsFinite(way.KnownUntil) ? OpenSeconds : ramp;
         if (duration <= 0)
         {
             Clock.Wait(wait, cancellation); // at rest and asked to stay so: nothing moves
             return;
         }
-        var motion = new UrMotion(at, way.At(duration), 0, Options.Time.GetTimestamp(), duration, 0, way.Over(duration), ownProfile: true) { OpenEnded = true };
+        var motion = new UrMotion(at, way.At(Math.Min(duration, way.KnownUntil)), 0, Options.Time.GetTimestamp(), duration, 0, way.Over(duration), ownProfile: true) { OpenEnded = true };
         CancellationToken hold;
         lock (_holdGate)
         {
             hold = _holdStop.Token;
             _motion = motion;
             _motionOwner = cancellation;
-            if (double.IsFinite(way.LimitSeconds))
+            double due = Math.Min(way.LimitSeconds, way.KnownUntil);
+            if (double.IsFinite(due))
             {
-                int joint = way.LimitJoint;
-                _speedTimer = Options.Time.CreateTimer(_ => AtJointLimit(motion, joint), null, TimeSpan.FromSeconds(duration), Timeout.InfiniteTimeSpan);
+                _speedTimer = Options.Time.CreateTimer(_ => WatchSpeed(motion, way), null, TimeSpan.FromSeconds(due), Timeout.InfiniteTimeSpan);
             }
         }
         StateChanged?.Invoke();
@@ -86,8 +118,35 @@ internal sealed partial class UrTwinController
         Arm.Record(line, TwinTraceKind.Motion, function, way.At(Math.Min(wait, duration)));
     }
 
-    /// <summary>A speed motion reached a joint's position limit (on the timer's thread): the arm stops there with a protective stop.</summary>
-    private void AtJointLimit(UrMotion motion, int joint)
+    /// <summary>
+    /// The speed motion's timer (on the timer's thread): at the way's limit the arm stops there with a protective stop; before
+    /// it, the way is looked at further ahead and the timer set for the end of what is known.
+    /// </summary>
+    private void WatchSpeed(UrMotion motion, IUrSpeedWay way)
+    {
+        const double Tick = 1e-6; // closer than a timer can tell apart (a timestamp's tick is 0.1 us): reached
+        double elapsed = Options.Time.GetElapsedTime(motion.Started).TotalSeconds;
+        if (way.LimitSeconds > elapsed + Tick)
+        {
+            way.Extend(Math.Max(elapsed, way.KnownUntil)); // a piece further than known, whatever the timer's rounding
+        }
+        if (way.LimitSeconds <= elapsed + Tick)
+        {
+            AtLimit(motion, way.LimitReason);
+            return;
+        }
+        double next = Math.Min(way.LimitSeconds, way.KnownUntil);
+        lock (_holdGate)
+        {
+            if (ReferenceEquals(_motion, motion) && double.IsFinite(next))
+            {
+                _speedTimer?.Change(TimeSpan.FromSeconds(Math.Max(next - elapsed, Tick)), Timeout.InfiniteTimeSpan);
+            }
+        }
+    }
+
+    /// <summary>A speed motion reached the end of its way (on the timer's thread): the arm stops there with a protective stop.</summary>
+    private void AtLimit(UrMotion motion, string reason)
     {
         lock (_holdGate)
         {
@@ -96,7 +155,7 @@ internal sealed partial class UrTwinController
                 return;
             }
         }
-        Pendant.Log($"Protective stop: joint {joint + 1} position limit violated");
+        Pendant.Log($"Protective stop: {reason}");
         RequestProtectiveStop(); // the hold takes the motion: the arm stands at the limit
         TakeCoast(CancellationToken.None, true, out _, out _, out _, out _); // held already (another stop): stop the arm all the same
     }

@@ -15,6 +15,12 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
 
     private readonly Lock _gate = new();
     private readonly UrScriptIntake _incoming = new();
+
+    /// <summary>
+    /// The controller's own end (<see cref="Shutdown"/>, <see cref="Dispose"/>): it ends the waits of what the controller started by
+    /// itself (an RTDE watchdog's stop) and of a program's end that a new program or a stop waits for.
+    /// </summary>
+    private readonly CancellationTokenSource _shutdown = new();
     private CancellationTokenSource? _programStop;
     private Thread? _programThread;
     private Task? _programEnded;
@@ -309,17 +315,24 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     /// <summary>Stops the running program, if any, and waits for it to end.</summary>
     public void StopProgram()
     {
-        (CancellationTokenSource? stop, Thread? thread, _) = TakeProgram();
+        (CancellationTokenSource? stop, Thread? thread, Task? ended) = TakeProgram();
         if (stop is null)
         {
             return;
         }
         stop.Cancel();
-        if (thread == Thread.CurrentThread || thread is null || thread.Join(StopTimeout))
+        if (thread == Thread.CurrentThread || ended is null || EndsWithinBlocking(ended, StopTimeout, _shutdown.Token))
         {
             stop.Dispose(); // a program still winding down may still wait on its token
         }
     }
+
+    /// <summary>
+    /// Ends the controller's own waits at once (its host is stopping): an RTDE watchdog's stop in progress no longer waits for
+    /// the arm to stand or the program to end, nor does a program's stop that the controller does by itself; the program is
+    /// stopped all the same and winds down by itself. <see cref="Dispose"/> does this too.
+    /// </summary>
+    public void Shutdown() => _shutdown.Cancel();
 
     /// <summary>
     /// As <see cref="StopProgram"/> without holding the calling thread while the program ends: awaits the task the program's
@@ -364,6 +377,19 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         catch (TimeoutException)
         {
             return false;
+        }
+        catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
+        {
+            return false;
+        }
+    }
+
+    /// <summary>As <see cref="EndsWithin(Task, TimeSpan, CancellationToken)"/>, blocking the calling thread.</summary>
+    private static bool EndsWithinBlocking(Task task, TimeSpan timeout, CancellationToken cancellation)
+    {
+        try
+        {
+            return task.Wait(timeout, cancellation);
         }
         catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
         {
@@ -467,8 +493,9 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
                 Hold();
                 break;
             case "stop":
-                // Bounded waits (the arm standing, the program's end) with no token to end them: the twin has no stop of its own.
-                ThreadPool.QueueUserWorkItem(static twin => _ = twin.StopOnPathAsync(CancellationToken.None), this, preferLocal: false);
+                // Its waits (the arm standing, the program's end) end when the controller does (Shutdown): a host stopping
+                // (Ctrl+C on `machina sim ur`) does not wait for them.
+                ThreadPool.QueueUserWorkItem(static twin => _ = twin.StopOnPathAsync(twin._shutdown.Token), this, preferLocal: false);
                 break;
         }
     }
@@ -520,7 +547,8 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
     public void Dispose()
     {
         _secondaryStop.Cancel();
-        StopProgram();
+        StopProgram(); // at most StopTimeout, or until Shutdown (from another thread, or before: then it does not wait)
+        Shutdown();
         Watchdog.Dispose();
     }
 }

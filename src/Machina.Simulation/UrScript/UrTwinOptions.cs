@@ -11,6 +11,14 @@ internal sealed record UrTwinOptions : TwinOptions
     {
     }
 
+    /// <summary>
+    /// How much a secondary program may do in its one controller step (statements and loop turns counted together; the Script
+    /// Manual: it "must be simple enough to be executed in a single controller step"). One that does more stops there with a
+    /// UR's "Runtime is too much behind" and a protective stop. The twin's bound: a UR's step is 2 ms of its processor's time,
+    /// which a count of statements stands for so that the same program does the same on any machine.
+    /// </summary>
+    public long SecondaryStepWork { get; init; } = 10_000;
+
     /// <summary>The seed of <c>random()</c>.</summary>
     public int RandomSeed { get; init; } = 1;
 
