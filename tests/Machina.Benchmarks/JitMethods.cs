@@ -14,6 +14,7 @@ internal sealed class JitMethods : EventListener
 {
     private readonly ConcurrentDictionary<long, (string Name, DateTime Start)> _started = new();
     private readonly ConcurrentQueue<(string Name, string Tier, double Milliseconds)> _compiled = new();
+    private readonly ConcurrentQueue<string> _thrown = new();
 
     /// <summary>Whether compiled methods are recorded now.</summary>
     public volatile bool Counting;
@@ -22,7 +23,7 @@ internal sealed class JitMethods : EventListener
     {
         if (source.Name == "Microsoft-Windows-DotNETRuntime")
         {
-            EnableEvents(source, EventLevel.Verbose, (EventKeywords)0x10); // JIT keyword
+            EnableEvents(source, EventLevel.Verbose, (EventKeywords)(0x10 | 0x8000)); // JIT and exception keywords
         }
     }
 
@@ -32,7 +33,11 @@ internal sealed class JitMethods : EventListener
         {
             return;
         }
-        if (name.StartsWith("MethodJittingStarted", StringComparison.Ordinal))
+        if (name.StartsWith("ExceptionThrown", StringComparison.Ordinal))
+        {
+            _thrown.Enqueue($"{Value(e, "ExceptionType")}: {Value(e, "ExceptionMessage")}");
+        }
+        else if (name.StartsWith("MethodJittingStarted", StringComparison.Ordinal))
         {
             _started[e.OSThreadId] = (Name(e), e.TimeStamp);
         }
@@ -52,6 +57,13 @@ internal sealed class JitMethods : EventListener
         {
             all.Add(m);
         }
+        var thrown = new List<string>();
+        while (_thrown.TryDequeue(out string? t))
+        {
+            thrown.Add(t);
+        }
+        yield return $"  exceptions thrown: {thrown.Count}" + string.Concat(thrown.GroupBy(t => t).OrderByDescending(g => g.Count())
+            .Select(g => string.Create(CultureInfo.InvariantCulture, $"; {g.Count()} x {g.Key}")));
         yield return "  by tier: " + string.Join(", ", all.GroupBy(m => m.Tier).OrderByDescending(g => g.Count())
             .Select(g => string.Create(CultureInfo.InvariantCulture, $"{g.Key} {g.Count()} ({g.Sum(m => m.Milliseconds):0.0} ms)")));
         foreach (var m in all.OrderByDescending(m => m.Milliseconds).Take(top))

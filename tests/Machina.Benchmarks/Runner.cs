@@ -97,7 +97,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             if (compiled is not null)
             {
                 Console.Error.WriteLine($"{scenario.Name} run {i + 1}: methods the JIT compiled (wall ms from start to end of each, costliest first):");
-                foreach (string line in compiled.Drain())
+                foreach (string line in compiled.Drain(int.TryParse(Environment.GetEnvironmentVariable("MACHINA_BENCH_JIT_TOP"), out int top) ? top : 40))
                 {
                     Console.Error.WriteLine(line);
                 }
