@@ -8,7 +8,8 @@ namespace Machina.Benchmarks;
 /// Which methods the JIT compiles during measured runs (<c>MACHINA_BENCH_JIT=1</c>), at which tier and for how long: the
 /// runtime's <c>MethodJittingStarted</c> and <c>MethodLoadVerbose</c> events (JIT keyword). The time shown is the wall time
 /// between the two on one thread: the compiling, plus any time the thread was not on a processor (on a loaded machine, a lot). Tells per-action code still being promoted (what every program pays) from code a run
-/// calls a few times (connecting, disconnecting), which reaches the JIT's 30 calls only after as many runs.
+/// calls a few times (connecting, disconnecting), which reaches the JIT's 30 calls only after as many runs. Also counts the
+/// exceptions thrown in the run (<c>ExceptionThrown_V1</c>, exception keyword): each is paid, and its handling code compiled, per throw.
 /// </summary>
 internal sealed class JitMethods : EventListener
 {
@@ -35,7 +36,10 @@ internal sealed class JitMethods : EventListener
         }
         if (name.StartsWith("ExceptionThrown", StringComparison.Ordinal))
         {
-            _thrown.Enqueue($"{Value(e, "ExceptionType")}: {Value(e, "ExceptionMessage")}");
+            if (Value(e, "ExceptionType") is string type) // not the event that marks the throw's end
+            {
+                _thrown.Enqueue($"{type}: {Value(e, "ExceptionMessage")}");
+            }
         }
         else if (name.StartsWith("MethodJittingStarted", StringComparison.Ordinal))
         {
