@@ -53,7 +53,7 @@ internal sealed class JitMethods : EventListener
         }
     }
 
-    /// <summary>What was recorded since the last call, as lines: the count and time by tier, then the costliest methods.</summary>
+    /// <summary>What was recorded since the last call, as lines: the count and time by tier, the exceptions thrown (when any), then the costliest methods.</summary>
     public IEnumerable<string> Drain(int top = 40)
     {
         var all = new List<(string Name, string Tier, double Milliseconds)>();
@@ -61,15 +61,18 @@ internal sealed class JitMethods : EventListener
         {
             all.Add(m);
         }
+        yield return "  by tier: " + string.Join(", ", all.GroupBy(m => m.Tier).OrderByDescending(g => g.Count())
+            .Select(g => string.Create(CultureInfo.InvariantCulture, $"{g.Key} {g.Count()} ({g.Sum(m => m.Milliseconds):0.0} ms)")));
         var thrown = new List<string>();
         while (_thrown.TryDequeue(out string? t))
         {
             thrown.Add(t);
         }
-        yield return $"  exceptions thrown: {thrown.Count}" + string.Concat(thrown.GroupBy(t => t).OrderByDescending(g => g.Count())
-            .Select(g => string.Create(CultureInfo.InvariantCulture, $"; {g.Count()} x {g.Key}")));
-        yield return "  by tier: " + string.Join(", ", all.GroupBy(m => m.Tier).OrderByDescending(g => g.Count())
-            .Select(g => string.Create(CultureInfo.InvariantCulture, $"{g.Key} {g.Count()} ({g.Sum(m => m.Milliseconds):0.0} ms)")));
+        if (thrown.Count > 0)
+        {
+            yield return $"  exceptions thrown: {thrown.Count}" + string.Concat(thrown.GroupBy(t => t).OrderByDescending(g => g.Count())
+                .Select(g => string.Create(CultureInfo.InvariantCulture, $"; {g.Count()} x {g.Key}")));
+        }
         foreach (var m in all.OrderByDescending(m => m.Milliseconds).Take(top))
         {
             yield return string.Create(CultureInfo.InvariantCulture, $"  {m.Milliseconds,7:0.00} ms {m.Tier,-16} {m.Name}");
