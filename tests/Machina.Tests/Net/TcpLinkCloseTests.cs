@@ -1,4 +1,3 @@
-using System.Net;
 using System.Net.Sockets;
 
 namespace Machina.Tests.Net;
@@ -31,64 +30,59 @@ public sealed class TcpLinkCloseTests
                 }
             }
         }
+        await using var pair = await StartedPair.OpenAsync();
 
-        var listener = new TcpListener(IPAddress.Loopback, 0);
-        listener.Start();
+        AppDomain.CurrentDomain.FirstChanceException += Record;
         try
         {
-            int port = ((IPEndPoint)listener.LocalEndpoint).Port;
-            Task<Socket> accepting = listener.AcceptSocketAsync();
-            TcpLink link = await TcpLink.ConnectAsync("127.0.0.1", port, Bound, TimeProvider.System, CancellationToken.None);
-            using Socket server = await accepting.WaitAsync(Bound);
-            var receiver = new ClosingReceiver();
-            link.Start(receiver);
-
-            AppDomain.CurrentDomain.FirstChanceException += Record;
-            try
-            {
-                link.CloseSocket();
-                await link.DisposeAsync();
-            }
-            finally
-            {
-                AppDomain.CurrentDomain.FirstChanceException -= Record;
-            }
-
-            Assert.Empty(thrown);
-            using var timeout = new CancellationTokenSource(Bound);
-            int n = await server.ReceiveAsync(new byte[1], SocketFlags.None, timeout.Token);
-            Assert.Equal(0, n);
+            pair.Link.CloseSocket();
+            await pair.Link.DisposeAsync();
         }
         finally
         {
-            listener.Stop();
+            AppDomain.CurrentDomain.FirstChanceException -= Record;
         }
+
+        Assert.Empty(thrown);
+        using var timeout = new CancellationTokenSource(Bound);
+        Assert.Equal(0, await pair.Server.ReceiveAsync(new byte[1], SocketFlags.None, timeout.Token));
     }
 
     [Fact]
     public async Task CloseSocket_WhileTheLoopWaits_EndsTheLoopAndTellsTheReceiverItWasClosedHere()
     {
-        var listener = new TcpListener(IPAddress.Loopback, 0);
-        listener.Start();
-        try
+        await using var pair = await StartedPair.OpenAsync();
+
+        pair.Link.CloseSocket();
+        Exception? error = await pair.Receiver.Closed.Task.WaitAsync(Bound);
+
+        Assert.IsType<ObjectDisposedException>(error);
+    }
+
+    /// <summary>A started link on loopback (<see cref="TcpLinkTests.LinkPair"/>) and what its receiver heard at its close.</summary>
+    private sealed class StartedPair : IAsyncDisposable
+    {
+        private readonly TcpLinkTests.LinkPair _pair;
+
+        private StartedPair(TcpLinkTests.LinkPair pair, ClosingReceiver receiver)
         {
-            int port = ((IPEndPoint)listener.LocalEndpoint).Port;
-            Task<Socket> accepting = listener.AcceptSocketAsync();
-            TcpLink link = await TcpLink.ConnectAsync("127.0.0.1", port, Bound, TimeProvider.System, CancellationToken.None);
-            using Socket server = await accepting.WaitAsync(Bound);
+            _pair = pair;
+            Receiver = receiver;
+        }
+
+        public TcpLink Link => _pair.Link;
+
+        public Socket Server => _pair.Server;
+
+        public ClosingReceiver Receiver { get; }
+
+        public static async Task<StartedPair> OpenAsync()
+        {
             var receiver = new ClosingReceiver();
-            link.Start(receiver);
-
-            link.CloseSocket();
-            Exception? error = await receiver.Closed.Task.WaitAsync(Bound);
-            await link.DisposeAsync();
-
-            Assert.IsType<ObjectDisposedException>(error);
+            return new StartedPair(await TcpLinkTests.LinkPair.OpenAsync(receiver), receiver);
         }
-        finally
-        {
-            listener.Stop();
-        }
+
+        public ValueTask DisposeAsync() => _pair.DisposeAsync();
     }
 
     private sealed class ClosingReceiver : ILinkReceiver
