@@ -8,12 +8,14 @@ namespace Machina.Benchmarks;
 /// Which methods the JIT compiles during measured runs (<c>MACHINA_BENCH_JIT=1</c>), at which tier and for how long: the
 /// runtime's <c>MethodJittingStarted</c> and <c>MethodLoadVerbose</c> events (JIT keyword). The time shown is the wall time
 /// between the two on one thread: the compiling, plus any time the thread was not on a processor (on a loaded machine, a lot). Tells per-action code still being promoted (what every program pays) from code a run
-/// calls a few times (connecting, disconnecting), which reaches the JIT's 30 calls only after as many runs.
+/// calls a few times (connecting, disconnecting), which reaches the JIT's 30 calls only after as many runs. Also counts the
+/// exceptions thrown in the run (<c>ExceptionThrown_V1</c>, exception keyword): each is paid, and its handling code compiled, per throw.
 /// </summary>
 internal sealed class JitMethods : EventListener
 {
     private readonly ConcurrentDictionary<long, (string Name, DateTime Start)> _started = new();
     private readonly ConcurrentQueue<(string Name, string Tier, double Milliseconds)> _compiled = new();
+    private readonly ConcurrentQueue<string> _thrown = new();
 
     /// <summary>Whether compiled methods are recorded now.</summary>
     public volatile bool Counting;
@@ -22,7 +24,7 @@ internal sealed class JitMethods : EventListener
     {
         if (source.Name == "Microsoft-Windows-DotNETRuntime")
         {
-            EnableEvents(source, EventLevel.Verbose, (EventKeywords)0x10); // JIT keyword
+            EnableEvents(source, EventLevel.Verbose, (EventKeywords)(0x10 | 0x8000)); // JIT and exception keywords
         }
     }
 
@@ -32,7 +34,14 @@ internal sealed class JitMethods : EventListener
         {
             return;
         }
-        if (name.StartsWith("MethodJittingStarted", StringComparison.Ordinal))
+        if (name.StartsWith("ExceptionThrown", StringComparison.Ordinal))
+        {
+            if (Value(e, "ExceptionType") is string type) // not the event that marks the throw's end
+            {
+                _thrown.Enqueue($"{type}: {Value(e, "ExceptionMessage")}");
+            }
+        }
+        else if (name.StartsWith("MethodJittingStarted", StringComparison.Ordinal))
         {
             _started[e.OSThreadId] = (Name(e), e.TimeStamp);
         }
@@ -44,7 +53,7 @@ internal sealed class JitMethods : EventListener
         }
     }
 
-    /// <summary>What was recorded since the last call, as lines: the count and time by tier, then the costliest methods.</summary>
+    /// <summary>What was recorded since the last call, as lines: the count and time by tier, the exceptions thrown (when any), then the costliest methods.</summary>
     public IEnumerable<string> Drain(int top = 40)
     {
         var all = new List<(string Name, string Tier, double Milliseconds)>();
@@ -54,6 +63,16 @@ internal sealed class JitMethods : EventListener
         }
         yield return "  by tier: " + string.Join(", ", all.GroupBy(m => m.Tier).OrderByDescending(g => g.Count())
             .Select(g => string.Create(CultureInfo.InvariantCulture, $"{g.Key} {g.Count()} ({g.Sum(m => m.Milliseconds):0.0} ms)")));
+        var thrown = new List<string>();
+        while (_thrown.TryDequeue(out string? t))
+        {
+            thrown.Add(t);
+        }
+        if (thrown.Count > 0)
+        {
+            yield return $"  exceptions thrown: {thrown.Count}" + string.Concat(thrown.GroupBy(t => t).OrderByDescending(g => g.Count())
+                .Select(g => string.Create(CultureInfo.InvariantCulture, $"; {g.Count()} x {g.Key}")));
+        }
         foreach (var m in all.OrderByDescending(m => m.Milliseconds).Take(top))
         {
             yield return string.Create(CultureInfo.InvariantCulture, $"  {m.Milliseconds,7:0.00} ms {m.Tier,-16} {m.Name}");

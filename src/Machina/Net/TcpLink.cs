@@ -29,6 +29,7 @@ internal sealed class TcpLink : IAsyncDisposable
     private Task _sendLoop = Task.CompletedTask; // started (under the outbox lock) the first time the socket does not take all
     private ILinkReceiver? _receiver;
     private int _disposed;
+    private int _socketClosed; // set by the first CloseSocket: the loops leave the socket alone from then on
 
     private TcpLink(Socket socket, string remoteAddress)
     {
@@ -296,7 +297,18 @@ internal sealed class TcpLink : IAsyncDisposable
             while (!stop.IsCancellationRequested)
             {
                 // Bounded, so a closing link is noticed even if closing the socket does not end the wait.
-                if (!_socket.Poll(PollMicroseconds, SelectMode.SelectRead))
+                bool readable = Volatile.Read(ref _socketClosed) == 0 && _socket.Poll(PollMicroseconds, SelectMode.SelectRead);
+                if (Volatile.Read(ref _socketClosed) != 0)
+                {
+                    // Closed here (CloseSocket wakes the poll): reported as a call on the disposed socket would have reported
+                    // it, without throwing its ObjectDisposedException on every disconnect.
+                    if (!stop.IsCancellationRequested)
+                    {
+                        Closed(new ObjectDisposedException(typeof(Socket).FullName));
+                    }
+                    return;
+                }
+                if (!readable)
                 {
                     continue;
                 }
@@ -356,9 +368,16 @@ internal sealed class TcpLink : IAsyncDisposable
         }
     }
 
-    /// <summary>Closes the socket at once (the peer sees the link end); <see cref="DisposeAsync"/> still stops the loops.</summary>
+    /// <summary>
+    /// Closes the socket at once (the peer sees the link end); <see cref="DisposeAsync"/> still stops the loops. Only the first
+    /// call does it: a driver closes its links' sockets before it disposes them, and a shutdown of the disposed socket threw.
+    /// </summary>
     internal void CloseSocket()
     {
+        if (Interlocked.Exchange(ref _socketClosed, 1) != 0)
+        {
+            return;
+        }
         try
         {
             _socket.Shutdown(SocketShutdown.Both);

@@ -186,7 +186,7 @@ public sealed class TcpLinkTests
         public void OnClosed(Exception? error) => ThreadName.TrySetResult("closed");
     }
 
-    private sealed class PostingReceiver(params string[] texts) : ILinkReceiver
+    internal sealed class PostingReceiver(params string[] texts) : ILinkReceiver
     {
         private int _reads;
 
@@ -239,7 +239,7 @@ public sealed class TcpLinkTests
     }
 
     /// <summary>A listening socket on loopback (port 0), a link connected to it, and the accepted server end.</summary>
-    private sealed class LinkPair : IAsyncDisposable
+    internal sealed class LinkPair : IAsyncDisposable
     {
         private readonly TcpListener _listener;
 
