@@ -123,6 +123,7 @@ MODULE Machina_Driver
         cursorTool := tool0;
         cursorWObj := wobj0;
         cursorTarget := CRobT(\Tool:=tool0 \WObj:=wobj0);
+        cursorTarget.robconf := [0, 0, 0, 0];
         cursorJoints := CJointT();
         cursorSpeed := v20;
         cursorZone := z5;
@@ -237,13 +238,13 @@ MODULE Machina_Driver
         ENDIF
         chunkLength := StrLen(chunk);
         WHILE runStart <= chunkLength DO
-            IF StrPart(chunk, runStart, 1) <> "@" THEN
-                RETURN;
-            ENDIF
             requestEnd := StrFind(chunk, runStart, NUMBER_REQUEST \NotInSet);
-            IF requestEnd > chunkLength THEN
-                pending := StrPart(chunk, runStart, requestEnd - runStart);
-                runStart := requestEnd;
+            IF requestEnd > chunkLength OR StrPart(chunk, runStart, 1) <> "@" THEN
+                ! A request that starts here and goes on in the next chunk waits in pending.
+                IF StrPart(chunk, runStart, 1) = "@" THEN
+                    pending := StrPart(chunk, runStart, requestEnd - runStart);
+                    runStart := requestEnd;
+                ENDIF
                 RETURN;
             ENDIF
             IF StrPart(chunk, requestEnd, 1) <> ";" OR StrMatch(chunk, runStart, "  ") < requestEnd OR StrPart(chunk, runStart + 1, 1) = " " THEN
@@ -463,17 +464,31 @@ MODULE Machina_Driver
             RETURN;
         ENDIF
         executing := TRUE;
+        ! Before each move (1, 2, 3, 30): a speed of 0 would never end, so the driver reports "$26 id 1;" and stops instead of
+        ! starting it; otherwise the move's id is shared with the monitor, whose trap reports a motion error of this move. The
+        ! target's robconf is [0, 0, 0, 0] from InitializeState on: a move sets its trans and rot.
         TEST r.code
         CASE 1:
-            CheckMotion r;
-            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
+            cursorTarget.trans := [r.p1, r.p2, r.p3];
+            cursorTarget.rot := [r.p4, r.p5, r.p6, r.p7];
             MoveL cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 2:
-            CheckMotion r;
-            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
+            cursorTarget.trans := [r.p1, r.p2, r.p3];
+            cursorTarget.rot := [r.p4, r.p5, r.p6, r.p7];
             MoveJ cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 3:
-            CheckMotion r;
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
             cursorJoints.robax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
             MoveAbsJ cursorJoints, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 4:
@@ -545,7 +560,10 @@ MODULE Machina_Driver
             AliasIO r.s1, inAnalog;
             SendIfConnected "$27 " + NumToStr(r.id, 0) + " " + NumToStr(AInput(inAnalog), 6) + ";";
         CASE 30:
-            CheckMotion r;
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
             ! The through point has the orientation request 31 gave (what a compiled MoveC's CirPoint has), else the current one.
             IF NOT arcThroughGiven THEN
                 arcThroughRot := CRobT(\Tool:=cursorTool \WObj:=cursorWObj).rot;
@@ -624,15 +642,6 @@ MODULE Machina_Driver
         readIndex := writeIndex;
         lastReceivedId := lastExecutedId;
         discarding := TRUE;
-    ENDPROC
-
-    ! Before a move: a speed of 0 would never end, so the driver reports "$26 id 1;" and stops instead of starting it.
-    ! Otherwise the move's id is shared with the monitor, whose trap reports a motion error of this move.
-    PROC CheckMotion(MachinaRequest r)
-        IF cursorSpeed.v_tcp <= 0 THEN
-            Fail r, 1;
-        ENDIF
-        machinaMotionId := r.id;
     ENDPROC
 
     ! Reports that request r could not run ("$26 id code;", never acknowledged) and ends the program: nothing after it runs.
