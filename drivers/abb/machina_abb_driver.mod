@@ -36,7 +36,6 @@ MODULE Machina_Driver
     CONST string TOKEN_ENDS := " \09\0A\0D;""@";
     ! The characters of a request of numbers alone, "@id code p1 ... pN;" up to its ';' (ReadWhole).
     CONST string NUMBER_REQUEST := "@0123456789 .+-Ee";
-    CONST num NO_VALUES{14} := [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];
 
     RECORD MachinaRequest
         num id;
@@ -68,8 +67,10 @@ MODULE Machina_Driver
     VAR bool corrupt := FALSE;
     ! The start of a request of numbers that the last chunk ended in, kept for the next one (JoinPending); "" when none.
     VAR string pending := "";
-    ! The numbers of the request ReadWhole reads (id, code, p1..p11, and one more that shows a 12th parameter).
+    ! The numbers of the request ReadWhole reads (id, code, p1..p11, and one more that shows a 12th parameter). Every slot above
+    ! valuesUsed holds 0, so that only the slots an earlier, longer request used are cleared for a shorter one.
     VAR num values{14};
+    VAR num valuesUsed := 14;
 
     VAR socketdev serverSocket;
     VAR socketdev clientSocket;
@@ -122,6 +123,7 @@ MODULE Machina_Driver
         cursorTool := tool0;
         cursorWObj := wobj0;
         cursorTarget := CRobT(\Tool:=tool0 \WObj:=wobj0);
+        cursorTarget.robconf := [0, 0, 0, 0];
         cursorJoints := CJointT();
         cursorSpeed := v20;
         cursorZone := z5;
@@ -216,7 +218,9 @@ MODULE Machina_Driver
             JoinPending chunk, runStart;
         ENDIF
         ReadWhole chunk, runStart;
-        ParseRuns chunk, runStart;
+        IF runStart <= StrLen(chunk) THEN
+            ParseRuns chunk, runStart;
+        ENDIF
     ENDPROC
 
     ! Reads whole requests from runStart on while the parser is between requests, each "@id code p1 ... pN;" of numbers apart
@@ -234,33 +238,48 @@ MODULE Machina_Driver
         ENDIF
         chunkLength := StrLen(chunk);
         WHILE runStart <= chunkLength DO
-            IF StrPart(chunk, runStart, 1) <> "@" THEN
-                RETURN;
-            ENDIF
             requestEnd := StrFind(chunk, runStart, NUMBER_REQUEST \NotInSet);
-            IF requestEnd > chunkLength THEN
-                pending := StrPart(chunk, runStart, requestEnd - runStart);
-                runStart := requestEnd;
+            IF requestEnd > chunkLength OR StrPart(chunk, runStart, 1) <> "@" THEN
+                ! A request that starts here and goes on in the next chunk waits in pending.
+                IF StrPart(chunk, runStart, 1) = "@" THEN
+                    pending := StrPart(chunk, runStart, requestEnd - runStart);
+                    runStart := requestEnd;
+                ENDIF
                 RETURN;
             ENDIF
             IF StrPart(chunk, requestEnd, 1) <> ";" OR StrMatch(chunk, runStart, "  ") < requestEnd OR StrPart(chunk, runStart + 1, 1) = " " THEN
                 RETURN;
             ENDIF
-            values := NO_VALUES;
             n := 0;
             position := runStart + 1;
             WHILE position < requestEnd DO
                 gap := StrFind(chunk, position, " ;");
                 n := n + 1;
                 IF n > 13 OR NOT StrToVal(StrPart(chunk, position, gap - position), values{n}) THEN
+                    valuesUsed := 14;
                     RETURN;
                 ENDIF
                 position := gap + 1;
             ENDWHILE
-            IF n < 2 THEN
-                RETURN;
+            ! valuesUsed is 2 or more: a request of fewer numbers (an id alone) is never buffered here.
+            IF n <> valuesUsed THEN
+                IF n < 2 THEN
+                    RETURN;
+                ENDIF
+                WHILE valuesUsed > n DO
+                    values{valuesUsed} := 0;
+                    valuesUsed := valuesUsed - 1;
+                ENDWHILE
+                valuesUsed := n;
             ENDIF
-            Buffer [values{1}, values{2}, "", values{3}, values{4}, values{5}, values{6}, values{7}, values{8}, values{9}, values{10}, values{11}, values{12}, values{13}];
+            ! Buffered as Buffer does, without its call and the copy of its parameter, and without its check for a full buffer: a
+            ! chunk is read only into an empty buffer (ReadRequests), and one chunk and the request joined to it hold at most 17.
+            requests{writeIndex} := [values{1}, values{2}, "", values{3}, values{4}, values{5}, values{6}, values{7}, values{8}, values{9}, values{10}, values{11}, values{12}, values{13}];
+            writeIndex := writeIndex MOD BUFFER_SIZE + 1;
+            requestCount := requestCount + 1;
+            IF values{1} > 0 AND NOT discarding THEN
+                lastReceivedId := values{1};
+            ENDIF
             runStart := requestEnd + 1;
         ENDWHILE
     ENDPROC
@@ -445,17 +464,31 @@ MODULE Machina_Driver
             RETURN;
         ENDIF
         executing := TRUE;
+        ! Before each move (1, 2, 3, 30): a speed of 0 would never end, so the driver reports "$26 id 1;" and stops instead of
+        ! starting it; otherwise the move's id is shared with the monitor, whose trap reports a motion error of this move. The
+        ! target's robconf is [0, 0, 0, 0] from InitializeState on: a move sets its trans and rot.
         TEST r.code
         CASE 1:
-            CheckMotion r;
-            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
+            cursorTarget.trans := [r.p1, r.p2, r.p3];
+            cursorTarget.rot := [r.p4, r.p5, r.p6, r.p7];
             MoveL cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 2:
-            CheckMotion r;
-            cursorTarget := [[r.p1, r.p2, r.p3], [r.p4, r.p5, r.p6, r.p7], [0, 0, 0, 0], cursorTarget.extax];
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
+            cursorTarget.trans := [r.p1, r.p2, r.p3];
+            cursorTarget.rot := [r.p4, r.p5, r.p6, r.p7];
             MoveJ cursorTarget, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 3:
-            CheckMotion r;
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
             cursorJoints.robax := [r.p1, r.p2, r.p3, r.p4, r.p5, r.p6];
             MoveAbsJ cursorJoints, cursorSpeed, cursorZone, cursorTool \WObj:=cursorWObj;
         CASE 4:
@@ -527,7 +560,10 @@ MODULE Machina_Driver
             AliasIO r.s1, inAnalog;
             SendIfConnected "$27 " + NumToStr(r.id, 0) + " " + NumToStr(AInput(inAnalog), 6) + ";";
         CASE 30:
-            CheckMotion r;
+            IF cursorSpeed.v_tcp <= 0 THEN
+                Fail r, 1;
+            ENDIF
+            machinaMotionId := r.id;
             ! The through point has the orientation request 31 gave (what a compiled MoveC's CirPoint has), else the current one.
             IF NOT arcThroughGiven THEN
                 arcThroughRot := CRobT(\Tool:=cursorTool \WObj:=cursorWObj).rot;
@@ -608,15 +644,6 @@ MODULE Machina_Driver
         discarding := TRUE;
     ENDPROC
 
-    ! Before a move: a speed of 0 would never end, so the driver reports "$26 id 1;" and stops instead of starting it.
-    ! Otherwise the move's id is shared with the monitor, whose trap reports a motion error of this move.
-    PROC CheckMotion(MachinaRequest r)
-        IF cursorSpeed.v_tcp <= 0 THEN
-            Fail r, 1;
-        ENDIF
-        machinaMotionId := r.id;
-    ENDPROC
-
     ! Reports that request r could not run ("$26 id code;", never acknowledged) and ends the program: nothing after it runs.
     PROC Fail(MachinaRequest r, num code)
         TPWrite "Machina: request " + NumToStr(r.id, 0) + " failed, code " + NumToStr(code, 0);
@@ -633,15 +660,16 @@ MODULE Machina_Driver
     ENDFUNC
 
     ! Acknowledges once per request, after it returned: "@id code;" or "code;" for id 0. It sends as SendIfConnected does (one
-    ! routine call less per request).
+    ! routine call less per request); a request with an id, to a connected host, takes one condition, one assignment and the send.
     PROC Acknowledge(MachinaRequest r)
-        IF r.id > 0 THEN
-            lastExecutedId := r.id;
-        ENDIF
         IF NOT clientConnected THEN
-            RETURN;
-        ENDIF
-        IF r.id = 0 THEN
+            IF r.id > 0 THEN
+                lastExecutedId := r.id;
+            ENDIF
+        ELSEIF r.id > 0 THEN
+            lastExecutedId := r.id;
+            SocketSend clientSocket \Str:="@" + NumToStr(r.id, 0) + " " + NumToStr(r.code, 0) + ";";
+        ELSEIF r.id = 0 THEN
             SocketSend clientSocket \Str:=NumToStr(r.code, 0) + ";";
         ELSE
             SocketSend clientSocket \Str:="@" + NumToStr(r.id, 0) + " " + NumToStr(r.code, 0) + ";";
