@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Net;
 using System.Net.Sockets;
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using System.Text;
 
 namespace Machina.Simulation.Krl;
@@ -363,7 +364,7 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             if (IsClient(client))
             {
                 // The seam sees the document before the program can take any of its values.
-                controller.Options.Seam?.Received(this, document);
+                controller.Options.Seam?.Received(this, CollectionsMarshal.AsSpan(document));
                 overflow = Store(document, memories, null, dropExcess: false);
                 stored = true;
             }
