@@ -25,8 +25,8 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private readonly ConnectionLog _connections;
     private byte[]? _heldTwinAcknowledgement;
 
-    /// <summary>The builder of the received actions' log text, between two documents (null while a reader uses it).</summary>
-    private StringBuilder? _receivedText;
+    /// <summary>The writer of the received actions' log text, between two documents (null while a reader uses it).</summary>
+    private EkiReceivedText? _receivedText;
 
     /// <summary>An action the driver channel received, held until the driver settles it.</summary>
     private sealed class TwinAction(int id)
@@ -88,42 +88,36 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private TwinHeldOutbox? DriverWire(TcpClient client) =>
         _options.AcknowledgementWrites == AcknowledgementWrites.Whole && Twin is { } twin ? new TwinHeldOutbox(client.Client, twin.Sends) : null;
 
-    void IEkiSeam.Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
+    void IEkiSeam.Received(EkiChannel channel, ReadOnlySpan<(string Tag, string Value)> values)
     {
         if (!IsDriver(channel))
         {
             return;
         }
-        // Each action's values, from its ID to the next ID, as the element the host wrote (one builder, kept between documents).
-        StringBuilder action = Interlocked.Exchange(ref _receivedText, null) ?? new StringBuilder();
-        bool open = false;
-        int id = 0;
-        foreach ((string tag, string value) in values)
+        // Each action's values, from its ID to the next ID, as the element the host wrote (one scratch, kept between documents).
+        EkiReceivedText text = Interlocked.Exchange(ref _receivedText, null) ?? new EkiReceivedText();
+        int start = NextId(values, 0);
+        while (start < values.Length)
         {
-            if (tag == "DT/DR/A/@ID")
+            int end = NextId(values, start + 1);
+            int id = int.TryParse(values[start].Value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
+            HoldReceived(id, text.Of(values[start..end]));
+            start = end;
+        }
+        _receivedText = text;
+    }
+
+    /// <summary>Where the next action's ID is in <paramref name="values"/> from <paramref name="from"/> on (their length when none).</summary>
+    private static int NextId(ReadOnlySpan<(string Tag, string Value)> values, int from)
+    {
+        for (int i = from; i < values.Length; i++)
+        {
+            if (values[i].Tag == "DT/DR/A/@ID")
             {
-                if (open)
-                {
-                    HoldReceived(id, action.Append("/>").ToString());
-                }
-                action.Clear().Append("<A");
-                open = true;
-                id = int.TryParse(value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
-            }
-            if (open)
-            {
-                int at = tag.LastIndexOf('@');
-                action.Append(' ').Append(tag, at + 1, tag.Length - at - 1).Append("=\"");
-                AppendEscaped(action, value);
-                action.Append('"');
+                return i;
             }
         }
-        if (open)
-        {
-            HoldReceived(id, action.Append("/>").ToString());
-        }
-        action.Clear();
-        _receivedText = action;
+        return values.Length;
     }
 
     /// <summary>Counts action <paramref name="id"/> received and holds it until the driver settles it (not when a restart cut its client off).</summary>
@@ -157,29 +151,6 @@ public sealed partial class VirtualKukaController : IEkiSeam
             }
         }
         return null;
-    }
-
-    /// <summary>
-    /// Appends <paramref name="value"/> with &amp;, &lt;, &gt; and " written as XML's entities (the same text four replacements
-    /// gave: each character is replaced on its own, and no entity holds one of the four but its leading &amp;); a value without
-    /// them, as every number is, is appended as it is.
-    /// </summary>
-    private static void AppendEscaped(StringBuilder text, string value)
-    {
-        ReadOnlySpan<char> rest = value;
-        int at;
-        while ((at = rest.IndexOfAny("&<>\"")) >= 0)
-        {
-            text.Append(rest[..at]).Append(rest[at] switch
-            {
-                '&' => "&amp;",
-                '<' => "&lt;",
-                '>' => "&gt;",
-                _ => "&quot;",
-            });
-            rest = rest[(at + 1)..];
-        }
-        text.Append(rest);
     }
 
     bool IEkiSeam.Send(EkiChannel channel, string root, string xml)

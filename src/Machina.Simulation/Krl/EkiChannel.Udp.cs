@@ -1,5 +1,6 @@
 using System.Net;
 using System.Net.Sockets;
+using System.Runtime.InteropServices;
 using System.Text;
 
 namespace Machina.Simulation.Krl;
@@ -103,7 +104,7 @@ internal sealed partial class EkiChannel
 
     private void CommitDatagram(UdpClient udp, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags)
     {
-        controller.Options.Seam?.Received(this, [.. document]);
+        controller.Options.Seam?.Received(this, CollectionsMarshal.AsSpan(document));
         bool overflow = false;
         lock (_link)
         {

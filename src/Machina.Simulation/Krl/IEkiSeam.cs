@@ -12,8 +12,8 @@ internal interface IEkiSeam
     /// <summary>A client connected to <paramref name="channel"/>; false refuses it (the channel closes it and listens on).</summary>
     bool Accepted(EkiChannel channel, TcpClient client);
 
-    /// <summary>A whole document arrived on <paramref name="channel"/>: its values in order (before the program can read them; the list is the reader's, read it during the call only).</summary>
-    void Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values);
+    /// <summary>A whole document arrived on <paramref name="channel"/>: its values in order (before the program can read them; they are the reader's, read them during the call only).</summary>
+    void Received(EkiChannel channel, ReadOnlySpan<(string Tag, string Value)> values);
 
     /// <summary>The program's EKI_Send of <paramref name="root"/> as <paramref name="xml"/>; true when it was sent (use <see cref="EkiChannel.SendDirect"/>).</summary>
     bool Send(EkiChannel channel, string root, string xml);

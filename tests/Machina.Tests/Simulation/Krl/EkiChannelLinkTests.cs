@@ -126,7 +126,7 @@ public class EkiChannelLinkTests
 
         public bool Accepted(EkiChannel channel, TcpClient client) => true;
 
-        public void Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
+        public void Received(EkiChannel channel, ReadOnlySpan<(string Tag, string Value)> values)
         {
         }
 
@@ -157,7 +157,7 @@ public class EkiChannelLinkTests
 
         public bool Accepted(EkiChannel channel, TcpClient client) => true;
 
-        public void Received(EkiChannel channel, IReadOnlyList<(string Tag, string Value)> values)
+        public void Received(EkiChannel channel, ReadOnlySpan<(string Tag, string Value)> values)
         {
             if (Interlocked.Increment(ref _received) == 1)
             {
