@@ -112,4 +112,31 @@ public class RapidFlatCopyTests
             "[TRUE,FALSE] [FALSE,FALSE]",
         ], lines);
     }
+
+    [Fact]
+    public void ComponentAndElementOfAnAbsentOptionalParameter_RaiseErrNotPres_AndOfANameReadItsCell()
+    {
+        IReadOnlyList<string> lines = Run(
+            """
+              Show;
+              Show \P:=[1, 2, 3], \A:=[4, 5];
+            """,
+            """
+            VAR num sum;
+            PROC Show(\pos P, \num A{*})
+              sum := P.x + A{2};
+              TPWrite "sum " + NumToStr(sum, 0);
+              P.y := A{1};
+              A{1} := P.z;
+              TPWrite ValToStr(P) + " " + ValToStr(A);
+            ERROR
+              IF ERRNO = ERR_NOTPRES THEN
+                TPWrite "not present";
+                RETURN;
+              ENDIF
+            ENDPROC
+            """);
+
+        Assert.Equal(["not present", "sum 6", "[1,4,3] [3,5]"], lines);
+    }
 }
