@@ -202,7 +202,8 @@ internal sealed partial class RapidMachine
         for (int k = 0; k < items.Length; k++)
         {
             object item = Evaluate(a.Items[k], frame);
-            items[k] = a.Items[k] is RapidAggregate ? item : RapidValues.Copy(item); // a nested aggregate is new already
+            // A nested aggregate is new already; a number, string or bool is its own copy (no call of Copy for it).
+            items[k] = item is RapidRecord or RapidArray && a.Items[k] is not RapidAggregate ? RapidValues.Copy(item) : item;
         }
         RapidDataType type = a.Type!.Value;
         return type.Rank > 0 ? new RapidArray([items.Length], items) : new RapidRecord(type.Element, items);

@@ -41,9 +41,11 @@ internal sealed class RapidType
     {
         Fields = fields;
         ScalarDefaults = new object?[fields.Count];
+        Flat = true;
         for (int i = 0; i < fields.Count; i++)
         {
             _index[fields[i].Name] = i;
+            Flat &= fields[i].Type is { Rank: 0, Element.Kind: not RapidTypeKind.Record };
             if (fields[i].Type is { Rank: 0, Element.Kind: RapidTypeKind.Num or RapidTypeKind.Dnum or RapidTypeKind.Bool or RapidTypeKind.String } scalar)
             {
                 ScalarDefaults[i] = RapidValues.Default(scalar);
@@ -56,6 +58,13 @@ internal sealed class RapidType
     /// a component that needs a value of its own (a record, an array or a non-value type); empty for other types.
     /// </summary>
     public object?[] ScalarDefaults { get; } = [];
+
+    /// <summary>
+    /// True for a record type none of whose components is a record or an array (pos, orient, a driver's request): a copy of its value
+    /// shares every component (<see cref="RapidValues.Copy"/> shares numbers, strings and non-value data), so it copies the component
+    /// references as they are, without looking at each.
+    /// </summary>
+    public bool Flat { get; }
 
     /// <summary>The type's name.</summary>
     public string Name { get; }

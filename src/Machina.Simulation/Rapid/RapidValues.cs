@@ -82,10 +82,24 @@ internal static class RapidValues
     /// <summary>A copy of <paramref name="value"/>: records and arrays are copied deeply; non-value data are shared.</summary>
     public static object Copy(object value) => value switch
     {
-        RapidRecord r => new RapidRecord(r.Type, CopyAll(r.Fields)),
-        RapidArray a => new RapidArray(a.Dimensions, CopyAll(a.Items)),
+        RapidRecord r => new RapidRecord(r.Type, r.Type.Flat ? Shared(r.Fields) : CopyAll(r.Fields)),
+        RapidArray a => new RapidArray(a.Dimensions, HoldsScalars(a) ? Shared(a.Items) : CopyAll(a.Items)),
         _ => value,
     };
+
+    /// <summary>
+    /// True when the elements of <paramref name="array"/> are neither records nor arrays (an array's elements are all of one type, so
+    /// its first tells): its copy shares them all, as <see cref="Copy"/> shares every number, string and non-value datum.
+    /// </summary>
+    private static bool HoldsScalars(RapidArray array) => array.Items.Length == 0 || array.Items[0] is not (RapidRecord or RapidArray);
+
+    /// <summary>A new array of the same references: the copy of components <see cref="Copy"/> would share one by one (<c>values := NO_VALUES</c>).</summary>
+    private static object[] Shared(object[] items)
+    {
+        var copy = new object[items.Length];
+        items.AsSpan().CopyTo(copy);
+        return copy;
+    }
 
     /// <summary>Gives <paramref name="record"/>, which nothing else refers to, the initial value of its type in place (<see cref="DefaultRecord"/>'s value).</summary>
     public static void ResetToDefault(RapidRecord record)
@@ -116,6 +130,11 @@ internal static class RapidValues
     public static void CopyInto(RapidRecord into, RapidRecord from)
     {
         object[] target = into.Fields, source = from.Fields;
+        if (from.Type.Flat)
+        {
+            source.AsSpan().CopyTo(target); // every component shared, as Copy would (r := requests{readIndex})
+            return;
+        }
         for (int i = 0; i < source.Length; i++)
         {
             object field = source[i];
