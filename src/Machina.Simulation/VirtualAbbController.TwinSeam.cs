@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Net.Sockets;
+using System.Runtime.CompilerServices;
 using System.Text;
 using Machina.Simulation.Rapid;
 using Machina.Simulation.Twin;
@@ -134,6 +135,8 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
     /// SocketReceive takes it, 80 characters at a time. When the host closes, what arrived stays readable. On a thread of its own,
     /// blocked in the socket's receive (the controller's stop closes the socket).
     /// </summary>
+    // Optimized at its first call: it runs once per connection, so it would run as first compiled until replaced in the running loop (OSR), compiled inside a stream (perf53e).
+    [MethodImpl(MethodImplOptions.AggressiveOptimization)]
     private void ReadDriver(Socket connection, RapidInbox inbox, CancellationToken token)
     {
         var buffer = new byte[4096];
