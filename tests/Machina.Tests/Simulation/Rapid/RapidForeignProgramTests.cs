@@ -228,9 +228,7 @@ public class RapidForeignProgramTests
         using var client = new TcpClient();
         client.Connect(IPAddress.Loopback, port);
         NetworkStream stream = client.GetStream();
-        stream.Write([0, 0]);
-        Thread.Sleep(50);
-        stream.Write([1, 2]); // 258, big-endian, in two pieces: \ReadNoOfBytes waits for all four
+        stream.Write([0, 0, 1, 2]); // 258, big-endian, in one write: \ReadNoOfBytes takes what has arrived, at most four
         var answer = new byte[4];
         stream.ReadTimeout = 10_000;
         stream.ReadExactly(answer);
