@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Text;
 
 namespace Machina.Simulation.Rapid;
 
@@ -43,7 +42,7 @@ internal static partial class RapidBuiltins
             case RapidTypeKind.Bool:
                 return ReadWord(text, ref at, "TRUE") ? RapidBoxes.Bool(true) : ReadWord(text, ref at, "FALSE") ? RapidBoxes.Bool(false) : null;
             case RapidTypeKind.String:
-                return ReadString(text, ref at);
+                return RapidLexer.StringLiteral(text, ref at);
             case RapidTypeKind.Record:
                 var fields = new object[element.Fields.Count];
                 if (!ReadChar(text, ref at, '['))
@@ -116,46 +115,6 @@ internal static partial class RapidBuiltins
         return double.TryParse(text[start..at], NumberStyles.Float, CultureInfo.InvariantCulture, out double value) && double.IsFinite(value)
             ? RapidBoxes.Num(value)
             : null;
-    }
-
-    /// <summary>A string literal: quotes around it, <c>""</c> for a quote, <c>\\</c> for a backslash, <c>\hh</c> for a character code.</summary>
-    private static string? ReadString(ReadOnlySpan<char> text, ref int at)
-    {
-        if (at >= text.Length || text[at] != '"')
-        {
-            return null;
-        }
-        var value = new StringBuilder();
-        for (at++; at < text.Length; at++)
-        {
-            char c = text[at];
-            if (c == '"')
-            {
-                if (at + 1 < text.Length && text[at + 1] == '"')
-                {
-                    value.Append('"');
-                    at++;
-                    continue;
-                }
-                at++;
-                return value.ToString();
-            }
-            if (c == '\\' && at + 1 < text.Length && text[at + 1] == '\\')
-            {
-                value.Append('\\');
-                at++;
-            }
-            else if (c == '\\' && at + 2 < text.Length && byte.TryParse(text.Slice(at + 1, 2), NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out byte code))
-            {
-                value.Append((char)code);
-                at += 2;
-            }
-            else
-            {
-                value.Append(c);
-            }
-        }
-        return null; // no closing quote
     }
 
     private static bool ReadWord(ReadOnlySpan<char> text, ref int at, string word)

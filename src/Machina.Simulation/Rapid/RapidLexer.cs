@@ -149,14 +149,30 @@ internal sealed class RapidLexer(string text)
 
     private static RapidToken String(string text, ref int i, int line)
     {
-        var value = new StringBuilder();
-        i++;
-        while (true)
+        // A literal ends on its line: the rest of the line is all it may take.
+        int lineEnd = text.IndexOf('\n', i);
+        int at = 0;
+        string value = StringLiteral(text.AsSpan(i, (lineEnd < 0 ? text.Length : lineEnd) - i), ref at)
+            ?? throw new RapidLoadException(line, RapidLoadException.Syntax("string not terminated"));
+        i += at;
+        return new RapidToken(RapidTokenKind.String, value, 0, line);
+    }
+
+    /// <summary>
+    /// The value of the string literal that starts at <paramref name="at"/> (its opening quote): <c>""</c> is a quote, <c>\\</c> a
+    /// backslash, <c>\hh</c> the character of hexadecimal code hh. <paramref name="at"/> moves past its closing quote; null when there
+    /// is no literal there or it has no closing quote. The lexer's and StrToVal's reading of a string.
+    /// </summary>
+    internal static string? StringLiteral(ReadOnlySpan<char> text, ref int at)
+    {
+        if (at >= text.Length || text[at] != '"')
         {
-            if (i >= text.Length || text[i] == '\n')
-            {
-                throw new RapidLoadException(line, RapidLoadException.Syntax("string not terminated"));
-            }
+            return null;
+        }
+        var value = new StringBuilder();
+        int i = at + 1;
+        while (i < text.Length)
+        {
             char c = text[i];
             if (c == '"')
             {
@@ -166,8 +182,8 @@ internal sealed class RapidLexer(string text)
                     i += 2;
                     continue;
                 }
-                i++;
-                break;
+                at = i + 1;
+                return value.ToString();
             }
             if (c == '\\' && i + 1 < text.Length && text[i + 1] == '\\')
             {
@@ -176,7 +192,7 @@ internal sealed class RapidLexer(string text)
             }
             else if (c == '\\' && i + 2 < text.Length && char.IsAsciiHexDigit(text[i + 1]) && char.IsAsciiHexDigit(text[i + 2]))
             {
-                value.Append((char)int.Parse(text.AsSpan(i + 1, 2), NumberStyles.HexNumber, CultureInfo.InvariantCulture));
+                value.Append((char)int.Parse(text.Slice(i + 1, 2), NumberStyles.HexNumber, CultureInfo.InvariantCulture));
                 i += 3;
             }
             else
@@ -185,6 +201,6 @@ internal sealed class RapidLexer(string text)
                 i++;
             }
         }
-        return new RapidToken(RapidTokenKind.String, value.ToString(), 0, line);
+        return null;
     }
 }
