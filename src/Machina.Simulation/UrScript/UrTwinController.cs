@@ -384,12 +384,12 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         }
     }
 
-    /// <summary>As <see cref="EndsWithin(Task, TimeSpan, CancellationToken)"/>, blocking the calling thread.</summary>
+    /// <summary>As <see cref="EndsWithin(Task, TimeSpan, CancellationToken)"/>, blocking the calling thread (a twin's wait, <see cref="TwinWait"/>).</summary>
     private static bool EndsWithinBlocking(Task task, TimeSpan timeout, CancellationToken cancellation)
     {
         try
         {
-            return task.Wait(timeout, cancellation);
+            return task.IsCompleted || TwinWait.For(task, timeout, cancellation);
         }
         catch (OperationCanceledException) when (cancellation.IsCancellationRequested)
         {
