@@ -22,6 +22,30 @@ internal sealed partial class TwinArm
         }
     }
 
+    /// <summary>
+    /// The corner the arm may round now (<see cref="PendingBlend"/>) or, when there is none, the joints now and the tool centre point
+    /// at them (<see cref="Now"/>; default when there is a corner), in one look at the gate: a Cartesian KRL motion took it for each.
+    /// </summary>
+    public TwinBlend? PendingBlendOrNow(out Joints joints, out Pose tcp)
+    {
+        TwinBlend? blend;
+        Pose flange;
+        bool known;
+        lock (_gate)
+        {
+            blend = _blend;
+            if (blend is not null)
+            {
+                (joints, tcp) = (default, default);
+                return blend;
+            }
+            joints = JointsNow();
+            known = KeptFlange(joints, out flange);
+        }
+        tcp = (known ? flange : Forward(joints)) * ToolCenter;
+        return null;
+    }
+
     private TwinBlend? TakeBlend()
     {
         lock (_gate)
