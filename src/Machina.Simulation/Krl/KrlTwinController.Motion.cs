@@ -49,15 +49,27 @@ internal sealed partial class KrlTwinController
     }
 
     /// <summary>An E6POS of the TCP at <paramref name="tcp"/> (base frame of the robot) in $BASE, with S and T of <paramref name="joints"/>.</summary>
-    private KrlStructValue PositionOf(Pose tcp, Joints joints)
+    private KrlStructValue PositionOf(Pose tcp, Joints joints) => PositionOf(tcp, joints, KeptBase());
+
+    /// <summary><see cref="PositionOf(Pose, Joints)"/> in the base frame <paramref name="baseFrame"/>.</summary>
+    private KrlStructValue PositionOf(Pose tcp, Joints joints, KeptFrame baseFrame)
     {
-        Pose pose = BaseFrame().Inverse() * tcp;
-        YawPitchRoll abc = pose.Rotation.ToYawPitchRoll();
+        Span<double> c = stackalloc double[6];
+        PositionComponents(tcp, baseFrame, c);
         KukaConfiguration configuration = KukaConfiguration.From(Options.Model, joints);
         var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Pos);
         object[] v = value.Values;
-        (v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) = (pose.Position.X, pose.Position.Y, pose.Position.Z, abc.Yaw, abc.Pitch, abc.Roll, configuration.Status, configuration.Turn);
+        (v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) = (c[0], c[1], c[2], c[3], c[4], c[5], configuration.Status, configuration.Turn);
         return value;
+    }
+
+    /// <summary>X, Y, Z, A, B and C of the TCP at <paramref name="tcp"/> (base frame of the robot) in <paramref name="baseFrame"/>: an E6POS's six REALs, unboxed.</summary>
+    private static void PositionComponents(Pose tcp, KeptFrame baseFrame, Span<double> components)
+    {
+        Pose pose = baseFrame.Inverse * tcp;
+        YawPitchRoll abc = pose.Rotation.ToYawPitchRoll();
+        (components[0], components[1], components[2], components[3], components[4], components[5]) =
+            (pose.Position.X, pose.Position.Y, pose.Position.Z, abc.Yaw, abc.Pitch, abc.Roll);
     }
 
     /// <summary>BAS(#INITMOV): axis speeds and accelerations 100 %, path speed and acceleration to the defaults.</summary>
@@ -98,17 +110,31 @@ internal sealed partial class KrlTwinController
         KeptFrame baseFrame = KeptBase(), tool = KeptTool();
         Span<double> target = stackalloc double[6];
         PoseComponents(position, target);
+        return Solve(baseFrame, tool, target, near, useStatusTurn ? position : null, out _, out _, out why);
+    }
+
+    /// <summary>
+    /// The axes that put the TCP at the six components <paramref name="target"/> (in <paramref name="baseFrame"/> with
+    /// <paramref name="tool"/>), nearest to <paramref name="near"/>; with a <paramref name="statusTurn"/> position only those of its S
+    /// and T. <paramref name="to"/> is the target's pose in $BASE, <paramref name="goal"/> in the robot's base frame (kept with the
+    /// answer: the motion after the driver's INVERSE uses them again).
+    /// </summary>
+    private Joints? Solve(KeptFrame baseFrame, KeptFrame tool, ReadOnlySpan<double> target, Joints near, KrlStructValue? statusTurn, out Pose to, out Pose goal,
+        out string why)
+    {
         IKinematics kinematics = Options.Model.Kinematics;
-        if (!useStatusTurn && KeptFor(kinematics, baseFrame, tool, target, near) is { } kept)
+        if (statusTurn is null && KeptFor(kinematics, baseFrame, tool, target, near) is { } kept)
         {
-            why = kept.Why;
+            (to, goal, why) = (kept.To, kept.Goal, kept.Why);
             return kept.Solution;
         }
-        Pose flange = baseFrame.Pose * PoseOf(target) * tool.Pose.Inverse();
+        to = PoseOf(target);
+        goal = baseFrame.Pose * to;
+        Pose flange = goal * tool.Inverse;
         why = "";
-        if (useStatusTurn)
+        if (statusTurn is not null)
         {
-            return SolveWithStatusTurn(position, flange, near, out why);
+            return SolveWithStatusTurn(statusTurn, flange, near, out why);
         }
         Joints? solution = kinematics.Closest(flange, near);
         if (solution is null)
@@ -117,13 +143,13 @@ internal sealed partial class KrlTwinController
                 ? $"the axis position that reaches it is beyond the software limit switches ({issue})"
                 : "it is outside the robot's workspace";
         }
-        _keptSolution = new KeptSolution(kinematics, baseFrame, tool, target.ToArray(), near, solution, why);
+        _keptSolution = new KeptSolution(kinematics, baseFrame, tool, target.ToArray(), near, solution, why, to, goal);
         return solution;
     }
 
     /// <summary>
     /// The axes of the position's S and T that put the flange at <paramref name="flange"/>, nearest to <paramref name="near"/> (a
-    /// method of its own: its lambdas' closure was made at every <see cref="Solve"/>, two an action).
+    /// method of its own: its lambdas' closure was made at every solve, two an action).
     /// </summary>
     private Joints? SolveWithStatusTurn(KrlStructValue position, Pose flange, Joints near, out string why)
     {
@@ -154,36 +180,53 @@ internal sealed partial class KrlTwinController
         {
             Arm.FinishBlend(cancellation);
         }
-        TwinBlend? blend = Arm.PendingBlend;
-        Joints start = blend?.CornerJoints ?? Arm.Joints;
+        TwinBlend? blend;
+        Joints start;
         Joints end;
         double pathMm = 0, turnDegrees = 0;
         Pose? goal = null;
         TwinArc? arc = null;
-        KrlStructValue? axes = IsAxes(target) ? ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true) : null;
-        if (axes is not null)
+        if (IsAxes(target))
         {
-            end = JointsOf(axes);
+            blend = Arm.PendingBlend;
+            start = blend?.CornerJoints ?? Arm.Joints;
+            end = JointsOf(ToStruct(target, AxesValue(start), KrlTypes.E6Axis, axesOnly: true)!);
             RequireSoftLimits(end);
         }
         else
         {
-            KrlStructValue current = blend is null ? (KrlStructValue)PositionNow() : PositionOf(blend.Corner, blend.CornerJoints);
-            KrlStructValue position = ToStruct(target, current, KrlTypes.E6Pos, axesOnly: false)!;
+            // The pending corner, or the joints and the TCP now, in one look at the arm.
+            blend = Arm.PendingBlendOrNow(out Joints here, out Pose tcp);
+            start = blend?.CornerJoints ?? here;
+            Pose corner = blend?.Corner ?? tcp;
+            KeptFrame baseFrame = KeptBase(), tool = KeptTool();
             bool statusTurn = kind == "PTP" && Given(target, "S") && Given(target, "T");
-            end = Solve(position, start, statusTurn, out string why)
-                ?? throw new KrlRuntimeException($"Target not reachable: {kind} {DescribeXyz(position)}: {why}");
+            // The start and the target as X, Y, Z, A, B and C in $BASE. A target of a Cartesian type that gives only these (a FRAME,
+            // a POS or E6POS written whole, or an aggregate of them) takes the rest from the start: no E6POS of the start and no copy
+            // of it are made, the six REALs are the ones they would hold. S and T (a PTP's), a CIRC's auxiliary point or another type
+            // go through the E6POS.
+            Span<double> here6 = stackalloc double[6], there6 = stackalloc double[6];
+            KrlStructValue? current = null, position = null;
+            if (statusTurn || kind == "CIRC" || !TargetPose(target, here6, corner, baseFrame, there6))
+            {
+                current = PositionOf(corner, start, baseFrame);
+                position = ToStruct(target, current, KrlTypes.E6Pos, axesOnly: false)!;
+                PoseComponents(current, here6);
+                PoseComponents(position, there6);
+            }
+            end = Solve(baseFrame, tool, there6, start, statusTurn ? position : null, out Pose to, out Pose toGoal, out string why)
+                ?? throw new KrlRuntimeException($"Target not reachable: {kind} {DescribeXyz(there6)}: {why}");
             RequireSoftLimits(end);
-            Pose from = PoseOf(current), to = PoseOf(position);
-            goal = BaseFrame() * to;
+            Pose from = PoseOf(here6);
+            goal = toGoal;
             pathMm = (to.Position - from.Position).Length;
             turnDegrees = TwinRotation.AngleDegrees(from.Rotation, to.Rotation);
             if (kind == "CIRC" && auxiliary is not null)
             {
                 // The circle through the start, the auxiliary point and the end, in the robot's base frame; the tool turns evenly
                 // from the start to the end orientation in space ($ORI_TYPE #VAR, $CIRC_TYPE #BASE; the auxiliary point's is not used).
-                Pose via = PoseOf(ToStruct(auxiliary, current, KrlTypes.E6Pos, axesOnly: false)!);
-                Pose frame = BaseFrame();
+                Pose via = PoseOf(ToStruct(auxiliary, current!, KrlTypes.E6Pos, axesOnly: false)!);
+                Pose frame = baseFrame.Pose;
                 arc = TwinArc.Through(frame * from, (frame * via).Position, frame * to, TwinArcOrientation.Even) ?? throw new KrlRuntimeException(string.Create(CultureInfo.InvariantCulture,
                     $"Circle not possible: CIRC: the start, auxiliary and end points do not define a circle {TwinArc.NotACircle}"));
                 pathMm = arc.LengthMm;
@@ -193,28 +236,77 @@ internal sealed partial class KrlTwinController
         // Only the first motion of a run looks with a locked exchange (a locked instruction at every motion before).
         bool bco = Volatile.Read(ref _coincident) == 0 && Interlocked.Exchange(ref _coincident, 1) == 0;
         string text = bco ? kind + (approximation is null ? "" : " " + approximation) + " " + BcoRun : MotionText(kind, approximation);
-        if (kind == "LIN" && goal is { } tcp && !bco)
+        if (kind == "LIN" && goal is { } tcpGoal && !bco)
         {
             (double v, double acceleration) = PathSpeed();
             double zone = ApproximationMm(approximation, pathMm, turnDegrees, v, acceleration);
             bool mayBlend = zone > 0 && (int)Motion.Advance.Value >= 1 && !HasExternalInputs;
-            Arm.MoveLinear(new TwinLinearMove(tcp, end, v, acceleration, seconds, zone, mayBlend), line, text, cancellation);
+            Arm.MoveLinear(new TwinLinearMove(tcpGoal, end, v, acceleration, seconds, zone, mayBlend), line, text, cancellation);
             return;
         }
         Arm.FinishBlend(cancellation);
         Arm.MoveTo(end, seconds, line, text, cancellation, linear: kind == "LIN", arc: arc);
     }
 
+    /// <summary>
+    /// The target's X, Y, Z, A, B and C into <paramref name="there"/>, those it does not give from the TCP at <paramref name="tcp"/>
+    /// (in <paramref name="baseFrame"/>, into <paramref name="here"/>), as the E6POS the target converts to would hold them; false
+    /// (nothing read) unless the target is a FRAME, POS or E6POS, or an aggregate of one that gives no other component (a given S,
+    /// T or external axis is converted, and checked, as the E6POS's).
+    /// </summary>
+    private static bool TargetPose(object target, Span<double> here, Pose tcp, KeptFrame baseFrame, Span<double> there)
+    {
+        switch (target)
+        {
+            case KrlStructValue whole when KrlTypes.IsCartesian(whole.Type):
+            {
+                PositionComponents(tcp, baseFrame, here);
+                PoseComponents(whole, there); // X to C are the first six components of all three, all given
+                return true;
+            }
+            case KrlPartialValue part when KrlTypes.IsCartesian(part.Type):
+            {
+                int[] given = part.Indexes;
+                for (int i = 0; i < given.Length; i++)
+                {
+                    if ((uint)given[i] >= 6)
+                    {
+                        return false;
+                    }
+                }
+                PositionComponents(tcp, baseFrame, here);
+                here.CopyTo(there);
+                for (int i = 0; i < given.Length; i++)
+                {
+                    there[given[i]] = KrlValues.ToReal(part.Values[i]);
+                }
+                return true;
+            }
+            default:
+                return false;
+        }
+    }
+
     /// <summary>The trace's text of each motion keyword and approximation met (a handful per program: made once, not per motion).</summary>
     private readonly Dictionary<(string Kind, string? Approximation), string> _motionTexts = [];
 
+    /// <summary>The last text given, with its keyword and approximation (the same strings of the same statement: no look-up, which hashed both).</summary>
+    private MotionTextKept? _lastMotionText;
+
+    private sealed record MotionTextKept(string Kind, string? Approximation, string Text);
+
     private string MotionText(string kind, string? approximation)
     {
+        if (_lastMotionText is { } last && ReferenceEquals(last.Kind, kind) && ReferenceEquals(last.Approximation, approximation))
+        {
+            return last.Text;
+        }
         if (!_motionTexts.TryGetValue((kind, approximation), out string? text))
         {
             text = approximation is null ? kind : kind + " " + approximation;
             _motionTexts[(kind, approximation)] = text;
         }
+        _lastMotionText = new MotionTextKept(kind, approximation, text);
         return text;
     }
 
@@ -280,8 +372,8 @@ internal sealed partial class KrlTwinController
         }
     }
 
-    private static string DescribeXyz(KrlStructValue position) => string.Create(CultureInfo.InvariantCulture,
-        $"{{X {position.Number("X"):0.###}, Y {position.Number("Y"):0.###}, Z {position.Number("Z"):0.###}, A {position.Number("A"):0.###}, B {position.Number("B"):0.###}, C {position.Number("C"):0.###}}}");
+    private static string DescribeXyz(ReadOnlySpan<double> p) => string.Create(CultureInfo.InvariantCulture,
+        $"{{X {p[0]:0.###}, Y {p[1]:0.###}, Z {p[2]:0.###}, A {p[3]:0.###}, B {p[4]:0.###}, C {p[5]:0.###}}}");
 
     /// <summary>PTP time: the slowest axis at $VEL_AXIS % of its speed, ramping at $ACC_AXIS %.</summary>
     private double AxisSeconds(Joints from, Joints to)

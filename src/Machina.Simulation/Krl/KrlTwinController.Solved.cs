@@ -12,16 +12,22 @@ internal sealed partial class KrlTwinController
     private KeptFrame? _keptTool;
     private KeptSolution? _keptSolution;
 
-    /// <summary>A frame's six components (X, Y, Z, A, B, C) and its pose.</summary>
+    /// <summary>A frame's six components (X, Y, Z, A, B, C), its pose and the pose's inverse (made once: a motion used it each time).</summary>
     private sealed class KeptFrame(double[] components, Pose pose)
     {
         public double[] Components { get; } = components;
 
         public Pose Pose { get; } = pose;
+
+        public Pose Inverse { get; } = pose.Inverse();
     }
 
-    /// <summary>A target solved: the frames and the target's six components, the axes it was solved from, and the answer.</summary>
-    private sealed class KeptSolution(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, double[] target, Joints near, Joints? solution, string why)
+    /// <summary>
+    /// A target solved: the frames and the target's six components, the axes it was solved from, and the answer; with the target's
+    /// pose in $BASE (<see cref="To"/>) and in the robot's base frame (<see cref="Goal"/>), which the motion to it uses again.
+    /// </summary>
+    private sealed class KeptSolution(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, double[] target, Joints near, Joints? solution, string why,
+        Pose to, Pose goal)
     {
         public IKinematics Kinematics { get; } = kinematics;
 
@@ -36,6 +42,10 @@ internal sealed partial class KrlTwinController
         public Joints? Solution { get; } = solution;
 
         public string Why { get; } = why;
+
+        public Pose To { get; } = to;
+
+        public Pose Goal { get; } = goal;
     }
 
     /// <summary>$BASE as a pose (taken again while its components are the same).</summary>

@@ -22,6 +22,30 @@ internal sealed partial class TwinArm
         }
     }
 
+    /// <summary>
+    /// The corner the arm may round now (<see cref="PendingBlend"/>) or, when there is none, the joints now and the tool centre point
+    /// at them (<see cref="Now"/>; default when there is a corner), in one look at the gate: a Cartesian KRL motion took it for each.
+    /// </summary>
+    public TwinBlend? PendingBlendOrNow(out Joints joints, out Pose tcp)
+    {
+        TwinBlend? blend;
+        Pose flange;
+        bool known;
+        lock (_gate)
+        {
+            blend = _blend;
+            if (blend is not null)
+            {
+                (joints, tcp) = (default, default);
+                return blend;
+            }
+            joints = JointsNow();
+            known = KeptFlange(joints, out flange);
+        }
+        tcp = (known ? flange : Forward(joints)) * ToolCenter;
+        return null;
+    }
+
     private TwinBlend? TakeBlend()
     {
         lock (_gate)
@@ -103,7 +127,8 @@ internal sealed partial class TwinArm
         Joints end = radius > 0 ? Near(way.At(total), Lerp(first, move.Joints, (metres - radius) / metres)) : move.Joints;
         double seconds = blendSeconds + profile.Seconds;
         // The path is made only when the arm is part-way along it (an interpolated or woken motion): a motion in one step needs none.
-        bool reached = MoveTo(end, seconds, line, text, cancellation, move.Joints, true, true, new BlendedPath(this, way, total, here, end), null);
+        // Without a zone of its own the motion ends at the joints checked above: not looked at again.
+        bool reached = MoveTo(end, seconds, line, text, cancellation, move.Joints, true, true, new BlendedPath(this, way, total, here, end), null, within: radius == 0);
         if (radius > 0 && reached) // a cleared path ends it early: the arm stands where it stopped, nothing to blend
         {
             lock (_gate)

@@ -119,10 +119,16 @@ internal sealed partial class TwinArm
         Pose flange = Model.Kinematics.Forward(joints);
         lock (_gate)
         {
-            ForwardSolves++;
-            (_forwardJoints, _forwardFlange, _hasForward) = (joints, flange, true);
+            KeepFlange(joints, flange);
         }
         return flange;
+    }
+
+    /// <summary>Keeps <paramref name="flange"/>, the forward kinematics of <paramref name="joints"/>, for <see cref="FlangeAt"/> (under the gate).</summary>
+    private void KeepFlange(Joints joints, Pose flange)
+    {
+        ForwardSolves++;
+        (_forwardJoints, _forwardFlange, _hasForward) = (joints, flange, true);
     }
 
     /// <summary>How many times the forward kinematics ran for this arm (<see cref="FlangeAt"/>'s misses; tests count them).</summary>
@@ -214,12 +220,19 @@ internal sealed partial class TwinArm
         Func<double, Joints>? path = null, TwinArc? arc = null) =>
         MoveTo(target, seconds, line, text, cancellation, traced, trace, linear, new GivenPath(path), arc);
 
-    /// <summary><see cref="MoveTo(Joints, double, int, string, CancellationToken, Joints?, bool, bool, Func{double, Joints}?, TwinArc?)"/> with a path made only when a motion is part-way along it.</summary>
+    /// <summary>
+    /// <see cref="MoveTo(Joints, double, int, string, CancellationToken, Joints?, bool, bool, Func{double, Joints}?, TwinArc?)"/> with a path
+    /// made only when a motion is part-way along it; <c>within</c>: the caller checked the target within the joint limits already
+    /// (not looked at again).
+    /// </summary>
     private bool MoveTo<TPath>(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace, bool linear,
-        in TPath path, TwinArc? arc)
+        in TPath path, TwinArc? arc, bool within = false)
         where TPath : struct, ITwinPath
     {
-        RequireWithinLimits(target);
+        if (!within)
+        {
+            RequireWithinLimits(target);
+        }
         if (Interpolates && Clock.RealTime && seconds > 0)
         {
             return MoveAlongPath(target, seconds, line, text, cancellation, traced, trace, linear, path, arc);
@@ -235,17 +248,36 @@ internal sealed partial class TwinArm
     private bool MoveInOneStep(Joints target, double seconds, int line, string text, CancellationToken cancellation, Joints? traced, bool trace)
     {
         Clock.Wait(seconds, cancellation);
+        if (!trace)
+        {
+            lock (_gate)
+            {
+                _joints = target;
+            }
+            return true;
+        }
         // The trace's step is made before the arm is at the target (the joints it is at are the target's) and added with them in
-        // one look at the gate.
+        // one look at the gate, which keeps the flange pose of a forward solve too (FlangeAt kept it in a look of its own).
         Joints at = traced ?? target;
-        TwinTraceEntry? entry = trace ? new TwinTraceEntry(line, TwinTraceKind.Motion, at, FlangeAt(at) * ToolCenter, text, Clock.Seconds) : null;
+        Pose flange;
+        bool known;
         lock (_gate)
         {
-            _joints = target;
-            if (entry is { } step)
+            known = KeptFlange(at, out flange);
+        }
+        if (!known)
+        {
+            flange = Model.Kinematics.Forward(at);
+        }
+        var entry = new TwinTraceEntry(line, TwinTraceKind.Motion, at, flange * ToolCenter, text, Clock.Seconds);
+        lock (_gate)
+        {
+            if (!known)
             {
-                Add(step);
+                KeepFlange(at, flange);
             }
+            _joints = target;
+            Add(entry);
         }
         return true;
     }
