@@ -228,7 +228,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                     frame[local.Slot] = made;
                     return Flow.Next;
                 }
-                Assign(assign.Target, value, frame);
+                Assign(assign, value, frame);
                 return Flow.Next;
             }
             case KrlCallStmt call:
@@ -246,7 +246,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 }
                 return Flow.Next;
             case KrlIf branch:
-                return Block((bool)Eval(branch.Condition, frame) ? branch.Then : branch.Else, frame);
+                return Block(BoolOf(branch.Condition, frame) ? branch.Then : branch.Else, frame);
             case KrlLoop loop:
                 return Loop(loop, frame);
             case KrlFor loop:
@@ -335,7 +335,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             Cancellation.ThrowIfCancellationRequested();
             Step();
-            if (loop.Kind == KrlLoopKind.While && !(bool)Eval(loop.Condition!, frame))
+            if (loop.Kind == KrlLoopKind.While && !BoolOf(loop.Condition!, frame))
             {
                 return Flow.Next;
             }
@@ -349,7 +349,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 return flow;
             }
             Line = loop.Line;
-            if (loop.Kind == KrlLoopKind.Repeat && (bool)Eval(loop.Condition!, frame))
+            if (loop.Kind == KrlLoopKind.Repeat && BoolOf(loop.Condition!, frame))
             {
                 return Flow.Next;
             }
@@ -363,9 +363,9 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private Flow For(KrlFor loop, object[] frame)
     {
         KrlPlace counter = Place(loop.Counter, frame);
-        int from = KrlValues.ToInt(Eval(loop.From, frame));
-        int to = KrlValues.ToInt(Eval(loop.To, frame));
-        int step = loop.Step is null ? 1 : KrlValues.ToInt(Eval(loop.Step, frame));
+        int from = IntOf(loop.From, frame);
+        int to = IntOf(loop.To, frame);
+        int step = loop.Step is null ? 1 : IntOf(loop.Step, frame);
         if (step == 0)
         {
             throw new KrlRuntimeException("FOR with STEP 0 never ends");
@@ -410,11 +410,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         Controller.EndAdvanceRun(Cancellation);
         if (!wait.ForCondition)
         {
-            double seconds = KrlValues.ToReal(Eval(wait.Value, frame));
+            double seconds = RealOf(wait.Value, frame);
             Controller.WaitSeconds(seconds, wait.Line, Cancellation);
             return;
         }
-        if ((bool)Eval(wait.Value, frame))
+        if (BoolOf(wait.Value, frame))
         {
             return;
         }
@@ -426,7 +426,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 // The change count before the look that decides to sleep: a change after the look ends the sleep at once.
                 long version = Controller.InputsVersion;
-                if ((bool)Eval(wait.Value, frame))
+                if (BoolOf(wait.Value, frame))
                 {
                     return;
                 }
@@ -489,7 +489,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 _interruptsOn += on ? 1 : -1;
             }
-            _interrupts[priority] = (entry.Declaration, entry.Frame, on, on && (bool)Eval(entry.Declaration.Condition, entry.Frame));
+            _interrupts[priority] = (entry.Declaration, entry.Frame, on, on && BoolOf(entry.Declaration.Condition, entry.Frame));
         }
         if (change.Priority is { } missing && !_interrupts.ContainsKey(missing))
         {
@@ -587,7 +587,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 continue;
             }
-            bool now = (bool)Eval(entry.Declaration.Condition, entry.Frame);
+            bool now = BoolOf(entry.Declaration.Condition, entry.Frame);
             if (now != entry.Last)
             {
                 _interrupts[priority] = entry with { Last = now };
@@ -604,7 +604,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                     // however long the twin's thread waits before its next look, and its next rising edge is not lost.
                     if (_interrupts.TryGetValue(priority, out var after) && after.On && ReferenceEquals(after.Declaration, entry.Declaration))
                     {
-                        _interrupts[priority] = after with { Last = (bool)Eval(after.Declaration.Condition, after.Frame) };
+                        _interrupts[priority] = after with { Last = BoolOf(after.Declaration.Condition, after.Frame) };
                     }
                 }
                 finally
