@@ -267,6 +267,22 @@ internal sealed partial class KrlMachine
                 }
                 return;
             }
+            case KrlStore.Cell:
+            {
+                // A data list's or system variable (the driver's ring counters, machina_running, last_executed: eight an action):
+                // what its place would do, without making the place.
+                var name = (KrlName)target;
+                KrlCell cell = name.Cell!;
+                object[] box = cell.Box;
+                box[0] = KrlConvert.To(name.Type, value, box[0]);
+                cell.CountWrite();
+                cell.Written?.Invoke(-1);
+                if (_watchesAll || _watchesComputed || cell.Watched)
+                {
+                    _writes++;
+                }
+                return;
+            }
             default:
                 Place(target, frame).Set(value);
                 if (_watchesAll || _watchesComputed || !LocalOrUnwatched(target))

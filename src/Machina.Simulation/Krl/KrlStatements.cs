@@ -26,6 +26,7 @@ internal sealed class KrlAssign(int line, KrlExpr target, KrlExpr value) : KrlSt
         KrlName { Slot: >= 0 } => KrlStore.Local,
         KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Each.Length > 0 && index.Each[^1] is not null => KrlStore.Element,
         KrlMember { Target: KrlName { Slot: >= 0 } } => KrlStore.LocalMember,
+        KrlName { Cell.Signals: null } => KrlStore.Cell,
         _ => KrlStore.Place,
     };
 }
@@ -44,6 +45,9 @@ internal enum KrlStore : byte
 
     /// <summary>A component of a local structure.</summary>
     LocalMember,
+
+    /// <summary>A variable of a data list or a system variable (not an IO array).</summary>
+    Cell,
 
     /// <summary>Through its place (<see cref="KrlPlace"/>).</summary>
     Place,
