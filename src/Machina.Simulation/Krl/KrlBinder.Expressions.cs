@@ -97,6 +97,10 @@ internal sealed partial class KrlBinder
         {
             throw Error(index.Line, $"{Describe(index.Target)} is a {array}, not an array");
         }
+        index.Access = index.Indices.Count == 0 ? KrlAccess.Whole
+            : index.Indices[^1] is null || index.Target is not KrlName name ? KrlAccess.Place
+            : name.Cell?.Signals is not null ? KrlAccess.Signal
+            : KrlAccess.Element;
         if (index.Indices.Count == 0)
         {
             return array;

@@ -1,10 +1,21 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina.Simulation.Krl;
 
 /// <summary>Assignment conversions of KRL: INT and REAL into each other, structures component by component, strings into CHAR arrays.</summary>
 internal static class KrlConvert
 {
     /// <summary><paramref name="value"/> as a value of <paramref name="type"/>; <paramref name="old"/> gives the components an aggregate leaves out.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static object To(KrlType type, object value, object? old)
+    {
+        // The usual store (an INT into an INT, a REAL into a REAL: most of the driver's, several dozen an action) inlines.
+        KrlKind kind = type.Kind;
+        return (kind == KrlKind.Real && value is double) || (kind == KrlKind.Int && value is int) ? value : Converted(type, value, old);
+    }
+
+    /// <summary>The rest of <see cref="To"/>: a conversion, a copy or a structure filled in.</summary>
+    private static object Converted(KrlType type, object value, object? old)
     {
         switch (type.Kind)
         {

@@ -6,33 +6,35 @@ internal sealed partial class KrlMachine
     /// <summary>The value of <paramref name="expr"/> in <paramref name="frame"/>.</summary>
     public object Eval(KrlExpr expr, object[] frame)
     {
-        switch (expr)
+        switch (expr.Node)
         {
-            case KrlLiteral literal:
-                return literal.Value;
-            case KrlName name:
-                return name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value;
-            case KrlMember member:
-                return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
-            case KrlIndex index when index.Each.Length == 0:
-                return Eval(index.Target, frame);
-            case KrlIndex { Target: KrlName { Cell.Signals: { } signals } } index when index.Each[^1] is not null:
-                return signals.Get(Flat(index, signals.Type, signals.Type.Length, frame));
-            case KrlIndex { Target: KrlName } index when index.Each[^1] is not null:
+            case KrlNode.Literal:
+                return ((KrlLiteral)expr).Value;
+            case KrlNode.Name:
             {
-                var array = (KrlArrayValue)Eval(index.Target, frame);
-                return array.Items[Flat(index, array.Type, array.Items.Length, frame)];
+                var name = (KrlName)expr;
+                return name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value;
             }
-            case KrlIndex index:
-                return Place(index, frame).Get();
-            case KrlCall call:
+            case KrlNode.Member:
+            {
+                var member = (KrlMember)expr;
+                return ((KrlStructValue)Eval(member.Target, frame)).Values[member.FieldIndex];
+            }
+            case KrlNode.Index:
+                return Element((KrlIndex)expr, frame);
+            case KrlNode.Call:
+            {
+                var call = (KrlCall)expr;
                 if (!WritesNothingWatched(call))
                 {
                     _writes++;
                 }
                 CheckStack();
                 return Call(call, frame)!;
-            case KrlUnary unary:
+            }
+            case KrlNode.Unary:
+            {
+                var unary = (KrlUnary)expr;
                 CheckStack();
                 object operand = Eval(unary.Operand, frame);
                 return unary.Op switch
@@ -41,11 +43,21 @@ internal sealed partial class KrlMachine
                     "B_NOT" => ~(int)operand,
                     _ => operand is int i ? -i : -(double)operand,
                 };
-            case KrlBinary binary:
-                CheckStack();
-                return Binary(binary, Eval(binary.Left, frame), Eval(binary.Right, frame));
-            case KrlAggregate aggregate:
+            }
+            case KrlNode.Binary:
             {
+                // Typed: the operands and any operation under them are evaluated without a box per intermediate value.
+                var binary = (KrlBinary)expr;
+                return binary.Type.Kind switch
+                {
+                    KrlKind.Real => (object)RealBinary(binary, frame),
+                    KrlKind.Bool => KrlValues.Box(BoolBinary(binary, frame)),
+                    _ => KrlValues.Box(IntBinary(binary, frame)),
+                };
+            }
+            case KrlNode.Aggregate:
+            {
+                var aggregate = (KrlAggregate)expr;
                 var values = new object[aggregate.Fields.Count];
                 for (int i = 0; i < values.Length; i++)
                 {
@@ -56,6 +68,29 @@ internal sealed partial class KrlMachine
             }
             default:
                 throw new KrlRuntimeException("an expression the twin cannot evaluate");
+        }
+    }
+
+    /// <summary>The value of an element, a row or a whole array (<see cref="KrlIndex.Access"/> says which, fixed by the binder).</summary>
+    private object Element(KrlIndex index, object[] frame)
+    {
+        switch (index.Access)
+        {
+            case KrlAccess.Element:
+            {
+                var name = (KrlName)index.Target;
+                var array = (KrlArrayValue)(name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value);
+                return array.Items[Flat(index, array.Type, array.Items.Length, frame)];
+            }
+            case KrlAccess.Signal:
+            {
+                KrlSignalArray signals = ((KrlName)index.Target).Cell!.Signals!;
+                return signals.Get(Flat(index, signals.Type, signals.Type.Length, frame));
+            }
+            case KrlAccess.Whole:
+                return Eval(index.Target, frame);
+            default:
+                return Place(index, frame).Get();
         }
     }
 
@@ -135,7 +170,7 @@ internal sealed partial class KrlMachine
         for (int d = 0; d < indices.Length; d++)
         {
             int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
-            int i = indices[d] is { } e ? KrlValues.ToInt(Eval(e, frame)) : 1;
+            int i = indices[d] is { } e ? IntOf(e, frame) : 1;
             if (i < 1 || i > size)
             {
                 throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
@@ -182,16 +217,21 @@ internal sealed partial class KrlMachine
         _ => false,
     };
 
-    /// <summary>Stores <paramref name="value"/> in <paramref name="target"/> (locals and plain array elements without a place object).</summary>
-    private void Assign(KrlExpr target, object value, object[] frame)
+    /// <summary>Stores <paramref name="value"/> in the target of <paramref name="assign"/> (locals, plain array elements and local components without a place object).</summary>
+    private void Assign(KrlAssign assign, object value, object[] frame)
     {
-        switch (target)
+        KrlExpr target = assign.Target;
+        switch (assign.Store)
         {
-            case KrlName { Slot: >= 0 } local:
+            case KrlStore.Local:
+            {
+                var local = (KrlName)target;
                 frame[local.Slot] = KrlConvert.To(local.Type, value, frame[local.Slot]);
                 return;
-            case KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Each.Length > 0 && index.Each[^1] is not null:
+            }
+            case KrlStore.Element:
             {
+                var index = (KrlIndex)target;
                 var array = (KrlArrayValue)Eval(index.Target, frame);
                 int flat = Flat(index, array.Type, array.Items.Length, frame);
                 array.Items[flat] = KrlConvert.To(index.Type, value, array.Items[flat]);
@@ -206,8 +246,10 @@ internal sealed partial class KrlMachine
                 }
                 return;
             }
-            case KrlMember { Target: KrlName { Slot: >= 0 } local } member:
+            case KrlStore.LocalMember:
             {
+                var member = (KrlMember)target;
+                var local = (KrlName)member.Target;
                 // A component of a local structure (the driver's target.X = … and pose.X = …, twelve an action): what its place
                 // would do, without making the place.
                 var structure = (KrlStructValue)(frame[local.Slot] ??= KrlValues.Default(local.Type));
@@ -220,6 +262,22 @@ internal sealed partial class KrlMachine
                 structure.Values[field] = KrlConvert.To(member.Type, value, structure.Values[field]);
                 structure.Give(field);
                 if (_watchesAll || _watchesComputed)
+                {
+                    _writes++;
+                }
+                return;
+            }
+            case KrlStore.Cell:
+            {
+                // A data list's or system variable (the driver's ring counters, machina_running, last_executed: eight an action):
+                // what its place would do, without making the place.
+                var name = (KrlName)target;
+                KrlCell cell = name.Cell!;
+                object[] box = cell.Box;
+                box[0] = KrlConvert.To(name.Type, value, box[0]);
+                cell.CountWrite();
+                cell.Written?.Invoke(-1);
+                if (_watchesAll || _watchesComputed || cell.Watched)
                 {
                     _writes++;
                 }
@@ -247,7 +305,7 @@ internal sealed partial class KrlMachine
         for (int d = 0; d < indices.Length; d++)
         {
             int size = sizes[d] == 0 ? length : sizes[d];
-            int i = KrlValues.ToInt(Eval(indices[d]!, frame));
+            int i = IntOf(indices[d]!, frame);
             if (i < 1 || i > size)
             {
                 throw new KrlRuntimeException($"Array index inadmissible: index {i} of {Describe(index.Target)} is outside 1 to {size}");
@@ -290,56 +348,6 @@ internal sealed partial class KrlMachine
         {
             GiveBack(mark);
         }
-    }
-
-    private static object Binary(KrlBinary binary, object left, object right)
-    {
-        int code = binary.Code;
-        switch (code)
-        {
-            case 4:
-                return KrlValues.Box((bool)left && (bool)right);
-            case 5:
-                return KrlValues.Box((bool)left || (bool)right);
-            case 6:
-                return KrlValues.Box((bool)left ^ (bool)right);
-            case 7:
-                return (int)left & (int)right;
-            case 8:
-                return (int)left | (int)right;
-            case 9:
-                return (int)left ^ (int)right;
-            case 10:
-                return KrlValues.Box(Equal(left, right));
-            case 11:
-                return KrlValues.Box(!Equal(left, right));
-        }
-        if (left is char cl && right is char cr)
-        {
-            return KrlValues.Box(Compare(code, cl.CompareTo(cr)));
-        }
-        if (left is int a && right is int b)
-        {
-            return code switch
-            {
-                0 => KrlValues.Box(a + b),
-                1 => KrlValues.Box(a - b),
-                2 => KrlValues.Box(a * b),
-                3 => b == 0 ? throw new KrlRuntimeException("Division by 0")
-                    : a == int.MinValue && b == -1 ? throw new KrlRuntimeException("Arithmetic overflow: -2147483648 / -1 is not an INT")
-                    : KrlValues.Box(a / b),
-                _ => KrlValues.Box(Compare(code, a.CompareTo(b))),
-            };
-        }
-        double x = KrlValues.ToReal(left), y = KrlValues.ToReal(right);
-        return code switch
-        {
-            0 => x + y,
-            1 => x - y,
-            2 => x * y,
-            3 => y == 0 ? throw new KrlRuntimeException("Division by 0") : x / y,
-            _ => KrlValues.Box(Compare(code, x.CompareTo(y))),
-        };
     }
 
     private static bool Compare(int code, int sign) => code switch

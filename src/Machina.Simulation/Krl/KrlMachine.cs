@@ -17,9 +17,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         Goto,
     }
 
-    private readonly Dictionary<int, (KrlInterruptDecl Declaration, object[] Frame, bool On, bool Last)> _interrupts = [];
+    private readonly Dictionary<int, KrlInterruptState> _interrupts = [];
     private int _interruptsOn;
-    private int[] _interruptOrder = [];
+
+    /// <summary>The declared interrupts, highest priority (lowest number) first.</summary>
+    private KrlInterruptState[] _interruptOrder = [];
     private long _writes;
 
     /// <summary>True when a declared interrupt's condition reads more than data list and system variables (a call, a local).</summary>
@@ -228,7 +230,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                     frame[local.Slot] = made;
                     return Flow.Next;
                 }
-                Assign(assign.Target, value, frame);
+                Assign(assign, value, frame);
                 return Flow.Next;
             }
             case KrlCallStmt call:
@@ -246,7 +248,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 }
                 return Flow.Next;
             case KrlIf branch:
-                return Block((bool)Eval(branch.Condition, frame) ? branch.Then : branch.Else, frame);
+                return Block(BoolOf(branch.Condition, frame) ? branch.Then : branch.Else, frame);
             case KrlLoop loop:
                 return Loop(loop, frame);
             case KrlFor loop:
@@ -282,12 +284,22 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             case KrlLabel:
                 return Flow.Next;
             case KrlInterruptDecl declaration:
-                if (_interrupts.TryGetValue(declaration.Priority, out var old) && old.On)
+                if (_interrupts.TryGetValue(declaration.Priority, out KrlInterruptState? old))
                 {
-                    _interruptsOn--;
+                    if (old.On)
+                    {
+                        _interruptsOn--;
+                    }
+                    old.Declaration = declaration;
+                    old.Frame = frame;
+                    old.On = false;
+                    old.Last = false;
                 }
-                _interrupts[declaration.Priority] = (declaration, frame, false, false);
-                _interruptOrder = [.. _interrupts.Keys.Order()];
+                else
+                {
+                    _interrupts[declaration.Priority] = new KrlInterruptState(declaration, frame);
+                    _interruptOrder = [.. _interrupts.OrderBy(e => e.Key).Select(e => e.Value)];
+                }
                 Watch(declaration.Condition);
                 _interruptsLookAtTime |= !declaration.Woken;
                 return Flow.Next;
@@ -335,7 +347,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             Cancellation.ThrowIfCancellationRequested();
             Step();
-            if (loop.Kind == KrlLoopKind.While && !(bool)Eval(loop.Condition!, frame))
+            if (loop.Kind == KrlLoopKind.While && !BoolOf(loop.Condition!, frame))
             {
                 return Flow.Next;
             }
@@ -349,7 +361,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 return flow;
             }
             Line = loop.Line;
-            if (loop.Kind == KrlLoopKind.Repeat && (bool)Eval(loop.Condition!, frame))
+            if (loop.Kind == KrlLoopKind.Repeat && BoolOf(loop.Condition!, frame))
             {
                 return Flow.Next;
             }
@@ -363,9 +375,9 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     private Flow For(KrlFor loop, object[] frame)
     {
         KrlPlace counter = Place(loop.Counter, frame);
-        int from = KrlValues.ToInt(Eval(loop.From, frame));
-        int to = KrlValues.ToInt(Eval(loop.To, frame));
-        int step = loop.Step is null ? 1 : KrlValues.ToInt(Eval(loop.Step, frame));
+        int from = IntOf(loop.From, frame);
+        int to = IntOf(loop.To, frame);
+        int step = loop.Step is null ? 1 : IntOf(loop.Step, frame);
         if (step == 0)
         {
             throw new KrlRuntimeException("FOR with STEP 0 never ends");
@@ -410,11 +422,11 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         Controller.EndAdvanceRun(Cancellation);
         if (!wait.ForCondition)
         {
-            double seconds = KrlValues.ToReal(Eval(wait.Value, frame));
+            double seconds = RealOf(wait.Value, frame);
             Controller.WaitSeconds(seconds, wait.Line, Cancellation);
             return;
         }
-        if ((bool)Eval(wait.Value, frame))
+        if (BoolOf(wait.Value, frame))
         {
             return;
         }
@@ -426,7 +438,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 // The change count before the look that decides to sleep: a change after the look ends the sleep at once.
                 long version = Controller.InputsVersion;
-                if ((bool)Eval(wait.Value, frame))
+                if (BoolOf(wait.Value, frame))
                 {
                     return;
                 }
@@ -483,13 +495,15 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             {
                 continue;
             }
-            var entry = _interrupts[priority];
+            KrlInterruptState entry = _interrupts[priority];
             bool on = change.Action is "ON" or "ENABLE";
             if (on != entry.On)
             {
                 _interruptsOn += on ? 1 : -1;
             }
-            _interrupts[priority] = (entry.Declaration, entry.Frame, on, on && (bool)Eval(entry.Declaration.Condition, entry.Frame));
+            bool last = on && BoolOf(entry.Declaration.Condition, entry.Frame);
+            entry.On = on;
+            entry.Last = last;
         }
         if (change.Priority is { } missing && !_interrupts.ContainsKey(missing))
         {
@@ -580,31 +594,30 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// <summary>Runs the handler of each switched-on interrupt whose condition has just become TRUE (edge), highest priority first.</summary>
     private void CheckInterrupts()
     {
-        foreach (int priority in _interruptOrder)
+        foreach (KrlInterruptState entry in _interruptOrder)
         {
-            var entry = _interrupts[priority];
             if (!entry.On)
             {
                 continue;
             }
-            bool now = (bool)Eval(entry.Declaration.Condition, entry.Frame);
-            if (now != entry.Last)
-            {
-                _interrupts[priority] = entry with { Last = now };
-            }
-            if (now && !entry.Last)
+            KrlInterruptDecl declaration = entry.Declaration;
+            object[] frame = entry.Frame;
+            bool now = BoolOf(declaration.Condition, frame);
+            bool last = entry.Last;
+            entry.Last = now;
+            if (now && !last)
             {
                 _inInterrupt = true;
-                _interruptFrame = entry.Frame;
+                _interruptFrame = frame;
                 int line = Line;
                 try
                 {
-                    Call(entry.Declaration.Handler, entry.Frame);
+                    Call(declaration.Handler, frame);
                     // The condition as the routine left it (a timer set back, a flag reset): the controller's next cycle sees it so,
                     // however long the twin's thread waits before its next look, and its next rising edge is not lost.
-                    if (_interrupts.TryGetValue(priority, out var after) && after.On && ReferenceEquals(after.Declaration, entry.Declaration))
+                    if (entry.On && ReferenceEquals(entry.Declaration, declaration))
                     {
-                        _interrupts[priority] = after with { Last = (bool)Eval(after.Declaration.Condition, after.Frame) };
+                        entry.Last = BoolOf(declaration.Condition, entry.Frame);
                     }
                 }
                 finally

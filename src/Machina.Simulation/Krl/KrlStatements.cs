@@ -15,6 +15,42 @@ internal sealed class KrlAssign(int line, KrlExpr target, KrlExpr value) : KrlSt
 
     /// <summary>The value.</summary>
     public KrlExpr Value { get; } = value;
+
+    private KrlStore _store;
+
+    /// <summary>How the interpreter stores into <see cref="Target"/> (found at the first run, when the program is bound).</summary>
+    public KrlStore Store => _store != KrlStore.Unknown ? _store : _store = StoreOf(Target);
+
+    private static KrlStore StoreOf(KrlExpr target) => target switch
+    {
+        KrlName { Slot: >= 0 } => KrlStore.Local,
+        KrlIndex { Target: KrlName { Slot: >= 0 } or KrlName { Cell.Written: null } } index when index.Each.Length > 0 && index.Each[^1] is not null => KrlStore.Element,
+        KrlMember { Target: KrlName { Slot: >= 0 } } => KrlStore.LocalMember,
+        KrlName { Cell.Signals: null } => KrlStore.Cell,
+        _ => KrlStore.Place,
+    };
+}
+
+/// <summary>The kinds of store of <see cref="KrlAssign"/>.</summary>
+internal enum KrlStore : byte
+{
+    /// <summary>Not found yet.</summary>
+    Unknown,
+
+    /// <summary>A local variable or parameter.</summary>
+    Local,
+
+    /// <summary>An element of an array local, or of an array variable told of no write (<see cref="KrlCell.Written"/>).</summary>
+    Element,
+
+    /// <summary>A component of a local structure.</summary>
+    LocalMember,
+
+    /// <summary>A variable of a data list or a system variable (not an IO array).</summary>
+    Cell,
+
+    /// <summary>Through its place (<see cref="KrlPlace"/>).</summary>
+    Place,
 }
 
 /// <summary>A routine call as a statement.</summary>
