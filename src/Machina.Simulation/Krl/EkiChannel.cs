@@ -423,13 +423,12 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return overflow;
     }
 
-    private bool IsClient(TcpClient client)
-    {
-        lock (_gate)
-        {
-            return ReferenceEquals(_client, client);
-        }
-    }
+    /// <summary>
+    /// Whether <paramref name="client"/> is still the channel's connection; call it under the link. The connection is set and
+    /// cleared only under the link (<see cref="Attach"/>, <see cref="Disconnect"/>), so the link's holder reads it without the
+    /// gate (the reader took the gate too, twice a document: once to store, once to raise its flags).
+    /// </summary>
+    private bool IsClient(TcpClient client) => ReferenceEquals(Volatile.Read(ref _client), client);
 
     /// <summary>Ends the connection of <paramref name="client"/> if it is still the channel's, its flag down before this returns.</summary>
     private void Disconnect(TcpClient client)
