@@ -596,6 +596,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return false;
     }
 
+    /// <summary>Where a flat document is written before it becomes its string (guarded by the gate).</summary>
+    private char[] _sendText = new char[64];
+
     /// <summary>The document EKI_Send writes for <paramref name="root"/> with the values set (call it under the gate).</summary>
     private string Document(string root)
     {
@@ -609,7 +612,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             attributes = EkiSendDocument.FlatAttributes(root, Configuration.Send);
             _sendShapes[root] = attributes;
         }
-        return attributes is not null ? EkiSendDocument.WriteFlat(root, attributes, _toSend) : EkiSendDocument.Write(root, Configuration.Send, _toSend);
+        return attributes is not null
+            ? EkiSendDocument.WriteFlat(root, attributes, _toSend, ref _sendText)
+            : EkiSendDocument.Write(root, Configuration.Send, _toSend);
     }
 
     /// <summary>
