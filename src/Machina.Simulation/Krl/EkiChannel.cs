@@ -423,13 +423,12 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return overflow;
     }
 
-    private bool IsClient(TcpClient client)
-    {
-        lock (_gate)
-        {
-            return ReferenceEquals(_client, client);
-        }
-    }
+    /// <summary>
+    /// Whether <paramref name="client"/> is still the channel's connection; call it under the link. The connection is set and
+    /// cleared only under the link (<see cref="Attach"/>, <see cref="Disconnect"/>), so the link's holder reads it without the
+    /// gate (the reader took the gate too, twice a document: once to store, once to raise its flags).
+    /// </summary>
+    private bool IsClient(TcpClient client) => ReferenceEquals(Volatile.Read(ref _client), client);
 
     /// <summary>Ends the connection of <paramref name="client"/> if it is still the channel's, its flag down before this returns.</summary>
     private void Disconnect(TcpClient client)
@@ -515,14 +514,22 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
     private readonly (string? Tag, EkiMemory? Memory)[] _named = new (string?, EkiMemory?)[32];
     private int _nextNamed;
 
+    /// <summary>How many entries of the table are in use, and where the next look starts (guarded by the gate).</summary>
+    private int _namedCount;
+    private int _nextLook;
+
     /// <summary>The memory of <paramref name="tag"/> (call it under the gate); the program stops when the channel receives no such element.</summary>
     private EkiMemory Memory(string tag)
     {
         (string? Tag, EkiMemory? Memory)[] named = _named;
-        for (int i = 0; i < named.Length && named[i].Tag is { } seen; i++)
+        // From the entry after the one found last: a program names its tags in the same order action after action (the driver's
+        // EKI_CheckBuffer and ten EKI_Get), so the next one is found at the first look instead of after half the table.
+        int count = _namedCount;
+        for (int k = 0, i = _nextLook; k < count; k++, i = i + 1 == count ? 0 : i + 1)
         {
-            if (ReferenceEquals(seen, tag))
+            if (ReferenceEquals(named[i].Tag, tag))
             {
+                _nextLook = i + 1 == count ? 0 : i + 1;
                 return named[i].Memory!;
             }
         }
@@ -532,6 +539,8 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         }
         named[_nextNamed] = (tag, memory);
         _nextNamed = (_nextNamed + 1) % named.Length;
+        _namedCount = Math.Max(_namedCount, _nextNamed == 0 ? named.Length : _nextNamed);
+        _nextLook = _nextNamed == 0 || _nextNamed >= _namedCount ? 0 : _nextNamed;
         return memory;
     }
 
@@ -597,6 +606,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         return false;
     }
 
+    /// <summary>Where a flat document is written before it becomes its string (guarded by the gate).</summary>
+    private char[] _sendText = new char[64];
+
     /// <summary>The document EKI_Send writes for <paramref name="root"/> with the values set (call it under the gate).</summary>
     private string Document(string root)
     {
@@ -610,7 +622,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
             attributes = EkiSendDocument.FlatAttributes(root, Configuration.Send);
             _sendShapes[root] = attributes;
         }
-        return attributes is not null ? EkiSendDocument.WriteFlat(root, attributes, _toSend) : EkiSendDocument.Write(root, Configuration.Send, _toSend);
+        return attributes is not null
+            ? EkiSendDocument.WriteFlat(root, attributes, _toSend, ref _sendText)
+            : EkiSendDocument.Write(root, Configuration.Send, _toSend);
     }
 
     /// <summary>

@@ -108,16 +108,44 @@ internal static class EkiSendDocument
     /// <summary>The document of an element with only <paramref name="attributes"/> (see <see cref="FlatAttributes"/>), those set, in order.</summary>
     public static string WriteFlat(string root, string[] attributes, IReadOnlyDictionary<string, string> values)
     {
+        char[] scratch = new char[64];
+        return WriteFlat(root, attributes, values, ref scratch);
+    }
+
+    /// <summary>
+    /// <see cref="WriteFlat(string, string[], IReadOnlyDictionary{string, string})"/> written in <paramref name="scratch"/> (grown
+    /// when too small, kept by the caller between sends): one string a send, where a builder made the builder, its buffer and the
+    /// string (the driver's acknowledgement, once an action).
+    /// </summary>
+    public static string WriteFlat(string root, string[] attributes, IReadOnlyDictionary<string, string> values, ref char[] scratch)
+    {
         int skip = root.Length + 2; // "root/@"
-        var flat = new StringBuilder(64).Append('<').Append(root);
+        int length = 0;
+        Append(ref scratch, ref length, "<");
+        Append(ref scratch, ref length, root);
         foreach (string tag in attributes)
         {
             if (values.TryGetValue(tag, out string? value))
             {
-                flat.Append(' ').Append(tag, skip, tag.Length - skip).Append("=\"").Append(EkiChannel.Escape(value)).Append('"');
+                Append(ref scratch, ref length, " ");
+                Append(ref scratch, ref length, tag.AsSpan(skip));
+                Append(ref scratch, ref length, "=\"");
+                Append(ref scratch, ref length, EkiChannel.Escape(value));
+                Append(ref scratch, ref length, "\"");
             }
         }
-        return flat.Append(" />").ToString();
+        Append(ref scratch, ref length, " />");
+        return new string(scratch, 0, length);
+    }
+
+    private static void Append(ref char[] scratch, ref int length, ReadOnlySpan<char> text)
+    {
+        if (length + text.Length > scratch.Length)
+        {
+            Array.Resize(ref scratch, Math.Max(scratch.Length * 2, length + text.Length));
+        }
+        text.CopyTo(scratch.AsSpan(length));
+        length += text.Length;
     }
 
     /// <summary>True when <paramref name="tags"/> name <paramref name="root"/> itself or an element below it (not only its attributes).</summary>

@@ -31,6 +31,23 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
     /// <summary>The parent of the top-level elements (its path is empty).</summary>
     private readonly Element _root = new("", "");
 
+    /// <summary>
+    /// An attribute seen below an element: its name, its tag, and the value it had last (when short and without an entity), handed
+    /// again while the same characters arrive: a stream repeats most values (the action type, the orientation, an empty message),
+    /// so a document makes a string only for the values that changed.
+    /// </summary>
+    private sealed class KeptAttribute(string name, string tag)
+    {
+        public string Name { get; } = name;
+
+        public string Tag { get; } = tag;
+
+        public string? Last { get; set; }
+    }
+
+    /// <summary>The longest value an attribute keeps to hand again (longer ones are new strings each time).</summary>
+    private const int MaxKeptValue = 64;
+
     /// <summary>Characters of the names kept in <see cref="Element"/>s.</summary>
     private int _keptCharacters;
 
@@ -61,7 +78,7 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
 
         public List<Element> Children { get; } = [];
 
-        public List<(string Name, string Tag)> Attributes { get; } = [];
+        public List<KeptAttribute> Attributes { get; } = [];
 
         /// <summary>Where the search for the next child starts: the one after the child found last (a stream repeats its order).</summary>
         public int NextChild { get; set; }
@@ -215,7 +232,15 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
                 throw new FormatException($"an attribute of <{element.ToString()}> is not closed");
             }
             end += equals + 2;
-            Value?.Invoke(AttributeTag(opened, body[i..equals].Trim()), Decode(body[(equals + 2)..end]));
+            ReadOnlySpan<char> value = body[(equals + 2)..end];
+            if (AttributeOf(opened, body[i..equals].Trim()) is { } attribute)
+            {
+                Value?.Invoke(attribute.Tag, Repeated(attribute, value));
+            }
+            else
+            {
+                Value?.Invoke(opened.Path + "/@" + body[i..equals].Trim().ToString(), Decode(value));
+            }
             i = end + 1;
         }
         if (empty)
@@ -247,27 +272,44 @@ internal sealed class EkiXmlSplitter(int maxDocument = EkiConfiguration.DefaultB
         return element;
     }
 
-    /// <summary>The tag of attribute <paramref name="name"/> of <paramref name="element"/> (<c>DT/DR/A/@ID</c>).</summary>
-    private string AttributeTag(Element element, ReadOnlySpan<char> name)
+    /// <summary>
+    /// The attribute <paramref name="name"/> of <paramref name="element"/> (its tag <c>DT/DR/A/@ID</c>): one seen before, or a new
+    /// one kept while there is room; null when there is none (the caller joins the tag itself).
+    /// </summary>
+    private KeptAttribute? AttributeOf(Element element, ReadOnlySpan<char> name)
     {
-        List<(string Name, string Tag)> attributes = element.Attributes;
+        List<KeptAttribute> attributes = element.Attributes;
         int count = attributes.Count;
         for (int k = 0, i = element.NextAttribute; k < count; k++, i = i + 1 == count ? 0 : i + 1)
         {
-            (string known, string tag) = attributes[i];
-            if (name.SequenceEqual(known))
+            KeptAttribute known = attributes[i];
+            if (name.SequenceEqual(known.Name))
             {
                 element.NextAttribute = i + 1 == count ? 0 : i + 1;
-                return tag;
+                return known;
             }
         }
         string text = name.ToString();
         string joined = element.Path + "/@" + text;
         if (element.Attributes.Count < MaxKeptPerElement && Keep(joined.Length))
         {
-            element.Attributes.Add((text, joined));
+            var attribute = new KeptAttribute(text, joined);
+            element.Attributes.Add(attribute);
+            return attribute;
         }
-        return joined;
+        return null;
+    }
+
+    /// <summary>The value <paramref name="raw"/> of <paramref name="attribute"/>: the string it had last when the characters are the same, else decoded anew (and kept when short and without an entity).</summary>
+    private static string Repeated(KeptAttribute attribute, ReadOnlySpan<char> raw)
+    {
+        if (attribute.Last is { } last && raw.SequenceEqual(last))
+        {
+            return last;
+        }
+        string value = Decode(raw);
+        attribute.Last = raw.Length <= MaxKeptValue && !raw.Contains('&') ? value : null;
+        return value;
     }
 
     /// <summary>True (and counted) when <paramref name="characters"/> more fit in what the splitter keeps.</summary>
