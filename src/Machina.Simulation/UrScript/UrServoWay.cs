@@ -78,17 +78,6 @@ internal sealed class UrServoWay : IUrSpeedWay
         return Joints.FromArray(q);
     }
 
-    /// <summary>The joint speeds (degrees per second) <paramref name="seconds"/> after the start.</summary>
-    public double[] SpeedsAt(double seconds)
-    {
-        double[] v = new double[6];
-        for (int i = 0; i < 6 && seconds < Settles; i++)
-        {
-            v[i] = Free(_error[i], _speed[i], Math.Max(seconds, 0)).V;
-        }
-        return v;
-    }
-
     /// <summary>
     /// The fastest each joint moves on this way (degrees per second): at the start, or where its acceleration first changes
     /// sign (on a damped system every later extreme is smaller).
