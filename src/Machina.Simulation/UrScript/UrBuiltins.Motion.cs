@@ -164,30 +164,23 @@ internal static partial class UrBuiltins
         return UrNone.Value;
     }
 
+    /// <summary>
+    /// servoj: the arm tracks q for t seconds with the servo's lookahead_time and gain (a and v are not used, as on a UR) and goes on
+    /// tracking it after the call returned (<see cref="UrTwinController.Servo"/>).
+    /// </summary>
     private static object ServoJ(UrMachine m, int line, object[] a)
     {
         Joints to = UrGeometry.ToJoints(Six(a, 0, line, "servoj", "q"), line);
         double time = Num(a, 3, line, "servoj", "t");
-        if (!(time > 0))
+        if (!(time > 0) || !double.IsFinite(time))
         {
             throw new UrRuntimeException(line, "servoj: argument 't' must be positive");
         }
+        double lookahead = Positive(Num(a, 4, line, "servoj", "lookahead_time"), line, "servoj", "lookahead_time");
+        double gain = Positive(Num(a, 5, line, "servoj", "gain"), line, "servoj", "gain");
         FinishBlend(m, line);
-        TakeControl(m, line, "servoj");
-        Joints from = m.Controller.Arm.Joints;
-        if (m.Controller.Arm.Model.MaxJointSpeeds is { } max)
-        {
-            double[] delta = (to - from).ToArray(), limit = max.ToArray();
-            for (int i = 0; i < 6; i++)
-            {
-                if (Math.Abs(delta[i]) / time > limit[i])
-                {
-                    throw new UrRuntimeException(line, FormattableString.Invariant(
-                        $"servoj: joint {i + 1} would move at {Math.Abs(delta[i]) / time:0.#} deg/s, above its maximum of {limit[i]:0.#} deg/s"));
-                }
-            }
-        }
-        Move(m, line, to, time, "servoj");
+        Unlocked(m, line, "servoj", (to, time, lookahead, gain, line),
+            static (c, s, token) => { c.Servo(s.to, s.time, s.lookahead, s.gain, s.line, token); return true; });
         return UrNone.Value;
     }
 

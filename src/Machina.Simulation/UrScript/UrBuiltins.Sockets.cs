@@ -28,10 +28,12 @@ internal static partial class UrBuiltins
             UrSocket socket = Socket(m, line, a, 1, "socket_read_binary_integer");
             double timeout = Num(a, 2, line, "socket_read_binary_integer", "timeout");
             FinishBlendBeforeWaiting(m, line, socket);
+            UrList values;
             using (m.Unlock())
             {
-                return socket.ReadIntegers(count, timeout, m.Cancellation);
+                values = socket.ReadIntegers(count, ReadWait(m, timeout), m.Cancellation);
             }
+            return WithinStep(m, line, socket, "socket_read_binary_integer", values);
         }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
         Add(t, "socket_read_ascii_float", (m, line, a) =>
         {
@@ -44,7 +46,8 @@ internal static partial class UrBuiltins
             double timeout = Num(a, 2, line, "socket_read_ascii_float", "timeout");
             FinishBlendBeforeWaiting(m, line, socket);
             CancellationToken token = m.Cancellation;
-            return m.Unlocked(() => socket.ReadAsciiFloats(count, timeout, token));
+            double wait = ReadWait(m, timeout);
+            return WithinStep(m, line, socket, "socket_read_ascii_float", m.Unlocked(() => socket.ReadAsciiFloats(count, wait, token)));
         }, R("number"), O("socket_name", DefaultSocket), O("timeout", 2));
         Add(t, "socket_read_string", (m, line, a) =>
         {
@@ -52,7 +55,8 @@ internal static partial class UrBuiltins
             double timeout = Num(a, 4, line, "socket_read_string", "timeout");
             FinishBlendBeforeWaiting(m, line, socket);
             CancellationToken token = m.Cancellation;
-            return m.Unlocked(() => socket.ReadString(timeout, token));
+            double wait = ReadWait(m, timeout);
+            return WithinStep(m, line, socket, "socket_read_string", m.Unlocked(() => socket.ReadString(wait, token)));
         }, O("socket_name", DefaultSocket), O("prefix", ""), O("suffix", ""), O("interpret_escape", "False"), O("timeout", 2));
         Add(t, "socket_send_int", (m, line, a) =>
         {
@@ -115,6 +119,22 @@ internal static partial class UrBuiltins
         }
         return UrValue.Box(true);
     }
+
+    /// <summary>
+    /// How long a socket read may wait: its timeout, or in a secondary program one controller step ("Secondary Program
+    /// Limitations": socket use there is "limited to executing simple non-blocking commands"; a "slow remote server ... will cause
+    /// 'Runtime too much behind'").
+    /// </summary>
+    private static double ReadWait(UrMachine m, double timeout) => m.StepWork > 0 ? UrTwinController.ControlStep : timeout;
+
+    /// <summary>
+    /// <paramref name="value"/>, the read's result; in a secondary program a read that found its data incomplete after one
+    /// controller step stops the program with <see cref="UrMachine.TooMuchBehind"/> (its protective stop follows).
+    /// </summary>
+    private static T WithinStep<T>(UrMachine m, int line, UrSocket socket, string function, T value) =>
+        m.StepWork > 0 && socket.TimedOut
+            ? throw new UrRuntimeException(line, $"{UrMachine.TooMuchBehind} ({function}: a secondary program's read waited past one controller step for data that had not arrived)")
+            : value;
 
     private static UrSocket Socket(UrMachine m, int line, object[] a, int index, string function)
     {

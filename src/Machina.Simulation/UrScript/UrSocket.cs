@@ -98,6 +98,9 @@ internal sealed class UrSocket(Socket socket) : IDisposable
         }
     }
 
+    /// <summary>True when the last read's time ran out before its data had all arrived (the connection still open).</summary>
+    public bool TimedOut { get; private set; }
+
     /// <summary>Waits until <paramref name="count"/> bytes are buffered or the time is up; true when they are.</summary>
     private bool Fill(int count, double timeoutSeconds, CancellationToken cancellation)
     {
@@ -128,7 +131,7 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             {
                 if (left <= 0)
                 {
-                    return false;
+                    break; // the time is up
                 }
                 continue;
             }
@@ -157,6 +160,7 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             // A program that reads a closed connection in a loop would spin; on the twin each such read takes its timeout.
             cancellation.WaitHandle.WaitOne(TimeSpan.FromSeconds(Math.Clamp(timeoutSeconds, 0, 1)));
         }
+        TimedOut = Buffered < count && !_closed;
         return Buffered >= count;
     }
 

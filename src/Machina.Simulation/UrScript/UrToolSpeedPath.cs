@@ -9,7 +9,8 @@ namespace Machina.Simulation.UrScript;
 /// tool there, each solved near the arm's joints a moment before. The way is looked at ahead a piece at a time
 /// (<see cref="Extend"/>, a tenth of a second at a time), each sample at most <see cref="MaxStepMm"/> of the tool's way or <see cref="MaxStepDegrees"/> of its
 /// turn after the last: it ends where the tool's line leaves the arm's reach, a joint would have to jump (a singularity, or a
-/// joint at its limit whose solution lies the other way round), and the arm stops there with a protective stop.
+/// joint at its limit whose solution lies the other way round), and the arm stops there with a protective stop. Samples more
+/// than <see cref="KeepSeconds"/> behind the latest time asked for are let go, so a speedl that runs for hours holds a second's.
 /// </summary>
 internal sealed class UrToolSpeedPath : IUrSpeedWay
 {
@@ -28,13 +29,25 @@ internal sealed class UrToolSpeedPath : IUrSpeedWay
     /// </summary>
     private const double PieceSeconds = 0.1;
 
+    /// <summary>
+    /// How far behind the latest time asked for (<see cref="At"/>) samples are kept, seconds: the motion is asked for now and a
+    /// millisecond either side of it (its speeds), never for long ago, so older samples are let go (an open-ended speedl runs
+    /// for hours).
+    /// </summary>
+    private const double KeepSeconds = 1;
+
+    /// <summary>How many samples at least are let go at once (fewer copies of the list).</summary>
+    private const int DropChunk = 64;
+
     private readonly Lock _gate = new();
     private readonly TwinArm _arm;
     private readonly Pose _start;
     private readonly Vector _v0, _v, _w0, _w; // mm/s and degrees per second, base frame
     private readonly double _ramp, _step;
     private readonly bool _constantAfterRamp;
-    private readonly List<Joints> _samples; // _samples[k] at k * _step seconds
+    private readonly List<Joints> _samples; // _samples[k] at (_dropped + k) * _step seconds
+    private int _dropped; // samples let go from the front: behind what can still be asked for
+    private double _asked; // the latest time asked for
     private double _limit = double.PositiveInfinity;
     private string _reason = "";
     private bool _complete;
@@ -89,7 +102,7 @@ internal sealed class UrToolSpeedPath : IUrSpeedWay
         {
             lock (_gate)
             {
-                return _complete ? double.PositiveInfinity : (_samples.Count - 1) * _step;
+                return _complete ? double.PositiveInfinity : LastIndex * _step;
             }
         }
     }
@@ -117,12 +130,43 @@ internal sealed class UrToolSpeedPath : IUrSpeedWay
         {
             double t = Math.Clamp(seconds, 0, _limit);
             ExtendLocked(t);
-            if (_complete && t >= (_samples.Count - 1) * _step)
+            if (t > _asked)
+            {
+                _asked = t;
+                LetGo();
+            }
+            if (_complete && t >= LastIndex * _step)
             {
                 return _samples[^1]; // past the ramp of a way that ends standing, or at its limit
             }
-            int k = Math.Min((int)(t / _step), _samples.Count - 1);
+            int k = Math.Clamp((int)(t / _step) - _dropped, 0, _samples.Count - 1);
             return UrBuiltins.Near(_arm, PoseAt(t), _samples[k]);
+        }
+    }
+
+    /// <summary>How many samples are held now (the way's memory).</summary>
+    internal int HeldSamples
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _samples.Count;
+            }
+        }
+    }
+
+    /// <summary>The index (counted from the start) of the last sample.</summary>
+    private int LastIndex => _dropped + _samples.Count - 1;
+
+    /// <summary>Lets go of the samples more than <see cref="KeepSeconds"/> before the latest time asked for, the last one always kept (under the gate).</summary>
+    private void LetGo()
+    {
+        int behind = Math.Min((int)((_asked - KeepSeconds) / _step) - _dropped, _samples.Count - 1);
+        if (behind >= DropChunk)
+        {
+            _samples.RemoveRange(0, behind);
+            _dropped += behind;
         }
     }
 
@@ -142,16 +186,16 @@ internal sealed class UrToolSpeedPath : IUrSpeedWay
     /// <summary>Adds samples through <paramref name="seconds"/> (at least a piece of them), stopping at the way's limit (call under the gate).</summary>
     private void ExtendLocked(double seconds)
     {
-        if (_complete || (_samples.Count - 1) * _step > seconds)
+        if (_complete || LastIndex * _step > seconds)
         {
             return;
         }
-        int last = Math.Max((int)Math.Ceiling(seconds / _step), _samples.Count - 1 + Math.Max(1, (int)Math.Ceiling(PieceSeconds / _step)));
+        int last = Math.Max((int)Math.Ceiling(seconds / _step), LastIndex + Math.Max(1, (int)Math.Ceiling(PieceSeconds / _step)));
         if (_constantAfterRamp)
         {
             last = (int)Math.Ceiling(_ramp / _step);
         }
-        for (int k = _samples.Count; k <= last; k++)
+        for (int k = LastIndex + 1; k <= last; k++)
         {
             if (!TrySample(k * _step, _samples[^1], out Joints next))
             {

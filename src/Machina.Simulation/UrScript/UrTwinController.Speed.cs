@@ -14,7 +14,7 @@ namespace Machina.Simulation.UrScript;
 internal sealed partial class UrTwinController
 {
     /// <summary>The control step of a UR (500 Hz): a speed command takes at least one.</summary>
-    private const double ControlStep = 0.002;
+    internal const double ControlStep = 0.002;
 
     /// <summary>The runtime error of a motion commanded while another thread's motion is in progress (a UR's message).</summary>
     internal const string AnotherThread = "Another thread is already controlling the robot.";
