@@ -213,7 +213,8 @@ public sealed class UrSpeedMotionTests
             data = await client.ReadDataAsync();
         }
         Assert.Equal(startTime + 1.0, (double)data["timestamp"], 6);
-        Assert.Contains("returned", controller.Twin.Pendant.Lines);
+        // The program thread runs its textmsg after the speedj returned at 0.4 s; it may run after the package was read.
+        Assert.True(SpinWait.SpinUntil(() => controller.Twin.Pendant.Lines.Contains("returned"), Bound), "speedj did not return");
         Assert.Equal(0.16, ((double[])data["actual_q"])[0] - start, 4);
         Assert.Equal(0.2, ((double[])data["actual_qd"])[0], 3);
         Assert.NotNull(controller.Twin.Motion);
