@@ -44,14 +44,14 @@ internal static partial class RapidBuiltins
         Instruction("ClkStart", [P("Clock", "clock", true)], call =>
         {
             var clock = (RapidClock)call.Value(0);
-            clock.StartedAt ??= call.Machine.Task.Controller.Clock.Seconds;
+            clock.StartedAt ??= ClockSeconds(call.Machine.Task.Controller);
         }),
         Instruction("ClkStop", [P("Clock", "clock", true)], call =>
         {
             var clock = (RapidClock)call.Value(0);
             if (clock.StartedAt is { } start)
             {
-                clock.Accumulated += call.Machine.Task.Controller.Clock.Seconds - start;
+                clock.Accumulated += ClockSeconds(call.Machine.Task.Controller) - start;
                 clock.StartedAt = null;
             }
         }),
@@ -59,12 +59,12 @@ internal static partial class RapidBuiltins
         {
             var clock = (RapidClock)call.Value(0);
             clock.Accumulated = 0;
-            clock.StartedAt = clock.StartedAt is null ? null : call.Machine.Task.Controller.Clock.Seconds;
+            clock.StartedAt = clock.StartedAt is null ? null : ClockSeconds(call.Machine.Task.Controller);
         }),
         Function("ClkRead", "num", [P("Clock", "clock", true), Sw("HighRes")], call =>
         {
             var clock = (RapidClock)call.Value(0);
-            double seconds = clock.Accumulated + (clock.StartedAt is { } start ? call.Machine.Task.Controller.Clock.Seconds - start : 0);
+            double seconds = clock.Accumulated + (clock.StartedAt is { } start ? ClockSeconds(call.Machine.Task.Controller) - start : 0);
             return call.Has(1) ? Math.Round(seconds, 6) : Math.Round(seconds, 3);
         }),
         Function("Present", "bool", [P("OptPar", null, true)], call =>
@@ -83,6 +83,14 @@ internal static partial class RapidBuiltins
 
     /// <summary>The longest a wait sleeps before it looks for traps to run, when the task ordered timer or signal interrupts (seconds).</summary>
     private const double TrapLatency = 0.05;
+
+    /// <summary>
+    /// What a <c>clock</c> counts, in seconds from an arbitrary start: in real time the controller's time source, so every wait
+    /// counts whichever task waits (a background task's WaitTime and a socket wait add no program time); otherwise the program
+    /// time, which a run without real time has instead.
+    /// </summary>
+    private static double ClockSeconds(RapidTwinController c) =>
+        c.Clock.RealTime ? c.Clock.Time.GetTimestamp() / (double)c.Clock.Time.TimestampFrequency : c.Clock.Seconds;
 
     /// <summary>
     /// Waits <paramref name="seconds"/> with <paramref name="wait"/>; when the task ordered timer or signal interrupts, in slices that end

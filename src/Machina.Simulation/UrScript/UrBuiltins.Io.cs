@@ -36,6 +36,12 @@ internal static partial class UrBuiltins
         AddNumberIn(t, "get_standard_analog_out", UrIoBanks.AnalogOut);
         AddNumberIn(t, "get_tool_analog_in", UrIoBanks.ToolAnalogIn);
         AddNumberIn(t, "get_analog_in", UrIoBanks.AnalogIn);
+        Add(t, "set_flag", (m, line, a) =>
+        {
+            m.Controller.Io.SetBit(UrIoBanks.Flags, Pin(m, line, a, "set_flag", UrIoBanks.Flags), Bool(a, 1, line, "set_flag", "b"));
+            return UrNone.Value;
+        }, R("n"), R("b"));
+        AddDigitalIn(t, "get_flag", UrIoBanks.Flags);
 
         Add(t, "read_input_boolean_register", (m, line, a) => UrValue.Box(m.Controller.Io.GetBit(UrIoBanks.InputBoolRegisters,
             Pin(m, line, a, "read_input_boolean_register", UrIoBanks.InputBoolRegisters))), R("address"));

@@ -30,6 +30,9 @@ internal static class UrIoBanks
     /// <summary>Tool analog inputs 0–1.</summary>
     public const string ToolAnalogIn = "tool_analog_in";
 
+    /// <summary>Flags 0–32 (<c>set_flag</c>, <c>get_flag</c>): internal bits that keep their values between program runs.</summary>
+    public const string Flags = "flag";
+
     /// <summary>RTDE input boolean registers 0–127.</summary>
     public const string InputBoolRegisters = "input_boolean_register";
 

@@ -42,6 +42,7 @@ internal sealed partial class UrTwinController : TwinController<UrTwinOptions, U
         Io.AddNumbers(UrIoBanks.AnalogIn, 2);
         Io.AddNumbers(UrIoBanks.AnalogOut, 2);
         Io.AddNumbers(UrIoBanks.ToolAnalogIn, 2);
+        Io.AddBits(UrIoBanks.Flags, 33);
         Io.AddBits(UrIoBanks.InputBoolRegisters, 128);
         Io.AddBits(UrIoBanks.OutputBoolRegisters, 128);
         Io.AddNumbers(UrIoBanks.InputIntRegisters, 48);
