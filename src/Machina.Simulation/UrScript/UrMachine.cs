@@ -142,6 +142,10 @@ internal sealed class UrMachine : IDisposable
             {
                 throw _threadError;
             }
+            catch (Exception e) when (IsTwinFault(e))
+            {
+                throw TwinFault(e);
+            }
             finally
             {
                 StopThreads();
@@ -254,6 +258,11 @@ internal sealed class UrMachine : IDisposable
                 _threadError ??= e;
                 _stop.Cancel();
             }
+            catch (Exception e) when (IsTwinFault(e))
+            {
+                _threadError ??= TwinFault(e);
+                _stop.Cancel();
+            }
             finally
             {
                 _liveThreads--;
@@ -262,6 +271,15 @@ internal sealed class UrMachine : IDisposable
             }
         }
     }
+
+    /// <summary>
+    /// True for what the twin's own code throws on a value it did not foresee (an argument out of a .NET call's range, an overflow,
+    /// a cast): the program's error, never the process's.
+    /// </summary>
+    private static bool IsTwinFault(Exception e) => e is ArgumentException or ArithmeticException or InvalidCastException or IndexOutOfRangeException;
+
+    /// <summary>The runtime error that stops the program for a fault of the twin's own code, at the line that ran.</summary>
+    private UrRuntimeException TwinFault(Exception e) => new(CurrentLine, "the twin cannot run this statement: " + e.Message);
 
     /// <summary><c>join</c>: waits for the thread to end.</summary>
     public void JoinThread(UrThreadHandle handle, int line)

@@ -86,7 +86,8 @@ internal sealed partial class UrTwinController
             Arm.MoveTo(way.At(Math.Min(wait, way.LimitSeconds)), wait, line, function, cancellation);
             return;
         }
-        double duration = double.IsFinite(way.LimitSeconds) ? way.LimitSeconds : double.IsFinite(way.KnownUntil) ? OpenSeconds : ramp;
+        // A limit further than a day (a crawl) is planned as a day, like a way whose end is not known yet: the timer looks again.
+        double duration = double.IsFinite(way.LimitSeconds) ? Math.Min(way.LimitSeconds, OpenSeconds) : double.IsFinite(way.KnownUntil) ? OpenSeconds : ramp;
         if (duration <= 0)
         {
             Clock.Wait(wait, cancellation); // at rest and asked to stay so: nothing moves
@@ -102,7 +103,7 @@ internal sealed partial class UrTwinController
             double due = Math.Min(way.LimitSeconds, way.KnownUntil);
             if (double.IsFinite(due))
             {
-                _speedTimer = Options.Time.CreateTimer(_ => WatchSpeed(motion, way), null, TimeSpan.FromSeconds(due), Timeout.InfiniteTimeSpan);
+                _speedTimer = Options.Time.CreateTimer(_ => WatchSpeed(motion, way), null, TimerDue(due), Timeout.InfiniteTimeSpan);
             }
         }
         StateChanged?.Invoke();
@@ -140,10 +141,16 @@ internal sealed partial class UrTwinController
         {
             if (ReferenceEquals(_motion, motion) && double.IsFinite(next))
             {
-                _speedTimer?.Change(TimeSpan.FromSeconds(Math.Max(next - elapsed, Tick)), Timeout.InfiniteTimeSpan);
+                _speedTimer?.Change(TimerDue(Math.Max(next - elapsed, Tick)), Timeout.InfiniteTimeSpan);
             }
         }
     }
+
+    /// <summary>
+    /// A speed timer's due time: at most <see cref="OpenSeconds"/> ahead (a crawl of 1e-13 rad/s reaches its limit in 10^13 s,
+    /// past what a timer takes); the timer looks at the way again when it fires and sets itself for the rest.
+    /// </summary>
+    private static TimeSpan TimerDue(double seconds) => TimeSpan.FromSeconds(Math.Min(seconds, OpenSeconds));
 
     /// <summary>A speed motion reached the end of its way (on the timer's thread): the arm stops there with a protective stop.</summary>
     private void AtLimit(UrMotion motion, string reason)
