@@ -220,7 +220,8 @@ internal static class RapidValues
         }
         for (int i = 0; i < a.Length; i++)
         {
-            if (!Identical(a[i], b[i]))
+            // The same box or string (a kept copy shares its leaves with the data it was copied from): no call for it.
+            if (!ReferenceEquals(a[i], b[i]) && !Identical(a[i], b[i]))
             {
                 return false;
             }
