@@ -94,6 +94,20 @@ internal readonly struct RapidCall(RapidMachine machine, RapidFrame? frame, Rapi
     /// <summary>The name of the data given for parameter <paramref name="p"/> (<c>sync1</c>), or null when it is not a plain name.</summary>
     public string? DataName(int p) => (args[target.ArgumentOf[p]].Value as RapidName)?.Name;
 
+    /// <summary>
+    /// The cell of the data given for parameter <paramref name="p"/> or of the data its component or element belongs to
+    /// (<c>rec.x</c>, <c>arr{2}</c>: the cell of <c>rec</c>, <c>arr</c>), or null when the argument is no data.
+    /// </summary>
+    public RapidCell? DataCell(int p)
+    {
+        RapidExpr arg = args[target.ArgumentOf[p]].Value!;
+        while (arg is RapidComponent or RapidIndex)
+        {
+            arg = arg is RapidComponent c ? c.Target : ((RapidIndex)arg).Target;
+        }
+        return arg is RapidName name ? name.Global ?? frame?.Cells[name.Slot] : null;
+    }
+
     /// <summary>Writes <paramref name="value"/> into the data given for parameter <paramref name="p"/>.</summary>
     public void Set(int p, object value) => machine.Store(args[target.ArgumentOf[p]].Value!, frame, value);
 

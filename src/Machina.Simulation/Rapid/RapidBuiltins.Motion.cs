@@ -65,8 +65,11 @@ internal static partial class RapidBuiltins
     {
         RapidTask task = call.Machine.Task;
         TwinArm arm = task.Controller.Arm;
-        Pose tool = ToolFrame(call, call.Record(p.Tool));
-        Pose wobj = call.Has(p.WObj) ? WorkObjectFrame(call, call.Record(p.WObj)) : Pose.Identity;
+        RapidRecord toolData = call.Record(p.Tool);
+        RapidRecord? wobjData = call.Has(p.WObj) ? call.Record(p.WObj) : null;
+        bool kept = task.KeepsFrames(toolData, wobjData); // the frames of the last move's data, which passed the checks below
+        Pose tool = kept ? task.ToolPose : ToolFrame(call, toolData);
+        Pose wobj = wobjData is null ? Pose.Identity : kept ? task.WObjPose : WorkObjectFrame(call, wobjData);
         bool linear = name == "MoveL";
         if (!linear || call.Has(p.T) || tool != arm.ToolCenter)
         {
@@ -84,7 +87,10 @@ internal static partial class RapidBuiltins
         {
             arm.ToolCenter = tool;
             task.WorkObject = wobj;
-            task.UsedFrames(call.Record(p.Tool), call.Has(p.WObj) ? call.Record(p.WObj) : null);
+            if (!kept)
+            {
+                task.UsedFrames(toolData, wobjData, tool, wobj);
+            }
             if (via is not null)
             {
                 Pose middle = wobj * RapidGeometry.ToPose(via, call.Line);

@@ -204,7 +204,7 @@ internal static partial class RapidBuiltins
         Instruction("IPers", [P("Name", null, true), P("Interrupt", "intnum")], call =>
         {
             RapidCall order = call;
-            if (!call.Machine.Task.OrderPersInterrupt((int)call.Num(1), () => order.Value(0)))
+            if (!call.Machine.Task.OrderPersInterrupt((int)call.Num(1), () => order.Value(0), call.DataCell(0)))
             {
                 throw call.Error(RapidErrorNumbers.ArgValErr, "IPers: the interrupt is not connected to a trap (CONNECT it first)");
             }

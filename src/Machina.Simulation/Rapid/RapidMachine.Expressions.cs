@@ -126,14 +126,17 @@ internal sealed partial class RapidMachine
     {
         RapidCell cell = n.Global ?? frame!.Cells[n.Slot];
         cell.Value = value;
-        if (cell.Storage == RapidStorage.Pers)
+        if (cell.Watched)
         {
-            Task.Controller.PersistentWritten();
-            if (n.Global is not null && Task.Controller.WatchesPersistents)
-            {
-                Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
-            }
+            PersistentWritten(); // only data an IPers order watches: the others' writes cannot raise an interrupt
         }
+    }
+
+    /// <summary>Counts a write of persistent data an IPers order watches and wakes the motion, whose task then looks at its orders.</summary>
+    private void PersistentWritten()
+    {
+        Task.Controller.PersistentWritten();
+        Task.Controller.Arm.Wake(); // a task that ordered IPers looks at its data even while its motion runs
     }
 
     /// <summary>
@@ -158,7 +161,7 @@ internal sealed partial class RapidMachine
         return true;
     }
 
-    /// <summary>Counts the write of a component or element when the data it belongs to is persistent.</summary>
+    /// <summary>Counts the write of a component or element when the data it belongs to is watched by an IPers order.</summary>
     private void CountPersistentWrite(RapidExpr data, RapidFrame? frame)
     {
         while (true)
@@ -171,8 +174,8 @@ internal sealed partial class RapidMachine
                 case RapidIndex i:
                     data = i.Target;
                     continue;
-                case RapidName n when (n.Global ?? frame!.Cells[n.Slot]).Storage == RapidStorage.Pers:
-                    Task.Controller.PersistentWritten();
+                case RapidName n when (n.Global ?? frame!.Cells[n.Slot]).Watched:
+                    PersistentWritten();
                     return;
                 default:
                     return;

@@ -63,9 +63,10 @@ internal sealed partial class RapidTask
 
     /// <summary>
     /// IPers: interrupt <paramref name="interrupt"/> each time the persistent data <paramref name="read"/> returns changes value (checked
-    /// between statements and when a motion is woken: a PERS write of any task wakes the motion).
+    /// between statements after a write of the <paramref name="watched"/> cell, and when a motion is woken: such a write of any task
+    /// wakes the motion).
     /// </summary>
-    public bool OrderPersInterrupt(int interrupt, Func<object> read)
+    public bool OrderPersInterrupt(int interrupt, Func<object> read, RapidCell? watched)
     {
         lock (_interruptGate)
         {
@@ -73,10 +74,13 @@ internal sealed partial class RapidTask
             {
                 return false;
             }
+            if (watched is { Storage: RapidStorage.Pers })
+            {
+                watched.Watched = true; // before the first look: a write after it is counted
+            }
             _persOrders.Add(new RapidPersOrder(interrupt, read, RapidValues.Copy(read())));
             _persSnapshot = [.. _persOrders];
             _hasPending = true;
-            Controller.WatchesPersistents = true;
             return true;
         }
     }

@@ -42,12 +42,12 @@ internal sealed partial class RapidTwinController : TwinController<RapidTwinOpti
         }
     }
 
-    /// <summary>True once a task ordered an interrupt on persistent data (IPers): PERS writes then wake the motion.</summary>
-    internal bool WatchesPersistents { get; set; }
-
     private int _persistentWrites;
 
-    /// <summary>How many times persistent data were written (by any task or RWS): IPers orders look at their data only when it moved.</summary>
+    /// <summary>
+    /// How many times persistent data an IPers order watches were written (by any task; RWS and SetDataVal count every write):
+    /// IPers orders look at their data only when it moved.
+    /// </summary>
     internal int PersistentWrites => Volatile.Read(ref _persistentWrites);
 
     /// <summary>Counts a write of persistent data (call it after the value is stored).</summary>

@@ -37,6 +37,12 @@ internal sealed class RapidCell(string name, RapidDataType type, RapidStorage st
 
     /// <summary>The value now.</summary>
     public object Value { get; set; } = value;
+
+    /// <summary>
+    /// True once an IPers order watches this persistent datum (or a part of it): only its writes are counted and wake a motion, so
+    /// that writes of other persistent data (our driver's <c>machinaMotionId := r.id</c> at every move) cost nothing more than a store.
+    /// </summary>
+    public bool Watched { get; set; }
 }
 
 /// <summary>Value helpers: defaults, copies (RAPID data are values: storing copies them), equality and text.</summary>
@@ -214,7 +220,8 @@ internal static class RapidValues
         }
         for (int i = 0; i < a.Length; i++)
         {
-            if (!Identical(a[i], b[i]))
+            // The same box or string (a kept copy shares its leaves with the data it was copied from): no call for it.
+            if (!ReferenceEquals(a[i], b[i]) && !Identical(a[i], b[i]))
             {
                 return false;
             }
