@@ -58,8 +58,34 @@ internal sealed class TcpLink : IAsyncDisposable
         return new TcpLink(socket, remoteAddress);
     }
 
-    /// <summary>Connects within <paramref name="timeout"/>; throws <see cref="MachinaException"/> when the host cannot be reached.</summary>
-    internal static async Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
+    /// <summary>
+    /// Connects within <paramref name="timeout"/>; fails with <see cref="MachinaException"/> when the host cannot be reached. A
+    /// peer that answers at once (a controller on the network, a twin on this computer) is connected on the caller's thread
+    /// and the task returned is complete: no deadline timer, no thread of its own, no exception (see
+    /// <see cref="SocketConnect.TryConnectAtOnce(string, int)"/>).
+    /// </summary>
+    internal static Task<TcpLink> ConnectAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
+    {
+        if (cancellationToken.IsCancellationRequested)
+        {
+            return Task.FromCanceled<TcpLink>(cancellationToken);
+        }
+        try
+        {
+            if (SocketConnect.TryConnectAtOnce(host, port) is Socket socket)
+            {
+                return Task.FromResult(new TcpLink(socket, $"{host}:{port}"));
+            }
+        }
+        catch (SocketException ex)
+        {
+            return Task.FromException<TcpLink>(Unreachable(host, port, ex));
+        }
+        return ConnectWaitingAsync(host, port, timeout, time, cancellationToken);
+    }
+
+    /// <summary>Connects within <paramref name="timeout"/>, waiting on a thread of <see cref="SocketConnect"/>'s (see <see cref="ConnectAsync"/>).</summary>
+    private static async Task<TcpLink> ConnectWaitingAsync(string host, int port, TimeSpan timeout, TimeProvider time, CancellationToken cancellationToken)
     {
         using var deadline = new CancellationTokenSource(timeout, time);
         using var timer = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken, deadline.Token);
@@ -75,9 +101,13 @@ internal sealed class TcpLink : IAsyncDisposable
         }
         catch (SocketException ex)
         {
-            throw new RobotConnectionException($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
+            throw Unreachable(host, port, ex);
         }
     }
+
+    /// <summary>What a refused or unreachable connection fails with.</summary>
+    private static RobotConnectionException Unreachable(string host, int port, SocketException ex) =>
+        new($"Could not connect to {host}:{port}: {ex.Message}. Is the driver running there?", ex);
 
     /// <summary>The name of the thread that reads a driver's main link.</summary>
     internal const string ThreadName = "Machina link";
