@@ -12,10 +12,7 @@ public sealed class DisconnectCancellationTests
     public async Task DisconnectAsync_WhoseDriverNeverFinishesClosing_EndsWhenCancelled_AndTheRobotIsDisconnected()
     {
         var driver = new ClosingDriver();
-        var bot = Robot.Create("Closing", "ABB");
-        bot.DriverFactory = () => driver;
-        bot.ControlMode("online");
-        await bot.ConnectAsync("127.0.0.1", 7000).WaitAsync(Bound);
+        Robot bot = await ConnectedAsync(driver);
         using var cancel = new CancellationTokenSource();
 
         Task disconnecting = bot.DisconnectAsync(cancel.Token);
@@ -33,10 +30,7 @@ public sealed class DisconnectCancellationTests
     public async Task DisconnectAsync_WithATokenNotCancelled_WaitsForTheDriversClose()
     {
         var driver = new ClosingDriver();
-        var bot = Robot.Create("Closing", "ABB");
-        bot.DriverFactory = () => driver;
-        bot.ControlMode("online");
-        await bot.ConnectAsync("127.0.0.1", 7000).WaitAsync(Bound);
+        Robot bot = await ConnectedAsync(driver);
         using var cancel = new CancellationTokenSource();
 
         Task disconnecting = bot.DisconnectAsync(cancel.Token);
@@ -54,16 +48,23 @@ public sealed class DisconnectCancellationTests
     {
         var driver = new ClosingDriver();
         driver.Closed.SetResult();
-        var bot = Robot.Create("Closing", "ABB");
-        bot.DriverFactory = () => driver;
-        bot.ControlMode("online");
-        await bot.ConnectAsync("127.0.0.1", 7000).WaitAsync(Bound);
+        Robot bot = await ConnectedAsync(driver);
 
         // The driver closes at once here, so the disconnection completes before the cancelled wait is looked at.
         await bot.DisconnectAsync(new CancellationToken(canceled: true)).WaitAsync(Bound);
 
         Assert.True(driver.Closing.Task.IsCompleted);
         Assert.Equal(ConnectionState.Disconnected, bot.ConnectionState);
+    }
+
+    /// <summary>An ABB robot online and connected through <paramref name="driver"/>.</summary>
+    private static async Task<Robot> ConnectedAsync(ClosingDriver driver)
+    {
+        var bot = Robot.Create("Closing", "ABB");
+        bot.DriverFactory = () => driver;
+        bot.ControlMode("online");
+        await bot.ConnectAsync("127.0.0.1", 7000).WaitAsync(Bound);
+        return bot;
     }
 
     /// <summary>A driver without a network whose dispose waits until the test lets it end (a link thread that does not end).</summary>

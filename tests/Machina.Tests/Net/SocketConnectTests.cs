@@ -72,13 +72,9 @@ public sealed class SocketConnectTests
     [Fact]
     public async Task Connect_ToAListenerWhoseQueueIsFull_WaitsUntilItTakesTheConnection()
     {
-        using var listener = new Socket(SocketType.Stream, ProtocolType.Tcp);
-        listener.Bind(new IPEndPoint(IPAddress.Loopback, 0));
-        listener.Listen(0);
-        int port = ((IPEndPoint)listener.LocalEndPoint!).Port;
-        // The queue holds one connection not accepted yet: the system drops the next connection's SYN until there is room.
-        using var first = new Socket(SocketType.Stream, ProtocolType.Tcp);
-        await first.ConnectAsync(IPAddress.Loopback, port).WaitAsync(Bound);
+        using FullListener full = await FullListener.OpenAsync();
+        Socket listener = full.Listener;
+        int port = full.Port;
 
         Task<TcpLink> connecting = TcpLink.ConnectAsync("127.0.0.1", port, Bound, TimeProvider.System, CancellationToken.None);
         using Socket taken = listener.Accept();   // room again: the SYN the system sends again is answered
@@ -93,17 +89,49 @@ public sealed class SocketConnectTests
     [Fact]
     public async Task Connect_ToAListenerWhoseQueueStaysFull_EndsWhenCancelled()
     {
-        using var listener = new Socket(SocketType.Stream, ProtocolType.Tcp);
-        listener.Bind(new IPEndPoint(IPAddress.Loopback, 0));
-        listener.Listen(0);
-        int port = ((IPEndPoint)listener.LocalEndPoint!).Port;
-        using var first = new Socket(SocketType.Stream, ProtocolType.Tcp);
-        await first.ConnectAsync(IPAddress.Loopback, port).WaitAsync(Bound);
+        using FullListener full = await FullListener.OpenAsync();
+        Socket listener = full.Listener;
+        int port = full.Port;
         using var cancel = new CancellationTokenSource();
 
         Task<TcpLink> connecting = TcpLink.ConnectAsync("127.0.0.1", port, Bound, TimeProvider.System, cancel.Token);
         await cancel.CancelAsync();
 
         await Assert.ThrowsAnyAsync<OperationCanceledException>(() => connecting.WaitAsync(Bound));
+    }
+
+    /// <summary>
+    /// A listener on loopback whose queue holds one connection not accepted yet (kept open until disposed): the system drops the
+    /// next connection's SYN until there is room.
+    /// </summary>
+    private sealed class FullListener : IDisposable
+    {
+        private readonly Socket _first;
+
+        private FullListener(Socket listener, Socket first)
+        {
+            Listener = listener;
+            _first = first;
+        }
+
+        public Socket Listener { get; }
+
+        public int Port => ((IPEndPoint)Listener.LocalEndPoint!).Port;
+
+        public static async Task<FullListener> OpenAsync()
+        {
+            var listener = new Socket(SocketType.Stream, ProtocolType.Tcp);
+            listener.Bind(new IPEndPoint(IPAddress.Loopback, 0));
+            listener.Listen(0);
+            var first = new Socket(SocketType.Stream, ProtocolType.Tcp);
+            await first.ConnectAsync(IPAddress.Loopback, ((IPEndPoint)listener.LocalEndPoint!).Port).WaitAsync(Bound);
+            return new FullListener(listener, first);
+        }
+
+        public void Dispose()
+        {
+            _first.Dispose();
+            Listener.Dispose();
+        }
     }
 }
