@@ -290,8 +290,17 @@ public sealed partial class Robot
         return true;
     }
 
-    /// <summary>Closes the connection (see <see cref="Disconnect"/>).</summary>
-    public Task DisconnectAsync() => _session?.DisconnectAsync() ?? Task.CompletedTask;
+    /// <summary>Closes the connection (see <see cref="Disconnect"/>), waiting until the driver's links are closed.</summary>
+    public Task DisconnectAsync() => DisconnectAsync(CancellationToken.None);
+
+    /// <summary>
+    /// Closes the connection (see <see cref="Disconnect"/>), waiting until the driver's links are closed or
+    /// <paramref name="cancellationToken"/> is cancelled. Cancelling ends the wait, not the disconnection: the robot stops
+    /// sending and ends disconnected all the same (actions sent but not confirmed stay pending), and the links finish closing
+    /// by themselves.
+    /// </summary>
+    /// <exception cref="OperationCanceledException">The wait was cancelled before the links were closed.</exception>
+    public Task DisconnectAsync(CancellationToken cancellationToken) => _session?.DisconnectAsync(cancellationToken) ?? Task.CompletedTask;
 
     /// <summary>Waits until every issued action was executed by the controller and its events were raised.</summary>
     /// <exception cref="MachinaException">The connection was lost (or closed) before that.</exception>

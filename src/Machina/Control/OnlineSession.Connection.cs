@@ -154,9 +154,25 @@ internal sealed partial class OnlineSession
     /// <summary>
     /// Closes the link. Actions sent but not confirmed stay pending (the robot may still run them); see <see cref="Resume"/>.
     /// Closing it before every issued action was executed (Disconnect right after issuing, as the original's examples did) says
-    /// how many were left, as a warning.
+    /// how many were left, as a warning. <paramref name="cancellationToken"/> ends the wait, not the closing: the link is
+    /// detached on the loop and the driver disposed whether or not anyone still waits (a dispose that never ends, such as a
+    /// link thread held by its receiver, no longer holds the caller).
     /// </summary>
-    internal async Task DisconnectAsync()
+    internal Task DisconnectAsync(CancellationToken cancellationToken = default)
+    {
+        Task closing = CloseLinkAsync();
+        if (!cancellationToken.CanBeCanceled || closing.IsCompleted)
+        {
+            return closing;
+        }
+        // Abandoned on cancellation: its failure (a driver's dispose that throws) is still observed, as a background close's is.
+        _ = closing.ContinueWith(static t => _ = t.Exception, CancellationToken.None,
+            TaskContinuationOptions.OnlyOnFaulted | TaskContinuationOptions.ExecuteSynchronously, TaskScheduler.Default);
+        return closing.WaitAsync(cancellationToken);
+    }
+
+    /// <summary>Detaches the current link on the loop, then disposes its driver (what <see cref="DisconnectAsync"/> waits for).</summary>
+    private async Task CloseLinkAsync()
     {
         Connection? link = await AskAsync(() =>
         {
