@@ -23,12 +23,7 @@ internal sealed partial class RapidBinder
     /// <summary>Binds data that is written: it must be a variable, persistent or reference parameter, not a constant.</summary>
     private RapidDataType? BindTarget(RapidExpr e, RapidScope scope, string verb)
     {
-        RapidExpr root = e;
-        while (root is RapidComponent or RapidIndex)
-        {
-            root = root is RapidComponent c ? c.Target : ((RapidIndex)root).Target;
-        }
-        if (root is not RapidName name)
+        if (e.Root is not RapidName name)
         {
             throw Refuse(e.Line, RapidLoadException.Reference("only data can be " + verb));
         }

@@ -100,12 +100,7 @@ internal readonly struct RapidCall(RapidMachine machine, RapidFrame? frame, Rapi
     /// </summary>
     public RapidCell? DataCell(int p)
     {
-        RapidExpr arg = args[target.ArgumentOf[p]].Value!;
-        while (arg is RapidComponent or RapidIndex)
-        {
-            arg = arg is RapidComponent c ? c.Target : ((RapidIndex)arg).Target;
-        }
-        return arg is RapidName name ? name.Global ?? frame?.Cells[name.Slot] : null;
+        return args[target.ArgumentOf[p]].Value!.Root is RapidName name ? name.Global ?? frame?.Cells[name.Slot] : null;
     }
 
     /// <summary>Writes <paramref name="value"/> into the data given for parameter <paramref name="p"/>.</summary>

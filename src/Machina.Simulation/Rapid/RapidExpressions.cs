@@ -8,6 +8,20 @@ internal abstract class RapidExpr(int line)
 
     /// <summary>The static type, set by the binder (null: any, as for an argument of ValToStr).</summary>
     public RapidDataType? Type { get; set; }
+
+    /// <summary>The data a component or element belongs to (<c>rec.x</c>, <c>arr{2}.y</c>: <c>rec</c>, <c>arr</c>); itself otherwise.</summary>
+    public RapidExpr Root
+    {
+        get
+        {
+            RapidExpr root = this;
+            while (root is RapidComponent or RapidIndex)
+            {
+                root = root is RapidComponent c ? c.Target : ((RapidIndex)root).Target;
+            }
+            return root;
+        }
+    }
 }
 
 /// <summary>A literal number, string or bool.</summary>

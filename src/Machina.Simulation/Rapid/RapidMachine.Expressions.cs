@@ -164,22 +164,9 @@ internal sealed partial class RapidMachine
     /// <summary>Counts the write of a component or element when the data it belongs to is watched by an IPers order.</summary>
     private void CountPersistentWrite(RapidExpr data, RapidFrame? frame)
     {
-        while (true)
+        if (data.Root is RapidName n && (n.Global ?? frame!.Cells[n.Slot]).Watched)
         {
-            switch (data)
-            {
-                case RapidComponent c:
-                    data = c.Target;
-                    continue;
-                case RapidIndex i:
-                    data = i.Target;
-                    continue;
-                case RapidName n when (n.Global ?? frame!.Cells[n.Slot]).Watched:
-                    PersistentWritten();
-                    return;
-                default:
-                    return;
-            }
+            PersistentWritten();
         }
     }
 

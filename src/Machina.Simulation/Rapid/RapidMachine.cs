@@ -312,11 +312,7 @@ internal sealed partial class RapidMachine(RapidTask task)
     /// </summary>
     private static bool IsCallersOwn(RapidExpr arg, RapidFrame? caller)
     {
-        while (arg is RapidComponent or RapidIndex)
-        {
-            arg = arg is RapidComponent c ? c.Target : ((RapidIndex)arg).Target;
-        }
-        return arg is RapidName { Global: null, ReadsSignal: false } name && caller is not null && caller.HoldsOwn(name.Slot);
+        return arg.Root is RapidName { Global: null, ReadsSignal: false } name && caller is not null && caller.HoldsOwn(name.Slot);
     }
 
     /// <summary>
