@@ -37,12 +37,7 @@ internal sealed partial class UrTwinController
         double look = Math.Clamp(lookahead, LeastLookahead, MostLookahead), g = Math.Clamp(gain, LeastGain, MostGain);
         RunSpeed((at, before, after, step) =>
         {
-            double[] speeds = new double[6], a = before.ToArray(), b = after.ToArray();
-            for (int i = 0; i < 6; i++)
-            {
-                speeds[i] = (b[i] - a[i]) / step;
-            }
-            var way = new UrServoWay(at, speeds, target, look, g);
+            var way = new UrServoWay(at, JointSpeeds(before, after, step), target, look, g);
             RequireSpeeds(way.PeakSpeeds(), 1);
             return (way, way.Settles);
         }, seconds, line, "servoj", cancellation);

@@ -39,14 +39,19 @@ internal sealed partial class UrTwinController
     /// <exception cref="TwinMotionException">Another, live thread's motion is in progress.</exception>
     public void Speed(double[] speeds, double ramp, double seconds, int line, string function, CancellationToken cancellation) =>
         RunSpeed((at, before, after, step) =>
+            (new UrSpeedPath(at, JointSpeeds(before, after, step), speeds, ramp, Arm.Model.MinJoints.ToArray(), Arm.Model.MaxJoints.ToArray()), ramp),
+            seconds, line, function, cancellation);
+
+    /// <summary>The joint speeds (degrees per second) of an arm at <paramref name="before"/> and then <paramref name="after"/>, <paramref name="step"/> seconds apart.</summary>
+    private static double[] JointSpeeds(Joints before, Joints after, double step)
+    {
+        double[] speeds = new double[6], a = before.ToArray(), b = after.ToArray();
+        for (int i = 0; i < 6; i++)
         {
-            double[] start = new double[6], a = before.ToArray(), b = after.ToArray();
-            for (int i = 0; i < 6; i++)
-            {
-                start[i] = (b[i] - a[i]) / step;
-            }
-            return (new UrSpeedPath(at, start, speeds, ramp, Arm.Model.MinJoints.ToArray(), Arm.Model.MaxJoints.ToArray()), ramp);
-        }, seconds, line, function, cancellation);
+            speeds[i] = (b[i] - a[i]) / step;
+        }
+        return speeds;
+    }
 
     /// <summary>
     /// <c>speedl</c>: starts a speed motion of the tool towards <paramref name="xd"/> (m/s, then rad/s as a rotation vector, base

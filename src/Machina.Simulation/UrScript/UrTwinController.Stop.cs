@@ -34,11 +34,7 @@ internal sealed partial class UrTwinController
         {
             return;
         }
-        double[] speeds = new double[6], a = before.ToArray(), b = after.ToArray();
-        for (int i = 0; i < 6; i++)
-        {
-            speeds[i] = (b[i] - a[i]) / step; // degrees per second
-        }
+        double[] speeds = JointSpeeds(before, after, step); // degrees per second
         double seconds;
         Joints end;
         Func<double, Joints> path;
