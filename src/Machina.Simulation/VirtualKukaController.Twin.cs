@@ -197,7 +197,7 @@ public sealed partial class VirtualKukaController
         var apo = (KrlStructValue)twin.Motion.Apo.Value;
         return seen.Apply(basis, twin.Arm, twin.Arm.Joints, twin.Arm.ToolCenter) with
         {
-            Speed = KrlValues.ToReal(vel.Values[0]) * 1000,
+            Speed = vel.Real(0) * 1000,
             Zone = apo.Number("CDIS"),
         };
     }

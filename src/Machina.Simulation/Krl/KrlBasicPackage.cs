@@ -102,8 +102,8 @@ internal static class KrlBasicPackage
     private static void Frames(KrlEnvironment environment)
     {
         var frames = (KrlStructValue)environment.System["FDAT_ACT"].Value;
-        Write(environment, "$TOOL", FrameData(environment, "TOOL_DATA", (int)KrlValues.ToReal(frames.Values[0]), Tools));
-        Write(environment, "$BASE", FrameData(environment, "BASE_DATA", (int)KrlValues.ToReal(frames.Values[1]), Bases));
+        Write(environment, "$TOOL", FrameData(environment, "TOOL_DATA", (int)frames.Real(0), Tools));
+        Write(environment, "$BASE", FrameData(environment, "BASE_DATA", (int)frames.Real(1), Bases));
     }
 
     /// <summary>A PTP's settings from PDAT_ACT: axis speed <paramref name="velocity"/> %, its acceleration, its approximation distance.</summary>

@@ -42,7 +42,15 @@ internal static class KrlConvert
                     int j = map[i];
                     if (j >= 0)
                     {
-                        result.Values[j] = To(type.Fields[j].Type, s.Values[i], result.Values[j]);
+                        KrlType field = type.Fields[j].Type;
+                        if (field.Kind == KrlKind.Real && s.Type.Fields[i].Type.Kind is KrlKind.Real or KrlKind.Int)
+                        {
+                            result.SetReal(j, s.Real(i)); // a FRAME's X into an E6POS's: no box between the two structures' numbers
+                        }
+                        else
+                        {
+                            result.Values[j] = To(field, s.Values[i], Old(field, result, j));
+                        }
                         result.Unset = s.IsGiven(i) ? result.Unset & ~(1 << j) : result.Unset | (1 << j);
                     }
                 }
@@ -56,7 +64,8 @@ internal static class KrlConvert
                     int j = p.Type == type ? p.Indexes[i] : type.FieldsFrom(p.Type)[p.Indexes[i]];
                     if (j >= 0)
                     {
-                        result.Values[j] = To(type.Fields[j].Type, p.Values[i], result.Values[j]);
+                        KrlType field = type.Fields[j].Type;
+                        result.Values[j] = To(field, p.Values[i], Old(field, result, j));
                         result.Give(j);
                     }
                 }
@@ -78,4 +87,7 @@ internal static class KrlConvert
                 return KrlValues.Copy(value);
         }
     }
+
+    /// <summary>The value component <paramref name="j"/> of <paramref name="structure"/> has before a store, where the store needs it (a structure, which an aggregate fills in); null otherwise (a REAL's read would box it).</summary>
+    private static object? Old(KrlType field, KrlStructValue structure, int j) => field.Kind == KrlKind.Struct ? structure.Values[j] : null;
 }

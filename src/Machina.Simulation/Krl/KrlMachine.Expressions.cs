@@ -112,14 +112,14 @@ internal sealed partial class KrlMachine
             case KrlMember member:
             {
                 KrlPlace parent = Place(member.Target, frame);
-                var structure = (KrlStructValue)parent.Container[parent.Index];
+                var structure = (KrlStructValue)parent.Value;
                 if (structure.Shared)
                 {
                     // A status the EKI_ functions hand out to every caller: the variable gets its own copy before a component changes.
                     structure = structure.Copy();
-                    parent.Container[parent.Index] = structure;
+                    parent.Replace(structure);
                 }
-                return new KrlPlace(structure.Values, member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null, Structure = structure };
+                return new KrlPlace([], member.FieldIndex, member.Type) { Root = parent.Root is { } r ? (r.Cell, -1) : null, Structure = structure };
             }
             case KrlIndex { Target: KrlName name } index when index.Each.Length > 0 && name.Cell?.Signals is null:
             {
@@ -154,7 +154,7 @@ internal sealed partial class KrlMachine
                     int element = Flat(index, signals.Type, signals.Type.Length, frame);
                     return new KrlPlace([], element, index.Type) { Root = (parent.Root!.Value.Cell, element), Signals = signals };
                 }
-                return ElementPlace(index, (KrlArrayValue)parent.Container[parent.Index], parent.Root?.Cell, frame);
+                return ElementPlace(index, (KrlArrayValue)parent.Value, parent.Root?.Cell, frame);
             }
             default:
                 throw new KrlRuntimeException("only a variable can be written");
@@ -252,19 +252,10 @@ internal sealed partial class KrlMachine
                 var local = (KrlName)member.Target;
                 // A component of a local structure (the driver's target.X = … and pose.X = …, twelve an action): what its place
                 // would do, without making the place.
-                var structure = (KrlStructValue)(frame[local.Slot] ??= KrlValues.Default(local.Type));
-                if (structure.Shared)
-                {
-                    structure = structure.Copy();
-                    frame[local.Slot] = structure;
-                }
+                KrlStructValue structure = LocalStructure(member, frame);
                 int field = member.FieldIndex;
-                structure.Values[field] = KrlConvert.To(member.Type, value, structure.Values[field]);
-                structure.Give(field);
-                if (_watchesAll || _watchesComputed)
-                {
-                    _writes++;
-                }
+                structure.Values[field] = KrlConvert.To(member.Type, value, member.Type.Kind is KrlKind.Struct or KrlKind.Array ? structure.Values[field] : null);
+                LocalComponentWritten(structure, field);
                 return;
             }
             case KrlStore.Cell:

@@ -12,6 +12,10 @@ internal sealed partial class KrlMachine
     /// <summary>The value of the number expression <paramref name="expr"/> as a REAL.</summary>
     private double RealOf(KrlExpr expr, object[] frame)
     {
+        if (expr.Node == KrlNode.Member && expr.Type.Kind is KrlKind.Real or KrlKind.Int)
+        {
+            return RealComponent((KrlMember)expr, frame);
+        }
         if (expr.Node == KrlNode.Binary)
         {
             KrlKind kind = expr.Type.Kind;

@@ -222,6 +222,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             case KrlAssign assign:
             {
+                if (AssignRealComponent(assign, frame))
+                {
+                    return Flow.Next;
+                }
                 object value = Eval(assign.Value, frame);
                 if (assign.Value is KrlCall { Builtin.ReturnsFresh: true } && assign.Target is KrlName { Slot: >= 0 } local
                     && value is KrlStructValue made && made.Type == local.Type)

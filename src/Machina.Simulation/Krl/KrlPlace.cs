@@ -1,13 +1,13 @@
 namespace Machina.Simulation.Krl;
 
 /// <summary>
-/// Where a value is stored: a slot of a frame, cell, structure or array, a row of a CHAR array (<c>text[i, ]</c>), or a signal of
+/// Where a value is stored: a slot of a frame, cell or array, a component of a structure (<see cref="Structure"/>), a row of a CHAR array (<c>text[i, ]</c>), or a signal of
 /// an IO array (<see cref="Signals"/>). Assignments and OUT arguments write through it. A value type: finding the place of an
 /// element or component and writing it allocates nothing (an OUT argument boxes it once).
 /// </summary>
 internal readonly struct KrlPlace(object[] container, int index, KrlType type, int sliceLength = 0)
 {
-    /// <summary>The array holding the slot (or the row).</summary>
+    /// <summary>The array holding the slot (or the row); empty for a component of a structure (<see cref="Structure"/> holds it).</summary>
     public object[] Container { get; } = container;
 
     /// <summary>The slot (or the row's first element).</summary>
@@ -22,7 +22,7 @@ internal readonly struct KrlPlace(object[] container, int index, KrlType type, i
     /// <summary>The variable the place is part of, told after a write (e.g. <c>$OUT</c>), and the element's index in it.</summary>
     public (KrlCell Cell, int Element)? Root { get; init; }
 
-    /// <summary>For a component of a structure, the structure (it notes that the component was given a value).</summary>
+    /// <summary>For a component of a structure, the structure: it holds the component (its <see cref="Index"/>) and notes that it was given a value.</summary>
     public KrlStructValue? Structure { get; init; }
 
     /// <summary>For an IO array, its signals: the place is element <see cref="Index"/> of them, or all of them when it is -1.</summary>
@@ -33,7 +33,23 @@ internal readonly struct KrlPlace(object[] container, int index, KrlType type, i
         ? Index < 0 ? signals.Get() : signals.Get(Index)
         : SliceLength > 0
         ? new KrlArrayValue(Type, Container[Index..(Index + SliceLength)])
-        : Container[Index];
+        : Value;
+
+    /// <summary>The value in the slot (not a row's, not a signal's).</summary>
+    public object Value => Structure is { } structure ? structure[Index] : Container[Index];
+
+    /// <summary>Replaces the value in the slot as it is (no conversion; not a row's, not a signal's).</summary>
+    public void Replace(object value)
+    {
+        if (Structure is { } structure)
+        {
+            structure[Index] = value;
+        }
+        else
+        {
+            Container[Index] = value;
+        }
+    }
 
     /// <summary>Stores <paramref name="value"/>, converted to the place's type.</summary>
     public void Set(object value)
@@ -64,10 +80,21 @@ internal readonly struct KrlPlace(object[] container, int index, KrlType type, i
                 Container[Index + i] = i < source.Length ? source[i] : KrlValues.Box('\0');
             }
         }
+        else if (Structure is { } structure)
+        {
+            if (Type.Kind == KrlKind.Real)
+            {
+                structure.SetReal(Index, KrlValues.ToReal(value));
+            }
+            else
+            {
+                structure[Index] = KrlConvert.To(Type, value, Type.Kind is KrlKind.Struct or KrlKind.Array ? structure[Index] : null);
+            }
+            structure.Give(Index);
+        }
         else
         {
             Container[Index] = KrlConvert.To(Type, value, Container[Index]);
-            Structure?.Give(Index);
         }
         if (Root is { } root)
         {

@@ -21,10 +21,9 @@ internal sealed partial class KrlTwinController
     public static Joints JointsOf(KrlStructValue axes)
     {
         int[] indexes = axes.Type.AxisIndexes;
-        object[] values = axes.Values;
         return new(Axis(0), Axis(1), Axis(2), Axis(3), Axis(4), Axis(5));
 
-        double Axis(int i) => indexes[i] >= 0 ? KrlValues.ToReal(values[indexes[i]]) : 0;
+        double Axis(int i) => indexes[i] >= 0 ? axes.Real(indexes[i]) : 0;
     }
 
     /// <summary>An E6AXIS value of <paramref name="joints"/>.</summary>
@@ -33,7 +32,7 @@ internal sealed partial class KrlTwinController
         var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Axis);
         for (int i = 0; i < 6; i++)
         {
-            value.Values[i] = joints[i];
+            value.SetReal(i, joints[i]);
         }
         return value;
     }
@@ -58,8 +57,12 @@ internal sealed partial class KrlTwinController
         PositionComponents(tcp, baseFrame, c);
         KukaConfiguration configuration = KukaConfiguration.From(Options.Model, joints);
         var value = (KrlStructValue)KrlValues.Default(KrlTypes.E6Pos);
-        object[] v = value.Values;
-        (v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) = (c[0], c[1], c[2], c[3], c[4], c[5], configuration.Status, configuration.Turn);
+        for (int i = 0; i < 6; i++)
+        {
+            value.SetReal(i, c[i]);
+        }
+        value[6] = KrlValues.Box(configuration.Status);
+        value[7] = KrlValues.Box(configuration.Turn);
         return value;
     }
 
@@ -315,7 +318,7 @@ internal sealed partial class KrlTwinController
     {
         var vel = (KrlStructValue)Motion.Vel.Value;
         var acc = (KrlStructValue)Motion.Acc.Value;
-        return (KrlValues.ToReal(vel.Values[0]), Math.Max(KrlValues.ToReal(acc.Values[0]), 1e-6));
+        return (vel.Real(0), Math.Max(acc.Real(0), 1e-6));
     }
 
     /// <summary>
@@ -328,9 +331,9 @@ internal sealed partial class KrlTwinController
         var apo = (KrlStructValue)Motion.Apo.Value;
         double mm = approximation?.ToUpperInvariant() switch
         {
-            "C_DIS" => KrlValues.ToReal(apo.Values[2]),
-            "C_VEL" => Math.Pow(speed * Math.Clamp(KrlValues.ToReal(apo.Values[0]), 0, 100) / 100, 2) / (2 * acceleration) * 1000,
-            "C_ORI" => turnDegrees > 0 ? pathMm * Math.Min(1, KrlValues.ToReal(apo.Values[3]) / turnDegrees) : pathMm,
+            "C_DIS" => apo.Real(2),
+            "C_VEL" => Math.Pow(speed * Math.Clamp(apo.Real(0), 0, 100) / 100, 2) / (2 * acceleration) * 1000,
+            "C_ORI" => turnDegrees > 0 ? pathMm * Math.Min(1, apo.Real(3) / turnDegrees) : pathMm,
             _ => 0,
         };
         return mm > 0 ? mm : 0;
@@ -396,13 +399,13 @@ internal sealed partial class KrlTwinController
     {
         var vel = (KrlStructValue)Motion.Vel.Value;
         var acc = (KrlStructValue)Motion.Acc.Value;
-        double cp = KrlValues.ToReal(vel.Values[0]);
+        double cp = vel.Real(0);
         if (!(cp > 0) && mm > 0)
         {
             throw new KrlRuntimeException("Programmed path velocity $VEL.CP is 0: the motion would never end");
         }
-        double path = mm > 0 ? TwinMotion.TrapezoidSeconds(mm / 1000, cp, Math.Max(KrlValues.ToReal(acc.Values[0]), 1e-6)) : 0;
-        double turn = TwinMotion.TrapezoidSeconds(degrees, Math.Max(KrlValues.ToReal(vel.Values[1]), 1e-6), Math.Max(KrlValues.ToReal(acc.Values[1]), 1e-6));
+        double path = mm > 0 ? TwinMotion.TrapezoidSeconds(mm / 1000, cp, Math.Max(acc.Real(0), 1e-6)) : 0;
+        double turn = TwinMotion.TrapezoidSeconds(degrees, Math.Max(vel.Real(1), 1e-6), Math.Max(acc.Real(1), 1e-6));
         return Math.Max(path, turn);
     }
 

@@ -74,7 +74,7 @@ internal sealed partial class KrlTwinController
         int[] indexes = frame.Type.PoseIndexes;
         for (int i = 0; i < 6; i++)
         {
-            components[i] = indexes[i] >= 0 ? KrlValues.ToReal(frame.Values[indexes[i]]) : 0;
+            components[i] = indexes[i] >= 0 ? frame.Real(indexes[i]) : 0;
         }
     }
 

@@ -128,11 +128,11 @@ internal sealed class KrlType
     public int[] AxisIndexes => _axisIndexes ??= [FieldIndex("A1"), FieldIndex("A2"), FieldIndex("A3"), FieldIndex("A4"), FieldIndex("A5"), FieldIndex("A6")];
 
     /// <summary>
-    /// For a structure, the initial values of its components when each is an INT, REAL, BOOL or CHAR (their shared boxes, copied
-    /// for every new value, see <c>KrlValues.Default</c>), or <c>KrlValues</c>' marker for a structure with other components;
-    /// null until first made. Made from the type alone, so any controller may set it.
+    /// For a structure, its components' kinds when each is an INT, REAL, BOOL or CHAR (such a structure holds them unboxed, see
+    /// <c>KrlStructValue</c>), or an empty array for a structure with other components; null until first found. Found from the
+    /// type alone, so any controller may set it.
     /// </summary>
-    internal object[]? DefaultComponents { get; set; }
+    internal KrlKind[]? NumberKinds { get; set; }
 
     /// <summary>The indexes of the components X, Y, Z, A, B and C (-1 for one the type lacks), found once.</summary>
     public int[] PoseIndexes => _poseIndexes ??= [FieldIndex("X"), FieldIndex("Y"), FieldIndex("Z"), FieldIndex("A"), FieldIndex("B"), FieldIndex("C")];

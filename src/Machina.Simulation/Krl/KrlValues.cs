@@ -18,54 +18,6 @@ internal sealed record KrlEnumValue(string Name)
     public override string ToString() => "#" + Name;
 }
 
-/// <summary>A structure value: its type and one value per component.</summary>
-internal sealed class KrlStructValue(KrlType type, object[] values)
-{
-    /// <summary>The structure type.</summary>
-    public KrlType Type { get; } = type;
-
-    /// <summary>The component values, in the type's order.</summary>
-    public object[] Values { get; } = values;
-
-    /// <summary>
-    /// The components that were never given a value (bit i: component i), tracked for the status S and turn T of a POS or E6POS
-    /// only: a PTP to a position whose S and T were never given takes the solution nearest the current axes, as the controller
-    /// does. Reading such a component gives 0.
-    /// </summary>
-    public int Unset { get; set; }
-
-    /// <summary>
-    /// True for a value the controller keeps and hands out again (an EthernetKRL status: see <c>KrlTwinController.Status</c>), which
-    /// several variables may hold at once: it is never written, a write of one of its components copies it first.
-    /// </summary>
-    public bool Shared { get; init; }
-
-    /// <summary>A deep copy (KRL structures are values); the copy is the holder's own.</summary>
-    public KrlStructValue Copy()
-    {
-        if (KrlValues.HasSimpleComponents(Type))
-        {
-            // Only shared boxes, which are never changed (a store replaces them): the array's copy is the deep copy.
-            return new KrlStructValue(Type, KrlValues.CopyOf(Values)) { Unset = Unset };
-        }
-        var values = new object[Values.Length];
-        for (int i = 0; i < values.Length; i++)
-        {
-            values[i] = KrlValues.Copy(Values[i]);
-        }
-        return new KrlStructValue(Type, values) { Unset = Unset };
-    }
-
-    /// <summary>True when component <paramref name="index"/> was given a value.</summary>
-    public bool IsGiven(int index) => (Unset & (1 << index)) == 0;
-
-    /// <summary>Marks component <paramref name="index"/> as given a value.</summary>
-    public void Give(int index) => Unset &= ~(1 << index);
-
-    /// <summary>The REAL (or INT) component <paramref name="field"/>, 0 when the type has none.</summary>
-    public double Number(string field) => Type.FieldIndex(field) is int i and >= 0 ? KrlValues.ToReal(Values[i]) : 0;
-}
-
 /// <summary>An aggregate's value: the components it gives (the others keep the value of what it is assigned to).</summary>
 /// <param name="Type">The structure type.</param>
 /// <param name="Indexes">The components given.</param>
@@ -130,12 +82,8 @@ internal static class KrlValues
             case KrlKind.Enum:
                 return new KrlEnumValue("");
             case KrlKind.Struct:
-            {
-                // A structure of simple components (E6POS, E6AXIS, FRAME, EKI_STATUS: several an action) copies its initial values.
-                object[] template = type.DefaultComponents ??= ScalarDefaults(type);
-                object[] values = ReferenceEquals(template, NotScalar) ? DefaultComponents(type) : CopyOf(template);
-                return new KrlStructValue(type, values) { Unset = KrlTypes.StatusTurnBits(type) };
-            }
+                // A structure of INT, REAL, BOOL and CHAR components (E6POS, E6AXIS, FRAME, EKI_STATUS: several an action) is all zeros.
+                return KrlStructValue.Zero(type) ?? new KrlStructValue(type, DefaultComponents(type));
             default:
             {
                 var items = new object[type.Length];
@@ -148,24 +96,6 @@ internal static class KrlValues
         }
     }
 
-    /// <summary>
-    /// A copy of a structure's component array (a handful of references). <c>Array.Clone</c> goes through the runtime's generic
-    /// object copy (a call out of managed code and a bulk move with write barriers): 6 % of the KRL interpreter's thread per
-    /// streamed action, where the driver copies FRAMEs, E6POSes and E6AXISes several times an action.
-    /// </summary>
-    public static object[] CopyOf(object[] values)
-    {
-        var copy = new object[values.Length];
-        for (int i = 0; i < copy.Length; i++)
-        {
-            copy[i] = values[i];
-        }
-        return copy;
-    }
-
-    /// <summary>The marker of a structure with a component that is not an INT, REAL, BOOL or CHAR (<see cref="KrlType.DefaultComponents"/>).</summary>
-    private static readonly object[] NotScalar = new object[1];
-
     private static object[] DefaultComponents(KrlType type)
     {
         IReadOnlyList<(string Name, KrlType Type)> fields = type.Fields;
@@ -176,12 +106,6 @@ internal static class KrlValues
         }
         return values;
     }
-
-    /// <summary>True when each component of the structure type <paramref name="type"/> is an INT, REAL, BOOL or CHAR.</summary>
-    public static bool HasSimpleComponents(KrlType type) => !ReferenceEquals(type.DefaultComponents ??= ScalarDefaults(type), NotScalar);
-
-    private static object[] ScalarDefaults(KrlType type) =>
-        type.Fields.All(f => f.Type.Kind is KrlKind.Int or KrlKind.Real or KrlKind.Bool or KrlKind.Char) ? DefaultComponents(type) : NotScalar;
 
     /// <summary>A copy of a value (structures and arrays deep, the rest as is).</summary>
     public static object Copy(object value) => value switch
