@@ -28,6 +28,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// <summary>The writer of the received actions' log text, made when the log is first read; used under the gate.</summary>
     private EkiReceivedText? _receivedText;
 
+    /// <summary>The tags of the last action the driver channel received, which the next action with the same tags shares in the log.</summary>
+    private string[]? _receivedTags;
+
     /// <summary>An action the driver channel received, held until the driver settles it.</summary>
     private sealed class TwinAction(int id)
     {
@@ -100,7 +103,7 @@ public sealed partial class VirtualKukaController : IEkiSeam
         {
             int end = NextId(values, start + 1);
             int id = int.TryParse(values[start].Value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
-            HoldReceived(id, new EkiReceivedAction(values[start..end].ToArray()));
+            HoldReceived(id, EkiReceivedAction.Of(values[start..end], ref _receivedTags));
             start = end;
         }
     }
