@@ -37,13 +37,17 @@ public abstract partial class VirtualController<TState>
     /// socket, so it may still run; <see cref="CompleteReceivedOnCaller"/> then logs it without acknowledging it). False when
     /// it was not counted.
     /// </summary>
-    private protected bool ReceiveOnCaller(int id, string logText, out int generation, bool keepsCut = false)
+    /// <remarks>
+    /// <paramref name="logEntry"/> is the request's text for the log, or what the brand's <see cref="RequestText"/> writes the text
+    /// from when someone reads the log (a streamed request's text is then written only if it is read).
+    /// </remarks>
+    private protected bool ReceiveOnCaller(int id, object logEntry, out int generation, bool keepsCut = false)
     {
         if (!Receives(id, out generation) && !keepsCut)
         {
             return false; // read from a client a restart cut off: lost with the rest of what the driver held
         }
-        CountReceived(logText);
+        CountReceived(logEntry);
         Interlocked.Increment(ref _waitingOnCaller);
         return true;
     }

@@ -36,7 +36,28 @@ public abstract partial class VirtualController<TState>
     public int BufferedRequestCount => Volatile.Read(ref _waitingOnCaller);
 
     /// <summary>The last received requests, as text (bounded by the options' <c>RequestLogCapacity</c>).</summary>
-    public IReadOnlyList<string> ReceivedRequests => Copy(_requestLog);
+    public IReadOnlyList<string> ReceivedRequests
+    {
+        get
+        {
+            lock (Gate)
+            {
+                object[] entries = _requestLog.ToArray();
+                var texts = new string[entries.Length];
+                for (int i = 0; i < texts.Length; i++)
+                {
+                    texts[i] = RequestText(entries[i]);
+                }
+                return texts;
+            }
+        }
+    }
+
+    /// <summary>
+    /// The text of an entry of the received requests' log: the entry itself, or what the brand writes from the entry it logged
+    /// (<see cref="ReceiveOnCaller"/>). Called under the gate, so one reader at a time.
+    /// </summary>
+    private protected virtual string RequestText(object entry) => (string)entry;
 
     /// <summary>Texts the driver would have shown on the teach pendant (messages, errors), the last 1000.</summary>
     public IReadOnlyList<string> PendantMessages => Copy(_pendant);
@@ -50,7 +71,24 @@ public abstract partial class VirtualController<TState>
     /// <paramref name="seen"/> of the next read. A reader who polls copies only what is new, and nothing when nothing is (the
     /// count is read first, without the lock).
     /// </summary>
-    public long ReceivedRequestsSince(long seen, ICollection<string> into) => Since(_requestLog, seen, into);
+    public long ReceivedRequestsSince(long seen, ICollection<string> into)
+    {
+        ArgumentNullException.ThrowIfNull(into);
+        if (_requestLog.Total == seen)
+        {
+            return seen;
+        }
+        var entries = new List<object>();
+        lock (Gate)
+        {
+            long total = _requestLog.CopySince(seen, entries);
+            foreach (object entry in entries)
+            {
+                into.Add(RequestText(entry));
+            }
+            return total;
+        }
+    }
 
     /// <summary>As <see cref="ReceivedRequestsSince"/>, for <see cref="ExecutedIds"/>.</summary>
     public long ExecutedIdsSince(long seen, ICollection<int> into) => Since(_executedLog, seen, into);

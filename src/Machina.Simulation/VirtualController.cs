@@ -17,7 +17,8 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     private readonly VirtualControllerOptions _options;
     private readonly Lock _sendLock = new();
-    private readonly VirtualControllerLog<string> _requestLog;
+    /// <summary>The received requests' log: each entry its text, or what the brand writes it from when it is read (<see cref="RequestText"/>).</summary>
+    private readonly VirtualControllerLog<object> _requestLog;
     private readonly VirtualControllerLog<string> _pendant = new(MaxKeptTexts);
     private readonly VirtualControllerLog<string> _errors = new(MaxKeptTexts);
     private readonly List<Task> _loops = [];
@@ -277,14 +278,17 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
     private protected Task<bool> SendToClientAsync(byte[] bytes, CancellationToken token) =>
         token.IsCancellationRequested ? Task.FromCanceled<bool>(token) : Task.FromResult(SendToClient(bytes));
 
-    /// <summary>Counts and logs a request received (and the most received but not yet executed).</summary>
-    private void CountReceived(string logText)
+    /// <summary>
+    /// Counts and logs a request received (and the most received but not yet executed): <paramref name="logEntry"/> is its text,
+    /// or what <see cref="RequestText"/> writes it from when the log is read.
+    /// </summary>
+    private void CountReceived(object logEntry)
     {
         if (_options.RequestLogCapacity > 0)
         {
             lock (Gate)
             {
-                _requestLog.Add(logText);
+                _requestLog.Add(logEntry);
             }
         }
         int received = Interlocked.Increment(ref _requestsReceived);

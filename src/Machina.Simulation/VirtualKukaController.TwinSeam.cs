@@ -25,8 +25,11 @@ public sealed partial class VirtualKukaController : IEkiSeam
     private readonly ConnectionLog _connections;
     private byte[]? _heldTwinAcknowledgement;
 
-    /// <summary>The writer of the received actions' log text, between two documents (null while a reader uses it).</summary>
+    /// <summary>The writer of the received actions' log text, made when the log is first read; used under the gate.</summary>
     private EkiReceivedText? _receivedText;
+
+    /// <summary>The tags of the last action the driver channel received, which the next action with the same tags shares in the log.</summary>
+    private string[]? _receivedTags;
 
     /// <summary>An action the driver channel received, held until the driver settles it.</summary>
     private sealed class TwinAction(int id)
@@ -94,18 +97,20 @@ public sealed partial class VirtualKukaController : IEkiSeam
         {
             return;
         }
-        // Each action's values, from its ID to the next ID, as the element the host wrote (one scratch, kept between documents).
-        EkiReceivedText text = Interlocked.Exchange(ref _receivedText, null) ?? new EkiReceivedText();
+        // Each action's values, from its ID to the next ID: the log writes them as the element the host wrote when it is read.
         int start = NextId(values, 0);
         while (start < values.Length)
         {
             int end = NextId(values, start + 1);
             int id = int.TryParse(values[start].Value, NumberStyles.Integer, CultureInfo.InvariantCulture, out int parsed) ? parsed : 0;
-            HoldReceived(id, text.Of(values[start..end]));
+            HoldReceived(id, EkiReceivedAction.Of(values[start..end], ref _receivedTags));
             start = end;
         }
-        _receivedText = text;
     }
+
+    /// <summary>A received action's log text, written the first time the log is read (under the gate, as the base calls it).</summary>
+    private protected override string RequestText(object entry) =>
+        entry is EkiReceivedAction action ? action.Text(_receivedText ??= new EkiReceivedText()) : (string)entry;
 
     /// <summary>Where the next action's ID is in <paramref name="values"/> from <paramref name="from"/> on (their length when none).</summary>
     private static int NextId(ReadOnlySpan<(string Tag, string Value)> values, int from)
@@ -121,11 +126,11 @@ public sealed partial class VirtualKukaController : IEkiSeam
     }
 
     /// <summary>Counts action <paramref name="id"/> received and holds it until the driver settles it (not when a restart cut its client off).</summary>
-    private void HoldReceived(int id, string text)
+    private void HoldReceived(int id, EkiReceivedAction action)
     {
         lock (Gate)
         {
-            if (!ReceiveOnCaller(id, text, out _))
+            if (!ReceiveOnCaller(id, action, out _))
             {
                 return;
             }

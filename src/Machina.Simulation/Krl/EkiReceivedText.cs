@@ -6,8 +6,8 @@ namespace Machina.Simulation.Krl;
 /// replacements gave: each character is replaced on its own, and no entity holds one of the four but its leading &amp;), a
 /// value without them, as every number is, copied as it is. One buffer and the attribute names of the tags met (found by the
 /// tag's reference: the channel's splitter hands the same string for a tag each time) are kept between actions, so an action
-/// costs one string, where a builder appended each part, the name was cut from its tag and the whole copied again.
-/// Not thread-safe: one reader uses it at a time.
+/// costs one string, where a builder appended each part, the name was cut from its tag and the whole copied again. The log
+/// writes an action's text when it is first read (<see cref="EkiReceivedAction"/>). Not thread-safe: one reader uses it at a time.
 /// </summary>
 internal sealed class EkiReceivedText
 {
@@ -18,15 +18,15 @@ internal sealed class EkiReceivedText
     private readonly (string? Tag, string Opening)[] _names = new (string?, string)[16];
     private int _next;
 
-    /// <summary>The log text of one action's values.</summary>
-    public string Of(ReadOnlySpan<(string Tag, string Value)> action)
+    /// <summary>The log text of one action's values (<paramref name="values"/>, one per tag of <paramref name="tags"/>).</summary>
+    public string Of(ReadOnlySpan<string> tags, ReadOnlySpan<string> values)
     {
         _length = 0;
         Append("<A");
-        foreach ((string tag, string value) in action)
+        for (int i = 0; i < tags.Length; i++)
         {
-            Append(Opening(tag));
-            AppendEscaped(value);
+            Append(Opening(tags[i]));
+            AppendEscaped(values[i]);
             Append("\"");
         }
         Append("/>");

@@ -46,7 +46,7 @@ internal sealed class KrlArrayValue(KrlType type, object[] items)
 }
 
 /// <summary>Making, copying and converting KRL values (boxed int, double, bool, char, enum, structure, array).</summary>
-internal static class KrlValues
+internal static partial class KrlValues
 {
     private static readonly object[] SmallInts = [.. Enumerable.Range(-1, 4098).Select(i => (object)i)];
     private static readonly object[] Chars = [.. Enumerable.Range(0, 256).Select(i => (object)(char)i)];
@@ -145,23 +145,6 @@ internal static class KrlValues
             text.Append(c);
         }
         return text.ToString();
-    }
-
-    /// <summary>
-    /// Copies <paramref name="text"/> into a CHAR array (the rest unset); characters beyond its size are cut. An element that
-    /// already holds the character's shared box is not stored again: the driver's EKI_GetString writes a slot's 80 characters at
-    /// every action, most of them the same unset ones, and each store of a reference is a write barrier.
-    /// </summary>
-    public static void SetText(object[] items, int start, int length, string text)
-    {
-        for (int i = 0; i < length; i++)
-        {
-            object box = Box(i < text.Length ? text[i] : '\0');
-            if (!ReferenceEquals(items[start + i], box))
-            {
-                items[start + i] = box;
-            }
-        }
     }
 
     /// <summary>A value as the trace and messages write it.</summary>
