@@ -315,6 +315,10 @@ public sealed partial class VirtualAbbController : IRapidSocketSeam
 
     private static bool SendDirect(Stream outbox, byte[] bytes)
     {
+        if (outbox is TwinHeldOutbox held)
+        {
+            return held.TryWrite(bytes); // closed: false, without the IOException
+        }
         try
         {
             outbox.Write(bytes);

@@ -6,7 +6,7 @@ namespace Machina.Benchmarks;
 /// <summary>
 /// Which types a scenario allocates (<c>MACHINA_BENCH_ALLOCS=1</c>): the runtime reports a sampled allocation about every 100 KB
 /// allocated (<c>GCAllocationTick</c>) with the type of the object that crossed the mark, so the bytes per type are estimates
-/// (good to a few bytes per unit over 10^4 units or more). Counts only while <see cref="Counting"/>, i.e. during measured runs.
+/// (good to a few bytes per unit over 10^4 units or more). Counts only while <see cref="Counting"/>: around each run's work.
 /// </summary>
 internal sealed class AllocationTypes : EventListener
 {
@@ -34,6 +34,9 @@ internal sealed class AllocationTypes : EventListener
             _bytes.AddOrUpdate(type, BytesPerTick, (_, bytes) => bytes + BytesPerTick);
         }
     }
+
+    /// <summary>Forgets the bytes counted so far (the warm-ups').</summary>
+    public void Clear() => _bytes.Clear();
 
     /// <summary>"type: bytes per unit" lines, largest first, for <paramref name="units"/> units counted.</summary>
     public IEnumerable<string> Lines(long units, int top = 15) => _bytes.OrderByDescending(p => p.Value).Take(top)

@@ -53,6 +53,14 @@ internal sealed class JitMethods : EventListener
         }
     }
 
+    /// <summary>Forgets what was recorded so far (the warm-ups').</summary>
+    public void Clear()
+    {
+        _compiled.Clear();
+        _thrown.Clear();
+        _started.Clear();
+    }
+
     /// <summary>What was recorded since the last call, as lines: the count and time by tier, the exceptions thrown (when any), then the costliest methods.</summary>
     public IEnumerable<string> Drain(int top = 40)
     {

@@ -25,8 +25,11 @@ internal sealed record Measurement
     /// <summary>Warm-up runs before the measured ones.</summary>
     public int Warmups { get; init; }
 
-    /// <summary>False when the JIT was still compiling in the last warm-up (the warm-ups' limit was reached first).</summary>
+    /// <summary>False when a measured run the row keeps compiled a method (the JIT had not settled; see <see cref="RepeatedRuns"/>).</summary>
     public bool JitSettled { get; init; } = true;
+
+    /// <summary>Measured runs run again because the JIT compiled a method in them (at most <see cref="Runs"/>).</summary>
+    public int RepeatedRuns { get; init; }
 
     /// <summary>Garbage collections of generations 0/1/2 during the median run, e.g. "12/3/1".</summary>
     public string Collections { get; init; } = "";

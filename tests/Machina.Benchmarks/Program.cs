@@ -121,7 +121,7 @@ else
     Console.WriteLine($"Machina benchmarks - {machine}");
     Console.WriteLine($"Median of {runs} run(s) after at least {warmups} warm-up(s) (more until the JIT settles); load average {Machine.LoadAverage()} at start.");
     Console.WriteLine("ratio = median time per unit / target time per unit (<= 1.00 meets it); cpu = processor time of all threads during the run, the JIT's included;");
-    Console.WriteLine("jit cpu = the JIT's tiered-compilation thread during the run ((busy): still compiling after the last warm-up); -jit = cpu/unit without it.");
+    Console.WriteLine("jit cpu = the JIT's tiered-compilation thread during the run ((busy): still compiling in a measured run, after running such runs again); -jit = cpu/unit without it.");
     if (quick)
     {
         Console.WriteLine("Quick mode: one run of 10^4 units checks that every scenario works; its timings are indicative only.");

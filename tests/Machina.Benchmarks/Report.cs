@@ -29,6 +29,7 @@ internal static class Report
             ["jitMethods"] = m.JitMethods,
             ["warmups"] = m.Warmups,
             ["jitSettled"] = m.JitSettled,
+            ["repeatedRuns"] = m.RepeatedRuns,
             ["gcCollections"] = m.Collections,
             ["gcPauseSeconds"] = m.GcPauseSeconds,
             ["pageFaults"] = m.PageFaults,
@@ -93,7 +94,7 @@ internal static class Report
         return Table([.. header], lines);
     }
 
-    /// <summary>The JIT's processor time in the median run, marked "(busy)" when it had not settled after the warm-ups.</summary>
+    /// <summary>The JIT's processor time in the median run, marked "(busy)" when a run the row keeps still compiled methods.</summary>
     private static string Jit(Measurement m) => Time(m.JitSeconds) + (m.JitSettled ? "" : " (busy)");
 
     private static string Ratio(Measurement m)

@@ -4,15 +4,18 @@ using System.Runtime.CompilerServices;
 namespace Machina.Benchmarks;
 
 /// <summary>Times a scenario: warm-up runs, then measured runs with a full collection before each; reports the median.</summary>
-internal sealed class Runner(int warmups, int runs, Action<string> progress, bool settle = true)
+/// <remarks>
+/// The harness's event listeners (<see cref="RunListeners"/>; <paramref name="listeners"/>, by default as the environment asks) are
+/// made before the scenario's <c>Prepare</c>, when no other thread runs. A measured run in which the JIT compiled any method is run
+/// again, at most <c>runs</c> times in all; the row keeps the runs that compiled nothing, and is marked "(busy)" when it had to keep
+/// one that did.
+/// </remarks>
+internal sealed class Runner(int warmups, int runs, Action<string> progress, bool settle = true, Func<RunListeners>? listeners = null)
 {
     private const double MinWarmupSeconds = 0.5;
     private const int MaxWarmups = 50;
 
-    /// <summary>A warm-up run is steady when the JIT's compiling took at most this share of the process's processor time.</summary>
-    private const double SettledJitShare = 0.02;
-
-    /// <summary>At most this many warm-ups, and this long, are run waiting for the JIT to settle.</summary>
+    /// <summary>At most this many warm-ups, and this long, are run waiting for the JIT to settle (a warm-up that compiles no method).</summary>
     private const int MaxSettleWarmups = 15;
 
     private const double MaxSettleSeconds = 20;
@@ -51,44 +54,32 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
     private Measurement Measure(Scenario scenario, int size)
     {
         progress($"{scenario.Name} x {size:N0}: preparing");
+        // Before Prepare starts the scenario's threads (see RunListeners: made beside them, a listener could deadlock with them).
+        using RunListeners listening = (listeners ?? RunListeners.FromEnvironment)();
         Func<object?> work = scenario.Prepare(size);
-        // Listening from the warm-ups on, so that its own dispatch is compiled before the measured runs.
-        using JitMethods? compiled = Environment.GetEnvironmentVariable("MACHINA_BENCH_JIT") == "1" ? new JitMethods() : null;
         bool byThread = Environment.GetEnvironmentVariable("MACHINA_BENCH_THREADS") == "1";
         if (warmups > 0)
         {
             WarmBookkeeping(scenario.MultiThreaded, byThread, size);
         }
-        (int warmedUp, bool settled) = WarmUp(scenario, size, work);
+        (int warmedUp, bool settled) = WarmUp(scenario, size, work, listening, byThread);
         if (byThread)
         {
             Console.Error.WriteLine($"{scenario.Name}: {warmedUp} warm-up(s); the JIT {(settled ? "settled" : "was still compiling after the last")}");
         }
-        using AllocationTypes? types = Environment.GetEnvironmentVariable("MACHINA_BENCH_ALLOCS") == "1" ? new AllocationTypes() : null;
+        listening.Clear();
+        JitMethods? compiled = listening.Compiled;
+        AllocationTypes? types = listening.Types;
         var samples = new List<Sample>();
-        for (int i = 0; i < runs; i++)
+        for (int i = 0; i < runs + RepeatedRuns(samples); i++)
         {
             progress($"{scenario.Name} x {size:N0}: run {i + 1}/{runs}");
             // Read outside the timed run (reading /proc costs processor time of its own).
             Dictionary<int, ThreadCpu.ThreadTime> threadsBefore = ThreadCpu.Read();
             JitActivity jitBefore = JitActivity.Now();
-            if (types is not null)
-            {
-                types.Counting = true;
-            }
-            if (compiled is not null)
-            {
-                compiled.Counting = true;
-            }
+            listening.Count(true);
             Sample sample = RunOnce(work, scenario.MultiThreaded, byThread);
-            if (types is not null)
-            {
-                types.Counting = false;
-            }
-            if (compiled is not null)
-            {
-                compiled.Counting = false;
-            }
+            listening.Count(false);
             JitActivity jit = JitActivity.Now().Since(jitBefore);
             List<ThreadCpu.ThreadTime> threads = ThreadCpu.Difference(threadsBefore, ThreadCpu.Read());
             samples.Add(sample with { JitSeconds = JitSeconds(threads, jit), JitMethods = jit.Methods });
@@ -96,7 +87,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             {
                 // The threads as read inside the run (after its baseline collection, before the last): the harness's own
                 // collections, on the issuing thread, are not in them; the JIT's column above keeps the reading around the run.
-                Console.Error.WriteLine($"{scenario.Name} run {i + 1}: {jit.Methods} methods compiled; processor time by thread: {ThreadCpu.Text(sample.Threads ?? threads, size)}");
+                Console.Error.WriteLine($"{scenario.Name} run {i + 1}: {jit.Methods} methods compiled{(jit.Methods > 0 && samples.Count(s => s.JitMethods > 0) <= runs ? " (run again)" : "")}; "
+                    + $"processor time by thread: {ThreadCpu.Text(sample.Threads ?? threads, size)}");
             }
             if (compiled is not null)
             {
@@ -107,10 +99,12 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
                 }
             }
         }
+        int repeated = samples.Count - runs;
+        samples = Kept(samples, runs);
         if (types is not null)
         {
-            Console.Error.WriteLine($"{scenario.Name}: allocations by type (sampled) over the {runs} measured run(s):");
-            foreach (string line in types.Lines((long)size * runs))
+            Console.Error.WriteLine($"{scenario.Name}: allocations by type (sampled) over the {runs + repeated} measured run(s):");
+            foreach (string line in types.Lines((long)size * (runs + repeated)))
             {
                 Console.Error.WriteLine(line);
             }
@@ -131,7 +125,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             CpuWithoutJitSeconds = Median(samples.Select(s => s.CpuSeconds - s.JitSeconds)),
             JitMethods = Median(samples.Select(s => s.JitMethods)),
             Warmups = warmedUp,
-            JitSettled = settled,
+            JitSettled = samples.All(s => s.JitMethods == 0),
+            RepeatedRuns = repeated,
             Collections = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).Collections,
             GcPauseSeconds = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).GcPauseSeconds,
             PageFaults = samples.OrderBy(s => s.Seconds).ElementAt(samples.Count / 2).PageFaults,
@@ -149,13 +144,14 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
 
     /// <summary>
     /// The warm-up runs: at least the requested number, and at least <see cref="MinWarmupSeconds"/> of them (up to
-    /// <see cref="MaxWarmups"/>) so that small sizes also run optimised code; then more until a run's compiling (the JIT's
-    /// tiered-compilation thread where /proc tells, else <see cref="JitActivity"/>'s time) is at most <see cref="SettledJitShare"/>
-    /// of the process's processor time: the JIT promotes a method after 30 calls and again with the profile it gathered, so code
-    /// that runs a few times per run (connecting, the harness) is still being compiled runs later. Returns how many ran and
-    /// whether the JIT settled; none with <c>--warmup 0</c>, and no waiting for the JIT without <c>settle</c> (<c>--quick</c>).
+    /// <see cref="MaxWarmups"/>) so that small sizes also run optimised code; then more until a run in which the JIT compiled no
+    /// method at all (<see cref="JitActivity"/>, every thread): the JIT promotes a method after 30 calls and again with the profile
+    /// it gathered, so code that runs a few times per run (connecting, the harness) is still being compiled runs later. Each goes
+    /// through the measured runs' own path (<see cref="RunOnce"/>, the listeners recording), so that a measured run calls no code
+    /// the warm-ups did not. Returns how many ran and whether the JIT settled; none with <c>--warmup 0</c>, and no waiting for the
+    /// JIT without <c>settle</c> (<c>--quick</c>).
     /// </summary>
-    private (int Count, bool Settled) WarmUp(Scenario scenario, int size, Func<object?> work)
+    private (int Count, bool Settled) WarmUp(Scenario scenario, int size, Func<object?> work, RunListeners listening, bool byThread)
     {
         long start = Stopwatch.GetTimestamp();
         bool settled = false;
@@ -165,11 +161,12 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             progress($"{scenario.Name} x {size:N0}: warm-up {i + 1}");
             Dictionary<int, ThreadCpu.ThreadTime> threadsBefore = ThreadCpu.Read();
             JitActivity jitBefore = JitActivity.Now();
-            TimeSpan cpuBefore = Process.GetCurrentProcess().TotalProcessorTime;
-            work();
-            double cpu = (Process.GetCurrentProcess().TotalProcessorTime - cpuBefore).TotalSeconds;
-            double jit = JitSeconds(ThreadCpu.Difference(threadsBefore, ThreadCpu.Read()), JitActivity.Now().Since(jitBefore));
-            settled = jit <= SettledJitShare * cpu;
+            listening.Count(true);
+            Sample sample = RunOnce(work, scenario.MultiThreaded, byThread);
+            listening.Count(false);
+            JitActivity jit = JitActivity.Now().Since(jitBefore);
+            _ = JitSeconds(ThreadCpu.Difference(threadsBefore, ThreadCpu.Read()), jit) + ThreadCpu.Text(sample.Threads ?? [], size).Length;
+            settled = jit.Methods == 0;
         }
         return (i, settled);
 
@@ -179,6 +176,23 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
             bool minimum = done >= MaxWarmups || seconds >= MinWarmupSeconds;
             return minimum && (!settle || settled || done >= warmups + MaxSettleWarmups || seconds >= MaxSettleSeconds);
         }
+    }
+
+    /// <summary>How many measured runs are run again: one for each that compiled a method (<see cref="Sample.JitMethods"/>), at most as many as the runs asked for.</summary>
+    private int RepeatedRuns(List<Sample> samples) => Math.Min(runs, samples.Count(s => s.JitMethods > 0));
+
+    /// <summary>
+    /// The <paramref name="count"/> runs a row reports: those in which the JIT compiled nothing, in order; when fewer, the last of
+    /// those that compiled make up the number.
+    /// </summary>
+    internal static List<Sample> Kept(List<Sample> samples, int count)
+    {
+        List<Sample> kept = [.. samples.Where(s => s.JitMethods == 0).Take(count)];
+        if (kept.Count < count)
+        {
+            kept.AddRange(samples.Where(s => s.JitMethods > 0).TakeLast(count - kept.Count));
+        }
+        return kept;
     }
 
     /// <summary>
@@ -253,7 +267,7 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
         };
     }
 
-    private readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds, long PageFaults)
+    internal readonly record struct Sample(double Seconds, double CpuSeconds, long Allocated, long Retained, long Peak, string Collections, double GcPauseSeconds, long PageFaults)
     {
         /// <summary>The JIT's processor time during the run (see <see cref="JitSeconds(List{ThreadCpu.ThreadTime}, JitActivity)"/>).</summary>
         public double JitSeconds { get; init; }

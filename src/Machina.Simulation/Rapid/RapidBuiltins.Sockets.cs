@@ -115,16 +115,17 @@ internal static partial class RapidBuiltins
             byte[] bytes = SendBytes(call);
             try
             {
+                // A send that failed raises the RAPID error with the text it always had, without a .NET exception before it.
                 if (call.Machine.Task.Controller.Options.Seam is { } seam)
                 {
                     if (!seam.Send(connection, outbox, bytes, call.Machine.Task.CancellationToken))
                     {
-                        throw new SocketException((int)SocketError.ConnectionReset);
+                        throw call.Error(RapidErrorNumbers.SockClosed, $"SocketSend: {new SocketException((int)SocketError.ConnectionReset).Message}");
                     }
                 }
-                else
+                else if (!outbox.TryWrite(bytes))
                 {
-                    outbox.Write(bytes);
+                    throw call.Error(RapidErrorNumbers.SockClosed, "SocketSend: The connection is closed.");
                 }
             }
             catch (Exception ex) when (ex is SocketException or ObjectDisposedException or IOException)

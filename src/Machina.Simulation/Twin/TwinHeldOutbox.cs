@@ -53,22 +53,31 @@ internal sealed class TwinHeldOutbox(Socket connection, TwinHeldSends sends) : S
     }
 
     /// <summary>Holds <paramref name="buffer"/> (the task's thread) or writes it after what is held (any other thread).</summary>
+    /// <exception cref="IOException">The connection is closed (a write failed).</exception>
     public override void Write(ReadOnlySpan<byte> buffer)
+    {
+        if (!TryWrite(buffer))
+        {
+            throw new IOException("The connection is closed.");
+        }
+    }
+
+    /// <summary>
+    /// <see cref="Write(ReadOnlySpan{byte})"/> without its exception: false when the connection is closed (a write failed, before
+    /// or now). The twins' own sends take this path: a disconnect costs them no thrown exception.
+    /// </summary>
+    public bool TryWrite(ReadOnlySpan<byte> buffer)
     {
         lock (_gate)
         {
             if (_failed)
             {
-                throw new IOException("The connection is closed.");
+                return false;
             }
             if (!sends.OwnedByCurrentThread)
             {
                 FlushHeld();
-                if (!Send(buffer))
-                {
-                    throw new IOException("The connection is closed.");
-                }
-                return;
+                return Send(buffer);
             }
             if (_count + buffer.Length > _held.Length)
             {
@@ -80,12 +89,13 @@ internal sealed class TwinHeldOutbox(Socket connection, TwinHeldSends sends) : S
             if (_count >= SizeBound)
             {
                 FlushHeld();
-                return;
+                return true;
             }
             if (first && _count > 0)
             {
                 sends.Hold(this);
             }
+            return true;
         }
     }
 
@@ -134,13 +144,18 @@ internal sealed class TwinHeldOutbox(Socket connection, TwinHeldSends sends) : S
         }
         try
         {
-            connection.Send(bytes);
-            return true;
+            // The overload that reports the error: a peer that closed (a broken pipe, a reset) is the usual end of a connection,
+            // not worth a thrown exception per disconnect.
+            connection.Send(bytes, SocketFlags.None, out SocketError error);
+            if (error == SocketError.Success)
+            {
+                return true;
+            }
         }
         catch (Exception e) when (e is SocketException or ObjectDisposedException)
         {
-            _failed = true;
-            return false;
         }
+        _failed = true;
+        return false;
     }
 }
