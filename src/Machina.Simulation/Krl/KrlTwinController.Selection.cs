@@ -11,8 +11,11 @@ namespace Machina.Simulation.Krl;
 /// </summary>
 internal sealed partial class KrlTwinController
 {
-    /// <summary>The programs RUN selected, in order, for the robot interpreter to start.</summary>
-    private readonly Channel<string> _runs = System.Threading.Channels.Channel.CreateUnbounded<string>(new UnboundedChannelOptions { SingleReader = true });
+    /// <summary>One item per RUN, for the robot interpreter to look at <see cref="_pendingRun"/>.</summary>
+    private readonly Channel<bool> _runs = System.Threading.Channels.Channel.CreateUnbounded<bool>(new UnboundedChannelOptions { SingleReader = true });
+
+    /// <summary>The program a RUN selected and the robot interpreter has not started yet (under the gate); null: none.</summary>
+    private string? _pendingRun;
 
     /// <summary>Stops the program <see cref="RunNextSelected"/> runs (a STOP command); null while none runs so.</summary>
     private CancellationTokenSource? _stopRun;
@@ -30,6 +33,7 @@ internal sealed partial class KrlTwinController
         lock (_gate)
         {
             MainRoutine = routine;
+            _pendingRun = null;
         }
         ProgramStatus.Set(KrlProgramState.Idle, null);
         return true;
@@ -41,15 +45,23 @@ internal sealed partial class KrlTwinController
     /// </summary>
     public KrlProgramState? RunNextSelected(CancellationToken cancellation)
     {
-        string routine;
-        try
+        string? routine;
+        do
         {
-            routine = _runs.Reader.ReadAsync(cancellation).AsTask().GetAwaiter().GetResult();
+            try
+            {
+                _runs.Reader.ReadAsync(cancellation).AsTask().GetAwaiter().GetResult();
+            }
+            catch (OperationCanceledException)
+            {
+                return null;
+            }
+            lock (_gate)
+            {
+                (routine, _pendingRun) = (_pendingRun, null);
+            }
         }
-        catch (OperationCanceledException)
-        {
-            return null;
-        }
+        while (routine is null); // a CANCEL came before the interpreter started it, or one start answered two RUNs
         using var stop = CancellationTokenSource.CreateLinkedTokenSource(cancellation);
         Volatile.Write(ref _stopRun, stop);
         try
@@ -98,7 +110,11 @@ internal sealed partial class KrlTwinController
             Pendant.Log($"CWRITE($CMD, …, \"{text.Trim()}\"): program {name} not found: no program without parameters of that name is loaded");
             return "CMD_ABORT";
         }
-        _runs.Writer.TryWrite(name);
+        lock (_gate)
+        {
+            _pendingRun = name;
+        }
+        _runs.Writer.TryWrite(true);
         return "CMD_OK";
     }
 
