@@ -11,7 +11,7 @@ internal static partial class SimCommand
     internal const int DefaultPort = 7000;
 
     /// <summary>Every option of the command (a loaded run refuses those its twin does not read); before <see cref="Command"/>, which reads it.</summary>
-    private static readonly string[] AllOptions = ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home", "--task-type", "--cycle"];
+    private static readonly string[] AllOptions = ["--port", "--bind", "--speed-factor", "--model", "--load", "--rws-port", "--signal", "--eio", "--home", "--task-type", "--cycle", "--select"];
 
     internal static readonly CliCommand Command = new(
         "sim",
@@ -19,6 +19,7 @@ internal static partial class SimCommand
         $"""
         Usage: machina sim abb|ur|kuka [--port P] [--bind ADDRESS] [--speed-factor F] [--model M]
                machina sim abb|kuka --load PROGRAM [--model M]
+               machina sim kuka --load PROGRAM [--select NAME|none]
                machina sim abb --load PROGRAM [--eio EIO.cfg] [--signal [TYPE:]NAME[=VALUE]]... [--rws-port N] [--home DIR]
                                [--task-type TASK=NORMAL|STATIC|SEMISTATIC]... [--cycle once|forever]
 
@@ -59,6 +60,10 @@ internal static partial class SimCommand
                             (di, do, ai or ao), e.g. --signal di:signalRobotEStop=0 --signal DI_1=1. Repeatable
                             kuka: run a compiled KRL program (a .src with its .dat, or a folder) on the KRL twin in real
                             time and list each step it makes, then stop (exit code 1 when the controller stops it)
+          --select NAME|none
+                            kuka --load: the program the robot interpreter runs (default: the first .src's first routine),
+                            or none: no program selected ($PRO_STATE1 #P_FREE) until the folder's submit program (sps.sub)
+                            selects one with CWRITE($CMD, …, "RUN /R1/NAME()")
           --task-type TASK=NORMAL|STATIC|SEMISTATIC
                             abb --load: the task's Type in the controller's system parameters (default NORMAL). A static or
                             semistatic task runs its main for ever: started again each time it ends, until an error stops it.
@@ -76,7 +81,7 @@ internal static partial class SimCommand
         RunAsync);
 
     /// <summary>The options that only a program run with --load uses (refused without it, never ignored).</summary>
-    private static readonly string[] LoadOnlyOptions = ["--signal", "--eio", "--task-type", "--cycle"];
+    private static readonly string[] LoadOnlyOptions = ["--signal", "--eio", "--task-type", "--cycle", "--select"];
 
     /// <summary>Refuses an option that <paramref name="twin"/>'s loaded run would not read, and a second --load where it runs one program.</summary>
     private static void RefuseWhatALoadedRunIgnores(CliArgs args, Twins.ITwinProgram twin)

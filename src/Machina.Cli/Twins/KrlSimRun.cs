@@ -10,8 +10,12 @@ namespace Machina.Cli.Twins;
 /// </summary>
 internal static class KrlSimRun
 {
-    /// <summary>Loads the program (with its folder's modules, EthernetKRL configurations and RSI files) and runs it, telling each step.</summary>
-    internal static async Task<int> RunAsync(string path, RobotModel model, CliContext context)
+    /// <summary>
+    /// Loads the program (with its folder's modules, EthernetKRL configurations and RSI files) and runs it, telling each step;
+    /// <paramref name="select"/> (--select) names the program the robot interpreter runs instead of the first, or "none": no
+    /// program selected, as a controller stands before someone selects one (a submit program may, with CWRITE's RUN).
+    /// </summary>
+    internal static async Task<int> RunAsync(string path, string? select, RobotModel model, CliContext context)
     {
         List<(string Name, string Text)> files;
         try
@@ -39,16 +43,47 @@ internal static class KrlSimRun
             await output.WriteLineAsync($"FAILED: {ex.Message}").ConfigureAwait(false);
             return ExitCodes.Failed;
         }
+        if (select is not null && !twin.Select(string.Equals(select, "none", StringComparison.OrdinalIgnoreCase) ? null : select))
+        {
+            await output.WriteLineAsync($"FAILED: --select {select}: no program (a routine without parameters) of that name is loaded").ConfigureAwait(false);
+            return ExitCodes.Failed;
+        }
         twin.EkiOpened += (name, how) => output.WriteLine($"  EthernetKRL channel {name} open: {how}");
-        await output.WriteLineAsync($"Running {twin.MainRoutine} ({string.Join(", ", files.Select(f => f.Name))}) on a KRL twin of a {model} in real time. Press Ctrl+C to stop.").ConfigureAwait(false);
+        string loaded = string.Join(", ", files.Select(f => f.Name));
+        await output.WriteLineAsync(twin.MainRoutine is { } main
+            ? $"Running {main} ({loaded}) on a KRL twin of a {model} in real time. Press Ctrl+C to stop."
+            : $"Loaded {loaded} on a KRL twin of a {model} in real time, no program selected ($PRO_STATE1 #P_FREE): the robot interpreter runs the program a submit program selects (CWRITE($CMD, …, \"RUN /R1/NAME()\")). Press Ctrl+C to stop.").ConfigureAwait(false);
         foreach (string line in twin.Pendant.Lines)
         {
             await output.WriteLineAsync("  pendant: " + line).ConfigureAwait(false); // what the load noted (a machine data list set aside)
         }
         twin.Pendant.Logged += line => output.WriteLine("  pendant: " + line);
         Task submit = StartSubmit(twin, files, output, context.Cancellation);
-        KrlProgramState state = await Task.Run(() => twin.Run(null, context.Cancellation)).ConfigureAwait(false);
-        foreach (TwinTraceEntry step in twin.Arm.Trace)
+        KrlProgramState? state = null;
+        int told = 0;
+        if (twin.MainRoutine is not null)
+        {
+            state = await Task.Run(() => twin.Run(null, context.Cancellation)).ConfigureAwait(false);
+            told = await TellRunAsync(twin, state.Value, told, output).ConfigureAwait(false);
+        }
+        if (!submit.IsCompleted)
+        {
+            await output.WriteLineAsync("The submit interpreter runs on until Ctrl+C.").ConfigureAwait(false);
+            while (await Task.Run(() => twin.RunNextSelected(context.Cancellation)).ConfigureAwait(false) is { } next)
+            {
+                state = next;
+                told = await TellRunAsync(twin, next, told, output).ConfigureAwait(false);
+            }
+            await submit.ConfigureAwait(false);
+        }
+        return state is null or KrlProgramState.Finished ? ExitCodes.Ok : ExitCodes.Failed;
+    }
+
+    /// <summary>Tells the steps of the run that ended (the arm's trace after the first <paramref name="told"/>) and how it ended; the steps told so far.</summary>
+    private static async Task<int> TellRunAsync(KrlTwinController twin, KrlProgramState state, int told, TextWriter output)
+    {
+        IReadOnlyList<TwinTraceEntry> trace = twin.Arm.Trace;
+        foreach (TwinTraceEntry step in trace.Skip(told))
         {
             await output.WriteLineAsync(FormattableString.Invariant(
                 $"  line {step.Line,-5} {step.Seconds,9:0.000} s  {step.Text}: TCP {step.Tcp.Position}, joints {step.Joints}")).ConfigureAwait(false);
@@ -59,12 +94,7 @@ internal static class KrlSimRun
             KrlProgramState.Stopped => "STOPPED: the program was stopped before its end",
             _ => $"FAILED: {twin.Error}",
         }).ConfigureAwait(false);
-        if (!submit.IsCompleted)
-        {
-            await output.WriteLineAsync("The submit interpreter runs on until Ctrl+C.").ConfigureAwait(false);
-            await submit.ConfigureAwait(false);
-        }
-        return state == KrlProgramState.Finished ? ExitCodes.Ok : ExitCodes.Failed;
+        return trace.Count;
     }
 
     /// <summary>

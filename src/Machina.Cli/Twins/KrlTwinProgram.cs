@@ -8,7 +8,9 @@ internal sealed class KrlTwinProgram()
     : TwinProgram<KrlTwinOptions, KrlTwinController, KrlProgramState>(KukaBrand.Definition, "KRL", "a", "axes", "the KRL program", KrlProgramState.Finished, "src", "dat")
 {
     public override Func<CliArgs, RobotModel, System.Net.IPAddress, CliContext, Task<int>>? RunLoaded { get; } =
-        (args, model, _, context) => KrlSimRun.RunAsync(args.Value("--load")!, model, context);
+        (args, model, _, context) => KrlSimRun.RunAsync(args.Value("--load")!, args.Value("--select"), model, context);
+
+    public override IReadOnlyList<string> LoadOptions { get; } = ["--select"];
 
     public override bool IsProgram(string fullPath) => fullPath.EndsWith(".src", StringComparison.OrdinalIgnoreCase)
         || (Directory.Exists(fullPath) && Directory.GetFiles(fullPath, "*.src").Length > 0);

@@ -4,8 +4,8 @@ namespace Machina.Simulation.Krl;
 /// What programs read of the controller's program management (KUKA System Software, system variables): the state of the
 /// robot interpreter's program ($PRO_STATE1) and of the submit interpreter's ($PRO_STATE0), of type PRO_STATE (#P_FREE no program
 /// selected, #P_RESET selected and reset, #P_ACTIVE running, #P_STOP stopped, #P_END at its END), and the controller's
-/// millisecond clock ($ROB_TIMER). The commands that select, start, stop, cancel or reset a program (CWRITE on the command
-/// channel $CMD) load, and stop the program that sends one with why: the twin runs the one program it was given.
+/// millisecond clock ($ROB_TIMER). The commands that select and start, stop, reset or cancel the robot program (CWRITE on the
+/// command channel $CMD: RUN, STOP, RESET, CANCEL) act on the robot interpreter (<see cref="KrlTwinController.Command"/>).
 /// </summary>
 internal static class KrlProgramManagement
 {
@@ -27,8 +27,19 @@ internal static class KrlProgramManagement
         KrlBuiltinParameter any = new(null, Optional: true);
         environment.Builtins["CWRITE"] = new KrlBuiltin("CWRITE", null,
             [new(KrlType.Int), new(StateType, IsOut: true), new(KrlType.Enum), KrlBuiltinParameter.Text, .. Enumerable.Repeat(any, MaxFormatArguments)],
-            (_, a) => throw new KrlRuntimeException(
-                $"CWRITE($CMD, …, \"{Text(a[3])}\") is not supported by the twin: program management (RUN, STOP, CANCEL, RESET of a program from another interpreter) is not modelled"));
+            (_, a) => Write(controller, (KrlPlace)a[1], Text(a[3])));
+    }
+
+    /// <summary>
+    /// CWRITE on $CMD: the robot interpreter's program management (<see cref="KrlTwinController.Command"/>), its answer in the
+    /// state's RET1 (HITS and LENGTH 0); a command the twin does not know stops the program that wrote it, with why.
+    /// </summary>
+    private static object? Write(KrlTwinController controller, KrlPlace state, string command)
+    {
+        string ret = controller.Command(command) ?? throw new KrlRuntimeException(
+            $"CWRITE($CMD, …, \"{command}\") is not supported by the twin: of the program management commands it knows RUN, STOP, RESET and CANCEL");
+        state.Set(new KrlStructValue(StateType, [new KrlEnumValue(ret), KrlValues.Box(0), KrlValues.Box(0)]));
+        return null;
     }
 
     private static string Text(object value) => value is string s ? s : KrlValues.Text((KrlArrayValue)value).TrimEnd();

@@ -5,7 +5,7 @@ internal static partial class RapidBuiltins
 {
     /// <summary>Every built-in.</summary>
     public static IReadOnlyDictionary<string, RapidBuiltin> All { get; } =
-        new[] { Motion(), Path(), Settings(), Strings(), MathFunctions(), Io(), Misc(), Sockets(), Interrupts(), Events(), SysInfo(), RawBytes(), ErrorRecovery(), DataAndWaits(), Kinematics(), Frames(), Pendant(), MultiMove(), Trigg(), TriggChecks(), Files(), WorldZones(), Udp(), SmartGripper() }.SelectMany(x => x)
+        new[] { Motion(), Path(), Settings(), Strings(), MathFunctions(), Io(), Misc(), Sockets(), Interrupts(), Events(), SysInfo(), RawBytes(), ErrorRecovery(), DataAndWaits(), Kinematics(), Frames(), Pendant(), MultiMove(), Trigg(), TriggChecks(), Files(), WorldZones(), Udp(), SmartGripper(), Torque() }.SelectMany(x => x)
             .ToDictionary(b => b.Name, StringComparer.OrdinalIgnoreCase);
 
     private static RapidBuiltinParam P(string name, string? type, bool reference = false) => RapidBuiltin.P(name, type, reference);

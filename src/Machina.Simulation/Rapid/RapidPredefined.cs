@@ -39,6 +39,7 @@ internal static partial class RapidPredefined
         }
         Add(program, "fine", RapidTypes.Zonedata, new RapidRecord(RapidTypes.Zonedata, [true, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
         Add(program, "load0", RapidTypes.Loaddata, Load0());
+        Add(program, "ROB_1", RapidTypes.All["mecunit"], new object()); // the arm's mechanical unit (GetMotorTorque \MecUnit, GetJointData \MechUnit)
         Add(program, "tool0", RapidTypes.Tooldata, new RapidRecord(RapidTypes.Tooldata, [true, RapidGeometry.ToPoseRecord(Pose.Identity), Load0()]));
         Add(program, "wobj0", RapidTypes.Wobjdata, new RapidRecord(RapidTypes.Wobjdata,
             [false, true, "", RapidGeometry.ToPoseRecord(Pose.Identity), RapidGeometry.ToPoseRecord(Pose.Identity)]));

@@ -16,6 +16,7 @@ internal static partial class RapidTypes
         new("symnum", RapidTypeKind.Num, "num"), new("byte", RapidTypeKind.Num, "num"), new("opnum", RapidTypeKind.Num, "num"), new("inttypes", RapidTypeKind.Num, "num"),
         new("btnres", RapidTypeKind.Num, "num"), new("buttondata", RapidTypeKind.Num, "num"), new("icondata", RapidTypeKind.Num, "num"),
         new("taskid", RapidTypeKind.Opaque, create: () => new object()),
+        new("mecunit", RapidTypeKind.Opaque, create: () => new object()),
         new("syncident", RapidTypeKind.Opaque, create: () => new object()),
         new("triggdata", RapidTypeKind.Opaque, create: () => new RapidTriggData()),
         new("iodev", RapidTypeKind.Opaque, create: () => new RapidFileDevice()),

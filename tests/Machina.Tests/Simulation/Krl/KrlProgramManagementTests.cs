@@ -67,17 +67,20 @@ public class KrlProgramManagementTests
     }
 
     [Fact]
-    public void Cwrite_OnTheCommandChannel_Loads_AndStopsTheProgramWithWhy()
+    public void Cwrite_Run_WhileTheRobotProgramRuns_AnswersAbort_AndAnUnknownCommandStopsTheProgramWithWhy()
     {
-        const string source = "DEF prog( )\n  active = TRUE\n  CWRITE($CMD, state, mode, \"RUN /R1/other()\")\n  active = FALSE\nEND\n";
+        // A RUN needs the robot interpreter free (#P_FREE); the program that writes it runs there, so the controller refuses it.
+        const string source = "DEF prog( )\n  active = TRUE\n  CWRITE($CMD, state, mode, \"RUN /R1/other()\")\n  submit_free = state.RET1 == #CMD_ABORT\n  CWRITE($CMD, state, mode, \"DIRLOAD /R1/other()\")\n  active = FALSE\nEND\n";
         using var twin = new KrlTwinController();
         twin.Load(("prog.src", source), ("prog.dat", DataList));
 
         KrlProgramState state = twin.Run();
 
         Assert.Equal(KrlProgramState.Failed, state);
+        Assert.Equal(true, Data(twin, "submit_free"));
+        Assert.Contains("CWRITE($CMD, …, \"RUN /R1/other()\") refused: the robot interpreter's program is #P_ACTIVE", twin.Pendant.Lines);
         Assert.Equal(
-            "CWRITE($CMD, …, \"RUN /R1/other()\") is not supported by the twin: program management (RUN, STOP, CANCEL, RESET of a program from another interpreter) is not modelled (prog.src, line 3)",
+            "CWRITE($CMD, …, \"DIRLOAD /R1/other()\") is not supported by the twin: of the program management commands it knows RUN, STOP, RESET and CANCEL (prog.src, line 5)",
             twin.Error);
         Assert.Equal(true, Data(twin, "active"));
         Assert.Equal("P_STOP", twin.RobotProgramState);
