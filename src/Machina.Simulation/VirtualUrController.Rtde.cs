@@ -132,6 +132,7 @@ public sealed partial class VirtualUrController
                 reply.Byte(1);
                 return true;
             case Packages.TextMessage:
+                ShowClientMessage(payload);
                 return false;
             default:
                 RecordError($"RTDE: unknown package type {type}.");

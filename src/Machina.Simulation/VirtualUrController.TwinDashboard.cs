@@ -172,7 +172,13 @@ public sealed partial class VirtualUrController
                     _operationalMode = mode;
                 }
                 return $"Operational mode {mode} is set";
-            default: // the flight report and support file need a robot's disk
+            case "generate flight report":
+                // Asked for by UR's client library (software 3.13 / 5.8 on): answered as a UR answers; the twin writes no report.
+                return "Flight Report generated with id: " + Interlocked.Increment(ref _flightReports).ToString(System.Globalization.CultureInfo.InvariantCulture);
+            case "generate support file":
+                // As the flight report: the answer a UR gives once the file is in the directory asked for; the twin writes none.
+                return "Completed successfully: " + argument;
+            default:
                 return $"could not understand: '{command} {argument}'";
         }
     }
@@ -215,11 +221,16 @@ public sealed partial class VirtualUrController
         {
             if (_loadedProgram is not null && (_playingLoaded == twin.ProgramsStarted || twin.ProgramsStarted == 0))
             {
-                return _loadedProgram;
+                // The program's file name, without the folders it was loaded from ("load /programs/a/b.urp": "STOPPED b.urp"),
+                // as URSim gives it: UR's client library waits for "STOPPED " and the file name after loading a path.
+                return _loadedProgram[(_loadedProgram.LastIndexOf('/') + 1)..];
             }
         }
         return twin.ProgramsStarted == 0 ? "<unnamed>" : twin.ProgramName ?? "<unnamed>";
     }
+
+    /// <summary>How many flight reports the dashboard has been asked for: the id of the last one.</summary>
+    private int _flightReports;
 
     /// <summary>The serial number the dashboard gives (UR's begin with the year of make).</summary>
     private const string SerialNumber = "20245500001";

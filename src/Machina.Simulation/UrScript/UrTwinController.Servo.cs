@@ -7,7 +7,10 @@ namespace Machina.Simulation.UrScript;
 /// positions ... The function is blocking for time t"): the arm tracks the target from where it is at the speeds it has
 /// (<see cref="UrServoWay"/>), trailing it as a UR's servo does, and goes on tracking it after the call returned until the same
 /// thread's next command (the next <c>servoj</c> goes on from the arm's position and speeds then), a stop, a hold or the
-/// program's end. The model's joint speed limits are checked on that way: what the arm would do, not the step between targets.
+/// program's end. The Script Manual's t is the "time where the command is controlling the robot": a thread that stops calling
+/// (it sleeps, waits, ends its loop) leaves the arm without a command once t and <see cref="UrTwinOptions.ServoRunOut"/> are
+/// over, and the arm stands where the servo had brought it, short of the target (a UR's servo "runs out of targets"). The
+/// model's joint speed limits are checked on that way: what the arm would do, not the step between targets.
 /// </summary>
 internal sealed partial class UrTwinController
 {
@@ -39,7 +42,9 @@ internal sealed partial class UrTwinController
         {
             var way = new UrServoWay(at, JointSpeeds(before, after, step), target, look, g);
             RequireSpeeds(way.PeakSpeeds(), 1);
-            return (way, way.Settles);
+            // The command controls the arm for t (and the run-out's allowance): a thread that gives no new command by then
+            // leaves the arm standing where the servo had brought it, short of a target it had not reached.
+            return (way, Math.Min(way.Settles, seconds + Options.ServoRunOut.TotalSeconds));
         }, seconds, line, "servoj", cancellation);
     }
 

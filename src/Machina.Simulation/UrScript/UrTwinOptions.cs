@@ -19,6 +19,15 @@ internal sealed record UrTwinOptions : TwinOptions
     /// </summary>
     public long SecondaryStepWork { get; init; } = 10_000;
 
+    /// <summary>
+    /// How long past a <c>servoj</c>'s time t the arm goes on tracking its target when the program's thread gives no new
+    /// command (the Script Manual: t is the "time where the command is controlling the robot"); then the servo has run out
+    /// and the arm stands where it is. A UR's real-time thread gives the next command in the next 2 ms control step; the
+    /// twin's program thread can be late by some milliseconds on a loaded machine (session 34 saw 6-10 ms), which this covers
+    /// so that a servo loop that keeps calling is not stopped by the twin's own scheduling.
+    /// </summary>
+    public TimeSpan ServoRunOut { get; init; } = TimeSpan.FromSeconds(0.02);
+
     /// <summary>The seed of <c>random()</c>.</summary>
     public int RandomSeed { get; init; } = 1;
 

@@ -52,10 +52,13 @@ public sealed class UrServoTrackingTests
     /// <summary>
     /// 100 servoj steps of 0.01 s with joint 1's target rising 0.005 rad a step (0.5 rad/s), lookahead 0.1 s, gain 300: after
     /// them the arm trails the last target by about lookahead times the speed (minus half a step), exactly where the servo law
-    /// puts it; then, with no new target (the program sleeps), it goes on to the last target. The old twin had the arm on it.
+    /// puts it (the session 34 twin had the arm on each target). Then the program sleeps: no new command, and the last one
+    /// controlled the arm only for its t (the Script Manual's "time where the command is controlling the robot"), so once t
+    /// and the run-out allowance (20 ms) are over the arm stands where the servo had brought it, short of the last target, as
+    /// a UR's does when its servo thread stops calling. The session 34 twin went on to the last target while the program slept.
     /// </summary>
     [Fact]
-    public void Servoj_ARampOfTargets_TheArmTrailsItAsTheServoLawSays_ThenReachesTheLastTarget()
+    public void Servoj_ARampOfTargets_TheArmTrailsItAsTheServoLawSays_ThenStandsWhenTheCallsStop()
     {
         var clock = new ManualClock();
         using var twin = new UrTwinController(new UrTwinOptions { Time = clock, RealTime = true, StartJoints = Start });
@@ -80,15 +83,20 @@ public sealed class UrServoTrackingTests
         Assert.InRange(0.5 - at, 0.04, 0.05); // about 0.1 s · 0.5 rad/s behind the last target, not on it
         Assert.Equal(Start.J2, twin.JointsNow().J2, 6); // the joints not asked to move stay
 
-        clock.Advance(TimeSpan.FromSeconds(3)); // no new target: the servo goes on to the last one
-        Assert.Equal(0.5, (twin.JointsNow().J1 - Start.J1) / Degrees, 5);
+        clock.Advance(TimeSpan.FromSeconds(3)); // no new command: the servo ran out 0.01 + 0.02 s after the last call began
+        double stood = Integrate(k => 0.005 * Math.Min(k + 1, 100), 102, 0.01, 0.1, 300); // 0.02 s more on the last target
+        double now = (twin.JointsNow().J1 - Start.J1) / Degrees;
+        Assert.Equal(stood, now, 4);
+        Assert.InRange(0.5 - now, 0.03, 0.04); // still about 0.035 rad short of the last target, not on it
+        Assert.Equal(0, twin.JointSpeedsNow().J1, 6);
     }
 
     /// <summary>
     /// A target 1.5 degrees from the arm at rest with t = 0.002 (a servo thread that fell a few steps behind its target stream
     /// gets such a step): the old twin refused it ("servoj: joint 3 would move at 745 deg/s, above its maximum of 180 deg/s"),
-    /// as if the arm jumped there in one step. The arm tracks it: after the call it has barely moved, and it reaches the target
-    /// by itself while the program sleeps.
+    /// as if the arm jumped there in one step. The arm tracks it: after the call it has barely moved; the program then sleeps,
+    /// so the servo runs out 20 ms after the call's 2 ms and the arm stands there, a little on its way (the session 34 twin took
+    /// it all the way to the target while the program slept).
     /// </summary>
     [Fact]
     public void Servoj_ATargetAStepAhead_IsTrackedNotRefused()
@@ -111,8 +119,10 @@ public sealed class UrServoTrackingTests
         Assert.True(moved < 0.0001, $"joint 3 moved {moved} rad in 2 ms");
 
         clock.Advance(TimeSpan.FromSeconds(1.5));
-        Assert.Equal(0.026, (twin.JointsNow().J3 - Start.J3) / Degrees, 5);
-        Assert.True(twin.JointSpeedsNow().J3 < 0.01, "the arm still moves on its target");
+        double stood = (twin.JointsNow().J3 - Start.J3) / Degrees;
+        Assert.Equal(Integrate(_ => 0.026, 11, 0.002, 0.1, 300), stood, 6); // 2 ms of the call and 20 ms of run-out
+        Assert.InRange(stood, 0.001, 0.003); // on its way, far from the target 0.026 rad on
+        Assert.Equal(0, twin.JointSpeedsNow().J3, 6);
     }
 
     /// <summary>
