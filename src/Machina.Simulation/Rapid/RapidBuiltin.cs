@@ -88,6 +88,19 @@ internal readonly struct RapidCall(RapidMachine machine, RapidFrame? frame, Rapi
     /// <summary>A record parameter.</summary>
     public RapidRecord Record(int p) => (RapidRecord)Value(p);
 
+    /// <summary>
+    /// A record parameter and where it was read (<paramref name="read"/>: the cell of its data, taken with its write count before the
+    /// read), so that a later read can tell it is the same value unchanged (<see cref="RapidCellMark.Same"/>).
+    /// </summary>
+    public RapidRecord Record(int p, out RapidCellMark read)
+    {
+        RapidCell? cell = DataCell(p);
+        long version = cell?.Version ?? 0;
+        RapidRecord value = Record(p);
+        read = new RapidCellMark(cell, value, version);
+        return value;
+    }
+
     /// <summary>The static type of parameter <paramref name="p"/>'s argument.</summary>
     public RapidDataType? TypeOf(int p) => args[target.ArgumentOf[p]].Value!.Type;
 

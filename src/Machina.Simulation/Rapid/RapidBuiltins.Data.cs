@@ -18,7 +18,10 @@ internal static partial class RapidBuiltins
             P("Value", null, true), Sw("Hidden")], call =>
         {
             RapidCell cell = DataNamed(call, 4);
-            call.Set(4, RapidValues.Copy(cell.Value));
+            // \TaskName's task may be writing the record in place on its thread: a copy of one state of it (RapidCell.Read).
+            object value = cell.Read(RapidValues.Copy)
+                ?? throw call.Error(RapidErrorNumbers.SymAccess, $"GetDataVal: '{call.Str(0)}' was written during each attempt to read it");
+            call.Set(4, value);
         }),
         Instruction("SetDataVal", [P("Object", "string"), Opt("Block", "string"), Opt("TaskRef", "taskid"), Opt("TaskName", "string"),
             P("Value", null), Sw("Hidden")], call =>

@@ -65,9 +65,10 @@ internal static partial class RapidBuiltins
     {
         RapidTask task = call.Machine.Task;
         TwinArm arm = task.Controller.Arm;
-        RapidRecord toolData = call.Record(p.Tool);
-        RapidRecord? wobjData = call.Has(p.WObj) ? call.Record(p.WObj) : null;
-        bool kept = task.KeepsFrames(toolData, wobjData); // the frames of the last move's data, which passed the checks below
+        RapidRecord toolData = call.Record(p.Tool, out RapidCellMark toolRead);
+        RapidCellMark wobjRead = default;
+        RapidRecord? wobjData = call.Has(p.WObj) ? call.Record(p.WObj, out wobjRead) : null;
+        bool kept = task.KeepsFrames(toolData, toolRead, wobjData, wobjRead); // the frames of the last move's data, which passed the checks below
         Pose tool = kept ? task.ToolPose : ToolFrame(call, toolData);
         Pose wobj = wobjData is null ? Pose.Identity : kept ? task.WObjPose : WorkObjectFrame(call, wobjData);
         bool linear = name == "MoveL";
@@ -89,7 +90,7 @@ internal static partial class RapidBuiltins
             task.WorkObject = wobj;
             if (!kept)
             {
-                task.UsedFrames(toolData, wobjData, tool, wobj);
+                task.UsedFrames(toolData, toolRead, wobjData, wobjRead, tool, wobj);
             }
             if (via is not null)
             {

@@ -183,10 +183,13 @@ internal static partial class RapidBuiltins
             return;
         }
         var array = (RapidArray)call.Value(raw + 1);
+        RapidCell? cell = call.DataCell(raw + 1);
+        cell?.BeginWrite(); // the elements are written in place: RWS reads the array again meanwhile
         for (int i = 0; i < array.Items.Length; i++)
         {
             array.Items[i] = i < received.Length ? (double)received[i] : 0.0;
         }
+        cell?.EndWrite();
     }
 
     /// <summary>The bytes SocketSend sends: \Str, \RawData (its length, or \NoOfBytes) or \Data (an array of bytes, or \NoOfBytes of them).</summary>

@@ -107,13 +107,13 @@ internal sealed partial class RapidMachine
                 break;
             case RapidComponent c:
                 ((RapidRecord)Evaluate(c.Target, frame)).Fields[c.Index] = value;
-                CountPersistentWrite(c.Target, frame);
+                PartWritten(c.Target, frame);
                 break;
             case RapidIndex i:
             {
                 var array = (RapidArray)Evaluate(i.Target, frame);
                 array.Items[Offset(array, i, frame)] = value;
-                CountPersistentWrite(i.Target, frame);
+                PartWritten(i.Target, frame);
                 break;
             }
             default:
@@ -158,15 +158,24 @@ internal sealed partial class RapidMachine
             return false;
         }
         RapidValues.CopyInto(into, from);
+        cell.Written(); // a local: no other thread reads it, so no odd count while its parts are written
         return true;
     }
 
-    /// <summary>Counts the write of a component or element when the data it belongs to is watched by an IPers order.</summary>
-    private void CountPersistentWrite(RapidExpr data, RapidFrame? frame)
+    /// <summary>
+    /// Counts the write of a component or element in the cell of the data it belongs to (<see cref="RapidCell.Written"/>), and as a
+    /// write of persistent data when an IPers order watches that data.
+    /// </summary>
+    private void PartWritten(RapidExpr data, RapidFrame? frame)
     {
-        if (data.Root is RapidName n && (n.Global ?? frame!.Cells[n.Slot]).Watched)
+        if (data.Root is RapidName n)
         {
-            PersistentWritten();
+            RapidCell cell = n.Global ?? frame!.Cells[n.Slot];
+            cell.Written();
+            if (cell.Watched)
+            {
+                PersistentWritten();
+            }
         }
     }
 

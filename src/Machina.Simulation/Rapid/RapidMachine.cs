@@ -165,7 +165,10 @@ internal sealed partial class RapidMachine(RapidTask task)
         switch (statement)
         {
             case RapidAssign a:
-                Store(a.Target, frame, Evaluate(a.Value, frame), owned: a.Value is RapidAggregate);
+                if (a.Value is not RapidAggregate aggregate || !AssignInPlace(a.Target, aggregate, frame))
+                {
+                    Store(a.Target, frame, Evaluate(a.Value, frame), owned: a.Value is RapidAggregate);
+                }
                 return RapidFlow.Next;
             case RapidIf i:
                 return If(i, frame);

@@ -17,21 +17,43 @@ internal sealed partial class RapidTask
 
     private bool _posed;
 
+    /// <summary>Where the tooldata and wobjdata of the last MoveL, MoveJ or MoveC were read, while they are known identical to the kept copies.</summary>
+    private RapidCellMark _toolRead, _wobjRead;
+
     /// <summary>
     /// True when <paramref name="tool"/> and <paramref name="wobj"/> are identical to the data of the last MoveL, MoveJ or MoveC: their
-    /// frames are <see cref="ToolPose"/> and <see cref="WObjPose"/> (a driver's every move: no tooldata or wobjdata read again).
+    /// frames are <see cref="ToolPose"/> and <see cref="WObjPose"/> (a driver's every move: no tooldata or wobjdata read again). Data
+    /// read from the same data as then, not written since (<paramref name="toolRead"/>, <paramref name="wobjRead"/>), are those data
+    /// without a comparison of their ~40 components; otherwise they are compared, and where they were read is kept when identical.
     /// </summary>
-    public bool KeepsFrames(RapidRecord tool, RapidRecord? wobj) =>
-        _posed && ToolData is not null && RapidValues.Identical(tool, ToolData)
-        && (wobj is null ? WObjData is null : WObjData is not null && RapidValues.Identical(wobj, WObjData));
+    public bool KeepsFrames(RapidRecord tool, in RapidCellMark toolRead, RapidRecord? wobj, in RapidCellMark wobjRead)
+    {
+        if (!_posed || ToolData is null || (wobj is null) != (WObjData is null))
+        {
+            return false;
+        }
+        if (_toolRead.Same(toolRead) && (wobj is null || _wobjRead.Same(wobjRead)))
+        {
+            return true;
+        }
+        if (!RapidValues.Identical(tool, ToolData) || (wobj is not null && !RapidValues.Identical(wobj, WObjData!)))
+        {
+            return false;
+        }
+        _toolRead = toolRead;
+        _wobjRead = wobjRead;
+        return true;
+    }
 
-    /// <summary>A MoveL, MoveJ or MoveC ran with data whose frames are <paramref name="toolPose"/> and <paramref name="wobjPose"/>.</summary>
-    public void UsedFrames(RapidRecord tool, RapidRecord? wobj, Pose toolPose, Pose wobjPose)
+    /// <summary>A MoveL, MoveJ or MoveC ran with data (read where <paramref name="toolRead"/> and <paramref name="wobjRead"/> tell) whose frames are <paramref name="toolPose"/> and <paramref name="wobjPose"/>.</summary>
+    public void UsedFrames(RapidRecord tool, in RapidCellMark toolRead, RapidRecord? wobj, in RapidCellMark wobjRead, Pose toolPose, Pose wobjPose)
     {
         UsedFrames(tool, wobj);
         ToolPose = toolPose;
         WObjPose = wobjPose;
         _posed = true;
+        _toolRead = toolRead;
+        _wobjRead = wobjRead;
     }
 
     /// <summary>A motion instruction ran with <paramref name="tool"/> and <paramref name="wobj"/> (null: none given, wobj0).</summary>

@@ -23,28 +23,6 @@ internal sealed class RapidArray(int[] dimensions, object[] items)
     public object[] Items { get; } = items;
 }
 
-/// <summary>A storage place for data: a global, a persistent, or a local of a routine call.</summary>
-internal sealed class RapidCell(string name, RapidDataType type, RapidStorage storage, object value)
-{
-    /// <summary>The data's name.</summary>
-    public string Name { get; } = name;
-
-    /// <summary>Its static type.</summary>
-    public RapidDataType Type { get; } = type;
-
-    /// <summary>CONST, VAR or PERS.</summary>
-    public RapidStorage Storage { get; } = storage;
-
-    /// <summary>The value now.</summary>
-    public object Value { get; set; } = value;
-
-    /// <summary>
-    /// True once an IPers order watches this persistent datum (or a part of it): only its writes are counted and wake a motion, so
-    /// that writes of other persistent data (our driver's <c>machinaMotionId := r.id</c> at every move) cost nothing more than a store.
-    /// </summary>
-    public bool Watched { get; set; }
-}
-
 /// <summary>Value helpers: defaults, copies (RAPID data are values: storing copies them), equality and text.</summary>
 internal static class RapidValues
 {

@@ -113,8 +113,12 @@ internal sealed partial class RwsTwinServer
         }
         if (get)
         {
-            object value = cell.Value;
-            return State("rapid", Item("rap-data", $"RAPID/{task}/{module}/{symbol}", ("value", DataText(value))));
+            // The task writes records and arrays in place on its own thread: the text is of one state of the value, read again
+            // while the task writes it meanwhile (the controller answers with the value between two writes too).
+            string? read = cell.Read(DataText);
+            return read is null
+                ? Error(503, "Service Unavailable", null, $"{symbol} was written during each attempt to read it; try again.")
+                : State("rapid", Item("rap-data", $"RAPID/{task}/{module}/{symbol}", ("value", read)));
         }
         if (!HoldsMastership(session))
         {

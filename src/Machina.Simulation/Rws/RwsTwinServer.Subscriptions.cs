@@ -89,8 +89,8 @@ internal sealed partial class RwsTwinServer
             (["rw", "panel", "opmode"], null) => [Item("pnl-opmode-ev", "opmode", ("opmode", OperationMode))],
             (["rw", "panel", "speedratio"], null) => [Item("pnl-speedratio-ev", "speedratio", ("speedratio", Text(SpeedRatio)))],
             (["rw", "rapid", "symbol", "data", "RAPID", var task, var module, var symbol], "value")
-                when Twin.FindData(task, module, symbol) is { Storage: RapidStorage.Pers } cell =>
-                [Item("rap-value-ev", "value"), Item("rap-data", $"RAPID/{task}/{module}/{symbol}", ("value", DataText(cell.Value)))],
+                when Twin.FindData(task, module, symbol) is { Storage: RapidStorage.Pers } cell && cell.Read(DataText) is { } value =>
+                [Item("rap-value-ev", "value"), Item("rap-data", $"RAPID/{task}/{module}/{symbol}", ("value", value))],
             (["rw", "elog", "0"], null) => [],
             _ => null,
         };
