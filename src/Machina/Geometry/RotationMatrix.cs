@@ -198,7 +198,7 @@ public readonly record struct RotationMatrix
         double yaw = Math.Atan2(M10, M00);
         double pitch = Math.Atan2(-M20, cosPitch);
         // Roll from Rz(−yaw)·R (its second row is [0, cos roll, −sin roll]), so that yaw and roll stay consistent near the lock.
-        double sy = Math.Sin(yaw), cy = Math.Cos(yaw);
+        (double sy, double cy) = Math.SinCos(yaw); // the bits of Math.Sin and Math.Cos (MathSinCosTests), in one call
         double roll = Math.Atan2(sy * M02 - cy * M12, cy * M11 - sy * M01);
         return new YawPitchRoll(roll * Angles.ToDegrees, pitch * Angles.ToDegrees, yaw * Angles.ToDegrees);
     }
