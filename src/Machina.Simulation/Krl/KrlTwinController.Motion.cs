@@ -146,7 +146,7 @@ internal sealed partial class KrlTwinController
                 ? $"the axis position that reaches it is beyond the software limit switches ({issue})"
                 : "it is outside the robot's workspace";
         }
-        _keptSolution = new KeptSolution(kinematics, baseFrame, tool, target.ToArray(), near, solution, why, to, goal);
+        _keptSolution = new KeptSolution(kinematics, baseFrame, tool, target, near, solution, why, to, goal);
         return solution;
     }
 

@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace Machina.Simulation.Krl;
 
 /// <summary>
@@ -26,16 +28,19 @@ internal sealed partial class KrlTwinController
     /// A target solved: the frames and the target's six components, the axes it was solved from, and the answer; with the target's
     /// pose in $BASE (<see cref="To"/>) and in the robot's base frame (<see cref="Goal"/>), which the motion to it uses again.
     /// </summary>
-    private sealed class KeptSolution(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, double[] target, Joints near, Joints? solution, string why,
-        Pose to, Pose goal)
+    private sealed class KeptSolution(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, ReadOnlySpan<double> target, Joints near, Joints? solution,
+        string why, Pose to, Pose goal)
     {
+        private readonly TargetComponents _target = TargetComponents.Of(target);
+
         public IKinematics Kinematics { get; } = kinematics;
 
         public KeptFrame Base { get; } = baseFrame;
 
         public KeptFrame Tool { get; } = tool;
 
-        public double[] Target { get; } = target;
+        /// <summary>True when <paramref name="target"/>'s six components are the kept target's, to the bit.</summary>
+        public bool IsFor(ReadOnlySpan<double> target) => Same(_target, target);
 
         public Joints Near { get; } = near;
 
@@ -46,6 +51,20 @@ internal sealed partial class KrlTwinController
         public Pose To { get; } = to;
 
         public Pose Goal { get; } = goal;
+    }
+
+    /// <summary>A solved target's six components, held in its <see cref="KeptSolution"/> (no array of its own per solve).</summary>
+    [InlineArray(6)]
+    private struct TargetComponents
+    {
+        private double _first;
+
+        public static TargetComponents Of(ReadOnlySpan<double> components)
+        {
+            TargetComponents kept = default;
+            components.CopyTo(kept);
+            return kept;
+        }
     }
 
     /// <summary>$BASE as a pose (taken again while its components are the same).</summary>
@@ -89,7 +108,7 @@ internal sealed partial class KrlTwinController
 
     /// <summary>The answer kept for this target, frames and start, or null.</summary>
     private KeptSolution? KeptFor(IKinematics kinematics, KeptFrame baseFrame, KeptFrame tool, ReadOnlySpan<double> target, Joints near) =>
-        _keptSolution is { } kept && ReferenceEquals(kept.Kinematics, kinematics) && ReferenceEquals(kept.Base, baseFrame) && ReferenceEquals(kept.Tool, tool) && Same(kept.Target, target)
+        _keptSolution is { } kept && ReferenceEquals(kept.Kinematics, kinematics) && ReferenceEquals(kept.Base, baseFrame) && ReferenceEquals(kept.Tool, tool) && kept.IsFor(target)
             && Same(kept.Near, near) ? kept : null;
 
     private static bool Same(ReadOnlySpan<double> a, ReadOnlySpan<double> b)

@@ -256,7 +256,11 @@ public readonly struct Rotation : IEquatable<Rotation>
     public RotationMatrix ToMatrix() => RotationMatrix.FromColumnsUnchecked(XAxis, YAxis, ZAxis);
 
     /// <summary>Intrinsic Z-Y′-X″ Euler angles in degrees (pitch in [−90°, 90°]).</summary>
-    public YawPitchRoll ToYawPitchRoll() => ToMatrix().ToYawPitchRoll();
+    /// <remarks>
+    /// Every <see cref="Rotation"/> is a unit quaternion (to ~1e-14: each way of making one scales it), so its matrix is a rotation far
+    /// within <see cref="RotationMatrix.IsRotation"/>'s 1e-6 and is not checked again (a KUKA position's A, B and C at every motion).
+    /// </remarks>
+    public YawPitchRoll ToYawPitchRoll() => ToMatrix().YawPitchRollOfRotation();
 
     /// <summary>True when both describe the same rotation within <paramref name="toleranceDegrees"/> (q and −q are the same rotation).</summary>
     public bool IsSimilar(Rotation other, double toleranceDegrees = 1e-6) => AngleTo(other) <= toleranceDegrees;

@@ -80,11 +80,13 @@ public readonly record struct RotationMatrix
     {
         get
         {
+            // On the nine entries, no axis vectors: the same sums in the same order as Vector's SquaredLength, Dot and Cross give.
             const double tol = 1e-6;
-            Vector x = XAxis, y = YAxis, z = ZAxis;
-            return Math.Abs(x.SquaredLength - 1) < tol && Math.Abs(y.SquaredLength - 1) < tol && Math.Abs(z.SquaredLength - 1) < tol
-                && Math.Abs(Vector.Dot(x, y)) < tol && Math.Abs(Vector.Dot(y, z)) < tol && Math.Abs(Vector.Dot(z, x)) < tol
-                && Vector.Dot(Vector.Cross(x, y), z) > 0;
+            double x0 = M00, x1 = M10, x2 = M20, y0 = M01, y1 = M11, y2 = M21, z0 = M02, z1 = M12, z2 = M22;
+            return Math.Abs(x0 * x0 + x1 * x1 + x2 * x2 - 1) < tol && Math.Abs(y0 * y0 + y1 * y1 + y2 * y2 - 1) < tol
+                && Math.Abs(z0 * z0 + z1 * z1 + z2 * z2 - 1) < tol
+                && Math.Abs(x0 * y0 + x1 * y1 + x2 * y2) < tol && Math.Abs(y0 * z0 + y1 * z1 + y2 * z2) < tol && Math.Abs(z0 * x0 + z1 * x1 + z2 * x2) < tol
+                && (x1 * y2 - x2 * y1) * z0 + (x2 * y0 - x0 * y2) * z1 + (x0 * y1 - x1 * y0) * z2 > 0;
         }
     }
 
@@ -102,6 +104,15 @@ public readonly record struct RotationMatrix
     public Rotation ToRotation()
     {
         RequireRotation();
+        return RotationOfRotation();
+    }
+
+    /// <summary>
+    /// <see cref="ToRotation"/> without its check, for a matrix known to be a rotation: one a solver's forward kinematics multiplied
+    /// from sines and cosines (<c>Affine.ToPose</c>) or a unit quaternion's. The same bits as <see cref="ToRotation"/>.
+    /// </summary>
+    internal Rotation RotationOfRotation()
+    {
         double trace = M00 + M11 + M22;
         double w, x, y, z;
         if (trace > 0)
@@ -167,6 +178,15 @@ public readonly record struct RotationMatrix
     public YawPitchRoll ToYawPitchRoll()
     {
         RequireRotation();
+        return YawPitchRollOfRotation();
+    }
+
+    /// <summary>
+    /// <see cref="ToYawPitchRoll"/> without its check, for a matrix known to be a rotation (<see cref="Rotation.ToYawPitchRoll"/>'s, of a
+    /// unit quaternion). The same bits as <see cref="ToYawPitchRoll"/>.
+    /// </summary>
+    internal YawPitchRoll YawPitchRollOfRotation()
+    {
         // cos(pitch) from the first column; only an exact lock (to ~1e-12 rad) takes the roll = 0 branch.
         double cosPitch = Math.Sqrt(M00 * M00 + M10 * M10);
         if (cosPitch < 1e-12)
@@ -178,7 +198,7 @@ public readonly record struct RotationMatrix
         double yaw = Math.Atan2(M10, M00);
         double pitch = Math.Atan2(-M20, cosPitch);
         // Roll from Rz(−yaw)·R (its second row is [0, cos roll, −sin roll]), so that yaw and roll stay consistent near the lock.
-        double sy = Math.Sin(yaw), cy = Math.Cos(yaw);
+        (double sy, double cy) = Math.SinCos(yaw); // the bits of Math.Sin and Math.Cos (MathSinCosTests), in one call
         double roll = Math.Atan2(sy * M02 - cy * M12, cy * M11 - sy * M01);
         return new YawPitchRoll(roll * Angles.ToDegrees, pitch * Angles.ToDegrees, yaw * Angles.ToDegrees);
     }

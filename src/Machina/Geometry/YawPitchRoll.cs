@@ -25,7 +25,10 @@ public readonly record struct YawPitchRoll(double XAngle, double YAngle, double 
         Num.Finite(YAngle, nameof(YAngle));
         Num.Finite(ZAngle, nameof(ZAngle));
         double hx = XAngle * Angles.ToRadians / 2, hy = YAngle * Angles.ToRadians / 2, hz = ZAngle * Angles.ToRadians / 2;
-        double cx = Math.Cos(hx), sx = Math.Sin(hx), cy = Math.Cos(hy), sy = Math.Sin(hy), cz = Math.Cos(hz), sz = Math.Sin(hz);
+        // Math.SinCos gives Math.Sin's and Math.Cos's bits (MathSinCosTests), in one call per angle: three where there were six.
+        (double sx, double cx) = Math.SinCos(hx);
+        (double sy, double cy) = Math.SinCos(hy);
+        (double sz, double cz) = Math.SinCos(hz);
         return Rotation.FromQuaternion(
             cx * cy * cz + sx * sy * sz,
             sx * cy * cz - cx * sy * sz,

@@ -44,10 +44,10 @@ public sealed class OpwKinematics : IKinematics, ISolver
     /// <summary>The six canonical angles (radians) of a joint set.</summary>
     private readonly record struct Canonical(double T1, double T2, double T3, double T4, double T5, double T6);
 
-    private Joints FromCanonical(double t1, double t2, double t3, double t4, double t5, double t6)
+    private Joints FromCanonical(in Canonical t)
     {
-        double a1 = KinematicsCore.WrapDegrees(t1), a2 = KinematicsCore.WrapDegrees(t2), a3 = KinematicsCore.WrapDegrees(t3);
-        double a4 = KinematicsCore.WrapDegrees(t4), a5 = KinematicsCore.WrapDegrees(t5), a6 = KinematicsCore.WrapDegrees(t6);
+        double a1 = KinematicsCore.WrapDegrees(t.T1), a2 = KinematicsCore.WrapDegrees(t.T2), a3 = KinematicsCore.WrapDegrees(t.T3);
+        double a4 = KinematicsCore.WrapDegrees(t.T4), a5 = KinematicsCore.WrapDegrees(t.T5), a6 = KinematicsCore.WrapDegrees(t.T6);
         if (!_kuka)
         {
             return new Joints(a1, a2, a3, a4, a5, a6);
@@ -67,6 +67,13 @@ public sealed class OpwKinematics : IKinematics, ISolver
     {
         double a3 = KinematicsCore.WrapDegrees(t3);
         return _kuka ? Wrap(a3 + 90) : a3;
+    }
+
+    /// <summary>Axis 4 in the brand's degrees, as <see cref="FromCanonical"/> gives it.</summary>
+    private double BrandJ4(double t4)
+    {
+        double a4 = KinematicsCore.WrapDegrees(t4);
+        return _kuka ? Neg(a4) : a4;
     }
 
     private static double Neg(double d) => d == -180 || d == 180 ? 180 : -d;
@@ -198,7 +205,9 @@ public sealed class OpwKinematics : IKinematics, ISolver
             Frame frame = FrameOf(wrist, arm);
             for (int elbow = 0; elbow < 2; elbow++)
             {
-                Branch(wrist, arm, frame, elbow, out joints[count], out joints[count + 1]);
+                Branch(wrist, arm, frame, elbow, out Canonical first);
+                joints[count] = FromCanonical(first);
+                joints[count + 1] = FromCanonical(Flipped(first));
                 configurations[count++] = new ArmConfiguration(shoulder == 1, elbow == 1, false);
                 configurations[count++] = new ArmConfiguration(shoulder == 1, elbow == 1, true);
             }
@@ -227,10 +236,12 @@ public sealed class OpwKinematics : IKinematics, ISolver
         {
             armOk[shoulder] = TryShoulder(wrist, shoulder, out arms[shoulder]);
             reachable |= armOk[shoulder];
+            // Axis 1 is the same for both elbows of a shoulder: its distance is taken once.
+            double axis1 = armOk[shoulder] ? KinematicsCore.TurnDistance(BrandJ1(arms[shoulder].T1), reference.J1) : 0;
             for (int elbow = 0; elbow < 2; elbow++)
             {
                 double b = armOk[shoulder]
-                    ? Math.Max(KinematicsCore.TurnDistance(BrandJ1(arms[shoulder].T1), reference.J1), KinematicsCore.TurnDistance(BrandJ3(ElbowAngle(arms[shoulder], elbow)), reference.J3))
+                    ? Math.Max(axis1, KinematicsCore.TurnDistance(BrandJ3(ElbowAngle(arms[shoulder], elbow)), reference.J3))
                     : double.PositiveInfinity;
                 // A bound that is not a number proves nothing: that branch is solved first.
                 bound[shoulder * 2 + elbow] = double.IsNaN(b) ? double.NegativeInfinity : b;
@@ -254,15 +265,24 @@ public sealed class OpwKinematics : IKinematics, ISolver
                 break;
             }
             Shoulder arm = arms[next >> 1];
-            Branch(wrist, arm, FrameOf(wrist, arm), next & 1, out Joints first, out Joints flipped);
-            best = Math.Min(best, Fit(first, reference, out fitted[next * 2], out cost[next * 2]));
-            best = Math.Min(best, Fit(flipped, reference, out fitted[next * 2 + 1], out cost[next * 2 + 1]));
+            Branch(wrist, arm, FrameOf(wrist, arm), next & 1, out Canonical first);
+            best = Math.Min(best, Fit(first, reference, best, out fitted[next * 2], out cost[next * 2]));
+            best = Math.Min(best, Fit(Flipped(first), reference, best, out fitted[next * 2 + 1], out cost[next * 2 + 1]));
         }
         return KinematicsCore.Lowest(cost, fitted);
 
-        double Fit(Joints raw, Joints current, out Joints f, out double c)
+        // A wrist solution whose axis 4 alone is farther from the reference than the best cost found (a LIN's flipped wrist, half a
+        // turn away) cannot be the closest: it is neither converted nor fitted, and keeps cost +∞ (its cost would be at least that
+        // distance, less the clamp's 1e-9°: the bound's margin covers it, as for the branches).
+        double Fit(in Canonical raw, in Joints current, double bestSoFar, out Joints f, out double c)
         {
-            c = KinematicsCore.FitLimits(Model, raw, current, out f) ? KinematicsCore.Cost(f, current) : double.PositiveInfinity;
+            if (bestSoFar < double.PositiveInfinity && KinematicsCore.TurnDistance(BrandJ4(raw.T4), current.J4) - KinematicsCore.BoundMargin > bestSoFar)
+            {
+                f = default;
+                c = double.PositiveInfinity;
+                return c;
+            }
+            c = KinematicsCore.FitLimits(Model, FromCanonical(raw), current, out f) ? KinematicsCore.Cost(f, current) : double.PositiveInfinity;
             return c;
         }
     }
@@ -322,8 +342,8 @@ public sealed class OpwKinematics : IKinematics, ISolver
     /// <summary>Axis 3 (canonical radians) of one elbow.</summary>
     private double ElbowAngle(in Shoulder arm, int elbow) => elbow == 0 ? _psi - arm.AsinD : _psi - Math.PI + arm.AsinD;
 
-    /// <summary>One arm branch's two wrist solutions (brand joints, wrapped), as <c>SolveRaw</c> lists them.</summary>
-    private void Branch(in Wrist wrist, in Shoulder arm, in Frame m, int elbow, out Joints first, out Joints flipped)
+    /// <summary>One arm branch's first wrist solution (canonical radians, not wrapped); the other is <see cref="Flipped"/> of it.</summary>
+    private void Branch(in Wrist wrist, in Shoulder arm, in Frame m, int elbow, out Canonical first)
     {
         double c2 = _p.C2, k = _k, u = arm.U, v = arm.V, t1 = arm.T1;
         double t3 = ElbowAngle(arm, elbow);
@@ -352,7 +372,9 @@ public sealed class OpwKinematics : IKinematics, ISolver
             t4 += n00 > 0 ? half : -half;
             t6 -= half;
         }
-        first = FromCanonical(t1, t2, t3, t4, t5, t6);
-        flipped = FromCanonical(t1, t2, t3, t4 + Math.PI, -t5, t6 + Math.PI);
+        first = new Canonical(t1, t2, t3, t4, t5, t6);
     }
+
+    /// <summary>A branch's other wrist solution: axes 4 and 6 half a turn on, axis 5 mirrored.</summary>
+    private static Canonical Flipped(in Canonical first) => new(first.T1, first.T2, first.T3, first.T4 + Math.PI, -first.T5, first.T6 + Math.PI);
 }

@@ -76,6 +76,48 @@ public class OpwClosestTests
 
     [Theory]
     [MemberData(nameof(OpwModels))]
+    public void Closest_FromEitherWrist_IsClosestOfEveryRawSolution_BitForBit(string name)
+    {
+        // A wrist solution whose axis 4 alone is farther from the reference than the best cost found is skipped (session 35): from
+        // references at each raw solution, at its flipped wrist (axes 4 and 6 half a turn on, axis 5 mirrored) and with axis 4 a few
+        // degrees either side of that half turn, the answer is still the full search's, and both wrists get chosen.
+        RobotModel model = RobotModels.Get(name);
+        var kin = (OpwKinematics)model.Kinematics;
+        var solver = (ISolver)kin;
+        var random = new Random(3555);
+        Span<Joints> raw = stackalloc Joints[KinematicsCore.MaxSolutions];
+        Span<ArmConfiguration> configurations = stackalloc ArmConfiguration[KinematicsCore.MaxSolutions];
+        int compared = 0, flippedChosen = 0;
+        for (int i = 0; i < 400; i++)
+        {
+            Joints j = i % 4 == 1 ? Within(model, random) with { J5 = Near(random, 0) } : Within(model, random);
+            Affine flange = Affine.FromPose(kin.Forward(j));
+            int n = solver.SolveRaw(flange, j, raw, configurations);
+            for (int s = 0; s < n; s++)
+            {
+                Joints at = raw[s];
+                Joints flipped = at with { J4 = at.J4 + 180, J5 = -at.J5, J6 = at.J6 + 180 };
+                foreach (Joints reference in new[]
+                {
+                    Nudged(at, random, 0.5), Nudged(flipped, random, 0.5), at with { J4 = at.J4 + 180 + Step(random, 3) },
+                    at with { J4 = at.J4 + 90 + Step(random, 1e-7) }, Nudged(at, random, 0.5) with { J4 = at.J4 - 180 },
+                })
+                {
+                    Joints? got = solver.Closest(flange, reference, out bool reachable);
+                    Joints? want = KinematicsCore.ClosestOfAll(solver, model, flange, reference, out bool wantReachable);
+                    Assert.Equal(wantReachable, reachable);
+                    Assert.True(want is null ? got is null : got is Joints g && SameBits.Of(want.Value, g), $"{name}, pose of {j} from {reference}: {got} instead of {want}");
+                    compared++;
+                    flippedChosen += got is Joints c && Math.Abs(KinematicsCore.TurnDistance(c.J4, flipped.J4)) < 1e-6 && Math.Abs(c.J5 - flipped.J5) < 1e-6 ? 1 : 0;
+                }
+            }
+        }
+        Assert.True(compared > 4000, $"only {compared} comparisons");
+        Assert.True(flippedChosen > 400, $"the flipped wrist was chosen only {flippedChosen} times");
+    }
+
+    [Theory]
+    [MemberData(nameof(OpwModels))]
     public void Closest_OnAStreamedLine_IsTheChecksSolution(string name)
     {
         // The issue cursor's check of a 1 mm line from known joints: the public Closest (which the twins call) and the check's
