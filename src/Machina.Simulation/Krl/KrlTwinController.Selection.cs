@@ -1,4 +1,5 @@
 using System.Threading.Channels;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.Krl;
 
@@ -50,7 +51,7 @@ internal sealed partial class KrlTwinController
         {
             try
             {
-                _runs.Reader.ReadAsync(cancellation).AsTask().GetAwaiter().GetResult();
+                TwinWait.For(_runs.Reader.ReadAsync(cancellation).AsTask(), cancellation);
             }
             catch (OperationCanceledException)
             {
