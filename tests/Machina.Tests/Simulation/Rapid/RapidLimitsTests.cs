@@ -96,7 +96,11 @@ public class RapidLimitsTests
         thread.Start();
         Assert.True(thread.Join(TimeSpan.FromMinutes(2)));
 
-        Assert.Equal("Execution error: line 6: stack overflow: the routine calls and expressions are nested too deeply (task T_ROB1)", error);
+        // The stack runs out in the IF's condition (line 3) or in the RETURN's expression (line 6): which of the two checks sees it
+        // first depends on the frame sizes the JIT chose for the interpreter's methods (the same code, tiered up or not, in a run of
+        // the whole suite), so both lines are the task's true answer; the message and the task are not.
+        Assert.NotNull(error);
+        Assert.Matches(@"^Execution error: line (3|6): stack overflow: the routine calls and expressions are nested too deeply \(task T_ROB1\)$", error);
     }
 
     [Theory]
