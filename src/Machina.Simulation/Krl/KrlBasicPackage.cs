@@ -131,7 +131,7 @@ internal static class KrlBasicPackage
         {
             throw new KrlRuntimeException($"Value assignment inadmissible: {name} takes 0 to 100 %, not {percent}");
         }
-        Array.Fill(((KrlArrayValue)environment.System[name].Value).Items, KrlValues.Box((int)Math.Max(1, Math.Round(percent))));
+        Array.Fill(((KrlArrayValue)environment.System[name].Value).Objects, KrlValues.Box((int)Math.Max(1, Math.Round(percent))));
     }
 
     /// <summary>TOOL_DATA[n] or BASE_DATA[n]; 0 is $NULLFRAME.</summary>
@@ -145,7 +145,7 @@ internal static class KrlBasicPackage
         {
             throw new KrlRuntimeException($"{array}[{number}] does not exist (1 to {count})");
         }
-        return KrlValues.Copy(((KrlArrayValue)environment.System[array].Value).Items[number - 1]);
+        return KrlValues.Copy(((KrlArrayValue)environment.System[array].Value)[number - 1]);
     }
 
     /// <summary>Writes system variable <paramref name="name"/> as an assignment does (its controller hook runs).</summary>

@@ -69,7 +69,7 @@ internal static class KrlBuiltins
     {
         var array = (KrlArrayValue)target.Get();
         string joined = KrlValues.Text(array) + add;
-        if (joined.Length > array.Items.Length)
+        if (joined.Length > array.Length)
         {
             return 0;
         }

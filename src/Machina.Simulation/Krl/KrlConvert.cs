@@ -74,13 +74,13 @@ internal static class KrlConvert
             case KrlKind.Array when value is string text:
             {
                 var array = (KrlArrayValue)KrlValues.Default(type);
-                KrlValues.SetText(array.Items, 0, array.Items.Length, text);
+                KrlValues.SetText(array.Objects, 0, array.Length, text);
                 return array;
             }
             case KrlKind.Array when value is KrlArrayValue a:
             {
                 var array = (KrlArrayValue)KrlValues.Default(type);
-                Array.Copy(a.Items, array.Items, Math.Min(a.Items.Length, array.Items.Length));
+                array.CopyFrom(a, Math.Min(a.Length, array.Length));
                 return array;
             }
             default:

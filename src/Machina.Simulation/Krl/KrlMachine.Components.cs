@@ -8,17 +8,26 @@ namespace Machina.Simulation.Krl;
 internal sealed partial class KrlMachine
 {
     /// <summary>
-    /// Stores a REAL (or INT) value in a REAL component of a local structure without a box, when <paramref name="assign"/> is such
-    /// a store; false (nothing evaluated) otherwise. The value is evaluated first, then the structure found, as <see cref="Assign"/>
+    /// Stores a REAL (or INT) value in a REAL component of a local structure or a REAL element of an array without a box, when
+    /// <paramref name="assign"/> is such a store; false (nothing evaluated) otherwise. The value is evaluated first, then the structure found, as <see cref="Assign"/>
     /// does.
     /// </summary>
     private bool AssignRealComponent(KrlAssign assign, object[] frame)
     {
-        if (assign.Store != KrlStore.LocalMember || assign.Target.Type.Kind != KrlKind.Real || assign.Value.Type.Kind is not (KrlKind.Real or KrlKind.Int))
+        if (assign.Store is not (KrlStore.LocalMember or KrlStore.Element) || assign.Target.Type.Kind != KrlKind.Real
+            || assign.Value.Type.Kind is not (KrlKind.Real or KrlKind.Int))
         {
             return false;
         }
         double value = RealOf(assign.Value, frame);
+        if (assign.Store == KrlStore.Element)
+        {
+            var index = (KrlIndex)assign.Target;
+            var array = (KrlArrayValue)Eval(index.Target, frame);
+            array.SetReal(Flat(index, array.Type, array.Length, frame), value);
+            ElementWritten(index);
+            return true;
+        }
         var member = (KrlMember)assign.Target;
         KrlStructValue structure = LocalStructure(member, frame);
         structure.SetReal(member.FieldIndex, value);
@@ -51,4 +60,11 @@ internal sealed partial class KrlMachine
 
     /// <summary>The INT or REAL component <paramref name="member"/> as a REAL, read without a box.</summary>
     private double RealComponent(KrlMember member, object[] frame) => ((KrlStructValue)Eval(member.Target, frame)).Real(member.FieldIndex);
+
+    /// <summary>The INT or REAL element <paramref name="index"/> of an array variable or local as a REAL, read without a box from a REAL array (the driver's <c>slot_v[read_slot, 1]</c>).</summary>
+    private double RealElement(KrlIndex index, object[] frame)
+    {
+        KrlArrayValue array = ElementArray(index, frame);
+        return array.Real(Flat(index, array.Type, array.Length, frame));
+    }
 }

@@ -78,9 +78,8 @@ internal sealed partial class KrlMachine
         {
             case KrlAccess.Element:
             {
-                var name = (KrlName)index.Target;
-                var array = (KrlArrayValue)(name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value);
-                return array.Items[Flat(index, array.Type, array.Items.Length, frame)];
+                KrlArrayValue array = ElementArray(index, frame);
+                return array[Flat(index, array.Type, array.Length, frame)];
             }
             case KrlAccess.Signal:
             {
@@ -92,6 +91,13 @@ internal sealed partial class KrlMachine
             default:
                 return Place(index, frame).Get();
         }
+    }
+
+    /// <summary>The array variable or local an element read (<see cref="KrlAccess.Element"/>) indexes.</summary>
+    private KrlArrayValue ElementArray(KrlIndex index, object[] frame)
+    {
+        var name = (KrlName)index.Target;
+        return (KrlArrayValue)(name.Slot >= 0 ? frame[name.Slot] ?? LocalValue(frame, name) : name.Cell!.Value);
     }
 
     /// <summary>A structure or array local read before anything was stored in it: its initial value, made now and kept.</summary>
@@ -169,7 +175,7 @@ internal sealed partial class KrlMachine
         int flat = 0;
         for (int d = 0; d < indices.Length; d++)
         {
-            int size = sizes[d] == 0 ? array.Items.Length : sizes[d];
+            int size = sizes[d] == 0 ? array.Length : sizes[d];
             int i = indices[d] is { } e ? IntOf(e, frame) : 1;
             if (i < 1 || i > size)
             {
@@ -177,11 +183,13 @@ internal sealed partial class KrlMachine
             }
             flat = flat * size + (i - 1);
         }
+        object[] container = array.HoldsReals ? [] : array.Objects;
+        KrlArrayValue? reals = array.HoldsReals ? array : null;
         if (indices[^1] is null)
         {
-            return new KrlPlace(array.Items, flat, index.Type, sizes[^1]) { Root = cell is null ? null : (cell, -1) };
+            return new KrlPlace(container, flat, index.Type, sizes[^1]) { Root = cell is null ? null : (cell, -1), Reals = reals };
         }
-        return new KrlPlace(array.Items, flat, index.Type) { Root = cell is null ? null : (cell, flat) };
+        return new KrlPlace(container, flat, index.Type) { Root = cell is null ? null : (cell, flat), Reals = reals };
     }
 
     /// <summary>
@@ -217,6 +225,20 @@ internal sealed partial class KrlMachine
         _ => false,
     };
 
+    /// <summary>After an element of an array variable or local was written: the conditions are looked at again when one reads it, a waiting WAIT FOR on it wakes.</summary>
+    private void ElementWritten(KrlIndex index)
+    {
+        if (_watchesAll || index.Target is not KrlName { Cell.Watched: false })
+        {
+            _writes++; // the driver's FOR over a ring slot's 80 characters wrote unwatched data: 3 conditions per character
+            (index.Target as KrlName)?.Cell?.CountWrite();
+        }
+        else if (index.Target is KrlName { Cell.WakesOnWrite: true } woken)
+        {
+            woken.Cell!.CountWrite(); // a WAIT FOR's condition reads it: a waiting WAIT FOR (the other interpreter's) wakes
+        }
+    }
+
     /// <summary>Stores <paramref name="value"/> in the target of <paramref name="assign"/> (locals, plain array elements and local components without a place object).</summary>
     private void Assign(KrlAssign assign, object value, object[] frame)
     {
@@ -233,17 +255,17 @@ internal sealed partial class KrlMachine
             {
                 var index = (KrlIndex)target;
                 var array = (KrlArrayValue)Eval(index.Target, frame);
-                int flat = Flat(index, array.Type, array.Items.Length, frame);
-                array.Items[flat] = KrlConvert.To(index.Type, value, array.Items[flat]);
-                if (_watchesAll || index.Target is not KrlName { Cell.Watched: false })
+                int flat = Flat(index, array.Type, array.Length, frame);
+                if (array.HoldsReals)
                 {
-                    _writes++; // the driver's FOR over a ring slot's 80 characters wrote unwatched data: 3 conditions per character
-                    (index.Target as KrlName)?.Cell?.CountWrite();
+                    array.SetReal(flat, KrlValues.ToReal(value));
                 }
-                else if (index.Target is KrlName { Cell.WakesOnWrite: true } woken)
+                else
                 {
-                    woken.Cell!.CountWrite(); // a WAIT FOR's condition reads it: a waiting WAIT FOR (the other interpreter's) wakes
+                    object[] items = array.Objects;
+                    items[flat] = KrlConvert.To(index.Type, value, items[flat]);
                 }
+                ElementWritten(index);
                 return;
             }
             case KrlStore.LocalMember:

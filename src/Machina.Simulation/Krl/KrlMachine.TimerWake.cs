@@ -60,8 +60,8 @@ internal sealed partial class KrlMachine
     private int SoonestTimerMs()
     {
         // Through the cells found once: two case-insensitive look-ups by name at every motion while the monitor's timer runs.
-        object[] timers = ((KrlArrayValue)Controller.Motion.Timer.Box[0]).Items;
-        object[] stopped = ((KrlArrayValue)Controller.Motion.TimerStop.Box[0]).Items;
+        object[] timers = ((KrlArrayValue)Controller.Motion.Timer.Box[0]).Objects;
+        object[] stopped = ((KrlArrayValue)Controller.Motion.TimerStop.Box[0]).Objects;
         if (!AnyRunsBelowZero(timers, stopped))
         {
             // Counting only adds time to running timers: none below 0 now, none after (the monitor's timer counts up from 0 all

@@ -16,6 +16,10 @@ internal sealed partial class KrlMachine
         {
             return RealComponent((KrlMember)expr, frame);
         }
+        if (expr.Node == KrlNode.Index && expr.Type.Kind is KrlKind.Real or KrlKind.Int && ((KrlIndex)expr).Access == KrlAccess.Element)
+        {
+            return RealElement((KrlIndex)expr, frame);
+        }
         if (expr.Node == KrlNode.Binary)
         {
             KrlKind kind = expr.Type.Kind;

@@ -66,7 +66,7 @@ internal sealed class KrlSignalArray
     /// <summary>Stores a whole array (converted to the array type, as an assignment to the variable does).</summary>
     public void Set(object value)
     {
-        object[] items = ((KrlArrayValue)KrlConvert.To(Type, value, null)).Items;
+        var items = (KrlArrayValue)KrlConvert.To(Type, value, null);
         for (int i = 0; i < items.Length; i++)
         {
             Set(i, items[i]);

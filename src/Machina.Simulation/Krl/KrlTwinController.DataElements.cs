@@ -37,7 +37,7 @@ internal sealed partial class KrlTwinController
             }
             KrlType type = cell.Type.Element!;
             binder.BindConstant(list.File, element.Value, type);
-            object[] items = ((KrlArrayValue)cell.Value).Items;
+            var items = (KrlArrayValue)cell.Value;
             items[flat] = KrlConvert.To(type, new KrlMachine(this, default).Eval(element.Value, []), items[flat]);
         }
     }

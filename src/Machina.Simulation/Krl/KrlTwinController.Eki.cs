@@ -108,7 +108,7 @@ internal sealed partial class KrlTwinController
             return Status(0, 0, 0, channel.Connected);
         });
         Add("EKI_GetInt", [text, text, new(KrlType.Int, IsOut: true)], (_, a) => EkiGet(a, EkiInt));
-        Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, EkiReal));
+        Add("EKI_GetReal", [text, text, new(KrlType.Real, IsOut: true)], (_, a) => EkiGet(a, null));
         Add("EKI_GetBool", [text, text, new(KrlType.Bool, IsOut: true)], (_, a) => EkiGet(a, EkiBool));
         Add("EKI_GetString", [text, text, new(KrlType.Array(KrlType.Char, 0), IsOut: true)], (_, a) => EkiGet(a, v => v));
         foreach ((string suffix, KrlType element, Func<string, object> convert) in new (string, KrlType, Func<string, object>)[]
@@ -277,7 +277,8 @@ internal sealed partial class KrlTwinController
         InputsChanged();
     }
 
-    private KrlStructValue EkiGet(object[] a, Func<string, object> convert)
+    /// <summary>EKI_GetInt, EKI_GetReal, EKI_GetBool, EKI_GetString...: the tag's next value into the OUT argument, read with <paramref name="convert"/> (null: a REAL, stored unboxed).</summary>
+    private KrlStructValue EkiGet(object[] a, Func<string, object>? convert)
     {
         EkiChannel channel = Channel(Str(a[0]));
         string? value = channel.Take(Str(a[1]), out int remaining, out bool connected);
@@ -285,7 +286,15 @@ internal sealed partial class KrlTwinController
         {
             try
             {
-                ((KrlPlace)a[2]).Set(convert(value));
+                var place = (KrlPlace)a[2];
+                if (convert is null)
+                {
+                    place.SetReal(ParseReal(value)); // EKI_GetReal: into a REAL array's element or a structure's component without a box
+                }
+                else
+                {
+                    place.Set(convert(value));
+                }
             }
             catch (FormatException)
             {
@@ -304,7 +313,10 @@ internal sealed partial class KrlTwinController
         : (int)Math.Round(double.Parse(value, CultureInfo.InvariantCulture)));
 
     /// <summary>A REAL element's value: plain decimal text (the host's numbers) read directly (<see cref="KrlDecimalText"/>), the rest as before.</summary>
-    private static object EkiReal(string value) => KrlDecimalText.TryRead(value, out double number) ? number : double.Parse(value, CultureInfo.InvariantCulture);
+    private static object EkiReal(string value) => ParseReal(value);
+
+    /// <summary>The REAL <see cref="EkiReal"/> reads, unboxed.</summary>
+    private static double ParseReal(string value) => KrlDecimalText.TryRead(value, out double number) ? number : double.Parse(value, CultureInfo.InvariantCulture);
 
     private static object EkiBool(string value) => KrlValues.Box(value is "1" || value.Equals("true", StringComparison.OrdinalIgnoreCase));
 
@@ -318,7 +330,7 @@ internal sealed partial class KrlTwinController
         EkiChannel channel = Channel(Str(a[0]));
         var place = (KrlPlace)a[2];
         var array = (KrlArrayValue)place.Get();
-        object[] items = (object[])array.Items.Clone();
+        object[] items = array.ToObjects();
         int read = 0, remaining = channel.Count(Str(a[1]));
         while (read < items.Length && channel.Take(Str(a[1]), out remaining) is { } value)
         {

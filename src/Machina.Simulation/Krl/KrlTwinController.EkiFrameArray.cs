@@ -15,7 +15,7 @@ internal sealed partial class KrlTwinController
             throw new KrlRuntimeException($"EthernetKRL: EKI_GetFrameArray reads an element of Type=\"FRAME\"; the channel {name} receives no FRAME element {tag}");
         }
         var array = (KrlArrayValue)place.Get();
-        object[] items = (object[])array.Items.Clone();
+        object[] items = array.ToObjects();
         int read = 0, remaining = channel.Count(tag);
         while (read < items.Length && channel.Take(tag, out remaining) is { } value)
         {

@@ -82,7 +82,7 @@ internal sealed partial class KrlTwinController
     /// <summary>How long a WAIT FOR woken on change sleeps, with a channel open, before it looks whether it can still end.</summary>
     private static readonly TimeSpan WokenWaitCheck = TimeSpan.FromMinutes(1);
 
-    private bool TimersRunning() => Array.Exists(((KrlArrayValue)Motion.TimerStop.Value).Items, s => !(bool)s);
+    private bool TimersRunning() => Array.Exists(((KrlArrayValue)Motion.TimerStop.Value).Objects, s => !(bool)s);
 
     /// <summary>Sets digital input <c>$IN[number]</c> (1-based), as a sensor wired to it would, and wakes a waiting program.</summary>
     public void SetInput(int number, bool value)
@@ -106,7 +106,7 @@ internal sealed partial class KrlTwinController
     /// <summary>Sets flag <paramref name="number"/> (1-based) and wakes a waiting program.</summary>
     public void SetFlag(int number, bool value)
     {
-        object[] flags = ((KrlArrayValue)FlagCell.Value).Items;
+        object[] flags = ((KrlArrayValue)FlagCell.Value).Objects;
         flags[number - 1] = KrlValues.Box(value);
         InputsChanged();
     }

@@ -80,7 +80,7 @@ internal sealed partial class KrlTwinController
     {
         foreach (string name in new[] { "$VEL_AXIS", "$ACC_AXIS" })
         {
-            object[] items = ((KrlArrayValue)Environment.System[name].Value).Items;
+            object[] items = ((KrlArrayValue)Environment.System[name].Value).Objects;
             Array.Fill(items, 100);
         }
         ((KrlStructValue)Motion.Vel.Value).Values[0] = Options.DefaultCpVelocity;
@@ -362,15 +362,15 @@ internal sealed partial class KrlTwinController
 
     private void RequireSoftLimits(Joints joints)
     {
-        object[] min = ((KrlArrayValue)Motion.SoftMin.Value).Items;
-        object[] max = ((KrlArrayValue)Motion.SoftMax.Value).Items;
+        var min = (KrlArrayValue)Motion.SoftMin.Value;
+        var max = (KrlArrayValue)Motion.SoftMax.Value;
         for (int i = 0; i < 6; i++)
         {
-            if (joints[i] < (double)min[i] - 1e-9 || joints[i] > (double)max[i] + 1e-9)
+            if (joints[i] < min.Real(i) - 1e-9 || joints[i] > max.Real(i) + 1e-9)
             {
-                bool below = joints[i] < (double)min[i];
+                bool below = joints[i] < min.Real(i);
                 throw new KrlRuntimeException(string.Create(CultureInfo.InvariantCulture,
-                    $"Software limit switch {AxisNames[i]} {(below ? "-" : "+")}: the target {joints[i]:0.###} deg is beyond {(below ? min[i] : max[i]):0.###} deg"));
+                    $"Software limit switch {AxisNames[i]} {(below ? "-" : "+")}: the target {joints[i]:0.###} deg is beyond {(below ? min.Real(i) : max.Real(i)):0.###} deg"));
             }
         }
     }
@@ -381,8 +381,8 @@ internal sealed partial class KrlTwinController
     /// <summary>PTP time: the slowest axis at $VEL_AXIS % of its speed, ramping at $ACC_AXIS %.</summary>
     private double AxisSeconds(Joints from, Joints to)
     {
-        object[] vel = ((KrlArrayValue)Motion.VelAxis.Value).Items;
-        object[] acc = ((KrlArrayValue)Motion.AccAxis.Value).Items;
+        object[] vel = ((KrlArrayValue)Motion.VelAxis.Value).Objects;
+        object[] acc = ((KrlArrayValue)Motion.AccAxis.Value).Objects;
         double seconds = 0;
         for (int i = 0; i < 6; i++)
         {

@@ -41,8 +41,8 @@ internal sealed partial class KrlTwinController
             long now = TimerTicks();
             long last = _timersAt;
             _timersAt = now;
-            object[] timers = ((KrlArrayValue)Motion.Timer.Box[0]).Items;
-            object[] stopped = ((KrlArrayValue)Motion.TimerStop.Box[0]).Items;
+            object[] timers = ((KrlArrayValue)Motion.Timer.Box[0]).Objects;
+            object[] stopped = ((KrlArrayValue)Motion.TimerStop.Box[0]).Objects;
             if (last >= 0 && now > last)
             {
                 // Whole milliseconds; the rest carries over to the next count.
@@ -71,7 +71,7 @@ internal sealed partial class KrlTwinController
     public KrlArrayValue TimerFlags()
     {
         CountTimers();
-        object[] timers = ((KrlArrayValue)Motion.Timer.Box[0]).Items;
+        object[] timers = ((KrlArrayValue)Motion.Timer.Box[0]).Objects;
         KrlType type = KrlType.Array(KrlType.Bool, TimerCount);
         var flags = new object[TimerCount];
         for (int i = 0; i < TimerCount; i++)

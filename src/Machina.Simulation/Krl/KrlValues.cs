@@ -24,27 +24,6 @@ internal sealed record KrlEnumValue(string Name)
 /// <param name="Values">Their values.</param>
 internal sealed record KrlPartialValue(KrlType Type, int[] Indexes, object[] Values);
 
-/// <summary>An array value: its type and its elements (row by row for 2 and 3 dimensions).</summary>
-internal sealed class KrlArrayValue(KrlType type, object[] items)
-{
-    /// <summary>The array type.</summary>
-    public KrlType Type { get; } = type;
-
-    /// <summary>The elements.</summary>
-    public object[] Items { get; } = items;
-
-    /// <summary>A deep copy.</summary>
-    public KrlArrayValue Copy()
-    {
-        var items = new object[Items.Length];
-        for (int i = 0; i < items.Length; i++)
-        {
-            items[i] = KrlValues.Copy(Items[i]);
-        }
-        return new KrlArrayValue(Type, items);
-    }
-}
-
 /// <summary>Making, copying and converting KRL values (boxed int, double, bool, char, enum, structure, array).</summary>
 internal static partial class KrlValues
 {
@@ -86,6 +65,10 @@ internal static partial class KrlValues
                 return KrlStructValue.Zero(type) ?? new KrlStructValue(type, DefaultComponents(type));
             default:
             {
+                if (type.Element!.Kind == KrlKind.Real)
+                {
+                    return KrlArrayValue.Zero(type);
+                }
                 var items = new object[type.Length];
                 for (int i = 0; i < items.Length; i++)
                 {
@@ -134,8 +117,9 @@ internal static partial class KrlValues
     /// <summary>The text of a CHAR array: its characters up to the first unset one.</summary>
     public static string Text(KrlArrayValue array)
     {
-        var text = new StringBuilder(array.Items.Length);
-        foreach (object item in array.Items)
+        object[] items = array.Objects;
+        var text = new StringBuilder(items.Length);
+        foreach (object item in items)
         {
             char c = (char)item;
             if (c == '\0')

@@ -77,7 +77,7 @@ public class EkiArrivalWakeTests
         Assert.True(Flag(twin, 2));
         Assert.Equal(KrlProgramState.Finished, twin.Run("wakes_take"));
         Assert.Equal(8, (int)twin.Modules["wakes_take"].Data["got"].Value);
-        Assert.Equal(Enumerable.Range(1, 8), ((KrlArrayValue)twin.Modules["wakes_take"].Data["ns"].Value).Items.Select(v => (int)v));
+        Assert.Equal(Enumerable.Range(1, 8), ((KrlArrayValue)twin.Modules["wakes_take"].Data["ns"].Value).ToObjects().Select(v => (int)v));
     }
 
     [Fact]
@@ -99,5 +99,5 @@ public class EkiArrivalWakeTests
         Assert.Equal(2, (int)twin.Modules["wakes_take"].Data["got"].Value);
     }
 
-    private static bool Flag(KrlTwinController twin, int number) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value).Items[number - 1];
+    private static bool Flag(KrlTwinController twin, int number) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value)[number - 1];
 }

@@ -106,9 +106,9 @@ public class EkiChannelLinkTests
         }
     }
 
-    private static bool Flag(KrlTwinController twin, int number) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value).Items[number - 1];
+    private static bool Flag(KrlTwinController twin, int number) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value)[number - 1];
 
-    private static bool Alive(KrlTwinController twin) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value).Items[0];
+    private static bool Alive(KrlTwinController twin) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value)[0];
 
     /// <summary>
     /// Lets the program clear the channel (on a thread of its own) while the first connection's reader is in Closed, and gives

@@ -66,9 +66,9 @@ public class EkiNamedTagTests
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
         Assert.Equal("<State Left=\"0\" />", answer);
-        object[] read = ((KrlArrayValue)twin.Modules["named"].Data["vals"].Value).Items;
+        object[] read = ((KrlArrayValue)twin.Modules["named"].Data["vals"].Value).ToObjects();
         Assert.Equal(Enumerable.Range(1, 40), read.Select(v => (int)v));
-        object[] ks = ((KrlArrayValue)twin.Modules["named"].Data["ks"].Value).Items;
+        object[] ks = ((KrlArrayValue)twin.Modules["named"].Data["ks"].Value).ToObjects();
         Assert.Equal([12, -3, 2, 100, 4, 7, 0], ks.Select(v => (int)v));
     }
 }

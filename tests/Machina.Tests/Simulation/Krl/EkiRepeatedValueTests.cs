@@ -145,7 +145,7 @@ public sealed class EkiRepeatedValueTests
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
         Assert.Equal("<State Left=\"0\" />", answer);
-        object[] read = ((KrlArrayValue)twin.Modules["order"].Data["vals"].Value).Items;
+        object[] read = ((KrlArrayValue)twin.Modules["order"].Data["vals"].Value).ToObjects();
         Assert.Equal([1, 2, 3, 6, 5, 4, 8, 7, 9], read.Select(v => (int)v));
     }
 }

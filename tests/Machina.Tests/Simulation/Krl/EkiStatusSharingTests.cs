@@ -40,7 +40,7 @@ public class EkiStatusSharingTests
         KrlProgramState state = twin.Run();
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
-        object[] got = ((KrlArrayValue)twin.Modules["shared"].Data["got"].Value).Items;
+        object[] got = ((KrlArrayValue)twin.Modules["shared"].Data["got"].Value).ToObjects();
         Assert.Equal([99, 7, 0, 0, 0, 0, 5], got.Select(o => (int)o));
     }
 }

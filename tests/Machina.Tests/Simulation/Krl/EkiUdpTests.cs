@@ -145,5 +145,5 @@ public class EkiUdpTests
         Assert.Equal("<S><P A1=\"2\" /><T>ok</T><Empty /></S>", EkiSendDocument.Write("S", tags, values));
     }
 
-    private static bool Alive(KrlTwinController twin) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value).Items[0];
+    private static bool Alive(KrlTwinController twin) => (bool)((KrlArrayValue)twin.Environment.System["$FLAG"].Value)[0];
 }

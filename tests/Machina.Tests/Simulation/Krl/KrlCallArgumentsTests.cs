@@ -61,6 +61,6 @@ public class KrlCallArgumentsTests
         // down(11, sum): sum = 11 + 10 + ... + 1 = 66 through eleven nested OUT arguments; 11 levels below the first.
         Assert.Equal(66, (int)data["sum"].Value);
         Assert.Equal(11, (int)data["r"].Value);
-        Assert.Equal(Enumerable.Range(0, 12), ((KrlArrayValue)data["depths"].Value).Items.Select(v => (int)v));
+        Assert.Equal(Enumerable.Range(0, 12), ((KrlArrayValue)data["depths"].Value).ToObjects().Select(v => (int)v));
     }
 }

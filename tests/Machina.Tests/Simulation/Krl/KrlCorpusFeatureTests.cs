@@ -227,7 +227,7 @@ public class KrlCorpusFeatureTests
         KrlProgramState state = twin.Run();
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
-        Assert.Equal(new object[] { '\r', '\n' }, ((KrlArrayValue)Data(twin, "eol", "line")).Items);
+        Assert.Equal(new object[] { '\r', '\n' }, ((KrlArrayValue)Data(twin, "eol", "line")).ToObjects());
     }
 
     [Fact]

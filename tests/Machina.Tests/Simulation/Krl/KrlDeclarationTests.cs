@@ -49,7 +49,7 @@ public class KrlDeclarationTests
         Assert.Equal(7, (int)last.Values[0]);
         Assert.Equal(0.5, (double)last.Values[1], 6);
         Assert.Equal(new KrlEnumValue("RUNNING"), last.Values[3]);
-        object[] outputs = ((KrlArrayValue)twin.Environment.System["$OUT"].Value).Items;
+        object[] outputs = ((KrlArrayValue)twin.Environment.System["$OUT"].Value).ToObjects();
         Assert.True((bool)outputs[2]);
         Assert.False((bool)outputs[3]);
     }

@@ -84,10 +84,10 @@ public class KrlDirectWriteTests
         Assert.Equal(10.0, (double)data["copyx"].Value);
         Assert.Equal(10.0, ((KrlStructValue)data["kept"].Value).Number("X"));
         Assert.Equal(12, (int)data["outx"].Value);
-        Assert.Equal([0, 0, 7, 0], ((KrlArrayValue)data["glob"].Value).Items.Select(v => (int)v));
-        Assert.Equal([2.5, 0, 0, 0, 0, 1.5], ((KrlArrayValue)data["grid"].Value).Items.Select(v => (double)v));
-        Assert.Equal("\0\0\0\0\0AB\0\0\0", string.Concat(((KrlArrayValue)data["rows"].Value).Items.Select(v => (char)v)));
-        Assert.Equal("Q\0\0\0\0", string.Concat(((KrlArrayValue)data["word"].Value).Items.Select(v => (char)v)));
+        Assert.Equal([0, 0, 7, 0], ((KrlArrayValue)data["glob"].Value).ToObjects().Select(v => (int)v));
+        Assert.Equal([2.5, 0, 0, 0, 0, 1.5], ((KrlArrayValue)data["grid"].Value).ToObjects().Select(v => (double)v));
+        Assert.Equal("\0\0\0\0\0AB\0\0\0", string.Concat(((KrlArrayValue)data["rows"].Value).ToObjects().Select(v => (char)v)));
+        Assert.Equal("Q\0\0\0\0", string.Concat(((KrlArrayValue)data["word"].Value).ToObjects().Select(v => (char)v)));
     }
 
     [Theory]

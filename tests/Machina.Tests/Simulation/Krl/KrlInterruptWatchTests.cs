@@ -43,7 +43,7 @@ public class KrlInterruptWatchTests
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
         Assert.Equal(1, (int)twin.Modules["watch"].Data["hits"].Value);
-        object[] order = ((KrlArrayValue)twin.Modules["watch"].Data["order"].Value).Items;
+        object[] order = ((KrlArrayValue)twin.Modules["watch"].Data["order"].Value).ToObjects();
         // Before the write of marks[3] no interrupt ran (0), right after it the routine had run once (1), and never again (11).
         Assert.Equal([0, 0, 1, 11, 11], order.Select(o => (int)o));
     }
@@ -83,7 +83,7 @@ public class KrlInterruptWatchTests
         KrlProgramState state = twin.Run();
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
-        object[] trace = ((KrlArrayValue)twin.Modules["watch2"].Data["trace"].Value).Items;
+        object[] trace = ((KrlArrayValue)twin.Modules["watch2"].Data["trace"].Value).ToObjects();
         // go written: the routine ran before trace[2]; place.Y does not make place.X > 5; place.X does, before trace[4]; once each.
         Assert.Equal([0, 1, 1, 2, 2], trace.Select(o => (int)o));
     }

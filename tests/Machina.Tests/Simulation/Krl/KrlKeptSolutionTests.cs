@@ -108,6 +108,6 @@ public class KrlKeptSolutionTests
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
         // INVERSE reads its E6AXIS argument without a copy; the answer it gives back without a solution must still be the caller's own.
-        Assert.Equal([10.0, 1.0], ((KrlArrayValue)twin.Modules["prog"].Data["seen"].Value).Items.Select(v => (double)v));
+        Assert.Equal([10.0, 1.0], ((KrlArrayValue)twin.Modules["prog"].Data["seen"].Value).ToObjects().Select(v => (double)v));
     }
 }

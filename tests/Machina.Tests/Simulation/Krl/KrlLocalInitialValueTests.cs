@@ -48,7 +48,7 @@ public class KrlLocalInitialValueTests
         KrlProgramState state = twin.Run();
 
         Assert.True(state == KrlProgramState.Finished, $"{state}: {twin.Error}");
-        object[] seen = ((KrlArrayValue)twin.Modules["locals"].Data["seen"].Value).Items;
+        object[] seen = ((KrlArrayValue)twin.Modules["locals"].Data["seen"].Value).ToObjects();
         // Each call: f and counts unread (0, even after the first call set f.X and counts[2]), g.Y set (6, then 7) with g.X 0,
         // counts[3] 0 + 7 each call, p's Z 0 + 3 through the OUT parameter.
         Assert.Equal([0.0, 0.0, 6.0, 7.0, 7.0, 7.0, 3.0, 3.0], seen.Select(v => (double)v));

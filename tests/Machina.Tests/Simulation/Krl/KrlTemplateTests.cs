@@ -124,7 +124,7 @@ public class KrlTemplateTests
         twin.Load(("prog.src", "DEF prog( )\n  EXT helper ( )\n  helper( )\nEND\n"), ("helper.src", "DEF helper( )\n  $OUT[7] = TRUE\nEND\n"));
 
         Assert.Equal(KrlProgramState.Finished, twin.Run("prog"));
-        Assert.True((bool)((KrlArrayValue)twin.Environment.System["$OUT"].Value).Items[6]);
+        Assert.True((bool)((KrlArrayValue)twin.Environment.System["$OUT"].Value)[6]);
     }
 
     /// <summary>

@@ -47,7 +47,7 @@ public class KrlTwinIoTests
             ["$OUT[3] = TRUE", "$ANOUT[2] = 0.25", "$OUT[5] = TRUE", "DO_Grip = TRUE", "$OUT[9] = TRUE", "$OUT[10] = TRUE"],
             twin.Arm.Trace.Where(e => e.Kind == TwinTraceKind.Output).Select(e => e.Text));
         // The program reads the arrays whole too: a copy of the bank.
-        Assert.True((bool)((KrlArrayValue)twin.Environment.System["$OUT"].Value).Items[11]);
+        Assert.True((bool)((KrlArrayValue)twin.Environment.System["$OUT"].Value)[11]);
     }
 
     [Fact]
