@@ -45,7 +45,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         var client = new TcpClient();
         client.Client.Dispose();
         client.Client = socket.Connection;
-        if (!AttachClient(client))
+        if (!AttachClient(client, socket.Held))
         {
             Pendant("the connection back to the host was refused");
         }
