@@ -83,7 +83,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         Twin.WaitWhileHeld(socket.Program);
     }
 
-    bool IUrSocketSeam.Send(UrSocket socket, byte[] bytes, CancellationToken program)
+    bool IUrSocketSeam.Send(UrSocket socket, ReadOnlySpan<byte> bytes, CancellationToken program)
     {
         if (bytes.Length != 4)
         {

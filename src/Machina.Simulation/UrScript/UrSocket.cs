@@ -254,7 +254,7 @@ internal sealed class UrSocket(Socket socket) : IDisposable
     }
 
     /// <summary>Sends bytes for the program, through the <see cref="Seam"/> when there is one; false when the connection is gone.</summary>
-    public bool Send(ReadOnlySpan<byte> bytes) => Seam is { } seam ? seam.Send(this, bytes.ToArray(), Program) : SendDirect(bytes);
+    public bool Send(ReadOnlySpan<byte> bytes) => Seam is { } seam ? seam.Send(this, bytes, Program) : SendDirect(bytes);
 
     /// <summary>Sends bytes straight to the connection; false when it is gone.</summary>
     internal bool SendDirect(ReadOnlySpan<byte> bytes)
