@@ -95,9 +95,9 @@ public abstract partial class VirtualController<TState>
     /// the controller hears of it): <see cref="ReceiveOnCaller"/> then <see cref="CompleteReceivedOnCaller"/>. Nothing is sent
     /// for a request a restart lost.
     /// </summary>
-    private protected void AcknowledgeOnCaller(object request, int id, string logText, CancellationToken token)
+    private protected void AcknowledgeOnCaller(object request, int id, object logEntry, CancellationToken token)
     {
-        if (ReceiveOnCaller(id, logText, out int generation))
+        if (ReceiveOnCaller(id, logEntry, out int generation))
         {
             CompleteReceivedOnCaller(request, id, generation, runs: true, token);
         }

@@ -23,11 +23,15 @@ public sealed partial class VirtualUrController : IUrSocketSeam
     private bool _inResponse;
     private bool _awaitingHeader;
 
-    /// <summary>True while the values of an instruction are read into <see cref="_readText"/> (its header came).</summary>
+    /// <summary>True while the values of an instruction are read into <see cref="_readValues"/> (its header came).</summary>
     private bool _reading;
 
-    /// <summary>The received instruction as text for the request log, one builder kept for every instruction.</summary>
-    private readonly StringBuilder _readText = new();
+    /// <summary>
+    /// The received instruction's values, header first, for the request log (one buffer kept for every instruction): the log
+    /// keeps a copy and writes its text only when it is read (<see cref="RequestText"/>).
+    /// </summary>
+    private int[] _readValues = new int[16];
+    private int _readCount;
 
     /// <summary>An acknowledgement the program is writing: executed by the arm already, sent (or not) by the fault plan.</summary>
     private sealed record TwinAck(int Id, int Program, TaskCompletionSource<bool> Done);
@@ -45,7 +49,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         var client = new TcpClient();
         client.Client.Dispose();
         client.Client = socket.Connection;
-        if (!AttachClient(client))
+        if (!AttachClient(client, socket.Held))
         {
             Pendant("the connection back to the host was refused");
         }
@@ -67,30 +71,28 @@ public sealed partial class VirtualUrController : IUrSocketSeam
             }
             if (_awaitingHeader && n == 2)
             {
-                _readText.Clear().Append(Num.Inv, $"{values.Items[1]} {values.Items[2]}");
+                _readCount = 0;
+                KeepRead(values, n);
                 _reading = true;
                 _awaitingHeader = false;
             }
             else if (_reading)
             {
-                for (int i = 1; i <= n; i++)
-                {
-                    _readText.Append(Num.Inv, $" {values.Items[i]}");
-                }
+                KeepRead(values, n);
             }
         }
         // A protective stop or a pause: the program waits here, before it runs what it read, until it is played again.
         Twin.WaitWhileHeld(socket.Program);
     }
 
-    bool IUrSocketSeam.Send(UrSocket socket, byte[] bytes, CancellationToken program)
+    bool IUrSocketSeam.Send(UrSocket socket, ReadOnlySpan<byte> bytes, CancellationToken program)
     {
         if (bytes.Length != 4)
         {
             return socket.SendDirect(bytes);
         }
         int value = BinaryPrimitives.ReadInt32BigEndian(bytes);
-        string text;
+        object entry;
         int generation;
         lock (Gate)
         {
@@ -103,7 +105,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
                 _inResponse = value != ResponseEnd;
                 return socket.SendDirect(bytes);
             }
-            text = _reading ? _readText.ToString() : value.ToString(Num.Inv);
+            entry = _reading ? _readValues.AsSpan(0, _readCount).ToArray() : value.ToString(Num.Inv);
             _reading = false;
             _awaitingHeader = true;
             generation = _driverProgram;
@@ -112,8 +114,40 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         // the program, as a blocked socket write would): no hand-off to another thread per instruction. One that a restart
         // lost is never sent: the program waits there until it is replaced.
         var done = new TaskCompletionSource<bool>();
-        AcknowledgeOnCaller(new TwinAck(value, generation, done), Math.Max(value, 0), text, program);
+        AcknowledgeOnCaller(new TwinAck(value, generation, done), Math.Max(value, 0), entry, program);
         return TwinWait.For(done.Task, program);
+    }
+
+    /// <summary>Keeps the <paramref name="n"/> values of a read ([n, v1 … vn]: boxed integers, as socket_read_binary_integer gives them).</summary>
+    private void KeepRead(UrList values, int n)
+    {
+        if (_readCount + n > _readValues.Length)
+        {
+            Array.Resize(ref _readValues, Math.Max(_readValues.Length * 2, _readCount + n));
+        }
+        for (int i = 1; i <= n; i++)
+        {
+            _readValues[_readCount++] = values.Items[i] is int v ? v : -1; // always an int here: the read's own values
+        }
+    }
+
+    /// <summary>A received instruction's log text (its values, header first, space-separated), written when the log is read.</summary>
+    private protected override string RequestText(object entry)
+    {
+        if (entry is not int[] read)
+        {
+            return (string)entry;
+        }
+        var text = new StringBuilder(read.Length * 8);
+        for (int i = 0; i < read.Length; i++)
+        {
+            if (i > 0)
+            {
+                text.Append(' ');
+            }
+            text.Append(read[i].ToString(Num.Inv));
+        }
+        return text.ToString();
     }
 
     /// <summary>Sends an executed acknowledgement through the fault plan, unless its program was replaced since (nobody listens for it then).</summary>

@@ -14,5 +14,5 @@ internal interface IUrSocketSeam
     void Read(UrSocket socket, UrList values);
 
     /// <summary>Writes <paramref name="bytes"/> for the program (blocking as long as the seam holds the write); false when they did not leave.</summary>
-    bool Send(UrSocket socket, byte[] bytes, CancellationToken program);
+    bool Send(UrSocket socket, ReadOnlySpan<byte> bytes, CancellationToken program);
 }

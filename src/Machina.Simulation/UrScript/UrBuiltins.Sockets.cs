@@ -101,6 +101,7 @@ internal static partial class UrBuiltins
         }
         CancellationToken token = m.Cancellation;
         TimeSpan timeout = m.Controller.Options.SocketOpenTimeout;
+        Twin.TwinWait.Blocking(); // a connect waits: what this thread sent is not held through it
         UrSocket? socket = m.Unlocked(() => UrSocket.Connect(address, port, timeout, token));
         if (socket is null)
         {
@@ -111,6 +112,7 @@ internal static partial class UrBuiltins
         {
             socket.Seam = seam;
             socket.Program = token;
+            socket.Held = new Twin.TwinHeldOutbox(socket.Connection, m.Sends);
             m.Unlocked(() =>
             {
                 seam.Opened(socket, token);

@@ -68,6 +68,12 @@ internal sealed class UrMachine : IDisposable
     /// </summary>
     public Dictionary<string, UrSocket> Sockets { get; } = new(StringComparer.Ordinal);
 
+    /// <summary>
+    /// The sockets' network stack on the program's own thread (<see cref="Run"/>): what it writes on the virtual UR's driver
+    /// connection is held until it is about to wait, after <see cref="TwinHeldSends.StatementBound"/> statements, and at its end.
+    /// </summary>
+    public TwinHeldSends Sends { get; } = new();
+
     /// <summary>The global variable slots.</summary>
     public object?[] Globals { get; }
 
@@ -98,6 +104,7 @@ internal sealed class UrMachine : IDisposable
     public void Step(int line)
     {
         CurrentLine = line;
+        Sends.Statement();
         if (++_steps > _stepLimit)
         {
             OverBudget(line);
@@ -121,6 +128,7 @@ internal sealed class UrMachine : IDisposable
     public void Run()
     {
         _token.Value = _stop.Token;
+        Sends.Own();
         lock (_gil)
         {
             try
@@ -148,6 +156,9 @@ internal sealed class UrMachine : IDisposable
             }
             finally
             {
+                // The bytes are on the wire before the program shows ended; no later thread with this id holds anything.
+                Sends.Flush();
+                Sends.Disown();
                 StopThreads();
                 // The program's threads are all gone: a speed motion one of them left going is no thread's now (the program's end
                 // stops it, UrTwinController.SettleCoast).
@@ -171,6 +182,7 @@ internal sealed class UrMachine : IDisposable
         if (++_turns >= LoopTurnsPerYield && _threads.Count > 0)
         {
             _turns = 0;
+            TwinWait.Blocking();
             Unlocked(() => Thread.Yield());
             // Killed (or stopped) while the others ran: a killed thread runs no further statement (the Script Manual's kill).
             Cancellation.ThrowIfCancellationRequested();
@@ -285,6 +297,7 @@ internal sealed class UrMachine : IDisposable
     public void JoinThread(UrThreadHandle handle, int line)
     {
         CancellationToken token = Cancellation;
+        TwinWait.Blocking();
         Unlocked(() =>
         {
             while (!handle.Thread!.Join(20))

@@ -1,6 +1,7 @@
 using System.Buffers.Binary;
 using System.Net.Sockets;
 using System.Text;
+using Machina.Simulation.Twin;
 
 namespace Machina.Simulation.UrScript;
 
@@ -37,6 +38,12 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             }
         }
     }
+
+    /// <summary>
+    /// The controller's network stack for this connection when the virtual UR made it its driver connection, or null (writes go
+    /// straight out): what the program's own thread writes is held until it is about to wait (<see cref="TwinHeldOutbox"/>).
+    /// </summary>
+    internal TwinHeldOutbox? Held { get; set; }
 
     /// <summary>Cancelled when the program that opened this socket stops (a write the seam holds ends then).</summary>
     internal CancellationToken Program { get; set; }
@@ -111,6 +118,11 @@ internal sealed class UrSocket(Socket socket) : IDisposable
             _start = _end = 0;
         }
         // The Script Manual: a timeout of 0 or less never times out (UR's clients make their first read blocking with 0).
+        if (Buffered < count && !_closed)
+        {
+            // About to wait for the host: what this thread sent is held until now (the acknowledgements of the burst it ran).
+            TwinWait.Blocking();
+        }
         long deadline = timeoutSeconds > 0 ? Environment.TickCount64 + (long)(timeoutSeconds * 1000) : long.MaxValue;
         while (Buffered < count && !_closed)
         {
@@ -242,11 +254,15 @@ internal sealed class UrSocket(Socket socket) : IDisposable
     }
 
     /// <summary>Sends bytes for the program, through the <see cref="Seam"/> when there is one; false when the connection is gone.</summary>
-    public bool Send(ReadOnlySpan<byte> bytes) => Seam is { } seam ? seam.Send(this, bytes.ToArray(), Program) : SendDirect(bytes);
+    public bool Send(ReadOnlySpan<byte> bytes) => Seam is { } seam ? seam.Send(this, bytes, Program) : SendDirect(bytes);
 
     /// <summary>Sends bytes straight to the connection; false when it is gone.</summary>
     internal bool SendDirect(ReadOnlySpan<byte> bytes)
     {
+        if (Held is { } held)
+        {
+            return held.TryWrite(bytes);
+        }
         try
         {
             while (bytes.Length > 0)
@@ -275,5 +291,9 @@ internal sealed class UrSocket(Socket socket) : IDisposable
     }
 
     /// <inheritdoc/>
-    public void Dispose() => socket.Dispose();
+    public void Dispose()
+    {
+        Held?.Flush(); // what the stack still holds leaves before the connection closes
+        socket.Dispose();
+    }
 }

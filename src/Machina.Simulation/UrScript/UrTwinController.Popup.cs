@@ -1,3 +1,5 @@
+using Machina.Simulation.Twin;
+
 namespace Machina.Simulation.UrScript;
 
 internal sealed partial class UrTwinController
@@ -37,6 +39,7 @@ internal sealed partial class UrTwinController
         {
             return;
         }
+        TwinWait.Blocking();
         try
         {
             closed.Wait(cancellation);
