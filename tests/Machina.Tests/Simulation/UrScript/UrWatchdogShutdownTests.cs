@@ -21,8 +21,10 @@ public sealed class UrWatchdogShutdownTests
     public void WatchdogStop_WaitingForAProgramSlowToEnd_EndsWhenTheTwinIsDisposed()
     {
         var clock = new ManualClock();
-        using var ending = new ManualResetEventSlim();
-        using var release = new ManualResetEventSlim();
+        // Not disposed: the program's thread may still be inside release.Wait when the test ends (the stop does not wait for it,
+        // which is what is tested), and a disposed event throws there, on a thread of the twin's, ending the test host.
+        var ending = new ManualResetEventSlim();
+        var release = new ManualResetEventSlim();
         var twin = new UrTwinController(new UrTwinOptions { Time = clock, RealTime = true })
         {
             StopTimeout = TimeSpan.FromMinutes(10),
@@ -50,8 +52,10 @@ public sealed class UrWatchdogShutdownTests
     public async Task WatchdogStop_WaitingForAProgramSlowToEnd_DoesNotHoldTheControllersStop()
     {
         var clock = new ManualClock();
-        using var ending = new ManualResetEventSlim();
-        using var release = new ManualResetEventSlim();
+        // Not disposed: the program's thread may still be inside release.Wait when the test ends (the stop does not wait for it,
+        // which is what is tested), and a disposed event throws there, on a thread of the twin's, ending the test host.
+        var ending = new ManualResetEventSlim();
+        var release = new ManualResetEventSlim();
         var controller = new VirtualUrController(new VirtualUrControllerOptions { TimeProvider = clock });
         try
         {
