@@ -228,6 +228,7 @@ internal sealed partial class OnlineSession
         {
             // The program the user stopped ended and closed its link: that is the stop, not a lost connection.
             WithIssueCursor(issue => StopPending(link, issue));
+            StopApplied(link);
             return;
         }
         Detach(error);

@@ -33,6 +33,7 @@ internal sealed partial class OnlineSession
         {
             _ = CloseQuietlyAsync(link.Driver);
         }
+        StopApplied(link);
     }
 
     /// <summary>

@@ -12,6 +12,12 @@ internal sealed partial class OnlineSession
     private Connection? _stoppedByUser;
 
     /// <summary>
+    /// Completed (on the loop) once the controller's own report ended the link the user stopped (<see cref="StopApplied"/>): the
+    /// link is closed then, so the answer to the stop command may never be read, and <see cref="StopAsync"/> no longer waits for it.
+    /// </summary>
+    private TaskCompletionSource? _stopApplied;
+
+    /// <summary>
     /// Holds the motion on the controller (out of band) and stops releasing: the state becomes Stopped with the reason
     /// "paused by the user" until <see cref="ResumeAsync"/>.
     /// </summary>
@@ -32,21 +38,34 @@ internal sealed partial class OnlineSession
     /// Stops the motion on the controller now (out of band), then fails the action it was running and cancels every action
     /// after it, sent or not (<c>ActionFailed</c>, reason <see cref="StoppedByUser"/>); the link is closed.
     /// </summary>
+    /// <remarks>
+    /// The controller may report the stopped program (ABB: the driver's <c>$26 id 4;</c>) before its answer to the stop command
+    /// (the monitor's <c>$28 3;</c>) is read: that report is applied as the stop and closes the link, and the answer then never
+    /// arrives. The stop is done at that point, so this returns then instead of waiting for the answer until the command times out.
+    /// </remarks>
     internal async Task StopAsync(CancellationToken cancellationToken)
     {
-        Connection link = await AskAsync(() =>
+        (Connection link, Task applied) = await AskAsync(() =>
         {
             Connection current = RequireLink("stop");
             _stoppedByUser = current;
-            return current;
+            _stopApplied = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+            return (current, _stopApplied.Task);
         }).ConfigureAwait(false);
         try
         {
-            await link.Driver.StopMotionAsync(cancellationToken).ConfigureAwait(false);
+            Task answered = link.Driver.StopMotionAsync(cancellationToken);
+            if (await Task.WhenAny(answered, applied).ConfigureAwait(false) == applied)
+            {
+                // Applied from the controller's report; the answer, now unreadable, is still observed when its wait ends.
+                _ = answered.ContinueWith(static t => t.Exception, CancellationToken.None, TaskContinuationOptions.OnlyOnFaulted, TaskScheduler.Default);
+                return;
+            }
+            await answered.ConfigureAwait(false);
         }
         catch
         {
-            await AskAsync(() => _stoppedByUser = null).ConfigureAwait(false);
+            await AskAsync(() => (_stoppedByUser, _stopApplied) = (null, null)).ConfigureAwait(false);
             throw;
         }
         await AskAsync(() =>
@@ -63,6 +82,18 @@ internal sealed partial class OnlineSession
             throw Disposed(what);
         }
         return _link ?? throw new InvalidOperationException($"Cannot {what}: the robot is not connected to a controller.");
+    }
+
+    /// <summary>
+    /// The controller's report (a failure, or the link closing) ended the link the user stopped and was applied as the stop (on the
+    /// loop): a <see cref="StopAsync"/> waiting for the answer to its command returns.
+    /// </summary>
+    private void StopApplied(Connection link)
+    {
+        if (ReferenceEquals(_stoppedByUser, link) && !ReferenceEquals(_link, link))
+        {
+            _stopApplied?.TrySetResult();
+        }
     }
 
     /// <summary>After the controller stopped: everything not executed is abandoned (unless its failure report did it already).</summary>

@@ -164,7 +164,7 @@ internal sealed partial class Chromium : IAsyncDisposable
             }
             await Task.Delay(50);
         }
-        throw new TimeoutException($"The page did not reach {string.Join(" or ", values)} within {Limit.TotalSeconds} s; last value: {last}.");
+        throw new TimeoutException($"The page did not reach {string.Join(" or ", values)} within {Limit.TotalSeconds} s for {expression}; last value: {last}.");
     }
 
     /// <summary>A PNG of the tab's viewport.</summary>
