@@ -39,7 +39,7 @@ public abstract partial class VirtualController<TState>
     /// </summary>
     /// <remarks>
     /// <paramref name="logEntry"/> is the request's text for the log, or what the brand's <see cref="RequestText"/> writes the text
-    /// from when someone reads the log (a streamed request's text is then written only if it is read).
+    /// from when someone first reads the log (a streamed request's text is then written only if it is read, and once: the log keeps it).
     /// </remarks>
     private protected bool ReceiveOnCaller(int id, object logEntry, out int generation, bool keepsCut = false)
     {

@@ -42,11 +42,10 @@ public abstract partial class VirtualController<TState>
         {
             lock (Gate)
             {
-                object[] entries = _requestLog.ToArray();
-                var texts = new string[entries.Length];
-                for (int i = 0; i < texts.Length; i++)
+                var texts = new string[_requestLog.Count];
+                for (int k = 0; k < texts.Length; k++)
                 {
-                    texts[i] = RequestText(entries[i]);
+                    texts[k] = RequestTextAt(k);
                 }
                 return texts;
             }
@@ -54,10 +53,26 @@ public abstract partial class VirtualController<TState>
     }
 
     /// <summary>
-    /// The text of an entry of the received requests' log: the entry itself, or what the brand writes from the entry it logged
-    /// (<see cref="ReceiveOnCaller"/>). Called under the gate, so one reader at a time.
+    /// The text of the received requests' log's kept entry <paramref name="k"/>: the entry itself once it is text, else what the
+    /// brand writes from the entry it logged (<see cref="RequestText"/>), stored back in its place so that it is written once.
+    /// Called under the gate.
     /// </summary>
-    private protected virtual string RequestText(object entry) => (string)entry;
+    private string RequestTextAt(int k)
+    {
+        ref object entry = ref _requestLog.At(k);
+        if (entry is not string text)
+        {
+            text = RequestText(entry);
+            entry = text;
+        }
+        return text;
+    }
+
+    /// <summary>
+    /// The text of an entry of the received requests' log that is not text yet: what the brand writes from the entry it logged
+    /// (<see cref="ReceiveOnCaller"/>). Called under the gate, once per entry (the log keeps the text in the entry's place).
+    /// </summary>
+    private protected virtual string RequestText(object entry) => entry.ToString() ?? "";
 
     /// <summary>Texts the driver would have shown on the teach pendant (messages, errors), the last 1000.</summary>
     public IReadOnlyList<string> PendantMessages => Copy(_pendant);
@@ -78,15 +93,13 @@ public abstract partial class VirtualController<TState>
         {
             return seen;
         }
-        var entries = new List<object>();
         lock (Gate)
         {
-            long total = _requestLog.CopySince(seen, entries);
-            foreach (object entry in entries)
+            for (int k = _requestLog.FirstSince(seen); k < _requestLog.Count; k++)
             {
-                into.Add(RequestText(entry));
+                into.Add(RequestTextAt(k));
             }
-            return total;
+            return _requestLog.Total;
         }
     }
 

@@ -17,7 +17,10 @@ public abstract partial class VirtualController<TState> : IAsyncDisposable where
 
     private readonly VirtualControllerOptions _options;
     private readonly Lock _sendLock = new();
-    /// <summary>The received requests' log: each entry its text, or what the brand writes it from when it is read (<see cref="RequestText"/>).</summary>
+    /// <summary>
+    /// The received requests' log: each entry its text, or what the brand writes it from (<see cref="RequestText"/>) until it is
+    /// first read, when the text takes its place.
+    /// </summary>
     private readonly VirtualControllerLog<object> _requestLog;
     private readonly VirtualControllerLog<string> _pendant = new(MaxKeptTexts);
     private readonly VirtualControllerLog<string> _errors = new(MaxKeptTexts);

@@ -45,14 +45,31 @@ internal sealed class VirtualControllerLog<T>(int capacity)
     /// </summary>
     public long CopySince(long seen, ICollection<T> into)
     {
-        long fresh = _total - Math.Max(seen, 0);
-        int from = fresh >= _count ? 0 : _count - (int)Math.Max(fresh, 0);
-        for (int k = from; k < _count; k++)
+        for (int k = FirstSince(seen); k < _count; k++)
         {
             into.Add(_ring[(_first + k) % _ring.Length]);
         }
         return _total;
     }
+
+    /// <summary>How many entries are kept (at most the capacity).</summary>
+    public int Count => _count;
+
+    /// <summary>
+    /// Where the first kept entry added after the first <paramref name="seen"/> ever added is, as an index for <see cref="At"/>
+    /// (<see cref="Count"/> when there is none).
+    /// </summary>
+    public int FirstSince(long seen)
+    {
+        long fresh = _total - Math.Max(seen, 0);
+        return fresh >= _count ? 0 : _count - (int)Math.Max(fresh, 0);
+    }
+
+    /// <summary>
+    /// The kept entry <paramref name="k"/> (0 the oldest kept, below <see cref="Count"/>), by reference: a reader may replace it
+    /// in place (the request log keeps the text it wrote for an entry there, so that it is written once).
+    /// </summary>
+    public ref T At(int k) => ref _ring[(_first + k) % _ring.Length];
 
     /// <summary>The entries kept, oldest first.</summary>
     public T[] ToArray()

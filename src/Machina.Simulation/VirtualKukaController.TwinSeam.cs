@@ -108,9 +108,9 @@ public sealed partial class VirtualKukaController : IEkiSeam
         }
     }
 
-    /// <summary>A received action's log text, written the first time the log is read (under the gate, as the base calls it).</summary>
+    /// <summary>A received action's log text, written the first time the log is read (under the gate, once: the log keeps it).</summary>
     private protected override string RequestText(object entry) =>
-        entry is EkiReceivedAction action ? action.Text(_receivedText ??= new EkiReceivedText()) : (string)entry;
+        entry is EkiReceivedAction action ? action.Text(_receivedText ??= new EkiReceivedText()) : base.RequestText(entry);
 
     /// <summary>Where the next action's ID is in <paramref name="values"/> from <paramref name="from"/> on (their length when none).</summary>
     private static int NextId(ReadOnlySpan<(string Tag, string Value)> values, int from)

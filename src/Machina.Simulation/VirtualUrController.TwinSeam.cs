@@ -28,7 +28,7 @@ public sealed partial class VirtualUrController : IUrSocketSeam
 
     /// <summary>
     /// The received instruction's values, header first, for the request log (one buffer kept for every instruction): the log
-    /// keeps a copy and writes its text only when it is read (<see cref="RequestText"/>).
+    /// keeps a copy and writes its text only when it is first read (<see cref="RequestText"/>), then keeps the text.
     /// </summary>
     private int[] _readValues = new int[16];
     private int _readCount;
@@ -131,12 +131,12 @@ public sealed partial class VirtualUrController : IUrSocketSeam
         }
     }
 
-    /// <summary>A received instruction's log text (its values, header first, space-separated), written when the log is read.</summary>
+    /// <summary>A received instruction's log text (its values, header first, space-separated), written when the log is first read (the log keeps it).</summary>
     private protected override string RequestText(object entry)
     {
         if (entry is not int[] read)
         {
-            return (string)entry;
+            return base.RequestText(entry);
         }
         var text = new StringBuilder(read.Length * 8);
         for (int i = 0; i < read.Length; i++)

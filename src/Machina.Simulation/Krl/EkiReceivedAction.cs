@@ -1,23 +1,23 @@
 namespace Machina.Simulation.Krl;
 
 /// <summary>
-/// One action the virtual KUKA's driver channel received, as its request log keeps it: its values, written as the log's text
-/// (<see cref="EkiReceivedText"/>) the first time someone reads the log, then kept as that text. A streamed action whose log
-/// nobody reads costs an array of its value strings (the channel's own) instead of its text on the EKI reader's thread; its
-/// tags are an array the actions before it with the same tags share. Not thread-safe: the controller reads it under its gate.
+/// One action the virtual KUKA's driver channel received, as its request log keeps it until the log is first read: its values,
+/// which the log then writes as its text (<see cref="EkiReceivedText"/>) and keeps in the action's place. A streamed action whose
+/// log nobody reads costs an array of its value strings (the channel's own) instead of its text on the EKI reader's thread; its
+/// tags are an array the actions before it with the same tags share. Never written once made.
 /// </summary>
 internal sealed class EkiReceivedAction
 {
-    /// <summary>The tags, shared with the other actions that have the same ones; never written.</summary>
+    /// <summary>The tags, shared with the other actions that have the same ones.</summary>
     private readonly string[] _tags;
 
-    /// <summary>The values (a <c>string[]</c>, one per tag), then the text once written.</summary>
-    private object _valuesOrText;
+    /// <summary>The values, one per tag.</summary>
+    private readonly string[] _values;
 
     private EkiReceivedAction(string[] tags, string[] values)
     {
         _tags = tags;
-        _valuesOrText = values;
+        _values = values;
     }
 
     /// <summary>
@@ -44,16 +44,8 @@ internal sealed class EkiReceivedAction
         return new EkiReceivedAction(shared, values);
     }
 
-    /// <summary>The action's log text (<c>&lt;A ID="1" …/&gt;</c>), written with <paramref name="writer"/> the first time.</summary>
-    public string Text(EkiReceivedText writer)
-    {
-        if (_valuesOrText is not string text)
-        {
-            text = writer.Of(_tags, (string[])_valuesOrText);
-            _valuesOrText = text;
-        }
-        return text;
-    }
+    /// <summary>The action's log text (<c>&lt;A ID="1" …/&gt;</c>), written with <paramref name="writer"/> (the log keeps it).</summary>
+    public string Text(EkiReceivedText writer) => writer.Of(_tags, _values);
 
     /// <summary>True when <paramref name="action"/>'s tags are <paramref name="tags"/>' strings, in order.</summary>
     private static bool HasTags(ReadOnlySpan<(string Tag, string Value)> action, string[] tags)

@@ -91,6 +91,12 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     /// <summary>The line being run.</summary>
     public int Line { get; private set; }
 
+    /// <summary>
+    /// Where the line is kept for the traces of what this interpreter writes, set before each statement: the controller's robot
+    /// line (<see cref="KrlTwinController.Line"/>) unless given a submit interpreter's own.
+    /// </summary>
+    public KrlRunningLine TracedLine { get; init; } = controller.RobotLine;
+
     /// <summary>The file being run.</summary>
     public string File => _routine?.File ?? "";
 
@@ -190,7 +196,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             Line = statement.Line;
             Step();
             Sends?.Statement();
-            Controller.Line = statement.Line;
+            TracedLine.Value = statement.Line;
             if (_interruptsOn > 0 && !_inInterrupt
                 && (_writes != _checkedWrites || Controller.InputsVersion != _checkedInputs || (Controller.TimersCounting && ConditionsMayHaveChanged())))
             {

@@ -5,9 +5,6 @@ namespace Machina.Simulation.Krl;
 /// <summary>Outputs, signals and the inputs a WAIT FOR waits on.</summary>
 internal sealed partial class KrlTwinController
 {
-    /// <summary>The program line the robot interpreter runs now (traces of outputs carry it).</summary>
-    public int Line { get; set; }
-
     /// <summary>
     /// The controller's IO as the twins share it: the values of $IN, $OUT, $ANIN and $ANOUT (banks of those names, which KRL reads
     /// and writes as arrays, <see cref="KrlSignalArray"/>) and what a WAIT FOR sleeps on (its change count and wake-up). Flags
@@ -125,13 +122,13 @@ internal sealed partial class KrlTwinController
         {
             throw new KrlRuntimeException("Value assignment inadmissible: $ANOUT takes values from -1 to 1");
         }
-        Arm.Record(Line, TwinTraceKind.Output, FormattableString.Invariant($"{array}[{index + 1}] = {KrlValues.Format(value)}"));
+        Arm.Record(TraceLine(), TwinTraceKind.Output, FormattableString.Invariant($"{array}[{index + 1}] = {KrlValues.Format(value)}"));
     }
 
     private void SignalWritten(string name, int output)
     {
         var cell = Environment.Signals[name];
         Io.SetBit("$OUT", output - 1, (bool)cell.Box[0]);
-        Arm.Record(Line, TwinTraceKind.Output, $"{name} = {KrlValues.Format(cell.Box[0])}");
+        Arm.Record(TraceLine(), TwinTraceKind.Output, $"{name} = {KrlValues.Format(cell.Box[0])}");
     }
 }

@@ -101,7 +101,7 @@ internal sealed partial class KrlTwinController
     {
         Arm.FinishBlend(_motionCancellation);
         Arm.ToolCenter = KeptTool().Pose;
-        Arm.Record(Line, TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Motion.Tool.Value));
+        Arm.Record(TraceLine(), TwinTraceKind.Tool, "$TOOL = " + KrlValues.Format(Motion.Tool.Value));
     }
 
     /// <summary>

@@ -27,7 +27,9 @@ internal sealed partial class KrlTwinController
         }
         var sleep = new TwinSleep();
         TimeProvider wall = TwinScaledTime.Wall(Options.Time);
-        var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token) };
+        var line = new KrlRunningLine();
+        var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token), TracedLine = line };
+        using SubmitLine traced = SubmitLineOnThisThread(line);
         using SubmitRun running = SubmitRunning();
         try
         {

@@ -3,16 +3,17 @@ using Machina.Simulation.Krl;
 namespace Machina.Tests.Simulation.Krl;
 
 /// <summary>
-/// <see cref="EkiReceivedAction"/>: the virtual KUKA's request log keeps a received action's values and writes its text when the
-/// log is first read: the text <see cref="EkiReceivedText"/> writes from the values, then the same string at every later read;
-/// actions with the same tag strings share one array of tags.
+/// <see cref="EkiReceivedAction"/>: the virtual KUKA's request log keeps a received action's values until the log is first read,
+/// when it writes the text <see cref="EkiReceivedText"/> writes from the values and keeps that text in the action's place (the
+/// log's part: <c>EkiSeamReceivedLogTests</c>, <c>RequestLogTextWrittenOnceTests</c>); actions with the same tag strings share
+/// one array of tags.
 /// </summary>
 public class EkiReceivedActionTests
 {
     private const string Id = "DT/DR/A/@ID", Type = "DT/DR/A/@T", Message = "DT/DR/A/@M";
 
     [Fact]
-    public void Text_IsTheValuesAsAnElement_WrittenOnce()
+    public void Text_IsTheValuesAsAnElement_FromTheValuesCopiedWhenMade()
     {
         (string Tag, string Value)[] values = [(Id, "7"), (Type, "1"), (Message, "a&b \"c\" <d>")];
         string[]? tags = null;
@@ -22,7 +23,7 @@ public class EkiReceivedActionTests
         string text = action.Text(new EkiReceivedText());
 
         Assert.Equal("<A ID=\"7\" T=\"1\" M=\"a&amp;b &quot;c&quot; &lt;d&gt;\"/>", text);
-        Assert.Same(text, action.Text(new EkiReceivedText()));
+        Assert.Equal(text, action.Text(new EkiReceivedText())); // the action is never written: the same values, the same text
         Assert.Equal([Id, Type, Message], tags!);
     }
 
