@@ -61,7 +61,8 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
         if (warmups > 0)
         {
             WarmBookkeeping(scenario.MultiThreaded, byThread, size);
-            double small = WarmOncePerRun(scenario.SmallRun());
+            // Not with --quick (no settling): a check that every scenario works needs no promoted code.
+            double small = settle ? WarmOncePerRun(scenario.SmallRun()) : 0;
             if (byThread && small > 0)
             {
                 Console.Error.WriteLine($"{scenario.Name}: {OncePerRunRounds * 16} small runs in {small:0.0} s");

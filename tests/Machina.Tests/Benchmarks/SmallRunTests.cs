@@ -13,7 +13,7 @@ public class SmallRunTests
     public void Run_CallsTheSmallRun_RoundsTimes16_AfterThePrepare_BeforeTheWarmUps()
     {
         var order = new List<string>();
-        var runner = new Runner(2, 1, _ => { }, settle: false, listeners: () => new RunListeners(null, null));
+        var runner = new Runner(2, 1, _ => { }, settle: true, listeners: () => new RunListeners(null, null));
 
         Measurement m = runner.Run(new Probe(order), 10);
 
@@ -24,11 +24,13 @@ public class SmallRunTests
         Assert.Equal(m.Warmups + 1 + m.RepeatedRuns, order.Count(o => o == "work")); // a run in which the JIT compiled is run again
     }
 
-    [Fact]
-    public void Run_WithoutWarmUps_MakesNoSmallRun()
+    [Theory]
+    [InlineData(0, true)]    // --warmup 0
+    [InlineData(1, false)]   // --quick: no settling
+    public void Run_WithoutWarmUpsOrSettling_MakesNoSmallRun(int warmups, bool settle)
     {
         var order = new List<string>();
-        var runner = new Runner(0, 1, _ => { }, settle: false, listeners: () => new RunListeners(null, null));
+        var runner = new Runner(warmups, 1, _ => { }, settle: settle, listeners: () => new RunListeners(null, null));
 
         runner.Run(new Probe(order), 10);
 
