@@ -61,6 +61,12 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
         if (warmups > 0)
         {
             WarmBookkeeping(scenario.MultiThreaded, byThread, size);
+            // Not with --quick (no settling): a check that every scenario works needs no promoted code.
+            double small = settle ? WarmOncePerRun(scenario.SmallRun()) : 0;
+            if (byThread && small > 0)
+            {
+                Console.Error.WriteLine($"{scenario.Name}: {OncePerRunRounds * 16} small runs in {small:0.0} s");
+            }
         }
         (int warmedUp, bool settled) = WarmUp(scenario, size, work, listening, byThread);
         if (byThread)
@@ -220,6 +226,34 @@ internal sealed class Runner(int warmups, int runs, Action<string> progress, boo
 
     /// <summary>Rounds of 16 bookkeeping passes: past both of the JIT's promotions (30 calls each) of code called once per pass.</summary>
     private const int BookkeepingRounds = 6;
+
+    /// <summary>
+    /// Runs the scenario's small run (<see cref="Scenario.SmallRun"/>) <see cref="OncePerRunRounds"/> x 16 times, pausing
+    /// between rounds as <see cref="WarmBookkeeping"/> does: the code a run calls once is promoted here. A full-size warm-up
+    /// calls it once, so the measured runs (runs 10-20 of a row) fell where its promotions do (30 and 60 calls): in `plain-kuka`
+    /// 6-87 methods compiled in each measured run, the connect's, the twins' accept's and the event pump's (session 36).
+    /// </summary>
+    /// <returns>The seconds it took, 0 without a small run.</returns>
+    private static double WarmOncePerRun(Action? smallRun)
+    {
+        if (smallRun is null)
+        {
+            return 0;
+        }
+        long start = Stopwatch.GetTimestamp();
+        for (int round = 0; round < OncePerRunRounds; round++)
+        {
+            for (int i = 0; i < 16; i++)
+            {
+                smallRun();
+            }
+            Thread.Sleep(150); // the JIT promotes in the background after a 100 ms quiet spell
+        }
+        return Stopwatch.GetElapsedTime(start).TotalSeconds;
+    }
+
+    /// <summary>Rounds of 16 small runs: past both promotions (30 calls each) of code a run calls once, with room to spare.</summary>
+    internal const int OncePerRunRounds = 5;
 
     /// <summary>The JIT's processor time in a run: its tiered-compilation thread's, or where /proc is missing the compiling time the runtime counted.</summary>
     private static double JitSeconds(List<ThreadCpu.ThreadTime> threads, JitActivity jit) =>

@@ -34,6 +34,15 @@ internal abstract class Scenario
     /// <summary>Builds the input for <paramref name="size"/> units and returns the work to time.</summary>
     public abstract Func<object?> Prepare(int size);
 
+    /// <summary>
+    /// After <see cref="Prepare"/>: a run of the work with a few units only, or null (the default). The harness calls it
+    /// <c>Runner.OncePerRunRounds</c> x 16 times before the warm-ups, pausing between rounds, so that the code a run calls once
+    /// (connecting, disconnecting, <c>SpeedTo</c>, the wait for completion, the twin's accept) crosses both of the JIT's
+    /// promotion thresholds (30 calls each) there, and not inside the measured runs, which a row's few warm-ups of the full
+    /// size never reach.
+    /// </summary>
+    public virtual Action? SmallRun() => null;
+
     /// <summary>Releases what <see cref="Prepare"/> built (temporary files, servers).</summary>
     public virtual void Cleanup() { }
 }

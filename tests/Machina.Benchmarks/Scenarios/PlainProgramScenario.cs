@@ -16,6 +16,11 @@ internal sealed class PlainProgramScenario(RobotType brand, bool connectOnce = f
 {
     private IAsyncDisposable? _twin;
     private Robot? _bot;
+    private int _port;
+    private bool _byThread;
+
+    /// <summary>How many moves a small run streams (<see cref="SmallRun"/>): a block of the default window.</summary>
+    internal const int SmallRunSize = 8;
 
     public override string Name => (connectOnce ? "steady-" : "plain-") + brand.ToString().ToLowerInvariant();
 
@@ -55,14 +60,13 @@ internal sealed class PlainProgramScenario(RobotType brand, bool connectOnce = f
             default:
                 throw new NotSupportedException($"{brand} has no twin.");
         }
+        _port = port;
         // Reading /proc costs processor time inside the timed work: only when asked.
         bool byThread = Environment.GetEnvironmentVariable("MACHINA_BENCH_THREADS") == "1";
+        _byThread = byThread;
         if (connectOnce)
         {
-            var connected = Robot.Create("Plain", brand.ToString());
-            _bot = connected;
-            connected.ControlMode("online");
-            connected.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
+            Robot connected = Connected(port);
             return () =>
             {
                 Dictionary<int, ThreadCpu.ThreadTime>? before = byThread ? ThreadCpu.Read() : null;
@@ -81,11 +85,8 @@ internal sealed class PlainProgramScenario(RobotType brand, bool connectOnce = f
             Dictionary<int, ThreadCpu.ThreadTime>? threadsBefore = byThread ? ThreadCpu.Read() : null;
             // A robot per run, as a program makes one: the previous run's robot is disconnected first.
             _bot?.DisconnectAsync().GetAwaiter().GetResult();
-            var bot = Robot.Create("Plain", brand.ToString());
-            _bot = bot;
-            bot.ControlMode("online");
             long connectStart = System.Diagnostics.Stopwatch.GetTimestamp();
-            bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
+            Robot bot = Connected(port);
             TimeSpan connect = System.Diagnostics.Stopwatch.GetElapsedTime(connectStart);
             Dictionary<int, ThreadCpu.ThreadTime>? threadsConnected = byThread ? ThreadCpu.Read() : null;
             Stream(bot, size);
@@ -97,6 +98,41 @@ internal sealed class PlainProgramScenario(RobotType brand, bool connectOnce = f
             }
             return null;
         };
+    }
+
+    /// <summary>
+    /// The run's calls made once, with <see cref="SmallRunSize"/> moves: on the robot connected once (<c>steady-</c>), or, as a
+    /// <c>plain-</c> run does, the previous robot disconnected and a new one created and connected.
+    /// With <c>MACHINA_BENCH_THREADS=1</c> it also reads the robot's solve count, as a run's line does (the line's text is the
+    /// harness's bookkeeping, warmed apart).
+    /// </summary>
+    public override Action? SmallRun() => () =>
+    {
+        Robot bot;
+        if (connectOnce)
+        {
+            bot = _bot!;
+        }
+        else
+        {
+            _bot?.DisconnectAsync().GetAwaiter().GetResult();
+            bot = Connected(_port);
+        }
+        Stream(bot, SmallRunSize);
+        if (_byThread)
+        {
+            _ = bot.KinematicSolves();
+        }
+    };
+
+    /// <summary>A robot created, online and connected to the twin at <paramref name="port"/> (kept, so that the next run disconnects it).</summary>
+    private Robot Connected(int port)
+    {
+        var bot = Robot.Create("Plain", brand.ToString());
+        _bot = bot;
+        bot.ControlMode("online");
+        bot.ConnectAsync("127.0.0.1", port).GetAwaiter().GetResult();
+        return bot;
     }
 
     /// <summary>The program's body on a connected robot: <c>SpeedTo(200)</c>, <paramref name="size"/> moves of ±1 mm, waiting for completion.</summary>
