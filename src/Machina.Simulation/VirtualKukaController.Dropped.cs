@@ -13,11 +13,11 @@ public sealed partial class VirtualKukaController
         int dropped = 0;
         lock (Gate)
         {
-            foreach (TwinAction action in _held)
+            for (int i = 0; i < _held.Count; i++)
             {
-                if (!action.Dropped)
+                if (!_held[i].Dropped)
                 {
-                    action.Dropped = true;
+                    _held[i] = _held[i] with { Dropped = true };
                     dropped++;
                 }
             }

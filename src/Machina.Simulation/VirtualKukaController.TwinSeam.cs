@@ -31,14 +31,12 @@ public sealed partial class VirtualKukaController : IEkiSeam
     /// <summary>The tags of the last action the driver channel received, which the next action with the same tags shares in the log.</summary>
     private string[]? _receivedTags;
 
-    /// <summary>An action the driver channel received, held until the driver settles it.</summary>
-    private sealed class TwinAction(int id)
-    {
-        public int Id { get; } = id;
-
-        /// <summary>True once a restart dropped it (counted lost): if the driver runs it anyway, it is logged executed then.</summary>
-        public bool Dropped { get; set; }
-    }
+    /// <summary>
+    /// An action the driver channel received, held until the driver settles it: a value in the held list (one object an action
+    /// less on the EKI reader); <paramref name="Dropped"/> is true once a restart dropped it (counted lost): if the driver runs it
+    /// anyway, it is logged executed then.
+    /// </summary>
+    private readonly record struct TwinAction(int Id, bool Dropped = false);
 
     /// <summary>An acknowledgement the driver is sending: its action ran, the fault plan decides what reaches the host.</summary>
     private sealed class TwinAck(int id, byte[] bytes, bool unsent = false)
@@ -158,9 +156,8 @@ public sealed partial class VirtualKukaController : IEkiSeam
         return null;
     }
 
-    bool IEkiSeam.Send(EkiChannel channel, string root, string xml)
+    bool IEkiSeam.Send(EkiChannel channel, string root, byte[] bytes)
     {
-        byte[] bytes = Encoding.UTF8.GetBytes(xml);
         if (!IsDriver(channel))
         {
             bool sent = channel.SendDirect(bytes);
@@ -175,14 +172,14 @@ public sealed partial class VirtualKukaController : IEkiSeam
             switch (root)
             {
                 case "R":
-                    return Acknowledged(IdOf(xml), bytes);
+                    return Acknowledged(IdOf(bytes), bytes); // once an action: the id read from the bytes, no text made
                 case "F":
-                    FailureSent(xml);
+                    FailureSent(Encoding.UTF8.GetString(bytes));
                     break;
                 case "S":
-                    StateSent(xml);
+                    StateSent(Encoding.UTF8.GetString(bytes));
                     break;
-                case "C" when IntegerOf(xml, " K=\"") == StoppedAnswer:
+                case "C" when IntegerOf(Encoding.UTF8.GetString(bytes), " K=\"") == StoppedAnswer:
                     StopAnswered();
                     break;
             }
@@ -206,11 +203,11 @@ public sealed partial class VirtualKukaController : IEkiSeam
         {
             action = TakeHeld(id);
         }
-        if (action is null)
+        if (action is not { } held)
         {
             return SendToClient(bytes); // an action the controller never held: sent as it is
         }
-        if (action.Dropped)
+        if (held.Dropped)
         {
             // It ran, but a restart under way dropped it: logged here, acknowledged to nobody.
             RanOutsideBuffer(id);
@@ -234,6 +231,20 @@ public sealed partial class VirtualKukaController : IEkiSeam
 
     /// <summary>The ID attribute of an element the driver sends (0 when it has none).</summary>
     private static int IdOf(string xml) => IntegerOf(xml, " ID=\"");
+
+    /// <summary>The ID attribute of an element the driver sends, read from its UTF-8 bytes (0 when it has none): <see cref="IdOf(string)"/> without the text.</summary>
+    private static int IdOf(ReadOnlySpan<byte> xml)
+    {
+        ReadOnlySpan<byte> attribute = " ID=\""u8;
+        int start = xml.IndexOf(attribute);
+        if (start < 0)
+        {
+            return 0;
+        }
+        start += attribute.Length;
+        int end = xml[start..].IndexOf((byte)'"');
+        return end >= 0 && int.TryParse(xml.Slice(start, end), NumberStyles.Integer, CultureInfo.InvariantCulture, out int id) ? id : 0;
+    }
 
     /// <summary>The integer after <paramref name="attribute"/> (name, equals sign and opening quote) in <paramref name="xml"/>, or 0.</summary>
     private static int IntegerOf(string xml, string attribute)

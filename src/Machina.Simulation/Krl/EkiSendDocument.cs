@@ -119,6 +119,24 @@ internal static class EkiSendDocument
     /// </summary>
     public static string WriteFlat(string root, string[] attributes, IReadOnlyDictionary<string, string> values, ref char[] scratch)
     {
+        int length = WriteFlatChars(root, attributes, values, ref scratch); // first: it may give scratch a larger array
+        return new string(scratch, 0, length);
+    }
+
+    /// <summary>
+    /// The UTF-8 bytes of <see cref="WriteFlat(string, string[], IReadOnlyDictionary{string, string}, ref char[])"/>'s document,
+    /// straight from <paramref name="scratch"/>: one array a send, where the text and then its bytes were two (EKI_Send hands the
+    /// stack bytes; the driver's acknowledgement, once an action).
+    /// </summary>
+    public static byte[] WriteFlatBytes(string root, string[] attributes, IReadOnlyDictionary<string, string> values, ref char[] scratch)
+    {
+        int length = WriteFlatChars(root, attributes, values, ref scratch); // first: it may give scratch a larger array
+        return Encoding.UTF8.GetBytes(scratch, 0, length);
+    }
+
+    /// <summary>Writes the flat document into <paramref name="scratch"/> (grown when too small); returns its length.</summary>
+    private static int WriteFlatChars(string root, string[] attributes, IReadOnlyDictionary<string, string> values, ref char[] scratch)
+    {
         int skip = root.Length + 2; // "root/@"
         int length = 0;
         Append(ref scratch, ref length, "<");
@@ -135,7 +153,7 @@ internal static class EkiSendDocument
             }
         }
         Append(ref scratch, ref length, " />");
-        return new string(scratch, 0, length);
+        return length;
     }
 
     private static void Append(ref char[] scratch, ref int length, ReadOnlySpan<char> text)

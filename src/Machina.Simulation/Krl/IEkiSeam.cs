@@ -15,8 +15,11 @@ internal interface IEkiSeam
     /// <summary>A whole document arrived on <paramref name="channel"/>: its values in order (before the program can read them; they are the reader's, read them during the call only).</summary>
     void Received(EkiChannel channel, ReadOnlySpan<(string Tag, string Value)> values);
 
-    /// <summary>The program's EKI_Send of <paramref name="root"/> as <paramref name="xml"/>; true when it was sent (use <see cref="EkiChannel.SendDirect"/>).</summary>
-    bool Send(EkiChannel channel, string root, string xml);
+    /// <summary>
+    /// The program's EKI_Send of <paramref name="root"/> as <paramref name="document"/> (the document's UTF-8 bytes, made for this
+    /// send: the seam may keep them); true when it was sent (use <see cref="EkiChannel.SendDirect"/>).
+    /// </summary>
+    bool Send(EkiChannel channel, string root, byte[] document);
 
     /// <summary>The connection of <paramref name="client"/> to <paramref name="channel"/> ended.</summary>
     void Closed(EkiChannel channel, TcpClient client);

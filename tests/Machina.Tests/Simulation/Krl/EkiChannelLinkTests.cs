@@ -130,7 +130,7 @@ public class EkiChannelLinkTests
         {
         }
 
-        public bool Send(EkiChannel channel, string root, string xml) => channel.SendDirect(System.Text.Encoding.UTF8.GetBytes(xml));
+        public bool Send(EkiChannel channel, string root, byte[] document) => channel.SendDirect(document);
 
         public void Closed(EkiChannel channel, TcpClient client)
         {
@@ -166,7 +166,7 @@ public class EkiChannelLinkTests
             }
         }
 
-        public bool Send(EkiChannel channel, string root, string xml) => channel.SendDirect(System.Text.Encoding.UTF8.GetBytes(xml));
+        public bool Send(EkiChannel channel, string root, byte[] document) => channel.SendDirect(document);
 
         public void Closed(EkiChannel channel, TcpClient client)
         {
