@@ -128,7 +128,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
 
     private object? InvokeWithin(KrlRoutine routine, object[] arguments, int shared)
     {
-        _ = routine.Reads; // its calls' shared arguments are marked before its first statement runs
+        routine.Reads.MarkCalls(); // its calls' shared arguments are marked before its first statement runs
         KrlType[] types = routine.Frame.Types;
         object[] frame = TakeFrame(types.Length);
         long keeps = _frameKeeps;

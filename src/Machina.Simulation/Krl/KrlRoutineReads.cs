@@ -15,11 +15,15 @@ namespace Machina.Simulation.Krl;
 /// </remarks>
 internal sealed class KrlRoutineReads
 {
-    private KrlRoutineReads(int readOnly, bool keepsFrame)
+    private KrlRoutineReads(int readOnly, bool keepsFrame, List<KrlCall> calls)
     {
         ReadOnlyParameters = readOnly;
         KeepsFrame = keepsFrame;
+        _calls = calls;
     }
+
+    /// <summary>The calls of routines of the program in the body, until <see cref="MarkCalls"/> marked them.</summary>
+    private List<KrlCall>? _calls;
 
     /// <summary>Bit i set: IN parameter i is only read (see the class).</summary>
     public int ReadOnlyParameters { get; }
@@ -30,7 +34,24 @@ internal sealed class KrlRoutineReads
     /// <summary>The parameters' count beyond which none qualifies (the bits of an <see cref="int"/>).</summary>
     private const int MaxParameters = 31;
 
-    /// <summary>Finds what <paramref name="routine"/> does with its parameters and marks its calls of routines whose parameters can be shared.</summary>
+    /// <summary>
+    /// Marks the routine's calls whose arguments the called routines' parameters may hold as they are (each called routine's
+    /// <see cref="ReadOnlyParameters"/>, found from its own statements only: no walk waits for another, recursion included).
+    /// </summary>
+    public void MarkCalls()
+    {
+        if (_calls is not { } calls)
+        {
+            return;
+        }
+        foreach (KrlCall call in calls)
+        {
+            call.SharedArguments = KeepsFrame ? 0 : SharedOf(call);
+        }
+        _calls = null;
+    }
+
+    /// <summary>Finds what <paramref name="routine"/> does with its parameters (its calls are marked by <see cref="MarkCalls"/>).</summary>
     public static KrlRoutineReads Of(KrlRoutine routine)
     {
         var walk = new Walk(Math.Min(routine.Parameters.Count, MaxParameters));
@@ -46,11 +67,7 @@ internal sealed class KrlRoutineReads
                 }
             }
         }
-        foreach (KrlCall call in walk.Calls)
-        {
-            call.SharedArguments = walk.KeepsFrame ? 0 : SharedOf(call);
-        }
-        return new KrlRoutineReads(readOnly, walk.KeepsFrame);
+        return new KrlRoutineReads(readOnly, walk.KeepsFrame, walk.Calls);
     }
 
     /// <summary>The arguments of <paramref name="call"/> (a call of a routine of the program) that are locals of the caller and parameters the routine only reads.</summary>
