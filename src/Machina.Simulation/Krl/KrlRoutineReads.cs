@@ -192,13 +192,7 @@ internal sealed class KrlRoutineReads
                     return;
                 case KrlIndex index:
                     Read(index.Target);
-                    foreach (KrlExpr? i in index.Each)
-                    {
-                        if (i is not null)
-                        {
-                            Read(i);
-                        }
-                    }
+                    Indices(index);
                     return;
                 case KrlUnary unary:
                     Read(unary.Operand);
@@ -253,6 +247,18 @@ internal sealed class KrlRoutineReads
             }
         }
 
+        /// <summary>The indices of an element or row, read.</summary>
+        private void Indices(KrlIndex index)
+        {
+            foreach (KrlExpr? i in index.Each)
+            {
+                if (i is not null)
+                {
+                    Read(i);
+                }
+            }
+        }
+
         /// <summary>A place written: the parameter it is rooted at is written; its indices are read.</summary>
         private void Target(KrlExpr expr)
         {
@@ -269,13 +275,7 @@ internal sealed class KrlRoutineReads
                     return;
                 case KrlIndex index:
                     Target(index.Target);
-                    foreach (KrlExpr? i in index.Each)
-                    {
-                        if (i is not null)
-                        {
-                            Read(i);
-                        }
-                    }
+                    Indices(index);
                     return;
                 case KrlName or KrlOmitted:
                     return;
