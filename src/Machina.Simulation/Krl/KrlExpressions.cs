@@ -82,6 +82,12 @@ internal sealed class KrlCall(int line, string name, IReadOnlyList<KrlExpr> argu
 
     /// <summary>The built-in (set by the binder), or null for a routine of the program.</summary>
     public KrlBuiltin? Builtin { get; set; }
+
+    /// <summary>
+    /// Bit i set: argument i is a local of the calling routine that the called routine's IN parameter may hold as it is, without
+    /// a copy (set when the calling routine is first called, see <see cref="KrlRoutineReads"/>).
+    /// </summary>
+    public int SharedArguments { get; set; }
 }
 
 /// <summary>NOT, B_NOT or a minus sign.</summary>

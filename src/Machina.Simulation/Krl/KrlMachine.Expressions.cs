@@ -350,7 +350,7 @@ internal sealed partial class KrlMachine
             }
             if (call.Routine is { } routine)
             {
-                return Invoke(routine, arguments);
+                return Invoke(routine, arguments, call.SharedArguments);
             }
             int line = Line;
             object? result = call.Builtin!.Run(this, arguments);

@@ -104,7 +104,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
     public void Run(KrlRoutine routine) => Invoke(routine, []);
 
     /// <summary>Runs a routine with its arguments (values for IN, places for OUT); returns a function's value.</summary>
-    public object? Invoke(KrlRoutine routine, object[] arguments)
+    /// <param name="routine">The routine.</param>
+    /// <param name="arguments">Its arguments.</param>
+    /// <param name="shared">Bit i set: argument i is a structure the routine's IN parameter holds as it is (<see cref="KrlCall.SharedArguments"/>).</param>
+    public object? Invoke(KrlRoutine routine, object[] arguments, int shared = 0)
     {
         if (_depth >= Limits.MaxCallDepth)
         {
@@ -120,7 +123,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         _localElements += elements;
         try
         {
-            return InvokeWithin(routine, arguments);
+            return InvokeWithin(routine, arguments, shared);
         }
         finally
         {
@@ -129,16 +132,23 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         }
     }
 
-    private object? InvokeWithin(KrlRoutine routine, object[] arguments)
+    private object? InvokeWithin(KrlRoutine routine, object[] arguments, int shared)
     {
+        routine.Reads.MarkCalls(); // its calls' shared arguments are marked before its first statement runs
         KrlType[] types = routine.Frame.Types;
-        var frame = new object[types.Length];
+        object[] frame = TakeFrame(types.Length);
+        long keeps = _frameKeeps;
         for (int i = 0; i < frame.Length; i++)
         {
             KrlType type = types[i];
             if (i < arguments.Length && arguments[i] is not null)
             {
                 object value = arguments[i] is KrlPlace place ? place.Get() : arguments[i];
+                if ((shared & (1 << i)) != 0 && value is KrlStructValue { HoldsNumbers: true } structure && structure.Type == type)
+                {
+                    frame[i] = structure; // an IN parameter only read, the caller's local that nothing changes meanwhile: no copy
+                    continue;
+                }
                 frame[i] = type.Kind == KrlKind.Array && type.Sizes.Any(s => s == 0)
                     ? KrlConvert.To(value is KrlArrayValue a ? a.Type : KrlType.Array(KrlType.Char, Math.Max(1, ((string)value).Length)), value, null)
                     : KrlConvert.To(type, value, null);
@@ -185,6 +195,10 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
         {
             _routine = caller;
             Line = callerLine;
+            if (_frameKeeps == keeps)
+            {
+                GiveBackFrame(frame);
+            }
         }
     }
 
@@ -269,6 +283,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
                 Wait(wait, frame);
                 return Flow.Next;
             case KrlTrigger trigger:
+                KeepFrame();
                 _triggers.Add((trigger, frame));
                 return Flow.Next;
             case KrlMotion motion:
@@ -294,6 +309,7 @@ internal sealed partial class KrlMachine(KrlTwinController controller, Cancellat
             case KrlLabel:
                 return Flow.Next;
             case KrlInterruptDecl declaration:
+                KeepFrame();
                 if (_interrupts.TryGetValue(declaration.Priority, out KrlInterruptState? old))
                 {
                     if (old.On)

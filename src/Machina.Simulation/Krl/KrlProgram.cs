@@ -122,6 +122,11 @@ internal sealed class KrlRoutine(string file, string name, int line)
 
     private FrameLayout? _frame;
 
+    /// <summary>What the routine does with its IN parameters (found at its first call, see <see cref="KrlRoutineReads"/>).</summary>
+    public KrlRoutineReads Reads => _reads ??= KrlRoutineReads.Of(this);
+
+    private KrlRoutineReads? _reads;
+
     /// <summary>A routine's locals as a call makes them (one object, so that two interpreters that take it at once see it whole).</summary>
     /// <param name="Types">The locals' types in slot order.</param>
     /// <param name="Elements">The array elements of its local arrays together.</param>

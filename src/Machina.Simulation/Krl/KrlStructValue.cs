@@ -57,6 +57,9 @@ internal sealed class KrlStructValue
     /// <summary>The components' kinds of a structure of numbers (its type's, found when its first value was made).</summary>
     private KrlKind[] Kinds => Type.NumberKinds!;
 
+    /// <summary>True when the components are held as numbers (every one an INT, REAL, BOOL or CHAR): the value holds no other value.</summary>
+    public bool HoldsNumbers => _numbers;
+
     /// <summary>The structure type.</summary>
     public KrlType Type { get; }
 
