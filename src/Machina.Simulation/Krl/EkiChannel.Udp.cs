@@ -82,14 +82,15 @@ internal sealed partial class EkiChannel
                     Alive(true);
                 }
             }
-            EkiXmlSplitter splitter = Splitter((document, memories, flags) => CommitDatagram(udp, document, memories, flags));
+            var raised = new List<int>();
+            EkiXmlSplitter splitter = Splitter((document, memories, flags) => CommitDatagram(udp, document, memories, flags, raised));
             try
             {
                 if (Configuration.RawReceive is { } raw)
                 {
                     foreach (string record in new EkiRawSplitter(raw).Append(datagram.Buffer))
                     {
-                        CommitDatagram(udp, RawDocument(record), null, RawFlags());
+                        CommitDatagram(udp, RawDocument(record), null, RawFlags(), raised);
                     }
                     continue;
                 }
@@ -99,10 +100,18 @@ internal sealed partial class EkiChannel
             {
                 controller.Pendant.Log($"EthernetKRL {Name}: received a datagram it cannot read ({ex.Message}); it is dropped");
             }
+            finally
+            {
+                RaiseDatagram(udp, raised); // also those of the documents before a malformed part: they were stored
+            }
         }
     }
 
-    private void CommitDatagram(UdpClient udp, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags)
+    /// <summary>
+    /// Stores a document of a datagram and keeps its flags in <paramref name="raised"/> for the end of the datagram
+    /// (<see cref="RaiseDatagram"/>), as a TCP arrival's: a program woken by a flag finds every document of the datagram stored.
+    /// </summary>
+    private void CommitDatagram(UdpClient udp, List<(string Tag, string Value)> document, List<EkiMemory>? memories, List<int> flags, List<int> raised)
     {
         controller.Options.Seam?.Received(this, CollectionsMarshal.AsSpan(document));
         bool overflow = false;
@@ -115,7 +124,8 @@ internal sealed partial class EkiChannel
             }
             if (current)
             {
-                overflow = Store(document, memories, flags, dropExcess: true);
+                overflow = Store(document, memories, null, dropExcess: true);
+                raised.AddRange(flags);
             }
         }
         document.Clear();
@@ -125,6 +135,35 @@ internal sealed partial class EkiChannel
         {
             controller.Pendant.Log($"EthernetKRL {Name}: a memory holds {Configuration.Limit} elements (its limit); the datagram's further values are lost");
         }
+    }
+
+    /// <summary>
+    /// Sets the flags of a datagram's documents once all of them are stored (each flag once), under the link and only while
+    /// <paramref name="udp"/> is still the channel's socket, as the store. Before, each document's flags were set as it was
+    /// stored, so a program waiting for the first woke while the reader still stored the others and could read a part of it.
+    /// </summary>
+    private void RaiseDatagram(UdpClient udp, List<int> raised)
+    {
+        if (raised.Count == 0)
+        {
+            return;
+        }
+        lock (_link)
+        {
+            bool current;
+            lock (_gate)
+            {
+                current = ReferenceEquals(_udp, udp);
+            }
+            if (current)
+            {
+                foreach (int flag in raised.Distinct())
+                {
+                    controller.SetFlag(flag, true);
+                }
+            }
+        }
+        raised.Clear();
     }
 
     /// <summary>Sends one datagram to the peer; false before a peer is known or when the socket is closed.</summary>
