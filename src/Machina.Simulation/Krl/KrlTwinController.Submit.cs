@@ -29,6 +29,7 @@ internal sealed partial class KrlTwinController
         TimeProvider wall = TwinScaledTime.Wall(Options.Time);
         var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token) };
         using SubmitRun running = SubmitRunning();
+        EnterSubmitThread();
         try
         {
             while (!cancellation.IsCancellationRequested)
@@ -49,6 +50,10 @@ internal sealed partial class KrlTwinController
         catch (OperationCanceledException)
         {
             // The controller stops.
+        }
+        finally
+        {
+            LeaveSubmitThread();
         }
     }
 }
