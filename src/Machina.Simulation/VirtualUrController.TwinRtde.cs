@@ -66,6 +66,12 @@ public sealed partial class VirtualUrController
                 case "actual_digital_input_bits":
                     payload.UInt64(s.DigitalInputs);
                     break;
+                case "actual_configurable_digital_output_bits": // configurable 0–7 in bits 0–7
+                    payload.UInt64((s.DigitalOutputs >> 8) & 0xFF);
+                    break;
+                case "actual_configurable_digital_input_bits":
+                    payload.UInt64((s.DigitalInputs >> 8) & 0xFF);
+                    break;
                 case "robot_status_bits": // power on, program running, teach button, power button
                     payload.Int32((s.PowerOn ? 1 : 0) | (s.ProgramRunning && !s.ProgramPaused ? 2 : 0));
                     break;
@@ -99,8 +105,14 @@ public sealed partial class VirtualUrController
                 case "payload":
                     payload.Double(s.Payload);
                     break;
-                case "actual_execution_time":
+                case "actual_execution_time" or "target_execution_time":
                     payload.Double(0.002);
+                    break;
+                case "target_gravity": // set_gravity's vector, or the controller's default
+                    payload.Doubles(twin.Modes.Gravity);
+                    break;
+                case "control_step": // the 2 ms control steps since the controller started
+                    payload.UInt64((ulong)Math.Round(snapshot.Time * 500));
                     break;
                 default: // an output the twin does not model: zeros of its type
                     payload.Zeros(VirtualUrRtdePackages.SizeOf(VirtualUrRtdeFields.OutputType(name)));

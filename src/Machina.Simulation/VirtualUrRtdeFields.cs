@@ -81,6 +81,22 @@ internal static class VirtualUrRtdeFields
         ["collision_detection_ratio"] = "DOUBLE",
         ["time_scale_source"] = "UINT32",
         ["tcp_offset"] = "VECTOR6D",
+        // Later software's outputs (UR's client library asks for all of them in its exhaustive recipe):
+        ["actual_current_as_torque"] = "VECTOR6D",
+        ["actual_TCP_acceleration"] = "VECTOR6D",
+        ["target_TCP_acceleration"] = "VECTOR6D",
+        ["actual_configurable_digital_input_bits"] = "UINT64",
+        ["actual_configurable_digital_output_bits"] = "UINT64",
+        ["target_execution_time"] = "DOUBLE",
+        ["actual_robot_energy_consumed"] = "DOUBLE",
+        ["actual_robot_braking_energy_dissipated"] = "DOUBLE",
+        ["encoder0_raw"] = "INT32",
+        ["encoder1_raw"] = "INT32",
+        ["wrench_calc_from_currents"] = "VECTOR6D",
+        ["target_gravity"] = "VECTOR3D",
+        ["target_base_acceleration"] = "VECTOR6D",
+        ["control_step"] = "UINT64",
+        ["target_base_wrench"] = "VECTOR6D",
     };
 
     private static readonly Dictionary<string, string> Inputs = new(StringComparer.Ordinal)

@@ -409,12 +409,34 @@ internal sealed partial class KrlTwinController
         return Math.Max(path, turn);
     }
 
-    /// <summary>The advance run ends (WAIT FOR, the end of the program): the arm finishes a pending corner and stops at its point.</summary>
-    public void EndAdvanceRun(CancellationToken cancellation) => Arm.FinishBlend(cancellation);
+    /// <summary>
+    /// The advance run ends (WAIT FOR, the end of the program): the arm finishes a pending corner and stops at its point. The
+    /// submit interpreter has no advance run of the arm: its waits leave the robot program's motion alone.
+    /// </summary>
+    public void EndAdvanceRun(CancellationToken cancellation)
+    {
+        if (!OnSubmitInterpreter)
+        {
+            Arm.FinishBlend(cancellation);
+        }
+    }
 
-    /// <summary>WAIT SEC: the program waits (the twin's advance run ends here, as on the controller: the arm stops at its last point first).</summary>
+    /// <summary>
+    /// WAIT SEC: the program waits (the twin's advance run ends here, as on the controller: the arm stops at its last point first).
+    /// In the submit interpreter it holds that interpreter only, on the wall clock its cycle runs on: no step of the arm's trace,
+    /// no program time of the robot's.
+    /// </summary>
     public void WaitSeconds(double seconds, int line, CancellationToken cancellation)
     {
+        if (OnSubmitInterpreter)
+        {
+            cancellation.ThrowIfCancellationRequested();
+            if (seconds > 0)
+            {
+                Clock.WaitWall(seconds, cancellation);
+            }
+            return;
+        }
         Arm.FinishBlend(cancellation);
         Clock.Wait(seconds, cancellation);
         Arm.Record(line, TwinTraceKind.Wait, FormattableString.Invariant($"WAIT SEC {seconds}"));

@@ -31,6 +31,7 @@ internal sealed partial class KrlTwinController
         var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token), TracedLine = line };
         using SubmitLine traced = SubmitLineOnThisThread(line);
         using SubmitRun running = SubmitRunning();
+        EnterSubmitThread();
         try
         {
             while (!cancellation.IsCancellationRequested)
@@ -51,6 +52,10 @@ internal sealed partial class KrlTwinController
         catch (OperationCanceledException)
         {
             // The controller stops.
+        }
+        finally
+        {
+            LeaveSubmitThread();
         }
     }
 }

@@ -17,8 +17,6 @@ internal static partial class UrBuiltins
         AddDigitalIn(t, "get_configurable_digital_out", UrIoBanks.ConfigurableOut);
         AddDigitalIn(t, "get_tool_digital_in", UrIoBanks.ToolIn);
         AddDigitalIn(t, "get_tool_digital_out", UrIoBanks.ToolOut);
-        AddDigitalIn(t, "get_digital_in", UrIoBanks.StandardIn);
-        AddDigitalIn(t, "get_digital_out", UrIoBanks.StandardOut);
         Add(t, "set_standard_analog_out", (m, line, a) =>
         {
             int n = Pin(m, line, a, "set_standard_analog_out", UrIoBanks.AnalogOut);
@@ -35,7 +33,7 @@ internal static partial class UrBuiltins
         AddNumberIn(t, "get_standard_analog_in", UrIoBanks.AnalogIn);
         AddNumberIn(t, "get_standard_analog_out", UrIoBanks.AnalogOut);
         AddNumberIn(t, "get_tool_analog_in", UrIoBanks.ToolAnalogIn);
-        AddNumberIn(t, "get_analog_in", UrIoBanks.AnalogIn);
+        AddDeprecatedIo(t);
         Add(t, "set_flag", (m, line, a) =>
         {
             m.Controller.Io.SetBit(UrIoBanks.Flags, Pin(m, line, a, "set_flag", UrIoBanks.Flags), Bool(a, 1, line, "set_flag", "b"));

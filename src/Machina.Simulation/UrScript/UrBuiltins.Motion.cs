@@ -23,6 +23,8 @@ internal static partial class UrBuiltins
         Add(t, "get_target_joint_positions", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointsNow()));
         Add(t, "get_actual_tcp_speed", (m, line, a) => new UrPose(m.Controller.TcpSpeedNow()));
         Add(t, "get_actual_joint_speeds", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointSpeedsNow()));
+        // The CB2 controllers' name (software 1.x, as get_joint_positions): the actual joint speeds, as get_actual_joint_speeds.
+        Add(t, "get_joint_speeds", (m, line, a) => UrGeometry.FromJoints(m.Controller.JointSpeedsNow()));
         Add(t, "is_steady", (m, line, a) => UrValue.Box(true));
         Add(t, "set_tcp", SetTcp, R("pose"));
         Add(t, "set_payload", SetPayload, R("m"), O("cog", NotGiven));

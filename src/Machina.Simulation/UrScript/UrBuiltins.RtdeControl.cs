@@ -27,6 +27,8 @@ internal static partial class UrBuiltins
             return UrGeometry.FromPose(motion is null ? arm.Tcp : arm.Model.Kinematics.Forward(motion.Target) * arm.ToolCenter);
         });
         Add(t, "get_joint_torques", (m, line, a) => new UrList([0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
+        // The wrench at the tool (Script Manual: p[Fx, Fy, Fz, TRx, TRy, TRz] in the base's axes): no force model, none acts.
+        Add(t, "get_tcp_force", (m, line, a) => new UrPose([0.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
         Add(t, "get_freedrive_status", (m, line, a) => 0);
         Add(t, "teach_mode", (m, line, a) =>
         {

@@ -124,6 +124,10 @@ internal sealed class GuideRtdeClient : IDisposable
                         values[_names[i]] = Enumerable.Range(0, 6).Select(k => BinaryPrimitives.ReadDoubleBigEndian(payload.AsSpan(at + k * 8))).ToArray();
                         at += 48;
                         break;
+                    case "VECTOR3D":
+                        values[_names[i]] = Enumerable.Range(0, 3).Select(k => BinaryPrimitives.ReadDoubleBigEndian(payload.AsSpan(at + k * 8))).ToArray();
+                        at += 24;
+                        break;
                     case "DOUBLE":
                         values[_names[i]] = BinaryPrimitives.ReadDoubleBigEndian(payload.AsSpan(at));
                         at += 8;
