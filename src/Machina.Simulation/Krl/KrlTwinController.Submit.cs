@@ -29,9 +29,8 @@ internal sealed partial class KrlTwinController
         TimeProvider wall = TwinScaledTime.Wall(Options.Time);
         var line = new KrlRunningLine();
         var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token), TracedLine = line };
-        using SubmitLine traced = SubmitLineOnThisThread(line);
+        using SubmitThread thread = EnterSubmitThread(line);
         using SubmitRun running = SubmitRunning();
-        EnterSubmitThread();
         try
         {
             while (!cancellation.IsCancellationRequested)
@@ -52,10 +51,6 @@ internal sealed partial class KrlTwinController
         catch (OperationCanceledException)
         {
             // The controller stops.
-        }
-        finally
-        {
-            LeaveSubmitThread();
         }
     }
 }

@@ -1,40 +1,58 @@
 namespace Machina.Simulation.Krl;
 
 /// <summary>
-/// Which threads run the submit interpreter, so that what both interpreters call (WAIT SEC, the end of an advance run) does only
-/// what the caller's interpreter does: the submit interpreter moves no arm and keeps no program time of the robot's.
+/// Which threads run a submit interpreter, each with the line it runs: what both interpreters call does what the caller's
+/// interpreter does (WAIT SEC and the end of an advance run: the submit interpreter moves no arm and keeps no program time of
+/// the robot's), and an output a submit program writes is traced at its own line, not at the robot program's.
 /// </summary>
 internal sealed partial class KrlTwinController
 {
     private readonly Lock _submitThreadsGate = new();
-    private int[] _submitThreads = [];
 
-    /// <summary>True on a thread that runs the submit interpreter (<see cref="RunSubmit"/>).</summary>
-    internal bool OnSubmitInterpreter
-    {
-        get
-        {
-            int[] threads = Volatile.Read(ref _submitThreads);
-            return threads.Length > 0 && Array.IndexOf(threads, System.Environment.CurrentManagedThreadId) >= 0;
-        }
-    }
+    /// <summary>The running submit interpreters' threads and lines; replaced whole under the gate, read without it.</summary>
+    private (int Thread, KrlRunningLine Line)[] _submitThreads = [];
 
-    /// <summary>The calling thread runs the submit interpreter from now on.</summary>
-    private void EnterSubmitThread()
-    {
-        lock (_submitThreadsGate)
-        {
-            Volatile.Write(ref _submitThreads, [.. _submitThreads, System.Environment.CurrentManagedThreadId]);
-        }
-    }
+    /// <summary>True on a thread that runs a submit interpreter (<see cref="RunSubmit"/>).</summary>
+    internal bool OnSubmitInterpreter => SubmitLineHere() is not null;
 
-    /// <summary>The calling thread's submit interpreter ended.</summary>
-    private void LeaveSubmitThread()
+    /// <summary>The line of the submit interpreter this thread runs, or null on any other thread (the robot's, a host's, a reader's).</summary>
+    private KrlRunningLine? SubmitLineHere()
     {
-        lock (_submitThreadsGate)
+        (int Thread, KrlRunningLine Line)[] threads = Volatile.Read(ref _submitThreads);
+        if (threads.Length > 0)
         {
             int id = System.Environment.CurrentManagedThreadId;
-            Volatile.Write(ref _submitThreads, [.. _submitThreads.Where(t => t != id)]);
+            foreach ((int thread, KrlRunningLine line) in threads)
+            {
+                if (thread == id)
+                {
+                    return line;
+                }
+            }
+        }
+        return null;
+    }
+
+    /// <summary>The calling thread runs a submit interpreter at <paramref name="line"/> until the result is disposed.</summary>
+    private SubmitThread EnterSubmitThread(KrlRunningLine line)
+    {
+        lock (_submitThreadsGate)
+        {
+            Volatile.Write(ref _submitThreads, [.. _submitThreads, (System.Environment.CurrentManagedThreadId, line)]);
+        }
+        return new SubmitThread(this);
+    }
+
+    /// <summary>A submit interpreter's thread registered (<see cref="EnterSubmitThread"/>); disposed on that thread when it ends.</summary>
+    private readonly struct SubmitThread(KrlTwinController controller) : IDisposable
+    {
+        public void Dispose()
+        {
+            lock (controller._submitThreadsGate)
+            {
+                int id = System.Environment.CurrentManagedThreadId;
+                Volatile.Write(ref controller._submitThreads, [.. controller._submitThreads.Where(t => t.Thread != id)]);
+            }
         }
     }
 }
