@@ -14,14 +14,16 @@ public sealed class ThirdPartyUrJointSpeedsTests
     [Fact]
     public void GetJointSpeeds_ReadsTheActualJointSpeeds_StandingAndMoving_AndGetTcpForceNoWrench()
     {
-        // In real time a speedj without t returns once the speeds are reached (0.05 s at 10 rad/s²) and they go on until stopj:
-        // what get_joint_speeds reads then is the speed motion's constant speeds, whenever the thread gets to read them.
+        // In real time a speedj without t returns about when the speeds are reached (0.05 s at 10 rad/s²) and they go on until
+        // stopj; the sleep of 0.2 s (real time: at least that) puts the reads after the ramp however late the thread runs (CI once
+        // read 249 / -499 mrad/s right after speedj returned), so they read the speed motion's constant speeds.
         using var twin = new UrTwinController(new UrTwinOptions { RealTime = true });
         UrProgramState state = twin.Run("""
             def speeds():
               textmsg("standing ", get_joint_speeds())
               textmsg("wrench ", get_tcp_force())
               speedj([0.25, 0, 0, 0, -0.5, 0], 10.0)
+              sleep(0.2)
               textmsg("moving j1 ", floor(get_joint_speeds()[0] * 1000 + 0.5))
               textmsg("moving j5 ", floor(get_joint_speeds()[4] * 1000 + 0.5))
               textmsg("actual j1 ", floor(get_actual_joint_speeds()[0] * 1000 + 0.5))
