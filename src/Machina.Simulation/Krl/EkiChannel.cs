@@ -649,13 +649,9 @@ internal sealed partial class EkiChannel(string name, EkiConfiguration configura
         IEkiSeam? seam = controller.Options.Seam;
         if (Configuration.RawSend is { } raw)
         {
+            // The record's bytes, one a CHAR, to the seam too (before session 36 it was handed them read as Latin-1 and written
+            // as UTF-8: a CHAR from 128 on went out as two bytes under `machina sim kuka`).
             bytes = EkiRawSplitter.Record(raw, root);
-            if (seam is not null)
-            {
-                // What the seam was handed before it took bytes: the record read as Latin-1 text, then written as UTF-8 (a byte
-                // from 0x80 becomes two). Kept as it was: not this change's to alter (docs/performance.md, session 36 perf56e).
-                bytes = Encoding.UTF8.GetBytes(Encoding.Latin1.GetString(bytes));
-            }
         }
         if (seam is not null)
         {
