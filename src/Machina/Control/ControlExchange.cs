@@ -45,6 +45,20 @@ internal sealed class ControlExchange(TimeProvider time, TimeSpan timeout)
         }
     }
 
+    /// <summary>
+    /// The link the answer would come on was closed: a command still waiting fails now with a <see cref="RobotConnectionException"/>
+    /// saying so, instead of at the end of <see cref="Timeout"/> (no answer can arrive any more).
+    /// </summary>
+    public void Abandon(string controller)
+    {
+        TaskCompletionSource? waiter;
+        lock (_gate)
+        {
+            waiter = _pending?.Done;
+        }
+        waiter?.TrySetException(new RobotConnectionException($"The link to the {controller} was closed before it answered the command."));
+    }
+
     /// <summary>An answer code from the controller: completes the command waiting for it (true), or false when none waits for this code.</summary>
     public bool Answer(int code)
     {

@@ -198,6 +198,11 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
         }
     }
 
+    /// <summary>The links are about to close (<see cref="DisposeAsync"/>): what waits for an answer on them can stop waiting.</summary>
+    protected virtual void Closing()
+    {
+    }
+
     /// <summary>
     /// Stops reporting, closes every link's socket (the side links in the order they opened, the driver link last), then waits
     /// for their loops: the controller sees the driver link close even while a side link's loop is still busy.
@@ -205,6 +210,7 @@ internal abstract partial class DeviceDriver<TMessage> : ILinkReceiver, IAsyncDi
     public async ValueTask DisposeAsync()
     {
         Interlocked.Exchange(ref _failed, 1);
+        Closing();
         TcpLink[] sideLinks;
         lock (_sideLinks)
         {

@@ -55,7 +55,10 @@ internal sealed partial class OnlineSession
         try
         {
             Task answered = link.Driver.StopMotionAsync(cancellationToken);
-            if (await Task.WhenAny(answered, applied).ConfigureAwait(false) == applied)
+            await Task.WhenAny(answered, applied).ConfigureAwait(false);
+            // Closing the link fails the wait for the answer (it cannot come any more) in the same turn of the loop that applied the
+            // report: asked on the loop, that turn has ended, so whether the stop was applied is known.
+            if (!answered.IsCompletedSuccessfully && (applied.IsCompleted || await AskAsync(() => applied.IsCompleted).ConfigureAwait(false)))
             {
                 // Applied from the controller's report; the answer, now unreadable, is still observed when its wait ends.
                 _ = answered.ContinueWith(static t => t.Exception, CancellationToken.None, TaskContinuationOptions.OnlyOnFaulted, TaskScheduler.Default);

@@ -69,6 +69,14 @@ internal sealed class ScriptedAbbController : IAsyncDisposable
         }
     }
 
+    /// <summary>Reads the host's command <paramref name="command"/> on the monitor link and closes both links without answering it.</summary>
+    internal async Task CloseOnAsync(string command)
+    {
+        Assert.Equal(command, await ReadAsync(_monitor!));
+        _driver!.Dispose();
+        _monitor!.Dispose();
+    }
+
     public ValueTask DisposeAsync()
     {
         _driver?.Dispose();

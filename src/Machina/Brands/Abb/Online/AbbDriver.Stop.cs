@@ -41,4 +41,7 @@ internal sealed partial class AbbDriver
             Log.Debug($"Ignored from the monitor: $28 {done};");
         }
     }
+
+    /// <summary>The links close: a stop, pause or resume still waiting for its answer fails now (it cannot come any more).</summary>
+    protected override void Closing() => _control.Abandon("ABB monitor task");
 }

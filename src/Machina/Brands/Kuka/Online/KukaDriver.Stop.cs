@@ -42,4 +42,7 @@ internal sealed partial class KukaDriver
             Log.Debug($"Ignored from the controller: <C K=\"{done}\"/>");
         }
     }
+
+    /// <summary>The links close: a stop, pause or resume still waiting for its answer fails now (it cannot come any more).</summary>
+    protected override void Closing() => _control.Abandon("KUKA driver");
 }
