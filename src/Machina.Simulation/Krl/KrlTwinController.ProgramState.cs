@@ -6,7 +6,6 @@ namespace Machina.Simulation.Krl;
 /// </summary>
 internal sealed partial class KrlTwinController
 {
-    private int _submitsRunning;
     private int _motionsRunning;
 
     /// <summary>$PRO_MOVE: true while the robot interpreter runs a motion statement.</summary>
@@ -35,21 +34,8 @@ internal sealed partial class KrlTwinController
     };
 
     /// <summary>$PRO_STATE0: P_ACTIVE while the submit interpreter runs, P_FREE otherwise.</summary>
-    public string SubmitProgramState => Volatile.Read(ref _submitsRunning) > 0 ? "P_ACTIVE" : "P_FREE";
+    public string SubmitProgramState => SubmitsRunning ? "P_ACTIVE" : "P_FREE";
 
     /// <summary>$ROB_TIMER: the controller's clock in milliseconds (the timers' time: real in real time, the program time otherwise), wrapping as an INT.</summary>
     public int RobotTimerMs() => unchecked((int)(TimerTicks() / TimeSpan.TicksPerMillisecond));
-
-    /// <summary>Marks the submit interpreter running until the result is disposed.</summary>
-    private SubmitRun SubmitRunning()
-    {
-        Interlocked.Increment(ref _submitsRunning);
-        return new SubmitRun(this);
-    }
-
-    /// <summary>The submit interpreter's run, for <see cref="SubmitProgramState"/>.</summary>
-    private readonly struct SubmitRun(KrlTwinController controller) : IDisposable
-    {
-        public void Dispose() => Interlocked.Decrement(ref controller._submitsRunning);
-    }
 }

@@ -30,7 +30,6 @@ internal sealed partial class KrlTwinController
         var line = new KrlRunningLine();
         var machine = new KrlMachine(this, cancellation) { LoopTurnWait = token => sleep.Wait(wall, cycle, token), TracedLine = line };
         using SubmitThread thread = EnterSubmitThread(line);
-        using SubmitRun running = SubmitRunning();
         try
         {
             while (!cancellation.IsCancellationRequested)

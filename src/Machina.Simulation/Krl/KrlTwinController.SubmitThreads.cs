@@ -12,6 +12,9 @@ internal sealed partial class KrlTwinController
     /// <summary>The running submit interpreters' threads and lines; replaced whole under the gate, read without it.</summary>
     private (int Thread, KrlRunningLine Line)[] _submitThreads = [];
 
+    /// <summary>True while a submit interpreter runs (<see cref="SubmitProgramState"/>).</summary>
+    private bool SubmitsRunning => Volatile.Read(ref _submitThreads).Length > 0;
+
     /// <summary>True on a thread that runs a submit interpreter (<see cref="RunSubmit"/>).</summary>
     internal bool OnSubmitInterpreter => SubmitLineHere() is not null;
 
